@@ -1,0 +1,35 @@
+# Two commands do everything on a fresh Debian 12 machine (as root):
+#   make demo   installs what is missing, builds, renders every configuration into out/demo
+#   make test   installs what is missing, builds, runs every test
+BUILD ?= build
+JOBS ?= $(shell nproc)
+CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
+
+.PHONY: all deps configure build test demo bench sanitize clean
+
+all: build
+
+deps:
+	@./scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) --log-level=WARNING
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+demo: build
+	@$(BUILD)/apps/penumbra demo --out out/demo
+
+bench: build
+	@$(BUILD)/apps/penumbra bench
+
+# AddressSanitizer + UndefinedBehaviorSanitizer build and test run in build-sanitize/.
+sanitize:
+	@$(MAKE) test BUILD=build-sanitize CMAKE_FLAGS="-DPENUMBRA_WERROR=ON -DPENUMBRA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
+
+clean:
+	@rm -rf $(BUILD) build-sanitize out

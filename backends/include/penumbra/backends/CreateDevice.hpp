@@ -1,0 +1,17 @@
+#pragma once
+
+#include "penumbra/rhi/Device.hpp"
+
+#include <memory>
+#include <string_view>
+
+namespace penumbra {
+
+// Creates the device a desc asks for. A missing driver, display or extension is an
+// rhi::Error (or rhi::UnsupportedError) whose message says what is missing.
+std::unique_ptr<rhi::Device> createDevice(const rhi::DeviceDesc& desc);
+
+// The same from a configuration name ("vulkan", "opengl-noclip-reversed", ...).
+std::unique_ptr<rhi::Device> createDevice(std::string_view configuration);
+
+} // namespace penumbra

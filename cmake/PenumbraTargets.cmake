@@ -1,0 +1,25 @@
+# Compiler settings every Penumbra target shares.
+
+if(PENUMBRA_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+function(penumbra_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
+                                           $<$<BOOL:${PENUMBRA_WERROR}>:-Werror>)
+endfunction()
+
+# penumbra_library(<name> SOURCES ... ) -> target penumbra_<name>, alias penumbra::<name>,
+# public headers in <dir>/include.
+function(penumbra_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES" ${ARGN})
+  add_library(penumbra_${name} ${ARG_SOURCES})
+  add_library(penumbra::${name} ALIAS penumbra_${name})
+  set_target_properties(penumbra_${name} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME penumbra_${name})
+  target_include_directories(penumbra_${name} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+                                                     $<INSTALL_INTERFACE:include>)
+  penumbra_warnings(penumbra_${name})
+  set_property(GLOBAL APPEND PROPERTY PENUMBRA_INSTALLED_TARGETS penumbra_${name})
+  install(DIRECTORY include/ DESTINATION include)
+endfunction()

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cstdint>
+#include <glm/vec4.hpp>
+#include <optional>
+
+namespace penumbra::rhi {
+
+class Buffer;
+class Framebuffer;
+class Pipeline;
+class Sampler;
+class Texture;
+class TimestampQueries;
+struct DepthBias;
+
+enum class IndexType : std::uint8_t { UInt16, UInt32 };
+
+// Pixels; y counts rows from the top of the render target on every backend.
+struct Viewport {
+    float x = 0.0f;
+    float y = 0.0f;
+    float width = 0.0f;
+    float height = 0.0f;
+};
+
+struct Rect {
+    std::int32_t x = 0;
+    std::int32_t y = 0;
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+};
+
+struct PassDesc {
+    const Framebuffer* framebuffer = nullptr;
+    // Clear colour for every colour attachment; nullopt keeps their contents.
+    std::optional<glm::vec4> clearColor = glm::vec4(0.0f);
+    // Clears depth to Conventions::clearDepth() (the far plane); false keeps it.
+    bool clearDepth = true;
+};
+
+// Records commands; Device::submit runs them in order and waits. After a submit the list is
+// empty and records anew. Resources a list names must outlive its submission.
+class CommandList {
+public:
+    virtual ~CommandList() = default;
+
+    // A pass sets viewport and scissor to the whole framebuffer.
+    virtual void beginPass(const PassDesc& pass) = 0;
+    virtual void endPass() = 0;
+
+    virtual void setViewport(const Viewport& viewport) = 0;
+    virtual void setScissor(const Rect& scissor) = 0;
+    // Binding a pipeline sets its DepthState::bias; this overrides it until the next bindPipeline.
+    virtual void setDepthBias(const DepthBias& bias) = 0;
+
+    virtual void bindPipeline(const Pipeline& pipeline) = 0;
+    virtual void bindVertexBuffer(std::uint32_t slot, const Buffer& buffer, std::uint64_t offset = 0) = 0;
+    virtual void bindIndexBuffer(const Buffer& buffer, IndexType type, std::uint64_t offset = 0) = 0;
+    // offset must be a multiple of Capabilities::uniformBufferOffsetAlignment.
+    virtual void bindUniformBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
+                                   std::uint64_t size) = 0;
+    virtual void bindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) = 0;
+
+    virtual void draw(std::uint32_t vertexCount, std::uint32_t instanceCount = 1, std::uint32_t firstVertex = 0,
+                      std::uint32_t firstInstance = 0) = 0;
+    virtual void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount = 1, std::uint32_t firstIndex = 0,
+                             std::int32_t vertexOffset = 0, std::uint32_t firstInstance = 0) = 0;
+
+    // Copies outside passes. Texture copies take whole layers of equal size and format;
+    // a texture-to-buffer copy writes tightly packed rows, row 0 (the top) first, depth only for D24S8.
+    virtual void copyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,
+                            std::uint64_t size) = 0;
+    virtual void copyTexture(const Texture& src, std::uint32_t srcLayer, Texture& dst, std::uint32_t dstLayer) = 0;
+    virtual void copyTextureToBuffer(const Texture& src, std::uint32_t layer, Buffer& dst,
+                                     std::uint64_t dstOffset = 0) = 0;
+
+    // Device::readTimestamps gives the values after submit.
+    virtual void writeTimestamp(TimestampQueries& queries, std::uint32_t index) = 0;
+};
+
+} // namespace penumbra::rhi

@@ -1,0 +1,67 @@
+#pragma once
+
+#include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/rhi/Configuration.hpp"
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/rhi/Pipeline.hpp"
+#include "penumbra/rhi/Resources.hpp"
+#include "penumbra/rhi/Shader.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace penumbra::rhi {
+
+// What the driver really offers; nothing here is faked or emulated.
+struct Capabilities {
+    std::string api;    // "Vulkan 1.3.230", "OpenGL 4.5 (Core Profile) Mesa 22.3.6"
+    std::string device; // "llvmpipe (LLVM 15.0.6, 256 bits)"
+    bool depthClamp = false;
+    bool depthBiasClamp = false;
+    bool timestamps = false;
+    std::uint32_t uniformBufferOffsetAlignment = 256;
+    std::uint32_t maxTextureSize = 0;
+    std::uint32_t maxTextureLayers = 0;
+    // Linear filtering (hardware 2x2 PCF with a comparison sampler) per depth format,
+    // indexed by Format. lavapipe offers none (conventions note, section 4).
+    std::array<bool, 6> linearFilter{};
+
+    bool supportsLinearFilter(Format f) const { return linearFilter[static_cast<std::size_t>(f)]; }
+};
+
+class Device {
+public:
+    virtual ~Device() = default;
+
+    virtual const DeviceDesc& desc() const = 0;
+    virtual const Conventions& conventions() const = 0;
+    virtual const Capabilities& capabilities() const = 0;
+
+    virtual std::unique_ptr<Buffer> createBuffer(const BufferDesc& desc) = 0;
+    virtual std::unique_ptr<Texture> createTexture(const TextureDesc& desc) = 0;
+    // Uploads one whole layer: tightly packed rows, row 0 (the top of the picture) first.
+    virtual void writeTexture(Texture& texture, std::uint32_t layer, std::span<const std::byte> data) = 0;
+    virtual std::unique_ptr<Sampler> createSampler(const SamplerDesc& desc) = 0;
+    // Compiles with glslang (errors name the source and line) and creates the backend's module.
+    virtual std::unique_ptr<Shader> createShader(const ShaderSource& source) = 0;
+    virtual std::unique_ptr<Pipeline> createPipeline(const PipelineDesc& desc) = 0;
+    virtual std::unique_ptr<Framebuffer> createFramebuffer(const FramebufferDesc& desc) = 0;
+    virtual std::unique_ptr<TimestampQueries> createTimestampQueries(std::uint32_t count) = 0;
+    virtual std::unique_ptr<CommandList> createCommandList() = 0;
+
+    // Runs everything the list recorded and waits until the GPU has finished.
+    virtual void submit(CommandList& commands) = 0;
+
+    // Nanoseconds, one per query, from a submitted list's writeTimestamp calls.
+    virtual std::vector<double> readTimestamps(const TimestampQueries& queries) = 0;
+
+    // Every validation-layer or debug-output message since creation or the last clear.
+    virtual std::vector<std::string> debugMessages() const = 0;
+    virtual void clearDebugMessages() = 0;
+};
+
+} // namespace penumbra::rhi

@@ -1,0 +1,103 @@
+#pragma once
+
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/rhi/Flags.hpp"
+#include "penumbra/rhi/Format.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace penumbra::rhi {
+
+class Shader;
+
+enum class VertexFormat : std::uint8_t { Float, Float2, Float3, Float4, UByte4Norm };
+
+struct VertexAttribute {
+    std::uint32_t location = 0;
+    VertexFormat format = VertexFormat::Float3;
+    std::uint32_t offset = 0;
+    std::uint32_t buffer = 0; // vertex buffer slot
+};
+
+struct VertexBufferLayout {
+    std::uint32_t stride = 0;
+    bool perInstance = false;
+};
+
+struct VertexLayout {
+    std::vector<VertexBufferLayout> buffers;
+    std::vector<VertexAttribute> attributes;
+};
+
+enum class PrimitiveTopology : std::uint8_t { TriangleList, TriangleStrip, LineList, PointList };
+
+// Front faces are counter-clockwise in canonical NDC (y up) on every backend.
+enum class CullMode : std::uint8_t { None, Back, Front };
+
+// Constant and slope-scale depth bias, positive away from the viewer (the conventions flip the
+// sign for reversed-Z). Units are the APIs' own: `constant` in minimum resolvable depth
+// differences, `slope` times the polygon's max depth slope; `clamp` bounds the magnitude (0: none).
+struct DepthBias {
+    float constant = 0.0f;
+    float slope = 0.0f;
+    float clamp = 0.0f;
+};
+
+struct DepthState {
+    bool test = false;
+    bool write = false;
+    DepthTest compare = DepthTest::Nearer;
+    DepthBias bias;
+    // Depth clamp instead of near/far clipping: the pancaking of shadow casters.
+    bool clamp = false;
+};
+
+enum class ColorMask : std::uint8_t { None = 0, R = 1, G = 2, B = 4, A = 8, All = 15 };
+constexpr bool enableFlags(ColorMask) { return true; }
+
+enum class BlendFactor : std::uint8_t {
+    Zero, One, SrcColor, OneMinusSrcColor, SrcAlpha, OneMinusSrcAlpha, DstColor, OneMinusDstColor, DstAlpha,
+    OneMinusDstAlpha,
+};
+enum class BlendOp : std::uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+
+struct BlendState {
+    bool enable = false;
+    BlendFactor srcColor = BlendFactor::One;
+    BlendFactor dstColor = BlendFactor::Zero;
+    BlendOp colorOp = BlendOp::Add;
+    BlendFactor srcAlpha = BlendFactor::One;
+    BlendFactor dstAlpha = BlendFactor::Zero;
+    BlendOp alphaOp = BlendOp::Add;
+};
+
+struct ColorTarget {
+    Format format = Format::RGBA8;
+    ColorMask writeMask = ColorMask::All;
+    BlendState blend;
+};
+
+// A pipeline renders into framebuffers whose attachment formats match colorTargets and depthFormat.
+// A depth-only pass has no colour targets.
+struct PipelineDesc {
+    const Shader* vertex = nullptr;
+    const Shader* fragment = nullptr;
+    VertexLayout vertexLayout;
+    PrimitiveTopology topology = PrimitiveTopology::TriangleList;
+    CullMode cull = CullMode::None;
+    DepthState depth;
+    std::vector<ColorTarget> colorTargets;
+    std::optional<Format> depthFormat;
+    std::string debugName;
+};
+
+class Pipeline {
+public:
+    virtual ~Pipeline() = default;
+    virtual const PipelineDesc& desc() const = 0;
+};
+
+} // namespace penumbra::rhi

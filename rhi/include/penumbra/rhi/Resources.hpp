@@ -1,0 +1,116 @@
+#pragma once
+
+#include "penumbra/rhi/Flags.hpp"
+#include "penumbra/rhi/Format.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace penumbra::rhi {
+
+// Descriptors are plain aggregates: every field has a usable default, so
+// `device.createBuffer({.size = 256, .usage = BufferUsage::Uniform})` is a complete request.
+
+enum class BufferUsage : std::uint8_t {
+    None = 0,
+    Vertex = 1 << 0,
+    Index = 1 << 1,
+    Uniform = 1 << 2,
+    Readback = 1 << 3, // destination of texture and buffer copies, read on the CPU
+};
+constexpr bool enableFlags(BufferUsage) { return true; }
+
+struct BufferDesc {
+    std::uint64_t size = 0;
+    BufferUsage usage = BufferUsage::None;
+    std::string debugName;
+};
+
+// Buffers live in CPU-visible memory. The GPU reads them when a command list is submitted,
+// so a write between recording and submitting is seen by every draw of that submission.
+class Buffer {
+public:
+    virtual ~Buffer() = default;
+    virtual const BufferDesc& desc() const = 0;
+    virtual void write(std::uint64_t offset, std::span<const std::byte> data) = 0;
+    virtual void read(std::uint64_t offset, std::span<std::byte> data) const = 0;
+
+    template <typename T>
+    void writeObject(const T& value, std::uint64_t offset = 0)
+    {
+        write(offset, std::as_bytes(std::span(&value, 1)));
+    }
+};
+
+enum class TextureUsage : std::uint8_t {
+    None = 0,
+    Sampled = 1 << 0,
+    RenderTarget = 1 << 1, // colour or depth attachment, by format
+};
+constexpr bool enableFlags(TextureUsage) { return true; }
+
+// Every texture can be copied from and to and uploaded with Device::writeTexture.
+struct TextureDesc {
+    std::uint32_t width = 1;
+    std::uint32_t height = 1;
+    std::uint32_t layers = 1;
+    bool array = false; // a 2D array (sampler2DArray) even when layers == 1
+    Format format = Format::RGBA8;
+    TextureUsage usage = TextureUsage::Sampled;
+    std::string debugName;
+};
+
+class Texture {
+public:
+    virtual ~Texture() = default;
+    virtual const TextureDesc& desc() const = 0;
+};
+
+enum class Filter : std::uint8_t { Nearest, Linear };
+enum class AddressMode : std::uint8_t { ClampToEdge, Repeat };
+
+// With compare set this is a shadow sampler for sampler2DShadow / sampler2DArrayShadow;
+// its compare op is Conventions::shadowCompareOp() (lit where the receiver is nearer or as near).
+// Linear filtering of a depth texture is refused where the driver cannot do it
+// (Capabilities::linearDepthFilter) when the pair is bound.
+struct SamplerDesc {
+    Filter filter = Filter::Linear;
+    AddressMode address = AddressMode::ClampToEdge;
+    bool compare = false;
+    std::string debugName;
+};
+
+class Sampler {
+public:
+    virtual ~Sampler() = default;
+    virtual const SamplerDesc& desc() const = 0;
+};
+
+// One colour or depth attachment: a texture layer.
+struct Attachment {
+    const Texture* texture = nullptr;
+    std::uint32_t layer = 0;
+};
+
+struct FramebufferDesc {
+    std::span<const Attachment> colors;
+    Attachment depth;
+    std::string debugName;
+};
+
+class Framebuffer {
+public:
+    virtual ~Framebuffer() = default;
+    virtual std::uint32_t width() const = 0;
+    virtual std::uint32_t height() const = 0;
+};
+
+class TimestampQueries {
+public:
+    virtual ~TimestampQueries() = default;
+    virtual std::uint32_t count() const = 0;
+};
+
+} // namespace penumbra::rhi

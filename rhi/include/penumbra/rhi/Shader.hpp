@@ -1,0 +1,48 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace penumbra::rhi {
+
+enum class ShaderStage : std::uint8_t { Vertex, Fragment };
+
+// GLSL 450 written once for both backends. `name` is what error messages cite
+// (usually the file path). The RHI prepends Conventions::glslHeader() after #version.
+// Binding model: one flat namespace of `layout(binding = N)` numbers per pipeline, shared
+// by uniform blocks (std140) and combined samplers; no push constants, no descriptor sets.
+struct ShaderSource {
+    ShaderStage stage = ShaderStage::Vertex;
+    std::string source;
+    std::string name = "<inline>";
+};
+
+enum class BindingKind : std::uint8_t { UniformBuffer, SampledTexture };
+
+struct ShaderBinding {
+    std::uint32_t binding = 0;
+    BindingKind kind = BindingKind::UniformBuffer;
+    std::string name;
+    std::uint32_t size = 0; // uniform block size in bytes (std140)
+};
+
+// glslang's SPIR-V for one stage, with the bindings it declares.
+struct CompiledShader {
+    ShaderStage stage = ShaderStage::Vertex;
+    std::string name;
+    std::vector<std::uint32_t> spirv;
+    std::vector<ShaderBinding> bindings;
+};
+
+class Shader {
+public:
+    virtual ~Shader() = default;
+    virtual const CompiledShader& compiled() const = 0;
+};
+
+// Compiles GLSL 450 to SPIR-V with `preamble` inserted after #version. Throws
+// ShaderCompileError carrying glslang's log ("ERROR: name:line: message").
+CompiledShader compileShader(const ShaderSource& source, const std::string& preamble);
+
+} // namespace penumbra::rhi

@@ -1,0 +1,86 @@
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/Shader.hpp"
+
+#include <fmt/format.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <mutex>
+#include <spirv_cross/spirv_cross.hpp>
+
+namespace penumbra::rhi {
+namespace {
+
+// glslang keeps process-wide tables; they are set up once and kept for the process's life.
+void initializeGlslang()
+{
+    static std::once_flag once;
+    std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+EShLanguage glslangStage(ShaderStage stage)
+{
+    return stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+}
+
+std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spirv, const std::string& name)
+{
+    const spirv_cross::Compiler compiler(spirv);
+    const spirv_cross::ShaderResources resources = compiler.get_shader_resources();
+    if (!resources.push_constant_buffers.empty())
+        throw ShaderCompileError(fmt::format("{}: push constants are not part of the binding model; use a uniform block", name));
+    if (!resources.storage_buffers.empty() || !resources.storage_images.empty() || !resources.separate_images.empty() ||
+        !resources.separate_samplers.empty())
+        throw ShaderCompileError(
+            fmt::format("{}: only uniform blocks and combined samplers (sampler2D...) are supported", name));
+
+    std::vector<ShaderBinding> bindings;
+    auto add = [&](const spirv_cross::Resource& r, BindingKind kind) {
+        if (compiler.get_decoration(r.id, spv::DecorationDescriptorSet) != 0)
+            throw ShaderCompileError(fmt::format("{}: '{}' uses a descriptor set other than 0", name, r.name));
+        if (!compiler.has_decoration(r.id, spv::DecorationBinding))
+            throw ShaderCompileError(fmt::format("{}: '{}' needs layout(binding = N)", name, r.name));
+        ShaderBinding b{compiler.get_decoration(r.id, spv::DecorationBinding), kind, r.name, 0};
+        if (kind == BindingKind::UniformBuffer)
+            b.size = std::uint32_t(compiler.get_declared_struct_size(compiler.get_type(r.base_type_id)));
+        bindings.push_back(b);
+    };
+    for (const spirv_cross::Resource& r : resources.uniform_buffers)
+        add(r, BindingKind::UniformBuffer);
+    for (const spirv_cross::Resource& r : resources.sampled_images)
+        add(r, BindingKind::SampledTexture);
+    return bindings;
+}
+
+} // namespace
+
+CompiledShader compileShader(const ShaderSource& source, const std::string& preamble)
+{
+    initializeGlslang();
+    const EShLanguage stage = glslangStage(source.stage);
+    glslang::TShader shader(stage);
+    const char* text = source.source.c_str();
+    const char* name = source.name.c_str();
+    shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
+    shader.setPreamble(preamble.c_str());
+    shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
+    shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+    const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+    if (!shader.parse(GetDefaultResources(), 450, false, messages))
+        throw ShaderCompileError(fmt::format("GLSL compile failed:\n{}", shader.getInfoLog()));
+
+    glslang::TProgram program;
+    program.addShader(&shader);
+    if (!program.link(messages))
+        throw ShaderCompileError(fmt::format("GLSL link failed for {}:\n{}", source.name, program.getInfoLog()));
+
+    CompiledShader compiled{source.stage, source.name, {}, {}};
+    glslang::SpvOptions options;
+    options.validate = true;
+    glslang::GlslangToSpv(*program.getIntermediate(stage), compiled.spirv, &options);
+    compiled.bindings = reflectBindings(compiled.spirv, source.name);
+    return compiled;
+}
+
+} // namespace penumbra::rhi

@@ -1,0 +1,34 @@
+#include "penumbra/shaders/ShaderLibrary.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <fmt/format.h>
+#include <utility>
+
+namespace penumbra::shaders {
+namespace detail {
+extern const std::pair<std::string_view, std::string_view> embedded[];
+extern const std::size_t embeddedCount;
+} // namespace detail
+
+std::string_view source(std::string_view fileName)
+{
+    std::string known;
+    for (std::size_t i = 0; i < detail::embeddedCount; ++i) {
+        if (detail::embedded[i].first == fileName)
+            return detail::embedded[i].second;
+        known += fmt::format("{}{}", known.empty() ? "" : ", ", detail::embedded[i].first);
+    }
+    throw rhi::Error(fmt::format("no shader named '{}'; known shaders: {}", fileName, known));
+}
+
+rhi::ShaderSource load(std::string_view fileName)
+{
+    const bool vertex = fileName.ends_with(".vert");
+    if (!vertex && !fileName.ends_with(".frag"))
+        throw rhi::Error(fmt::format("shader '{}': the extension must be .vert or .frag", fileName));
+    return {vertex ? rhi::ShaderStage::Vertex : rhi::ShaderStage::Fragment, std::string(source(fileName)),
+            std::string(fileName)};
+}
+
+} // namespace penumbra::shaders
