@@ -1,4 +1,5 @@
-# cmake -DOUTPUT=<file.cpp> -DFILES="<a;b>" -P Embed.cmake: writes the embedded-shader table.
+# cmake -DOUTPUT=<file.cpp> -DFILES=<a|b> -P Embed.cmake: writes the embedded-shader table.
+string(REPLACE "|" ";" FILES "${FILES}")
 set(body "")
 foreach(file IN LISTS FILES)
   get_filename_component(name ${file} NAME)

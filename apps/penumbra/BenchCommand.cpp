@@ -1,0 +1,99 @@
+#include "Commands.hpp"
+#include "DrawScene.hpp"
+#include "RawDraws.hpp"
+
+#include "penumbra/backends/CreateDevice.hpp"
+
+#include <benchmark/benchmark.h>
+#include <fmt/format.h>
+#include <map>
+
+namespace penumbra::apps {
+namespace {
+
+struct BenchOptions {
+    std::vector<std::string> configurations = {"vulkan", "opengl"};
+    std::vector<std::uint32_t> draws = {1000, 5000, 20000};
+    double minTime = 0.5;
+};
+
+// Prints Google Benchmark's table and keeps each run's real time per iteration.
+class CollectingReporter : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override
+    {
+        for (const Run& run : runs)
+            if (run.run_type == Run::RT_Iteration)
+                seconds[run.benchmark_name()] =
+                    run.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(run.time_unit);
+        ConsoleReporter::ReportRuns(runs);
+    }
+    std::map<std::string, double> seconds;
+};
+
+struct Case {
+    std::string configuration;
+    std::uint32_t draws;
+    std::string rhiName, rawName;
+};
+
+void runBenchmarks(const BenchOptions& options)
+{
+    // Devices and scenes live until every benchmark has run.
+    std::vector<std::unique_ptr<rhi::Device>> devices;
+    std::vector<std::unique_ptr<DrawScene>> scenes;
+    std::vector<std::unique_ptr<rhi::CommandList>> lists;
+    std::vector<std::unique_ptr<RawDraws>> raws;
+    std::vector<Case> cases;
+    for (const std::string& configuration : options.configurations) {
+        rhi::DeviceDesc desc = rhi::parseConfiguration(configuration);
+        desc.validation = false; // timing the driver, not the validation layer
+        rhi::Device& device = *devices.emplace_back(createDevice(desc));
+        for (std::uint32_t n : options.draws) {
+            const DrawScene& scene = *scenes.emplace_back(std::make_unique<DrawScene>(device, n));
+            rhi::CommandList& commands = *lists.emplace_back(device.createCommandList());
+            RawDraws& raw = *raws.emplace_back(desc.backend == rhi::Backend::Vulkan ? createRawVulkanDraws(device, scene)
+                                                                                    : createRawOpenGLDraws(device, scene));
+            const Case c{configuration, n, fmt::format("draws/{}/rhi/{}", configuration, n),
+                         fmt::format("draws/{}/raw/{}", configuration, n)};
+            benchmark::RegisterBenchmark(c.rhiName.c_str(), [&device, &scene, &commands](benchmark::State& state) {
+                for (auto _ : state) {
+                    scene.recordRhi(commands);
+                    device.submit(commands);
+                }
+            })->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(options.minTime);
+            benchmark::RegisterBenchmark(c.rawName.c_str(), [&raw](benchmark::State& state) {
+                for (auto _ : state)
+                    raw.frame();
+            })->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(options.minTime);
+            cases.push_back(c);
+        }
+    }
+
+    CollectingReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+
+    fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw", "raw ns/draw",
+               "rhi / raw");
+    for (const Case& c : cases) {
+        const double rhi = reporter.seconds.at(c.rhiName) * 1e9 / c.draws;
+        const double raw = reporter.seconds.at(c.rawName) * 1e9 / c.draws;
+        fmt::print("{:<24} {:>7} {:>14.1f} {:>14.1f} {:>10.3f}\n", c.configuration, c.draws, rhi, raw, rhi / raw);
+    }
+}
+
+} // namespace
+
+void addBenchCommand(CLI::App& app)
+{
+    auto options = std::make_shared<BenchOptions>();
+    CLI::App* bench = app.add_subcommand(
+        "bench", "Time N small draws per frame through the RHI and through hand-written raw API code");
+    bench->add_option("-c,--configurations", options->configurations, "Configurations to measure")
+        ->check(configurationValidator());
+    bench->add_option("-n,--draws", options->draws, "Draws per frame")->check(CLI::Range(1u, 1000000u));
+    bench->add_option("--min-time", options->minTime, "Minimum seconds per benchmark")->check(CLI::Range(0.01, 60.0));
+    bench->callback([options] { runBenchmarks(*options); });
+}
+
+} // namespace penumbra::apps

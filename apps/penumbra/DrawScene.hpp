@@ -1,0 +1,43 @@
+#pragma once
+
+#include "penumbra/rhi/Device.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace penumbra::apps {
+
+// The draw-call benchmark's scene: `count` small cubes, each with its own transform and colour
+// in one uniform buffer (one aligned block per cube), drawn into a small RGBA8 + D32F target.
+// The RHI path and the raw-API paths draw exactly these objects.
+class DrawScene {
+public:
+    DrawScene(rhi::Device& device, std::uint32_t count);
+
+    // One frame through the RHI: clear, then one bindUniformBuffer + drawIndexed per cube.
+    void recordRhi(rhi::CommandList& commands) const;
+
+    std::uint32_t count() const { return count_; }
+    std::uint32_t indexCount() const { return 36; }
+    std::uint64_t objectStride() const { return objectStride_; }
+    static constexpr std::uint32_t objectSize = 80; // std140 size of mesh.vert's Object block
+    static constexpr std::uint32_t size = 128;      // target width and height
+
+    const rhi::Pipeline& pipeline() const { return *pipeline_; }
+    const rhi::Framebuffer& framebuffer() const { return *framebuffer_; }
+    const rhi::Buffer& vertices() const { return *vertices_; }
+    const rhi::Buffer& indices() const { return *indices_; }
+    const rhi::Buffer& objects() const { return *objects_; }
+    const rhi::Texture& color() const { return *color_; }
+
+private:
+    std::uint32_t count_;
+    std::uint64_t objectStride_;
+    std::unique_ptr<rhi::Shader> vertexShader_, fragmentShader_;
+    std::unique_ptr<rhi::Pipeline> pipeline_;
+    std::unique_ptr<rhi::Texture> color_, depth_;
+    std::unique_ptr<rhi::Framebuffer> framebuffer_;
+    std::unique_ptr<rhi::Buffer> vertices_, indices_, objects_;
+};
+
+} // namespace penumbra::apps

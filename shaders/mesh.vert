@@ -1,0 +1,17 @@
+#version 450
+// A small mesh with its own transform: the draw-call benchmark's unit of work.
+
+layout(location = 0) in vec3 inPosition;
+
+layout(std140, binding = 0) uniform Object {
+    mat4 modelViewProjection;
+    vec4 color;
+} object;
+
+layout(location = 0) out vec4 vColor;
+
+void main()
+{
+    gl_Position = object.modelViewProjection * vec4(inPosition, 1.0);
+    vColor = object.color;
+}

@@ -1,0 +1,151 @@
+#include "GpuTesting.hpp"
+#include "PrecisionScene.hpp"
+#include "TestPattern.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <iostream>
+
+namespace penumbra::testing {
+namespace {
+
+struct Rendered {
+    std::string configuration;
+    rhi::Image color;
+    std::vector<float> viewDepth; // NaN where the far plane was kept
+};
+
+// The test pattern through every configuration this build has, with validation on.
+const std::vector<Rendered>& renderedPatterns()
+{
+    static const std::vector<Rendered> results = [] {
+        std::vector<Rendered> out;
+        for (const rhi::NamedConfiguration& c : rhi::namedConfigurations()) {
+            std::unique_ptr<rhi::Device> device;
+            try {
+                device = createValidatedDevice(std::string(c.name));
+            } catch (const rhi::UnsupportedError& e) {
+                std::cout << "[ skipped ] " << c.name << ": " << e.what() << "\n";
+                continue;
+            }
+            pattern::PatternRenderer renderer(*device, {.width = 128, .height = 128});
+            renderer.render(pattern::testPattern());
+            Rendered r{std::string(c.name), renderer.color(), {}};
+            const rhi::DepthImage depth = renderer.depth();
+            for (float d : depth.depth)
+                r.viewDepth.push_back(d == device->conventions().farDepth()
+                                          ? NAN
+                                          : device->conventions().viewDepth(renderer.projection(), d));
+            savePicture(r.color, fmt::format("parity/{}", c.name));
+            expectNoDebugMessages(*device);
+            out.push_back(std::move(r));
+        }
+        return out;
+    }();
+    return results;
+}
+
+struct Difference {
+    int maxAbs = 0;
+    double psnr = INFINITY;
+};
+
+Difference compare(const rhi::Image& a, const rhi::Image& b)
+{
+    Difference d;
+    double squared = 0.0;
+    for (std::size_t i = 0; i < a.bytes.size(); ++i) {
+        const int delta = std::abs(int(a.bytes[i]) - int(b.bytes[i]));
+        d.maxAbs = std::max(d.maxAbs, delta);
+        squared += double(delta) * delta;
+    }
+    if (squared > 0.0)
+        d.psnr = 10.0 * std::log10(255.0 * 255.0 / (squared / double(a.bytes.size())));
+    return d;
+}
+
+TEST(ParityTest, EveryConfigurationIsRendered)
+{
+    EXPECT_GE(renderedPatterns().size(), 2u) << "parity needs at least two configurations";
+}
+
+TEST(ParityTest, PatternIsByteIdenticalEverywhere)
+{
+    const auto& all = renderedPatterns();
+    ASSERT_FALSE(all.empty());
+    for (const Rendered& r : all) {
+        const Difference d = compare(all.front().color, r.color);
+        std::cout << fmt::format("[ parity ] pattern {} vs {}: max abs diff {}, PSNR {} dB\n", r.configuration,
+                                 all.front().configuration, d.maxAbs, d.psnr);
+        EXPECT_EQ(d.maxAbs, 0) << r.configuration << " differs from " << all.front().configuration;
+    }
+}
+
+TEST(ParityTest, LinearViewDepthAgreesEverywhere)
+{
+    const auto& all = renderedPatterns();
+    ASSERT_FALSE(all.empty());
+    for (const Rendered& r : all) {
+        double worst = 0.0;
+        int coverageMismatch = 0;
+        for (std::size_t i = 0; i < r.viewDepth.size(); ++i) {
+            const float a = all.front().viewDepth[i], b = r.viewDepth[i];
+            if (std::isnan(a) != std::isnan(b))
+                ++coverageMismatch;
+            else if (!std::isnan(a))
+                worst = std::max(worst, std::abs(double(a) - b) / a);
+        }
+        std::cout << fmt::format("[ parity ] view depth {} vs {}: max relative diff {:.3g}\n", r.configuration,
+                                 all.front().configuration, worst);
+        EXPECT_EQ(coverageMismatch, 0) << r.configuration;
+        EXPECT_LT(worst, 1e-4) << r.configuration;
+    }
+}
+
+TEST(ParityTest, ReversedZBeatsTheStandardMappingAtDistance)
+{
+    int worstReversed = -1, bestStandard = -1;
+    for (const rhi::NamedConfiguration& c : rhi::namedConfigurations()) {
+        std::unique_ptr<rhi::Device> device;
+        try {
+            device = createValidatedDevice(std::string(c.name));
+        } catch (const rhi::UnsupportedError&) {
+            continue;
+        }
+        const ZFighting z = countZFighting(*device);
+        std::cout << fmt::format("[ z-fighting ] {}: {} of {} pixels\n", c.name, z.fighting, z.pixels);
+        const bool precise = device->conventions().reversedZ() &&
+                             device->conventions().depthRange() == rhi::DepthRange::ZeroToOne;
+        int& slot = precise ? worstReversed : bestStandard;
+        slot = slot < 0 ? z.fighting : (precise ? std::max(slot, z.fighting) : std::min(slot, z.fighting));
+        expectNoDebugMessages(*device);
+    }
+    ASSERT_GE(worstReversed, 0);
+    ASSERT_GE(bestStandard, 0);
+    EXPECT_LT(worstReversed, bestStandard);
+}
+
+TEST(ParityTest, OsMesaAndEglContextsAgree)
+{
+    rhi::DeviceDesc desc = rhi::parseConfiguration("opengl");
+    std::vector<rhi::Image> images;
+    for (rhi::GlContextProvider provider : {rhi::GlContextProvider::EglSurfaceless, rhi::GlContextProvider::OSMesa}) {
+        desc.glContext = provider;
+        std::unique_ptr<rhi::Device> device;
+        try {
+            device = createDevice(desc);
+        } catch (const rhi::UnsupportedError& e) {
+            GTEST_SKIP() << e.what();
+        }
+        pattern::PatternRenderer renderer(*device, {.width = 128, .height = 128});
+        renderer.render(pattern::testPattern());
+        images.push_back(renderer.color());
+        expectNoDebugMessages(*device);
+    }
+    EXPECT_EQ(compare(images[0], images[1]).maxAbs, 0);
+}
+
+} // namespace
+} // namespace penumbra::testing

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/Image.hpp"
+
+#include <array>
+#include <cstdint>
+#include <gtest/gtest.h>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace penumbra::testing {
+
+// The configuration this process tests (--configuration NAME, default vulkan).
+const std::string& configuration();
+void setConfiguration(std::string name);
+
+// A device with validation / debug output on; any message it records fails the test.
+std::unique_ptr<rhi::Device> createValidatedDevice(const std::string& configuration);
+void expectNoDebugMessages(rhi::Device& device);
+
+class GpuTest : public ::testing::Test {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+
+    std::unique_ptr<rhi::Device> device;
+};
+
+using Rgba = std::array<std::uint8_t, 4>;
+Rgba pixel(const rhi::Image& image, std::uint32_t x, std::uint32_t y);
+std::string describe(Rgba c);
+
+// Writes the picture under $PENUMBRA_TEST_OUTPUT (or ./test-output) and returns its path, for failure messages.
+std::string savePicture(const rhi::Image& image, const std::string& name);
+
+} // namespace penumbra::testing

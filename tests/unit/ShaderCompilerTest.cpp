@@ -1,0 +1,80 @@
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/Shader.hpp"
+
+#include <gtest/gtest.h>
+
+namespace penumbra::rhi {
+namespace {
+
+const std::string header = Conventions(DepthRange::ZeroToOne, true).glslHeader();
+
+TEST(ShaderCompilerTest, ReflectsUniformBlocksAndSamplers)
+{
+    const CompiledShader shader = compileShader({ShaderStage::Fragment, R"(#version 450
+layout(std140, binding = 0) uniform Light { mat4 viewProjection; vec4 color; } light;
+layout(binding = 3) uniform sampler2DShadow shadowMap;
+layout(location = 0) out vec4 outColor;
+void main() { outColor = light.color * texture(shadowMap, vec3(0.5, 0.5, PENUMBRA_FAR_DEPTH)); }
+)", "light.frag"}, header);
+    EXPECT_FALSE(shader.spirv.empty());
+    ASSERT_EQ(shader.bindings.size(), 2u);
+    EXPECT_EQ(shader.bindings[0].binding, 0u);
+    EXPECT_EQ(shader.bindings[0].kind, BindingKind::UniformBuffer);
+    EXPECT_EQ(shader.bindings[0].size, 80u);
+    EXPECT_EQ(shader.bindings[1].binding, 3u);
+    EXPECT_EQ(shader.bindings[1].kind, BindingKind::SampledTexture);
+}
+
+TEST(ShaderCompilerTest, ConventionsHeaderCompilesInEveryConvention)
+{
+    const std::string source = R"(#version 450
+layout(location = 0) in vec4 position;
+void main() {
+    vec4 clip = penumbraClampToNearPlane(position);
+    gl_Position = penumbraIsNearer(clip.z, PENUMBRA_NEAR_DEPTH) ? PENUMBRA_CLIP_TO_TEXTURE * clip : clip;
+}
+)";
+    for (DepthRange range : {DepthRange::ZeroToOne, DepthRange::MinusOneToOne})
+        for (bool reversed : {false, true})
+            EXPECT_NO_THROW(compileShader({ShaderStage::Vertex, source, "header.vert"},
+                                          Conventions(range, reversed).glslHeader()));
+}
+
+TEST(ShaderCompilerTest, ErrorsCiteFileAndLine)
+{
+    try {
+        compileShader({ShaderStage::Fragment, "#version 450\nvoid main()\n{\n    undeclaredThing = 1.0;\n}\n", "broken.frag"},
+                      header);
+        FAIL() << "a broken shader compiled";
+    } catch (const ShaderCompileError& e) {
+        EXPECT_NE(std::string(e.what()).find("broken.frag:4"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("undeclaredThing"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ShaderCompilerTest, PushConstantsAreRefusedWithTheReason)
+{
+    try {
+        compileShader({ShaderStage::Vertex, R"(#version 450
+layout(push_constant) uniform Push { mat4 m; } push;
+void main() { gl_Position = push.m[0]; }
+)", "push.vert"}, header);
+        FAIL() << "push constants accepted";
+    } catch (const ShaderCompileError& e) {
+        EXPECT_NE(std::string(e.what()).find("push.vert"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("push constants"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ShaderCompilerTest, BindingsNeedExplicitNumbers)
+{
+    EXPECT_THROW(compileShader({ShaderStage::Fragment, R"(#version 450
+layout(std140) uniform Block { vec4 v; } block;
+layout(location = 0) out vec4 o;
+void main() { o = block.v; }
+)", "nobinding.frag"}, header), ShaderCompileError);
+}
+
+} // namespace
+} // namespace penumbra::rhi
