@@ -1,7 +1,8 @@
 # Compiler settings every Penumbra target shares.
 
 if(PENUMBRA_SANITIZE)
-  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+                      -fno-sanitize=vptr) # Debian's glslang has no RTTI for the vptr check
   add_link_options(-fsanitize=address,undefined)
 endif()
 

@@ -71,16 +71,18 @@ const rhi::Pipeline& PatternRenderer::pipeline(rhi::CullMode cull)
 
 void PatternRenderer::render(std::span<const PatternVertex> triangles, rhi::CullMode cull)
 {
-    const std::uint64_t size = triangles.size_bytes();
-    if (!vertices_ || vertices_->desc().size < size)
-        vertices_ = device_.createBuffer({.size = size, .usage = rhi::BufferUsage::Vertex, .debugName = "pattern.vertices"});
-    vertices_->write(0, std::as_bytes(triangles));
-
     commands_->beginPass({.framebuffer = framebuffer_.get(), .clearColor = glm::vec4(0, 0, 0, 1)});
-    commands_->bindPipeline(pipeline(cull));
-    commands_->bindUniformBuffer(0, *uniforms_, 0, sizeof(glm::mat4));
-    commands_->bindVertexBuffer(0, *vertices_);
-    commands_->draw(std::uint32_t(triangles.size()));
+    if (!triangles.empty()) {
+        const std::uint64_t size = triangles.size_bytes();
+        if (!vertices_ || vertices_->desc().size < size)
+            vertices_ = device_.createBuffer(
+                {.size = size, .usage = rhi::BufferUsage::Vertex, .debugName = "pattern.vertices"});
+        vertices_->write(0, std::as_bytes(triangles));
+        commands_->bindPipeline(pipeline(cull));
+        commands_->bindUniformBuffer(0, *uniforms_, 0, sizeof(glm::mat4));
+        commands_->bindVertexBuffer(0, *vertices_);
+        commands_->draw(std::uint32_t(triangles.size()));
+    }
     commands_->endPass();
     device_.submit(*commands_);
 }

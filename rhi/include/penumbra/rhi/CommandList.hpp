@@ -40,7 +40,8 @@ struct PassDesc {
 };
 
 // Records commands; Device::submit runs them in order and waits. After a submit the list is
-// empty and records anew. Resources a list names must outlive its submission.
+// empty and records anew. Resources a list names must outlive its submission; the list must not
+// outlive its device.
 class CommandList {
 public:
     virtual ~CommandList() = default;

@@ -43,7 +43,8 @@ public:
 
     virtual std::unique_ptr<Buffer> createBuffer(const BufferDesc& desc) = 0;
     virtual std::unique_ptr<Texture> createTexture(const TextureDesc& desc) = 0;
-    // Uploads one whole layer: tightly packed rows, row 0 (the top of the picture) first.
+    // Uploads one whole layer: tightly packed rows, row 0 (the top of the picture) first, texels
+    // laid out as copyTextureToBuffer gives them (D24S8: 32-bit words, depth in the low 24 bits).
     virtual void writeTexture(Texture& texture, std::uint32_t layer, std::span<const std::byte> data) = 0;
     virtual std::unique_ptr<Sampler> createSampler(const SamplerDesc& desc) = 0;
     // Compiles with glslang (errors name the source and line) and creates the backend's module.

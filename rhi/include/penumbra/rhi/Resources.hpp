@@ -74,7 +74,7 @@ enum class AddressMode : std::uint8_t { ClampToEdge, Repeat };
 // With compare set this is a shadow sampler for sampler2DShadow / sampler2DArrayShadow;
 // its compare op is Conventions::shadowCompareOp() (lit where the receiver is nearer or as near).
 // Linear filtering of a depth texture is refused where the driver cannot do it
-// (Capabilities::linearDepthFilter) when the pair is bound.
+// (Capabilities::supportsLinearFilter) when the pair is bound.
 struct SamplerDesc {
     Filter filter = Filter::Linear;
     AddressMode address = AddressMode::ClampToEdge;

@@ -1,0 +1,142 @@
+#pragma once
+
+#include "GlPipeline.hpp"
+#include "GlResources.hpp"
+#include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/rhi/Device.hpp"
+
+#include <optional>
+#include <variant>
+#include <vector>
+
+namespace penumbra::opengl {
+
+class GlOrientation;
+class GlStateCache;
+
+// Recorded commands, resolved to GL names at record time and replayed at submit.
+namespace command {
+struct BeginPass {
+    const GlFramebuffer* framebuffer;
+    std::optional<glm::vec4> clearColor;
+    bool clearDepth;
+};
+struct EndPass {};
+struct SetViewport {
+    rhi::Viewport viewport;
+};
+struct SetScissor {
+    rhi::Rect scissor;
+};
+struct SetDepthBias {
+    rhi::DepthBias bias; // signed
+};
+struct BindPipeline {
+    const GlPipeline* pipeline;
+};
+struct BindVertexBuffer {
+    std::uint32_t slot;
+    GLuint buffer;
+    std::uint64_t offset;
+};
+struct BindIndexBuffer {
+    GLuint buffer;
+    GLenum type;
+    std::uint64_t offset;
+};
+struct BindUniformBuffer {
+    std::uint32_t binding;
+    GLuint buffer;
+    std::uint64_t offset;
+    std::uint64_t size;
+};
+struct BindTexture {
+    std::uint32_t unit;
+    GLuint texture;
+    GLuint sampler;
+};
+struct Draw {
+    std::uint32_t vertexCount, instanceCount, firstVertex, firstInstance;
+};
+struct DrawIndexed {
+    std::uint32_t indexCount, instanceCount, firstIndex;
+    std::int32_t vertexOffset;
+    std::uint32_t firstInstance;
+};
+struct CopyBuffer {
+    GLuint src;
+    std::uint64_t srcOffset;
+    GLuint dst;
+    std::uint64_t dstOffset, size;
+};
+struct CopyTexture {
+    const GlTexture* src;
+    std::uint32_t srcLayer;
+    const GlTexture* dst;
+    std::uint32_t dstLayer;
+};
+struct CopyTextureToBuffer {
+    const GlTexture* src;
+    std::uint32_t layer;
+    const GlBuffer* dst;
+    std::uint64_t dstOffset;
+};
+struct WriteTimestamp {
+    GlTimestampQueries* queries;
+    std::uint32_t index;
+};
+
+using Any = std::variant<BeginPass, EndPass, SetViewport, SetScissor, SetDepthBias, BindPipeline, BindVertexBuffer,
+                         BindIndexBuffer, BindUniformBuffer, BindTexture, Draw, DrawIndexed, CopyBuffer, CopyTexture,
+                         CopyTextureToBuffer, WriteTimestamp>;
+} // namespace command
+
+// What replaying needs from the device.
+struct GlReplayContext {
+    const GlFunctions& gl;
+    GlStateCache& cache;
+    const GlOrientation& orientation;
+    float clearDepth;
+    std::uint64_t generation; // distinguishes submits for the per-VAO caches
+};
+
+// Records into a vector and replays at submit, so buffer writes made before submit are seen
+// (Vulkan's semantics). A list must not outlive the device that created it.
+class GlCommandList final : public rhi::CommandList {
+public:
+    GlCommandList(const rhi::Device& device, const GlContext& context) : device_(device), context_(context) {}
+
+    void beginPass(const rhi::PassDesc& pass) override;
+    void endPass() override;
+    void setViewport(const rhi::Viewport& viewport) override;
+    void setScissor(const rhi::Rect& scissor) override;
+    void setDepthBias(const rhi::DepthBias& bias) override;
+    void bindPipeline(const rhi::Pipeline& pipeline) override;
+    void bindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void bindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset) override;
+    void bindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+                           std::uint64_t size) override;
+    void bindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler) override;
+    void draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
+              std::uint32_t firstInstance) override;
+    void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
+                     std::int32_t vertexOffset, std::uint32_t firstInstance) override;
+    void copyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst, std::uint64_t dstOffset,
+                    std::uint64_t size) override;
+    void copyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
+                     std::uint32_t dstLayer) override;
+    void copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, rhi::Buffer& dst,
+                             std::uint64_t dstOffset) override;
+    void writeTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
+
+    const GlContext& context() const { return context_; }
+    // Runs every recorded command on the current context, then empties the list (also on error).
+    void replay(const GlReplayContext& replay);
+
+private:
+    const rhi::Device& device_;
+    const GlContext& context_;
+    std::vector<command::Any> commands_;
+};
+
+} // namespace penumbra::opengl

@@ -1,0 +1,91 @@
+#include "GlContext.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <fmt/format.h>
+
+namespace penumbra::opengl {
+namespace {
+
+// The context we last made current on this thread; skips redundant MakeCurrent calls.
+thread_local const GlContext* currentContext = nullptr;
+thread_local HeadlessContext* currentHeadless = nullptr;
+
+std::unique_ptr<HeadlessContext> createHeadless(rhi::GlContextProvider provider, bool debug)
+{
+    return provider == rhi::GlContextProvider::OSMesa ? createOsMesaContext(debug)
+                                                      : createEglSurfacelessContext(debug);
+}
+
+} // namespace
+
+GlContext::GlContext(rhi::GlContextProvider provider, bool debug)
+    : context_(createHeadless(provider, debug))
+{
+    try {
+        initialize();
+    } catch (...) {
+        releaseIfCurrent(); // no destructor runs for a failed constructor
+        throw;
+    }
+}
+
+void GlContext::initialize()
+{
+    // Which optional entry points exist depends on the version and extensions: query those first.
+    auto getIntegerv = reinterpret_cast<PFNGLGETINTEGERVPROC>(context_->procAddress("glGetIntegerv"));
+    auto getStringi = reinterpret_cast<PFNGLGETSTRINGIPROC>(context_->procAddress("glGetStringi"));
+    if (!getIntegerv || !getStringi)
+        throw rhi::Error("OpenGL: the driver does not provide glGetIntegerv / glGetStringi");
+    makeCurrent();
+    GLint major = 0;
+    GLint minor = 0;
+    getIntegerv(GL_MAJOR_VERSION, &major);
+    getIntegerv(GL_MINOR_VERSION, &minor);
+    version_ = major * 10 + minor;
+    if (version_ < 45)
+        throw rhi::Error(fmt::format("OpenGL: a 4.5 core context is required, the driver gave {}.{}", major, minor));
+    gl_.GetIntegerv = getIntegerv;
+    gl_.GetStringi = getStringi;
+    const bool clamp = version_ >= 46 || hasExtension("GL_ARB_polygon_offset_clamp") ||
+                       hasExtension("GL_EXT_polygon_offset_clamp");
+    gl_ = loadGlFunctions(*context_, clamp);
+}
+
+GlContext::~GlContext() { releaseIfCurrent(); }
+
+void GlContext::releaseIfCurrent()
+{
+    if (currentContext != this)
+        return;
+    context_->release();
+    currentContext = nullptr;
+    currentHeadless = nullptr;
+}
+
+void GlContext::makeCurrent() const
+{
+    if (currentContext == this)
+        return;
+    // EGL and OSMesa each track their own current context; unbind the other one so neither is stale.
+    if (currentHeadless)
+        currentHeadless->release();
+    currentContext = nullptr;
+    currentHeadless = nullptr;
+    context_->makeCurrent();
+    currentContext = this;
+    currentHeadless = context_.get();
+}
+
+bool GlContext::hasExtension(const std::string& name) const
+{
+    makeCurrent();
+    GLint count = 0;
+    gl_.GetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+        if (name == reinterpret_cast<const char*>(gl_.GetStringi(GL_EXTENSIONS, GLuint(i))))
+            return true;
+    return false;
+}
+
+} // namespace penumbra::opengl

@@ -1,0 +1,196 @@
+#include "GlDevice.hpp"
+
+#include "GlCommandList.hpp"
+#include "GlFormats.hpp"
+#include "GlPipeline.hpp"
+#include "GlResources.hpp"
+#include "penumbra/opengl/OpenGLDevice.hpp"
+#include "penumbra/rhi/BackendSupport.hpp"
+
+#include <cstring>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace penumbra::opengl {
+namespace {
+
+GLint integer(const GlFunctions& gl, GLenum name)
+{
+    GLint value = 0;
+    gl.GetIntegerv(name, &value);
+    return value;
+}
+
+std::string string(const GlFunctions& gl, GLenum name)
+{
+    const GLubyte* text = gl.GetString(name);
+    return text ? reinterpret_cast<const char*>(text) : "";
+}
+
+} // namespace
+
+std::unique_ptr<rhi::Device> createOpenGLDevice(const rhi::DeviceDesc& desc)
+{
+    return std::make_unique<GlDevice>(desc);
+}
+
+// This factory is the OpenGL backend whatever desc.backend says; desc() reports it truthfully.
+rhi::DeviceDesc GlDevice::openGlDesc(rhi::DeviceDesc desc)
+{
+    desc.backend = rhi::Backend::OpenGL;
+    return desc;
+}
+
+GlDevice::GlDevice(const rhi::DeviceDesc& desc)
+    : desc_(openGlDesc(desc)),
+      context_(std::make_shared<GlContext>(desc.glContext, desc.validation)),
+      orientation_(desc.clipControl),
+      conventions_(orientation_.conventions(desc.reversedZ))
+{
+    context_->makeCurrent();
+    const GlFunctions& gl = context_->gl();
+    if (desc_.validation)
+        enableDebugOutput(gl, context_->debugLog());
+    orientation_.apply(*context_);
+    capabilities_ = queryCapabilities();
+    cache_.emplace(gl, std::uint32_t(integer(gl, GL_MAX_UNIFORM_BUFFER_BINDINGS)),
+                   std::uint32_t(integer(gl, GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS)));
+}
+
+GlDevice::~GlDevice() = default;
+
+rhi::Capabilities GlDevice::queryCapabilities() const
+{
+    const GlFunctions& gl = context_->gl();
+    rhi::Capabilities caps;
+    caps.api = "OpenGL " + string(gl, GL_VERSION);
+    caps.device = string(gl, GL_RENDERER);
+    caps.depthClamp = true; // core since 3.2
+    caps.depthBiasClamp = gl.PolygonOffsetClamp != nullptr;
+    GLint timestampBits = 0;
+    gl.GetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &timestampBits);
+    caps.timestamps = timestampBits > 0;
+    caps.uniformBufferOffsetAlignment = std::uint32_t(integer(gl, GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
+    caps.maxTextureSize = std::uint32_t(integer(gl, GL_MAX_TEXTURE_SIZE));
+    caps.maxTextureLayers = std::uint32_t(integer(gl, GL_MAX_ARRAY_TEXTURE_LAYERS));
+    caps.linearFilter.fill(true); // GL filters every format here linearly, depth with comparison included
+    return caps;
+}
+
+std::unique_ptr<rhi::Buffer> GlDevice::createBuffer(const rhi::BufferDesc& desc)
+{
+    return std::make_unique<GlBuffer>(context_, desc);
+}
+
+std::unique_ptr<rhi::Texture> GlDevice::createTexture(const rhi::TextureDesc& desc)
+{
+    if (desc.width > capabilities_.maxTextureSize || desc.height > capabilities_.maxTextureSize ||
+        desc.layers > capabilities_.maxTextureLayers)
+        throw rhi::Error(fmt::format("texture '{}': {}x{}x{} exceeds the limits {}x{}x{}", desc.debugName, desc.width,
+                                     desc.height, desc.layers, capabilities_.maxTextureSize,
+                                     capabilities_.maxTextureSize, capabilities_.maxTextureLayers));
+    return std::make_unique<GlTexture>(context_, desc);
+}
+
+void GlDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::span<const std::byte> data)
+{
+    auto& t = glObject<GlTexture>(texture, "writeTexture texture");
+    const rhi::TextureDesc& d = t.desc();
+    if (layer >= d.layers)
+        throw rhi::Error(fmt::format("writeTexture: layer {} of '{}' is out of range [0, {}]", layer, d.debugName,
+                                     d.layers - 1));
+    if (data.size() != rhi::layerSize(d))
+        throw rhi::Error(fmt::format("writeTexture: '{}' needs {} bytes per layer, got {}", d.debugName,
+                                     rhi::layerSize(d), data.size()));
+    const GlTextureFormat f = glTextureFormat(d.format);
+    std::vector<std::uint32_t> packed;
+    const void* pixels = data.data();
+    if (d.format == rhi::Format::D24S8) {
+        // The RHI's words hold depth in the low 24 bits; GL_UNSIGNED_INT_24_8 wants it in the high 24.
+        packed.resize(data.size() / 4);
+        std::memcpy(packed.data(), data.data(), data.size());
+        for (std::uint32_t& word : packed)
+            word <<= 8;
+        pixels = packed.data();
+    }
+    context_->makeCurrent();
+    const GlFunctions& gl = context_->gl();
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (t.isArray())
+        gl.TextureSubImage3D(t.name(), 0, 0, 0, GLint(layer), GLsizei(d.width), GLsizei(d.height), 1, f.pixelFormat,
+                             f.pixelType, pixels);
+    else
+        gl.TextureSubImage2D(t.name(), 0, 0, 0, GLsizei(d.width), GLsizei(d.height), f.pixelFormat, f.pixelType,
+                             pixels);
+}
+
+std::unique_ptr<rhi::Sampler> GlDevice::createSampler(const rhi::SamplerDesc& desc)
+{
+    return std::make_unique<GlSampler>(context_, desc, conventions_);
+}
+
+std::unique_ptr<rhi::Shader> GlDevice::createShader(const rhi::ShaderSource& source)
+{
+    return std::make_unique<GlShader>(context_, rhi::compileShader(source, conventions_.glslHeader()), orientation_);
+}
+
+std::unique_ptr<rhi::Pipeline> GlDevice::createPipeline(const rhi::PipelineDesc& desc)
+{
+    return std::make_unique<GlPipeline>(context_, desc, conventions_, capabilities_.depthBiasClamp);
+}
+
+std::unique_ptr<rhi::Framebuffer> GlDevice::createFramebuffer(const rhi::FramebufferDesc& desc)
+{
+    return std::make_unique<GlFramebuffer>(context_, desc);
+}
+
+std::unique_ptr<rhi::TimestampQueries> GlDevice::createTimestampQueries(std::uint32_t count)
+{
+    return std::make_unique<GlTimestampQueries>(context_, count);
+}
+
+std::unique_ptr<rhi::CommandList> GlDevice::createCommandList()
+{
+    return std::make_unique<GlCommandList>(*this, *context_);
+}
+
+void GlDevice::applySubmitDefaults()
+{
+    const GlFunctions& gl = context_->gl();
+    cache_->invalidate();
+    gl.Enable(GL_POLYGON_OFFSET_FILL); // the bias is always set, zero when unused
+    gl.Enable(GL_PROGRAM_POINT_SIZE);  // points take gl_PointSize, as in Vulkan
+    gl.Disable(GL_DITHER);             // Vulkan does not dither; keep RGBA8 results identical
+    gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    cache_->frontFace(orientation_.frontFace());
+}
+
+void GlDevice::submit(rhi::CommandList& commands)
+{
+    auto& list = glObject<GlCommandList>(commands, "submitted command list");
+    if (&list.context() != context_.get())
+        throw rhi::Error("submit: the command list was created by another device");
+    context_->makeCurrent();
+    applySubmitDefaults();
+    list.replay({context_->gl(), *cache_, orientation_, conventions_.clearDepth(), ++submitCount_});
+    context_->gl().Finish();
+    if (!desc_.throwOnDebugMessage)
+        return;
+    const std::vector<std::string> fresh = context_->debugLog().takeUnreported();
+    if (!fresh.empty())
+        throw rhi::Error(fmt::format("OpenGL debug output reported {} message(s):\n{}", fresh.size(),
+                                     fmt::join(fresh, "\n")));
+}
+
+std::vector<double> GlDevice::readTimestamps(const rhi::TimestampQueries& queries)
+{
+    return glObject<const GlTimestampQueries>(queries, "readTimestamps queries").read();
+}
+
+std::vector<std::string> GlDevice::debugMessages() const { return context_->debugLog().messages(); }
+
+void GlDevice::clearDebugMessages() { context_->debugLog().clear(); }
+
+} // namespace penumbra::opengl

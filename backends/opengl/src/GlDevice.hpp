@@ -1,0 +1,55 @@
+#pragma once
+
+#include "GlContext.hpp"
+#include "GlOrientation.hpp"
+#include "GlStateCache.hpp"
+#include "penumbra/rhi/Device.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace penumbra::opengl {
+
+class GlDevice final : public rhi::Device {
+public:
+    explicit GlDevice(const rhi::DeviceDesc& desc);
+    ~GlDevice() override;
+
+    const rhi::DeviceDesc& desc() const override { return desc_; }
+    const rhi::Conventions& conventions() const override { return conventions_; }
+    const rhi::Capabilities& capabilities() const override { return capabilities_; }
+
+    std::unique_ptr<rhi::Buffer> createBuffer(const rhi::BufferDesc& desc) override;
+    std::unique_ptr<rhi::Texture> createTexture(const rhi::TextureDesc& desc) override;
+    void writeTexture(rhi::Texture& texture, std::uint32_t layer, std::span<const std::byte> data) override;
+    std::unique_ptr<rhi::Sampler> createSampler(const rhi::SamplerDesc& desc) override;
+    std::unique_ptr<rhi::Shader> createShader(const rhi::ShaderSource& source) override;
+    std::unique_ptr<rhi::Pipeline> createPipeline(const rhi::PipelineDesc& desc) override;
+    std::unique_ptr<rhi::Framebuffer> createFramebuffer(const rhi::FramebufferDesc& desc) override;
+    std::unique_ptr<rhi::TimestampQueries> createTimestampQueries(std::uint32_t count) override;
+    std::unique_ptr<rhi::CommandList> createCommandList() override;
+
+    void submit(rhi::CommandList& commands) override;
+    std::vector<double> readTimestamps(const rhi::TimestampQueries& queries) override;
+
+    std::vector<std::string> debugMessages() const override;
+    void clearDebugMessages() override;
+
+    const GlContext& context() const { return *context_; }
+
+private:
+    static rhi::DeviceDesc openGlDesc(rhi::DeviceDesc desc);
+    rhi::Capabilities queryCapabilities() const;
+    // State that every submit assumes; set again each time because raw GL may run between submits.
+    void applySubmitDefaults();
+
+    rhi::DeviceDesc desc_;
+    std::shared_ptr<GlContext> context_;
+    GlOrientation orientation_;
+    rhi::Conventions conventions_;
+    rhi::Capabilities capabilities_;
+    std::optional<GlStateCache> cache_;
+    std::uint64_t submitCount_ = 0;
+};
+
+} // namespace penumbra::opengl

@@ -1,0 +1,171 @@
+#include "GlPipeline.hpp"
+
+#include "GlFormats.hpp"
+#include "GlOrientation.hpp"
+#include "penumbra/rhi/BackendSupport.hpp"
+
+#include <fmt/format.h>
+#include <spirv_cross/spirv_glsl.hpp>
+
+namespace penumbra::opengl {
+namespace {
+
+std::string crossCompile(const rhi::CompiledShader& compiled, const GlOrientation& orientation)
+{
+    try {
+        spirv_cross::CompilerGLSL compiler(compiled.spirv);
+        spirv_cross::CompilerGLSL::Options options = compiler.get_common_options();
+        options.version = 450;
+        options.es = false;
+        options.vulkan_semantics = false;
+        options.enable_420pack_extension = true;
+        options.vertex.flip_vert_y = compiled.stage == rhi::ShaderStage::Vertex && orientation.flipVertexY();
+        // The conventions' projections already target the device's depth range.
+        options.vertex.fixup_clipspace = false;
+        compiler.set_common_options(options);
+        return compiler.compile();
+    } catch (const spirv_cross::CompilerError& e) {
+        throw rhi::Error(fmt::format("{}: SPIRV-Cross cannot translate the SPIR-V to GLSL: {}", compiled.name, e.what()));
+    }
+}
+
+std::string shaderLog(const GlFunctions& gl, GLuint shader)
+{
+    GLint length = 0;
+    gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(std::size_t(std::max(length, 1)), '\0');
+    gl.GetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
+    return log.c_str();
+}
+
+std::string programLog(const GlFunctions& gl, GLuint program)
+{
+    GLint length = 0;
+    gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(std::size_t(std::max(length, 1)), '\0');
+    gl.GetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+    return log.c_str();
+}
+
+GlFixedState fixedState(const rhi::PipelineDesc& desc, const rhi::Conventions& conventions)
+{
+    GlFixedState s;
+    s.primitive = glPrimitive(desc.topology);
+    s.depthTest = desc.depth.test;
+    s.depthFunc = glCompareFunc(conventions.depthCompareOp(desc.depth.compare));
+    s.depthMask = desc.depth.write ? GL_TRUE : GL_FALSE;
+    s.depthClamp = desc.depth.clamp;
+    s.cull = desc.cull != rhi::CullMode::None;
+    s.cullFace = desc.cull == rhi::CullMode::Front ? GL_FRONT : GL_BACK;
+    s.bias = rhi::signedDepthBias(conventions, desc.depth.bias);
+    for (const rhi::ColorTarget& c : desc.colorTargets) {
+        const rhi::BlendState& b = c.blend;
+        auto bit = [&](rhi::ColorMask m) -> GLboolean { return rhi::hasFlag(c.writeMask, m) ? GL_TRUE : GL_FALSE; };
+        s.targets.push_back({b.enable, glBlendFactor(b.srcColor), glBlendFactor(b.dstColor),
+                             glBlendEquation(b.colorOp), glBlendFactor(b.srcAlpha), glBlendFactor(b.dstAlpha),
+                             glBlendEquation(b.alphaOp),
+                             {bit(rhi::ColorMask::R), bit(rhi::ColorMask::G), bit(rhi::ColorMask::B),
+                              bit(rhi::ColorMask::A)}});
+    }
+    return s;
+}
+
+} // namespace
+
+GlShader::GlShader(GlContextPtr context, rhi::CompiledShader compiled, const GlOrientation& orientation)
+    : context_(std::move(context)), compiled_(std::move(compiled)), glsl_(crossCompile(compiled_, orientation))
+{
+    context_->makeCurrent();
+    const GlFunctions& gl = context_->gl();
+    name_ = gl.CreateShader(compiled_.stage == rhi::ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER);
+    const char* text = glsl_.c_str();
+    gl.ShaderSource(name_, 1, &text, nullptr);
+    gl.CompileShader(name_);
+    GLint ok = GL_FALSE;
+    gl.GetShaderiv(name_, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        const std::string log = shaderLog(gl, name_);
+        gl.DeleteShader(name_);
+        throw rhi::Error(fmt::format("{}: the GL driver rejected the GLSL made by SPIRV-Cross:\n{}\n--- GLSL ---\n{}",
+                                     compiled_.name, log, glsl_));
+    }
+    gl.ObjectLabel(GL_SHADER, name_, GLsizei(compiled_.name.size()), compiled_.name.c_str());
+}
+
+GlShader::~GlShader()
+{
+    context_->makeCurrent();
+    context_->gl().DeleteShader(name_);
+}
+
+GlPipeline::GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions,
+                       bool depthBiasClamp)
+    : context_(std::move(context)), desc_(desc), state_(fixedState(desc, conventions))
+{
+    rhi::checkPipeline(desc);
+    if (desc.depth.bias.clamp != 0.0f && !depthBiasClamp)
+        throw rhi::UnsupportedError(fmt::format(
+            "pipeline '{}': depth bias clamp {} needs glPolygonOffsetClamp, which this driver lacks", desc.debugName,
+            desc.depth.bias.clamp));
+    if (desc.colorTargets.size() > 8)
+        throw rhi::Error(fmt::format("pipeline '{}': at most 8 colour targets", desc.debugName));
+    context_->makeCurrent();
+    link();
+    buildVertexArray();
+}
+
+GlPipeline::~GlPipeline()
+{
+    context_->makeCurrent();
+    context_->gl().DeleteVertexArrays(1, &vertexArray_);
+    context_->gl().DeleteProgram(program_);
+}
+
+void GlPipeline::link()
+{
+    const GlFunctions& gl = context_->gl();
+    const auto& vertex = glObject<const GlShader>(*desc_.vertex, "vertex shader");
+    const auto& fragment = glObject<const GlShader>(*desc_.fragment, "fragment shader");
+    program_ = gl.CreateProgram();
+    gl.AttachShader(program_, vertex.name());
+    gl.AttachShader(program_, fragment.name());
+    gl.LinkProgram(program_);
+    gl.DetachShader(program_, vertex.name());
+    gl.DetachShader(program_, fragment.name());
+    GLint ok = GL_FALSE;
+    gl.GetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        const std::string log = programLog(gl, program_);
+        gl.DeleteProgram(program_);
+        throw rhi::Error(fmt::format("pipeline '{}': linking {} and {} failed:\n{}", desc_.debugName,
+                                     vertex.compiled().name, fragment.compiled().name, log));
+    }
+    baseInstanceLocation_ = gl.GetUniformLocation(program_, "SPIRV_Cross_BaseInstance");
+    if (!desc_.debugName.empty())
+        gl.ObjectLabel(GL_PROGRAM, program_, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
+}
+
+void GlPipeline::buildVertexArray()
+{
+    const GlFunctions& gl = context_->gl();
+    gl.CreateVertexArrays(1, &vertexArray_);
+    const rhi::VertexLayout& layout = desc_.vertexLayout;
+    for (std::size_t slot = 0; slot < layout.buffers.size(); ++slot) {
+        strides_.push_back(GLsizei(layout.buffers[slot].stride));
+        gl.VertexArrayBindingDivisor(vertexArray_, GLuint(slot), layout.buffers[slot].perInstance ? 1 : 0);
+    }
+    for (const rhi::VertexAttribute& a : layout.attributes) {
+        if (a.buffer >= layout.buffers.size())
+            throw rhi::Error(fmt::format("pipeline '{}': attribute {} reads vertex buffer slot {}, which the layout "
+                                         "does not declare", desc_.debugName, a.location, a.buffer));
+        const GlVertexFormat f = glVertexFormat(a.format);
+        gl.EnableVertexArrayAttrib(vertexArray_, a.location);
+        gl.VertexArrayAttribFormat(vertexArray_, a.location, f.size, f.type, f.normalized, a.offset);
+        gl.VertexArrayAttribBinding(vertexArray_, a.location, a.buffer);
+    }
+    cache_.vertexBuffers.assign(strides_.size(), {0, 0});
+    if (!desc_.debugName.empty())
+        gl.ObjectLabel(GL_VERTEX_ARRAY, vertexArray_, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
+}
+
+} // namespace penumbra::opengl

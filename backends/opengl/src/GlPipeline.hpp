@@ -1,0 +1,93 @@
+#pragma once
+
+#include "GlResources.hpp"
+#include "penumbra/rhi/Pipeline.hpp"
+#include "penumbra/rhi/Shader.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace penumbra::opengl {
+
+class GlOrientation;
+
+// SPIR-V from glslang, cross-compiled by SPIRV-Cross to GLSL 450 core and compiled by the driver.
+class GlShader final : public rhi::Shader {
+public:
+    GlShader(GlContextPtr context, rhi::CompiledShader compiled, const GlOrientation& orientation);
+    ~GlShader() override;
+
+    const rhi::CompiledShader& compiled() const override { return compiled_; }
+    GLuint name() const { return name_; }
+
+private:
+    GlContextPtr context_;
+    rhi::CompiledShader compiled_;
+    std::string glsl_; // quoted when the driver rejects it
+    GLuint name_ = 0;
+};
+
+struct GlBlendTarget {
+    bool enable = false;
+    GLenum srcColor = GL_ONE;
+    GLenum dstColor = GL_ZERO;
+    GLenum colorEquation = GL_FUNC_ADD;
+    GLenum srcAlpha = GL_ONE;
+    GLenum dstAlpha = GL_ZERO;
+    GLenum alphaEquation = GL_FUNC_ADD;
+    std::array<GLboolean, 4> mask{GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+};
+
+// Fixed-function state in GL terms, resolved once at creation and applied at bindPipeline.
+struct GlFixedState {
+    GLenum primitive = GL_TRIANGLES;
+    bool depthTest = false;
+    GLenum depthFunc = GL_LESS;
+    GLboolean depthMask = GL_FALSE;
+    bool depthClamp = false;
+    bool cull = false;
+    GLenum cullFace = GL_BACK;
+    rhi::DepthBias bias; // already signed by the conventions
+    std::vector<GlBlendTarget> targets;
+};
+
+// What the pipeline's VAO currently references, so redundant re-binds are skipped. Valid only for
+// the submit `generation` it was filled in: raw GL between submits may have changed the VAO.
+struct GlVertexArrayCache {
+    std::uint64_t generation = 0;
+    std::vector<std::pair<GLuint, std::uint64_t>> vertexBuffers;
+    GLuint indexBuffer = 0;
+    std::int64_t baseInstance = -1; // value of SPIRV_Cross_BaseInstance; -1: unknown
+};
+
+class GlPipeline final : public rhi::Pipeline {
+public:
+    GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions,
+               bool depthBiasClamp);
+    ~GlPipeline() override;
+
+    const rhi::PipelineDesc& desc() const override { return desc_; }
+    GLuint program() const { return program_; }
+    GLuint vertexArray() const { return vertexArray_; }
+    const GlFixedState& state() const { return state_; }
+    // SPIRV-Cross's stand-in for the base instance in gl_InstanceIndex; -1 when unused.
+    GLint baseInstanceLocation() const { return baseInstanceLocation_; }
+    GLsizei stride(std::uint32_t slot) const { return slot < strides_.size() ? strides_[slot] : 0; }
+    GlVertexArrayCache& vertexArrayCache() const { return cache_; }
+
+private:
+    void link();
+    void buildVertexArray();
+
+    GlContextPtr context_;
+    rhi::PipelineDesc desc_;
+    GLuint program_ = 0;
+    GLuint vertexArray_ = 0;
+    GlFixedState state_;
+    GLint baseInstanceLocation_ = -1;
+    std::vector<GLsizei> strides_;
+    mutable GlVertexArrayCache cache_;
+};
+
+} // namespace penumbra::opengl

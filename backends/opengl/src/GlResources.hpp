@@ -1,0 +1,118 @@
+#pragma once
+
+#include "GlContext.hpp"
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/Resources.hpp"
+
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <typeinfo>
+#include <vector>
+
+namespace penumbra::opengl {
+
+using GlContextPtr = std::shared_ptr<const GlContext>;
+
+// The GL object behind an RHI interface; throws when it belongs to another backend.
+// GlType is final, so comparing exact types suffices, and it costs far less than dynamic_cast per draw.
+template <typename GlType, typename RhiType>
+GlType& glObject(RhiType& object, const char* what)
+{
+    static_assert(std::is_final_v<std::remove_const_t<GlType>>);
+    if (typeid(object) != typeid(GlType))
+        throw rhi::Error(std::string(what) + " was not created by an OpenGL device");
+    return static_cast<GlType&>(object);
+}
+
+// Persistently mapped and coherent: write/read are memcpy, and a finished submit means the GPU is done.
+class GlBuffer final : public rhi::Buffer {
+public:
+    GlBuffer(GlContextPtr context, const rhi::BufferDesc& desc);
+    ~GlBuffer() override;
+
+    const rhi::BufferDesc& desc() const override { return desc_; }
+    void write(std::uint64_t offset, std::span<const std::byte> data) override;
+    void read(std::uint64_t offset, std::span<std::byte> data) const override;
+
+    GLuint name() const { return name_; }
+    std::byte* mapped() const { return mapped_; }
+
+private:
+    void checkRange(const char* operation, std::uint64_t offset, std::uint64_t size) const;
+
+    GlContextPtr context_;
+    rhi::BufferDesc desc_;
+    GLuint name_ = 0;
+    std::byte* mapped_ = nullptr;
+};
+
+class GlTexture final : public rhi::Texture {
+public:
+    GlTexture(GlContextPtr context, const rhi::TextureDesc& desc);
+    ~GlTexture() override;
+
+    const rhi::TextureDesc& desc() const override { return desc_; }
+    GLuint name() const { return name_; }
+    GLenum target() const { return target_; }
+    bool isArray() const { return target_ == GL_TEXTURE_2D_ARRAY; }
+
+private:
+    GlContextPtr context_;
+    rhi::TextureDesc desc_;
+    GLenum target_ = GL_TEXTURE_2D;
+    GLuint name_ = 0;
+};
+
+class GlSampler final : public rhi::Sampler {
+public:
+    GlSampler(GlContextPtr context, const rhi::SamplerDesc& desc, const rhi::Conventions& conventions);
+    ~GlSampler() override;
+
+    const rhi::SamplerDesc& desc() const override { return desc_; }
+    GLuint name() const { return name_; }
+
+private:
+    GlContextPtr context_;
+    rhi::SamplerDesc desc_;
+    GLuint name_ = 0;
+};
+
+class GlFramebuffer final : public rhi::Framebuffer {
+public:
+    GlFramebuffer(GlContextPtr context, const rhi::FramebufferDesc& desc);
+    ~GlFramebuffer() override;
+
+    std::uint32_t width() const override { return width_; }
+    std::uint32_t height() const override { return height_; }
+    GLuint name() const { return name_; }
+    std::uint32_t colorCount() const { return colorCount_; }
+    bool hasDepth() const { return hasDepth_; }
+
+private:
+    GlContextPtr context_;
+    GLuint name_ = 0;
+    std::uint32_t width_ = 0;
+    std::uint32_t height_ = 0;
+    std::uint32_t colorCount_ = 0;
+    bool hasDepth_ = false;
+};
+
+class GlTimestampQueries final : public rhi::TimestampQueries {
+public:
+    GlTimestampQueries(GlContextPtr context, std::uint32_t count);
+    ~GlTimestampQueries() override;
+
+    std::uint32_t count() const override { return std::uint32_t(names_.size()); }
+    void write(std::uint32_t index);
+    // Nanoseconds; waits for the results.
+    std::vector<double> read() const;
+
+private:
+    GlContextPtr context_;
+    std::vector<GLuint> names_;
+    std::vector<bool> written_; // reading a query never written is a GL error
+};
+
+} // namespace penumbra::opengl

@@ -1,0 +1,56 @@
+#pragma once
+
+// The Vulkan handles behind RHI objects, for code that drives Vulkan directly on the same objects
+// (the RHI-versus-raw-Vulkan benchmark). Each function throws rhi::Error when the object was not
+// created by a Vulkan device. The handles stay owned by the RHI objects: do not destroy them.
+//
+// State the RHI relies on: every texture rests in NativeTexture::restingLayout between command
+// buffers (shader-read if sampled, else its attachment layout); passes and copies start and end
+// there. Viewports are set with negative height (row 0 = top, front faces counter-clockwise).
+
+#include "penumbra/rhi/Device.hpp"
+
+#include <cstdint>
+#include <vulkan/vulkan.h>
+
+namespace penumbra::vulkan {
+
+struct NativeDevice {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE; // the RHI submits here too; submit from one thread at a time
+    std::uint32_t queueFamilyIndex = 0;
+};
+
+struct NativePipeline {
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    // Set 0: uniform blocks are UNIFORM_BUFFER_DYNAMIC, textures COMBINED_IMAGE_SAMPLER, at their GLSL binding numbers.
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkRenderPass renderPass = VK_NULL_HANDLE; // the compatible render pass it was created with
+};
+
+struct NativeFramebuffer {
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    // Clears colour and depth, like beginPass with a default PassDesc; ends in the resting layouts.
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+};
+
+struct NativeTexture {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE; // the sampled view: all layers, depth aspect only
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkImageLayout restingLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+};
+
+NativeDevice native(const rhi::Device& device);
+VkBuffer native(const rhi::Buffer& buffer);
+NativePipeline native(const rhi::Pipeline& pipeline);
+NativeFramebuffer native(const rhi::Framebuffer& framebuffer);
+NativeTexture native(const rhi::Texture& texture);
+VkSampler native(const rhi::Sampler& sampler);
+// The command buffer a list is recording into (valid until its next submit).
+VkCommandBuffer native(const rhi::CommandList& commands);
+
+} // namespace penumbra::vulkan

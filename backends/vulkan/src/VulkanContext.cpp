@@ -1,0 +1,201 @@
+#include "VulkanContext.hpp"
+
+#include "VulkanCheck.hpp"
+#include "VulkanFormats.hpp"
+#include "VulkanPipeline.hpp"
+#include "VulkanRenderPass.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <fmt/format.h>
+
+namespace penumbra::vulkan {
+
+Context::Context(const rhi::DeviceDesc& d)
+    : desc(d), conventions(rhi::DepthRange::ZeroToOne, d.reversedZ), instance(d.validation, log)
+{
+    const PhysicalDeviceChoice choice = choosePhysicalDevice(instance.handle());
+    physicalDevice = choice.device;
+    queueFamily = choice.queueFamily;
+    vkGetPhysicalDeviceProperties(physicalDevice, &properties);
+    fillCapabilities();
+    createDevice();
+}
+
+Context::~Context()
+{
+    vkDeviceWaitIdle(device);
+    layouts_.reset();
+    renderPasses_.reset();
+    vkDestroyFence(device, oneShotFence_, nullptr);
+    vkDestroyCommandPool(device, oneShotPool_, nullptr);
+    vkDestroyDevice(device, nullptr);
+}
+
+void Context::fillCapabilities()
+{
+    VkPhysicalDeviceFeatures features;
+    vkGetPhysicalDeviceFeatures(physicalDevice, &features);
+    const VkPhysicalDeviceLimits& limits = properties.limits;
+    std::uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, families.data());
+
+    const std::uint32_t v = properties.apiVersion;
+    capabilities.api = fmt::format("Vulkan {}.{}.{}", VK_API_VERSION_MAJOR(v), VK_API_VERSION_MINOR(v),
+                                   VK_API_VERSION_PATCH(v));
+    capabilities.device = properties.deviceName;
+    capabilities.depthClamp = features.depthClamp;
+    capabilities.depthBiasClamp = features.depthBiasClamp;
+    capabilities.timestamps = limits.timestampComputeAndGraphics && families[queueFamily].timestampValidBits > 0;
+    capabilities.uniformBufferOffsetAlignment = std::uint32_t(limits.minUniformBufferOffsetAlignment);
+    capabilities.maxTextureSize = limits.maxImageDimension2D;
+    capabilities.maxTextureLayers = limits.maxImageArrayLayers;
+    for (rhi::Format f : allFormats)
+        capabilities.linearFilter[std::size_t(f)] =
+            (formatFeatures(toVkFormat(f)) & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+}
+
+bool Context::hasDeviceExtension(const char* name) const
+{
+    std::uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &count, extensions.data());
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+void Context::createDevice()
+{
+    // maintenance4 lets a vertex shader write outputs the fragment shader ignores (a shadow caster
+    // reusing a lit vertex shader) without a validation warning.
+    VkPhysicalDeviceMaintenance4Features maintenance4{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES};
+    VkPhysicalDeviceFeatures2 available{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    std::vector<const char*> extensions;
+    if (hasDeviceExtension(VK_KHR_MAINTENANCE_4_EXTENSION_NAME)) {
+        available.pNext = &maintenance4;
+        extensions.push_back(VK_KHR_MAINTENANCE_4_EXTENSION_NAME);
+    }
+    vkGetPhysicalDeviceFeatures2(physicalDevice, &available);
+    if (!maintenance4.maintenance4)
+        extensions.clear();
+
+    VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    enabled.pNext = extensions.empty() ? nullptr : &maintenance4;
+    enabled.features.depthClamp = available.features.depthClamp;
+    enabled.features.depthBiasClamp = available.features.depthBiasClamp;
+    enabled.features.independentBlend = available.features.independentBlend;
+    maintenance4.pNext = nullptr;
+
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queueInfo.queueFamilyIndex = queueFamily;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &queueInfo;
+    info.pNext = &enabled;
+    info.enabledExtensionCount = std::uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    check(vkCreateDevice(physicalDevice, &info, nullptr, &device), "vkCreateDevice");
+    vkGetDeviceQueue(device, queueFamily, 0, &queue);
+    if (desc.validation)
+        setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+            vkGetDeviceProcAddr(device, "vkSetDebugUtilsObjectNameEXT"));
+
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    poolInfo.queueFamilyIndex = queueFamily;
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    // From here on the destructor cleans up, so a failure must not leave a half-built device.
+    try {
+        check(vkCreateCommandPool(device, &poolInfo, nullptr, &oneShotPool_), "vkCreateCommandPool");
+        check(vkCreateFence(device, &fenceInfo, nullptr, &oneShotFence_), "vkCreateFence");
+        renderPasses_ = std::make_unique<RenderPassCache>(device);
+        layouts_ = std::make_unique<LayoutCache>(device);
+    } catch (...) {
+        vkDestroyFence(device, oneShotFence_, nullptr);
+        vkDestroyCommandPool(device, oneShotPool_, nullptr);
+        vkDestroyDevice(device, nullptr);
+        throw;
+    }
+}
+
+std::uint32_t Context::memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted,
+                                  VkMemoryPropertyFlags required) const
+{
+    VkPhysicalDeviceMemoryProperties memory;
+    vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memory);
+    for (VkMemoryPropertyFlags flags : {wanted, required})
+        for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+            if ((typeBits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & flags) == flags)
+                return i;
+    throw rhi::Error(fmt::format("Vulkan: no memory type with properties {:#x} among types {:#x}", required, typeBits));
+}
+
+void Context::nameObject(VkObjectType type, std::uint64_t handle, const std::string& name) const
+{
+    VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+    info.objectType = type;
+    info.objectHandle = handle;
+    info.pObjectName = name.c_str();
+    setObjectName_(device, &info);
+}
+
+VkFormatFeatureFlags Context::formatFeatures(VkFormat format) const
+{
+    VkFormatProperties props;
+    vkGetPhysicalDeviceFormatProperties(physicalDevice, format, &props);
+    return props.optimalTilingFeatures;
+}
+
+void Context::submitAndWait(std::span<const VkCommandBuffer> commandBuffers, VkFence fence)
+{
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = std::uint32_t(commandBuffers.size());
+    submit.pCommandBuffers = commandBuffers.data();
+    std::lock_guard lock(queueMutex_);
+    check(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
+    check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    check(vkResetFences(device, 1, &fence), "vkResetFences");
+}
+
+void Context::runOnce(const std::function<void(VkCommandBuffer)>& record)
+{
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = oneShotPool_;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
+    std::lock_guard lock(oneShotMutex_);
+    check(vkAllocateCommandBuffers(device, &alloc, &commandBuffer), "vkAllocateCommandBuffers");
+    struct Release {
+        VkDevice device;
+        VkCommandPool pool;
+        VkCommandBuffer commandBuffer;
+        ~Release() { vkFreeCommandBuffers(device, pool, 1, &commandBuffer); }
+    } release{device, oneShotPool_, commandBuffer};
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkBeginCommandBuffer(commandBuffer, &begin), "vkBeginCommandBuffer");
+    record(commandBuffer);
+    check(vkEndCommandBuffer(commandBuffer), "vkEndCommandBuffer");
+    submitAndWait(std::span(&commandBuffer, 1), oneShotFence_);
+}
+
+void fullBarrier(VkCommandBuffer commandBuffer)
+{
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr,
+                         0, nullptr);
+}
+
+} // namespace penumbra::vulkan

@@ -1,0 +1,76 @@
+#pragma once
+
+#include "VulkanInstance.hpp"
+
+#include "penumbra/rhi/Device.hpp"
+
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <vulkan/vulkan.h>
+
+namespace penumbra::vulkan {
+
+class RenderPassCache;
+class LayoutCache;
+
+// Everything a Vulkan object needs after creation. Resources hold a shared_ptr to it, so the
+// VkDevice outlives every handle even when the rhi::Device is destroyed first.
+class Context {
+public:
+    explicit Context(const rhi::DeviceDesc& desc);
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    const rhi::DeviceDesc desc;
+    const rhi::Conventions conventions;
+    DebugLog log; // before instance: the messenger writes into it until the instance is gone
+    Instance instance;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    std::uint32_t queueFamily = 0;
+    VkPhysicalDeviceProperties properties{};
+    rhi::Capabilities capabilities;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+
+    RenderPassCache& renderPasses() { return *renderPasses_; }
+    LayoutCache& layouts() { return *layouts_; }
+
+    // A memory type allowed by typeBits with `wanted` properties, else one with `required`.
+    std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted, VkMemoryPropertyFlags required) const;
+    VkFormatFeatureFlags formatFeatures(VkFormat format) const;
+    // Gives a handle its debugName, so validation messages say which object they mean.
+    template <typename Handle>
+    void setName(VkObjectType type, Handle handle, const std::string& name) const
+    {
+        if (setObjectName_ && !name.empty())
+            nameObject(type, reinterpret_cast<std::uint64_t>(handle), name);
+    }
+
+    // Submits command buffers in order, signals `fence` and waits for it.
+    void submitAndWait(std::span<const VkCommandBuffer> commandBuffers, VkFence fence);
+    // Records with `record` into a one-shot command buffer, submits and waits (uploads, layout setup).
+    void runOnce(const std::function<void(VkCommandBuffer)>& record);
+
+private:
+    bool hasDeviceExtension(const char* name) const;
+    void nameObject(VkObjectType type, std::uint64_t handle, const std::string& name) const;
+    void createDevice();
+    void fillCapabilities();
+
+    PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
+    std::mutex queueMutex_;
+    std::mutex oneShotMutex_;
+    VkCommandPool oneShotPool_ = VK_NULL_HANDLE;
+    VkFence oneShotFence_ = VK_NULL_HANDLE;
+    std::unique_ptr<RenderPassCache> renderPasses_;
+    std::unique_ptr<LayoutCache> layouts_;
+};
+
+// A barrier between everything before and everything after, host reads included: simple and
+// always correct, which matters more here than the last bit of GPU overlap.
+void fullBarrier(VkCommandBuffer commandBuffer);
+
+} // namespace penumbra::vulkan

@@ -1,0 +1,87 @@
+#include "VulkanDevice.hpp"
+
+#include "VulkanCheck.hpp"
+#include "VulkanCommandList.hpp"
+#include "VulkanPipeline.hpp"
+#include "VulkanRenderPass.hpp"
+#include "VulkanResources.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/vulkan/VulkanDevice.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace penumbra::vulkan {
+
+VulkanDevice::VulkanDevice(const rhi::DeviceDesc& desc) : context_(std::make_shared<Context>(desc)) {}
+
+std::unique_ptr<rhi::Buffer> VulkanDevice::createBuffer(const rhi::BufferDesc& desc)
+{
+    return std::make_unique<VulkanBuffer>(context_, desc);
+}
+
+std::unique_ptr<rhi::Texture> VulkanDevice::createTexture(const rhi::TextureDesc& desc)
+{
+    return std::make_unique<VulkanTexture>(context_, desc);
+}
+
+void VulkanDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::span<const std::byte> data)
+{
+    vulkanObject<VulkanTexture>(texture, "writeTexture: the texture").upload(layer, data);
+}
+
+std::unique_ptr<rhi::Sampler> VulkanDevice::createSampler(const rhi::SamplerDesc& desc)
+{
+    return std::make_unique<VulkanSampler>(context_, desc);
+}
+
+std::unique_ptr<rhi::Shader> VulkanDevice::createShader(const rhi::ShaderSource& source)
+{
+    return std::make_unique<VulkanShader>(context_, rhi::compileShader(source, context_->conventions.glslHeader()));
+}
+
+std::unique_ptr<rhi::Pipeline> VulkanDevice::createPipeline(const rhi::PipelineDesc& desc)
+{
+    return std::make_unique<VulkanPipeline>(context_, desc);
+}
+
+std::unique_ptr<rhi::Framebuffer> VulkanDevice::createFramebuffer(const rhi::FramebufferDesc& desc)
+{
+    return std::make_unique<VulkanFramebuffer>(context_, desc);
+}
+
+std::unique_ptr<rhi::TimestampQueries> VulkanDevice::createTimestampQueries(std::uint32_t count)
+{
+    return std::make_unique<VulkanTimestampQueries>(context_, count);
+}
+
+std::unique_ptr<rhi::CommandList> VulkanDevice::createCommandList()
+{
+    return std::make_unique<VulkanCommandList>(context_);
+}
+
+void VulkanDevice::submit(rhi::CommandList& commands)
+{
+    vulkanObject<VulkanCommandList>(commands, "submit: the command list").submit();
+    if (context_->desc.throwOnDebugMessage) {
+        const std::vector<std::string> fresh = context_->log.takeUnreported();
+        if (!fresh.empty())
+            throw rhi::Error(fmt::format("Vulkan validation reported {} message(s):\n{}", fresh.size(),
+                                         fmt::join(fresh, "\n")));
+    }
+}
+
+std::vector<double> VulkanDevice::readTimestamps(const rhi::TimestampQueries& queries)
+{
+    return vulkanObject<const VulkanTimestampQueries>(queries, "readTimestamps: the queries").readNanoseconds();
+}
+
+std::unique_ptr<rhi::Device> createVulkanDevice(const rhi::DeviceDesc& desc)
+{
+    if (desc.backend != rhi::Backend::Vulkan)
+        throw rhi::Error("createVulkanDevice: DeviceDesc::backend is not Backend::Vulkan");
+    return std::make_unique<VulkanDevice>(desc);
+}
+
+} // namespace penumbra::vulkan

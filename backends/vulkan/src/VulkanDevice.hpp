@@ -1,0 +1,43 @@
+#pragma once
+
+// The rhi::Device of this backend (the public header penumbra/vulkan/VulkanDevice.hpp only has the factory).
+
+#include "VulkanContext.hpp"
+
+#include "penumbra/rhi/Device.hpp"
+
+#include <memory>
+
+namespace penumbra::vulkan {
+
+class VulkanDevice final : public rhi::Device {
+public:
+    explicit VulkanDevice(const rhi::DeviceDesc& desc);
+
+    const rhi::DeviceDesc& desc() const override { return context_->desc; }
+    const rhi::Conventions& conventions() const override { return context_->conventions; }
+    const rhi::Capabilities& capabilities() const override { return context_->capabilities; }
+
+    std::unique_ptr<rhi::Buffer> createBuffer(const rhi::BufferDesc& desc) override;
+    std::unique_ptr<rhi::Texture> createTexture(const rhi::TextureDesc& desc) override;
+    void writeTexture(rhi::Texture& texture, std::uint32_t layer, std::span<const std::byte> data) override;
+    std::unique_ptr<rhi::Sampler> createSampler(const rhi::SamplerDesc& desc) override;
+    std::unique_ptr<rhi::Shader> createShader(const rhi::ShaderSource& source) override;
+    std::unique_ptr<rhi::Pipeline> createPipeline(const rhi::PipelineDesc& desc) override;
+    std::unique_ptr<rhi::Framebuffer> createFramebuffer(const rhi::FramebufferDesc& desc) override;
+    std::unique_ptr<rhi::TimestampQueries> createTimestampQueries(std::uint32_t count) override;
+    std::unique_ptr<rhi::CommandList> createCommandList() override;
+
+    void submit(rhi::CommandList& commands) override;
+    std::vector<double> readTimestamps(const rhi::TimestampQueries& queries) override;
+
+    std::vector<std::string> debugMessages() const override { return context_->log.all(); }
+    void clearDebugMessages() override { context_->log.clear(); }
+
+    const Context& context() const { return *context_; }
+
+private:
+    std::shared_ptr<Context> context_;
+};
+
+} // namespace penumbra::vulkan

@@ -1,0 +1,130 @@
+#include "VulkanFormats.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+namespace penumbra::vulkan {
+
+VkFormat toVkFormat(rhi::Format format)
+{
+    switch (format) {
+    case rhi::Format::RGBA8: return VK_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::RGBA16F: return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case rhi::Format::RGBA32F: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case rhi::Format::D16: return VK_FORMAT_D16_UNORM;
+    case rhi::Format::D24S8: return VK_FORMAT_D24_UNORM_S8_UINT;
+    case rhi::Format::D32F: return VK_FORMAT_D32_SFLOAT;
+    }
+    throw rhi::Error("Vulkan: unknown texture format");
+}
+
+VkImageAspectFlags fullAspect(rhi::Format format)
+{
+    if (format == rhi::Format::D24S8)
+        return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+    return dataAspect(format);
+}
+
+VkImageAspectFlags dataAspect(rhi::Format format)
+{
+    return rhi::isDepthFormat(format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+}
+
+VkFormat toVkFormat(rhi::VertexFormat format)
+{
+    switch (format) {
+    case rhi::VertexFormat::Float: return VK_FORMAT_R32_SFLOAT;
+    case rhi::VertexFormat::Float2: return VK_FORMAT_R32G32_SFLOAT;
+    case rhi::VertexFormat::Float3: return VK_FORMAT_R32G32B32_SFLOAT;
+    case rhi::VertexFormat::Float4: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case rhi::VertexFormat::UByte4Norm: return VK_FORMAT_R8G8B8A8_UNORM;
+    }
+    throw rhi::Error("Vulkan: unknown vertex format");
+}
+
+VkPrimitiveTopology toVkTopology(rhi::PrimitiveTopology topology)
+{
+    switch (topology) {
+    case rhi::PrimitiveTopology::TriangleList: return VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    case rhi::PrimitiveTopology::TriangleStrip: return VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+    case rhi::PrimitiveTopology::LineList: return VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
+    case rhi::PrimitiveTopology::PointList: return VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    }
+    throw rhi::Error("Vulkan: unknown primitive topology");
+}
+
+VkCullModeFlags toVkCullMode(rhi::CullMode cull)
+{
+    switch (cull) {
+    case rhi::CullMode::None: return VK_CULL_MODE_NONE;
+    case rhi::CullMode::Back: return VK_CULL_MODE_BACK_BIT;
+    case rhi::CullMode::Front: return VK_CULL_MODE_FRONT_BIT;
+    }
+    throw rhi::Error("Vulkan: unknown cull mode");
+}
+
+VkCompareOp toVkCompareOp(rhi::CompareOp op)
+{
+    switch (op) {
+    case rhi::CompareOp::Never: return VK_COMPARE_OP_NEVER;
+    case rhi::CompareOp::Less: return VK_COMPARE_OP_LESS;
+    case rhi::CompareOp::LessOrEqual: return VK_COMPARE_OP_LESS_OR_EQUAL;
+    case rhi::CompareOp::Equal: return VK_COMPARE_OP_EQUAL;
+    case rhi::CompareOp::Greater: return VK_COMPARE_OP_GREATER;
+    case rhi::CompareOp::GreaterOrEqual: return VK_COMPARE_OP_GREATER_OR_EQUAL;
+    case rhi::CompareOp::NotEqual: return VK_COMPARE_OP_NOT_EQUAL;
+    case rhi::CompareOp::Always: return VK_COMPARE_OP_ALWAYS;
+    }
+    throw rhi::Error("Vulkan: unknown compare op");
+}
+
+VkBlendFactor toVkBlendFactor(rhi::BlendFactor factor)
+{
+    switch (factor) {
+    case rhi::BlendFactor::Zero: return VK_BLEND_FACTOR_ZERO;
+    case rhi::BlendFactor::One: return VK_BLEND_FACTOR_ONE;
+    case rhi::BlendFactor::SrcColor: return VK_BLEND_FACTOR_SRC_COLOR;
+    case rhi::BlendFactor::OneMinusSrcColor: return VK_BLEND_FACTOR_ONE_MINUS_SRC_COLOR;
+    case rhi::BlendFactor::SrcAlpha: return VK_BLEND_FACTOR_SRC_ALPHA;
+    case rhi::BlendFactor::OneMinusSrcAlpha: return VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    case rhi::BlendFactor::DstColor: return VK_BLEND_FACTOR_DST_COLOR;
+    case rhi::BlendFactor::OneMinusDstColor: return VK_BLEND_FACTOR_ONE_MINUS_DST_COLOR;
+    case rhi::BlendFactor::DstAlpha: return VK_BLEND_FACTOR_DST_ALPHA;
+    case rhi::BlendFactor::OneMinusDstAlpha: return VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA;
+    }
+    throw rhi::Error("Vulkan: unknown blend factor");
+}
+
+VkBlendOp toVkBlendOp(rhi::BlendOp op)
+{
+    switch (op) {
+    case rhi::BlendOp::Add: return VK_BLEND_OP_ADD;
+    case rhi::BlendOp::Subtract: return VK_BLEND_OP_SUBTRACT;
+    case rhi::BlendOp::ReverseSubtract: return VK_BLEND_OP_REVERSE_SUBTRACT;
+    case rhi::BlendOp::Min: return VK_BLEND_OP_MIN;
+    case rhi::BlendOp::Max: return VK_BLEND_OP_MAX;
+    }
+    throw rhi::Error("Vulkan: unknown blend op");
+}
+
+VkColorComponentFlags toVkColorMask(rhi::ColorMask mask)
+{
+    // rhi::ColorMask's bits are R=1, G=2, B=4, A=8, the same as VkColorComponentFlagBits.
+    return static_cast<VkColorComponentFlags>(mask);
+}
+
+VkFilter toVkFilter(rhi::Filter filter)
+{
+    return filter == rhi::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+}
+
+VkSamplerAddressMode toVkAddressMode(rhi::AddressMode mode)
+{
+    return mode == rhi::AddressMode::Repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+}
+
+VkIndexType toVkIndexType(rhi::IndexType type)
+{
+    return type == rhi::IndexType::UInt16 ? VK_INDEX_TYPE_UINT16 : VK_INDEX_TYPE_UINT32;
+}
+
+} // namespace penumbra::vulkan

@@ -1,0 +1,202 @@
+#include "VulkanInstance.hpp"
+
+#include "VulkanCheck.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <optional>
+
+namespace penumbra::vulkan {
+namespace {
+
+constexpr const char* validationLayer = "VK_LAYER_KHRONOS_validation";
+
+std::string_view severityName(VkDebugUtilsMessageSeverityFlagBitsEXT severity)
+{
+    return severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                              VkDebugUtilsMessageTypeFlagsEXT,
+                                              const VkDebugUtilsMessengerCallbackDataEXT* data, void* user)
+{
+    static_cast<DebugLog*>(user)->add(fmt::format("vulkan {}: {}", severityName(severity), data->pMessage));
+    return VK_FALSE;
+}
+
+VkDebugUtilsMessengerCreateInfoEXT messengerInfo(DebugLog& log)
+{
+    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    info.pfnUserCallback = onDebugMessage;
+    info.pUserData = &log;
+    return info;
+}
+
+bool hasLayer(const char* name)
+{
+    std::uint32_t count = 0;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> layers(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+}
+
+std::uint32_t loaderVersion()
+{
+    std::uint32_t version = VK_API_VERSION_1_0;
+    if (vkEnumerateInstanceVersion(&version) != VK_SUCCESS)
+        return VK_API_VERSION_1_0;
+    return version;
+}
+
+std::string versionString(std::uint32_t v)
+{
+    return fmt::format("{}.{}.{}", VK_API_VERSION_MAJOR(v), VK_API_VERSION_MINOR(v), VK_API_VERSION_PATCH(v));
+}
+
+std::optional<std::uint32_t> graphicsQueueFamily(VkPhysicalDevice device)
+{
+    std::uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    for (std::uint32_t i = 0; i < count; ++i)
+        if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)
+            return i;
+    return std::nullopt;
+}
+
+} // namespace
+
+void DebugLog::add(std::string message)
+{
+    std::lock_guard lock(mutex_);
+    messages_.push_back(std::move(message));
+}
+
+std::vector<std::string> DebugLog::all() const
+{
+    std::lock_guard lock(mutex_);
+    return messages_;
+}
+
+std::vector<std::string> DebugLog::takeUnreported()
+{
+    std::lock_guard lock(mutex_);
+    std::vector<std::string> fresh(messages_.begin() + std::ptrdiff_t(reported_), messages_.end());
+    reported_ = messages_.size();
+    return fresh;
+}
+
+void DebugLog::clear()
+{
+    std::lock_guard lock(mutex_);
+    messages_.clear();
+    reported_ = 0;
+}
+
+Instance::Instance(bool validation, DebugLog& log)
+{
+    const std::uint32_t loader = loaderVersion();
+    if (loader < VK_API_VERSION_1_1)
+        throw rhi::Error(fmt::format("Vulkan: the loader offers Vulkan {}; Penumbra needs 1.1 or newer",
+                                     versionString(loader)));
+    apiVersion_ = std::min(loader, VK_API_VERSION_1_3);
+
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "Penumbra";
+    app.pEngineName = "Penumbra";
+    app.apiVersion = apiVersion_;
+
+    std::vector<const char*> layers;
+    std::vector<const char*> extensions;
+    // Chained into the create info so that instance creation and destruction are reported too.
+    VkDebugUtilsMessengerCreateInfoEXT debugInfo = messengerInfo(log);
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pApplicationInfo = &app;
+    if (validation) {
+        if (!hasLayer(validationLayer))
+            throw rhi::Error(fmt::format("Vulkan: validation was requested but {} is not installed "
+                                         "(Debian package vulkan-validationlayers)",
+                                         validationLayer));
+        layers.push_back(validationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        info.pNext = &debugInfo;
+    }
+    info.enabledLayerCount = std::uint32_t(layers.size());
+    info.ppEnabledLayerNames = layers.data();
+    info.enabledExtensionCount = std::uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+
+    const VkResult result = vkCreateInstance(&info, nullptr, &instance_);
+    if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
+        throw rhi::Error("Vulkan: no driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
+                         "install mesa-vulkan-drivers for lavapipe");
+    check(result, "vkCreateInstance");
+
+    if (validation) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+        const VkResult created = create ? create(instance_, &debugInfo, nullptr, &messenger_)
+                                        : VK_ERROR_EXTENSION_NOT_PRESENT;
+        if (created != VK_SUCCESS) {
+            vkDestroyInstance(instance_, nullptr);
+            check(created, "vkCreateDebugUtilsMessengerEXT");
+        }
+    }
+}
+
+Instance::~Instance()
+{
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+        destroy(instance_, messenger_, nullptr);
+    }
+    vkDestroyInstance(instance_, nullptr);
+}
+
+PhysicalDeviceChoice choosePhysicalDevice(VkInstance instance)
+{
+    std::uint32_t count = 0;
+    check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
+    std::vector<VkPhysicalDevice> devices(count);
+    check(vkEnumeratePhysicalDevices(instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
+
+    const char* wanted = std::getenv("PENUMBRA_VULKAN_DEVICE");
+    std::vector<std::string> names;
+    std::optional<PhysicalDeviceChoice> first;
+    for (VkPhysicalDevice device : devices) {
+        VkPhysicalDeviceProperties props;
+        vkGetPhysicalDeviceProperties(device, &props);
+        names.emplace_back(props.deviceName);
+        const std::optional<std::uint32_t> family = graphicsQueueFamily(device);
+        if (!family || props.apiVersion < VK_API_VERSION_1_1)
+            continue;
+        const PhysicalDeviceChoice choice{device, *family};
+        if (wanted ? std::strstr(props.deviceName, wanted) != nullptr : std::strstr(props.deviceName, "llvmpipe") != nullptr)
+            return choice;
+        if (!first)
+            first = choice;
+    }
+    const std::string available = names.empty() ? "none" : fmt::format("'{}'", fmt::join(names, "', '"));
+    if (wanted)
+        throw rhi::Error(fmt::format("Vulkan: PENUMBRA_VULKAN_DEVICE='{}' matches no Vulkan 1.1 device with a "
+                                     "graphics queue; devices: {}",
+                                     wanted, available));
+    if (!first)
+        throw rhi::Error(fmt::format("Vulkan: no Vulkan 1.1 device with a graphics queue (devices: {}); "
+                                     "install mesa-vulkan-drivers for lavapipe",
+                                     available));
+    return *first;
+}
+
+} // namespace penumbra::vulkan

@@ -1,0 +1,245 @@
+#include "VulkanPipeline.hpp"
+
+#include "VulkanCheck.hpp"
+#include "VulkanFormats.hpp"
+#include "VulkanRenderPass.hpp"
+
+#include "penumbra/rhi/BackendSupport.hpp"
+#include "penumbra/rhi/Error.hpp"
+
+#include <array>
+#include <fmt/format.h>
+
+namespace penumbra::vulkan {
+namespace {
+
+VkDescriptorType descriptorType(rhi::BindingKind kind)
+{
+    // Dynamic uniform buffers: a per-draw offset is a dynamic offset, not a new descriptor set.
+    return kind == rhi::BindingKind::UniformBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC
+                                                   : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+}
+
+const VulkanShader& vulkanShader(const rhi::Shader* shader, const rhi::PipelineDesc& desc)
+{
+    const auto* vk = dynamic_cast<const VulkanShader*>(shader);
+    if (!vk)
+        throw rhi::Error(fmt::format("pipeline '{}': shader '{}' was not created by a Vulkan device", desc.debugName,
+                                     shader->compiled().name));
+    return *vk;
+}
+
+void checkVertexLayout(const rhi::PipelineDesc& desc)
+{
+    for (const rhi::VertexAttribute& a : desc.vertexLayout.attributes)
+        if (a.buffer >= desc.vertexLayout.buffers.size())
+            throw rhi::Error(fmt::format("pipeline '{}': attribute at location {} reads vertex buffer slot {}, but "
+                                         "the layout describes {} buffer(s)",
+                                         desc.debugName, a.location, a.buffer, desc.vertexLayout.buffers.size()));
+}
+
+void checkUniformCount(const VkPhysicalDeviceLimits& limits, const rhi::PipelineDesc& desc, std::size_t count)
+{
+    if (count > limits.maxDescriptorSetUniformBuffersDynamic)
+        throw rhi::UnsupportedError(fmt::format("pipeline '{}': {} uniform blocks, but the device binds at most {}",
+                                                desc.debugName, count, limits.maxDescriptorSetUniformBuffersDynamic));
+}
+
+void checkFeatures(const rhi::Capabilities& caps, const rhi::PipelineDesc& desc)
+{
+    if (desc.depth.clamp && !caps.depthClamp)
+        throw rhi::UnsupportedError(
+            fmt::format("pipeline '{}': depth clamp is not supported by {}", desc.debugName, caps.device));
+    if (desc.depth.bias.clamp != 0.0f && !caps.depthBiasClamp)
+        throw rhi::UnsupportedError(
+            fmt::format("pipeline '{}': depth bias clamp is not supported by {}", desc.debugName, caps.device));
+}
+
+RenderPassKey compatibleRenderPass(const rhi::PipelineDesc& desc)
+{
+    RenderPassKey key;
+    for (const rhi::ColorTarget& c : desc.colorTargets)
+        key.colors.push_back({toVkFormat(c.format), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false});
+    if (desc.depthFormat)
+        key.depth = AttachmentKey{toVkFormat(*desc.depthFormat), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, false};
+    return key;
+}
+
+VkPipelineColorBlendAttachmentState blendAttachment(const rhi::ColorTarget& target)
+{
+    const rhi::BlendState& b = target.blend;
+    VkPipelineColorBlendAttachmentState state{};
+    state.blendEnable = b.enable;
+    state.srcColorBlendFactor = toVkBlendFactor(b.srcColor);
+    state.dstColorBlendFactor = toVkBlendFactor(b.dstColor);
+    state.colorBlendOp = toVkBlendOp(b.colorOp);
+    state.srcAlphaBlendFactor = toVkBlendFactor(b.srcAlpha);
+    state.dstAlphaBlendFactor = toVkBlendFactor(b.dstAlpha);
+    state.alphaBlendOp = toVkBlendOp(b.alphaOp);
+    state.colorWriteMask = toVkColorMask(target.writeMask);
+    return state;
+}
+
+} // namespace
+
+VulkanShader::VulkanShader(std::shared_ptr<Context> context, rhi::CompiledShader compiled)
+    : context_(std::move(context)), compiled_(std::move(compiled))
+{
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = compiled_.spirv.size() * sizeof(std::uint32_t);
+    info.pCode = compiled_.spirv.data();
+    check(vkCreateShaderModule(context_->device, &info, nullptr, &module_),
+          fmt::format("vkCreateShaderModule ({})", compiled_.name));
+    context_->setName(VK_OBJECT_TYPE_SHADER_MODULE, module_, compiled_.name);
+}
+
+VulkanShader::~VulkanShader()
+{
+    vkDestroyShaderModule(context_->device, module_, nullptr);
+}
+
+LayoutCache::~LayoutCache()
+{
+    for (const auto& [key, layout] : layouts_) {
+        vkDestroyPipelineLayout(device_, layout.layout, nullptr);
+        vkDestroyDescriptorSetLayout(device_, layout.setLayout, nullptr);
+    }
+}
+
+PipelineLayout LayoutCache::get(const std::vector<rhi::ShaderBinding>& bindings)
+{
+    std::vector<std::uint32_t> key;
+    for (const rhi::ShaderBinding& b : bindings)
+        key.insert(key.end(), {b.binding, std::uint32_t(b.kind)});
+    std::lock_guard lock(mutex_);
+    auto found = layouts_.find(key);
+    if (found != layouts_.end())
+        return found->second;
+    const PipelineLayout layout = create(bindings);
+    layouts_.emplace(std::move(key), layout);
+    return layout;
+}
+
+PipelineLayout LayoutCache::create(const std::vector<rhi::ShaderBinding>& bindings) const
+{
+    std::vector<VkDescriptorSetLayoutBinding> vkBindings;
+    for (const rhi::ShaderBinding& b : bindings)
+        vkBindings.push_back(
+            {b.binding, descriptorType(b.kind), 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.bindingCount = std::uint32_t(vkBindings.size());
+    setInfo.pBindings = vkBindings.data();
+    PipelineLayout result;
+    check(vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &result.setLayout), "vkCreateDescriptorSetLayout");
+
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &result.setLayout;
+    const VkResult created = vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &result.layout);
+    if (created != VK_SUCCESS)
+        vkDestroyDescriptorSetLayout(device_, result.setLayout, nullptr);
+    check(created, "vkCreatePipelineLayout");
+    return result;
+}
+
+VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::PipelineDesc& desc)
+    : context_(std::move(context)), desc_(desc)
+{
+    rhi::checkPipeline(desc);
+    checkFeatures(context_->capabilities, desc);
+    bindings_ = rhi::pipelineBindings(desc);
+    for (const rhi::ShaderBinding& b : bindings_)
+        if (b.kind == rhi::BindingKind::UniformBuffer)
+            uniformBindings_.push_back(b.binding);
+    checkVertexLayout(desc);
+    checkUniformCount(context_->properties.limits, desc, uniformBindings_.size());
+    signedBias_ = rhi::signedDepthBias(context_->conventions, desc.depth.bias);
+    layout_ = context_->layouts().get(bindings_);
+    const RenderPassKey passKey = compatibleRenderPass(desc);
+    formats_ = passKey.formats();
+    renderPass_ = context_->renderPasses().get(passKey);
+
+    const std::array<VkPipelineShaderStageCreateInfo, 2> stages{{
+        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT,
+         vulkanShader(desc.vertex, desc).module(), "main", nullptr},
+        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
+         vulkanShader(desc.fragment, desc).module(), "main", nullptr},
+    }};
+
+    std::vector<VkVertexInputBindingDescription> vertexBindings;
+    for (std::uint32_t i = 0; i < desc.vertexLayout.buffers.size(); ++i) {
+        const rhi::VertexBufferLayout& b = desc.vertexLayout.buffers[i];
+        vertexBindings.push_back(
+            {i, b.stride, b.perInstance ? VK_VERTEX_INPUT_RATE_INSTANCE : VK_VERTEX_INPUT_RATE_VERTEX});
+    }
+    std::vector<VkVertexInputAttributeDescription> vertexAttributes;
+    for (const rhi::VertexAttribute& a : desc.vertexLayout.attributes)
+        vertexAttributes.push_back({a.location, a.buffer, toVkFormat(a.format), a.offset});
+    VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vertexInput.vertexBindingDescriptionCount = std::uint32_t(vertexBindings.size());
+    vertexInput.pVertexBindingDescriptions = vertexBindings.data();
+    vertexInput.vertexAttributeDescriptionCount = std::uint32_t(vertexAttributes.size());
+    vertexInput.pVertexAttributeDescriptions = vertexAttributes.data();
+
+    VkPipelineInputAssemblyStateCreateInfo inputAssembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    inputAssembly.topology = toVkTopology(desc.topology);
+
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.depthClampEnable = desc.depth.clamp;
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = toVkCullMode(desc.cull);
+    // With the negative viewport height, counter-clockwise in y-up NDC stays counter-clockwise here.
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    // Always on: the bias values are dynamic state, zero when a pipeline asks for none.
+    raster.depthBiasEnable = VK_TRUE;
+    raster.lineWidth = 1.0f;
+
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+
+    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = desc.depth.test;
+    depth.depthWriteEnable = desc.depth.write;
+    depth.depthCompareOp = toVkCompareOp(context_->conventions.depthCompareOp(desc.depth.compare));
+
+    std::vector<VkPipelineColorBlendAttachmentState> blends;
+    for (const rhi::ColorTarget& c : desc.colorTargets)
+        blends.push_back(blendAttachment(c));
+    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.attachmentCount = std::uint32_t(blends.size());
+    blend.pAttachments = blends.data();
+
+    const std::array<VkDynamicState, 3> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                                      VK_DYNAMIC_STATE_DEPTH_BIAS};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = std::uint32_t(dynamicStates.size());
+    dynamic.pDynamicStates = dynamicStates.data();
+
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.stageCount = std::uint32_t(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &vertexInput;
+    info.pInputAssemblyState = &inputAssembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = desc.depthFormat ? &depth : nullptr;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout_.layout;
+    info.renderPass = renderPass_;
+    check(vkCreateGraphicsPipelines(context_->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+          fmt::format("vkCreateGraphicsPipelines ('{}')", desc.debugName));
+    context_->setName(VK_OBJECT_TYPE_PIPELINE, pipeline_, desc.debugName);
+}
+
+VulkanPipeline::~VulkanPipeline()
+{
+    vkDestroyPipeline(context_->device, pipeline_, nullptr);
+}
+
+} // namespace penumbra::vulkan

@@ -1,0 +1,180 @@
+#include "VulkanRenderPass.hpp"
+
+#include "VulkanCheck.hpp"
+#include "VulkanResources.hpp"
+
+#include "penumbra/rhi/BackendSupport.hpp"
+#include "penumbra/rhi/Error.hpp"
+
+#include <fmt/format.h>
+
+namespace penumbra::vulkan {
+namespace {
+
+std::vector<std::uint32_t> flatten(const RenderPassKey& key)
+{
+    std::vector<std::uint32_t> flat;
+    auto add = [&](const AttachmentKey& a) {
+        flat.insert(flat.end(), {std::uint32_t(a.format), std::uint32_t(a.restingLayout), std::uint32_t(a.load)});
+    };
+    for (const AttachmentKey& c : key.colors)
+        add(c);
+    flat.push_back(key.depth ? 1u : 0u); // separates a depth attachment from one more colour
+    if (key.depth)
+        add(*key.depth);
+    return flat;
+}
+
+VkAttachmentDescription describe(const AttachmentKey& a)
+{
+    VkAttachmentDescription d{};
+    d.format = a.format;
+    d.samples = VK_SAMPLE_COUNT_1_BIT;
+    d.loadOp = a.load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+    d.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    d.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    d.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    // Cleared contents are not needed, so the first transition may discard them.
+    d.initialLayout = a.load ? a.restingLayout : VK_IMAGE_LAYOUT_UNDEFINED;
+    d.finalLayout = a.restingLayout;
+    return d;
+}
+
+AttachmentKey attachmentKey(const rhi::Attachment& attachment)
+{
+    const auto* texture = dynamic_cast<const VulkanTexture*>(attachment.texture);
+    if (!texture)
+        throw rhi::Error(fmt::format("framebuffer: texture '{}' was not created by a Vulkan device",
+                                     attachment.texture->desc().debugName));
+    return {texture->format(), texture->restingLayout(), false};
+}
+
+} // namespace
+
+std::vector<VkFormat> RenderPassKey::formats() const
+{
+    std::vector<VkFormat> all;
+    for (const AttachmentKey& c : colors)
+        all.push_back(c.format);
+    all.push_back(depth ? depth->format : VK_FORMAT_UNDEFINED);
+    return all;
+}
+
+RenderPassCache::~RenderPassCache()
+{
+    for (const auto& [key, pass] : passes_)
+        vkDestroyRenderPass(device_, pass, nullptr);
+}
+
+VkRenderPass RenderPassCache::get(const RenderPassKey& key)
+{
+    std::vector<std::uint32_t> flat = flatten(key);
+    std::lock_guard lock(mutex_);
+    auto found = passes_.find(flat);
+    if (found != passes_.end())
+        return found->second;
+    VkRenderPass pass = create(key);
+    passes_.emplace(std::move(flat), pass);
+    return pass;
+}
+
+VkRenderPass RenderPassCache::create(const RenderPassKey& key) const
+{
+    std::vector<VkAttachmentDescription> attachments;
+    std::vector<VkAttachmentReference> colorRefs;
+    for (const AttachmentKey& c : key.colors) {
+        colorRefs.push_back({std::uint32_t(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+        attachments.push_back(describe(c));
+    }
+    const VkAttachmentReference depthRef{std::uint32_t(attachments.size()),
+                                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    if (key.depth)
+        attachments.push_back(describe(*key.depth));
+
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = std::uint32_t(colorRefs.size());
+    subpass.pColorAttachments = colorRefs.data();
+    subpass.pDepthStencilAttachment = key.depth ? &depthRef : nullptr;
+
+    // Full dependencies on both sides: whatever came before (copies, other passes) is finished
+    // and visible, and whatever comes after sees this pass's writes.
+    const VkAccessFlags all = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    const std::array<VkSubpassDependency, 2> dependencies{{
+        {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, all, all, 0},
+        {0, VK_SUBPASS_EXTERNAL, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, all, all, 0},
+    }};
+
+    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    info.attachmentCount = std::uint32_t(attachments.size());
+    info.pAttachments = attachments.data();
+    info.subpassCount = 1;
+    info.pSubpasses = &subpass;
+    info.dependencyCount = std::uint32_t(dependencies.size());
+    info.pDependencies = dependencies.data();
+    VkRenderPass pass = VK_NULL_HANDLE;
+    check(vkCreateRenderPass(device_, &info, nullptr, &pass), "vkCreateRenderPass");
+    return pass;
+}
+
+VulkanFramebuffer::VulkanFramebuffer(std::shared_ptr<Context> context, const rhi::FramebufferDesc& desc)
+    : context_(std::move(context))
+{
+    rhi::checkFramebuffer(desc);
+    std::vector<rhi::Attachment> attachments(desc.colors.begin(), desc.colors.end());
+    for (const rhi::Attachment& c : desc.colors)
+        key_.colors.push_back(attachmentKey(c));
+    if (desc.depth.texture) {
+        key_.depth = attachmentKey(desc.depth);
+        attachments.push_back(desc.depth);
+    }
+    formats_ = key_.formats();
+    name_ = desc.debugName;
+    width_ = attachments.front().texture->desc().width;
+    height_ = attachments.front().texture->desc().height;
+
+    try {
+        for (const rhi::Attachment& a : attachments)
+            views_.push_back(static_cast<const VulkanTexture*>(a.texture)->createAttachmentView(a.layer));
+        VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        info.renderPass = renderPass(false, false);
+        info.attachmentCount = std::uint32_t(views_.size());
+        info.pAttachments = views_.data();
+        info.width = width_;
+        info.height = height_;
+        info.layers = 1;
+        check(vkCreateFramebuffer(context_->device, &info, nullptr, &framebuffer_), "vkCreateFramebuffer");
+        context_->setName(VK_OBJECT_TYPE_FRAMEBUFFER, framebuffer_, desc.debugName);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+VulkanFramebuffer::~VulkanFramebuffer()
+{
+    release();
+}
+
+void VulkanFramebuffer::release()
+{
+    vkDestroyFramebuffer(context_->device, framebuffer_, nullptr);
+    for (VkImageView view : views_)
+        vkDestroyImageView(context_->device, view, nullptr);
+}
+
+VkRenderPass VulkanFramebuffer::renderPass(bool loadColor, bool loadDepth)
+{
+    VkRenderPass& pass = passes_[std::size_t(loadColor) * 2 + std::size_t(loadDepth)];
+    if (!pass) {
+        RenderPassKey key = key_;
+        for (AttachmentKey& c : key.colors)
+            c.load = loadColor;
+        if (key.depth)
+            key.depth->load = loadDepth;
+        pass = context_->renderPasses().get(key);
+    }
+    return pass;
+}
+
+} // namespace penumbra::vulkan

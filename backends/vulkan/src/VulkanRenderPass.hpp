@@ -1,0 +1,82 @@
+#pragma once
+
+#include "VulkanContext.hpp"
+
+#include "penumbra/rhi/Resources.hpp"
+
+#include <array>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+#include <vulkan/vulkan.h>
+
+namespace penumbra::vulkan {
+
+struct AttachmentKey {
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkImageLayout restingLayout = VK_IMAGE_LAYOUT_UNDEFINED; // initial (when loading) and final layout
+    bool load = false;                                        // keep contents instead of clearing
+};
+
+struct RenderPassKey {
+    std::vector<AttachmentKey> colors;
+    std::optional<AttachmentKey> depth;
+
+    // What render-pass compatibility depends on: colour formats, then the depth format or UNDEFINED.
+    std::vector<VkFormat> formats() const;
+};
+
+// One VkRenderPass per distinct key, alive as long as the device: pipelines and framebuffers
+// only need a compatible one, passes need the exact load ops and layouts.
+class RenderPassCache {
+public:
+    explicit RenderPassCache(VkDevice device) : device_(device) {}
+    ~RenderPassCache();
+    RenderPassCache(const RenderPassCache&) = delete;
+    RenderPassCache& operator=(const RenderPassCache&) = delete;
+
+    VkRenderPass get(const RenderPassKey& key);
+
+private:
+    VkRenderPass create(const RenderPassKey& key) const;
+
+    VkDevice device_;
+    std::mutex mutex_;
+    std::map<std::vector<std::uint32_t>, VkRenderPass> passes_;
+};
+
+class VulkanFramebuffer final : public rhi::Framebuffer {
+public:
+    VulkanFramebuffer(std::shared_ptr<Context> context, const rhi::FramebufferDesc& desc);
+    ~VulkanFramebuffer() override;
+    VulkanFramebuffer(const VulkanFramebuffer&) = delete;
+    VulkanFramebuffer& operator=(const VulkanFramebuffer&) = delete;
+
+    std::uint32_t width() const override { return width_; }
+    std::uint32_t height() const override { return height_; }
+
+    VkFramebuffer handle() const { return framebuffer_; }
+    std::uint32_t colorCount() const { return std::uint32_t(key_.colors.size()); }
+    bool hasDepth() const { return key_.depth.has_value(); }
+    const std::vector<VkFormat>& formats() const { return formats_; }
+    const std::string& name() const { return name_; }
+    // The render pass for a pass that loads or clears colour and depth.
+    VkRenderPass renderPass(bool loadColor, bool loadDepth);
+
+private:
+    void release();
+
+    std::shared_ptr<Context> context_;
+    RenderPassKey key_;
+    std::vector<VkFormat> formats_;
+    std::string name_;
+    std::uint32_t width_ = 0;
+    std::uint32_t height_ = 0;
+    std::vector<VkImageView> views_;
+    VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+    std::array<VkRenderPass, 4> passes_{}; // indexed by loadColor * 2 + loadDepth
+};
+
+} // namespace penumbra::vulkan

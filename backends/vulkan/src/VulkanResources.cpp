@@ -1,0 +1,319 @@
+#include "VulkanResources.hpp"
+
+#include "VulkanCheck.hpp"
+#include "VulkanFormats.hpp"
+
+#include "penumbra/rhi/BackendSupport.hpp"
+#include "penumbra/rhi/Error.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <fmt/format.h>
+
+namespace penumbra::vulkan {
+namespace {
+
+VkBufferUsageFlags bufferUsage(rhi::BufferUsage usage)
+{
+    VkBufferUsageFlags flags = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    if (rhi::hasFlag(usage, rhi::BufferUsage::Vertex))
+        flags |= VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+    if (rhi::hasFlag(usage, rhi::BufferUsage::Index))
+        flags |= VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
+    if (rhi::hasFlag(usage, rhi::BufferUsage::Uniform))
+        flags |= VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+    return flags;
+}
+
+// An empty buffer (a scene with nothing to draw) is valid in the RHI; Vulkan needs at least a byte.
+VkDeviceSize allocationSize(const rhi::BufferDesc& desc)
+{
+    return std::max<VkDeviceSize>(desc.size, 1);
+}
+
+VkImageLayout attachmentLayout(rhi::Format format)
+{
+    return rhi::isDepthFormat(format) ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL
+                                      : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+}
+
+VkImageLayout restingLayoutOf(const rhi::TextureDesc& desc)
+{
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Sampled))
+        return VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::RenderTarget))
+        return attachmentLayout(desc.format);
+    return VK_IMAGE_LAYOUT_GENERAL;
+}
+
+struct ImageUse {
+    VkImageUsageFlags usage;
+    VkFormatFeatureFlags features;
+};
+
+ImageUse imageUse(const rhi::TextureDesc& desc)
+{
+    ImageUse use{VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                 VK_FORMAT_FEATURE_TRANSFER_SRC_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT};
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Sampled)) {
+        use.usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+        use.features |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+    }
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::RenderTarget)) {
+        const bool depth = rhi::isDepthFormat(desc.format);
+        use.usage |= depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+        use.features |= depth ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
+    }
+    return use;
+}
+
+void checkTextureDesc(const Context& context, const rhi::TextureDesc& desc, const ImageUse& use)
+{
+    const rhi::Capabilities& caps = context.capabilities;
+    if (desc.width == 0 || desc.height == 0 || desc.layers == 0 || desc.width > caps.maxTextureSize ||
+        desc.height > caps.maxTextureSize || desc.layers > caps.maxTextureLayers)
+        throw rhi::Error(fmt::format("texture '{}': {}x{} with {} layers is outside 1..{} texels and 1..{} layers",
+                                     desc.debugName, desc.width, desc.height, desc.layers, caps.maxTextureSize,
+                                     caps.maxTextureLayers));
+    const VkFormatFeatureFlags missing = use.features & ~context.formatFeatures(toVkFormat(desc.format));
+    if (missing)
+        throw rhi::UnsupportedError(fmt::format("texture '{}': {} lacks format features {:#x} on {} for its usage",
+                                                desc.debugName, rhi::formatName(desc.format), missing, caps.device));
+}
+
+} // namespace
+
+MappedBuffer::MappedBuffer(std::shared_ptr<Context> context, VkDeviceSize size, VkBufferUsageFlags usage)
+    : context_(std::move(context))
+{
+    const VkDevice device = context_->device;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    check(vkCreateBuffer(device, &info, nullptr, &buffer_), "vkCreateBuffer");
+    try {
+        VkMemoryRequirements requirements;
+        vkGetBufferMemoryRequirements(device, buffer_, &requirements);
+        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        alloc.allocationSize = requirements.size;
+        const VkMemoryPropertyFlags hostVisible =
+            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        alloc.memoryTypeIndex = context_->memoryType(requirements.memoryTypeBits, hostVisible, hostVisible);
+        check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
+        check(vkBindBufferMemory(device, buffer_, memory_, 0), "vkBindBufferMemory");
+        void* mapped = nullptr;
+        check(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
+        mapped_ = static_cast<std::byte*>(mapped);
+    } catch (...) {
+        vkFreeMemory(device, memory_, nullptr);
+        vkDestroyBuffer(device, buffer_, nullptr);
+        throw;
+    }
+}
+
+MappedBuffer::~MappedBuffer()
+{
+    vkDestroyBuffer(context_->device, buffer_, nullptr);
+    vkFreeMemory(context_->device, memory_, nullptr); // unmaps implicitly
+}
+
+VulkanBuffer::VulkanBuffer(std::shared_ptr<Context> context, const rhi::BufferDesc& desc)
+    : desc_(desc), buffer_(context, allocationSize(desc), bufferUsage(desc.usage))
+{
+    context->setName(VK_OBJECT_TYPE_BUFFER, buffer_.handle(), desc.debugName);
+}
+
+void VulkanBuffer::checkRange(std::string_view what, std::uint64_t offset, std::uint64_t size) const
+{
+    if (offset > desc_.size || size > desc_.size - offset)
+        throw rhi::Error(fmt::format("buffer '{}': {} of {} bytes at offset {} exceeds its {} bytes", desc_.debugName,
+                                     what, size, offset, desc_.size));
+}
+
+void VulkanBuffer::write(std::uint64_t offset, std::span<const std::byte> data)
+{
+    checkRange("write", offset, data.size());
+    std::memcpy(buffer_.data() + offset, data.data(), data.size());
+}
+
+void VulkanBuffer::read(std::uint64_t offset, std::span<std::byte> data) const
+{
+    checkRange("read", offset, data.size());
+    std::memcpy(data.data(), buffer_.data() + offset, data.size());
+}
+
+VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::TextureDesc& desc)
+    : context_(std::move(context)), desc_(desc), format_(toVkFormat(desc.format)), restingLayout_(restingLayoutOf(desc))
+{
+    const ImageUse use = imageUse(desc);
+    checkTextureDesc(*context_, desc, use);
+    const VkDevice device = context_->device;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format_;
+    info.extent = {desc.width, desc.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = desc.layers;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = use.usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    check(vkCreateImage(device, &info, nullptr, &image_), "vkCreateImage");
+    try {
+        VkMemoryRequirements requirements;
+        vkGetImageMemoryRequirements(device, image_, &requirements);
+        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        alloc.allocationSize = requirements.size;
+        alloc.memoryTypeIndex =
+            context_->memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+        check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
+        check(vkBindImageMemory(device, image_, memory_, 0), "vkBindImageMemory");
+
+        VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        viewInfo.image = image_;
+        viewInfo.viewType = desc.array || desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+        viewInfo.format = format_;
+        viewInfo.subresourceRange = {dataAspect(desc.format), 0, 1, 0, desc.layers};
+        check(vkCreateImageView(device, &viewInfo, nullptr, &view_), "vkCreateImageView");
+        context_->setName(VK_OBJECT_TYPE_IMAGE, image_, desc.debugName);
+        context_->setName(VK_OBJECT_TYPE_IMAGE_VIEW, view_, desc.debugName);
+
+        context_->runOnce([&](VkCommandBuffer commandBuffer) {
+            transition(commandBuffer, ~0u, VK_IMAGE_LAYOUT_UNDEFINED, restingLayout_);
+        });
+    } catch (...) {
+        vkDestroyImageView(device, view_, nullptr);
+        vkDestroyImage(device, image_, nullptr);
+        vkFreeMemory(device, memory_, nullptr);
+        throw;
+    }
+}
+
+VulkanTexture::~VulkanTexture()
+{
+    vkDestroyImageView(context_->device, view_, nullptr);
+    vkDestroyImage(context_->device, image_, nullptr);
+    vkFreeMemory(context_->device, memory_, nullptr);
+}
+
+VkImageView VulkanTexture::createAttachmentView(std::uint32_t layer) const
+{
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = image_;
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = format_;
+    info.subresourceRange = {fullAspect(desc_.format), 0, 1, layer, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    check(vkCreateImageView(context_->device, &info, nullptr, &view), "vkCreateImageView");
+    return view;
+}
+
+void VulkanTexture::transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from,
+                               VkImageLayout to) const
+{
+    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    barrier.oldLayout = from;
+    barrier.newLayout = to;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = image_;
+    barrier.subresourceRange = layer == ~0u ? VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, 0, desc_.layers}
+                                            : VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, layer, 1};
+    vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0,
+                         nullptr, 0, nullptr, 1, &barrier);
+}
+
+void VulkanTexture::upload(std::uint32_t layer, std::span<const std::byte> data)
+{
+    const std::uint64_t size = rhi::layerSize(desc_);
+    if (layer >= desc_.layers || data.size() != size)
+        throw rhi::Error(fmt::format("writeTexture '{}': layer {} of {} with {} bytes; a layer takes {} bytes",
+                                     desc_.debugName, layer, desc_.layers, data.size(), size));
+    MappedBuffer staging(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    std::memcpy(staging.data(), data.data(), size);
+    context_->runOnce([&](VkCommandBuffer commandBuffer) {
+        transition(commandBuffer, layer, restingLayout_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {dataAspect(desc_.format), 0, layer, 1};
+        region.imageExtent = {desc_.width, desc_.height, 1};
+        vkCmdCopyBufferToImage(commandBuffer, staging.handle(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                               &region);
+        transition(commandBuffer, layer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, restingLayout_);
+    });
+}
+
+VulkanSampler::VulkanSampler(std::shared_ptr<Context> context, const rhi::SamplerDesc& desc)
+    : context_(std::move(context)), desc_(desc)
+{
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = toVkFilter(desc.filter);
+    info.minFilter = toVkFilter(desc.filter);
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = toVkAddressMode(desc.address);
+    info.addressModeV = toVkAddressMode(desc.address);
+    info.addressModeW = toVkAddressMode(desc.address);
+    info.compareEnable = desc.compare;
+    info.compareOp = toVkCompareOp(context_->conventions.shadowCompareOp());
+    info.maxLod = 0.0f;
+    info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+    check(vkCreateSampler(context_->device, &info, nullptr, &sampler_), "vkCreateSampler");
+    context_->setName(VK_OBJECT_TYPE_SAMPLER, sampler_, desc.debugName);
+}
+
+VulkanSampler::~VulkanSampler()
+{
+    vkDestroySampler(context_->device, sampler_, nullptr);
+}
+
+VulkanTimestampQueries::VulkanTimestampQueries(std::shared_ptr<Context> context, std::uint32_t count)
+    : context_(std::move(context)), count_(count)
+{
+    if (!context_->capabilities.timestamps)
+        throw rhi::UnsupportedError(fmt::format("timestamps: {} has no timestamp queries on its graphics queue",
+                                                context_->capabilities.device));
+    if (count == 0)
+        throw rhi::Error("timestamps: a query pool needs at least one query");
+    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    info.queryCount = count;
+    check(vkCreateQueryPool(context_->device, &info, nullptr, &pool_), "vkCreateQueryPool");
+    // Reset now so that reading a query that was never written reports it instead of being invalid.
+    try {
+        context_->runOnce([&](VkCommandBuffer commandBuffer) { vkCmdResetQueryPool(commandBuffer, pool_, 0, count); });
+    } catch (...) {
+        vkDestroyQueryPool(context_->device, pool_, nullptr);
+        throw;
+    }
+}
+
+VulkanTimestampQueries::~VulkanTimestampQueries()
+{
+    vkDestroyQueryPool(context_->device, pool_, nullptr);
+}
+
+std::vector<double> VulkanTimestampQueries::readNanoseconds() const
+{
+    // Pairs of (value, availability); no WAIT flag, so a query never written cannot hang us.
+    std::vector<std::uint64_t> results(std::size_t(count_) * 2);
+    const VkResult result = vkGetQueryPoolResults(context_->device, pool_, 0, count_,
+                                                  results.size() * sizeof(std::uint64_t), results.data(),
+                                                  2 * sizeof(std::uint64_t),
+                                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+    if (result != VK_NOT_READY)
+        check(result, "vkGetQueryPoolResults");
+    const double period = context_->properties.limits.timestampPeriod;
+    std::vector<double> nanoseconds(count_);
+    for (std::uint32_t i = 0; i < count_; ++i) {
+        if (results[2 * i + 1] == 0)
+            throw rhi::Error(fmt::format("readTimestamps: query {} of {} was not written by a submitted command list",
+                                         i, count_));
+        nanoseconds[i] = double(results[2 * i]) * period;
+    }
+    return nanoseconds;
+}
+
+} // namespace penumbra::vulkan

@@ -1,0 +1,112 @@
+#pragma once
+
+#include "VulkanContext.hpp"
+
+#include "penumbra/rhi/Resources.hpp"
+
+#include <memory>
+#include <vulkan/vulkan.h>
+
+namespace penumbra::vulkan {
+
+// A VkBuffer in host-visible, coherent memory, mapped for its whole life.
+class MappedBuffer {
+public:
+    MappedBuffer(std::shared_ptr<Context> context, VkDeviceSize size, VkBufferUsageFlags usage);
+    ~MappedBuffer();
+    MappedBuffer(const MappedBuffer&) = delete;
+    MappedBuffer& operator=(const MappedBuffer&) = delete;
+
+    VkBuffer handle() const { return buffer_; }
+    std::byte* data() const { return mapped_; }
+
+private:
+    std::shared_ptr<Context> context_;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    std::byte* mapped_ = nullptr;
+};
+
+class VulkanBuffer final : public rhi::Buffer {
+public:
+    VulkanBuffer(std::shared_ptr<Context> context, const rhi::BufferDesc& desc);
+
+    const rhi::BufferDesc& desc() const override { return desc_; }
+    void write(std::uint64_t offset, std::span<const std::byte> data) override;
+    void read(std::uint64_t offset, std::span<std::byte> data) const override;
+
+    VkBuffer handle() const { return buffer_.handle(); }
+
+private:
+    void checkRange(std::string_view what, std::uint64_t offset, std::uint64_t size) const;
+
+    rhi::BufferDesc desc_;
+    MappedBuffer buffer_;
+};
+
+// A 2D (array) image. Between commands it rests in restingLayout(): shader-read if it can be
+// sampled, else its attachment layout; passes and copies start and end there.
+class VulkanTexture final : public rhi::Texture {
+public:
+    VulkanTexture(std::shared_ptr<Context> context, const rhi::TextureDesc& desc);
+    ~VulkanTexture() override;
+    VulkanTexture(const VulkanTexture&) = delete;
+    VulkanTexture& operator=(const VulkanTexture&) = delete;
+
+    const rhi::TextureDesc& desc() const override { return desc_; }
+
+    VkImage image() const { return image_; }
+    // The view shaders sample: every layer, depth aspect only for D24S8.
+    VkImageView sampledView() const { return view_; }
+    VkFormat format() const { return format_; }
+    VkImageLayout restingLayout() const { return restingLayout_; }
+    // One layer with every aspect, for a framebuffer; the caller destroys it.
+    VkImageView createAttachmentView(std::uint32_t layer) const;
+    // Moves one layer (or all with layer = ~0u) between layouts, waiting for all earlier work.
+    void transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from, VkImageLayout to) const;
+    void upload(std::uint32_t layer, std::span<const std::byte> data);
+
+private:
+    std::shared_ptr<Context> context_;
+    rhi::TextureDesc desc_;
+    VkFormat format_;
+    VkImageLayout restingLayout_;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkImageView view_ = VK_NULL_HANDLE;
+};
+
+class VulkanSampler final : public rhi::Sampler {
+public:
+    VulkanSampler(std::shared_ptr<Context> context, const rhi::SamplerDesc& desc);
+    ~VulkanSampler() override;
+    VulkanSampler(const VulkanSampler&) = delete;
+    VulkanSampler& operator=(const VulkanSampler&) = delete;
+
+    const rhi::SamplerDesc& desc() const override { return desc_; }
+    VkSampler handle() const { return sampler_; }
+
+private:
+    std::shared_ptr<Context> context_;
+    rhi::SamplerDesc desc_;
+    VkSampler sampler_ = VK_NULL_HANDLE;
+};
+
+class VulkanTimestampQueries final : public rhi::TimestampQueries {
+public:
+    VulkanTimestampQueries(std::shared_ptr<Context> context, std::uint32_t count);
+    ~VulkanTimestampQueries() override;
+    VulkanTimestampQueries(const VulkanTimestampQueries&) = delete;
+    VulkanTimestampQueries& operator=(const VulkanTimestampQueries&) = delete;
+
+    std::uint32_t count() const override { return count_; }
+    VkQueryPool handle() const { return pool_; }
+    std::vector<double> readNanoseconds() const;
+
+private:
+    std::shared_ptr<Context> context_;
+    std::uint32_t count_;
+    VkQueryPool pool_ = VK_NULL_HANDLE;
+};
+
+} // namespace penumbra::vulkan
