@@ -14,17 +14,19 @@ namespace {
 struct BenchOptions {
     std::vector<std::string> configurations = {"vulkan", "opengl"};
     std::vector<std::uint32_t> draws = {1000, 5000, 20000};
-    double minTime = 0.5;
+    double minTime = 1.0;
 };
 
 // Prints Google Benchmark's table and keeps each run's real time per iteration.
 class CollectingReporter : public benchmark::ConsoleReporter {
 public:
+    CollectingReporter() : ConsoleReporter(OO_Tabular) {}
+
     void ReportRuns(const std::vector<Run>& runs) override
     {
         for (const Run& run : runs)
             if (run.run_type == Run::RT_Iteration)
-                seconds[run.benchmark_name()] =
+                seconds[run.run_name.function_name] =
                     run.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(run.time_unit);
         ConsoleReporter::ReportRuns(runs);
     }

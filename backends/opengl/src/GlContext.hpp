@@ -40,8 +40,8 @@ public:
     // Cheap when already current on this thread (cached per thread).
     void makeCurrent() const;
     const GlFunctions& gl() const { return gl_; }
-    GlDebugLog& debugLog() { return debugLog_; }
-    const GlDebugLog& debugLog() const { return debugLog_; }
+    rhi::DebugMessageLog& debugLog() { return debugLog_; }
+    const rhi::DebugMessageLog& debugLog() const { return debugLog_; }
     bool hasExtension(const std::string& name) const;
     int version() const { return version_; } // major * 10 + minor
 
@@ -49,7 +49,7 @@ private:
     void initialize();
     void releaseIfCurrent();
 
-    GlDebugLog debugLog_; // outlives context_: the debug callback points at it
+    rhi::DebugMessageLog debugLog_; // outlives context_: the debug callback points at it
     std::unique_ptr<HeadlessContext> context_;
     GlFunctions gl_;
     int version_ = 0;

@@ -58,7 +58,7 @@ void APIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severi
 {
     if (!indicatesProblem(type, severity))
         return;
-    auto* log = static_cast<GlDebugLog*>(const_cast<void*>(userParam));
+    auto* log = static_cast<rhi::DebugMessageLog*>(const_cast<void*>(userParam));
     const std::string text = length >= 0 ? std::string(message, std::size_t(length)) : std::string(message);
     log->record(fmt::format("GL {} {} ({}, id {}): {}", severityName(severity), typeName(type), sourceName(source),
                             id, text));
@@ -66,34 +66,7 @@ void APIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severi
 
 } // namespace
 
-void GlDebugLog::record(std::string message)
-{
-    std::lock_guard lock(mutex_);
-    messages_.push_back(std::move(message));
-}
-
-std::vector<std::string> GlDebugLog::messages() const
-{
-    std::lock_guard lock(mutex_);
-    return messages_;
-}
-
-std::vector<std::string> GlDebugLog::takeUnreported()
-{
-    std::lock_guard lock(mutex_);
-    std::vector<std::string> fresh(messages_.begin() + std::ptrdiff_t(reported_), messages_.end());
-    reported_ = messages_.size();
-    return fresh;
-}
-
-void GlDebugLog::clear()
-{
-    std::lock_guard lock(mutex_);
-    messages_.clear();
-    reported_ = 0;
-}
-
-void enableDebugOutput(const GlFunctions& gl, GlDebugLog& log)
+void enableDebugOutput(const GlFunctions& gl, rhi::DebugMessageLog& log)
 {
     gl.Enable(GL_DEBUG_OUTPUT);
     gl.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);

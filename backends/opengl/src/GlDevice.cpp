@@ -176,12 +176,8 @@ void GlDevice::submit(rhi::CommandList& commands)
     applySubmitDefaults();
     list.replay({context_->gl(), *cache_, orientation_, conventions_.clearDepth(), ++submitCount_});
     context_->gl().Finish();
-    if (!desc_.throwOnDebugMessage)
-        return;
-    const std::vector<std::string> fresh = context_->debugLog().takeUnreported();
-    if (!fresh.empty())
-        throw rhi::Error(fmt::format("OpenGL debug output reported {} message(s):\n{}", fresh.size(),
-                                     fmt::join(fresh, "\n")));
+    if (desc_.throwOnDebugMessage)
+        context_->debugLog().raiseUnreported("OpenGL debug output");
 }
 
 std::vector<double> GlDevice::readTimestamps(const rhi::TimestampQueries& queries)
@@ -189,7 +185,7 @@ std::vector<double> GlDevice::readTimestamps(const rhi::TimestampQueries& querie
     return glObject<const GlTimestampQueries>(queries, "readTimestamps queries").read();
 }
 
-std::vector<std::string> GlDevice::debugMessages() const { return context_->debugLog().messages(); }
+std::vector<std::string> GlDevice::debugMessages() const { return context_->debugLog().all(); }
 
 void GlDevice::clearDebugMessages() { context_->debugLog().clear(); }
 

@@ -26,7 +26,7 @@ public:
 
     const rhi::DeviceDesc desc;
     const rhi::Conventions conventions;
-    DebugLog log; // before instance: the messenger writes into it until the instance is gone
+    rhi::DebugMessageLog log; // before instance: the messenger writes into it until the instance is gone
     Instance instance;
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
     std::uint32_t queueFamily = 0;

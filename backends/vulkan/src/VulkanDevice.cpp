@@ -64,12 +64,8 @@ std::unique_ptr<rhi::CommandList> VulkanDevice::createCommandList()
 void VulkanDevice::submit(rhi::CommandList& commands)
 {
     vulkanObject<VulkanCommandList>(commands, "submit: the command list").submit();
-    if (context_->desc.throwOnDebugMessage) {
-        const std::vector<std::string> fresh = context_->log.takeUnreported();
-        if (!fresh.empty())
-            throw rhi::Error(fmt::format("Vulkan validation reported {} message(s):\n{}", fresh.size(),
-                                         fmt::join(fresh, "\n")));
-    }
+    if (context_->desc.throwOnDebugMessage)
+        context_->log.raiseUnreported("Vulkan validation");
 }
 
 std::vector<double> VulkanDevice::readTimestamps(const rhi::TimestampQueries& queries)

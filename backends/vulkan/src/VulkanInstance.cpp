@@ -25,11 +25,11 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(VkDebugUtilsMessageSeverityFlagBit
                                               VkDebugUtilsMessageTypeFlagsEXT,
                                               const VkDebugUtilsMessengerCallbackDataEXT* data, void* user)
 {
-    static_cast<DebugLog*>(user)->add(fmt::format("vulkan {}: {}", severityName(severity), data->pMessage));
+    static_cast<rhi::DebugMessageLog*>(user)->record(fmt::format("vulkan {}: {}", severityName(severity), data->pMessage));
     return VK_FALSE;
 }
 
-VkDebugUtilsMessengerCreateInfoEXT messengerInfo(DebugLog& log)
+VkDebugUtilsMessengerCreateInfoEXT messengerInfo(rhi::DebugMessageLog& log)
 {
     VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
@@ -76,34 +76,7 @@ std::optional<std::uint32_t> graphicsQueueFamily(VkPhysicalDevice device)
 
 } // namespace
 
-void DebugLog::add(std::string message)
-{
-    std::lock_guard lock(mutex_);
-    messages_.push_back(std::move(message));
-}
-
-std::vector<std::string> DebugLog::all() const
-{
-    std::lock_guard lock(mutex_);
-    return messages_;
-}
-
-std::vector<std::string> DebugLog::takeUnreported()
-{
-    std::lock_guard lock(mutex_);
-    std::vector<std::string> fresh(messages_.begin() + std::ptrdiff_t(reported_), messages_.end());
-    reported_ = messages_.size();
-    return fresh;
-}
-
-void DebugLog::clear()
-{
-    std::lock_guard lock(mutex_);
-    messages_.clear();
-    reported_ = 0;
-}
-
-Instance::Instance(bool validation, DebugLog& log)
+Instance::Instance(bool validation, rhi::DebugMessageLog& log)
 {
     const std::uint32_t loader = loaderVersion();
     if (loader < VK_API_VERSION_1_1)

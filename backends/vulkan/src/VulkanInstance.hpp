@@ -1,32 +1,18 @@
 #pragma once
 
+#include "penumbra/rhi/DebugMessageLog.hpp"
+
 #include <cstdint>
-#include <mutex>
 #include <string>
 #include <vector>
 #include <vulkan/vulkan.h>
 
 namespace penumbra::vulkan {
 
-// Validation messages as the debug messenger delivers them (from any driver thread).
-class DebugLog {
-public:
-    void add(std::string message);
-    std::vector<std::string> all() const;
-    // Messages added since the previous call: what submit() raises with throwOnDebugMessage.
-    std::vector<std::string> takeUnreported();
-    void clear();
-
-private:
-    mutable std::mutex mutex_;
-    std::vector<std::string> messages_;
-    std::size_t reported_ = 0;
-};
-
 // The VkInstance and, with validation, the Khronos layer and a messenger that fills a DebugLog.
 class Instance {
 public:
-    Instance(bool validation, DebugLog& log);
+    Instance(bool validation, rhi::DebugMessageLog& log);
     ~Instance();
     Instance(const Instance&) = delete;
     Instance& operator=(const Instance&) = delete;
