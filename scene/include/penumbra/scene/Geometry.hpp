@@ -1,0 +1,60 @@
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace penumbra::scene {
+
+// Coordinate system of every mesh and scene: right-handed, y up, metres.
+// Front faces are counter-clockwise seen from outside, normals point outward; with the
+// RHI's conventions (CCW front faces in NDC, y up) back-face culling keeps the outside.
+
+// The vertex layout the lit pass and the shadow caster pass read: three attributes at
+// offsets 0, 12 and 24, stride 32, no padding.
+struct Vertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};
+    glm::vec2 uv{0.0f}; // v = 0 is the top row of a texture, as in the RHI
+};
+static_assert(sizeof(Vertex) == 32, "Vertex must stay tightly packed: vertex input strides depend on it");
+
+// Axis-aligned box. The default value is empty (min > max), so extend() from it gives the
+// box of exactly the points added.
+struct Bounds {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{-std::numeric_limits<float>::max()};
+
+    bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    glm::vec3 size() const { return max - min; }
+
+    void extend(const glm::vec3& point);
+    void extend(const Bounds& other);
+    Bounds merged(const Bounds& other) const;
+    bool contains(const glm::vec3& point, float tolerance = 0.0f) const;
+
+    // Corner i has x from max when bit 0 of i is set, y from bit 1, z from bit 2.
+    std::array<glm::vec3, 8> corners() const;
+    // The world box of the 8 transformed corners: conservative for any affine transform.
+    Bounds transformed(const glm::mat4& transform) const;
+};
+
+// Indexed triangle list; `bounds` is the box of the vertex positions.
+struct MeshData {
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    Bounds bounds;
+
+    std::uint32_t triangleCount() const { return static_cast<std::uint32_t>(indices.size() / 3); }
+};
+
+// Recomputes mesh.bounds from its vertices.
+void updateBounds(MeshData& mesh);
+
+} // namespace penumbra::scene

@@ -1,0 +1,93 @@
+#pragma once
+
+#include "penumbra/scene/Camera.hpp"
+#include "penumbra/scene/Light.hpp"
+#include "penumbra/scene/RayCaster.hpp"
+#include "penumbra/scene/Scene.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace penumbra::scene {
+
+// Ray-traced references for the shadow tests: what each pixel of a rendered picture shows
+// (a CPU G-buffer) and whether that point sees a directional light.
+//
+// Pixels follow the RHI's conventions: row 0 is the top of the picture, pixel (x, y) covers
+// [x, x + 1] x [y, y + 1] and its sample is the centre; NDC x = 2 (x + 0.5) / width - 1,
+// NDC y = 1 - 2 (y + 0.5) / height (y up). The aspect ratio is width / height.
+
+inline constexpr std::uint32_t kNoObject = std::numeric_limits<std::uint32_t>::max();
+
+// A primary ray through the camera's near plane: it starts on the near plane and ends on
+// the far plane, so that, as in rasterisation, nothing nearer than nearPlane is seen.
+struct Ray {
+    glm::vec3 origin;
+    glm::vec3 direction; // unit
+    float maxDistance;
+};
+
+// Ray through pixel coordinates (px, py) (continuous: the centre of pixel (x, y) is
+// (x + 0.5, y + 0.5)).
+Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, float px, float py);
+
+struct GBufferSample {
+    std::uint32_t object = kNoObject; // kNoObject: background
+    std::uint32_t triangle = 0;       // within the object's mesh
+    glm::vec3 position{0.0f};         // world
+    // Unit world normals turned towards the camera: back faces (seen through Clip holes)
+    // report the side that was seen. `normal` is the flat triangle normal; `shadingNormal`
+    // interpolates the mesh's vertex normals as the lit pass does.
+    glm::vec3 normal{0.0f};
+    glm::vec3 shadingNormal{0.0f};
+    glm::vec2 uv{0.0f};
+    float viewDepth = 0.0f; // distance along the camera's forward axis
+    bool frontFacing = true;
+
+    bool hit() const { return object != kNoObject; }
+};
+
+struct CpuGBuffer {
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::vector<GBufferSample> samples; // row-major, row 0 at the top
+
+    const GBufferSample& at(std::uint32_t x, std::uint32_t y) const { return samples[std::size_t(y) * width + x]; }
+};
+
+// `cameraRays` must be built from `scene` with RayKind::Camera (throws std::invalid_argument
+// otherwise).
+CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const Camera& camera, std::uint32_t width,
+                        std::uint32_t height);
+
+enum class LightVisibility : std::uint8_t {
+    Background,   // no surface
+    Lit,          // faces the light and nothing blocks it
+    Shadowed,     // faces the light, something blocks it
+    FacingAway,   // the light arrives from behind the surface (dot(normal, -direction) <= 0): unlit, shadow or not
+    NotReceiving, // the material has receiveShadows = false: drawn lit whatever blocks it
+};
+
+struct LightVisibilityMask {
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::vector<LightVisibility> pixels; // row-major, row 0 at the top
+
+    LightVisibility at(std::uint32_t x, std::uint32_t y) const { return pixels[std::size_t(y) * width + x]; }
+};
+
+// Shadow rays start this far off the surface along its normal (world units): far above
+// float rounding at the test scene's 60-unit scale, far below any feature a test measures.
+inline constexpr float kShadowRayOffset = 1e-3f;
+
+// For every G-buffer sample: an occlusion ray from position + normal * normalOffset towards
+// -light.direction. `shadowRays` must be built with RayKind::Shadow (throws
+// std::invalid_argument otherwise).
+LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                         const DirectionalLight& light, float normalOffset = kShadowRayOffset);
+
+} // namespace penumbra::scene

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "penumbra/scene/Scene.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+
+namespace penumbra::scene {
+
+// Which surfaces a RayCaster sees, by material:
+//                  CasterMode::On   Clip                         Dither                      Off
+//   Shadow         solid            holes: alpha < alphaCutoff   holes: alpha < 0.5          absent
+//   Camera         solid            holes: alpha < alphaCutoff   solid                       solid
+// alpha = materialAlpha(material, uv at the hit). Shadow is the ground truth for shadow maps:
+// a dithered caster's expected coverage is its alpha, which a binary answer cannot give, so
+// the ground truth thresholds it at kDitherShadowThreshold; compare dithered shadows
+// statistically, not per pixel. Camera is what the lit pass draws: Clip materials are
+// clipped there too, Dither ones are drawn solid.
+enum class RayKind : std::uint8_t { Shadow, Camera };
+
+inline constexpr float kDitherShadowThreshold = 0.5f;
+
+struct Hit {
+    float distance;            // world units along the (normalised) direction
+    std::uint32_t object;      // index into Scene::objects
+    std::uint32_t triangle;    // triangle index within the object's mesh (indices[3 * triangle ...])
+    glm::vec2 barycentrics;    // weights of the triangle's 2nd and 3rd vertex; the 1st gets 1 - x - y
+    glm::vec3 normal;          // unit world normal of the triangle's front (CCW) side, whichever side was hit
+};
+
+// Ground-truth visibility on the CPU: world-space triangles of a scene in a BVH (binned
+// SAH). The caster copies what it needs; the scene may change or go away afterwards.
+// Rays are two-sided, directions need not be unit (they are normalised), and hits count at
+// 0 < distance <= maxDistance, so rays leaving a surface must start slightly off it.
+class RayCaster {
+public:
+    explicit RayCaster(const Scene& scene, RayKind kind = RayKind::Shadow);
+    ~RayCaster();
+    RayCaster(RayCaster&&) noexcept;
+    RayCaster& operator=(RayCaster&&) noexcept;
+
+    RayKind kind() const;
+    std::uint32_t triangleCount() const;
+
+    // Any hit; stops at the first one.
+    bool occluded(const glm::vec3& origin, const glm::vec3& direction,
+                  float maxDistance = std::numeric_limits<float>::infinity()) const;
+    std::optional<Hit> closestHit(const glm::vec3& origin, const glm::vec3& direction,
+                                  float maxDistance = std::numeric_limits<float>::infinity()) const;
+
+private:
+    struct Data;
+    std::unique_ptr<Data> data_;
+};
+
+} // namespace penumbra::scene

@@ -1,0 +1,62 @@
+#pragma once
+
+#include "penumbra/scene/Camera.hpp"
+#include "penumbra/scene/Geometry.hpp"
+#include "penumbra/scene/Light.hpp"
+#include "penumbra/scene/Material.hpp"
+
+#include <glm/mat4x4.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace penumbra::scene {
+
+// A scene that refers to something it does not hold (a mesh or material index out of range,
+// an index past a mesh's vertices) or holds a value no pass can use. what() names the
+// object, mesh or light by index (and name) and the bad reference.
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// One drawn instance: meshes[mesh] with materials[material], placed by transform.
+// worldBounds = meshes[mesh].bounds.transformed(transform); Scene::addObject fills it and
+// validate() rejects a stale one, because shadow fitting and culling trust it.
+struct Object {
+    std::string name;
+    std::uint32_t mesh = 0;
+    std::uint32_t material = 0;
+    glm::mat4 transform{1.0f};
+    Bounds worldBounds;
+};
+
+struct Scene {
+    std::vector<MeshData> meshes;
+    std::vector<Material> materials;
+    std::vector<Object> objects;
+    std::vector<DirectionalLight> lights;
+    Camera camera;
+
+    std::uint32_t addMesh(MeshData mesh);
+    std::uint32_t addMaterial(Material material);
+    // Appends an object with its world bounds computed; the mesh must already be added.
+    std::uint32_t addObject(std::string name, std::uint32_t mesh, std::uint32_t material, const glm::mat4& transform);
+
+    // Index of the first object called `name`.
+    std::optional<std::uint32_t> findObject(std::string_view name) const;
+    const Material& materialOf(const Object& object) const { return materials.at(object.material); }
+    const MeshData& meshOf(const Object& object) const { return meshes.at(object.mesh); }
+
+    // Box of every object's world bounds (empty for a scene without objects).
+    Bounds worldBounds() const;
+
+    // Throws SceneError for the first broken reference or unusable value found.
+    void validate() const;
+};
+
+} // namespace penumbra::scene

@@ -1,0 +1,103 @@
+#include "penumbra/scene/GroundTruth.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace penumbra::scene {
+namespace {
+
+// World normal from the mesh's vertex normals at the hit. The inverse transpose keeps
+// normals perpendicular under any affine transform, not only the rigid ones of the test scene.
+glm::vec3 interpolatedNormal(const Scene& scene, const Hit& hit)
+{
+    const Object& object = scene.objects[hit.object];
+    const MeshData& mesh = scene.meshOf(object);
+    const std::uint32_t* index = &mesh.indices[3 * std::size_t(hit.triangle)];
+    const glm::vec3 local = (1.0f - hit.barycentrics.x - hit.barycentrics.y) * mesh.vertices[index[0]].normal +
+                            hit.barycentrics.x * mesh.vertices[index[1]].normal +
+                            hit.barycentrics.y * mesh.vertices[index[2]].normal;
+    return glm::normalize(glm::transpose(glm::inverse(glm::mat3(object.transform))) * local);
+}
+
+glm::vec2 interpolatedUv(const Scene& scene, const Hit& hit)
+{
+    const MeshData& mesh = scene.meshOf(scene.objects[hit.object]);
+    const std::uint32_t* index = &mesh.indices[3 * std::size_t(hit.triangle)];
+    return (1.0f - hit.barycentrics.x - hit.barycentrics.y) * mesh.vertices[index[0]].uv +
+           hit.barycentrics.x * mesh.vertices[index[1]].uv + hit.barycentrics.y * mesh.vertices[index[2]].uv;
+}
+
+} // namespace
+
+Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, float px, float py)
+{
+    const float ndcX = 2.0f * px / static_cast<float>(width) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * py / static_cast<float>(height);
+    const float tanHalfFov = std::tan(0.5f * camera.fovY);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    // View-space direction (x, y, -1) taken to world space with the inverse of view().
+    const glm::mat3 viewToWorld = glm::inverse(glm::mat3(camera.view()));
+    const glm::vec3 direction = glm::normalize(viewToWorld * glm::vec3(ndcX * tanHalfFov * aspect, ndcY * tanHalfFov, -1.0f));
+    // Distances along this ray are view depth / cos(angle to the forward axis).
+    const float depthPerDistance = glm::dot(direction, glm::normalize(camera.forward));
+    const float nearDistance = camera.nearPlane / depthPerDistance;
+    return {camera.position + direction * nearDistance, direction,
+            (camera.farPlane - camera.nearPlane) / depthPerDistance};
+}
+
+CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const Camera& camera, std::uint32_t width,
+                        std::uint32_t height)
+{
+    if (cameraRays.kind() != RayKind::Camera)
+        throw std::invalid_argument("traceGBuffer needs a RayCaster built with RayKind::Camera");
+    CpuGBuffer gbuffer{width, height, std::vector<GBufferSample>(std::size_t(width) * height)};
+    const glm::vec3 forward = glm::normalize(camera.forward);
+    for (std::uint32_t y = 0; y < height; ++y) {
+        for (std::uint32_t x = 0; x < width; ++x) {
+            const Ray ray = primaryRay(camera, width, height, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+            const std::optional<Hit> hit = cameraRays.closestHit(ray.origin, ray.direction, ray.maxDistance);
+            if (!hit)
+                continue;
+            GBufferSample& sample = gbuffer.samples[std::size_t(y) * width + x];
+            sample.object = hit->object;
+            sample.triangle = hit->triangle;
+            sample.position = ray.origin + hit->distance * ray.direction;
+            sample.frontFacing = glm::dot(hit->normal, ray.direction) < 0.0f;
+            const float towardsCamera = sample.frontFacing ? 1.0f : -1.0f;
+            sample.normal = towardsCamera * hit->normal;
+            sample.shadingNormal = towardsCamera * interpolatedNormal(scene, *hit);
+            sample.uv = interpolatedUv(scene, *hit);
+            sample.viewDepth = glm::dot(sample.position - camera.position, forward);
+        }
+    }
+    return gbuffer;
+}
+
+LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                         const DirectionalLight& light, float normalOffset)
+{
+    if (shadowRays.kind() != RayKind::Shadow)
+        throw std::invalid_argument("traceLightVisibility needs a RayCaster built with RayKind::Shadow");
+    LightVisibilityMask mask{gbuffer.width, gbuffer.height,
+                             std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background)};
+    const glm::vec3 towardsLight = -glm::normalize(light.direction);
+    for (std::size_t i = 0; i < gbuffer.samples.size(); ++i) {
+        const GBufferSample& sample = gbuffer.samples[i];
+        if (!sample.hit())
+            continue;
+        if (!scene.materialOf(scene.objects[sample.object]).receiveShadows)
+            mask.pixels[i] = LightVisibility::NotReceiving;
+        else if (glm::dot(sample.normal, towardsLight) <= 0.0f)
+            mask.pixels[i] = LightVisibility::FacingAway;
+        else
+            mask.pixels[i] = shadowRays.occluded(sample.position + normalOffset * sample.normal, towardsLight)
+                                 ? LightVisibility::Shadowed
+                                 : LightVisibility::Lit;
+    }
+    return mask;
+}
+
+} // namespace penumbra::scene

@@ -1,0 +1,129 @@
+#include "penumbra/scene/Scene.hpp"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace penumbra::scene {
+namespace {
+
+constexpr float kUnitTolerance = 1e-3f;
+// Relative to the box's extent: the stored box may come from another float evaluation order.
+constexpr float kBoundsTolerance = 1e-4f;
+
+std::string describe(const char* kind, std::size_t index, const std::string& name)
+{
+    return name.empty() ? fmt::format("{} {}", kind, index) : fmt::format("{} {} ('{}')", kind, index, name);
+}
+
+bool isUnit(const glm::vec3& v) { return std::abs(glm::length(v) - 1.0f) <= kUnitTolerance; }
+
+bool sameBounds(const Bounds& a, const Bounds& b)
+{
+    const float tolerance = kBoundsTolerance * (1.0f + glm::length(b.size()) + glm::length(b.center()));
+    return glm::all(glm::lessThanEqual(glm::abs(a.min - b.min), glm::vec3(tolerance))) &&
+           glm::all(glm::lessThanEqual(glm::abs(a.max - b.max), glm::vec3(tolerance)));
+}
+
+void validateMesh(const MeshData& mesh, std::size_t index)
+{
+    if (mesh.indices.size() % 3 != 0)
+        throw SceneError(fmt::format("mesh {}: {} indices is not a whole number of triangles", index, mesh.indices.size()));
+    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+        if (mesh.indices[i] >= mesh.vertices.size())
+            throw SceneError(fmt::format("mesh {}: index {} refers to vertex {}, but the mesh has {} vertices", index, i,
+                                         mesh.indices[i], mesh.vertices.size()));
+    }
+}
+
+void validateObject(const Scene& scene, const Object& object, std::size_t index)
+{
+    const std::string what = describe("object", index, object.name);
+    if (object.mesh >= scene.meshes.size())
+        throw SceneError(fmt::format("{}: mesh {} does not exist (the scene has {} meshes)", what, object.mesh,
+                                     scene.meshes.size()));
+    if (object.material >= scene.materials.size())
+        throw SceneError(fmt::format("{}: material {} does not exist (the scene has {} materials)", what,
+                                     object.material, scene.materials.size()));
+    if (!sameBounds(object.worldBounds, scene.meshes[object.mesh].bounds.transformed(object.transform)))
+        throw SceneError(fmt::format("{}: worldBounds do not match mesh {} under the object's transform (stale bounds)",
+                                     what, object.mesh));
+}
+
+void validateLight(const DirectionalLight& light, std::size_t index)
+{
+    const std::string what = describe("light", index, light.name);
+    if (!isUnit(light.direction))
+        throw SceneError(fmt::format("{}: direction ({}, {}, {}) is not a unit vector", what, light.direction.x,
+                                     light.direction.y, light.direction.z));
+    if (light.shadowStrength < 0.0f || light.shadowStrength > 1.0f)
+        throw SceneError(fmt::format("{}: shadowStrength {} is outside [0, 1]", what, light.shadowStrength));
+}
+
+void validateCamera(const Camera& camera)
+{
+    if (!isUnit(camera.forward))
+        throw SceneError("camera: forward is not a unit vector");
+    if (glm::length(glm::cross(camera.forward, camera.up)) < kUnitTolerance)
+        throw SceneError("camera: up is parallel to forward");
+    if (!(camera.nearPlane > 0.0f && camera.farPlane > camera.nearPlane))
+        throw SceneError(fmt::format("camera: planes near {} far {} need 0 < near < far", camera.nearPlane,
+                                     camera.farPlane));
+    if (!(camera.fovY > 0.0f && camera.fovY < 3.14159f))
+        throw SceneError(fmt::format("camera: fovY {} radians is outside (0, pi)", camera.fovY));
+}
+
+} // namespace
+
+std::uint32_t Scene::addMesh(MeshData mesh)
+{
+    meshes.push_back(std::move(mesh));
+    return static_cast<std::uint32_t>(meshes.size() - 1);
+}
+
+std::uint32_t Scene::addMaterial(Material material)
+{
+    materials.push_back(std::move(material));
+    return static_cast<std::uint32_t>(materials.size() - 1);
+}
+
+std::uint32_t Scene::addObject(std::string name, std::uint32_t mesh, std::uint32_t material, const glm::mat4& transform)
+{
+    if (mesh >= meshes.size())
+        throw SceneError(fmt::format("addObject '{}': mesh {} does not exist (the scene has {} meshes)", name, mesh,
+                                     meshes.size()));
+    const Bounds bounds = meshes[mesh].bounds.transformed(transform);
+    objects.push_back({std::move(name), mesh, material, transform, bounds});
+    return static_cast<std::uint32_t>(objects.size() - 1);
+}
+
+std::optional<std::uint32_t> Scene::findObject(std::string_view name) const
+{
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        if (objects[i].name == name)
+            return static_cast<std::uint32_t>(i);
+    }
+    return std::nullopt;
+}
+
+Bounds Scene::worldBounds() const
+{
+    Bounds result;
+    for (const Object& object : objects)
+        result.extend(object.worldBounds);
+    return result;
+}
+
+void Scene::validate() const
+{
+    for (std::size_t i = 0; i < meshes.size(); ++i)
+        validateMesh(meshes[i], i);
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        validateObject(*this, objects[i], i);
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        validateLight(lights[i], i);
+    validateCamera(camera);
+}
+
+} // namespace penumbra::scene

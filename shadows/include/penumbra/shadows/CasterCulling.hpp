@@ -1,0 +1,30 @@
+#pragma once
+
+#include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/DirectionalCascadeFit.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace penumbra::shadows {
+
+struct CasterCullingResult {
+    std::vector<std::uint32_t> casters; // indices into the caster list to draw into the cascade
+    std::uint32_t overlapping = 0;      // casters in the cascade's light box: the draws without culling bias
+    std::uint32_t culledByBias = 0;     // of those, skipped by the culling bias
+};
+
+// The document's shadowCascadeBlendCullingFactor, max(0, 0.8 - cascadeFade): lowered by the fade
+// band and a margin so that casters in a blend region are never culled.
+float cascadeBlendCullingFactor(float cascadeFade);
+
+// Casters whose light-space box meets the cascade's: the tile's square in x, y and depth up to the
+// far plane (no near limit: casters in front of the near plane still cast, pancaked). With a
+// previous cascade, a caster wholly inside that cascade's culling sphere scaled by cullingFactor is
+// skipped (culling bias): the previous, sharper cascade already holds its shadow.
+CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, std::span<const Bounds> casterBounds,
+                                      const std::optional<Sphere>& previousCullingSphere, float cullingFactor);
+
+} // namespace penumbra::shadows

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/CascadeSplits.hpp"
+#include "penumbra/shadows/FrustumSliceSphere.hpp"
+#include "penumbra/shadows/LightBasis.hpp"
+#include "penumbra/shadows/ShadowCamera.hpp"
+
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <span>
+#include <vector>
+
+namespace penumbra::shadows {
+
+// One cascade of one directional light: what ComputeDirectionalShadowMatricesAndCullingPrimitives returns.
+struct DirectionalShadowCascade {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::mat4 viewProjection{1.0f}; // projection * view
+    // The frustum slice's bounding sphere: cascade selection and culling bias use it. Independent
+    // of the light, so every light shares it.
+    Sphere cullingSphere;
+    // Half the side of the square the tile covers in light space: the sphere's radius plus the
+    // largest snapping displacement, so the snapped square still holds the whole sphere.
+    float halfSize = 0.0f;
+    float texelSize = 0.0f;      // world size of one tile texel, 2 halfSize / tileSize
+    glm::vec2 snappedCentre{0.0f}; // light-space x, y of the tile's centre: whole texels
+    float nearDepth = 0.0f;      // light-space depth (along the direction) of the near plane
+    float farDepth = 0.0f;       // of the far plane: the sphere's far side
+    LightBasis basis;
+};
+
+// Fits one cascade's light projection around `sphere` (stable fit):
+// - light view along basis.direction; orthographic square of half size r / (1 - sqrt 2 / tileSize);
+// - the square's centre snapped to whole texels in light space, so camera translation moves
+//   shadow texels by whole texels only;
+// - near plane pulled back over every caster box whose light-space footprint overlaps the square,
+//   then by nearPlaneOffset; far plane at the sphere's far side;
+// - projection from conventions.orthographic, so every depth range and reversed-Z works.
+DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightBasis& basis, std::uint32_t tileSize,
+                                               float nearPlaneOffset, std::span<const Bounds> casterBounds,
+                                               const rhi::Conventions& conventions);
+
+// The engine function written out: cascades [firstCascade, firstCascade + count) of one light.
+std::vector<DirectionalShadowCascade> computeDirectionalShadowMatricesAndCullingPrimitives(
+    const ShadowCamera& camera, const CascadeSplits& splits, std::uint32_t firstCascade, std::uint32_t count,
+    glm::vec3 lightDirection, std::uint32_t tileSize, float nearPlaneOffset, std::span<const Bounds> casterBounds,
+    const rhi::Conventions& conventions);
+
+} // namespace penumbra::shadows

@@ -1,0 +1,75 @@
+#pragma once
+
+#include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/CascadeData.hpp"
+#include "penumbra/shadows/CascadeSplits.hpp"
+#include "penumbra/shadows/CasterCulling.hpp"
+#include "penumbra/shadows/DirectionalCascadeFit.hpp"
+#include "penumbra/shadows/DirectionalShadowUniforms.hpp"
+#include "penumbra/shadows/ShadowAtlasLayout.hpp"
+#include "penumbra/shadows/ShadowCamera.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace penumbra::shadows {
+
+struct DirectionalShadowLightInput {
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // from the light into the scene
+    float strength = 1.0f;                  // 0 turns the light's shadows off
+    float nearPlaneOffset = 0.0f;           // world units the shadow near plane is pulled back (pancaking)
+    float normalBias = 1.0f;                // multiple of the cascade's normal bias
+    float slopeScaleBias = 0.0f;            // rasterizer slope-scaled depth bias of the shadow pass
+    bool castsShadows = true;
+};
+
+struct DirectionalCascadePlan {
+    DirectionalShadowCascade fit;
+    std::uint32_t tile = 0;
+    glm::mat4 worldToAtlas{1.0f};
+    rhi::Viewport viewport;
+    CasterCullingResult casters;
+};
+
+struct ShadowedDirectionalLight {
+    std::uint32_t lightIndex = 0; // into the planner's input lights
+    float strength = 1.0f;
+    float normalBias = 1.0f;
+    float slopeScaleBias = 0.0f;
+    float nearPlaneOffset = 0.0f;
+    std::uint32_t firstTile = 0;
+    std::vector<DirectionalCascadePlan> cascades;
+};
+
+// Why a light (or, without a light index, the whole plan) gets no shadow tiles.
+struct ShadowPlanNote {
+    std::optional<std::uint32_t> lightIndex;
+    std::string reason;
+};
+
+struct DirectionalShadowPlan {
+    ShadowAtlasLayout atlas{256, 0};
+    CascadeSplits splits;
+    std::vector<Sphere> cullingSpheres;     // per cascade, shared by every light
+    std::vector<CascadeData> cascadeData;   // per cascade, shared by every light
+    std::vector<ShadowedDirectionalLight> lights; // at most 4: the shadow slots
+    std::vector<int> shadowSlots;           // per input light: its slot in `lights`, or -1
+    std::vector<ShadowPlanNote> report;
+    DirectionalShadowUniforms uniforms;
+};
+
+// Plans a frame's directional shadows: the first 4 lights that cast shadows with strength > 0 get
+// cascadeCount tiles each; every other light is listed in the report with the reason (never an
+// exception). Throws rhi::Error only for settings that fail validate().
+DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
+                                             const ShadowCamera& camera,
+                                             std::span<const DirectionalShadowLightInput> lights,
+                                             std::span<const Bounds> casterBounds);
+
+} // namespace penumbra::shadows

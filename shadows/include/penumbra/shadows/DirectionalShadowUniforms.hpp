@@ -1,0 +1,45 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+namespace penumbra::shadows {
+
+inline constexpr std::uint32_t maxShadowedDirectionalLights = 4;
+inline constexpr std::uint32_t maxCascades = 4;
+
+// The lit shader's directional-shadow uniform block, std140, uploaded as is. GLSL:
+//   layout(std140) uniform DirectionalShadows {
+//       mat4 worldToAtlas[16];      // tile light * cascadeCount + cascade: world -> (u, v, depth) in the atlas
+//       vec4 cullingSpheres[4];     // xyz centre, w = r'^2 (sphere shrunk by the filter): cascade selection
+//       vec4 cascadeData[4];        // x = 1 / r'^2 (cascade fade), y = normal bias in world units per unit bias
+//       vec4 distanceFade;          // 1 / maxDistance, 1 / distanceFade, 1 / (1 - (1 - cascadeFade)^2), 0
+//       vec4 atlasSize;             // size, 1 / size, tile size, 1 / tile size (texels)
+//       ivec4 config;               // cascadeCount, filter (0..3: PCF2x2..7x7), blend (0..2: hard, soft, dither),
+//                                   // shadowed light count
+//       vec4 lightShadowData[4];    // per shadow slot: strength, normalBias, first tile, 0
+//   };
+struct DirectionalShadowUniforms {
+    std::array<glm::mat4, maxShadowedDirectionalLights * maxCascades> worldToAtlas{};
+    std::array<glm::vec4, maxCascades> cullingSpheres{};
+    std::array<glm::vec4, maxCascades> cascadeData{};
+    glm::vec4 distanceFade{0.0f};
+    glm::vec4 atlasSize{0.0f};
+    glm::ivec4 config{0};
+    std::array<glm::vec4, maxShadowedDirectionalLights> lightShadowData{};
+};
+
+static_assert(sizeof(glm::mat4) == 64 && sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16);
+static_assert(offsetof(DirectionalShadowUniforms, worldToAtlas) == 0);
+static_assert(offsetof(DirectionalShadowUniforms, cullingSpheres) == 1024);
+static_assert(offsetof(DirectionalShadowUniforms, cascadeData) == 1088);
+static_assert(offsetof(DirectionalShadowUniforms, distanceFade) == 1152);
+static_assert(offsetof(DirectionalShadowUniforms, atlasSize) == 1168);
+static_assert(offsetof(DirectionalShadowUniforms, config) == 1184);
+static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1200);
+static_assert(sizeof(DirectionalShadowUniforms) == 1264);
+
+} // namespace penumbra::shadows

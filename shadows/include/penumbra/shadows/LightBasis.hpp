@@ -1,0 +1,28 @@
+#pragma once
+
+#include "penumbra/shadows/Bounds.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace penumbra::shadows {
+
+// Orthonormal light-space axes of a directional light; a function of the direction alone, so
+// that light-space texel grids stay put while the camera moves. right x up = -direction, as the
+// light view (right-handed, looking down -z) needs.
+struct LightBasis {
+    glm::vec3 right{1.0f, 0.0f, 0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f}; // from the light into the scene
+
+    // (x, y, depth along the light) of a world point.
+    glm::vec3 toLight(glm::vec3 p) const { return {glm::dot(p, right), glm::dot(p, up), glm::dot(p, direction)}; }
+};
+
+// `direction` must be non-zero; it is normalised.
+LightBasis lightBasis(glm::vec3 direction);
+
+// Light-space (x, y, depth) box around a world box's 8 corners.
+Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world);
+
+} // namespace penumbra::shadows

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "penumbra/rhi/CommandList.hpp"
+
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+namespace penumbra::shadows {
+
+// A square atlas cut into split x split square tiles: split = 1 for one tile, 2 for up to 4,
+// 4 for up to 16. Tile i sits at column i % split, row i / split, rows counted from the TOP as
+// rhi::Viewport and texture v do. Used by the directional atlas (lights x cascades) and fit for
+// any other atlas of up to 16 tiles (spot and point lights).
+class ShadowAtlasLayout {
+public:
+    // Throws rhi::Error when tileCount > 16 or atlasSize is not a multiple of the split.
+    ShadowAtlasLayout(std::uint32_t atlasSize, std::uint32_t tileCount);
+
+    std::uint32_t atlasSize() const { return atlasSize_; }
+    std::uint32_t tileCount() const { return tileCount_; }
+    std::uint32_t split() const { return split_; }
+    std::uint32_t tileSize() const { return atlasSize_ / split_; }
+
+    // Column and row of a tile, in tiles.
+    glm::uvec2 tileCoordinates(std::uint32_t tile) const;
+    // Top-left texel of a tile.
+    glm::uvec2 tileOffset(std::uint32_t tile) const;
+    rhi::Viewport viewport(std::uint32_t tile) const;
+    // Maps a tile's texture coordinates (u, v in [0, 1], depth) to the atlas's; depth passes through.
+    glm::mat4 tileToAtlas(std::uint32_t tile) const;
+
+private:
+    std::uint32_t atlasSize_;
+    std::uint32_t tileCount_;
+    std::uint32_t split_;
+};
+
+// Tile of cascade `cascade` of shadowed directional light `light`: light * cascadeCount + cascade.
+constexpr std::uint32_t directionalTileIndex(std::uint32_t light, std::uint32_t cascade, std::uint32_t cascadeCount)
+{
+    return light * cascadeCount + cascade;
+}
+
+} // namespace penumbra::shadows

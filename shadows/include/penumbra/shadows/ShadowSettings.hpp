@@ -1,0 +1,46 @@
+#pragma once
+
+#include "penumbra/rhi/Format.hpp"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+
+namespace penumbra::shadows {
+
+// Percentage-closer filter of directional shadows: a tent N texels wide (2x2 is one bilinear tap).
+enum class ShadowFilter { PCF2x2, PCF3x3, PCF5x5, PCF7x7 };
+
+// How the lit shader moves from one cascade to the next.
+enum class CascadeBlend { Hard, Soft, Dither };
+
+// Width of the filter's kernel in texels: 2, 3, 5, 7.
+int filterSize(ShadowFilter filter);
+
+// The design document's "filter size" for the normal bias and the culling-sphere shrink:
+// enum + 1 = 1, 2, 3, 4 texels (texel size x this x sqrt 2 is the normal bias), not the kernel width.
+float normalBiasFilterFactor(ShadowFilter filter);
+
+// Bilinear comparison taps the filter takes: 1, 4, 9, 16.
+int filterTapCount(ShadowFilter filter);
+
+struct DirectionalShadowSettings {
+    std::uint32_t atlasSize = 1024;            // texels per side, a power of two in 256..8192
+    ShadowFilter filter = ShadowFilter::PCF2x2;
+    std::uint32_t cascadeCount = 4;            // 1..4
+    glm::vec3 cascadeRatios{0.1f, 0.25f, 0.5f}; // ends of cascades 1..3 as fractions of the shadow distance
+    float cascadeFade = 0.1f;                  // 0.001..1, fraction of the last cascade's radius that fades
+    CascadeBlend cascadeBlend = CascadeBlend::Hard;
+    rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
+};
+
+struct ShadowSettings {
+    float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001
+    float distanceFade = 0.1f;  // 0.001..1, fraction of maxDistance over which shadows fade out
+    DirectionalShadowSettings directional;
+};
+
+// Throws rhi::Error "<field>: <value> is out of range, allowed <range>" for the first field out of range
+// (field paths as in JSON: "directional.cascadeCount").
+void validate(const ShadowSettings& settings);
+
+} // namespace penumbra::shadows

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "penumbra/shadows/ShadowSettings.hpp"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace penumbra::shadows {
+
+// JSON form of ShadowSettings: the struct's field names, enums as lower-case strings
+// ("pcf2x2".."pcf7x7", "hard"/"soft"/"dither", "d16"/"d24s8"/"d32f"), cascadeRatios as an array of 3.
+// Missing fields keep their defaults; unknown fields, wrong types and out-of-range values throw
+// rhi::Error "<sourceName>: <field>: <what>, allowed <range>".
+ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourceName);
+
+// Every field, two-space indented; parseShadowSettings(toJson(s)) == s.
+std::string toJson(const ShadowSettings& settings);
+
+ShadowSettings loadShadowSettings(const std::filesystem::path& path);
+
+// Writes a temporary file beside `path` and renames it over `path`: the file is never half-written.
+void saveShadowSettings(const std::filesystem::path& path, const ShadowSettings& settings);
+
+} // namespace penumbra::shadows

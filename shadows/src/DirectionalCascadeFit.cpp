@@ -1,0 +1,78 @@
+#include "penumbra/shadows/DirectionalCascadeFit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+
+namespace penumbra::shadows {
+namespace {
+
+bool overlapsSquare(const Bounds& light, glm::vec2 centre, float halfSize)
+{
+    return light.max.x >= centre.x - halfSize && light.min.x <= centre.x + halfSize &&
+           light.max.y >= centre.y - halfSize && light.min.y <= centre.y + halfSize;
+}
+
+// Rows right, up, -direction with the eye at (snapped x, snapped y, near depth) in light space;
+// built from the light-space numbers directly so the snapped translation is exact.
+glm::mat4 lightView(const LightBasis& b, glm::vec2 snapped, float nearDepth)
+{
+    glm::mat4 view(1.0f);
+    for (int axis = 0; axis < 3; ++axis) {
+        view[axis][0] = b.right[axis];
+        view[axis][1] = b.up[axis];
+        view[axis][2] = -b.direction[axis];
+    }
+    view[3][0] = -snapped.x;
+    view[3][1] = -snapped.y;
+    view[3][2] = nearDepth;
+    return view;
+}
+
+} // namespace
+
+DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightBasis& basis, std::uint32_t tileSize,
+                                               float nearPlaneOffset, std::span<const Bounds> casterBounds,
+                                               const rhi::Conventions& conventions)
+{
+    DirectionalShadowCascade c;
+    c.basis = basis;
+    c.cullingSphere = sphere;
+    const float tile = static_cast<float>(tileSize);
+    // h = r + (sqrt 2 / 2) texel with texel = 2h / tile: the snap moves the centre at most half a texel diagonal.
+    c.halfSize = sphere.radius / (1.0f - std::sqrt(2.0f) / tile);
+    c.texelSize = 2.0f * c.halfSize / tile;
+    const glm::vec3 centre = basis.toLight(sphere.centre);
+    c.snappedCentre = glm::round(glm::vec2(centre) / c.texelSize) * c.texelSize;
+
+    c.nearDepth = centre.z - sphere.radius;
+    for (const Bounds& caster : casterBounds) {
+        const Bounds light = lightSpaceBounds(basis, caster);
+        if (overlapsSquare(light, c.snappedCentre, c.halfSize))
+            c.nearDepth = std::min(c.nearDepth, light.min.z);
+    }
+    c.nearDepth -= nearPlaneOffset;
+    c.farDepth = centre.z + sphere.radius;
+
+    c.view = lightView(basis, c.snappedCentre, c.nearDepth);
+    c.projection =
+        conventions.orthographic(-c.halfSize, c.halfSize, -c.halfSize, c.halfSize, 0.0f, c.farDepth - c.nearDepth);
+    c.viewProjection = c.projection * c.view;
+    return c;
+}
+
+std::vector<DirectionalShadowCascade> computeDirectionalShadowMatricesAndCullingPrimitives(
+    const ShadowCamera& camera, const CascadeSplits& splits, std::uint32_t firstCascade, std::uint32_t count,
+    glm::vec3 lightDirection, std::uint32_t tileSize, float nearPlaneOffset, std::span<const Bounds> casterBounds,
+    const rhi::Conventions& conventions)
+{
+    const LightBasis basis = lightBasis(lightDirection);
+    std::vector<DirectionalShadowCascade> cascades;
+    for (std::uint32_t i = firstCascade; i < firstCascade + count; ++i) {
+        const Sphere sphere = frustumSliceSphere(camera, splits.nearOf(i), splits.farOf(i));
+        cascades.push_back(fitDirectionalCascade(sphere, basis, tileSize, nearPlaneOffset, casterBounds, conventions));
+    }
+    return cascades;
+}
+
+} // namespace penumbra::shadows

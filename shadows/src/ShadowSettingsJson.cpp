@@ -1,0 +1,218 @@
+#include "penumbra/shadows/ShadowSettingsJson.hpp"
+
+#include "ShadowSettingsCheck.hpp"
+#include "penumbra/rhi/Error.hpp"
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fmt/format.h>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <unistd.h>
+
+namespace penumbra::shadows {
+namespace {
+
+using Json = nlohmann::json;
+
+template <typename Enum>
+struct EnumName {
+    Enum value;
+    std::string_view name;
+};
+
+constexpr std::array<EnumName<ShadowFilter>, 4> filterNames{{{ShadowFilter::PCF2x2, "pcf2x2"},
+                                                            {ShadowFilter::PCF3x3, "pcf3x3"},
+                                                            {ShadowFilter::PCF5x5, "pcf5x5"},
+                                                            {ShadowFilter::PCF7x7, "pcf7x7"}}};
+constexpr std::array<EnumName<CascadeBlend>, 3> blendNames{
+    {{CascadeBlend::Hard, "hard"}, {CascadeBlend::Soft, "soft"}, {CascadeBlend::Dither, "dither"}}};
+constexpr std::array<EnumName<rhi::Format>, 3> formatNames{
+    {{rhi::Format::D16, "d16"}, {rhi::Format::D24S8, "d24s8"}, {rhi::Format::D32F, "d32f"}}};
+
+template <typename Enum, std::size_t N>
+std::string_view nameOf(const std::array<EnumName<Enum>, N>& names, Enum value)
+{
+    for (const auto& n : names)
+        if (n.value == value)
+            return n.name;
+    return "";
+}
+
+// Reads one JSON object's fields into a struct, naming every problem by its field path.
+class FieldReader {
+public:
+    FieldReader(std::string_view source, std::string prefix) : source_(source), prefix_(std::move(prefix)) {}
+
+    [[noreturn]] void fail(std::string_view key, std::string_view what) const
+    {
+        const std::string field = prefix_ + std::string(key);
+        throw rhi::Error(fmt::format("{}: {}: {}, allowed {}", source_, field, what, detail::allowedValues(field)));
+    }
+
+    float number(const Json& value, std::string_view key) const
+    {
+        if (!value.is_number())
+            fail(key, fmt::format("expected a number, got {}", value.dump()));
+        const double d = value.get<double>();
+        if (!(std::abs(d) <= std::numeric_limits<float>::max()))
+            fail(key, fmt::format("{} is out of range", value.dump()));
+        return static_cast<float>(d);
+    }
+
+    std::uint32_t integer(const Json& value, std::string_view key) const
+    {
+        if (!value.is_number_integer())
+            fail(key, fmt::format("expected an integer, got {}", value.dump()));
+        const auto i = value.get<std::int64_t>();
+        if (i < 0 || i > std::numeric_limits<std::uint32_t>::max())
+            fail(key, fmt::format("{} is out of range", value.dump()));
+        return static_cast<std::uint32_t>(i);
+    }
+
+    template <typename Enum, std::size_t N>
+    Enum enumeration(const Json& value, std::string_view key, const std::array<EnumName<Enum>, N>& names) const
+    {
+        if (value.is_string())
+            for (const auto& n : names)
+                if (n.name == value.get<std::string>())
+                    return n.value;
+        fail(key, fmt::format("unknown value {}", value.dump()));
+    }
+
+    glm::vec3 vec3(const Json& value, std::string_view key) const
+    {
+        if (!value.is_array() || value.size() != 3)
+            fail(key, fmt::format("expected an array of 3 numbers, got {}", value.dump()));
+        return {number(value[0], key), number(value[1], key), number(value[2], key)};
+    }
+
+    void requireObject(const Json& value, std::string_view what) const
+    {
+        if (!value.is_object())
+            throw rhi::Error(fmt::format("{}: {}: expected an object, got {}", source_, what, value.dump()));
+    }
+
+    [[noreturn]] void unknown(const std::string& key, std::string_view known) const
+    {
+        throw rhi::Error(fmt::format("{}: {}{}: unknown field, allowed {}", source_, prefix_, key, known));
+    }
+
+private:
+    std::string_view source_;
+    std::string prefix_;
+};
+
+void readDirectional(const Json& object, std::string_view source, DirectionalShadowSettings& d)
+{
+    const FieldReader r(source, "directional.");
+    r.requireObject(object, "directional");
+    for (const auto& [key, value] : object.items()) {
+        if (key == "atlasSize")
+            d.atlasSize = r.integer(value, key);
+        else if (key == "filter")
+            d.filter = r.enumeration(value, key, filterNames);
+        else if (key == "cascadeCount")
+            d.cascadeCount = r.integer(value, key);
+        else if (key == "cascadeRatios")
+            d.cascadeRatios = r.vec3(value, key);
+        else if (key == "cascadeFade")
+            d.cascadeFade = r.number(value, key);
+        else if (key == "cascadeBlend")
+            d.cascadeBlend = r.enumeration(value, key, blendNames);
+        else if (key == "atlasFormat")
+            d.atlasFormat = r.enumeration(value, key, formatNames);
+        else
+            r.unknown(key, "atlasSize, filter, cascadeCount, cascadeRatios, cascadeFade, cascadeBlend, atlasFormat");
+    }
+}
+
+} // namespace
+
+ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourceName)
+{
+    Json root;
+    try {
+        root = Json::parse(json);
+    } catch (const Json::parse_error& e) {
+        throw rhi::Error(fmt::format("{}: not valid JSON: {}", sourceName, e.what()));
+    }
+    ShadowSettings settings;
+    const FieldReader r(sourceName, "");
+    r.requireObject(root, "(top level)");
+    for (const auto& [key, value] : root.items()) {
+        if (key == "maxDistance")
+            settings.maxDistance = r.number(value, key);
+        else if (key == "distanceFade")
+            settings.distanceFade = r.number(value, key);
+        else if (key == "directional")
+            readDirectional(value, sourceName, settings.directional);
+        else
+            r.unknown(key, "maxDistance, distanceFade, directional");
+    }
+    if (const auto problem = detail::findSettingsProblem(settings))
+        throw rhi::Error(
+            fmt::format("{}: {}: {}, allowed {}", sourceName, problem->field, problem->what, problem->allowed));
+    return settings;
+}
+
+std::string toJson(const ShadowSettings& s)
+{
+    const DirectionalShadowSettings& d = s.directional;
+    nlohmann::ordered_json directional;
+    directional["atlasSize"] = d.atlasSize;
+    directional["filter"] = nameOf(filterNames, d.filter);
+    directional["cascadeCount"] = d.cascadeCount;
+    directional["cascadeRatios"] = {d.cascadeRatios.x, d.cascadeRatios.y, d.cascadeRatios.z};
+    directional["cascadeFade"] = d.cascadeFade;
+    directional["cascadeBlend"] = nameOf(blendNames, d.cascadeBlend);
+    directional["atlasFormat"] = nameOf(formatNames, d.atlasFormat);
+    nlohmann::ordered_json root;
+    root["maxDistance"] = s.maxDistance;
+    root["distanceFade"] = s.distanceFade;
+    root["directional"] = std::move(directional);
+    return root.dump(2) + "\n";
+}
+
+ShadowSettings loadShadowSettings(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw rhi::Error(fmt::format("{}: cannot open: {}", path.string(), std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad())
+        throw rhi::Error(fmt::format("{}: cannot read: {}", path.string(), std::strerror(errno)));
+    return parseShadowSettings(text.str(), path.string());
+}
+
+void saveShadowSettings(const std::filesystem::path& path, const ShadowSettings& settings)
+{
+    validate(settings);
+    // A per-process name, so that two writers never share a temporary file.
+    const std::filesystem::path temporary = path.string() + fmt::format(".{}.tmp", ::getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << toJson(settings);
+        out.close();
+        if (!out) {
+            std::error_code ignored;
+            std::filesystem::remove(temporary, ignored);
+            throw rhi::Error(fmt::format("{}: cannot write: {}", temporary.string(), std::strerror(errno)));
+        }
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw rhi::Error(fmt::format("{}: cannot replace with {}: {}", path.string(), temporary.string(),
+                                     error.message()));
+    }
+}
+
+} // namespace penumbra::shadows

@@ -1,0 +1,128 @@
+#include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/scene/MeshGenerators.hpp"
+#include "penumbra/scene/TestScenes.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace penumbra::scene {
+namespace {
+
+TEST(GroundTruthTest, CentrePixelHitsWhatTheCameraLooksAt)
+{
+    const Scene scene = makeShadowTestScene();
+    const RayCaster cameraRays(scene, RayKind::Camera);
+    // Odd size: the centre pixel's sample is exactly on the view axis.
+    const CpuGBuffer gbuffer = traceGBuffer(scene, cameraRays, scene.camera, 101, 101);
+    const GBufferSample& centre = gbuffer.at(50, 50);
+    ASSERT_TRUE(centre.hit());
+    EXPECT_EQ(scene.objects[centre.object].name, "ground");
+    EXPECT_NEAR(glm::length(centre.position - glm::vec3(0, 0, 5)), 0.0f, 1e-3f); // the lookAt target
+    EXPECT_NEAR(glm::dot(centre.normal, glm::vec3(0, 1, 0)), 1.0f, 1e-6f);
+    EXPECT_NEAR(centre.viewDepth, glm::length(glm::vec3(0, -8, 25)), 1e-3f);
+}
+
+TEST(GroundTruthTest, RowZeroIsTheTopOfThePicture)
+{
+    Scene scene;
+    scene.addObject("box", scene.addMesh(makeBox({3, 1, 1})), scene.addMaterial({}),
+                    glm::translate(glm::mat4(1.0f), glm::vec3(0, 2, 0)));
+    scene.camera = lookAt({0, 0, 10}, {0, 0, 0}, glm::radians(60.0f));
+    const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 64, 48);
+    EXPECT_TRUE(gbuffer.at(32, 12).hit());   // upper half: the box above the axis
+    EXPECT_FALSE(gbuffer.at(32, 36).hit());  // lower half: nothing
+    EXPECT_FALSE(gbuffer.at(0, 12).hit());   // left of the 6-unit box at this distance
+}
+
+TEST(GroundTruthTest, SamplesProjectBackToTheirPixelCentres)
+{
+    const Scene scene = makeSingleLightScene();
+    constexpr std::uint32_t width = 80, height = 60;
+    const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, width, height);
+    const Camera& camera = scene.camera;
+    const glm::mat4 viewProjection =
+        glm::perspectiveRH_ZO(camera.fovY, float(width) / float(height), camera.nearPlane, camera.farPlane) * camera.view();
+    int checked = 0;
+    for (std::uint32_t y = 0; y < height; y += 7) {
+        for (std::uint32_t x = 0; x < width; x += 5) {
+            const GBufferSample& sample = gbuffer.at(x, y);
+            if (!sample.hit())
+                continue;
+            const glm::vec4 clip = viewProjection * glm::vec4(sample.position, 1.0f);
+            const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+            // NDC y up, row 0 at the top.
+            EXPECT_NEAR((ndc.x + 1.0f) * 0.5f * width, x + 0.5f, 2e-3f);
+            EXPECT_NEAR((1.0f - ndc.y) * 0.5f * height, y + 0.5f, 2e-3f);
+            EXPECT_NEAR(clip.w, sample.viewDepth, 1e-3f * sample.viewDepth);
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 50);
+}
+
+TEST(GroundTruthTest, ShadowUnderAFloatingBoxForAVerticalLight)
+{
+    Scene scene;
+    const std::uint32_t plain = scene.addMaterial({});
+    scene.addObject("ground", scene.addMesh(makePlane(20.0f)), plain, glm::mat4(1.0f));
+    scene.addObject("box", scene.addMesh(makeBox({1, 1, 1})), plain, glm::translate(glm::mat4(1.0f), glm::vec3(0, 3, 0)));
+    // Seen from a slant, so the ground under the box is partly visible beside it.
+    scene.camera = lookAt({0, 12, -12}, {0, 0, 0}, glm::radians(40.0f));
+    const DirectionalLight light{.direction = {0, -1, 0}};
+    const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 65, 65);
+    const LightVisibilityMask mask = traceLightVisibility(scene, RayCaster(scene), gbuffer, light);
+    std::map<LightVisibility, int> counts;
+    for (std::uint32_t y = 0; y < mask.height; ++y) {
+        for (std::uint32_t x = 0; x < mask.width; ++x) {
+            const GBufferSample& sample = gbuffer.at(x, y);
+            ++counts[mask.at(x, y)];
+            if (!sample.hit() || scene.objects[sample.object].name != "ground")
+                continue;
+            const bool underBox = std::abs(sample.position.x) < 1.0f && std::abs(sample.position.z) < 1.0f;
+            const bool clearOfBox = std::abs(sample.position.x) > 1.0f || std::abs(sample.position.z) > 1.0f;
+            if (underBox) {
+                EXPECT_EQ(mask.at(x, y), LightVisibility::Shadowed) << x << ", " << y;
+            } else if (clearOfBox) {
+                EXPECT_EQ(mask.at(x, y), LightVisibility::Lit) << x << ", " << y;
+            }
+        }
+    }
+    EXPECT_GT(counts[LightVisibility::Shadowed], 0);
+    EXPECT_GT(counts[LightVisibility::Lit], 0);
+    EXPECT_GT(counts[LightVisibility::FacingAway], 0); // the box's sides, lit from straight above
+}
+
+TEST(GroundTruthTest, TestSceneMaskHasEveryCategory)
+{
+    const Scene scene = makeSingleLightScene();
+    const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 160, 90);
+    const LightVisibilityMask mask = traceLightVisibility(scene, RayCaster(scene), gbuffer, scene.lights[0]);
+    std::map<LightVisibility, int> counts;
+    for (const LightVisibility v : mask.pixels)
+        ++counts[v];
+    for (const LightVisibility v : {LightVisibility::Background, LightVisibility::Lit, LightVisibility::Shadowed,
+                                    LightVisibility::FacingAway, LightVisibility::NotReceiving})
+        EXPECT_GT(counts[v], 0) << static_cast<int>(v);
+    const std::uint32_t pillar = *scene.findObject("unshadowed pillar");
+    for (std::size_t i = 0; i < mask.pixels.size(); ++i) {
+        if (gbuffer.samples[i].object == pillar) {
+            EXPECT_EQ(mask.pixels[i], LightVisibility::NotReceiving);
+        }
+    }
+}
+
+TEST(GroundTruthTest, WrongRayKindIsRejected)
+{
+    const Scene scene = makeSingleLightScene();
+    const RayCaster shadowRays(scene);
+    EXPECT_THROW(traceGBuffer(scene, shadowRays, scene.camera, 4, 4), std::invalid_argument);
+    const RayCaster cameraRays(scene, RayKind::Camera);
+    const CpuGBuffer gbuffer = traceGBuffer(scene, cameraRays, scene.camera, 4, 4);
+    EXPECT_THROW(traceLightVisibility(scene, cameraRays, gbuffer, scene.lights[0]), std::invalid_argument);
+}
+
+} // namespace
+} // namespace penumbra::scene

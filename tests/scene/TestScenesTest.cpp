@@ -1,0 +1,157 @@
+#include "penumbra/scene/RayCaster.hpp"
+#include "penumbra/scene/TestScenes.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+namespace penumbra::scene {
+namespace {
+
+const std::set<std::string> kStanding{"standing cube", "turned cube", "standing sphere", "large sphere",
+                                      "standing cylinder", "unshadowed pillar", "tall pillar", "wall"};
+const std::set<std::string> kFloating{"floating cube", "tumbling cube", "dither sphere", "lying cylinder",
+                                      "clip panel", "long beam"};
+
+const Object& object(const Scene& scene, const std::string& name)
+{
+    const auto index = scene.findObject(name);
+    if (!index)
+        throw std::runtime_error("no object " + name);
+    return scene.objects[*index];
+}
+
+float lowestVertexY(const Scene& scene, const Object& o)
+{
+    float lowest = INFINITY;
+    for (const Vertex& v : scene.meshOf(o).vertices)
+        lowest = std::min(lowest, (o.transform * glm::vec4(v.position, 1.0f)).y);
+    return lowest;
+}
+
+TEST(TestScenesTest, BothScenesValidate)
+{
+    EXPECT_NO_THROW(makeShadowTestScene().validate());
+    EXPECT_NO_THROW(makeSingleLightScene().validate());
+}
+
+TEST(TestScenesTest, HasTheGroundAndEveryNamedObject)
+{
+    const Scene scene = makeShadowTestScene();
+    EXPECT_EQ(scene.objects.size(), 1 + kStanding.size() + kFloating.size());
+    const Object& ground = object(scene, "ground");
+    EXPECT_EQ(ground.worldBounds.min, glm::vec3(-30, 0, -30));
+    EXPECT_EQ(ground.worldBounds.max, glm::vec3(30, 0, 30));
+}
+
+TEST(TestScenesTest, StandingObjectsTouchTheGroundExactly)
+{
+    const Scene scene = makeShadowTestScene();
+    for (const std::string& name : kStanding) {
+        SCOPED_TRACE(name);
+        EXPECT_EQ(lowestVertexY(scene, object(scene, name)), 0.0f);
+    }
+}
+
+TEST(TestScenesTest, FloatingObjectsClearTheGround)
+{
+    const Scene scene = makeShadowTestScene();
+    for (const std::string& name : kFloating) {
+        SCOPED_TRACE(name);
+        EXPECT_GT(object(scene, name).worldBounds.min.y, 1.0f);
+    }
+}
+
+TEST(TestScenesTest, ObjectsDoNotIntersectEachOther)
+{
+    const Scene scene = makeShadowTestScene();
+    for (std::size_t i = 1; i < scene.objects.size(); ++i) {
+        for (std::size_t j = i + 1; j < scene.objects.size(); ++j) {
+            const Bounds& a = scene.objects[i].worldBounds;
+            const Bounds& b = scene.objects[j].worldBounds;
+            const bool overlap = glm::all(glm::lessThan(a.min, b.max)) && glm::all(glm::lessThan(b.min, a.max));
+            EXPECT_FALSE(overlap) << scene.objects[i].name << " and " << scene.objects[j].name;
+        }
+    }
+}
+
+TEST(TestScenesTest, LongBeamRunsFromTheViewToBehindTheCamera)
+{
+    const Scene scene = makeShadowTestScene();
+    const Bounds& beam = object(scene, "long beam").worldBounds;
+    EXPECT_GE(beam.size().z, 80.0f);
+    float nearest = INFINITY;
+    float farthest = -INFINITY;
+    for (const glm::vec3& corner : beam.corners()) {
+        const float depth = glm::dot(corner - scene.camera.position, scene.camera.forward);
+        nearest = std::min(nearest, depth);
+        farthest = std::max(farthest, depth);
+    }
+    EXPECT_LT(nearest, -20.0f) << "reaches far behind the camera's near plane";
+    EXPECT_GT(farthest, 30.0f) << "and far into the view";
+}
+
+TEST(TestScenesTest, MaterialsCoverEveryShadowCase)
+{
+    const Scene scene = makeShadowTestScene();
+    EXPECT_EQ(scene.materialOf(object(scene, "clip panel")).caster, CasterMode::Clip);
+    EXPECT_EQ(scene.materialOf(object(scene, "dither sphere")).caster, CasterMode::Dither);
+    EXPECT_FALSE(scene.materialOf(object(scene, "unshadowed pillar")).receiveShadows);
+    int clip = 0, dither = 0, notReceiving = 0;
+    for (const Object& o : scene.objects) {
+        const Material& m = scene.materialOf(o);
+        clip += m.caster == CasterMode::Clip;
+        dither += m.caster == CasterMode::Dither;
+        notReceiving += !m.receiveShadows;
+    }
+    EXPECT_EQ(clip, 1);
+    EXPECT_EQ(dither, 1);
+    EXPECT_EQ(notReceiving, 1);
+}
+
+TEST(TestScenesTest, FourLightsNinetyDegreesApartAtOnePitch)
+{
+    const Scene scene = makeShadowTestScene();
+    ASSERT_EQ(scene.lights.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+        const DirectionalLight& light = scene.lights[i];
+        const DirectionalLight& next = scene.lights[(i + 1) % 4];
+        EXPECT_NEAR(glm::length(light.direction), 1.0f, 1e-6f);
+        EXPECT_NEAR(light.direction.y, -std::sin(glm::radians(50.0f)), 1e-6f);
+        const glm::vec2 a = glm::normalize(glm::vec2(light.direction.x, light.direction.z));
+        const glm::vec2 b = glm::normalize(glm::vec2(next.direction.x, next.direction.z));
+        EXPECT_NEAR(glm::dot(a, b), 0.0f, 1e-6f);
+        EXPECT_NE(light.color, next.color);
+    }
+    const Scene single = makeSingleLightScene();
+    ASSERT_EQ(single.lights.size(), 1u);
+    EXPECT_EQ(single.lights[0].direction, scene.lights[0].direction);
+    EXPECT_EQ(single.objects.size(), scene.objects.size());
+}
+
+TEST(TestScenesTest, CameraLooksAtTheSceneFromAbove)
+{
+    const Camera& camera = makeShadowTestScene().camera;
+    EXPECT_EQ(camera.position, glm::vec3(0, 8, -20));
+    EXPECT_NEAR(glm::dot(camera.forward, glm::normalize(glm::vec3(0, -8, 25))), 1.0f, 1e-6f);
+}
+
+TEST(TestScenesTest, UnshadowedPillarStandsInTheFloatingCubesKeyShadow)
+{
+    const Scene scene = makeSingleLightScene();
+    const RayCaster caster(scene);
+    const Object& pillar = object(scene, "unshadowed pillar");
+    const glm::vec3 topCentre{pillar.worldBounds.center().x, pillar.worldBounds.max.y + 1e-3f,
+                              pillar.worldBounds.center().z};
+    const auto hit = caster.closestHit(topCentre, -scene.lights[0].direction);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(scene.objects[hit->object].name, "floating cube");
+}
+
+} // namespace
+} // namespace penumbra::scene

@@ -1,0 +1,69 @@
+#include "penumbra/shadows/CasterCulling.hpp"
+
+#include <gtest/gtest.h>
+
+namespace penumbra::shadows {
+namespace {
+
+Bounds cube(glm::vec3 centre, float half) { return {centre - half, centre + half}; }
+
+// Camera at the origin looking down -z; light straight down (light depth is -y); cascades [0.1, 10], [10, 50].
+class CasterCullingTest : public ::testing::Test {
+protected:
+    ShadowCamera camera{};
+    rhi::Conventions conventions{rhi::DepthRange::ZeroToOne, false};
+    CascadeSplits splits = cascadeSplits(0.1f, 100.0f, 50.0f, 2, {0.2f, 0.5f, 0.9f});
+    std::vector<DirectionalShadowCascade> cascades;
+    std::vector<Bounds> casters;
+
+    void SetUp() override
+    {
+        const std::vector<DirectionalShadowCascade> empty = fit({});
+        const Sphere first = empty[0].cullingSphere;
+        casters = {
+            cube(first.centre + glm::vec3(0, 0, -0.45f * first.radius), 0.5f), // A: deep in cascade 0's sphere
+            cube({500.0f, 0.0f, -20.0f}, 1.0f),                              // B: outside every footprint
+            {{-1.0f, 80.0f, -31.0f}, {1.0f, 90.0f, -29.0f}},                 // C: high above cascade 1 only
+            {{-1.0f, -200.0f, -11.0f}, {1.0f, -190.0f, -9.0f}},              // D: below both far planes
+            cube(first.centre + glm::vec3(0, 0, -0.75f * first.radius), 0.5f), // E: across the 0.7 r boundary
+        };
+        cascades = fit(casters);
+    }
+
+    std::vector<DirectionalShadowCascade> fit(std::span<const Bounds> bounds) const
+    {
+        return computeDirectionalShadowMatricesAndCullingPrimitives(camera, splits, 0, 2, {0.0f, -1.0f, 0.0f}, 512,
+                                                                    0.0f, bounds, conventions);
+    }
+};
+
+TEST_F(CasterCullingTest, CastersInTheCascadeBoxIncludingAnyDistanceTowardTheLight)
+{
+    const CasterCullingResult first = cullShadowCasters(cascades[0], casters, std::nullopt, 0.7f);
+    EXPECT_EQ(first.casters, (std::vector<std::uint32_t>{0, 4}));
+    EXPECT_EQ(first.overlapping, 2u);
+    EXPECT_EQ(first.culledByBias, 0u);
+
+    const CasterCullingResult unbiased = cullShadowCasters(cascades[1], casters, cascades[0].cullingSphere, 0.0f);
+    EXPECT_EQ(unbiased.casters, (std::vector<std::uint32_t>{0, 2, 4}));
+    EXPECT_EQ(unbiased.overlapping, 3u);
+    EXPECT_EQ(unbiased.culledByBias, 0u);
+}
+
+TEST_F(CasterCullingTest, CullingBiasSkipsCastersWhollyInsideThePreviousSphere)
+{
+    const float factor = cascadeBlendCullingFactor(0.1f);
+    EXPECT_FLOAT_EQ(factor, 0.7f);
+    EXPECT_EQ(cascadeBlendCullingFactor(0.9f), 0.0f);
+    const CasterCullingResult biased = cullShadowCasters(cascades[1], casters, cascades[0].cullingSphere, factor);
+    EXPECT_EQ(biased.casters, (std::vector<std::uint32_t>{2, 4}));
+    EXPECT_EQ(biased.overlapping, 3u);
+    EXPECT_EQ(biased.culledByBias, 1u);
+    // Draws with and without the culling bias, over both cascades.
+    const CasterCullingResult first = cullShadowCasters(cascades[0], casters, std::nullopt, factor);
+    EXPECT_EQ(first.casters.size() + biased.casters.size(), 4u);
+    EXPECT_EQ(first.overlapping + biased.overlapping, 5u);
+}
+
+} // namespace
+} // namespace penumbra::shadows

@@ -1,0 +1,191 @@
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/shadows/ShadowSettingsJson.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <limits>
+#include <unistd.h>
+
+namespace penumbra::shadows {
+namespace {
+
+void expectEqual(const ShadowSettings& a, const ShadowSettings& b)
+{
+    EXPECT_EQ(a.maxDistance, b.maxDistance);
+    EXPECT_EQ(a.distanceFade, b.distanceFade);
+    EXPECT_EQ(a.directional.atlasSize, b.directional.atlasSize);
+    EXPECT_EQ(a.directional.filter, b.directional.filter);
+    EXPECT_EQ(a.directional.cascadeCount, b.directional.cascadeCount);
+    EXPECT_EQ(a.directional.cascadeRatios, b.directional.cascadeRatios);
+    EXPECT_EQ(a.directional.cascadeFade, b.directional.cascadeFade);
+    EXPECT_EQ(a.directional.cascadeBlend, b.directional.cascadeBlend);
+    EXPECT_EQ(a.directional.atlasFormat, b.directional.atlasFormat);
+}
+
+ShadowSettings unusualSettings()
+{
+    ShadowSettings s;
+    s.maxDistance = 37.123457f;
+    s.distanceFade = 0.333333f;
+    s.directional.atlasSize = 4096;
+    s.directional.filter = ShadowFilter::PCF5x5;
+    s.directional.cascadeCount = 3;
+    s.directional.cascadeRatios = {0.05f, 0.3f, 0.71f};
+    s.directional.cascadeFade = 0.2f;
+    s.directional.cascadeBlend = CascadeBlend::Dither;
+    s.directional.atlasFormat = rhi::Format::D24S8;
+    return s;
+}
+
+// The message of the rhi::Error that `f` throws; fails the test when it throws nothing.
+template <typename F>
+std::string errorOf(F&& f)
+{
+    try {
+        f();
+    } catch (const rhi::Error& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no rhi::Error thrown";
+    return "";
+}
+
+std::string validationError(void (*change)(ShadowSettings&))
+{
+    ShadowSettings s;
+    change(s);
+    return errorOf([&] { validate(s); });
+}
+
+TEST(ShadowSettings, DefaultsAreValid)
+{
+    EXPECT_NO_THROW(validate(ShadowSettings{}));
+    EXPECT_NO_THROW(validate(unusualSettings()));
+}
+
+TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
+{
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.cascadeCount = 5; }),
+              "directional.cascadeCount: 5 is out of range, allowed 1..4");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.atlasSize = 1000; }),
+              "directional.atlasSize: 1000 is out of range, allowed powers of two 256..8192");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.atlasSize = 16384; }),
+              "directional.atlasSize: 16384 is out of range, allowed powers of two 256..8192");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.maxDistance = 0.0f; }),
+              "maxDistance: 0 is out of range, allowed > 0.001");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.distanceFade = 1.5f; }),
+              "distanceFade: 1.5 is out of range, allowed 0.001..1");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.cascadeRatios = {0.1f, 0.5f, 0.5f}; }),
+              "directional.cascadeRatios: [0.1, 0.5, 0.5] is out of range, allowed 3 numbers in 0..1, strictly "
+              "increasing");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.cascadeFade = std::nanf(""); }),
+              "directional.cascadeFade: nan is out of range, allowed 0.001..1");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.atlasFormat = rhi::Format::RGBA8; }).rfind(
+                  "directional.atlasFormat: ", 0),
+              0u);
+}
+
+TEST(ShadowSettingsJson, RoundTripKeepsEveryField)
+{
+    for (const ShadowSettings& s : {ShadowSettings{}, unusualSettings()}) {
+        const std::string json = toJson(s);
+        expectEqual(parseShadowSettings(json, "round-trip"), s);
+        EXPECT_EQ(toJson(parseShadowSettings(json, "round-trip")), json);
+    }
+    const std::string json = toJson(unusualSettings());
+    EXPECT_NE(json.find("\"filter\": \"pcf5x5\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"cascadeBlend\": \"dither\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"atlasFormat\": \"d24s8\""), std::string::npos) << json;
+}
+
+TEST(ShadowSettingsJson, MissingFieldsKeepTheirDefaults)
+{
+    expectEqual(parseShadowSettings("{}", "empty.json"), ShadowSettings{});
+    ShadowSettings expected;
+    expected.directional.cascadeCount = 2;
+    expected.directional.filter = ShadowFilter::PCF7x7;
+    expectEqual(parseShadowSettings(R"({"directional": {"cascadeCount": 2, "filter": "pcf7x7"}})", "some.json"),
+                expected);
+}
+
+TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
+{
+    auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
+    EXPECT_EQ(parseError(R"({"maxDistanse": 5})"),
+              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional");
+    EXPECT_EQ(parseError(R"({"directional": {"blend": "soft"}})"),
+              "shadows.json: directional.blend: unknown field, allowed atlasSize, filter, cascadeCount, "
+              "cascadeRatios, cascadeFade, cascadeBlend, atlasFormat");
+    EXPECT_EQ(parseError(R"({"maxDistance": "far"})"),
+              "shadows.json: maxDistance: expected a number, got \"far\", allowed > 0.001");
+    EXPECT_EQ(parseError(R"({"directional": {"cascadeCount": 2.5}})"),
+              "shadows.json: directional.cascadeCount: expected an integer, got 2.5, allowed 1..4");
+    EXPECT_EQ(parseError(R"({"directional": {"cascadeCount": 9}})"),
+              "shadows.json: directional.cascadeCount: 9 is out of range, allowed 1..4");
+    EXPECT_EQ(parseError(R"({"directional": {"filter": "pcf4x4"}})"),
+              "shadows.json: directional.filter: unknown value \"pcf4x4\", allowed pcf2x2, pcf3x3, pcf5x5, pcf7x7");
+    EXPECT_EQ(parseError(R"({"directional": {"cascadeBlend": "Soft"}})"),
+              "shadows.json: directional.cascadeBlend: unknown value \"Soft\", allowed hard, soft, dither");
+    EXPECT_EQ(parseError(R"({"directional": {"atlasFormat": "rgba8"}})"),
+              "shadows.json: directional.atlasFormat: unknown value \"rgba8\", allowed d16, d24s8, d32f");
+    EXPECT_EQ(parseError(R"({"directional": {"cascadeRatios": [0.1, 0.2]}})"),
+              "shadows.json: directional.cascadeRatios: expected an array of 3 numbers, got [0.1,0.2], allowed 3 "
+              "numbers in 0..1, strictly increasing");
+    EXPECT_EQ(parseError(R"({"directional": 4})"), "shadows.json: directional: expected an object, got 4");
+    EXPECT_EQ(parseError(R"({"maxDistance": 1e300})"),
+              "shadows.json: maxDistance: 1e+300 is out of range, allowed > 0.001");
+    EXPECT_EQ(parseError(R"({"directional": {"atlasSize": -512}})"),
+              "shadows.json: directional.atlasSize: -512 is out of range, allowed powers of two 256..8192");
+    EXPECT_EQ(parseError("{\"maxDistance\": 10,").rfind("shadows.json: not valid JSON: ", 0), 0u);
+}
+
+class ShadowSettingsFile : public ::testing::Test {
+protected:
+    std::filesystem::path directory =
+        std::filesystem::temp_directory_path() / ("penumbra-shadow-settings-" + std::to_string(::getpid()));
+
+    void SetUp() override { std::filesystem::create_directories(directory); }
+    void TearDown() override { std::filesystem::remove_all(directory); }
+
+    std::size_t fileCount() const
+    {
+        return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(directory), {}));
+    }
+};
+
+TEST_F(ShadowSettingsFile, SaveThenLoadGivesTheSameSettings)
+{
+    const std::filesystem::path path = directory / "shadows.json";
+    saveShadowSettings(path, unusualSettings());
+    expectEqual(loadShadowSettings(path), unusualSettings());
+    saveShadowSettings(path, ShadowSettings{}); // replaces the existing file
+    expectEqual(loadShadowSettings(path), ShadowSettings{});
+    EXPECT_EQ(fileCount(), 1u); // no temporary left behind
+}
+
+TEST_F(ShadowSettingsFile, FailedSaveLeavesTheOldFileWhole)
+{
+    const std::filesystem::path path = directory / "shadows.json";
+    saveShadowSettings(path, unusualSettings());
+    ShadowSettings invalid;
+    invalid.directional.cascadeCount = 0;
+    EXPECT_THROW(saveShadowSettings(path, invalid), rhi::Error);
+    EXPECT_THROW(saveShadowSettings(directory / "missing" / "shadows.json", ShadowSettings{}), rhi::Error);
+    expectEqual(loadShadowSettings(path), unusualSettings());
+    EXPECT_EQ(fileCount(), 1u);
+}
+
+TEST_F(ShadowSettingsFile, LoadErrorsNameThePath)
+{
+    const std::filesystem::path missing = directory / "nothing.json";
+    EXPECT_NE(errorOf([&] { loadShadowSettings(missing); }).find(missing.string()), std::string::npos);
+    const std::filesystem::path bad = directory / "bad.json";
+    std::ofstream(bad) << R"({"directional": {"cascadeCount": 7}})";
+    EXPECT_EQ(errorOf([&] { loadShadowSettings(bad); }),
+              bad.string() + ": directional.cascadeCount: 7 is out of range, allowed 1..4");
+}
+
+} // namespace
+} // namespace penumbra::shadows
