@@ -27,8 +27,12 @@ rhi::ShaderSource load(std::string_view fileName)
     const bool vertex = fileName.ends_with(".vert");
     if (!vertex && !fileName.ends_with(".frag"))
         throw rhi::Error(fmt::format("shader '{}': the extension must be .vert or .frag", fileName));
-    return {vertex ? rhi::ShaderStage::Vertex : rhi::ShaderStage::Fragment, std::string(source(fileName)),
-            std::string(fileName)};
+    rhi::ShaderSource shader{vertex ? rhi::ShaderStage::Vertex : rhi::ShaderStage::Fragment,
+                             std::string(source(fileName)), std::string(fileName), {}};
+    for (std::size_t i = 0; i < detail::embeddedCount; ++i)
+        if (detail::embedded[i].first.ends_with(".glsl"))
+            shader.includes.push_back({std::string(detail::embedded[i].first), std::string(detail::embedded[i].second)});
+    return shader;
 }
 
 } // namespace penumbra::shaders

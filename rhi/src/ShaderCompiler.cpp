@@ -52,6 +52,30 @@ std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spi
     return bindings;
 }
 
+// Resolves `#include "name"` against the source's include list; unknown names fail with the list.
+class IncludeList : public glslang::TShader::Includer {
+public:
+    explicit IncludeList(const std::vector<ShaderInclude>& includes) : includes_(includes) {}
+
+    IncludeResult* includeLocal(const char* headerName, const char* includerName, size_t depth) override
+    {
+        return includeSystem(headerName, includerName, depth);
+    }
+
+    IncludeResult* includeSystem(const char* headerName, const char*, size_t) override
+    {
+        for (const ShaderInclude& include : includes_)
+            if (include.name == headerName)
+                return new IncludeResult(include.name, include.source.data(), include.source.size(), nullptr);
+        return nullptr;
+    }
+
+    void releaseInclude(IncludeResult* result) override { delete result; }
+
+private:
+    const std::vector<ShaderInclude>& includes_;
+};
+
 } // namespace
 
 CompiledShader compileShader(const ShaderSource& source, const std::string& preamble)
@@ -62,12 +86,14 @@ CompiledShader compileShader(const ShaderSource& source, const std::string& prea
     const char* text = source.source.c_str();
     const char* name = source.name.c_str();
     shader.setStringsWithLengthsAndNames(&text, nullptr, &name, 1);
-    shader.setPreamble(preamble.c_str());
+    const std::string fullPreamble = "#extension GL_GOOGLE_include_directive : require\n" + preamble;
+    shader.setPreamble(fullPreamble.c_str());
     shader.setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientVulkan, 100);
     shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_1);
     shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
     const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
-    if (!shader.parse(GetDefaultResources(), 450, false, messages))
+    IncludeList includer(source.includes);
+    if (!shader.parse(GetDefaultResources(), 450, ENoProfile, false, false, messages, includer))
         throw ShaderCompileError(fmt::format("GLSL compile failed:\n{}", shader.getInfoLog()));
 
     glslang::TProgram program;

@@ -53,6 +53,25 @@ TEST(ShaderCompilerTest, ErrorsCiteFileAndLine)
     }
 }
 
+TEST(ShaderCompilerTest, IncludesResolveAndTheirErrorsCiteTheIncludedFile)
+{
+    ShaderSource source{ShaderStage::Fragment, "#version 450\n#include \"colour.glsl\"\nlayout(location = 0) out vec4 outColor;\n"
+                                               "void main() { outColor = colour(); }\n",
+                        "includer.frag", {{"colour.glsl", "vec4 colour() { return vec4(1.0); }\n"}}};
+    EXPECT_NO_THROW(compileShader(source, header));
+
+    source.includes[0].source = "vec4 colour()\n{\n    return missingThing;\n}\n";
+    try {
+        compileShader(source, header);
+        FAIL() << "a broken include compiled";
+    } catch (const ShaderCompileError& e) {
+        EXPECT_NE(std::string(e.what()).find("colour.glsl:3"), std::string::npos) << e.what();
+    }
+
+    source.includes.clear();
+    EXPECT_THROW(compileShader(source, header), ShaderCompileError);
+}
+
 TEST(ShaderCompilerTest, PushConstantsAreRefusedWithTheReason)
 {
     try {

@@ -12,10 +12,18 @@ enum class ShaderStage : std::uint8_t { Vertex, Fragment };
 // (usually the file path). The RHI prepends Conventions::glslHeader() after #version.
 // Binding model: one flat namespace of `layout(binding = N)` numbers per pipeline, shared
 // by uniform blocks (std140) and combined samplers; no push constants, no descriptor sets.
+struct ShaderInclude {
+    std::string name;
+    std::string source;
+};
+
+// `#include "name"` lines resolve against `includes` (GL_GOOGLE_include_directive, enabled by
+// the RHI); errors inside an included file cite that file's name and line.
 struct ShaderSource {
     ShaderStage stage = ShaderStage::Vertex;
     std::string source;
     std::string name = "<inline>";
+    std::vector<ShaderInclude> includes;
 };
 
 enum class BindingKind : std::uint8_t { UniformBuffer, SampledTexture };
