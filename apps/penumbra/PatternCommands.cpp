@@ -18,6 +18,8 @@ struct PatternOptions {
     std::uint32_t size = 256;
 };
 
+} // namespace
+
 rhi::Image renderPattern(const std::string& configuration, std::uint32_t size)
 {
     auto device = createDevice(configuration);
@@ -28,8 +30,6 @@ rhi::Image renderPattern(const std::string& configuration, std::uint32_t size)
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return image;
 }
-
-} // namespace
 
 CLI::Validator configurationValidator()
 {
@@ -45,10 +45,10 @@ CLI::Validator configurationValidator()
         "CONFIGURATION");
 }
 
-void addRenderCommand(CLI::App& app)
+void addPatternCommand(CLI::App& app)
 {
     auto options = std::make_shared<PatternOptions>();
-    CLI::App* render = app.add_subcommand("render", "Render the test pattern through one configuration into a PNG");
+    CLI::App* render = app.add_subcommand("pattern", "Render the RHI test pattern through one configuration into a PNG");
     render->add_option("-c,--configuration", options->configuration, "vulkan, vulkan-reversed, opengl, ...")
         ->check(configurationValidator());
     render->add_option("-o,--out", options->out, "PNG file to write");
@@ -56,33 +56,6 @@ void addRenderCommand(CLI::App& app)
     render->callback([options] {
         writePng(options->out, renderPattern(options->configuration, options->size));
         fmt::print("{}: {}\n", options->configuration, options->out);
-    });
-}
-
-void addDemoCommand(CLI::App& app)
-{
-    auto out = std::make_shared<std::string>("out/demo");
-    CLI::App* demo = app.add_subcommand("demo", "Render the test pattern through every configuration and compare");
-    demo->add_option("-o,--out", *out, "Folder that receives <configuration>/pattern.png");
-    demo->callback([out] {
-        std::vector<std::pair<std::string, rhi::Image>> images;
-        for (const rhi::NamedConfiguration& c : rhi::namedConfigurations()) {
-            const std::string name(c.name);
-            images.emplace_back(name, renderPattern(name, 256));
-            const std::filesystem::path path = std::filesystem::path(*out) / name / "pattern.png";
-            writePng(path, images.back().second);
-            fmt::print("{:<24} {}\n", name, path.string());
-        }
-        bool identical = true;
-        for (const auto& [name, image] : images)
-            if (image.bytes != images.front().second.bytes) {
-                identical = false;
-                fmt::print("parity: {} differs from {}\n", name, images.front().first);
-            }
-        fmt::print("parity: {} configurations, {}\n", images.size(),
-                   identical ? "all byte-identical" : "NOT identical");
-        if (!identical)
-            throw rhi::Error("the configurations did not render identical pictures");
     });
 }
 

@@ -11,6 +11,7 @@ int main(int argc, char** argv)
     CLI::App app{"Penumbra: one renderer, Vulkan and OpenGL, identical pixels"};
     app.require_subcommand(1);
     penumbra::apps::addRenderCommand(app);
+    penumbra::apps::addPatternCommand(app);
     penumbra::apps::addDemoCommand(app);
     penumbra::apps::addConfigurationsCommand(app);
     penumbra::apps::addBenchCommand(app);

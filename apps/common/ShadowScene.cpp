@@ -1,0 +1,54 @@
+#include "ShadowScene.hpp"
+
+#include "ImageFiles.hpp"
+
+#include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/render/AtlasPicture.hpp"
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/TestScenes.hpp"
+
+#include <fmt/format.h>
+
+namespace penumbra::apps {
+
+scene::Scene namedScene(const std::string& name)
+{
+    if (name == "test")
+        return scene::makeShadowTestScene();
+    if (name == "key-light")
+        return scene::makeSingleLightScene();
+    throw rhi::Error(fmt::format("no scene named '{}'; known scenes: test, key-light", name));
+}
+
+ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
+                                 const render::FrameDesc& frame)
+{
+    auto device = createDevice(configuration);
+    render::SceneRenderer renderer(*device, scene);
+    ShadowPictures pictures;
+    pictures.configuration = configuration;
+    pictures.depthRange = device->conventions().depthRange();
+    pictures.reversedZ = device->conventions().reversedZ();
+    render::FrameDesc withCascades = frame;
+    withCascades.cascadeView = true;
+    pictures.stats = renderer.render(scene.camera, withCascades);
+    pictures.notes = renderer.notes();
+    pictures.lit = rhi::readTexture(*device, renderer.litImage());
+    pictures.cascades = rhi::readTexture(*device, renderer.cascadeImage());
+    pictures.atlasDepth = rhi::readDepth(*device, renderer.atlas().texture());
+    pictures.atlas = render::atlasPicture(pictures.atlasDepth, device->conventions());
+    pictures.atlasLightDepth = render::lightDepthFraction(pictures.atlasDepth, device->conventions());
+    if (const auto messages = device->debugMessages(); !messages.empty())
+        throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
+    return pictures;
+}
+
+void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictures& pictures)
+{
+    writePng(folder / "lit.png", pictures.lit);
+    writePng(folder / "atlas.png", pictures.atlas);
+    writeExr(folder / "atlas.exr", pictures.atlasDepth);
+    writePng(folder / "cascades.png", pictures.cascades);
+}
+
+} // namespace penumbra::apps

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/rhi/Image.hpp"
+#include "penumbra/scene/Scene.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace penumbra::apps {
+
+// The shadow test scene rendered through one configuration and read back.
+struct ShadowPictures {
+    std::string configuration;
+    rhi::DepthRange depthRange = rhi::DepthRange::ZeroToOne; // the device's conventions
+    bool reversedZ = false;
+    rhi::Image lit;
+    rhi::Image cascades;
+    rhi::Image atlas;          // render::atlasPicture of atlasDepth
+    rhi::DepthImage atlasDepth; // raw window depth as read back
+    std::vector<float> atlasLightDepth; // render::lightDepthFraction: comparable across conventions
+    render::FrameStats stats;
+    std::vector<std::string> notes;
+};
+
+// The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights) and "key-light"
+// (scene::makeSingleLightScene). Unknown names throw rhi::Error listing these.
+scene::Scene namedScene(const std::string& name);
+
+// Throws rhi::Error when the device reports a validation or debug message.
+ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
+                                 const render::FrameDesc& frame);
+
+// lit.png, atlas.png, atlas.exr and cascades.png in `folder`.
+void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictures& pictures);
+
+} // namespace penumbra::apps

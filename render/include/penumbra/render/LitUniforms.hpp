@@ -1,0 +1,38 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+namespace penumbra::render {
+
+inline constexpr std::uint32_t maxLitDirectionalLights = 8;
+
+enum class LitView : std::int32_t { Lit = 0, Cascades = 1 };
+
+// The blocks of shaders/lit.glsl, std140, uploaded as they are.
+struct LitFrameUniforms {
+    glm::mat4 viewProjection{1.0f};
+    glm::vec4 cameraPosition{0.0f};
+    glm::vec4 cameraForward{0.0f};
+    std::array<glm::vec4, maxLitDirectionalLights> lightColor{};
+    std::array<glm::vec4, maxLitDirectionalLights> lightDirection{}; // w = shadow slot or -1
+    glm::vec4 ambient{0.0f};
+    glm::ivec4 config{0}; // light count, LitView
+};
+static_assert(offsetof(LitFrameUniforms, lightColor) == 96);
+static_assert(offsetof(LitFrameUniforms, ambient) == 352);
+static_assert(sizeof(LitFrameUniforms) == 384);
+
+struct LitObjectUniforms {
+    glm::mat4 model{1.0f};
+    glm::mat4 normalMatrix{1.0f};
+    glm::vec4 baseColor{1.0f};
+    glm::vec4 surface{0.0f}; // metallic, roughness, alpha cutoff, caster mode (material.glsl)
+    glm::ivec4 flags{0};     // receives shadows
+};
+static_assert(sizeof(LitObjectUniforms) == 176);
+
+} // namespace penumbra::render

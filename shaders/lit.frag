@@ -1,0 +1,72 @@
+#version 450
+// Lambert diffuse plus GGX specular for up to 8 directional lights (4 with shadows), each attenuated by its
+// cascaded shadow; clip materials are cut with the same alpha as their shadows.
+
+#include "directional_shadows.glsl"
+#include "lit.glsl"
+#include "material.glsl"
+
+layout(location = 0) in vec3 vPosition;
+layout(location = 1) in vec3 vNormal;
+layout(location = 2) in vec2 vUv;
+
+layout(location = 0) out vec4 outColor;
+
+const float PI = 3.14159265;
+
+// Karis 2013, "Real Shading in Unreal Engine 4": GGX distribution, height-correlated Smith
+// visibility (Heitz 2014) and Schlick's Fresnel.
+vec3 brdf(vec3 n, vec3 v, vec3 l, vec3 base, float metallic, float roughness)
+{
+    const vec3 h = normalize(v + l);
+    const float nl = max(dot(n, l), 0.0);
+    const float nv = max(dot(n, v), 1e-4);
+    const float nh = max(dot(n, h), 0.0);
+    const float a = roughness * roughness;
+    const float a2 = a * a;
+    const float d = nh * nh * (a2 - 1.0) + 1.0;
+    const float distribution = a2 / (PI * d * d);
+    const float visibility = 0.5 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - a2) + a2));
+    const vec3 f0 = mix(vec3(0.04), base, metallic);
+    const vec3 fresnel = f0 + (1.0 - f0) * pow(1.0 - max(dot(v, h), 0.0), 5.0);
+    const vec3 diffuse = (1.0 - metallic) * base / PI;
+    return diffuse + distribution * visibility * fresnel;
+}
+
+vec3 linearToSrgb(vec3 c)
+{
+    c = clamp(c, 0.0, 1.0);
+    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+const vec3 cascadeColors[5] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.25, 0.4, 1.0),
+                                     vec3(1.0, 1.0, 0.25), vec3(0.5, 0.5, 0.5));
+
+void main()
+{
+    const int casterMode = int(object.surface.w);
+    if (casterMode == PENUMBRA_CASTER_CLIP && materialAlpha(object.baseColor.a, casterMode, vUv) < object.surface.z)
+        discard;
+
+    // Surfaces seen from behind (through clip holes) are shaded on the side the camera sees.
+    const vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);
+    const vec3 toCamera = frame.cameraPosition.xyz - vPosition;
+    const vec3 v = normalize(toCamera);
+    const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);
+    const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
+
+    const vec3 base = object.baseColor.rgb;
+    vec3 color = frame.ambient.rgb * base;
+    for (int i = 0; i < frame.config.x; ++i) {
+        const vec3 l = -frame.lightDirection[i].xyz;
+        const float nl = dot(n, l);
+        if (nl <= 0.0)
+            continue;
+        const int slot = object.flags.x != 0 ? int(frame.lightDirection[i].w) : -1;
+        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, n);
+        color += brdf(n, v, l, base, object.surface.x, object.surface.y) * frame.lightColor[i].rgb * nl * attenuation;
+    }
+    if (frame.config.y == 1)
+        color = mix(color, cascadeColors[min(cascade.index, 4)] * 0.8, 0.6);
+    outColor = vec4(linearToSrgb(color), 1.0);
+}

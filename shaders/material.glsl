@@ -1,0 +1,21 @@
+// Material facts shared by the caster and lit passes; the same math as penumbra::scene::materialAlpha.
+
+const int PENUMBRA_CASTER_ON = 0;
+const int PENUMBRA_CASTER_CLIP = 1;
+const int PENUMBRA_CASTER_DITHER = 2;
+
+// Clip materials get a checker of holes, 5 cells per uv unit (scene::kClipCheckerCells).
+float materialAlpha(float baseAlpha, int casterMode, vec2 uv)
+{
+    if (casterMode != PENUMBRA_CASTER_CLIP)
+        return baseAlpha;
+    const ivec2 cell = ivec2(floor(uv * 5.0));
+    return ((cell.x + cell.y) & 1) == 0 ? baseAlpha : 0.0;
+}
+
+// Jimenez 2014, "Next Generation Post Processing in Call of Duty: Advanced Warfare": a dither in
+// [0, 1) per pixel that looks like blue noise. gl_FragCoord counts rows from the top on every backend.
+float interleavedGradientNoise(vec2 pixel)
+{
+    return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}

@@ -1,0 +1,5 @@
+// Per-draw uniforms of the shadow caster pass (penumbra::shadows::ShadowCasterUniforms).
+layout(std140, binding = 0) uniform ShadowCasterDraw {
+    mat4 worldToClip;  // the cascade's light view-projection times the caster's model matrix
+    vec4 material;     // alpha, alpha cutoff, caster mode (material.glsl), 1 to pancake in the shader
+} draw;

@@ -1,0 +1,16 @@
+#version 450
+// Shadow caster pass: light clip space, pancaked onto the near plane when the device has no depth clamp.
+
+#include "shadow_caster.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 2) in vec2 inUv;
+
+layout(location = 0) out vec2 vUv;
+
+void main()
+{
+    const vec4 clip = draw.worldToClip * vec4(inPosition, 1.0);
+    gl_Position = draw.material.w > 0.5 ? penumbraClampToNearPlane(clip) : clip;
+    vUv = inUv;
+}

@@ -1,0 +1,51 @@
+#pragma once
+
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/shadows/DirectionalShadowPlanner.hpp"
+#include "penumbra/shadows/ShadowAtlas.hpp"
+#include "penumbra/shadows/ShadowCaster.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+
+namespace penumbra::shadows {
+
+// The per-draw block of shadow_caster.glsl.
+struct ShadowCasterUniforms {
+    glm::mat4 worldToClip{1.0f};
+    glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
+};
+static_assert(sizeof(ShadowCasterUniforms) == 80);
+
+// Renders the casters of a directional shadow plan into an atlas: one pass, every tile in its
+// viewport and scissor, each light's slope-scale bias, casters in front of the near plane pancaked
+// (depth clamp where the device has it, else the shader clamp onto the convention's near value).
+class DirectionalShadowPass {
+public:
+    DirectionalShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
+
+    // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
+    // next record(), so submit `commands` before recording again.
+    std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const DirectionalShadowPlan& plan,
+                         std::span<const ShadowCaster> casters);
+
+private:
+    struct Pipelines {
+        std::unique_ptr<rhi::Pipeline> opaque;
+        std::unique_ptr<rhi::Pipeline> alphaTested;
+    };
+    const Pipelines& pipelines(rhi::Format atlasFormat);
+
+    rhi::Device& device_;
+    CasterVertexFormat vertexFormat_;
+    std::unique_ptr<rhi::Shader> vertex_;
+    std::unique_ptr<rhi::Shader> opaqueFragment_;
+    std::unique_ptr<rhi::Shader> alphaFragment_;
+    std::map<rhi::Format, Pipelines> pipelines_;
+    rhi::UniformArena uniforms_;
+};
+
+} // namespace penumbra::shadows
