@@ -90,18 +90,25 @@ float tentCdf(float x, float h)
 
 // One axis of an n-texel tent at texel-space `centre`: n + 1 texel weights merged pairwise into
 // (n + 1) / 2 bilinear taps, each placed b / (a + b) past its first texel's centre.
-void tentTaps(int n, float centre, out float positions[4], out float weights[4])
+struct TentAxis {
+    vec4 positions; // texel space
+    vec4 weights;
+};
+
+TentAxis tentTaps(int n, float centre)
 {
     const float h = 0.5 * float(n);
     const int first = int(floor(centre + 0.5)) - (n + 1) / 2;
+    TentAxis axis;
     for (int p = 0; p < 4; ++p) {
         const float left = float(first + 2 * p) - centre;
         const float a = tentCdf(left + 1.0, h) - tentCdf(left, h);
         const float b = tentCdf(left + 2.0, h) - tentCdf(left + 1.0, h);
         const float sum = a + b;
-        positions[p] = float(first + 2 * p) + 0.5 + (sum > 0.0 ? b / sum : 0.5);
-        weights[p] = sum;
+        axis.positions[p] = float(first + 2 * p) + 0.5 + (sum > 0.0 ? b / sum : 0.5);
+        axis.weights[p] = sum;
     }
+    return axis;
 }
 
 // PCF 2x2 (one bilinear tap) or the 3x3, 5x5, 7x7 tents (4, 9, 16 taps) at atlas position (u, v, depth).
@@ -116,14 +123,14 @@ float filterDirectionalShadow(vec3 atlasPosition, int tile)
     if (filterIndex == 0)
         return bilinearCompare(texel, atlasPosition.z, tileMin, tileMax);
     const int n = 2 * filterIndex + 1;
-    float px[4], wx[4], py[4], wy[4];
-    tentTaps(n, texel.x, px, wx);
-    tentTaps(n, texel.y, py, wy);
+    const TentAxis u = tentTaps(n, texel.x);
+    const TentAxis v = tentTaps(n, texel.y);
     const int pairs = (n + 1) / 2;
     float shadow = 0.0;
     for (int y = 0; y < pairs; ++y)
         for (int x = 0; x < pairs; ++x)
-            shadow += wx[x] * wy[y] * bilinearCompare(vec2(px[x], py[y]), atlasPosition.z, tileMin, tileMax);
+            shadow += u.weights[x] * v.weights[y] *
+                      bilinearCompare(vec2(u.positions[x], v.positions[y]), atlasPosition.z, tileMin, tileMax);
     return shadow;
 }
 
