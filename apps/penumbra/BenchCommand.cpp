@@ -1,12 +1,15 @@
 #include "Commands.hpp"
 #include "DrawScene.hpp"
 #include "RawDraws.hpp"
+#include "ShadowBench.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
+#include <algorithm>
 #include <map>
+#include <optional>
 
 namespace penumbra::apps {
 namespace {
@@ -15,7 +18,13 @@ struct BenchOptions {
     std::vector<std::string> configurations = {"vulkan", "opengl"};
     std::vector<std::uint32_t> draws = {1000, 5000, 20000};
     double minTime = 1.0;
+    std::vector<std::string> suites = {"draws", "shadows"};
 };
+
+bool wants(const BenchOptions& options, const std::string& suite)
+{
+    return std::find(options.suites.begin(), options.suites.end(), suite) != options.suites.end();
+}
 
 // Prints Google Benchmark's table and keeps each run's real time per iteration.
 class CollectingReporter : public benchmark::ConsoleReporter {
@@ -47,7 +56,7 @@ void runBenchmarks(const BenchOptions& options)
     std::vector<std::unique_ptr<rhi::CommandList>> lists;
     std::vector<std::unique_ptr<RawDraws>> raws;
     std::vector<Case> cases;
-    for (const std::string& configuration : options.configurations) {
+    for (const std::string& configuration : wants(options, "draws") ? options.configurations : std::vector<std::string>{}) {
         rhi::DeviceDesc desc = rhi::parseConfiguration(configuration);
         desc.validation = false; // timing the driver, not the validation layer
         rhi::Device& device = *devices.emplace_back(createDevice(desc));
@@ -72,9 +81,17 @@ void runBenchmarks(const BenchOptions& options)
         }
     }
 
+    std::optional<ShadowBench> shadowBench;
+    if (wants(options, "shadows"))
+        shadowBench.emplace(options.configurations, options.minTime);
+
     CollectingReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
 
+    if (shadowBench)
+        shadowBench->printSummary();
+    if (cases.empty())
+        return;
     fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw", "raw ns/draw",
                "rhi / raw");
     for (const Case& c : cases) {
@@ -90,7 +107,9 @@ void addBenchCommand(CLI::App& app)
 {
     auto options = std::make_shared<BenchOptions>();
     CLI::App* bench = app.add_subcommand(
-        "bench", "Time N small draws per frame through the RHI and through hand-written raw API code");
+        "bench", "Time N small draws per frame through the RHI and through hand-written raw API code, and the "
+                 "shadow passes of the test scene");
+    bench->add_option("-s,--suites", options->suites, "draws, shadows")->check(CLI::IsMember({"draws", "shadows"}));
     bench->add_option("-c,--configurations", options->configurations, "Configurations to measure")
         ->check(configurationValidator());
     bench->add_option("-n,--draws", options->draws, "Draws per frame")->check(CLI::Range(1u, 1000000u));
