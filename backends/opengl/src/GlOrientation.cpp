@@ -12,6 +12,7 @@ rhi::Conventions GlOrientation::conventions(bool reversedZ) const
 
 void GlOrientation::apply(const GlContext& context) const
 {
+    context.gl().ProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
     if (!clipControl_)
         return;
     if (context.version() < 45 && !context.hasExtension("GL_ARB_clip_control"))

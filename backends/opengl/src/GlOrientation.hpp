@@ -16,6 +16,9 @@ class GlContext;
 //   negates y_d (so clip +y reaches window row 0) and the area sign, so GL_CCW stays front-facing.
 // - No clip control: GL's default LOWER_LEFT / [-1, 1]; the vertex stage negates y instead
 //   (SPIRV-Cross flip_vert_y), which inverts the winding, so GL_CW is the canonical CCW.
+// - The first vertex provokes, as in Vulkan: flat varyings agree, and llvmpipe orders a clockwise
+//   triangle's vertices by the provoking vertex when it sets up the depth plane, so GL's default
+//   (last) rounds depth differently from lavapipe.
 // Either way window coordinates are untouched: window row 0 is memory row 0 of the attachment,
 // gl_FragCoord.y counts rows from the top, and uploads and readbacks need no flip.
 class GlOrientation {
@@ -24,7 +27,8 @@ public:
 
     rhi::Conventions conventions(bool reversedZ) const;
 
-    // Sets the clip volume on the current context; throws UnsupportedError without clip control.
+    // Sets the provoking vertex and the clip volume on the current context; throws UnsupportedError
+    // when clip control is asked for and missing.
     void apply(const GlContext& context) const;
 
     // For SPIRV-Cross: negate gl_Position.y at the end of every vertex shader.

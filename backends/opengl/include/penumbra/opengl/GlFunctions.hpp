@@ -90,6 +90,7 @@ namespace penumbra::opengl {
     X(ObjectLabel, OBJECTLABEL)                                                                                        \
     X(PixelStorei, PIXELSTOREI)                                                                                        \
     X(PolygonOffset, POLYGONOFFSET)                                                                                    \
+    X(ProvokingVertex, PROVOKINGVERTEX)                                                                                \
     X(ProgramUniform1i, PROGRAMUNIFORM1I)                                                                              \
     X(QueryCounter, QUERYCOUNTER)                                                                                      \
     X(SamplerParameteri, SAMPLERPARAMETERI)                                                                            \
