@@ -45,18 +45,26 @@ void printStats(const ShadowPictures& pictures)
         fmt::print("  note: {}\n", note);
 }
 
-// Atlases are bit-identical where depth range and reversed-Z agree; elsewhere they are compared in
-// linear light depth. Lit images must agree everywhere. Returns whether every figure is zero.
+// Mesa's two shader paths round vertex positions an ulp apart, which moves atlas depth by up to a
+// subpixel step of steep triangles and flips a few shadow-edge pixels (tests/shadows_gpu/
+// ShadowParityTest.cpp bounds it per texel); the demo fails only beyond these coarse limits.
+constexpr float kMaxLightDepthDifference = 2e-4f;
+constexpr double kMinLitPsnr = 50.0;
+
+// Atlases compared raw where depth range and reversed-Z agree, in linear light depth everywhere;
+// lit images against the first configuration. Returns whether the figures are within the limits.
 bool reportParity(const std::vector<ShadowPictures>& all)
 {
     const ShadowPictures& reference = all.front();
     int litMax = 0;
+    std::size_t litDiffering = 0;
     double litPsnr = std::numeric_limits<double>::infinity();
     float lightDepthMax = 0.0f;
     std::size_t rawPairs = 0, rawIdentical = 0;
     for (const ShadowPictures& p : all) {
         const ImageDifference lit = compareImages(reference.lit, p.lit);
         litMax = std::max(litMax, lit.maxAbs);
+        litDiffering = std::max(litDiffering, lit.differingPixels);
         litPsnr = std::min(litPsnr, lit.psnr);
         lightDepthMax =
             std::max(lightDepthMax, compareFloats(reference.atlasLightDepth, p.atlasLightDepth).maxAbs);
@@ -67,10 +75,11 @@ bool reportParity(const std::vector<ShadowPictures>& all)
             rawIdentical += compareFloats(p.atlasDepth.depth, q.atlasDepth.depth).differingPixels == 0;
         }
     }
-    fmt::print("parity: {} configurations; lit max diff {} (PSNR {:.1f} dB); atlas bit-identical in {}/{} pairs of "
-               "equal conventions; light-depth max diff {:.3g}\n",
-               all.size(), litMax, litPsnr, rawIdentical, rawPairs, lightDepthMax);
-    return litMax == 0 && rawIdentical == rawPairs && lightDepthMax == 0.0f;
+    fmt::print("parity: {} configurations; lit vs {}: max diff {}, PSNR {:.1f} dB, at most {} of {} pixels differ; "
+               "atlas bit-identical in {}/{} pairs of equal conventions; light-depth max diff {:.3g}\n",
+               all.size(), reference.configuration, litMax, litPsnr, litDiffering,
+               std::size_t(reference.lit.width) * reference.lit.height, rawIdentical, rawPairs, lightDepthMax);
+    return litPsnr >= kMinLitPsnr && lightDepthMax <= kMaxLightDepthDifference;
 }
 
 } // namespace
@@ -124,8 +133,12 @@ void addDemoCommand(CLI::App& app)
         fmt::print("pattern: {}/{} configurations byte-identical\n", patternsIdentical, patterns.size());
         const bool shadowsAgree = reportParity(shadows);
         fmt::print("pictures in {}/<configuration>/\n", options->out);
-        if (patternsIdentical != patterns.size() || !shadowsAgree)
-            throw rhi::Error("the configurations did not render identical pictures");
+        if (patternsIdentical != patterns.size())
+            throw rhi::Error("the configurations did not render identical test patterns");
+        if (!shadowsAgree)
+            throw rhi::Error(fmt::format("the shadow pictures differ beyond the parity limits (lit PSNR >= {} dB, "
+                                         "light depth within {})",
+                                         kMinLitPsnr, kMaxLightDepthDifference));
     });
 }
 
