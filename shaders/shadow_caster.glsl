@@ -2,4 +2,5 @@
 layout(std140, binding = 0) uniform ShadowCasterDraw {
     mat4 worldToClip;  // the cascade's light view-projection times the caster's model matrix
     vec4 material;     // alpha, alpha cutoff, caster mode (material.glsl), 1 to pancake in the shader
+    vec4 ditherOrigin; // xy: added to gl_FragCoord, so the dither follows the world-fixed texel grid
 } draw;

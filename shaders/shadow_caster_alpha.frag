@@ -1,6 +1,7 @@
 #version 450
 // Clip casters drop texels below the alpha cutoff; dither casters keep a texel where alpha
-// reaches the interleaved-gradient dither (alpha as coverage).
+// reaches the interleaved-gradient dither (alpha as coverage), taken in world-anchored texels so that
+// the stable cascades' whole-texel moves do not make dithered shadows tremble.
 
 #include "material.glsl"
 #include "shadow_caster.glsl"
@@ -11,7 +12,7 @@ void main()
 {
     const int mode = int(draw.material.z);
     const float alpha = materialAlpha(draw.material.x, mode, vUv);
-    const float threshold = mode == PENUMBRA_CASTER_DITHER ? interleavedGradientNoise(gl_FragCoord.xy) : draw.material.y;
+    const float threshold = mode == PENUMBRA_CASTER_DITHER ? interleavedGradientNoise(gl_FragCoord.xy + draw.ditherOrigin.xy) : draw.material.y;
     if (alpha < threshold)
         discard;
 }

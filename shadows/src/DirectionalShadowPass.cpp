@@ -18,6 +18,13 @@ rhi::Rect scissorOf(const rhi::Viewport& v)
 
 } // namespace
 
+glm::vec2 ditherOrigin(const DirectionalShadowCascade& cascade, const ShadowAtlasLayout& atlas, std::uint32_t tile)
+{
+    const glm::vec2 centre = glm::round(cascade.snappedCentre / cascade.texelSize);
+    const glm::vec2 offset = glm::vec2(atlas.tileOffset(tile)) + 0.5f * static_cast<float>(atlas.tileSize());
+    return {centre.x - offset.x, -centre.y - offset.y};
+}
+
 DirectionalShadowPass::DirectionalShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat)
     : device_(device), vertexFormat_(vertexFormat),
       vertex_(device.createShader(shaders::load("shadow_caster.vert"))),
@@ -64,6 +71,7 @@ std::uint32_t DirectionalShadowPass::record(rhi::CommandList& commands, const Sh
     for (const ShadowedDirectionalLight& light : plan.lights) {
         const rhi::DepthBias bias{0.0f, light.slopeScaleBias, 0.0f};
         for (const DirectionalCascadePlan& cascade : light.cascades) {
+            const glm::vec4 dither(ditherOrigin(cascade.fit, plan.atlas, cascade.tile), 0.0f, 0.0f);
             commands.setViewport(cascade.viewport);
             commands.setScissor(scissorOf(cascade.viewport));
             const rhi::Pipeline* bound = nullptr;
@@ -81,7 +89,8 @@ std::uint32_t DirectionalShadowPass::record(rhi::CommandList& commands, const Sh
                 }
                 const ShadowCasterUniforms draw{cascade.fit.viewProjection * caster.model,
                                                 {caster.alpha, caster.alphaCutoff, static_cast<float>(caster.mode),
-                                                 pancakeInShader}};
+                                                 pancakeInShader},
+                                                dither};
                 rhi::bindUniform(commands, kDrawBinding, uniforms_.push(draw));
                 commands.bindVertexBuffer(0, *caster.vertices);
                 commands.bindIndexBuffer(*caster.indices, rhi::IndexType::UInt32);

@@ -17,8 +17,13 @@ namespace penumbra::shadows {
 struct ShadowCasterUniforms {
     glm::mat4 worldToClip{1.0f};
     glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
+    glm::vec4 ditherOrigin{0.0f};
 };
-static_assert(sizeof(ShadowCasterUniforms) == 80);
+static_assert(sizeof(ShadowCasterUniforms) == 96);
+
+// Added to gl_FragCoord in the tile, gives the texel's index in the light-space grid that the stable
+// fit snaps to: the same for the same world texel whatever the camera does (x right, y down the tile).
+glm::vec2 ditherOrigin(const DirectionalShadowCascade& cascade, const ShadowAtlasLayout& atlas, std::uint32_t tile);
 
 // Renders the casters of a directional shadow plan into an atlas: one pass, every tile in its
 // viewport and scissor, each light's slope-scale bias, casters in front of the near plane pancaked
