@@ -1,0 +1,155 @@
+// Cascade seams: with soft blending the shadow edge of one long wall, probed along a ground line that
+// crosses every cascade, moves smoothly from cascade to cascade; no jump where the cascades meet.
+#include "GpuTesting.hpp"
+
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/scene/MeshGenerators.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+#include <optional>
+
+namespace penumbra::testing {
+namespace {
+
+constexpr std::uint32_t kWidth = 640;
+constexpr std::uint32_t kHeight = 480;
+constexpr float kWallX = 1.0f;
+constexpr float kWallHeight = 3.0f;
+constexpr float kWallHalfThickness = 0.1f;
+
+// A plane, one wall 2 units to the camera's left running away from it for 140 units, a light from the
+// left 35 degrees up: the wall's shadow is a band on the ground whose outer edge, cast by the wall's
+// top edge on the shadow side, is the line x = kWallX + kWallHalfThickness + kWallHeight / tan(35
+// degrees), through every cascade.
+scene::Scene wallScene()
+{
+    scene::Scene scene;
+    const std::uint32_t ground = scene.addMaterial({.name = "ground", .baseColor = {0.7f, 0.7f, 0.7f, 1.0f}});
+    const std::uint32_t wall = scene.addMaterial({.name = "wall", .baseColor = {0.8f, 0.3f, 0.2f, 1.0f}});
+    scene.addObject("ground", scene.addMesh(scene::makePlane(200.0f)), ground, glm::mat4(1.0f));
+    scene.addObject("wall", scene.addMesh(scene::makeBox({kWallHalfThickness, 0.5f * kWallHeight, 70.0f})), wall,
+                    glm::translate(glm::mat4(1.0f), glm::vec3(kWallX, 0.5f * kWallHeight, 60.0f)));
+    scene.lights.push_back({.name = "sun", .direction = scene::lightDirection(glm::radians(35.0f), glm::radians(90.0f))});
+    scene.camera = scene::lookAt({4.0f, 4.0f, -10.0f}, {4.0f, 0.0f, 30.0f}, glm::radians(50.0f));
+    return scene;
+}
+
+float luminance(const rhi::Image& image, std::uint32_t x, std::uint32_t y)
+{
+    const Rgba c = pixel(image, x, y);
+    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+}
+
+// World x where the ray through continuous pixel (px, py) meets the ground.
+std::optional<glm::vec3> groundPoint(const scene::Camera& camera, float px, float py)
+{
+    const scene::Ray ray = scene::primaryRay(camera, kWidth, kHeight, px, py);
+    if (ray.direction.y >= 0.0f)
+        return std::nullopt;
+    return ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
+}
+
+struct SeamFigures {
+    std::size_t samples = 0;
+    float worstError = 0.0f; // texels between the measured and the true edge
+    float worstStep = 0.0f;  // texels (the coarser row's) between the edges of neighbouring rows
+};
+
+class CascadeSeamTest : public GpuTest {
+protected:
+    SeamFigures measure(shadows::CascadeBlend blend)
+    {
+        const scene::Scene scene = wallScene();
+        render::SceneRenderer renderer(*device, scene);
+        render::FrameDesc frame;
+        frame.width = kWidth;
+        frame.height = kHeight;
+        frame.shadows.directional.cascadeBlend = blend;
+        frame.shadows.directional.cascadeFade = 0.2f;
+        renderer.render(scene.camera, frame);
+        const rhi::Image lit = rhi::readTexture(*device, renderer.litImage());
+        const shadows::DirectionalShadowPlan& plan = renderer.plan();
+        const float trueEdge = kWallX + kWallHalfThickness + kWallHeight / std::tan(glm::radians(35.0f));
+
+        // Per row, the outer shadow edge: scanning from the lit ground at the left towards the wall, where
+        // luminance crosses halfway between the lit and shadowed levels (interpolated between pixel centres).
+        std::vector<glm::vec3> edges;
+        for (std::uint32_t y = 0; y < kHeight; ++y) {
+            const auto middle = groundPoint(scene.camera, kWidth * 0.5f, y + 0.5f);
+            if (!middle || middle->z > 0.85f * plan.splits.farOf(plan.splits.count - 1))
+                continue; // beyond the distance fade
+            float litLevel = 0.0f, shadowLevel = 255.0f;
+            for (std::uint32_t x = 0; x < kWidth; ++x) {
+                litLevel = std::max(litLevel, luminance(lit, x, y));
+                shadowLevel = std::min(shadowLevel, luminance(lit, x, y));
+            }
+            const float half = 0.5f * (litLevel + shadowLevel);
+            for (std::uint32_t x = 1; x < kWidth; ++x) {
+                // The camera looks down +z, so world +x (the shadow side) is on the picture's left.
+                const float a = luminance(lit, x - 1, y), b = luminance(lit, x, y);
+                const auto pa = groundPoint(scene.camera, x - 0.5f, y + 0.5f);
+                if (!pa || pa->x < kWallX + 0.5f)
+                    break;
+                if (a >= half && b < half) {
+                    if (const auto p = groundPoint(scene.camera, x - 0.5f + (a - half) / (a - b), y + 0.5f))
+                        edges.push_back(*p);
+                    break;
+                }
+            }
+        }
+        EXPECT_GT(edges.size(), 100u) << "the wall's shadow edge must be in view: "
+                                      << savePicture(lit, "seam-" + configuration());
+        // Measured in the texels of the cascade the point selects (selectCascade of directional_shadows.glsl),
+        // or of the next, coarser one where the two are blended.
+        const shadows::DirectionalShadowUniforms& u = plan.uniforms;
+        const auto texelAt = [&](glm::vec3 p) {
+            const std::size_t count = plan.cullingSpheres.size();
+            for (std::size_t c = 0; c < count; ++c) {
+                const glm::vec3 offset = p - glm::vec3(u.cullingSpheres[c]);
+                const float distanceSquared = glm::dot(offset, offset);
+                if (distanceSquared >= u.cullingSpheres[c].w)
+                    continue;
+                const float blendWeight = (1.0f - distanceSquared * u.cascadeData[c].x) * u.distanceFade.z;
+                const std::size_t used = blendWeight < 1.0f && c + 1 < count ? c + 1 : c;
+                return plan.lights[0].cascades[used].fit.texelSize;
+            }
+            return plan.lights[0].cascades.back().fit.texelSize;
+        };
+        SeamFigures figures;
+        figures.samples = edges.size();
+        for (std::size_t i = 0; i < edges.size(); ++i) {
+            const float texel = texelAt(edges[i]);
+            figures.worstError = std::max(figures.worstError, std::abs(edges[i].x - trueEdge) / texel);
+            if (i > 0)
+                figures.worstStep = std::max(figures.worstStep, std::abs(edges[i].x - edges[i - 1].x) /
+                                                                    std::max(texel, texelAt(edges[i - 1])));
+        }
+        return figures;
+    }
+};
+
+TEST_F(CascadeSeamTest, SoftBlendMovesTheShadowEdgeSmoothlyAcrossCascades)
+{
+    const SeamFigures hard = measure(shadows::CascadeBlend::Hard);
+    const SeamFigures soft = measure(shadows::CascadeBlend::Soft);
+    std::printf("[ seams    ] %s: %zu rows; edge within %.2f texels of the truth; worst step between rows: hard blend "
+                "%.2f texels, soft blend %.2f texels\n",
+                configuration().c_str(), soft.samples, soft.worstError, hard.worstStep, soft.worstStep);
+    // Each cascade's normal bias (sqrt 2 of its texels) lifts receivers and pulls the edge sqrt 2 / tan 35 =
+    // 2 texels towards the wall; with the filter's half texel and the slope-scale bias the edge stays within
+    // 3.5 texels of the truth.
+    EXPECT_LT(soft.worstError, 3.5f);
+    // Hard cascades jump by the difference of their biases at the seam; the soft blend spreads it over the
+    // fade band, so no row steps by more than about a texel.
+    EXPECT_LE(soft.worstStep, 1.25f);
+    EXPECT_LT(soft.worstStep, 0.6f * hard.worstStep);
+}
+
+} // namespace
+} // namespace penumbra::testing
