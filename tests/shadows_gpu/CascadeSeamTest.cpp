@@ -40,12 +40,6 @@ scene::Scene wallScene()
     return scene;
 }
 
-float luminance(const rhi::Image& image, std::uint32_t x, std::uint32_t y)
-{
-    const Rgba c = pixel(image, x, y);
-    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
-}
-
 // World x where the ray through continuous pixel (px, py) meets the ground.
 std::optional<glm::vec3> groundPoint(const scene::Camera& camera, float px, float py)
 {

@@ -20,12 +20,6 @@ constexpr int kEdgeMargin = 2;
 // Direct light below this (8-bit sRGB luminance) is too grazing to tell shadow from light.
 constexpr float kMinimumDirect = 24.0f;
 
-float luminance(const rhi::Image& image, std::uint32_t x, std::uint32_t y)
-{
-    const Rgba c = pixel(image, x, y);
-    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
-}
-
 // Without ambient light a single-light scene is black where the light is blocked, so a pixel is shadowed
 // when it keeps less than half the brightness it has with shadows off.
 struct ShadowMask {

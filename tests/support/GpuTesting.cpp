@@ -45,6 +45,12 @@ Rgba pixel(const rhi::Image& image, std::uint32_t x, std::uint32_t y)
     return {std::uint8_t(p[0]), std::uint8_t(p[1]), std::uint8_t(p[2]), std::uint8_t(p[3])};
 }
 
+float luminance(const rhi::Image& image, std::uint32_t x, std::uint32_t y)
+{
+    const Rgba c = pixel(image, x, y);
+    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+}
+
 std::string describe(Rgba c) { return fmt::format("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]); }
 
 std::string savePicture(const rhi::Image& image, const std::string& name)

@@ -31,6 +31,8 @@ protected:
 
 using Rgba = std::array<std::uint8_t, 4>;
 Rgba pixel(const rhi::Image& image, std::uint32_t x, std::uint32_t y);
+// Rec. 709 luma of an RGBA8 pixel's stored (sRGB-encoded) values, 0..255.
+float luminance(const rhi::Image& image, std::uint32_t x, std::uint32_t y);
 std::string describe(Rgba c);
 
 // Writes the picture under $PENUMBRA_TEST_OUTPUT (or ./test-output) and returns its path, for failure messages.
