@@ -13,7 +13,7 @@ struct DirectionalLight {
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit, from the light INTO the scene; surfaces are lit from -direction
     float shadowStrength = 1.0f;            // 0: shadows ignored, 1: fully dark
     float slopeScaleBias = 1.0f;            // the RHI's depth-bias slope factor for this light's casters
-    float normalBias = 1.0f;                // receiver offset along its normal, in shadow-map texels
+    float normalBias = 1.0f;                // receiver offset along its normal, in units of the cascade's filter-sized texel diagonal
     float nearPlaneOffset = 0.2f;           // pulls the shadow projection's near plane back, in world units
 };
 
