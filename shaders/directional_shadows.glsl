@@ -137,8 +137,8 @@ float filterDirectionalShadow(vec3 atlasPosition, int tile)
 // The receiver moved along its normal by the cascade's filter-sized texel diagonal (normal bias), then filtered.
 float sampleCascade(int tile, int cascade, vec3 position, vec3 normal, float normalBias)
 {
-    const vec3 biased = position + normal * (normalBias * shadows.cascadeData[cascade].y);
-    return filterDirectionalShadow((shadows.worldToAtlas[tile] * vec4(biased, 1.0)).xyz, tile);
+    precise vec3 biased = fma(normal, vec3(normalBias * shadows.cascadeData[cascade].y), position);
+    return filterDirectionalShadow(transformPoint(shadows.worldToAtlas[tile], biased).xyz, tile);
 }
 
 // 1 = fully lit. `slot` is the light's shadow slot, -1 for a light without shadows.

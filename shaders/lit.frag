@@ -2,6 +2,7 @@
 // Lambert diffuse plus GGX specular for up to 8 directional lights (4 with shadows), each attenuated by its
 // cascaded shadow; clip materials are cut with the same alpha as their shadows.
 
+#include "transform.glsl"
 #include "directional_shadows.glsl"
 #include "lit.glsl"
 #include "material.glsl"

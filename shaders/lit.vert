@@ -1,6 +1,7 @@
 #version 450
 
 #include "lit.glsl"
+#include "transform.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -12,9 +13,9 @@ layout(location = 2) out vec2 vUv;
 
 void main()
 {
-    const vec4 world = object.model * vec4(inPosition, 1.0);
-    vPosition = world.xyz;
+    const vec3 world = transformPoint(object.model, inPosition).xyz;
+    vPosition = world;
     vNormal = mat3(object.normalMatrix) * inNormal;
     vUv = inUv;
-    gl_Position = frame.viewProjection * world;
+    gl_Position = transformPoint(frame.viewProjection, world);
 }

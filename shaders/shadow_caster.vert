@@ -2,6 +2,7 @@
 // Shadow caster pass: light clip space, pancaked onto the near plane when the device has no depth clamp.
 
 #include "shadow_caster.glsl"
+#include "transform.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
@@ -10,7 +11,7 @@ layout(location = 0) out vec2 vUv;
 
 void main()
 {
-    const vec4 clip = draw.worldToClip * vec4(inPosition, 1.0);
+    const vec4 clip = transformPoint(draw.worldToClip, inPosition);
     gl_Position = draw.material.w > 0.5 ? penumbraClampToNearPlane(clip) : clip;
     vUv = inUv;
 }
