@@ -45,9 +45,9 @@ void printStats(const ShadowPictures& pictures)
         fmt::print("  note: {}\n", note);
 }
 
-// Mesa's two shader paths round vertex positions an ulp apart, which moves atlas depth by up to a
-// subpixel step of steep triangles and flips a few shadow-edge pixels (tests/shadows_gpu/
-// ShadowParityTest.cpp bounds it per texel); the demo fails only beyond these coarse limits.
+// What is left between the backends (a few triangle-edge texels and shadow-edge pixels, see README
+// "Parity across backends" and tests/shadows_gpu/ShadowParityTest.cpp) stays far inside these coarse
+// limits; the demo fails only beyond them.
 constexpr float kMaxLightDepthDifference = 2e-4f;
 constexpr double kMinLitPsnr = 50.0;
 
