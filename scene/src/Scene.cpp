@@ -61,6 +61,31 @@ void validateLight(const DirectionalLight& light, std::size_t index)
         throw SceneError(fmt::format("{}: shadowStrength {} is outside [0, 1]", what, light.shadowStrength));
 }
 
+void validateLocalLight(const std::string& what, float range, float strength)
+{
+    if (!(range > 0.0f && std::isfinite(range)))
+        throw SceneError(fmt::format("{}: range {} must be positive and finite", what, range));
+    if (strength < 0.0f || strength > 1.0f)
+        throw SceneError(fmt::format("{}: shadowStrength {} is outside [0, 1]", what, strength));
+}
+
+void validateSpotLight(const SpotLight& light, std::size_t index)
+{
+    const std::string what = describe("spot light", index, light.name);
+    if (!isUnit(light.direction))
+        throw SceneError(fmt::format("{}: direction ({}, {}, {}) is not a unit vector", what, light.direction.x,
+                                     light.direction.y, light.direction.z));
+    if (!(light.innerAngle >= 0.0f && light.innerAngle < light.outerAngle && light.outerAngle < 1.5707963f))
+        throw SceneError(fmt::format("{}: angles inner {} outer {} need 0 <= inner < outer < pi/2 radians", what,
+                                     light.innerAngle, light.outerAngle));
+    validateLocalLight(what, light.range, light.shadowStrength);
+}
+
+void validatePointLight(const PointLight& light, std::size_t index)
+{
+    validateLocalLight(describe("point light", index, light.name), light.range, light.shadowStrength);
+}
+
 void validateCamera(const Camera& camera)
 {
     if (!isUnit(camera.forward))
@@ -123,6 +148,10 @@ void Scene::validate() const
         validateObject(*this, objects[i], i);
     for (std::size_t i = 0; i < lights.size(); ++i)
         validateLight(lights[i], i);
+    for (std::size_t i = 0; i < spotLights.size(); ++i)
+        validateSpotLight(spotLights[i], i);
+    for (std::size_t i = 0; i < pointLights.size(); ++i)
+        validatePointLight(pointLights[i], i);
     validateCamera(camera);
 }
 

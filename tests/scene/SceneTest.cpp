@@ -91,6 +91,20 @@ TEST(SceneTest, BrokenMeshIndicesAndLightsAreRejected)
     static_assert(std::is_base_of_v<std::runtime_error, SceneError>);
 }
 
+TEST(SceneTest, SpotAndPointLightsOutOfRangeAreRejectedByName)
+{
+    Scene scene = twoObjectScene();
+    scene.spotLights.push_back({.name = "lamp", .innerAngle = 0.7f, .outerAngle = 0.5f});
+    std::string message = validationMessage(scene);
+    EXPECT_NE(message.find("spot light 0 ('lamp')"), std::string::npos) << message;
+    EXPECT_NE(message.find("inner"), std::string::npos) << message;
+
+    scene = twoObjectScene();
+    scene.pointLights.push_back({.name = "bulb", .range = 0.0f});
+    message = validationMessage(scene);
+    EXPECT_NE(message.find("point light 0 ('bulb'): range"), std::string::npos) << message;
+}
+
 TEST(MaterialTest, ClipAlphaIsACheckerOfBaseAlpha)
 {
     const Material clip{.baseColor = {1, 1, 1, 0.8f}, .caster = CasterMode::Clip};

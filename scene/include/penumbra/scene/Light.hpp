@@ -17,6 +17,34 @@ struct DirectionalLight {
     float nearPlaneOffset = 0.2f;           // pulls the shadow projection's near plane back, in world units
 };
 
+// A cone light. Its light falls off with distance (zero at range) and between the inner and
+// outer cone angles; its shadow map is a perspective projection of the outer cone.
+struct SpotLight {
+    std::string name;
+    glm::vec3 color{1.0f}; // linear RGB
+    float intensity = 1.0f;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit, the cone's axis pointing away from the light
+    float range = 10.0f;                    // > 0, world units
+    float innerAngle = 0.4f;                // half-angle of full intensity, radians, 0 <= inner < outer
+    float outerAngle = 0.6f;                // half-angle where the light ends, radians, < pi/2
+    float shadowStrength = 1.0f;            // 0: shadows ignored, 1: fully dark
+    float slopeScaleBias = 1.0f;
+    float normalBias = 1.0f; // receiver offset in filter-sized texel diagonals at the receiver's distance
+};
+
+// An omnidirectional light; its shadow is six cube faces.
+struct PointLight {
+    std::string name;
+    glm::vec3 color{1.0f}; // linear RGB
+    float intensity = 1.0f;
+    glm::vec3 position{0.0f};
+    float range = 10.0f; // > 0, world units
+    float shadowStrength = 1.0f;
+    float slopeScaleBias = 1.0f;
+    float normalBias = 1.0f;
+};
+
 // Unit light direction for a light pitched `pitch` radians below the horizon and turned
 // `yaw` radians about +y, measured from +z towards +x (yaw 0 shines towards +z).
 // The seeds set lights up the same way (X rotation, then Y rotation).

@@ -40,6 +40,8 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Object> objects;
     std::vector<DirectionalLight> lights;
+    std::vector<SpotLight> spotLights;
+    std::vector<PointLight> pointLights;
     Camera camera;
 
     std::uint32_t addMesh(MeshData mesh);
