@@ -12,8 +12,7 @@ layout(std140, binding = 2) uniform DirectionalShadows {
     vec4 lightShadowData[4];
 } shadows;
 
-// Read with texelFetch: the bilinear comparison is built from nearest comparisons on every backend
-// (lavapipe cannot filter depth linearly, conventions note section 4).
+// Read with texelFetch (shadow_filter.glsl).
 layout(binding = 3) uniform sampler2D shadowAtlas;
 
 const int PENUMBRA_BLEND_SOFT = 1;
@@ -61,77 +60,14 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
     return s;
 }
 
-// 1 where the stored caster is not nearer to the light than the receiver (lit), else 0.
-float compareTexel(ivec2 texel, float receiverDepth)
-{
-    return penumbraIsNearer(texelFetch(shadowAtlas, texel, 0).r, receiverDepth) ? 0.0 : 1.0;
-}
-
-// A bilinear comparison tap at texel-space position `position` (texel i spans [i, i + 1)), its four
-// texels clamped to the tile so that no filter reads a neighbouring tile.
-float bilinearCompare(vec2 position, float receiverDepth, ivec2 tileMin, ivec2 tileMax)
-{
-    const vec2 corner = position - 0.5;
-    const vec2 base = floor(corner);
-    const vec2 f = corner - base;
-    const ivec2 t0 = clamp(ivec2(base), tileMin, tileMax);
-    const ivec2 t1 = clamp(ivec2(base) + 1, tileMin, tileMax);
-    const float top = mix(compareTexel(t0, receiverDepth), compareTexel(ivec2(t1.x, t0.y), receiverDepth), f.x);
-    const float bottom = mix(compareTexel(ivec2(t0.x, t1.y), receiverDepth), compareTexel(t1, receiverDepth), f.x);
-    return mix(top, bottom, f.y);
-}
-
-// Cumulative integral of the unit-area tent of half width h from -h to x.
-float tentCdf(float x, float h)
-{
-    const float u = clamp(x / h, -1.0, 1.0);
-    return u < 0.0 ? 0.5 * (1.0 + u) * (1.0 + u) : 1.0 - 0.5 * (1.0 - u) * (1.0 - u);
-}
-
-// One axis of an n-texel tent at texel-space `centre`: n + 1 texel weights merged pairwise into
-// (n + 1) / 2 bilinear taps, each placed b / (a + b) past its first texel's centre.
-struct TentAxis {
-    vec4 positions; // texel space
-    vec4 weights;
-};
-
-TentAxis tentTaps(int n, float centre)
-{
-    const float h = 0.5 * float(n);
-    const int first = int(floor(centre + 0.5)) - (n + 1) / 2;
-    TentAxis axis;
-    for (int p = 0; p < 4; ++p) {
-        const float left = float(first + 2 * p) - centre;
-        const float a = tentCdf(left + 1.0, h) - tentCdf(left, h);
-        const float b = tentCdf(left + 2.0, h) - tentCdf(left + 1.0, h);
-        const float sum = a + b;
-        axis.positions[p] = float(first + 2 * p) + 0.5 + (sum > 0.0 ? b / sum : 0.5);
-        axis.weights[p] = sum;
-    }
-    return axis;
-}
-
-// PCF 2x2 (one bilinear tap) or the 3x3, 5x5, 7x7 tents (4, 9, 16 taps) at atlas position (u, v, depth).
+// The directional atlas's tile `tile` filtered at atlas position (u, v, depth).
 float filterDirectionalShadow(vec3 atlasPosition, int tile)
 {
     const int split = int(shadows.atlasSize.x * shadows.atlasSize.w + 0.5);
     const int tileSize = int(shadows.atlasSize.z);
     const ivec2 tileMin = ivec2(tile % split, tile / split) * tileSize;
-    const ivec2 tileMax = tileMin + tileSize - 1;
-    const vec2 texel = atlasPosition.xy * shadows.atlasSize.x;
-    const int filterIndex = shadows.config.y;
-    if (filterIndex == 0)
-        return bilinearCompare(texel, atlasPosition.z, tileMin, tileMax);
-    const int n = 2 * filterIndex + 1;
-    const TentAxis u = tentTaps(n, texel.x);
-    const TentAxis v = tentTaps(n, texel.y);
-    const int pairs = (n + 1) / 2;
-    float shadow = 0.0;
-    for (int y = 0; y < pairs; ++y)
-        for (int x = 0; x < pairs; ++x)
-            shadow += u.weights[x] * v.weights[y] *
-                      bilinearCompare(vec2(u.positions[x], v.positions[y]), atlasPosition.z, tileMin, tileMax);
-    return shadow;
+    return filterShadowTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, shadows.config.y, tileMin,
+                            tileMin + tileSize - 1);
 }
 
 // The receiver moved along its normal by the cascade's filter-sized texel diagonal (normal bias), then filtered.

@@ -1,9 +1,12 @@
 #version 450
 // Lambert diffuse plus GGX specular for up to 8 directional lights (4 with shadows), each attenuated by its
-// cascaded shadow; clip materials are cut with the same alpha as their shadows.
+// cascaded shadow, and up to 16 spot and point lights with their atlas shadows; clip materials are cut
+// with the same alpha as their shadows.
 
 #include "transform.glsl"
+#include "shadow_filter.glsl"
 #include "directional_shadows.glsl"
+#include "other_shadows.glsl"
 #include "lit.glsl"
 #include "material.glsl"
 
@@ -66,6 +69,31 @@ void main()
         const int slot = object.flags.x != 0 ? int(frame.lightDirection[i].w) : -1;
         const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, n);
         color += brdf(n, v, l, base, object.surface.x, object.surface.y) * frame.lightColor[i].rgb * nl * attenuation;
+    }
+    const float globalStrength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
+    for (int i = 0; i < frame.config.z; ++i) {
+        const vec4 light = frame.localPosition[i];
+        const vec3 toLight = light.xyz - vPosition;
+        const float d2 = max(dot(toLight, toLight), 1e-5);
+        const vec3 l = toLight * inversesqrt(d2);
+        const float nl = dot(n, l);
+        if (nl <= 0.0)
+            continue;
+        // Smooth range window over inverse-square falloff (the design document's range attenuation), then the
+        // spot cone's smooth step between outer and inner angle.
+        const float window = clamp(1.0 - d2 * light.w * d2 * light.w, 0.0, 1.0);
+        const vec4 shadow = frame.localShadow[i];
+        const bool isPoint = frame.localColor[i].w > 0.5;
+        const vec3 axis = frame.localAxis[i].xyz;
+        const float cone = isPoint ? 1.0 : clamp(dot(axis, -l) * shadow.x + shadow.y, 0.0, 1.0);
+        const float falloff = window * window / d2 * cone * cone;
+        if (falloff <= 0.0)
+            continue;
+        const vec2 shadowData = object.flags.x != 0 ? shadow.zw : vec2(-1.0, 0.0);
+        const float attenuation =
+            otherShadowAttenuation(shadowData, isPoint, light.xyz, axis, vPosition, n, globalStrength);
+        color += brdf(n, v, l, base, object.surface.x, object.surface.y) * frame.localColor[i].rgb * nl * falloff *
+                 attenuation;
     }
     if (frame.config.y == 1)
         color = mix(color, cascadeColors[min(cascade.index, 4)] * 0.8, 0.6);

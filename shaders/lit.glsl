@@ -7,7 +7,11 @@ layout(std140, binding = 0) uniform Frame {
     vec4 lightColor[8];      // linear rgb x intensity
     vec4 lightDirection[8];  // xyz from the light into the scene, w = shadow slot or -1
     vec4 ambient;            // linear rgb
-    ivec4 config;            // light count, view (0 lit, 1 cascade colours)
+    ivec4 config;            // directional light count, view (0 lit, 1 cascade colours), local light count
+    vec4 localPosition[16];  // xyz, w = 1 / range^2
+    vec4 localColor[16];     // linear rgb x intensity, w = 1 for a point light, 0 for a spot light
+    vec4 localAxis[16];      // spot cone axis (unit, away from the light)
+    vec4 localShadow[16];    // spot angle scale and offset, first shadow tile or -1, shadow strength
 } frame;
 
 layout(std140, binding = 1) uniform Object {

@@ -3,6 +3,8 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -14,6 +16,8 @@ constexpr std::uint32_t kFrameBinding = 0;
 constexpr std::uint32_t kObjectBinding = 1;
 constexpr std::uint32_t kShadowBinding = 2;
 constexpr std::uint32_t kAtlasBinding = 3;
+constexpr std::uint32_t kOtherShadowBinding = 4;
+constexpr std::uint32_t kOtherAtlasBinding = 5;
 constexpr rhi::Format kLitFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
@@ -31,6 +35,56 @@ std::vector<shadows::DirectionalShadowLightInput> shadowLights(const std::vector
         inputs.push_back({light.direction, light.shadowStrength, light.nearPlaneOffset, light.normalBias,
                           light.slopeScaleBias, true});
     return inputs;
+}
+
+std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::SpotLight>& lights)
+{
+    std::vector<shadows::SpotShadowInput> inputs;
+    for (const scene::SpotLight& l : lights)
+        inputs.push_back({l.position, l.direction, l.range, l.outerAngle, l.shadowStrength, l.normalBias,
+                          l.slopeScaleBias});
+    return inputs;
+}
+
+std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene::PointLight>& lights)
+{
+    std::vector<shadows::PointShadowInput> inputs;
+    for (const scene::PointLight& l : lights)
+        inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias});
+    return inputs;
+}
+
+const char* kindName(shadows::LocalLightKind kind)
+{
+    return kind == shadows::LocalLightKind::Spot ? "spot light" : "point light";
+}
+
+const std::string& localLightName(const scene::Scene& scene, shadows::LocalLightKind kind, std::uint32_t index)
+{
+    return kind == shadows::LocalLightKind::Spot ? scene.spotLights[index].name : scene.pointLights[index].name;
+}
+
+// The lit pass's local lights: spot lights, then point lights, up to maxLitLocalLights.
+void fillLocalLights(LitFrameUniforms& u, const scene::Scene& scene, const shadows::OtherShadowPlan& plan)
+{
+    std::uint32_t count = 0;
+    for (std::size_t i = 0; i < scene.spotLights.size() && count < maxLitLocalLights; ++i, ++count) {
+        const scene::SpotLight& l = scene.spotLights[i];
+        // Smooth step of the cone: saturate(cos(angle) * a + b), 0 at the outer, 1 at the inner angle.
+        const float cosOuter = std::cos(l.outerAngle);
+        const float scale = 1.0f / std::max(std::cos(l.innerAngle) - cosOuter, 1e-3f);
+        u.localPosition[count] = glm::vec4(l.position, 1.0f / (l.range * l.range));
+        u.localColor[count] = glm::vec4(l.color * l.intensity, 0.0f);
+        u.localAxis[count] = glm::vec4(l.direction, 0.0f);
+        u.localShadow[count] = {scale, -cosOuter * scale, static_cast<float>(plan.spotTiles[i]), l.shadowStrength};
+    }
+    for (std::size_t i = 0; i < scene.pointLights.size() && count < maxLitLocalLights; ++i, ++count) {
+        const scene::PointLight& l = scene.pointLights[i];
+        u.localPosition[count] = glm::vec4(l.position, 1.0f / (l.range * l.range));
+        u.localColor[count] = glm::vec4(l.color * l.intensity, 1.0f);
+        u.localShadow[count] = {0.0f, 0.0f, static_cast<float>(plan.pointShadows[i]), l.shadowStrength};
+    }
+    u.config.z = static_cast<int>(count);
 }
 
 LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
@@ -55,9 +109,10 @@ std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& 
 
 SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     : device_(device), gpuScene_(device, scene), shadowPass_(device, GpuScene::vertexFormat()),
+      otherShadowPass_(device, GpuScene::vertexFormat()),
       litVertex_(device.createShader(shaders::load("lit.vert"))),
       litFragment_(device.createShader(shaders::load("lit.frag"))), commands_(device.createCommandList()),
-      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(3) : nullptr),
+      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(4) : nullptr),
       uniforms_(device, "lit pass uniforms")
 {
     const shadows::CasterVertexFormat vertex = GpuScene::vertexFormat();
@@ -84,6 +139,10 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame)
     if (!atlas_ || atlas_->size() != directional.atlasSize || atlas_->format() != directional.atlasFormat)
         atlas_ = std::make_unique<shadows::ShadowAtlas>(device_, directional.atlasSize, directional.atlasFormat,
                                                         "directional shadow atlas");
+    const shadows::OtherShadowSettings& other = frame.shadows.other;
+    if (!otherAtlas_ || otherAtlas_->size() != other.atlasSize || otherAtlas_->format() != other.atlasFormat)
+        otherAtlas_ = std::make_unique<shadows::ShadowAtlas>(device_, other.atlasSize, other.atlasFormat,
+                                                             "other shadow atlas");
     if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height)
         return;
     lit_ = colorTarget(device_, frame, "lit image");
@@ -116,11 +175,13 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     }
     u.ambient = glm::vec4(frame.ambient, 0.0f);
     u.config = {static_cast<int>(count), static_cast<int>(view), 0, 0};
+    fillLocalLights(u, gpuScene_.scene(), otherPlan_);
     return u;
 }
 
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
-                                  const LitFrameUniforms& frame, const rhi::UniformSlice& shadowUniforms)
+                                  const LitFrameUniforms& frame, const rhi::UniformSlice& shadowUniforms,
+                                  const rhi::UniformSlice& otherShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
     commands.beginPass({.framebuffer = &target, .clearColor = kBackground});
@@ -128,6 +189,8 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     rhi::bindUniform(commands, kFrameBinding, uniforms_.push(frame));
     rhi::bindUniform(commands, kShadowBinding, shadowUniforms);
     commands.bindTexture(kAtlasBinding, atlas_->texture(), atlas_->sampler());
+    rhi::bindUniform(commands, kOtherShadowBinding, otherShadowUniforms);
+    commands.bindTexture(kOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
     for (const scene::Object& object : scene.objects) {
         rhi::bindUniform(commands, kObjectBinding, uniforms_.push(objectUniforms(object, scene.materialOf(object))));
         commands.bindVertexBuffer(0, gpuScene_.vertices(object.mesh));
@@ -137,15 +200,15 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     commands.endPass();
 }
 
-FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame)
+void SceneRenderer::planShadows(const scene::Camera& camera, const FrameDesc& frame)
 {
-    prepareTargets(frame);
     const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
     const scene::Scene& scene = gpuScene_.scene();
     const std::vector<shadows::Bounds> bounds = gpuScene_.casterBounds();
-    const std::vector<shadows::DirectionalShadowLightInput> lights = shadowLights(scene.lights);
-    plan_ = shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
-                                            bounds);
+    plan_ = shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect),
+                                            shadowLights(scene.lights), bounds);
+    otherPlan_ = shadows::planOtherShadows(frame.shadows, device_.conventions(), spotShadowInputs(scene.spotLights),
+                                           pointShadowInputs(scene.pointLights), bounds);
     notes_.clear();
     for (const shadows::ShadowPlanNote& note : plan_.report)
         notes_.push_back(note.lightIndex ? fmt::format("light {} ('{}') has no shadows: {}", *note.lightIndex,
@@ -154,30 +217,55 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     for (std::size_t i = maxLitDirectionalLights; i < scene.lights.size(); ++i)
         notes_.push_back(fmt::format("light {} ('{}') is not drawn: beyond the limit of {} directional lights", i,
                                      scene.lights[i].name, maxLitDirectionalLights));
+    for (const shadows::OtherShadowNote& note : otherPlan_.report)
+        notes_.push_back(fmt::format("{} {} ('{}') has no shadows: {}", kindName(note.kind), note.lightIndex,
+                                     localLightName(scene, note.kind, note.lightIndex), note.reason));
+    const std::size_t spots = scene.spotLights.size();
+    for (std::size_t i = maxLitLocalLights; i < spots + scene.pointLights.size(); ++i) {
+        const auto kind = i < spots ? shadows::LocalLightKind::Spot : shadows::LocalLightKind::Point;
+        const auto index = static_cast<std::uint32_t>(i < spots ? i : i - spots);
+        notes_.push_back(fmt::format("{} {} ('{}') is not drawn: beyond the limit of {} spot and point lights",
+                                     kindName(kind), index, localLightName(scene, kind, index), maxLitLocalLights));
+    }
+}
+
+FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame)
+{
+    prepareTargets(frame);
+    planShadows(camera, frame);
 
     FrameStats stats;
+    stats.notes = notes_;
     for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
         for (const shadows::DirectionalCascadePlan& cascade : light.cascades)
             stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;
 
     uniforms_.reset();
     const rhi::UniformSlice shadowUniforms = uniforms_.push(plan_.uniforms);
+    const rhi::UniformSlice otherShadowUniforms = uniforms_.push(otherPlan_.uniforms);
+    const std::vector<shadows::ShadowCaster> casters = gpuScene_.casters();
     rhi::CommandList& commands = *commands_;
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
-    stats.casterDraws = shadowPass_.record(commands, *atlas_, plan_, gpuScene_.casters());
+    stats.casterDraws = shadowPass_.record(commands, *atlas_, plan_, casters);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 1);
-    recordLitPass(commands, *litTarget_, frameUniforms(camera, frame, LitView::Lit), shadowUniforms);
+    stats.otherCasterDraws = otherShadowPass_.record(commands, *otherAtlas_, otherPlan_, casters);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 2);
+    recordLitPass(commands, *litTarget_, frameUniforms(camera, frame, LitView::Lit), shadowUniforms,
+                  otherShadowUniforms);
+    if (timestamps_)
+        commands.writeTimestamp(*timestamps_, 3);
     if (frame.cascadeView)
-        recordLitPass(commands, *cascadeTarget_, frameUniforms(camera, frame, LitView::Cascades), shadowUniforms);
+        recordLitPass(commands, *cascadeTarget_, frameUniforms(camera, frame, LitView::Cascades), shadowUniforms,
+                      otherShadowUniforms);
     device_.submit(commands);
     if (timestamps_) {
         const std::vector<double> ns = device_.readTimestamps(*timestamps_);
         stats.atlasPassMs = (ns[1] - ns[0]) * 1e-6;
-        stats.litPassMs = (ns[2] - ns[1]) * 1e-6;
+        stats.otherAtlasPassMs = (ns[2] - ns[1]) * 1e-6;
+        stats.litPassMs = (ns[3] - ns[2]) * 1e-6;
     }
     return stats;
 }

@@ -46,7 +46,7 @@ SettingsProblem outOfRange(std::string field, std::string value)
 
 std::string_view allowedValues(std::string_view field)
 {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 9> table{{
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 14> table{{
         {"maxDistance", "> 0.001"},
         {"distanceFade", "0.001..1"},
         {"directional.atlasSize", "powers of two 256..8192"},
@@ -56,12 +56,41 @@ std::string_view allowedValues(std::string_view field)
         {"directional.cascadeFade", "0.001..1"},
         {"directional.cascadeBlend", "hard, soft, dither"},
         {"directional.atlasFormat", "d16, d24s8, d32f"},
+        {"other.atlasSize", "powers of two 256..8192"},
+        {"other.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7"},
+        {"other.atlasFormat", "d16, d24s8, d32f"},
+        {"other.pointMode", "atlas, cubemap"},
+        {"other.cubeMapSize", "powers of two 64..4096"},
     }};
     for (const auto& [name, allowed] : table)
         if (name == field)
             return allowed;
     return "";
 }
+
+namespace {
+
+bool powerOfTwoWithin(std::uint32_t value, std::uint32_t low, std::uint32_t high)
+{
+    return (value & (value - 1)) == 0 && value >= low && value <= high;
+}
+
+std::optional<SettingsProblem> findOtherSettingsProblem(const OtherShadowSettings& o)
+{
+    if (!powerOfTwoWithin(o.atlasSize, 256, 8192))
+        return outOfRange("other.atlasSize", fmt::format("{}", o.atlasSize));
+    if (static_cast<unsigned>(o.filter) > static_cast<unsigned>(ShadowFilter::PCF7x7))
+        return outOfRange("other.filter", fmt::format("{}", static_cast<int>(o.filter)));
+    if (!rhi::isDepthFormat(o.atlasFormat))
+        return outOfRange("other.atlasFormat", std::string(rhi::formatName(o.atlasFormat)));
+    if (static_cast<unsigned>(o.pointMode) > static_cast<unsigned>(PointShadowMode::CubeMap))
+        return outOfRange("other.pointMode", fmt::format("{}", static_cast<int>(o.pointMode)));
+    if (!powerOfTwoWithin(o.cubeMapSize, 64, 4096))
+        return outOfRange("other.cubeMapSize", fmt::format("{}", o.cubeMapSize));
+    return std::nullopt;
+}
+
+} // namespace
 
 std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
 {
@@ -70,8 +99,7 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return outOfRange("maxDistance", fmt::format("{}", s.maxDistance));
     if (!within(s.distanceFade, 0.001f, 1.0f))
         return outOfRange("distanceFade", fmt::format("{}", s.distanceFade));
-    const bool powerOfTwo = (d.atlasSize & (d.atlasSize - 1)) == 0;
-    if (!powerOfTwo || d.atlasSize < 256 || d.atlasSize > 8192)
+    if (!powerOfTwoWithin(d.atlasSize, 256, 8192))
         return outOfRange("directional.atlasSize", fmt::format("{}", d.atlasSize));
     if (static_cast<unsigned>(d.filter) > static_cast<unsigned>(ShadowFilter::PCF7x7))
         return outOfRange("directional.filter", fmt::format("{}", static_cast<int>(d.filter)));
@@ -87,7 +115,7 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return outOfRange("directional.cascadeBlend", fmt::format("{}", static_cast<int>(d.cascadeBlend)));
     if (!rhi::isDepthFormat(d.atlasFormat))
         return outOfRange("directional.atlasFormat", std::string(rhi::formatName(d.atlasFormat)));
-    return std::nullopt;
+    return findOtherSettingsProblem(s.other);
 }
 
 } // namespace detail

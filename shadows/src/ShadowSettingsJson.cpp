@@ -34,6 +34,9 @@ constexpr std::array<EnumName<CascadeBlend>, 3> blendNames{
 constexpr std::array<EnumName<rhi::Format>, 3> formatNames{
     {{rhi::Format::D16, "d16"}, {rhi::Format::D24S8, "d24s8"}, {rhi::Format::D32F, "d32f"}}};
 
+constexpr std::array<EnumName<PointShadowMode>, 2> pointModeNames{
+    {{PointShadowMode::Atlas, "atlas"}, {PointShadowMode::CubeMap, "cubemap"}}};
+
 template <typename Enum, std::size_t N>
 std::string_view nameOf(const std::array<EnumName<Enum>, N>& names, Enum value)
 {
@@ -131,6 +134,26 @@ void readDirectional(const Json& object, std::string_view source, DirectionalSha
     }
 }
 
+void readOther(const Json& object, std::string_view source, OtherShadowSettings& o)
+{
+    const FieldReader r(source, "other.");
+    r.requireObject(object, "other");
+    for (const auto& [key, value] : object.items()) {
+        if (key == "atlasSize")
+            o.atlasSize = r.integer(value, key);
+        else if (key == "filter")
+            o.filter = r.enumeration(value, key, filterNames);
+        else if (key == "atlasFormat")
+            o.atlasFormat = r.enumeration(value, key, formatNames);
+        else if (key == "pointMode")
+            o.pointMode = r.enumeration(value, key, pointModeNames);
+        else if (key == "cubeMapSize")
+            o.cubeMapSize = r.integer(value, key);
+        else
+            r.unknown(key, "atlasSize, filter, atlasFormat, pointMode, cubeMapSize");
+    }
+}
+
 } // namespace
 
 ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourceName)
@@ -151,8 +174,10 @@ ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourc
             settings.distanceFade = r.number(value, key);
         else if (key == "directional")
             readDirectional(value, sourceName, settings.directional);
+        else if (key == "other")
+            readOther(value, sourceName, settings.other);
         else
-            r.unknown(key, "maxDistance, distanceFade, directional");
+            r.unknown(key, "maxDistance, distanceFade, directional, other");
     }
     if (const auto problem = detail::findSettingsProblem(settings))
         throw rhi::Error(
@@ -171,10 +196,18 @@ std::string toJson(const ShadowSettings& s)
     directional["cascadeFade"] = d.cascadeFade;
     directional["cascadeBlend"] = nameOf(blendNames, d.cascadeBlend);
     directional["atlasFormat"] = nameOf(formatNames, d.atlasFormat);
+    const OtherShadowSettings& o = s.other;
+    nlohmann::ordered_json other;
+    other["atlasSize"] = o.atlasSize;
+    other["filter"] = nameOf(filterNames, o.filter);
+    other["atlasFormat"] = nameOf(formatNames, o.atlasFormat);
+    other["pointMode"] = nameOf(pointModeNames, o.pointMode);
+    other["cubeMapSize"] = o.cubeMapSize;
     nlohmann::ordered_json root;
     root["maxDistance"] = s.maxDistance;
     root["distanceFade"] = s.distanceFade;
     root["directional"] = std::move(directional);
+    root["other"] = std::move(other);
     return root.dump(2) + "\n";
 }
 

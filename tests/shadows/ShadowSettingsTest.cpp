@@ -22,6 +22,11 @@ void expectEqual(const ShadowSettings& a, const ShadowSettings& b)
     EXPECT_EQ(a.directional.cascadeFade, b.directional.cascadeFade);
     EXPECT_EQ(a.directional.cascadeBlend, b.directional.cascadeBlend);
     EXPECT_EQ(a.directional.atlasFormat, b.directional.atlasFormat);
+    EXPECT_EQ(a.other.atlasSize, b.other.atlasSize);
+    EXPECT_EQ(a.other.filter, b.other.filter);
+    EXPECT_EQ(a.other.atlasFormat, b.other.atlasFormat);
+    EXPECT_EQ(a.other.pointMode, b.other.pointMode);
+    EXPECT_EQ(a.other.cubeMapSize, b.other.cubeMapSize);
 }
 
 ShadowSettings unusualSettings()
@@ -36,6 +41,11 @@ ShadowSettings unusualSettings()
     s.directional.cascadeFade = 0.2f;
     s.directional.cascadeBlend = CascadeBlend::Dither;
     s.directional.atlasFormat = rhi::Format::D24S8;
+    s.other.atlasSize = 2048;
+    s.other.filter = ShadowFilter::PCF3x3;
+    s.other.atlasFormat = rhi::Format::D16;
+    s.other.pointMode = PointShadowMode::CubeMap;
+    s.other.cubeMapSize = 256;
     return s;
 }
 
@@ -114,7 +124,13 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
     EXPECT_EQ(parseError(R"({"maxDistanse": 5})"),
-              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional");
+              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, other");
+    EXPECT_EQ(parseError(R"({"other": {"pointMode": "cube"}})"),
+              "shadows.json: other.pointMode: unknown value \"cube\", allowed atlas, cubemap");
+    EXPECT_EQ(parseError(R"({"other": {"atlasSize": 100}})"),
+              "shadows.json: other.atlasSize: 100 is out of range, allowed powers of two 256..8192");
+    EXPECT_EQ(parseError(R"({"other": {"cubeMapSize": 8192}})"),
+              "shadows.json: other.cubeMapSize: 8192 is out of range, allowed powers of two 64..4096");
     EXPECT_EQ(parseError(R"({"directional": {"blend": "soft"}})"),
               "shadows.json: directional.blend: unknown field, allowed atlasSize, filter, cascadeCount, "
               "cascadeRatios, cascadeFade, cascadeBlend, atlasFormat");

@@ -9,6 +9,7 @@
 namespace penumbra::render {
 
 inline constexpr std::uint32_t maxLitDirectionalLights = 8;
+inline constexpr std::uint32_t maxLitLocalLights = 16; // spot and point lights together
 
 enum class LitView : std::int32_t { Lit = 0, Cascades = 1 };
 
@@ -20,11 +21,16 @@ struct LitFrameUniforms {
     std::array<glm::vec4, maxLitDirectionalLights> lightColor{};
     std::array<glm::vec4, maxLitDirectionalLights> lightDirection{}; // w = shadow slot or -1
     glm::vec4 ambient{0.0f};
-    glm::ivec4 config{0}; // light count, LitView
+    glm::ivec4 config{0}; // directional light count, LitView, local light count
+    std::array<glm::vec4, maxLitLocalLights> localPosition{};  // xyz, w = 1 / range^2
+    std::array<glm::vec4, maxLitLocalLights> localColor{};     // rgb x intensity, w = 1 point, 0 spot
+    std::array<glm::vec4, maxLitLocalLights> localAxis{};      // spot cone axis
+    std::array<glm::vec4, maxLitLocalLights> localShadow{};    // cone scale, offset, first tile or -1, strength
 };
 static_assert(offsetof(LitFrameUniforms, lightColor) == 96);
 static_assert(offsetof(LitFrameUniforms, ambient) == 352);
-static_assert(sizeof(LitFrameUniforms) == 384);
+static_assert(offsetof(LitFrameUniforms, localPosition) == 384);
+static_assert(sizeof(LitFrameUniforms) == 1408);
 
 struct LitObjectUniforms {
     glm::mat4 model{1.0f};

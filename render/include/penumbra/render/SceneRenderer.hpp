@@ -7,6 +7,8 @@
 #include "penumbra/scene/Scene.hpp"
 #include "penumbra/shadows/DirectionalShadowPass.hpp"
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
+#include "penumbra/shadows/OtherShadowPass.hpp"
+#include "penumbra/shadows/OtherShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
@@ -27,14 +29,18 @@ struct FrameDesc {
 };
 
 struct FrameStats {
-    std::uint32_t casterDraws = 0;                  // issued into the atlas
+    std::uint32_t casterDraws = 0;                  // issued into the directional atlas
     std::uint32_t casterDrawsWithoutCullingBias = 0; // casters overlapping each cascade's light box
+    std::uint32_t otherCasterDraws = 0;             // issued into the spot and point shadows
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
+    std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
+    // Lights drawn without shadows, or not drawn at all, and why (the same as SceneRenderer::notes()).
+    std::vector<std::string> notes;
 };
 
-// Draws a scene with cascaded directional shadows: plan (CPU) -> caster pass into the atlas ->
-// lit pass (and optionally the cascade view). One submission per frame; the results stay readable
+// Draws a scene with cascaded directional shadows and spot and point shadows: plan (CPU) -> caster
+// passes into the directional and the other atlas -> lit pass (and optionally the cascade view). One submission per frame; the results stay readable
 // until the next render().
 class SceneRenderer {
 public:
@@ -48,18 +54,23 @@ public:
     const rhi::Texture& cascadeImage() const { return *cascades_; }
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
-    // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights).
+    // Spot and point shadows: tiles of this atlas.
+    const shadows::ShadowAtlas& otherAtlas() const { return *otherAtlas_; }
+    const shadows::OtherShadowPlan& otherPlan() const { return otherPlan_; }
+    // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights, maxLitLocalLights).
     const std::vector<std::string>& notes() const { return notes_; }
 
 private:
     void prepareTargets(const FrameDesc& frame);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
+    void planShadows(const scene::Camera& camera, const FrameDesc& frame);
     void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const LitFrameUniforms& frame,
-                       const rhi::UniformSlice& shadowUniforms);
+                       const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms);
 
     rhi::Device& device_;
     GpuScene gpuScene_;
     shadows::DirectionalShadowPass shadowPass_;
+    shadows::OtherShadowPass otherShadowPass_;
     std::unique_ptr<rhi::Shader> litVertex_;
     std::unique_ptr<rhi::Shader> litFragment_;
     std::unique_ptr<rhi::Pipeline> litPipeline_;
@@ -68,6 +79,7 @@ private:
     rhi::UniformArena uniforms_;
 
     std::unique_ptr<shadows::ShadowAtlas> atlas_;
+    std::unique_ptr<shadows::ShadowAtlas> otherAtlas_;
     std::unique_ptr<rhi::Texture> lit_;
     std::unique_ptr<rhi::Texture> cascades_;
     std::unique_ptr<rhi::Texture> depth_;
@@ -75,6 +87,7 @@ private:
     std::unique_ptr<rhi::Framebuffer> cascadeTarget_;
 
     shadows::DirectionalShadowPlan plan_;
+    shadows::OtherShadowPlan otherPlan_;
     std::vector<std::string> notes_;
 };
 

@@ -5,21 +5,12 @@
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
+#include "penumbra/shadows/ShadowCasterDraws.hpp"
 
 #include <cstdint>
-#include <map>
-#include <memory>
 #include <span>
 
 namespace penumbra::shadows {
-
-// The per-draw block of shadow_caster.glsl.
-struct ShadowCasterUniforms {
-    glm::mat4 worldToClip{1.0f};
-    glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
-    glm::vec4 ditherOrigin{0.0f};
-};
-static_assert(sizeof(ShadowCasterUniforms) == 96);
 
 // Added to gl_FragCoord in the tile, gives the texel's index in the light-space grid that the stable
 // fit snaps to: the same for the same world texel whatever the camera does (x right, y down the tile).
@@ -38,19 +29,7 @@ public:
                          std::span<const ShadowCaster> casters);
 
 private:
-    struct Pipelines {
-        std::unique_ptr<rhi::Pipeline> opaque;
-        std::unique_ptr<rhi::Pipeline> alphaTested;
-    };
-    const Pipelines& pipelines(rhi::Format atlasFormat);
-
-    rhi::Device& device_;
-    CasterVertexFormat vertexFormat_;
-    std::unique_ptr<rhi::Shader> vertex_;
-    std::unique_ptr<rhi::Shader> opaqueFragment_;
-    std::unique_ptr<rhi::Shader> alphaFragment_;
-    std::map<rhi::Format, Pipelines> pipelines_;
-    rhi::UniformArena uniforms_;
+    ShadowCasterDraws draws_;
 };
 
 } // namespace penumbra::shadows

@@ -33,10 +33,26 @@ struct DirectionalShadowSettings {
     rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
 };
 
+// Where point lights keep their six faces.
+enum class PointShadowMode {
+    Atlas,   // six tiles of the other atlas, the face picked in the lit shader (the design document)
+    CubeMap, // a depth cube map per light, sampled with hardware cube lookups
+};
+
+// Spot and point shadows: the second atlas of up to 16 tiles (a spot light takes one, a point light six).
+struct OtherShadowSettings {
+    std::uint32_t atlasSize = 1024; // texels per side, a power of two in 256..8192
+    ShadowFilter filter = ShadowFilter::PCF2x2;
+    rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
+    PointShadowMode pointMode = PointShadowMode::Atlas;
+    std::uint32_t cubeMapSize = 512; // CubeMap mode: texels per face side, a power of two in 64..4096
+};
+
 struct ShadowSettings {
-    float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001
+    float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001; applies to every light
     float distanceFade = 0.1f;  // 0.001..1, fraction of maxDistance over which shadows fade out
     DirectionalShadowSettings directional;
+    OtherShadowSettings other;
 };
 
 // Throws rhi::Error "<field>: <value> is out of range, allowed <range>" for the first field out of range

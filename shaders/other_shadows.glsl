@@ -1,0 +1,66 @@
+// Spot and point shadow attenuation over the other atlas: the light plane's normal bias, the cube face
+// of a point light, tile-clamped PCF (shadow_filter.glsl). The block is
+// penumbra::shadows::OtherShadowUniforms.
+
+layout(std140, binding = 4) uniform OtherShadows {
+    mat4 worldToAtlas[16];
+    vec4 tileBounds[16];
+    vec4 tileData[16];
+    vec4 cubeData[4];
+    vec4 atlasSize;
+    ivec4 config;
+} otherShadows;
+
+// Read with texelFetch (shadow_filter.glsl).
+layout(binding = 5) uniform sampler2D otherShadowAtlas;
+
+// The face of the largest component of d (light to point), ties to x, then y, then z:
+// penumbra::shadows::cubeFace. Faces in the order +X, -X, +Y, -Y, +Z, -Z.
+int cubeFace(vec3 d)
+{
+    const vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z)
+        return d.x >= 0.0 ? 0 : 1;
+    if (a.y >= a.z)
+        return d.y >= 0.0 ? 2 : 3;
+    return d.z >= 0.0 ? 4 : 5;
+}
+
+vec3 cubeFaceAxis(int face)
+{
+    vec3 axis = vec3(0.0);
+    axis[face / 2] = face % 2 == 0 ? 1.0 : -1.0;
+    return axis;
+}
+
+// Shadow of a spot light (its cone `axis`) or a point light (six tiles from `firstTile`, the face picked
+// by the direction from the light) at a receiver.
+float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
+{
+    const vec3 fromLight = position - lightPosition;
+    int tile = firstTile;
+    vec3 plane = axis;
+    if (isPoint) {
+        const int face = cubeFace(fromLight);
+        tile += face;
+        plane = cubeFaceAxis(face);
+    }
+    // A perspective texel grows linearly with the distance from the light plane, and the normal bias with it.
+    const float distanceToPlane = dot(fromLight, plane);
+    precise vec3 biased = fma(normal, vec3(distanceToPlane * otherShadows.tileData[tile].x), position);
+    const vec4 p = transformPoint(otherShadows.worldToAtlas[tile], biased);
+    const vec4 bounds = otherShadows.tileBounds[tile];
+    return filterShadowTile(otherShadowAtlas, p.xyz / p.w, otherShadows.atlasSize.x, otherShadows.config.x,
+                            ivec2(bounds.xy), ivec2(bounds.zw));
+}
+
+// 1 = fully lit. `shadow`: first tile, -1 without shadows; the light's shadow strength. `strength` is the
+// global one (distance fade), which applies to every light.
+float otherShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
+                             float strength)
+{
+    const float s = shadow.y * strength;
+    if (shadow.x < 0.0 || s <= 0.0)
+        return 1.0;
+    return mix(1.0, otherAtlasShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal), s);
+}

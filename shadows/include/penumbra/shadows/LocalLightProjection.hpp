@@ -1,0 +1,52 @@
+#pragma once
+
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
+
+#include <array>
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace penumbra::shadows {
+
+// The six faces of a point light's shadow, in the order tiles and cube layers use.
+enum class CubeFace : std::uint8_t { PositiveX, NegativeX, PositiveY, NegativeY, PositiveZ, NegativeZ };
+inline constexpr std::uint32_t cubeFaceCount = 6;
+
+// Unit axis a face looks along.
+glm::vec3 cubeFaceAxis(CubeFace face);
+
+// The face whose axis has the largest component of `direction` (light to point); ties go to x, then y,
+// then z. shaders/other_shadows.glsl implements the same rule.
+CubeFace cubeFace(glm::vec3 direction);
+
+// A right-handed camera at `position` looking along the face's axis: an ordinary, unmirrored view,
+// so front faces stay front faces and no row of it is negated (the design document's engine renders
+// cube faces upside down and undoes it that way).
+glm::mat4 pointFaceView(CubeFace face, glm::vec3 position);
+
+// A right-handed camera at `position` looking along `direction` (unit), with any stable up vector.
+glm::mat4 spotView(glm::vec3 position, glm::vec3 direction);
+
+// Near plane of spot and point shadow projections: 1% of the range keeps 32-bit and 24-bit depth
+// resolution at the far end while casters closer than that to the light are rare.
+float localShadowNearPlane(float range);
+
+// World-space texel size at distance 1 from the light plane: the tile spans 2 / projection[0][0]
+// there (twice the tangent of half the field of view).
+float texelSizeAtUnitDistance(const glm::mat4& projection, std::uint32_t tileSize);
+
+// Normal bias per unit distance from the light plane: texel size x filter size x sqrt 2 (a texel's
+// diagonal is the worst case), times the light's normal bias.
+float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, ShadowFilter filter,
+                           float normalBias);
+
+// Field of view of a point light's face tiles, widened so that normal bias and filter taps near a
+// face edge stay inside the tile: tan(fov / 2) = 1 + bias + filter size at distance 1.
+float pointFaceFieldOfView(std::uint32_t tileSize, ShadowFilter filter, float normalBias);
+
+// The document's FOV bias in degrees: atan(1 + bias + filter size) x 2 - 90.
+float pointFaceFovBiasDegrees(std::uint32_t tileSize, ShadowFilter filter, float normalBias);
+
+} // namespace penumbra::shadows

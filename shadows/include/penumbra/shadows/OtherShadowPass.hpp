@@ -1,0 +1,29 @@
+#pragma once
+
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/ShadowAtlas.hpp"
+#include "penumbra/shadows/ShadowCaster.hpp"
+#include "penumbra/shadows/ShadowCasterDraws.hpp"
+
+#include <cstdint>
+#include <span>
+
+namespace penumbra::shadows {
+
+// Renders the casters of a spot and point shadow plan: one pass over the other atlas, every tile in its
+// viewport and scissor with its light's slope-scale bias. Perspective views, so nothing is pancaked.
+class OtherShadowPass {
+public:
+    OtherShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
+
+    // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
+    // next record(), so submit `commands` before recording again.
+    std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const OtherShadowPlan& plan,
+                         std::span<const ShadowCaster> casters);
+
+private:
+    ShadowCasterDraws draws_;
+};
+
+} // namespace penumbra::shadows

@@ -1,0 +1,85 @@
+#pragma once
+
+#include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/LocalLightProjection.hpp"
+#include "penumbra/shadows/OtherShadowUniforms.hpp"
+#include "penumbra/shadows/ShadowAtlasLayout.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace penumbra::shadows {
+
+struct SpotShadowInput {
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit cone axis, away from the light
+    float range = 10.0f;
+    float outerAngle = 0.6f; // half-angle, radians
+    float strength = 1.0f;
+    float normalBias = 1.0f;
+    float slopeScaleBias = 0.0f;
+};
+
+struct PointShadowInput {
+    glm::vec3 position{0.0f};
+    float range = 10.0f;
+    float strength = 1.0f;
+    float normalBias = 1.0f;
+    float slopeScaleBias = 0.0f;
+};
+
+enum class LocalLightKind : std::uint8_t { Spot, Point };
+
+// One view a spot or point shadow is rendered from: an atlas tile, or one face of a cube map.
+struct LocalShadowView {
+    glm::mat4 viewProjection{1.0f};
+    float slopeScaleBias = 0.0f;
+    std::vector<std::uint32_t> casters; // indices into the caster bounds, the views' frustum culled
+};
+
+struct OtherAtlasTile {
+    LocalShadowView view;
+    std::uint32_t tile = 0;
+    rhi::Viewport viewport;
+};
+
+// CubeMap mode: a point light's six faces, rendered into layers 6 x cube + face of the cube array.
+struct ShadowCube {
+    std::uint32_t lightIndex = 0;
+    std::array<LocalShadowView, cubeFaceCount> faces;
+};
+
+struct OtherShadowNote {
+    LocalLightKind kind = LocalLightKind::Spot;
+    std::uint32_t lightIndex = 0;
+    std::string reason;
+};
+
+struct OtherShadowPlan {
+    ShadowAtlasLayout atlas{256, 0};
+    std::vector<OtherAtlasTile> tiles; // in tile order
+    std::vector<ShadowCube> cubes;     // CubeMap mode only
+    std::vector<int> spotTiles;        // per spot light: its tile, or -1 without shadows
+    std::vector<int> pointShadows;     // per point light: first of its six tiles (Atlas mode) or its cube, or -1
+    std::vector<OtherShadowNote> report;
+    OtherShadowUniforms uniforms;
+};
+
+// Plans the spot and point shadows of a frame: spot lights first, then point lights, take tiles of the
+// other atlas (one per spot light, six per point light in Atlas mode; up to 16) or, in CubeMap mode, a
+// cube each (up to maxShadowCubes). A light that casts no shadow (strength 0) or does not fit is listed in
+// the report with the reason, never an exception. Throws rhi::Error only for settings that fail validate().
+OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
+                                 std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,
+                                 std::span<const Bounds> casterBounds);
+
+// Casters whose box meets a perspective view's frustum (a square field of view `fov` radians, near..far).
+std::vector<std::uint32_t> cullCastersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
+                                                std::span<const Bounds> casterBounds);
+
+} // namespace penumbra::shadows

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+namespace penumbra::shadows {
+
+inline constexpr std::uint32_t maxOtherShadowTiles = 16;
+inline constexpr std::uint32_t maxShadowCubes = 4;
+
+// The lit shader's spot and point shadow block, std140, uploaded as is. GLSL (shaders/other_shadows.glsl):
+//   layout(std140) uniform OtherShadows {
+//       mat4 worldToAtlas[16]; // per tile: world -> (u, v, depth) x w in the other atlas (divide by w)
+//       vec4 tileBounds[16];   // per tile: first and last texel (x, y, x, y) that filter taps may read
+//       vec4 tileData[16];     // per tile: x = normal bias per unit distance from the light plane
+//       vec4 cubeData[4];      // per cube: x, y: window depth = (x * -z + y) / z at major-axis distance z,
+//                              // z = normal bias per unit distance, w = 1 / face size (texels)
+//       vec4 atlasSize;        // size, 1 / size, 0, 0
+//       ivec4 config;          // filter (0..3: PCF2x2..7x7), point mode (0 atlas, 1 cube map), 0, 0
+//   };
+struct OtherShadowUniforms {
+    std::array<glm::mat4, maxOtherShadowTiles> worldToAtlas{};
+    std::array<glm::vec4, maxOtherShadowTiles> tileBounds{};
+    std::array<glm::vec4, maxOtherShadowTiles> tileData{};
+    std::array<glm::vec4, maxShadowCubes> cubeData{};
+    glm::vec4 atlasSize{0.0f};
+    glm::ivec4 config{0};
+};
+
+static_assert(offsetof(OtherShadowUniforms, tileBounds) == 1024);
+static_assert(offsetof(OtherShadowUniforms, tileData) == 1280);
+static_assert(offsetof(OtherShadowUniforms, cubeData) == 1536);
+static_assert(offsetof(OtherShadowUniforms, atlasSize) == 1600);
+static_assert(offsetof(OtherShadowUniforms, config) == 1616);
+static_assert(sizeof(OtherShadowUniforms) == 1632);
+
+} // namespace penumbra::shadows

@@ -1,0 +1,68 @@
+#pragma once
+
+#include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/shadows/ShadowCaster.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <tuple>
+
+namespace penumbra::shadows {
+
+// The per-draw block of shadow_caster.glsl.
+struct ShadowCasterUniforms {
+    glm::mat4 worldToClip{1.0f};
+    glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
+    glm::vec4 ditherOrigin{0.0f};
+};
+static_assert(sizeof(ShadowCasterUniforms) == 96);
+
+// One shadow view's casters, drawn into the bound target's current viewport.
+struct ShadowViewDraw {
+    glm::mat4 viewProjection{1.0f};
+    float slopeScaleBias = 0.0f;
+    // Orthographic views pancake casters in front of the near plane onto it; perspective views must
+    // not (clamping would distort casters behind the light).
+    bool pancake = false;
+    // Cube-map faces are mirrored views (rhi::cubeFaceView): their front faces are clockwise in NDC.
+    bool mirrored = false;
+    glm::vec2 ditherOrigin{0.0f}; // added to gl_FragCoord: the dither's grid origin
+};
+
+// The shadow caster shaders and pipelines every shadow pass shares, and its per-draw uniforms.
+class ShadowCasterDraws {
+public:
+    ShadowCasterDraws(rhi::Device& device, const CasterVertexFormat& vertexFormat);
+
+    // Forget the previous record's uniforms; call once per command list, before the first draw.
+    void reset() { uniforms_.reset(); }
+
+    // Draws casters[indices] with the view; returns the draws issued. Throws rhi::Error for an index
+    // past the caster list.
+    std::uint32_t draw(rhi::CommandList& commands, rhi::Format depthFormat, const ShadowViewDraw& view,
+                       std::span<const std::uint32_t> indices, std::span<const ShadowCaster> casters);
+
+private:
+    struct Pipelines {
+        std::unique_ptr<rhi::Pipeline> opaque;
+        std::unique_ptr<rhi::Pipeline> alphaTested;
+    };
+    const Pipelines& pipelines(rhi::Format depthFormat, bool clamp, bool mirrored);
+
+    rhi::Device& device_;
+    CasterVertexFormat vertexFormat_;
+    std::unique_ptr<rhi::Shader> vertex_;
+    std::unique_ptr<rhi::Shader> opaqueFragment_;
+    std::unique_ptr<rhi::Shader> alphaFragment_;
+    std::map<std::tuple<rhi::Format, bool, bool>, Pipelines> pipelines_;
+    rhi::UniformArena uniforms_;
+};
+
+// Scissor rectangle of a whole-texel viewport.
+rhi::Rect scissorOf(const rhi::Viewport& viewport);
+
+} // namespace penumbra::shadows

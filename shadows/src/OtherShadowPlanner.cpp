@@ -1,0 +1,166 @@
+#include "penumbra/shadows/OtherShadowPlanner.hpp"
+
+#include "penumbra/shadows/AtlasMatrix.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <glm/trigonometric.hpp>
+
+namespace penumbra::shadows {
+namespace {
+
+std::uint32_t tilesNeeded(LocalLightKind kind, PointShadowMode mode)
+{
+    return kind == LocalLightKind::Spot ? 1 : mode == PointShadowMode::Atlas ? cubeFaceCount : 0;
+}
+
+// The tiles every light that casts shadows asks for, in planning order; a light gets its tiles only
+// when all of them fit.
+struct Reservation {
+    LocalLightKind kind;
+    std::uint32_t lightIndex;
+    std::uint32_t firstTile;
+};
+
+struct Reservations {
+    std::vector<Reservation> atlas;
+    std::vector<std::uint32_t> cubes; // point light indices, CubeMap mode
+    std::uint32_t tileCount = 0;
+};
+
+void reserve(Reservations& r, OtherShadowPlan& plan, LocalLightKind kind, std::uint32_t index, float strength,
+             PointShadowMode mode)
+{
+    if (!(strength > 0.0f)) {
+        plan.report.push_back({kind, index, fmt::format("shadow strength is {}", strength)});
+        return;
+    }
+    if (kind == LocalLightKind::Point && mode == PointShadowMode::CubeMap) {
+        if (r.cubes.size() == maxShadowCubes) {
+            plan.report.push_back({kind, index, fmt::format("all {} shadow cube maps are taken", maxShadowCubes)});
+            return;
+        }
+        plan.pointShadows[index] = static_cast<int>(r.cubes.size());
+        r.cubes.push_back(index);
+        return;
+    }
+    const std::uint32_t needed = tilesNeeded(kind, mode);
+    if (r.tileCount + needed > maxOtherShadowTiles) {
+        plan.report.push_back({kind, index, fmt::format("needs {} of the other atlas's {} tiles, {} are left", needed,
+                                                        maxOtherShadowTiles, maxOtherShadowTiles - r.tileCount)});
+        return;
+    }
+    (kind == LocalLightKind::Spot ? plan.spotTiles : plan.pointShadows)[index] = static_cast<int>(r.tileCount);
+    r.atlas.push_back({kind, index, r.tileCount});
+    r.tileCount += needed;
+}
+
+LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, float range, float slopeScaleBias,
+                           const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+{
+    return {conventions.perspective(fov, 1.0f, nearPlane, range) * view, slopeScaleBias,
+            cullCastersInFrustum(view, fov, nearPlane, range, casterBounds)};
+}
+
+glm::vec4 tileBounds(const ShadowAtlasLayout& atlas, std::uint32_t tile)
+{
+    const glm::vec2 first(atlas.tileOffset(tile));
+    const glm::vec2 last = first + static_cast<float>(atlas.tileSize() - 1);
+    return {first, last};
+}
+
+void addTile(OtherShadowPlan& plan, std::uint32_t tile, LocalShadowView view, float normalBiasScale,
+             const rhi::Conventions& conventions)
+{
+    plan.uniforms.worldToAtlas[tile] = worldToAtlas(view.viewProjection, tile, plan.atlas, conventions);
+    plan.uniforms.tileBounds[tile] = tileBounds(plan.atlas, tile);
+    plan.uniforms.tileData[tile] = {normalBiasScale, 0.0f, 0.0f, 0.0f};
+    plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});
+}
+
+void planSpot(OtherShadowPlan& plan, const OtherShadowSettings& other, const SpotShadowInput& spot,
+              std::uint32_t tile, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+{
+    const float fov = 2.0f * spot.outerAngle;
+    const float nearPlane = localShadowNearPlane(spot.range);
+    const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
+    const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), other.filter, spot.normalBias);
+    addTile(plan, tile,
+            shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range, spot.slopeScaleBias,
+                       conventions, casterBounds),
+            bias, conventions);
+}
+
+void planPointTiles(OtherShadowPlan& plan, const OtherShadowSettings& other, const PointShadowInput& point,
+                    std::uint32_t firstTile, const rhi::Conventions& conventions,
+                    std::span<const Bounds> casterBounds)
+{
+    const float fov = pointFaceFieldOfView(plan.atlas.tileSize(), other.filter, point.normalBias);
+    const float nearPlane = localShadowNearPlane(point.range);
+    const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, point.range);
+    const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), other.filter, point.normalBias);
+    for (std::uint32_t face = 0; face < cubeFaceCount; ++face)
+        addTile(plan, firstTile + face,
+                shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane, point.range,
+                           point.slopeScaleBias, conventions, casterBounds),
+                bias, conventions);
+}
+
+} // namespace
+
+std::vector<std::uint32_t> cullCastersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
+                                                std::span<const Bounds> casterBounds)
+{
+    const float t = std::tan(0.5f * fov);
+    std::vector<std::uint32_t> inside;
+    for (std::uint32_t i = 0; i < casterBounds.size(); ++i) {
+        // Culled when all 8 corners lie outside one of the six planes (view space, looking down -z).
+        std::array<int, 6> outside{};
+        for (const glm::vec3& corner : casterBounds[i].corners()) {
+            const glm::vec3 p = glm::vec3(view * glm::vec4(corner, 1.0f));
+            const float depth = -p.z;
+            outside[0] += depth < nearPlane;
+            outside[1] += depth > farPlane;
+            outside[2] += p.x > depth * t;
+            outside[3] += -p.x > depth * t;
+            outside[4] += p.y > depth * t;
+            outside[5] += -p.y > depth * t;
+        }
+        if (std::none_of(outside.begin(), outside.end(), [](int n) { return n == 8; }))
+            inside.push_back(i);
+    }
+    return inside;
+}
+
+OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
+                                 std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,
+                                 std::span<const Bounds> casterBounds)
+{
+    validate(settings);
+    const OtherShadowSettings& other = settings.other;
+    OtherShadowPlan plan;
+    plan.spotTiles.assign(spots.size(), -1);
+    plan.pointShadows.assign(points.size(), -1);
+    Reservations r;
+    for (std::uint32_t i = 0; i < spots.size(); ++i)
+        reserve(r, plan, LocalLightKind::Spot, i, spots[i].strength, other.pointMode);
+    for (std::uint32_t i = 0; i < points.size(); ++i)
+        reserve(r, plan, LocalLightKind::Point, i, points[i].strength, other.pointMode);
+
+    plan.atlas = ShadowAtlasLayout(other.atlasSize, r.tileCount);
+    for (const Reservation& reservation : r.atlas) {
+        if (reservation.kind == LocalLightKind::Spot)
+            planSpot(plan, other, spots[reservation.lightIndex], reservation.firstTile, conventions, casterBounds);
+        else
+            planPointTiles(plan, other, points[reservation.lightIndex], reservation.firstTile, conventions,
+                           casterBounds);
+    }
+
+    const auto atlasSize = static_cast<float>(other.atlasSize);
+    plan.uniforms.atlasSize = {atlasSize, 1.0f / atlasSize, 0.0f, 0.0f};
+    plan.uniforms.config = {static_cast<int>(other.filter), static_cast<int>(other.pointMode), 0, 0};
+    return plan;
+}
+
+} // namespace penumbra::shadows

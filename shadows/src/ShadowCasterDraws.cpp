@@ -1,0 +1,88 @@
+#include "penumbra/shadows/ShadowCasterDraws.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/shaders/ShaderLibrary.hpp"
+
+#include <fmt/format.h>
+
+namespace penumbra::shadows {
+namespace {
+
+constexpr std::uint32_t kDrawBinding = 0;
+
+} // namespace
+
+rhi::Rect scissorOf(const rhi::Viewport& v)
+{
+    return {static_cast<std::int32_t>(v.x), static_cast<std::int32_t>(v.y), static_cast<std::uint32_t>(v.width),
+            static_cast<std::uint32_t>(v.height)};
+}
+
+ShadowCasterDraws::ShadowCasterDraws(rhi::Device& device, const CasterVertexFormat& vertexFormat)
+    : device_(device), vertexFormat_(vertexFormat),
+      vertex_(device.createShader(shaders::load("shadow_caster.vert"))),
+      opaqueFragment_(device.createShader(shaders::load("shadow_caster_opaque.frag"))),
+      alphaFragment_(device.createShader(shaders::load("shadow_caster_alpha.frag"))),
+      uniforms_(device, "shadow caster draws")
+{
+}
+
+const ShadowCasterDraws::Pipelines& ShadowCasterDraws::pipelines(rhi::Format depthFormat, bool clamp, bool mirrored)
+{
+    const auto key = std::make_tuple(depthFormat, clamp, mirrored);
+    auto found = pipelines_.find(key);
+    if (found != pipelines_.end())
+        return found->second;
+    rhi::PipelineDesc desc;
+    desc.vertex = vertex_.get();
+    desc.vertexLayout = {{{vertexFormat_.stride, false}},
+                         {{0, rhi::VertexFormat::Float3, vertexFormat_.positionOffset, 0},
+                          {2, rhi::VertexFormat::Float2, vertexFormat_.uvOffset, 0}}};
+    // Casters render their light-facing side: back faces of a mirrored view are the world's front faces.
+    desc.cull = mirrored ? rhi::CullMode::Front : rhi::CullMode::Back;
+    desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer, .clamp = clamp};
+    desc.depthFormat = depthFormat;
+    Pipelines created;
+    desc.fragment = opaqueFragment_.get();
+    desc.debugName = "shadow casters (opaque)";
+    created.opaque = device_.createPipeline(desc);
+    desc.fragment = alphaFragment_.get();
+    desc.debugName = "shadow casters (clip, dither)";
+    created.alphaTested = device_.createPipeline(desc);
+    return pipelines_.emplace(key, std::move(created)).first->second;
+}
+
+std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format depthFormat, const ShadowViewDraw& view,
+                                      std::span<const std::uint32_t> indices, std::span<const ShadowCaster> casters)
+{
+    const bool depthClamp = view.pancake && device_.capabilities().depthClamp;
+    const float pancakeInShader = view.pancake && !depthClamp ? 1.0f : 0.0f;
+    const Pipelines& pipelines = this->pipelines(depthFormat, depthClamp, view.mirrored);
+    const rhi::DepthBias bias{0.0f, view.slopeScaleBias, 0.0f};
+    const glm::vec4 dither(view.ditherOrigin, 0.0f, 0.0f);
+    const rhi::Pipeline* bound = nullptr;
+    for (const std::uint32_t index : indices) {
+        if (index >= casters.size())
+            throw rhi::Error(
+                fmt::format("shadow plan names caster {}, but {} casters were given", index, casters.size()));
+        const ShadowCaster& caster = casters[index];
+        const rhi::Pipeline* pipeline =
+            caster.mode == ShadowCasterMode::Opaque ? pipelines.opaque.get() : pipelines.alphaTested.get();
+        if (pipeline != bound) {
+            commands.bindPipeline(*pipeline);
+            commands.setDepthBias(bias);
+            bound = pipeline;
+        }
+        const ShadowCasterUniforms draw{view.viewProjection * caster.model,
+                                        {caster.alpha, caster.alphaCutoff, static_cast<float>(caster.mode),
+                                         pancakeInShader},
+                                        dither};
+        rhi::bindUniform(commands, kDrawBinding, uniforms_.push(draw));
+        commands.bindVertexBuffer(0, *caster.vertices);
+        commands.bindIndexBuffer(*caster.indices, rhi::IndexType::UInt32);
+        commands.drawIndexed(caster.indexCount);
+    }
+    return static_cast<std::uint32_t>(indices.size());
+}
+
+} // namespace penumbra::shadows
