@@ -17,7 +17,11 @@ scene::Scene namedScene(const std::string& name)
         return scene::makeShadowTestScene();
     if (name == "key-light")
         return scene::makeSingleLightScene();
-    throw rhi::Error(fmt::format("no scene named '{}'; known scenes: test, key-light", name));
+    if (name == "mixed")
+        return scene::makeMixedLightsScene();
+    if (name == "room")
+        return scene::makePointLightRoomScene();
+    throw rhi::Error(fmt::format("no scene named '{}'; known scenes: test, key-light, mixed, room", name));
 }
 
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
@@ -38,6 +42,11 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
     pictures.atlasDepth = rhi::readDepth(*device, renderer.atlas().texture());
     pictures.atlas = render::atlasPicture(pictures.atlasDepth, device->conventions());
     pictures.atlasLightDepth = render::lightDepthFraction(pictures.atlasDepth, device->conventions());
+    pictures.otherAtlasDepth = rhi::readDepth(*device, renderer.otherAtlas().texture());
+    const std::vector<render::PerspectiveTile> tiles = render::perspectiveTiles(renderer.otherPlan());
+    pictures.otherAtlas = render::atlasPicture(pictures.otherAtlasDepth, device->conventions(), tiles);
+    pictures.otherAtlasLightDepth =
+        render::lightDepthFraction(pictures.otherAtlasDepth, device->conventions(), tiles);
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;
@@ -49,6 +58,8 @@ void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictur
     writePng(folder / "atlas.png", pictures.atlas);
     writeExr(folder / "atlas.exr", pictures.atlasDepth);
     writePng(folder / "cascades.png", pictures.cascades);
+    writePng(folder / "other-atlas.png", pictures.otherAtlas);
+    writeExr(folder / "other-atlas.exr", pictures.otherAtlasDepth);
 }
 
 } // namespace penumbra::apps

@@ -21,19 +21,23 @@ struct ShadowPictures {
     rhi::Image atlas;          // render::atlasPicture of atlasDepth
     rhi::DepthImage atlasDepth; // raw window depth as read back
     std::vector<float> atlasLightDepth; // render::lightDepthFraction: comparable across conventions
+    rhi::Image otherAtlas;               // the spot and point shadow atlas, likewise
+    rhi::DepthImage otherAtlasDepth;
+    std::vector<float> otherAtlasLightDepth;
     render::FrameStats stats;
     std::vector<std::string> notes;
 };
 
-// The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights) and "key-light"
-// (scene::makeSingleLightScene). Unknown names throw rhi::Error listing these.
+// The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
+// (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene) and "room"
+// (scene::makePointLightRoomScene). Unknown names throw rhi::Error listing these.
 scene::Scene namedScene(const std::string& name);
 
 // Throws rhi::Error when the device reports a validation or debug message.
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame);
 
-// lit.png, atlas.png, atlas.exr and cascades.png in `folder`.
+// lit.png, atlas.png, atlas.exr, cascades.png, other-atlas.png and other-atlas.exr in `folder`.
 void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictures& pictures);
 
 } // namespace penumbra::apps

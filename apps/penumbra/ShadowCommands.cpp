@@ -93,8 +93,8 @@ void addRenderCommand(CLI::App& app)
         ->check(configurationValidator());
     render->add_option("-o,--out", options->out, "Folder that receives the pictures");
     render->add_option("--settings", options->settings, "Shadow settings JSON file")->check(CLI::ExistingFile);
-    render->add_option("--scene", options->scene, "test (four lights) or key-light (the first light only)")
-        ->check(CLI::IsMember({"test", "key-light"}));
+    render->add_option("--scene", options->scene, "test (four lights), key-light (the first light only), mixed (key, spot and point lights), room (point lights in a room)")
+        ->check(CLI::IsMember({"test", "key-light", "mixed", "room"}));
     render->add_option("--width", options->width, "Width in pixels")->check(CLI::Range(1u, 8192u));
     render->add_option("--height", options->height, "Height in pixels")->check(CLI::Range(1u, 8192u));
     render->callback([options] {

@@ -5,21 +5,43 @@
 
 namespace penumbra::render {
 
-std::vector<float> lightDepthFraction(const rhi::DepthImage& atlas, const rhi::Conventions& conventions)
+std::vector<PerspectiveTile> perspectiveTiles(const shadows::OtherShadowPlan& plan)
+{
+    std::vector<PerspectiveTile> tiles;
+    for (const shadows::OtherAtlasTile& tile : plan.tiles)
+        tiles.push_back({tile.viewport, tile.view.projection});
+    return tiles;
+}
+
+std::vector<float> lightDepthFraction(const rhi::DepthImage& atlas, const rhi::Conventions& conventions,
+                                      std::span<const PerspectiveTile> perspectiveTiles)
 {
     const float near = conventions.nearDepth();
     const float far = conventions.farDepth();
     std::vector<float> fraction(atlas.depth.size());
     for (std::size_t i = 0; i < atlas.depth.size(); ++i)
         fraction[i] = std::clamp((atlas.depth[i] - far) / (near - far), 0.0f, 1.0f);
+    for (const PerspectiveTile& tile : perspectiveTiles) {
+        const float nearView = conventions.viewDepth(tile.projection, near);
+        const float farView = conventions.viewDepth(tile.projection, far);
+        const auto x0 = static_cast<std::size_t>(tile.viewport.x);
+        const auto y0 = static_cast<std::size_t>(tile.viewport.y);
+        for (std::size_t y = y0; y < y0 + static_cast<std::size_t>(tile.viewport.height); ++y)
+            for (std::size_t x = x0; x < x0 + static_cast<std::size_t>(tile.viewport.width); ++x) {
+                const std::size_t i = y * atlas.width + x;
+                const float depth = conventions.viewDepth(tile.projection, atlas.depth[i]);
+                fraction[i] = std::clamp((farView - depth) / (farView - nearView), 0.0f, 1.0f);
+            }
+    }
     return fraction;
 }
 
-rhi::Image atlasPicture(const rhi::DepthImage& atlas, const rhi::Conventions& conventions)
+rhi::Image atlasPicture(const rhi::DepthImage& atlas, const rhi::Conventions& conventions,
+                        std::span<const PerspectiveTile> perspectiveTiles)
 {
     rhi::Image picture{atlas.width, atlas.height, rhi::Format::RGBA8, {}};
     picture.bytes.resize(std::size_t(atlas.width) * atlas.height * 4);
-    const std::vector<float> fraction = lightDepthFraction(atlas, conventions);
+    const std::vector<float> fraction = lightDepthFraction(atlas, conventions, perspectiveTiles);
     for (std::size_t i = 0; i < fraction.size(); ++i) {
         const float nearness = fraction[i];
         const auto grey = static_cast<std::byte>(std::lround(nearness * 255.0f));

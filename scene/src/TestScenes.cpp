@@ -156,6 +156,18 @@ DirectionalLight makeLight(std::size_t index)
             .direction = lightDirection(glm::radians(kLightPitchDegrees), glm::radians(yaw))};
 }
 
+SpotLight aimedSpot(const char* name, glm::vec3 color, glm::vec3 position, glm::vec3 target, float range)
+{
+    return {.name = name,
+            .color = color,
+            .intensity = 30.0f,
+            .position = position,
+            .direction = glm::normalize(target - position),
+            .range = range,
+            .innerAngle = glm::radians(20.0f),
+            .outerAngle = glm::radians(32.0f)};
+}
+
 } // namespace
 
 Scene makeShadowTestScene()
@@ -170,6 +182,54 @@ Scene makeSingleLightScene()
 {
     Scene scene = makeGeometry();
     scene.lights.push_back(makeLight(0));
+    return scene;
+}
+
+Scene makeMixedLightsScene()
+{
+    Scene scene = makeGeometry();
+    DirectionalLight key = makeLight(0);
+    key.intensity = 0.5f;
+    scene.lights.push_back(key);
+    scene.spotLights = {
+        aimedSpot("spot warm", {1.0f, 0.75f, 0.5f}, {-4.0f, 6.0f, -4.0f}, {-4.0f, 0.0f, 1.0f}, 14.0f),
+        aimedSpot("spot teal", {0.4f, 0.9f, 1.0f}, {6.0f, 7.0f, -1.0f}, {4.0f, 0.0f, 2.0f}, 14.0f),
+        aimedSpot("spot white", {1.0f, 1.0f, 1.0f}, {0.5f, 8.0f, 3.0f}, {0.0f, 0.0f, 2.0f}, 14.0f),
+    };
+    scene.pointLights = {
+        {.name = "bulb sphere", .color = {1.0f, 0.9f, 0.6f}, .intensity = 8.0f, .position = {3.0f, 2.5f, -4.5f},
+         .range = 9.0f},
+        {.name = "bulb centre", .color = {0.9f, 0.6f, 1.0f}, .intensity = 8.0f, .position = {-1.5f, 2.2f, 4.5f},
+         .range = 9.0f},
+    };
+    return scene;
+}
+
+Scene makePointLightRoomScene()
+{
+    Scene scene;
+    for (std::uint32_t id = 0; id < static_cast<std::uint32_t>(MaterialId::Count); ++id)
+        scene.addMaterial(material(static_cast<MaterialId>(id)));
+    const auto addBox = [&](const char* name, glm::vec3 halfExtents, glm::vec3 centre, MaterialId id) {
+        scene.addObject(name, scene.addMesh(makeBox(halfExtents)), static_cast<std::uint32_t>(id),
+                        glm::translate(glm::mat4(1.0f), centre));
+    };
+    addBox("floor", {5.2f, 0.1f, 5.2f}, {0.0f, -0.1f, 0.0f}, MaterialId::Ground);
+    addBox("ceiling", {5.2f, 0.1f, 5.2f}, {0.0f, 4.1f, 0.0f}, MaterialId::Ground);
+    addBox("wall -x", {0.1f, 2.0f, 5.0f}, {-5.1f, 2.0f, 0.0f}, MaterialId::White);
+    addBox("wall +x", {0.1f, 2.0f, 5.0f}, {5.1f, 2.0f, 0.0f}, MaterialId::White);
+    addBox("wall -z", {5.2f, 2.0f, 0.1f}, {0.0f, 2.0f, -5.1f}, MaterialId::White);
+    addBox("wall +z", {5.2f, 2.0f, 0.1f}, {0.0f, 2.0f, 5.1f}, MaterialId::White);
+    addBox("crate", {0.6f, 0.6f, 0.6f}, {-1.5f, 0.6f, 2.0f}, MaterialId::Red);
+    addBox("floating cube", {0.4f, 0.4f, 0.4f}, {2.0f, 2.6f, 2.0f}, MaterialId::Blue);
+    scene.addObject("pillar", scene.addMesh(makeCylinder(0.3f, 2.0f, kCylinderSegments)),
+                    static_cast<std::uint32_t>(MaterialId::Green),
+                    glm::translate(glm::mat4(1.0f), {1.8f, 2.0f, -1.0f}));
+    scene.pointLights = {
+        {.name = "inside", .intensity = 6.0f, .position = {0.5f, 2.0f, 0.3f}, .range = 14.0f},
+        {.name = "outside", .intensity = 6.0f, .position = {0.0f, 2.0f, 5.6f}, .range = 8.0f},
+    };
+    scene.camera = lookAt({0.0f, 3.0f, -4.6f}, {0.0f, 0.8f, 3.0f}, glm::radians(75.0f));
     return scene;
 }
 

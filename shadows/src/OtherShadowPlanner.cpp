@@ -59,7 +59,8 @@ void reserve(Reservations& r, OtherShadowPlan& plan, LocalLightKind kind, std::u
 LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, float range, float slopeScaleBias,
                            const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
-    return {conventions.perspective(fov, 1.0f, nearPlane, range) * view, slopeScaleBias,
+    const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, range);
+    return {projection, projection * view, slopeScaleBias,
             cullCastersInFrustum(view, fov, nearPlane, range, casterBounds)};
 }
 

@@ -19,4 +19,14 @@ Scene makeShadowTestScene();
 // The same geometry, materials and camera with only the first ("key") light.
 Scene makeSingleLightScene();
 
+// The same geometry and camera lit by the key light at half intensity, three spot lights aimed at
+// objects and two point lights among them: 3 + 2 x 6 = 15 tiles of the other atlas.
+Scene makeMixedLightsScene();
+
+// A closed 10 x 4 x 10 room (floor, ceiling and walls are boxes 0.2 thick, outside the interior
+// x, z in [-5, 5], y in [0, 4]) with a pillar, a floating cube and a crate, lit by the point light
+// "inside" at (0.5, 2, 0.3); the point light "outside" sits 0.4 behind the +z wall, shining at it.
+// The camera stands inside near the -z wall looking at the +z wall.
+Scene makePointLightRoomScene();
+
 } // namespace penumbra::scene

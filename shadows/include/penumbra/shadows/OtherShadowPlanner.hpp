@@ -37,6 +37,7 @@ enum class LocalLightKind : std::uint8_t { Spot, Point };
 
 // One view a spot or point shadow is rendered from: an atlas tile, or one face of a cube map.
 struct LocalShadowView {
+    glm::mat4 projection{1.0f}; // the convention's perspective
     glm::mat4 viewProjection{1.0f};
     float slopeScaleBias = 0.0f;
     std::vector<std::uint32_t> casters; // indices into the caster bounds, the views' frustum culled
