@@ -45,8 +45,7 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
     pictures.otherAtlasDepth = rhi::readDepth(*device, renderer.otherAtlas().texture());
     const std::vector<render::PerspectiveTile> tiles = render::perspectiveTiles(renderer.otherPlan());
     pictures.otherAtlas = render::atlasPicture(pictures.otherAtlasDepth, device->conventions(), tiles);
-    pictures.otherAtlasLightDepth =
-        render::lightDepthFraction(pictures.otherAtlasDepth, device->conventions(), tiles);
+    pictures.otherAtlasNearness = render::lightDepthFraction(pictures.otherAtlasDepth, device->conventions());
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;

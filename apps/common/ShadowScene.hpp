@@ -21,9 +21,12 @@ struct ShadowPictures {
     rhi::Image atlas;          // render::atlasPicture of atlasDepth
     rhi::DepthImage atlasDepth; // raw window depth as read back
     std::vector<float> atlasLightDepth; // render::lightDepthFraction: comparable across conventions
-    rhi::Image otherAtlas;               // the spot and point shadow atlas, likewise
+    rhi::Image otherAtlas;               // the spot and point shadow atlas in linear light depth
     rhi::DepthImage otherAtlasDepth;
-    std::vector<float> otherAtlasLightDepth;
+    // Window depth as a fraction from the far (0) to the near (1) plane: perspective window depth is the
+    // same function of view depth in every depth range (reversed: 1 minus it), so this compares across
+    // conventions with uniform rounding, where linear depth would magnify it towards the far plane.
+    std::vector<float> otherAtlasNearness;
     render::FrameStats stats;
     std::vector<std::string> notes;
 };

@@ -199,7 +199,7 @@ Scene makeMixedLightsScene()
     scene.pointLights = {
         {.name = "bulb sphere", .color = {1.0f, 0.9f, 0.6f}, .intensity = 8.0f, .position = {3.0f, 2.5f, -4.5f},
          .range = 9.0f},
-        {.name = "bulb centre", .color = {0.9f, 0.6f, 1.0f}, .intensity = 8.0f, .position = {-1.5f, 2.2f, 4.5f},
+        {.name = "bulb centre", .color = {0.9f, 0.6f, 1.0f}, .intensity = 8.0f, .position = {-1.5f, 2.5f, 4.5f},
          .range = 9.0f},
     };
     return scene;
