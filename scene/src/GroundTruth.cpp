@@ -4,6 +4,7 @@
 #include <glm/matrix.hpp>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace penumbra::scene {
@@ -28,6 +29,37 @@ glm::vec2 interpolatedUv(const Scene& scene, const Hit& hit)
     const std::uint32_t* index = &mesh.indices[3 * std::size_t(hit.triangle)];
     return (1.0f - hit.barycentrics.x - hit.barycentrics.y) * mesh.vertices[index[0]].uv +
            hit.barycentrics.x * mesh.vertices[index[1]].uv + hit.barycentrics.y * mesh.vertices[index[2]].uv;
+}
+
+struct LightRay {
+    glm::vec3 direction; // unit, towards the light
+    float distance;      // to the light
+};
+
+// Shadow rays from every sample (offset along its normal) towards the light `rayTo` gives for that origin.
+template <typename RayTo>
+LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                    float normalOffset, RayTo rayTo)
+{
+    if (shadowRays.kind() != RayKind::Shadow)
+        throw std::invalid_argument("traceLightVisibility needs a RayCaster built with RayKind::Shadow");
+    LightVisibilityMask mask{gbuffer.width, gbuffer.height,
+                             std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background)};
+    for (std::size_t i = 0; i < gbuffer.samples.size(); ++i) {
+        const GBufferSample& sample = gbuffer.samples[i];
+        if (!sample.hit())
+            continue;
+        const glm::vec3 origin = sample.position + normalOffset * sample.normal;
+        const LightRay ray = rayTo(origin);
+        if (!scene.materialOf(scene.objects[sample.object]).receiveShadows)
+            mask.pixels[i] = LightVisibility::NotReceiving;
+        else if (glm::dot(sample.normal, ray.direction) <= 0.0f)
+            mask.pixels[i] = LightVisibility::FacingAway;
+        else
+            mask.pixels[i] = shadowRays.occluded(origin, ray.direction, ray.distance) ? LightVisibility::Shadowed
+                                                                                      : LightVisibility::Lit;
+    }
+    return mask;
 }
 
 } // namespace
@@ -79,25 +111,21 @@ CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const C
 LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                          const DirectionalLight& light, float normalOffset)
 {
-    if (shadowRays.kind() != RayKind::Shadow)
-        throw std::invalid_argument("traceLightVisibility needs a RayCaster built with RayKind::Shadow");
-    LightVisibilityMask mask{gbuffer.width, gbuffer.height,
-                             std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background)};
     const glm::vec3 towardsLight = -glm::normalize(light.direction);
-    for (std::size_t i = 0; i < gbuffer.samples.size(); ++i) {
-        const GBufferSample& sample = gbuffer.samples[i];
-        if (!sample.hit())
-            continue;
-        if (!scene.materialOf(scene.objects[sample.object]).receiveShadows)
-            mask.pixels[i] = LightVisibility::NotReceiving;
-        else if (glm::dot(sample.normal, towardsLight) <= 0.0f)
-            mask.pixels[i] = LightVisibility::FacingAway;
-        else
-            mask.pixels[i] = shadowRays.occluded(sample.position + normalOffset * sample.normal, towardsLight)
-                                 ? LightVisibility::Shadowed
-                                 : LightVisibility::Lit;
-    }
-    return mask;
+    return traceVisibility(scene, shadowRays, gbuffer, normalOffset, [&](glm::vec3) {
+        return LightRay{towardsLight, std::numeric_limits<float>::infinity()};
+    });
+}
+
+LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
+                                                   const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
+                                                   float normalOffset)
+{
+    return traceVisibility(scene, shadowRays, gbuffer, normalOffset, [&](glm::vec3 origin) {
+        const glm::vec3 toLight = lightPosition - origin;
+        const float distance = glm::length(toLight);
+        return LightRay{toLight / distance, distance};
+    });
 }
 
 } // namespace penumbra::scene

@@ -1,4 +1,5 @@
-// The GPU shadow mask of the key light against a CPU ray cast of the same pixels (scene::GroundTruth).
+// The GPU shadow masks of the key light, a spot light and point lights against a CPU ray cast of the same
+// pixels (scene::GroundTruth).
 #include "GpuTesting.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
@@ -34,7 +35,7 @@ struct ShadowMask {
 };
 
 class ShadowMaskTest : public GpuTest {
-protected:
+public:
     ShadowMask renderMask(const scene::Scene& scene, float& cascade1TexelSize)
     {
         render::FrameDesc frame;
@@ -45,7 +46,8 @@ protected:
         renderer.render(scene.camera, frame);
         ShadowMask mask;
         mask.shadowed = rhi::readTexture(*device, renderer.litImage());
-        cascade1TexelSize = renderer.plan().lights.at(0).cascades.at(1).fit.texelSize;
+        if (!renderer.plan().lights.empty())
+            cascade1TexelSize = renderer.plan().lights.at(0).cascades.at(1).fit.texelSize;
         scene::Scene unshadowedScene = scene;
         for (scene::Material& material : unshadowedScene.materials)
             material.receiveShadows = false;
@@ -87,6 +89,96 @@ float footprintDistance(glm::vec3 p, glm::vec2 min, glm::vec2 max)
 {
     const glm::vec2 q{p.x, p.z};
     return glm::length(glm::max(glm::max(min - q, q - max), glm::vec2(0.0f)));
+}
+
+struct Agreement {
+    std::size_t compared = 0;
+    std::size_t agreeing = 0;
+    std::size_t litCompared = 0;
+    std::size_t acne = 0;
+};
+
+// Pixels away from shadow and silhouette edges where the light reaches enough to decide.
+Agreement compareWithTruth(const ShadowMask& mask, const scene::CpuGBuffer& gbuffer,
+                           const scene::LightVisibilityMask& truth)
+{
+    Agreement a;
+    for (std::uint32_t y = 0; y < kHeight; ++y)
+        for (std::uint32_t x = 0; x < kWidth; ++x) {
+            const scene::LightVisibility expected = truth.at(x, y);
+            if ((expected != scene::LightVisibility::Lit && expected != scene::LightVisibility::Shadowed) ||
+                !mask.decided(x, y) || nearEdge(gbuffer, truth, x, y))
+                continue;
+            const bool shadowed = mask.inShadow(x, y);
+            ++a.compared;
+            a.agreeing += shadowed == (expected == scene::LightVisibility::Shadowed);
+            if (expected == scene::LightVisibility::Lit) {
+                ++a.litCompared;
+                a.acne += shadowed;
+            }
+        }
+    return a;
+}
+
+// The mixed scene with one spot or point light kept, brightened to decide most of what it reaches; the
+// dithered caster made solid, as the ray cast counts it (its shadow is a stipple of about 60%).
+scene::Scene oneLocalLight(bool spot, std::size_t index)
+{
+    scene::Scene scene = scene::makeMixedLightsScene();
+    scene.lights.clear();
+    if (spot) {
+        scene.spotLights = {scene.spotLights[index]};
+        scene.spotLights[0].intensity *= 4.0f;
+        scene.pointLights.clear();
+    } else {
+        scene.pointLights = {scene.pointLights[index]};
+        scene.pointLights[0].intensity *= 6.0f;
+        scene.spotLights.clear();
+    }
+    for (scene::Material& material : scene.materials)
+        if (material.caster == scene::CasterMode::Dither)
+            material.caster = scene::CasterMode::On;
+    return scene;
+}
+
+// One spot or point light alone (no ambient, no other light) against the ray cast towards its position.
+void checkPositionalLight(ShadowMaskTest& test, const scene::Scene& scene, const std::string& name,
+                          glm::vec3 position, const ShadowMask& mask)
+{
+    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
+    const scene::RayCaster shadowRays(scene);
+    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    const scene::LightVisibilityMask truth = scene::tracePositionalLightVisibility(scene, shadowRays, gbuffer, position);
+    const Agreement a = compareWithTruth(mask, gbuffer, truth);
+    const double agreement = double(a.agreeing) / double(a.compared);
+    std::printf("[ truth    ] %s %s: %zu of %zu pixels agree (%.3f%%); acne %zu of %zu lit\n", configuration().c_str(),
+                name.c_str(), a.agreeing, a.compared, 100.0 * agreement, a.acne, a.litCompared);
+    test.RecordProperty(name + ".agreement", std::to_string(agreement));
+    EXPECT_GT(a.compared, std::size_t(kWidth) * kHeight / 50) << name << ": the light must reach a good part of the picture";
+    EXPECT_GE(agreement, 0.99) << name;
+    EXPECT_LE(a.acne, a.litCompared / 1000) << name << ": lit surfaces shadowed away from shadow edges";
+    if (::testing::Test::HasFailure())
+        ADD_FAILURE() << "pictures: " << savePicture(mask.shadowed, "truth-" + configuration() + "-" + name + "-shadowed")
+                      << ", " << savePicture(mask.unshadowed, "truth-" + configuration() + "-" + name + "-unshadowed");
+}
+
+TEST_F(ShadowMaskTest, SpotShadowAgreesWithTheRayCast)
+{
+    scene::Scene scene = oneLocalLight(true, 2);
+    scene.spotLights[0].outerAngle = 0.9f; // a wide cone over several objects
+    float texel = 0.0f;
+    checkPositionalLight(*this, scene, "spot", scene.spotLights[0].position, renderMask(scene, texel));
+}
+
+TEST_F(ShadowMaskTest, PointShadowsAgreeWithTheRayCast)
+{
+    const scene::Scene mixed = oneLocalLight(false, 1);
+    float texel = 0.0f;
+    checkPositionalLight(*this, mixed, "point", mixed.pointLights[0].position, renderMask(mixed, texel));
+
+    scene::Scene room = scene::makePointLightRoomScene();
+    room.pointLights.pop_back();
+    checkPositionalLight(*this, room, "room", room.pointLights[0].position, renderMask(room, texel));
 }
 
 TEST_F(ShadowMaskTest, ShadowMapAgreesWithTheRayCastAndHasNoAcneOrPeterPanning)

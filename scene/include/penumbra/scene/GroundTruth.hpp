@@ -90,4 +90,9 @@ inline constexpr float kShadowRayOffset = 1e-3f;
 LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                          const DirectionalLight& light, float normalOffset = kShadowRayOffset);
 
+// The same for a spot or point light at `lightPosition`: rays end at the light.
+LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
+                                                   const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
+                                                   float normalOffset = kShadowRayOffset);
+
 } // namespace penumbra::scene
