@@ -1,7 +1,6 @@
 #include "CubeScene.hpp"
 
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/rhi/Image.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <algorithm>
@@ -98,7 +97,8 @@ void main() { outColor = vColor; }
 void CubeFaceRenderer::render(const rhi::Texture& cubeTexture, std::uint32_t cube, const glm::vec3& centre,
                               std::span<const CubeVertex> triangles)
 {
-    const std::uint64_t stride = device_.capabilities().uniformBufferOffsetAlignment;
+    const std::uint64_t alignment = device_.capabilities().uniformBufferOffsetAlignment;
+    const std::uint64_t stride = (sizeof(glm::mat4) + alignment - 1) / alignment * alignment;
     auto uniforms = device_.createBuffer({.size = 6 * stride, .usage = rhi::BufferUsage::Uniform});
     auto vertices = device_.createBuffer({.size = triangles.size_bytes(), .usage = rhi::BufferUsage::Vertex});
     vertices->write(0, std::as_bytes(triangles));

@@ -2,6 +2,7 @@
 
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/Image.hpp"
 
 #include <cstdint>
 #include <glm/vec2.hpp>
