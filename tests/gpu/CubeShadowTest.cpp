@@ -14,7 +14,7 @@ constexpr std::uint32_t kFaceSize = 32;
 constexpr float kNear = 0.1f, kFar = 10.0f;
 const glm::vec3 kLight(-1.0f, 2.0f, 0.5f);
 
-// Two point-light cubes in one D32F cube array (12 layers), lit from kLight. Cube 0: on every
+// Two point-light cubes in one depth cube array (12 layers; each depth format), lit from kLight. Cube 0: on every
 // face an occluder plane at distance 1 covers the half b > 0; cube 1: at distance 2, the half c > 0.
 struct Occluders {
     float distance;
@@ -36,16 +36,26 @@ bool occluded(const Occluders& o, float b, float c)
     return b > o.bRange[0] && b < o.bRange[1] && c > o.cRange[0] && c < o.cRange[1];
 }
 
-class CubeShadowTest : public GpuTest {
+// How far a stored depth may be from the exact window depth: rounding to the format.
+float depthTolerance(rhi::Format format)
+{
+    switch (format) {
+    case rhi::Format::D16: return 1.0f / 65535.0f;
+    case rhi::Format::D24S8: return 1.0f / 16777215.0f;
+    default: return 1e-6f;
+    }
+}
+
+class CubeShadowTest : public GpuTest, public ::testing::WithParamInterface<rhi::Format> {
 protected:
     void SetUp() override
     {
         GpuTest::SetUp();
         map = device->createTexture({.width = kFaceSize, .height = kFaceSize, .layers = 12, .cube = true,
-                                     .format = rhi::Format::D32F,
+                                     .format = GetParam(),
                                      .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
                                      .debugName = "point shadow cubes"});
-        CubeFaceRenderer renderer(*device, rhi::Format::D32F, kNear, kFar);
+        CubeFaceRenderer renderer(*device, GetParam(), kNear, kFar);
         for (std::uint32_t cube = 0; cube < 2; ++cube)
             renderer.render(*map, cube, kLight, occluderScene(kOccluders[cube]));
         projection = renderer.projection();
@@ -55,7 +65,7 @@ protected:
     glm::mat4 projection{1.0f};
 };
 
-TEST_F(CubeShadowTest, FaceDepthReadbacksMatchTheCubeSamplingTable)
+TEST_P(CubeShadowTest, FaceDepthReadbacksMatchTheCubeSamplingTable)
 {
     const rhi::Conventions& conventions = device->conventions();
     const float margin = 1.5f * 2.0f / kFaceSize;
@@ -72,13 +82,13 @@ TEST_F(CubeShadowTest, FaceDepthReadbacksMatchTheCubeSamplingTable)
                     if (std::abs(b) < margin || std::abs(c) < margin)
                         continue; // the occluders' edges
                     const float expected = occluded(kOccluders[cube], b, c) ? occluderDepth : conventions.clearDepth();
-                    wrong += std::abs(depth.at(x, y) - expected) > 1e-6f;
+                    wrong += std::abs(depth.at(x, y) - expected) > depthTolerance(GetParam());
                 }
             EXPECT_EQ(wrong, 0) << "cube " << cube << " face " << int(face);
         }
 }
 
-TEST_F(CubeShadowTest, ComparisonLookupsAgreeWithTheReferenceDepths)
+TEST_P(CubeShadowTest, ComparisonLookupsAgreeWithTheReferenceDepths)
 {
     // Per cube and face: receivers 2 % nearer and 2 % farther than the occluder plane, behind the
     // occluder and beside it. Reference depth: the face projection's window depth at the receiver's
@@ -108,16 +118,21 @@ TEST_F(CubeShadowTest, ComparisonLookupsAgreeWithTheReferenceDepths)
             << (i % 2 ? " the occluder, 2 % farther" : " the occluder, 2 % nearer");
 }
 
-TEST_F(CubeShadowTest, LinearComparisonFilteringFollowsTheCapability)
+TEST_P(CubeShadowTest, LinearComparisonFilteringFollowsTheCapability)
 {
     auto linear = device->createSampler({.filter = rhi::Filter::Linear, .compare = true, .debugName = "linear cube"});
     auto commands = device->createCommandList();
-    if (device->capabilities().supportsLinearFilter(rhi::Format::D32F)) {
+    if (device->capabilities().supportsLinearFilter(GetParam())) {
         EXPECT_NO_THROW(commands->bindTexture(0, *map, *linear));
         return;
     }
     EXPECT_THROW(commands->bindTexture(0, *map, *linear), rhi::UnsupportedError);
 }
+
+INSTANTIATE_TEST_SUITE_P(, CubeShadowTest, ::testing::Values(rhi::Format::D32F, rhi::Format::D16, rhi::Format::D24S8),
+                         [](const ::testing::TestParamInfo<rhi::Format>& format) {
+                             return std::string(rhi::formatName(format.param));
+                         });
 
 } // namespace
 } // namespace penumbra::testing
