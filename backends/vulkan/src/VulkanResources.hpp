@@ -44,8 +44,9 @@ private:
     MappedBuffer buffer_;
 };
 
-// A 2D (array) or cube-array image; attachments and copies address single layers either way. Between commands it rests in restingLayout(): shader-read if it can be
-// sampled, else its attachment layout; passes and copies start and end there.
+// A 2D (array) or cube-array image; attachments and copies address single layers either way.
+// Between commands it rests in restingLayout(): shader-read if it can be sampled, else its
+// attachment layout; passes and copies start and end there.
 class VulkanTexture final : public rhi::Texture {
 public:
     VulkanTexture(std::shared_ptr<Context> context, const rhi::TextureDesc& desc);

@@ -76,9 +76,9 @@ public:
 enum class Filter : std::uint8_t { Nearest, Linear };
 enum class AddressMode : std::uint8_t { ClampToEdge, Repeat };
 
-// With compare set this is a shadow sampler for sampler2DShadow / sampler2DArrayShadow /
-// samplerCubeArrayShadow;
-// its compare op is Conventions::shadowCompareOp() (lit where the receiver is nearer or as near).
+// With compare set this is a shadow sampler for sampler2DShadow, sampler2DArrayShadow or
+// samplerCubeArrayShadow; its compare op is Conventions::shadowCompareOp() (lit where the
+// receiver is nearer or as near).
 // Linear filtering of a depth texture is refused where the driver cannot do it
 // (Capabilities::supportsLinearFilter) when the pair is bound.
 struct SamplerDesc {
