@@ -17,6 +17,29 @@ void checkTextureBinding(const Capabilities& caps, const Texture& texture, const
             texture.desc().debugName, formatName(format), sampler.desc().debugName, caps.device, formatName(format)));
 }
 
+void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc)
+{
+    if (desc.width == 0 || desc.height == 0 || desc.layers == 0 || desc.width > caps.maxTextureSize ||
+        desc.height > caps.maxTextureSize || desc.layers > caps.maxTextureLayers)
+        throw Error(fmt::format("texture '{}': {}x{} with {} layers is outside 1..{} texels and 1..{} layers",
+                                desc.debugName, desc.width, desc.height, desc.layers, caps.maxTextureSize,
+                                caps.maxTextureLayers));
+    if (!desc.cube)
+        return;
+    if (!caps.cubeArrays)
+        throw UnsupportedError(fmt::format("texture '{}': cube textures are cube-map arrays, which {} does not offer",
+                                           desc.debugName, caps.device));
+    if (desc.layers % 6 != 0)
+        throw Error(fmt::format("texture '{}': a cube texture needs a multiple of 6 layers (one per face), not {}",
+                                desc.debugName, desc.layers));
+    if (desc.width != desc.height)
+        throw Error(fmt::format("texture '{}': a cube texture needs square faces, not {}x{}", desc.debugName,
+                                desc.width, desc.height));
+    if (desc.width > caps.maxCubeSize)
+        throw Error(fmt::format("texture '{}': cube faces of {}x{} exceed the limit of {}", desc.debugName, desc.width,
+                                desc.height, caps.maxCubeSize));
+}
+
 void checkFramebuffer(const FramebufferDesc& desc)
 {
     const Texture* first = nullptr;

@@ -124,6 +124,15 @@ float Conventions::viewDepth(const glm::mat4& projection, float windowDepth) con
     return (b - zNdc) / a;      // orthographic: z_ndc = a z + b
 }
 
+float Conventions::windowDepth(const glm::mat4& projection, float viewDepth) const
+{
+    const float a = projection[2][2];
+    const float b = projection[3][2];
+    const float zNdc = projection[2][3] != 0.0f ? b / viewDepth - a // perspective: (a z + b) / -z with z = -viewDepth
+                                                : b - a * viewDepth;
+    return range_ == DepthRange::ZeroToOne ? zNdc : 0.5f * zNdc + 0.5f;
+}
+
 std::string Conventions::glslHeader() const
 {
     const glm::mat4 t = clipToTexture();

@@ -60,6 +60,17 @@ TEST_P(ConventionsTest, ViewDepthInvertsTheProjections)
     }
 }
 
+TEST_P(ConventionsTest, WindowDepthIsWhatTheProjectionGives)
+{
+    const glm::mat4 perspective = conventions.perspective(1.0f, 1.0f, 0.1f, 100.0f);
+    const glm::mat4 orthographic = conventions.orthographic(-1, 1, -1, 1, 0.5f, 20.0f);
+    for (float d : {0.1f, 0.5f, 1.0f, 7.0f, 19.0f}) {
+        EXPECT_NEAR(conventions.windowDepth(perspective, d), windowDepth(perspective, d), 1e-6f) << d;
+        EXPECT_NEAR(conventions.windowDepth(orthographic, d), windowDepth(orthographic, d), 1e-6f) << d;
+        EXPECT_NEAR(conventions.viewDepth(perspective, conventions.windowDepth(perspective, d)), d, d * 1e-4f);
+    }
+}
+
 TEST_P(ConventionsTest, NearerCompareOpOrdersDepthsAsTheProjectionDoes)
 {
     const glm::mat4 p = conventions.perspective(1.0f, 1.0f, 0.1f, 100.0f);

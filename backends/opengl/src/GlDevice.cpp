@@ -73,6 +73,8 @@ rhi::Capabilities GlDevice::queryCapabilities() const
     caps.uniformBufferOffsetAlignment = std::uint32_t(integer(gl, GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
     caps.maxTextureSize = std::uint32_t(integer(gl, GL_MAX_TEXTURE_SIZE));
     caps.maxTextureLayers = std::uint32_t(integer(gl, GL_MAX_ARRAY_TEXTURE_LAYERS));
+    caps.cubeArrays = true; // GL_TEXTURE_CUBE_MAP_ARRAY is core since 4.0
+    caps.maxCubeSize = std::uint32_t(integer(gl, GL_MAX_CUBE_MAP_TEXTURE_SIZE));
     caps.linearFilter.fill(true); // GL filters every format here linearly, depth with comparison included
     return caps;
 }
@@ -84,11 +86,7 @@ std::unique_ptr<rhi::Buffer> GlDevice::createBuffer(const rhi::BufferDesc& desc)
 
 std::unique_ptr<rhi::Texture> GlDevice::createTexture(const rhi::TextureDesc& desc)
 {
-    if (desc.width > capabilities_.maxTextureSize || desc.height > capabilities_.maxTextureSize ||
-        desc.layers > capabilities_.maxTextureLayers)
-        throw rhi::Error(fmt::format("texture '{}': {}x{}x{} exceeds the limits {}x{}x{}", desc.debugName, desc.width,
-                                     desc.height, desc.layers, capabilities_.maxTextureSize,
-                                     capabilities_.maxTextureSize, capabilities_.maxTextureLayers));
+    rhi::checkTextureDesc(capabilities_, desc);
     return std::make_unique<GlTexture>(context_, desc);
 }
 
@@ -162,6 +160,7 @@ void GlDevice::applySubmitDefaults()
     gl.Enable(GL_POLYGON_OFFSET_FILL); // the bias is always set, zero when unused
     gl.Enable(GL_PROGRAM_POINT_SIZE);  // points take gl_PointSize, as in Vulkan
     gl.Disable(GL_DITHER);             // Vulkan does not dither; keep RGBA8 results identical
+    gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // Vulkan filters across cube faces always
     gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
     cache_->frontFace(orientation_.frontFace());

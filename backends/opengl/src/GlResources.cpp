@@ -24,6 +24,13 @@ void attach(const GlFunctions& gl, GLuint framebuffer, GLenum attachment, const 
         gl.NamedFramebufferTexture(framebuffer, attachment, texture.name(), 0);
 }
 
+GLenum textureTarget(const rhi::TextureDesc& desc)
+{
+    if (desc.cube)
+        return GL_TEXTURE_CUBE_MAP_ARRAY;
+    return desc.array || desc.layers > 1 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D;
+}
+
 } // namespace
 
 GlBuffer::GlBuffer(GlContextPtr context, const rhi::BufferDesc& desc) : context_(std::move(context)), desc_(desc)
@@ -71,15 +78,12 @@ void GlBuffer::read(std::uint64_t offset, std::span<std::byte> data) const
 
 GlTexture::GlTexture(GlContextPtr context, const rhi::TextureDesc& desc) : context_(std::move(context)), desc_(desc)
 {
-    if (desc.width == 0 || desc.height == 0 || desc.layers == 0)
-        throw rhi::Error(fmt::format("texture '{}': {}x{} with {} layers is empty", desc.debugName, desc.width,
-                                     desc.height, desc.layers));
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
     const GlTextureFormat format = glTextureFormat(desc.format);
-    target_ = desc.array || desc.layers > 1 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D;
+    target_ = textureTarget(desc);
     gl.CreateTextures(target_, 1, &name_);
-    if (target_ == GL_TEXTURE_2D_ARRAY)
+    if (isArray())
         gl.TextureStorage3D(name_, 1, format.internalFormat, GLsizei(desc.width), GLsizei(desc.height),
                             GLsizei(desc.layers));
     else

@@ -56,7 +56,9 @@ public:
     const rhi::TextureDesc& desc() const override { return desc_; }
     GLuint name() const { return name_; }
     GLenum target() const { return target_; }
-    bool isArray() const { return target_ == GL_TEXTURE_2D_ARRAY; }
+    // Layered targets (2D array, cube-map array) take the RHI layer as GL's layer or z offset;
+    // for a cube-map array GL's layer-face is 6 * cube + face, the RHI's layer exactly.
+    bool isArray() const { return target_ == GL_TEXTURE_2D_ARRAY || target_ == GL_TEXTURE_CUBE_MAP_ARRAY; }
 
 private:
     GlContextPtr context_;

@@ -54,6 +54,8 @@ void Context::fillCapabilities()
     capabilities.uniformBufferOffsetAlignment = std::uint32_t(limits.minUniformBufferOffsetAlignment);
     capabilities.maxTextureSize = limits.maxImageDimension2D;
     capabilities.maxTextureLayers = limits.maxImageArrayLayers;
+    capabilities.cubeArrays = features.imageCubeArray;
+    capabilities.maxCubeSize = limits.maxImageDimensionCube;
     for (rhi::Format f : allFormats)
         capabilities.linearFilter[std::size_t(f)] =
             (formatFeatures(toVkFormat(f)) & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
@@ -89,6 +91,7 @@ void Context::createDevice()
     enabled.features.depthClamp = available.features.depthClamp;
     enabled.features.depthBiasClamp = available.features.depthBiasClamp;
     enabled.features.independentBlend = available.features.independentBlend;
+    enabled.features.imageCubeArray = available.features.imageCubeArray; // every cube texture is a cube array
     maintenance4.pNext = nullptr;
 
     const float priority = 1.0f;

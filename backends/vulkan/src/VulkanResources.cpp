@@ -46,6 +46,13 @@ VkImageLayout restingLayoutOf(const rhi::TextureDesc& desc)
     return VK_IMAGE_LAYOUT_GENERAL;
 }
 
+VkImageViewType sampledViewType(const rhi::TextureDesc& desc)
+{
+    if (desc.cube)
+        return VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
+    return desc.array || desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+}
+
 struct ImageUse {
     VkImageUsageFlags usage;
     VkFormatFeatureFlags features;
@@ -70,11 +77,7 @@ ImageUse imageUse(const rhi::TextureDesc& desc)
 void checkTextureDesc(const Context& context, const rhi::TextureDesc& desc, const ImageUse& use)
 {
     const rhi::Capabilities& caps = context.capabilities;
-    if (desc.width == 0 || desc.height == 0 || desc.layers == 0 || desc.width > caps.maxTextureSize ||
-        desc.height > caps.maxTextureSize || desc.layers > caps.maxTextureLayers)
-        throw rhi::Error(fmt::format("texture '{}': {}x{} with {} layers is outside 1..{} texels and 1..{} layers",
-                                     desc.debugName, desc.width, desc.height, desc.layers, caps.maxTextureSize,
-                                     caps.maxTextureLayers));
+    rhi::checkTextureDesc(caps, desc);
     const VkFormatFeatureFlags missing = use.features & ~context.formatFeatures(toVkFormat(desc.format));
     if (missing)
         throw rhi::UnsupportedError(fmt::format("texture '{}': {} lacks format features {:#x} on {} for its usage",
@@ -150,6 +153,7 @@ VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::Textur
     checkTextureDesc(*context_, desc, use);
     const VkDevice device = context_->device;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.flags = desc.cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format_;
     info.extent = {desc.width, desc.height, 1};
@@ -173,7 +177,7 @@ VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::Textur
 
         VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         viewInfo.image = image_;
-        viewInfo.viewType = desc.array || desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+        viewInfo.viewType = sampledViewType(desc);
         viewInfo.format = format_;
         viewInfo.subresourceRange = {dataAspect(desc.format), 0, 1, 0, desc.layers};
         check(vkCreateImageView(device, &viewInfo, nullptr, &view_), "vkCreateImageView");

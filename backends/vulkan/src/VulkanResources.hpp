@@ -44,8 +44,9 @@ private:
     MappedBuffer buffer_;
 };
 
-// A 2D (array) image. Between commands it rests in restingLayout(): shader-read if it can be
-// sampled, else its attachment layout; passes and copies start and end there.
+// A 2D (array) or cube-array image; attachments and copies address single layers either way.
+// Between commands it rests in restingLayout(): shader-read if it can be sampled, else its
+// attachment layout; passes and copies start and end there.
 class VulkanTexture final : public rhi::Texture {
 public:
     VulkanTexture(std::shared_ptr<Context> context, const rhi::TextureDesc& desc);
@@ -56,7 +57,7 @@ public:
     const rhi::TextureDesc& desc() const override { return desc_; }
 
     VkImage image() const { return image_; }
-    // The view shaders sample: every layer, depth aspect only for D24S8.
+    // The view shaders sample: every layer (2D, 2D array or cube array), depth aspect only for D24S8.
     VkImageView sampledView() const { return view_; }
     VkFormat format() const { return format_; }
     VkImageLayout restingLayout() const { return restingLayout_; }

@@ -12,6 +12,9 @@ namespace penumbra::rhi {
 // Refuses a linear sampler on a depth texture whose format the driver cannot filter linearly.
 void checkTextureBinding(const Capabilities& caps, const Texture& texture, const Sampler& sampler);
 
+// Size, layer count and cube rules of a texture description, against the driver's limits.
+void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc);
+
 // A framebuffer's attachments must exist, share one size, be render targets, and have layers in range.
 void checkFramebuffer(const FramebufferDesc& desc);
 

@@ -14,6 +14,7 @@ namespace penumbra::rhi {
 // - Front faces are counter-clockwise in NDC (y up).
 // The backends meet this with a negative viewport height (Vulkan), glClipControl(UPPER_LEFT)
 // (OpenGL), or a vertex-stage y flip with inverted winding (OpenGL without clip control).
+// Cube textures follow from the same facts: CubeMap.hpp gives the (mirrored) view of each face.
 
 enum class DepthRange { ZeroToOne, MinusOneToOne };
 
@@ -59,6 +60,8 @@ public:
     // Positive view depth (distance along -z) of a window depth written through `projection`
     // (one of the helpers above, or any matrix of the same form).
     float viewDepth(const glm::mat4& projection, float windowDepth) const;
+    // Its inverse: the window depth that `projection` gives a point at positive view depth `viewDepth`.
+    float windowDepth(const glm::mat4& projection, float viewDepth) const;
 
     // GLSL text with the same facts; prepended to every shader the RHI compiles.
     std::string glslHeader() const;

@@ -26,6 +26,9 @@ struct Capabilities {
     std::uint32_t uniformBufferOffsetAlignment = 256;
     std::uint32_t maxTextureSize = 0;
     std::uint32_t maxTextureLayers = 0;
+    // Cube textures (TextureDesc::cube) are cube-map arrays: Vulkan's imageCubeArray feature, core in GL 4.0.
+    bool cubeArrays = false;
+    std::uint32_t maxCubeSize = 0;
     // Linear filtering (hardware 2x2 PCF with a comparison sampler) per depth format,
     // indexed by Format. lavapipe offers none (conventions note, section 4).
     std::array<bool, 6> linearFilter{};

@@ -57,6 +57,11 @@ struct TextureDesc {
     std::uint32_t height = 1;
     std::uint32_t layers = 1;
     bool array = false; // a 2D array (sampler2DArray) even when layers == 1
+    // A cube-map array (samplerCubeArray / samplerCubeArrayShadow) on every backend, even for one
+    // cube, so one GLSL type serves; `array` is then ignored. Needs width == height, layers a
+    // positive multiple of 6 and Capabilities::cubeArrays. Layer cubeLayer(cube, face) holds one
+    // face (CubeMap.hpp: face order +X, -X, +Y, -Y, +Z, -Z, and how to render each face).
+    bool cube = false;
     Format format = Format::RGBA8;
     TextureUsage usage = TextureUsage::Sampled;
     std::string debugName;
@@ -71,8 +76,9 @@ public:
 enum class Filter : std::uint8_t { Nearest, Linear };
 enum class AddressMode : std::uint8_t { ClampToEdge, Repeat };
 
-// With compare set this is a shadow sampler for sampler2DShadow / sampler2DArrayShadow;
-// its compare op is Conventions::shadowCompareOp() (lit where the receiver is nearer or as near).
+// With compare set this is a shadow sampler for sampler2DShadow, sampler2DArrayShadow or
+// samplerCubeArrayShadow; its compare op is Conventions::shadowCompareOp() (lit where the
+// receiver is nearer or as near).
 // Linear filtering of a depth texture is refused where the driver cannot do it
 // (Capabilities::supportsLinearFilter) when the pair is bound.
 struct SamplerDesc {
@@ -88,7 +94,7 @@ public:
     virtual const SamplerDesc& desc() const = 0;
 };
 
-// One colour or depth attachment: a texture layer.
+// One colour or depth attachment: a texture layer (of a cube texture: one face, cubeLayer(cube, face)).
 struct Attachment {
     const Texture* texture = nullptr;
     std::uint32_t layer = 0;
