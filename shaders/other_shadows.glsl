@@ -1,6 +1,6 @@
 // Spot and point shadow attenuation over the other atlas: the light plane's normal bias, the cube face
-// of a point light, tile-clamped PCF (shadow_filter.glsl). The block is
-// penumbra::shadows::OtherShadowUniforms.
+// of a point light, tile-clamped PCF (shadow_filter.glsl); or, in cube-map mode, point lights through
+// hardware cube lookups. The block is penumbra::shadows::OtherShadowUniforms.
 
 layout(std140, binding = 4) uniform OtherShadows {
     mat4 worldToAtlas[16];
@@ -13,6 +13,10 @@ layout(std140, binding = 4) uniform OtherShadows {
 
 // Read with texelFetch (shadow_filter.glsl).
 layout(binding = 5) uniform sampler2D otherShadowAtlas;
+// Nearest comparisons, the compare op the convention's (lit where the receiver is nearer or as near).
+layout(binding = 6) uniform samplerCubeArrayShadow pointShadowCubes;
+
+const int PENUMBRA_POINT_CUBE_MAP = 1;
 
 // The face of the largest component of d (light to point), ties to x, then y, then z:
 // penumbra::shadows::cubeFace. Faces in the order +X, -X, +Y, -Y, +Z, -Z.
@@ -54,7 +58,31 @@ float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
                             ivec2(bounds.xy), ivec2(bounds.zw));
 }
 
-// 1 = fully lit. `shadow`: first tile, -1 without shadows; the light's shadow strength. `strength` is the
+// Cube-map mode: a k x k box of nearest comparisons (k = 2, 3, 5, 7 by the filter) spread over the face's
+// texels around the receiver's direction; hardware face selection carries taps across face edges.
+float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
+{
+    const vec4 data = otherShadows.cubeData[cube];
+    const vec3 fromLight = position - lightPosition;
+    const int face = cubeFace(fromLight);
+    const vec3 axis = cubeFaceAxis(face);
+    precise vec3 biased = fma(normal, vec3(dot(fromLight, axis) * data.z), position);
+    const vec3 d = biased - lightPosition;
+    const float major = max(max(abs(d.x), abs(d.y)), abs(d.z));
+    const float reference = (data.x * -major + data.y) / major;
+    const vec3 u = cubeFaceAxis((face + 2) % 6) * (2.0 * major * data.w);
+    const vec3 v = cubeFaceAxis((face + 4) % 6) * (2.0 * major * data.w);
+    const int k = int[](2, 3, 5, 7)[otherShadows.config.x];
+    float lit = 0.0;
+    for (int y = 0; y < k; ++y)
+        for (int x = 0; x < k; ++x) {
+            const vec3 tap = d + (float(x) - 0.5 * float(k - 1)) * u + (float(y) - 0.5 * float(k - 1)) * v;
+            lit += texture(pointShadowCubes, vec4(tap, float(cube)), reference);
+        }
+    return lit / float(k * k);
+}
+
+// 1 = fully lit. `shadow`: first tile (or cube), -1 without shadows; the light's shadow strength. `strength` is the
 // global one (distance fade), which applies to every light.
 float otherShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
                              float strength)
@@ -62,5 +90,8 @@ float otherShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3
     const float s = shadow.y * strength;
     if (shadow.x < 0.0 || s <= 0.0)
         return 1.0;
-    return mix(1.0, otherAtlasShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal), s);
+    const float lit = isPoint && otherShadows.config.y == PENUMBRA_POINT_CUBE_MAP
+                          ? cubeMapShadow(int(shadow.x), lightPosition, position, normal)
+                          : otherAtlasShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal);
+    return mix(1.0, lit, s);
 }

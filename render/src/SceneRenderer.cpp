@@ -18,6 +18,7 @@ constexpr std::uint32_t kShadowBinding = 2;
 constexpr std::uint32_t kAtlasBinding = 3;
 constexpr std::uint32_t kOtherShadowBinding = 4;
 constexpr std::uint32_t kOtherAtlasBinding = 5;
+constexpr std::uint32_t kShadowCubesBinding = 6;
 constexpr rhi::Format kLitFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
@@ -143,6 +144,13 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame)
     if (!otherAtlas_ || otherAtlas_->size() != other.atlasSize || otherAtlas_->format() != other.atlasFormat)
         otherAtlas_ = std::make_unique<shadows::ShadowAtlas>(device_, other.atlasSize, other.atlasFormat,
                                                              "other shadow atlas");
+    // Cube-map mode keeps room for every cube it may plan; otherwise one small cube stands in for the binding.
+    const bool cubeMode = other.pointMode == shadows::PointShadowMode::CubeMap;
+    const std::uint32_t faceSize = cubeMode ? other.cubeMapSize : 16;
+    const std::uint32_t cubeCount = cubeMode ? shadows::maxShadowCubes : 1;
+    if (!shadowCubes_ || shadowCubes_->faceSize() != faceSize || shadowCubes_->cubeCount() != cubeCount ||
+        shadowCubes_->format() != other.atlasFormat)
+        shadowCubes_ = std::make_unique<shadows::ShadowCubes>(device_, faceSize, cubeCount, other.atlasFormat);
     if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height)
         return;
     lit_ = colorTarget(device_, frame, "lit image");
@@ -191,6 +199,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     commands.bindTexture(kAtlasBinding, atlas_->texture(), atlas_->sampler());
     rhi::bindUniform(commands, kOtherShadowBinding, otherShadowUniforms);
     commands.bindTexture(kOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
+    commands.bindTexture(kShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
     for (const scene::Object& object : scene.objects) {
         rhi::bindUniform(commands, kObjectBinding, uniforms_.push(objectUniforms(object, scene.materialOf(object))));
         commands.bindVertexBuffer(0, gpuScene_.vertices(object.mesh));
@@ -250,7 +259,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     stats.casterDraws = shadowPass_.record(commands, *atlas_, plan_, casters);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 1);
-    stats.otherCasterDraws = otherShadowPass_.record(commands, *otherAtlas_, otherPlan_, casters);
+    stats.otherCasterDraws = otherShadowPass_.record(commands, *otherAtlas_, *shadowCubes_, otherPlan_, casters);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 2);
     recordLitPass(commands, *litTarget_, frameUniforms(camera, frame, LitView::Lit), shadowUniforms,

@@ -11,9 +11,11 @@ OtherShadowPass::OtherShadowPass(rhi::Device& device, const CasterVertexFormat& 
 {
 }
 
-std::uint32_t OtherShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas,
+std::uint32_t OtherShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
                                       const OtherShadowPlan& plan, std::span<const ShadowCaster> casters)
 {
+    if (cubes.cubeCount() < plan.cubes.size())
+        throw rhi::Error(fmt::format("{} shadow cube maps, the plan needs {}", cubes.cubeCount(), plan.cubes.size()));
     if (atlas.size() != plan.atlas.atlasSize())
         throw rhi::Error(fmt::format("other shadow atlas is {} texels wide, the plan was made for {}", atlas.size(),
                                      plan.atlas.atlasSize()));
@@ -30,6 +32,22 @@ std::uint32_t OtherShadowPass::record(rhi::CommandList& commands, const ShadowAt
         draws += draws_.draw(commands, atlas.format(), view, tile.view.casters, casters);
     }
     commands.endPass();
+    const auto size = static_cast<float>(cubes.faceSize());
+    for (std::uint32_t cube = 0; cube < plan.cubes.size(); ++cube)
+        for (const CubeFace face : rhi::allCubeFaces) {
+            const LocalShadowView& faceView = plan.cubes[cube].faces[static_cast<std::size_t>(face)];
+            commands.beginPass({.framebuffer = &cubes.framebuffer(rhi::cubeLayer(cube, face)),
+                                .clearColor = std::nullopt,
+                                .clearDepth = true});
+            const rhi::Viewport viewport{0.0f, 0.0f, size, size};
+            commands.setViewport(viewport);
+            commands.setScissor(scissorOf(viewport));
+            const ShadowViewDraw view{.viewProjection = faceView.viewProjection,
+                                      .slopeScaleBias = faceView.slopeScaleBias,
+                                      .mirrored = true};
+            draws += draws_.draw(commands, cubes.format(), view, faceView.casters, casters);
+            commands.endPass();
+        }
     return draws;
 }
 

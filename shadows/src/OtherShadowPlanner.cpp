@@ -108,6 +108,29 @@ void planPointTiles(OtherShadowPlan& plan, const OtherShadowSettings& other, con
                 bias, conventions);
 }
 
+// CubeMap mode: the six mirrored face views of the hardware cube layout (rhi::cubeFaceView), 90 degrees each.
+void planCube(OtherShadowPlan& plan, const OtherShadowSettings& other, const PointShadowInput& point,
+              std::uint32_t pointIndex, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+{
+    constexpr float kRightAngle = 1.57079633f;
+    const float nearPlane = localShadowNearPlane(point.range);
+    const glm::mat4 projection = rhi::cubeFaceProjection(conventions, nearPlane, point.range);
+    // Window depth of major-axis distance z is (a * -z + b) / z: the projection's depth row through clipToTexture.
+    const glm::mat4 toTexture = conventions.clipToTexture() * projection;
+    const float bias = localNormalBiasScale(projection, other.cubeMapSize, other.filter, point.normalBias);
+    plan.uniforms.cubeData[plan.cubes.size()] = {toTexture[2][2], toTexture[3][2], bias,
+                                                 1.0f / static_cast<float>(other.cubeMapSize)};
+    ShadowCube cube;
+    cube.lightIndex = pointIndex;
+    for (const CubeFace face : rhi::allCubeFaces) {
+        const glm::mat4 view = rhi::cubeFaceView(face, point.position);
+        cube.faces[static_cast<std::size_t>(face)] = {projection, projection * view, point.slopeScaleBias,
+                                                      cullCastersInFrustum(view, kRightAngle, nearPlane, point.range,
+                                                                           casterBounds)};
+    }
+    plan.cubes.push_back(std::move(cube));
+}
+
 } // namespace
 
 std::vector<std::uint32_t> cullCastersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
@@ -157,6 +180,9 @@ OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conv
             planPointTiles(plan, other, points[reservation.lightIndex], reservation.firstTile, conventions,
                            casterBounds);
     }
+
+    for (const std::uint32_t pointIndex : r.cubes)
+        planCube(plan, other, points[pointIndex], pointIndex, conventions, casterBounds);
 
     const auto atlasSize = static_cast<float>(other.atlasSize);
     plan.uniforms.atlasSize = {atlasSize, 1.0f / atlasSize, 0.0f, 0.0f};

@@ -1,5 +1,6 @@
 #include "penumbra/shadows/ShadowCasterDraws.hpp"
 
+#include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
@@ -38,8 +39,8 @@ const ShadowCasterDraws::Pipelines& ShadowCasterDraws::pipelines(rhi::Format dep
     desc.vertexLayout = {{{vertexFormat_.stride, false}},
                          {{0, rhi::VertexFormat::Float3, vertexFormat_.positionOffset, 0},
                           {2, rhi::VertexFormat::Float2, vertexFormat_.uvOffset, 0}}};
-    // Casters render their light-facing side: back faces of a mirrored view are the world's front faces.
-    desc.cull = mirrored ? rhi::CullMode::Front : rhi::CullMode::Back;
+    // Casters render their light-facing side, also through the mirrored cube face views.
+    desc.cull = mirrored ? rhi::cubeFaceCullMode(rhi::CullMode::Back) : rhi::CullMode::Back;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer, .clamp = clamp};
     desc.depthFormat = depthFormat;
     Pipelines created;

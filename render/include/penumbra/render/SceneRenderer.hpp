@@ -57,6 +57,8 @@ public:
     // Spot and point shadows: tiles of this atlas.
     const shadows::ShadowAtlas& otherAtlas() const { return *otherAtlas_; }
     const shadows::OtherShadowPlan& otherPlan() const { return otherPlan_; }
+    // Point shadow cube maps (PointShadowMode::CubeMap; one unused cube otherwise).
+    const shadows::ShadowCubes& shadowCubes() const { return *shadowCubes_; }
     // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights, maxLitLocalLights).
     const std::vector<std::string>& notes() const { return notes_; }
 
@@ -80,6 +82,7 @@ private:
 
     std::unique_ptr<shadows::ShadowAtlas> atlas_;
     std::unique_ptr<shadows::ShadowAtlas> otherAtlas_;
+    std::unique_ptr<shadows::ShadowCubes> shadowCubes_;
     std::unique_ptr<rhi::Texture> lit_;
     std::unique_ptr<rhi::Texture> cascades_;
     std::unique_ptr<rhi::Texture> depth_;

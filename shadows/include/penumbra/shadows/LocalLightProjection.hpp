@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <array>
@@ -11,7 +12,7 @@
 namespace penumbra::shadows {
 
 // The six faces of a point light's shadow, in the order tiles and cube layers use.
-enum class CubeFace : std::uint8_t { PositiveX, NegativeX, PositiveY, NegativeY, PositiveZ, NegativeZ };
+using rhi::CubeFace;
 inline constexpr std::uint32_t cubeFaceCount = 6;
 
 // Unit axis a face looks along.

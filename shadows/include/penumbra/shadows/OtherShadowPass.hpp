@@ -5,6 +5,7 @@
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 #include "penumbra/shadows/ShadowCasterDraws.hpp"
+#include "penumbra/shadows/ShadowCubes.hpp"
 
 #include <cstdint>
 #include <span>
@@ -12,15 +13,17 @@
 namespace penumbra::shadows {
 
 // Renders the casters of a spot and point shadow plan: one pass over the other atlas, every tile in its
-// viewport and scissor with its light's slope-scale bias. Perspective views, so nothing is pancaked.
+// viewport and scissor with its light's slope-scale bias, then (CubeMap mode) one pass per cube face
+// layer, culling through the mirrored face views. Perspective views, so nothing is pancaked.
 class OtherShadowPass {
 public:
     OtherShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
     // next record(), so submit `commands` before recording again.
-    std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const OtherShadowPlan& plan,
-                         std::span<const ShadowCaster> casters);
+    // `cubes` must hold at least plan.cubes.size() cubes.
+    std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
+                         const OtherShadowPlan& plan, std::span<const ShadowCaster> casters);
 
 private:
     ShadowCasterDraws draws_;

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "penumbra/rhi/Device.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace penumbra::shadows {
+
+// Depth cube maps of point lights (PointShadowMode::CubeMap): one cube-map array, a framebuffer per
+// face layer, and a nearest comparison sampler for samplerCubeArrayShadow lookups (hardware face
+// selection; lavapipe cannot filter depth linearly, so every tap is a nearest comparison).
+class ShadowCubes {
+public:
+    // Throws rhi::Error for a format that is not a depth format or a device without cube arrays.
+    ShadowCubes(rhi::Device& device, std::uint32_t faceSize, std::uint32_t cubeCount, rhi::Format format);
+
+    std::uint32_t faceSize() const { return faceSize_; }
+    std::uint32_t cubeCount() const { return cubeCount_; }
+    rhi::Format format() const { return format_; }
+    const rhi::Texture& texture() const { return *texture_; }
+    const rhi::Framebuffer& framebuffer(std::uint32_t layer) const { return *framebuffers_.at(layer); }
+    const rhi::Sampler& sampler() const { return *sampler_; }
+
+private:
+    std::uint32_t faceSize_;
+    std::uint32_t cubeCount_;
+    rhi::Format format_;
+    std::unique_ptr<rhi::Texture> texture_;
+    std::vector<std::unique_ptr<rhi::Framebuffer>> framebuffers_;
+    std::unique_ptr<rhi::Sampler> sampler_;
+};
+
+} // namespace penumbra::shadows
