@@ -5,6 +5,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/GroundTruth.hpp"
 #include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
 
 #include <algorithm>
@@ -53,34 +54,62 @@ float maxLuminance(const rhi::Image& image)
     return m;
 }
 
+// The room with its inside light only.
+scene::Scene roomLitFromInside()
+{
+    scene::Scene scene = scene::makePointLightRoomScene();
+    scene.pointLights.pop_back();
+    return scene;
+}
+
+render::FrameDesc inMode(render::FrameDesc frame, shadows::PointShadowMode mode)
+{
+    frame.shadows.other.pointMode = mode;
+    return frame;
+}
+
+const char* modeName(shadows::PointShadowMode mode)
+{
+    return mode == shadows::PointShadowMode::Atlas ? "atlas" : "cube map";
+}
+
 TEST_F(LocalShadowsTest, PointFacesStoreTheLightFacingSideOfACaster)
 {
     // Back-face culling with the RHI's winding keeps the crate's side facing the light: the depth stored
     // towards the crate's centre is the distance to its near face, not its far face (which an upside-down,
-    // mirrored face would store, as the design document's engine does before its row negation).
-    scene::Scene scene = scene::makePointLightRoomScene();
-    scene.pointLights.pop_back();
-    render::SceneRenderer renderer(*device, scene);
-    renderer.render(scene.camera, frame());
-    const rhi::DepthImage atlas = rhi::readDepth(*device, renderer.otherAtlas().texture());
-    const shadows::OtherShadowPlan& plan = renderer.otherPlan();
+    // mirrored face would store, as the design document's engine does before its row negation). Atlas
+    // tiles use ordinary views; the cube map's mirrored views cull through rhi::cubeFaceCullMode.
+    const scene::Scene scene = roomLitFromInside();
     const glm::vec3 light = scene.pointLights[0].position;
     const scene::Object& crate = scene.objects[*scene.findObject("crate")];
     const glm::vec3 centre = 0.5f * (crate.worldBounds.min + crate.worldBounds.max);
-    const auto face = static_cast<std::uint32_t>(shadows::cubeFace(centre - light));
-    const glm::vec3 axis = shadows::cubeFaceAxis(static_cast<shadows::CubeFace>(face));
-    const std::uint32_t tile = static_cast<std::uint32_t>(plan.pointShadows[0]) + face;
-    const glm::vec4 p = plan.uniforms.worldToAtlas[tile] * glm::vec4(centre, 1.0f);
-    const auto x = static_cast<std::uint32_t>(p.x / p.w * float(atlas.width));
-    const auto y = static_cast<std::uint32_t>(p.y / p.w * float(atlas.height));
-    const float stored = device->conventions().viewDepth(plan.tiles[tile].view.projection,
-                                                        atlas.depth[std::size_t(y) * atlas.width + x]);
-    // Distances along the face axis to the crate's near and far faces.
-    const float nearFace = std::min(glm::dot(crate.worldBounds.min - light, axis), glm::dot(crate.worldBounds.max - light, axis));
-    const float farFace = std::max(glm::dot(crate.worldBounds.min - light, axis), glm::dot(crate.worldBounds.max - light, axis));
-    std::printf("[ faces    ] %s: face %u stores %.4f towards the crate; near face %.4f, far face %.4f\n",
-                configuration().c_str(), face, stored, nearFace, farFace);
-    EXPECT_NEAR(stored, nearFace, 0.02f);
+    const shadows::CubeFace face = shadows::cubeFace(centre - light);
+    const glm::vec3 axis = shadows::cubeFaceAxis(face);
+    for (const shadows::PointShadowMode mode : {shadows::PointShadowMode::Atlas, shadows::PointShadowMode::CubeMap}) {
+        render::SceneRenderer renderer(*device, scene);
+        renderer.render(scene.camera, inMode(frame(), mode));
+        const shadows::OtherShadowPlan& plan = renderer.otherPlan();
+        const bool atlasMode = mode == shadows::PointShadowMode::Atlas;
+        const std::uint32_t tile = static_cast<std::uint32_t>(plan.pointShadows[0]) + static_cast<std::uint32_t>(face);
+        const shadows::LocalShadowView& view =
+            atlasMode ? plan.tiles[tile].view : plan.cubes[0].faces[static_cast<std::size_t>(face)];
+        const rhi::DepthImage depth = atlasMode ? rhi::readDepth(*device, renderer.otherAtlas().texture())
+                                                : rhi::readDepth(*device, renderer.shadowCubes().texture(),
+                                                                 rhi::cubeLayer(0, face));
+        const glm::mat4 toTexture = atlasMode ? plan.uniforms.worldToAtlas[tile]
+                                              : device->conventions().clipToTexture() * view.viewProjection;
+        const glm::vec4 p = toTexture * glm::vec4(centre, 1.0f);
+        const auto x = static_cast<std::uint32_t>(p.x / p.w * float(depth.width));
+        const auto y = static_cast<std::uint32_t>(p.y / p.w * float(depth.height));
+        const float stored =
+            device->conventions().viewDepth(view.projection, depth.depth[std::size_t(y) * depth.width + x]);
+        // Distances along the face axis to the crate's near and far faces.
+        const float nearFace = std::min(glm::dot(crate.worldBounds.min - light, axis), glm::dot(crate.worldBounds.max - light, axis));
+        const float farFace = std::max(glm::dot(crate.worldBounds.min - light, axis), glm::dot(crate.worldBounds.max - light, axis));
+        std::printf("[ faces    ] %s %s: face %u stores %.4f towards the crate; near face %.4f, far face %.4f\n",
+                    configuration().c_str(), modeName(mode), static_cast<unsigned>(face), stored, nearFace, farFace);
+        EXPECT_NEAR(stored, nearFace, 0.02f) << modeName(mode);
+    }
 }
 
 TEST_F(LocalShadowsTest, NoLightLeaksThroughAWallNextToAPointLight)
@@ -96,12 +125,13 @@ TEST_F(LocalShadowsTest, NoLightLeaksThroughAWallNextToAPointLight)
     EXPECT_LE(leaked, 1.0f) << "light leaks through the wall";
 }
 
-TEST_F(LocalShadowsTest, CubeFaceEdgesShowNoLargerJumpThanWithinAFace)
+class CubeSeamsTest : public LocalShadowsTest, public ::testing::WithParamInterface<shadows::PointShadowMode> {};
+
+TEST_P(CubeSeamsTest, CubeFaceEdgesShowNoLargerJumpThanWithinAFace)
 {
-    scene::Scene scene = scene::makePointLightRoomScene();
-    scene.pointLights.pop_back();
+    const scene::Scene scene = roomLitFromInside();
     const glm::vec3 light = scene.pointLights[0].position;
-    render::FrameDesc f = frame();
+    render::FrameDesc f = inMode(frame(), GetParam());
     f.shadows.other.filter = shadows::ShadowFilter::PCF5x5;
     const rhi::Image shadowed = render(scene, f);
     const rhi::Image unshadowed = render(withoutShadows(scene), f);
@@ -147,14 +177,20 @@ TEST_F(LocalShadowsTest, CubeFaceEdgesShowNoLargerJumpThanWithinAFace)
                     withinFaces = std::max(withinFaces, jump);
                 }
             }
-    std::printf("[ seams    ] %s: largest shadow jump across face edges %.4f (%zu pairs), within faces %.4f\n",
-                configuration().c_str(), acrossEdges, edgePairs, withinFaces);
+    std::printf("[ seams    ] %s %s: largest shadow jump across face edges %.4f (%zu pairs), within faces %.4f\n",
+                configuration().c_str(), modeName(GetParam()), acrossEdges, edgePairs, withinFaces);
     RecordProperty("acrossEdges", std::to_string(acrossEdges));
     RecordProperty("withinFaces", std::to_string(withinFaces));
     ASSERT_GT(edgePairs, 200u) << "face edges must cross lit and shadowed surfaces in view";
     // Rounding of the 8-bit pictures alone moves a ratio by a few hundredths.
     EXPECT_LE(acrossEdges, std::max(withinFaces, 0.05f));
 }
+
+INSTANTIATE_TEST_SUITE_P(PointShadowModes, CubeSeamsTest,
+                         ::testing::Values(shadows::PointShadowMode::Atlas, shadows::PointShadowMode::CubeMap),
+                         [](const auto& param) {
+                             return param.param == shadows::PointShadowMode::Atlas ? "Atlas" : "CubeMap";
+                         });
 
 TEST_F(LocalShadowsTest, LightsBeyondTheTileBudgetAreLitWithoutShadowsAndReported)
 {
@@ -171,8 +207,7 @@ TEST_F(LocalShadowsTest, LightsBeyondTheTileBudgetAreLitWithoutShadowsAndReporte
 
 TEST_F(LocalShadowsTest, DistanceFadeAppliesWithoutDirectionalLights)
 {
-    scene::Scene scene = scene::makePointLightRoomScene();
-    scene.pointLights.pop_back();
+    const scene::Scene scene = roomLitFromInside();
     ASSERT_TRUE(scene.lights.empty());
     render::FrameDesc near = frame();
     near.shadows.maxDistance = 0.5f; // everything in view is farther: no shadows at all

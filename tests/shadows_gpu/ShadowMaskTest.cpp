@@ -36,9 +36,11 @@ struct ShadowMask {
 
 class ShadowMaskTest : public GpuTest {
 public:
-    ShadowMask renderMask(const scene::Scene& scene, float& cascade1TexelSize)
+    ShadowMask renderMask(const scene::Scene& scene, float& cascade1TexelSize,
+                          const shadows::ShadowSettings& settings = {})
     {
         render::FrameDesc frame;
+        frame.shadows = settings;
         frame.width = kWidth;
         frame.height = kHeight;
         frame.ambient = glm::vec3(0.0f);
@@ -179,6 +181,9 @@ TEST_F(ShadowMaskTest, PointShadowsAgreeWithTheRayCast)
     scene::Scene room = scene::makePointLightRoomScene();
     room.pointLights.pop_back();
     checkPositionalLight(*this, room, "room", room.pointLights[0].position, renderMask(room, texel));
+    shadows::ShadowSettings cubeMaps;
+    cubeMaps.other.pointMode = shadows::PointShadowMode::CubeMap;
+    checkPositionalLight(*this, room, "room-cube-map", room.pointLights[0].position, renderMask(room, texel, cubeMaps));
 }
 
 TEST_F(ShadowMaskTest, ShadowMapAgreesWithTheRayCastAndHasNoAcneOrPeterPanning)

@@ -53,6 +53,7 @@ struct Variant {
     CascadeBlend blend = CascadeBlend::Hard;
     std::optional<CasterMode> casters; // every material but the ground's, when set
     ShadowFilter otherFilter = ShadowFilter::PCF2x2;
+    shadows::PointShadowMode pointMode = shadows::PointShadowMode::Atlas;
 };
 
 scene::Scene sceneOf(const Variant& variant)
@@ -85,6 +86,7 @@ render::FrameDesc frameOf(const Variant& variant)
     frame.shadows.directional.cascadeBlend = variant.blend;
     frame.shadows.other.atlasSize = kAtlasSize;
     frame.shadows.other.filter = variant.otherFilter;
+    frame.shadows.other.pointMode = variant.pointMode;
     return frame;
 }
 
@@ -312,6 +314,10 @@ TEST(ShadowParity, CastersOff) { checkParity({.name = "casters-off", .casters = 
 // Directional + 3 spot + 2 point lights: the other atlas holds 15 tiles.
 TEST(ShadowParity, MixedLights) { checkParity({.name = "mixed", .scene = "mixed"}); }
 TEST(ShadowParity, MixedLightsPcf5) { checkParity({.name = "mixed-pcf5", .scene = "mixed", .otherFilter = ShadowFilter::PCF5x5}); }
+TEST(ShadowParity, PointLightRoomCubeMaps)
+{
+    checkParity({.name = "room-cube", .scene = "room", .pointMode = shadows::PointShadowMode::CubeMap});
+}
 TEST(ShadowParity, PointLightRoom) { checkParity({.name = "room", .scene = "room", .otherFilter = ShadowFilter::PCF3x3}); }
 
 } // namespace
