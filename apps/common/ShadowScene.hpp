@@ -27,6 +27,9 @@ struct ShadowPictures {
     // same function of view depth in every depth range (reversed: 1 minus it), so this compares across
     // conventions with uniform rounding, where linear depth would magnify it towards the far plane.
     std::vector<float> otherAtlasNearness;
+    // Cube-map mode: the first point light's six faces side by side (+X to -Z), as read back; empty otherwise.
+    rhi::DepthImage cubeFacesDepth;
+    std::vector<float> cubeFacesNearness;
     render::FrameStats stats;
     std::vector<std::string> notes;
 };

@@ -12,6 +12,12 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <ostream>
+
+namespace penumbra::shadows {
+// Parameter names in test listings.
+void PrintTo(PointShadowMode mode, std::ostream* out) { *out << (mode == PointShadowMode::Atlas ? "atlas" : "cubemap"); }
+} // namespace penumbra::shadows
 
 namespace penumbra::testing {
 namespace {

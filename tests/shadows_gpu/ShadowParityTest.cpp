@@ -92,27 +92,27 @@ render::FrameDesc frameOf(const Variant& variant)
 
 // Largest |difference| to a 4-neighbour in the light depth of `atlas` (0 where the neighbour is cleared or the
 // texel is, so an edge against the background does not widen the bound).
-std::vector<float> localGradient(const std::vector<float>& lightDepth, std::uint32_t size)
+std::vector<float> localGradient(const std::vector<float>& lightDepth, std::uint32_t width, std::uint32_t height)
 {
     std::vector<float> gradient(lightDepth.size(), 0.0f);
-    for (std::uint32_t y = 0; y < size; ++y)
-        for (std::uint32_t x = 0; x < size; ++x) {
-            const float d = lightDepth[std::size_t(y) * size + x];
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            const float d = lightDepth[std::size_t(y) * width + x];
             if (d <= 0.0f)
                 continue;
             float g = 0.0f;
             const auto take = [&](std::uint32_t nx, std::uint32_t ny) {
-                const float n = lightDepth[std::size_t(ny) * size + nx];
+                const float n = lightDepth[std::size_t(ny) * width + nx];
                 if (n > 0.0f)
                     g = std::max(g, std::abs(n - d));
             };
             for (int dy = -2; dy <= 2; ++dy)
                 for (int dx = -2; dx <= 2; ++dx) {
                     const int nx = int(x) + dx, ny = int(y) + dy;
-                    if (nx >= 0 && ny >= 0 && nx < int(size) && ny < int(size))
+                    if (nx >= 0 && ny >= 0 && nx < int(width) && ny < int(height))
                         take(std::uint32_t(nx), std::uint32_t(ny));
                 }
-            gradient[std::size_t(y) * size + x] = g;
+            gradient[std::size_t(y) * width + x] = g;
         }
     return gradient;
 }
@@ -138,18 +138,20 @@ struct AtlasOf {
     std::size_t outliersAllowed;
 };
 
-const std::array<AtlasOf, 2> kAtlases{{
+const std::array<AtlasOf, 3> kAtlases{{
     {"atlas", [](const apps::ShadowPictures& p) -> const rhi::DepthImage& { return p.atlasDepth; },
      [](const apps::ShadowPictures& p) -> const std::vector<float>& { return p.atlasLightDepth; }, 0},
     {"other-atlas", [](const apps::ShadowPictures& p) -> const rhi::DepthImage& { return p.otherAtlasDepth; },
      [](const apps::ShadowPictures& p) -> const std::vector<float>& { return p.otherAtlasNearness; }, 16},
+    {"cube-faces", [](const apps::ShadowPictures& p) -> const rhi::DepthImage& { return p.cubeFacesDepth; },
+     [](const apps::ShadowPictures& p) -> const std::vector<float>& { return p.cubeFacesNearness; }, 16},
 }};
 
-AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<float>& b, std::uint32_t size)
+AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<float>& b, const rhi::DepthImage& shape)
 {
     AtlasComparison c;
     c.difference = apps::compareFloats(a, b);
-    const std::vector<float> gradient = localGradient(a, size);
+    const std::vector<float> gradient = localGradient(a, shape.width, shape.height);
     for (std::size_t i = 0; i < a.size(); ++i) {
         if ((a[i] > 0.0f) != (b[i] > 0.0f)) {
             ++c.coverageMismatches;
@@ -214,7 +216,7 @@ void checkAtlasPairs(const Variant& variant, const std::vector<apps::ShadowPictu
             }
             const std::vector<float>& aLight = atlas.lightDepth(a);
             const std::vector<float>& bLight = atlas.lightDepth(b);
-            const AtlasComparison c = compareAtlases(aLight, bLight, atlas.depth(a).width);
+            const AtlasComparison c = compareAtlases(aLight, bLight, atlas.depth(a));
             const double psnr = floatPsnr(aLight, bLight);
             report(key,
                    fmt::format("{} {} light depth: max abs diff {:.3g}, PSNR {:.1f} dB, differing texels {} ({:.2f}%), "
