@@ -7,33 +7,49 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace penumbra::apps {
 
-// The shadow test scene rendered through one configuration and read back.
+// One shadow atlas as read back, by the name files and reports use: "directional" (the cascades
+// of the directional lights).
+struct AtlasPictures {
+    std::string name;
+    rhi::Image picture;            // render::atlasPicture of depth
+    rhi::DepthImage depth;         // raw window depth as read back
+    std::vector<float> lightDepth; // render::lightDepthFraction: comparable across conventions
+};
+
+// A scene rendered through one configuration and read back.
 struct ShadowPictures {
     std::string configuration;
     rhi::DepthRange depthRange = rhi::DepthRange::ZeroToOne; // the device's conventions
     bool reversedZ = false;
     rhi::Image lit;
-    rhi::Image cascades;
-    rhi::Image atlas;          // render::atlasPicture of atlasDepth
-    rhi::DepthImage atlasDepth; // raw window depth as read back
-    std::vector<float> atlasLightDepth; // render::lightDepthFraction: comparable across conventions
+    rhi::Image cascades; // empty unless the frame asked for the cascade view
+    std::vector<AtlasPictures> atlases;
     render::FrameStats stats;
     std::vector<std::string> notes;
+
+    // Throws rhi::Error naming the atlases there are.
+    const AtlasPictures& atlas(std::string_view name) const;
 };
 
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights) and "key-light"
 // (scene::makeSingleLightScene). Unknown names throw rhi::Error listing these.
 scene::Scene namedScene(const std::string& name);
+inline constexpr const char* kSceneNames = "test, key-light";
 
-// Throws rhi::Error when the device reports a validation or debug message.
+// Renders scene.camera's view; the cascade view too when frame.cascadeView is set. Throws
+// rhi::Error when the device reports a validation or debug message.
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame);
 
-// lit.png, atlas.png, atlas.exr and cascades.png in `folder`.
+// The file stem of an atlas in a demo folder: "atlas" for "directional", "<name>-atlas" otherwise.
+std::string atlasFileStem(std::string_view name);
+
+// The demo folder: lit.png, cascades.png (when rendered), and <atlasFileStem>.png and .exr per atlas.
 void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictures& pictures);
 
 } // namespace penumbra::apps

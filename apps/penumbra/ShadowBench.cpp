@@ -56,6 +56,24 @@ ShadowBench::ShadowBench(const std::vector<std::string>& configurations, double 
 
 ShadowBench::~ShadowBench() = default;
 
+nlohmann::json ShadowBench::toJson() const
+{
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& c : cases_) {
+        const double frames = std::max<std::uint32_t>(c->frames, 1);
+        rows.push_back({{"configuration", c->configuration},
+                        {"width", c->frame.width},
+                        {"height", c->frame.height},
+                        {"frames", c->frames},
+                        {"atlasPassMs", c->atlasMs / frames},
+                        {"litPassMs", c->litMs / frames},
+                        {"frameMs", c->frameMs / frames},
+                        {"casterDraws", c->last.casterDraws},
+                        {"casterDrawsWithoutCullingBias", c->last.casterDrawsWithoutCullingBias}});
+    }
+    return rows;
+}
+
 void ShadowBench::printSummary() const
 {
     fmt::print("\nshadow test scene, 1280x720, 4 cascades, 2048 atlas, PCF 5x5 (GPU timestamps, mean of {} frames)\n",

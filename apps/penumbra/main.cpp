@@ -2,6 +2,7 @@
 #include "Commands.hpp"
 
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/Scene.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -12,7 +13,7 @@ int main(int argc, char** argv)
     app.require_subcommand(1);
     penumbra::apps::addRenderCommand(app);
     penumbra::apps::addPatternCommand(app);
-    penumbra::apps::addDemoCommand(app);
+    penumbra::apps::addParityCommand(app);
     penumbra::apps::addConfigurationsCommand(app);
     penumbra::apps::addBenchCommand(app);
     try {
@@ -20,6 +21,9 @@ int main(int argc, char** argv)
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     } catch (const penumbra::rhi::Error& e) {
+        fmt::print(stderr, "penumbra: error: {}\n", e.what());
+        return 1;
+    } catch (const penumbra::scene::SceneError& e) {
         fmt::print(stderr, "penumbra: error: {}\n", e.what());
         return 1;
     } catch (const std::exception& e) {
