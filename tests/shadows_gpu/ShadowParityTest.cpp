@@ -122,10 +122,10 @@ struct AtlasComparison {
 AtlasComparison compareAtlases(const apps::ShadowPictures& reference, const apps::ShadowPictures& other)
 {
     AtlasComparison c;
-    const std::vector<float>& a = reference.atlasLightDepth;
-    const std::vector<float>& b = other.atlasLightDepth;
+    const std::vector<float>& a = reference.atlas("directional").lightDepth;
+    const std::vector<float>& b = other.atlas("directional").lightDepth;
     c.difference = apps::compareFloats(a, b);
-    const std::vector<float> gradient = localGradient(a, reference.atlasDepth.width);
+    const std::vector<float> gradient = localGradient(a, reference.atlas("directional").depth.width);
     for (std::size_t i = 0; i < a.size(); ++i) {
         if ((a[i] > 0.0f) != (b[i] > 0.0f))
             ++c.coverageMismatches;
@@ -156,17 +156,6 @@ void report(const std::string& key, const std::string& line, double maxAbs, doub
     ::testing::Test::RecordProperty(key + ".differingPixels", std::to_string(pixels));
 }
 
-// PSNR of a float image in [0, 1] against peak 1.
-double floatPsnr(const std::vector<float>& a, const std::vector<float>& b)
-{
-    double sum = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        sum += double(a[i] - b[i]) * double(a[i] - b[i]);
-    if (sum == 0.0)
-        return INFINITY;
-    return 10.0 * std::log10(1.0 / (sum / double(a.size())));
-}
-
 void checkParity(const Variant& variant)
 {
     const auto start = std::chrono::steady_clock::now();
@@ -180,14 +169,14 @@ void checkParity(const Variant& variant)
 
     // Something to compare: casters in the atlas (unless every caster is off) and shadow in the lit image.
     std::size_t drawn = 0;
-    for (float d : vulkan.atlasLightDepth)
+    for (float d : vulkan.atlas("directional").lightDepth)
         drawn += d > 0.0f;
     if (variant.casters == CasterMode::Off) {
-        EXPECT_LT(drawn, vulkan.atlasLightDepth.size() / 2) << "only the ground should cast";
+        EXPECT_LT(drawn, vulkan.atlas("directional").lightDepth.size() / 2) << "only the ground should cast";
     }
     EXPECT_GT(drawn, 0u) << "empty atlas";
     testing::savePicture(vulkan.lit, fmt::format("shadow-parity-{}-vulkan-lit", variant.name));
-    testing::savePicture(vulkan.atlas, fmt::format("shadow-parity-{}-vulkan-atlas", variant.name));
+    testing::savePicture(vulkan.atlas("directional").picture, fmt::format("shadow-parity-{}-vulkan-atlas", variant.name));
 
     // Atlases pairwise.
     for (std::size_t i = 0; i < pictures.size(); ++i)
@@ -197,7 +186,7 @@ void checkParity(const Variant& variant)
             const std::string key = fmt::format("atlas.{}.{}", a.configuration, b.configuration);
             const bool sameConvention = a.depthRange == b.depthRange && a.reversedZ == b.reversedZ;
             if (sameConvention) {
-                const apps::FloatDifference raw = apps::compareFloats(a.atlasDepth.depth, b.atlasDepth.depth);
+                const apps::FloatDifference raw = apps::compareFloats(a.atlas("directional").depth.depth, b.atlas("directional").depth.depth);
                 fmt::print("{} {} raw window depth: max abs diff {:.3g}, differing texels {}\n", variant.name, key,
                            raw.maxAbs, raw.differingPixels);
                 ::testing::Test::RecordProperty(key + ".rawMaxAbs", fmt::format("{}", raw.maxAbs));
@@ -206,12 +195,12 @@ void checkParity(const Variant& variant)
                 EXPECT_LE(raw.differingPixels, 8u) << key;
             }
             const AtlasComparison c = compareAtlases(a, b);
-            const double psnr = floatPsnr(a.atlasLightDepth, b.atlasLightDepth);
+            const double psnr = apps::compareFloats(a.atlas("directional").lightDepth, b.atlas("directional").lightDepth).psnr;
             report(key,
                    fmt::format("{} {} light depth: max abs diff {:.3g}, PSNR {:.1f} dB, differing texels {} ({:.2f}%), "
                                "worst diff / subpixel step {:.2f}, coverage mismatches {}, beyond bound {}, without gradient {}",
                                variant.name, key, c.difference.maxAbs, psnr, c.difference.differingPixels,
-                               100.0 * double(c.difference.differingPixels) / double(a.atlasLightDepth.size()),
+                               100.0 * double(c.difference.differingPixels) / double(a.atlas("directional").lightDepth.size()),
                                c.worstRatio, c.coverageMismatches, c.beyondBound, c.withoutGradient),
                    c.difference.maxAbs, psnr, c.difference.differingPixels);
             EXPECT_EQ(c.coverageMismatches, 0u) << key << ": texels drawn in one atlas and cleared in the other";
