@@ -4,6 +4,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
+PENUMBRA = $(BUILD)/bin/penumbra
 
 .PHONY: all deps configure build test demo bench sanitize clean
 
@@ -21,11 +22,15 @@ build: configure
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
+# The parity report of every configuration (out/demo/<configuration>/{pattern,lit,atlas,cascades}.png,
+# atlas.exr, out/demo/index.html, parity.json), then the key-light scene through both backends.
 demo: build
-	@$(BUILD)/apps/penumbra demo --out out/demo
+	@$(PENUMBRA) parity --scene test --out out/demo
+	@$(PENUMBRA) render --backend vulkan,opengl --scene key-light --out out/demo/render/key-light.png \
+		--atlas out/demo/render/key-light-atlas --debug cascades
 
 bench: build
-	@$(BUILD)/apps/penumbra bench
+	@$(PENUMBRA) bench --json out/bench.json
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run in build-sanitize/.
 sanitize:

@@ -9,6 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace penumbra::scene {
@@ -33,8 +34,12 @@ Document parse(const std::filesystem::path& path)
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     const bool ok = extension == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, name)
                                         : loader.LoadASCIIFromFile(&model, &error, &warning, name);
-    if (!ok)
-        throw GltfError(fmt::format("{}: cannot read: {}", name, error.empty() ? warning : error));
+    if (!ok) {
+        std::string why = error.empty() ? warning : error;
+        while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back())))
+            why.pop_back();
+        throw GltfError(fmt::format("{}: cannot read: {}", name, why));
+    }
     return Document(name, std::move(model));
 }
 
