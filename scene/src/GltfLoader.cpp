@@ -22,7 +22,8 @@ constexpr float kMaxSpotOuterAngle = 1.5707963f - 1e-3f;
 // Behind the farthest corner of the scene, so an infinite glTF far plane clips nothing.
 constexpr float kFarPlaneMargin = 1.05f;
 
-Document parse(const std::filesystem::path& path)
+// tinygltf's warnings of a file it could read become notes, a line each.
+Document parse(const std::filesystem::path& path, std::vector<std::string>& notes)
 {
     const std::string name = path.string();
     if (!std::filesystem::is_regular_file(path))
@@ -39,6 +40,13 @@ Document parse(const std::filesystem::path& path)
         while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back())))
             why.pop_back();
         throw GltfError(fmt::format("{}: cannot read: {}", name, why));
+    }
+    std::size_t start = 0;
+    while (start < warning.size()) {
+        const std::size_t end = std::min(warning.find('\n', start), warning.size());
+        if (end > start)
+            notes.push_back(warning.substr(start, end - start));
+        start = end + 1;
     }
     return Document(name, std::move(model));
 }
@@ -146,13 +154,16 @@ Camera chooseCamera(const Document& document, const std::vector<gltf::CameraInst
 
 GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options)
 {
-    const Document document = parse(path);
     GltfScene result;
     Scene& scene = result.scene;
     std::vector<std::string>& notes = result.notes;
+    const Document document = parse(path, notes);
     for (const std::string& extension : document.model().extensionsRequired)
         if (extension != "KHR_lights_punctual")
             document.fail(fmt::format("requires extension {}, which is not supported", extension));
+    for (const std::string& extension : document.model().extensionsUsed)
+        if (extension != "KHR_lights_punctual")
+            notes.push_back(fmt::format("extension {} ignored", extension));
     const gltf::NodeWalk walk = gltf::walkNodes(document, scene, notes);
     for (const gltf::LightInstance& light : walk.lights)
         addLight(document, light, scene, notes);

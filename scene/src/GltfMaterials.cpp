@@ -53,13 +53,13 @@ TextureImage toRgba8(const Document& document, const tinygltf::Image& image, con
 
 } // namespace
 
-std::uint32_t MaterialTable::material(int index)
+std::uint32_t MaterialTable::material(int index, const std::string& primitive)
 {
     if (const auto found = materials_.find(index); found != materials_.end())
         return found->second;
     Material material{.name = "glTF default", .baseColor = glm::vec4(1.0f), .metallic = 1.0f, .roughness = 1.0f};
     if (index >= 0) {
-        const tinygltf::Material& gltf = document_.at(document_.model().materials, index, "material", "primitive");
+        const tinygltf::Material& gltf = document_.at(document_.model().materials, index, "material", primitive);
         const std::string owner = describe("material", index, gltf.name);
         const tinygltf::PbrMetallicRoughness& pbr = gltf.pbrMetallicRoughness;
         if (pbr.baseColorFactor.size() != 4)

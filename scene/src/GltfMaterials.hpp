@@ -14,9 +14,9 @@ class MaterialTable {
 public:
     MaterialTable(const Document& document, Scene& scene) : document_(document), scene_(scene) {}
 
-    // The scene material for glTF material `index`; -1 is glTF's default material (white,
-    // metallic 1, roughness 1, opaque).
-    std::uint32_t material(int index);
+    // The scene material for glTF material `index`, which `owner` (a primitive) refers to; -1 is
+    // glTF's default material (white, metallic 1, roughness 1, opaque).
+    std::uint32_t material(int index, const std::string& owner);
 
 private:
     std::uint32_t texture(int textureIndex, const std::string& owner);

@@ -78,7 +78,8 @@ private:
                 found = meshes_.emplace(key, scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data)))
                             .first;
             }
-            const std::uint32_t material = materials_.material(mesh.primitives[p].material);
+            const std::uint32_t material = materials_.material(
+                mesh.primitives[p].material, fmt::format("{} primitive {}", describe("mesh", node.mesh, mesh.name), p));
             const std::string base = node.name.empty() ? (mesh.name.empty() ? name : mesh.name) : node.name;
             scene_.addObject(mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), found->second,
                              material, world);

@@ -61,6 +61,22 @@ nlohmann::json toJson(const ParityReport& report, const std::vector<ShadowPictur
     return json;
 }
 
+// The scene's name is a user's path; everything else on the page is ours.
+std::string escapeHtml(const std::string& text)
+{
+    std::string out;
+    for (const char c : text) {
+        switch (c) {
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '&': out += "&amp;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
 std::string figure(double psnrDb) { return std::isinf(psnrDb) ? "identical" : fmt::format("{:.1f} dB", psnrDb); }
 
 std::string html(const ParityReport& report, const std::vector<ShadowPictures>& pictures, const std::string& sceneName)
@@ -73,7 +89,7 @@ std::string html(const ParityReport& report, const std::vector<ShadowPictures>& 
         "<p>Thresholds: lit PSNR &ge; {3} dB; atlas light-depth difference &le; {4:g}; test patterns byte-identical. "
         "Heat maps: black where equal, then red, yellow, white up to {5} 8-bit steps (lit) or the light-depth "
         "threshold (atlas), saturated beyond.</p>\n",
-        sceneName, pictures.size(), report.summary(pictures), report.thresholds.minLitPsnr,
+        escapeHtml(sceneName), pictures.size(), report.summary(pictures), report.thresholds.minLitPsnr,
         report.thresholds.maxLightDepthDifference, kLitHeatScale);
     page += "<table><tr><th>a</th><th>b</th><th>lit max</th><th>lit PSNR</th><th>lit pixels differing</th>"
             "<th>atlas light-depth max</th><th>atlas raw</th><th>result</th></tr>\n";
