@@ -7,6 +7,17 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+namespace {
+
+// Errors with context (a flag, a file, a configuration) are the user's to fix: exit status 1.
+int reportError(const std::exception& e)
+{
+    fmt::print(stderr, "penumbra: error: {}\n", e.what());
+    return 1;
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
     CLI::App app{"Penumbra: one renderer, Vulkan and OpenGL, identical pixels"};
@@ -21,11 +32,9 @@ int main(int argc, char** argv)
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     } catch (const penumbra::rhi::Error& e) {
-        fmt::print(stderr, "penumbra: error: {}\n", e.what());
-        return 1;
+        return reportError(e);
     } catch (const penumbra::scene::SceneError& e) {
-        fmt::print(stderr, "penumbra: error: {}\n", e.what());
-        return 1;
+        return reportError(e);
     } catch (const std::exception& e) {
         fmt::print(stderr, "penumbra: unexpected error: {}\n", e.what());
         return 2;
