@@ -114,6 +114,38 @@ TEST_F(GltfLoaderTest, EveryIndexSizeAndNoIndicesGiveTheSameTriangles)
         EXPECT_EQ(unindexed.vertices[unindexed.indices[i]].position, positions[i]);
 }
 
+TEST_F(GltfLoaderTest, InterleavedAttributesAndNormalizedTexCoords)
+{
+    GltfBuilder b;
+    struct PositionNormal {
+        glm::vec3 position, normal;
+    };
+    const std::vector<PositionNormal> vertices = {{{0, 0, 0}, {0, 0, 1}}, {{1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 0, 1}}};
+    // Both attributes in one buffer view, 24 bytes a vertex, the normal 12 bytes in.
+    const int position = b.addAccessor({reinterpret_cast<const std::uint8_t*>(vertices.data()), sizeof(PositionNormal) * 3},
+                                       3, "VEC3", Component::Float);
+    const auto view = b.json()["accessors"][std::size_t(position)]["bufferView"].get<std::size_t>();
+    b.json()["bufferViews"][view]["byteStride"] = sizeof(PositionNormal);
+    const int normal = b.add("accessors", {{"bufferView", view}, {"byteOffset", 12}, {"count", 3}, {"type", "VEC3"},
+                                           {"componentType", int(Component::Float)}});
+    const std::vector<std::uint16_t> uvs = {0, 0, 65535, 0, 0, 32768};
+    const int uv = b.addAccessor({reinterpret_cast<const std::uint8_t*>(uvs.data()), uvs.size() * 2}, 3, "VEC2",
+                                 Component::UnsignedShort, true);
+    const int mesh = b.add("meshes", {{"primitives", {{{"attributes", {{"POSITION", position}, {"NORMAL", normal},
+                                                                          {"TEXCOORD_0", uv}}}}}}});
+    b.addRoot(b.add("nodes", {{"mesh", mesh}}));
+    const GltfScene loaded = loadGltf(write(b));
+    const MeshData& read = loaded.scene.meshes.at(0);
+    ASSERT_EQ(read.vertices.size(), 3u);
+    EXPECT_EQ(read.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(read.vertices[i].position, vertices[i].position);
+        EXPECT_EQ(read.vertices[i].normal, vertices[i].normal);
+    }
+    EXPECT_EQ(read.vertices[1].uv, glm::vec2(1.0f, 0.0f));
+    EXPECT_FLOAT_EQ(read.vertices[2].uv.y, 32768.0f / 65535.0f);
+}
+
 TEST_F(GltfLoaderTest, MissingNormalsAreComputedFlat)
 {
     GltfBuilder b = cubeScene();
