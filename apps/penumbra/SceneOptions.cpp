@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 #include <optional>
 
 namespace penumbra::apps {
@@ -116,7 +117,10 @@ LoadedScene loadScene(const SceneOptions& options)
     }
     if (lookAt) {
         scene::Camera& camera = loaded.scene.camera;
-        const scene::Camera placed = scene::lookAt(lookAt->position, lookAt->target, camera.fovY);
+        // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
+        const float vertical = std::abs(glm::normalize(lookAt->target - lookAt->position).y);
+        const glm::vec3 up = vertical > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+        const scene::Camera placed = scene::lookAt(lookAt->position, lookAt->target, camera.fovY, up);
         camera.position = placed.position;
         camera.forward = placed.forward;
         camera.up = placed.up;
