@@ -4,6 +4,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
+PENUMBRA = $(BUILD)/bin/penumbra
 
 .PHONY: all deps configure build test demo bench sanitize clean
 
@@ -21,11 +22,16 @@ build: configure
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
+# The parity report of every configuration for the mixed scene (directional, spot and point lights):
+# out/demo/<configuration>/{pattern,lit,atlas,other-atlas,cascades}.png, atlas.exr, other-atlas.exr,
+# out/demo/index.html, parity.json; then the four-light test scene through both backends.
 demo: build
-	@$(BUILD)/apps/penumbra demo --out out/demo
+	@$(PENUMBRA) parity --scene mixed --out out/demo
+	@$(PENUMBRA) render --backend vulkan,opengl --scene test --out out/demo/render/test.png \
+		--atlas out/demo/render/test-atlas --debug cascades
 
 bench: build
-	@$(BUILD)/apps/penumbra bench
+	@$(PENUMBRA) bench --json out/bench.json
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run in build-sanitize/.
 sanitize:

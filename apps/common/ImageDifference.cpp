@@ -37,11 +37,15 @@ FloatDifference compareFloats(std::span<const float> a, std::span<const float> b
     if (a.size() != b.size())
         throw rhi::Error(fmt::format("cannot compare {} values with {}", a.size(), b.size()));
     FloatDifference d;
+    double squared = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i) {
         const float delta = std::abs(a[i] - b[i]);
         d.maxAbs = std::max(d.maxAbs, delta);
         d.differingPixels += delta != 0.0f;
+        squared += double(delta) * delta;
     }
+    d.psnr = squared == 0.0 ? std::numeric_limits<double>::infinity()
+                            : 10.0 * std::log10(1.0 / (squared / double(a.size())));
     return d;
 }
 

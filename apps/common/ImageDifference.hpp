@@ -17,10 +17,12 @@ struct ImageDifference {
 // Throws rhi::Error when size or format differ.
 ImageDifference compareImages(const rhi::Image& a, const rhi::Image& b);
 
-// Two float images (depth, light depth) of equal size: max |a - b| and the pixels that differ at all.
+// Two float images (depth, light depth) of equal size: max |a - b|, the pixels that differ at all,
+// and the PSNR of values in [0, 1] against peak 1.
 struct FloatDifference {
     float maxAbs = 0.0f;
     std::size_t differingPixels = 0;
+    double psnr = 0.0; // dB; infinite when identical
 };
 FloatDifference compareFloats(std::span<const float> a, std::span<const float> b);
 

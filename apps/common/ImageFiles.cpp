@@ -3,7 +3,10 @@
 #include "penumbra/rhi/Error.hpp"
 
 #include <OpenImageIO/imageio.h>
+#include <cmath>
+#include <fstream>
 #include <fmt/format.h>
+#include <vector>
 
 namespace penumbra::apps {
 namespace {
@@ -23,6 +26,12 @@ void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec, 
     std::filesystem::rename(temporary, path);
 }
 
+float srgbToLinear(std::byte encoded)
+{
+    const float c = float(encoded) / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
 } // namespace
 
 void writePng(const std::filesystem::path& path, const rhi::Image& image)
@@ -37,6 +46,43 @@ void writeExr(const std::filesystem::path& path, const rhi::DepthImage& depth)
     OIIO::ImageSpec spec(int(depth.width), int(depth.height), 1, OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"Z"};
     writeImage(path, spec, depth.depth.data());
+}
+
+
+bool isPicturePath(const std::filesystem::path& path)
+{
+    return path.extension() == ".png" || path.extension() == ".exr";
+}
+
+void writePicture(const std::filesystem::path& path, const rhi::Image& image)
+{
+    if (path.extension() == ".png")
+        return writePng(path, image);
+    if (path.extension() != ".exr")
+        throw rhi::Error(fmt::format("{}: pictures are written as .png or .exr", path.string()));
+    if (image.format != rhi::Format::RGBA8)
+        throw rhi::Error(fmt::format("{}: needs an RGBA8 picture, the image is {}", path.string(),
+                                     rhi::formatName(image.format)));
+    std::vector<float> linear(image.bytes.size());
+    for (std::size_t i = 0; i < image.bytes.size(); ++i)
+        linear[i] = i % 4 == 3 ? float(image.bytes[i]) / 255.0f : srgbToLinear(image.bytes[i]);
+    writeImage(path, OIIO::ImageSpec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT), linear.data());
+}
+
+void writeTextFile(const std::filesystem::path& path, std::string_view text)
+{
+    std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
+    const std::filesystem::path temporary = path.string() + ".partial";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out.write(text.data(), std::streamsize(text.size()));
+        out.close();
+        if (!out) {
+            std::filesystem::remove(temporary);
+            throw rhi::Error(fmt::format("{}: cannot write", path.string()));
+        }
+    }
+    std::filesystem::rename(temporary, path);
 }
 
 } // namespace penumbra::apps

@@ -9,24 +9,21 @@
 #include "penumbra/scene/TestScenes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <fmt/format.h>
+#include <span>
 
 namespace penumbra::apps {
-
-scene::Scene namedScene(const std::string& name)
-{
-    if (name == "test")
-        return scene::makeShadowTestScene();
-    if (name == "key-light")
-        return scene::makeSingleLightScene();
-    if (name == "mixed")
-        return scene::makeMixedLightsScene();
-    if (name == "room")
-        return scene::makePointLightRoomScene();
-    throw rhi::Error(fmt::format("no scene named '{}'; known scenes: test, key-light, mixed, room", name));
-}
-
 namespace {
+
+AtlasPictures atlasPictures(std::string name, rhi::DepthImage depth, const rhi::Conventions& conventions,
+                            std::span<const render::PerspectiveTile> perspectiveTiles = {})
+{
+    AtlasPictures atlas{std::move(name), {}, std::move(depth), {}};
+    atlas.picture = render::atlasPicture(atlas.depth, conventions, perspectiveTiles);
+    atlas.lightDepth = render::lightDepthFraction(atlas.depth, conventions);
+    return atlas;
+}
 
 rhi::DepthImage cubeFacesSideBySide(rhi::Device& device, const shadows::ShadowCubes& cubes)
 {
@@ -43,6 +40,44 @@ rhi::DepthImage cubeFacesSideBySide(rhi::Device& device, const shadows::ShadowCu
 
 } // namespace
 
+const AtlasPictures& ShadowPictures::atlas(std::string_view name) const
+{
+    std::string names;
+    for (const AtlasPictures& a : atlases) {
+        if (a.name == name)
+            return a;
+        names += (names.empty() ? "" : ", ") + a.name;
+    }
+    throw rhi::Error(fmt::format("{}: no atlas named '{}'; there are: {}", configuration, name, names));
+}
+
+namespace {
+
+struct NamedScene {
+    std::string_view name;
+    scene::Scene (*make)();
+};
+
+constexpr std::array<NamedScene, 4> kNamedScenes{{{"test", scene::makeShadowTestScene},
+                                                  {"key-light", scene::makeSingleLightScene},
+                                                  {"mixed", scene::makeMixedLightsScene},
+                                                  {"room", scene::makePointLightRoomScene}}};
+
+} // namespace
+
+bool isNamedScene(std::string_view name)
+{
+    return std::any_of(kNamedScenes.begin(), kNamedScenes.end(), [&](const NamedScene& s) { return s.name == name; });
+}
+
+scene::Scene namedScene(const std::string& name)
+{
+    for (const NamedScene& s : kNamedScenes)
+        if (s.name == name)
+            return s.make();
+    throw rhi::Error(fmt::format("no scene named '{}'; known scenes: {}", name, kSceneNames));
+}
+
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame)
 {
@@ -52,36 +87,38 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
     pictures.configuration = configuration;
     pictures.depthRange = device->conventions().depthRange();
     pictures.reversedZ = device->conventions().reversedZ();
-    render::FrameDesc withCascades = frame;
-    withCascades.cascadeView = true;
-    pictures.stats = renderer.render(scene.camera, withCascades);
+    pictures.stats = renderer.render(scene.camera, frame);
     pictures.notes = renderer.notes();
     pictures.lit = rhi::readTexture(*device, renderer.litImage());
-    pictures.cascades = rhi::readTexture(*device, renderer.cascadeImage());
-    pictures.atlasDepth = rhi::readDepth(*device, renderer.atlas().texture());
-    pictures.atlas = render::atlasPicture(pictures.atlasDepth, device->conventions());
-    pictures.atlasLightDepth = render::lightDepthFraction(pictures.atlasDepth, device->conventions());
-    pictures.otherAtlasDepth = rhi::readDepth(*device, renderer.otherAtlas().texture());
-    const std::vector<render::PerspectiveTile> tiles = render::perspectiveTiles(renderer.otherPlan());
-    pictures.otherAtlas = render::atlasPicture(pictures.otherAtlasDepth, device->conventions(), tiles);
-    pictures.otherAtlasNearness = render::lightDepthFraction(pictures.otherAtlasDepth, device->conventions());
-    if (!renderer.otherPlan().cubes.empty()) {
-        pictures.cubeFacesDepth = cubeFacesSideBySide(*device, renderer.shadowCubes());
-        pictures.cubeFacesNearness = render::lightDepthFraction(pictures.cubeFacesDepth, device->conventions());
-    }
+    if (frame.cascadeView)
+        pictures.cascades = rhi::readTexture(*device, renderer.cascadeImage());
+    const rhi::Conventions& conventions = device->conventions();
+    pictures.atlases.push_back(
+        atlasPictures("directional", rhi::readDepth(*device, renderer.atlas().texture()), conventions));
+    pictures.atlases.push_back(atlasPictures("other", rhi::readDepth(*device, renderer.otherAtlas().texture()),
+                                             conventions, render::perspectiveTiles(renderer.otherPlan())));
+    if (!renderer.otherPlan().cubes.empty())
+        pictures.atlases.push_back(
+            atlasPictures("cube", cubeFacesSideBySide(*device, renderer.shadowCubes()), conventions));
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;
 }
 
+std::string atlasFileStem(std::string_view name)
+{
+    return name == "directional" ? std::string("atlas") : fmt::format("{}-atlas", name);
+}
+
 void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictures& pictures)
 {
     writePng(folder / "lit.png", pictures.lit);
-    writePng(folder / "atlas.png", pictures.atlas);
-    writeExr(folder / "atlas.exr", pictures.atlasDepth);
-    writePng(folder / "cascades.png", pictures.cascades);
-    writePng(folder / "other-atlas.png", pictures.otherAtlas);
-    writeExr(folder / "other-atlas.exr", pictures.otherAtlasDepth);
+    for (const AtlasPictures& atlas : pictures.atlases) {
+        writePng(folder / (atlasFileStem(atlas.name) + ".png"), atlas.picture);
+        writeExr(folder / (atlasFileStem(atlas.name) + ".exr"), atlas.depth);
+    }
+    if (!pictures.cascades.bytes.empty())
+        writePng(folder / "cascades.png", pictures.cascades);
 }
 
 } // namespace penumbra::apps

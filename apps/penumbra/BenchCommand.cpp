@@ -1,5 +1,7 @@
+#include "BackendOptions.hpp"
 #include "Commands.hpp"
 #include "DrawScene.hpp"
+#include "ImageFiles.hpp"
 #include "RawDraws.hpp"
 #include "ShadowBench.hpp"
 
@@ -19,6 +21,7 @@ struct BenchOptions {
     std::vector<std::uint32_t> draws = {1000, 5000, 20000};
     double minTime = 1.0;
     std::vector<std::string> suites = {"draws", "shadows"};
+    std::string json; // empty: no JSON file
 };
 
 bool wants(const BenchOptions& options, const std::string& suite)
@@ -88,16 +91,27 @@ void runBenchmarks(const BenchOptions& options)
     CollectingReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
 
-    if (shadowBench)
+    nlohmann::json json = {{"draws", nlohmann::json::array()}, {"shadows", nlohmann::json::array()}};
+    if (shadowBench) {
         shadowBench->printSummary();
-    if (cases.empty())
-        return;
-    fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw", "raw ns/draw",
-               "rhi / raw");
+        json["shadows"] = shadowBench->toJson();
+    }
+    if (!cases.empty())
+        fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw", "raw ns/draw",
+                   "rhi / raw");
     for (const Case& c : cases) {
         const double rhi = reporter.seconds.at(c.rhiName) * 1e9 / c.draws;
         const double raw = reporter.seconds.at(c.rawName) * 1e9 / c.draws;
         fmt::print("{:<24} {:>7} {:>14.1f} {:>14.1f} {:>10.3f}\n", c.configuration, c.draws, rhi, raw, rhi / raw);
+        json["draws"].push_back({{"configuration", c.configuration},
+                                 {"draws", c.draws},
+                                 {"rhiNsPerDraw", rhi},
+                                 {"rawNsPerDraw", raw},
+                                 {"rhiOverRaw", rhi / raw}});
+    }
+    if (!options.json.empty()) {
+        writeTextFile(options.json, json.dump(2) + "\n");
+        fmt::print("wrote {}\n", options.json);
     }
 }
 
@@ -114,6 +128,10 @@ void addBenchCommand(CLI::App& app)
         ->check(configurationValidator());
     bench->add_option("-n,--draws", options->draws, "Draws per frame")->check(CLI::Range(1u, 1000000u));
     bench->add_option("--min-time", options->minTime, "Minimum seconds per benchmark")->check(CLI::Range(0.01, 60.0));
+    bench->add_option("--json", options->json,
+                      "Also write the figures to this file: {\"draws\": [{configuration, draws, rhiNsPerDraw, "
+                      "rawNsPerDraw, rhiOverRaw}], \"shadows\": [{configuration, scenario, atlasPassMs, otherAtlasPassMs, litPassMs, frameMs, "
+                      "casterDraws, ...}]}");
     bench->callback([options] { runBenchmarks(*options); });
 }
 

@@ -7,17 +7,15 @@
 
 namespace penumbra::apps {
 
-// Each adds one subcommand whose callback does the work; failures throw rhi::Error.
+// Each adds one subcommand whose callback does the work; failures throw rhi::Error (or
+// scene::SceneError for a scene that cannot be loaded).
 void addPatternCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
-void addDemoCommand(CLI::App& app);
+void addParityCommand(CLI::App& app);
 void addConfigurationsCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 
 // The RHI test pattern through one configuration, size x size pixels.
 rhi::Image renderPattern(const std::string& configuration, std::uint32_t size);
-
-// Validates a --configuration value against the named configurations, listing them on error.
-CLI::Validator configurationValidator();
 
 } // namespace penumbra::apps

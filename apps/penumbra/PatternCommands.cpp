@@ -1,3 +1,4 @@
+#include "BackendOptions.hpp"
 #include "Commands.hpp"
 #include "ImageFiles.hpp"
 #include "TestPattern.hpp"
@@ -29,20 +30,6 @@ rhi::Image renderPattern(const std::string& configuration, std::uint32_t size)
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return image;
-}
-
-CLI::Validator configurationValidator()
-{
-    return CLI::Validator(
-        [](std::string& name) {
-            try {
-                rhi::parseConfiguration(name);
-            } catch (const rhi::Error& e) {
-                return std::string(e.what());
-            }
-            return std::string();
-        },
-        "CONFIGURATION");
 }
 
 void addPatternCommand(CLI::App& app)

@@ -126,6 +126,27 @@ ShadowBench::ShadowBench(const std::vector<std::string>& configurations, double 
 
 ShadowBench::~ShadowBench() = default;
 
+nlohmann::json ShadowBench::toJson() const
+{
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& c : cases_) {
+        const double frames = std::max<std::uint32_t>(c->frames, 1);
+        rows.push_back({{"configuration", c->configuration},
+                        {"scenario", c->scenario},
+                        {"width", c->frame.width},
+                        {"height", c->frame.height},
+                        {"frames", c->frames},
+                        {"atlasPassMs", c->atlasMs / frames},
+                        {"otherAtlasPassMs", c->otherMs / frames},
+                        {"litPassMs", c->litMs / frames},
+                        {"frameMs", c->frameMs / frames},
+                        {"casterDraws", c->last.casterDraws},
+                        {"otherCasterDraws", c->last.otherCasterDraws},
+                        {"casterDrawsWithoutCullingBias", c->last.casterDrawsWithoutCullingBias}});
+    }
+    return rows;
+}
+
 void ShadowBench::printSummary() const
 {
     fmt::print("\n1280x720; directional: 4 cascades, 2048 atlas, PCF 5x5; spot and point: 2048 atlas (512 cube faces), "

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Device.hpp"
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,8 @@ public:
 
     // After benchmark::RunSpecifiedBenchmarks: one table row per configuration.
     void printSummary() const;
+    // The same figures, one object per configuration.
+    nlohmann::json toJson() const;
 
 private:
     struct Case;

@@ -2,9 +2,21 @@
 #include "Commands.hpp"
 
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/Scene.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+
+namespace {
+
+// Errors with context (a flag, a file, a configuration) are the user's to fix: exit status 1.
+int reportError(const std::exception& e)
+{
+    fmt::print(stderr, "penumbra: error: {}\n", e.what());
+    return 1;
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -12,7 +24,7 @@ int main(int argc, char** argv)
     app.require_subcommand(1);
     penumbra::apps::addRenderCommand(app);
     penumbra::apps::addPatternCommand(app);
-    penumbra::apps::addDemoCommand(app);
+    penumbra::apps::addParityCommand(app);
     penumbra::apps::addConfigurationsCommand(app);
     penumbra::apps::addBenchCommand(app);
     try {
@@ -20,8 +32,9 @@ int main(int argc, char** argv)
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     } catch (const penumbra::rhi::Error& e) {
-        fmt::print(stderr, "penumbra: error: {}\n", e.what());
-        return 1;
+        return reportError(e);
+    } catch (const penumbra::scene::SceneError& e) {
+        return reportError(e);
     } catch (const std::exception& e) {
         fmt::print(stderr, "penumbra: unexpected error: {}\n", e.what());
         return 2;

@@ -51,6 +51,23 @@ void validateObject(const Scene& scene, const Object& object, std::size_t index)
                                      what, object.mesh));
 }
 
+void validateMaterial(const Scene& scene, const Material& material, std::size_t index)
+{
+    if (material.baseColorTexture && *material.baseColorTexture >= scene.textures.size())
+        throw SceneError(fmt::format("{}: texture {} does not exist (the scene has {} textures)",
+                                     describe("material", index, material.name), *material.baseColorTexture,
+                                     scene.textures.size()));
+}
+
+void validateTexture(const TextureImage& texture, std::size_t index)
+{
+    const std::size_t expected = std::size_t(texture.width) * texture.height * 4;
+    if (texture.width == 0 || texture.height == 0 || texture.rgba.size() != expected)
+        throw SceneError(fmt::format("{}: {}x{} texels need {} RGBA8 bytes, it has {}",
+                                     describe("texture", index, texture.name), texture.width, texture.height,
+                                     expected, texture.rgba.size()));
+}
+
 void validateLight(const DirectionalLight& light, std::size_t index)
 {
     const std::string what = describe("light", index, light.name);
@@ -144,6 +161,10 @@ void Scene::validate() const
 {
     for (std::size_t i = 0; i < meshes.size(); ++i)
         validateMesh(meshes[i], i);
+    for (std::size_t i = 0; i < textures.size(); ++i)
+        validateTexture(textures[i], i);
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        validateMaterial(*this, materials[i], i);
     for (std::size_t i = 0; i < objects.size(); ++i)
         validateObject(*this, objects[i], i);
     for (std::size_t i = 0; i < lights.size(); ++i)

@@ -126,26 +126,12 @@ struct AtlasComparison {
     std::size_t withoutGradient = 0;    // differing texels with no local gradient (checked by the absolute bound)
 };
 
-// One atlas of a configuration's pictures: raw window depth, and depth comparable across conventions.
-struct AtlasOf {
-    const char* name;
-    const rhi::DepthImage& (*depth)(const apps::ShadowPictures&);
-    const std::vector<float>& (*lightDepth)(const apps::ShadowPictures&);
-    // Across conventions, texels drawn in one atlas only or beyond the gradient bound. Perspective views
-    // clip casters at their near and far planes, whose clip-space equations differ per convention
-    // (z = 0, -w or w), so a caster crossing the light's range may gain or lose a texel there; the
-    // orthographic directional views pancake instead of clipping and keep coverage exact.
-    std::size_t outliersAllowed;
-};
-
-const std::array<AtlasOf, 3> kAtlases{{
-    {"atlas", [](const apps::ShadowPictures& p) -> const rhi::DepthImage& { return p.atlasDepth; },
-     [](const apps::ShadowPictures& p) -> const std::vector<float>& { return p.atlasLightDepth; }, 0},
-    {"other-atlas", [](const apps::ShadowPictures& p) -> const rhi::DepthImage& { return p.otherAtlasDepth; },
-     [](const apps::ShadowPictures& p) -> const std::vector<float>& { return p.otherAtlasNearness; }, 16},
-    {"cube-faces", [](const apps::ShadowPictures& p) -> const rhi::DepthImage& { return p.cubeFacesDepth; },
-     [](const apps::ShadowPictures& p) -> const std::vector<float>& { return p.cubeFacesNearness; }, 16},
-}};
+// Across conventions, texels drawn in one atlas only or beyond the gradient bound. Perspective views
+// (the "other" atlas, the "cube" faces) clip casters at their near and far planes, whose clip-space
+// equations differ per convention (z = 0, -w or w), so a caster crossing the light's range may gain or
+// lose a texel there; the orthographic directional views pancake instead of clipping and keep coverage
+// exact.
+std::size_t outliersAllowed(const std::string& atlas) { return atlas == "directional" ? 0 : 16; }
 
 AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<float>& b, const rhi::DepthImage& shape)
 {
@@ -185,28 +171,18 @@ void report(const std::string& key, const std::string& line, double maxAbs, doub
     ::testing::Test::RecordProperty(key + ".differingPixels", std::to_string(pixels));
 }
 
-// PSNR of a float image in [0, 1] against peak 1.
-double floatPsnr(const std::vector<float>& a, const std::vector<float>& b)
-{
-    double sum = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        sum += double(a[i] - b[i]) * double(a[i] - b[i]);
-    if (sum == 0.0)
-        return INFINITY;
-    return 10.0 * std::log10(1.0 / (sum / double(a.size())));
-}
-
 // Every pair of configurations: raw window depth where the conventions agree, light depth everywhere.
-void checkAtlasPairs(const Variant& variant, const std::vector<apps::ShadowPictures>& pictures, const AtlasOf& atlas)
+void checkAtlasPairs(const Variant& variant, const std::vector<apps::ShadowPictures>& pictures,
+                     const std::string& atlas)
 {
     for (std::size_t i = 0; i < pictures.size(); ++i)
         for (std::size_t j = i + 1; j < pictures.size(); ++j) {
             const apps::ShadowPictures& a = pictures[i];
             const apps::ShadowPictures& b = pictures[j];
-            const std::string key = fmt::format("{}.{}.{}", atlas.name, a.configuration, b.configuration);
+            const std::string key = fmt::format("{}.{}.{}", atlas, a.configuration, b.configuration);
             const bool sameConvention = a.depthRange == b.depthRange && a.reversedZ == b.reversedZ;
             if (sameConvention) {
-                const apps::FloatDifference raw = apps::compareFloats(atlas.depth(a).depth, atlas.depth(b).depth);
+                const apps::FloatDifference raw = apps::compareFloats(a.atlas(atlas).depth.depth, b.atlas(atlas).depth.depth);
                 fmt::print("{} {} raw window depth: max abs diff {:.3g}, differing texels {}\n", variant.name, key,
                            raw.maxAbs, raw.differingPixels);
                 ::testing::Test::RecordProperty(key + ".rawMaxAbs", fmt::format("{}", raw.maxAbs));
@@ -214,10 +190,10 @@ void checkAtlasPairs(const Variant& variant, const std::vector<apps::ShadowPictu
                 // leave up to 4 texels on triangle edges, which the gradient bound below also covers.
                 EXPECT_LE(raw.differingPixels, 8u) << key;
             }
-            const std::vector<float>& aLight = atlas.lightDepth(a);
-            const std::vector<float>& bLight = atlas.lightDepth(b);
-            const AtlasComparison c = compareAtlases(aLight, bLight, atlas.depth(a));
-            const double psnr = floatPsnr(aLight, bLight);
+            const std::vector<float>& aLight = a.atlas(atlas).lightDepth;
+            const std::vector<float>& bLight = b.atlas(atlas).lightDepth;
+            const AtlasComparison c = compareAtlases(aLight, bLight, a.atlas(atlas).depth);
+            const double psnr = c.difference.psnr;
             report(key,
                    fmt::format("{} {} light depth: max abs diff {:.3g}, PSNR {:.1f} dB, differing texels {} ({:.2f}%), "
                                "worst diff / subpixel step {:.2f}, coverage mismatches {}, beyond bound {}, without gradient {}",
@@ -225,12 +201,12 @@ void checkAtlasPairs(const Variant& variant, const std::vector<apps::ShadowPictu
                                100.0 * double(c.difference.differingPixels) / double(aLight.size()),
                                c.worstRatio, c.coverageMismatches, c.beyondBound, c.withoutGradient),
                    c.difference.maxAbs, psnr, c.difference.differingPixels);
-            EXPECT_LE(c.coverageMismatches + c.beyondBound, atlas.outliersAllowed)
+            EXPECT_LE(c.coverageMismatches + c.beyondBound, outliersAllowed(atlas))
                 << key << ": " << c.coverageMismatches << " texels drawn in one atlas and cleared in the other, "
                 << c.beyondBound << " differ by more than " << kRoundingSlack << " + " << kStepsAllowed
                 << " subpixel steps of the local depth gradient (worst ratio " << c.worstRatio << ")";
             // Measured max 2.5e-5 across conventions (the beam); the gradient bound above is the real check.
-            EXPECT_LE(c.maxAbsCovered, atlas.outliersAllowed == 0 ? 2e-4f : 1e-2f) << key;
+            EXPECT_LE(c.maxAbsCovered, outliersAllowed(atlas) == 0 ? 2e-4f : 1e-2f) << key;
         }
 
 }
@@ -248,19 +224,19 @@ void checkParity(const Variant& variant)
 
     // Something to compare: casters in the atlas (unless every caster is off) and shadow in the lit image.
     std::size_t drawn = 0;
-    for (const AtlasOf& atlas : kAtlases)
-        for (float d : atlas.lightDepth(vulkan))
+    for (const apps::AtlasPictures& atlas : vulkan.atlases)
+        for (float d : atlas.lightDepth)
             drawn += d > 0.0f;
     if (variant.casters == CasterMode::Off) {
-        EXPECT_LT(drawn, vulkan.atlasLightDepth.size() / 2) << "only the ground should cast";
+        EXPECT_LT(drawn, vulkan.atlas("directional").lightDepth.size() / 2) << "only the ground should cast";
     }
     EXPECT_GT(drawn, 0u) << "empty atlas";
     testing::savePicture(vulkan.lit, fmt::format("shadow-parity-{}-vulkan-lit", variant.name));
-    testing::savePicture(vulkan.atlas, fmt::format("shadow-parity-{}-vulkan-atlas", variant.name));
-    testing::savePicture(vulkan.otherAtlas, fmt::format("shadow-parity-{}-vulkan-other-atlas", variant.name));
+    for (const apps::AtlasPictures& atlas : vulkan.atlases)
+        testing::savePicture(atlas.picture, fmt::format("shadow-parity-{}-vulkan-{}-atlas", variant.name, atlas.name));
 
-    for (const AtlasOf& atlas : kAtlases)
-        checkAtlasPairs(variant, pictures, atlas);
+    for (const apps::AtlasPictures& atlas : vulkan.atlases)
+        checkAtlasPairs(variant, pictures, atlas.name);
 
     // Lit images against vulkan.
     for (std::size_t i = 1; i < pictures.size(); ++i) {

@@ -4,6 +4,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace penumbra::scene {
@@ -24,6 +25,9 @@ struct Material {
     float alphaCutoff = 0.5f; // Clip only
     CasterMode caster = CasterMode::On;
     bool receiveShadows = true;
+    // Index into Scene::textures, multiplied with baseColor (glTF's baseColorTexture); the lit
+    // pass does not sample it yet.
+    std::optional<std::uint32_t> baseColorTexture;
 };
 
 // Cells per uv unit of the procedural checker that gives Clip materials their holes.

@@ -4,6 +4,7 @@
 #include "penumbra/scene/Geometry.hpp"
 #include "penumbra/scene/Light.hpp"
 #include "penumbra/scene/Material.hpp"
+#include "penumbra/scene/TextureImage.hpp"
 
 #include <glm/mat4x4.hpp>
 
@@ -27,6 +28,10 @@ public:
 // One drawn instance: meshes[mesh] with materials[material], placed by transform.
 // worldBounds = meshes[mesh].bounds.transformed(transform); Scene::addObject fills it and
 // validate() rejects a stale one, because shadow fitting and culling trust it.
+// The transform may be any invertible affine map: normals go through its inverse transpose (the
+// lit pass, the ground truth). A mirroring transform (negative determinant) turns counter-clockwise
+// triangles clockwise, so such an object needs a mesh with reversed winding (the glTF loader
+// makes one) to keep its outside front-facing.
 struct Object {
     std::string name;
     std::uint32_t mesh = 0;
@@ -42,6 +47,7 @@ struct Scene {
     std::vector<DirectionalLight> lights;
     std::vector<SpotLight> spotLights;
     std::vector<PointLight> pointLights;
+    std::vector<TextureImage> textures; // referred to by Material::baseColorTexture
     Camera camera;
 
     std::uint32_t addMesh(MeshData mesh);

@@ -1,0 +1,163 @@
+#include "SceneOptions.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/shadows/ShadowSettingsJson.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <optional>
+
+namespace penumbra::apps {
+namespace {
+
+constexpr std::uint32_t kMaxSize = 8192;
+
+struct Size {
+    std::uint32_t width, height;
+};
+
+std::optional<Size> parseSize(const std::string& text)
+{
+    unsigned width = 0, height = 0;
+    int consumed = 0;
+    if (std::sscanf(text.c_str(), "%ux%u%n", &width, &height, &consumed) != 2 || std::size_t(consumed) != text.size())
+        return std::nullopt;
+    if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize)
+        return std::nullopt;
+    return Size{width, height};
+}
+
+bool isGltfPath(const std::string& scene)
+{
+    const std::string extension = std::filesystem::path(scene).extension().string();
+    return extension == ".gltf" || extension == ".glb";
+}
+
+struct LookAt {
+    glm::vec3 position, target;
+};
+
+// "px,py,pz:tx,ty,tz"
+std::optional<LookAt> parseLookAt(const std::string& text)
+{
+    float v[6];
+    int consumed = 0;
+    if (std::sscanf(text.c_str(), "%f,%f,%f:%f,%f,%f%n", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &consumed) != 6 ||
+        std::size_t(consumed) != text.size())
+        return std::nullopt;
+    for (const float f : v)
+        if (!std::isfinite(f))
+            return std::nullopt;
+    const LookAt lookAt{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+    if (lookAt.position == lookAt.target)
+        return std::nullopt;
+    return lookAt;
+}
+
+std::string validateScene(const std::string& scene)
+{
+    if (isGltfPath(scene))
+        return std::filesystem::is_regular_file(scene) ? std::string() : fmt::format("no such file: {}", scene);
+    if (isNamedScene(scene))
+        return {};
+    return fmt::format("'{}' is neither a built-in scene ({}) nor a .gltf or .glb file", scene, kSceneNames);
+}
+
+std::string validateCamera(const std::string& camera)
+{
+    if (camera.find(':') != std::string::npos && !parseLookAt(camera))
+        return fmt::format("'{}' is not px,py,pz:tx,ty,tz (six numbers, position and target apart)", camera);
+    return {};
+}
+
+} // namespace
+
+void addSceneOptions(CLI::App& command, SceneOptions& options)
+{
+    command.add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
+        ->check(CLI::Validator([](std::string& s) { return validateScene(s); }, "SCENE"))
+        ->capture_default_str();
+    command
+        .add_option("--camera", options.camera,
+                    "A glTF camera (by camera or node name), or a position and a target as px,py,pz:tx,ty,tz "
+                    "(e.g. 0,8,-20:0,0,5), which keeps the scene camera's field of view and planes")
+        ->check(CLI::Validator([](std::string& s) { return validateCamera(s); }, "CAMERA"));
+    command.add_option("--settings", options.settings, "Shadow settings JSON file")->check(CLI::ExistingFile);
+    command.add_option("--size", options.size, "Picture size as WIDTHxHEIGHT, each 1 to 8192")
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return parseSize(s) ? std::string()
+                                    : fmt::format("'{}' is not WIDTHxHEIGHT with each 1 to {}", s, kMaxSize);
+            },
+            "WxH"))
+        ->capture_default_str();
+}
+
+LoadedScene loadScene(const SceneOptions& options)
+{
+    LoadedScene loaded;
+    const std::optional<LookAt> lookAt = parseLookAt(options.camera);
+    if (isGltfPath(options.scene)) {
+        scene::GltfOptions gltf;
+        if (!options.camera.empty() && !lookAt)
+            gltf.camera = options.camera;
+        scene::GltfScene file = scene::loadGltf(options.scene, gltf);
+        loaded.scene = std::move(file.scene);
+        loaded.notes = std::move(file.notes);
+    } else {
+        if (!options.camera.empty() && !lookAt)
+            throw rhi::Error(fmt::format("--camera '{}': the built-in scene '{}' has no named cameras; give a position "
+                                         "and a target as px,py,pz:tx,ty,tz",
+                                         options.camera, options.scene));
+        loaded.scene = namedScene(options.scene);
+    }
+    if (lookAt) {
+        scene::Camera& camera = loaded.scene.camera;
+        // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
+        const float vertical = std::abs(glm::normalize(lookAt->target - lookAt->position).y);
+        const glm::vec3 up = vertical > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+        const scene::Camera placed = scene::lookAt(lookAt->position, lookAt->target, camera.fovY, up);
+        camera.position = placed.position;
+        camera.forward = placed.forward;
+        camera.up = placed.up;
+        loaded.scene.validate();
+    }
+    return loaded;
+}
+
+render::FrameDesc frameDesc(const SceneOptions& options)
+{
+    const std::optional<Size> size = parseSize(options.size);
+    if (!size)
+        throw rhi::Error(fmt::format("--size '{}' is not WIDTHxHEIGHT", options.size));
+    render::FrameDesc frame;
+    frame.width = size->width;
+    frame.height = size->height;
+    if (!options.settings.empty())
+        frame.shadows = shadows::loadShadowSettings(options.settings);
+    return frame;
+}
+
+void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
+{
+    const render::FrameStats& s = pictures.stats;
+    fmt::print("{:<24} {}x{}, {} objects, lights: {} directional, {} spot, {} point; caster draws {} ({} without "
+               "culling bias)",
+               pictures.configuration, pictures.lit.width, pictures.lit.height, scene.objects.size(),
+               scene.lights.size(), scene.spotLights.size(), scene.pointLights.size(), s.casterDraws,
+               s.casterDrawsWithoutCullingBias);
+    if (s.otherCasterDraws != 0)
+        fmt::print(", {} into spot and point shadows", s.otherCasterDraws);
+    if (s.atlasPassMs && s.otherAtlasPassMs && s.litPassMs)
+        fmt::print("; atlas pass {:.2f} ms, other atlas pass {:.2f} ms, lit pass {:.2f} ms", *s.atlasPassMs,
+                   *s.otherAtlasPassMs, *s.litPassMs);
+    fmt::print("\n");
+    for (const std::string& note : pictures.notes)
+        fmt::print("  note: {}\n", note);
+}
+
+} // namespace penumbra::apps

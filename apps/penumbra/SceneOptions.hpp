@@ -1,0 +1,42 @@
+#pragma once
+
+#include "ShadowScene.hpp"
+
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/scene/Scene.hpp"
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace penumbra::apps {
+
+// What to render, shared by `render` and `parity`: --scene, --camera, --settings, --size.
+struct SceneOptions {
+    std::string scene = "test";
+    std::string camera; // empty: the scene's own
+    std::string settings;
+    std::string size = "1280x720";
+};
+
+// Adds the four options with validators that reject bad values before anything renders.
+void addSceneOptions(CLI::App& command, SceneOptions& options);
+
+struct LoadedScene {
+    scene::Scene scene;
+    std::vector<std::string> notes; // from the glTF loader
+};
+
+// The built-in scene or glTF file, with --camera applied. Throws scene::SceneError (a glTF file's
+// errors name it) or rhi::Error.
+LoadedScene loadScene(const SceneOptions& options);
+
+// Size and shadow settings of the frame; throws rhi::Error naming the settings file and field.
+render::FrameDesc frameDesc(const SceneOptions& options);
+
+// One line per rendered configuration: size, lights, caster draws and the GPU time of each pass;
+// then the renderer's notes.
+void printStats(const ShadowPictures& pictures, const scene::Scene& scene);
+
+} // namespace penumbra::apps

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "penumbra/scene/Scene.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace penumbra::scene {
+
+// A glTF file that cannot be read, or that refers to something it does not hold. what() starts
+// with the file's path and names the element, e.g. "scene.gltf: mesh 2 ('Cube') primitive 0:
+// accessor 5 (indices) refers to vertex 40 but POSITION has 24".
+class GltfError : public SceneError {
+public:
+    using SceneError::SceneError;
+};
+
+struct GltfOptions {
+    // The camera to use: a glTF camera's name, or the name of a node that carries one. Without
+    // it the first perspective camera met walking the scene's nodes is used.
+    std::optional<std::string> camera;
+};
+
+struct GltfScene {
+    Scene scene;
+    // What was substituted or left out: defaults added, extensions and features ignored,
+    // tinygltf's warnings. Nothing here changes whether the scene renders.
+    std::vector<std::string> notes;
+};
+
+// Loads a glTF 2.0 file (.gltf with external or data-URI buffers, or .glb) into a validated Scene:
+// - every primitive of mode TRIANGLES becomes a mesh (POSITION, NORMAL, TEXCOORD_0; indices of
+//   8, 16 or 32 bits or none). Missing normals are computed flat, as glTF requires. Primitives are
+//   shared between the nodes that use them; a node with a mirroring transform gets a copy with
+//   reversed winding (see Object).
+// - the default scene's node hierarchy (matrix or translation/rotation/scale); nodes with a
+//   singular transform (scale 0) are skipped.
+// - materials: baseColorFactor, metallic and roughness factors, baseColorTexture decoded into
+//   Scene::textures; alphaMode OPAQUE -> CasterMode::On, MASK -> Clip with alphaCutoff,
+//   BLEND -> Dither.
+// - KHR_lights_punctual: directional -> Scene::lights, spot -> spotLights (cone angles are
+//   half-angles in both), point -> pointLights; lights shine along their node's -z. A light
+//   without range gets kDefaultRangePerSqrtIntensity * sqrt(intensity) (at least 1): the distance
+//   where intensity / d^2 falls to 1/256, an 8-bit step of a unit-intensity surface.
+// - cameras: perspective, looking along the node's -z with +y up; aspectRatio is ignored (the
+//   frame decides it); an infinite far plane ends beyond the scene's bounds.
+// - no light: defaultSun(); no camera: framingCamera() of the scene's bounds.
+// Throws GltfError, and nothing else for a bad file; no partial scene is returned.
+GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options = {});
+
+inline constexpr float kDefaultRangePerSqrtIntensity = 16.0f;
+
+} // namespace penumbra::scene

@@ -1,0 +1,178 @@
+#include "GltfAccessors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <initializer_list>
+
+namespace penumbra::scene::gltf {
+namespace {
+
+std::string typeName(int type)
+{
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    }
+    return fmt::format("type {}", type);
+}
+
+std::string componentName(int componentType)
+{
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_INT: return "INT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
+    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return "DOUBLE";
+    }
+    return fmt::format("component type {}", componentType);
+}
+
+// Where an accessor's elements are: `data` is null for an accessor without a buffer view, whose
+// elements are all zero.
+struct ElementView {
+    const unsigned char* data = nullptr;
+    std::size_t stride = 0;
+    std::size_t count = 0;
+    int componentType = 0;
+};
+
+ElementView viewOf(const Document& document, int index, std::string_view owner, std::string_view semantic,
+                   int expectedType, std::initializer_list<int> componentTypes)
+{
+    const tinygltf::Model& model = document.model();
+    const tinygltf::Accessor& accessor = document.at(model.accessors, index, "accessor", owner);
+    const std::string what = fmt::format("{}: accessor {} ({})", owner, index, semantic);
+    if (accessor.sparse.isSparse)
+        document.fail(fmt::format("{} is sparse, which is not supported", what));
+    const bool componentOk =
+        std::find(componentTypes.begin(), componentTypes.end(), accessor.componentType) != componentTypes.end();
+    if (accessor.type != expectedType || !componentOk) {
+        std::string expected;
+        for (int c : componentTypes)
+            expected += (expected.empty() ? "" : " or ") + componentName(c);
+        document.fail(fmt::format("{} is {} of {}, expected {} of {}", what, typeName(accessor.type),
+                                  componentName(accessor.componentType), typeName(expectedType), expected));
+    }
+    const auto componentSize = static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(accessor.componentType));
+    const auto elementSize = componentSize * static_cast<std::size_t>(tinygltf::GetNumComponentsInType(expectedType));
+    ElementView view{nullptr, elementSize, accessor.count, accessor.componentType};
+    if (accessor.bufferView < 0 || accessor.count == 0)
+        return view;
+
+    const tinygltf::BufferView& bufferView =
+        document.at(model.bufferViews, accessor.bufferView, "buffer view", what);
+    const std::string viewName = fmt::format("buffer view {}", accessor.bufferView);
+    const tinygltf::Buffer& buffer = document.at(model.buffers, bufferView.buffer, "buffer", viewName);
+    if (bufferView.byteOffset > buffer.data.size() || bufferView.byteLength > buffer.data.size() - bufferView.byteOffset)
+        document.fail(fmt::format("{} ends at byte {}, past the end of buffer {} ({} bytes)", viewName,
+                                  bufferView.byteOffset + bufferView.byteLength, bufferView.buffer, buffer.data.size()));
+    if (bufferView.byteStride != 0) {
+        if (bufferView.byteStride < elementSize)
+            document.fail(fmt::format("{}: byteStride {} of {} is smaller than one {} of {} ({} bytes)", what,
+                                      bufferView.byteStride, viewName, typeName(expectedType),
+                                      componentName(accessor.componentType), elementSize));
+        view.stride = bufferView.byteStride;
+    }
+    const std::size_t end = accessor.byteOffset + view.stride * (accessor.count - 1) + elementSize;
+    if (end > bufferView.byteLength)
+        document.fail(fmt::format("{}: {} elements need {} bytes of {}, which has {}", what, accessor.count, end,
+                                  viewName, bufferView.byteLength));
+    view.data = buffer.data.data() + bufferView.byteOffset + accessor.byteOffset;
+    return view;
+}
+
+template <typename T>
+T load(const unsigned char* at)
+{
+    T value;
+    std::memcpy(&value, at, sizeof(T));
+    return value;
+}
+
+// One component as a float; normalized integers map to [0, 1] as glTF defines.
+float component(const unsigned char* at, int componentType)
+{
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return float(load<std::uint8_t>(at)) / 255.0f;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return float(load<std::uint16_t>(at)) / 65535.0f;
+    default: return load<float>(at);
+    }
+}
+
+template <int N>
+std::vector<glm::vec<N, float>> readFloats(const Document& document, const ElementView& view, int index,
+                                           std::string_view owner, std::string_view semantic)
+{
+    std::vector<glm::vec<N, float>> values(view.count, glm::vec<N, float>(0.0f));
+    if (!view.data)
+        return values;
+    const auto componentSize = static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(view.componentType));
+    for (std::size_t i = 0; i < view.count; ++i) {
+        for (int c = 0; c < N; ++c) {
+            values[i][c] = component(view.data + i * view.stride + std::size_t(c) * componentSize, view.componentType);
+            if (!std::isfinite(values[i][c]))
+                document.fail(fmt::format("{}: accessor {} ({}) element {} is not finite", owner, index, semantic, i));
+        }
+    }
+    return values;
+}
+
+} // namespace
+
+std::string describe(std::string_view kind, int index, const std::string& name)
+{
+    return name.empty() ? fmt::format("{} {}", kind, index) : fmt::format("{} {} ('{}')", kind, index, name);
+}
+
+std::vector<glm::vec3> readVec3(const Document& document, int accessor, std::string_view owner,
+                                std::string_view semantic)
+{
+    const ElementView view =
+        viewOf(document, accessor, owner, semantic, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    return readFloats<3>(document, view, accessor, owner, semantic);
+}
+
+std::vector<glm::vec2> readTexCoords(const Document& document, int accessor, std::string_view owner,
+                                     std::string_view semantic)
+{
+    const ElementView view = viewOf(document, accessor, owner, semantic, TINYGLTF_TYPE_VEC2,
+                                    {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    return readFloats<2>(document, view, accessor, owner, semantic);
+}
+
+std::vector<std::uint32_t> readIndices(const Document& document, int accessor, std::string_view owner)
+{
+    const ElementView view = viewOf(document, accessor, owner, "indices", TINYGLTF_TYPE_SCALAR,
+                                    {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+    std::vector<std::uint32_t> indices(view.count, 0u);
+    if (!view.data)
+        return indices;
+    for (std::size_t i = 0; i < view.count; ++i) {
+        const unsigned char* at = view.data + i * view.stride;
+        switch (view.componentType) {
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: indices[i] = load<std::uint8_t>(at); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: indices[i] = load<std::uint16_t>(at); break;
+        default: indices[i] = load<std::uint32_t>(at); break;
+        }
+    }
+    return indices;
+}
+
+std::size_t accessorCount(const Document& document, int accessor, std::string_view owner)
+{
+    return document.at(document.model().accessors, accessor, "accessor", owner).count;
+}
+
+} // namespace penumbra::scene::gltf

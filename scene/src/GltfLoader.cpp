@@ -1,0 +1,185 @@
+#include "penumbra/scene/GltfLoader.hpp"
+
+#include "GltfDocument.hpp"
+#include "GltfNodes.hpp"
+
+#include "penumbra/scene/SceneDefaults.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace penumbra::scene {
+namespace {
+
+using gltf::Document;
+
+// glTF allows an outer cone angle of exactly pi/2; a spot shadow's perspective projection does not.
+constexpr float kMaxSpotOuterAngle = 1.5707963f - 1e-3f;
+// Behind the farthest corner of the scene, so an infinite glTF far plane clips nothing.
+constexpr float kFarPlaneMargin = 1.05f;
+
+// tinygltf's warnings of a file it could read become notes, a line each.
+Document parse(const std::filesystem::path& path, std::vector<std::string>& notes)
+{
+    const std::string name = path.string();
+    if (!std::filesystem::is_regular_file(path))
+        throw GltfError(fmt::format("{}: no such file", name));
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string error, warning;
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    const bool ok = extension == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, name)
+                                        : loader.LoadASCIIFromFile(&model, &error, &warning, name);
+    if (!ok) {
+        std::string why = error.empty() ? warning : error;
+        while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back())))
+            why.pop_back();
+        throw GltfError(fmt::format("{}: cannot read: {}", name, why));
+    }
+    std::size_t start = 0;
+    while (start < warning.size()) {
+        const std::size_t end = std::min(warning.find('\n', start), warning.size());
+        if (end > start)
+            notes.push_back(warning.substr(start, end - start));
+        start = end + 1;
+    }
+    return Document(name, std::move(model));
+}
+
+glm::vec3 origin(const glm::mat4& world) { return glm::vec3(world[3]); }
+
+// glTF lights and cameras look down their node's -z.
+glm::vec3 forward(const glm::mat4& world) { return glm::normalize(glm::mat3(world) * glm::vec3(0.0f, 0.0f, -1.0f)); }
+
+float defaultRange(float intensity) { return std::max(kDefaultRangePerSqrtIntensity * std::sqrt(intensity), 1.0f); }
+
+void addLight(const Document& document, const gltf::LightInstance& instance, Scene& scene,
+              std::vector<std::string>& notes)
+{
+    const tinygltf::Light& light = document.model().lights[std::size_t(instance.light)];
+    const std::string owner = gltf::describe("light", instance.light, light.name);
+    glm::vec3 color(1.0f);
+    if (light.color.size() == 3)
+        color = glm::vec3(float(light.color[0]), float(light.color[1]), float(light.color[2]));
+    else if (!light.color.empty())
+        document.fail(fmt::format("{}: color has {} values, expected 3", owner, light.color.size()));
+    const auto intensity = float(light.intensity);
+    const float range = light.range > 0.0 ? float(light.range) : defaultRange(intensity);
+    if (light.type == "directional") {
+        scene.lights.push_back({.name = light.name, .color = color, .intensity = intensity,
+                                .direction = forward(instance.world)});
+    } else if (light.type == "spot") {
+        auto outer = float(light.spot.outerConeAngle);
+        if (outer > kMaxSpotOuterAngle) {
+            notes.push_back(fmt::format("{}: outer cone angle {} narrowed to {} radians", owner, outer, kMaxSpotOuterAngle));
+            outer = kMaxSpotOuterAngle;
+        }
+        scene.spotLights.push_back({.name = light.name, .color = color, .intensity = intensity,
+                                    .position = origin(instance.world), .direction = forward(instance.world),
+                                    .range = range, .innerAngle = float(light.spot.innerConeAngle),
+                                    .outerAngle = outer});
+    } else if (light.type == "point") {
+        scene.pointLights.push_back({.name = light.name, .color = color, .intensity = intensity,
+                                     .position = origin(instance.world), .range = range});
+    } else {
+        document.fail(fmt::format("{}: type '{}' is not directional, spot or point", owner, light.type));
+    }
+}
+
+bool isNamed(const Document& document, const gltf::CameraInstance& instance, const std::string& name)
+{
+    return document.model().cameras[std::size_t(instance.camera)].name == name ||
+           document.model().nodes[std::size_t(instance.node)].name == name;
+}
+
+std::string cameraNames(const Document& document, const std::vector<gltf::CameraInstance>& cameras)
+{
+    std::string names;
+    for (const gltf::CameraInstance& instance : cameras) {
+        const std::string& name = document.model().cameras[std::size_t(instance.camera)].name;
+        names += fmt::format("{}'{}'", names.empty() ? "" : ", ",
+                             name.empty() ? document.model().nodes[std::size_t(instance.node)].name : name);
+    }
+    return names.empty() ? "none" : names;
+}
+
+Camera toCamera(const Document& document, const gltf::CameraInstance& instance, const Bounds& bounds)
+{
+    const tinygltf::Camera& gltfCamera = document.model().cameras[std::size_t(instance.camera)];
+    const std::string owner = gltf::describe("camera", instance.camera, gltfCamera.name);
+    if (gltfCamera.type != "perspective")
+        document.fail(fmt::format("{}: type '{}' is not supported, only perspective", owner, gltfCamera.type));
+    const glm::mat3 rotation(instance.world);
+    Camera camera{.position = origin(instance.world),
+                  .forward = forward(instance.world),
+                  .up = glm::normalize(rotation * glm::vec3(0.0f, 1.0f, 0.0f)),
+                  .fovY = float(gltfCamera.perspective.yfov),
+                  .nearPlane = float(gltfCamera.perspective.znear)};
+    if (gltfCamera.perspective.zfar > 0.0) {
+        camera.farPlane = float(gltfCamera.perspective.zfar);
+    } else {
+        float farthest = 0.0f;
+        if (!bounds.empty())
+            for (const glm::vec3& corner : bounds.corners())
+                farthest = std::max(farthest, glm::length(corner - camera.position));
+        camera.farPlane = std::max(kFarPlaneMargin * farthest, 1000.0f * camera.nearPlane);
+    }
+    return camera;
+}
+
+Camera chooseCamera(const Document& document, const std::vector<gltf::CameraInstance>& cameras,
+                    const GltfOptions& options, const Bounds& bounds, std::vector<std::string>& notes)
+{
+    if (options.camera) {
+        for (const gltf::CameraInstance& instance : cameras)
+            if (isNamed(document, instance, *options.camera))
+                return toCamera(document, instance, bounds);
+        document.fail(fmt::format("no camera named '{}'; the scene's cameras: {}", *options.camera,
+                                  cameraNames(document, cameras)));
+    }
+    for (const gltf::CameraInstance& instance : cameras)
+        if (document.model().cameras[std::size_t(instance.camera)].type == "perspective")
+            return toCamera(document, instance, bounds);
+    notes.push_back(cameras.empty() ? "no camera: framing the scene's bounds"
+                                    : "no perspective camera: framing the scene's bounds");
+    return framingCamera(bounds);
+}
+
+} // namespace
+
+GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options)
+{
+    GltfScene result;
+    Scene& scene = result.scene;
+    std::vector<std::string>& notes = result.notes;
+    const Document document = parse(path, notes);
+    for (const std::string& extension : document.model().extensionsRequired)
+        if (extension != "KHR_lights_punctual")
+            document.fail(fmt::format("requires extension {}, which is not supported", extension));
+    for (const std::string& extension : document.model().extensionsUsed)
+        if (extension != "KHR_lights_punctual")
+            notes.push_back(fmt::format("extension {} ignored", extension));
+    const gltf::NodeWalk walk = gltf::walkNodes(document, scene, notes);
+    for (const gltf::LightInstance& light : walk.lights)
+        addLight(document, light, scene, notes);
+    if (scene.lights.empty() && scene.spotLights.empty() && scene.pointLights.empty()) {
+        scene.lights.push_back(defaultSun());
+        notes.push_back("no lights: added a default sun");
+    }
+    scene.camera = chooseCamera(document, walk.cameras, options, scene.worldBounds(), notes);
+    try {
+        scene.validate();
+    } catch (const GltfError&) {
+        throw;
+    } catch (const SceneError& error) {
+        document.fail(error.what());
+    }
+    return result;
+}
+
+} // namespace penumbra::scene

@@ -1,0 +1,125 @@
+#include "GltfMeshes.hpp"
+
+#include "GltfAccessors.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <numeric>
+#include <utility>
+
+namespace penumbra::scene::gltf {
+namespace {
+
+constexpr int kTriangles = TINYGLTF_MODE_TRIANGLES;
+
+std::string modeName(int mode)
+{
+    switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "POINTS";
+    case TINYGLTF_MODE_LINE: return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+    }
+    return fmt::format("{}", mode);
+}
+
+int attribute(const tinygltf::Primitive& primitive, const std::string& name)
+{
+    const auto found = primitive.attributes.find(name);
+    return found == primitive.attributes.end() ? -1 : found->second;
+}
+
+// Flat shading: every triangle gets its own vertices carrying its face normal. Degenerate
+// triangles cover no pixel; they get +y so that no normal is NaN.
+MeshData flatShaded(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices)
+{
+    MeshData mesh;
+    mesh.vertices.reserve(indices.size());
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        Vertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
+        const glm::vec3 cross = glm::cross(b.position - a.position, c.position - a.position);
+        const float length = glm::length(cross);
+        const glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f, 1.0f, 0.0f);
+        a.normal = b.normal = c.normal = normal;
+        mesh.vertices.insert(mesh.vertices.end(), {a, b, c});
+    }
+    mesh.indices.resize(mesh.vertices.size());
+    std::iota(mesh.indices.begin(), mesh.indices.end(), 0u);
+    return mesh;
+}
+
+} // namespace
+
+MeshData readPrimitive(const Document& document, int meshIndex, int primitiveIndex)
+{
+    const tinygltf::Mesh& gltfMesh = document.model().meshes[std::size_t(meshIndex)];
+    const tinygltf::Primitive& primitive = gltfMesh.primitives[std::size_t(primitiveIndex)];
+    const std::string owner = fmt::format("{} primitive {}", describe("mesh", meshIndex, gltfMesh.name), primitiveIndex);
+    if (primitive.mode != -1 && primitive.mode != kTriangles)
+        document.fail(fmt::format("{}: mode {} is not supported, only TRIANGLES", owner, modeName(primitive.mode)));
+    const int positionAccessor = attribute(primitive, "POSITION");
+    if (positionAccessor < 0)
+        document.fail(fmt::format("{}: has no POSITION attribute", owner));
+
+    const std::vector<glm::vec3> positions = readVec3(document, positionAccessor, owner, "POSITION");
+    if (positions.empty())
+        document.fail(fmt::format("{}: accessor {} (POSITION) has no vertices", owner, positionAccessor));
+    std::vector<Vertex> vertices(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        vertices[i].position = positions[i];
+
+    const auto checkCount = [&](int accessor, const char* semantic, std::size_t count) {
+        if (count != positions.size())
+            document.fail(fmt::format("{}: accessor {} ({}) has {} elements but POSITION has {}", owner, accessor,
+                                      semantic, count, positions.size()));
+    };
+    const int normalAccessor = attribute(primitive, "NORMAL");
+    if (normalAccessor >= 0) {
+        const std::vector<glm::vec3> normals = readVec3(document, normalAccessor, owner, "NORMAL");
+        checkCount(normalAccessor, "NORMAL", normals.size());
+        for (std::size_t i = 0; i < normals.size(); ++i)
+            vertices[i].normal = normals[i];
+    }
+    if (const int uvAccessor = attribute(primitive, "TEXCOORD_0"); uvAccessor >= 0) {
+        const std::vector<glm::vec2> uvs = readTexCoords(document, uvAccessor, owner, "TEXCOORD_0");
+        checkCount(uvAccessor, "TEXCOORD_0", uvs.size());
+        for (std::size_t i = 0; i < uvs.size(); ++i)
+            vertices[i].uv = uvs[i];
+    }
+
+    std::vector<std::uint32_t> indices;
+    if (primitive.indices >= 0) {
+        indices = readIndices(document, primitive.indices, owner);
+        for (const std::uint32_t index : indices)
+            if (index >= positions.size())
+                document.fail(fmt::format("{}: accessor {} (indices) refers to vertex {} but POSITION has {}", owner,
+                                          primitive.indices, index, positions.size()));
+    } else {
+        indices.resize(positions.size());
+        std::iota(indices.begin(), indices.end(), 0u);
+    }
+    if (indices.empty() || indices.size() % 3 != 0)
+        document.fail(fmt::format("{}: {} {} do not make whole triangles", owner, indices.size(),
+                                  primitive.indices >= 0 ? "indices" : "vertices"));
+
+    MeshData mesh;
+    if (normalAccessor >= 0) {
+        mesh.vertices = std::move(vertices);
+        mesh.indices = std::move(indices);
+    } else {
+        mesh = flatShaded(vertices, indices);
+    }
+    updateBounds(mesh);
+    return mesh;
+}
+
+MeshData reversedWinding(MeshData mesh)
+{
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+        std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+    return mesh;
+}
+
+} // namespace penumbra::scene::gltf

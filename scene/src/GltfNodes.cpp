@@ -1,0 +1,150 @@
+#include "GltfNodes.hpp"
+
+#include "GltfMaterials.hpp"
+#include "GltfMeshes.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace penumbra::scene::gltf {
+namespace {
+
+// Below this |determinant| a node is treated as scaled to nothing: its normal matrix (the
+// inverse transpose) would not exist.
+constexpr float kSingularDeterminant = 1e-12f;
+
+class Walker {
+public:
+    Walker(const Document& document, Scene& scene, std::vector<std::string>& notes)
+        : document_(document), model_(document.model()), scene_(scene), notes_(notes), materials_(document, scene),
+          onPath_(model_.nodes.size(), false)
+    {
+    }
+
+    void visit(int index, const glm::mat4& parent, const std::string& owner)
+    {
+        const tinygltf::Node& node = document_.at(model_.nodes, index, "node", owner);
+        const auto slot = std::size_t(index);
+        const std::string name = describe("node", index, node.name);
+        if (onPath_[slot])
+            document_.fail(fmt::format("{} is its own ancestor", name));
+        onPath_[slot] = true;
+        const glm::mat4 world = parent * localTransform(node);
+        if (node.mesh >= 0)
+            addMesh(index, node, world);
+        if (node.camera >= 0) {
+            document_.at(model_.cameras, node.camera, "camera", name);
+            walk_.cameras.push_back({node.camera, index, world});
+        }
+        if (const auto light = node.extensions.find("KHR_lights_punctual"); light != node.extensions.end()) {
+            const tinygltf::Value& value = light->second.Get("light");
+            if (!value.IsInt() && !value.IsNumber())
+                document_.fail(fmt::format("{}: KHR_lights_punctual has no light index", name));
+            const int lightIndex = value.GetNumberAsInt();
+            document_.at(model_.lights, lightIndex, "light", name);
+            walk_.lights.push_back({lightIndex, index, world});
+        }
+        for (const int child : node.children)
+            visit(child, world, name);
+        onPath_[slot] = false;
+    }
+
+    NodeWalk result() { return std::move(walk_); }
+
+private:
+    void addMesh(int index, const tinygltf::Node& node, const glm::mat4& world)
+    {
+        const std::string name = describe("node", index, node.name);
+        const tinygltf::Mesh& mesh = document_.at(model_.meshes, node.mesh, "mesh", name);
+        const float determinant = glm::determinant(glm::mat3(world));
+        if (std::abs(determinant) < kSingularDeterminant) {
+            notes_.push_back(fmt::format("{}: skipped, its transform scales it to nothing", name));
+            return;
+        }
+        if (node.skin >= 0)
+            notes_.push_back(fmt::format("{}: skin ignored, drawn in its bind pose", name));
+        const bool mirrored = determinant < 0.0f;
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const auto key = std::make_tuple(node.mesh, int(p), mirrored);
+            auto found = meshes_.find(key);
+            if (found == meshes_.end()) {
+                MeshData data = readPrimitive(document_, node.mesh, int(p));
+                found = meshes_.emplace(key, scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data)))
+                            .first;
+            }
+            const std::uint32_t material = materials_.material(
+                mesh.primitives[p].material, fmt::format("{} primitive {}", describe("mesh", node.mesh, mesh.name), p));
+            const std::string base = node.name.empty() ? (mesh.name.empty() ? name : mesh.name) : node.name;
+            scene_.addObject(mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), found->second,
+                             material, world);
+        }
+    }
+
+    const Document& document_;
+    const tinygltf::Model& model_;
+    Scene& scene_;
+    std::vector<std::string>& notes_;
+    MaterialTable materials_;
+    std::vector<bool> onPath_;
+    std::map<std::tuple<int, int, bool>, std::uint32_t> meshes_; // (mesh, primitive, mirrored) -> scene mesh
+    NodeWalk walk_;
+};
+
+std::vector<int> rootNodes(const Document& document, std::vector<std::string>& notes)
+{
+    const tinygltf::Model& model = document.model();
+    if (!model.scenes.empty()) {
+        const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+        return document.at(model.scenes, scene, "scene", "the default scene").nodes;
+    }
+    notes.push_back("the file has no scenes: drawing every root node");
+    std::vector<bool> isChild(model.nodes.size(), false);
+    for (const tinygltf::Node& node : model.nodes)
+        for (const int child : node.children)
+            if (child >= 0 && std::size_t(child) < isChild.size())
+                isChild[std::size_t(child)] = true;
+    std::vector<int> roots;
+    for (std::size_t i = 0; i < model.nodes.size(); ++i)
+        if (!isChild[i])
+            roots.push_back(int(i));
+    return roots;
+}
+
+} // namespace
+
+glm::mat4 localTransform(const tinygltf::Node& node)
+{
+    if (node.matrix.size() == 16) {
+        glm::mat4 m(1.0f);
+        for (int column = 0; column < 4; ++column)
+            for (int row = 0; row < 4; ++row)
+                m[column][row] = float(node.matrix[std::size_t(column * 4 + row)]);
+        return m;
+    }
+    glm::mat4 m(1.0f);
+    if (node.translation.size() == 3)
+        m = glm::translate(m, glm::vec3(float(node.translation[0]), float(node.translation[1]),
+                                        float(node.translation[2])));
+    if (node.rotation.size() == 4) // glTF stores x, y, z, w; glm::quat takes w first
+        m *= glm::mat4_cast(glm::normalize(glm::quat(float(node.rotation[3]), float(node.rotation[0]),
+                                                     float(node.rotation[1]), float(node.rotation[2]))));
+    if (node.scale.size() == 3)
+        m = glm::scale(m, glm::vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2])));
+    return m;
+}
+
+NodeWalk walkNodes(const Document& document, Scene& scene, std::vector<std::string>& notes)
+{
+    Walker walker(document, scene, notes);
+    for (const int root : rootNodes(document, notes))
+        walker.visit(root, glm::mat4(1.0f), "the scene");
+    return walker.result();
+}
+
+} // namespace penumbra::scene::gltf

@@ -1,0 +1,401 @@
+#include "GltfBuilder.hpp"
+
+#include "penumbra/scene/GltfLoader.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <unistd.h>
+
+namespace penumbra::scene {
+namespace {
+
+using testing::Component;
+using testing::GltfBuilder;
+
+class GltfLoaderTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        folder_ = std::filesystem::temp_directory_path() /
+                  ("penumbra-gltf-" + std::to_string(::getpid())) / info->name();
+        std::filesystem::create_directories(folder_);
+    }
+    void TearDown() override { std::filesystem::remove_all(folder_.parent_path()); }
+
+    std::filesystem::path write(const GltfBuilder& builder, const std::string& name = "scene.gltf")
+    {
+        const std::filesystem::path path = folder_ / name;
+        if (path.extension() == ".glb")
+            builder.writeGlb(path);
+        else
+            builder.writeGltf(path);
+        return path;
+    }
+
+    // The GltfError's message for loading `path`, or "" when it loads.
+    static std::string errorOf(const std::filesystem::path& path, const GltfOptions& options = {})
+    {
+        try {
+            loadGltf(path, options);
+        } catch (const GltfError& error) {
+            return error.what();
+        }
+        return {};
+    }
+
+    std::filesystem::path folder_;
+};
+
+// One cube mesh under one root node: the smallest scene with geometry.
+GltfBuilder cubeScene(Component indices = Component::UnsignedShort)
+{
+    GltfBuilder b;
+    const int mesh = testing::addCubeMesh(b, "Cube", -1, indices);
+    b.addRoot(b.add("nodes", {{"name", "cube"}, {"mesh", mesh}}));
+    return b;
+}
+
+nlohmann::json& primitive(GltfBuilder& b, int mesh = 0) { return b.json()["meshes"][std::size_t(mesh)]["primitives"][0]; }
+
+int attribute(GltfBuilder& b, const char* name) { return primitive(b)["attributes"][name].get<int>(); }
+
+#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
+
+TEST_F(GltfLoaderTest, HierarchyMultipliesTransformsInOrder)
+{
+    GltfBuilder b;
+    const int mesh = testing::addCubeMesh(b, "Cube", -1);
+    const int child = b.add("nodes", {{"name", "child"}, {"mesh", mesh}, {"translation", {1, 0, 0}},
+                                      {"rotation", {0, 0.7071068, 0, 0.7071068}}, {"scale", {2, 1, 1}}});
+    // Column-major: a translation by (0, 10, 0).
+    b.addRoot(b.add("nodes", {{"name", "parent"}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 10, 0, 1}},
+                              {"children", {child}}}));
+    const GltfScene loaded = loadGltf(write(b));
+    ASSERT_EQ(loaded.scene.objects.size(), 1u);
+    const Object& object = loaded.scene.objects[0];
+    EXPECT_EQ(object.name, "child");
+    const glm::mat4 expected = glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(1, 10, 0)),
+                                                      glm::radians(90.0f), glm::vec3(0, 1, 0)),
+                                          glm::vec3(2, 1, 1));
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            EXPECT_NEAR(object.transform[c][r], expected[c][r], 1e-5f) << c << "," << r;
+    // Scaled 2 along local x, turned onto world -z: the box spans z in [-2, 2], x in [0, 2].
+    EXPECT_NEAR(object.worldBounds.min.z, -2.0f, 1e-5f);
+    EXPECT_NEAR(object.worldBounds.max.x, 2.0f, 1e-5f);
+    EXPECT_NEAR(object.worldBounds.min.y, 9.0f, 1e-5f);
+}
+
+TEST_F(GltfLoaderTest, EveryIndexSizeAndNoIndicesGiveTheSameTriangles)
+{
+    const GltfScene reference = loadGltf(write(cubeScene(Component::UnsignedInt), "u32.gltf"));
+    for (const Component component : {Component::UnsignedByte, Component::UnsignedShort}) {
+        const GltfScene loaded = loadGltf(write(cubeScene(component), "small.gltf"));
+        EXPECT_EQ(loaded.scene.meshes[0].indices, reference.scene.meshes[0].indices);
+    }
+    // Without indices: the indexed triangles' vertices written out three by three.
+    GltfBuilder b = cubeScene();
+    const MeshData& indexed = reference.scene.meshes[0];
+    std::vector<glm::vec3> positions, normals;
+    for (const std::uint32_t i : indexed.indices) {
+        positions.push_back(indexed.vertices[i].position);
+        normals.push_back(indexed.vertices[i].normal);
+    }
+    primitive(b) = {{"attributes", {{"POSITION", b.addPositions(positions)}, {"NORMAL", b.addNormals(normals)}}}};
+    const GltfScene loaded = loadGltf(write(b, "none.gltf"));
+    const MeshData& unindexed = loaded.scene.meshes[0];
+    ASSERT_EQ(unindexed.indices.size(), 36u);
+    for (std::size_t i = 0; i < 36; ++i)
+        EXPECT_EQ(unindexed.vertices[unindexed.indices[i]].position, positions[i]);
+}
+
+TEST_F(GltfLoaderTest, InterleavedAttributesAndNormalizedTexCoords)
+{
+    GltfBuilder b;
+    struct PositionNormal {
+        glm::vec3 position, normal;
+    };
+    const std::vector<PositionNormal> vertices = {{{0, 0, 0}, {0, 0, 1}}, {{1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 0, 1}}};
+    // Both attributes in one buffer view, 24 bytes a vertex, the normal 12 bytes in.
+    const int position = b.addAccessor({reinterpret_cast<const std::uint8_t*>(vertices.data()), sizeof(PositionNormal) * 3},
+                                       3, "VEC3", Component::Float);
+    const auto view = b.json()["accessors"][std::size_t(position)]["bufferView"].get<std::size_t>();
+    b.json()["bufferViews"][view]["byteStride"] = sizeof(PositionNormal);
+    const int normal = b.add("accessors", {{"bufferView", view}, {"byteOffset", 12}, {"count", 3}, {"type", "VEC3"},
+                                           {"componentType", int(Component::Float)}});
+    const std::vector<std::uint16_t> uvs = {0, 0, 65535, 0, 0, 32768};
+    const int uv = b.addAccessor({reinterpret_cast<const std::uint8_t*>(uvs.data()), uvs.size() * 2}, 3, "VEC2",
+                                 Component::UnsignedShort, true);
+    const int mesh = b.add("meshes", {{"primitives", {{{"attributes", {{"POSITION", position}, {"NORMAL", normal},
+                                                                          {"TEXCOORD_0", uv}}}}}}});
+    b.addRoot(b.add("nodes", {{"mesh", mesh}}));
+    const GltfScene loaded = loadGltf(write(b));
+    const MeshData& read = loaded.scene.meshes.at(0);
+    ASSERT_EQ(read.vertices.size(), 3u);
+    EXPECT_EQ(read.indices, (std::vector<std::uint32_t>{0, 1, 2}));
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(read.vertices[i].position, vertices[i].position);
+        EXPECT_EQ(read.vertices[i].normal, vertices[i].normal);
+    }
+    EXPECT_EQ(read.vertices[1].uv, glm::vec2(1.0f, 0.0f));
+    EXPECT_FLOAT_EQ(read.vertices[2].uv.y, 32768.0f / 65535.0f);
+}
+
+TEST_F(GltfLoaderTest, MissingNormalsAreComputedFlat)
+{
+    GltfBuilder b = cubeScene();
+    primitive(b)["attributes"].erase("NORMAL");
+    const GltfScene loaded = loadGltf(write(b));
+    const MeshData& mesh = loaded.scene.meshes[0];
+    ASSERT_EQ(mesh.vertices.size(), 36u);
+    for (std::size_t t = 0; t < 12; ++t) {
+        const Vertex* v = &mesh.vertices[mesh.indices[3 * t]];
+        const glm::vec3 face = glm::normalize(glm::cross(v[1].position - v[0].position, v[2].position - v[0].position));
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(glm::dot(v[k].normal, face), 1.0f, 1e-6f);
+        // Outward: the cube is centred on the origin.
+        EXPECT_GT(glm::dot(face, v[0].position), 0.0f);
+    }
+}
+
+TEST_F(GltfLoaderTest, MirroringNodesGetReversedWindingSoOutsidesStayFrontFacing)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["nodes"][0]["scale"] = {-1, 1, 1};
+    b.addRoot(b.add("nodes", {{"name", "plain"}, {"mesh", 0}, {"translation", {5, 0, 0}}}));
+    const GltfScene loaded = loadGltf(write(b));
+    ASSERT_EQ(loaded.scene.objects.size(), 2u);
+    EXPECT_NE(loaded.scene.objects[0].mesh, loaded.scene.objects[1].mesh) << "the mirrored node needs its own copy";
+    for (const Object& object : loaded.scene.objects) {
+        const MeshData& mesh = loaded.scene.meshOf(object);
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(object.transform)));
+        for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+            glm::vec3 world[3];
+            for (int k = 0; k < 3; ++k)
+                world[k] = glm::vec3(object.transform * glm::vec4(mesh.vertices[mesh.indices[3 * t + k]].position, 1.0f));
+            const glm::vec3 face = glm::cross(world[1] - world[0], world[2] - world[0]);
+            const glm::vec3 normal = normalMatrix * mesh.vertices[mesh.indices[3 * t]].normal;
+            EXPECT_GT(glm::dot(face, normal), 0.0f) << object.name << " triangle " << t;
+        }
+    }
+}
+
+TEST_F(GltfLoaderTest, CamerasByOrderAndByName)
+{
+    GltfBuilder b = cubeScene();
+    b.add("cameras", {{"name", "first"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.5}, {"zfar", 50}}}});
+    b.add("cameras", {{"name", "second"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.2}}}});
+    b.addRoot(b.add("nodes", {{"camera", 0}, {"translation", {0, 0, 10}}}));
+    // Turned 90 degrees about y: looks down world -x.
+    b.addRoot(b.add("nodes", {{"name", "side"}, {"camera", 1}, {"translation", {10, 0, 0}},
+                              {"rotation", {0, 0.7071068, 0, 0.7071068}}}));
+    const std::filesystem::path path = write(b);
+
+    const Camera first = loadGltf(path).scene.camera;
+    EXPECT_FLOAT_EQ(first.fovY, 0.5f);
+    EXPECT_EQ(first.position, glm::vec3(0, 0, 10));
+    EXPECT_NEAR(glm::dot(first.forward, glm::vec3(0, 0, -1)), 1.0f, 1e-6f);
+    EXPECT_FLOAT_EQ(first.farPlane, 50.0f);
+
+    for (const char* name : {"second", "side"}) {
+        const Camera second = loadGltf(path, {.camera = name}).scene.camera;
+        EXPECT_FLOAT_EQ(second.fovY, 0.9f);
+        EXPECT_NEAR(glm::dot(second.forward, glm::vec3(-1, 0, 0)), 1.0f, 1e-6f);
+        EXPECT_NEAR(glm::dot(second.up, glm::vec3(0, 1, 0)), 1.0f, 1e-6f);
+        // No zfar: the far plane lies behind the whole scene (the cube's far corner is 11.1 away).
+        EXPECT_GT(second.farPlane, 11.1f);
+    }
+    const std::string message = errorOf(path, {.camera = "missing"});
+    EXPECT_CONTAINS(message, "scene.gltf: no camera named 'missing'");
+    EXPECT_CONTAINS(message, "'first', 'second'");
+}
+
+TEST_F(GltfLoaderTest, PunctualLightsOfAllThreeKinds)
+{
+    const GltfScene loaded = loadGltf(write(testing::exampleScene()));
+    const Scene& scene = loaded.scene;
+    ASSERT_EQ(scene.lights.size(), 1u);
+    ASSERT_EQ(scene.spotLights.size(), 1u);
+    ASSERT_EQ(scene.pointLights.size(), 1u);
+    EXPECT_EQ(scene.lights[0].name, "sun");
+    EXPECT_FLOAT_EQ(scene.lights[0].intensity, 2.5f);
+    EXPECT_NEAR(scene.lights[0].direction.y, -std::sin(glm::radians(50.0f)), 1e-5f); // 50 degrees down
+    const SpotLight& spot = scene.spotLights[0];
+    EXPECT_NEAR(glm::dot(spot.direction, glm::vec3(0, -1, 0)), 1.0f, 1e-6f); // node -z turned to point down
+    EXPECT_EQ(spot.position, glm::vec3(0, 6, 0));
+    EXPECT_FLOAT_EQ(spot.innerAngle, 0.3f); // half-angles, as glTF's
+    EXPECT_FLOAT_EQ(spot.outerAngle, 0.5f);
+    EXPECT_FLOAT_EQ(spot.range, 12.0f);
+    EXPECT_EQ(spot.color, glm::vec3(1.0f, 0.9f, 0.7f));
+    const PointLight& point = scene.pointLights[0];
+    EXPECT_EQ(point.position, glm::vec3(-3, 3, 3));
+    EXPECT_FLOAT_EQ(point.range, kDefaultRangePerSqrtIntensity * std::sqrt(5.0f)); // no range in the file
+    EXPECT_EQ(scene.camera.position, glm::vec3(0, 5, 9));
+}
+
+TEST_F(GltfLoaderTest, AlphaModesBecomeCasterModes)
+{
+    const Scene scene = loadGltf(write(testing::exampleScene())).scene;
+    const auto material = [&](const char* object) { return scene.materialOf(scene.objects.at(*scene.findObject(object))); };
+    EXPECT_EQ(material("standing cube").caster, CasterMode::On);
+    EXPECT_EQ(material("floating cube").caster, CasterMode::Clip);
+    EXPECT_FLOAT_EQ(material("floating cube").alphaCutoff, 0.4f);
+    EXPECT_EQ(material("blend cube").caster, CasterMode::Dither);
+    EXPECT_FLOAT_EQ(material("blend cube").baseColor.a, 0.5f);
+    EXPECT_FLOAT_EQ(material("standing cube").baseColor.r, 0.8f);
+    EXPECT_FLOAT_EQ(material("standing cube").metallic, 0.0f);
+}
+
+TEST_F(GltfLoaderTest, BaseColorTextureIsDecodedToRgba8)
+{
+    GltfBuilder b = cubeScene();
+    const std::vector<std::uint8_t> texels = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 128, 255, 255, 255, 0};
+    const int image = b.addPngImage(2, 2, texels);
+    const int texture = b.add("textures", {{"source", image}});
+    primitive(b)["material"] =
+        b.add("materials", {{"name", "textured"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
+    for (const char* name : {"textured.gltf", "textured.glb"}) {
+        const Scene scene = loadGltf(write(b, name)).scene;
+        ASSERT_EQ(scene.textures.size(), 1u);
+        EXPECT_EQ(scene.textures[0].width, 2u);
+        EXPECT_EQ(scene.textures[0].height, 2u);
+        EXPECT_EQ(scene.textures[0].rgba, texels);
+        EXPECT_EQ(scene.materials.at(scene.objects[0].material).baseColorTexture, 0u);
+    }
+}
+
+TEST_F(GltfLoaderTest, DefaultsForASceneWithoutLightsOrCamera)
+{
+    const GltfScene loaded = loadGltf(write(cubeScene()));
+    ASSERT_EQ(loaded.scene.lights.size(), 1u);
+    EXPECT_EQ(loaded.scene.lights[0].name, "default sun");
+    EXPECT_LT(loaded.scene.lights[0].direction.y, 0.0f);
+    const Camera& camera = loaded.scene.camera;
+    // The framing camera sees every corner of the cube in front of it, between its planes.
+    for (const glm::vec3& corner : loaded.scene.worldBounds().corners()) {
+        const glm::vec3 view = glm::vec3(camera.view() * glm::vec4(corner, 1.0f));
+        EXPECT_GT(-view.z, camera.nearPlane);
+        EXPECT_LT(-view.z, camera.farPlane);
+        EXPECT_LT(std::abs(view.y / view.z), std::tan(0.5f * camera.fovY));
+    }
+    EXPECT_EQ(loaded.notes.size(), 2u);
+}
+
+TEST_F(GltfLoaderTest, GlbAndExternalBufferLoadLikeDataUris)
+{
+    const GltfBuilder b = testing::exampleScene();
+    const Scene inline_ = loadGltf(write(b)).scene;
+    b.writeGltf(folder_ / "external.gltf", true);
+    for (const std::filesystem::path& path : {write(b, "scene.glb"), folder_ / "external.gltf"}) {
+        const Scene other = loadGltf(path).scene;
+        ASSERT_EQ(other.meshes.size(), inline_.meshes.size()) << path;
+        for (std::size_t m = 0; m < other.meshes.size(); ++m)
+            EXPECT_EQ(other.meshes[m].indices, inline_.meshes[m].indices);
+        EXPECT_EQ(other.objects.size(), inline_.objects.size());
+    }
+}
+
+// Bad files: one GltfError naming the file and what is wrong.
+
+TEST_F(GltfLoaderTest, MissingFile)
+{
+    EXPECT_CONTAINS(errorOf(folder_ / "absent.gltf"), "absent.gltf: no such file");
+}
+
+TEST_F(GltfLoaderTest, MissingBuffer)
+{
+    const GltfBuilder b = cubeScene();
+    b.writeGltf(folder_ / "scene.gltf", true);
+    std::filesystem::remove(folder_ / "scene.bin");
+    const std::string message = errorOf(folder_ / "scene.gltf");
+    EXPECT_CONTAINS(message, "scene.gltf: cannot read");
+    EXPECT_CONTAINS(message, "scene.bin");
+}
+
+TEST_F(GltfLoaderTest, WrongAccessorType)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["accessors"][std::size_t(attribute(b, "POSITION"))]["type"] = "VEC2";
+    EXPECT_CONTAINS(errorOf(write(b)),
+                    "scene.gltf: mesh 0 ('Cube') primitive 0: accessor 0 (POSITION) is VEC2 of FLOAT, expected VEC3 of FLOAT");
+}
+
+TEST_F(GltfLoaderTest, WrongComponentType)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["accessors"][primitive(b)["indices"].get<std::size_t>()]["componentType"] = 5126;
+    EXPECT_CONTAINS(errorOf(write(b)), "accessor 3 (indices) is SCALAR of FLOAT, expected SCALAR of UNSIGNED_BYTE or "
+                                       "UNSIGNED_SHORT or UNSIGNED_INT");
+}
+
+TEST_F(GltfLoaderTest, IndexPastTheVertices)
+{
+    GltfBuilder b;
+    const std::vector<glm::vec3> positions(24, glm::vec3(0.0f));
+    std::vector<std::uint32_t> indices(36, 0u);
+    indices[7] = 40;
+    const int mesh = b.add("meshes", {{"name", "Cube"}, {"primitives", {{{"attributes", {{"POSITION", b.addPositions(positions)}}},
+                                                                       {"indices", b.addIndices(indices, Component::UnsignedShort)}}}}});
+    b.addRoot(b.add("nodes", {{"mesh", mesh}}));
+    EXPECT_CONTAINS(errorOf(write(b)),
+                    "scene.gltf: mesh 0 ('Cube') primitive 0: accessor 1 (indices) refers to vertex 40 but POSITION has 24");
+}
+
+TEST_F(GltfLoaderTest, AccessorPastTheBufferViewEnd)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["accessors"][std::size_t(attribute(b, "NORMAL"))]["count"] = 25;
+    EXPECT_CONTAINS(errorOf(write(b)), "accessor 1 (NORMAL): 25 elements need 300 bytes of buffer view 1, which has 288");
+}
+
+TEST_F(GltfLoaderTest, BufferViewPastTheBufferEnd)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["bufferViews"][0]["byteLength"] = 100000;
+    EXPECT_CONTAINS(errorOf(write(b)), "buffer view 0 ends at byte 100000, past the end of buffer 0");
+}
+
+TEST_F(GltfLoaderTest, AttributeCountsDiffer)
+{
+    GltfBuilder b = cubeScene();
+    const std::vector<glm::vec2> uvs(3, glm::vec2(0.0f));
+    primitive(b)["attributes"]["TEXCOORD_0"] = b.addUvs(uvs);
+    EXPECT_CONTAINS(errorOf(write(b)), "(TEXCOORD_0) has 3 elements but POSITION has 24");
+}
+
+TEST_F(GltfLoaderTest, TruncatedGlb)
+{
+    const std::vector<std::uint8_t> bytes = cubeScene().glbBytes();
+    const std::filesystem::path path = folder_ / "truncated.glb";
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size() / 2));
+    EXPECT_CONTAINS(errorOf(path), "truncated.glb: cannot read");
+}
+
+TEST_F(GltfLoaderTest, UnsupportedPrimitiveMode)
+{
+    GltfBuilder b = cubeScene();
+    primitive(b)["mode"] = 1;
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: mesh 0 ('Cube') primitive 0: mode LINES is not supported, only TRIANGLES");
+}
+
+TEST_F(GltfLoaderTest, NodeThatIsItsOwnAncestor)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["nodes"][0]["children"] = {0};
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: node 0 ('cube') is its own ancestor");
+}
+
+TEST_F(GltfLoaderTest, BadLightValuesAreReportedWithTheFile)
+{
+    GltfBuilder b = testing::exampleScene();
+    b.json()["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.6; // beyond the outer angle
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: spot light 0 ('spot'): angles inner 0.6 outer 0.5");
+}
+
+} // namespace
+} // namespace penumbra::scene

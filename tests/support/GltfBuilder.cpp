@@ -1,0 +1,267 @@
+#include "GltfBuilder.hpp"
+
+#include <OpenImageIO/imageio.h>
+#include <glm/common.hpp>
+
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace penumbra::testing {
+namespace {
+
+std::string base64(std::span<const std::uint8_t> bytes)
+{
+    static constexpr char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const std::uint32_t chunk = (std::uint32_t(bytes[i]) << 16) |
+                                    (i + 1 < bytes.size() ? std::uint32_t(bytes[i + 1]) << 8 : 0u) |
+                                    (i + 2 < bytes.size() ? std::uint32_t(bytes[i + 2]) : 0u);
+        out += digits[(chunk >> 18) & 63];
+        out += digits[(chunk >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(chunk >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[chunk & 63] : '=';
+    }
+    return out;
+}
+
+void writeFile(const std::filesystem::path& path, std::span<const std::uint8_t> bytes)
+{
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    if (!out)
+        throw std::runtime_error("cannot write " + path.string());
+}
+
+template <typename T>
+std::span<const std::uint8_t> bytesOf(std::span<const T> values)
+{
+    return {reinterpret_cast<const std::uint8_t*>(values.data()), values.size_bytes()};
+}
+
+void appendU32(std::vector<std::uint8_t>& out, std::uint32_t value)
+{
+    for (int i = 0; i < 4; ++i)
+        out.push_back(std::uint8_t(value >> (8 * i)));
+}
+
+std::vector<std::uint8_t> encodePng(std::uint32_t width, std::uint32_t height, std::span<const std::uint8_t> rgba)
+{
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("penumbra-gltf-builder-" + std::to_string(::getpid()) + ".png");
+    auto out = OIIO::ImageOutput::create(path.string());
+    const OIIO::ImageSpec spec(int(width), int(height), 4, OIIO::TypeDesc::UINT8);
+    if (!out || !out->open(path.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgba.data()) ||
+        !out->close())
+        throw std::runtime_error("cannot encode a PNG");
+    std::ifstream in(path, std::ios::binary);
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::filesystem::remove(path);
+    return bytes;
+}
+
+} // namespace
+
+GltfBuilder::GltfBuilder()
+    : json_({{"asset", {{"version", "2.0"}, {"generator", "penumbra tests"}}}, {"scene", 0},
+             {"scenes", {{{"nodes", nlohmann::json::array()}}}}})
+{
+}
+
+int GltfBuilder::add(const std::string& array, nlohmann::json element)
+{
+    nlohmann::json& items = json_[array];
+    if (items.is_null())
+        items = nlohmann::json::array();
+    items.push_back(std::move(element));
+    return int(items.size()) - 1;
+}
+
+void GltfBuilder::addRoot(int node) { json_["scenes"][0]["nodes"].push_back(node); }
+
+int GltfBuilder::addView(std::span<const std::uint8_t> bytes)
+{
+    while (bin_.size() % 4 != 0)
+        bin_.push_back(0);
+    const std::size_t offset = bin_.size();
+    bin_.insert(bin_.end(), bytes.begin(), bytes.end());
+    return add("bufferViews", {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes.size()}});
+}
+
+int GltfBuilder::addAccessor(std::span<const std::uint8_t> bytes, std::size_t count, const std::string& type,
+                             Component component, bool normalized)
+{
+    nlohmann::json accessor = {{"bufferView", addView(bytes)}, {"count", count}, {"type", type},
+                               {"componentType", int(component)}};
+    if (normalized)
+        accessor["normalized"] = true;
+    return add("accessors", accessor);
+}
+
+int GltfBuilder::addPositions(std::span<const glm::vec3> values)
+{
+    glm::vec3 lo(values.front()), hi(values.front());
+    for (const glm::vec3& v : values) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    const int accessor = addAccessor(bytesOf(values), values.size(), "VEC3", Component::Float);
+    json_["accessors"][std::size_t(accessor)]["min"] = {lo.x, lo.y, lo.z};
+    json_["accessors"][std::size_t(accessor)]["max"] = {hi.x, hi.y, hi.z};
+    return accessor;
+}
+
+int GltfBuilder::addNormals(std::span<const glm::vec3> values)
+{
+    return addAccessor(bytesOf(values), values.size(), "VEC3", Component::Float);
+}
+
+int GltfBuilder::addUvs(std::span<const glm::vec2> values)
+{
+    return addAccessor(bytesOf(values), values.size(), "VEC2", Component::Float);
+}
+
+int GltfBuilder::addIndices(std::span<const std::uint32_t> values, Component component)
+{
+    std::vector<std::uint8_t> bytes;
+    for (const std::uint32_t v : values) {
+        if (component == Component::UnsignedByte) {
+            bytes.push_back(std::uint8_t(v));
+        } else if (component == Component::UnsignedShort) {
+            const auto s = std::uint16_t(v);
+            bytes.insert(bytes.end(), {std::uint8_t(s & 0xff), std::uint8_t(s >> 8)});
+        } else {
+            appendU32(bytes, v);
+        }
+    }
+    return addAccessor(bytes, values.size(), "SCALAR", component);
+}
+
+int GltfBuilder::addPngImage(std::uint32_t width, std::uint32_t height, std::span<const std::uint8_t> rgba)
+{
+    const std::vector<std::uint8_t> png = encodePng(width, height, rgba);
+    return add("images", {{"bufferView", addView(png)}, {"mimeType", "image/png"}});
+}
+
+nlohmann::json GltfBuilder::withBuffer(const std::string& uri) const
+{
+    nlohmann::json document = json_;
+    nlohmann::json buffer = {{"byteLength", bin_.size()}};
+    if (!uri.empty())
+        buffer["uri"] = uri;
+    document["buffers"] = nlohmann::json::array({buffer});
+    return document;
+}
+
+void GltfBuilder::writeGltf(const std::filesystem::path& path, bool externalBuffer) const
+{
+    std::string uri = "data:application/octet-stream;base64," + base64(bin_);
+    if (externalBuffer) {
+        uri = path.stem().string() + ".bin";
+        writeFile(path.parent_path() / uri, bin_);
+    }
+    const std::string text = withBuffer(uri).dump(1);
+    writeFile(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
+}
+
+std::vector<std::uint8_t> GltfBuilder::glbBytes() const
+{
+    std::string text = withBuffer("").dump();
+    while (text.size() % 4 != 0)
+        text += ' ';
+    std::vector<std::uint8_t> bin = bin_;
+    while (bin.size() % 4 != 0)
+        bin.push_back(0);
+    std::vector<std::uint8_t> out;
+    appendU32(out, 0x46546C67); // "glTF"
+    appendU32(out, 2);
+    appendU32(out, std::uint32_t(12 + 8 + text.size() + 8 + bin.size()));
+    appendU32(out, std::uint32_t(text.size()));
+    appendU32(out, 0x4E4F534A); // "JSON"
+    out.insert(out.end(), text.begin(), text.end());
+    appendU32(out, std::uint32_t(bin.size()));
+    appendU32(out, 0x004E4942); // "BIN\0"
+    out.insert(out.end(), bin.begin(), bin.end());
+    return out;
+}
+
+void GltfBuilder::writeGlb(const std::filesystem::path& path) const { writeFile(path, glbBytes()); }
+
+int addCubeMesh(GltfBuilder& builder, const std::string& name, int material, Component indexComponent)
+{
+    // Per face: normal, and the two in-face axes u and v with u x v = normal (counter-clockwise outside).
+    const std::array<std::array<glm::vec3, 3>, 6> faces = {{{{{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}},
+                                                            {{{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}}},
+                                                            {{{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}},
+                                                            {{{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}},
+                                                            {{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}},
+                                                            {{{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}}}}};
+    std::vector<glm::vec3> positions, normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint32_t> indices;
+    for (const auto& [n, u, v] : faces) {
+        const auto base = std::uint32_t(positions.size());
+        for (const glm::vec2 corner : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+            positions.push_back(n + corner.x * u + corner.y * v);
+            normals.push_back(n);
+            uvs.push_back(glm::vec2(0.5f * (corner.x + 1.0f), 0.5f * (1.0f - corner.y)));
+        }
+        indices.insert(indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+    nlohmann::json primitive = {{"attributes",
+                                 {{"POSITION", builder.addPositions(positions)},
+                                  {"NORMAL", builder.addNormals(normals)},
+                                  {"TEXCOORD_0", builder.addUvs(uvs)}}},
+                                {"indices", builder.addIndices(indices, indexComponent)}};
+    if (material >= 0)
+        primitive["material"] = material;
+    return builder.add("meshes", {{"name", name}, {"primitives", {primitive}}});
+}
+
+GltfBuilder exampleScene()
+{
+    GltfBuilder b;
+    const int ground = b.add("materials", {{"name", "ground"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.75, 1.0}}, {"metallicFactor", 0.0}}}});
+    const int red = b.add("materials", {{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.1, 0.1, 1.0}}, {"metallicFactor", 0.0}}}});
+    const int mask = b.add("materials", {{"name", "mask"}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.4},
+                                         {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.6, 0.1, 1.0}}, {"metallicFactor", 0.0}}}});
+    const int blend = b.add("materials", {{"name", "blend"}, {"alphaMode", "BLEND"},
+                                          {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.8, 0.5}}, {"metallicFactor", 0.0}}}});
+    const int groundMesh = addCubeMesh(b, "ground", ground);
+    const int cube = addCubeMesh(b, "cube", red, Component::UnsignedByte);
+    const int maskCube = addCubeMesh(b, "mask cube", mask, Component::UnsignedInt);
+    const int blendCube = addCubeMesh(b, "blend cube", blend);
+    b.addRoot(b.add("nodes", {{"name", "ground"}, {"mesh", groundMesh}, {"translation", {0, -0.1, 0}}, {"scale", {8, 0.1, 8}}}));
+    // A parent that moves and turns its children: the cubes' world transforms come from the hierarchy.
+    const int standing = b.add("nodes", {{"name", "standing cube"}, {"mesh", cube}, {"translation", {0, 1, 0}}});
+    const int floating = b.add("nodes", {{"name", "floating cube"}, {"mesh", maskCube}, {"translation", {2.5, 2, 0}},
+                                         {"rotation", {0, 0.3826834, 0, 0.9238795}}, {"scale", {0.5, 1.5, 0.5}}});
+    const int glass = b.add("nodes", {{"name", "blend cube"}, {"mesh", blendCube}, {"translation", {-2.5, 0.75, 1}}, {"scale", {0.75, 0.75, 0.75}}});
+    b.addRoot(b.add("nodes", {{"name", "cubes"}, {"translation", {0, 0, -1}}, {"children", {standing, floating, glass}}}));
+
+    b.json()["extensionsUsed"] = {"KHR_lights_punctual"};
+    b.json()["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"name", "sun"}, {"type", "directional"}, {"intensity", 2.5}},
+        {{"name", "spot"}, {"type", "spot"}, {"intensity", 20.0}, {"range", 12.0}, {"color", {1.0, 0.9, 0.7}},
+         {"spot", {{"innerConeAngle", 0.3}, {"outerConeAngle", 0.5}}}},
+        {{"name", "bulb"}, {"type", "point"}, {"intensity", 5.0}}};
+    // The sun 50 degrees below the horizon (rotation about x, then turned about y).
+    b.addRoot(b.add("nodes", {{"name", "sun"}, {"rotation", {-0.4082179, 0.2345697, 0.1093817, 0.8754261}},
+                              {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}));
+    b.addRoot(b.add("nodes", {{"name", "spot"}, {"translation", {0, 6, 0}}, {"rotation", {-0.7071068, 0, 0, 0.7071068}},
+                              {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}}));
+    b.addRoot(b.add("nodes", {{"name", "bulb"}, {"translation", {-3, 3, 3}},
+                              {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}}));
+
+    b.add("cameras", {{"name", "overview"}, {"type", "perspective"},
+                      {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 60.0}}}});
+    // At (0, 5, 9), pitched down about 30 degrees towards the cubes.
+    b.addRoot(b.add("nodes", {{"name", "overview camera"}, {"camera", 0}, {"translation", {0, 5, 9}},
+                              {"rotation", {-0.2588190, 0, 0, 0.9659258}}}));
+    return b;
+}
+
+} // namespace penumbra::testing

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace penumbra::testing {
+
+// glTF component types, as the specification numbers them.
+enum class Component : int { UnsignedByte = 5121, UnsignedShort = 5123, UnsignedInt = 5125, Float = 5126 };
+
+// Writes small glTF 2.0 files for tests: a JSON document plus one binary buffer that accessors,
+// and images embedded in it, are appended to. Everything is public JSON to edit, so a test can
+// break a file in exactly one place.
+class GltfBuilder {
+public:
+    GltfBuilder();
+
+    nlohmann::json& json() { return json_; }
+    std::vector<std::uint8_t>& bin() { return bin_; }
+
+    // Appends the bytes (4-byte aligned) as a buffer view and an accessor over it; returns the accessor.
+    int addAccessor(std::span<const std::uint8_t> bytes, std::size_t count, const std::string& type, Component component,
+                    bool normalized = false);
+    int addPositions(std::span<const glm::vec3> values);
+    int addNormals(std::span<const glm::vec3> values);
+    int addUvs(std::span<const glm::vec2> values);
+    // Indices stored with the given component type (UnsignedByte, UnsignedShort or UnsignedInt).
+    int addIndices(std::span<const std::uint32_t> values, Component component);
+    // A PNG of width x height RGBA8 texels as a buffer view image; returns the image index.
+    int addPngImage(std::uint32_t width, std::uint32_t height, std::span<const std::uint8_t> rgba);
+
+    // Appends to the named top-level array; returns the new element's index.
+    int add(const std::string& array, nlohmann::json element);
+    // Adds a node to the default scene's roots.
+    void addRoot(int node);
+
+    // .gltf with the buffer inline as a base64 data URI, or beside it as <stem>.bin.
+    void writeGltf(const std::filesystem::path& path, bool externalBuffer = false) const;
+    void writeGlb(const std::filesystem::path& path) const;
+    std::vector<std::uint8_t> glbBytes() const;
+
+private:
+    int addView(std::span<const std::uint8_t> bytes);
+    nlohmann::json withBuffer(const std::string& uri) const;
+
+    nlohmann::json json_;
+    std::vector<std::uint8_t> bin_;
+};
+
+// A cube of half size 1 as one primitive: 24 vertices with flat normals and uvs, 36 indices of
+// the given component type, counter-clockwise seen from outside. Returns the mesh index.
+int addCubeMesh(GltfBuilder& builder, const std::string& name, int material, Component indices = Component::UnsignedShort);
+
+// The scene the command-line tests render: a ground plane, a cube standing on it and a rotated,
+// scaled one above it, a masked and a blended material, a directional light, a spot light, a
+// point light and a camera named "overview" looking at the cubes.
+GltfBuilder exampleScene();
+
+} // namespace penumbra::testing
