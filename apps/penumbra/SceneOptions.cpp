@@ -1,5 +1,7 @@
 #include "SceneOptions.hpp"
 
+#include "LightOption.hpp"
+
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/GltfLoader.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
@@ -86,6 +88,14 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                     "A glTF camera (by camera or node name), or a position and a target as px,py,pz:tx,ty,tz "
                     "(e.g. 0,8,-20:0,0,5), which keeps the scene camera's field of view and planes")
         ->check(CLI::Validator([](std::string& s) { return validateCamera(s); }, "CAMERA"));
+    command
+        .add_option("--light", options.lights,
+                    fmt::format("Add a light (repeatable): {}; e.g. point:0,3,0:12:5", kLightSyntax))
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return parseLightOption(s) ? std::string() : fmt::format("'{}' is not {}", s, kLightSyntax);
+            },
+            "LIGHT"));
     command.add_option("--settings", options.settings, "Shadow settings JSON file")->check(CLI::ExistingFile);
     command.add_option("--size", options.size, "Picture size as WIDTHxHEIGHT, each 1 to 8192")
         ->check(CLI::Validator(
@@ -115,6 +125,10 @@ LoadedScene loadScene(const SceneOptions& options)
                                          options.camera, options.scene));
         loaded.scene = namedScene(options.scene);
     }
+    for (const std::string& light : options.lights)
+        addLight(loaded.scene, parseLightOption(light).value());
+    if (!options.lights.empty())
+        loaded.scene.validate();
     if (lookAt) {
         scene::Camera& camera = loaded.scene.camera;
         // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.

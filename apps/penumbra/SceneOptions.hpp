@@ -12,15 +12,16 @@
 
 namespace penumbra::apps {
 
-// What to render, shared by `render` and `parity`: --scene, --camera, --settings, --size.
+// What to render, shared by `render` and `parity`: --scene, --camera, --light, --settings, --size.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
+    std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
     std::string settings;
     std::string size = "1280x720";
 };
 
-// Adds the four options with validators that reject bad values before anything renders.
+// Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);
 
 struct LoadedScene {
@@ -28,7 +29,7 @@ struct LoadedScene {
     std::vector<std::string> notes; // from the glTF loader
 };
 
-// The built-in scene or glTF file, with --camera applied. Throws scene::SceneError (a glTF file's
+// The built-in scene or glTF file, with --camera and --light applied. Throws scene::SceneError (a glTF file's
 // errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 

@@ -1,0 +1,122 @@
+#include "LightOption.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <sstream>
+#include <vector>
+
+namespace penumbra::apps {
+namespace {
+
+// The ':'-separated fields of `text`, each a ','-separated list of finite numbers.
+std::optional<std::vector<std::vector<float>>> numberFields(const std::string& text)
+{
+    std::vector<std::vector<float>> fields;
+    std::istringstream parts(text);
+    for (std::string part; std::getline(parts, part, ':');) {
+        std::vector<float>& numbers = fields.emplace_back();
+        std::istringstream values(part);
+        for (std::string value; std::getline(values, value, ',');) {
+            std::size_t used = 0;
+            try {
+                numbers.push_back(std::stof(value, &used));
+            } catch (const std::exception&) {
+                return std::nullopt;
+            }
+            if (used != value.size() || !std::isfinite(numbers.back()))
+                return std::nullopt;
+        }
+    }
+    return fields;
+}
+
+std::optional<glm::vec3> vec3Of(const std::vector<float>& field)
+{
+    return field.size() == 3 ? std::optional<glm::vec3>({field[0], field[1], field[2]}) : std::nullopt;
+}
+
+std::optional<float> scalarOf(const std::vector<float>& field)
+{
+    return field.size() == 1 ? std::optional<float>(field[0]) : std::nullopt;
+}
+
+// The optional last field: an intensity >= 0, 1 when absent.
+std::optional<float> intensityOf(const std::vector<std::vector<float>>& fields, std::size_t index)
+{
+    if (fields.size() == index)
+        return 1.0f;
+    const std::optional<float> intensity = fields.size() == index + 1 ? scalarOf(fields[index]) : std::nullopt;
+    return intensity && *intensity >= 0.0f ? intensity : std::nullopt;
+}
+
+std::optional<glm::vec3> directionOf(const std::vector<float>& field)
+{
+    const std::optional<glm::vec3> d = vec3Of(field);
+    return d && glm::length(*d) > 0.0f ? std::optional<glm::vec3>(glm::normalize(*d)) : std::nullopt;
+}
+
+} // namespace
+
+std::optional<LightOption> parseLightOption(const std::string& text)
+{
+    const std::size_t colon = text.find(':');
+    if (colon == std::string::npos)
+        return std::nullopt;
+    const std::string kind = text.substr(0, colon);
+    const std::optional<std::vector<std::vector<float>>> fields = numberFields(text.substr(colon + 1));
+    if (!fields || fields->empty())
+        return std::nullopt;
+    const auto& f = *fields;
+    if (kind == "sun") {
+        const std::optional<glm::vec3> direction = directionOf(f[0]);
+        const std::optional<float> intensity = intensityOf(f, 1);
+        if (!direction || !intensity)
+            return std::nullopt;
+        return scene::DirectionalLight{.name = "--light sun", .intensity = *intensity, .direction = *direction};
+    }
+    if (kind == "spot" && f.size() >= 4) {
+        const std::optional<glm::vec3> position = vec3Of(f[0]);
+        const std::optional<glm::vec3> direction = directionOf(f[1]);
+        const std::optional<float> range = scalarOf(f[2]);
+        const std::optional<float> outer = scalarOf(f[3]);
+        const std::optional<float> intensity = intensityOf(f, 4);
+        if (!position || !direction || !range || !(*range > 0.0f) || !outer || !(*outer > 0.0f && *outer < 90.0f) ||
+            !intensity)
+            return std::nullopt;
+        return scene::SpotLight{.name = "--light spot",
+                                .intensity = *intensity,
+                                .position = *position,
+                                .direction = *direction,
+                                .range = *range,
+                                .innerAngle = 0.7f * glm::radians(*outer),
+                                .outerAngle = glm::radians(*outer)};
+    }
+    if (kind == "point" && f.size() >= 2) {
+        const std::optional<glm::vec3> position = vec3Of(f[0]);
+        const std::optional<float> range = scalarOf(f[1]);
+        const std::optional<float> intensity = intensityOf(f, 2);
+        if (!position || !range || !(*range > 0.0f) || !intensity)
+            return std::nullopt;
+        return scene::PointLight{.name = "--light point", .intensity = *intensity, .position = *position, .range = *range};
+    }
+    return std::nullopt;
+}
+
+void addLight(scene::Scene& scene, const LightOption& light)
+{
+    std::visit(
+        [&](const auto& l) {
+            using Light = std::decay_t<decltype(l)>;
+            if constexpr (std::is_same_v<Light, scene::DirectionalLight>)
+                scene.lights.push_back(l);
+            else if constexpr (std::is_same_v<Light, scene::SpotLight>)
+                scene.spotLights.push_back(l);
+            else
+                scene.pointLights.push_back(l);
+        },
+        light);
+}
+
+} // namespace penumbra::apps

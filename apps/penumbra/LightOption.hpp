@@ -1,0 +1,26 @@
+#pragma once
+
+#include "penumbra/scene/Scene.hpp"
+
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace penumbra::apps {
+
+// A light given on the command line (--light), added to whatever the scene has:
+//   sun:dx,dy,dz[:intensity]                               direction from the light into the scene
+//   spot:px,py,pz:dx,dy,dz:range:outerDegrees[:intensity]  inner angle 0.7 x outer
+//   point:px,py,pz:range[:intensity]
+using LightOption = std::variant<scene::DirectionalLight, scene::SpotLight, scene::PointLight>;
+
+inline constexpr const char* kLightSyntax = "sun:dx,dy,dz[:intensity], spot:px,py,pz:dx,dy,dz:range:outerDegrees"
+                                            "[:intensity] or point:px,py,pz:range[:intensity]";
+
+// nullopt for text that does not follow the syntax or has a zero direction, a range <= 0, an
+// outer angle outside (0, 90) degrees or a negative intensity.
+std::optional<LightOption> parseLightOption(const std::string& text);
+
+void addLight(scene::Scene& scene, const LightOption& light);
+
+} // namespace penumbra::apps
