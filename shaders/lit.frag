@@ -49,7 +49,10 @@ const vec3 cascadeColors[5] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25
 void main()
 {
     const int casterMode = int(object.surface.w);
-    if (casterMode == PENUMBRA_CASTER_CLIP && materialAlpha(object.baseColor.a, casterMode, vUv) < object.surface.z)
+    const bool textured = object.flags.y != 0;
+    const vec4 texel = texture(baseColorMap, vUv);
+    if (casterMode == PENUMBRA_CASTER_CLIP &&
+        materialAlpha(object.baseColor.a, casterMode, vUv, textured, texel.a) < object.surface.z)
         discard;
 
     // Surfaces seen from behind (through clip holes) are shaded on the side the camera sees.
@@ -59,7 +62,7 @@ void main()
     const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);
     const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
 
-    const vec3 base = object.baseColor.rgb;
+    const vec3 base = object.baseColor.rgb * (textured ? srgbToLinear(texel.rgb) : vec3(1.0));
     vec3 color = frame.ambient.rgb * base;
     for (int i = 0; i < frame.config.x; ++i) {
         const vec3 l = -frame.lightDirection[i].xyz;

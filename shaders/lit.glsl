@@ -19,5 +19,8 @@ layout(std140, binding = 1) uniform Object {
     mat4 normalMatrix;       // inverse transpose of the model matrix
     vec4 baseColor;          // linear rgb, alpha
     vec4 surface;            // metallic, roughness, alpha cutoff, caster mode (material.glsl)
-    ivec4 flags;             // receives shadows
+    ivec4 flags;             // receives shadows, has a base colour texture
 } object;
+
+layout(binding = 7) uniform sampler2D baseColorMap; // sRGB-encoded; a white texel for untextured materials
+

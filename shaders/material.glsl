@@ -4,13 +4,22 @@ const int PENUMBRA_CASTER_ON = 0;
 const int PENUMBRA_CASTER_CLIP = 1;
 const int PENUMBRA_CASTER_DITHER = 2;
 
-// Clip materials get a checker of holes, 5 cells per uv unit (scene::kClipCheckerCells).
-float materialAlpha(float baseAlpha, int casterMode, vec2 uv)
+// Clip materials without a texture get a checker of holes, 5 cells per uv unit (scene::kClipCheckerCells);
+// textured ones take the texture's alpha (`textureAlpha`, 1 without a texture).
+float materialAlpha(float baseAlpha, int casterMode, vec2 uv, bool textured, float textureAlpha)
 {
+    if (textured)
+        return baseAlpha * textureAlpha;
     if (casterMode != PENUMBRA_CASTER_CLIP)
         return baseAlpha;
     const ivec2 cell = ivec2(floor(uv * 5.0));
     return ((cell.x + cell.y) & 1) == 0 ? baseAlpha : 0.0;
+}
+
+// The sRGB transfer function's inverse (IEC 61966-2-1): base colour textures are sRGB-encoded.
+vec3 srgbToLinear(vec3 c)
+{
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
 }
 
 // Jimenez 2014, "Next Generation Post Processing in Call of Duty: Advanced Warfare": a dither in

@@ -2,5 +2,6 @@
 layout(std140, binding = 0) uniform ShadowCasterDraw {
     mat4 worldToClip;  // the cascade's light view-projection times the caster's model matrix
     vec4 material;     // alpha, alpha cutoff, caster mode (material.glsl), 1 to pancake in the shader
-    vec4 ditherOrigin; // xy: added to gl_FragCoord, so the dither follows the world-fixed texel grid
+    vec4 sampling;     // xy: added to gl_FragCoord, so the dither follows the world-fixed texel grid;
+                       // z: 1 when the caster's alpha comes from its base colour texture
 } draw;

@@ -6,13 +6,16 @@
 #include "material.glsl"
 #include "shadow_caster.glsl"
 
+layout(binding = 1) uniform sampler2D baseColorMap; // a white texel for untextured casters
+
 layout(location = 0) in vec2 vUv;
 
 void main()
 {
     const int mode = int(draw.material.z);
-    const float alpha = materialAlpha(draw.material.x, mode, vUv);
-    const float threshold = mode == PENUMBRA_CASTER_DITHER ? interleavedGradientNoise(gl_FragCoord.xy + draw.ditherOrigin.xy) : draw.material.y;
+    const bool textured = draw.sampling.z > 0.5;
+    const float alpha = materialAlpha(draw.material.x, mode, vUv, textured, texture(baseColorMap, vUv).a);
+    const float threshold = mode == PENUMBRA_CASTER_DITHER ? interleavedGradientNoise(gl_FragCoord.xy + draw.sampling.xy) : draw.material.y;
     if (alpha < threshold)
         discard;
 }

@@ -1,5 +1,6 @@
 #include "penumbra/render/GpuScene.hpp"
 
+#include <array>
 #include <cstddef>
 
 namespace penumbra::render {
@@ -25,6 +26,14 @@ std::unique_ptr<rhi::Buffer> upload(rhi::Device& device, const std::vector<T>& d
     return buffer;
 }
 
+std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, std::uint32_t width, std::uint32_t height,
+                                            std::span<const std::uint8_t> rgba, const std::string& name)
+{
+    auto texture = device.createTexture({.width = width, .height = height, .debugName = name});
+    device.writeTexture(*texture, 0, std::as_bytes(rgba));
+    return texture;
+}
+
 } // namespace
 
 GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scene)
@@ -36,6 +45,17 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
         meshes_.push_back({upload(device, mesh.vertices, rhi::BufferUsage::Vertex, name + " vertices"),
                            upload(device, mesh.indices, rhi::BufferUsage::Index, name + " indices")});
     }
+    for (const scene::TextureImage& image : scene.textures)
+        textures_.push_back(uploadTexture(device, image.width, image.height, image.rgba, "texture '" + image.name + "'"));
+    constexpr std::array<std::uint8_t, 4> white{255, 255, 255, 255};
+    white_ = uploadTexture(device, 1, 1, white, "white texel");
+    sampler_ = device.createSampler({.filter = rhi::Filter::Linear, .address = rhi::AddressMode::Repeat,
+                                     .debugName = "base colour"});
+}
+
+const rhi::Texture& GpuScene::baseColorMap(const scene::Material& material) const
+{
+    return material.baseColorTexture ? *textures_.at(*material.baseColorTexture) : *white_;
 }
 
 std::vector<shadows::ShadowCaster> GpuScene::casters() const
@@ -46,7 +66,8 @@ std::vector<shadows::ShadowCaster> GpuScene::casters() const
         if (const auto mode = casterMode(material.caster))
             casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
                                static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
-                               *mode, material.baseColor.a, material.alphaCutoff});
+                               *mode, material.baseColor.a, material.alphaCutoff, &baseColorMap(material),
+                               sampler_.get(), material.baseColorTexture.has_value()});
     }
     return casters;
 }

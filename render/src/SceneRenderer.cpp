@@ -19,6 +19,7 @@ constexpr std::uint32_t kAtlasBinding = 3;
 constexpr std::uint32_t kOtherShadowBinding = 4;
 constexpr std::uint32_t kOtherAtlasBinding = 5;
 constexpr std::uint32_t kShadowCubesBinding = 6;
+constexpr std::uint32_t kBaseColorBinding = 7;
 constexpr rhi::Format kLitFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
@@ -94,7 +95,7 @@ LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Mater
             glm::transpose(glm::inverse(object.transform)),
             material.baseColor,
             {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
-            {material.receiveShadows ? 1 : 0, 0, 0, 0}};
+            {material.receiveShadows ? 1 : 0, material.baseColorTexture ? 1 : 0, 0, 0}};
 }
 
 std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& frame, const std::string& name)
@@ -201,7 +202,9 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     commands.bindTexture(kOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
     commands.bindTexture(kShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
     for (const scene::Object& object : scene.objects) {
-        rhi::bindUniform(commands, kObjectBinding, uniforms_.push(objectUniforms(object, scene.materialOf(object))));
+        const scene::Material& material = scene.materialOf(object);
+        rhi::bindUniform(commands, kObjectBinding, uniforms_.push(objectUniforms(object, material)));
+        commands.bindTexture(kBaseColorBinding, gpuScene_.baseColorMap(material), gpuScene_.baseColorSampler());
         commands.bindVertexBuffer(0, gpuScene_.vertices(object.mesh));
         commands.bindIndexBuffer(gpuScene_.indices(object.mesh), rhi::IndexType::UInt32);
         commands.drawIndexed(static_cast<std::uint32_t>(scene.meshOf(object).indices.size()));

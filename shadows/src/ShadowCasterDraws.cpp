@@ -10,6 +10,7 @@ namespace penumbra::shadows {
 namespace {
 
 constexpr std::uint32_t kDrawBinding = 0;
+constexpr std::uint32_t kBaseColorBinding = 1;
 
 } // namespace
 
@@ -60,7 +61,6 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
     const float pancakeInShader = view.pancake && !depthClamp ? 1.0f : 0.0f;
     const Pipelines& pipelines = this->pipelines(depthFormat, depthClamp, view.mirrored);
     const rhi::DepthBias bias{0.0f, view.slopeScaleBias, 0.0f};
-    const glm::vec4 dither(view.ditherOrigin, 0.0f, 0.0f);
     const rhi::Pipeline* bound = nullptr;
     for (const std::uint32_t index : indices) {
         if (index >= casters.size())
@@ -77,8 +77,15 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
         const ShadowCasterUniforms draw{view.viewProjection * caster.model,
                                         {caster.alpha, caster.alphaCutoff, static_cast<float>(caster.mode),
                                          pancakeInShader},
-                                        dither};
+                                        {view.ditherOrigin, caster.textured ? 1.0f : 0.0f, 0.0f}};
         rhi::bindUniform(commands, kDrawBinding, uniforms_.push(draw));
+        if (caster.mode != ShadowCasterMode::Opaque) {
+            if (!caster.baseColorMap || !caster.baseColorSampler)
+                throw rhi::Error(fmt::format("shadow caster {}: clip and dither casters need a base colour texture "
+                                             "and sampler",
+                                             index));
+            commands.bindTexture(kBaseColorBinding, *caster.baseColorMap, *caster.baseColorSampler);
+        }
         commands.bindVertexBuffer(0, *caster.vertices);
         commands.bindIndexBuffer(*caster.indices, rhi::IndexType::UInt32);
         commands.drawIndexed(caster.indexCount);

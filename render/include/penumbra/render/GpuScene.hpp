@@ -14,12 +14,15 @@ namespace penumbra::render {
 // casters in the order the shadow planner sees their bounds.
 class GpuScene {
 public:
-    // Validates the scene (scene::SceneError names what is wrong) and uploads every mesh.
+    // Validates the scene (scene::SceneError names what is wrong) and uploads every mesh and texture.
     GpuScene(rhi::Device& device, const scene::Scene& scene);
 
     const scene::Scene& scene() const { return scene_; }
     const rhi::Buffer& vertices(std::uint32_t mesh) const { return *meshes_.at(mesh).vertices; }
     const rhi::Buffer& indices(std::uint32_t mesh) const { return *meshes_.at(mesh).indices; }
+    // The material's base colour texture, or a white texel for a material without one.
+    const rhi::Texture& baseColorMap(const scene::Material& material) const;
+    const rhi::Sampler& baseColorSampler() const { return *sampler_; }
 
     // Objects whose material casts shadows, with their world bounds; object transforms are read
     // from the scene on every call, so moved objects (with updated worldBounds) are seen.
@@ -35,6 +38,9 @@ private:
     };
     const scene::Scene& scene_;
     std::vector<Mesh> meshes_;
+    std::vector<std::unique_ptr<rhi::Texture>> textures_;
+    std::unique_ptr<rhi::Texture> white_;
+    std::unique_ptr<rhi::Sampler> sampler_;
 };
 
 } // namespace penumbra::render

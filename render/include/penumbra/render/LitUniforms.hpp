@@ -37,7 +37,7 @@ struct LitObjectUniforms {
     glm::mat4 normalMatrix{1.0f};
     glm::vec4 baseColor{1.0f};
     glm::vec4 surface{0.0f}; // metallic, roughness, alpha cutoff, caster mode (material.glsl)
-    glm::ivec4 flags{0};     // receives shadows
+    glm::ivec4 flags{0};     // receives shadows, has a base colour texture
 };
 static_assert(sizeof(LitObjectUniforms) == 176);
 

@@ -25,8 +25,8 @@ struct Material {
     float alphaCutoff = 0.5f; // Clip only
     CasterMode caster = CasterMode::On;
     bool receiveShadows = true;
-    // Index into Scene::textures, multiplied with baseColor (glTF's baseColorTexture); the lit
-    // pass does not sample it yet.
+    // Index into Scene::textures (sRGB-encoded RGBA8), multiplied with baseColor in every pass
+    // (glTF's baseColorTexture): its alpha then replaces the Clip checker below.
     std::optional<std::uint32_t> baseColorTexture;
 };
 
@@ -42,6 +42,8 @@ inline constexpr float kClipCheckerCells = 5.0f;
 //   can predict. The lit pass clips the surface with the same alpha and cutoff, so the holes
 //   are visible from the camera too; shaders must implement this exact function.
 // - Every other mode: baseColor.a.
+// Textured materials multiply baseColor.a by the texture's alpha instead, in the shaders; this CPU
+// reference (the ground truth's) does not sample textures.
 float materialAlpha(const Material& material, glm::vec2 uv);
 
 } // namespace penumbra::scene

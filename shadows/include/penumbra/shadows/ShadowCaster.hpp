@@ -31,6 +31,11 @@ struct ShadowCaster {
     ShadowCasterMode mode = ShadowCasterMode::Opaque;
     float alpha = 1.0f;
     float alphaCutoff = 0.5f;
+    // Clip and Dither casters read their alpha through these (binding 1 of shadow_caster_alpha.frag):
+    // the base colour texture when `textured`, else any texture (a white texel).
+    const rhi::Texture* baseColorMap = nullptr;
+    const rhi::Sampler* baseColorSampler = nullptr;
+    bool textured = false;
 };
 
 } // namespace penumbra::shadows

@@ -17,7 +17,7 @@ namespace penumbra::shadows {
 struct ShadowCasterUniforms {
     glm::mat4 worldToClip{1.0f};
     glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
-    glm::vec4 ditherOrigin{0.0f};
+    glm::vec4 sampling{0.0f}; // dither origin, 1 when the alpha comes from the base colour texture, 0
 };
 static_assert(sizeof(ShadowCasterUniforms) == 96);
 
