@@ -22,6 +22,7 @@ namespace penumbra::opengl {
     X(BindVertexBuffer, BINDVERTEXBUFFER)                                                                              \
     X(BlendEquationSeparatei, BLENDEQUATIONSEPARATEI)                                                                  \
     X(BlendFuncSeparatei, BLENDFUNCSEPARATEI)                                                                          \
+    X(BlitNamedFramebuffer, BLITNAMEDFRAMEBUFFER)                                                                      \
     X(CheckNamedFramebufferStatus, CHECKNAMEDFRAMEBUFFERSTATUS)                                                        \
     X(Clear, CLEAR)                                                                                                    \
     X(ClearColor, CLEARCOLOR)                                                                                          \

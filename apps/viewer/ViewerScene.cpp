@@ -1,0 +1,20 @@
+#include "ViewerScene.hpp"
+
+#include "ShadowScene.hpp"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+namespace penumbra::viewer {
+
+scene::Scene loadViewerScene(const std::string& name) { return apps::namedScene(name); }
+
+float orbitTargetDistance(const scene::Scene& scene)
+{
+    const scene::Bounds bounds = scene.worldBounds();
+    if (bounds.empty())
+        return 1.0f;
+    return std::max(1.0f, glm::dot(bounds.center() - scene.camera.position, scene.camera.forward));
+}
+
+} // namespace penumbra::viewer
