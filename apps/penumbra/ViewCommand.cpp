@@ -29,15 +29,19 @@ std::string parseSize(const std::string& text, viewer::ViewerOptions& options)
 void addViewCommand(CLI::App& app)
 {
     auto options = std::make_shared<viewer::ViewerOptions>();
-    auto size = std::make_shared<std::string>("1280x720");
     CLI::App* view = app.add_subcommand(
         "view", "Open a window on a scene: orbit (left drag), fly (right drag, W A S D Q E), zoom (scroll), settings panel");
     view->add_option("-b,--backend", options->configuration,
                      "vulkan or opengl, or any configuration name (vulkan-reversed, opengl-noclip, ...)")
         ->check(configurationValidator());
     view->add_option("--scene", options->scene, "Built-in scene: test (four lights) or key-light");
-    view->add_option("--size", *size, "Window size WIDTHxHEIGHT in pixels")
-        ->check(CLI::Validator([options](std::string& text) { return parseSize(text, *options); }, "WxH"));
+    view->add_option_function<std::string>(
+            "--size",
+            [options](const std::string& text) {
+                if (const std::string error = parseSize(text, *options); !error.empty())
+                    throw CLI::ValidationError("--size", error);
+            },
+            "Window size WIDTHxHEIGHT in pixels (default 1280x720)");
     view->add_option("--frames", options->frames, "Render this many frames, then exit")->check(CLI::Range(1u, 1000000u));
     view->add_option("--screenshot", options->screenshot, "PNG of the window's last frame (row 0 at the top)");
     view->add_flag("!--no-ui", options->ui, "Hide the settings panel");

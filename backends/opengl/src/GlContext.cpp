@@ -34,12 +34,13 @@ GlContext::GlContext(const rhi::DeviceDesc& desc)
 
 void GlContext::initialize()
 {
+    // Current first: GLFW looks entry points up only for the current context.
+    makeCurrent();
     // Which optional entry points exist depends on the version and extensions: query those first.
     auto getIntegerv = reinterpret_cast<PFNGLGETINTEGERVPROC>(context_->procAddress("glGetIntegerv"));
     auto getStringi = reinterpret_cast<PFNGLGETSTRINGIPROC>(context_->procAddress("glGetStringi"));
     if (!getIntegerv || !getStringi)
         throw rhi::Error("OpenGL: the driver does not provide glGetIntegerv / glGetStringi");
-    makeCurrent();
     GLint major = 0;
     GLint minor = 0;
     getIntegerv(GL_MAJOR_VERSION, &major);
