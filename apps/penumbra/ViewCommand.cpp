@@ -42,8 +42,10 @@ void addViewCommand(CLI::App& app)
                     throw CLI::ValidationError("--size", error);
             },
             "Window size WIDTHxHEIGHT in pixels (default 1280x720)");
-    view->add_option("--frames", options->frames, "Render this many frames, then exit")->check(CLI::Range(1u, 1000000u));
-    view->add_option("--screenshot", options->screenshot, "PNG of the window's last frame (row 0 at the top)");
+    CLI::Option* frames = view->add_option("--frames", options->frames, "Render this many frames, then exit")
+                              ->check(CLI::Range(1u, 1000000u));
+    view->add_option("--screenshot", options->screenshot, "PNG of the window's last frame, read back from the window")
+        ->needs(frames);
     view->add_flag("!--no-ui", options->ui, "Hide the settings panel");
     view->callback([options] { viewer::runViewer(*options); });
 }

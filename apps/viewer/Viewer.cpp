@@ -57,15 +57,22 @@ public:
     {
         std::uint32_t frame = 0;
         double totalMs = 0.0;
+        rhi::Image windowPicture;
         while (!window_.shouldClose() && (!options_.frames || frame < *options_.frames)) {
             const auto start = std::chrono::steady_clock::now();
-            drawFrame();
+            // The last frame of a screenshot run is read back from the window itself.
+            const bool last = options_.frames && frame + 1 == *options_.frames;
+            drawFrame(last && !options_.screenshot.empty() ? &windowPicture : nullptr);
             status_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             totalMs += status_.frameMs;
             ++frame;
         }
         if (!options_.screenshot.empty()) {
-            apps::writePng(options_.screenshot, rhi::readTexture(*device_, compositor_.image()));
+            if (windowPicture.bytes.empty())
+                throw rhi::Error(fmt::format("--screenshot {}: no frame reached the window (minimised, or closed before "
+                                             "--frames)",
+                                             options_.screenshot));
+            apps::writePng(options_.screenshot, windowPicture);
             fmt::print("screenshot: {}\n", options_.screenshot);
         }
         const std::vector<std::string> messages = device_->debugMessages();
@@ -77,7 +84,7 @@ public:
     }
 
 private:
-    void drawFrame()
+    void drawFrame(rhi::Image* windowPicture)
     {
         glfwPollEvents();
         const rhi::Extent size = swapchain_->drawableSize();
@@ -99,7 +106,10 @@ private:
                                 [&](rhi::CommandList& commands) { imguiRenderer_->record(commands, *ImGui::GetDrawData()); });
         else
             compositor_.compose(picture, size);
-        swapchain_->present(compositor_.image());
+        if (windowPicture)
+            *windowPicture = swapchain_->presentAndReadBack(compositor_.image());
+        else
+            swapchain_->present(compositor_.image());
     }
 
     // Takes the edited state if it is valid; else keeps the last valid one and shows why.

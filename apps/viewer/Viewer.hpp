@@ -12,7 +12,7 @@ struct ViewerOptions {
     std::uint32_t width = 1280;
     std::uint32_t height = 720;
     std::optional<std::uint32_t> frames; // render this many frames, then exit; else until closed
-    std::string screenshot;              // PNG of the window's last frame, with `frames`
+    std::string screenshot;              // PNG of the window's last frame as read back from it, with `frames`
     bool ui = true;                      // the settings panel
 };
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <optional>
 // GLFW's Vulkan functions (glfwCreateWindowSurface) are declared only with this set.
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
@@ -49,6 +50,19 @@ void transitionSwapchainImage(VkCommandBuffer commandBuffer, VkImage image, VkIm
     const VkImageMemoryBarrier barrier = imageBarrier(image, from, to);
     vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &barrier);
+}
+
+// Swapchain rows are top first already; BGRA images get their red and blue swapped back.
+rhi::Image windowPicture(const std::byte* texels, VkExtent2D extent, bool bgra)
+{
+    rhi::Image picture{extent.width, extent.height, rhi::Format::RGBA8,
+                       std::vector<std::byte>(texels, texels + std::size_t(extent.width) * extent.height * 4)};
+    for (std::size_t i = 0; i < picture.bytes.size(); i += 4) {
+        if (bgra)
+            std::swap(picture.bytes[i], picture.bytes[i + 2]);
+        picture.bytes[i + 3] = std::byte{255}; // the window is opaque (VK_COMPOSITE_ALPHA_OPAQUE)
+    }
+    return picture;
 }
 
 } // namespace
@@ -129,6 +143,8 @@ bool VulkanSwapchain::rebuild()
     if (!(caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
         throw rhi::Error("Vulkan: the window's images cannot be copied into (no TRANSFER_DST usage)");
     const VkSurfaceFormatKHR format = chooseFormat(context_->physicalDevice, surface_);
+    format_ = format.format;
+    readable_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
     if (!(context_->formatFeatures(format.format) & VK_FORMAT_FEATURE_BLIT_DST_BIT))
         throw rhi::Error("Vulkan: the window's image format cannot be blitted into");
 
@@ -140,7 +156,7 @@ bool VulkanSwapchain::rebuild()
     info.imageColorSpace = format.colorSpace;
     info.imageExtent = extent_;
     info.imageArrayLayers = 1;
-    info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | (readable_ ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0);
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.preTransform = caps.currentTransform;
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
@@ -158,7 +174,14 @@ bool VulkanSwapchain::rebuild()
     return true;
 }
 
-void VulkanSwapchain::present(const rhi::Texture& image)
+rhi::Image VulkanSwapchain::presentAndReadBack(const rhi::Texture& image)
+{
+    rhi::Image window;
+    show(image, &window);
+    return window;
+}
+
+void VulkanSwapchain::show(const rhi::Texture& image, rhi::Image* window)
 {
     const VulkanTexture& source = vulkanObject<const VulkanTexture>(image, "present: the image");
     const rhi::Extent size = drawableSize();
@@ -181,8 +204,14 @@ void VulkanSwapchain::present(const rhi::Texture& image)
     check(vkWaitForFences(context_->device, 1, &acquired_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
     check(vkResetFences(context_->device, 1, &acquired_), "vkResetFences");
 
+    if (window && !readable_)
+        throw rhi::Error("Vulkan: the window's images cannot be read back (no TRANSFER_SRC usage)");
     const VkImage target = images_[index];
     const rhi::TextureDesc& desc = source.desc();
+    const VkDeviceSize readbackSize = VkDeviceSize(extent_.width) * extent_.height * 4;
+    std::optional<MappedBuffer> readback;
+    if (window)
+        readback.emplace(context_, readbackSize, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     context_->runOnce([&](VkCommandBuffer commandBuffer) {
         source.transition(commandBuffer, 0, source.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
         transitionSwapchainImage(commandBuffer, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
@@ -196,9 +225,20 @@ void VulkanSwapchain::present(const rhi::Texture& image)
         vkCmdBlitImage(commandBuffer, source.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
         source.transition(commandBuffer, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, source.restingLayout());
-        transitionSwapchainImage(commandBuffer, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                 VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+        VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        if (readback) {
+            transitionSwapchainImage(commandBuffer, target, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+            layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+            VkBufferImageCopy copy{};
+            copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            copy.imageExtent = {extent_.width, extent_.height, 1};
+            vkCmdCopyImageToBuffer(commandBuffer, target, layout, readback->handle(), 1, &copy);
+            fullBarrier(commandBuffer);
+        }
+        transitionSwapchainImage(commandBuffer, target, layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
     });
+    if (window)
+        *window = windowPicture(readback->data(), extent_, format_ == VK_FORMAT_B8G8R8A8_UNORM);
 
     VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     info.swapchainCount = 1;

@@ -25,9 +25,12 @@ public:
     VulkanSwapchain& operator=(const VulkanSwapchain&) = delete;
 
     rhi::Extent drawableSize() const override;
-    void present(const rhi::Texture& image) override;
+    void present(const rhi::Texture& image) override { show(image, nullptr); }
+    rhi::Image presentAndReadBack(const rhi::Texture& image) override;
 
 private:
+    // Presents `image`; with `window`, also reads the swapchain image back into it.
+    void show(const rhi::Texture& image, rhi::Image* window);
     // (Re)creates the swapchain at the window's current size; false while the window is minimised.
     bool rebuild();
     void destroySwapchain();
@@ -38,6 +41,8 @@ private:
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
     VkFence acquired_ = VK_NULL_HANDLE;
     VkExtent2D extent_{};
+    VkFormat format_ = VK_FORMAT_UNDEFINED;
+    bool readable_ = false; // the images allow TRANSFER_SRC, so presentAndReadBack works
     std::vector<VkImage> images_;
 };
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/rhi/Image.hpp"
+
 #include <cstdint>
 
 // GLFW's window type, opaque here: only the backends include GLFW.
@@ -35,6 +37,11 @@ public:
     // differ), presents it and waits until that is done. A resized or out-of-date swapchain is
     // rebuilt here; a minimised window skips the frame.
     virtual void present(const Texture& image) = 0;
+
+    // present(), and the window's picture as presented, read back from the swapchain image
+    // (Vulkan) or the default framebuffer (OpenGL): RGBA8, row 0 at the top, alpha 255. For
+    // screenshots and tests; empty (0 x 0) when the frame was skipped.
+    virtual Image presentAndReadBack(const Texture& image) = 0;
 };
 
 } // namespace penumbra::rhi

@@ -94,6 +94,7 @@ namespace penumbra::opengl {
     X(ProvokingVertex, PROVOKINGVERTEX)                                                                                \
     X(ProgramUniform1i, PROGRAMUNIFORM1I)                                                                              \
     X(QueryCounter, QUERYCOUNTER)                                                                                      \
+    X(ReadPixels, READPIXELS)                                                                                          \
     X(SamplerParameteri, SAMPLERPARAMETERI)                                                                            \
     X(Scissor, SCISSOR)                                                                                                \
     X(ScissorIndexed, SCISSORINDEXED)                                                                                  \
