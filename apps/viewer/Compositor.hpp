@@ -9,7 +9,7 @@ namespace penumbra::viewer {
 
 // The picture the window shows: the scene's image drawn over the whole target with
 // fullscreen.vert, then the UI on top. It lives in an ordinary RHI texture (row 0 at the top),
-// so the swapchain presents it and a screenshot reads it back with the same orientation.
+// which the swapchain presents the right way up on every backend.
 class Compositor {
 public:
     static constexpr rhi::Format kFormat = rhi::Format::RGBA8;

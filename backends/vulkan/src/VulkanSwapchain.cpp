@@ -31,25 +31,9 @@ VkSurfaceFormatKHR chooseFormat(VkPhysicalDevice device, VkSurfaceKHR surface)
     throw rhi::Error("Vulkan: the window surface offers neither B8G8R8A8_UNORM nor R8G8B8A8_UNORM");
 }
 
-VkImageMemoryBarrier imageBarrier(VkImage image, VkImageLayout from, VkImageLayout to)
-{
-    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-    barrier.oldLayout = from;
-    barrier.newLayout = to;
-    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    return barrier;
-}
-
 void transitionSwapchainImage(VkCommandBuffer commandBuffer, VkImage image, VkImageLayout from, VkImageLayout to)
 {
-    const VkImageMemoryBarrier barrier = imageBarrier(image, from, to);
-    vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0,
-                         nullptr, 0, nullptr, 1, &barrier);
+    transitionImage(commandBuffer, image, {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}, from, to);
 }
 
 // Swapchain rows are top first already; BGRA images get their red and blue swapped back.
