@@ -54,11 +54,12 @@ rhi::Image windowPicture(const std::byte* texels, VkExtent2D extent, bool bgra)
 std::vector<const char*> windowInstanceExtensions()
 {
     if (!glfwVulkanSupported())
-        throw rhi::Error("Vulkan: GLFW finds no Vulkan loader with window-system support");
+        throw rhi::Error("Vulkan: GLFW finds no Vulkan loader (libvulkan1)");
     std::uint32_t count = 0;
     const char** names = glfwGetRequiredInstanceExtensions(&count);
     if (!names)
-        throw rhi::Error("Vulkan: the window system offers no surface extensions for Vulkan");
+        throw rhi::Error("Vulkan: no driver offers surface extensions for this window system (no Vulkan driver "
+                         "found? install mesa-vulkan-drivers for lavapipe)");
     return {names, names + count};
 }
 
