@@ -2,6 +2,7 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/Light.hpp"
+#include "penumbra/scene/Scene.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <optional>
@@ -27,6 +28,12 @@ struct PanelStatus {
     std::vector<std::string> notes;  // SceneRenderer::notes()
     const rhi::Texture* atlasPicture = nullptr; // shown when atlasOverlay is on
 };
+
+// Makes `edited` the state in use if it is valid: its shadow settings pass shadows::validate and
+// its lights (directions normalised, as the panel edits them freely) pass scene.validate(); then
+// `applied` and scene.lights take it and the result is empty. Otherwise nothing changes and the
+// result is the error, naming the field.
+std::string applyViewState(const ViewState& edited, ViewState& applied, scene::Scene& scene);
 
 // Draws the panel into the current ImGui frame; returns whether the user changed `state`.
 bool drawSettingsPanel(ViewState& state, const PanelStatus& status);

@@ -94,7 +94,7 @@ private:
         if (imgui_) {
             imgui_->newFrame();
             if (drawSettingsPanel(edited_, status_))
-                applyEdits();
+                status_.error = applyViewState(edited_, applied_, scene_);
             ImGui::Render();
         }
         if (size.width == 0 || size.height == 0)
@@ -110,27 +110,6 @@ private:
             *windowPicture = swapchain_->presentAndReadBack(compositor_.image());
         else
             swapchain_->present(compositor_.image());
-    }
-
-    // Takes the edited state if it is valid; else keeps the last valid one and shows why.
-    void applyEdits()
-    {
-        ViewState candidate = edited_;
-        try {
-            shadows::validate(candidate.shadows);
-            const std::vector<scene::DirectionalLight> previous = scene_.lights;
-            scene_.lights = candidate.lights;
-            try {
-                scene_.validate();
-            } catch (...) {
-                scene_.lights = previous;
-                throw;
-            }
-            applied_ = candidate;
-            status_.error.clear();
-        } catch (const std::exception& e) {
-            status_.error = e.what();
-        }
     }
 
     void render(rhi::Extent size)
