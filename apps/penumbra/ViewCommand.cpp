@@ -47,6 +47,8 @@ void addViewCommand(CLI::App& app)
     view->add_option("--screenshot", options->screenshot, "PNG of the window's last frame, read back from the window")
         ->needs(frames);
     view->add_flag("!--no-ui", options->ui, "Hide the settings panel");
+    view->add_flag("--cascade-view", options->cascadeView, "Start with the cascade view");
+    view->add_flag("--atlas-overlay", options->atlasOverlay, "Start with the shadow atlas overlay");
     view->callback([options] { viewer::runViewer(*options); });
 }
 

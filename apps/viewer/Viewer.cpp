@@ -46,6 +46,8 @@ public:
           camera_(scene_.camera, orbitTargetDistance(scene_)), renderer_(*device_, scene_), compositor_(*device_)
     {
         applied_.lights = scene_.lights;
+        applied_.cascadeView = options.cascadeView;
+        applied_.atlasOverlay = options.atlasOverlay;
         edited_ = applied_;
         if (options.ui) {
             imgui_.emplace(window_.handle());

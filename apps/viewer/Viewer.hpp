@@ -14,6 +14,8 @@ struct ViewerOptions {
     std::optional<std::uint32_t> frames; // render this many frames, then exit; else until closed
     std::string screenshot;              // PNG of the window's last frame as read back from it, with `frames`
     bool ui = true;                      // the settings panel
+    bool cascadeView = false;            // start with the panel's toggles on
+    bool atlasOverlay = false;
 };
 
 // Opens the window and runs the viewer. Throws rhi::Error when there is no display, no driver,
