@@ -43,19 +43,10 @@ rhi::Extent GlSwapchain::drawableSize() const
     return {std::uint32_t(std::max(width, 0)), std::uint32_t(std::max(height, 0))};
 }
 
-rhi::Image GlSwapchain::presentAndReadBack(const rhi::Texture& image)
-{
-    rhi::Image window;
-    show(image, &window);
-    return window;
-}
-
 void GlSwapchain::show(const rhi::Texture& image, rhi::Image* window)
 {
     const GlTexture& source = glObject<const GlTexture>(image, "present: the image");
     const rhi::Extent size = drawableSize();
-    if (size.width == 0 || size.height == 0)
-        return;
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
     GLuint read = 0;

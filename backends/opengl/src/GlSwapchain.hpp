@@ -14,12 +14,11 @@ public:
     GlSwapchain(GlContextPtr context, GLFWwindow* window);
 
     rhi::Extent drawableSize() const override;
-    void present(const rhi::Texture& image) override { show(image, nullptr); }
-    rhi::Image presentAndReadBack(const rhi::Texture& image) override;
+
+protected:
+    void show(const rhi::Texture& image, rhi::Image* window) override;
 
 private:
-    // Presents `image`; with `window`, also reads the back buffer into it before the swap.
-    void show(const rhi::Texture& image, rhi::Image* window);
     GlContextPtr context_;
     GLFWwindow* window_;
 };

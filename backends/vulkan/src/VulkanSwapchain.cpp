@@ -159,19 +159,10 @@ bool VulkanSwapchain::rebuild()
     return true;
 }
 
-rhi::Image VulkanSwapchain::presentAndReadBack(const rhi::Texture& image)
-{
-    rhi::Image window;
-    show(image, &window);
-    return window;
-}
-
 void VulkanSwapchain::show(const rhi::Texture& image, rhi::Image* window)
 {
     const VulkanTexture& source = vulkanObject<const VulkanTexture>(image, "present: the image");
     const rhi::Extent size = drawableSize();
-    if (size.width == 0 || size.height == 0)
-        return;
     if (!swapchain_ || size.width != extent_.width || size.height != extent_.height) {
         if (!rebuild())
             return;

@@ -25,12 +25,11 @@ public:
     VulkanSwapchain& operator=(const VulkanSwapchain&) = delete;
 
     rhi::Extent drawableSize() const override;
-    void present(const rhi::Texture& image) override { show(image, nullptr); }
-    rhi::Image presentAndReadBack(const rhi::Texture& image) override;
+
+protected:
+    void show(const rhi::Texture& image, rhi::Image* window) override;
 
 private:
-    // Presents `image`; with `window`, also reads the swapchain image back into it.
-    void show(const rhi::Texture& image, rhi::Image* window);
     // (Re)creates the swapchain at the window's current size; false while the window is minimised.
     bool rebuild();
     void destroySwapchain();

@@ -36,12 +36,33 @@ public:
     // Acquires the next window image, copies `image` into it (scaled to the window when the sizes
     // differ), presents it and waits until that is done. A resized or out-of-date swapchain is
     // rebuilt here; a minimised window skips the frame.
-    virtual void present(const Texture& image) = 0;
+    void present(const Texture& image)
+    {
+        if (!minimised())
+            show(image, nullptr);
+    }
 
     // present(), and the window's picture as presented, read back from the swapchain image
     // (Vulkan) or the default framebuffer (OpenGL): RGBA8, row 0 at the top, alpha 255. For
     // screenshots and tests; empty (0 x 0) when the frame was skipped.
-    virtual Image presentAndReadBack(const Texture& image) = 0;
+    Image presentAndReadBack(const Texture& image)
+    {
+        Image window;
+        if (!minimised())
+            show(image, &window);
+        return window;
+    }
+
+protected:
+    // Presents `image` to a window of non-zero size; with `window`, also reads the picture back.
+    virtual void show(const Texture& image, Image* window) = 0;
+
+private:
+    bool minimised() const
+    {
+        const Extent size = drawableSize();
+        return size.width == 0 || size.height == 0;
+    }
 };
 
 } // namespace penumbra::rhi
