@@ -1,5 +1,6 @@
 // penumbra: the command-line tool. Every subcommand runs on any configuration by name.
 #include "Commands.hpp"
+#include "ViewCommand.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/Scene.hpp"
@@ -27,6 +28,7 @@ int main(int argc, char** argv)
     penumbra::apps::addParityCommand(app);
     penumbra::apps::addConfigurationsCommand(app);
     penumbra::apps::addBenchCommand(app);
+    penumbra::apps::addViewCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

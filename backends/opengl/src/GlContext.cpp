@@ -9,18 +9,20 @@ namespace {
 
 // The context we last made current on this thread; skips redundant MakeCurrent calls.
 thread_local const GlContext* currentContext = nullptr;
-thread_local HeadlessContext* currentHeadless = nullptr;
+thread_local PlatformContext* currentPlatform = nullptr;
 
-std::unique_ptr<HeadlessContext> createHeadless(rhi::GlContextProvider provider, bool debug)
+std::unique_ptr<PlatformContext> createPlatformContext(const rhi::DeviceDesc& desc)
 {
-    return provider == rhi::GlContextProvider::OSMesa ? createOsMesaContext(debug)
-                                                      : createEglSurfacelessContext(debug);
+    if (desc.window.glfwWindow)
+        return createGlfwWindowContext(desc.window.glfwWindow);
+    return desc.glContext == rhi::GlContextProvider::OSMesa ? createOsMesaContext(desc.validation)
+                                                            : createEglSurfacelessContext(desc.validation);
 }
 
 } // namespace
 
-GlContext::GlContext(rhi::GlContextProvider provider, bool debug)
-    : context_(createHeadless(provider, debug))
+GlContext::GlContext(const rhi::DeviceDesc& desc)
+    : context_(createPlatformContext(desc))
 {
     try {
         initialize();
@@ -32,12 +34,13 @@ GlContext::GlContext(rhi::GlContextProvider provider, bool debug)
 
 void GlContext::initialize()
 {
+    // Current first: GLFW looks entry points up only for the current context.
+    makeCurrent();
     // Which optional entry points exist depends on the version and extensions: query those first.
     auto getIntegerv = reinterpret_cast<PFNGLGETINTEGERVPROC>(context_->procAddress("glGetIntegerv"));
     auto getStringi = reinterpret_cast<PFNGLGETSTRINGIPROC>(context_->procAddress("glGetStringi"));
     if (!getIntegerv || !getStringi)
         throw rhi::Error("OpenGL: the driver does not provide glGetIntegerv / glGetStringi");
-    makeCurrent();
     GLint major = 0;
     GLint minor = 0;
     getIntegerv(GL_MAJOR_VERSION, &major);
@@ -60,7 +63,7 @@ void GlContext::releaseIfCurrent()
         return;
     context_->release();
     currentContext = nullptr;
-    currentHeadless = nullptr;
+    currentPlatform = nullptr;
 }
 
 void GlContext::makeCurrent() const
@@ -68,13 +71,13 @@ void GlContext::makeCurrent() const
     if (currentContext == this)
         return;
     // EGL and OSMesa each track their own current context; unbind the other one so neither is stale.
-    if (currentHeadless)
-        currentHeadless->release();
+    if (currentPlatform)
+        currentPlatform->release();
     currentContext = nullptr;
-    currentHeadless = nullptr;
+    currentPlatform = nullptr;
     context_->makeCurrent();
     currentContext = this;
-    currentHeadless = context_.get();
+    currentPlatform = context_.get();
 }
 
 bool GlContext::hasExtension(const std::string& name) const

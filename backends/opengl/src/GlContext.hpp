@@ -11,10 +11,10 @@ namespace penumbra::opengl {
 
 using GlProc = void (*)();
 
-// One way of getting a windowless GL 4.5 core context (EGL surfaceless, OSMesa).
-class HeadlessContext {
+// One way of getting a GL 4.5 core context: windowless (EGL surfaceless, OSMesa) or a GLFW window's.
+class PlatformContext {
 public:
-    virtual ~HeadlessContext() = default;
+    virtual ~PlatformContext() = default;
     virtual void makeCurrent() = 0;
     // Unbinds the context from the calling thread.
     virtual void release() = 0;
@@ -22,17 +22,20 @@ public:
 };
 
 // Both throw rhi::Error naming what is missing (display, platform, version).
-std::unique_ptr<HeadlessContext> createEglSurfacelessContext(bool debug);
-std::unique_ptr<HeadlessContext> createOsMesaContext(bool debug);
+std::unique_ptr<PlatformContext> createEglSurfacelessContext(bool debug);
+std::unique_ptr<PlatformContext> createOsMesaContext(bool debug);
+// The context GLFW made with the window (penumbra::prepareWindowHints asked for 4.5 core).
+std::unique_ptr<PlatformContext> createGlfwWindowContext(GLFWwindow* window);
 
 // Fills the table through `loader`; throws rhi::Error naming the first entry point that is missing.
-GlFunctions loadGlFunctions(const HeadlessContext& loader, bool polygonOffsetClamp);
+GlFunctions loadGlFunctions(const PlatformContext& loader, bool polygonOffsetClamp);
 
 // The device's context, shared by the device and every object it created, so that objects can be
 // destroyed after the device: each makes the context current before deleting its GL names.
 class GlContext {
 public:
-    GlContext(rhi::GlContextProvider provider, bool debug);
+    // The window's context when desc.window has one, else desc.glContext's headless one.
+    explicit GlContext(const rhi::DeviceDesc& desc);
     ~GlContext();
     GlContext(const GlContext&) = delete;
     GlContext& operator=(const GlContext&) = delete;
@@ -50,7 +53,7 @@ private:
     void releaseIfCurrent();
 
     rhi::DebugMessageLog debugLog_; // outlives context_: the debug callback points at it
-    std::unique_ptr<HeadlessContext> context_;
+    std::unique_ptr<PlatformContext> context_;
     GlFunctions gl_;
     int version_ = 0;
 };

@@ -78,7 +78,7 @@ private:
     EGLDisplay display_ = EGL_NO_DISPLAY;
 };
 
-class EglSurfacelessContext final : public HeadlessContext {
+class EglSurfacelessContext final : public PlatformContext {
 public:
     explicit EglSurfacelessContext(bool debug) : display_(EglDisplay::shared())
     {
@@ -129,7 +129,7 @@ private:
 
 } // namespace
 
-std::unique_ptr<HeadlessContext> createEglSurfacelessContext(bool debug)
+std::unique_ptr<PlatformContext> createEglSurfacelessContext(bool debug)
 {
     return std::make_unique<EglSurfacelessContext>(debug);
 }

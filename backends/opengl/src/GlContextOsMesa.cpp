@@ -9,7 +9,7 @@ namespace penumbra::opengl {
 namespace {
 
 // OSMesa wants a colour buffer to make a context current; we render into FBOs only, so 1x1 suffices.
-class OsMesaContext final : public HeadlessContext {
+class OsMesaContext final : public PlatformContext {
 public:
     // OSMesa has no debug-context attribute; Mesa still delivers KHR_debug output once enabled.
     explicit OsMesaContext(bool /*debug*/)
@@ -46,7 +46,7 @@ private:
 
 } // namespace
 
-std::unique_ptr<HeadlessContext> createOsMesaContext(bool debug)
+std::unique_ptr<PlatformContext> createOsMesaContext(bool debug)
 {
     return std::make_unique<OsMesaContext>(debug);
 }

@@ -4,6 +4,7 @@
 #include "GlFormats.hpp"
 #include "GlPipeline.hpp"
 #include "GlResources.hpp"
+#include "GlSwapchain.hpp"
 #include "penumbra/opengl/OpenGLDevice.hpp"
 #include "penumbra/rhi/BackendSupport.hpp"
 
@@ -43,7 +44,7 @@ rhi::DeviceDesc GlDevice::openGlDesc(rhi::DeviceDesc desc)
 
 GlDevice::GlDevice(const rhi::DeviceDesc& desc)
     : desc_(openGlDesc(desc)),
-      context_(std::make_shared<GlContext>(desc.glContext, desc.validation)),
+      context_(std::make_shared<GlContext>(desc)),
       orientation_(desc.clipControl),
       conventions_(orientation_.conventions(desc.reversedZ))
 {
@@ -151,6 +152,11 @@ std::unique_ptr<rhi::TimestampQueries> GlDevice::createTimestampQueries(std::uin
 std::unique_ptr<rhi::CommandList> GlDevice::createCommandList()
 {
     return std::make_unique<GlCommandList>(*this, *context_);
+}
+
+std::unique_ptr<rhi::Swapchain> GlDevice::createSwapchain()
+{
+    return std::make_unique<GlSwapchain>(context_, desc_.window.glfwWindow);
 }
 
 void GlDevice::applySubmitDefaults()

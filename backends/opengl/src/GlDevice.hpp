@@ -28,6 +28,7 @@ public:
     std::unique_ptr<rhi::Framebuffer> createFramebuffer(const rhi::FramebufferDesc& desc) override;
     std::unique_ptr<rhi::TimestampQueries> createTimestampQueries(std::uint32_t count) override;
     std::unique_ptr<rhi::CommandList> createCommandList() override;
+    std::unique_ptr<rhi::Swapchain> createSwapchain() override;
 
     void submit(rhi::CommandList& commands) override;
     std::vector<double> readTimestamps(const rhi::TimestampQueries& queries) override;

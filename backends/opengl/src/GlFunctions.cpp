@@ -7,7 +7,7 @@
 
 namespace penumbra::opengl {
 
-GlFunctions loadGlFunctions(const HeadlessContext& loader, bool polygonOffsetClamp)
+GlFunctions loadGlFunctions(const PlatformContext& loader, bool polygonOffsetClamp)
 {
     GlFunctions gl;
     auto load = [&](auto& member, const char* name) {

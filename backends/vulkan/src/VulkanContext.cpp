@@ -4,6 +4,7 @@
 #include "VulkanFormats.hpp"
 #include "VulkanPipeline.hpp"
 #include "VulkanRenderPass.hpp"
+#include "VulkanSwapchain.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
@@ -14,7 +15,7 @@
 namespace penumbra::vulkan {
 
 Context::Context(const rhi::DeviceDesc& d)
-    : desc(d), conventions(rhi::DepthRange::ZeroToOne, d.reversedZ), instance(d.validation, log)
+    : desc(d), conventions(rhi::DepthRange::ZeroToOne, d.reversedZ), instance(d.validation, log, d.window.glfwWindow ? windowInstanceExtensions() : std::vector<const char*>{})
 {
     const PhysicalDeviceChoice choice = choosePhysicalDevice(instance.handle());
     physicalDevice = choice.device;
@@ -85,9 +86,15 @@ void Context::createDevice()
     vkGetPhysicalDeviceFeatures2(physicalDevice, &available);
     if (!maintenance4.maintenance4)
         extensions.clear();
+    if (desc.window.glfwWindow) {
+        if (!hasDeviceExtension(VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+            throw rhi::Error(fmt::format("Vulkan: {} cannot present to windows (no {})", properties.deviceName,
+                                         VK_KHR_SWAPCHAIN_EXTENSION_NAME));
+        extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    }
 
     VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-    enabled.pNext = extensions.empty() ? nullptr : &maintenance4;
+    enabled.pNext = maintenance4.maintenance4 ? &maintenance4 : nullptr;
     enabled.features.depthClamp = available.features.depthClamp;
     enabled.features.depthBiasClamp = available.features.depthBiasClamp;
     enabled.features.independentBlend = available.features.independentBlend;

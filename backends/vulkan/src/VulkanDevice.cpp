@@ -5,6 +5,7 @@
 #include "VulkanPipeline.hpp"
 #include "VulkanRenderPass.hpp"
 #include "VulkanResources.hpp"
+#include "VulkanSwapchain.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/vulkan/VulkanDevice.hpp"
@@ -59,6 +60,11 @@ std::unique_ptr<rhi::TimestampQueries> VulkanDevice::createTimestampQueries(std:
 std::unique_ptr<rhi::CommandList> VulkanDevice::createCommandList()
 {
     return std::make_unique<VulkanCommandList>(context_);
+}
+
+std::unique_ptr<rhi::Swapchain> VulkanDevice::createSwapchain()
+{
+    return std::make_unique<VulkanSwapchain>(context_);
 }
 
 void VulkanDevice::submit(rhi::CommandList& commands)

@@ -76,7 +76,7 @@ std::optional<std::uint32_t> graphicsQueueFamily(VkPhysicalDevice device)
 
 } // namespace
 
-Instance::Instance(bool validation, rhi::DebugMessageLog& log)
+Instance::Instance(bool validation, rhi::DebugMessageLog& log, std::vector<const char*> extensions)
 {
     const std::uint32_t loader = loaderVersion();
     if (loader < VK_API_VERSION_1_1)
@@ -90,7 +90,6 @@ Instance::Instance(bool validation, rhi::DebugMessageLog& log)
     app.apiVersion = apiVersion_;
 
     std::vector<const char*> layers;
-    std::vector<const char*> extensions;
     // Chained into the create info so that instance creation and destruction are reported too.
     VkDebugUtilsMessengerCreateInfoEXT debugInfo = messengerInfo(log);
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};

@@ -12,7 +12,8 @@ namespace penumbra::vulkan {
 // The VkInstance and, with validation, the Khronos layer and a messenger that fills a DebugLog.
 class Instance {
 public:
-    Instance(bool validation, rhi::DebugMessageLog& log);
+    // `extensions`: instance extensions needed besides debug utils (a window surface's).
+    Instance(bool validation, rhi::DebugMessageLog& log, std::vector<const char*> extensions);
     ~Instance();
     Instance(const Instance&) = delete;
     Instance& operator=(const Instance&) = delete;

@@ -214,8 +214,8 @@ VkImageView VulkanTexture::createAttachmentView(std::uint32_t layer) const
     return view;
 }
 
-void VulkanTexture::transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from,
-                               VkImageLayout to) const
+void transitionImage(VkCommandBuffer commandBuffer, VkImage image, const VkImageSubresourceRange& range,
+                     VkImageLayout from, VkImageLayout to)
 {
     VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     barrier.srcAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
@@ -224,11 +224,19 @@ void VulkanTexture::transition(VkCommandBuffer commandBuffer, std::uint32_t laye
     barrier.newLayout = to;
     barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image_;
-    barrier.subresourceRange = layer == ~0u ? VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, 0, desc_.layers}
-                                            : VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, layer, 1};
+    barrier.image = image;
+    barrier.subresourceRange = range;
     vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0,
                          nullptr, 0, nullptr, 1, &barrier);
+}
+
+void VulkanTexture::transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from,
+                               VkImageLayout to) const
+{
+    transitionImage(commandBuffer, image_,
+                    layer == ~0u ? VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, 0, desc_.layers}
+                                 : VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, layer, 1},
+                    from, to);
 }
 
 void VulkanTexture::upload(std::uint32_t layer, std::span<const std::byte> data)

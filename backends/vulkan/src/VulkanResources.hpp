@@ -44,6 +44,11 @@ private:
     MappedBuffer buffer_;
 };
 
+// Moves `range` of `image` between layouts, waiting for all earlier work (the backend's simple,
+// always-correct synchronisation; see fullBarrier).
+void transitionImage(VkCommandBuffer commandBuffer, VkImage image, const VkImageSubresourceRange& range,
+                     VkImageLayout from, VkImageLayout to);
+
 // A 2D (array) or cube-array image; attachments and copies address single layers either way.
 // Between commands it rests in restingLayout(): shader-read if it can be sampled, else its
 // attachment layout; passes and copies start and end there.

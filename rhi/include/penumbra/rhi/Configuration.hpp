@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/rhi/Window.hpp"
+
 #include <array>
 #include <string>
 #include <string_view>
@@ -24,6 +26,9 @@ struct DeviceDesc {
     // Device::debugMessages) and, with throwOnDebugMessage, raised as an Error at the next submit.
     bool validation = true;
     bool throwOnDebugMessage = false;
+    // A window to present to (Device::createSwapchain); none for offscreen devices. With one, an
+    // OpenGL device takes its context from the window instead of glContext.
+    WindowDesc window;
 };
 
 struct NamedConfiguration {
@@ -37,7 +42,7 @@ const std::array<NamedConfiguration, 6>& namedConfigurations();
 // The DeviceDesc of a named configuration; an unknown name throws an Error listing the valid ones.
 DeviceDesc parseConfiguration(std::string_view name);
 
-// The name of a desc's configuration ("opengl-noclip-reversed"), ignoring validation and context provider.
+// The name of a desc's configuration ("opengl-noclip-reversed"), ignoring validation, context provider and window.
 std::string configurationName(const DeviceDesc& desc);
 
 } // namespace penumbra::rhi

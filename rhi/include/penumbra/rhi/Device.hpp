@@ -6,6 +6,7 @@
 #include "penumbra/rhi/Pipeline.hpp"
 #include "penumbra/rhi/Resources.hpp"
 #include "penumbra/rhi/Shader.hpp"
+#include "penumbra/rhi/Window.hpp"
 
 #include <array>
 #include <cstdint>
@@ -56,6 +57,9 @@ public:
     virtual std::unique_ptr<Framebuffer> createFramebuffer(const FramebufferDesc& desc) = 0;
     virtual std::unique_ptr<TimestampQueries> createTimestampQueries(std::uint32_t count) = 0;
     virtual std::unique_ptr<CommandList> createCommandList() = 0;
+    // The swapchain of DeviceDesc::window; throws Error when the device was created without one,
+    // or when the driver cannot present to it. At most one per device.
+    virtual std::unique_ptr<Swapchain> createSwapchain() = 0;
 
     // Runs everything the list recorded and waits until the GPU has finished.
     virtual void submit(CommandList& commands) = 0;

@@ -22,6 +22,7 @@ namespace penumbra::opengl {
     X(BindVertexBuffer, BINDVERTEXBUFFER)                                                                              \
     X(BlendEquationSeparatei, BLENDEQUATIONSEPARATEI)                                                                  \
     X(BlendFuncSeparatei, BLENDFUNCSEPARATEI)                                                                          \
+    X(BlitNamedFramebuffer, BLITNAMEDFRAMEBUFFER)                                                                      \
     X(CheckNamedFramebufferStatus, CHECKNAMEDFRAMEBUFFERSTATUS)                                                        \
     X(Clear, CLEAR)                                                                                                    \
     X(ClearColor, CLEARCOLOR)                                                                                          \
@@ -93,6 +94,7 @@ namespace penumbra::opengl {
     X(ProvokingVertex, PROVOKINGVERTEX)                                                                                \
     X(ProgramUniform1i, PROGRAMUNIFORM1I)                                                                              \
     X(QueryCounter, QUERYCOUNTER)                                                                                      \
+    X(ReadPixels, READPIXELS)                                                                                          \
     X(SamplerParameteri, SAMPLERPARAMETERI)                                                                            \
     X(Scissor, SCISSOR)                                                                                                \
     X(ScissorIndexed, SCISSORINDEXED)                                                                                  \

@@ -1,0 +1,57 @@
+#include "ViewCommand.hpp"
+
+#include "BackendOptions.hpp"
+#include "Commands.hpp"
+#include "ShadowScene.hpp"
+#include "Viewer.hpp"
+
+#include <charconv>
+#include <fmt/format.h>
+#include <memory>
+
+namespace penumbra::apps {
+namespace {
+
+// "1280x720" -> width and height; an error message for CLI11 otherwise.
+std::string parseSize(const std::string& text, viewer::ViewerOptions& options)
+{
+    const std::size_t x = text.find('x');
+    const auto number = [](std::string_view digits, std::uint32_t& value) {
+        const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+        return error == std::errc() && end == digits.data() + digits.size() && value >= 1 && value <= 8192;
+    };
+    if (x == std::string::npos || !number(std::string_view(text).substr(0, x), options.width) ||
+        !number(std::string_view(text).substr(x + 1), options.height))
+        return fmt::format("'{}' is not WIDTHxHEIGHT with each between 1 and 8192", text);
+    return {};
+}
+
+} // namespace
+
+void addViewCommand(CLI::App& app)
+{
+    auto options = std::make_shared<viewer::ViewerOptions>();
+    CLI::App* view = app.add_subcommand(
+        "view", "Open a window on a scene: orbit (left drag), fly (right drag, W A S D Q E), zoom (scroll), settings panel");
+    view->add_option("-b,--backend", options->configuration,
+                     "vulkan or opengl, or any configuration name (vulkan-reversed, opengl-noclip, ...)")
+        ->check(configurationValidator());
+    view->add_option("--scene", options->scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames));
+    view->add_option_function<std::string>(
+            "--size",
+            [options](const std::string& text) {
+                if (const std::string error = parseSize(text, *options); !error.empty())
+                    throw CLI::ValidationError("--size", error);
+            },
+            "Window size WIDTHxHEIGHT in pixels (default 1280x720)");
+    CLI::Option* frames = view->add_option("--frames", options->frames, "Render this many frames, then exit")
+                              ->check(CLI::Range(1u, 1000000u));
+    view->add_option("--screenshot", options->screenshot, "PNG of the window's last frame, read back from the window")
+        ->needs(frames);
+    view->add_flag("!--no-ui", options->ui, "Hide the settings panel");
+    view->add_flag("--cascade-view", options->cascadeView, "Start with the cascade view");
+    view->add_flag("--atlas-overlay", options->atlasOverlay, "Start with the shadow atlas overlay");
+    view->callback([options] { viewer::runViewer(*options); });
+}
+
+} // namespace penumbra::apps

@@ -1,0 +1,119 @@
+#include "ViewState.hpp"
+
+#include "penumbra/rhi/Format.hpp"
+
+#include <array>
+#include <fmt/format.h>
+#include <imgui.h>
+
+namespace penumbra::viewer {
+namespace {
+
+template <typename Enum, std::size_t N>
+bool enumCombo(const char* label, Enum& value, const std::array<const char*, N>& names)
+{
+    int index = static_cast<int>(value);
+    const bool changed = ImGui::Combo(label, &index, names.data(), int(N));
+    if (changed)
+        value = static_cast<Enum>(index);
+    return changed;
+}
+
+bool atlasFormatCombo(rhi::Format& format)
+{
+    constexpr std::array formats{rhi::Format::D16, rhi::Format::D24S8, rhi::Format::D32F};
+    bool changed = false;
+    if (ImGui::BeginCombo("atlas format", std::string(rhi::formatName(format)).c_str())) {
+        for (rhi::Format f : formats)
+            if (ImGui::Selectable(std::string(rhi::formatName(f)).c_str(), f == format)) {
+                changed = f != format;
+                format = f;
+            }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+// Ranges of the widgets are the settings' allowed ranges where those are simple; values typed in
+// (ctrl+click) may leave them, and validation then reports the field.
+bool shadowSettings(shadows::ShadowSettings& s)
+{
+    bool changed = false;
+    changed |= ImGui::DragFloat("max distance", &s.maxDistance, 0.5f, 0.001f, 1000.0f);
+    changed |= ImGui::SliderFloat("distance fade", &s.distanceFade, 0.001f, 1.0f);
+    shadows::DirectionalShadowSettings& d = s.directional;
+    changed |= ImGui::InputScalar("atlas size", ImGuiDataType_U32, &d.atlasSize);
+    changed |= atlasFormatCombo(d.atlasFormat);
+    changed |= enumCombo("filter", d.filter, std::array{"PCF 2x2", "PCF 3x3", "PCF 5x5", "PCF 7x7"});
+    int cascades = int(d.cascadeCount);
+    if (ImGui::SliderInt("cascades", &cascades, 1, 4)) {
+        d.cascadeCount = std::uint32_t(cascades);
+        changed = true;
+    }
+    changed |= ImGui::SliderFloat3("cascade ratios", &d.cascadeRatios.x, 0.0f, 1.0f);
+    changed |= ImGui::SliderFloat("cascade fade", &d.cascadeFade, 0.001f, 1.0f);
+    changed |= enumCombo("cascade blend", d.cascadeBlend, std::array{"hard", "soft", "dither"});
+    return changed;
+}
+
+bool lightSettings(scene::DirectionalLight& light, std::size_t index)
+{
+    bool changed = false;
+    ImGui::PushID(int(index));
+    if (ImGui::TreeNodeEx(fmt::format("light {}: {}", index, light.name).c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+        changed |= ImGui::ColorEdit3("colour", &light.color.x);
+        changed |= ImGui::DragFloat("intensity", &light.intensity, 0.01f, 0.0f, 100.0f);
+        changed |= ImGui::DragFloat3("direction", &light.direction.x, 0.01f, -1.0f, 1.0f);
+        changed |= ImGui::SliderFloat("shadow strength", &light.shadowStrength, 0.0f, 1.0f);
+        changed |= ImGui::DragFloat("slope-scale bias", &light.slopeScaleBias, 0.01f, 0.0f, 10.0f);
+        changed |= ImGui::DragFloat("normal bias", &light.normalBias, 0.01f, 0.0f, 10.0f);
+        changed |= ImGui::DragFloat("near plane offset", &light.nearPlaneOffset, 0.01f, 0.0f, 100.0f);
+        ImGui::TreePop();
+    }
+    ImGui::PopID();
+    return changed;
+}
+
+void statusLines(const PanelStatus& status)
+{
+    ImGui::Text("frame %.1f ms", status.frameMs);
+    if (status.stats.atlasPassMs && status.stats.litPassMs)
+        ImGui::Text("atlas pass %.2f ms, lit pass %.2f ms", *status.stats.atlasPassMs, *status.stats.litPassMs);
+    ImGui::Text("caster draws %u", status.stats.casterDraws);
+    for (const std::string& note : status.notes)
+        ImGui::TextWrapped("%s", note.c_str());
+    if (!status.error.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "not applied: %s", status.error.c_str());
+}
+
+} // namespace
+
+bool drawSettingsPanel(ViewState& state, const PanelStatus& status)
+{
+    bool changed = false;
+    ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(360.0f, 0.0f), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Penumbra");
+    statusLines(status);
+    changed |= ImGui::Checkbox("cascade view", &state.cascadeView);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
+    if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen))
+        changed |= shadowSettings(state.shadows);
+    if (ImGui::CollapsingHeader("lights"))
+        for (std::size_t i = 0; i < state.lights.size(); ++i)
+            changed |= lightSettings(state.lights[i], i);
+    ImGui::End();
+
+    if (state.atlasOverlay && status.atlasPicture) {
+        ImGui::SetNextWindowPos(ImVec2(380.0f, 10.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(300.0f, 320.0f), ImGuiCond_FirstUseEver);
+        ImGui::Begin("shadow atlas");
+        const float side = ImGui::GetContentRegionAvail().x > 64.0f ? ImGui::GetContentRegionAvail().x : 256.0f;
+        ImGui::Image(const_cast<rhi::Texture*>(status.atlasPicture), ImVec2(side, side));
+        ImGui::End();
+    }
+    return changed;
+}
+
+} // namespace penumbra::viewer

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/scene/Light.hpp"
+#include "penumbra/scene/Scene.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace penumbra::viewer {
+
+// What the panel edits. The viewer renders with the last state that passed validation, so an
+// invalid edit shows its error in the panel and changes nothing else.
+struct ViewState {
+    shadows::ShadowSettings shadows;
+    std::vector<scene::DirectionalLight> lights;
+    bool cascadeView = false;
+    bool atlasOverlay = false;
+};
+
+// What the panel shows besides the state.
+struct PanelStatus {
+    std::string error;               // why the edited state is not applied; empty when it is
+    double frameMs = 0.0;            // wall time of the last frame
+    render::FrameStats stats;        // the last frame's passes
+    std::vector<std::string> notes;  // SceneRenderer::notes()
+    const rhi::Texture* atlasPicture = nullptr; // shown when atlasOverlay is on
+};
+
+// Makes `edited` the state in use if it is valid: its shadow settings pass shadows::validate and
+// its lights (directions normalised, as the panel edits them freely) pass scene.validate(); then
+// `applied` and scene.lights take it and the result is empty. Otherwise nothing changes and the
+// result is the error, naming the field.
+std::string applyViewState(const ViewState& edited, ViewState& applied, scene::Scene& scene);
+
+// Draws the panel into the current ImGui frame; returns whether the user changed `state`.
+bool drawSettingsPanel(ViewState& state, const PanelStatus& status);
+
+} // namespace penumbra::viewer

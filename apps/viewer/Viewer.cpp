@@ -1,0 +1,170 @@
+#include "Viewer.hpp"
+
+#include "CameraController.hpp"
+#include "Compositor.hpp"
+#include "GlfwSession.hpp"
+#include "ImGuiRenderer.hpp"
+#include "ImGuiSession.hpp"
+#include "ImageFiles.hpp"
+#include "ViewState.hpp"
+#include "ViewerScene.hpp"
+#include "ViewerWindow.hpp"
+#include "WindowInput.hpp"
+
+#include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/render/AtlasPicture.hpp"
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/Image.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <chrono>
+#include <fmt/format.h>
+#include <imgui.h>
+#include <memory>
+#include <optional>
+
+namespace penumbra::viewer {
+namespace {
+
+rhi::DeviceDesc windowDeviceDesc(const std::string& configuration, GLFWwindow* window)
+{
+    rhi::DeviceDesc desc = rhi::parseConfiguration(configuration);
+    desc.window.glfwWindow = window;
+    return desc;
+}
+
+// Everything one viewer run owns, declared in the order it must be built (and torn down in reverse):
+// the window outlives the device, the device every GPU object, the ImGui context its renderer.
+class ViewerApp {
+public:
+    explicit ViewerApp(const ViewerOptions& options)
+        : options_(options), window_(rhi::parseConfiguration(options.configuration), options.width, options.height,
+                                     fmt::format("Penumbra viewer: {} ({})", options.scene, options.configuration)),
+          device_(createDevice(windowDeviceDesc(options.configuration, window_.handle()))),
+          swapchain_(device_->createSwapchain()), input_(window_.handle()), scene_(loadViewerScene(options.scene)),
+          camera_(scene_.camera, orbitTargetDistance(scene_)), renderer_(*device_, scene_), compositor_(*device_)
+    {
+        applied_.lights = scene_.lights;
+        applied_.cascadeView = options.cascadeView;
+        applied_.atlasOverlay = options.atlasOverlay;
+        edited_ = applied_;
+        if (options.ui) {
+            imgui_.emplace(window_.handle());
+            imguiRenderer_.emplace(*device_, Compositor::kFormat);
+        }
+    }
+
+    void run()
+    {
+        std::uint32_t frame = 0;
+        double totalMs = 0.0;
+        rhi::Image windowPicture;
+        while (!window_.shouldClose() && (!options_.frames || frame < *options_.frames)) {
+            const auto start = std::chrono::steady_clock::now();
+            // The last frame of a screenshot run is read back from the window itself.
+            const bool last = options_.frames && frame + 1 == *options_.frames;
+            drawFrame(last && !options_.screenshot.empty() ? &windowPicture : nullptr);
+            status_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            totalMs += status_.frameMs;
+            ++frame;
+        }
+        if (!options_.screenshot.empty()) {
+            if (windowPicture.bytes.empty())
+                throw rhi::Error(fmt::format("--screenshot {}: no frame reached the window (minimised, or closed before "
+                                             "--frames)",
+                                             options_.screenshot));
+            apps::writePng(options_.screenshot, windowPicture);
+            fmt::print("screenshot: {}\n", options_.screenshot);
+        }
+        const std::vector<std::string> messages = device_->debugMessages();
+        fmt::print("viewer: {} on {}, {} frames, {:.1f} ms per frame, {} validation / debug messages\n",
+                   rhi::configurationName(device_->desc()), device_->capabilities().device, frame,
+                   frame ? totalMs / frame : 0.0, messages.size());
+        if (!messages.empty())
+            throw rhi::Error(fmt::format("{} validation / debug message(s), first: {}", messages.size(), messages[0]));
+    }
+
+private:
+    void drawFrame(rhi::Image* windowPicture)
+    {
+        glfwPollEvents();
+        const rhi::Extent size = swapchain_->drawableSize();
+        const CameraInput input = input_.poll(imgui_ && imgui_->wantsMouse(), imgui_ && imgui_->wantsKeyboard(),
+                                              float(status_.frameMs * 1e-3));
+        camera_.update(input);
+        if (imgui_) {
+            imgui_->newFrame();
+            if (drawSettingsPanel(edited_, status_))
+                status_.error = applyViewState(edited_, applied_, scene_);
+            ImGui::Render();
+        }
+        if (size.width == 0 || size.height == 0)
+            return; // minimised
+        render(size);
+        const rhi::Texture& picture = applied_.cascadeView ? renderer_.cascadeImage() : renderer_.litImage();
+        if (imgui_)
+            compositor_.compose(picture, size,
+                                [&](rhi::CommandList& commands) { imguiRenderer_->record(commands, *ImGui::GetDrawData()); });
+        else
+            compositor_.compose(picture, size);
+        if (windowPicture)
+            *windowPicture = swapchain_->presentAndReadBack(compositor_.image());
+        else
+            swapchain_->present(compositor_.image());
+    }
+
+    void render(rhi::Extent size)
+    {
+        render::FrameDesc frame;
+        frame.width = size.width;
+        frame.height = size.height;
+        frame.shadows = applied_.shadows;
+        frame.cascadeView = applied_.cascadeView;
+        status_.stats = renderer_.render(camera_.camera(), frame);
+        status_.notes = renderer_.notes();
+        status_.atlasPicture = nullptr;
+        if (applied_.atlasOverlay)
+            updateAtlasPicture();
+    }
+
+    void updateAtlasPicture()
+    {
+        const rhi::Image picture =
+            render::atlasPicture(rhi::readDepth(*device_, renderer_.atlas().texture()), device_->conventions());
+        if (!atlasPicture_ || atlasPicture_->desc().width != picture.width)
+            atlasPicture_ = device_->createTexture(
+                {.width = picture.width, .height = picture.height, .debugName = "atlas overlay"});
+        device_->writeTexture(*atlasPicture_, 0, picture.bytes);
+        status_.atlasPicture = atlasPicture_.get();
+    }
+
+    ViewerOptions options_;
+    GlfwSession glfw_;
+    ViewerWindow window_;
+    std::unique_ptr<rhi::Device> device_;
+    std::unique_ptr<rhi::Swapchain> swapchain_;
+    WindowInput input_;
+    scene::Scene scene_;
+    CameraController camera_;
+    render::SceneRenderer renderer_;
+    Compositor compositor_;
+    std::optional<ImGuiSession> imgui_;
+    std::optional<ImGuiRenderer> imguiRenderer_;
+    std::unique_ptr<rhi::Texture> atlasPicture_;
+    ViewState applied_;
+    ViewState edited_;
+    PanelStatus status_;
+};
+
+} // namespace
+
+void runViewer(const ViewerOptions& options)
+{
+    if (options.width == 0 || options.height == 0)
+        throw rhi::Error(fmt::format("--size {}x{}: width and height must be at least 1", options.width, options.height));
+    ViewerApp app(options);
+    app.run();
+}
+
+} // namespace penumbra::viewer

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace penumbra::viewer {
+
+struct ViewerOptions {
+    std::string configuration = "vulkan"; // a named configuration (rhi::parseConfiguration)
+    std::string scene = "test";
+    std::uint32_t width = 1280;
+    std::uint32_t height = 720;
+    std::optional<std::uint32_t> frames; // render this many frames, then exit; else until closed
+    std::string screenshot;              // PNG of the window's last frame as read back from it, with `frames`
+    bool ui = true;                      // the settings panel
+    bool cascadeView = false;            // start with the panel's toggles on
+    bool atlasOverlay = false;
+};
+
+// Opens the window and runs the viewer. Throws rhi::Error when there is no display, no driver,
+// or the device reported validation / debug messages (listed in the message).
+void runViewer(const ViewerOptions& options);
+
+} // namespace penumbra::viewer

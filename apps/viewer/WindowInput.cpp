@@ -1,0 +1,47 @@
+#include "WindowInput.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace penumbra::viewer {
+
+WindowInput::WindowInput(GLFWwindow* window) : window_(window)
+{
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetScrollCallback(window_, onScroll);
+    glfwGetCursorPos(window_, &cursorX_, &cursorY_);
+}
+
+void WindowInput::onScroll(GLFWwindow* window, double, double y)
+{
+    static_cast<WindowInput*>(glfwGetWindowUserPointer(window))->scroll_ += float(y);
+}
+
+CameraInput WindowInput::poll(bool uiWantsMouse, bool uiWantsKeyboard, float seconds)
+{
+    double x = 0.0;
+    double y = 0.0;
+    glfwGetCursorPos(window_, &x, &y);
+    const glm::vec2 drag{float(x - cursorX_), float(y - cursorY_)};
+    cursorX_ = x;
+    cursorY_ = y;
+
+    CameraInput input;
+    input.seconds = seconds;
+    if (!uiWantsMouse) {
+        if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
+            input.orbit = drag;
+        else if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS)
+            input.look = drag;
+        input.zoom = scroll_;
+    }
+    scroll_ = 0.0f;
+    if (!uiWantsKeyboard) {
+        const auto key = [&](int k) { return glfwGetKey(window_, k) == GLFW_PRESS ? 1.0f : 0.0f; };
+        input.move = {key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
+                      key(GLFW_KEY_W) - key(GLFW_KEY_S)};
+    }
+    return input;
+}
+
+} // namespace penumbra::viewer

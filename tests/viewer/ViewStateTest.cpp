@@ -1,0 +1,63 @@
+#include "ViewState.hpp"
+
+#include "penumbra/scene/TestScenes.hpp"
+
+#include <gtest/gtest.h>
+
+namespace penumbra::viewer {
+namespace {
+
+struct Fixture {
+    scene::Scene scene = scene::makeShadowTestScene();
+    ViewState applied;
+    Fixture() { applied.lights = scene.lights; }
+};
+
+TEST(ViewStateTest, AValidEditIsAppliedToTheStateAndTheSceneWithDirectionsNormalised)
+{
+    Fixture f;
+    ViewState edited = f.applied;
+    edited.shadows.directional.cascadeCount = 2;
+    edited.lights[0].direction = {0.0f, -2.0f, 0.0f};
+    edited.lights[1].intensity = 3.0f;
+    EXPECT_EQ(applyViewState(edited, f.applied, f.scene), "");
+    EXPECT_EQ(f.applied.shadows.directional.cascadeCount, 2u);
+    EXPECT_EQ(f.scene.lights[0].direction, glm::vec3(0.0f, -1.0f, 0.0f));
+    EXPECT_EQ(f.scene.lights[1].intensity, 3.0f);
+}
+
+TEST(ViewStateTest, ShadowSettingsOutOfRangeAreRefusedNamingTheFieldAndChangeNothing)
+{
+    Fixture f;
+    const ViewState before = f.applied;
+    ViewState edited = f.applied;
+    edited.shadows.directional.atlasSize = 3000;
+    edited.lights[0].intensity = 7.0f;
+    const std::string error = applyViewState(edited, f.applied, f.scene);
+    EXPECT_NE(error.find("directional.atlasSize"), std::string::npos) << error;
+    EXPECT_EQ(f.applied.shadows.directional.atlasSize, before.shadows.directional.atlasSize);
+    EXPECT_EQ(f.scene.lights[0].intensity, before.lights[0].intensity);
+}
+
+TEST(ViewStateTest, AZeroLightDirectionIsRefusedAndTheSceneKeepsItsLights)
+{
+    Fixture f;
+    const glm::vec3 direction = f.scene.lights[2].direction;
+    ViewState edited = f.applied;
+    edited.lights[2].direction = glm::vec3(0.0f);
+    const std::string error = applyViewState(edited, f.applied, f.scene);
+    EXPECT_NE(error.find("direction"), std::string::npos) << error;
+    EXPECT_EQ(f.scene.lights[2].direction, direction);
+    EXPECT_EQ(f.applied.lights[2].direction, direction);
+}
+
+TEST(ViewStateTest, ShadowStrengthOutsideZeroToOneIsRefused)
+{
+    Fixture f;
+    ViewState edited = f.applied;
+    edited.lights[0].shadowStrength = 1.5f;
+    EXPECT_NE(applyViewState(edited, f.applied, f.scene).find("shadowStrength"), std::string::npos);
+}
+
+} // namespace
+} // namespace penumbra::viewer
