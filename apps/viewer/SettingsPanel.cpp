@@ -19,6 +19,8 @@ bool enumCombo(const char* label, Enum& value, const std::array<const char*, N>&
     return changed;
 }
 
+constexpr std::array kFilterNames{"PCF 2x2", "PCF 3x3", "PCF 5x5", "PCF 7x7"};
+
 bool atlasFormatCombo(rhi::Format& format)
 {
     constexpr std::array formats{rhi::Format::D16, rhi::Format::D24S8, rhi::Format::D32F};
@@ -44,7 +46,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
     shadows::DirectionalShadowSettings& d = s.directional;
     changed |= ImGui::InputScalar("atlas size", ImGuiDataType_U32, &d.atlasSize);
     changed |= atlasFormatCombo(d.atlasFormat);
-    changed |= enumCombo("filter", d.filter, std::array{"PCF 2x2", "PCF 3x3", "PCF 5x5", "PCF 7x7"});
+    changed |= enumCombo("filter", d.filter, kFilterNames);
     int cascades = int(d.cascadeCount);
     if (ImGui::SliderInt("cascades", &cascades, 1, 4)) {
         d.cascadeCount = std::uint32_t(cascades);
@@ -53,6 +55,60 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= ImGui::SliderFloat3("cascade ratios", &d.cascadeRatios.x, 0.0f, 1.0f);
     changed |= ImGui::SliderFloat("cascade fade", &d.cascadeFade, 0.001f, 1.0f);
     changed |= enumCombo("cascade blend", d.cascadeBlend, std::array{"hard", "soft", "dither"});
+    ImGui::Separator();
+    ImGui::TextUnformatted("spot and point lights");
+    ImGui::PushID("other");
+    shadows::OtherShadowSettings& o = s.other;
+    changed |= ImGui::InputScalar("atlas size", ImGuiDataType_U32, &o.atlasSize);
+    changed |= atlasFormatCombo(o.atlasFormat);
+    changed |= enumCombo("filter", o.filter, kFilterNames);
+    changed |= enumCombo("point lights", o.pointMode, std::array{"atlas tiles", "cube maps"});
+    changed |= ImGui::InputScalar("cube map size", ImGuiDataType_U32, &o.cubeMapSize);
+    ImGui::PopID();
+    return changed;
+}
+
+// Colour, intensity, shadow strength and biases: what every light kind has.
+template <typename Light>
+bool commonLightSettings(Light& light)
+{
+    bool changed = false;
+    changed |= ImGui::ColorEdit3("colour", &light.color.x);
+    changed |= ImGui::DragFloat("intensity", &light.intensity, 0.01f, 0.0f, 100.0f);
+    changed |= ImGui::SliderFloat("shadow strength", &light.shadowStrength, 0.0f, 1.0f);
+    changed |= ImGui::DragFloat("slope-scale bias", &light.slopeScaleBias, 0.01f, 0.0f, 10.0f);
+    changed |= ImGui::DragFloat("normal bias", &light.normalBias, 0.01f, 0.0f, 10.0f);
+    return changed;
+}
+
+bool spotLightSettings(scene::SpotLight& light, std::size_t index)
+{
+    bool changed = false;
+    ImGui::PushID(int(1000 + index));
+    if (ImGui::TreeNodeEx(fmt::format("spot light {}: {}", index, light.name).c_str())) {
+        changed |= commonLightSettings(light);
+        changed |= ImGui::DragFloat3("position", &light.position.x, 0.05f);
+        changed |= ImGui::DragFloat3("direction", &light.direction.x, 0.01f, -1.0f, 1.0f);
+        changed |= ImGui::DragFloat("range", &light.range, 0.05f, 0.01f, 1000.0f);
+        changed |= ImGui::SliderAngle("inner angle", &light.innerAngle, 0.0f, 89.0f);
+        changed |= ImGui::SliderAngle("outer angle", &light.outerAngle, 0.0f, 89.0f);
+        ImGui::TreePop();
+    }
+    ImGui::PopID();
+    return changed;
+}
+
+bool pointLightSettings(scene::PointLight& light, std::size_t index)
+{
+    bool changed = false;
+    ImGui::PushID(int(2000 + index));
+    if (ImGui::TreeNodeEx(fmt::format("point light {}: {}", index, light.name).c_str())) {
+        changed |= commonLightSettings(light);
+        changed |= ImGui::DragFloat3("position", &light.position.x, 0.05f);
+        changed |= ImGui::DragFloat("range", &light.range, 0.05f, 0.01f, 1000.0f);
+        ImGui::TreePop();
+    }
+    ImGui::PopID();
     return changed;
 }
 
@@ -61,12 +117,8 @@ bool lightSettings(scene::DirectionalLight& light, std::size_t index)
     bool changed = false;
     ImGui::PushID(int(index));
     if (ImGui::TreeNodeEx(fmt::format("light {}: {}", index, light.name).c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
-        changed |= ImGui::ColorEdit3("colour", &light.color.x);
-        changed |= ImGui::DragFloat("intensity", &light.intensity, 0.01f, 0.0f, 100.0f);
+        changed |= commonLightSettings(light);
         changed |= ImGui::DragFloat3("direction", &light.direction.x, 0.01f, -1.0f, 1.0f);
-        changed |= ImGui::SliderFloat("shadow strength", &light.shadowStrength, 0.0f, 1.0f);
-        changed |= ImGui::DragFloat("slope-scale bias", &light.slopeScaleBias, 0.01f, 0.0f, 10.0f);
-        changed |= ImGui::DragFloat("normal bias", &light.normalBias, 0.01f, 0.0f, 10.0f);
         changed |= ImGui::DragFloat("near plane offset", &light.nearPlaneOffset, 0.01f, 0.0f, 100.0f);
         ImGui::TreePop();
     }
@@ -77,9 +129,10 @@ bool lightSettings(scene::DirectionalLight& light, std::size_t index)
 void statusLines(const PanelStatus& status)
 {
     ImGui::Text("frame %.1f ms", status.frameMs);
-    if (status.stats.atlasPassMs && status.stats.litPassMs)
-        ImGui::Text("atlas pass %.2f ms, lit pass %.2f ms", *status.stats.atlasPassMs, *status.stats.litPassMs);
-    ImGui::Text("caster draws %u", status.stats.casterDraws);
+    if (status.stats.atlasPassMs && status.stats.otherAtlasPassMs && status.stats.litPassMs)
+        ImGui::Text("atlas pass %.2f ms, other atlas %.2f ms, lit pass %.2f ms", *status.stats.atlasPassMs,
+                    *status.stats.otherAtlasPassMs, *status.stats.litPassMs);
+    ImGui::Text("caster draws %u, spot and point %u", status.stats.casterDraws, status.stats.otherCasterDraws);
     for (const std::string& note : status.notes)
         ImGui::TextWrapped("%s", note.c_str());
     if (!status.error.empty())
@@ -100,9 +153,14 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status)
     changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
     if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen))
         changed |= shadowSettings(state.shadows);
-    if (ImGui::CollapsingHeader("lights"))
+    if (ImGui::CollapsingHeader("lights")) {
         for (std::size_t i = 0; i < state.lights.size(); ++i)
             changed |= lightSettings(state.lights[i], i);
+        for (std::size_t i = 0; i < state.spotLights.size(); ++i)
+            changed |= spotLightSettings(state.spotLights[i], i);
+        for (std::size_t i = 0; i < state.pointLights.size(); ++i)
+            changed |= pointLightSettings(state.pointLights[i], i);
+    }
     ImGui::End();
 
     if (state.atlasOverlay && status.atlasPicture) {

@@ -7,19 +7,33 @@ namespace penumbra::viewer {
 std::string applyViewState(const ViewState& edited, ViewState& applied, scene::Scene& scene)
 {
     ViewState candidate = edited;
+    // A zero vector turns NaN and fails validation.
     for (scene::DirectionalLight& light : candidate.lights)
-        light.direction = glm::normalize(light.direction); // a zero vector turns NaN and fails validation
-    const std::vector<scene::DirectionalLight> previous = scene.lights;
+        light.direction = glm::normalize(light.direction);
+    for (scene::SpotLight& light : candidate.spotLights)
+        light.direction = glm::normalize(light.direction);
+    const auto previous = std::make_tuple(scene.lights, scene.spotLights, scene.pointLights);
     try {
         shadows::validate(candidate.shadows);
         scene.lights = candidate.lights;
+        scene.spotLights = candidate.spotLights;
+        scene.pointLights = candidate.pointLights;
         scene.validate();
     } catch (const std::exception& e) {
-        scene.lights = previous;
+        std::tie(scene.lights, scene.spotLights, scene.pointLights) = previous;
         return e.what();
     }
     applied = std::move(candidate);
     return {};
+}
+
+ViewState viewStateOf(const scene::Scene& scene)
+{
+    ViewState state;
+    state.lights = scene.lights;
+    state.spotLights = scene.spotLights;
+    state.pointLights = scene.pointLights;
+    return state;
 }
 
 } // namespace penumbra::viewer

@@ -6,6 +6,7 @@
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <optional>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ namespace penumbra::viewer {
 struct ViewState {
     shadows::ShadowSettings shadows;
     std::vector<scene::DirectionalLight> lights;
+    std::vector<scene::SpotLight> spotLights;
+    std::vector<scene::PointLight> pointLights;
     bool cascadeView = false;
     bool atlasOverlay = false;
 };
@@ -31,9 +34,12 @@ struct PanelStatus {
 
 // Makes `edited` the state in use if it is valid: its shadow settings pass shadows::validate and
 // its lights (directions normalised, as the panel edits them freely) pass scene.validate(); then
-// `applied` and scene.lights take it and the result is empty. Otherwise nothing changes and the
+// `applied` and the scene's lights take it and the result is empty. Otherwise nothing changes and the
 // result is the error, naming the field.
 std::string applyViewState(const ViewState& edited, ViewState& applied, scene::Scene& scene);
+
+// The state's lights as the scene holds them, for starting a view.
+ViewState viewStateOf(const scene::Scene& scene);
 
 // Draws the panel into the current ImGui frame; returns whether the user changed `state`.
 bool drawSettingsPanel(ViewState& state, const PanelStatus& status);

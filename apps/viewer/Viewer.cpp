@@ -45,7 +45,7 @@ public:
           swapchain_(device_->createSwapchain()), input_(window_.handle()), scene_(loadViewerScene(options.scene)),
           camera_(scene_.camera, orbitTargetDistance(scene_)), renderer_(*device_, scene_), compositor_(*device_)
     {
-        applied_.lights = scene_.lights;
+        applied_ = viewStateOf(scene_);
         applied_.cascadeView = options.cascadeView;
         applied_.atlasOverlay = options.atlasOverlay;
         edited_ = applied_;

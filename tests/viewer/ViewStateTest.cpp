@@ -26,6 +26,29 @@ TEST(ViewStateTest, AValidEditIsAppliedToTheStateAndTheSceneWithDirectionsNormal
     EXPECT_EQ(f.scene.lights[1].intensity, 3.0f);
 }
 
+TEST(ViewStateTest, SpotAndPointLightEditsReachTheSceneAndBadOnesAreRefused)
+{
+    scene::Scene scene = scene::makeMixedLightsScene();
+    ViewState applied = viewStateOf(scene);
+    ViewState edited = applied;
+    edited.spotLights[1].direction = {0.0f, -3.0f, 0.0f};
+    edited.pointLights[0].range = 4.0f;
+    edited.shadows.other.pointMode = shadows::PointShadowMode::CubeMap;
+    EXPECT_EQ(applyViewState(edited, applied, scene), "");
+    EXPECT_EQ(scene.spotLights[1].direction, glm::vec3(0.0f, -1.0f, 0.0f));
+    EXPECT_EQ(scene.pointLights[0].range, 4.0f);
+
+    edited = applied;
+    edited.spotLights[0].innerAngle = edited.spotLights[0].outerAngle + 0.1f;
+    edited.pointLights[1].intensity = 9.0f;
+    const std::string error = applyViewState(edited, applied, scene);
+    EXPECT_NE(error.find("spot light 0"), std::string::npos) << error;
+    EXPECT_NE(scene.pointLights[1].intensity, 9.0f);
+    edited = applied;
+    edited.shadows.other.cubeMapSize = 100;
+    EXPECT_NE(applyViewState(edited, applied, scene).find("other.cubeMapSize"), std::string::npos);
+}
+
 TEST(ViewStateTest, ShadowSettingsOutOfRangeAreRefusedNamingTheFieldAndChangeNothing)
 {
     Fixture f;
