@@ -36,7 +36,7 @@ protected:
         return f;
     }
 
-    rhi::Image render(const scene::Scene& scene, const render::FrameDesc& f)
+    rhi::Image renderLit(const scene::Scene& scene, const render::FrameDesc& f)
     {
         render::SceneRenderer renderer(*device, scene);
         renderer.render(scene.camera, f);
@@ -123,8 +123,8 @@ TEST_F(LocalShadowsTest, NoLightLeaksThroughAWallNextToAPointLight)
     // Only the light outside the +z wall: everything the camera sees is inside the room and in its shadow.
     scene::Scene scene = scene::makePointLightRoomScene();
     scene.pointLights.erase(scene.pointLights.begin());
-    const float leaked = maxLuminance(render(scene, frame()));
-    const float unshadowed = maxLuminance(render(withoutShadows(scene), frame()));
+    const float leaked = maxLuminance(renderLit(scene, frame()));
+    const float unshadowed = maxLuminance(renderLit(withoutShadows(scene), frame()));
     std::printf("[ leak     ] %s: brightest pixel %.1f with shadows, %.1f without\n", configuration().c_str(), leaked,
                 unshadowed);
     EXPECT_GT(unshadowed, 100.0f) << "without shadows the light must reach into the room";
@@ -139,8 +139,8 @@ TEST_P(CubeSeamsTest, CubeFaceEdgesShowNoLargerJumpThanWithinAFace)
     const glm::vec3 light = scene.pointLights[0].position;
     render::FrameDesc f = inMode(frame(), GetParam());
     f.shadows.other.filter = shadows::ShadowFilter::PCF5x5;
-    const rhi::Image shadowed = render(scene, f);
-    const rhi::Image unshadowed = render(withoutShadows(scene), f);
+    const rhi::Image shadowed = renderLit(scene, f);
+    const rhi::Image unshadowed = renderLit(withoutShadows(scene), f);
     const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
     const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
     const scene::RayCaster shadowRays(scene);
@@ -217,9 +217,9 @@ TEST_F(LocalShadowsTest, DistanceFadeAppliesWithoutDirectionalLights)
     ASSERT_TRUE(scene.lights.empty());
     render::FrameDesc near = frame();
     near.shadows.maxDistance = 0.5f; // everything in view is farther: no shadows at all
-    const rhi::Image faded = render(scene, near);
-    const rhi::Image unshadowed = render(withoutShadows(scene), near);
-    const rhi::Image shadowed = render(scene, frame());
+    const rhi::Image faded = renderLit(scene, near);
+    const rhi::Image unshadowed = renderLit(withoutShadows(scene), near);
+    const rhi::Image shadowed = renderLit(scene, frame());
     EXPECT_EQ(faded.bytes, unshadowed.bytes) << "shadows beyond the shadow distance";
     EXPECT_NE(shadowed.bytes, unshadowed.bytes) << "the room shows no shadows within the shadow distance";
 }
