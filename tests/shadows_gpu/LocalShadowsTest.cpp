@@ -1,6 +1,7 @@
 // Spot and point shadows through the real drivers: front faces in the point faces, no light through walls,
 // no seams across cube face edges, the tile budget and the global distance fade without directional lights.
 #include "GpuTesting.hpp"
+#include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/GroundTruth.hpp"
@@ -38,18 +39,9 @@ protected:
 
     rhi::Image renderLit(const scene::Scene& scene, const render::FrameDesc& f)
     {
-        render::SceneRenderer renderer(*device, scene);
-        renderer.render(scene.camera, f);
-        return rhi::readTexture(*device, renderer.litImage());
+        return testing::renderLit(*device, scene, f);
     }
 };
-
-scene::Scene withoutShadows(scene::Scene scene)
-{
-    for (scene::Material& material : scene.materials)
-        material.receiveShadows = false;
-    return scene;
-}
 
 float maxLuminance(const rhi::Image& image)
 {

@@ -1,6 +1,7 @@
 // The GPU shadow masks of the key light, a spot light and point lights against a CPU ray cast of the same
 // pixels (scene::GroundTruth).
 #include "GpuTesting.hpp"
+#include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/GroundTruth.hpp"
@@ -50,12 +51,7 @@ public:
         mask.shadowed = rhi::readTexture(*device, renderer.litImage());
         if (!renderer.plan().lights.empty())
             cascade1TexelSize = renderer.plan().lights.at(0).cascades.at(1).fit.texelSize;
-        scene::Scene unshadowedScene = scene;
-        for (scene::Material& material : unshadowedScene.materials)
-            material.receiveShadows = false;
-        render::SceneRenderer unshadowed(*device, unshadowedScene);
-        unshadowed.render(scene.camera, frame);
-        mask.unshadowed = rhi::readTexture(*device, unshadowed.litImage());
+        mask.unshadowed = renderLit(*device, withoutShadows(scene), frame);
         return mask;
     }
 };

@@ -2,6 +2,7 @@
 // in both passes: an opaque texture casts a shadow, a transparent one neither shows nor casts.
 #include "GltfBuilder.hpp"
 #include "GpuTesting.hpp"
+#include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/GltfLoader.hpp"
@@ -51,9 +52,7 @@ protected:
         render::FrameDesc frame;
         frame.width = kWidth;
         frame.height = kHeight;
-        render::SceneRenderer renderer(*device, scene);
-        renderer.render(scene.camera, frame);
-        return rhi::readTexture(*device, renderer.litImage());
+        return renderLit(*device, scene, frame);
     }
 
     // The pixel a world point lands on (row 0 at the top).
