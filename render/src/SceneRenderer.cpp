@@ -89,6 +89,55 @@ void fillLocalLights(LitFrameUniforms& u, const scene::Scene& scene, const shado
     u.config.z = static_cast<int>(count);
 }
 
+// Lights drawn without shadows, or not drawn at all, and why.
+std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans& plans)
+{
+    std::vector<std::string> notes;
+    for (const shadows::ShadowPlanNote& note : plans.directional.report)
+        notes.push_back(note.lightIndex ? fmt::format("light {} ('{}') has no shadows: {}", *note.lightIndex,
+                                                      scene.lights[*note.lightIndex].name, note.reason)
+                                        : fmt::format("no shadows: {}", note.reason));
+    for (std::size_t i = maxLitDirectionalLights; i < scene.lights.size(); ++i)
+        notes.push_back(fmt::format("light {} ('{}') is not drawn: beyond the limit of {} directional lights", i,
+                                    scene.lights[i].name, maxLitDirectionalLights));
+    for (const shadows::OtherShadowNote& note : plans.other.report)
+        notes.push_back(fmt::format("{} {} ('{}') has no shadows: {}", kindName(note.kind), note.lightIndex,
+                                    localLightName(scene, note.kind, note.lightIndex), note.reason));
+    const std::size_t spots = scene.spotLights.size();
+    for (std::size_t i = maxLitLocalLights; i < spots + scene.pointLights.size(); ++i) {
+        const auto kind = i < spots ? shadows::LocalLightKind::Spot : shadows::LocalLightKind::Point;
+        const auto index = static_cast<std::uint32_t>(i < spots ? i : i - spots);
+        notes.push_back(fmt::format("{} {} ('{}') is not drawn: beyond the limit of {} spot and point lights",
+                                    kindName(kind), index, localLightName(scene, kind, index), maxLitLocalLights));
+    }
+    return notes;
+}
+
+void checkFrameSize(const FrameDesc& frame)
+{
+    if (frame.width == 0 || frame.height == 0)
+        throw rhi::Error(fmt::format("frame size {}x{}: width and height must be at least 1", frame.width, frame.height));
+}
+
+// A plan drawn into atlases of other sizes would put its tiles in the wrong texels.
+void checkPlansFitFrame(const ShadowPlans& plans, const shadows::ShadowSettings& settings)
+{
+    if (plans.directional.atlas.atlasSize() != settings.directional.atlasSize)
+        throw rhi::Error(fmt::format("shadow plans: the directional plan is for a {}-texel atlas, the frame's "
+                                     "directional.atlasSize is {}",
+                                     plans.directional.atlas.atlasSize(), settings.directional.atlasSize));
+    if (plans.other.atlas.atlasSize() != settings.other.atlasSize)
+        throw rhi::Error(fmt::format("shadow plans: the spot and point plan is for a {}-texel atlas, the frame's "
+                                     "other.atlasSize is {}",
+                                     plans.other.atlas.atlasSize(), settings.other.atlasSize));
+    if (!plans.other.cubes.empty() && settings.other.pointMode != shadows::PointShadowMode::CubeMap)
+        throw rhi::Error("shadow plans: the spot and point plan has shadow cube maps, the frame's other.pointMode "
+                         "is atlas");
+    if (plans.other.cubes.size() > shadows::maxShadowCubes)
+        throw rhi::Error(fmt::format("shadow plans: {} shadow cube maps, at most {}", plans.other.cubes.size(),
+                                     shadows::maxShadowCubes));
+}
+
 LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
 {
     return {object.transform,
@@ -135,8 +184,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
 
 void SceneRenderer::prepareTargets(const FrameDesc& frame)
 {
-    if (frame.width == 0 || frame.height == 0)
-        throw rhi::Error(fmt::format("frame size {}x{}: width and height must be at least 1", frame.width, frame.height));
+    checkFrameSize(frame);
     const shadows::DirectionalShadowSettings& directional = frame.shadows.directional;
     if (!atlas_ || atlas_->size() != directional.atlasSize || atlas_->format() != directional.atlasFormat)
         atlas_ = std::make_unique<shadows::ShadowAtlas>(device_, directional.atlasSize, directional.atlasFormat,
@@ -212,39 +260,31 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     commands.endPass();
 }
 
-void SceneRenderer::planShadows(const scene::Camera& camera, const FrameDesc& frame)
+ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameDesc& frame) const
 {
+    checkFrameSize(frame);
     const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
     const scene::Scene& scene = gpuScene_.scene();
     const std::vector<shadows::Bounds> bounds = gpuScene_.casterBounds();
-    plan_ = shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect),
-                                            shadowLights(scene.lights), bounds);
-    otherPlan_ = shadows::planOtherShadows(frame.shadows, device_.conventions(), spotShadowInputs(scene.spotLights),
-                                           pointShadowInputs(scene.pointLights), bounds);
-    notes_.clear();
-    for (const shadows::ShadowPlanNote& note : plan_.report)
-        notes_.push_back(note.lightIndex ? fmt::format("light {} ('{}') has no shadows: {}", *note.lightIndex,
-                                                       scene.lights[*note.lightIndex].name, note.reason)
-                                         : fmt::format("no shadows: {}", note.reason));
-    for (std::size_t i = maxLitDirectionalLights; i < scene.lights.size(); ++i)
-        notes_.push_back(fmt::format("light {} ('{}') is not drawn: beyond the limit of {} directional lights", i,
-                                     scene.lights[i].name, maxLitDirectionalLights));
-    for (const shadows::OtherShadowNote& note : otherPlan_.report)
-        notes_.push_back(fmt::format("{} {} ('{}') has no shadows: {}", kindName(note.kind), note.lightIndex,
-                                     localLightName(scene, note.kind, note.lightIndex), note.reason));
-    const std::size_t spots = scene.spotLights.size();
-    for (std::size_t i = maxLitLocalLights; i < spots + scene.pointLights.size(); ++i) {
-        const auto kind = i < spots ? shadows::LocalLightKind::Spot : shadows::LocalLightKind::Point;
-        const auto index = static_cast<std::uint32_t>(i < spots ? i : i - spots);
-        notes_.push_back(fmt::format("{} {} ('{}') is not drawn: beyond the limit of {} spot and point lights",
-                                     kindName(kind), index, localLightName(scene, kind, index), maxLitLocalLights));
-    }
+    return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect),
+                                            shadowLights(scene.lights), bounds),
+            shadows::planOtherShadows(frame.shadows, device_.conventions(), spotShadowInputs(scene.spotLights),
+                                      pointShadowInputs(scene.pointLights), bounds)};
 }
 
 FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame)
 {
+    return render(camera, frame, planShadows(camera, frame));
+}
+
+FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans)
+{
+    shadows::validate(frame.shadows);
+    checkPlansFitFrame(plans, frame.shadows);
     prepareTargets(frame);
-    planShadows(camera, frame);
+    notes_ = frameNotes(gpuScene_.scene(), plans);
+    plan_ = std::move(plans.directional);
+    otherPlan_ = std::move(plans.other);
 
     FrameStats stats;
     stats.notes = notes_;

@@ -39,6 +39,14 @@ struct FrameStats {
     std::vector<std::string> notes;
 };
 
+// The CPU half of a frame (scene -> shadow planning) that render() draws. An application may edit the plans
+// in between (matrices of its own, a plan kept from an earlier frame) as long as their atlas sizes and
+// point mode stay those of the frame's settings.
+struct ShadowPlans {
+    shadows::DirectionalShadowPlan directional;
+    shadows::OtherShadowPlan other;
+};
+
 // Draws a scene with cascaded directional shadows and spot and point shadows: plan (CPU) -> caster
 // passes into the directional and the other atlas -> lit pass (and optionally the cascade view). One submission per frame; the results stay readable
 // until the next render().
@@ -47,8 +55,14 @@ public:
     // The scene must outlive the renderer; it is validated and its meshes uploaded here.
     SceneRenderer(rhi::Device& device, const scene::Scene& scene);
 
-    // Throws rhi::Error for settings out of range (naming the field) or a zero-sized frame.
+    // Throws rhi::Error for settings out of range (naming the field).
+    ShadowPlans planShadows(const scene::Camera& camera, const FrameDesc& frame) const;
+
+    // render(camera, frame, planShadows(camera, frame)).
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
+    // Throws rhi::Error for settings out of range (naming the field), a zero-sized frame, or plans whose
+    // atlases do not match the frame's settings.
+    FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
     const rhi::Texture& litImage() const { return *lit_; }
     const rhi::Texture& cascadeImage() const { return *cascades_; }
@@ -65,7 +79,6 @@ public:
 private:
     void prepareTargets(const FrameDesc& frame);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
-    void planShadows(const scene::Camera& camera, const FrameDesc& frame);
     void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const LitFrameUniforms& frame,
                        const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms);
 
