@@ -51,15 +51,18 @@ std::optional<glm::vec3> groundPoint(const scene::Camera& camera, float px, floa
 
 struct SeamFigures {
     std::size_t samples = 0;
-    float worstError = 0.0f; // texels between the measured and the true edge
-    float worstStep = 0.0f;  // texels (the coarser row's) between the edges of neighbouring rows
+    std::size_t boundaries = 0;      // neighbouring rows measured in different cascades
+    float worstError = 0.0f;         // texels between the measured and the true edge
+    float worstStep = 0.0f;          // texels (the coarser row's) between the edges of neighbouring rows
+    float worstBoundaryStep = 0.0f;  // the same, where the rows' cascades differ
 };
 
 class CascadeSeamTest : public GpuTest {
 protected:
-    SeamFigures measure(shadows::CascadeBlend blend)
+    SeamFigures measure(shadows::CascadeBlend blend, float normalBias = 1.0f)
     {
-        const scene::Scene scene = wallScene();
+        scene::Scene scene = wallScene();
+        scene.lights[0].normalBias *= normalBias;
         render::SceneRenderer renderer(*device, scene);
         render::FrameDesc frame;
         frame.width = kWidth;
@@ -100,9 +103,9 @@ protected:
         EXPECT_GT(edges.size(), 100u) << "the wall's shadow edge must be in view: "
                                       << savePicture(lit, "seam-" + configuration());
         // Measured in the texels of the cascade the point selects (selectCascade of directional_shadows.glsl),
-        // or of the next, coarser one where the two are blended.
+        // or, blending softly, of the next, coarser one where the two are blended.
         const shadows::DirectionalShadowUniforms& u = plan.uniforms;
-        const auto texelAt = [&](glm::vec3 p) {
+        const auto cascadeAt = [&](glm::vec3 p) {
             const std::size_t count = plan.cullingSpheres.size();
             for (std::size_t c = 0; c < count; ++c) {
                 const glm::vec3 offset = p - glm::vec3(u.cullingSpheres[c]);
@@ -110,39 +113,65 @@ protected:
                 if (distanceSquared >= u.cullingSpheres[c].w)
                     continue;
                 const float blendWeight = (1.0f - distanceSquared * u.cascadeData[c].x) * u.distanceFade.z;
-                const std::size_t used = blendWeight < 1.0f && c + 1 < count ? c + 1 : c;
-                return plan.lights[0].cascades[used].fit.texelSize;
+                const bool blended = blend != shadows::CascadeBlend::Hard && blendWeight < 1.0f && c + 1 < count;
+                return blended ? c + 1 : c;
             }
-            return plan.lights[0].cascades.back().fit.texelSize;
+            return count - 1;
         };
+        const auto texelOf = [&](std::size_t cascade) { return plan.lights[0].cascades[cascade].fit.texelSize; };
         SeamFigures figures;
         figures.samples = edges.size();
         for (std::size_t i = 0; i < edges.size(); ++i) {
-            const float texel = texelAt(edges[i]);
-            figures.worstError = std::max(figures.worstError, std::abs(edges[i].x - trueEdge) / texel);
-            if (i > 0)
-                figures.worstStep = std::max(figures.worstStep, std::abs(edges[i].x - edges[i - 1].x) /
-                                                                    std::max(texel, texelAt(edges[i - 1])));
+            const std::size_t cascade = cascadeAt(edges[i]);
+            figures.worstError = std::max(figures.worstError, std::abs(edges[i].x - trueEdge) / texelOf(cascade));
+            if (i == 0)
+                continue;
+            const std::size_t previous = cascadeAt(edges[i - 1]);
+            const float step = std::abs(edges[i].x - edges[i - 1].x) / std::max(texelOf(cascade), texelOf(previous));
+            figures.worstStep = std::max(figures.worstStep, step);
+            if (cascade != previous) {
+                ++figures.boundaries;
+                figures.worstBoundaryStep = std::max(figures.worstBoundaryStep, step);
+            }
         }
+        std::printf("[ seams    ] %s %s blend, normal bias x%.0f: %zu rows, %zu at cascade boundaries; edge within "
+                    "%.2f texels of the truth; worst step between rows %.2f texels, at cascade boundaries %.2f\n",
+                    configuration().c_str(), blend == shadows::CascadeBlend::Hard ? "hard" : "soft", normalBias,
+                    figures.samples, figures.boundaries, figures.worstError, figures.worstStep,
+                    figures.worstBoundaryStep);
         return figures;
     }
 };
+
+// Each cascade's normal bias (sqrt 2 of its texels) lifts receivers and pulls the edge sqrt 2 / tan 35 = 2 texels
+// towards the wall; with the filter's half texel and the slope-scale bias the edge stays within 3.5 texels of
+// the truth, in every cascade and with either blend.
+constexpr float kEdgeErrorBound = 3.5f;
+// Hard cascades jump at a boundary by the difference of their biases, 2 texels of the finer cascade (at most
+// 1 of the coarser one's, as measured here) plus the half-texel quantisation of each.
+constexpr float kHardBoundaryStepBound = 2.5f;
+// The soft blend spreads that difference over the fade band: no row steps by more than about a texel.
+constexpr float kSoftStepBound = 1.25f;
 
 TEST_F(CascadeSeamTest, SoftBlendMovesTheShadowEdgeSmoothlyAcrossCascades)
 {
     const SeamFigures hard = measure(shadows::CascadeBlend::Hard);
     const SeamFigures soft = measure(shadows::CascadeBlend::Soft);
-    std::printf("[ seams    ] %s: %zu rows; edge within %.2f texels of the truth; worst step between rows: hard blend "
-                "%.2f texels, soft blend %.2f texels\n",
-                configuration().c_str(), soft.samples, soft.worstError, hard.worstStep, soft.worstStep);
-    // Each cascade's normal bias (sqrt 2 of its texels) lifts receivers and pulls the edge sqrt 2 / tan 35 =
-    // 2 texels towards the wall; with the filter's half texel and the slope-scale bias the edge stays within
-    // 3.5 texels of the truth.
-    EXPECT_LT(soft.worstError, 3.5f);
-    // Hard cascades jump by the difference of their biases at the seam; the soft blend spreads it over the
-    // fade band, so no row steps by more than about a texel.
-    EXPECT_LE(soft.worstStep, 1.25f);
-    EXPECT_LT(soft.worstStep, 0.6f * hard.worstStep);
+    for (const SeamFigures* f : {&hard, &soft})
+        EXPECT_GE(f->boundaries, 3u) << "the probe must cross every cascade boundary";
+    EXPECT_LT(hard.worstError, kEdgeErrorBound);
+    EXPECT_LT(soft.worstError, kEdgeErrorBound);
+    EXPECT_LE(hard.worstBoundaryStep, kHardBoundaryStepBound);
+    EXPECT_LE(soft.worstStep, kSoftStepBound);
+    EXPECT_LT(soft.worstBoundaryStep, 0.6f * hard.worstBoundaryStep);
+}
+
+// Negative control: a tripled normal bias pulls the edge three times as far and widens the jumps between cascades.
+TEST_F(CascadeSeamTest, TripledNormalBiasCatchesFault)
+{
+    const SeamFigures hard = measure(shadows::CascadeBlend::Hard, 3.0f);
+    EXPECT_GT(hard.worstError, kEdgeErrorBound);
+    EXPECT_GT(hard.worstBoundaryStep, kHardBoundaryStepBound);
 }
 
 } // namespace

@@ -1,10 +1,13 @@
 #include "GpuTesting.hpp"
+#include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/GroundTruth.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <gtest/gtest.h>
 
 namespace penumbra::testing {
@@ -94,16 +97,38 @@ TEST_F(LightsAndAtlasTest, SettingsOutOfRangeAreRejectedNamingTheField)
 TEST_F(LightsAndAtlasTest, ShadowsDarkenTheKeyLightsShadowAndNotReceivingKeepsItLit)
 {
     scene::Scene scene = scene::makeSingleLightScene();
-    render::SceneRenderer renderer(*device, scene);
-    renderer.render(scene.camera, smallFrame());
-    const rhi::Image shadowed = rhi::readTexture(*device, renderer.litImage());
-    for (scene::Material& material : scene.materials)
-        material.receiveShadows = false;
-    render::SceneRenderer unshadowed(*device, scene);
-    unshadowed.render(scene.camera, smallFrame());
-    const double share = differingShare(shadowed, rhi::readTexture(*device, unshadowed.litImage()), 8);
+    const rhi::Image shadowed = renderLit(*device, scene, smallFrame());
+    const rhi::Image unshadowed = renderLit(*device, withoutShadows(scene), smallFrame());
+    const double share = differingShare(shadowed, unshadowed, 8);
     EXPECT_GT(share, 0.02) << "shadows cover part of the ground";
     EXPECT_LT(share, 0.5);
+
+    // The pillar that does not receive stands in the floating cube's shadow: it must look as it does with shadows
+    // off, and darken once it receives (so the first check could fail).
+    const std::uint32_t pillar = *scene.findObject("unshadowed pillar");
+    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
+    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, 320, 180);
+    scene.materials[scene.objects[pillar].material].receiveShadows = true;
+    const rhi::Image receiving = renderLit(*device, scene, smallFrame());
+    std::size_t pixels = 0, changed = 0, darkened = 0;
+    for (std::uint32_t y = 1; y + 1 < 180; ++y)
+        for (std::uint32_t x = 1; x + 1 < 320; ++x) {
+            // Inside the pillar's silhouette, where rasteriser and ray cast agree on what the pixel shows.
+            bool inside = true;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    inside = inside && gbuffer.at(x + dx, y + dy).object == pillar;
+            if (!inside)
+                continue;
+            ++pixels;
+            changed += pixel(shadowed, x, y) != pixel(unshadowed, x, y);
+            darkened += luminance(receiving, x, y) < 0.5f * luminance(unshadowed, x, y);
+        }
+    std::printf("[ receive  ] %s: pillar %zu pixels, %zu changed by shadows, %zu darkened once it receives\n",
+                configuration().c_str(), pixels, changed, darkened);
+    ASSERT_GT(pixels, 30u) << "the pillar must be in view";
+    EXPECT_EQ(changed, 0u) << "a material that does not receive shadows was shadowed";
+    EXPECT_GT(darkened, pixels / 10) << "the pillar must stand in a shadow for this check to mean anything";
 }
 
 } // namespace

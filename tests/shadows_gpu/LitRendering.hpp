@@ -4,6 +4,9 @@
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/Scene.hpp"
 
+#include <functional>
+#include <string>
+
 namespace penumbra::testing {
 
 // The scene's lit image from its own camera, read back.
@@ -14,11 +17,33 @@ inline rhi::Image renderLit(rhi::Device& device, const scene::Scene& scene, cons
     return rhi::readTexture(device, renderer.litImage());
 }
 
+// A change to the planned shadows before they are drawn: the negative controls' faults (ShadowFaults.hpp).
+using PlanFault = std::function<render::ShadowPlans(render::ShadowPlans)>;
+
+// renderLit with the plans changed by `fault`.
+inline rhi::Image renderLit(rhi::Device& device, const scene::Scene& scene, const render::FrameDesc& frame,
+                            const PlanFault& fault)
+{
+    render::SceneRenderer renderer(device, scene);
+    renderer.render(scene.camera, frame, fault(renderer.planShadows(scene.camera, frame)));
+    return rhi::readTexture(device, renderer.litImage());
+}
+
 // The same scene with no material receiving shadows: what a shadow test compares against.
 inline scene::Scene withoutShadows(scene::Scene scene)
 {
     for (scene::Material& material : scene.materials)
         material.receiveShadows = false;
+    return scene;
+}
+
+// The same scene with object `name` casting no shadow (its material copied, so objects sharing it still cast).
+inline scene::Scene withoutCaster(scene::Scene scene, const std::string& name)
+{
+    scene::Object& object = scene.objects.at(scene.findObject(name).value());
+    scene::Material material = scene.materialOf(object);
+    material.caster = scene::CasterMode::Off;
+    object.material = scene.addMaterial(std::move(material));
     return scene;
 }
 

@@ -1,10 +1,9 @@
 // Spot and point shadows through the real drivers: front faces in the point faces, no light through walls,
-// no seams across cube face edges, the tile budget and the global distance fade without directional lights.
+// the tile budget and the global distance fade without directional lights.
 #include "GpuTesting.hpp"
 #include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/scene/GroundTruth.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
@@ -13,12 +12,6 @@
 #include <cstdio>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
-#include <ostream>
-
-namespace penumbra::shadows {
-// Parameter names in test listings.
-void PrintTo(PointShadowMode mode, std::ostream* out) { *out << (mode == PointShadowMode::Atlas ? "atlas" : "cubemap"); }
-} // namespace penumbra::shadows
 
 namespace penumbra::testing {
 namespace {
@@ -122,73 +115,6 @@ TEST_F(LocalShadowsTest, NoLightLeaksThroughAWallNextToAPointLight)
     EXPECT_GT(unshadowed, 100.0f) << "without shadows the light must reach into the room";
     EXPECT_LE(leaked, 1.0f) << "light leaks through the wall";
 }
-
-class CubeSeamsTest : public LocalShadowsTest, public ::testing::WithParamInterface<shadows::PointShadowMode> {};
-
-TEST_P(CubeSeamsTest, CubeFaceEdgesShowNoLargerJumpThanWithinAFace)
-{
-    const scene::Scene scene = roomLitFromInside();
-    const glm::vec3 light = scene.pointLights[0].position;
-    render::FrameDesc f = inMode(frame(), GetParam());
-    f.shadows.other.filter = shadows::ShadowFilter::PCF5x5;
-    const rhi::Image shadowed = renderLit(scene, f);
-    const rhi::Image unshadowed = renderLit(withoutShadows(scene), f);
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
-    const scene::RayCaster shadowRays(scene);
-    const scene::LightVisibilityMask truth = scene::tracePositionalLightVisibility(scene, shadowRays, gbuffer, light);
-
-    // Pixels within a few pixels of a change of ray-cast class: the filtered shadow edge (PCF 5x5 spans
-    // several pixels here) is not a seam.
-    constexpr int kEdgeMargin = 4;
-    const auto nearShadowEdge = [&](std::uint32_t x, std::uint32_t y) {
-        for (int dy = -kEdgeMargin; dy <= kEdgeMargin; ++dy)
-            for (int dx = -kEdgeMargin; dx <= kEdgeMargin; ++dx) {
-                const int nx = std::clamp(int(x) + dx, 0, int(kWidth) - 1);
-                const int ny = std::clamp(int(y) + dy, 0, int(kHeight) - 1);
-                if (truth.at(nx, ny) != truth.at(x, y))
-                    return true;
-            }
-        return false;
-    };
-    // Shadow value: the fraction of the unshadowed brightness a pixel keeps. Neighbours on the same surface,
-    // away from shadow edges, compared across and within cube faces.
-    const auto shadowValue = [&](std::uint32_t x, std::uint32_t y) {
-        return luminance(shadowed, x, y) / std::max(luminance(unshadowed, x, y), 1.0f);
-    };
-    const auto faceOf = [&](std::uint32_t x, std::uint32_t y) { return shadows::cubeFace(gbuffer.at(x, y).position - light); };
-    float acrossEdges = 0.0f, withinFaces = 0.0f;
-    std::size_t edgePairs = 0;
-    for (std::uint32_t y = 0; y + 1 < kHeight; ++y)
-        for (std::uint32_t x = 0; x + 1 < kWidth; ++x)
-            for (const auto& [nx, ny] : {std::pair{x + 1, y}, std::pair{x, y + 1}}) {
-                const scene::GBufferSample& a = gbuffer.at(x, y);
-                const scene::GBufferSample& b = gbuffer.at(nx, ny);
-                if (!a.hit() || a.object != b.object || nearShadowEdge(x, y) || nearShadowEdge(nx, ny) ||
-                    luminance(unshadowed, x, y) < 24.0f || luminance(unshadowed, nx, ny) < 24.0f)
-                    continue;
-                const float jump = std::abs(shadowValue(x, y) - shadowValue(nx, ny));
-                if (faceOf(x, y) != faceOf(nx, ny)) {
-                    acrossEdges = std::max(acrossEdges, jump);
-                    ++edgePairs;
-                } else {
-                    withinFaces = std::max(withinFaces, jump);
-                }
-            }
-    std::printf("[ seams    ] %s %s: largest shadow jump across face edges %.4f (%zu pairs), within faces %.4f\n",
-                configuration().c_str(), modeName(GetParam()), acrossEdges, edgePairs, withinFaces);
-    RecordProperty("acrossEdges", std::to_string(acrossEdges));
-    RecordProperty("withinFaces", std::to_string(withinFaces));
-    ASSERT_GT(edgePairs, 200u) << "face edges must cross lit and shadowed surfaces in view";
-    // Rounding of the 8-bit pictures alone moves a ratio by a few hundredths.
-    EXPECT_LE(acrossEdges, std::max(withinFaces, 0.05f));
-}
-
-INSTANTIATE_TEST_SUITE_P(PointShadowModes, CubeSeamsTest,
-                         ::testing::Values(shadows::PointShadowMode::Atlas, shadows::PointShadowMode::CubeMap),
-                         [](const auto& param) {
-                             return param.param == shadows::PointShadowMode::Atlas ? "Atlas" : "CubeMap";
-                         });
 
 TEST_F(LocalShadowsTest, LightsBeyondTheTileBudgetAreLitWithoutShadowsAndReported)
 {

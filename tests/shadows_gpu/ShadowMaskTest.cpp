@@ -2,6 +2,7 @@
 // pixels (scene::GroundTruth).
 #include "GpuTesting.hpp"
 #include "LitRendering.hpp"
+#include "ShadowFaults.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/GroundTruth.hpp"
@@ -9,8 +10,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace penumbra::testing {
 namespace {
@@ -19,8 +24,12 @@ constexpr std::uint32_t kWidth = 960;
 constexpr std::uint32_t kHeight = 540;
 // Pixels this close to a change of ground-truth class or object are shadow or silhouette edges.
 constexpr int kEdgeMargin = 2;
-// Direct light below this (8-bit sRGB luminance) is too grazing to tell shadow from light.
-constexpr float kMinimumDirect = 24.0f;
+// Direct light below this (8-bit sRGB luma) cannot be halved reliably by an 8-bit pixel. Grazing-angle
+// pixels above it are judged: acne lives there.
+constexpr float kMinimumDirect = 4.0f;
+// Each class, truly lit and truly shadowed, must be right on this share of its pixels away from edges, unless
+// a test states another bound for its shadowed class and why.
+constexpr double kClassBound = 0.995;
 
 // Without ambient light a single-light scene is black where the light is blocked, so a pixel is shadowed
 // when it keeps less than half the brightness it has with shadows off.
@@ -35,24 +44,32 @@ struct ShadowMask {
     }
 };
 
+render::FrameDesc maskFrame(const shadows::ShadowSettings& settings, std::uint32_t width, std::uint32_t height)
+{
+    render::FrameDesc frame;
+    frame.shadows = settings;
+    frame.width = width;
+    frame.height = height;
+    frame.ambient = glm::vec3(0.0f);
+    return frame;
+}
+
 class ShadowMaskTest : public GpuTest {
 public:
-    ShadowMask renderMask(const scene::Scene& scene, float& cascade1TexelSize,
-                          const shadows::ShadowSettings& settings = {})
+    rhi::Device& gpu() { return *device; }
+
+    // The lit image of `rendered` with and without shadows (a fault may leave a caster out of it).
+    ShadowMask renderMask(const scene::Scene& rendered, const render::FrameDesc& frame)
     {
-        render::FrameDesc frame;
-        frame.shadows = settings;
-        frame.width = kWidth;
-        frame.height = kHeight;
-        frame.ambient = glm::vec3(0.0f);
-        render::SceneRenderer renderer(*device, scene);
-        renderer.render(scene.camera, frame);
-        ShadowMask mask;
-        mask.shadowed = rhi::readTexture(*device, renderer.litImage());
-        if (!renderer.plan().lights.empty())
-            cascade1TexelSize = renderer.plan().lights.at(0).cascades.at(1).fit.texelSize;
-        mask.unshadowed = renderLit(*device, withoutShadows(scene), frame);
-        return mask;
+        return {renderLit(*device, rendered, frame), renderLit(*device, withoutShadows(rendered), frame)};
+    }
+    ShadowMask renderMask(const scene::Scene& rendered, const render::FrameDesc& frame, const PlanFault& fault)
+    {
+        return {renderLit(*device, rendered, frame, fault), renderLit(*device, withoutShadows(rendered), frame)};
+    }
+    ShadowMask renderMask(const scene::Scene& scene, const shadows::ShadowSettings& settings = {})
+    {
+        return renderMask(scene, maskFrame(settings, kWidth, kHeight));
     }
 };
 
@@ -89,37 +106,98 @@ float footprintDistance(glm::vec3 p, glm::vec2 min, glm::vec2 max)
     return glm::length(glm::max(glm::max(min - q, q - max), glm::vec2(0.0f)));
 }
 
-struct Agreement {
+// The pixels of one ground-truth class: compared ones, and those left out (and why).
+struct ClassFigures {
     std::size_t compared = 0;
-    std::size_t agreeing = 0;
-    std::size_t litCompared = 0;
-    std::size_t acne = 0;
+    std::size_t right = 0;
+    std::size_t nearEdges = 0; // within kEdgeMargin of a shadow or silhouette edge
+    std::size_t tooDim = 0;    // direct light below kMinimumDirect
+
+    double share() const { return compared == 0 ? 0.0 : double(right) / double(compared); }
 };
 
-// Pixels away from shadow and silhouette edges where the light reaches enough to decide.
-Agreement compareWithTruth(const ShadowMask& mask, const scene::CpuGBuffer& gbuffer,
-                           const scene::LightVisibilityMask& truth)
+// Per class, so that a picture of mostly lit pixels cannot hide a missing shadow.
+struct TruthFigures {
+    ClassFigures lit;
+    ClassFigures shadowed;
+
+    std::size_t acne() const { return lit.compared - lit.right; }      // truly lit, rendered dark
+    std::size_t leaks() const { return shadowed.compared - shadowed.right; } // truly shadowed, rendered lit
+};
+
+TruthFigures compareWithTruth(const ShadowMask& mask, const scene::CpuGBuffer& gbuffer,
+                              const scene::LightVisibilityMask& truth)
 {
-    Agreement a;
-    for (std::uint32_t y = 0; y < kHeight; ++y)
-        for (std::uint32_t x = 0; x < kWidth; ++x) {
+    TruthFigures f;
+    for (std::uint32_t y = 0; y < truth.height; ++y)
+        for (std::uint32_t x = 0; x < truth.width; ++x) {
             const scene::LightVisibility expected = truth.at(x, y);
-            if ((expected != scene::LightVisibility::Lit && expected != scene::LightVisibility::Shadowed) ||
-                !mask.decided(x, y) || nearEdge(gbuffer, truth, x, y))
+            if (expected != scene::LightVisibility::Lit && expected != scene::LightVisibility::Shadowed)
                 continue;
-            const bool shadowed = mask.inShadow(x, y);
-            ++a.compared;
-            a.agreeing += shadowed == (expected == scene::LightVisibility::Shadowed);
-            if (expected == scene::LightVisibility::Lit) {
-                ++a.litCompared;
-                a.acne += shadowed;
+            const bool shadowedTruly = expected == scene::LightVisibility::Shadowed;
+            ClassFigures& c = shadowedTruly ? f.shadowed : f.lit;
+            if (!mask.decided(x, y))
+                ++c.tooDim;
+            else if (nearEdge(gbuffer, truth, x, y))
+                ++c.nearEdges;
+            else {
+                ++c.compared;
+                c.right += mask.inShadow(x, y) == shadowedTruly;
             }
         }
-    return a;
+    return f;
 }
 
-// The mixed scene with one spot or point light kept, brightened to decide most of what it reaches; the
-// dithered caster made solid, as the ray cast counts it (its shadow is a stipple of about 60%).
+std::string describe(const ClassFigures& c)
+{
+    return fmt::format("{} of {} right ({:.3f}%), left out: {} near edges, {} too dim", c.right, c.compared,
+                       100.0 * c.share(), c.nearEdges, c.tooDim);
+}
+
+std::string describe(const TruthFigures& f)
+{
+    return fmt::format("lit {}; shadowed {}; acne {}, leaks {}", describe(f.lit), describe(f.shadowed), f.acne(),
+                       f.leaks());
+}
+
+// What the ground truth claims, as failures; the tests assert there are none, the negative controls that
+// there are some. Acne: at most 1 of 1000 lit pixels shadowed away from edges.
+std::vector<std::string> truthFailures(const TruthFigures& f, std::size_t minimumShadowed,
+                                       double shadowedBound = kClassBound)
+{
+    std::vector<std::string> failures;
+    if (f.shadowed.compared < minimumShadowed)
+        failures.push_back(fmt::format("only {} shadowed pixels to judge, fewer than {}", f.shadowed.compared,
+                                       minimumShadowed));
+    if (f.lit.share() < kClassBound)
+        failures.push_back(fmt::format("{:.3f}% of truly lit pixels rendered lit, below {}%", 100.0 * f.lit.share(),
+                                       100.0 * kClassBound));
+    if (f.shadowed.share() < shadowedBound)
+        failures.push_back(fmt::format("{:.3f}% of truly shadowed pixels rendered dark, below {}%",
+                                       100.0 * f.shadowed.share(), 100.0 * shadowedBound));
+    if (f.acne() > f.lit.compared / 1000)
+        failures.push_back(fmt::format("acne: {} truly lit pixels rendered dark", f.acne()));
+    return failures;
+}
+
+std::string joined(const std::vector<std::string>& lines)
+{
+    std::string out;
+    for (const std::string& line : lines)
+        out += (out.empty() ? "" : "; ") + line;
+    return out;
+}
+
+// The dithered caster made solid, as the ray cast counts it (its shadow is a stipple of about 60%).
+scene::Scene withSolidCasters(scene::Scene scene)
+{
+    for (scene::Material& material : scene.materials)
+        if (material.caster == scene::CasterMode::Dither)
+            material.caster = scene::CasterMode::On;
+    return scene;
+}
+
+// The mixed scene with one spot or point light kept, brightened to decide most of what it reaches, solid casters.
 scene::Scene oneLocalLight(bool spot, std::size_t index)
 {
     scene::Scene scene = scene::makeMixedLightsScene();
@@ -133,113 +211,244 @@ scene::Scene oneLocalLight(bool spot, std::size_t index)
         scene.pointLights[0].intensity *= 6.0f;
         scene.spotLights.clear();
     }
-    for (scene::Material& material : scene.materials)
-        if (material.caster == scene::CasterMode::Dither)
-            material.caster = scene::CasterMode::On;
-    return scene;
+    return withSolidCasters(std::move(scene));
+}
+
+// The ray-cast reference of a scene from its camera: what each pixel shows and whether it sees the light.
+struct Truth {
+    scene::CpuGBuffer gbuffer;
+    scene::LightVisibilityMask visibility;
+};
+
+Truth traceTruth(const scene::Scene& scene, std::uint32_t width, std::uint32_t height,
+                 const std::optional<glm::vec3>& lightPosition)
+{
+    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
+    const scene::RayCaster shadowRays(scene);
+    Truth t{scene::traceGBuffer(scene, cameraRays, scene.camera, width, height), {}};
+    t.visibility = lightPosition ? scene::tracePositionalLightVisibility(scene, shadowRays, t.gbuffer, *lightPosition)
+                                 : scene::traceLightVisibility(scene, shadowRays, t.gbuffer, scene.lights.at(0));
+    return t;
+}
+
+void savePictures(const ShadowMask& mask, const std::string& name)
+{
+    ADD_FAILURE() << "pictures: " << savePicture(mask.shadowed, "truth-" + configuration() + "-" + name + "-shadowed")
+                  << ", " << savePicture(mask.unshadowed, "truth-" + configuration() + "-" + name + "-unshadowed");
+}
+
+TruthFigures report(ShadowMaskTest& test, const std::string& name, const ShadowMask& mask, const Truth& truth)
+{
+    const TruthFigures f = compareWithTruth(mask, truth.gbuffer, truth.visibility);
+    std::printf("[ truth    ] %s %s: %s\n", configuration().c_str(), name.c_str(), describe(f).c_str());
+    test.RecordProperty(name + ".litAgreement", std::to_string(f.lit.share()));
+    test.RecordProperty(name + ".shadowedAgreement", std::to_string(f.shadowed.share()));
+    return f;
 }
 
 // One spot or point light alone (no ambient, no other light) against the ray cast towards its position.
 void checkPositionalLight(ShadowMaskTest& test, const scene::Scene& scene, const std::string& name,
                           glm::vec3 position, const ShadowMask& mask)
 {
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::RayCaster shadowRays(scene);
-    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
-    const scene::LightVisibilityMask truth = scene::tracePositionalLightVisibility(scene, shadowRays, gbuffer, position);
-    const Agreement a = compareWithTruth(mask, gbuffer, truth);
-    const double agreement = double(a.agreeing) / double(a.compared);
-    std::printf("[ truth    ] %s %s: %zu of %zu pixels agree (%.3f%%); acne %zu of %zu lit\n", configuration().c_str(),
-                name.c_str(), a.agreeing, a.compared, 100.0 * agreement, a.acne, a.litCompared);
-    test.RecordProperty(name + ".agreement", std::to_string(agreement));
-    EXPECT_GT(a.compared, std::size_t(kWidth) * kHeight / 50) << name << ": the light must reach a good part of the picture";
-    EXPECT_GE(agreement, 0.99) << name;
-    EXPECT_LE(a.acne, a.litCompared / 1000) << name << ": lit surfaces shadowed away from shadow edges";
+    const TruthFigures f = report(test, name, mask, traceTruth(scene, kWidth, kHeight, position));
+    EXPECT_GT(f.lit.compared + f.shadowed.compared, std::size_t(kWidth) * kHeight / 50)
+        << name << ": the light must reach a good part of the picture";
+    const std::vector<std::string> failures = truthFailures(f, 1000);
+    EXPECT_TRUE(failures.empty()) << name << ": " << joined(failures);
     if (::testing::Test::HasFailure())
-        ADD_FAILURE() << "pictures: " << savePicture(mask.shadowed, "truth-" + configuration() + "-" + name + "-shadowed")
-                      << ", " << savePicture(mask.unshadowed, "truth-" + configuration() + "-" + name + "-unshadowed");
+        savePictures(mask, name);
 }
 
 TEST_F(ShadowMaskTest, SpotShadowAgreesWithTheRayCast)
 {
     scene::Scene scene = oneLocalLight(true, 2);
     scene.spotLights[0].outerAngle = 0.9f; // a wide cone over several objects
-    float texel = 0.0f;
-    checkPositionalLight(*this, scene, "spot", scene.spotLights[0].position, renderMask(scene, texel));
+    checkPositionalLight(*this, scene, "spot", scene.spotLights[0].position, renderMask(scene));
+}
+
+scene::Scene roomLitFromInside()
+{
+    scene::Scene room = scene::makePointLightRoomScene();
+    room.pointLights.pop_back();
+    return room;
 }
 
 TEST_F(ShadowMaskTest, PointShadowsAgreeWithTheRayCast)
 {
     const scene::Scene mixed = oneLocalLight(false, 1);
-    float texel = 0.0f;
-    checkPositionalLight(*this, mixed, "point", mixed.pointLights[0].position, renderMask(mixed, texel));
+    checkPositionalLight(*this, mixed, "point", mixed.pointLights[0].position, renderMask(mixed));
 
-    scene::Scene room = scene::makePointLightRoomScene();
-    room.pointLights.pop_back();
-    checkPositionalLight(*this, room, "room", room.pointLights[0].position, renderMask(room, texel));
+    const scene::Scene room = roomLitFromInside();
+    checkPositionalLight(*this, room, "room", room.pointLights[0].position, renderMask(room));
     shadows::ShadowSettings cubeMaps;
     cubeMaps.other.pointMode = shadows::PointShadowMode::CubeMap;
-    checkPositionalLight(*this, room, "room-cube-map", room.pointLights[0].position, renderMask(room, texel, cubeMaps));
+    checkPositionalLight(*this, room, "room-cube-map", room.pointLights[0].position, renderMask(room, cubeMaps));
 }
 
-TEST_F(ShadowMaskTest, ShadowMapAgreesWithTheRayCastAndHasNoAcneOrPeterPanning)
+// The key light's scene with solid casters, the sun `pitchDegrees` above the horizon (the scene's own: 50).
+scene::Scene keyLightScene(float pitchDegrees = 50.0f)
 {
-    const scene::Scene scene = scene::makeSingleLightScene();
-    float texel = 0.0f;
-    const ShadowMask mask = renderMask(scene, texel);
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::RayCaster shadowRays(scene);
-    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
-    const scene::LightVisibilityMask truth = scene::traceLightVisibility(scene, shadowRays, gbuffer, scene.lights[0]);
+    scene::Scene scene = withSolidCasters(scene::makeSingleLightScene());
+    scene.lights[0].direction = scene::lightDirection(glm::radians(pitchDegrees), glm::radians(30.0f));
+    return scene;
+}
 
+// The normal bias lifts receivers by sqrt 2 texels of their cascade, which moves every shadow edge towards its
+// caster by that over the tangent of the sun's elevation: at 50 degrees 1.2 texels, within the 2-pixel edge
+// margin (measured: 1 of 5 916 shadowed pixels lit), at 25 degrees 3 texels, beyond it where a cascade texel
+// covers more than a pixel (measured: 270 of 10 728). A bias scheme that needs no tuning is to remove them;
+// until then the low sun's shadowed class is held to 97%.
+constexpr double kKeyLightShadowedBound = kClassBound;
+constexpr double kLowSunShadowedBound = 0.97;
+
+// Peter-panning: ground in the standing cube's shadow more than one shadow texel (cascade 1's) from its
+// footprint must be dark on the GPU too, right up to the cube (the lateral shadow edges are left out).
+struct ContactFigures {
+    std::size_t samples = 0;
+    std::size_t gaps = 0;
+};
+
+ContactFigures contactGaps(const scene::Scene& scene, const ShadowMask& mask, const Truth& truth, float texel)
+{
     const std::uint32_t ground = *scene.findObject("ground");
     const scene::Object& cube = scene.objects[*scene.findObject("standing cube")];
     const glm::vec2 footprintMin{cube.worldBounds.min.x, cube.worldBounds.min.z};
     const glm::vec2 footprintMax{cube.worldBounds.max.x, cube.worldBounds.max.z};
-
-    std::size_t compared = 0, agreeing = 0, litCompared = 0, acne = 0, contactSamples = 0, contactGaps = 0;
-    for (std::uint32_t y = 0; y < kHeight; ++y)
-        for (std::uint32_t x = 0; x < kWidth; ++x) {
-            const scene::LightVisibility expected = truth.at(x, y);
-            if (expected != scene::LightVisibility::Lit && expected != scene::LightVisibility::Shadowed)
+    ContactFigures c;
+    for (std::uint32_t y = 0; y < truth.visibility.height; ++y)
+        for (std::uint32_t x = 0; x < truth.visibility.width; ++x) {
+            const scene::GBufferSample& sample = truth.gbuffer.at(x, y);
+            if (sample.object != ground || truth.visibility.at(x, y) != scene::LightVisibility::Shadowed ||
+                !mask.decided(x, y) || nearLitPixel(truth.visibility, x, y))
                 continue;
-            if (!mask.decided(x, y))
-                continue;
-            const bool shadowed = mask.inShadow(x, y);
-            // Peter-panning: ground in the cube's shadow more than one shadow texel from its footprint must
-            // be dark on the GPU too, right up to the cube (the lateral shadow edges are left out).
-            const scene::GBufferSample& sample = gbuffer.at(x, y);
-            if (sample.object == ground && expected == scene::LightVisibility::Shadowed && !nearLitPixel(truth, x, y)) {
-                const float d = footprintDistance(sample.position, footprintMin, footprintMax);
-                if (d > texel && d < 4.0f * texel) {
-                    ++contactSamples;
-                    contactGaps += !shadowed;
-                }
-            }
-            if (nearEdge(gbuffer, truth, x, y))
-                continue;
-            ++compared;
-            agreeing += shadowed == (expected == scene::LightVisibility::Shadowed);
-            if (expected == scene::LightVisibility::Lit) {
-                ++litCompared;
-                acne += shadowed;
+            const float d = footprintDistance(sample.position, footprintMin, footprintMax);
+            if (d > texel && d < 4.0f * texel) {
+                ++c.samples;
+                c.gaps += !mask.inShadow(x, y);
             }
         }
-    const double agreement = double(agreeing) / double(compared);
-    std::printf("[ truth    ] %s: %zu of %zu pixels agree (%.3f%%); acne %zu of %zu lit; contact gaps %zu of %zu "
-                "(texel %.4f)\n",
-                configuration().c_str(), agreeing, compared, 100.0 * agreement, acne, litCompared, contactGaps,
-                contactSamples, texel);
-    RecordProperty("agreement", std::to_string(agreement));
-    ASSERT_GT(compared, std::size_t(kWidth) * kHeight / 4) << "the comparison must cover most of the picture";
-    EXPECT_GE(agreement, 0.99);
-    EXPECT_LE(acne, litCompared / 1000) << "lit surfaces shadowed away from shadow edges";
-    ASSERT_GT(contactSamples, 20u) << "the cube's contact shadow must be in view";
-    EXPECT_EQ(contactGaps, 0u) << "a gap between the cube and its shadow wider than one texel";
-    if (HasFailure()) {
-        ADD_FAILURE() << "pictures: " << savePicture(mask.shadowed, "truth-" + configuration() + "-shadowed") << ", "
-                      << savePicture(mask.unshadowed, "truth-" + configuration() + "-unshadowed");
+    return c;
+}
+
+// The key light's figures for `rendered` (the scene, or a broken copy of it) against the ray cast of `truthScene`.
+struct KeyLightFigures {
+    TruthFigures truth;
+    ContactFigures contact;
+    std::vector<std::string> failures; // truthFailures plus contact gaps
+};
+
+KeyLightFigures measureKeyLight(ShadowMaskTest& test, const std::string& name, const scene::Scene& rendered,
+                                const scene::Scene& truthScene, const Truth& truth, std::size_t minimumShadowed,
+                                double shadowedBound)
+{
+    const render::FrameDesc frame = maskFrame({}, truth.gbuffer.width, truth.gbuffer.height);
+    const ShadowMask mask = test.renderMask(rendered, frame);
+    const float texel = render::SceneRenderer(test.gpu(), rendered)
+                            .planShadows(rendered.camera, frame)
+                            .directional.lights.at(0)
+                            .cascades.at(1)
+                            .fit.texelSize;
+    KeyLightFigures k{report(test, name, mask, truth), contactGaps(truthScene, mask, truth, texel), {}};
+    std::printf("[ contact  ] %s %s: %zu gaps of %zu samples 1 to 4 texels (%.4f) from the cube\n",
+                configuration().c_str(), name.c_str(), k.contact.gaps, k.contact.samples, texel);
+    k.failures = truthFailures(k.truth, minimumShadowed, shadowedBound);
+    if (k.contact.samples <= 20)
+        k.failures.push_back(fmt::format("only {} contact samples: the cube's contact shadow must be in view",
+                                         k.contact.samples));
+    if (k.contact.gaps != 0)
+        k.failures.push_back(fmt::format("{} ground pixels between the cube and its shadow rendered lit",
+                                         k.contact.gaps));
+    return k;
+}
+
+TEST_F(ShadowMaskTest, ShadowMapAgreesWithTheRayCastAndHasNoAcneOrPeterPanning)
+{
+    const scene::Scene scene = keyLightScene();
+    const Truth truth = traceTruth(scene, kWidth, kHeight, std::nullopt);
+    const KeyLightFigures k = measureKeyLight(*this, "key", scene, scene, truth, 5000, kKeyLightShadowedBound);
+    EXPECT_TRUE(k.failures.empty()) << joined(k.failures);
+}
+
+// A low sun: long shadows, twice the shadowed pixels, and grazing light on every upright face.
+TEST_F(ShadowMaskTest, LowSunAgreesWithTheRayCast)
+{
+    const scene::Scene scene = keyLightScene(25.0f);
+    const Truth truth = traceTruth(scene, kWidth, kHeight, std::nullopt);
+    const KeyLightFigures k = measureKeyLight(*this, "low sun", scene, scene, truth, 10000, kLowSunShadowedBound);
+    EXPECT_TRUE(k.failures.empty()) << joined(k.failures);
+}
+
+// Negative controls, on one configuration at half size: the metrics above must report each fault.
+
+constexpr std::uint32_t kControlWidth = kWidth / 2;
+constexpr std::uint32_t kControlHeight = kHeight / 2;
+
+// Each caster whose shadow the view shows away from edges, left out of the shadow pass (its material copied with
+// casting off) while the ray cast keeps it: its missing shadow must move the shadowed class below its bound. The
+// other casters' shadows fall outside the picture, on each other or within the edge margin at this sun.
+TEST_F(ShadowMaskTest, MissingCasterCatchesFault)
+{
+    const scene::Scene scene = keyLightScene();
+    const Truth truth = traceTruth(scene, kControlWidth, kControlHeight, std::nullopt);
+    for (const char* caster : {"standing cube", "large sphere", "clip panel", "long beam"}) {
+        const KeyLightFigures k = measureKeyLight(*this, std::string("without ") + caster, withoutCaster(scene, caster),
+                                                  scene, truth, 250, kKeyLightShadowedBound);
+        EXPECT_LT(k.truth.shadowed.share(), kKeyLightShadowedBound)
+            << "the shadow of '" << caster << "' is missing and nothing noticed";
     }
+}
+
+// Three times the normal bias pulls shadows off their casters (measured: 87.5% of the shadowed class right).
+TEST_F(ShadowMaskTest, TripledNormalBiasCatchesFault)
+{
+    const scene::Scene scene = keyLightScene(25.0f);
+    scene::Scene tripled = scene;
+    tripled.lights[0].normalBias *= 3.0f;
+    const Truth truth = traceTruth(scene, kControlWidth, kControlHeight, std::nullopt);
+    const KeyLightFigures k =
+        measureKeyLight(*this, "low sun, normal bias x3", tripled, scene, truth, 1000, kLowSunShadowedBound);
+    EXPECT_LT(k.truth.shadowed.share(), kLowSunShadowedBound) << "tripled normal bias went unnoticed";
+}
+
+// Without any bias the surfaces shadow themselves.
+TEST_F(ShadowMaskTest, RemovedBiasCatchesFault)
+{
+    const scene::Scene scene = keyLightScene();
+    scene::Scene unbiased = scene;
+    unbiased.lights[0].normalBias = 0.0f;
+    unbiased.lights[0].slopeScaleBias = 0.0f;
+    const Truth truth = traceTruth(scene, kControlWidth, kControlHeight, std::nullopt);
+    const KeyLightFigures k = measureKeyLight(*this, "no bias", unbiased, scene, truth, 250, kKeyLightShadowedBound);
+    EXPECT_GT(k.truth.acne(), k.truth.lit.compared / 1000) << "shadow acne without bias went unnoticed";
+}
+
+TEST_F(ShadowMaskTest, MissingPointCasterCatchesFault)
+{
+    const scene::Scene room = roomLitFromInside();
+    const scene::Scene broken = withoutCaster(room, "crate");
+    const ShadowMask mask = renderMask(broken, maskFrame({}, kControlWidth, kControlHeight));
+    const TruthFigures f =
+        report(*this, "room without crate", mask, traceTruth(room, kControlWidth, kControlHeight,
+                                                             room.pointLights[0].position));
+    EXPECT_FALSE(truthFailures(f, 250).empty()) << "the crate's missing shadow went unnoticed";
+}
+
+// Cube faces rendered 4 degrees narrower than the hardware samples them shift every point shadow towards the
+// face centres.
+TEST_F(ShadowMaskTest, NarrowCubeFacesCatchesFault)
+{
+    const scene::Scene room = roomLitFromInside();
+    shadows::ShadowSettings cubeMaps;
+    cubeMaps.other.pointMode = shadows::PointShadowMode::CubeMap;
+    const ShadowMask mask =
+        renderMask(room, maskFrame(cubeMaps, kControlWidth, kControlHeight), [&](render::ShadowPlans plans) {
+            plans.other = withPointFaceFieldOfView(std::move(plans.other), room, glm::radians(86.0f),
+                                                   gpu().conventions());
+            return plans;
+        });
+    const TruthFigures f = report(*this, "room with 86-degree cube faces", mask,
+                                  traceTruth(room, kControlWidth, kControlHeight, room.pointLights[0].position));
+    EXPECT_FALSE(truthFailures(f, 250).empty()) << "narrowed cube faces went unnoticed";
 }
 
 } // namespace
