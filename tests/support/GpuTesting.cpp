@@ -2,7 +2,9 @@
 
 #include "ImageFiles.hpp"
 
+#include <algorithm>
 #include <cstdlib>
+#include <string_view>
 #include <fmt/format.h>
 
 namespace penumbra::testing {
@@ -29,6 +31,33 @@ void expectNoDebugMessages(rhi::Device& device)
 {
     for (const std::string& message : device.debugMessages())
         ADD_FAILURE() << rhi::configurationName(device.desc()) << " debug message: " << message;
+}
+
+const std::vector<std::string>& compiledConfigurations()
+{
+    // PENUMBRA_TEST_CONFIGURATIONS is tests/CMakeLists.txt's `configurations` list, comma-separated.
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        std::string_view rest = PENUMBRA_TEST_CONFIGURATIONS;
+        while (!rest.empty()) {
+            const std::size_t comma = std::min(rest.find(','), rest.size());
+            out.emplace_back(rest.substr(0, comma));
+            rest.remove_prefix(std::min(comma + 1, rest.size()));
+        }
+        return out;
+    }();
+    return names;
+}
+
+void reportSkipped(const std::vector<SkippedConfiguration>& skipped)
+{
+    if (skipped.empty())
+        return;
+    std::string reasons;
+    for (const SkippedConfiguration& s : skipped)
+        reasons += fmt::format("\n  {}: {}", s.name, s.reason);
+    GTEST_SKIP() << skipped.size() << " of " << compiledConfigurations().size()
+                 << " compiled configurations unsupported by the driver:" << reasons;
 }
 
 void GpuTest::SetUp() { device = createValidatedDevice(configuration()); }

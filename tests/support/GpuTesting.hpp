@@ -17,6 +17,19 @@ namespace penumbra::testing {
 const std::string& configuration();
 void setConfiguration(std::string name);
 
+// The named configurations this build compiles (the PENUMBRA_VULKAN and PENUMBRA_OPENGL options), in
+// rhi::namedConfigurations() order: what a cross-configuration test has to run, not merely try.
+const std::vector<std::string>& compiledConfigurations();
+
+// A compiled configuration the driver refused (rhi::UnsupportedError), and its message.
+struct SkippedConfiguration {
+    std::string name;
+    std::string reason;
+};
+// Marks the running test skipped, naming each configuration and reason, when there are any; failures
+// the test recorded for the configurations that ran still fail it (GoogleTest's skip does not clear them).
+void reportSkipped(const std::vector<SkippedConfiguration>& skipped);
+
 // A device with validation / debug output on; any message it records fails the test.
 std::unique_ptr<rhi::Device> createValidatedDevice(const std::string& configuration);
 void expectNoDebugMessages(rhi::Device& device);
