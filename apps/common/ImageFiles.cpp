@@ -6,15 +6,23 @@
 #include <cmath>
 #include <fstream>
 #include <fmt/format.h>
+#include <unistd.h>
 #include <vector>
 
 namespace penumbra::apps {
 namespace {
 
+// Written first and renamed into place, so no reader sees half a file; named per process, so that two
+// processes writing the same file (tests running in parallel, two runs of the tool) never share one.
+std::filesystem::path temporaryFor(const std::filesystem::path& path)
+{
+    return fmt::format("{}.partial-{}{}", path.string(), ::getpid(), path.extension().string());
+}
+
 void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec, const void* pixels)
 {
     std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
-    const std::filesystem::path temporary = path.string() + ".partial" + path.extension().string();
+    const std::filesystem::path temporary = temporaryFor(path);
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out)
         throw rhi::Error(fmt::format("{}: no image writer: {}", path.string(), OIIO::geterror()));
@@ -72,7 +80,7 @@ void writePicture(const std::filesystem::path& path, const rhi::Image& image)
 void writeTextFile(const std::filesystem::path& path, std::string_view text)
 {
     std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
-    const std::filesystem::path temporary = path.string() + ".partial";
+    const std::filesystem::path temporary = temporaryFor(path);
     {
         std::ofstream out(temporary, std::ios::binary);
         out.write(text.data(), std::streamsize(text.size()));
