@@ -24,7 +24,7 @@ try {
         void main() { result = vec4(colour, 1.0); })"});
     auto pipeline = device->createPipeline({.vertex = vertex.get(), .fragment = fragment.get(), .colorTargets = {{}}});
     auto commands = device->createCommandList();
-    commands->beginPass({.framebuffer = target.get()});
+    commands->beginPass({.framebuffer = target.get(), .clearColor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)});
     commands->bindPipeline(*pipeline);
     commands->draw(3);
     commands->endPass();
