@@ -24,7 +24,8 @@ struct CascadeSelection {
     float strength; // distance and last-cascade fade
 };
 
-// saturate((1 - distance * scale) * fade), the design document's FadedShadowStrength.
+// saturate((1 - distance * scale) * fade): FadedShadowStrength of Catlike Coding's "Directional
+// Shadows" tutorial (section "Shadow Distance").
 float fadedShadowStrength(float distance, float scale, float fade)
 {
     return clamp((1.0 - distance * scale) * fade, 0.0, 1.0);
