@@ -77,14 +77,15 @@ LocalLight localLight(int i)
 // The visibility view: the raw filtered shadow of light `index` (directional lights first, then spot and point
 // lights) in red, green and blue, and in alpha whether that shadow map decides the pixel (1) or not (0: the
 // light does not reach it, it has no shadow there, or the material receives none).
-vec4 shadowVisibility(int index, vec3 n, CascadeSelection cascade, float globalStrength)
+vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascade, float globalStrength)
 {
     const bool receives = object.flags.x != 0;
     if (index < frame.config.x) {
         const int slot = receives ? int(frame.lightDirection[index].w) : -1;
         if (dot(n, -frame.lightDirection[index].xyz) <= 0.0 || !directionalShadowReaches(slot, cascade))
             return vec4(1.0, 1.0, 1.0, 0.0);
-        return vec4(vec3(directionalShadowVisibility(slot, cascade, vPosition, n)), 1.0);
+        const vec3 towardsLight = -frame.lightDirection[index].xyz;
+        return vec4(vec3(directionalShadowVisibility(slot, cascade, vPosition, geometric, towardsLight)), 1.0);
     }
     const int i = index - frame.config.x;
     const LocalLight light = localLight(i);
@@ -92,7 +93,7 @@ vec4 shadowVisibility(int index, vec3 n, CascadeSelection cascade, float globalS
     if (!receives || dot(n, light.l) <= 0.0 || light.falloff <= 0.0 || shadow.z < 0.0 || globalStrength <= 0.0)
         return vec4(1.0, 1.0, 1.0, 0.0);
     return vec4(vec3(otherShadowVisibility(int(shadow.z), light.isPoint, frame.localPosition[i].xyz,
-                                           frame.localAxis[i].xyz, vPosition, n)), 1.0);
+                                           frame.localAxis[i].xyz, vPosition, geometric)), 1.0);
 }
 
 void main()
@@ -106,13 +107,15 @@ void main()
 
     // Surfaces seen from behind (through clip holes) are shaded on the side the camera sees.
     const vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);
+    // The triangle's plane, for the shadows' normal offset (its sign does not matter: it is turned to each light).
+    const vec3 geometric = normalize(cross(dFdxFine(vPosition), dFdyFine(vPosition)));
     const vec3 toCamera = frame.cameraPosition.xyz - vPosition;
     const vec3 v = normalize(toCamera);
     const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);
     const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
     const float globalStrength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
     if (frame.config.y == PENUMBRA_VIEW_VISIBILITY) {
-        outColor = shadowVisibility(frame.config.w, n, cascade, globalStrength);
+        outColor = shadowVisibility(frame.config.w, n, geometric, cascade, globalStrength);
         return;
     }
 
@@ -124,7 +127,7 @@ void main()
         if (nl <= 0.0)
             continue;
         const int slot = object.flags.x != 0 ? int(frame.lightDirection[i].w) : -1;
-        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, n);
+        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric, l);
         color += brdf(n, v, l, base, object.surface.x, object.surface.y) * frame.lightColor[i].rgb * nl * attenuation;
     }
     for (int i = 0; i < frame.config.z; ++i) {
@@ -135,7 +138,7 @@ void main()
         const vec4 shadow = frame.localShadow[i];
         const vec2 shadowData = object.flags.x != 0 ? shadow.zw : vec2(-1.0, 0.0);
         const float attenuation = otherShadowAttenuation(shadowData, light.isPoint, frame.localPosition[i].xyz,
-                                                         frame.localAxis[i].xyz, vPosition, n, globalStrength);
+                                                         frame.localAxis[i].xyz, vPosition, geometric, globalStrength);
         color += brdf(n, v, light.l, base, object.surface.x, object.surface.y) * frame.localColor[i].rgb * nl *
                  light.falloff * attenuation;
     }
