@@ -298,7 +298,8 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     const std::vector<shadows::Bounds> bounds = gpuScene_.casterBounds();
     return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect),
                                             shadowLights(scene.lights), bounds),
-            shadows::planOtherShadows(frame.shadows, device_.conventions(), spotShadowInputs(scene.spotLights),
+            shadows::planOtherShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect),
+                                      spotShadowInputs(scene.spotLights),
                                       pointShadowInputs(scene.pointLights), bounds)};
 }
 

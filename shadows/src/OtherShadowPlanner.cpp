@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <optional>
+#include <string>
 
 namespace penumbra::shadows {
 namespace {
@@ -29,11 +33,34 @@ struct Reservations {
     std::uint32_t tileCount = 0;
 };
 
+// Why a light with shadows would shadow nothing the camera sees (the first design document's
+// GetShadowCasterBounds check, and its shadow distance), or nullopt.
+struct LightReach {
+    glm::vec3 position;
+    float range;
+    bool anyCaster; // a caster's box meets the light's frustum (spot) or range sphere (point)
+};
+
+std::optional<std::string> shadowsNothing(const LightReach& light, const ShadowCamera& camera, float maxDistance)
+{
+    if (!light.anyCaster)
+        return std::string("no shadow caster is within its reach");
+    const float nearestDepth = glm::dot(light.position - camera.position, camera.forward) - light.range;
+    if (nearestDepth > maxDistance)
+        return fmt::format("its reach begins at view depth {:.3g}, beyond the shadow distance {:.3g}", nearestDepth,
+                           maxDistance);
+    return std::nullopt;
+}
+
 void reserve(Reservations& r, OtherShadowPlan& plan, LocalLightKind kind, std::uint32_t index, float strength,
-             PointShadowMode mode)
+             PointShadowMode mode, const std::optional<std::string>& nothingToShadow)
 {
     if (!(strength > 0.0f)) {
         plan.report.push_back({kind, index, fmt::format("shadow strength is {}", strength)});
+        return;
+    }
+    if (nothingToShadow) {
+        plan.report.push_back({kind, index, *nothingToShadow});
         return;
     }
     if (kind == LocalLightKind::Point && mode == PointShadowMode::CubeMap) {
@@ -157,9 +184,17 @@ std::vector<std::uint32_t> cullCastersInFrustum(const glm::mat4& view, float fov
     return inside;
 }
 
+bool castersInRange(glm::vec3 position, float range, std::span<const Bounds> casterBounds)
+{
+    return std::any_of(casterBounds.begin(), casterBounds.end(), [&](const Bounds& b) {
+        const glm::vec3 nearest = glm::clamp(position, b.min, b.max);
+        return glm::dot(nearest - position, nearest - position) <= range * range;
+    });
+}
+
 OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
-                                 std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,
-                                 std::span<const Bounds> casterBounds)
+                                 const ShadowCamera& camera, std::span<const SpotShadowInput> spots,
+                                 std::span<const PointShadowInput> points, std::span<const Bounds> casterBounds)
 {
     validate(settings);
     const OtherShadowSettings& other = settings.other;
@@ -167,10 +202,20 @@ OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conv
     plan.spotTiles.assign(spots.size(), -1);
     plan.pointShadows.assign(points.size(), -1);
     Reservations r;
-    for (std::uint32_t i = 0; i < spots.size(); ++i)
-        reserve(r, plan, LocalLightKind::Spot, i, spots[i].strength, other.pointMode);
-    for (std::uint32_t i = 0; i < points.size(); ++i)
-        reserve(r, plan, LocalLightKind::Point, i, points[i].strength, other.pointMode);
+    for (std::uint32_t i = 0; i < spots.size(); ++i) {
+        const SpotShadowInput& spot = spots[i];
+        const bool anyCaster = !cullCastersInFrustum(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
+                                                     localShadowNearPlane(spot.range), spot.range, casterBounds)
+                                    .empty();
+        reserve(r, plan, LocalLightKind::Spot, i, spot.strength, other.pointMode,
+                shadowsNothing({spot.position, spot.range, anyCaster}, camera, settings.maxDistance));
+    }
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        const PointShadowInput& point = points[i];
+        const bool anyCaster = castersInRange(point.position, point.range, casterBounds);
+        reserve(r, plan, LocalLightKind::Point, i, point.strength, other.pointMode,
+                shadowsNothing({point.position, point.range, anyCaster}, camera, settings.maxDistance));
+    }
 
     plan.atlas = ShadowAtlasLayout(other.atlasSize, r.tileCount);
     for (const Reservation& reservation : r.atlas) {

@@ -59,6 +59,9 @@ TEST(PointFaceView, LooksAlongTheAxisUnmirrored)
     }
 }
 
+// One caster box around every light of these tests: each has something to shadow.
+const std::vector<Bounds> kEverywhere{{{-100.0f, -100.0f, -100.0f}, {100.0f, 100.0f, 100.0f}}};
+
 TEST(FovBias, MatchesTheDocumentsFormula)
 {
     // atan(1 + bias + filter) x 2 - 90 degrees, texel 2 / tile, filter = texel x (filter enum + 1).
@@ -80,7 +83,7 @@ TEST(SpotShadow, AxisHitsTheTileCentreAndTheConeEdgeItsBorder)
         const SpotShadowInput spot{.position = {0, 5, 0}, .direction = glm::normalize(glm::vec3(0.3f, -1, 0.2f)),
                                    .range = 20.0f, .outerAngle = glm::radians(30.0f)};
         ShadowSettings settings;
-        const OtherShadowPlan plan = planOtherShadows(settings, conventions, {&spot, 1}, {}, {});
+        const OtherShadowPlan plan = planOtherShadows(settings, conventions, {}, {&spot, 1}, {}, kEverywhere);
         ASSERT_EQ(plan.tiles.size(), 1u);
         const glm::vec3 onAxis = atlasPosition(plan, 0, spot.position + 7.0f * spot.direction);
         EXPECT_NEAR(onAxis.x, 0.5f, 1e-5f);
@@ -105,7 +108,7 @@ TEST(PointShadow, EachFaceTileHoldsItsDirection)
     for (const rhi::Conventions& conventions : allConventions()) {
         SCOPED_TRACE(conventionName(conventions));
         const PointShadowInput point{.position = {2, 3, -1}, .range = 10.0f};
-        const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, conventions, {}, {&point, 1}, {});
+        const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, conventions, {}, {}, {&point, 1}, kEverywhere);
         ASSERT_EQ(plan.tiles.size(), 6u);
         EXPECT_EQ(plan.pointShadows[0], 0);
         for (std::uint32_t f = 0; f < cubeFaceCount; ++f) {
@@ -129,7 +132,7 @@ TEST(OtherAtlas, TileBoundsAreTheTilesTexelsAndTilesAreUniformlySplit)
     const std::vector<SpotShadowInput> spots(5);
     ShadowSettings settings;
     settings.other.atlasSize = 512;
-    const OtherShadowPlan plan = planOtherShadows(settings, allConventions()[0], spots, {}, {});
+    const OtherShadowPlan plan = planOtherShadows(settings, allConventions()[0], {}, spots, {}, kEverywhere);
     EXPECT_EQ(plan.atlas.split(), 4u);
     EXPECT_EQ(plan.atlas.tileSize(), 128u);
     EXPECT_EQ(plan.uniforms.tileBounds[0], glm::vec4(0, 0, 127, 127));
@@ -147,7 +150,7 @@ TEST(OtherAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
     const std::vector<SpotShadowInput> spots(5);
     std::vector<PointShadowInput> points(3);
     points[1].strength = 0.0f;
-    const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, allConventions()[0], spots, points, {});
+    const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, allConventions()[0], {}, spots, points, kEverywhere);
     // 5 spots + 6 (point 0) = 11; point 1 casts nothing; point 2 needs 6 more, 5 are left.
     EXPECT_EQ(plan.atlas.tileCount(), 11u);
     EXPECT_EQ(plan.spotTiles, (std::vector<int>{0, 1, 2, 3, 4}));
@@ -160,7 +163,7 @@ TEST(OtherAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
     EXPECT_EQ(plan.report[1].reason, "needs 6 of the other atlas's 16 tiles, 5 are left");
 
     const std::vector<SpotShadowInput> many(18);
-    const OtherShadowPlan full = planOtherShadows(ShadowSettings{}, allConventions()[0], many, {}, {});
+    const OtherShadowPlan full = planOtherShadows(ShadowSettings{}, allConventions()[0], {}, many, {}, kEverywhere);
     EXPECT_EQ(full.atlas.tileCount(), 16u);
     EXPECT_EQ(full.spotTiles[16], -1);
     EXPECT_EQ(full.report.size(), 2u);
@@ -175,8 +178,30 @@ TEST(OtherAtlas, FrustumCullingKeepsOnlyCastersInTheCone)
                                       {{-1, 11, -1}, {1, 12, 1}},    // behind the light
                                       {{-1, -9, -1}, {1, -8, 1}},    // beyond the range
                                       {{3, 0, -0.5f}, {5, 1, 0.5f}}}; // reaching into the cone's edge
-    const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, allConventions()[0], {&spot, 1}, {}, casters);
+    const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, allConventions()[0], {}, {&spot, 1}, {}, casters);
     EXPECT_EQ(plan.tiles[0].view.casters, (std::vector<std::uint32_t>{0, 4}));
+}
+
+TEST(OtherAtlas, LightsThatShadowNothingInViewTakeNoTile)
+{
+    // Spot 0 shines down on the caster; spot 1 shines up, away from it; point 0 is 30 units from it with a range
+    // of 10; point 1 is beside it but 200 units ahead of the camera, beyond the shadow distance of 100.
+    const std::vector<Bounds> casters{{{-1, 0, -1}, {1, 1, 1}}};
+    const std::vector<SpotShadowInput> spots{{.position = {0, 5, 0}, .direction = {0, -1, 0}, .range = 10.0f},
+                                             {.position = {0, 5, 0}, .direction = {0, 1, 0}, .range = 10.0f}};
+    const std::vector<PointShadowInput> points{{.position = {30, 0, 0}, .range = 10.0f},
+                                               {.position = {0, 2, -205}, .range = 10.0f}};
+    const std::vector<Bounds> withFarCaster{casters[0], {{-1, 0, -206}, {1, 1, -204}}};
+    const ShadowCamera camera; // at the origin, looking down -z
+    const OtherShadowPlan plan =
+        planOtherShadows(ShadowSettings{}, allConventions()[0], camera, spots, points, withFarCaster);
+    EXPECT_EQ(plan.spotTiles, (std::vector<int>{0, -1}));
+    EXPECT_EQ(plan.pointShadows, (std::vector<int>{-1, -1}));
+    EXPECT_EQ(plan.atlas.tileCount(), 1u);
+    ASSERT_EQ(plan.report.size(), 3u);
+    EXPECT_EQ(plan.report[0].reason, "no shadow caster is within its reach");
+    EXPECT_EQ(plan.report[1].reason, "no shadow caster is within its reach");
+    EXPECT_EQ(plan.report[2].reason, "its reach begins at view depth 195, beyond the shadow distance 100");
 }
 
 } // namespace

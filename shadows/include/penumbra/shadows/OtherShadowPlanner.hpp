@@ -5,6 +5,7 @@
 #include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
 #include "penumbra/shadows/OtherShadowUniforms.hpp"
+#include "penumbra/shadows/ShadowCamera.hpp"
 #include "penumbra/shadows/ShadowAtlasLayout.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
@@ -73,11 +74,13 @@ struct OtherShadowPlan {
 
 // Plans the spot and point shadows of a frame: spot lights first, then point lights, take tiles of the
 // other atlas (one per spot light, six per point light in Atlas mode; up to 16) or, in CubeMap mode, a
-// cube each (up to maxShadowCubes). A light that casts no shadow (strength 0) or does not fit is listed in
-// the report with the reason, never an exception. Throws rhi::Error only for settings that fail validate().
+// cube each (up to maxShadowCubes). A light that casts no shadow (strength 0), shadows nothing the camera can
+// see (no caster's box meets its cone or range, or its range lies wholly beyond the shadow distance in the
+// camera's view depth) or does not fit is listed in the report with the reason, never an exception, and takes
+// no tile from the others. Throws rhi::Error only for settings that fail validate().
 OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
-                                 std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,
-                                 std::span<const Bounds> casterBounds);
+                                 const ShadowCamera& camera, std::span<const SpotShadowInput> spots,
+                                 std::span<const PointShadowInput> points, std::span<const Bounds> casterBounds);
 
 // Casters whose box meets a perspective view's frustum (a square field of view `fov` radians, near..far).
 std::vector<std::uint32_t> cullCastersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
