@@ -45,7 +45,7 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
     std::vector<shadows::SpotShadowInput> inputs;
     for (const scene::SpotLight& l : lights)
         inputs.push_back({l.position, l.direction, l.range, l.outerAngle, l.shadowStrength, l.normalBias,
-                          l.slopeScaleBias});
+                          l.slopeScaleBias, l.shadowNearPlane});
     return inputs;
 }
 
@@ -53,7 +53,7 @@ std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene
 {
     std::vector<shadows::PointShadowInput> inputs;
     for (const scene::PointLight& l : lights)
-        inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias});
+        inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias, l.shadowNearPlane});
     return inputs;
 }
 

@@ -78,10 +78,14 @@ void validateLight(const DirectionalLight& light, std::size_t index)
         throw SceneError(fmt::format("{}: shadowStrength {} is outside [0, 1]", what, light.shadowStrength));
 }
 
-void validateLocalLight(const std::string& what, float range, float strength)
+void validateLocalLight(const std::string& what, float range, float strength, float shadowNearPlane)
 {
     if (!(range > 0.0f && std::isfinite(range)))
         throw SceneError(fmt::format("{}: range {} must be positive and finite", what, range));
+    if (!(shadowNearPlane >= 0.0f && shadowNearPlane < range))
+        throw SceneError(fmt::format("{}: shadowNearPlane {} must be in [0, range {}) (0: the shadow settings' "
+                                     "other.nearPlane)",
+                                     what, shadowNearPlane, range));
     if (strength < 0.0f || strength > 1.0f)
         throw SceneError(fmt::format("{}: shadowStrength {} is outside [0, 1]", what, strength));
 }
@@ -95,12 +99,13 @@ void validateSpotLight(const SpotLight& light, std::size_t index)
     if (!(light.innerAngle >= 0.0f && light.innerAngle < light.outerAngle && light.outerAngle < 1.5707963f))
         throw SceneError(fmt::format("{}: angles inner {} outer {} need 0 <= inner < outer < pi/2 radians", what,
                                      light.innerAngle, light.outerAngle));
-    validateLocalLight(what, light.range, light.shadowStrength);
+    validateLocalLight(what, light.range, light.shadowStrength, light.shadowNearPlane);
 }
 
 void validatePointLight(const PointLight& light, std::size_t index)
 {
-    validateLocalLight(describe("point light", index, light.name), light.range, light.shadowStrength);
+    validateLocalLight(describe("point light", index, light.name), light.range, light.shadowStrength,
+                       light.shadowNearPlane);
 }
 
 void validateCamera(const Camera& camera)

@@ -56,7 +56,10 @@ glm::mat4 spotView(glm::vec3 position, glm::vec3 direction)
     return glm::lookAtRH(position, position + direction, up);
 }
 
-float localShadowNearPlane(float range) { return 0.01f * range; }
+float localShadowNearPlane(float range, float lightNearPlane, const OtherShadowSettings& settings)
+{
+    return lightNearPlane > 0.0f ? lightNearPlane : settings.nearPlane * range;
+}
 
 float texelSizeAtUnitDistance(const glm::mat4& projection, std::uint32_t tileSize)
 {

@@ -111,7 +111,7 @@ void planSpot(OtherShadowPlan& plan, const OtherShadowSettings& other, const Spo
               std::uint32_t tile, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     const float fov = 2.0f * spot.outerAngle;
-    const float nearPlane = localShadowNearPlane(spot.range);
+    const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, other);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
     const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), other.filter, spot.normalBias);
     addTile(plan, tile,
@@ -125,7 +125,7 @@ void planPointTiles(OtherShadowPlan& plan, const OtherShadowSettings& other, con
                     std::span<const Bounds> casterBounds)
 {
     const float fov = pointFaceFieldOfView(plan.atlas.tileSize(), other.filter, point.normalBias);
-    const float nearPlane = localShadowNearPlane(point.range);
+    const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, other);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, point.range);
     const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), other.filter, point.normalBias);
     for (std::uint32_t face = 0; face < cubeFaceCount; ++face)
@@ -140,7 +140,7 @@ void planCube(OtherShadowPlan& plan, const OtherShadowSettings& other, const Poi
               std::uint32_t pointIndex, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     constexpr float kRightAngle = 1.57079633f;
-    const float nearPlane = localShadowNearPlane(point.range);
+    const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, other);
     const glm::mat4 projection = rhi::cubeFaceProjection(conventions, nearPlane, point.range);
     // Window depth of major-axis distance z is (a * -z + b) / z: the projection's depth row through clipToTexture.
     const glm::mat4 toTexture = conventions.clipToTexture() * projection;
@@ -205,7 +205,8 @@ OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conv
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& spot = spots[i];
         const bool anyCaster = !cullCastersInFrustum(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
-                                                     localShadowNearPlane(spot.range), spot.range, casterBounds)
+                                                     localShadowNearPlane(spot.range, spot.nearPlane, other), spot.range,
+                                                     casterBounds)
                                     .empty();
         reserve(r, plan, LocalLightKind::Spot, i, spot.strength, other.pointMode,
                 shadowsNothing({spot.position, spot.range, anyCaster}, camera, settings.maxDistance));

@@ -46,7 +46,7 @@ SettingsProblem outOfRange(std::string field, std::string value)
 
 std::string_view allowedValues(std::string_view field)
 {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 14> table{{
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 15> table{{
         {"maxDistance", "> 0.001"},
         {"distanceFade", "0.001..1"},
         {"directional.atlasSize", "powers of two 256..8192"},
@@ -61,6 +61,7 @@ std::string_view allowedValues(std::string_view field)
         {"other.atlasFormat", "d16, d24s8, d32f"},
         {"other.pointMode", "atlas, cubemap"},
         {"other.cubeMapSize", "powers of two 64..4096"},
+        {"other.nearPlane", "0.0001..0.5"},
     }};
     for (const auto& [name, allowed] : table)
         if (name == field)
@@ -87,6 +88,8 @@ std::optional<SettingsProblem> findOtherSettingsProblem(const OtherShadowSetting
         return outOfRange("other.pointMode", fmt::format("{}", static_cast<int>(o.pointMode)));
     if (!powerOfTwoWithin(o.cubeMapSize, 64, 4096))
         return outOfRange("other.cubeMapSize", fmt::format("{}", o.cubeMapSize));
+    if (!within(o.nearPlane, 0.0001f, 0.5f))
+        return outOfRange("other.nearPlane", fmt::format("{}", o.nearPlane));
     return std::nullopt;
 }
 

@@ -149,8 +149,10 @@ void readOther(const Json& object, std::string_view source, OtherShadowSettings&
             o.pointMode = r.enumeration(value, key, pointModeNames);
         else if (key == "cubeMapSize")
             o.cubeMapSize = r.integer(value, key);
+        else if (key == "nearPlane")
+            o.nearPlane = r.number(value, key);
         else
-            r.unknown(key, "atlasSize, filter, atlasFormat, pointMode, cubeMapSize");
+            r.unknown(key, "atlasSize, filter, atlasFormat, pointMode, cubeMapSize, nearPlane");
     }
 }
 
@@ -203,6 +205,7 @@ std::string toJson(const ShadowSettings& s)
     other["atlasFormat"] = nameOf(formatNames, o.atlasFormat);
     other["pointMode"] = nameOf(pointModeNames, o.pointMode);
     other["cubeMapSize"] = o.cubeMapSize;
+    other["nearPlane"] = o.nearPlane;
     nlohmann::ordered_json root;
     root["maxDistance"] = s.maxDistance;
     root["distanceFade"] = s.distanceFade;

@@ -103,6 +103,12 @@ TEST(SceneTest, SpotAndPointLightsOutOfRangeAreRejectedByName)
     scene.pointLights.push_back({.name = "bulb", .range = 0.0f});
     message = validationMessage(scene);
     EXPECT_NE(message.find("point light 0 ('bulb'): range"), std::string::npos) << message;
+
+    scene = twoObjectScene();
+    scene.pointLights.push_back({.name = "bulb", .range = 5.0f, .shadowNearPlane = 5.0f});
+    message = validationMessage(scene);
+    EXPECT_NE(message.find("point light 0 ('bulb'): shadowNearPlane 5 must be in [0, range 5)"), std::string::npos)
+        << message;
 }
 
 TEST(MaterialTest, ClipAlphaIsACheckerOfBaseAlpha)

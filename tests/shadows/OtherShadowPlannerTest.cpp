@@ -182,6 +182,19 @@ TEST(OtherAtlas, FrustumCullingKeepsOnlyCastersInTheCone)
     EXPECT_EQ(plan.tiles[0].view.casters, (std::vector<std::uint32_t>{0, 4}));
 }
 
+TEST(OtherAtlas, NearPlaneIsTheLightsOwnOrTheSettingsFractionOfItsRange)
+{
+    const rhi::Conventions& conventions = allConventions()[0];
+    ShadowSettings settings;
+    settings.other.nearPlane = 0.05f;
+    const std::vector<SpotShadowInput> spots{{.position = {0, 5, 0}, .range = 20.0f},
+                                             {.position = {0, 5, 0}, .range = 20.0f, .nearPlane = 0.25f}};
+    const OtherShadowPlan plan = planOtherShadows(settings, conventions, {}, spots, {}, kEverywhere);
+    ASSERT_EQ(plan.tiles.size(), 2u);
+    EXPECT_EQ(plan.tiles[0].view.projection, conventions.perspective(2.0f * spots[0].outerAngle, 1.0f, 1.0f, 20.0f));
+    EXPECT_EQ(plan.tiles[1].view.projection, conventions.perspective(2.0f * spots[1].outerAngle, 1.0f, 0.25f, 20.0f));
+}
+
 TEST(OtherAtlas, LightsThatShadowNothingInViewTakeNoTile)
 {
     // Spot 0 shines down on the caster; spot 1 shines up, away from it; point 0 is 30 units from it with a range

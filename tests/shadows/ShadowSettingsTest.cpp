@@ -27,6 +27,7 @@ void expectEqual(const ShadowSettings& a, const ShadowSettings& b)
     EXPECT_EQ(a.other.atlasFormat, b.other.atlasFormat);
     EXPECT_EQ(a.other.pointMode, b.other.pointMode);
     EXPECT_EQ(a.other.cubeMapSize, b.other.cubeMapSize);
+    EXPECT_EQ(a.other.nearPlane, b.other.nearPlane);
 }
 
 ShadowSettings unusualSettings()
@@ -46,6 +47,7 @@ ShadowSettings unusualSettings()
     s.other.atlasFormat = rhi::Format::D16;
     s.other.pointMode = PointShadowMode::CubeMap;
     s.other.cubeMapSize = 256;
+    s.other.nearPlane = 0.0375f;
     return s;
 }
 
@@ -131,6 +133,8 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
               "shadows.json: other.atlasSize: 100 is out of range, allowed powers of two 256..8192");
     EXPECT_EQ(parseError(R"({"other": {"cubeMapSize": 8192}})"),
               "shadows.json: other.cubeMapSize: 8192 is out of range, allowed powers of two 64..4096");
+    EXPECT_EQ(parseError(R"({"other": {"nearPlane": 0.6}})"),
+              "shadows.json: other.nearPlane: 0.6 is out of range, allowed 0.0001..0.5");
     EXPECT_EQ(parseError(R"({"directional": {"blend": "soft"}})"),
               "shadows.json: directional.blend: unknown field, allowed atlasSize, filter, cascadeCount, "
               "cascadeRatios, cascadeFade, cascadeBlend, atlasFormat");

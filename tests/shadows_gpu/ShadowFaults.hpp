@@ -34,7 +34,8 @@ inline shadows::DirectionalShadowPlan withoutTexelSnap(shadows::DirectionalShado
 // less leaves strips of directions that no face covers. Tiles keep their normal bias; cube maps are still
 // sampled as 90-degree faces.
 inline shadows::OtherShadowPlan withPointFaceFieldOfView(shadows::OtherShadowPlan plan, const scene::Scene& scene,
-                                                         float fov, const rhi::Conventions& conventions)
+                                                         float fov, const rhi::Conventions& conventions,
+                                                         const shadows::OtherShadowSettings& settings = {})
 {
     for (std::size_t i = 0; i < scene.pointLights.size(); ++i) {
         const int first = plan.pointShadows.at(i);
@@ -42,7 +43,8 @@ inline shadows::OtherShadowPlan withPointFaceFieldOfView(shadows::OtherShadowPla
             continue;
         const scene::PointLight& light = scene.pointLights[i];
         const glm::mat4 projection =
-            conventions.perspective(fov, 1.0f, shadows::localShadowNearPlane(light.range), light.range);
+            conventions.perspective(fov, 1.0f, shadows::localShadowNearPlane(light.range, light.shadowNearPlane, settings),
+                                    light.range);
         for (const shadows::CubeFace face : rhi::allCubeFaces) {
             const auto f = static_cast<std::uint32_t>(face);
             if (plan.cubes.empty()) {

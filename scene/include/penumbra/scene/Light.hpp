@@ -32,6 +32,7 @@ struct SpotLight {
     float shadowStrength = 1.0f;            // 0: shadows ignored, 1: fully dark
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f; // receiver offset in filter-sized texel diagonals at the receiver's distance
+    float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
 };
 
 // An omnidirectional light; its shadow is six cube faces.
@@ -44,6 +45,7 @@ struct PointLight {
     float shadowStrength = 1.0f;
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f;
+    float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
 };
 
 // A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.

@@ -30,9 +30,9 @@ glm::mat4 pointFaceView(CubeFace face, glm::vec3 position);
 // A right-handed camera at `position` looking along `direction` (unit), with any stable up vector.
 glm::mat4 spotView(glm::vec3 position, glm::vec3 direction);
 
-// Near plane of spot and point shadow projections: 1% of the range keeps 32-bit and 24-bit depth
-// resolution at the far end while casters closer than that to the light are rare.
-float localShadowNearPlane(float range);
+// Near plane of a spot or point shadow projection: the light's own (`lightNearPlane`, world units) or, where it
+// sets none (0), `settings.nearPlane` times its range.
+float localShadowNearPlane(float range, float lightNearPlane, const OtherShadowSettings& settings);
 
 // World-space texel size at distance 1 from the light plane: the tile spans 2 / projection[0][0]
 // there (twice the tangent of half the field of view).

@@ -24,6 +24,7 @@ struct SpotShadowInput {
     float strength = 1.0f;
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
+    float nearPlane = 0.0f; // world units; 0: OtherShadowSettings::nearPlane x range
 };
 
 struct PointShadowInput {
@@ -32,6 +33,7 @@ struct PointShadowInput {
     float strength = 1.0f;
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
+    float nearPlane = 0.0f; // world units; 0: OtherShadowSettings::nearPlane x range
 };
 
 enum class LocalLightKind : std::uint8_t { Spot, Point };

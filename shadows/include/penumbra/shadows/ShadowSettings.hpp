@@ -47,6 +47,10 @@ struct OtherShadowSettings {
     rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
     PointShadowMode pointMode = PointShadowMode::Atlas;
     std::uint32_t cubeMapSize = 512; // CubeMap mode: texels per face side, a power of two in 64..4096
+    // Near plane of a spot or point shadow projection as a fraction of the light's range, 0.0001..0.5, for lights
+    // that set none: 1% keeps 32-bit and 24-bit depth resolution at the far end, while casters nearer than that to
+    // the light are rare.
+    float nearPlane = 0.01f;
 };
 
 struct ShadowSettings {
