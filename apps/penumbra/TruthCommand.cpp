@@ -62,7 +62,18 @@ scene::TraceProgress progressBar(std::string what)
 
 std::string percent(double share) { return fmt::format("{:.3f}%", 100.0 * share); }
 
-nlohmann::json lightReport(const LightTruth& t)
+// The shadowed class by the caster nearest each receiver, so that a missing or misplaced caster can be found.
+nlohmann::json casterReport(const scene::Scene& scene, const scene::TruthComparison& c)
+{
+    nlohmann::json casters = nlohmann::json::array();
+    for (const auto& [object, figures] : c.shadowedBy)
+        casters.push_back({{"name", scene.objects.at(object).name},
+                           {"shadowedCompared", figures.compared},
+                           {"shadowedAgreement", figures.share()}});
+    return casters;
+}
+
+nlohmann::json lightReport(const scene::Scene& scene, const LightTruth& t)
 {
     const scene::TruthComparison& c = t.comparison;
     return {{"name", t.name},
@@ -80,7 +91,8 @@ nlohmann::json lightReport(const LightTruth& t)
             {"litNearEdges", c.lit.nearEdges},
             {"shadowedNearEdges", c.shadowed.nearEdges},
             {"litUndecided", c.lit.undecided},
-            {"shadowedUndecided", c.shadowed.undecided}};
+            {"shadowedUndecided", c.shadowed.undecided},
+            {"casters", casterReport(scene, c)}};
 }
 
 void truth(const TruthOptions& options)
@@ -131,7 +143,7 @@ void truth(const TruthOptions& options)
         t.contactGapTexels = scene::contactGapTexels(
             t.comparison, gbuffer, shadowRays, render::truthRays(scene, t.light),
             [&](glm::vec3 position) { return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position); });
-        report["lights"].push_back(lightReport(t));
+        report["lights"].push_back(lightReport(scene, t));
     }
 
     // Everything is computed before the first file is written: a failure leaves no partial report.

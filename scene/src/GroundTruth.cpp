@@ -111,7 +111,8 @@ LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowR
     if (shadowRays.kind() != RayKind::Shadow)
         throw std::invalid_argument("traceVisibility needs a RayCaster built with RayKind::Shadow");
     LightVisibilityMask mask{gbuffer.width, gbuffer.height,
-                             std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background)};
+                             std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background),
+                             std::vector<std::uint32_t>(gbuffer.samples.size(), kNoObject)};
     forEachRow(
         gbuffer.height,
         [&](std::uint32_t y) {
@@ -124,10 +125,13 @@ LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowR
                     mask.pixels[i] = LightVisibility::NotReceiving;
                 else if (glm::dot(sample.normal, ray.direction) <= 0.0f)
                     mask.pixels[i] = LightVisibility::FacingAway;
-                else
-                    mask.pixels[i] = shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance)
-                                         ? LightVisibility::Shadowed
-                                         : LightVisibility::Lit;
+                else if (!shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance))
+                    mask.pixels[i] = LightVisibility::Lit;
+                else {
+                    mask.pixels[i] = LightVisibility::Shadowed;
+                    const std::optional<Hit> blocker = shadowRays.closestHit(ray.origin, ray.direction, ray.maxDistance);
+                    mask.blockers[i] = blocker ? blocker->object : kNoObject;
+                }
             }
         },
         progress);

@@ -90,7 +90,7 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
         throw std::invalid_argument("compareWithTruth: the G-buffer, the ray-cast visibility and the rendered "
                                     "visibility must have the same size");
     TruthComparison c{truth.width, truth.height,
-                      std::vector<TruthVerdict>(truth.pixels.size(), TruthVerdict::NotCompared), {}, {}};
+                      std::vector<TruthVerdict>(truth.pixels.size(), TruthVerdict::NotCompared), {}, {}, {}};
     for (std::uint32_t y = 0; y < truth.height; ++y)
         for (std::uint32_t x = 0; x < truth.width; ++x) {
             const std::size_t i = std::size_t(y) * truth.width + x;
@@ -110,6 +110,11 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
                 ++figures.compared;
                 const bool shadowedRendered = rendered.lit[i] < kShadowedBelow;
                 figures.right += shadowedRendered == shadowedTruly;
+                if (shadowedTruly && !truth.blockers.empty() && truth.blockers[i] != kNoObject) {
+                    TruthClassFigures& caster = c.shadowedBy[truth.blockers[i]];
+                    ++caster.compared;
+                    caster.right += shadowedRendered;
+                }
                 verdict = shadowedTruly ? (shadowedRendered ? TruthVerdict::ShadowedRight : TruthVerdict::Leak)
                                         : (shadowedRendered ? TruthVerdict::Acne : TruthVerdict::LitRight);
             }

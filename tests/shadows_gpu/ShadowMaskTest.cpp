@@ -326,9 +326,11 @@ constexpr std::uint32_t kControlHeight = kHeight / 2;
 
 // Each caster left out of the shadow pass (its material copied with casting off) while the ray cast keeps it. Where
 // the ray cast of the scene without it turns compared pixels lit (its own shadow, not covered by another's, away
-// from the other casters' shadow edges), the metric must report those pixels as leaks; where they are more than 1% of the shadowed class, its missing shadow
-// must move the class below its bound. Casters whose shadow falls outside the view or inside other shadows
-// have no such pixels (printed).
+// from the other casters' shadow edges), the metric must report those pixels as leaks, and the caster's own figure
+// (the shadowed pixels it is the nearest caster to) must fall below the bound; where they are more than 0.5% of the
+// whole shadowed class, the class must fall below its bound too. Casters whose shadow falls outside the view or
+// inside other shadows have no such pixels (printed). Measured: 11 of the 14 casters have them, 7 move the whole
+// class below 99.5% (the long beam's shadow is most of it).
 TEST_F(ShadowMaskTest, MissingCasterCatchesFault)
 {
     const scene::Scene scene = keyLightScene(kLowSunPitchDegrees);
@@ -351,8 +353,16 @@ TEST_F(ShadowMaskTest, MissingCasterCatchesFault)
                 reported += v == scene::TruthVerdict::Leak;
             }
         }
-        std::printf("[ caster   ] %s: %zu compared pixels in its own shadow, %zu reported as leaks\n",
-                    caster.name.c_str(), exclusive, reported);
+        const std::uint32_t index = *scene.findObject(caster.name);
+        const auto own = k.truth.shadowedBy.find(index);
+        const scene::TruthClassFigures figures = own == k.truth.shadowedBy.end() ? scene::TruthClassFigures{} : own->second;
+        std::printf("[ caster   ] %s: %zu compared pixels in its own shadow, %zu reported as leaks; of the %zu it is "
+                    "nearest to, %.1f%% right\n",
+                    caster.name.c_str(), exclusive, reported, figures.compared, 100.0 * figures.share());
+        if (exclusive > 0) {
+            EXPECT_LT(figures.share(), kClassBound)
+                << "the shadowed pixels nearest to '" << caster.name << "' did not notice its missing shadow";
+        }
         EXPECT_GE(reported, exclusive * 95 / 100) << "the shadow of '" << caster.name << "' is missing where the ray "
                                                   << "cast says it falls, and the metric did not see it";
         if (double(exclusive) > (1.0 - kClassBound) * double(k.truth.shadowed.compared)) {

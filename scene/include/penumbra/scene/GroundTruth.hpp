@@ -81,6 +81,8 @@ struct LightVisibilityMask {
     std::uint32_t width = 0;
     std::uint32_t height = 0;
     std::vector<LightVisibility> pixels; // row-major, row 0 at the top
+    // Where Shadowed: the object the shadow ray meets first (the caster nearest the receiver); kNoObject elsewhere.
+    std::vector<std::uint32_t> blockers;
 
     LightVisibility at(std::uint32_t x, std::uint32_t y) const { return pixels[std::size_t(y) * width + x]; }
 };

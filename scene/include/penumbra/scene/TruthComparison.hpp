@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <vector>
 
 namespace penumbra::scene {
@@ -53,6 +54,9 @@ struct TruthComparison {
     std::vector<TruthVerdict> verdicts; // row-major, row 0 at the top
     TruthClassFigures lit;
     TruthClassFigures shadowed;
+    // The shadowed class by the caster nearest each receiver (LightVisibilityMask::blockers): a missing or
+    // misplaced caster shows in its own figures however small its shadow is beside the others.
+    std::map<std::uint32_t, TruthClassFigures> shadowedBy;
 
     std::size_t compared() const { return lit.compared + shadowed.compared; }
     std::size_t acne() const { return lit.compared - lit.right; }
