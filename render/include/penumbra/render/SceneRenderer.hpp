@@ -26,6 +26,9 @@ struct FrameDesc {
     shadows::ShadowSettings shadows;
     glm::vec3 ambient{0.03f};
     bool cascadeView = false; // also render the lit image tinted by cascade index
+    // Anisotropic filtering of the scene's trilinear textures, at least 1 (off); more than the device offers is
+    // clamped to its limit (1 where it has none), and the frame's notes say so.
+    float maxAnisotropy = 8.0f;
 };
 
 struct FrameStats {
@@ -35,7 +38,8 @@ struct FrameStats {
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
     std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
-    // Lights drawn without shadows, or not drawn at all, and why (the same as SceneRenderer::notes()).
+    // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
+    // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
 };
 
@@ -60,11 +64,13 @@ public:
 
     // render(camera, frame, planShadows(camera, frame)).
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
-    // Throws rhi::Error for settings out of range (naming the field), a zero-sized frame, or plans whose
-    // atlases do not match the frame's settings.
+    // Throws rhi::Error for settings out of range (naming the field; maxAnisotropy below 1 too), a zero-sized
+    // frame, or plans whose atlases do not match the frame's settings.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
     const rhi::Texture& litImage() const { return *lit_; }
+    // The scene's buffers, textures and samplers as the last frame drew them.
+    const GpuScene& gpuScene() const { return gpuScene_; }
     const rhi::Texture& cascadeImage() const { return *cascades_; }
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
@@ -73,7 +79,8 @@ public:
     const shadows::OtherShadowPlan& otherPlan() const { return otherPlan_; }
     // Point shadow cube maps (PointShadowMode::CubeMap; one unused cube otherwise).
     const shadows::ShadowCubes& shadowCubes() const { return *shadowCubes_; }
-    // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights, maxLitLocalLights).
+    // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights, maxLitLocalLights), and
+    // why textures get less anisotropy than FrameDesc::maxAnisotropy.
     const std::vector<std::string>& notes() const { return notes_; }
 
 private:
