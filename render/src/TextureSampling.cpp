@@ -2,7 +2,6 @@
 
 #include "penumbra/rhi/Error.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
 
 namespace penumbra::render {
