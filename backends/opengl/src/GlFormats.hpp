@@ -30,7 +30,7 @@ GLenum glBlendFactor(rhi::BlendFactor factor);
 GLenum glBlendEquation(rhi::BlendOp op);
 GLenum glPrimitive(rhi::PrimitiveTopology topology);
 GLenum glFilter(rhi::Filter filter);
-// GL folds the mip filter into the minification filter (GL 4.5 table 8.19).
+// GL folds the mip filter into the minification filter (GL 4.5 section 8.14).
 GLenum glMinFilter(rhi::Filter filter, rhi::MipFilter mip);
 GLenum glWrap(rhi::AddressMode mode);
 

@@ -15,7 +15,8 @@ enum class Format : std::uint8_t {
     D24S8,   // unsigned normalised 24-bit depth, 8-bit stencil
     D32F,    // 32-bit float depth
     // sRGB-encoded colour, linear alpha: sampling decodes to linear light before filtering, rendering
-    // encodes (Vulkan 1.3 section 16.3.1, GL 4.5 section 8.24); copies and readbacks move the encoded bytes.
+    // encodes (Vulkan 1.3, "Format Conversion" of texel input; GL 4.5 section 8.24); copies and readbacks move
+    // the encoded bytes.
     RGBA8_SRGB,
     R8,      // unsigned normalised; sampled as (r, 0, 0, 1)
     RG8,     // unsigned normalised; sampled as (r, g, 0, 1)

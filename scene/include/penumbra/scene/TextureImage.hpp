@@ -22,7 +22,7 @@ struct TextureSampler {
 };
 
 // Colour textures (base colour, emissive) hold sRGB-encoded colour, data textures linear values (glTF 2.0,
-// section 3.9.6); the GPU decodes sRGB when it samples.
+// section 3.9, materials); the GPU decodes sRGB when it samples.
 enum class TextureColorSpace : std::uint8_t { Srgb, Linear };
 
 // A decoded texture: RGBA8, 4 bytes per texel, row 0 at the top (v = 0, as in the RHI and in
