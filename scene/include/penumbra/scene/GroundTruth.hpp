@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -59,10 +60,14 @@ struct CpuGBuffer {
     const GBufferSample& at(std::uint32_t x, std::uint32_t y) const { return samples[std::size_t(y) * width + x]; }
 };
 
+// Called on the calling thread while a trace runs: rows finished so far, and of how many. The traces use every
+// hardware thread; their results do not depend on how many there are.
+using TraceProgress = std::function<void(std::uint32_t done, std::uint32_t rows)>;
+
 // `cameraRays` must be built from `scene` with RayKind::Camera (throws std::invalid_argument
 // otherwise).
 CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const Camera& camera, std::uint32_t width,
-                        std::uint32_t height);
+                        std::uint32_t height, const TraceProgress& progress = {});
 
 enum class LightVisibility : std::uint8_t {
     Background,   // no surface
@@ -84,13 +89,29 @@ struct LightVisibilityMask {
 // float rounding at the test scene's 60-unit scale, far below any feature a test measures.
 inline constexpr float kShadowRayOffset = 1e-3f;
 
-// For every G-buffer sample: an occlusion ray from position + normal * normalOffset towards
-// -light.direction. `shadowRays` must be built with RayKind::Shadow (throws
-// std::invalid_argument otherwise).
+// A shadow ray towards a light, from a given origin.
+struct ShadowRay {
+    glm::vec3 origin;
+    glm::vec3 direction; // unit, towards the light
+    float maxDistance;   // to the light; infinite for a directional light
+};
+using ShadowRayFrom = std::function<ShadowRay(glm::vec3 origin)>;
+ShadowRayFrom raysTowards(const DirectionalLight& light);
+ShadowRayFrom raysTowards(glm::vec3 lightPosition);
+
+// Where a sample's shadow ray leaves: position + normal * normalOffset.
+glm::vec3 shadowRayOrigin(const GBufferSample& sample, float normalOffset = kShadowRayOffset);
+
+// For every G-buffer sample: an occlusion ray from shadowRayOrigin(sample, normalOffset) towards the light.
+// `shadowRays` must be built with RayKind::Shadow (throws std::invalid_argument otherwise).
+LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                    const ShadowRayFrom& rayFrom, float normalOffset = kShadowRayOffset,
+                                    const TraceProgress& progress = {});
+
+// traceVisibility towards a directional light (rays along -light.direction) or a spot or point light at
+// `lightPosition` (rays end at the light).
 LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                          const DirectionalLight& light, float normalOffset = kShadowRayOffset);
-
-// The same for a spot or point light at `lightPosition`: rays end at the light.
 LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
                                                    const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
                                                    float normalOffset = kShadowRayOffset);

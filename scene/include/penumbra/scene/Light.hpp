@@ -2,6 +2,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <string>
 
 namespace penumbra::scene {
@@ -45,9 +46,20 @@ struct PointLight {
     float normalBias = 1.0f;
 };
 
+// A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.
+enum class LightKind : std::uint8_t { Directional, Spot, Point };
+struct LightRef {
+    LightKind kind = LightKind::Directional;
+    std::uint32_t index = 0;
+};
+
+// "directional light", "spot light" or "point light".
+const char* lightKindName(LightKind kind);
+
 // Unit light direction for a light pitched `pitch` radians below the horizon and turned
 // `yaw` radians about +y, measured from +z towards +x (yaw 0 shines towards +z).
-// The seeds set lights up the same way (X rotation, then Y rotation).
+// Pitch turns about +x first and yaw about +y after it, so yaw never tilts the light: the
+// elevation stays `pitch` whatever the yaw.
 glm::vec3 lightDirection(float pitch, float yaw);
 
 } // namespace penumbra::scene

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/scene/TextureImage.hpp"
+
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
@@ -42,8 +44,12 @@ inline constexpr float kClipCheckerCells = 5.0f;
 //   can predict. The lit pass clips the surface with the same alpha and cutoff, so the holes
 //   are visible from the camera too; shaders must implement this exact function.
 // - Every other mode: baseColor.a.
-// Textured materials multiply baseColor.a by the texture's alpha instead, in the shaders; this CPU
-// reference (the ground truth's) does not sample textures.
-float materialAlpha(const Material& material, glm::vec2 uv);
+// - Textured materials (`baseColor` is the material's baseColorTexture): baseColor.a times the texture's alpha
+//   (textureAlpha) instead of the checker, in every mode, as the shaders do.
+float materialAlpha(const Material& material, glm::vec2 uv, const TextureImage* baseColor = nullptr);
+
+// The texture's alpha at `uv`: bilinear between texel centres on its full-size level, repeating, as the
+// passes' repeat sampler gives it where no smaller mip level is selected.
+float textureAlpha(const TextureImage& texture, glm::vec2 uv);
 
 } // namespace penumbra::scene

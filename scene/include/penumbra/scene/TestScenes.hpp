@@ -4,8 +4,7 @@
 
 namespace penumbra::scene {
 
-// The design document's shadow test scene (after the seeds' "plane with some opaque
-// objects, four directional lights 90 degrees apart"): a 60 x 60 ground plane at y = 0;
+// The shadow test scene, one place for every shadow artefact to show: a 60 x 60 ground plane at y = 0;
 // cubes, spheres and cylinders standing on it (their lowest points exactly at y = 0, so
 // peter-panning shows as a gap at the contact) and floating above it; a wall for
 // slope-bias acne; an 80-unit beam that runs from in front of the camera to far behind it
@@ -28,5 +27,11 @@ Scene makeMixedLightsScene();
 // "inside" at (0.5, 2, 0.3); the point light "outside" sits 0.4 behind the +z wall, shining at it.
 // The camera stands inside near the -z wall looking at the +z wall.
 Scene makePointLightRoomScene();
+
+// A forest for real-content shadows and benchmarks: an 80 x 80 heightfield terrain (2 450 triangles), five trees
+// of about 5 000 triangles each (an opaque trunk and branches, alpha-tested leaf cards cut out by a leaf texture
+// generated here), a camera standing among them at eye height (made for 16:9, 1280 x 720) and one sun, 40 degrees
+// up. Objects: "terrain", "tree N wood" and "tree N leaves" for N = 1..5.
+Scene makeForestScene();
 
 } // namespace penumbra::scene

@@ -81,6 +81,8 @@ namespace penumbra::opengl {
     X(GetStringi, GETSTRINGI)                                                                                          \
     X(GetTextureSubImage, GETTEXTURESUBIMAGE)                                                                          \
     X(GetUniformLocation, GETUNIFORMLOCATION)                                                                          \
+    X(IsProgram, ISPROGRAM)                                                                                            \
+    X(IsVertexArray, ISVERTEXARRAY)                                                                                    \
     X(LinkProgram, LINKPROGRAM)                                                                                        \
     X(MapNamedBufferRange, MAPNAMEDBUFFERRANGE)                                                                        \
     X(NamedBufferStorage, NAMEDBUFFERSTORAGE)                                                                          \

@@ -1,0 +1,46 @@
+#pragma once
+
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/Image.hpp"
+#include "penumbra/scene/Light.hpp"
+#include "penumbra/scene/TruthComparison.hpp"
+
+#include <glm/vec3.hpp>
+
+namespace penumbra::render {
+
+// What the renderer's shadow maps say against a CPU ray cast (scene::GroundTruth), per light.
+
+// The visibility view (FrameDesc::visibilityOf) read back as scene::RenderedVisibility.
+scene::RenderedVisibility renderedVisibility(const rhi::Image& visibilityView);
+
+// World size of one shadow-map texel of `light` at `position`, by the plans: the covering cascade's texel for a
+// directional light, the tile's (or cube face's) texel at the position's distance from the light plane for
+// spot and point lights. 0 where the light has no shadow map there.
+float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& settings, const scene::Scene& scene,
+                      const scene::LightRef& light, glm::vec3 position);
+
+// Shadow rays towards `light`, as the ray cast casts them.
+scene::ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef& light);
+
+// How far from an exact shadow edge a correct shadow map of the plans may place it, in its texels: the filter's
+// reach k (1, 2, 3, 4 for the 2x2, 3x3, 5x5 and 7x7 filters), the default normal offset's lateral move of up to
+// k sqrt 2, and half a texel of rasterisation. Taken at the default normal bias, so that a larger one shows.
+float shadowEdgeMarginTexels(shadows::ShadowFilter filter);
+
+// The ray cast of `light` for every sample of `gbuffer`, and its shadow edges at the resolution `plans` give the
+// light (scene::traceShadowEdges with shadowEdgeMarginTexels texels).
+struct LightTruthTrace {
+    scene::LightVisibilityMask visibility;
+    std::vector<std::uint8_t> shadowEdges;
+};
+LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
+                                const scene::CpuGBuffer& gbuffer, const ShadowPlans& plans,
+                                const shadows::ShadowSettings& settings, const scene::LightRef& light,
+                                const scene::TraceProgress& progress = {});
+
+// The light's name, or "<kind> <index>" when it has none.
+std::string lightLabel(const scene::Scene& scene, const scene::LightRef& light);
+
+} // namespace penumbra::render

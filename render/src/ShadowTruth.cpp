@@ -1,0 +1,141 @@
+#include "penumbra/render/ShadowTruth.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/shadows/LocalLightProjection.hpp"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace penumbra::render {
+namespace {
+
+// The perspective view's texel at the position's distance from its light plane (a perspective texel grows
+// linearly with that distance).
+float perspectiveTexel(const glm::mat4& projection, std::uint32_t tileSize, glm::vec3 axis, glm::vec3 fromLight)
+{
+    return shadows::texelSizeAtUnitDistance(projection, tileSize) * glm::dot(fromLight, axis);
+}
+
+float directionalTexel(const shadows::DirectionalShadowPlan& plan, std::uint32_t index, glm::vec3 position)
+{
+    if (index >= plan.shadowSlots.size() || plan.shadowSlots[index] < 0)
+        return 0.0f;
+    // The first cascade whose culling sphere holds the point, as the lit shader selects it.
+    for (const shadows::DirectionalCascadePlan& cascade :
+         plan.lights[static_cast<std::size_t>(plan.shadowSlots[index])].cascades) {
+        const glm::vec3 offset = position - cascade.fit.cullingSphere.centre;
+        if (glm::dot(offset, offset) < cascade.fit.cullingSphere.radius * cascade.fit.cullingSphere.radius)
+            return cascade.fit.texelSize;
+    }
+    return 0.0f;
+}
+
+float pointTexel(const ShadowPlans& plans, std::uint32_t cubeFaceSize, const scene::PointLight& light, int shadow,
+                 glm::vec3 position)
+{
+    const glm::vec3 fromLight = position - light.position;
+    const shadows::CubeFace face = shadows::cubeFace(fromLight);
+    const glm::vec3 axis = shadows::cubeFaceAxis(face);
+    if (!plans.other.cubes.empty())
+        return perspectiveTexel(plans.other.cubes.at(static_cast<std::size_t>(shadow))
+                                    .faces[static_cast<std::size_t>(face)]
+                                    .projection,
+                                cubeFaceSize, axis, fromLight);
+    const std::size_t tile = static_cast<std::size_t>(shadow) + static_cast<std::size_t>(face);
+    return perspectiveTexel(plans.other.tiles.at(tile).view.projection, plans.other.atlas.tileSize(), axis,
+                            fromLight);
+}
+
+} // namespace
+
+scene::RenderedVisibility renderedVisibility(const rhi::Image& view)
+{
+    if (view.format != rhi::Format::RGBA8)
+        throw rhi::Error("renderedVisibility: the visibility view is RGBA8");
+    scene::RenderedVisibility v{view.width, view.height, std::vector<float>(std::size_t(view.width) * view.height),
+                                std::vector<std::uint8_t>(std::size_t(view.width) * view.height)};
+    for (std::size_t i = 0; i < v.lit.size(); ++i) {
+        const std::byte* texel = view.bytes.data() + 4 * i;
+        v.lit[i] = static_cast<float>(std::to_integer<int>(texel[0])) / 255.0f;
+        v.decided[i] = std::to_integer<int>(texel[3]) >= 128 ? 1 : 0;
+    }
+    return v;
+}
+
+float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& settings, const scene::Scene& scene,
+                      const scene::LightRef& light, glm::vec3 position)
+{
+    switch (light.kind) {
+    case scene::LightKind::Directional:
+        return directionalTexel(plans.directional, light.index, position);
+    case scene::LightKind::Spot: {
+        const int tile = plans.other.spotTiles.at(light.index);
+        if (tile < 0)
+            return 0.0f;
+        const scene::SpotLight& spot = scene.spotLights.at(light.index);
+        return perspectiveTexel(plans.other.tiles.at(static_cast<std::size_t>(tile)).view.projection,
+                                plans.other.atlas.tileSize(), spot.direction, position - spot.position);
+    }
+    case scene::LightKind::Point: {
+        const int shadow = plans.other.pointShadows.at(light.index);
+        return shadow < 0 ? 0.0f : pointTexel(plans, settings.other.cubeMapSize, scene.pointLights.at(light.index), shadow,
+                                                     position);
+    }
+    }
+    return 0.0f;
+}
+
+scene::ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef& light)
+{
+    switch (light.kind) {
+    case scene::LightKind::Directional:
+        return scene::raysTowards(scene.lights.at(light.index));
+    case scene::LightKind::Spot:
+        return scene::raysTowards(scene.spotLights.at(light.index).position);
+    case scene::LightKind::Point:
+        return scene::raysTowards(scene.pointLights.at(light.index).position);
+    }
+    return scene::raysTowards(scene.lights.at(light.index));
+}
+
+float shadowEdgeMarginTexels(shadows::ShadowFilter filter)
+{
+    const float reach = shadows::normalBiasFilterFactor(filter);
+    return reach * (1.0f + std::sqrt(2.0f)) + 0.5f;
+}
+
+LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
+                                const scene::CpuGBuffer& gbuffer, const ShadowPlans& plans,
+                                const shadows::ShadowSettings& settings, const scene::LightRef& light,
+                                const scene::TraceProgress& progress)
+{
+    const scene::ShadowRayFrom rays = truthRays(scene, light);
+    const float margin = shadowEdgeMarginTexels(light.kind == scene::LightKind::Directional ? settings.directional.filter
+                                                                                            : settings.other.filter);
+    // Half the rows' progress for each of the two traces.
+    const auto half = [&](std::uint32_t offset) -> scene::TraceProgress {
+        if (!progress)
+            return {};
+        return [&, offset](std::uint32_t done, std::uint32_t rows) { progress(offset + done, 2 * rows); };
+    };
+    LightTruthTrace t{scene::traceVisibility(scene, shadowRays, gbuffer, rays, scene::kShadowRayOffset, half(0)), {}};
+    t.shadowEdges = scene::traceShadowEdges(
+        shadowRays, gbuffer, t.visibility, rays,
+        [&](const scene::GBufferSample& sample) {
+            return margin * shadowTexelSize(plans, settings, scene, light, sample.position);
+        },
+        half(gbuffer.height));
+    return t;
+}
+
+std::string lightLabel(const scene::Scene& scene, const scene::LightRef& light)
+{
+    const std::string& name = light.kind == scene::LightKind::Directional ? scene.lights.at(light.index).name
+                              : light.kind == scene::LightKind::Spot      ? scene.spotLights.at(light.index).name
+                                                                          : scene.pointLights.at(light.index).name;
+    return name.empty() ? fmt::format("{} {}", scene::lightKindName(light.kind), light.index) : name;
+}
+
+} // namespace penumbra::render
