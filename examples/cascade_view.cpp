@@ -94,7 +94,8 @@ try {
     auto vertex = device->createShader({rhi::ShaderStage::Vertex, fullscreenShader, "fullscreen.vert"});
     auto fragment = device->createShader({rhi::ShaderStage::Fragment, groundShader, "ground.frag"});
     auto pipeline = device->createPipeline({.vertex = vertex.get(), .fragment = fragment.get(), .colorTargets = {{}}});
-    auto sampler = device->createSampler({.filter = rhi::Filter::Nearest});
+    auto sampler =
+        device->createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
 
     auto commands = device->createCommandList();
     commands->beginPass({.framebuffer = target.get()});

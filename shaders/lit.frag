@@ -119,7 +119,8 @@ void main()
         return;
     }
 
-    const vec3 base = object.baseColor.rgb * (textured ? srgbToLinear(texel.rgb) : vec3(1.0));
+    // Base colour textures are RGBA8_SRGB: sampling has decoded them to linear light before filtering.
+    const vec3 base = object.baseColor.rgb * (textured ? texel.rgb : vec3(1.0));
     vec3 color = frame.ambient.rgb * base;
     for (int i = 0; i < frame.config.x; ++i) {
         const vec3 l = -frame.lightDirection[i].xyz;

@@ -16,12 +16,6 @@ float materialAlpha(float baseAlpha, int casterMode, vec2 uv, bool textured, flo
     return ((cell.x + cell.y) & 1) == 0 ? baseAlpha : 0.0;
 }
 
-// The sRGB transfer function's inverse (IEC 61966-2-1): base colour textures are sRGB-encoded.
-vec3 srgbToLinear(vec3 c)
-{
-    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
-}
-
 // Jimenez 2014, "Next Generation Post Processing in Call of Duty: Advanced Warfare": a dither in
 // [0, 1) per pixel that looks like blue noise. gl_FragCoord counts rows from the top on every backend.
 float interleavedGradientNoise(vec2 pixel)

@@ -1,9 +1,9 @@
 #include "ImageFiles.hpp"
 
+#include "penumbra/rhi/ColorSpace.hpp"
 #include "penumbra/rhi/Error.hpp"
 
 #include <OpenImageIO/imageio.h>
-#include <cmath>
 #include <fstream>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -32,12 +32,6 @@ void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec, 
         throw rhi::Error(fmt::format("{}: cannot write: {}", path.string(), why));
     }
     std::filesystem::rename(temporary, path);
-}
-
-float srgbToLinear(std::byte encoded)
-{
-    const float c = float(encoded) / 255.0f;
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
 } // namespace
@@ -72,8 +66,10 @@ void writePicture(const std::filesystem::path& path, const rhi::Image& image)
         throw rhi::Error(fmt::format("{}: needs an RGBA8 picture, the image is {}", path.string(),
                                      rhi::formatName(image.format)));
     std::vector<float> linear(image.bytes.size());
-    for (std::size_t i = 0; i < image.bytes.size(); ++i)
-        linear[i] = i % 4 == 3 ? float(image.bytes[i]) / 255.0f : srgbToLinear(image.bytes[i]);
+    for (std::size_t i = 0; i < image.bytes.size(); ++i) {
+        const double stored = double(image.bytes[i]) / 255.0;
+        linear[i] = float(i % 4 == 3 ? stored : rhi::srgbToLinear(stored));
+    }
     writeImage(path, OIIO::ImageSpec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT), linear.data());
 }
 

@@ -42,7 +42,8 @@ ImGuiRenderer::ImGuiRenderer(rhi::Device& device, rhi::Format targetFormat)
     : device_(device), vertex_(device.createShader(shaders::load("imgui.vert"))),
       fragment_(device.createShader(shaders::load("imgui.frag"))),
       pipeline_(device.createPipeline(pipelineDesc(*vertex_, *fragment_, targetFormat))),
-      sampler_(device.createSampler({.filter = rhi::Filter::Linear, .debugName = "imgui"})),
+      sampler_(device.createSampler({.magFilter = rhi::Filter::Linear,
+                                     .minFilter = rhi::Filter::Linear, .debugName = "imgui"})),
       uniforms_(device, "imgui uniforms")
 {
     ImGuiIO& io = ImGui::GetIO();
@@ -54,7 +55,7 @@ ImGuiRenderer::ImGuiRenderer(rhi::Device& device, rhi::Format targetFormat)
                                   .height = std::uint32_t(height),
                                   .format = rhi::Format::RGBA8,
                                   .debugName = "imgui font atlas"});
-    device.writeTexture(*font_, 0,
+    device.writeTexture(*font_, 0, 0,
                         std::as_bytes(std::span(pixels, std::size_t(width) * std::size_t(height) * 4)));
     // ImGui's texture ids are void*; ours point at const RHI textures.
     io.Fonts->SetTexID(const_cast<rhi::Texture*>(font_.get()));

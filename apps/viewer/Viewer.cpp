@@ -135,7 +135,7 @@ private:
         if (!atlasPicture_ || atlasPicture_->desc().width != picture.width)
             atlasPicture_ = device_->createTexture(
                 {.width = picture.width, .height = picture.height, .debugName = "atlas overlay"});
-        device_->writeTexture(*atlasPicture_, 0, picture.bytes);
+        device_->writeTexture(*atlasPicture_, 0, 0, picture.bytes);
         status_.atlasPicture = atlasPicture_.get();
     }
 

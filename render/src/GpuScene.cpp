@@ -1,6 +1,9 @@
 #include "penumbra/render/GpuScene.hpp"
 
-#include <array>
+#include "TextureSampling.hpp"
+
+#include "penumbra/rhi/MipChain.hpp"
+
 #include <cstddef>
 
 namespace penumbra::render {
@@ -26,17 +29,27 @@ std::unique_ptr<rhi::Buffer> upload(rhi::Device& device, const std::vector<T>& d
     return buffer;
 }
 
-std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, std::uint32_t width, std::uint32_t height,
-                                            std::span<const std::uint8_t> rgba, const std::string& name)
+std::string debugName(const scene::TextureImage& image)
 {
-    auto texture = device.createTexture({.width = width, .height = height, .debugName = name});
-    device.writeTexture(*texture, 0, std::as_bytes(rgba));
+    return "texture '" + image.name + "'";
+}
+
+std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image)
+{
+    auto texture = device.createTexture({.width = image.width,
+                                         .height = image.height,
+                                         .mipLevels = mipLevelsFor(image),
+                                         .format = image.colorSpace == scene::TextureColorSpace::Srgb
+                                                       ? rhi::Format::RGBA8_SRGB
+                                                       : rhi::Format::RGBA8,
+                                         .debugName = debugName(image)});
+    rhi::writeMipChain(device, *texture, 0, std::as_bytes(std::span(image.rgba)));
     return texture;
 }
 
 } // namespace
 
-GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scene)
+GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scene), device_(device)
 {
     scene.validate();
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
@@ -45,17 +58,34 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
         meshes_.push_back({upload(device, mesh.vertices, rhi::BufferUsage::Vertex, name + " vertices"),
                            upload(device, mesh.indices, rhi::BufferUsage::Index, name + " indices")});
     }
-    for (const scene::TextureImage& image : scene.textures)
-        textures_.push_back(uploadTexture(device, image.width, image.height, image.rgba, "texture '" + image.name + "'"));
-    constexpr std::array<std::uint8_t, 4> white{255, 255, 255, 255};
-    white_ = uploadTexture(device, 1, 1, white, "white texel");
-    sampler_ = device.createSampler({.filter = rhi::Filter::Linear, .address = rhi::AddressMode::Repeat,
-                                     .debugName = "base colour"});
+    for (const scene::TextureImage& image : scene.textures) {
+        textures_.push_back(uploadTexture(device, image));
+        samplers_.push_back(device.createSampler(samplerDesc(image.sampler, anisotropy_, debugName(image))));
+    }
+    const scene::TextureImage white{.name = "white texel", .width = 1, .height = 1, .rgba = {255, 255, 255, 255},
+                                    .sampler = {.mipFilter = scene::TextureMipFilter::None}};
+    white_ = uploadTexture(device, white);
+    whiteSampler_ = device.createSampler(samplerDesc(white.sampler, 1.0f, debugName(white)));
 }
 
-const rhi::Texture& GpuScene::baseColorMap(const scene::Material& material) const
+const rhi::Texture& GpuScene::texture(std::optional<std::uint32_t> index) const
 {
-    return material.baseColorTexture ? *textures_.at(*material.baseColorTexture) : *white_;
+    return index ? *textures_.at(*index) : *white_;
+}
+
+const rhi::Sampler& GpuScene::sampler(std::optional<std::uint32_t> index) const
+{
+    return index ? *samplers_.at(*index) : *whiteSampler_;
+}
+
+void GpuScene::setMaxAnisotropy(float anisotropy)
+{
+    if (anisotropy == anisotropy_)
+        return;
+    anisotropy_ = anisotropy;
+    for (std::size_t i = 0; i < samplers_.size(); ++i)
+        samplers_[i] = device_.createSampler(
+            samplerDesc(scene_.textures[i].sampler, anisotropy_, debugName(scene_.textures[i])));
 }
 
 std::vector<shadows::ShadowCaster> GpuScene::casters() const
@@ -67,7 +97,7 @@ std::vector<shadows::ShadowCaster> GpuScene::casters() const
             casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
                                static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
                                *mode, material.baseColor.a, material.alphaCutoff, &baseColorMap(material),
-                               sampler_.get(), material.baseColorTexture.has_value()});
+                               &baseColorSampler(material), material.baseColorTexture.has_value()});
     }
     return casters;
 }

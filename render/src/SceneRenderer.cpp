@@ -1,5 +1,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 
+#include "TextureSampling.hpp"
+
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
@@ -282,7 +284,8 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     for (const scene::Object& object : scene.objects) {
         const scene::Material& material = scene.materialOf(object);
         rhi::bindUniform(commands, kObjectBinding, uniforms_.push(objectUniforms(object, material)));
-        commands.bindTexture(kBaseColorBinding, gpuScene_.baseColorMap(material), gpuScene_.baseColorSampler());
+        commands.bindTexture(kBaseColorBinding, gpuScene_.baseColorMap(material),
+                             gpuScene_.baseColorSampler(material));
         commands.bindVertexBuffer(0, gpuScene_.vertices(object.mesh));
         commands.bindIndexBuffer(gpuScene_.indices(object.mesh), rhi::IndexType::UInt32);
         commands.drawIndexed(static_cast<std::uint32_t>(scene.meshOf(object).indices.size()));
@@ -312,9 +315,13 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
 {
     shadows::validate(frame.shadows);
     checkPlansFitFrame(plans, frame.shadows);
+    const AnisotropyChoice anisotropy = chooseAnisotropy(frame.maxAnisotropy, device_.capabilities());
     const int visibilityLight = frame.visibilityOf ? litLightIndex(*frame.visibilityOf) : -1;
     prepareTargets(frame);
+    gpuScene_.setMaxAnisotropy(anisotropy.value);
     notes_ = frameNotes(gpuScene_.scene(), plans);
+    if (anisotropy.note && !gpuScene_.scene().textures.empty())
+        notes_.push_back(*anisotropy.note);
     plan_ = std::move(plans.directional);
     otherPlan_ = std::move(plans.other);
 

@@ -7,14 +7,26 @@
 
 namespace penumbra::rhi {
 
+namespace {
+
+bool filtersLinearly(const SamplerDesc& desc)
+{
+    return desc.magFilter == Filter::Linear || desc.minFilter == Filter::Linear || desc.mipFilter == MipFilter::Linear;
+}
+
+} // namespace
+
 void checkTextureBinding(const Capabilities& caps, const Texture& texture, const Sampler& sampler)
 {
-    const Format format = texture.desc().format;
-    if (isDepthFormat(format) && sampler.desc().filter == Filter::Linear && !caps.supportsLinearFilter(format))
+    const TextureDesc& desc = texture.desc();
+    if (!hasFlag(desc.usage, TextureUsage::Sampled))
+        throw Error(fmt::format("texture '{}' is bound for sampling but lacks TextureUsage::Sampled", desc.debugName));
+    const Format format = desc.format;
+    if (filtersLinearly(sampler.desc()) && !caps.supportsLinearFilter(format))
         throw UnsupportedError(fmt::format(
             "texture '{}' ({}) with linear sampler '{}': this driver ({}) cannot filter {} linearly; "
             "use a nearest sampler and filter in the shader",
-            texture.desc().debugName, formatName(format), sampler.desc().debugName, caps.device, formatName(format)));
+            desc.debugName, formatName(format), sampler.desc().debugName, caps.device, formatName(format)));
 }
 
 void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc)
@@ -24,6 +36,17 @@ void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc)
         throw Error(fmt::format("texture '{}': {}x{} with {} layers is outside 1..{} texels and 1..{} layers",
                                 desc.debugName, desc.width, desc.height, desc.layers, caps.maxTextureSize,
                                 caps.maxTextureLayers));
+    const std::uint32_t fullChain = fullMipChain(desc.width, desc.height);
+    if (desc.mipLevels == 0 || desc.mipLevels > fullChain)
+        throw Error(fmt::format("texture '{}': mipLevels {} is outside 1..{} (the full chain of {}x{})",
+                                desc.debugName, desc.mipLevels, fullChain, desc.width, desc.height));
+    const FormatSupport& support = caps.format(desc.format);
+    if (hasFlag(desc.usage, TextureUsage::Sampled) && !support.sampled)
+        throw UnsupportedError(fmt::format("texture '{}': {} cannot sample {}", desc.debugName, caps.device,
+                                           formatName(desc.format)));
+    if (hasFlag(desc.usage, TextureUsage::RenderTarget) && !support.renderTarget)
+        throw UnsupportedError(fmt::format("texture '{}': {} cannot render to {}", desc.debugName, caps.device,
+                                           formatName(desc.format)));
     if (!desc.cube)
         return;
     if (!caps.cubeArrays)
@@ -38,6 +61,71 @@ void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc)
     if (desc.width > caps.maxCubeSize)
         throw Error(fmt::format("texture '{}': cube faces of {}x{} exceed the limit of {}", desc.debugName, desc.width,
                                 desc.height, caps.maxCubeSize));
+}
+
+void checkSamplerDesc(const Capabilities& caps, const SamplerDesc& desc)
+{
+    // Written as negations so that NaN fails too.
+    if (!(desc.minLod >= 0.0f && desc.maxLod >= desc.minLod))
+        throw Error(fmt::format("sampler '{}': minLod {} and maxLod {} must satisfy 0 <= minLod <= maxLod",
+                                desc.debugName, desc.minLod, desc.maxLod));
+    if (!(desc.maxAnisotropy >= 1.0f && desc.maxAnisotropy <= caps.maxSamplerAnisotropy))
+        throw Error(fmt::format("sampler '{}': maxAnisotropy {} is outside [1, {}], the limit of {}", desc.debugName,
+                                desc.maxAnisotropy, caps.maxSamplerAnisotropy, caps.device));
+}
+
+LodRange samplerLodRange(const SamplerDesc& desc)
+{
+    if (desc.mipFilter == MipFilter::None)
+        return {0.0f, 0.25f};
+    return {desc.minLod, desc.maxLod};
+}
+
+void checkSubresource(std::string_view what, const TextureDesc& desc, std::uint32_t layer, std::uint32_t level)
+{
+    if (layer >= desc.layers)
+        throw Error(fmt::format("{}: layer {} of texture '{}' is out of range [0, {}]", what, layer, desc.debugName,
+                                desc.layers - 1));
+    if (level >= desc.mipLevels)
+        throw Error(fmt::format("{}: mip level {} of texture '{}' is out of range [0, {}]", what, level,
+                                desc.debugName, desc.mipLevels - 1));
+}
+
+void checkTextureUpload(const TextureDesc& desc, std::uint32_t layer, std::uint32_t level, std::uint64_t size)
+{
+    checkSubresource("writeTexture", desc, layer, level);
+    if (size != levelSize(desc, level))
+        throw Error(fmt::format("writeTexture: level {} of '{}' ({}x{} {}) takes {} bytes, got {}", level,
+                                desc.debugName, mipExtent(desc.width, level), mipExtent(desc.height, level),
+                                formatName(desc.format), levelSize(desc, level), size));
+}
+
+void checkTextureReadback(const TextureDesc& desc, std::uint32_t layer, std::uint32_t level, const BufferDesc& buffer,
+                          std::uint64_t offset)
+{
+    checkSubresource("copyTextureToBuffer", desc, layer, level);
+    const std::uint64_t size = levelSize(desc, level);
+    if (offset > buffer.size || size > buffer.size - offset)
+        throw Error(fmt::format("copyTextureToBuffer: {} bytes at offset {} exceed buffer '{}' ({} bytes)", size,
+                                offset, buffer.debugName, buffer.size));
+    const std::uint32_t alignment = isDepthFormat(desc.format) ? 4 : texelSize(desc.format);
+    if (offset % alignment)
+        throw Error(fmt::format("copyTextureToBuffer: offset {} is not a multiple of {} for {}", offset, alignment,
+                                formatName(desc.format)));
+}
+
+void checkTextureCopy(const Texture& src, std::uint32_t srcLayer, const Texture& dst, std::uint32_t dstLayer)
+{
+    const TextureDesc& a = src.desc();
+    const TextureDesc& b = dst.desc();
+    checkSubresource("copyTexture source", a, srcLayer, 0);
+    checkSubresource("copyTexture destination", b, dstLayer, 0);
+    if (a.width != b.width || a.height != b.height || a.format != b.format || a.mipLevels != b.mipLevels)
+        throw Error(fmt::format("copyTexture: '{}' is {}x{} {} with {} levels but '{}' is {}x{} {} with {} levels",
+                                a.debugName, a.width, a.height, formatName(a.format), a.mipLevels, b.debugName,
+                                b.width, b.height, formatName(b.format), b.mipLevels));
+    if (&src == &dst && srcLayer == dstLayer)
+        throw Error(fmt::format("copyTexture: layer {} of '{}' onto itself", srcLayer, a.debugName));
 }
 
 void checkFramebuffer(const FramebufferDesc& desc)
@@ -109,9 +197,9 @@ DepthBias signedDepthBias(const Conventions& conventions, const DepthBias& bias)
     return {bias.constant * sign, bias.slope * sign, bias.clamp * sign};
 }
 
-std::uint64_t layerSize(const TextureDesc& desc)
+std::uint64_t levelSize(const TextureDesc& desc, std::uint32_t level)
 {
-    return std::uint64_t(desc.width) * desc.height * texelSize(desc.format);
+    return std::uint64_t(mipExtent(desc.width, level)) * mipExtent(desc.height, level) * texelSize(desc.format);
 }
 
 std::string_view formatName(Format f)
@@ -123,6 +211,12 @@ std::string_view formatName(Format f)
     case Format::D16: return "D16";
     case Format::D24S8: return "D24S8";
     case Format::D32F: return "D32F";
+    case Format::RGBA8_SRGB: return "RGBA8_SRGB";
+    case Format::R8: return "R8";
+    case Format::RG8: return "RG8";
+    case Format::R16F: return "R16F";
+    case Format::RG16F: return "RG16F";
+    case Format::R32F: return "R32F";
     }
     return "unknown";
 }

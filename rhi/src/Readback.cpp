@@ -8,19 +8,17 @@
 
 namespace penumbra::rhi {
 
-Image readTexture(Device& device, const Texture& texture, std::uint32_t layer)
+Image readTexture(Device& device, const Texture& texture, std::uint32_t layer, std::uint32_t level)
 {
     const TextureDesc& desc = texture.desc();
-    if (layer >= desc.layers)
-        throw Error(fmt::format("readTexture: layer {} of '{}' is out of range [0, {}]", layer, desc.debugName,
-                                desc.layers - 1));
-    const std::uint64_t size = layerSize(desc);
+    checkSubresource("readTexture", desc, layer, level);
+    const std::uint64_t size = levelSize(desc, level);
     auto buffer = device.createBuffer({.size = size, .usage = BufferUsage::Readback, .debugName = "readback"});
     auto commands = device.createCommandList();
-    commands->copyTextureToBuffer(texture, layer, *buffer);
+    commands->copyTextureToBuffer(texture, layer, level, *buffer);
     device.submit(*commands);
 
-    Image image{desc.width, desc.height, desc.format, std::vector<std::byte>(size)};
+    Image image{mipExtent(desc.width, level), mipExtent(desc.height, level), desc.format, std::vector<std::byte>(size)};
     buffer->read(0, image.bytes);
     return image;
 }

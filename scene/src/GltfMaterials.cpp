@@ -1,5 +1,7 @@
 #include "GltfMaterials.hpp"
 
+#include "GltfSamplers.hpp"
+
 #include <algorithm>
 #include <cstring>
 
@@ -73,25 +75,28 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
         material.caster = casterMode(document_, gltf, owner);
         material.alphaCutoff = float(gltf.alphaCutoff);
         if (pbr.baseColorTexture.index >= 0)
-            material.baseColorTexture = texture(pbr.baseColorTexture.index, owner);
+            material.baseColorTexture = texture(pbr.baseColorTexture.index, owner, TextureColorSpace::Srgb);
     }
     const std::uint32_t sceneIndex = scene_.addMaterial(std::move(material));
     materials_.emplace(index, sceneIndex);
     return sceneIndex;
 }
 
-std::uint32_t MaterialTable::texture(int textureIndex, const std::string& owner)
+std::uint32_t MaterialTable::texture(int textureIndex, const std::string& owner, TextureColorSpace colorSpace)
 {
+    if (const auto found = textures_.find({textureIndex, colorSpace}); found != textures_.end())
+        return found->second;
     const tinygltf::Model& model = document_.model();
     const tinygltf::Texture& texture = document_.at(model.textures, textureIndex, "texture", owner);
     const std::string textureName = describe("texture", textureIndex, texture.name);
     const int imageIndex = texture.source;
-    if (const auto found = textures_.find(imageIndex); found != textures_.end())
-        return found->second;
     const tinygltf::Image& image = document_.at(model.images, imageIndex, "image", textureName);
-    scene_.textures.push_back(toRgba8(document_, image, describe("image", imageIndex, image.name)));
+    TextureImage decoded = toRgba8(document_, image, describe("image", imageIndex, image.name));
+    decoded.colorSpace = colorSpace;
+    decoded.sampler = textureSampler(document_, texture.sampler, textureName);
+    scene_.textures.push_back(std::move(decoded));
     const auto sceneIndex = static_cast<std::uint32_t>(scene_.textures.size() - 1);
-    textures_.emplace(imageIndex, sceneIndex);
+    textures_.emplace(std::pair{textureIndex, colorSpace}, sceneIndex);
     return sceneIndex;
 }
 

@@ -5,11 +5,12 @@
 #include "penumbra/scene/Scene.hpp"
 
 #include <map>
+#include <utility>
 
 namespace penumbra::scene::gltf {
 
-// Converts glTF materials into Scene::materials on first use, and the images their base colour
-// textures show into Scene::textures (RGBA8), each once however many materials share it.
+// Converts glTF materials into Scene::materials on first use, and the textures they use into
+// Scene::textures (RGBA8 with the texture's sampler), each once per colour space however many materials share it.
 class MaterialTable {
 public:
     MaterialTable(const Document& document, Scene& scene) : document_(document), scene_(scene) {}
@@ -19,12 +20,12 @@ public:
     std::uint32_t material(int index, const std::string& owner);
 
 private:
-    std::uint32_t texture(int textureIndex, const std::string& owner);
+    std::uint32_t texture(int textureIndex, const std::string& owner, TextureColorSpace colorSpace);
 
     const Document& document_;
     Scene& scene_;
     std::map<int, std::uint32_t> materials_;
-    std::map<int, std::uint32_t> textures_; // by glTF image
+    std::map<std::pair<int, TextureColorSpace>, std::uint32_t> textures_; // by glTF texture
 };
 
 } // namespace penumbra::scene::gltf

@@ -22,7 +22,10 @@ ShadowCubes::ShadowCubes(rhi::Device& device, std::uint32_t faceSize, std::uint3
     for (std::uint32_t layer = 0; layer < 6 * cubeCount; ++layer)
         framebuffers_.push_back(device.createFramebuffer(
             {.depth = {texture_.get(), layer}, .debugName = fmt::format("point shadow cube face {}", layer)}));
-    sampler_ = device.createSampler({.filter = rhi::Filter::Nearest, .compare = true, .debugName = "point shadow cubes"});
+    sampler_ = device.createSampler({.magFilter = rhi::Filter::Nearest,
+                                     .minFilter = rhi::Filter::Nearest,
+                                     .compare = true,
+                                     .debugName = "point shadow cubes"});
 }
 
 } // namespace penumbra::shadows

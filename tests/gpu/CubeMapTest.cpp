@@ -99,7 +99,8 @@ TEST_F(CubeMapTest, FaceReadbacksMatchTheCubeSamplingTable)
 TEST_F(CubeMapTest, SamplingFindsEachMarkerInItsDirection)
 {
     auto cube = renderMarkerCube();
-    auto sampler = device->createSampler({.filter = rhi::Filter::Nearest, .debugName = "cube"});
+    auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest,
+                                          .minFilter = rhi::Filter::Nearest, .debugName = "cube"});
     // Per face, in face coordinates (b, c): the marker, its mirror images in b and in c, a point the
     // marker transposed would cover, the marker near its corner, and the wall near the face's edge.
     const glm::vec2 probesPerFace[] = {{0.4f, 0.35f}, {-0.4f, 0.35f}, {0.4f, -0.35f},
@@ -134,7 +135,7 @@ TEST_F(CubeMapTest, FaceLayersCopyAndUploadLikeArrayLayers)
 
     auto twoCubes = device->createTexture(
         {.width = kFaceSize, .height = kFaceSize, .layers = 12, .cube = true, .debugName = "two cubes"});
-    device->writeTexture(*twoCubes, rhi::cubeLayer(1, rhi::CubeFace::PositiveZ), face.bytes);
+    device->writeTexture(*twoCubes, rhi::cubeLayer(1, rhi::CubeFace::PositiveZ), 0, face.bytes);
     commands->copyTexture(*cube, layer, *twoCubes, rhi::cubeLayer(1, rhi::CubeFace::NegativeX));
     device->submit(*commands);
     EXPECT_TRUE(rhi::readTexture(*device, *twoCubes, rhi::cubeLayer(1, rhi::CubeFace::PositiveZ)).bytes == face.bytes);

@@ -108,7 +108,10 @@ TEST_P(CubeShadowTest, ComparisonLookupsAgreeWithTheReferenceDepths)
                     references.push_back(device->conventions().windowDepth(projection, rhi::cubeFaceViewDepth(d)));
                     expectLit.push_back(!(behind && scale > 1.0f));
                 }
-    auto sampler = device->createSampler({.filter = rhi::Filter::Nearest, .compare = true, .debugName = "cube shadow"});
+    auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest,
+                                          .minFilter = rhi::Filter::Nearest,
+                                          .compare = true,
+                                          .debugName = "cube shadow"});
     const rhi::Image lit = sampleCubeProbes(
         *device, *map, *sampler, "samplerCubeArrayShadow",
         "outColor = vec4(texture(cubeTexture, probe.direction[i], probe.reference[i].x));", directions, references);
@@ -120,7 +123,10 @@ TEST_P(CubeShadowTest, ComparisonLookupsAgreeWithTheReferenceDepths)
 
 TEST_P(CubeShadowTest, LinearComparisonFilteringFollowsTheCapability)
 {
-    auto linear = device->createSampler({.filter = rhi::Filter::Linear, .compare = true, .debugName = "linear cube"});
+    auto linear = device->createSampler({.magFilter = rhi::Filter::Linear,
+                                         .minFilter = rhi::Filter::Linear,
+                                         .compare = true,
+                                         .debugName = "linear cube"});
     auto commands = device->createCommandList();
     if (device->capabilities().supportsLinearFilter(GetParam())) {
         EXPECT_NO_THROW(commands->bindTexture(0, *map, *linear));

@@ -117,7 +117,7 @@ TEST_F(FormatsTest, UploadsAndCopiesKeepRowZeroOnTop)
     for (std::size_t i = 0; i < rows.size(); ++i)
         rows[i] = std::byte(i * 7 + 1); // row 0 differs from every other row
     auto source = device->createTexture({.width = w, .height = h, .layers = 2, .array = true});
-    device->writeTexture(*source, 1, rows);
+    device->writeTexture(*source, 1, 0, rows);
     EXPECT_EQ(rhi::readTexture(*device, *source, 1).bytes, rows);
 
     auto destination = device->createTexture({.width = w, .height = h});
@@ -125,7 +125,7 @@ TEST_F(FormatsTest, UploadsAndCopiesKeepRowZeroOnTop)
     auto copied = device->createBuffer({.size = rows.size(), .usage = rhi::BufferUsage::Readback});
     auto commands = device->createCommandList();
     commands->copyTexture(*source, 1, *destination, 0);
-    commands->copyTextureToBuffer(*destination, 0, *buffer);
+    commands->copyTextureToBuffer(*destination, 0, 0, *buffer);
     commands->copyBuffer(*buffer, 0, *copied, 0, rows.size());
     device->submit(*commands);
     std::vector<std::byte> read(rows.size());

@@ -24,7 +24,7 @@ void main() { outColor = texture(image, probe.useProbe > 0.5 ? probe.uv : vUv); 
 )", "texture_viewer.frag"});
         pipeline_ = device.createPipeline({.vertex = vertex_.get(), .fragment = fragment_.get(),
                                            .colorTargets = {{.format = rhi::Format::RGBA8}}});
-        sampler_ = device.createSampler({.filter = rhi::Filter::Nearest});
+        sampler_ = device.createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
         uniforms_ = device.createBuffer({.size = 16, .usage = rhi::BufferUsage::Uniform});
     }
 

@@ -100,7 +100,8 @@ void main() {
         {.vertex = vertex.get(), .fragment = fragment.get(), .colorTargets = {{.format = rhi::Format::RGBA8}}});
     auto uniforms = device->createBuffer({.size = sizeof(glm::mat4), .usage = rhi::BufferUsage::Uniform});
     uniforms->writeObject(device->conventions().clipToTexture() * lightProjection);
-    auto sampler = device->createSampler({.filter = rhi::Filter::Nearest, .compare = true, .debugName = "shadow"});
+    auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest,
+                                          .minFilter = rhi::Filter::Nearest, .compare = true, .debugName = "shadow"});
     auto target = device->createTexture(
         {.width = kMapSize, .height = kMapSize, .format = rhi::Format::RGBA8, .usage = rhi::TextureUsage::RenderTarget});
     const rhi::Attachment attachment{target.get(), 0};
@@ -175,7 +176,10 @@ TEST_F(ShadowPrimitivesTest, DepthClampPancakesCastersInFrontOfTheNearPlane)
 TEST_F(ShadowPrimitivesTest, LinearComparisonFilteringFollowsTheCapability)
 {
     auto map = shadowMap();
-    auto linear = device->createSampler({.filter = rhi::Filter::Linear, .compare = true, .debugName = "linear shadow"});
+    auto linear = device->createSampler({.magFilter = rhi::Filter::Linear,
+                                         .minFilter = rhi::Filter::Linear,
+                                         .compare = true,
+                                         .debugName = "linear shadow"});
     auto commands = device->createCommandList();
     if (device->capabilities().supportsLinearFilter(rhi::Format::D32F)) {
         EXPECT_NO_THROW(commands->bindTexture(0, *map, *linear));

@@ -27,26 +27,18 @@ const Patterns& renderedPatterns()
 {
     static const Patterns results = [] {
         Patterns out;
-        for (const std::string& name : compiledConfigurations()) {
-            std::unique_ptr<rhi::Device> device;
-            try {
-                device = createValidatedDevice(name);
-            } catch (const rhi::UnsupportedError& e) {
-                out.skipped.push_back({name, e.what()});
-                continue;
-            }
-            pattern::PatternRenderer renderer(*device, {.width = 128, .height = 128});
+        out.skipped = forEachConfiguration([&](rhi::Device& device, const std::string& name) {
+            pattern::PatternRenderer renderer(device, {.width = 128, .height = 128});
             renderer.render(pattern::testPattern());
             Rendered r{name, renderer.color(), {}};
             const rhi::DepthImage depth = renderer.depth();
             for (float d : depth.depth)
-                r.viewDepth.push_back(d == device->conventions().farDepth()
+                r.viewDepth.push_back(d == device.conventions().farDepth()
                                           ? NAN
-                                          : device->conventions().viewDepth(renderer.projection(), d));
+                                          : device.conventions().viewDepth(renderer.projection(), d));
             savePicture(r.color, fmt::format("parity/{}", name));
-            expectNoDebugMessages(*device);
             out.rendered.push_back(std::move(r));
-        }
+        });
         return out;
     }();
     return results;
@@ -142,23 +134,15 @@ TEST(ParityTest, LinearViewDepthAgreesEverywhere)
 TEST(ParityTest, ReversedZBeatsTheStandardMappingAtDistance)
 {
     int worstReversed = -1, bestStandard = -1;
-    std::vector<SkippedConfiguration> skipped;
-    for (const std::string& name : compiledConfigurations()) {
-        std::unique_ptr<rhi::Device> device;
-        try {
-            device = createValidatedDevice(name);
-        } catch (const rhi::UnsupportedError& e) {
-            skipped.push_back({name, e.what()});
-            continue;
-        }
-        const ZFighting z = countZFighting(*device);
-        std::cout << fmt::format("[ z-fighting ] {}: {} of {} pixels\n", name, z.fighting, z.pixels);
-        const bool precise = device->conventions().reversedZ() &&
-                             device->conventions().depthRange() == rhi::DepthRange::ZeroToOne;
-        int& slot = precise ? worstReversed : bestStandard;
-        slot = slot < 0 ? z.fighting : (precise ? std::max(slot, z.fighting) : std::min(slot, z.fighting));
-        expectNoDebugMessages(*device);
-    }
+    const std::vector<SkippedConfiguration> skipped =
+        forEachConfiguration([&](rhi::Device& device, const std::string& name) {
+            const ZFighting z = countZFighting(device);
+            std::cout << fmt::format("[ z-fighting ] {}: {} of {} pixels\n", name, z.fighting, z.pixels);
+            const bool precise = device.conventions().reversedZ() &&
+                                 device.conventions().depthRange() == rhi::DepthRange::ZeroToOne;
+            int& slot = precise ? worstReversed : bestStandard;
+            slot = slot < 0 ? z.fighting : (precise ? std::max(slot, z.fighting) : std::min(slot, z.fighting));
+        });
     ASSERT_GE(worstReversed, 0);
     ASSERT_GE(bestStandard, 0);
     EXPECT_LT(worstReversed, bestStandard);

@@ -269,6 +269,54 @@ TEST_F(GltfLoaderTest, BaseColorTextureIsDecodedToRgba8)
     }
 }
 
+// glTF samplers (section 5.26) map onto TextureSampler field by field; base colour textures are sRGB.
+TEST_F(GltfLoaderTest, SamplersReachTheSceneTextures)
+{
+    const Scene scene = loadGltf(write(testing::sampledTexturesScene(
+                                     {{{"magFilter", 9728}, {"minFilter", 9986}, {"wrapS", 33648}, {"wrapT", 33071}},
+                                      nullptr,
+                                      {{"minFilter", 9729}, {"wrapT", 33648}},
+                                      {{"magFilter", 9729}, {"minFilter", 9985}, {"wrapS", 33071}}})))
+                            .scene;
+    ASSERT_EQ(scene.textures.size(), 4u) << "one scene texture per glTF texture";
+    const auto sampler = [&](int cube) {
+        const Material& m = scene.materialOf(scene.objects.at(*scene.findObject("cube " + std::to_string(cube))));
+        EXPECT_EQ(scene.textures.at(*m.baseColorTexture).colorSpace, TextureColorSpace::Srgb);
+        return scene.textures.at(*m.baseColorTexture).sampler;
+    };
+    const TextureSampler nearestMirrored = sampler(0);
+    EXPECT_EQ(nearestMirrored.magFilter, TextureFilter::Nearest);
+    EXPECT_EQ(nearestMirrored.minFilter, TextureFilter::Nearest);
+    EXPECT_EQ(nearestMirrored.mipFilter, TextureMipFilter::Linear);
+    EXPECT_EQ(nearestMirrored.wrapS, TextureWrap::MirroredRepeat);
+    EXPECT_EQ(nearestMirrored.wrapT, TextureWrap::ClampToEdge);
+    const TextureSampler none = sampler(1); // glTF: repeat and auto filtering, which is trilinear here
+    EXPECT_EQ(none.magFilter, TextureFilter::Linear);
+    EXPECT_EQ(none.minFilter, TextureFilter::Linear);
+    EXPECT_EQ(none.mipFilter, TextureMipFilter::Linear);
+    EXPECT_EQ(none.wrapS, TextureWrap::Repeat);
+    EXPECT_EQ(none.wrapT, TextureWrap::Repeat);
+    const TextureSampler linearNoMips = sampler(2);
+    EXPECT_EQ(linearNoMips.magFilter, TextureFilter::Linear) << "an undefined magFilter is auto: linear";
+    EXPECT_EQ(linearNoMips.mipFilter, TextureMipFilter::None);
+    EXPECT_EQ(linearNoMips.wrapS, TextureWrap::Repeat) << "wrapS defaults to REPEAT";
+    EXPECT_EQ(linearNoMips.wrapT, TextureWrap::MirroredRepeat);
+    const TextureSampler mipNearest = sampler(3);
+    EXPECT_EQ(mipNearest.minFilter, TextureFilter::Linear);
+    EXPECT_EQ(mipNearest.mipFilter, TextureMipFilter::Nearest);
+    EXPECT_EQ(mipNearest.wrapS, TextureWrap::ClampToEdge);
+}
+
+TEST_F(GltfLoaderTest, UnknownSamplerCodesAreRefused)
+{
+    EXPECT_CONTAINS(errorOf(write(testing::sampledTexturesScene({{{"wrapS", 12345}}}))),
+                    "sampler 0: wrapS 12345 is not CLAMP_TO_EDGE (33071), MIRRORED_REPEAT (33648) or REPEAT (10497)");
+    EXPECT_CONTAINS(errorOf(write(testing::sampledTexturesScene({{{"minFilter", 9730}}}))),
+                    "sampler 0: minFilter 9730");
+    EXPECT_CONTAINS(errorOf(write(testing::sampledTexturesScene({{{"magFilter", 9984}}}))),
+                    "sampler 0: magFilter 9984");
+}
+
 TEST_F(GltfLoaderTest, DefaultsForASceneWithoutLightsOrCamera)
 {
     const GltfScene loaded = loadGltf(write(cubeScene()));

@@ -57,11 +57,32 @@ struct Variant {
     std::optional<CasterMode> casters; // every material but the ground's, when set
     ShadowFilter otherFilter = ShadowFilter::PCF2x2;
     shadows::PointShadowMode pointMode = shadows::PointShadowMode::Atlas;
+    bool textured = false; // every material gets texturedChecker() as its base colour texture
 };
+
+// 1024 x 1024 texels in cells of 2 x 2 of two hues, sampled trilinear with repeat (the glTF default) and the
+// frame's anisotropy: the ground is magnified near the camera and minified far away, the objects minified.
+scene::TextureImage texturedChecker()
+{
+    constexpr std::uint32_t size = 1024;
+    scene::TextureImage image{.name = "checker", .width = size, .height = size};
+    for (std::uint32_t y = 0; y < size; ++y)
+        for (std::uint32_t x = 0; x < size; ++x) {
+            const bool even = (x / 2 + y / 2) % 2 == 0;
+            const std::uint8_t warm = even ? 220 : 70;
+            image.rgba.insert(image.rgba.end(), {warm, 150, std::uint8_t(290 - warm), 255});
+        }
+    return image;
+}
 
 scene::Scene sceneOf(const Variant& variant)
 {
     scene::Scene scene = apps::namedScene(variant.scene);
+    if (variant.textured) {
+        scene.textures.push_back(texturedChecker());
+        for (scene::Material& material : scene.materials)
+            material.baseColorTexture = 0;
+    }
     if (variant.casters) {
         const std::uint32_t ground = scene.objects.at(scene.findObject("ground").value()).material;
         for (std::uint32_t i = 0; i < scene.materials.size(); ++i) {
@@ -384,6 +405,9 @@ TEST(ShadowParity, BlendDither) { checkParity({.name = "dither", .blend = Cascad
 TEST(ShadowParity, CastersClip) { checkParity({.name = "clip", .casters = CasterMode::Clip}); }
 TEST(ShadowParity, CastersDither) { checkParity({.name = "casters-dither", .casters = CasterMode::Dither}); }
 TEST(ShadowParity, CastersOff) { checkParity({.name = "casters-off", .casters = CasterMode::Off}); }
+
+// sRGB base colour textures with CPU-made mip chains, trilinear and anisotropic, on every surface.
+TEST(ShadowParity, TexturedMaterials) { checkParity({.name = "textured", .textured = true}); }
 
 // Directional + 3 spot + 2 point lights: the other atlas holds 15 tiles.
 TEST(ShadowParity, MixedLights) { checkParity({.name = "mixed", .scene = "mixed"}); }

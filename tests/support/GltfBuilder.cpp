@@ -190,6 +190,27 @@ std::vector<std::uint8_t> GltfBuilder::glbBytes() const
 
 void GltfBuilder::writeGlb(const std::filesystem::path& path) const { writeFile(path, glbBytes()); }
 
+GltfBuilder sampledTexturesScene(const std::vector<nlohmann::json>& samplers)
+{
+    GltfBuilder b;
+    std::vector<std::uint8_t> rgba;
+    for (std::uint8_t i = 0; i < 16; ++i)
+        rgba.insert(rgba.end(), {std::uint8_t(i * 16), 128, std::uint8_t(255 - i * 16), 255});
+    const int image = b.addPngImage(4, 4, rgba);
+    for (std::size_t i = 0; i < samplers.size(); ++i) {
+        nlohmann::json texture = {{"source", image}};
+        if (!samplers[i].is_null())
+            texture["sampler"] = b.add("samplers", samplers[i]);
+        const int material = b.add("materials", {{"name", "material " + std::to_string(i)},
+                                                 {"pbrMetallicRoughness",
+                                                  {{"baseColorTexture", {{"index", b.add("textures", texture)}}}}}});
+        b.addRoot(b.add("nodes", {{"name", "cube " + std::to_string(i)},
+                                  {"mesh", addCubeMesh(b, "cube " + std::to_string(i), material)},
+                                  {"translation", {3.0 * double(i), 0, 0}}}));
+    }
+    return b;
+}
+
 int addCubeMesh(GltfBuilder& builder, const std::string& name, int material, Component indexComponent)
 {
     // Per face: normal, and the two in-face axes u and v with u x v = normal (counter-clockwise outside).

@@ -58,6 +58,10 @@ private:
 // the given component type, counter-clockwise seen from outside. Returns the mesh index.
 int addCubeMesh(GltfBuilder& builder, const std::string& name, int material, Component indices = Component::UnsignedShort);
 
+// One cube per entry of `samplers` (node "cube <i>"), its material's base colour texture a 4 x 4 picture
+// sampled by that glTF sampler (a JSON object), or by none for a null entry.
+GltfBuilder sampledTexturesScene(const std::vector<nlohmann::json>& samplers);
+
 // The scene the command-line tests render: a ground plane, a cube standing on it and a rotated,
 // scaled one above it, a masked and a blended material, a directional light, a spot light, a
 // point light and a camera named "overview" looking at the cubes.

@@ -2,6 +2,8 @@
 
 #include "ImageFiles.hpp"
 
+#include "penumbra/rhi/Error.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <string_view>
@@ -31,6 +33,24 @@ void expectNoDebugMessages(rhi::Device& device)
 {
     for (const std::string& message : device.debugMessages())
         ADD_FAILURE() << penumbra::configurationName(device.desc()) << " debug message: " << message;
+}
+
+std::vector<SkippedConfiguration> forEachConfiguration(
+    const std::function<void(rhi::Device& device, const std::string& configuration)>& use)
+{
+    std::vector<SkippedConfiguration> skipped;
+    for (const std::string& name : compiledConfigurations()) {
+        std::unique_ptr<rhi::Device> device;
+        try {
+            device = createValidatedDevice(name);
+        } catch (const rhi::UnsupportedError& e) {
+            skipped.push_back({name, e.what()});
+            continue;
+        }
+        use(*device, name);
+        expectNoDebugMessages(*device);
+    }
+    return skipped;
 }
 
 const std::vector<std::string>& compiledConfigurations()

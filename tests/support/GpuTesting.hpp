@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <gtest/gtest.h>
 #include <memory>
 #include <string>
@@ -33,6 +34,11 @@ void reportSkipped(const std::vector<SkippedConfiguration>& skipped);
 // A device with validation / debug output on; any message it records fails the test.
 std::unique_ptr<rhi::Device> createValidatedDevice(const std::string& configuration);
 void expectNoDebugMessages(rhi::Device& device);
+
+// Calls `use` with a validated device of each compiled configuration in turn, then fails the test for any debug
+// message it recorded; returns the configurations whose device the driver refused (rhi::UnsupportedError).
+std::vector<SkippedConfiguration> forEachConfiguration(
+    const std::function<void(rhi::Device& device, const std::string& configuration)>& use);
 
 class GpuTest : public ::testing::Test {
 protected:

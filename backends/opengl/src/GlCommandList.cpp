@@ -20,13 +20,6 @@ void checkBufferRange(const char* what, const rhi::Buffer& buffer, std::uint64_t
                                      buffer.desc().debugName, buffer.desc().size));
 }
 
-void checkLayer(const char* what, const rhi::Texture& texture, std::uint32_t layer)
-{
-    if (layer >= texture.desc().layers)
-        throw rhi::Error(fmt::format("{}: layer {} of texture '{}' is out of range [0, {}]", what, layer,
-                                     texture.desc().debugName, texture.desc().layers - 1));
-}
-
 // Replays one list; lives for one submit and tracks what the recorded commands bound.
 class Replayer {
 public:
@@ -138,9 +131,12 @@ public:
     void operator()(const command::CopyTexture& c)
     {
         const rhi::TextureDesc& d = c.src->desc();
-        gl_.CopyImageSubData(c.src->name(), c.src->target(), 0, 0, 0, c.src->isArray() ? GLint(c.srcLayer) : 0,
-                             c.dst->name(), c.dst->target(), 0, 0, 0, c.dst->isArray() ? GLint(c.dstLayer) : 0,
-                             GLsizei(d.width), GLsizei(d.height), 1);
+        const GLint srcZ = c.src->isArray() ? GLint(c.srcLayer) : 0;
+        const GLint dstZ = c.dst->isArray() ? GLint(c.dstLayer) : 0;
+        for (std::uint32_t level = 0; level < d.mipLevels; ++level)
+            gl_.CopyImageSubData(c.src->name(), c.src->target(), GLint(level), 0, 0, srcZ, c.dst->name(),
+                                 c.dst->target(), GLint(level), 0, 0, dstZ, GLsizei(rhi::mipExtent(d.width, level)),
+                                 GLsizei(rhi::mipExtent(d.height, level)), 1);
     }
 
     // Synchronous readback into the mapped buffer, so later commands of the list see the bytes.
@@ -148,10 +144,10 @@ public:
     {
         const rhi::TextureDesc& d = c.src->desc();
         const GlTextureFormat f = glTextureFormat(d.format);
-        scratch_.resize(rhi::layerSize(d));
-        gl_.GetTextureSubImage(c.src->name(), 0, 0, 0, c.src->isArray() ? GLint(c.layer) : 0, GLsizei(d.width),
-                               GLsizei(d.height), 1, f.pixelFormat, f.pixelType, GLsizei(scratch_.size()),
-                               scratch_.data());
+        scratch_.resize(rhi::levelSize(d, c.level));
+        gl_.GetTextureSubImage(c.src->name(), GLint(c.level), 0, 0, c.src->isArray() ? GLint(c.layer) : 0,
+                               GLsizei(rhi::mipExtent(d.width, c.level)), GLsizei(rhi::mipExtent(d.height, c.level)), 1,
+                               f.pixelFormat, f.pixelType, GLsizei(scratch_.size()), scratch_.data());
         if (d.format == rhi::Format::D24S8)
             moveDepthToLowBits();
         std::memcpy(c.dst->mapped() + c.dstOffset, scratch_.data(), scratch_.size());
@@ -303,24 +299,16 @@ void GlCommandList::copyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, 
 void GlCommandList::copyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
                                 std::uint32_t dstLayer)
 {
-    const rhi::TextureDesc& s = src.desc();
-    const rhi::TextureDesc& d = dst.desc();
-    checkLayer("copyTexture source", src, srcLayer);
-    checkLayer("copyTexture destination", dst, dstLayer);
-    if (s.width != d.width || s.height != d.height || s.format != d.format)
-        throw rhi::Error(fmt::format("copyTexture: '{}' ({}x{} {}) and '{}' ({}x{} {}) differ", s.debugName, s.width,
-                                     s.height, rhi::formatName(s.format), d.debugName, d.width, d.height,
-                                     rhi::formatName(d.format)));
+    rhi::checkTextureCopy(src, srcLayer, dst, dstLayer);
     commands_.push_back(command::CopyTexture{&glObject<const GlTexture>(src, "copy source"), srcLayer,
                                              &glObject<GlTexture>(dst, "copy destination"), dstLayer});
 }
 
-void GlCommandList::copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, rhi::Buffer& dst,
-                                        std::uint64_t dstOffset)
+void GlCommandList::copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level,
+                                        rhi::Buffer& dst, std::uint64_t dstOffset)
 {
-    checkLayer("copyTextureToBuffer", src, layer);
-    checkBufferRange("copyTextureToBuffer", dst, dstOffset, rhi::layerSize(src.desc()));
-    commands_.push_back(command::CopyTextureToBuffer{&glObject<const GlTexture>(src, "copy source"), layer,
+    rhi::checkTextureReadback(src.desc(), layer, level, dst.desc(), dstOffset);
+    commands_.push_back(command::CopyTextureToBuffer{&glObject<const GlTexture>(src, "copy source"), layer, level,
                                                      &glObject<GlBuffer>(dst, "copy destination"), dstOffset});
 }
 

@@ -71,8 +71,29 @@ rhi::Capabilities GlDevice::queryCapabilities() const
     caps.maxTextureLayers = std::uint32_t(integer(gl, GL_MAX_ARRAY_TEXTURE_LAYERS));
     caps.cubeArrays = true; // GL_TEXTURE_CUBE_MAP_ARRAY is core since 4.0
     caps.maxCubeSize = std::uint32_t(integer(gl, GL_MAX_CUBE_MAP_TEXTURE_SIZE));
-    caps.linearFilter.fill(true); // GL filters every format here linearly, depth with comparison included
+    if (context_->version() >= 46 || context_->hasExtension("GL_ARB_texture_filter_anisotropic") ||
+        context_->hasExtension("GL_EXT_texture_filter_anisotropic"))
+        gl.GetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &caps.maxSamplerAnisotropy);
+    for (rhi::Format f : rhi::allFormats)
+        caps.formats[std::size_t(f)] = formatSupport(f);
     return caps;
+}
+
+// What the driver says of the format for 2D textures (ARB_internalformat_query2, core in GL 4.3).
+rhi::FormatSupport GlDevice::formatSupport(rhi::Format format) const
+{
+    const GlFunctions& gl = context_->gl();
+    const GLenum internalFormat = glTextureFormat(format).internalFormat;
+    auto query = [&](GLenum name) {
+        GLint value = GL_NONE;
+        gl.GetInternalformativ(GL_TEXTURE_2D, internalFormat, name, 1, &value);
+        return value;
+    };
+    if (query(GL_INTERNALFORMAT_SUPPORTED) != GL_TRUE)
+        return {};
+    return {.sampled = query(GL_FRAGMENT_TEXTURE) == GL_FULL_SUPPORT,
+            .linearFilter = query(GL_FILTER) == GL_FULL_SUPPORT,
+            .renderTarget = query(GL_FRAMEBUFFER_RENDERABLE) == GL_FULL_SUPPORT};
 }
 
 std::unique_ptr<rhi::Buffer> GlDevice::createBuffer(const rhi::BufferDesc& desc)
@@ -86,16 +107,14 @@ std::unique_ptr<rhi::Texture> GlDevice::createTexture(const rhi::TextureDesc& de
     return std::make_unique<GlTexture>(context_, desc);
 }
 
-void GlDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::span<const std::byte> data)
+void GlDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
+                            std::span<const std::byte> data)
 {
     auto& t = glObject<GlTexture>(texture, "writeTexture texture");
     const rhi::TextureDesc& d = t.desc();
-    if (layer >= d.layers)
-        throw rhi::Error(fmt::format("writeTexture: layer {} of '{}' is out of range [0, {}]", layer, d.debugName,
-                                     d.layers - 1));
-    if (data.size() != rhi::layerSize(d))
-        throw rhi::Error(fmt::format("writeTexture: '{}' needs {} bytes per layer, got {}", d.debugName,
-                                     rhi::layerSize(d), data.size()));
+    rhi::checkTextureUpload(d, layer, level, data.size());
+    const auto width = GLsizei(rhi::mipExtent(d.width, level));
+    const auto height = GLsizei(rhi::mipExtent(d.height, level));
     const GlTextureFormat f = glTextureFormat(d.format);
     std::vector<std::uint32_t> packed;
     const void* pixels = data.data();
@@ -112,15 +131,15 @@ void GlDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::spa
     gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
     if (t.isArray())
-        gl.TextureSubImage3D(t.name(), 0, 0, 0, GLint(layer), GLsizei(d.width), GLsizei(d.height), 1, f.pixelFormat,
-                             f.pixelType, pixels);
-    else
-        gl.TextureSubImage2D(t.name(), 0, 0, 0, GLsizei(d.width), GLsizei(d.height), f.pixelFormat, f.pixelType,
+        gl.TextureSubImage3D(t.name(), GLint(level), 0, 0, GLint(layer), width, height, 1, f.pixelFormat, f.pixelType,
                              pixels);
+    else
+        gl.TextureSubImage2D(t.name(), GLint(level), 0, 0, width, height, f.pixelFormat, f.pixelType, pixels);
 }
 
 std::unique_ptr<rhi::Sampler> GlDevice::createSampler(const rhi::SamplerDesc& desc)
 {
+    rhi::checkSamplerDesc(capabilities_, desc);
     return std::make_unique<GlSampler>(context_, desc, conventions_);
 }
 
@@ -162,6 +181,7 @@ void GlDevice::applySubmitDefaults()
     gl.Enable(GL_PROGRAM_POINT_SIZE);  // points take gl_PointSize, as in Vulkan
     gl.Disable(GL_DITHER);             // Vulkan does not dither; keep RGBA8 results identical
     gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // Vulkan filters across cube faces always
+    gl.Enable(GL_FRAMEBUFFER_SRGB);          // Vulkan encodes writes to sRGB attachments always
     gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
     cache_->frontFace(orientation_.frontFace());

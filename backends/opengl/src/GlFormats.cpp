@@ -13,6 +13,12 @@ GlTextureFormat glTextureFormat(rhi::Format format)
     case rhi::Format::D24S8:
         return {GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, GL_DEPTH_STENCIL_ATTACHMENT};
     case rhi::Format::D32F: return {GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT, GL_DEPTH_ATTACHMENT};
+    case rhi::Format::RGBA8_SRGB: return {GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, GL_NONE};
+    case rhi::Format::R8: return {GL_R8, GL_RED, GL_UNSIGNED_BYTE, GL_NONE};
+    case rhi::Format::RG8: return {GL_RG8, GL_RG, GL_UNSIGNED_BYTE, GL_NONE};
+    case rhi::Format::R16F: return {GL_R16F, GL_RED, GL_HALF_FLOAT, GL_NONE};
+    case rhi::Format::RG16F: return {GL_RG16F, GL_RG, GL_HALF_FLOAT, GL_NONE};
+    case rhi::Format::R32F: return {GL_R32F, GL_RED, GL_FLOAT, GL_NONE};
     }
     return {GL_NONE, GL_NONE, GL_NONE, GL_NONE};
 }
@@ -71,6 +77,32 @@ GLenum glBlendEquation(rhi::BlendOp op)
     case rhi::BlendOp::Max: return GL_MAX;
     }
     return GL_FUNC_ADD;
+}
+
+GLenum glFilter(rhi::Filter filter)
+{
+    return filter == rhi::Filter::Linear ? GL_LINEAR : GL_NEAREST;
+}
+
+GLenum glMinFilter(rhi::Filter filter, rhi::MipFilter mip)
+{
+    const bool linear = filter == rhi::Filter::Linear;
+    switch (mip) {
+    case rhi::MipFilter::None: return linear ? GL_LINEAR : GL_NEAREST;
+    case rhi::MipFilter::Nearest: return linear ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST;
+    case rhi::MipFilter::Linear: return linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR;
+    }
+    return GL_NEAREST;
+}
+
+GLenum glWrap(rhi::AddressMode mode)
+{
+    switch (mode) {
+    case rhi::AddressMode::ClampToEdge: return GL_CLAMP_TO_EDGE;
+    case rhi::AddressMode::Repeat: return GL_REPEAT;
+    case rhi::AddressMode::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    }
+    return GL_CLAMP_TO_EDGE;
 }
 
 GLenum glPrimitive(rhi::PrimitiveTopology topology)

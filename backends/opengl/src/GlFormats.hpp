@@ -4,6 +4,7 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Format.hpp"
 #include "penumbra/rhi/Pipeline.hpp"
+#include "penumbra/rhi/Resources.hpp"
 
 namespace penumbra::opengl {
 
@@ -28,5 +29,9 @@ GLenum glCompareFunc(rhi::CompareOp op);
 GLenum glBlendFactor(rhi::BlendFactor factor);
 GLenum glBlendEquation(rhi::BlendOp op);
 GLenum glPrimitive(rhi::PrimitiveTopology topology);
+GLenum glFilter(rhi::Filter filter);
+// GL folds the mip filter into the minification filter (GL 4.5 section 8.14).
+GLenum glMinFilter(rhi::Filter filter, rhi::MipFilter mip);
+GLenum glWrap(rhi::AddressMode mode);
 
 } // namespace penumbra::opengl

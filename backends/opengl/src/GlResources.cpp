@@ -82,11 +82,12 @@ GlTexture::GlTexture(GlContextPtr context, const rhi::TextureDesc& desc) : conte
     GLuint texture = 0;
     gl.CreateTextures(target_, 1, &texture);
     name_ = GlTextureName(*context_, texture);
+    const auto levels = GLsizei(desc.mipLevels);
     if (isArray())
-        gl.TextureStorage3D(name_.get(), 1, format.internalFormat, GLsizei(desc.width), GLsizei(desc.height),
+        gl.TextureStorage3D(name_.get(), levels, format.internalFormat, GLsizei(desc.width), GLsizei(desc.height),
                             GLsizei(desc.layers));
     else
-        gl.TextureStorage2D(name_.get(), 1, format.internalFormat, GLsizei(desc.width), GLsizei(desc.height));
+        gl.TextureStorage2D(name_.get(), levels, format.internalFormat, GLsizei(desc.width), GLsizei(desc.height));
     gl.TextureParameteri(name_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TextureParameteri(name_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     if (desc.format == rhi::Format::D24S8)
@@ -100,13 +101,18 @@ GlSampler::GlSampler(GlContextPtr context, const rhi::SamplerDesc& desc, const r
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
     name_ = createName<GlSamplerName>(*context_, gl.CreateSamplers);
-    const GLint filter = desc.filter == rhi::Filter::Linear ? GL_LINEAR : GL_NEAREST;
-    const GLint wrap = desc.address == rhi::AddressMode::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-    gl.SamplerParameteri(name_.get(), GL_TEXTURE_MIN_FILTER, filter);
-    gl.SamplerParameteri(name_.get(), GL_TEXTURE_MAG_FILTER, filter);
-    gl.SamplerParameteri(name_.get(), GL_TEXTURE_WRAP_S, wrap);
-    gl.SamplerParameteri(name_.get(), GL_TEXTURE_WRAP_T, wrap);
-    gl.SamplerParameteri(name_.get(), GL_TEXTURE_WRAP_R, wrap);
+    const GLuint sampler = name_.get();
+    const rhi::LodRange lod = rhi::samplerLodRange(desc);
+    gl.SamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GLint(glMinFilter(desc.minFilter, desc.mipFilter)));
+    gl.SamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GLint(glFilter(desc.magFilter)));
+    gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GLint(glWrap(desc.addressU)));
+    gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GLint(glWrap(desc.addressV)));
+    gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    gl.SamplerParameterf(sampler, GL_TEXTURE_MIN_LOD, lod.min);
+    gl.SamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, lod.max);
+    // Only set where asked for: a driver without the extension (maxSamplerAnisotropy 1) rejects the name.
+    if (desc.maxAnisotropy > 1.0f)
+        gl.SamplerParameterf(sampler, GL_TEXTURE_MAX_ANISOTROPY, desc.maxAnisotropy);
     if (desc.compare) {
         gl.SamplerParameteri(name_.get(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
         gl.SamplerParameteri(name_.get(), GL_TEXTURE_COMPARE_FUNC, GLint(glCompareFunc(conventions.shadowCompareOp())));

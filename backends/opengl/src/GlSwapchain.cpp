@@ -59,6 +59,9 @@ void GlSwapchain::show(const rhi::Texture& image, rhi::Image* window)
     // The scissor test is the one fragment operation that applies to blits; the next submit
     // sets all state again.
     gl.Disable(GL_SCISSOR_TEST);
+    // The picture's bytes reach the window unchanged even if its framebuffer is sRGB-capable (GL 4.5,
+    // glBlitFramebuffer: blits encode into sRGB destinations while GL_FRAMEBUFFER_SRGB is on).
+    gl.Disable(GL_FRAMEBUFFER_SRGB);
     const auto width = GLint(source.desc().width);
     const auto height = GLint(source.desc().height);
     gl.BlitNamedFramebuffer(read, 0, 0, 0, width, height, 0, GLint(size.height), GLint(size.width), 0,

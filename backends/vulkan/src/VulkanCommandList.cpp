@@ -199,9 +199,6 @@ void VulkanCommandList::bindTexture(std::uint32_t binding, const rhi::Texture& t
 {
     const auto& vkTexture = vulkanObject<const VulkanTexture>(texture, "bindTexture: the texture");
     const auto& vkSampler = vulkanObject<const VulkanSampler>(sampler, "bindTexture: the sampler");
-    if (!rhi::hasFlag(texture.desc().usage, rhi::TextureUsage::Sampled))
-        throw rhi::Error(fmt::format("bindTexture {}: texture '{}' lacks TextureUsage::Sampled", binding,
-                                     texture.desc().debugName));
     rhi::checkTextureBinding(context_->capabilities, texture, sampler);
     descriptors_.setTexture(binding, vkTexture.sampledView(), vkSampler.handle());
 }

@@ -37,7 +37,7 @@ public:
                     std::uint64_t size) override;
     void copyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
                      std::uint32_t dstLayer) override;
-    void copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, rhi::Buffer& dst,
+    void copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level, rhi::Buffer& dst,
                              std::uint64_t dstOffset) override;
     void writeTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
 

@@ -62,9 +62,22 @@ void Context::fillCapabilities()
     capabilities.maxTextureLayers = limits.maxImageArrayLayers;
     capabilities.cubeArrays = features.imageCubeArray;
     capabilities.maxCubeSize = limits.maxImageDimensionCube;
-    for (rhi::Format f : allFormats)
-        capabilities.linearFilter[std::size_t(f)] =
-            (formatFeatures(toVkFormat(f)) & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+    capabilities.maxSamplerAnisotropy = features.samplerAnisotropy ? limits.maxSamplerAnisotropy : 1.0f;
+    for (rhi::Format f : rhi::allFormats)
+        capabilities.formats[std::size_t(f)] = formatSupport(f);
+}
+
+rhi::FormatSupport Context::formatSupport(rhi::Format format) const
+{
+    const VkFormatFeatureFlags has = formatFeatures(toVkFormat(format));
+    auto all = [&](VkFormatFeatureFlags wanted) { return (has & wanted) == wanted; };
+    // Every texture is uploaded and copied, so each use needs the transfer features as well.
+    const VkFormatFeatureFlags transfer = VK_FORMAT_FEATURE_TRANSFER_SRC_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+    const VkFormatFeatureFlags attachment = rhi::isDepthFormat(format) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT
+                                                                      : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
+    return {.sampled = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | transfer),
+            .linearFilter = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT),
+            .renderTarget = all(attachment | transfer)};
 }
 
 bool Context::hasDeviceExtension(const char* name) const
@@ -104,6 +117,7 @@ void Context::createDevice()
     enabled.features.depthBiasClamp = available.features.depthBiasClamp;
     enabled.features.independentBlend = available.features.independentBlend;
     enabled.features.imageCubeArray = available.features.imageCubeArray; // every cube texture is a cube array
+    enabled.features.samplerAnisotropy = available.features.samplerAnisotropy;
     maintenance4.pNext = nullptr;
 
     const float priority = 1.0f;

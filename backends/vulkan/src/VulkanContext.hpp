@@ -60,6 +60,7 @@ private:
     void nameObject(VkObjectType type, std::uint64_t handle, const std::string& name) const;
     void createDevice();
     void fillCapabilities();
+    rhi::FormatSupport formatSupport(rhi::Format format) const;
 
     PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
     std::mutex queueMutex_;

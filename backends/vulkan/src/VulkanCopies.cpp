@@ -9,16 +9,10 @@
 #include "penumbra/rhi/Error.hpp"
 
 #include <fmt/format.h>
+#include <vector>
 
 namespace penumbra::vulkan {
 namespace {
-
-void checkLayer(std::string_view what, const rhi::TextureDesc& desc, std::uint32_t layer)
-{
-    if (layer >= desc.layers)
-        throw rhi::Error(fmt::format("{}: layer {} of texture '{}' is out of range [0, {}]", what, layer,
-                                     desc.debugName, desc.layers - 1));
-}
 
 void checkBufferRange(std::string_view what, const rhi::BufferDesc& desc, std::uint64_t offset, std::uint64_t size)
 {
@@ -51,49 +45,37 @@ void VulkanCommandList::copyTexture(const rhi::Texture& src, std::uint32_t srcLa
     requireOutsidePass("copyTexture");
     const auto& from = vulkanObject<const VulkanTexture>(src, "copyTexture: the source");
     const auto& to = vulkanObject<const VulkanTexture>(dst, "copyTexture: the destination");
-    const rhi::TextureDesc& a = from.desc();
-    const rhi::TextureDesc& b = to.desc();
-    checkLayer("copyTexture source", a, srcLayer);
-    checkLayer("copyTexture destination", b, dstLayer);
-    if (a.width != b.width || a.height != b.height || a.format != b.format)
-        throw rhi::Error(fmt::format("copyTexture: '{}' is {}x{} {} but '{}' is {}x{} {}", a.debugName, a.width,
-                                     a.height, rhi::formatName(a.format), b.debugName, b.width, b.height,
-                                     rhi::formatName(b.format)));
-    if (&from == &to && srcLayer == dstLayer)
-        throw rhi::Error(fmt::format("copyTexture: layer {} of '{}' onto itself", srcLayer, a.debugName));
+    rhi::checkTextureCopy(src, srcLayer, dst, dstLayer);
+    const rhi::TextureDesc& desc = from.desc();
 
     from.transition(commands_, srcLayer, from.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     to.transition(commands_, dstLayer, to.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    VkImageCopy region{};
-    region.srcSubresource = {fullAspect(a.format), 0, srcLayer, 1};
-    region.dstSubresource = {fullAspect(b.format), 0, dstLayer, 1};
-    region.extent = {a.width, a.height, 1};
+    std::vector<VkImageCopy> regions(desc.mipLevels);
+    for (std::uint32_t level = 0; level < desc.mipLevels; ++level) {
+        regions[level].srcSubresource = {fullAspect(desc.format), level, srcLayer, 1};
+        regions[level].dstSubresource = {fullAspect(desc.format), level, dstLayer, 1};
+        regions[level].extent = {rhi::mipExtent(desc.width, level), rhi::mipExtent(desc.height, level), 1};
+    }
     vkCmdCopyImage(commands_, from.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.image(),
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, std::uint32_t(regions.size()), regions.data());
     from.transition(commands_, srcLayer, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, from.restingLayout());
     to.transition(commands_, dstLayer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, to.restingLayout());
 }
 
-void VulkanCommandList::copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, rhi::Buffer& dst,
-                                            std::uint64_t dstOffset)
+void VulkanCommandList::copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level,
+                                            rhi::Buffer& dst, std::uint64_t dstOffset)
 {
     requireOutsidePass("copyTextureToBuffer");
     const auto& from = vulkanObject<const VulkanTexture>(src, "copyTextureToBuffer: the source");
     const auto& to = vulkanObject<const VulkanBuffer>(dst, "copyTextureToBuffer: the destination");
     const rhi::TextureDesc& desc = from.desc();
-    checkLayer("copyTextureToBuffer", desc, layer);
-    checkBufferRange("copyTextureToBuffer", to.desc(), dstOffset, rhi::layerSize(desc));
-    // Vulkan's rule: texel-size aligned offsets, and multiples of 4 for depth.
-    const std::uint32_t alignment = rhi::isDepthFormat(desc.format) ? 4 : rhi::texelSize(desc.format);
-    if (dstOffset % alignment)
-        throw rhi::Error(fmt::format("copyTextureToBuffer: offset {} is not a multiple of {} for {}", dstOffset,
-                                     alignment, rhi::formatName(desc.format)));
+    rhi::checkTextureReadback(desc, layer, level, to.desc(), dstOffset);
 
     from.transition(commands_, layer, from.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     VkBufferImageCopy region{};
     region.bufferOffset = dstOffset;
-    region.imageSubresource = {dataAspect(desc.format), 0, layer, 1};
-    region.imageExtent = {desc.width, desc.height, 1};
+    region.imageSubresource = {dataAspect(desc.format), level, layer, 1};
+    region.imageExtent = {rhi::mipExtent(desc.width, level), rhi::mipExtent(desc.height, level), 1};
     vkCmdCopyImageToBuffer(commands_, from.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.handle(), 1, &region);
     from.transition(commands_, layer, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, from.restingLayout());
     fullBarrier(commands_);

@@ -27,9 +27,10 @@ std::unique_ptr<rhi::Texture> VulkanDevice::createTexture(const rhi::TextureDesc
     return std::make_unique<VulkanTexture>(context_, desc);
 }
 
-void VulkanDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::span<const std::byte> data)
+void VulkanDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
+                                std::span<const std::byte> data)
 {
-    vulkanObject<VulkanTexture>(texture, "writeTexture: the texture").upload(layer, data);
+    vulkanObject<VulkanTexture>(texture, "writeTexture: the texture").upload(layer, level, data);
 }
 
 std::unique_ptr<rhi::Sampler> VulkanDevice::createSampler(const rhi::SamplerDesc& desc)

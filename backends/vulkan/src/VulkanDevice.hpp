@@ -20,7 +20,8 @@ public:
 
     std::unique_ptr<rhi::Buffer> createBuffer(const rhi::BufferDesc& desc) override;
     std::unique_ptr<rhi::Texture> createTexture(const rhi::TextureDesc& desc) override;
-    void writeTexture(rhi::Texture& texture, std::uint32_t layer, std::span<const std::byte> data) override;
+    void writeTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
+                      std::span<const std::byte> data) override;
     std::unique_ptr<rhi::Sampler> createSampler(const rhi::SamplerDesc& desc) override;
     std::unique_ptr<rhi::Shader> createShader(const rhi::ShaderSource& source) override;
     std::unique_ptr<rhi::Pipeline> createPipeline(const rhi::PipelineDesc& desc) override;

@@ -13,6 +13,12 @@ VkFormat toVkFormat(rhi::Format format)
     case rhi::Format::D16: return VK_FORMAT_D16_UNORM;
     case rhi::Format::D24S8: return VK_FORMAT_D24_UNORM_S8_UINT;
     case rhi::Format::D32F: return VK_FORMAT_D32_SFLOAT;
+    case rhi::Format::RGBA8_SRGB: return VK_FORMAT_R8G8B8A8_SRGB;
+    case rhi::Format::R8: return VK_FORMAT_R8_UNORM;
+    case rhi::Format::RG8: return VK_FORMAT_R8G8_UNORM;
+    case rhi::Format::R16F: return VK_FORMAT_R16_SFLOAT;
+    case rhi::Format::RG16F: return VK_FORMAT_R16G16_SFLOAT;
+    case rhi::Format::R32F: return VK_FORMAT_R32_SFLOAT;
     }
     throw rhi::Error("Vulkan: unknown texture format");
 }
@@ -117,9 +123,20 @@ VkFilter toVkFilter(rhi::Filter filter)
     return filter == rhi::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
 }
 
+// MipFilter::None is the nearest mode with the LOD range rhi::samplerLodRange gives it.
+VkSamplerMipmapMode toVkMipmapMode(rhi::MipFilter filter)
+{
+    return filter == rhi::MipFilter::Linear ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+}
+
 VkSamplerAddressMode toVkAddressMode(rhi::AddressMode mode)
 {
-    return mode == rhi::AddressMode::Repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    switch (mode) {
+    case rhi::AddressMode::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case rhi::AddressMode::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case rhi::AddressMode::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    }
+    throw rhi::Error("Vulkan: unknown address mode");
 }
 
 VkIndexType toVkIndexType(rhi::IndexType type)

@@ -2,13 +2,9 @@
 
 #include "penumbra/rhi/Device.hpp"
 
-#include <array>
 #include <vulkan/vulkan.h>
 
 namespace penumbra::vulkan {
-
-inline constexpr std::array allFormats{rhi::Format::RGBA8, rhi::Format::RGBA16F, rhi::Format::RGBA32F,
-                                       rhi::Format::D16,   rhi::Format::D24S8,   rhi::Format::D32F};
 
 VkFormat toVkFormat(rhi::Format format);
 // Every aspect of the format (depth and stencil for D24S8): what barriers and attachments use.
@@ -24,6 +20,7 @@ VkBlendFactor toVkBlendFactor(rhi::BlendFactor factor);
 VkBlendOp toVkBlendOp(rhi::BlendOp op);
 VkColorComponentFlags toVkColorMask(rhi::ColorMask mask);
 VkFilter toVkFilter(rhi::Filter filter);
+VkSamplerMipmapMode toVkMipmapMode(rhi::MipFilter filter);
 VkSamplerAddressMode toVkAddressMode(rhi::AddressMode mode);
 VkIndexType toVkIndexType(rhi::IndexType type);
 

@@ -53,35 +53,16 @@ VkImageViewType sampledViewType(const rhi::TextureDesc& desc)
     return desc.array || desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
 }
 
-struct ImageUse {
-    VkImageUsageFlags usage;
-    VkFormatFeatureFlags features;
-};
-
-ImageUse imageUse(const rhi::TextureDesc& desc)
+// The format features each usage needs are checked against Capabilities::formats by rhi::checkTextureDesc.
+VkImageUsageFlags imageUsage(const rhi::TextureDesc& desc)
 {
-    ImageUse use{VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                 VK_FORMAT_FEATURE_TRANSFER_SRC_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT};
-    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Sampled)) {
-        use.usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
-        use.features |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
-    }
-    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::RenderTarget)) {
-        const bool depth = rhi::isDepthFormat(desc.format);
-        use.usage |= depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
-        use.features |= depth ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
-    }
-    return use;
-}
-
-void checkTextureDesc(const Context& context, const rhi::TextureDesc& desc, const ImageUse& use)
-{
-    const rhi::Capabilities& caps = context.capabilities;
-    rhi::checkTextureDesc(caps, desc);
-    const VkFormatFeatureFlags missing = use.features & ~context.formatFeatures(toVkFormat(desc.format));
-    if (missing)
-        throw rhi::UnsupportedError(fmt::format("texture '{}': {} lacks format features {:#x} on {} for its usage",
-                                                desc.debugName, rhi::formatName(desc.format), missing, caps.device));
+    VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Sampled))
+        usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::RenderTarget))
+        usage |= rhi::isDepthFormat(desc.format) ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
+                                                 : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    return usage;
 }
 
 } // namespace
@@ -136,19 +117,18 @@ void VulkanBuffer::read(std::uint64_t offset, std::span<std::byte> data) const
 VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::TextureDesc& desc)
     : context_(std::move(context)), desc_(desc), format_(toVkFormat(desc.format)), restingLayout_(restingLayoutOf(desc))
 {
-    const ImageUse use = imageUse(desc);
-    checkTextureDesc(*context_, desc, use);
+    rhi::checkTextureDesc(context_->capabilities, desc);
     const VkDevice device = context_->device;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.flags = desc.cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format_;
     info.extent = {desc.width, desc.height, 1};
-    info.mipLevels = 1;
+    info.mipLevels = desc.mipLevels;
     info.arrayLayers = desc.layers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = use.usage;
+    info.usage = imageUsage(desc);
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     image_ = createOwned<UniqueImage>(device, vkCreateImage, info, "vkCreateImage");
@@ -164,7 +144,7 @@ VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::Textur
     viewInfo.image = image_.get();
     viewInfo.viewType = sampledViewType(desc);
     viewInfo.format = format_;
-    viewInfo.subresourceRange = {dataAspect(desc.format), 0, 1, 0, desc.layers};
+    viewInfo.subresourceRange = {dataAspect(desc.format), 0, desc.mipLevels, 0, desc.layers};
     view_ = createOwned<UniqueImageView>(device, vkCreateImageView, viewInfo, "vkCreateImageView");
     context_->setName(VK_OBJECT_TYPE_IMAGE, image_.get(), desc.debugName);
     context_->setName(VK_OBJECT_TYPE_IMAGE_VIEW, view_.get(), desc.debugName);
@@ -203,27 +183,25 @@ void transitionImage(VkCommandBuffer commandBuffer, VkImage image, const VkImage
 void VulkanTexture::transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from,
                                VkImageLayout to) const
 {
+    const VkImageAspectFlags aspect = fullAspect(desc_.format);
     transitionImage(commandBuffer, image_.get(),
-                    layer == ~0u ? VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, 0, desc_.layers}
-                                 : VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, layer, 1},
+                    layer == ~0u ? VkImageSubresourceRange{aspect, 0, desc_.mipLevels, 0, desc_.layers}
+                                 : VkImageSubresourceRange{aspect, 0, desc_.mipLevels, layer, 1},
                     from, to);
 }
 
-void VulkanTexture::upload(std::uint32_t layer, std::span<const std::byte> data)
+void VulkanTexture::upload(std::uint32_t layer, std::uint32_t level, std::span<const std::byte> data)
 {
-    const std::uint64_t size = rhi::layerSize(desc_);
-    if (layer >= desc_.layers || data.size() != size)
-        throw rhi::Error(fmt::format("writeTexture '{}': layer {} of {} with {} bytes; a layer takes {} bytes",
-                                     desc_.debugName, layer, desc_.layers, data.size(), size));
-    MappedBuffer staging(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    std::memcpy(staging.data(), data.data(), size);
+    rhi::checkTextureUpload(desc_, layer, level, data.size());
+    MappedBuffer staging(context_, data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    std::memcpy(staging.data(), data.data(), data.size());
     context_->runOnce([&](VkCommandBuffer commandBuffer) {
         transition(commandBuffer, layer, restingLayout_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         VkBufferImageCopy region{};
-        region.imageSubresource = {dataAspect(desc_.format), 0, layer, 1};
-        region.imageExtent = {desc_.width, desc_.height, 1};
-        vkCmdCopyBufferToImage(commandBuffer, staging.handle(), image_.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                               &region);
+        region.imageSubresource = {dataAspect(desc_.format), level, layer, 1};
+        region.imageExtent = {rhi::mipExtent(desc_.width, level), rhi::mipExtent(desc_.height, level), 1};
+        vkCmdCopyBufferToImage(commandBuffer, staging.handle(), image_.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                               1, &region);
         transition(commandBuffer, layer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, restingLayout_);
     });
 }
@@ -231,16 +209,21 @@ void VulkanTexture::upload(std::uint32_t layer, std::span<const std::byte> data)
 VulkanSampler::VulkanSampler(std::shared_ptr<Context> context, const rhi::SamplerDesc& desc)
     : context_(std::move(context)), desc_(desc)
 {
+    rhi::checkSamplerDesc(context_->capabilities, desc);
+    const rhi::LodRange lod = rhi::samplerLodRange(desc);
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = toVkFilter(desc.filter);
-    info.minFilter = toVkFilter(desc.filter);
-    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    info.addressModeU = toVkAddressMode(desc.address);
-    info.addressModeV = toVkAddressMode(desc.address);
-    info.addressModeW = toVkAddressMode(desc.address);
+    info.magFilter = toVkFilter(desc.magFilter);
+    info.minFilter = toVkFilter(desc.minFilter);
+    info.mipmapMode = toVkMipmapMode(desc.mipFilter);
+    info.addressModeU = toVkAddressMode(desc.addressU);
+    info.addressModeV = toVkAddressMode(desc.addressV);
+    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.anisotropyEnable = desc.maxAnisotropy > 1.0f;
+    info.maxAnisotropy = desc.maxAnisotropy;
     info.compareEnable = desc.compare;
     info.compareOp = toVkCompareOp(context_->conventions.shadowCompareOp());
-    info.maxLod = 0.0f;
+    info.minLod = lod.min;
+    info.maxLod = lod.max;
     info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
     sampler_ = createOwned<UniqueSampler>(context_->device, vkCreateSampler, info, "vkCreateSampler");
     context_->setName(VK_OBJECT_TYPE_SAMPLER, sampler_.get(), desc.debugName);

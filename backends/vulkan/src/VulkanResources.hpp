@@ -56,15 +56,15 @@ public:
     const rhi::TextureDesc& desc() const override { return desc_; }
 
     VkImage image() const { return image_.get(); }
-    // The view shaders sample: every layer (2D, 2D array or cube array), depth aspect only for D24S8.
+    // The view shaders sample: every layer (2D, 2D array or cube array) and level, depth aspect only for D24S8.
     VkImageView sampledView() const { return view_.get(); }
     VkFormat format() const { return format_; }
     VkImageLayout restingLayout() const { return restingLayout_; }
-    // One layer with every aspect, for a framebuffer.
+    // Level 0 of one layer with every aspect, for a framebuffer.
     UniqueImageView createAttachmentView(std::uint32_t layer) const;
-    // Moves one layer (or all with layer = ~0u) between layouts, waiting for all earlier work.
+    // Moves every level of one layer (or of all with layer = ~0u) between layouts, waiting for all earlier work.
     void transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from, VkImageLayout to) const;
-    void upload(std::uint32_t layer, std::span<const std::byte> data);
+    void upload(std::uint32_t layer, std::uint32_t level, std::span<const std::byte> data);
 
 private:
     std::shared_ptr<Context> context_;

@@ -5,7 +5,9 @@
 #include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace penumbra::render {
@@ -14,15 +16,28 @@ namespace penumbra::render {
 // casters in the order the shadow planner sees their bounds.
 class GpuScene {
 public:
-    // Validates the scene (scene::SceneError names what is wrong) and uploads every mesh and texture.
+    // Validates the scene (scene::SceneError names what is wrong) and uploads every mesh and texture: RGBA8_SRGB
+    // for sRGB ones, with mip chains made on the CPU (rhi::writeMipChain) where their samplers read mip levels.
+    // Samplers start without anisotropic filtering.
     GpuScene(rhi::Device& device, const scene::Scene& scene);
 
     const scene::Scene& scene() const { return scene_; }
     const rhi::Buffer& vertices(std::uint32_t mesh) const { return *meshes_.at(mesh).vertices; }
     const rhi::Buffer& indices(std::uint32_t mesh) const { return *meshes_.at(mesh).indices; }
-    // The material's base colour texture, or a white texel for a material without one.
-    const rhi::Texture& baseColorMap(const scene::Material& material) const;
-    const rhi::Sampler& baseColorSampler() const { return *sampler_; }
+    // Scene::textures[*index] and the sampler its file asks for; a white texel (sampled as 1 in every
+    // channel) and a bilinear sampler for nullopt.
+    const rhi::Texture& texture(std::optional<std::uint32_t> index) const;
+    const rhi::Sampler& sampler(std::optional<std::uint32_t> index) const;
+    const rhi::Texture& baseColorMap(const scene::Material& material) const
+    {
+        return texture(material.baseColorTexture);
+    }
+    const rhi::Sampler& baseColorSampler(const scene::Material& material) const
+    {
+        return sampler(material.baseColorTexture);
+    }
+    // Makes every texture's sampler anew with this anisotropy (within the device's limit) where it changed.
+    void setMaxAnisotropy(float anisotropy);
 
     // Objects whose material casts shadows, with their world bounds; object transforms are read
     // from the scene on every call, so moved objects (with updated worldBounds) are seen.
@@ -38,9 +53,12 @@ private:
     };
     const scene::Scene& scene_;
     std::vector<Mesh> meshes_;
+    rhi::Device& device_;
     std::vector<std::unique_ptr<rhi::Texture>> textures_;
+    std::vector<std::unique_ptr<rhi::Sampler>> samplers_; // one per texture
+    float anisotropy_ = 1.0f;
     std::unique_ptr<rhi::Texture> white_;
-    std::unique_ptr<rhi::Sampler> sampler_;
+    std::unique_ptr<rhi::Sampler> whiteSampler_;
 };
 
 } // namespace penumbra::render

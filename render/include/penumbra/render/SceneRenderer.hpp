@@ -30,6 +30,9 @@ struct FrameDesc {
     // shadow in red, green and blue (1 = lit) before strength and fades, and in alpha 1 where its shadow map
     // decides the pixel (the light reaches it, a cascade or tile covers it, the material receives shadows).
     std::optional<scene::LightRef> visibilityOf;
+    // Anisotropic filtering of the scene's trilinear textures, at least 1 (off); more than the device offers is
+    // clamped to its limit (1 where it has none), and the frame's notes say so.
+    float maxAnisotropy = 8.0f;
 };
 
 struct FrameStats {
@@ -39,7 +42,8 @@ struct FrameStats {
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
     std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
-    // Lights drawn without shadows, or not drawn at all, and why (the same as SceneRenderer::notes()).
+    // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
+    // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
 };
 
@@ -64,11 +68,14 @@ public:
 
     // render(camera, frame, planShadows(camera, frame)).
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
-    // Throws rhi::Error for settings out of range (naming the field), a zero-sized frame, plans whose
-    // atlases do not match the frame's settings, or a visibility view of a light the lit pass does not draw.
+    // Throws rhi::Error for settings out of range (naming the field; maxAnisotropy below 1 too), a zero-sized
+    // frame, plans whose atlases do not match the frame's settings, or a visibility view of a light the lit
+    // pass does not draw.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
     const rhi::Texture& litImage() const { return *lit_; }
+    // The scene's buffers, textures and samplers as the last frame drew them.
+    const GpuScene& gpuScene() const { return gpuScene_; }
     const rhi::Texture& cascadeImage() const { return *cascades_; }
     const rhi::Texture& visibilityImage() const { return *visibility_; }
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
@@ -78,7 +85,8 @@ public:
     const shadows::OtherShadowPlan& otherPlan() const { return otherPlan_; }
     // Point shadow cube maps (PointShadowMode::CubeMap; one unused cube otherwise).
     const shadows::ShadowCubes& shadowCubes() const { return *shadowCubes_; }
-    // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights, maxLitLocalLights).
+    // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights, maxLitLocalLights), and
+    // why textures get less anisotropy than FrameDesc::maxAnisotropy.
     const std::vector<std::string>& notes() const { return notes_; }
 
 private:

@@ -68,12 +68,13 @@ public:
     virtual void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount = 1, std::uint32_t firstIndex = 0,
                              std::int32_t vertexOffset = 0, std::uint32_t firstInstance = 0) = 0;
 
-    // Copies outside passes. Texture copies take whole layers of equal size and format;
-    // a texture-to-buffer copy writes tightly packed rows, row 0 (the top) first, depth only for D24S8.
+    // Copies outside passes. Texture copies take whole layers, every mip level, between textures of equal size,
+    // format and level count; a texture-to-buffer copy writes one level of one layer in tightly packed rows,
+    // row 0 (the top) first, depth only for D24S8.
     virtual void copyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,
                             std::uint64_t size) = 0;
     virtual void copyTexture(const Texture& src, std::uint32_t srcLayer, Texture& dst, std::uint32_t dstLayer) = 0;
-    virtual void copyTextureToBuffer(const Texture& src, std::uint32_t layer, Buffer& dst,
+    virtual void copyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
                                      std::uint64_t dstOffset = 0) = 0;
 
     // Device::readTimestamps gives the values after submit.

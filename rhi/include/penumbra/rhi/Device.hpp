@@ -17,6 +17,13 @@
 
 namespace penumbra::rhi {
 
+// What the driver offers for one format, as it reports it.
+struct FormatSupport {
+    bool sampled = false;      // created with TextureUsage::Sampled (and, like every texture, uploaded and copied)
+    bool linearFilter = false; // sampled with a linear mag, min or mip filter
+    bool renderTarget = false; // a colour or depth attachment, by format
+};
+
 // What the driver really offers; nothing here is faked or emulated.
 struct Capabilities {
     std::string api;    // "Vulkan 1.3.230", "OpenGL 4.5 (Core Profile) Mesa 22.3.6"
@@ -30,12 +37,15 @@ struct Capabilities {
     // Cube textures (TextureDesc::cube) are cube-map arrays: Vulkan's imageCubeArray feature, core in GL 4.0.
     bool cubeArrays = false;
     std::uint32_t maxCubeSize = 0;
-    // Linear filtering (hardware 2x2 PCF with a comparison sampler) per depth format,
-    // indexed by Format. lavapipe offers none: its depth formats lack
-    // VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT.
-    std::array<bool, 6> linearFilter{};
+    // Highest SamplerDesc::maxAnisotropy: Vulkan's samplerAnisotropy feature and limit, GL 4.6 or
+    // ARB/EXT_texture_filter_anisotropic; 1 where the device has no anisotropic filtering.
+    float maxSamplerAnisotropy = 1.0f;
+    // Indexed by Format. Linear filtering of depth formats is hardware 2x2 PCF with a comparison sampler;
+    // lavapipe offers it for none (conventions note, section 4).
+    std::array<FormatSupport, formatCount> formats{};
 
-    bool supportsLinearFilter(Format f) const { return linearFilter[static_cast<std::size_t>(f)]; }
+    const FormatSupport& format(Format f) const { return formats[static_cast<std::size_t>(f)]; }
+    bool supportsLinearFilter(Format f) const { return format(f).linearFilter; }
 };
 
 class Device {
@@ -48,9 +58,11 @@ public:
 
     virtual std::unique_ptr<Buffer> createBuffer(const BufferDesc& desc) = 0;
     virtual std::unique_ptr<Texture> createTexture(const TextureDesc& desc) = 0;
-    // Uploads one whole layer: tightly packed rows, row 0 (the top of the picture) first, texels
-    // laid out as copyTextureToBuffer gives them (D24S8: 32-bit words, depth in the low 24 bits).
-    virtual void writeTexture(Texture& texture, std::uint32_t layer, std::span<const std::byte> data) = 0;
+    // Uploads one whole mip level of one layer: tightly packed rows of mipExtent(width, level) texels, row 0
+    // (the top of the picture) first, texels laid out as copyTextureToBuffer gives them (D24S8: 32-bit words,
+    // depth in the low 24 bits).
+    virtual void writeTexture(Texture& texture, std::uint32_t layer, std::uint32_t level,
+                              std::span<const std::byte> data) = 0;
     virtual std::unique_ptr<Sampler> createSampler(const SamplerDesc& desc) = 0;
     // Compiles with glslang (errors name the source and line) and creates the backend's module.
     virtual std::unique_ptr<Shader> createShader(const ShaderSource& source) = 0;

@@ -33,8 +33,8 @@ struct DepthImage {
     float at(std::uint32_t x, std::uint32_t y) const { return depth[std::size_t(y) * width + x]; }
 };
 
-// Copies one layer into a readback buffer, submits and waits.
-Image readTexture(Device& device, const Texture& texture, std::uint32_t layer = 0);
+// Copies one mip level of one layer into a readback buffer, submits and waits.
+Image readTexture(Device& device, const Texture& texture, std::uint32_t layer = 0, std::uint32_t level = 0);
 // Depth textures only: the raw values decoded to float (d16 / 65535, d24 / 16777215, d32f as is).
 DepthImage readDepth(Device& device, const Texture& texture, std::uint32_t layer = 0);
 

@@ -3,6 +3,8 @@
 #include "penumbra/rhi/Flags.hpp"
 #include "penumbra/rhi/Format.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -51,7 +53,20 @@ enum class TextureUsage : std::uint8_t {
 };
 constexpr bool enableFlags(TextureUsage) { return true; }
 
-// Every texture can be copied from and to and uploaded with Device::writeTexture.
+// Levels of the full mip chain of a width x height texture, down to 1 x 1: floor(log2(max)) + 1.
+constexpr std::uint32_t fullMipChain(std::uint32_t width, std::uint32_t height)
+{
+    return std::uint32_t(std::bit_width(std::max({width, height, 1u})));
+}
+
+// Width or height of mip level `level`: halved per level, rounded down, at least 1 (Vulkan 1.3 section 12.3,
+// GL 4.5 section 8.14.3).
+constexpr std::uint32_t mipExtent(std::uint32_t size, std::uint32_t level)
+{
+    return level >= 32 ? 1u : std::max(size >> level, 1u);
+}
+
+// Every texture can be copied from and to and uploaded with Device::writeTexture, level by level.
 struct TextureDesc {
     std::uint32_t width = 1;
     std::uint32_t height = 1;
@@ -62,6 +77,9 @@ struct TextureDesc {
     // positive multiple of 6 and Capabilities::cubeArrays. Layer cubeLayer(cube, face) holds one
     // face (CubeMap.hpp: face order +X, -X, +Y, -Y, +Z, -Z, and how to render each face).
     bool cube = false;
+    // 1..fullMipChain(width, height). Level 0 is the one rendered to; every level is uploaded, copied and
+    // read back on its own (generateMipChain in MipChain.hpp fills a chain on the CPU).
+    std::uint32_t mipLevels = 1;
     Format format = Format::RGBA8;
     TextureUsage usage = TextureUsage::Sampled;
     std::string debugName;
@@ -74,16 +92,27 @@ public:
 };
 
 enum class Filter : std::uint8_t { Nearest, Linear };
-enum class AddressMode : std::uint8_t { ClampToEdge, Repeat };
+// Between mip levels: None samples level 0 only (GL's GL_NEAREST and GL_LINEAR minification), Nearest picks
+// the nearest level, Linear blends the two nearest (trilinear with linear min and mag filters).
+enum class MipFilter : std::uint8_t { None, Nearest, Linear };
+enum class AddressMode : std::uint8_t { ClampToEdge, Repeat, MirroredRepeat };
 
 // With compare set this is a shadow sampler for sampler2DShadow, sampler2DArrayShadow or
 // samplerCubeArrayShadow; its compare op is Conventions::shadowCompareOp() (lit where the
 // receiver is nearer or as near).
-// Linear filtering of a depth texture is refused where the driver cannot do it
-// (Capabilities::supportsLinearFilter) when the pair is bound.
+// Linear filtering (any of the three filters) is refused where the driver cannot filter the texture's format
+// (Capabilities::supportsLinearFilter) when the pair is bound. Cube textures ignore the address modes.
 struct SamplerDesc {
-    Filter filter = Filter::Linear;
-    AddressMode address = AddressMode::ClampToEdge;
+    Filter magFilter = Filter::Linear;
+    Filter minFilter = Filter::Linear;
+    MipFilter mipFilter = MipFilter::None;
+    AddressMode addressU = AddressMode::ClampToEdge;
+    AddressMode addressV = AddressMode::ClampToEdge;
+    // The level-of-detail clamp, 0 <= minLod <= maxLod (1000: no clamp); ignored with MipFilter::None.
+    float minLod = 0.0f;
+    float maxLod = 1000.0f;
+    // 1 (off) up to Capabilities::maxSamplerAnisotropy; more is refused.
+    float maxAnisotropy = 1.0f;
     bool compare = false;
     std::string debugName;
 };

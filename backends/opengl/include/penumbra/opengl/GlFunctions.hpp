@@ -68,7 +68,9 @@ namespace penumbra::opengl {
     X(Finish, FINISH)                                                                                                  \
     X(FrontFace, FRONTFACE)                                                                                            \
     X(GetError, GETERROR)                                                                                              \
+    X(GetFloatv, GETFLOATV)                                                                                            \
     X(GetIntegerv, GETINTEGERV)                                                                                        \
+    X(GetInternalformativ, GETINTERNALFORMATIV)                                                                        \
     X(GetProgramInfoLog, GETPROGRAMINFOLOG)                                                                            \
     X(GetProgramiv, GETPROGRAMIV)                                                                                      \
     X(GetQueryObjectui64v, GETQUERYOBJECTUI64V)                                                                        \
@@ -97,6 +99,7 @@ namespace penumbra::opengl {
     X(ProgramUniform1i, PROGRAMUNIFORM1I)                                                                              \
     X(QueryCounter, QUERYCOUNTER)                                                                                      \
     X(ReadPixels, READPIXELS)                                                                                          \
+    X(SamplerParameterf, SAMPLERPARAMETERF)                                                                            \
     X(SamplerParameteri, SAMPLERPARAMETERI)                                                                            \
     X(Scissor, SCISSOR)                                                                                                \
     X(ScissorIndexed, SCISSORINDEXED)                                                                                  \
