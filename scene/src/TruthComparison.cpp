@@ -34,6 +34,9 @@ std::array<glm::vec3, 2> acrossRay(glm::vec3 d)
     return {u, glm::cross(d, u)};
 }
 
+// tan(5.7 degrees): how far a tangent-plane step is lifted off the plane, per unit of its length.
+constexpr float kCreaseLift = 0.1f;
+
 // sin(3 degrees): below it a tangent-plane step that moves radius across the rays runs 19 radii along the surface.
 constexpr float kGrazing = 0.052f;
 
@@ -48,9 +51,12 @@ bool nearShadowEdge(const RayCaster& shadowRays, const GBufferSample& sample, bo
     for (int k = 0; k < 8; ++k) {
         const float angle = 0.25f * 3.14159265f * static_cast<float>(k);
         const glm::vec3 a = radius * (std::cos(angle) * across[0] + std::sin(angle) * across[1]);
-        // Along the tangent plane: a plus the step along the ray that brings it back onto the plane.
+        // Along the tangent plane: a plus the step along the ray that brings it back onto the plane; lifted off it
+        // by a tenth of the step, so that the point stays above a receiver that bends away by up to 5 degrees
+        // (a heightfield's creases) instead of testing the receiver's own underside.
         const glm::vec3 step = a - towardsLight * (glm::dot(a, sample.normal) / facing);
-        const ShadowRay ray = rayFrom(sample.position + step + kShadowRayOffset * sample.normal);
+        const float lift = kShadowRayOffset + kCreaseLift * glm::length(step);
+        const ShadowRay ray = rayFrom(sample.position + step + lift * sample.normal);
         if (shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance) != shadowed)
             return true;
     }

@@ -74,7 +74,8 @@ struct TruthComparison {
 // the exact one, however many pixels that covers on screen (many, where light grazes a receiver). A sample is
 // near a shadow edge when its ray-cast visibility differs at one of 8 points around it on its tangent plane
 // whose projections across the light's rays lie radius(sample) (world units) from its own, in the directions
-// of a square's sides and diagonals. A sample whose tangent plane is within 3 degrees of the light's rays is
+// of a square's sides and diagonals (lifted off the plane by a tenth of their distance along it, over creases of
+// up to 5 degrees). A sample whose tangent plane is within 3 degrees of the light's rays is
 // near an edge. Returns 1 for those samples; 0 elsewhere and for samples neither truly lit nor shadowed.
 std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                            const LightVisibilityMask& truth, const ShadowRayFrom& rayFrom,
