@@ -386,6 +386,18 @@ TEST_F(ShadowMaskTest, TripledNormalBiasCatchesFault)
     EXPECT_LT(k.truth.shadowed.share(), kClassBound) << "tripled normal bias went unnoticed";
 }
 
+// A slope-scaled depth bias forty times the default pushes the casters' depths away from the light: the ground
+// beside the standing cube comes out lit (peter-panning), which the contact check reports.
+TEST_F(ShadowMaskTest, ExcessDepthBiasCatchesFault)
+{
+    const scene::Scene scene = keyLightScene();
+    scene::Scene pushed = scene;
+    pushed.lights[0].slopeScaleBias *= 40.0f;
+    const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kControlWidth, kControlHeight, kKeyLight));
+    const KeyLightFigures k = measureKeyLight(*this, "depth bias x40", pushed, scene, truth, 250, kClassBound);
+    EXPECT_GT(k.contact.gaps, 0u) << "peter-panning from an excessive depth bias went unnoticed";
+}
+
 // Without any bias the surfaces shadow themselves.
 TEST_F(ShadowMaskTest, RemovedBiasCatchesFault)
 {
