@@ -53,9 +53,16 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
                                      .debugName = "base colour"});
 }
 
-const rhi::Texture& GpuScene::baseColorMap(const scene::Material& material) const
+const rhi::Texture& GpuScene::map(const scene::Material& material, scene::TextureSlot slot) const
 {
-    return material.baseColorTexture ? *textures_.at(*material.baseColorTexture) : *white_;
+    const std::optional<scene::MaterialTexture>& texture = material.texture(slot);
+    return texture ? *textures_.at(texture->image) : *white_;
+}
+
+shadows::UvTransformRows GpuScene::uvTransform(const std::optional<scene::MaterialTexture>& texture)
+{
+    return texture ? shadows::uvTransformRows(texture->transform.matrix(), texture->texCoord)
+                   : shadows::uvTransformRows(glm::mat3(1.0f), 0);
 }
 
 std::vector<shadows::ShadowCaster> GpuScene::casters() const
@@ -63,11 +70,13 @@ std::vector<shadows::ShadowCaster> GpuScene::casters() const
     std::vector<shadows::ShadowCaster> casters;
     for (const scene::Object& object : scene_.objects) {
         const scene::Material& material = scene_.materialOf(object);
+        const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
         if (const auto mode = casterMode(material.caster))
             casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
                                static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
                                *mode, material.baseColor.a, material.alphaCutoff, &baseColorMap(material),
-                               sampler_.get(), material.baseColorTexture.has_value()});
+                               sampler_.get(), baseColor.has_value(), uvTransform(baseColor),
+                               material.doubleSided});
     }
     return casters;
 }
@@ -83,7 +92,8 @@ std::vector<shadows::Bounds> GpuScene::casterBounds() const
 
 shadows::CasterVertexFormat GpuScene::vertexFormat()
 {
-    return {sizeof(scene::Vertex), offsetof(scene::Vertex, position), offsetof(scene::Vertex, uv)};
+    return {sizeof(scene::Vertex), offsetof(scene::Vertex, position), offsetof(scene::Vertex, uv),
+            offsetof(scene::Vertex, uv1)};
 }
 
 } // namespace penumbra::render

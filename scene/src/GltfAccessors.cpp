@@ -151,6 +151,30 @@ std::vector<glm::vec2> readTexCoords(const Document& document, int accessor, std
     return readFloats<2>(document, view, accessor, owner, semantic);
 }
 
+std::vector<glm::vec4> readVec4(const Document& document, int accessor, std::string_view owner,
+                                std::string_view semantic)
+{
+    const ElementView view =
+        viewOf(document, accessor, owner, semantic, TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT});
+    return readFloats<4>(document, view, accessor, owner, semantic);
+}
+
+std::vector<glm::vec4> readColors(const Document& document, int accessor, std::string_view owner,
+                                  std::string_view semantic)
+{
+    // glTF 2.0 section 3.7.2.1: COLOR_n is VEC3 or VEC4; the type decides which one viewOf() checks.
+    const bool rgb = document.at(document.model().accessors, accessor, "accessor", owner).type == TINYGLTF_TYPE_VEC3;
+    const ElementView view = viewOf(document, accessor, owner, semantic, rgb ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4,
+                                    {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
+    if (!rgb)
+        return readFloats<4>(document, view, accessor, owner, semantic);
+    std::vector<glm::vec4> colors;
+    for (const glm::vec3& color : readFloats<3>(document, view, accessor, owner, semantic))
+        colors.emplace_back(color, 1.0f);
+    return colors;
+}
+
 std::vector<std::uint32_t> readIndices(const Document& document, int accessor, std::string_view owner)
 {
     const ElementView view = viewOf(document, accessor, owner, "indices", TINYGLTF_TYPE_SCALAR,

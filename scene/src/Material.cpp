@@ -4,6 +4,14 @@
 
 namespace penumbra::scene {
 
+glm::mat3 TextureTransform::matrix() const
+{
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    // KHR_texture_transform: T * R * S with R = [[c, s], [-s, c]] in column-major order.
+    return glm::mat3(glm::vec3(c * scale.x, -s * scale.x, 0.0f), glm::vec3(s * scale.y, c * scale.y, 0.0f),
+                     glm::vec3(offset, 1.0f));
+}
+
 float materialAlpha(const Material& material, glm::vec2 uv)
 {
     if (material.caster != CasterMode::Clip)

@@ -20,8 +20,13 @@ public:
     const scene::Scene& scene() const { return scene_; }
     const rhi::Buffer& vertices(std::uint32_t mesh) const { return *meshes_.at(mesh).vertices; }
     const rhi::Buffer& indices(std::uint32_t mesh) const { return *meshes_.at(mesh).indices; }
-    // The material's base colour texture, or a white texel for a material without one.
-    const rhi::Texture& baseColorMap(const scene::Material& material) const;
+    // The material's texture in `slot`, or a white texel for a material without one.
+    const rhi::Texture& map(const scene::Material& material, scene::TextureSlot slot) const;
+    const rhi::Texture& baseColorMap(const scene::Material& material) const
+    {
+        return map(material, scene::TextureSlot::BaseColor);
+    }
+    // Every material texture is sampled through this one.
     const rhi::Sampler& baseColorSampler() const { return *sampler_; }
 
     // Objects whose material casts shadows, with their world bounds; object transforms are read
@@ -30,6 +35,8 @@ public:
     std::vector<shadows::Bounds> casterBounds() const;
 
     static shadows::CasterVertexFormat vertexFormat();
+    // The uv transform rows of a material texture (identity on TEXCOORD_0 without one).
+    static shadows::UvTransformRows uvTransform(const std::optional<scene::MaterialTexture>& texture);
 
 private:
     struct Mesh {

@@ -12,6 +12,7 @@
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -88,7 +89,8 @@ private:
     shadows::OtherShadowPass otherShadowPass_;
     std::unique_ptr<rhi::Shader> litVertex_;
     std::unique_ptr<rhi::Shader> litFragment_;
-    std::unique_ptr<rhi::Pipeline> litPipeline_;
+    // Culled or not, opaque or blended (SceneRenderer.cpp, pipelineIndex).
+    std::array<std::unique_ptr<rhi::Pipeline>, 4> litPipelines_;
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<rhi::TimestampQueries> timestamps_;
     rhi::UniformArena uniforms_;
