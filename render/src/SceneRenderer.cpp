@@ -268,8 +268,8 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
         u.lightColor[i] = glm::vec4(lights[i].color * lights[i].intensity, 0.0f);
         u.lightDirection[i] = glm::vec4(glm::normalize(lights[i].direction), static_cast<float>(plan_.shadowSlots[i]));
     }
-    u.ambient = glm::vec4(frame.ambient, 0.0f);
-    u.ambientGround = u.ambient;
+    u.ambient = glm::vec4(frame.ambient.sky(), 0.0f);
+    u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);
     u.config = {static_cast<int>(count), static_cast<int>(view), 0, 0};
     fillLocalLights(u, gpuScene_.scene(), otherPlan_);
     return u;
@@ -331,6 +331,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
 FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans)
 {
     shadows::validate(frame.shadows);
+    validate(frame.ambient);
     checkPlansFitFrame(plans, frame.shadows);
     prepareTargets(frame);
     notes_ = frameNotes(gpuScene_.scene(), plans);

@@ -86,7 +86,7 @@ protected:
         return scene;
     }
 
-    rhi::Image render(const scene::Scene& scene, glm::vec3 ambient = glm::vec3(0.03f))
+    rhi::Image render(const scene::Scene& scene, render::AmbientLight ambient = {})
     {
         render::FrameDesc frame;
         frame.width = kWidth;
@@ -248,7 +248,7 @@ TEST_F(GltfMaterialsTest, EmissiveFactorTextureAndStrengthAddLight)
     };
     const scene::Scene plain = load(file(std::nullopt), {0, 0, -1}, 0.0f);
     const scene::Scene strong = load(file(1.5), {0, 0, -1}, 0.0f);
-    const rhi::Image plainImage = render(plain, glm::vec3(0.0f)), strongImage = render(strong, glm::vec3(0.0f));
+    const rhi::Image plainImage = render(plain, {.intensity = 0.0f}), strongImage = render(strong, {.intensity = 0.0f});
     const Rgba glow = at(plainImage, plain, kLeft), brighter = at(strongImage, strong, kLeft);
     std::printf("[ materials ] %s: emissive %s, with strength 1.5 %s, masked half %s\n", configuration().c_str(),
                 describe(glow).c_str(), describe(brighter).c_str(), describe(at(plainImage, plain, kRight)).c_str());
@@ -271,7 +271,7 @@ TEST_F(GltfMaterialsTest, OcclusionTextureDarkensTheAmbientTermOnly)
         b.addRoot(b.add("nodes", {{"mesh", addQuadMesh(b, "quad", 0)}}));
         return b;
     };
-    const glm::vec3 ambient(0.4f);
+    const render::AmbientLight ambient{.intensity = 0.4f};
     const scene::Scene full = load(file(1.0), {0, 0, -1}, 0.0f);
     const scene::Scene half = load(file(0.5), {0, 0, -1}, 0.0f);
     const scene::Scene sunlit = load(file(1.0), {0, 0, -1}, 2.0f);
@@ -287,6 +287,29 @@ TEST_F(GltfMaterialsTest, OcclusionTextureDarkensTheAmbientTermOnly)
     EXPECT_NEAR(halfOccluded, 124.0f, 3.0f) << "occlusionTexture.strength does not scale the occlusion";
     EXPECT_GT(luma(sunlitImage, sunlit, kRight), 180.0f) << "occlusion darkens direct light";
     keep({{"full", &fullImage}, {"half", &halfImage}, {"sunlit", &sunlitImage}});
+}
+
+TEST_F(GltfMaterialsTest, HemisphereAmbientLightsFromTheSkyAboveAndTheGroundBelow)
+{
+    // No light; quads tilted 60 degrees towards the sky and towards the ground (n.y = +-0.87: 93 % of one colour).
+    const nlohmann::json white = {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}};
+    const render::AmbientLight hemisphere{.color = {1.0f, 0.1f, 0.1f}, .intensity = 0.5f, .ground = glm::vec3(0.1f, 0.1f, 1.0f)};
+    for (const double sign : {1.0, -1.0}) {
+        GltfBuilder b = quadFile(white);
+        b.json()["nodes"][0]["rotation"] = {-0.5 * sign, 0.0, 0.0, 0.8660254}; // about x by -+60 degrees
+        const scene::Scene scene = load(b, {0, 0, -1}, 0.0f);
+        const rhi::Image image = render(scene, hemisphere);
+        const Rgba c = at(image, scene, kCentre);
+        std::printf("[ materials ] %s: hemisphere, facing %s: %s\n", configuration().c_str(),
+                    sign > 0 ? "the sky" : "the ground", describe(c).c_str());
+        const int sky = c[0], ground = c[2];
+        if (sign > 0) {
+            EXPECT_GT(sky, ground + 80) << "a surface facing the sky does not take the sky's colour";
+        } else {
+            EXPECT_GT(ground, sky + 80) << "a surface facing the ground does not take the ground's colour";
+        }
+        keep({{sign > 0 ? "sky" : "ground", &image}});
+    }
 }
 
 // Left texel red, right texel green; the transform or the second uv set swaps them.

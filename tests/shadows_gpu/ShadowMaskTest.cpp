@@ -50,7 +50,7 @@ render::FrameDesc maskFrame(const shadows::ShadowSettings& settings, std::uint32
     frame.shadows = settings;
     frame.width = width;
     frame.height = height;
-    frame.ambient = glm::vec3(0.0f);
+    frame.ambient.intensity = 0.0f;
     return frame;
 }
 

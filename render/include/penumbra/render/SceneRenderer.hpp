@@ -1,5 +1,6 @@
 #pragma once
 
+#include "penumbra/render/AmbientLight.hpp"
 #include "penumbra/render/GpuScene.hpp"
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/rhi/Device.hpp"
@@ -25,7 +26,7 @@ struct FrameDesc {
     std::uint32_t width = 1280;
     std::uint32_t height = 720;
     shadows::ShadowSettings shadows;
-    glm::vec3 ambient{0.03f};
+    AmbientLight ambient;
     bool cascadeView = false; // also render the lit image tinted by cascade index
 };
 
@@ -61,7 +62,7 @@ public:
 
     // render(camera, frame, planShadows(camera, frame)).
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
-    // Throws rhi::Error for settings out of range (naming the field), a zero-sized frame, or plans whose
+    // Throws rhi::Error for settings or ambient light out of range (naming the field), a zero-sized frame, or plans whose
     // atlases do not match the frame's settings.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
