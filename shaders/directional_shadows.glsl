@@ -77,15 +77,28 @@ float sampleCascade(int tile, int cascade, vec3 position, vec3 normal, float nor
     return filterDirectionalShadow(transformPoint(shadows.worldToAtlas[tile], biased).xyz, tile);
 }
 
-// 1 = fully lit. `slot` is the light's shadow slot, -1 for a light without shadows.
-float directionalShadowAttenuation(int slot, CascadeSelection s, vec3 position, vec3 normal)
+// The filtered shadow map alone, before any strength or fade (1 = lit): what ground truth compares.
+float directionalShadowVisibility(int slot, CascadeSelection s, vec3 position, vec3 normal)
 {
-    if (slot < 0 || s.strength <= 0.0)
-        return 1.0;
     const vec4 light = shadows.lightShadowData[slot];
     const int tile = int(light.z) + s.index;
     float shadow = sampleCascade(tile, s.index, position, normal, light.y);
     if (s.blend < 1.0)
         shadow = mix(sampleCascade(tile + 1, s.index + 1, position, normal, light.y), shadow, s.blend);
-    return mix(1.0, shadow, light.x * s.strength);
+    return shadow;
+}
+
+// Whether the light's shadow map decides the point at all: it has shadows and a cascade covers the point.
+bool directionalShadowReaches(int slot, CascadeSelection s)
+{
+    return slot >= 0 && s.strength > 0.0;
+}
+
+// 1 = fully lit. `slot` is the light's shadow slot, -1 for a light without shadows.
+float directionalShadowAttenuation(int slot, CascadeSelection s, vec3 position, vec3 normal)
+{
+    if (!directionalShadowReaches(slot, s))
+        return 1.0;
+    const float strength = shadows.lightShadowData[slot].x * s.strength;
+    return mix(1.0, directionalShadowVisibility(slot, s, position, normal), strength);
 }

@@ -69,6 +69,55 @@ vec3 frontNormal()
 const vec3 cascadeColors[5] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.25, 0.4, 1.0),
                                      vec3(1.0, 1.0, 0.25), vec3(0.5, 0.5, 0.5));
 
+// penumbra::render::LitView.
+const int PENUMBRA_VIEW_CASCADES = 1;
+const int PENUMBRA_VIEW_VISIBILITY = 2;
+
+// Spot or point light i at the fragment: direction towards it and the light that arrives before N.L.
+struct LocalLight {
+    vec3 l;
+    float falloff;
+    bool isPoint;
+};
+
+LocalLight localLight(int i)
+{
+    const vec4 light = frame.localPosition[i];
+    const vec3 toLight = light.xyz - vPosition;
+    const float d2 = max(dot(toLight, toLight), 1e-5);
+    LocalLight result;
+    result.l = toLight * inversesqrt(d2);
+    result.isPoint = frame.localColor[i].w > 0.5;
+    // Smooth range window over inverse-square falloff (Karis 2013, "Real Shading in Unreal Engine 4", section
+    // "Lights"), then the spot cone's smooth step between outer and inner angle.
+    const float window = clamp(1.0 - d2 * light.w * d2 * light.w, 0.0, 1.0);
+    const vec4 shadow = frame.localShadow[i];
+    const float cone = result.isPoint ? 1.0 : clamp(dot(frame.localAxis[i].xyz, -result.l) * shadow.x + shadow.y, 0.0, 1.0);
+    result.falloff = window * window / d2 * cone * cone;
+    return result;
+}
+
+// The visibility view: the raw filtered shadow of light `index` (directional lights first, then spot and point
+// lights) in red, green and blue, and in alpha whether that shadow map decides the pixel (1) or not (0: the
+// light does not reach it, it has no shadow there, or the material receives none).
+vec4 shadowVisibility(int index, vec3 n, CascadeSelection cascade, float globalStrength)
+{
+    const bool receives = object.flags.x != 0;
+    if (index < frame.config.x) {
+        const int slot = receives ? int(frame.lightDirection[index].w) : -1;
+        if (dot(n, -frame.lightDirection[index].xyz) <= 0.0 || !directionalShadowReaches(slot, cascade))
+            return vec4(1.0, 1.0, 1.0, 0.0);
+        return vec4(vec3(directionalShadowVisibility(slot, cascade, vPosition, n)), 1.0);
+    }
+    const int i = index - frame.config.x;
+    const LocalLight light = localLight(i);
+    const vec4 shadow = frame.localShadow[i];
+    if (!receives || dot(n, light.l) <= 0.0 || light.falloff <= 0.0 || shadow.z < 0.0 || globalStrength <= 0.0)
+        return vec4(1.0, 1.0, 1.0, 0.0);
+    return vec4(vec3(otherShadowVisibility(int(shadow.z), light.isPoint, frame.localPosition[i].xyz,
+                                           frame.localAxis[i].xyz, vPosition, n)), 1.0);
+}
+
 void main()
 {
     const int casterMode = int(object.surface.w);
@@ -82,16 +131,24 @@ void main()
     const float coverage = object.flags.w != 0 ? alpha : 1.0;
 
     const vec3 base = object.baseColor.rgb * vColor.rgb * (textured ? srgbToLinear(texel.rgb) : vec3(1.0));
+    // Unlit surfaces show no shadow: the visibility view leaves them undecided.
     if (object.flags.z != 0) {
-        outColor = vec4(linearToSrgb(base), coverage);
+        outColor = frame.config.y == PENUMBRA_VIEW_VISIBILITY ? vec4(1.0, 1.0, 1.0, 0.0) : vec4(linearToSrgb(base), coverage);
         return;
     }
-    // Back faces (of double-sided materials, or seen through clip holes) are shaded with the flipped normal.
+    // Back faces (of double-sided materials, or seen through clip holes) are shaded with the flipped normal. Shadow
+    // lookups offset along the surface's own normal, not the normal texture's.
+    const vec3 geometric = normalize(gl_FrontFacing ? vNormal : -vNormal);
     const vec3 n = gl_FrontFacing ? frontNormal() : -frontNormal();
     const vec3 toCamera = frame.cameraPosition.xyz - vPosition;
     const vec3 v = normalize(toCamera);
     const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);
     const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
+    const float globalStrength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
+    if (frame.config.y == PENUMBRA_VIEW_VISIBILITY) {
+        outColor = shadowVisibility(frame.config.w, geometric, cascade, globalStrength);
+        return;
+    }
 
     const vec4 metalRough = sampleMap(metallicRoughnessMap, PENUMBRA_TEXTURE_METALLIC_ROUGHNESS);
     const float metallic = object.surface.x * metalRough.b;
@@ -106,36 +163,23 @@ void main()
         if (nl <= 0.0)
             continue;
         const int slot = object.flags.x != 0 ? int(frame.lightDirection[i].w) : -1;
-        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, n);
+        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric);
         color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }
-    const float globalStrength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
     for (int i = 0; i < frame.config.z; ++i) {
-        const vec4 light = frame.localPosition[i];
-        const vec3 toLight = light.xyz - vPosition;
-        const float d2 = max(dot(toLight, toLight), 1e-5);
-        const vec3 l = toLight * inversesqrt(d2);
-        const float nl = dot(n, l);
-        if (nl <= 0.0)
+        const LocalLight light = localLight(i);
+        const float nl = dot(n, light.l);
+        if (nl <= 0.0 || light.falloff <= 0.0)
             continue;
-        // Smooth range window over inverse-square falloff (the design document's range attenuation), then the
-        // spot cone's smooth step between outer and inner angle.
-        const float window = clamp(1.0 - d2 * light.w * d2 * light.w, 0.0, 1.0);
         const vec4 shadow = frame.localShadow[i];
-        const bool isPoint = frame.localColor[i].w > 0.5;
-        const vec3 axis = frame.localAxis[i].xyz;
-        const float cone = isPoint ? 1.0 : clamp(dot(axis, -l) * shadow.x + shadow.y, 0.0, 1.0);
-        const float falloff = window * window / d2 * cone * cone;
-        if (falloff <= 0.0)
-            continue;
         const vec2 shadowData = object.flags.x != 0 ? shadow.zw : vec2(-1.0, 0.0);
-        const float attenuation =
-            otherShadowAttenuation(shadowData, isPoint, light.xyz, axis, vPosition, n, globalStrength);
-        color += brdf(n, v, l, base, metallic, roughness) * frame.localColor[i].rgb * nl * falloff *
+        const float attenuation = otherShadowAttenuation(shadowData, light.isPoint, frame.localPosition[i].xyz,
+                                                         frame.localAxis[i].xyz, vPosition, geometric, globalStrength);
+        color += brdf(n, v, light.l, base, metallic, roughness) * frame.localColor[i].rgb * nl * light.falloff *
                  attenuation;
     }
     color += object.emissive.rgb * srgbToLinear(sampleMap(emissiveMap, PENUMBRA_TEXTURE_EMISSIVE).rgb);
-    if (frame.config.y == 1)
+    if (frame.config.y == PENUMBRA_VIEW_CASCADES)
         color = mix(color, cascadeColors[min(cascade.index, 4)] * 0.8, 0.6);
     outColor = vec4(linearToSrgb(color), coverage);
 }

@@ -9,7 +9,8 @@ layout(std140, binding = 0) uniform Frame {
     vec4 lightColor[8];      // linear rgb x intensity
     vec4 lightDirection[8];  // xyz from the light into the scene, w = shadow slot or -1
     vec4 ambient;            // linear rgb
-    ivec4 config;            // directional light count, view (0 lit, 1 cascade colours), local light count
+    ivec4 config;            // directional light count, view (penumbra::render::LitView), local light count, the
+                             // visibility view's light (directional lights first, then spot and point lights)
     vec4 localPosition[16];  // xyz, w = 1 / range^2
     vec4 localColor[16];     // linear rgb x intensity, w = 1 for a point light, 0 for a spot light
     vec4 localAxis[16];      // spot cone axis (unit, away from the light)

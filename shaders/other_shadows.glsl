@@ -82,6 +82,15 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
     return lit / float(k * k);
 }
 
+// The filtered shadow map alone, before any strength (1 = lit): what ground truth compares. `tile`: the
+// light's first tile (or cube).
+float otherShadowVisibility(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
+{
+    return isPoint && otherShadows.config.y == PENUMBRA_POINT_CUBE_MAP
+               ? cubeMapShadow(tile, lightPosition, position, normal)
+               : otherAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
+}
+
 // 1 = fully lit. `shadow`: first tile (or cube), -1 without shadows; the light's shadow strength. `strength` is the
 // global one (distance fade), which applies to every light.
 float otherShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
@@ -90,8 +99,5 @@ float otherShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3
     const float s = shadow.y * strength;
     if (shadow.x < 0.0 || s <= 0.0)
         return 1.0;
-    const float lit = isPoint && otherShadows.config.y == PENUMBRA_POINT_CUBE_MAP
-                          ? cubeMapShadow(int(shadow.x), lightPosition, position, normal)
-                          : otherAtlasShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal);
-    return mix(1.0, lit, s);
+    return mix(1.0, otherShadowVisibility(int(shadow.x), isPoint, lightPosition, axis, position, normal), s);
 }

@@ -58,10 +58,11 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 4> kNamedScenes{{{"test", scene::makeShadowTestScene},
+constexpr std::array<NamedScene, 5> kNamedScenes{{{"test", scene::makeShadowTestScene},
                                                   {"key-light", scene::makeSingleLightScene},
                                                   {"mixed", scene::makeMixedLightsScene},
-                                                  {"room", scene::makePointLightRoomScene}}};
+                                                  {"room", scene::makePointLightRoomScene},
+                                                  {"forest", scene::makeForestScene}}};
 
 } // namespace
 

@@ -43,10 +43,11 @@ struct ShadowPictures {
 
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
 // (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and
-// "room" (scene::makePointLightRoomScene). Unknown names throw rhi::Error listing these.
+// "room" (scene::makePointLightRoomScene) and "forest" (scene::makeForestScene). Unknown names throw rhi::Error
+// listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
-inline constexpr const char* kSceneNames = "test, key-light, mixed, room";
+inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest";
 
 // Renders scene.camera's view; the cascade view too when frame.cascadeView is set. Throws
 // rhi::Error when the device reports a validation or debug message.

@@ -14,6 +14,7 @@ void addRenderCommand(CLI::App& app);
 void addParityCommand(CLI::App& app);
 void addConfigurationsCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
+void addTruthCommand(CLI::App& app);
 
 // The RHI test pattern through one configuration, size x size pixels.
 rhi::Image renderPattern(const std::string& configuration, std::uint32_t size);

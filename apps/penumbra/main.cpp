@@ -28,6 +28,7 @@ int main(int argc, char** argv)
     penumbra::apps::addParityCommand(app);
     penumbra::apps::addConfigurationsCommand(app);
     penumbra::apps::addBenchCommand(app);
+    penumbra::apps::addTruthCommand(app);
     penumbra::apps::addViewCommand(app);
     try {
         app.parse(argc, argv);

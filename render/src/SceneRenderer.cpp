@@ -15,6 +15,7 @@ namespace {
 constexpr rhi::Format kLitFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
+constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f};     // the visibility view where no shadow map decides
 
 shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect)
 {
@@ -242,6 +243,7 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame)
         return;
     lit_ = colorTarget(device_, frame, "lit image");
     cascades_ = colorTarget(device_, frame, "cascade view");
+    visibility_ = colorTarget(device_, frame, "visibility view");
     depth_ = device_.createTexture({.width = frame.width,
                                     .height = frame.height,
                                     .format = kDepthFormat,
@@ -252,6 +254,9 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame)
     litTarget_ = device_.createFramebuffer({.colors = {&litColor, 1}, .depth = {depth_.get(), 0}, .debugName = "lit"});
     cascadeTarget_ = device_.createFramebuffer(
         {.colors = {&cascadeColor, 1}, .depth = {depth_.get(), 0}, .debugName = "cascade view"});
+    const rhi::Attachment visibilityColor{visibility_.get(), 0};
+    visibilityTarget_ = device_.createFramebuffer(
+        {.colors = {&visibilityColor, 1}, .depth = {depth_.get(), 0}, .debugName = "visibility view"});
 }
 
 LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const
@@ -275,18 +280,45 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     return u;
 }
 
+// The lit pass's order: directional lights, then spot lights, then point lights (fillLocalLights).
+int SceneRenderer::litLightIndex(const scene::LightRef& light) const
+{
+    const scene::Scene& scene = gpuScene_.scene();
+    const char* kind = scene::lightKindName(light.kind);
+    const std::size_t counts[] = {scene.lights.size(), scene.spotLights.size(), scene.pointLights.size()};
+    const std::size_t count = counts[static_cast<std::size_t>(light.kind)];
+    if (light.index >= count)
+        throw rhi::Error(
+            fmt::format("visibility view: {} {} does not exist (the scene has {})", kind, light.index, count));
+    const std::size_t directional = std::min<std::size_t>(scene.lights.size(), maxLitDirectionalLights);
+    if (light.kind == scene::LightKind::Directional) {
+        if (light.index >= maxLitDirectionalLights)
+            throw rhi::Error(fmt::format("visibility view: directional light {} is not drawn (at most {})",
+                                         light.index, maxLitDirectionalLights));
+        return static_cast<int>(light.index);
+    }
+    const std::size_t local = light.index + (light.kind == scene::LightKind::Point ? scene.spotLights.size() : 0);
+    if (local >= maxLitLocalLights)
+        throw rhi::Error(fmt::format("visibility view: {} {} is not drawn (at most {} spot and point lights)", kind,
+                                     light.index, maxLitLocalLights));
+    return static_cast<int>(directional + local);
+}
+
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
                                   const LitFrameUniforms& frame, const rhi::UniformSlice& shadowUniforms,
                                   const rhi::UniformSlice& otherShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
-    commands.beginPass({.framebuffer = &target, .clearColor = kBackground});
+    // The visibility view reports shadows on every surface: blended ones are drawn opaque there, so the alpha
+    // channel keeps saying whether a shadow map decides the pixel.
+    const bool visibility = frame.config.y == static_cast<int>(LitView::Visibility);
+    commands.beginPass({.framebuffer = &target, .clearColor = visibility ? kUndecided : kBackground});
     const rhi::UniformSlice frameSlice = uniforms_.push(frame);
     const rhi::Pipeline* bound = nullptr;
     for (const std::uint32_t index : drawOrder(scene, glm::vec3(frame.cameraPosition))) {
         const scene::Object& object = scene.objects[index];
         const scene::Material& material = scene.materialOf(object);
-        const rhi::Pipeline* pipeline = litPipelines_[pipelineIndex(material.doubleSided, material.blend)].get();
+        const rhi::Pipeline* pipeline = litPipelines_[pipelineIndex(material.doubleSided, material.blend && !visibility)].get();
         if (pipeline != bound) {
             // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
             commands.bindPipeline(*pipeline);
@@ -333,6 +365,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     shadows::validate(frame.shadows);
     validate(frame.ambient);
     checkPlansFitFrame(plans, frame.shadows);
+    const int visibilityLight = frame.visibilityOf ? litLightIndex(*frame.visibilityOf) : -1;
     prepareTargets(frame);
     notes_ = frameNotes(gpuScene_.scene(), plans);
     plan_ = std::move(plans.directional);
@@ -364,6 +397,11 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     if (frame.cascadeView)
         recordLitPass(commands, *cascadeTarget_, frameUniforms(camera, frame, LitView::Cascades), shadowUniforms,
                       otherShadowUniforms);
+    if (frame.visibilityOf) {
+        LitFrameUniforms u = frameUniforms(camera, frame, LitView::Visibility);
+        u.config.w = visibilityLight;
+        recordLitPass(commands, *visibilityTarget_, u, shadowUniforms, otherShadowUniforms);
+    }
     device_.submit(commands);
     if (timestamps_) {
         const std::vector<double> ns = device_.readTimestamps(*timestamps_);

@@ -1,5 +1,7 @@
 #include "penumbra/scene/GroundTruth.hpp"
 
+#include "ParallelRows.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -31,34 +33,34 @@ glm::vec2 interpolatedUv(const Scene& scene, const Hit& hit)
            hit.barycentrics.x * mesh.vertices[index[1]].uv + hit.barycentrics.y * mesh.vertices[index[2]].uv;
 }
 
-struct LightRay {
-    glm::vec3 direction; // unit, towards the light
-    float distance;      // to the light
-};
-
-// Shadow rays from every sample (offset along its normal) towards the light `rayTo` gives for that origin.
+// Shadow rays from every sample towards the light `rayTo` gives for that sample.
 template <typename RayTo>
 LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                    float normalOffset, RayTo rayTo)
+                                    const TraceProgress& progress, RayTo rayTo)
 {
     if (shadowRays.kind() != RayKind::Shadow)
         throw std::invalid_argument("traceLightVisibility needs a RayCaster built with RayKind::Shadow");
     LightVisibilityMask mask{gbuffer.width, gbuffer.height,
                              std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background)};
-    for (std::size_t i = 0; i < gbuffer.samples.size(); ++i) {
-        const GBufferSample& sample = gbuffer.samples[i];
-        if (!sample.hit())
-            continue;
-        const glm::vec3 origin = sample.position + normalOffset * sample.normal;
-        const LightRay ray = rayTo(origin);
-        if (!scene.materialOf(scene.objects[sample.object]).receiveShadows)
-            mask.pixels[i] = LightVisibility::NotReceiving;
-        else if (glm::dot(sample.normal, ray.direction) <= 0.0f)
-            mask.pixels[i] = LightVisibility::FacingAway;
-        else
-            mask.pixels[i] = shadowRays.occluded(origin, ray.direction, ray.distance) ? LightVisibility::Shadowed
-                                                                                      : LightVisibility::Lit;
-    }
+    forEachRow(
+        gbuffer.height,
+        [&](std::uint32_t y) {
+            for (std::size_t i = std::size_t(y) * gbuffer.width; i < std::size_t(y + 1) * gbuffer.width; ++i) {
+                const GBufferSample& sample = gbuffer.samples[i];
+                if (!sample.hit())
+                    continue;
+                const ShadowRay ray = rayTo(sample);
+                if (!scene.materialOf(scene.objects[sample.object]).receiveShadows)
+                    mask.pixels[i] = LightVisibility::NotReceiving;
+                else if (glm::dot(sample.normal, ray.direction) <= 0.0f)
+                    mask.pixels[i] = LightVisibility::FacingAway;
+                else
+                    mask.pixels[i] = shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance)
+                                         ? LightVisibility::Shadowed
+                                         : LightVisibility::Lit;
+            }
+        },
+        progress);
     return mask;
 }
 
@@ -81,50 +83,65 @@ Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, 
 }
 
 CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const Camera& camera, std::uint32_t width,
-                        std::uint32_t height)
+                        std::uint32_t height, const TraceProgress& progress)
 {
     if (cameraRays.kind() != RayKind::Camera)
         throw std::invalid_argument("traceGBuffer needs a RayCaster built with RayKind::Camera");
     CpuGBuffer gbuffer{width, height, std::vector<GBufferSample>(std::size_t(width) * height)};
     const glm::vec3 forward = glm::normalize(camera.forward);
-    for (std::uint32_t y = 0; y < height; ++y) {
-        for (std::uint32_t x = 0; x < width; ++x) {
-            const Ray ray = primaryRay(camera, width, height, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-            const std::optional<Hit> hit = cameraRays.closestHit(ray.origin, ray.direction, ray.maxDistance);
-            if (!hit)
-                continue;
-            GBufferSample& sample = gbuffer.samples[std::size_t(y) * width + x];
-            sample.object = hit->object;
-            sample.triangle = hit->triangle;
-            sample.position = ray.origin + hit->distance * ray.direction;
-            sample.frontFacing = glm::dot(hit->normal, ray.direction) < 0.0f;
-            const float towardsCamera = sample.frontFacing ? 1.0f : -1.0f;
-            sample.normal = towardsCamera * hit->normal;
-            sample.shadingNormal = towardsCamera * interpolatedNormal(scene, *hit);
-            sample.uv = interpolatedUv(scene, *hit);
-            sample.viewDepth = glm::dot(sample.position - camera.position, forward);
-        }
-    }
+    forEachRow(
+        height,
+        [&](std::uint32_t y) {
+            for (std::uint32_t x = 0; x < width; ++x) {
+                const Ray ray =
+                    primaryRay(camera, width, height, static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+                const std::optional<Hit> hit = cameraRays.closestHit(ray.origin, ray.direction, ray.maxDistance);
+                if (!hit)
+                    continue;
+                GBufferSample& sample = gbuffer.samples[std::size_t(y) * width + x];
+                sample.object = hit->object;
+                sample.triangle = hit->triangle;
+                sample.position = ray.origin + hit->distance * ray.direction;
+                sample.frontFacing = glm::dot(hit->normal, ray.direction) < 0.0f;
+                const float towardsCamera = sample.frontFacing ? 1.0f : -1.0f;
+                sample.normal = towardsCamera * hit->normal;
+                sample.shadingNormal = towardsCamera * interpolatedNormal(scene, *hit);
+                sample.uv = interpolatedUv(scene, *hit);
+                sample.viewDepth = glm::dot(sample.position - camera.position, forward);
+            }
+        },
+        progress);
     return gbuffer;
 }
 
-LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                         const DirectionalLight& light, float normalOffset)
+ShadowRay shadowRay(const GBufferSample& sample, const DirectionalLight& light, float normalOffset)
 {
-    const glm::vec3 towardsLight = -glm::normalize(light.direction);
-    return traceVisibility(scene, shadowRays, gbuffer, normalOffset, [&](glm::vec3) {
-        return LightRay{towardsLight, std::numeric_limits<float>::infinity()};
-    });
+    return {sample.position + normalOffset * sample.normal, -glm::normalize(light.direction),
+            std::numeric_limits<float>::infinity()};
+}
+
+ShadowRay shadowRay(const GBufferSample& sample, glm::vec3 lightPosition, float normalOffset)
+{
+    const glm::vec3 origin = sample.position + normalOffset * sample.normal;
+    const glm::vec3 toLight = lightPosition - origin;
+    const float distance = glm::length(toLight);
+    return {origin, toLight / distance, distance};
+}
+
+LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                         const DirectionalLight& light, float normalOffset,
+                                         const TraceProgress& progress)
+{
+    return traceVisibility(scene, shadowRays, gbuffer, progress,
+                           [&](const GBufferSample& sample) { return shadowRay(sample, light, normalOffset); });
 }
 
 LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
                                                    const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
-                                                   float normalOffset)
+                                                   float normalOffset, const TraceProgress& progress)
 {
-    return traceVisibility(scene, shadowRays, gbuffer, normalOffset, [&](glm::vec3 origin) {
-        const glm::vec3 toLight = lightPosition - origin;
-        const float distance = glm::length(toLight);
-        return LightRay{toLight / distance, distance};
+    return traceVisibility(scene, shadowRays, gbuffer, progress, [&](const GBufferSample& sample) {
+        return shadowRay(sample, lightPosition, normalOffset);
     });
 }
 

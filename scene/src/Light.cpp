@@ -4,6 +4,19 @@
 
 namespace penumbra::scene {
 
+const char* lightKindName(LightKind kind)
+{
+    switch (kind) {
+    case LightKind::Directional:
+        return "directional light";
+    case LightKind::Spot:
+        return "spot light";
+    case LightKind::Point:
+        return "point light";
+    }
+    return "light";
+}
+
 glm::vec3 lightDirection(float pitch, float yaw)
 {
     const float horizontal = std::cos(pitch);

@@ -26,18 +26,24 @@ struct TriangleSource {
 };
 
 // An object whose surface has holes: blocks a ray only where its alpha reaches `threshold`.
+// Textured materials keep a copy of their texture: the caster outlives the scene.
 struct AlphaTest {
     Material material;
     float threshold;
+    std::optional<TextureImage> texture;
 };
 
-std::optional<AlphaTest> alphaTestFor(const Material& material, RayKind kind)
+std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& material, RayKind kind)
 {
+    std::optional<TextureImage> texture;
+    const std::optional<MaterialTexture>& baseColor = material.texture(TextureSlot::BaseColor);
+    if (baseColor && material.caster != CasterMode::On && material.caster != CasterMode::Off)
+        texture = scene.textures.at(baseColor->image);
     switch (material.caster) {
-    case CasterMode::Clip: return AlphaTest{material, material.alphaCutoff};
+    case CasterMode::Clip: return AlphaTest{material, material.alphaCutoff, std::move(texture)};
     case CasterMode::Dither:
         if (kind == RayKind::Shadow)
-            return AlphaTest{material, kDitherShadowThreshold};
+            return AlphaTest{material, kDitherShadowThreshold, std::move(texture)};
         return std::nullopt;
     case CasterMode::On:
     case CasterMode::Off: return std::nullopt;
@@ -99,7 +105,7 @@ struct RayCaster::Data {
         const std::array<glm::vec2, 3>& uv = uvs[index];
         const glm::vec2 at = (1.0f - barycentrics.x - barycentrics.y) * uv[0] + barycentrics.x * uv[1] +
                              barycentrics.y * uv[2];
-        return materialAlpha(test->material, at) >= test->threshold;
+        return materialAlpha(test->material, at, test->texture ? &*test->texture : nullptr) >= test->threshold;
     }
 
     // Visits the triangles of every leaf the ray reaches within maxDistance, nearer boxes
@@ -156,7 +162,7 @@ RayCaster::RayCaster(const Scene& scene, RayKind kind) : data_(std::make_unique<
     for (std::uint32_t objectIndex = 0; objectIndex < scene.objects.size(); ++objectIndex) {
         const Object& object = scene.objects[objectIndex];
         const Material& material = scene.materialOf(object);
-        data_->alphaTests.push_back(alphaTestFor(material, kind));
+        data_->alphaTests.push_back(alphaTestFor(scene, material, kind));
         if (!isSeen(material, kind))
             continue;
         const MeshData& mesh = scene.meshOf(object);
@@ -167,7 +173,9 @@ RayCaster::RayCaster(const Scene& scene, RayKind kind) : data_(std::make_unique<
             for (std::size_t k = 0; k < 3; ++k) {
                 const Vertex& vertex = mesh.vertices[mesh.indices[3 * t + k]];
                 world[k] = glm::vec3(object.transform * glm::vec4(vertex.position, 1.0f));
-                uv[k] = vertex.uv;
+                // Where the passes read the base colour texture (its uv set and transform, affine, so it may be
+                // applied before the barycentric interpolation).
+                uv[k] = textureUv(material.texture(TextureSlot::BaseColor), vertex.uv, vertex.uv1);
                 triangleBounds.extend(world[k]);
             }
             triangles.push_back({world[0], world[1] - world[0], world[2] - world[0]});

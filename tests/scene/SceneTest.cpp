@@ -117,6 +117,18 @@ TEST(MaterialTest, ClipAlphaIsACheckerOfBaseAlpha)
     EXPECT_EQ(materialAlpha(Material{}, {0.3f, 0.7f}), 1.0f);
 }
 
+TEST(MaterialTest, TexturedAlphaIsBilinearAndRepeats)
+{
+    // Two texels: alpha 0 on the left, 1 on the right; their centres at u = 0.25 and 0.75.
+    const TextureImage texture{"edge", 2, 1, {255, 255, 255, 0, 255, 255, 255, 255}};
+    const Material clip{.baseColor = {1, 1, 1, 0.8f}, .caster = CasterMode::Clip};
+    EXPECT_FLOAT_EQ(materialAlpha(clip, {0.25f, 0.5f}, &texture), 0.0f);
+    EXPECT_FLOAT_EQ(materialAlpha(clip, {0.75f, 0.5f}, &texture), 0.8f);
+    EXPECT_FLOAT_EQ(materialAlpha(clip, {0.5f, 0.5f}, &texture), 0.4f);
+    EXPECT_FLOAT_EQ(textureAlpha(texture, {1.0f, 0.5f}), 0.5f);  // between the last texel and the first, repeated
+    EXPECT_FLOAT_EQ(textureAlpha(texture, {-0.25f, 0.5f}), 1.0f); // the right texel, one period to the left
+}
+
 TEST(MaterialTest, CheckerIsSymmetricUnderAFaceMirror)
 {
     // Opposite box faces run v (or u) in opposite directions; an odd cell count keeps the

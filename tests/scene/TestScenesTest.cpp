@@ -155,3 +155,55 @@ TEST(TestScenesTest, UnshadowedPillarStandsInTheFloatingCubesKeyShadow)
 
 } // namespace
 } // namespace penumbra::scene
+
+namespace penumbra::scene {
+namespace {
+
+TEST(ForestSceneTest, HasTheTerrainFiveTreesAndOneSun)
+{
+    const Scene forest = makeForestScene();
+    EXPECT_EQ(forest.meshOf(object(forest, "terrain")).triangleCount(), 2450u);
+    for (int i = 1; i <= 5; ++i) {
+        const std::string tree = "tree " + std::to_string(i);
+        const std::uint32_t triangles = forest.meshOf(object(forest, tree + " wood")).triangleCount() +
+                                        forest.meshOf(object(forest, tree + " leaves")).triangleCount();
+        EXPECT_GT(triangles, 4500u) << tree;
+        EXPECT_LT(triangles, 5500u) << tree;
+        const Material& leaves = forest.materialOf(object(forest, tree + " leaves"));
+        EXPECT_EQ(leaves.caster, CasterMode::Clip);
+        ASSERT_TRUE(leaves.texture(TextureSlot::BaseColor));
+    }
+    ASSERT_EQ(forest.lights.size(), 1u);
+    EXPECT_EQ(forest.objects.size(), 11u);
+}
+
+TEST(ForestSceneTest, LeafTextureCutsOutLeaves)
+{
+    const Scene forest = makeForestScene();
+    const TextureImage& leaf = forest.textures.at(0);
+    std::size_t opaque = 0, clear = 0;
+    for (std::size_t i = 3; i < leaf.rgba.size(); i += 4) {
+        opaque += leaf.rgba[i] == 255;
+        clear += leaf.rgba[i] == 0;
+    }
+    const std::size_t texels = leaf.rgba.size() / 4;
+    EXPECT_GT(opaque, texels / 5) << "the leaves cover a good part of the card";
+    EXPECT_GT(clear, texels / 5) << "and leave holes between them";
+}
+
+TEST(ForestSceneTest, IsTheSameEveryTimeAndTheCameraStandsAboveTheGround)
+{
+    const Scene a = makeForestScene(), b = makeForestScene();
+    const MeshData& leavesA = a.meshOf(object(a, "tree 3 leaves"));
+    const MeshData& leavesB = b.meshOf(object(b, "tree 3 leaves"));
+    ASSERT_EQ(leavesA.vertices.size(), leavesB.vertices.size());
+    for (std::size_t i = 0; i < leavesA.vertices.size(); ++i)
+        EXPECT_EQ(leavesA.vertices[i].position, leavesB.vertices[i].position);
+    const RayCaster rays(a, RayKind::Camera);
+    const std::optional<Hit> below = rays.closestHit(a.camera.position, {0.0f, -1.0f, 0.0f});
+    ASSERT_TRUE(below) << "terrain under the camera";
+    EXPECT_NEAR(below->distance, 1.7f, 0.01f);
+}
+
+} // namespace
+} // namespace penumbra::scene

@@ -15,7 +15,9 @@ namespace penumbra::render {
 inline constexpr std::uint32_t maxLitDirectionalLights = 8;
 inline constexpr std::uint32_t maxLitLocalLights = 16; // spot and point lights together
 
-enum class LitView : std::int32_t { Lit = 0, Cascades = 1 };
+// What the lit pass writes: the lit image, the lit image tinted by cascade, or one light's raw shadow-map
+// visibility (FrameDesc::visibilityOf).
+enum class LitView : std::int32_t { Lit = 0, Cascades = 1, Visibility = 2 };
 
 // The blocks of shaders/lit.glsl, std140, uploaded as they are.
 struct LitFrameUniforms {
@@ -25,7 +27,7 @@ struct LitFrameUniforms {
     std::array<glm::vec4, maxLitDirectionalLights> lightColor{};
     std::array<glm::vec4, maxLitDirectionalLights> lightDirection{}; // w = shadow slot or -1
     glm::vec4 ambient{0.0f};
-    glm::ivec4 config{0}; // directional light count, LitView, local light count
+    glm::ivec4 config{0}; // directional light count, LitView, local light count, visibility view's light
     std::array<glm::vec4, maxLitLocalLights> localPosition{};  // xyz, w = 1 / range^2
     std::array<glm::vec4, maxLitLocalLights> localColor{};     // rgb x intensity, w = 1 point, 0 spot
     std::array<glm::vec4, maxLitLocalLights> localAxis{};      // spot cone axis

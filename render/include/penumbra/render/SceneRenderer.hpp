@@ -28,6 +28,10 @@ struct FrameDesc {
     shadows::ShadowSettings shadows;
     AmbientLight ambient;
     bool cascadeView = false; // also render the lit image tinted by cascade index
+    // Also render this light's raw shadow-map visibility (SceneRenderer::visibilityImage()): the filtered
+    // shadow in red, green and blue (1 = lit) before strength and fades, and in alpha 1 where its shadow map
+    // decides the pixel (the light reaches it, a cascade or tile covers it, the material receives shadows).
+    std::optional<scene::LightRef> visibilityOf;
 };
 
 struct FrameStats {
@@ -62,12 +66,13 @@ public:
 
     // render(camera, frame, planShadows(camera, frame)).
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
-    // Throws rhi::Error for settings or ambient light out of range (naming the field), a zero-sized frame, or plans whose
-    // atlases do not match the frame's settings.
+    // Throws rhi::Error for settings or ambient light out of range (naming the field), a zero-sized frame, plans
+    // whose atlases do not match the frame's settings, or a visibility view of a light the lit pass does not draw.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
     const rhi::Texture& litImage() const { return *lit_; }
     const rhi::Texture& cascadeImage() const { return *cascades_; }
+    const rhi::Texture& visibilityImage() const { return *visibility_; }
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
     // Spot and point shadows: tiles of this atlas.
@@ -81,6 +86,7 @@ public:
 private:
     void prepareTargets(const FrameDesc& frame);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
+    int litLightIndex(const scene::LightRef& light) const;
     void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const LitFrameUniforms& frame,
                        const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms);
 
@@ -104,6 +110,8 @@ private:
     std::unique_ptr<rhi::Texture> depth_;
     std::unique_ptr<rhi::Framebuffer> litTarget_;
     std::unique_ptr<rhi::Framebuffer> cascadeTarget_;
+    std::unique_ptr<rhi::Texture> visibility_;
+    std::unique_ptr<rhi::Framebuffer> visibilityTarget_;
 
     shadows::DirectionalShadowPlan plan_;
     shadows::OtherShadowPlan otherPlan_;

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -59,10 +60,14 @@ struct CpuGBuffer {
     const GBufferSample& at(std::uint32_t x, std::uint32_t y) const { return samples[std::size_t(y) * width + x]; }
 };
 
+// Called on the calling thread while a trace runs: rows finished so far, and of how many. The traces use every
+// hardware thread; their results do not depend on how many there are.
+using TraceProgress = std::function<void(std::uint32_t done, std::uint32_t rows)>;
+
 // `cameraRays` must be built from `scene` with RayKind::Camera (throws std::invalid_argument
 // otherwise).
 CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const Camera& camera, std::uint32_t width,
-                        std::uint32_t height);
+                        std::uint32_t height, const TraceProgress& progress = {});
 
 enum class LightVisibility : std::uint8_t {
     Background,   // no surface
@@ -88,11 +93,23 @@ inline constexpr float kShadowRayOffset = 1e-3f;
 // -light.direction. `shadowRays` must be built with RayKind::Shadow (throws
 // std::invalid_argument otherwise).
 LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                         const DirectionalLight& light, float normalOffset = kShadowRayOffset);
+                                         const DirectionalLight& light, float normalOffset = kShadowRayOffset,
+                                         const TraceProgress& progress = {});
 
 // The same for a spot or point light at `lightPosition`: rays end at the light.
 LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
                                                    const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
-                                                   float normalOffset = kShadowRayOffset);
+                                                   float normalOffset = kShadowRayOffset,
+                                                   const TraceProgress& progress = {});
+
+// The point from which a sample's shadow ray leaves, and the ray towards `light`: what the visibility traces
+// above cast, for tools that need more than a yes or no (the distance to the blocker, for instance).
+struct ShadowRay {
+    glm::vec3 origin;
+    glm::vec3 direction; // unit, towards the light
+    float maxDistance;   // to the light; infinite for a directional light
+};
+ShadowRay shadowRay(const GBufferSample& sample, const DirectionalLight& light, float normalOffset = kShadowRayOffset);
+ShadowRay shadowRay(const GBufferSample& sample, glm::vec3 lightPosition, float normalOffset = kShadowRayOffset);
 
 } // namespace penumbra::scene

@@ -2,6 +2,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <string>
 
 namespace penumbra::scene {
@@ -44,6 +45,16 @@ struct PointLight {
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f;
 };
+
+// A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.
+enum class LightKind : std::uint8_t { Directional, Spot, Point };
+struct LightRef {
+    LightKind kind = LightKind::Directional;
+    std::uint32_t index = 0;
+};
+
+// "directional light", "spot light" or "point light".
+const char* lightKindName(LightKind kind);
 
 // Unit light direction for a light pitched `pitch` radians below the horizon and turned
 // `yaw` radians about +y, measured from +z towards +x (yaw 0 shines towards +z).

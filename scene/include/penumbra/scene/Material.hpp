@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/scene/TextureImage.hpp"
+
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -79,6 +81,10 @@ struct Material {
     const std::optional<MaterialTexture>& texture(TextureSlot slot) const { return textures[std::size_t(slot)]; }
 };
 
+// The coordinate at which `texture` is read from a point with uv sets uv0 and uv1: its set, transformed
+// (uv0 itself without a texture), as material.glsl's transformedUv does.
+glm::vec2 textureUv(const std::optional<MaterialTexture>& texture, glm::vec2 uv0, glm::vec2 uv1);
+
 // Cells per uv unit of the procedural checker that gives Clip materials their holes.
 // Odd, so the pattern is symmetric under u -> 1 - u and v -> 1 - v: opposite faces of a box
 // run their uv in mirrored directions, and only then do a thin clipped box's holes line up
@@ -91,8 +97,13 @@ inline constexpr float kClipCheckerCells = 5.0f;
 //   can predict. The lit pass clips the surface with the same alpha and cutoff, so the holes
 //   are visible from the camera too; shaders must implement this exact function.
 // - Every other mode: baseColor.a.
-// Textured materials multiply baseColor.a by the texture's alpha instead, in the shaders; this CPU
-// reference (the ground truth's) does not sample textures.
-float materialAlpha(const Material& material, glm::vec2 uv);
+// - Textured materials (`baseColor` is the image of the material's base colour texture, `uv` textureUv's): baseColor.a
+//   times the texture's alpha
+//   (textureAlpha) instead of the checker, in every mode, as the shaders do.
+float materialAlpha(const Material& material, glm::vec2 uv, const TextureImage* baseColor = nullptr);
+
+// The texture's alpha at `uv`: bilinear between texel centres on its full-size level, repeating, as the
+// passes' repeat sampler gives it where no smaller mip level is selected.
+float textureAlpha(const TextureImage& texture, glm::vec2 uv);
 
 } // namespace penumbra::scene

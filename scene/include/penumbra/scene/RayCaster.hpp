@@ -16,7 +16,7 @@ namespace penumbra::scene {
 //                  CasterMode::On   Clip                         Dither                      Off
 //   Shadow         solid            holes: alpha < alphaCutoff   holes: alpha < 0.5          absent
 //   Camera         solid            holes: alpha < alphaCutoff   solid                       solid
-// alpha = materialAlpha(material, uv at the hit). Shadow is the ground truth for shadow maps:
+// alpha = materialAlpha(material, uv at the hit, its base colour texture). Shadow is the ground truth for shadow maps:
 // a dithered caster's expected coverage is its alpha, which a binary answer cannot give, so
 // the ground truth thresholds it at kDitherShadowThreshold; compare dithered shadows
 // statistically, not per pixel. Camera is what the lit pass draws: Clip materials are

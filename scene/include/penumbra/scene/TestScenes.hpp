@@ -29,4 +29,10 @@ Scene makeMixedLightsScene();
 // The camera stands inside near the -z wall looking at the +z wall.
 Scene makePointLightRoomScene();
 
+// A forest for real-content shadows and benchmarks: an 80 x 80 heightfield terrain (2 450 triangles), five trees
+// of about 5 000 triangles each (an opaque trunk and branches, alpha-tested leaf cards cut out by a leaf texture
+// generated here), a camera standing among them at eye height (made for 16:9, 1280 x 720) and one sun, 40 degrees
+// up. Objects: "terrain", "tree N wood" and "tree N leaves" for N = 1..5.
+Scene makeForestScene();
+
 } // namespace penumbra::scene

@@ -1,0 +1,167 @@
+// penumbra truth: a scene's shadow maps against a CPU ray cast of the same pixels, per shadowed light.
+#include "BackendOptions.hpp"
+#include "Commands.hpp"
+#include "ImageFiles.hpp"
+#include "SceneOptions.hpp"
+#include "TruthPictures.hpp"
+
+#include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/render/ShadowTruth.hpp"
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/RayCaster.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fmt/format.h>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+namespace penumbra::apps {
+namespace {
+
+struct TruthOptions {
+    std::string backend = "vulkan";
+    SceneOptions scene;
+    std::string out;
+};
+
+// The lights the frame gives a shadow map and draws, in the lit pass's order.
+std::vector<scene::LightRef> shadowedLights(const render::ShadowPlans& plans, const scene::Scene& scene)
+{
+    std::vector<scene::LightRef> lights;
+    const std::size_t directional = std::min<std::size_t>(scene.lights.size(), render::maxLitDirectionalLights);
+    for (std::uint32_t i = 0; i < directional; ++i)
+        if (plans.directional.shadowSlots[i] >= 0)
+            lights.push_back({scene::LightKind::Directional, i});
+    std::size_t local = 0;
+    for (std::uint32_t i = 0; i < scene.spotLights.size() && local < render::maxLitLocalLights; ++i, ++local)
+        if (plans.other.spotTiles[i] >= 0)
+            lights.push_back({scene::LightKind::Spot, i});
+    for (std::uint32_t i = 0; i < scene.pointLights.size() && local < render::maxLitLocalLights; ++i, ++local)
+        if (plans.other.pointShadows[i] >= 0)
+            lights.push_back({scene::LightKind::Point, i});
+    return lights;
+}
+
+// One line on stderr, redrawn as rows finish: "tracing <what> [#####-----]  50%".
+scene::TraceProgress progressBar(std::string what)
+{
+    return [what = std::move(what), shown = -1](std::uint32_t done, std::uint32_t rows) mutable {
+        const int percent = rows == 0 ? 100 : static_cast<int>(100u * done / rows) / 5 * 5;
+        if (percent == shown)
+            return;
+        shown = percent;
+        const int filled = percent / 5;
+        fmt::print(stderr, "\rtracing {} [{}{}] {:3}%", what, std::string(std::size_t(filled), '#'),
+                   std::string(std::size_t(20 - filled), '-'), percent);
+        if (done == rows)
+            fmt::print(stderr, "\n");
+        std::fflush(stderr);
+    };
+}
+
+std::string percent(double share) { return fmt::format("{:.3f}%", 100.0 * share); }
+
+nlohmann::json lightReport(const LightTruth& t)
+{
+    const scene::TruthComparison& c = t.comparison;
+    return {{"name", t.name},
+            {"kind", scene::lightKindName(t.light.kind)},
+            {"index", t.light.index},
+            {"compared", c.compared()},
+            {"litCompared", c.lit.compared},
+            {"shadowedCompared", c.shadowed.compared},
+            {"agreement", c.agreement()},
+            {"litAgreement", c.lit.share()},
+            {"shadowedAgreement", c.shadowed.share()},
+            {"acnePixels", c.acne()},
+            {"leakPixels", c.leaks()},
+            {"contactGapTexels", t.contactGapTexels},
+            {"litNearEdges", c.lit.nearEdges},
+            {"shadowedNearEdges", c.shadowed.nearEdges},
+            {"litUndecided", c.lit.undecided},
+            {"shadowedUndecided", c.shadowed.undecided}};
+}
+
+void truth(const TruthOptions& options)
+{
+    const LoadedScene loaded = loadScene(options.scene);
+    const scene::Scene& scene = loaded.scene;
+    render::FrameDesc frame = frameDesc(options.scene);
+    if (std::filesystem::exists(options.out) && !std::filesystem::is_directory(options.out))
+        throw rhi::Error(fmt::format("--out: '{}' exists and is not a folder", options.out));
+    for (const std::string& note : loaded.notes)
+        fmt::print("{}: {}\n", options.scene.scene, note);
+
+    auto device = createDevice(options.backend);
+    render::SceneRenderer renderer(*device, scene);
+    const render::ShadowPlans plans = renderer.planShadows(scene.camera, frame);
+    const std::vector<scene::LightRef> lights = shadowedLights(plans, scene);
+    if (lights.empty())
+        throw rhi::Error(fmt::format("{}: no light has a shadow map in this frame, so there is nothing to compare",
+                                     options.scene.scene));
+    std::vector<LightTruth> truths;
+    for (const scene::LightRef& light : lights) {
+        frame.visibilityOf = light;
+        renderer.render(scene.camera, frame, plans);
+        const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
+        truths.push_back({light, render::lightLabel(scene, light), {}, render::renderedVisibility(view), {}, 0.0f});
+    }
+    for (const std::string& note : renderer.notes())
+        fmt::print("  note: {}\n", note);
+    if (const auto messages = device->debugMessages(); !messages.empty())
+        throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", options.backend, messages.size(),
+                                     messages[0]));
+
+    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
+    const scene::RayCaster shadowRays(scene);
+    const scene::CpuGBuffer gbuffer =
+        scene::traceGBuffer(scene, cameraRays, scene.camera, frame.width, frame.height, progressBar("camera rays"));
+    nlohmann::json report = {{"scene", options.scene.scene},
+                             {"configuration", options.backend},
+                             {"width", frame.width},
+                             {"height", frame.height},
+                             {"edgeMarginPixels", scene::kTruthEdgeMargin},
+                             {"lights", nlohmann::json::array()}};
+    for (LightTruth& t : truths) {
+        t.raycast = render::traceTruth(scene, shadowRays, gbuffer, t.light, progressBar(fmt::format("'{}'", t.name)));
+        t.comparison = scene::compareWithTruth(gbuffer, t.raycast, t.rendered);
+        t.contactGapTexels = scene::contactGapTexels(
+            t.comparison, gbuffer, shadowRays,
+            [&](const scene::GBufferSample& sample) { return render::truthShadowRay(scene, t.light, sample); },
+            [&](glm::vec3 position) { return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position); });
+        report["lights"].push_back(lightReport(t));
+    }
+
+    // Everything is computed before the first file is written: a failure leaves no partial report.
+    const std::filesystem::path out(options.out);
+    writeTruthPictures(out, truths);
+    writeTextFile(out / "truth.json", report.dump(2) + "\n");
+    for (const LightTruth& t : truths) {
+        const scene::TruthComparison& c = t.comparison;
+        fmt::print("{} ({} {}): agreement {} of {} pixels; truly lit {} right of {}, truly shadowed {} right of {}; "
+                   "acne {}, leaks {}, contact gap {:.2f} texels\n",
+                   t.name, scene::lightKindName(t.light.kind), t.light.index, percent(c.agreement()), c.compared(),
+                   percent(c.lit.share()), c.lit.compared, percent(c.shadowed.share()), c.shadowed.compared, c.acne(),
+                   c.leaks(), t.contactGapTexels);
+    }
+    fmt::print("  wrote {}\n", (out / "truth.json").string());
+}
+
+} // namespace
+
+void addTruthCommand(CLI::App& app)
+{
+    auto options = std::make_shared<TruthOptions>();
+    CLI::App* command = app.add_subcommand(
+        "truth", "Compare a scene's shadow maps with a CPU ray cast of the same pixels, per shadowed light: "
+                 "writes raycast.png, shadowmap.png, disagreement.png (acne red, leaks blue) and truth.json");
+    command->add_option("-b,--backend", options->backend, "One configuration name (vulkan, opengl-reversed, ...)")
+        ->check(configurationValidator())
+        ->capture_default_str();
+    addSceneOptions(*command, options->scene);
+    command->add_option("-o,--out", options->out, "Output folder")->required();
+    command->callback([options] { truth(*options); });
+}
+
+} // namespace penumbra::apps

@@ -1,0 +1,123 @@
+#include "TruthPictures.hpp"
+
+#include "ImageFiles.hpp"
+
+#include "penumbra/rhi/Image.hpp"
+
+#include <array>
+#include <fmt/format.h>
+#include <span>
+
+namespace penumbra::apps {
+namespace {
+
+using Rgb = std::array<std::uint8_t, 3>;
+
+constexpr Rgb kBackground{0, 0, 0};
+constexpr Rgb kNoLight{28, 28, 40}; // a surface no compared light decides
+constexpr Rgb kAcne{235, 40, 40};
+constexpr Rgb kLeak{40, 100, 255};
+constexpr Rgb kAcneAndLeak{220, 40, 220};
+constexpr Rgb kNearEdge{70, 58, 30}; // dark amber: left out, neither right nor wrong
+constexpr Rgb kLitRight{180, 180, 180};
+constexpr Rgb kShadowedRight{90, 90, 90};
+
+Rgb grey(float visibility)
+{
+    const auto level = static_cast<std::uint8_t>(40.0f + 190.0f * visibility + 0.5f);
+    return {level, level, level};
+}
+
+// A picture of width x height from colour(pixel index).
+template <typename Colour>
+rhi::Image picture(std::uint32_t width, std::uint32_t height, Colour colour)
+{
+    rhi::Image image{width, height, rhi::Format::RGBA8, std::vector<std::byte>(std::size_t(width) * height * 4)};
+    for (std::size_t i = 0; i < std::size_t(width) * height; ++i) {
+        const Rgb c = colour(i);
+        for (std::size_t k = 0; k < 3; ++k)
+            image.bytes[4 * i + k] = std::byte(c[k]);
+        image.bytes[4 * i + 3] = std::byte(255);
+    }
+    return image;
+}
+
+bool isSurface(const LightTruth& t, std::size_t i) { return t.raycast.pixels[i] != scene::LightVisibility::Background; }
+
+rhi::Image raycastPicture(std::span<const LightTruth> lights)
+{
+    const scene::LightVisibilityMask& first = lights.front().raycast;
+    return picture(first.width, first.height, [&](std::size_t i) {
+        float seen = 0.0f;
+        int decided = 0;
+        for (const LightTruth& t : lights) {
+            const scene::LightVisibility v = t.raycast.pixels[i];
+            if (v == scene::LightVisibility::Lit || v == scene::LightVisibility::Shadowed) {
+                seen += v == scene::LightVisibility::Lit ? 1.0f : 0.0f;
+                ++decided;
+            }
+        }
+        if (decided == 0)
+            return isSurface(lights.front(), i) ? kNoLight : kBackground;
+        return grey(seen / float(decided));
+    });
+}
+
+rhi::Image shadowMapPicture(std::span<const LightTruth> lights)
+{
+    const scene::RenderedVisibility& first = lights.front().rendered;
+    return picture(first.width, first.height, [&](std::size_t i) {
+        float seen = 0.0f;
+        int decided = 0;
+        for (const LightTruth& t : lights)
+            if (t.rendered.decided[i]) {
+                seen += t.rendered.lit[i];
+                ++decided;
+            }
+        if (decided == 0)
+            return isSurface(lights.front(), i) ? kNoLight : kBackground;
+        return grey(seen / float(decided));
+    });
+}
+
+rhi::Image disagreementPicture(std::span<const LightTruth> lights)
+{
+    const scene::TruthComparison& first = lights.front().comparison;
+    return picture(first.width, first.height, [&](std::size_t i) {
+        bool acne = false, leak = false, edge = false, lit = false, shadowed = false;
+        for (const LightTruth& t : lights) {
+            const scene::TruthVerdict v = t.comparison.verdicts[i];
+            acne |= v == scene::TruthVerdict::Acne;
+            leak |= v == scene::TruthVerdict::Leak;
+            edge |= v == scene::TruthVerdict::NearEdge;
+            lit |= v == scene::TruthVerdict::LitRight;
+            shadowed |= v == scene::TruthVerdict::ShadowedRight;
+        }
+        if (acne || leak)
+            return acne && leak ? kAcneAndLeak : acne ? kAcne : kLeak;
+        if (edge)
+            return kNearEdge;
+        if (lit || shadowed)
+            return lit ? kLitRight : kShadowedRight;
+        return isSurface(lights.front(), i) ? kNoLight : kBackground;
+    });
+}
+
+void writeSet(const std::filesystem::path& folder, std::span<const LightTruth> lights, const std::string& suffix)
+{
+    writePng(folder / fmt::format("raycast{}.png", suffix), raycastPicture(lights));
+    writePng(folder / fmt::format("shadowmap{}.png", suffix), shadowMapPicture(lights));
+    writePng(folder / fmt::format("disagreement{}.png", suffix), disagreementPicture(lights));
+}
+
+} // namespace
+
+void writeTruthPictures(const std::filesystem::path& folder, const std::vector<LightTruth>& lights)
+{
+    writeSet(folder, lights, "");
+    if (lights.size() > 1)
+        for (std::size_t n = 0; n < lights.size(); ++n)
+            writeSet(folder, std::span(lights).subspan(n, 1), fmt::format("-{}", n + 1));
+}
+
+} // namespace penumbra::apps

@@ -1,0 +1,123 @@
+#include "penumbra/render/ShadowTruth.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/shadows/LocalLightProjection.hpp"
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+
+namespace penumbra::render {
+namespace {
+
+// The perspective view's texel at the position's distance from its light plane (a perspective texel grows
+// linearly with that distance).
+float perspectiveTexel(const glm::mat4& projection, std::uint32_t tileSize, glm::vec3 axis, glm::vec3 fromLight)
+{
+    return shadows::texelSizeAtUnitDistance(projection, tileSize) * glm::dot(fromLight, axis);
+}
+
+float directionalTexel(const shadows::DirectionalShadowPlan& plan, std::uint32_t index, glm::vec3 position)
+{
+    if (index >= plan.shadowSlots.size() || plan.shadowSlots[index] < 0)
+        return 0.0f;
+    // The first cascade whose culling sphere holds the point, as the lit shader selects it.
+    for (const shadows::DirectionalCascadePlan& cascade :
+         plan.lights[static_cast<std::size_t>(plan.shadowSlots[index])].cascades) {
+        const glm::vec3 offset = position - cascade.fit.cullingSphere.centre;
+        if (glm::dot(offset, offset) < cascade.fit.cullingSphere.radius * cascade.fit.cullingSphere.radius)
+            return cascade.fit.texelSize;
+    }
+    return 0.0f;
+}
+
+float pointTexel(const ShadowPlans& plans, std::uint32_t cubeFaceSize, const scene::PointLight& light, int shadow,
+                 glm::vec3 position)
+{
+    const glm::vec3 fromLight = position - light.position;
+    const shadows::CubeFace face = shadows::cubeFace(fromLight);
+    const glm::vec3 axis = shadows::cubeFaceAxis(face);
+    if (!plans.other.cubes.empty())
+        return perspectiveTexel(plans.other.cubes.at(static_cast<std::size_t>(shadow))
+                                    .faces[static_cast<std::size_t>(face)]
+                                    .projection,
+                                cubeFaceSize, axis, fromLight);
+    const std::size_t tile = static_cast<std::size_t>(shadow) + static_cast<std::size_t>(face);
+    return perspectiveTexel(plans.other.tiles.at(tile).view.projection, plans.other.atlas.tileSize(), axis,
+                            fromLight);
+}
+
+} // namespace
+
+scene::RenderedVisibility renderedVisibility(const rhi::Image& view)
+{
+    if (view.format != rhi::Format::RGBA8)
+        throw rhi::Error("renderedVisibility: the visibility view is RGBA8");
+    scene::RenderedVisibility v{view.width, view.height, std::vector<float>(std::size_t(view.width) * view.height),
+                                std::vector<std::uint8_t>(std::size_t(view.width) * view.height)};
+    for (std::size_t i = 0; i < v.lit.size(); ++i) {
+        const std::byte* texel = view.bytes.data() + 4 * i;
+        v.lit[i] = static_cast<float>(std::to_integer<int>(texel[0])) / 255.0f;
+        v.decided[i] = std::to_integer<int>(texel[3]) >= 128 ? 1 : 0;
+    }
+    return v;
+}
+
+float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& settings, const scene::Scene& scene,
+                      const scene::LightRef& light, glm::vec3 position)
+{
+    switch (light.kind) {
+    case scene::LightKind::Directional:
+        return directionalTexel(plans.directional, light.index, position);
+    case scene::LightKind::Spot: {
+        const int tile = plans.other.spotTiles.at(light.index);
+        if (tile < 0)
+            return 0.0f;
+        const scene::SpotLight& spot = scene.spotLights.at(light.index);
+        return perspectiveTexel(plans.other.tiles.at(static_cast<std::size_t>(tile)).view.projection,
+                                plans.other.atlas.tileSize(), spot.direction, position - spot.position);
+    }
+    case scene::LightKind::Point: {
+        const int shadow = plans.other.pointShadows.at(light.index);
+        return shadow < 0 ? 0.0f : pointTexel(plans, settings.other.cubeMapSize, scene.pointLights.at(light.index), shadow,
+                                                     position);
+    }
+    }
+    return 0.0f;
+}
+
+scene::ShadowRay truthShadowRay(const scene::Scene& scene, const scene::LightRef& light,
+                                const scene::GBufferSample& sample)
+{
+    switch (light.kind) {
+    case scene::LightKind::Directional:
+        return scene::shadowRay(sample, scene.lights.at(light.index));
+    case scene::LightKind::Spot:
+        return scene::shadowRay(sample, scene.spotLights.at(light.index).position);
+    case scene::LightKind::Point:
+        return scene::shadowRay(sample, scene.pointLights.at(light.index).position);
+    }
+    return scene::shadowRay(sample, scene.lights.at(light.index));
+}
+
+scene::LightVisibilityMask traceTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
+                                      const scene::CpuGBuffer& gbuffer, const scene::LightRef& light,
+                                      const scene::TraceProgress& progress)
+{
+    if (light.kind == scene::LightKind::Directional)
+        return scene::traceLightVisibility(scene, shadowRays, gbuffer, scene.lights.at(light.index),
+                                           scene::kShadowRayOffset, progress);
+    const glm::vec3 position = light.kind == scene::LightKind::Spot ? scene.spotLights.at(light.index).position
+                                                                    : scene.pointLights.at(light.index).position;
+    return scene::tracePositionalLightVisibility(scene, shadowRays, gbuffer, position, scene::kShadowRayOffset,
+                                                 progress);
+}
+
+std::string lightLabel(const scene::Scene& scene, const scene::LightRef& light)
+{
+    const std::string& name = light.kind == scene::LightKind::Directional ? scene.lights.at(light.index).name
+                              : light.kind == scene::LightKind::Spot      ? scene.spotLights.at(light.index).name
+                                                                          : scene.pointLights.at(light.index).name;
+    return name.empty() ? fmt::format("{} {}", scene::lightKindName(light.kind), light.index) : name;
+}
+
+} // namespace penumbra::render
