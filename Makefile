@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench sanitize clean
+.PHONY: all deps configure build test demo bench sanitize docs clean
 
 all: build
 
@@ -36,6 +36,12 @@ bench: build
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run in build-sanitize/.
 sanitize:
 	@$(MAKE) test BUILD=build-sanitize CMAKE_FLAGS="-DPENUMBRA_WERROR=ON -DPENUMBRA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
+
+# The API reference of the public headers with Doxygen, warnings as errors: $(BUILD)/docs/html/index.html.
+docs: deps
+	@mkdir -p $(BUILD)/docs
+	@PENUMBRA_DOCS_OUTPUT=$(BUILD)/docs doxygen docs/Doxyfile
+	@echo "docs: $(BUILD)/docs/html/index.html"
 
 clean:
 	@rm -rf $(BUILD) build-sanitize out

@@ -14,6 +14,12 @@ function(penumbra_warnings target)
                                            $<$<BOOL:${PENUMBRA_WERROR}>:-Werror>)
 endfunction()
 
+# The headers only the backends share (rhi/backend/: checks every API must apply alike, the debug
+# message log), on `target`'s own include path: never installed or exported, so no part of the public API.
+function(penumbra_uses_backend_headers target)
+  target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/rhi/backend)
+endfunction()
+
 # penumbra_library(<name> SOURCES ... ) -> target penumbra_<name>, alias penumbra::<name>,
 # public headers in <dir>/include.
 function(penumbra_library name)

@@ -9,7 +9,7 @@ packages=(
   glslang-dev glslang-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev openimageio-tools
   libfmt-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-  libimgui-dev xvfb xauth
+  libimgui-dev xvfb xauth doxygen
 )
 
 missing=()

@@ -1,4 +1,4 @@
-// Directional shadow attenuation: cascade selection, fades, normal bias and tent-filtered PCF over
+// Directional shadow attenuation: cascade selection, fades, normal offset and tent-filtered PCF over
 // the atlas. The uniform block is penumbra::shadows::DirectionalShadowUniforms; the filter is the
 // same math as penumbra::shadows::tentFilterTaps.
 
@@ -24,7 +24,8 @@ struct CascadeSelection {
     float strength; // distance and last-cascade fade
 };
 
-// saturate((1 - distance * scale) * fade), the design document's FadedShadowStrength.
+// saturate((1 - distance * scale) * fade): FadedShadowStrength of Catlike Coding's "Directional
+// Shadows" tutorial (section "Shadow Distance").
 float fadedShadowStrength(float distance, float scale, float fade)
 {
     return clamp((1.0 - distance * scale) * fade, 0.0, 1.0);
@@ -70,21 +71,23 @@ float filterDirectionalShadow(vec3 atlasPosition, int tile)
                             tileMin + tileSize - 1);
 }
 
-// The receiver moved along its normal by the cascade's filter-sized texel diagonal (normal bias), then filtered.
-float sampleCascade(int tile, int cascade, vec3 position, vec3 normal, float normalBias)
+// The receiver moved by its normal offset over the cascade's filter-sized texel diagonal, then filtered.
+float sampleCascade(int tile, int cascade, vec3 position, vec3 normal, vec3 towardsLight, float normalBias)
 {
-    precise vec3 biased = fma(normal, vec3(normalBias * shadows.cascadeData[cascade].y), position);
+    precise vec3 biased =
+        position + receiverNormalOffset(normal, towardsLight, normalBias * shadows.cascadeData[cascade].y);
     return filterDirectionalShadow(transformPoint(shadows.worldToAtlas[tile], biased).xyz, tile);
 }
 
 // The filtered shadow map alone, before any strength or fade (1 = lit): what ground truth compares.
-float directionalShadowVisibility(int slot, CascadeSelection s, vec3 position, vec3 normal)
+// `normal` is the receiver's geometric normal (either side), `towardsLight` the unit direction to the light.
+float directionalShadowVisibility(int slot, CascadeSelection s, vec3 position, vec3 normal, vec3 towardsLight)
 {
     const vec4 light = shadows.lightShadowData[slot];
     const int tile = int(light.z) + s.index;
-    float shadow = sampleCascade(tile, s.index, position, normal, light.y);
+    float shadow = sampleCascade(tile, s.index, position, normal, towardsLight, light.y);
     if (s.blend < 1.0)
-        shadow = mix(sampleCascade(tile + 1, s.index + 1, position, normal, light.y), shadow, s.blend);
+        shadow = mix(sampleCascade(tile + 1, s.index + 1, position, normal, towardsLight, light.y), shadow, s.blend);
     return shadow;
 }
 
@@ -95,10 +98,10 @@ bool directionalShadowReaches(int slot, CascadeSelection s)
 }
 
 // 1 = fully lit. `slot` is the light's shadow slot, -1 for a light without shadows.
-float directionalShadowAttenuation(int slot, CascadeSelection s, vec3 position, vec3 normal)
+float directionalShadowAttenuation(int slot, CascadeSelection s, vec3 position, vec3 normal, vec3 towardsLight)
 {
     if (!directionalShadowReaches(slot, s))
         return 1.0;
     const float strength = shadows.lightShadowData[slot].x * s.strength;
-    return mix(1.0, directionalShadowVisibility(slot, s, position, normal), strength);
+    return mix(1.0, directionalShadowVisibility(slot, s, position, normal, towardsLight), strength);
 }

@@ -100,14 +100,15 @@ LocalLight localLight(int i)
 // The visibility view: the raw filtered shadow of light `index` (directional lights first, then spot and point
 // lights) in red, green and blue, and in alpha whether that shadow map decides the pixel (1) or not (0: the
 // light does not reach it, it has no shadow there, or the material receives none).
-vec4 shadowVisibility(int index, vec3 n, CascadeSelection cascade, float globalStrength)
+vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascade, float globalStrength)
 {
     const bool receives = object.flags.x != 0;
     if (index < frame.config.x) {
         const int slot = receives ? int(frame.lightDirection[index].w) : -1;
         if (dot(n, -frame.lightDirection[index].xyz) <= 0.0 || !directionalShadowReaches(slot, cascade))
             return vec4(1.0, 1.0, 1.0, 0.0);
-        return vec4(vec3(directionalShadowVisibility(slot, cascade, vPosition, n)), 1.0);
+        const vec3 towardsLight = -frame.lightDirection[index].xyz;
+        return vec4(vec3(directionalShadowVisibility(slot, cascade, vPosition, geometric, towardsLight)), 1.0);
     }
     const int i = index - frame.config.x;
     const LocalLight light = localLight(i);
@@ -115,7 +116,7 @@ vec4 shadowVisibility(int index, vec3 n, CascadeSelection cascade, float globalS
     if (!receives || dot(n, light.l) <= 0.0 || light.falloff <= 0.0 || shadow.z < 0.0 || globalStrength <= 0.0)
         return vec4(1.0, 1.0, 1.0, 0.0);
     return vec4(vec3(otherShadowVisibility(int(shadow.z), light.isPoint, frame.localPosition[i].xyz,
-                                           frame.localAxis[i].xyz, vPosition, n)), 1.0);
+                                           frame.localAxis[i].xyz, vPosition, geometric)), 1.0);
 }
 
 void main()
@@ -133,20 +134,21 @@ void main()
     const vec3 base = object.baseColor.rgb * vColor.rgb * (textured ? srgbToLinear(texel.rgb) : vec3(1.0));
     // Unlit surfaces show no shadow: the visibility view leaves them undecided.
     if (object.flags.z != 0) {
-        outColor = frame.config.y == PENUMBRA_VIEW_VISIBILITY ? vec4(1.0, 1.0, 1.0, 0.0) : vec4(linearToSrgb(base), coverage);
+        outColor = frame.config.y == PENUMBRA_VIEW_VISIBILITY ? vec4(1.0, 1.0, 1.0, 0.0)
+                                                              : vec4(linearToSrgb(base), coverage);
         return;
     }
-    // Back faces (of double-sided materials, or seen through clip holes) are shaded with the flipped normal. Shadow
-    // lookups offset along the surface's own normal, not the normal texture's.
-    const vec3 geometric = normalize(gl_FrontFacing ? vNormal : -vNormal);
+    // Back faces (of double-sided materials, or seen through clip holes) are shaded with the flipped normal.
     const vec3 n = gl_FrontFacing ? frontNormal() : -frontNormal();
+    // The triangle's plane, for the shadows' normal offset (its sign does not matter: it is turned to each light).
+    const vec3 geometric = normalize(cross(dFdxFine(vPosition), dFdyFine(vPosition)));
     const vec3 toCamera = frame.cameraPosition.xyz - vPosition;
     const vec3 v = normalize(toCamera);
     const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);
     const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
     const float globalStrength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
     if (frame.config.y == PENUMBRA_VIEW_VISIBILITY) {
-        outColor = shadowVisibility(frame.config.w, geometric, cascade, globalStrength);
+        outColor = shadowVisibility(frame.config.w, n, geometric, cascade, globalStrength);
         return;
     }
 
@@ -163,7 +165,7 @@ void main()
         if (nl <= 0.0)
             continue;
         const int slot = object.flags.x != 0 ? int(frame.lightDirection[i].w) : -1;
-        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric);
+        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric, l);
         color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }
     for (int i = 0; i < frame.config.z; ++i) {

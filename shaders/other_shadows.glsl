@@ -38,7 +38,7 @@ vec3 cubeFaceAxis(int face)
 }
 
 // Shadow of a spot light (its cone `axis`) or a point light (six tiles from `firstTile`, the face picked
-// by the direction from the light) at a receiver.
+// by the direction from the light) at a receiver; `normal` is its geometric normal, either side.
 float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
 {
     const vec3 fromLight = position - lightPosition;
@@ -49,9 +49,10 @@ float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
         tile += face;
         plane = cubeFaceAxis(face);
     }
-    // A perspective texel grows linearly with the distance from the light plane, and the normal bias with it.
+    // A perspective texel grows linearly with the distance from the light plane, and the normal offset with it.
     const float distanceToPlane = dot(fromLight, plane);
-    precise vec3 biased = fma(normal, vec3(distanceToPlane * otherShadows.tileData[tile].x), position);
+    precise vec3 biased =
+        position + receiverNormalOffset(normal, normalize(-fromLight), distanceToPlane * otherShadows.tileData[tile].x);
     const vec4 p = transformPoint(otherShadows.worldToAtlas[tile], biased);
     const vec4 bounds = otherShadows.tileBounds[tile];
     return filterShadowTile(otherShadowAtlas, p.xyz / p.w, otherShadows.atlasSize.x, otherShadows.config.x,
@@ -66,7 +67,8 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
     const vec3 fromLight = position - lightPosition;
     const int face = cubeFace(fromLight);
     const vec3 axis = cubeFaceAxis(face);
-    precise vec3 biased = fma(normal, vec3(dot(fromLight, axis) * data.z), position);
+    precise vec3 biased =
+        position + receiverNormalOffset(normal, normalize(-fromLight), dot(fromLight, axis) * data.z);
     const vec3 d = biased - lightPosition;
     const float major = max(max(abs(d.x), abs(d.y)), abs(d.z));
     const float reference = (data.x * -major + data.y) / major;

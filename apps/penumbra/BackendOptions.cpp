@@ -1,6 +1,6 @@
 #include "BackendOptions.hpp"
 
-#include "penumbra/rhi/Configuration.hpp"
+#include "penumbra/backends/Registry.hpp"
 #include "penumbra/rhi/Error.hpp"
 
 #include <algorithm>
@@ -12,7 +12,7 @@ namespace {
 std::string configurationNames()
 {
     std::string names;
-    for (const rhi::NamedConfiguration& c : rhi::namedConfigurations())
+    for (const rhi::NamedConfiguration& c : penumbra::namedConfigurations())
         names += (names.empty() ? "" : ", ") + std::string(c.name);
     return names;
 }
@@ -24,7 +24,7 @@ CLI::Validator configurationValidator()
     return CLI::Validator(
         [](std::string& name) {
             try {
-                rhi::parseConfiguration(name);
+                penumbra::parseConfiguration(name);
             } catch (const rhi::Error& e) {
                 return std::string(e.what());
             }
@@ -37,7 +37,7 @@ CLI::Validator backendValidator()
 {
     return CLI::Validator(
         [](std::string& name) {
-            for (const rhi::NamedConfiguration& c : rhi::namedConfigurations())
+            for (const rhi::NamedConfiguration& c : penumbra::namedConfigurations())
                 if (name == c.name)
                     return std::string();
             if (name == "all")
@@ -59,7 +59,7 @@ std::vector<std::string> expandBackends(const std::vector<std::string>& backends
             add(backend);
             continue;
         }
-        for (const rhi::NamedConfiguration& c : rhi::namedConfigurations())
+        for (const rhi::NamedConfiguration& c : penumbra::namedConfigurations())
             add(std::string(c.name));
     }
     return configurations;

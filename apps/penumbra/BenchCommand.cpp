@@ -60,14 +60,13 @@ void runBenchmarks(const BenchOptions& options)
     std::vector<std::unique_ptr<RawDraws>> raws;
     std::vector<Case> cases;
     for (const std::string& configuration : wants(options, "draws") ? options.configurations : std::vector<std::string>{}) {
-        rhi::DeviceDesc desc = rhi::parseConfiguration(configuration);
+        rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
         desc.validation = false; // timing the driver, not the validation layer
         rhi::Device& device = *devices.emplace_back(createDevice(desc));
         for (std::uint32_t n : options.draws) {
             const DrawScene& scene = *scenes.emplace_back(std::make_unique<DrawScene>(device, n));
             rhi::CommandList& commands = *lists.emplace_back(device.createCommandList());
-            RawDraws& raw = *raws.emplace_back(desc.backend == rhi::Backend::Vulkan ? createRawVulkanDraws(device, scene)
-                                                                                    : createRawOpenGLDraws(device, scene));
+            RawDraws& raw = *raws.emplace_back(createRawDraws(device, scene));
             const Case c{configuration, n, fmt::format("draws/{}/rhi/{}", configuration, n),
                          fmt::format("draws/{}/raw/{}", configuration, n)};
             benchmark::RegisterBenchmark(c.rhiName.c_str(), [&device, &scene, &commands](benchmark::State& state) {

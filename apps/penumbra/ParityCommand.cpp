@@ -3,7 +3,7 @@
 #include "ParityReport.hpp"
 #include "SceneOptions.hpp"
 
-#include "penumbra/rhi/Configuration.hpp"
+#include "penumbra/backends/Registry.hpp"
 #include "penumbra/rhi/Error.hpp"
 
 #include <filesystem>
@@ -30,7 +30,7 @@ void runParity(const ParityOptions& options)
 
     std::vector<rhi::Image> patterns;
     std::vector<ShadowPictures> pictures;
-    for (const rhi::NamedConfiguration& c : rhi::namedConfigurations()) {
+    for (const rhi::NamedConfiguration& c : penumbra::namedConfigurations()) {
         const std::string name(c.name);
         patterns.push_back(renderPattern(name, kPatternSize));
         pictures.push_back(renderShadowScene(name, loaded.scene, frame));

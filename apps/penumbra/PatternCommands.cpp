@@ -49,7 +49,7 @@ void addPatternCommand(CLI::App& app)
 void addConfigurationsCommand(CLI::App& app)
 {
     app.add_subcommand("configurations", "List the configuration names")->callback([] {
-        for (const rhi::NamedConfiguration& c : rhi::namedConfigurations())
+        for (const rhi::NamedConfiguration& c : penumbra::namedConfigurations())
             fmt::print("{}\n", c.name);
     });
 }

@@ -17,4 +17,7 @@ public:
 std::unique_ptr<RawDraws> createRawVulkanDraws(rhi::Device& device, const DrawScene& scene);
 std::unique_ptr<RawDraws> createRawOpenGLDraws(rhi::Device& device, const DrawScene& scene);
 
+// The raw reference of the device's backend (DeviceDesc::backend); one without one throws rhi::UnsupportedError.
+std::unique_ptr<RawDraws> createRawDraws(rhi::Device& device, const DrawScene& scene);
+
 } // namespace penumbra::apps

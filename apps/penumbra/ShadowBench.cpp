@@ -91,7 +91,7 @@ struct ShadowBench::Case {
 ShadowBench::ShadowBench(const std::vector<std::string>& configurations, double minTime)
 {
     for (const std::string& configuration : configurations) {
-        rhi::DeviceDesc desc = rhi::parseConfiguration(configuration);
+        rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
         desc.validation = false; // timing the driver, not the validation layer
         for (Scenario& scenario : scenarios()) {
             auto c = std::make_unique<Case>();

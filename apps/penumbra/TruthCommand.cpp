@@ -124,11 +124,12 @@ void truth(const TruthOptions& options)
                              {"edgeMarginPixels", scene::kTruthEdgeMargin},
                              {"lights", nlohmann::json::array()}};
     for (LightTruth& t : truths) {
-        t.raycast = render::traceTruth(scene, shadowRays, gbuffer, t.light, progressBar(fmt::format("'{}'", t.name)));
-        t.comparison = scene::compareWithTruth(gbuffer, t.raycast, t.rendered);
+        render::LightTruthTrace trace = render::traceLightTruth(scene, shadowRays, gbuffer, plans, frame.shadows,
+                                                                t.light, progressBar(fmt::format("'{}'", t.name)));
+        t.raycast = std::move(trace.visibility);
+        t.comparison = scene::compareWithTruth(gbuffer, t.raycast, t.rendered, trace.shadowEdges);
         t.contactGapTexels = scene::contactGapTexels(
-            t.comparison, gbuffer, shadowRays,
-            [&](const scene::GBufferSample& sample) { return render::truthShadowRay(scene, t.light, sample); },
+            t.comparison, gbuffer, shadowRays, render::truthRays(scene, t.light),
             [&](glm::vec3 position) { return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position); });
         report["lights"].push_back(lightReport(t));
     }

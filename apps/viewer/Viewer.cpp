@@ -29,7 +29,7 @@ namespace {
 
 rhi::DeviceDesc windowDeviceDesc(const std::string& configuration, GLFWwindow* window)
 {
-    rhi::DeviceDesc desc = rhi::parseConfiguration(configuration);
+    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
     desc.window.glfwWindow = window;
     return desc;
 }
@@ -39,7 +39,7 @@ rhi::DeviceDesc windowDeviceDesc(const std::string& configuration, GLFWwindow* w
 class ViewerApp {
 public:
     explicit ViewerApp(const ViewerOptions& options)
-        : options_(options), window_(rhi::parseConfiguration(options.configuration), options.width, options.height,
+        : options_(options), window_(penumbra::parseConfiguration(options.configuration), options.width, options.height,
                                      fmt::format("Penumbra viewer: {} ({})", options.scene, options.configuration)),
           device_(createDevice(windowDeviceDesc(options.configuration, window_.handle()))),
           swapchain_(device_->createSwapchain()), input_(window_.handle()), scene_(loadViewerScene(options.scene)),
@@ -79,7 +79,7 @@ public:
         }
         const std::vector<std::string> messages = device_->debugMessages();
         fmt::print("viewer: {} on {}, {} frames, {:.1f} ms per frame, {} validation / debug messages\n",
-                   rhi::configurationName(device_->desc()), device_->capabilities().device, frame,
+                   penumbra::configurationName(device_->desc()), device_->capabilities().device, frame,
                    frame ? totalMs / frame : 0.0, messages.size());
         if (!messages.empty())
             throw rhi::Error(fmt::format("{} validation / debug message(s), first: {}", messages.size(), messages[0]));

@@ -7,7 +7,7 @@
 namespace penumbra::viewer {
 
 struct ViewerOptions {
-    std::string configuration = "vulkan"; // a named configuration (rhi::parseConfiguration)
+    std::string configuration = "vulkan"; // a named configuration (penumbra::parseConfiguration)
     std::string scene = "test";
     std::uint32_t width = 1280;
     std::uint32_t height = 720;

@@ -2,6 +2,7 @@
 
 #include "GlfwSession.hpp"
 
+#include "penumbra/backends/Registry.hpp"
 #include "penumbra/backends/WindowHints.hpp"
 #include "penumbra/rhi/Error.hpp"
 
@@ -18,7 +19,7 @@ ViewerWindow::ViewerWindow(const rhi::DeviceDesc& desc, std::uint32_t width, std
     window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
     if (!window_)
         throw rhi::Error(fmt::format("cannot open a {}x{} window for {}: GLFW: {}", width, height,
-                                     rhi::configurationName(desc), lastGlfwError()));
+                                     penumbra::configurationName(desc), lastGlfwError()));
 }
 
 ViewerWindow::~ViewerWindow() { glfwDestroyWindow(window_); }

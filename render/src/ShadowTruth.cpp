@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include <cmath>
+
 namespace penumbra::render {
 namespace {
 
@@ -85,31 +87,47 @@ float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& s
     return 0.0f;
 }
 
-scene::ShadowRay truthShadowRay(const scene::Scene& scene, const scene::LightRef& light,
-                                const scene::GBufferSample& sample)
+scene::ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef& light)
 {
     switch (light.kind) {
     case scene::LightKind::Directional:
-        return scene::shadowRay(sample, scene.lights.at(light.index));
+        return scene::raysTowards(scene.lights.at(light.index));
     case scene::LightKind::Spot:
-        return scene::shadowRay(sample, scene.spotLights.at(light.index).position);
+        return scene::raysTowards(scene.spotLights.at(light.index).position);
     case scene::LightKind::Point:
-        return scene::shadowRay(sample, scene.pointLights.at(light.index).position);
+        return scene::raysTowards(scene.pointLights.at(light.index).position);
     }
-    return scene::shadowRay(sample, scene.lights.at(light.index));
+    return scene::raysTowards(scene.lights.at(light.index));
 }
 
-scene::LightVisibilityMask traceTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
-                                      const scene::CpuGBuffer& gbuffer, const scene::LightRef& light,
-                                      const scene::TraceProgress& progress)
+float shadowEdgeMarginTexels(shadows::ShadowFilter filter)
 {
-    if (light.kind == scene::LightKind::Directional)
-        return scene::traceLightVisibility(scene, shadowRays, gbuffer, scene.lights.at(light.index),
-                                           scene::kShadowRayOffset, progress);
-    const glm::vec3 position = light.kind == scene::LightKind::Spot ? scene.spotLights.at(light.index).position
-                                                                    : scene.pointLights.at(light.index).position;
-    return scene::tracePositionalLightVisibility(scene, shadowRays, gbuffer, position, scene::kShadowRayOffset,
-                                                 progress);
+    const float reach = shadows::normalBiasFilterFactor(filter);
+    return reach * (1.0f + std::sqrt(2.0f)) + 0.5f;
+}
+
+LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
+                                const scene::CpuGBuffer& gbuffer, const ShadowPlans& plans,
+                                const shadows::ShadowSettings& settings, const scene::LightRef& light,
+                                const scene::TraceProgress& progress)
+{
+    const scene::ShadowRayFrom rays = truthRays(scene, light);
+    const float margin = shadowEdgeMarginTexels(light.kind == scene::LightKind::Directional ? settings.directional.filter
+                                                                                            : settings.other.filter);
+    // Half the rows' progress for each of the two traces.
+    const auto half = [&](std::uint32_t offset) -> scene::TraceProgress {
+        if (!progress)
+            return {};
+        return [&, offset](std::uint32_t done, std::uint32_t rows) { progress(offset + done, 2 * rows); };
+    };
+    LightTruthTrace t{scene::traceVisibility(scene, shadowRays, gbuffer, rays, scene::kShadowRayOffset, half(0)), {}};
+    t.shadowEdges = scene::traceShadowEdges(
+        shadowRays, gbuffer, t.visibility, rays,
+        [&](const scene::GBufferSample& sample) {
+            return margin * shadowTexelSize(plans, settings, scene, light, sample.position);
+        },
+        half(gbuffer.height));
+    return t;
 }
 
 std::string lightLabel(const scene::Scene& scene, const scene::LightRef& light)

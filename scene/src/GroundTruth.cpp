@@ -33,37 +33,6 @@ glm::vec2 interpolatedUv(const Scene& scene, const Hit& hit)
            hit.barycentrics.x * mesh.vertices[index[1]].uv + hit.barycentrics.y * mesh.vertices[index[2]].uv;
 }
 
-// Shadow rays from every sample towards the light `rayTo` gives for that sample.
-template <typename RayTo>
-LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                    const TraceProgress& progress, RayTo rayTo)
-{
-    if (shadowRays.kind() != RayKind::Shadow)
-        throw std::invalid_argument("traceLightVisibility needs a RayCaster built with RayKind::Shadow");
-    LightVisibilityMask mask{gbuffer.width, gbuffer.height,
-                             std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background)};
-    forEachRow(
-        gbuffer.height,
-        [&](std::uint32_t y) {
-            for (std::size_t i = std::size_t(y) * gbuffer.width; i < std::size_t(y + 1) * gbuffer.width; ++i) {
-                const GBufferSample& sample = gbuffer.samples[i];
-                if (!sample.hit())
-                    continue;
-                const ShadowRay ray = rayTo(sample);
-                if (!scene.materialOf(scene.objects[sample.object]).receiveShadows)
-                    mask.pixels[i] = LightVisibility::NotReceiving;
-                else if (glm::dot(sample.normal, ray.direction) <= 0.0f)
-                    mask.pixels[i] = LightVisibility::FacingAway;
-                else
-                    mask.pixels[i] = shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance)
-                                         ? LightVisibility::Shadowed
-                                         : LightVisibility::Lit;
-            }
-        },
-        progress);
-    return mask;
-}
-
 } // namespace
 
 Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, float px, float py)
@@ -114,35 +83,68 @@ CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const C
     return gbuffer;
 }
 
-ShadowRay shadowRay(const GBufferSample& sample, const DirectionalLight& light, float normalOffset)
+ShadowRayFrom raysTowards(const DirectionalLight& light)
 {
-    return {sample.position + normalOffset * sample.normal, -glm::normalize(light.direction),
-            std::numeric_limits<float>::infinity()};
+    const glm::vec3 towardsLight = -glm::normalize(light.direction);
+    return [towardsLight](glm::vec3 origin) {
+        return ShadowRay{origin, towardsLight, std::numeric_limits<float>::infinity()};
+    };
 }
 
-ShadowRay shadowRay(const GBufferSample& sample, glm::vec3 lightPosition, float normalOffset)
+ShadowRayFrom raysTowards(glm::vec3 lightPosition)
 {
-    const glm::vec3 origin = sample.position + normalOffset * sample.normal;
-    const glm::vec3 toLight = lightPosition - origin;
-    const float distance = glm::length(toLight);
-    return {origin, toLight / distance, distance};
+    return [lightPosition](glm::vec3 origin) {
+        const glm::vec3 toLight = lightPosition - origin;
+        const float distance = glm::length(toLight);
+        return ShadowRay{origin, toLight / distance, distance};
+    };
+}
+
+glm::vec3 shadowRayOrigin(const GBufferSample& sample, float normalOffset)
+{
+    return sample.position + normalOffset * sample.normal;
+}
+
+LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                    const ShadowRayFrom& rayFrom, float normalOffset, const TraceProgress& progress)
+{
+    if (shadowRays.kind() != RayKind::Shadow)
+        throw std::invalid_argument("traceVisibility needs a RayCaster built with RayKind::Shadow");
+    LightVisibilityMask mask{gbuffer.width, gbuffer.height,
+                             std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background)};
+    forEachRow(
+        gbuffer.height,
+        [&](std::uint32_t y) {
+            for (std::size_t i = std::size_t(y) * gbuffer.width; i < std::size_t(y + 1) * gbuffer.width; ++i) {
+                const GBufferSample& sample = gbuffer.samples[i];
+                if (!sample.hit())
+                    continue;
+                const ShadowRay ray = rayFrom(shadowRayOrigin(sample, normalOffset));
+                if (!scene.materialOf(scene.objects[sample.object]).receiveShadows)
+                    mask.pixels[i] = LightVisibility::NotReceiving;
+                else if (glm::dot(sample.normal, ray.direction) <= 0.0f)
+                    mask.pixels[i] = LightVisibility::FacingAway;
+                else
+                    mask.pixels[i] = shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance)
+                                         ? LightVisibility::Shadowed
+                                         : LightVisibility::Lit;
+            }
+        },
+        progress);
+    return mask;
 }
 
 LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                         const DirectionalLight& light, float normalOffset,
-                                         const TraceProgress& progress)
+                                         const DirectionalLight& light, float normalOffset)
 {
-    return traceVisibility(scene, shadowRays, gbuffer, progress,
-                           [&](const GBufferSample& sample) { return shadowRay(sample, light, normalOffset); });
+    return traceVisibility(scene, shadowRays, gbuffer, raysTowards(light), normalOffset);
 }
 
 LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
                                                    const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
-                                                   float normalOffset, const TraceProgress& progress)
+                                                   float normalOffset)
 {
-    return traceVisibility(scene, shadowRays, gbuffer, progress, [&](const GBufferSample& sample) {
-        return shadowRay(sample, lightPosition, normalOffset);
-    });
+    return traceVisibility(scene, shadowRays, gbuffer, raysTowards(lightPosition), normalOffset);
 }
 
 } // namespace penumbra::scene

@@ -1,6 +1,12 @@
 #include "penumbra/scene/TruthComparison.hpp"
 
+#include "ParallelRows.hpp"
+
+#include <glm/geometric.hpp>
+
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <stdexcept>
 
 namespace penumbra::scene {
@@ -20,13 +26,67 @@ bool nearEdge(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth, std::
     return false;
 }
 
+// Two unit vectors perpendicular to `d` and to each other.
+std::array<glm::vec3, 2> acrossRay(glm::vec3 d)
+{
+    const glm::vec3 helper = std::abs(d.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::vec3 u = glm::normalize(glm::cross(helper, d));
+    return {u, glm::cross(d, u)};
+}
+
+// sin(3 degrees): below it a tangent-plane step that moves radius across the rays runs 19 radii along the surface.
+constexpr float kGrazing = 0.052f;
+
+bool nearShadowEdge(const RayCaster& shadowRays, const GBufferSample& sample, bool shadowed,
+                    const ShadowRayFrom& rayFrom, float radius)
+{
+    const glm::vec3 towardsLight = rayFrom(shadowRayOrigin(sample)).direction;
+    const float facing = glm::dot(towardsLight, sample.normal);
+    if (facing < kGrazing)
+        return true;
+    const std::array<glm::vec3, 2> across = acrossRay(towardsLight);
+    for (int k = 0; k < 8; ++k) {
+        const float angle = 0.25f * 3.14159265f * static_cast<float>(k);
+        const glm::vec3 a = radius * (std::cos(angle) * across[0] + std::sin(angle) * across[1]);
+        // Along the tangent plane: a plus the step along the ray that brings it back onto the plane.
+        const glm::vec3 step = a - towardsLight * (glm::dot(a, sample.normal) / facing);
+        const ShadowRay ray = rayFrom(sample.position + step + kShadowRayOffset * sample.normal);
+        if (shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance) != shadowed)
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
+std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                           const LightVisibilityMask& truth, const ShadowRayFrom& rayFrom,
+                                           const std::function<float(const GBufferSample&)>& radius,
+                                           const TraceProgress& progress)
+{
+    std::vector<std::uint8_t> edges(gbuffer.samples.size(), 0);
+    forEachRow(
+        gbuffer.height,
+        [&](std::uint32_t y) {
+            for (std::size_t i = std::size_t(y) * gbuffer.width; i < std::size_t(y + 1) * gbuffer.width; ++i) {
+                const LightVisibility v = truth.pixels[i];
+                if (v != LightVisibility::Lit && v != LightVisibility::Shadowed)
+                    continue;
+                const float r = radius(gbuffer.samples[i]);
+                edges[i] = r > 0.0f && nearShadowEdge(shadowRays, gbuffer.samples[i], v == LightVisibility::Shadowed,
+                                                      rayFrom, r);
+            }
+        },
+        progress);
+    return edges;
+}
+
 TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth,
-                                 const RenderedVisibility& rendered, int edgeMargin)
+                                 const RenderedVisibility& rendered, const std::vector<std::uint8_t>& shadowEdges,
+                                 int edgeMargin)
 {
     if (gbuffer.width != truth.width || gbuffer.height != truth.height || rendered.width != truth.width ||
-        rendered.height != truth.height)
+        rendered.height != truth.height || (!shadowEdges.empty() && shadowEdges.size() != truth.pixels.size()))
         throw std::invalid_argument("compareWithTruth: the G-buffer, the ray-cast visibility and the rendered "
                                     "visibility must have the same size");
     TruthComparison c{truth.width, truth.height,
@@ -43,7 +103,7 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
             if (!rendered.decided[i]) {
                 ++figures.undecided;
                 verdict = TruthVerdict::Undecided;
-            } else if (nearEdge(gbuffer, truth, x, y, edgeMargin)) {
+            } else if ((!shadowEdges.empty() && shadowEdges[i]) || nearEdge(gbuffer, truth, x, y, edgeMargin)) {
                 ++figures.nearEdges;
                 verdict = TruthVerdict::NearEdge;
             } else {
@@ -58,15 +118,15 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
 }
 
 float contactGapTexels(const TruthComparison& comparison, const CpuGBuffer& gbuffer, const RayCaster& shadowRays,
-                       const std::function<ShadowRay(const GBufferSample&)>& rayOf,
-                       const std::function<float(glm::vec3)>& texelSize, float contactTexels)
+                       const ShadowRayFrom& rayFrom, const std::function<float(glm::vec3)>& texelSize,
+                       float contactTexels)
 {
     float gap = 0.0f;
     for (std::size_t i = 0; i < comparison.verdicts.size(); ++i) {
         if (comparison.verdicts[i] != TruthVerdict::Leak)
             continue;
         const GBufferSample& sample = gbuffer.samples[i];
-        const ShadowRay ray = rayOf(sample);
+        const ShadowRay ray = rayFrom(shadowRayOrigin(sample));
         const std::optional<Hit> blocker = shadowRays.closestHit(ray.origin, ray.direction, ray.maxDistance);
         const float texel = texelSize(sample.position);
         if (!blocker || texel <= 0.0f)

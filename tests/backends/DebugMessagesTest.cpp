@@ -12,7 +12,7 @@ namespace {
 
 std::unique_ptr<rhi::Device> strictDevice(const char* configuration)
 {
-    rhi::DeviceDesc desc = rhi::parseConfiguration(configuration);
+    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
     desc.validation = true;
     desc.throwOnDebugMessage = true;
     return createDevice(desc);

@@ -165,25 +165,5 @@ TEST(ParityTest, ReversedZBeatsTheStandardMappingAtDistance)
     reportSkipped(skipped);
 }
 
-TEST(ParityTest, OsMesaAndEglContextsAgree)
-{
-    rhi::DeviceDesc desc = rhi::parseConfiguration("opengl");
-    std::vector<rhi::Image> images;
-    for (rhi::GlContextProvider provider : {rhi::GlContextProvider::EglSurfaceless, rhi::GlContextProvider::OSMesa}) {
-        desc.glContext = provider;
-        std::unique_ptr<rhi::Device> device;
-        try {
-            device = createDevice(desc);
-        } catch (const rhi::UnsupportedError& e) {
-            GTEST_SKIP() << e.what();
-        }
-        pattern::PatternRenderer renderer(*device, {.width = 128, .height = 128});
-        renderer.render(pattern::testPattern());
-        images.push_back(renderer.color());
-        expectNoDebugMessages(*device);
-    }
-    EXPECT_EQ(compare(images[0], images[1]).maxAbs, 0);
-}
-
 } // namespace
 } // namespace penumbra::testing

@@ -13,6 +13,7 @@
 #include "penumbra/scene/RayCaster.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
+#include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/TentFilter.hpp"
 #include "penumbra/shadows/TentFilterReference.hpp"
 
@@ -137,13 +138,14 @@ public:
 private:
     std::uint32_t firstTile() const { return static_cast<std::uint32_t>(plan_.pointShadows.at(0)); }
 
-    // Normal bias scaled by the distance to the face's plane, then the tile-clamped tent: clamp-to-edge
+    // Normal offset scaled by the distance to the face's plane, then the tile-clamped tent: clamp-to-edge
     // addressing of the tile's own texels is the shader's clamp to the tile bounds.
     float atlasShadow(CubeFace face, glm::vec3 position, glm::vec3 normal) const
     {
         const std::uint32_t tile = firstTile() + static_cast<std::uint32_t>(face);
         const float distanceToPlane = glm::dot(position - light_, shadows::cubeFaceAxis(face));
-        const glm::vec3 biased = position + normal * (distanceToPlane * plan_.uniforms.tileData[tile].x);
+        const glm::vec3 biased = position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
+                                                                         distanceToPlane * plan_.uniforms.tileData[tile].x);
         const glm::vec4 p = plan_.uniforms.worldToAtlas[tile] * glm::vec4(biased, 1.0f);
         const glm::vec2 texel = glm::vec2(p) / p.w * float(plan_.atlas.atlasSize()) -
                                 glm::vec2(plan_.atlas.tileOffset(tile));
@@ -158,7 +160,8 @@ private:
     {
         const glm::vec4 data = plan_.uniforms.cubeData[0];
         const glm::vec3 axis = shadows::cubeFaceAxis(face);
-        const glm::vec3 biased = position + normal * (glm::dot(position - light_, axis) * data.z);
+        const glm::vec3 biased = position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
+                                                                         glm::dot(position - light_, axis) * data.z);
         const glm::vec3 d = biased - light_;
         const float major = rhi::cubeFaceViewDepth(d);
         const float reference = (data.x * -major + data.y) / major;

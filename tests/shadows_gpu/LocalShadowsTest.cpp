@@ -68,7 +68,8 @@ TEST_F(LocalShadowsTest, PointFacesStoreTheLightFacingSideOfACaster)
 {
     // Back-face culling with the RHI's winding keeps the crate's side facing the light: the depth stored
     // towards the crate's centre is the distance to its near face, not its far face (which an upside-down,
-    // mirrored face would store, as the design document's engine does before its row negation). Atlas
+    // mirrored face would store: Unity renders point-light faces upside down and negates a view-matrix row to
+    // undo it, as Catlike Coding's "Point and Spot Shadows" tutorial shows). Atlas
     // tiles use ordinary views; the cube map's mirrored views cull through rhi::cubeFaceCullMode.
     const scene::Scene scene = roomLitFromInside();
     const glm::vec3 light = scene.pointLights[0].position;

@@ -22,7 +22,7 @@ void setConfiguration(std::string name) { currentConfiguration() = std::move(nam
 
 std::unique_ptr<rhi::Device> createValidatedDevice(const std::string& name)
 {
-    rhi::DeviceDesc desc = rhi::parseConfiguration(name);
+    rhi::DeviceDesc desc = penumbra::parseConfiguration(name);
     desc.validation = true;
     return createDevice(desc);
 }
@@ -30,7 +30,7 @@ std::unique_ptr<rhi::Device> createValidatedDevice(const std::string& name)
 void expectNoDebugMessages(rhi::Device& device)
 {
     for (const std::string& message : device.debugMessages())
-        ADD_FAILURE() << rhi::configurationName(device.desc()) << " debug message: " << message;
+        ADD_FAILURE() << penumbra::configurationName(device.desc()) << " debug message: " << message;
 }
 
 const std::vector<std::string>& compiledConfigurations()

@@ -18,7 +18,7 @@ const std::string& configuration();
 void setConfiguration(std::string name);
 
 // The named configurations this build compiles (the PENUMBRA_VULKAN and PENUMBRA_OPENGL options), in
-// rhi::namedConfigurations() order: what a cross-configuration test has to run, not merely try.
+// penumbra::namedConfigurations() order: what a cross-configuration test has to run, not merely try.
 const std::vector<std::string>& compiledConfigurations();
 
 // A compiled configuration the driver refused (rhi::UnsupportedError), and its message.

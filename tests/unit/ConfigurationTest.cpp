@@ -1,10 +1,16 @@
-#include "penumbra/rhi/Configuration.hpp"
+#include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/rhi/Error.hpp"
 
 #include <gtest/gtest.h>
 
-namespace penumbra::rhi {
+namespace penumbra {
 namespace {
+
+using rhi::BackendRegistration;
+using rhi::DeviceDesc;
+using rhi::Error;
+using rhi::NamedConfiguration;
+using rhi::UnsupportedError;
 
 TEST(ConfigurationTest, NamesRoundTrip)
 {
@@ -12,10 +18,30 @@ TEST(ConfigurationTest, NamesRoundTrip)
         EXPECT_EQ(configurationName(parseConfiguration(c.name)), c.name);
 }
 
-TEST(ConfigurationTest, OnlyOpenGlHasANoClipControlMode)
+TEST(ConfigurationTest, EachBackendRegistersItsOwnConfigurations)
 {
+    for (const BackendRegistration& b : registeredBackends()) {
+        EXPECT_FALSE(b.configurations.empty()) << b.name;
+        for (const NamedConfiguration& c : b.configurations)
+            EXPECT_EQ(c.desc.backend, b.name) << c.name;
+    }
+}
+
+// CMake's list (penumbra_backend(... CONFIGURATIONS ...), which names the per-configuration tests) and
+// the C++ registrations must name the same configurations in the same order.
+TEST(ConfigurationTest, CMakeAndTheRegistrationsAgree)
+{
+    std::string registered;
     for (const NamedConfiguration& c : namedConfigurations())
-        EXPECT_TRUE(c.desc.clipControl || c.desc.backend == Backend::OpenGL) << c.name;
+        registered += (registered.empty() ? "" : ",") + c.name;
+    EXPECT_EQ(registered, PENUMBRA_TEST_CONFIGURATIONS);
+}
+
+TEST(ConfigurationTest, UnknownBackendIsUnsupported)
+{
+    DeviceDesc desc;
+    desc.backend = "metal";
+    EXPECT_THROW(createDevice(desc), UnsupportedError);
 }
 
 TEST(ConfigurationTest, UnknownNameListsTheValidOnes)
@@ -32,4 +58,4 @@ TEST(ConfigurationTest, UnknownNameListsTheValidOnes)
 }
 
 } // namespace
-} // namespace penumbra::rhi
+} // namespace penumbra

@@ -11,25 +11,20 @@ namespace {
 thread_local const GlContext* currentContext = nullptr;
 thread_local PlatformContext* currentPlatform = nullptr;
 
-std::unique_ptr<PlatformContext> createPlatformContext(const rhi::DeviceDesc& desc)
+std::unique_ptr<PlatformContext> createPlatformContext(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options)
 {
     if (desc.window.glfwWindow)
         return createGlfwWindowContext(desc.window.glfwWindow);
-    return desc.glContext == rhi::GlContextProvider::OSMesa ? createOsMesaContext(desc.validation)
-                                                            : createEglSurfacelessContext(desc.validation);
+    return options.context == ContextProvider::OSMesa ? createOsMesaContext(desc.validation)
+                                                      : createEglSurfacelessContext(desc.validation);
 }
 
 } // namespace
 
-GlContext::GlContext(const rhi::DeviceDesc& desc)
-    : context_(createPlatformContext(desc))
+GlContext::GlContext(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options)
+    : context_(createPlatformContext(desc, options))
 {
-    try {
-        initialize();
-    } catch (...) {
-        releaseIfCurrent(); // no destructor runs for a failed constructor
-        throw;
-    }
+    initialize();
 }
 
 void GlContext::initialize()
@@ -55,9 +50,7 @@ void GlContext::initialize()
     gl_ = loadGlFunctions(*context_, clamp);
 }
 
-GlContext::~GlContext() { releaseIfCurrent(); }
-
-void GlContext::releaseIfCurrent()
+void GlContext::releaseIfCurrent() const
 {
     if (currentContext != this)
         return;

@@ -2,6 +2,7 @@
 
 #include "GlDebug.hpp"
 #include "penumbra/opengl/GlFunctions.hpp"
+#include "penumbra/opengl/OpenGLDevice.hpp"
 #include "penumbra/rhi/Configuration.hpp"
 
 #include <memory>
@@ -34,9 +35,8 @@ GlFunctions loadGlFunctions(const PlatformContext& loader, bool polygonOffsetCla
 // destroyed after the device: each makes the context current before deleting its GL names.
 class GlContext {
 public:
-    // The window's context when desc.window has one, else desc.glContext's headless one.
-    explicit GlContext(const rhi::DeviceDesc& desc);
-    ~GlContext();
+    // The window's context when desc.window has one, else options.context's headless one.
+    GlContext(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options);
     GlContext(const GlContext&) = delete;
     GlContext& operator=(const GlContext&) = delete;
 
@@ -50,12 +50,19 @@ public:
 
 private:
     void initialize();
-    void releaseIfCurrent();
+    // Unbinds the context from the calling thread if it is current there.
+    void releaseIfCurrent() const;
 
     rhi::DebugMessageLog debugLog_; // outlives context_: the debug callback points at it
     std::unique_ptr<PlatformContext> context_;
     GlFunctions gl_;
     int version_ = 0;
+    // Declared last, so destroyed first, and also when the constructor throws after making the
+    // context current: nothing may stay current on a destroyed context.
+    struct Release {
+        const GlContext& owner;
+        ~Release() { owner.releaseIfCurrent(); }
+    } release_{*this};
 };
 
 } // namespace penumbra::opengl

@@ -30,22 +30,17 @@ std::string string(const GlFunctions& gl, GLenum name)
 
 } // namespace
 
-std::unique_ptr<rhi::Device> createOpenGLDevice(const rhi::DeviceDesc& desc)
+std::unique_ptr<rhi::Device> createOpenGLDevice(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options)
 {
-    return std::make_unique<GlDevice>(desc);
+    if (desc.backend != "opengl")
+        throw rhi::Error(fmt::format("createOpenGLDevice: DeviceDesc::backend is '{}', not 'opengl'", desc.backend));
+    return std::make_unique<GlDevice>(desc, options);
 }
 
-// This factory is the OpenGL backend whatever desc.backend says; desc() reports it truthfully.
-rhi::DeviceDesc GlDevice::openGlDesc(rhi::DeviceDesc desc)
-{
-    desc.backend = rhi::Backend::OpenGL;
-    return desc;
-}
-
-GlDevice::GlDevice(const rhi::DeviceDesc& desc)
-    : desc_(openGlDesc(desc)),
-      context_(std::make_shared<GlContext>(desc)),
-      orientation_(desc.clipControl),
+GlDevice::GlDevice(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options)
+    : desc_(desc),
+      context_(std::make_shared<GlContext>(desc, options)),
+      orientation_(desc.depthRange == rhi::DepthRange::ZeroToOne),
       conventions_(orientation_.conventions(desc.reversedZ))
 {
     context_->makeCurrent();

@@ -3,6 +3,7 @@
 #include "GlContext.hpp"
 #include "GlOrientation.hpp"
 #include "GlStateCache.hpp"
+#include "penumbra/opengl/OpenGLDevice.hpp"
 #include "penumbra/rhi/Device.hpp"
 
 #include <memory>
@@ -12,7 +13,7 @@ namespace penumbra::opengl {
 
 class GlDevice final : public rhi::Device {
 public:
-    explicit GlDevice(const rhi::DeviceDesc& desc);
+    GlDevice(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options);
     ~GlDevice() override;
 
     const rhi::DeviceDesc& desc() const override { return desc_; }
@@ -39,7 +40,6 @@ public:
     const GlContext& context() const { return *context_; }
 
 private:
-    static rhi::DeviceDesc openGlDesc(rhi::DeviceDesc desc);
     rhi::Capabilities queryCapabilities() const;
     // State that every submit assumes; set again each time because raw GL may run between submits.
     void applySubmitDefaults();

@@ -17,7 +17,7 @@ void GlOrientation::apply(const GlContext& context) const
         return;
     if (context.version() < 45 && !context.hasExtension("GL_ARB_clip_control"))
         throw rhi::UnsupportedError("OpenGL: glClipControl is unavailable (needs GL 4.5 or GL_ARB_clip_control); "
-                                    "use the opengl-noclip configuration (DeviceDesc::clipControl = false)");
+                                    "use the opengl-noclip configuration (DeviceDesc::depthRange = MinusOneToOne)");
     context.gl().ClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
 }
 

@@ -77,25 +77,18 @@ GlShader::GlShader(GlContextPtr context, rhi::CompiledShader compiled, const GlO
 {
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
-    name_ = gl.CreateShader(compiled_.stage == rhi::ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER);
+    name_ = GlShaderName(
+        *context_, gl.CreateShader(compiled_.stage == rhi::ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER));
+    const GLuint shader = name_.get();
     const char* text = glsl_.c_str();
-    gl.ShaderSource(name_, 1, &text, nullptr);
-    gl.CompileShader(name_);
+    gl.ShaderSource(shader, 1, &text, nullptr);
+    gl.CompileShader(shader);
     GLint ok = GL_FALSE;
-    gl.GetShaderiv(name_, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        const std::string log = shaderLog(gl, name_);
-        gl.DeleteShader(name_);
+    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok)
         throw rhi::Error(fmt::format("{}: the GL driver rejected the GLSL made by SPIRV-Cross:\n{}\n--- GLSL ---\n{}",
-                                     compiled_.name, log, glsl_));
-    }
-    gl.ObjectLabel(GL_SHADER, name_, GLsizei(compiled_.name.size()), compiled_.name.c_str());
-}
-
-GlShader::~GlShader()
-{
-    context_->makeCurrent();
-    context_->gl().DeleteShader(name_);
+                                     compiled_.name, shaderLog(gl, shader), glsl_));
+    gl.ObjectLabel(GL_SHADER, shader, GLsizei(compiled_.name.size()), compiled_.name.c_str());
 }
 
 GlPipeline::GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions,
@@ -114,58 +107,50 @@ GlPipeline::GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, cons
     buildVertexArray();
 }
 
-GlPipeline::~GlPipeline()
-{
-    context_->makeCurrent();
-    context_->gl().DeleteVertexArrays(1, &vertexArray_);
-    context_->gl().DeleteProgram(program_);
-}
-
 void GlPipeline::link()
 {
     const GlFunctions& gl = context_->gl();
     const auto& vertex = glObject<const GlShader>(*desc_.vertex, "vertex shader");
     const auto& fragment = glObject<const GlShader>(*desc_.fragment, "fragment shader");
-    program_ = gl.CreateProgram();
-    gl.AttachShader(program_, vertex.name());
-    gl.AttachShader(program_, fragment.name());
-    gl.LinkProgram(program_);
-    gl.DetachShader(program_, vertex.name());
-    gl.DetachShader(program_, fragment.name());
+    program_ = GlProgramName(*context_, gl.CreateProgram());
+    const GLuint program = program_.get();
+    gl.AttachShader(program, vertex.name());
+    gl.AttachShader(program, fragment.name());
+    gl.LinkProgram(program);
+    gl.DetachShader(program, vertex.name());
+    gl.DetachShader(program, fragment.name());
     GLint ok = GL_FALSE;
-    gl.GetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        const std::string log = programLog(gl, program_);
-        gl.DeleteProgram(program_);
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok)
         throw rhi::Error(fmt::format("pipeline '{}': linking {} and {} failed:\n{}", desc_.debugName,
-                                     vertex.compiled().name, fragment.compiled().name, log));
-    }
-    baseInstanceLocation_ = gl.GetUniformLocation(program_, "SPIRV_Cross_BaseInstance");
+                                     vertex.compiled().name, fragment.compiled().name, programLog(gl, program)));
+    baseInstanceLocation_ = gl.GetUniformLocation(program, "SPIRV_Cross_BaseInstance");
     if (!desc_.debugName.empty())
-        gl.ObjectLabel(GL_PROGRAM, program_, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
+        gl.ObjectLabel(GL_PROGRAM, program, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
 }
 
 void GlPipeline::buildVertexArray()
 {
     const GlFunctions& gl = context_->gl();
-    gl.CreateVertexArrays(1, &vertexArray_);
+    vertexArray_ = createName<GlVertexArrayName>(*context_, gl.CreateVertexArrays);
+    const GLuint vertexArray = vertexArray_.get();
     const rhi::VertexLayout& layout = desc_.vertexLayout;
     for (std::size_t slot = 0; slot < layout.buffers.size(); ++slot) {
         strides_.push_back(GLsizei(layout.buffers[slot].stride));
-        gl.VertexArrayBindingDivisor(vertexArray_, GLuint(slot), layout.buffers[slot].perInstance ? 1 : 0);
+        gl.VertexArrayBindingDivisor(vertexArray, GLuint(slot), layout.buffers[slot].perInstance ? 1 : 0);
     }
     for (const rhi::VertexAttribute& a : layout.attributes) {
         if (a.buffer >= layout.buffers.size())
             throw rhi::Error(fmt::format("pipeline '{}': attribute {} reads vertex buffer slot {}, which the layout "
                                          "does not declare", desc_.debugName, a.location, a.buffer));
         const GlVertexFormat f = glVertexFormat(a.format);
-        gl.EnableVertexArrayAttrib(vertexArray_, a.location);
-        gl.VertexArrayAttribFormat(vertexArray_, a.location, f.size, f.type, f.normalized, a.offset);
-        gl.VertexArrayAttribBinding(vertexArray_, a.location, a.buffer);
+        gl.EnableVertexArrayAttrib(vertexArray, a.location);
+        gl.VertexArrayAttribFormat(vertexArray, a.location, f.size, f.type, f.normalized, a.offset);
+        gl.VertexArrayAttribBinding(vertexArray, a.location, a.buffer);
     }
     cache_.vertexBuffers.assign(strides_.size(), {0, 0});
     if (!desc_.debugName.empty())
-        gl.ObjectLabel(GL_VERTEX_ARRAY, vertexArray_, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
+        gl.ObjectLabel(GL_VERTEX_ARRAY, vertexArray, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
 }
 
 } // namespace penumbra::opengl

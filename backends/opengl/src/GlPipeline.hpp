@@ -16,16 +16,15 @@ class GlOrientation;
 class GlShader final : public rhi::Shader {
 public:
     GlShader(GlContextPtr context, rhi::CompiledShader compiled, const GlOrientation& orientation);
-    ~GlShader() override;
 
     const rhi::CompiledShader& compiled() const override { return compiled_; }
-    GLuint name() const { return name_; }
+    GLuint name() const { return name_.get(); }
 
 private:
     GlContextPtr context_;
     rhi::CompiledShader compiled_;
     std::string glsl_; // quoted when the driver rejects it
-    GLuint name_ = 0;
+    GlShaderName name_;
 };
 
 struct GlBlendTarget {
@@ -65,11 +64,10 @@ class GlPipeline final : public rhi::Pipeline {
 public:
     GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions,
                bool depthBiasClamp);
-    ~GlPipeline() override;
 
     const rhi::PipelineDesc& desc() const override { return desc_; }
-    GLuint program() const { return program_; }
-    GLuint vertexArray() const { return vertexArray_; }
+    GLuint program() const { return program_.get(); }
+    GLuint vertexArray() const { return vertexArray_.get(); }
     const GlFixedState& state() const { return state_; }
     // SPIRV-Cross's stand-in for the base instance in gl_InstanceIndex; -1 when unused.
     GLint baseInstanceLocation() const { return baseInstanceLocation_; }
@@ -82,8 +80,8 @@ private:
 
     GlContextPtr context_;
     rhi::PipelineDesc desc_;
-    GLuint program_ = 0;
-    GLuint vertexArray_ = 0;
+    GlProgramName program_;
+    GlVertexArrayName vertexArray_;
     GlFixedState state_;
     GLint baseInstanceLocation_ = -1;
     std::vector<GLsizei> strides_;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "GlContext.hpp"
+#include "GlHandle.hpp"
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Resources.hpp"
@@ -30,13 +31,13 @@ GlType& glObject(RhiType& object, const char* what)
 class GlBuffer final : public rhi::Buffer {
 public:
     GlBuffer(GlContextPtr context, const rhi::BufferDesc& desc);
-    ~GlBuffer() override;
+    ~GlBuffer() override; // unmaps; name_ then deletes the buffer
 
     const rhi::BufferDesc& desc() const override { return desc_; }
     void write(std::uint64_t offset, std::span<const std::byte> data) override;
     void read(std::uint64_t offset, std::span<std::byte> data) const override;
 
-    GLuint name() const { return name_; }
+    GLuint name() const { return name_.get(); }
     std::byte* mapped() const { return mapped_; }
 
 private:
@@ -44,17 +45,16 @@ private:
 
     GlContextPtr context_;
     rhi::BufferDesc desc_;
-    GLuint name_ = 0;
+    GlBufferName name_;
     std::byte* mapped_ = nullptr;
 };
 
 class GlTexture final : public rhi::Texture {
 public:
     GlTexture(GlContextPtr context, const rhi::TextureDesc& desc);
-    ~GlTexture() override;
 
     const rhi::TextureDesc& desc() const override { return desc_; }
-    GLuint name() const { return name_; }
+    GLuint name() const { return name_.get(); }
     GLenum target() const { return target_; }
     // Layered targets (2D array, cube-map array) take the RHI layer as GL's layer or z offset;
     // for a cube-map array GL's layer-face is 6 * cube + face, the RHI's layer exactly.
@@ -64,37 +64,35 @@ private:
     GlContextPtr context_;
     rhi::TextureDesc desc_;
     GLenum target_ = GL_TEXTURE_2D;
-    GLuint name_ = 0;
+    GlTextureName name_;
 };
 
 class GlSampler final : public rhi::Sampler {
 public:
     GlSampler(GlContextPtr context, const rhi::SamplerDesc& desc, const rhi::Conventions& conventions);
-    ~GlSampler() override;
 
     const rhi::SamplerDesc& desc() const override { return desc_; }
-    GLuint name() const { return name_; }
+    GLuint name() const { return name_.get(); }
 
 private:
     GlContextPtr context_;
     rhi::SamplerDesc desc_;
-    GLuint name_ = 0;
+    GlSamplerName name_;
 };
 
 class GlFramebuffer final : public rhi::Framebuffer {
 public:
     GlFramebuffer(GlContextPtr context, const rhi::FramebufferDesc& desc);
-    ~GlFramebuffer() override;
 
     std::uint32_t width() const override { return width_; }
     std::uint32_t height() const override { return height_; }
-    GLuint name() const { return name_; }
+    GLuint name() const { return name_.get(); }
     std::uint32_t colorCount() const { return colorCount_; }
     bool hasDepth() const { return hasDepth_; }
 
 private:
     GlContextPtr context_;
-    GLuint name_ = 0;
+    GlFramebufferName name_;
     std::uint32_t width_ = 0;
     std::uint32_t height_ = 0;
     std::uint32_t colorCount_ = 0;
@@ -104,7 +102,6 @@ private:
 class GlTimestampQueries final : public rhi::TimestampQueries {
 public:
     GlTimestampQueries(GlContextPtr context, std::uint32_t count);
-    ~GlTimestampQueries() override;
 
     std::uint32_t count() const override { return std::uint32_t(names_.size()); }
     void write(std::uint32_t index);
@@ -113,7 +110,7 @@ public:
 
 private:
     GlContextPtr context_;
-    std::vector<GLuint> names_;
+    std::vector<GlQueryName> names_;
     std::vector<bool> written_; // reading a query never written is a GL error
 };
 

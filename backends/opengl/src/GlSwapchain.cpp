@@ -49,8 +49,8 @@ void GlSwapchain::show(const rhi::Texture& image, rhi::Image* window)
     const rhi::Extent size = drawableSize();
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
-    GLuint read = 0;
-    gl.CreateFramebuffers(1, &read);
+    const GlFramebufferName readFramebuffer = createName<GlFramebufferName>(*context_, gl.CreateFramebuffers);
+    const GLuint read = readFramebuffer.get();
     if (source.isArray())
         gl.NamedFramebufferTextureLayer(read, GL_COLOR_ATTACHMENT0, source.name(), 0, 0);
     else
@@ -63,7 +63,6 @@ void GlSwapchain::show(const rhi::Texture& image, rhi::Image* window)
     const auto height = GLint(source.desc().height);
     gl.BlitNamedFramebuffer(read, 0, 0, 0, width, height, 0, GLint(size.height), GLint(size.width), 0,
                             GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    gl.DeleteFramebuffers(1, &read);
     if (window)
         *window = readBackBuffer(gl, size);
     glfwSwapBuffers(window_);

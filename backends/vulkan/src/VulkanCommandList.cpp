@@ -21,28 +21,16 @@ VulkanCommandList::VulkanCommandList(std::shared_ptr<Context> context)
     const VkDevice device = context_->device;
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.queueFamilyIndex = context_->queueFamily;
-    check(vkCreateCommandPool(device, &poolInfo, nullptr, &pool_), "vkCreateCommandPool");
-    try {
-        VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        alloc.commandPool = pool_;
-        alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        alloc.commandBufferCount = 1;
-        check(vkAllocateCommandBuffers(device, &alloc, &commands_), "vkAllocateCommandBuffers");
-        check(vkAllocateCommandBuffers(device, &alloc, &prologue_), "vkAllocateCommandBuffers");
-        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        check(vkCreateFence(device, &fenceInfo, nullptr, &fence_), "vkCreateFence");
-        begin();
-    } catch (...) {
-        vkDestroyFence(device, fence_, nullptr);
-        vkDestroyCommandPool(device, pool_, nullptr);
-        throw;
-    }
-}
-
-VulkanCommandList::~VulkanCommandList()
-{
-    vkDestroyFence(context_->device, fence_, nullptr);
-    vkDestroyCommandPool(context_->device, pool_, nullptr); // frees both command buffers
+    pool_ = createOwned<UniqueCommandPool>(device, vkCreateCommandPool, poolInfo, "vkCreateCommandPool");
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = pool_.get();
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    check(vkAllocateCommandBuffers(device, &alloc, &commands_), "vkAllocateCommandBuffers");
+    check(vkAllocateCommandBuffers(device, &alloc, &prologue_), "vkAllocateCommandBuffers");
+    const VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fence_ = createOwned<UniqueFence>(device, vkCreateFence, fenceInfo, "vkCreateFence");
+    begin();
 }
 
 void VulkanCommandList::begin()
@@ -72,9 +60,9 @@ void VulkanCommandList::submit()
     }
     check(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
     buffers[count++] = commands_;
-    context_->submitAndWait(std::span(buffers.data(), count), fence_);
+    context_->submitAndWait(std::span(buffers.data(), count), fence_.get());
 
-    check(vkResetCommandPool(context_->device, pool_, 0), "vkResetCommandPool");
+    check(vkResetCommandPool(context_->device, pool_.get(), 0), "vkResetCommandPool");
     prologueRecording_ = false;
     resetPools_.clear();
     descriptors_.reset();

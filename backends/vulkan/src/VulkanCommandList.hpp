@@ -17,9 +17,6 @@ class VulkanPipeline;
 class VulkanCommandList final : public rhi::CommandList {
 public:
     explicit VulkanCommandList(std::shared_ptr<Context> context);
-    ~VulkanCommandList() override;
-    VulkanCommandList(const VulkanCommandList&) = delete;
-    VulkanCommandList& operator=(const VulkanCommandList&) = delete;
 
     void beginPass(const rhi::PassDesc& pass) override;
     void endPass() override;
@@ -57,10 +54,10 @@ private:
     void matchPipelineToPass();
 
     std::shared_ptr<Context> context_;
-    VkCommandPool pool_ = VK_NULL_HANDLE;
+    UniqueCommandPool pool_; // destroying it frees both command buffers
     VkCommandBuffer commands_ = VK_NULL_HANDLE;
     VkCommandBuffer prologue_ = VK_NULL_HANDLE;
-    VkFence fence_ = VK_NULL_HANDLE;
+    UniqueFence fence_;
     bool prologueRecording_ = false;
     std::vector<VkQueryPool> resetPools_;
     DescriptorBinder descriptors_;

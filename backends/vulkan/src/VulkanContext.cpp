@@ -9,6 +9,7 @@
 #include "penumbra/rhi/Error.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <fmt/format.h>
 
@@ -25,14 +26,18 @@ Context::Context(const rhi::DeviceDesc& d)
     createDevice();
 }
 
+// The members then go in reverse order: caches, fence, pool, the device, and teardown_ reports.
 Context::~Context()
 {
+    teardown_.from = log.all().size();
     vkDeviceWaitIdle(device);
-    layouts_.reset();
-    renderPasses_.reset();
-    vkDestroyFence(device, oneShotFence_, nullptr);
-    vkDestroyCommandPool(device, oneShotPool_, nullptr);
-    vkDestroyDevice(device, nullptr);
+}
+
+Context::TeardownReport::~TeardownReport()
+{
+    const std::vector<std::string> messages = log.all();
+    for (std::size_t i = from; i < messages.size(); ++i)
+        std::fprintf(stderr, "penumbra: while destroying the Vulkan device: %s\n", messages[i].c_str());
 }
 
 void Context::fillCapabilities()
@@ -113,6 +118,7 @@ void Context::createDevice()
     info.enabledExtensionCount = std::uint32_t(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     check(vkCreateDevice(physicalDevice, &info, nullptr, &device), "vkCreateDevice");
+    ownedDevice_ = UniqueDevice(device);
     vkGetDeviceQueue(device, queueFamily, 0, &queue);
     if (desc.validation)
         setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
@@ -121,19 +127,11 @@ void Context::createDevice()
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     poolInfo.queueFamilyIndex = queueFamily;
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    // From here on the destructor cleans up, so a failure must not leave a half-built device.
-    try {
-        check(vkCreateCommandPool(device, &poolInfo, nullptr, &oneShotPool_), "vkCreateCommandPool");
-        check(vkCreateFence(device, &fenceInfo, nullptr, &oneShotFence_), "vkCreateFence");
-        renderPasses_ = std::make_unique<RenderPassCache>(device);
-        layouts_ = std::make_unique<LayoutCache>(device);
-    } catch (...) {
-        vkDestroyFence(device, oneShotFence_, nullptr);
-        vkDestroyCommandPool(device, oneShotPool_, nullptr);
-        vkDestroyDevice(device, nullptr);
-        throw;
-    }
+    oneShotPool_ = createOwned<UniqueCommandPool>(device, vkCreateCommandPool, poolInfo, "vkCreateCommandPool");
+    const VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    oneShotFence_ = createOwned<UniqueFence>(device, vkCreateFence, fenceInfo, "vkCreateFence");
+    renderPasses_ = std::make_unique<RenderPassCache>(device);
+    layouts_ = std::make_unique<LayoutCache>(device);
 }
 
 std::uint32_t Context::memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted,
@@ -178,7 +176,7 @@ void Context::submitAndWait(std::span<const VkCommandBuffer> commandBuffers, VkF
 void Context::runOnce(const std::function<void(VkCommandBuffer)>& record)
 {
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = oneShotPool_;
+    alloc.commandPool = oneShotPool_.get();
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
@@ -189,13 +187,13 @@ void Context::runOnce(const std::function<void(VkCommandBuffer)>& record)
         VkCommandPool pool;
         VkCommandBuffer commandBuffer;
         ~Release() { vkFreeCommandBuffers(device, pool, 1, &commandBuffer); }
-    } release{device, oneShotPool_, commandBuffer};
+    } release{device, oneShotPool_.get(), commandBuffer};
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(vkBeginCommandBuffer(commandBuffer, &begin), "vkBeginCommandBuffer");
     record(commandBuffer);
     check(vkEndCommandBuffer(commandBuffer), "vkEndCommandBuffer");
-    submitAndWait(std::span(&commandBuffer, 1), oneShotFence_);
+    submitAndWait(std::span(&commandBuffer, 1), oneShotFence_.get());
 }
 
 void fullBarrier(VkCommandBuffer commandBuffer)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "VulkanHandle.hpp"
 #include "VulkanInstance.hpp"
 
 #include "penumbra/rhi/Device.hpp"
@@ -32,7 +33,7 @@ public:
     std::uint32_t queueFamily = 0;
     VkPhysicalDeviceProperties properties{};
     rhi::Capabilities capabilities;
-    VkDevice device = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE; // owned by ownedDevice_
     VkQueue queue = VK_NULL_HANDLE;
 
     RenderPassCache& renderPasses() { return *renderPasses_; }
@@ -63,8 +64,18 @@ private:
     PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
     std::mutex queueMutex_;
     std::mutex oneShotMutex_;
-    VkCommandPool oneShotPool_ = VK_NULL_HANDLE;
-    VkFence oneShotFence_ = VK_NULL_HANDLE;
+    // What the validation layer says while the device is destroyed (its object tracker names every
+    // object still alive then) reaches no rhi::Device any more: this writes it to standard error.
+    // Declared before ownedDevice_, so it runs after vkDestroyDevice.
+    struct TeardownReport {
+        const rhi::DebugMessageLog& log;
+        std::size_t from = 0; // messages before this index were the device's to report
+        ~TeardownReport();
+    } teardown_{log};
+    // Declared before everything made from it, so that it is destroyed after them.
+    UniqueDevice ownedDevice_;
+    UniqueCommandPool oneShotPool_;
+    UniqueFence oneShotFence_;
     std::unique_ptr<RenderPassCache> renderPasses_;
     std::unique_ptr<LayoutCache> layouts_;
 };

@@ -15,13 +15,7 @@ constexpr std::uint32_t setsPerPool = 1024;
 
 } // namespace
 
-DescriptorAllocator::~DescriptorAllocator()
-{
-    for (VkDescriptorPool pool : pools_)
-        vkDestroyDescriptorPool(context_->device, pool, nullptr);
-}
-
-VkDescriptorPool DescriptorAllocator::createPool() const
+UniqueDescriptorPool DescriptorAllocator::createPool() const
 {
     const std::array<VkDescriptorPoolSize, 2> sizes{{
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, setsPerPool * 4},
@@ -31,9 +25,7 @@ VkDescriptorPool DescriptorAllocator::createPool() const
     info.maxSets = setsPerPool;
     info.poolSizeCount = std::uint32_t(sizes.size());
     info.pPoolSizes = sizes.data();
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    check(vkCreateDescriptorPool(context_->device, &info, nullptr, &pool), "vkCreateDescriptorPool");
-    return pool;
+    return createOwned<UniqueDescriptorPool>(context_->device, vkCreateDescriptorPool, info, "vkCreateDescriptorPool");
 }
 
 VkDescriptorSet DescriptorAllocator::allocate(VkDescriptorSetLayout layout)
@@ -44,7 +36,7 @@ VkDescriptorSet DescriptorAllocator::allocate(VkDescriptorSetLayout layout)
     for (;; ++current_) {
         if (current_ == pools_.size())
             pools_.push_back(createPool());
-        info.descriptorPool = pools_[current_];
+        info.descriptorPool = pools_[current_].get();
         VkDescriptorSet set = VK_NULL_HANDLE;
         const VkResult result = vkAllocateDescriptorSets(context_->device, &info, &set);
         if (result == VK_SUCCESS)
@@ -58,7 +50,7 @@ VkDescriptorSet DescriptorAllocator::allocate(VkDescriptorSetLayout layout)
 void DescriptorAllocator::reset()
 {
     for (std::size_t i = 0; i < pools_.size() && i <= current_; ++i)
-        check(vkResetDescriptorPool(context_->device, pools_[i], 0), "vkResetDescriptorPool");
+        check(vkResetDescriptorPool(context_->device, pools_[i].get(), 0), "vkResetDescriptorPool");
     current_ = 0;
 }
 

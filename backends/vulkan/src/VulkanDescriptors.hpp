@@ -13,19 +13,16 @@ class VulkanPipeline;
 class DescriptorAllocator {
 public:
     explicit DescriptorAllocator(std::shared_ptr<Context> context) : context_(std::move(context)) {}
-    ~DescriptorAllocator();
-    DescriptorAllocator(const DescriptorAllocator&) = delete;
-    DescriptorAllocator& operator=(const DescriptorAllocator&) = delete;
 
     VkDescriptorSet allocate(VkDescriptorSetLayout layout);
     void reset();
     VkDevice device() const { return context_->device; }
 
 private:
-    VkDescriptorPool createPool() const;
+    UniqueDescriptorPool createPool() const;
 
     std::shared_ptr<Context> context_;
-    std::vector<VkDescriptorPool> pools_;
+    std::vector<UniqueDescriptorPool> pools_;
     std::size_t current_ = 0;
 };
 

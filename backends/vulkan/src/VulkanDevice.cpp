@@ -81,8 +81,11 @@ std::vector<double> VulkanDevice::readTimestamps(const rhi::TimestampQueries& qu
 
 std::unique_ptr<rhi::Device> createVulkanDevice(const rhi::DeviceDesc& desc)
 {
-    if (desc.backend != rhi::Backend::Vulkan)
-        throw rhi::Error("createVulkanDevice: DeviceDesc::backend is not Backend::Vulkan");
+    if (desc.backend != "vulkan")
+        throw rhi::Error(fmt::format("createVulkanDevice: DeviceDesc::backend is '{}', not 'vulkan'", desc.backend));
+    // [0, 1] is Vulkan's native range; [-1, 1] would need VK_EXT_depth_clip_control, which this backend does not use.
+    if (desc.depthRange != rhi::DepthRange::ZeroToOne)
+        throw rhi::UnsupportedError("Vulkan: the [-1, 1] depth range (DepthRange::MinusOneToOne) is not offered");
     return std::make_unique<VulkanDevice>(desc);
 }
 

@@ -108,32 +108,24 @@ Instance::Instance(bool validation, rhi::DebugMessageLog& log, std::vector<const
     info.enabledExtensionCount = std::uint32_t(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
 
-    const VkResult result = vkCreateInstance(&info, nullptr, &instance_);
+    VkInstance instance = VK_NULL_HANDLE;
+    const VkResult result = vkCreateInstance(&info, nullptr, &instance);
     if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
         throw rhi::Error("Vulkan: no driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
                          "install mesa-vulkan-drivers for lavapipe");
     check(result, "vkCreateInstance");
+    instance_ = UniqueInstance(instance);
 
     if (validation) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        const VkResult created = create ? create(instance_, &debugInfo, nullptr, &messenger_)
-                                        : VK_ERROR_EXTENSION_NOT_PRESENT;
-        if (created != VK_SUCCESS) {
-            vkDestroyInstance(instance_, nullptr);
-            check(created, "vkCreateDebugUtilsMessengerEXT");
-        }
-    }
-}
-
-Instance::~Instance()
-{
-    if (messenger_) {
+            vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-        destroy(instance_, messenger_, nullptr);
+            vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+        check(create && destroy ? create(instance, &debugInfo, nullptr, &messenger) : VK_ERROR_EXTENSION_NOT_PRESENT,
+              "vkCreateDebugUtilsMessengerEXT");
+        messenger_ = UniqueMessenger(instance, messenger, destroy);
     }
-    vkDestroyInstance(instance_, nullptr);
 }
 
 PhysicalDeviceChoice choosePhysicalDevice(VkInstance instance)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "VulkanHandle.hpp"
+
 #include "penumbra/rhi/DebugMessageLog.hpp"
 
 #include <cstdint>
@@ -14,17 +16,14 @@ class Instance {
 public:
     // `extensions`: instance extensions needed besides debug utils (a window surface's).
     Instance(bool validation, rhi::DebugMessageLog& log, std::vector<const char*> extensions);
-    ~Instance();
-    Instance(const Instance&) = delete;
-    Instance& operator=(const Instance&) = delete;
 
-    VkInstance handle() const { return instance_; }
+    VkInstance handle() const { return instance_.get(); }
     // The version the instance was created with: the loader's, capped at 1.3.
     std::uint32_t apiVersion() const { return apiVersion_; }
 
 private:
-    VkInstance instance_ = VK_NULL_HANDLE;
-    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    UniqueInstance instance_;
+    UniqueMessenger messenger_; // after instance_: destroyed before it
     std::uint32_t apiVersion_ = VK_API_VERSION_1_1;
 };
 

@@ -88,22 +88,9 @@ VulkanShader::VulkanShader(std::shared_ptr<Context> context, rhi::CompiledShader
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = compiled_.spirv.size() * sizeof(std::uint32_t);
     info.pCode = compiled_.spirv.data();
-    check(vkCreateShaderModule(context_->device, &info, nullptr, &module_),
-          fmt::format("vkCreateShaderModule ({})", compiled_.name));
-    context_->setName(VK_OBJECT_TYPE_SHADER_MODULE, module_, compiled_.name);
-}
-
-VulkanShader::~VulkanShader()
-{
-    vkDestroyShaderModule(context_->device, module_, nullptr);
-}
-
-LayoutCache::~LayoutCache()
-{
-    for (const auto& [key, layout] : layouts_) {
-        vkDestroyPipelineLayout(device_, layout.layout, nullptr);
-        vkDestroyDescriptorSetLayout(device_, layout.setLayout, nullptr);
-    }
+    module_ = createOwned<UniqueShaderModule>(context_->device, vkCreateShaderModule, info,
+                                              fmt::format("vkCreateShaderModule ({})", compiled_.name));
+    context_->setName(VK_OBJECT_TYPE_SHADER_MODULE, module_.get(), compiled_.name);
 }
 
 PipelineLayout LayoutCache::get(const std::vector<rhi::ShaderBinding>& bindings)
@@ -113,14 +100,12 @@ PipelineLayout LayoutCache::get(const std::vector<rhi::ShaderBinding>& bindings)
         key.insert(key.end(), {b.binding, std::uint32_t(b.kind)});
     std::lock_guard lock(mutex_);
     auto found = layouts_.find(key);
-    if (found != layouts_.end())
-        return found->second;
-    const PipelineLayout layout = create(bindings);
-    layouts_.emplace(std::move(key), layout);
-    return layout;
+    if (found == layouts_.end())
+        found = layouts_.emplace(std::move(key), create(bindings)).first;
+    return {found->second.setLayout.get(), found->second.layout.get()};
 }
 
-PipelineLayout LayoutCache::create(const std::vector<rhi::ShaderBinding>& bindings) const
+LayoutCache::Entry LayoutCache::create(const std::vector<rhi::ShaderBinding>& bindings) const
 {
     std::vector<VkDescriptorSetLayoutBinding> vkBindings;
     for (const rhi::ShaderBinding& b : bindings)
@@ -129,16 +114,13 @@ PipelineLayout LayoutCache::create(const std::vector<rhi::ShaderBinding>& bindin
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.bindingCount = std::uint32_t(vkBindings.size());
     setInfo.pBindings = vkBindings.data();
-    PipelineLayout result;
-    check(vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &result.setLayout), "vkCreateDescriptorSetLayout");
-
+    Entry result;
+    result.setLayout = createOwned<UniqueDescriptorSetLayout>(device_, vkCreateDescriptorSetLayout, setInfo,
+                                                              "vkCreateDescriptorSetLayout");
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &result.setLayout;
-    const VkResult created = vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &result.layout);
-    if (created != VK_SUCCESS)
-        vkDestroyDescriptorSetLayout(device_, result.setLayout, nullptr);
-    check(created, "vkCreatePipelineLayout");
+    layoutInfo.pSetLayouts = result.setLayout.address();
+    result.layout = createOwned<UniquePipelineLayout>(device_, vkCreatePipelineLayout, layoutInfo, "vkCreatePipelineLayout");
     return result;
 }
 
@@ -232,14 +214,11 @@ VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::Pipe
     info.pDynamicState = &dynamic;
     info.layout = layout_.layout;
     info.renderPass = renderPass_;
-    check(vkCreateGraphicsPipelines(context_->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    check(vkCreateGraphicsPipelines(context_->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
           fmt::format("vkCreateGraphicsPipelines ('{}')", desc.debugName));
-    context_->setName(VK_OBJECT_TYPE_PIPELINE, pipeline_, desc.debugName);
-}
-
-VulkanPipeline::~VulkanPipeline()
-{
-    vkDestroyPipeline(context_->device, pipeline_, nullptr);
+    pipeline_ = UniquePipeline(context_->device, pipeline);
+    context_->setName(VK_OBJECT_TYPE_PIPELINE, pipeline, desc.debugName);
 }
 
 } // namespace penumbra::vulkan

@@ -15,19 +15,17 @@ namespace penumbra::vulkan {
 class VulkanShader final : public rhi::Shader {
 public:
     VulkanShader(std::shared_ptr<Context> context, rhi::CompiledShader compiled);
-    ~VulkanShader() override;
-    VulkanShader(const VulkanShader&) = delete;
-    VulkanShader& operator=(const VulkanShader&) = delete;
 
     const rhi::CompiledShader& compiled() const override { return compiled_; }
-    VkShaderModule module() const { return module_; }
+    VkShaderModule module() const { return module_.get(); }
 
 private:
     std::shared_ptr<Context> context_;
     rhi::CompiledShader compiled_;
-    VkShaderModule module_ = VK_NULL_HANDLE;
+    UniqueShaderModule module_;
 };
 
+// A layout as pipelines and descriptor sets use it; LayoutCache owns the handles.
 struct PipelineLayout {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -38,30 +36,28 @@ struct PipelineLayout {
 class LayoutCache {
 public:
     explicit LayoutCache(VkDevice device) : device_(device) {}
-    ~LayoutCache();
-    LayoutCache(const LayoutCache&) = delete;
-    LayoutCache& operator=(const LayoutCache&) = delete;
 
     PipelineLayout get(const std::vector<rhi::ShaderBinding>& bindings);
 
 private:
-    PipelineLayout create(const std::vector<rhi::ShaderBinding>& bindings) const;
+    struct Entry {
+        UniqueDescriptorSetLayout setLayout;
+        UniquePipelineLayout layout; // after setLayout: destroyed before it
+    };
+    Entry create(const std::vector<rhi::ShaderBinding>& bindings) const;
 
     VkDevice device_;
     std::mutex mutex_;
-    std::map<std::vector<std::uint32_t>, PipelineLayout> layouts_;
+    std::map<std::vector<std::uint32_t>, Entry> layouts_;
 };
 
 class VulkanPipeline final : public rhi::Pipeline {
 public:
     VulkanPipeline(std::shared_ptr<Context> context, const rhi::PipelineDesc& desc);
-    ~VulkanPipeline() override;
-    VulkanPipeline(const VulkanPipeline&) = delete;
-    VulkanPipeline& operator=(const VulkanPipeline&) = delete;
 
     const rhi::PipelineDesc& desc() const override { return desc_; }
 
-    VkPipeline handle() const { return pipeline_; }
+    VkPipeline handle() const { return pipeline_.get(); }
     const PipelineLayout& layout() const { return layout_; }
     // Every binding both stages declare, sorted by number: the descriptor set's contents.
     const std::vector<rhi::ShaderBinding>& bindings() const { return bindings_; }
@@ -83,7 +79,7 @@ private:
     PipelineLayout layout_;
     std::vector<VkFormat> formats_;
     VkRenderPass renderPass_ = VK_NULL_HANDLE;
-    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    UniquePipeline pipeline_;
 };
 
 } // namespace penumbra::vulkan

@@ -60,25 +60,17 @@ std::vector<VkFormat> RenderPassKey::formats() const
     return all;
 }
 
-RenderPassCache::~RenderPassCache()
-{
-    for (const auto& [key, pass] : passes_)
-        vkDestroyRenderPass(device_, pass, nullptr);
-}
-
 VkRenderPass RenderPassCache::get(const RenderPassKey& key)
 {
     std::vector<std::uint32_t> flat = flatten(key);
     std::lock_guard lock(mutex_);
     auto found = passes_.find(flat);
     if (found != passes_.end())
-        return found->second;
-    VkRenderPass pass = create(key);
-    passes_.emplace(std::move(flat), pass);
-    return pass;
+        return found->second.get();
+    return passes_.emplace(std::move(flat), create(key)).first->second.get();
 }
 
-VkRenderPass RenderPassCache::create(const RenderPassKey& key) const
+UniqueRenderPass RenderPassCache::create(const RenderPassKey& key) const
 {
     std::vector<VkAttachmentDescription> attachments;
     std::vector<VkAttachmentReference> colorRefs;
@@ -112,9 +104,7 @@ VkRenderPass RenderPassCache::create(const RenderPassKey& key) const
     info.pSubpasses = &subpass;
     info.dependencyCount = std::uint32_t(dependencies.size());
     info.pDependencies = dependencies.data();
-    VkRenderPass pass = VK_NULL_HANDLE;
-    check(vkCreateRenderPass(device_, &info, nullptr, &pass), "vkCreateRenderPass");
-    return pass;
+    return createOwned<UniqueRenderPass>(device_, vkCreateRenderPass, info, "vkCreateRenderPass");
 }
 
 VulkanFramebuffer::VulkanFramebuffer(std::shared_ptr<Context> context, const rhi::FramebufferDesc& desc)
@@ -133,34 +123,18 @@ VulkanFramebuffer::VulkanFramebuffer(std::shared_ptr<Context> context, const rhi
     width_ = attachments.front().texture->desc().width;
     height_ = attachments.front().texture->desc().height;
 
-    try {
-        for (const rhi::Attachment& a : attachments)
-            views_.push_back(static_cast<const VulkanTexture*>(a.texture)->createAttachmentView(a.layer));
-        VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        info.renderPass = renderPass(false, false);
-        info.attachmentCount = std::uint32_t(views_.size());
-        info.pAttachments = views_.data();
-        info.width = width_;
-        info.height = height_;
-        info.layers = 1;
-        check(vkCreateFramebuffer(context_->device, &info, nullptr, &framebuffer_), "vkCreateFramebuffer");
-        context_->setName(VK_OBJECT_TYPE_FRAMEBUFFER, framebuffer_, desc.debugName);
-    } catch (...) {
-        release();
-        throw;
-    }
-}
-
-VulkanFramebuffer::~VulkanFramebuffer()
-{
-    release();
-}
-
-void VulkanFramebuffer::release()
-{
-    vkDestroyFramebuffer(context_->device, framebuffer_, nullptr);
-    for (VkImageView view : views_)
-        vkDestroyImageView(context_->device, view, nullptr);
+    std::vector<VkImageView> views;
+    for (const rhi::Attachment& a : attachments)
+        views.push_back(views_.emplace_back(static_cast<const VulkanTexture*>(a.texture)->createAttachmentView(a.layer)).get());
+    VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    info.renderPass = renderPass(false, false);
+    info.attachmentCount = std::uint32_t(views.size());
+    info.pAttachments = views.data();
+    info.width = width_;
+    info.height = height_;
+    info.layers = 1;
+    framebuffer_ = createOwned<UniqueFramebuffer>(context_->device, vkCreateFramebuffer, info, "vkCreateFramebuffer");
+    context_->setName(VK_OBJECT_TYPE_FRAMEBUFFER, framebuffer_.get(), desc.debugName);
 }
 
 VkRenderPass VulkanFramebuffer::renderPass(bool loadColor, bool loadDepth)

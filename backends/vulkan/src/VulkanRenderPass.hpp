@@ -33,31 +33,25 @@ struct RenderPassKey {
 class RenderPassCache {
 public:
     explicit RenderPassCache(VkDevice device) : device_(device) {}
-    ~RenderPassCache();
-    RenderPassCache(const RenderPassCache&) = delete;
-    RenderPassCache& operator=(const RenderPassCache&) = delete;
 
     VkRenderPass get(const RenderPassKey& key);
 
 private:
-    VkRenderPass create(const RenderPassKey& key) const;
+    UniqueRenderPass create(const RenderPassKey& key) const;
 
     VkDevice device_;
     std::mutex mutex_;
-    std::map<std::vector<std::uint32_t>, VkRenderPass> passes_;
+    std::map<std::vector<std::uint32_t>, UniqueRenderPass> passes_;
 };
 
 class VulkanFramebuffer final : public rhi::Framebuffer {
 public:
     VulkanFramebuffer(std::shared_ptr<Context> context, const rhi::FramebufferDesc& desc);
-    ~VulkanFramebuffer() override;
-    VulkanFramebuffer(const VulkanFramebuffer&) = delete;
-    VulkanFramebuffer& operator=(const VulkanFramebuffer&) = delete;
 
     std::uint32_t width() const override { return width_; }
     std::uint32_t height() const override { return height_; }
 
-    VkFramebuffer handle() const { return framebuffer_; }
+    VkFramebuffer handle() const { return framebuffer_.get(); }
     std::uint32_t colorCount() const { return std::uint32_t(key_.colors.size()); }
     bool hasDepth() const { return key_.depth.has_value(); }
     const std::vector<VkFormat>& formats() const { return formats_; }
@@ -66,16 +60,14 @@ public:
     VkRenderPass renderPass(bool loadColor, bool loadDepth);
 
 private:
-    void release();
-
     std::shared_ptr<Context> context_;
     RenderPassKey key_;
     std::vector<VkFormat> formats_;
     std::string name_;
     std::uint32_t width_ = 0;
     std::uint32_t height_ = 0;
-    std::vector<VkImageView> views_;
-    VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+    std::vector<UniqueImageView> views_;
+    UniqueFramebuffer framebuffer_;
     std::array<VkRenderPass, 4> passes_{}; // indexed by loadColor * 2 + loadDepth
 };
 

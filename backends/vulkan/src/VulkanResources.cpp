@@ -94,31 +94,18 @@ MappedBuffer::MappedBuffer(std::shared_ptr<Context> context, VkDeviceSize size, 
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    check(vkCreateBuffer(device, &info, nullptr, &buffer_), "vkCreateBuffer");
-    try {
-        VkMemoryRequirements requirements;
-        vkGetBufferMemoryRequirements(device, buffer_, &requirements);
-        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        alloc.allocationSize = requirements.size;
-        const VkMemoryPropertyFlags hostVisible =
-            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-        alloc.memoryTypeIndex = context_->memoryType(requirements.memoryTypeBits, hostVisible, hostVisible);
-        check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
-        check(vkBindBufferMemory(device, buffer_, memory_, 0), "vkBindBufferMemory");
-        void* mapped = nullptr;
-        check(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
-        mapped_ = static_cast<std::byte*>(mapped);
-    } catch (...) {
-        vkFreeMemory(device, memory_, nullptr);
-        vkDestroyBuffer(device, buffer_, nullptr);
-        throw;
-    }
-}
-
-MappedBuffer::~MappedBuffer()
-{
-    vkDestroyBuffer(context_->device, buffer_, nullptr);
-    vkFreeMemory(context_->device, memory_, nullptr); // unmaps implicitly
+    buffer_ = createOwned<UniqueBuffer>(device, vkCreateBuffer, info, "vkCreateBuffer");
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device, buffer_.get(), &requirements);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = requirements.size;
+    const VkMemoryPropertyFlags hostVisible = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    alloc.memoryTypeIndex = context_->memoryType(requirements.memoryTypeBits, hostVisible, hostVisible);
+    memory_ = createOwned<UniqueMemory>(device, vkAllocateMemory, alloc, "vkAllocateMemory");
+    check(vkBindBufferMemory(device, buffer_.get(), memory_.get(), 0), "vkBindBufferMemory");
+    void* mapped = nullptr;
+    check(vkMapMemory(device, memory_.get(), 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
+    mapped_ = static_cast<std::byte*>(mapped);
 }
 
 VulkanBuffer::VulkanBuffer(std::shared_ptr<Context> context, const rhi::BufferDesc& desc)
@@ -164,54 +151,37 @@ VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::Textur
     info.usage = use.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    check(vkCreateImage(device, &info, nullptr, &image_), "vkCreateImage");
-    try {
-        VkMemoryRequirements requirements;
-        vkGetImageMemoryRequirements(device, image_, &requirements);
-        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        alloc.allocationSize = requirements.size;
-        alloc.memoryTypeIndex =
-            context_->memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
-        check(vkAllocateMemory(device, &alloc, nullptr, &memory_), "vkAllocateMemory");
-        check(vkBindImageMemory(device, image_, memory_, 0), "vkBindImageMemory");
+    image_ = createOwned<UniqueImage>(device, vkCreateImage, info, "vkCreateImage");
+    VkMemoryRequirements requirements;
+    vkGetImageMemoryRequirements(device, image_.get(), &requirements);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = requirements.size;
+    alloc.memoryTypeIndex = context_->memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+    memory_ = createOwned<UniqueMemory>(device, vkAllocateMemory, alloc, "vkAllocateMemory");
+    check(vkBindImageMemory(device, image_.get(), memory_.get(), 0), "vkBindImageMemory");
 
-        VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-        viewInfo.image = image_;
-        viewInfo.viewType = sampledViewType(desc);
-        viewInfo.format = format_;
-        viewInfo.subresourceRange = {dataAspect(desc.format), 0, 1, 0, desc.layers};
-        check(vkCreateImageView(device, &viewInfo, nullptr, &view_), "vkCreateImageView");
-        context_->setName(VK_OBJECT_TYPE_IMAGE, image_, desc.debugName);
-        context_->setName(VK_OBJECT_TYPE_IMAGE_VIEW, view_, desc.debugName);
+    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    viewInfo.image = image_.get();
+    viewInfo.viewType = sampledViewType(desc);
+    viewInfo.format = format_;
+    viewInfo.subresourceRange = {dataAspect(desc.format), 0, 1, 0, desc.layers};
+    view_ = createOwned<UniqueImageView>(device, vkCreateImageView, viewInfo, "vkCreateImageView");
+    context_->setName(VK_OBJECT_TYPE_IMAGE, image_.get(), desc.debugName);
+    context_->setName(VK_OBJECT_TYPE_IMAGE_VIEW, view_.get(), desc.debugName);
 
-        context_->runOnce([&](VkCommandBuffer commandBuffer) {
-            transition(commandBuffer, ~0u, VK_IMAGE_LAYOUT_UNDEFINED, restingLayout_);
-        });
-    } catch (...) {
-        vkDestroyImageView(device, view_, nullptr);
-        vkDestroyImage(device, image_, nullptr);
-        vkFreeMemory(device, memory_, nullptr);
-        throw;
-    }
+    context_->runOnce([&](VkCommandBuffer commandBuffer) {
+        transition(commandBuffer, ~0u, VK_IMAGE_LAYOUT_UNDEFINED, restingLayout_);
+    });
 }
 
-VulkanTexture::~VulkanTexture()
-{
-    vkDestroyImageView(context_->device, view_, nullptr);
-    vkDestroyImage(context_->device, image_, nullptr);
-    vkFreeMemory(context_->device, memory_, nullptr);
-}
-
-VkImageView VulkanTexture::createAttachmentView(std::uint32_t layer) const
+UniqueImageView VulkanTexture::createAttachmentView(std::uint32_t layer) const
 {
     VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    info.image = image_;
+    info.image = image_.get();
     info.viewType = VK_IMAGE_VIEW_TYPE_2D;
     info.format = format_;
     info.subresourceRange = {fullAspect(desc_.format), 0, 1, layer, 1};
-    VkImageView view = VK_NULL_HANDLE;
-    check(vkCreateImageView(context_->device, &info, nullptr, &view), "vkCreateImageView");
-    return view;
+    return createOwned<UniqueImageView>(context_->device, vkCreateImageView, info, "vkCreateImageView");
 }
 
 void transitionImage(VkCommandBuffer commandBuffer, VkImage image, const VkImageSubresourceRange& range,
@@ -233,7 +203,7 @@ void transitionImage(VkCommandBuffer commandBuffer, VkImage image, const VkImage
 void VulkanTexture::transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from,
                                VkImageLayout to) const
 {
-    transitionImage(commandBuffer, image_,
+    transitionImage(commandBuffer, image_.get(),
                     layer == ~0u ? VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, 0, desc_.layers}
                                  : VkImageSubresourceRange{fullAspect(desc_.format), 0, 1, layer, 1},
                     from, to);
@@ -252,7 +222,7 @@ void VulkanTexture::upload(std::uint32_t layer, std::span<const std::byte> data)
         VkBufferImageCopy region{};
         region.imageSubresource = {dataAspect(desc_.format), 0, layer, 1};
         region.imageExtent = {desc_.width, desc_.height, 1};
-        vkCmdCopyBufferToImage(commandBuffer, staging.handle(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+        vkCmdCopyBufferToImage(commandBuffer, staging.handle(), image_.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                                &region);
         transition(commandBuffer, layer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, restingLayout_);
     });
@@ -272,13 +242,8 @@ VulkanSampler::VulkanSampler(std::shared_ptr<Context> context, const rhi::Sample
     info.compareOp = toVkCompareOp(context_->conventions.shadowCompareOp());
     info.maxLod = 0.0f;
     info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-    check(vkCreateSampler(context_->device, &info, nullptr, &sampler_), "vkCreateSampler");
-    context_->setName(VK_OBJECT_TYPE_SAMPLER, sampler_, desc.debugName);
-}
-
-VulkanSampler::~VulkanSampler()
-{
-    vkDestroySampler(context_->device, sampler_, nullptr);
+    sampler_ = createOwned<UniqueSampler>(context_->device, vkCreateSampler, info, "vkCreateSampler");
+    context_->setName(VK_OBJECT_TYPE_SAMPLER, sampler_.get(), desc.debugName);
 }
 
 VulkanTimestampQueries::VulkanTimestampQueries(std::shared_ptr<Context> context, std::uint32_t count)
@@ -292,26 +257,17 @@ VulkanTimestampQueries::VulkanTimestampQueries(std::shared_ptr<Context> context,
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = count;
-    check(vkCreateQueryPool(context_->device, &info, nullptr, &pool_), "vkCreateQueryPool");
+    pool_ = createOwned<UniqueQueryPool>(context_->device, vkCreateQueryPool, info, "vkCreateQueryPool");
     // Reset now so that reading a query that was never written reports it instead of being invalid.
-    try {
-        context_->runOnce([&](VkCommandBuffer commandBuffer) { vkCmdResetQueryPool(commandBuffer, pool_, 0, count); });
-    } catch (...) {
-        vkDestroyQueryPool(context_->device, pool_, nullptr);
-        throw;
-    }
-}
-
-VulkanTimestampQueries::~VulkanTimestampQueries()
-{
-    vkDestroyQueryPool(context_->device, pool_, nullptr);
+    context_->runOnce(
+        [&](VkCommandBuffer commandBuffer) { vkCmdResetQueryPool(commandBuffer, pool_.get(), 0, count); });
 }
 
 std::vector<double> VulkanTimestampQueries::readNanoseconds() const
 {
     // Pairs of (value, availability); no WAIT flag, so a query never written cannot hang us.
     std::vector<std::uint64_t> results(std::size_t(count_) * 2);
-    const VkResult result = vkGetQueryPoolResults(context_->device, pool_, 0, count_,
+    const VkResult result = vkGetQueryPoolResults(context_->device, pool_.get(), 0, count_,
                                                   results.size() * sizeof(std::uint64_t), results.data(),
                                                   2 * sizeof(std::uint64_t),
                                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);

@@ -13,17 +13,14 @@ namespace penumbra::vulkan {
 class MappedBuffer {
 public:
     MappedBuffer(std::shared_ptr<Context> context, VkDeviceSize size, VkBufferUsageFlags usage);
-    ~MappedBuffer();
-    MappedBuffer(const MappedBuffer&) = delete;
-    MappedBuffer& operator=(const MappedBuffer&) = delete;
 
-    VkBuffer handle() const { return buffer_; }
+    VkBuffer handle() const { return buffer_.get(); }
     std::byte* data() const { return mapped_; }
 
 private:
     std::shared_ptr<Context> context_;
-    VkBuffer buffer_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    UniqueBuffer buffer_;
+    UniqueMemory memory_;
     std::byte* mapped_ = nullptr;
 };
 
@@ -55,19 +52,16 @@ void transitionImage(VkCommandBuffer commandBuffer, VkImage image, const VkImage
 class VulkanTexture final : public rhi::Texture {
 public:
     VulkanTexture(std::shared_ptr<Context> context, const rhi::TextureDesc& desc);
-    ~VulkanTexture() override;
-    VulkanTexture(const VulkanTexture&) = delete;
-    VulkanTexture& operator=(const VulkanTexture&) = delete;
 
     const rhi::TextureDesc& desc() const override { return desc_; }
 
-    VkImage image() const { return image_; }
+    VkImage image() const { return image_.get(); }
     // The view shaders sample: every layer (2D, 2D array or cube array), depth aspect only for D24S8.
-    VkImageView sampledView() const { return view_; }
+    VkImageView sampledView() const { return view_.get(); }
     VkFormat format() const { return format_; }
     VkImageLayout restingLayout() const { return restingLayout_; }
-    // One layer with every aspect, for a framebuffer; the caller destroys it.
-    VkImageView createAttachmentView(std::uint32_t layer) const;
+    // One layer with every aspect, for a framebuffer.
+    UniqueImageView createAttachmentView(std::uint32_t layer) const;
     // Moves one layer (or all with layer = ~0u) between layouts, waiting for all earlier work.
     void transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from, VkImageLayout to) const;
     void upload(std::uint32_t layer, std::span<const std::byte> data);
@@ -77,42 +71,37 @@ private:
     rhi::TextureDesc desc_;
     VkFormat format_;
     VkImageLayout restingLayout_;
-    VkImage image_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
-    VkImageView view_ = VK_NULL_HANDLE;
+    // Destroyed in reverse order: the view first, the memory last.
+    UniqueMemory memory_;
+    UniqueImage image_;
+    UniqueImageView view_;
 };
 
 class VulkanSampler final : public rhi::Sampler {
 public:
     VulkanSampler(std::shared_ptr<Context> context, const rhi::SamplerDesc& desc);
-    ~VulkanSampler() override;
-    VulkanSampler(const VulkanSampler&) = delete;
-    VulkanSampler& operator=(const VulkanSampler&) = delete;
 
     const rhi::SamplerDesc& desc() const override { return desc_; }
-    VkSampler handle() const { return sampler_; }
+    VkSampler handle() const { return sampler_.get(); }
 
 private:
     std::shared_ptr<Context> context_;
     rhi::SamplerDesc desc_;
-    VkSampler sampler_ = VK_NULL_HANDLE;
+    UniqueSampler sampler_;
 };
 
 class VulkanTimestampQueries final : public rhi::TimestampQueries {
 public:
     VulkanTimestampQueries(std::shared_ptr<Context> context, std::uint32_t count);
-    ~VulkanTimestampQueries() override;
-    VulkanTimestampQueries(const VulkanTimestampQueries&) = delete;
-    VulkanTimestampQueries& operator=(const VulkanTimestampQueries&) = delete;
 
     std::uint32_t count() const override { return count_; }
-    VkQueryPool handle() const { return pool_; }
+    VkQueryPool handle() const { return pool_.get(); }
     std::vector<double> readNanoseconds() const;
 
 private:
     std::shared_ptr<Context> context_;
     std::uint32_t count_;
-    VkQueryPool pool_ = VK_NULL_HANDLE;
+    UniqueQueryPool pool_;
 };
 
 } // namespace penumbra::vulkan

@@ -68,39 +68,28 @@ VulkanSwapchain::VulkanSwapchain(std::shared_ptr<Context> context)
 {
     if (!window_)
         throw rhi::Error("createSwapchain: the device was created without DeviceDesc::window");
-    check(glfwCreateWindowSurface(context_->instance.handle(), window_, nullptr, &surface_), "glfwCreateWindowSurface");
-    try {
-        VkBool32 supported = VK_FALSE;
-        check(vkGetPhysicalDeviceSurfaceSupportKHR(context_->physicalDevice, context_->queueFamily, surface_, &supported),
-              "vkGetPhysicalDeviceSurfaceSupportKHR");
-        if (!supported)
-            throw rhi::Error(fmt::format("Vulkan: {} cannot present to this window from its graphics queue",
-                                         context_->capabilities.device));
-        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        check(vkCreateFence(context_->device, &fenceInfo, nullptr, &acquired_), "vkCreateFence");
-        rebuild();
-    } catch (...) {
-        destroySwapchain();
-        vkDestroyFence(context_->device, acquired_, nullptr);
-        vkDestroySurfaceKHR(context_->instance.handle(), surface_, nullptr);
-        throw;
-    }
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+    check(glfwCreateWindowSurface(context_->instance.handle(), window_, nullptr, &surface), "glfwCreateWindowSurface");
+    surface_ = UniqueSurface(context_->instance.handle(), surface);
+    VkBool32 supported = VK_FALSE;
+    check(vkGetPhysicalDeviceSurfaceSupportKHR(context_->physicalDevice, context_->queueFamily, surface, &supported),
+          "vkGetPhysicalDeviceSurfaceSupportKHR");
+    if (!supported)
+        throw rhi::Error(fmt::format("Vulkan: {} cannot present to this window from its graphics queue",
+                                     context_->capabilities.device));
+    const VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    acquired_ = createOwned<UniqueFence>(context_->device, vkCreateFence, fenceInfo, "vkCreateFence");
+    rebuild();
 }
 
-VulkanSwapchain::~VulkanSwapchain()
-{
-    vkDeviceWaitIdle(context_->device);
-    destroySwapchain();
-    vkDestroyFence(context_->device, acquired_, nullptr);
-    vkDestroySurfaceKHR(context_->instance.handle(), surface_, nullptr);
-}
+// The members then destroy the fence, the swapchain and the surface, in that order.
+VulkanSwapchain::~VulkanSwapchain() { vkDeviceWaitIdle(context_->device); }
 
 void VulkanSwapchain::destroySwapchain()
 {
-    if (swapchain_)
+    if (swapchain_.get())
         vkQueueWaitIdle(context_->queue); // its images may still be on their way to the screen
-    vkDestroySwapchainKHR(context_->device, swapchain_, nullptr);
-    swapchain_ = VK_NULL_HANDLE;
+    swapchain_.reset();
     images_.clear();
 }
 
@@ -115,7 +104,7 @@ rhi::Extent VulkanSwapchain::drawableSize() const
 bool VulkanSwapchain::rebuild()
 {
     VkSurfaceCapabilitiesKHR caps;
-    check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_->physicalDevice, surface_, &caps),
+    check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_->physicalDevice, surface_.get(), &caps),
           "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
     const rhi::Extent size = drawableSize();
     // currentExtent is the window's size where the platform fixes it (X11), else 0xFFFFFFFF.
@@ -127,14 +116,14 @@ bool VulkanSwapchain::rebuild()
         return false;
     if (!(caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
         throw rhi::Error("Vulkan: the window's images cannot be copied into (no TRANSFER_DST usage)");
-    const VkSurfaceFormatKHR format = chooseFormat(context_->physicalDevice, surface_);
+    const VkSurfaceFormatKHR format = chooseFormat(context_->physicalDevice, surface_.get());
     format_ = format.format;
     readable_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
     if (!(context_->formatFeatures(format.format) & VK_FORMAT_FEATURE_BLIT_DST_BIT))
         throw rhi::Error("Vulkan: the window's image format cannot be blitted into");
 
     VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
-    info.surface = surface_;
+    info.surface = surface_.get();
     info.minImageCount = caps.maxImageCount == 0 ? caps.minImageCount + 1
                                                   : std::min(caps.minImageCount + 1, caps.maxImageCount);
     info.imageFormat = format.format;
@@ -147,15 +136,14 @@ bool VulkanSwapchain::rebuild()
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
     info.presentMode = VK_PRESENT_MODE_FIFO_KHR; // the one mode every driver offers
     info.clipped = VK_TRUE;
-    info.oldSwapchain = swapchain_;
-    VkSwapchainKHR created = VK_NULL_HANDLE;
-    check(vkCreateSwapchainKHR(context_->device, &info, nullptr, &created), "vkCreateSwapchainKHR");
+    info.oldSwapchain = swapchain_.get();
+    UniqueSwapchain created = createOwned<UniqueSwapchain>(context_->device, vkCreateSwapchainKHR, info, "vkCreateSwapchainKHR");
     destroySwapchain();
-    swapchain_ = created;
+    swapchain_ = std::move(created);
     std::uint32_t count = 0;
-    check(vkGetSwapchainImagesKHR(context_->device, swapchain_, &count, nullptr), "vkGetSwapchainImagesKHR");
+    check(vkGetSwapchainImagesKHR(context_->device, swapchain_.get(), &count, nullptr), "vkGetSwapchainImagesKHR");
     images_.resize(count);
-    check(vkGetSwapchainImagesKHR(context_->device, swapchain_, &count, images_.data()), "vkGetSwapchainImagesKHR");
+    check(vkGetSwapchainImagesKHR(context_->device, swapchain_.get(), &count, images_.data()), "vkGetSwapchainImagesKHR");
     return true;
 }
 
@@ -163,22 +151,22 @@ void VulkanSwapchain::show(const rhi::Texture& image, rhi::Image* window)
 {
     const VulkanTexture& source = vulkanObject<const VulkanTexture>(image, "present: the image");
     const rhi::Extent size = drawableSize();
-    if (!swapchain_ || size.width != extent_.width || size.height != extent_.height) {
+    if (!swapchain_.get() || size.width != extent_.width || size.height != extent_.height) {
         if (!rebuild())
             return;
     }
 
     std::uint32_t index = 0;
     const VkResult acquired =
-        vkAcquireNextImageKHR(context_->device, swapchain_, UINT64_MAX, VK_NULL_HANDLE, acquired_, &index);
+        vkAcquireNextImageKHR(context_->device, swapchain_.get(), UINT64_MAX, VK_NULL_HANDLE, acquired_.get(), &index);
     if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
         destroySwapchain(); // rebuilt at the next present
         return;
     }
     if (acquired != VK_SUBOPTIMAL_KHR)
         check(acquired, "vkAcquireNextImageKHR");
-    check(vkWaitForFences(context_->device, 1, &acquired_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
-    check(vkResetFences(context_->device, 1, &acquired_), "vkResetFences");
+    check(vkWaitForFences(context_->device, 1, acquired_.address(), VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    check(vkResetFences(context_->device, 1, acquired_.address()), "vkResetFences");
 
     if (window && !readable_)
         throw rhi::Error("Vulkan: the window's images cannot be read back (no TRANSFER_SRC usage)");
@@ -218,7 +206,7 @@ void VulkanSwapchain::show(const rhi::Texture& image, rhi::Image* window)
 
     VkPresentInfoKHR info{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     info.swapchainCount = 1;
-    info.pSwapchains = &swapchain_;
+    info.pSwapchains = swapchain_.address();
     info.pImageIndices = &index;
     const VkResult presented = vkQueuePresentKHR(context_->queue, &info);
     if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR)

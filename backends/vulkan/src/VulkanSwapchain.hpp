@@ -21,8 +21,6 @@ class VulkanSwapchain final : public rhi::Swapchain {
 public:
     explicit VulkanSwapchain(std::shared_ptr<Context> context);
     ~VulkanSwapchain() override;
-    VulkanSwapchain(const VulkanSwapchain&) = delete;
-    VulkanSwapchain& operator=(const VulkanSwapchain&) = delete;
 
     rhi::Extent drawableSize() const override;
 
@@ -36,9 +34,9 @@ private:
 
     std::shared_ptr<Context> context_;
     GLFWwindow* window_;
-    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
-    VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
-    VkFence acquired_ = VK_NULL_HANDLE;
+    UniqueSurface surface_;
+    UniqueSwapchain swapchain_; // after surface_: destroyed before it
+    UniqueFence acquired_;
     VkExtent2D extent_{};
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     bool readable_ = false; // the images allow TRANSFER_SRC, so presentAndReadBack works

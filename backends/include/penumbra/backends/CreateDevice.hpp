@@ -1,5 +1,6 @@
 #pragma once
 
+#include "penumbra/backends/Registry.hpp"
 #include "penumbra/rhi/Device.hpp"
 
 #include <memory>
@@ -7,7 +8,8 @@
 
 namespace penumbra {
 
-// Creates the device a desc asks for. A missing driver, display or extension is an
+// Creates the device a desc asks for, through the backend that desc.backend names. A backend
+// this build lacks is an rhi::UnsupportedError; a missing driver, display or extension is an
 // rhi::Error (or rhi::UnsupportedError) whose message says what is missing.
 std::unique_ptr<rhi::Device> createDevice(const rhi::DeviceDesc& desc);
 

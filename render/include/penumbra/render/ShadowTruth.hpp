@@ -21,15 +21,24 @@ scene::RenderedVisibility renderedVisibility(const rhi::Image& visibilityView);
 float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& settings, const scene::Scene& scene,
                       const scene::LightRef& light, glm::vec3 position);
 
-// The shadow ray of a G-buffer sample towards the light, as scene::traceLightVisibility and
-// scene::tracePositionalLightVisibility cast it.
-scene::ShadowRay truthShadowRay(const scene::Scene& scene, const scene::LightRef& light,
-                                const scene::GBufferSample& sample);
+// Shadow rays towards `light`, as the ray cast casts them.
+scene::ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef& light);
 
-// The ray-cast visibility of every pixel of `gbuffer` towards `light`.
-scene::LightVisibilityMask traceTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
-                                      const scene::CpuGBuffer& gbuffer, const scene::LightRef& light,
-                                      const scene::TraceProgress& progress = {});
+// How far from an exact shadow edge a correct shadow map of the plans may place it, in its texels: the filter's
+// reach k (1, 2, 3, 4 for the 2x2, 3x3, 5x5 and 7x7 filters), the default normal offset's lateral move of up to
+// k sqrt 2, and half a texel of rasterisation. Taken at the default normal bias, so that a larger one shows.
+float shadowEdgeMarginTexels(shadows::ShadowFilter filter);
+
+// The ray cast of `light` for every sample of `gbuffer`, and its shadow edges at the resolution `plans` give the
+// light (scene::traceShadowEdges with shadowEdgeMarginTexels texels).
+struct LightTruthTrace {
+    scene::LightVisibilityMask visibility;
+    std::vector<std::uint8_t> shadowEdges;
+};
+LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
+                                const scene::CpuGBuffer& gbuffer, const ShadowPlans& plans,
+                                const shadows::ShadowSettings& settings, const scene::LightRef& light,
+                                const scene::TraceProgress& progress = {});
 
 // The light's name, or "<kind> <index>" when it has none.
 std::string lightLabel(const scene::Scene& scene, const scene::LightRef& light);

@@ -38,7 +38,8 @@ public:
     float farDepth() const { return reversedZ_ ? 0.0f : 1.0f; }
     float clearDepth() const { return farDepth(); }
 
-    // NDC z of the near plane (the seeds' UNITY_NEAR_CLIP_VALUE): 0, or -1 for [-1, 1], 1 reversed.
+    // NDC z of the near plane: 0, or -1 for [-1, 1], 1 reversed (Unity's UNITY_NEAR_CLIP_VALUE, which
+    // Catlike Coding's "Directional Shadows" tutorial clamps to for shadow pancaking).
     float nearClipValue() const;
 
     CompareOp depthCompareOp(DepthTest test) const;

@@ -31,7 +31,8 @@ struct Capabilities {
     bool cubeArrays = false;
     std::uint32_t maxCubeSize = 0;
     // Linear filtering (hardware 2x2 PCF with a comparison sampler) per depth format,
-    // indexed by Format. lavapipe offers none (conventions note, section 4).
+    // indexed by Format. lavapipe offers none: its depth formats lack
+    // VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT.
     std::array<bool, 6> linearFilter{};
 
     bool supportsLinearFilter(Format f) const { return linearFilter[static_cast<std::size_t>(f)]; }

@@ -89,27 +89,31 @@ struct LightVisibilityMask {
 // float rounding at the test scene's 60-unit scale, far below any feature a test measures.
 inline constexpr float kShadowRayOffset = 1e-3f;
 
-// For every G-buffer sample: an occlusion ray from position + normal * normalOffset towards
-// -light.direction. `shadowRays` must be built with RayKind::Shadow (throws
-// std::invalid_argument otherwise).
-LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                         const DirectionalLight& light, float normalOffset = kShadowRayOffset,
-                                         const TraceProgress& progress = {});
-
-// The same for a spot or point light at `lightPosition`: rays end at the light.
-LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
-                                                   const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
-                                                   float normalOffset = kShadowRayOffset,
-                                                   const TraceProgress& progress = {});
-
-// The point from which a sample's shadow ray leaves, and the ray towards `light`: what the visibility traces
-// above cast, for tools that need more than a yes or no (the distance to the blocker, for instance).
+// A shadow ray towards a light, from a given origin.
 struct ShadowRay {
     glm::vec3 origin;
     glm::vec3 direction; // unit, towards the light
     float maxDistance;   // to the light; infinite for a directional light
 };
-ShadowRay shadowRay(const GBufferSample& sample, const DirectionalLight& light, float normalOffset = kShadowRayOffset);
-ShadowRay shadowRay(const GBufferSample& sample, glm::vec3 lightPosition, float normalOffset = kShadowRayOffset);
+using ShadowRayFrom = std::function<ShadowRay(glm::vec3 origin)>;
+ShadowRayFrom raysTowards(const DirectionalLight& light);
+ShadowRayFrom raysTowards(glm::vec3 lightPosition);
+
+// Where a sample's shadow ray leaves: position + normal * normalOffset.
+glm::vec3 shadowRayOrigin(const GBufferSample& sample, float normalOffset = kShadowRayOffset);
+
+// For every G-buffer sample: an occlusion ray from shadowRayOrigin(sample, normalOffset) towards the light.
+// `shadowRays` must be built with RayKind::Shadow (throws std::invalid_argument otherwise).
+LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                    const ShadowRayFrom& rayFrom, float normalOffset = kShadowRayOffset,
+                                    const TraceProgress& progress = {});
+
+// traceVisibility towards a directional light (rays along -light.direction) or a spot or point light at
+// `lightPosition` (rays end at the light).
+LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                         const DirectionalLight& light, float normalOffset = kShadowRayOffset);
+LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
+                                                   const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
+                                                   float normalOffset = kShadowRayOffset);
 
 } // namespace penumbra::scene

@@ -58,7 +58,8 @@ const char* lightKindName(LightKind kind);
 
 // Unit light direction for a light pitched `pitch` radians below the horizon and turned
 // `yaw` radians about +y, measured from +z towards +x (yaw 0 shines towards +z).
-// The seeds set lights up the same way (X rotation, then Y rotation).
+// Pitch turns about +x first and yaw about +y after it, so yaw never tilts the light: the
+// elevation stays `pitch` whatever the yaw.
 glm::vec3 lightDirection(float pitch, float yaw);
 
 } // namespace penumbra::scene

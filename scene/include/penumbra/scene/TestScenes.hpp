@@ -4,8 +4,7 @@
 
 namespace penumbra::scene {
 
-// The design document's shadow test scene (after the seeds' "plane with some opaque
-// objects, four directional lights 90 degrees apart"): a 60 x 60 ground plane at y = 0;
+// The shadow test scene, one place for every shadow artefact to show: a 60 x 60 ground plane at y = 0;
 // cubes, spheres and cylinders standing on it (their lowest points exactly at y = 0, so
 // peter-panning shows as a gap at the contact) and floating above it; a wall for
 // slope-bias acne; an 80-unit beam that runs from in front of the camera to far behind it

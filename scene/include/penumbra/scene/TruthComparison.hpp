@@ -29,7 +29,7 @@ inline constexpr float kShadowedBelow = 0.5f;
 enum class TruthVerdict : std::uint8_t {
     NotCompared, // background, facing away from the light, not receiving
     Undecided,   // truly lit or shadowed, but the shadow map has no say there
-    NearEdge,    // within kTruthEdgeMargin of a shadow or silhouette edge
+    NearEdge,    // within kTruthEdgeMargin of a change of class or object, or near a shadow edge in the light's view
     LitRight,
     ShadowedRight,
     Acne, // truly lit, rendered in shadow
@@ -65,9 +65,23 @@ struct TruthComparison {
     TruthVerdict at(std::uint32_t x, std::uint32_t y) const { return verdicts[std::size_t(y) * width + x]; }
 };
 
-// Throws std::invalid_argument when the three pictures differ in size.
+// Shadow edges as a shadow map sees them. A map of texel size s whose filter reaches f texels around the lookup
+// and whose normal offset moves the lookup by up to b texels may place an edge anywhere within (f + b + 1/2) s of
+// the exact one, however many pixels that covers on screen (many, where light grazes a receiver). A sample is
+// near a shadow edge when its ray-cast visibility differs at one of 8 points around it on its tangent plane
+// whose projections across the light's rays lie radius(sample) (world units) from its own, in the directions
+// of a square's sides and diagonals. A sample whose tangent plane is within 3 degrees of the light's rays is
+// near an edge. Returns 1 for those samples; 0 elsewhere and for samples neither truly lit nor shadowed.
+std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                           const LightVisibilityMask& truth, const ShadowRayFrom& rayFrom,
+                                           const std::function<float(const GBufferSample&)>& radius,
+                                           const TraceProgress& progress = {});
+
+// `shadowEdges` (traceShadowEdges, or empty for none) adds its samples to the edges left out. Throws
+// std::invalid_argument when the pictures differ in size.
 TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth,
-                                 const RenderedVisibility& rendered, int edgeMargin = kTruthEdgeMargin);
+                                 const RenderedVisibility& rendered, const std::vector<std::uint8_t>& shadowEdges = {},
+                                 int edgeMargin = kTruthEdgeMargin);
 
 // Peter-panning: the largest distance along the light from a leak pixel to the surface that truly shadows it,
 // in shadow-map texels at that pixel (`texelSize(position)`, world units). Leaks farther than
@@ -75,7 +89,7 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
 // a contact. 0 without leaks near a contact.
 inline constexpr float kContactTexels = 8.0f;
 float contactGapTexels(const TruthComparison& comparison, const CpuGBuffer& gbuffer, const RayCaster& shadowRays,
-                       const std::function<ShadowRay(const GBufferSample&)>& rayOf,
+                       const ShadowRayFrom& rayFrom,
                        const std::function<float(glm::vec3)>& texelSize, float contactTexels = kContactTexels);
 
 } // namespace penumbra::scene

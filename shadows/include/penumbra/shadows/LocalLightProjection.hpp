@@ -23,8 +23,8 @@ glm::vec3 cubeFaceAxis(CubeFace face);
 CubeFace cubeFace(glm::vec3 direction);
 
 // A right-handed camera at `position` looking along the face's axis: an ordinary, unmirrored view,
-// so front faces stay front faces and no row of it is negated (the design document's engine renders
-// cube faces upside down and undoes it that way).
+// so front faces stay front faces and no row of it is negated (Unity renders cube faces upside down
+// and undoes it that way, as Catlike Coding's "Point and Spot Shadows" tutorial shows).
 glm::mat4 pointFaceView(CubeFace face, glm::vec3 position);
 
 // A right-handed camera at `position` looking along `direction` (unit), with any stable up vector.

@@ -16,7 +16,8 @@ enum class CascadeBlend { Hard, Soft, Dither };
 // Width of the filter's kernel in texels: 2, 3, 5, 7.
 int filterSize(ShadowFilter filter);
 
-// The design document's "filter size" for the normal bias and the culling-sphere shrink:
+// The "filter size" of Catlike Coding's "Directional Shadows" tutorial (section "Shadow Quality")
+// for the normal bias and the culling-sphere shrink:
 // enum + 1 = 1, 2, 3, 4 texels (texel size x this x sqrt 2 is the normal bias), not the kernel width.
 float normalBiasFilterFactor(ShadowFilter filter);
 
@@ -35,7 +36,7 @@ struct DirectionalShadowSettings {
 
 // Where point lights keep their six faces.
 enum class PointShadowMode {
-    Atlas,   // six tiles of the other atlas, the face picked in the lit shader (the design document)
+    Atlas,   // six tiles of the other atlas, the face picked in the lit shader (Catlike Coding's "Point and Spot Shadows")
     CubeMap, // a depth cube map per light, sampled with hardware cube lookups
 };
 

@@ -79,6 +79,8 @@ namespace penumbra::opengl {
     X(GetStringi, GETSTRINGI)                                                                                          \
     X(GetTextureSubImage, GETTEXTURESUBIMAGE)                                                                          \
     X(GetUniformLocation, GETUNIFORMLOCATION)                                                                          \
+    X(IsProgram, ISPROGRAM)                                                                                            \
+    X(IsVertexArray, ISVERTEXARRAY)                                                                                    \
     X(LinkProgram, LINKPROGRAM)                                                                                        \
     X(MapNamedBufferRange, MAPNAMEDBUFFERRANGE)                                                                        \
     X(NamedBufferStorage, NAMEDBUFFERSTORAGE)                                                                          \
