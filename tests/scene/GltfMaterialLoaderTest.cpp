@@ -57,10 +57,19 @@ TEST_F(GltfLoaderTest, MaterialFactorsTexturesAndExtensionsAreRead)
     EXPECT_FLOAT_EQ(m.normalScale, 0.5f);
     EXPECT_FLOAT_EQ(m.occlusionStrength, 0.3f);
     EXPECT_EQ(m.emissive, glm::vec3(2.0f, 1.0f, 4.0f));
-    for (const std::optional<MaterialTexture>& t : m.textures) {
+    for (const std::optional<MaterialTexture>& t : m.textures)
         ASSERT_TRUE(t.has_value());
-        EXPECT_EQ(t->image, 0u) << "one image, decoded once";
-    }
+    // One glTF texture, decoded once per colour space: base colour and emissive read it as sRGB colour, the
+    // other slots as linear data.
+    ASSERT_EQ(loaded.scene.textures.size(), 2u) << "one scene texture per colour space";
+    const std::uint32_t srgb = m.texture(TextureSlot::BaseColor)->image;
+    EXPECT_EQ(loaded.scene.textures.at(srgb).colorSpace, TextureColorSpace::Srgb);
+    EXPECT_EQ(m.texture(TextureSlot::Emissive)->image, srgb);
+    const std::uint32_t linear = m.texture(TextureSlot::MetallicRoughness)->image;
+    EXPECT_NE(linear, srgb);
+    EXPECT_EQ(loaded.scene.textures.at(linear).colorSpace, TextureColorSpace::Linear);
+    EXPECT_EQ(m.texture(TextureSlot::Normal)->image, linear);
+    EXPECT_EQ(m.texture(TextureSlot::Occlusion)->image, linear);
     EXPECT_EQ(m.texture(TextureSlot::BaseColor)->texCoord, 1u);
     EXPECT_EQ(m.texture(TextureSlot::Emissive)->texCoord, 1u) << "KHR_texture_transform's texCoord overrides";
     const TextureTransform& moved = m.texture(TextureSlot::MetallicRoughness)->transform;
