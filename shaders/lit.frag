@@ -1,7 +1,8 @@
 #version 450
 // Lambert diffuse plus GGX specular for up to 8 directional lights (4 with shadows), each attenuated by its
 // cascaded shadow, and up to 16 spot and point lights with their atlas shadows; clip materials are cut
-// with the same alpha as their shadows.
+// with the same alpha as their shadows. glTF 2.0 metallic-roughness materials (section 3.9): factors times
+// textures, vertex colours, normal, occlusion and emissive textures, KHR_materials_unlit.
 
 #include "transform.glsl"
 #include "shadow_filter.glsl"
@@ -13,6 +14,9 @@
 layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
 layout(location = 2) in vec2 vUv;
+layout(location = 3) in vec2 vUv1;
+layout(location = 4) in vec4 vTangent;
+layout(location = 5) in vec4 vColor;
 
 layout(location = 0) out vec4 outColor;
 
@@ -41,6 +45,25 @@ vec3 linearToSrgb(vec3 c)
 {
     c = clamp(c, 0.0, 1.0);
     return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+// Smallest roughness the GGX terms take: at 0 the distribution is a Dirac peak (0 / 0 at n = h).
+const float MIN_ROUGHNESS = 0.03;
+
+vec4 sampleMap(sampler2D map, int slot) { return texture(map, transformedUv(uvRows(slot), vUv, vUv1)); }
+
+// The front face's shading normal: the interpolated normal, perturbed by the normal texture in the tangent frame
+// (glTF 2.0 section 3.9.3: bitangent = w * cross(normal, tangent), x and y scaled by normalTexture.scale).
+vec3 frontNormal()
+{
+    const vec3 n = normalize(vNormal);
+    if (!hasMap(PENUMBRA_TEXTURE_NORMAL))
+        return n;
+    const vec3 t = normalize(vTangent.xyz - n * dot(n, vTangent.xyz));
+    const vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
+    vec3 mapped = sampleMap(normalMap, PENUMBRA_TEXTURE_NORMAL).xyz * 2.0 - 1.0;
+    mapped.xy *= object.normal.x;
+    return normalize(mat3(t, b, n) * mapped);
 }
 
 const vec3 cascadeColors[5] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.25, 0.4, 1.0),
@@ -99,14 +122,25 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
 void main()
 {
     const int casterMode = int(object.surface.w);
-    const bool textured = object.flags.y != 0;
-    const vec4 texel = texture(baseColorMap, vUv);
-    if (casterMode == PENUMBRA_CASTER_CLIP &&
-        materialAlpha(object.baseColor.a, casterMode, vUv, textured, texel.a) < object.surface.z)
+    const bool textured = hasMap(PENUMBRA_TEXTURE_BASE_COLOR);
+    const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
+    const vec4 texel = texture(baseColorMap, baseUv);
+    const float alpha = materialAlpha(object.baseColor.a, casterMode, baseUv, textured, texel.a) * vColor.a;
+    if (casterMode == PENUMBRA_CASTER_CLIP && alpha < object.surface.z)
         discard;
+    // Blended surfaces cover by their alpha; everything else is opaque.
+    const float coverage = object.flags.w != 0 ? alpha : 1.0;
 
-    // Surfaces seen from behind (through clip holes) are shaded on the side the camera sees.
-    const vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);
+    // Base colour textures are RGBA8_SRGB: sampling has decoded them to linear light before filtering.
+    const vec3 base = object.baseColor.rgb * vColor.rgb * (textured ? texel.rgb : vec3(1.0));
+    // Unlit surfaces show no shadow: the visibility view leaves them undecided.
+    if (object.flags.z != 0) {
+        outColor = frame.config.y == PENUMBRA_VIEW_VISIBILITY ? vec4(1.0, 1.0, 1.0, 0.0)
+                                                              : vec4(linearToSrgb(base), coverage);
+        return;
+    }
+    // Back faces (of double-sided materials, or seen through clip holes) are shaded with the flipped normal.
+    const vec3 n = gl_FrontFacing ? frontNormal() : -frontNormal();
     // The triangle's plane, for the shadows' normal offset (its sign does not matter: it is turned to each light).
     const vec3 geometric = normalize(cross(dFdxFine(vPosition), dFdyFine(vPosition)));
     const vec3 toCamera = frame.cameraPosition.xyz - vPosition;
@@ -119,9 +153,13 @@ void main()
         return;
     }
 
-    // Base colour textures are RGBA8_SRGB: sampling has decoded them to linear light before filtering.
-    const vec3 base = object.baseColor.rgb * (textured ? texel.rgb : vec3(1.0));
-    vec3 color = frame.ambient.rgb * base;
+    const vec4 metalRough = sampleMap(metallicRoughnessMap, PENUMBRA_TEXTURE_METALLIC_ROUGHNESS);
+    const float metallic = object.surface.x * metalRough.b;
+    const float roughness = max(object.surface.y * metalRough.g, MIN_ROUGHNESS);
+    const float occlusion = 1.0 + object.emissive.w * (sampleMap(occlusionMap, PENUMBRA_TEXTURE_OCCLUSION).r - 1.0);
+    // A sky/ground hemisphere: the ambient colour from above, the ground colour from below.
+    const vec3 ambient = mix(frame.ambientGround.rgb, frame.ambient.rgb, 0.5 + 0.5 * n.y);
+    vec3 color = ambient * base * occlusion;
     for (int i = 0; i < frame.config.x; ++i) {
         const vec3 l = -frame.lightDirection[i].xyz;
         const float nl = dot(n, l);
@@ -129,7 +167,7 @@ void main()
             continue;
         const int slot = object.flags.x != 0 ? int(frame.lightDirection[i].w) : -1;
         const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric, l);
-        color += brdf(n, v, l, base, object.surface.x, object.surface.y) * frame.lightColor[i].rgb * nl * attenuation;
+        color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }
     for (int i = 0; i < frame.config.z; ++i) {
         const LocalLight light = localLight(i);
@@ -140,10 +178,12 @@ void main()
         const vec2 shadowData = object.flags.x != 0 ? shadow.zw : vec2(-1.0, 0.0);
         const float attenuation = otherShadowAttenuation(shadowData, light.isPoint, frame.localPosition[i].xyz,
                                                          frame.localAxis[i].xyz, vPosition, geometric, globalStrength);
-        color += brdf(n, v, light.l, base, object.surface.x, object.surface.y) * frame.localColor[i].rgb * nl *
-                 light.falloff * attenuation;
+        color += brdf(n, v, light.l, base, metallic, roughness) * frame.localColor[i].rgb * nl * light.falloff *
+                 attenuation;
     }
+    // Emissive textures are RGBA8_SRGB too: already linear when sampled.
+    color += object.emissive.rgb * sampleMap(emissiveMap, PENUMBRA_TEXTURE_EMISSIVE).rgb;
     if (frame.config.y == PENUMBRA_VIEW_CASCADES)
         color = mix(color, cascadeColors[min(cascade.index, 4)] * 0.8, 0.6);
-    outColor = vec4(linearToSrgb(color), 1.0);
+    outColor = vec4(linearToSrgb(color), coverage);
 }

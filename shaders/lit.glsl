@@ -1,5 +1,7 @@
 // Uniform blocks of the lit pass (penumbra::render::LitFrameUniforms, LitObjectUniforms).
 
+#include "lit_constants.glsl"
+
 layout(std140, binding = 0) uniform Frame {
     mat4 viewProjection;
     vec4 cameraPosition;     // xyz
@@ -13,6 +15,7 @@ layout(std140, binding = 0) uniform Frame {
     vec4 localColor[16];     // linear rgb x intensity, w = 1 for a point light, 0 for a spot light
     vec4 localAxis[16];      // spot cone axis (unit, away from the light)
     vec4 localShadow[16];    // spot angle scale and offset, first shadow tile or -1, shadow strength
+    vec4 ambientGround;      // linear rgb from below (= ambient without a hemisphere)
 } frame;
 
 layout(std140, binding = 1) uniform Object {
@@ -20,8 +23,20 @@ layout(std140, binding = 1) uniform Object {
     mat4 normalMatrix;       // inverse transpose of the model matrix
     vec4 baseColor;          // linear rgb, alpha
     vec4 surface;            // metallic, roughness, alpha cutoff, caster mode (material.glsl)
-    ivec4 flags;             // receives shadows, has a base colour texture
+    ivec4 flags;             // receives shadows, textures present (bit per PENUMBRA_TEXTURE_*), unlit, blended
+    vec4 emissive;           // linear rgb, w = occlusion strength
+    vec4 normal;             // normal texture scale, sign of det(model)
+    vec4 uvTransforms[10];   // per PENUMBRA_TEXTURE_*: its uv transform rows (material.glsl, transformedUv)
 } object;
 
-layout(binding = 7) uniform sampler2D baseColorMap; // sRGB-encoded; a white texel for untextured materials
+// A white texel where the material has no such texture.
+layout(binding = PENUMBRA_BINDING_BASE_COLOR_MAP) uniform sampler2D baseColorMap; // sRGB-encoded
+layout(binding = PENUMBRA_BINDING_METALLIC_ROUGHNESS_MAP) uniform sampler2D metallicRoughnessMap; // B metal, G rough
+layout(binding = PENUMBRA_BINDING_NORMAL_MAP) uniform sampler2D normalMap;       // tangent space, 0.5 = 0
+layout(binding = PENUMBRA_BINDING_OCCLUSION_MAP) uniform sampler2D occlusionMap; // R
+layout(binding = PENUMBRA_BINDING_EMISSIVE_MAP) uniform sampler2D emissiveMap;   // sRGB-encoded
+
+bool hasMap(int slot) { return (object.flags.y & (1 << slot)) != 0; }
+
+vec4[2] uvRows(int slot) { return vec4[2](object.uvTransforms[2 * slot], object.uvTransforms[2 * slot + 1]); }
 

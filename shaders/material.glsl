@@ -16,6 +16,14 @@ float materialAlpha(float baseAlpha, int casterMode, vec2 uv, bool textured, flo
     return ((cell.x + cell.y) & 1) == 0 ? baseAlpha : 0.0;
 }
 
+// A texture's uv (KHR_texture_transform): rows[0].w picks TEXCOORD_0 or TEXCOORD_1 (textureInfo.texCoord), rows 0
+// and 1 of the transform's 3 x 3 matrix map it (penumbra::shadows::uvTransformRows packs them).
+vec2 transformedUv(vec4 rows[2], vec2 uv0, vec2 uv1)
+{
+    const vec3 uv = vec3(rows[0].w > 0.5 ? uv1 : uv0, 1.0);
+    return vec2(dot(rows[0].xyz, uv), dot(rows[1].xyz, uv));
+}
+
 // Jimenez 2014, "Next Generation Post Processing in Call of Duty: Advanced Warfare": a dither in
 // [0, 1) per pixel that looks like blue noise. gl_FragCoord counts rows from the top on every backend.
 float interleavedGradientNoise(vec2 pixel)

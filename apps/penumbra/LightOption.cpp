@@ -1,5 +1,7 @@
 #include "LightOption.hpp"
 
+#include "penumbra/rhi/Error.hpp"
+
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -117,6 +119,25 @@ void addLight(scene::Scene& scene, const LightOption& light)
                 scene.pointLights.push_back(l);
         },
         light);
+}
+
+std::optional<render::AmbientLight> parseAmbientOption(const std::string& text)
+{
+    const auto fields = numberFields(text);
+    if (!fields || fields->size() < 2 || fields->size() > 3)
+        return std::nullopt;
+    const std::optional<glm::vec3> color = vec3Of((*fields)[0]);
+    const std::optional<float> intensity = scalarOf((*fields)[1]);
+    const std::optional<glm::vec3> ground = fields->size() == 3 ? vec3Of((*fields)[2]) : std::nullopt;
+    if (!color || !intensity || (fields->size() == 3 && !ground))
+        return std::nullopt;
+    const render::AmbientLight ambient{*color, *intensity, ground};
+    try {
+        render::validate(ambient);
+    } catch (const rhi::Error&) {
+        return std::nullopt;
+    }
+    return ambient;
 }
 
 } // namespace penumbra::apps

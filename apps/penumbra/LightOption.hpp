@@ -1,5 +1,6 @@
 #pragma once
 
+#include "penumbra/render/AmbientLight.hpp"
 #include "penumbra/scene/Scene.hpp"
 
 #include <optional>
@@ -22,5 +23,12 @@ inline constexpr const char* kLightSyntax = "sun:dx,dy,dz[:intensity], spot:px,p
 std::optional<LightOption> parseLightOption(const std::string& text);
 
 void addLight(scene::Scene& scene, const LightOption& light);
+
+// --ambient r,g,b:intensity[:gr,gg,gb]: linear colour and intensity, and the ground's colour for a sky/ground
+// hemisphere (render::AmbientLight).
+inline constexpr const char* kAmbientSyntax = "r,g,b:intensity[:groundR,groundG,groundB]";
+
+// nullopt for text that does not follow the syntax or is out of render::validate's range.
+std::optional<render::AmbientLight> parseAmbientOption(const std::string& text);
 
 } // namespace penumbra::apps

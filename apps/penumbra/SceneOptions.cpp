@@ -1,10 +1,10 @@
 #include "SceneOptions.hpp"
 
 #include "LightOption.hpp"
+#include "RenderSettings.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/GltfLoader.hpp"
-#include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -96,7 +96,21 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                 return parseLightOption(s) ? std::string() : fmt::format("'{}' is not {}", s, kLightSyntax);
             },
             "LIGHT"));
-    command.add_option("--settings", options.settings, "Shadow settings JSON file")->check(CLI::ExistingFile);
+    command
+        .add_option("--ambient", options.ambient,
+                    fmt::format("Ambient light: {} (linear; the third field makes a sky/ground hemisphere), e.g. "
+                                "0.6,0.7,1:0.1:0.3,0.25,0.2; default 1,1,1:0.03",
+                                kAmbientSyntax))
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return parseAmbientOption(s) ? std::string()
+                                             : fmt::format("'{}' is not {} with colours of at least 0 and an intensity "
+                                                           "of 0 to {}",
+                                                           s, kAmbientSyntax, render::kMaxAmbientIntensity);
+            },
+            "AMBIENT"));
+    command.add_option("--settings", options.settings, "Shadow settings JSON file, with an optional \"ambient\" object")
+        ->check(CLI::ExistingFile);
     command.add_option("--size", options.size, "Picture size as WIDTHxHEIGHT, each 1 to 8192")
         ->check(CLI::Validator(
             [](std::string& s) {
@@ -151,8 +165,13 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     render::FrameDesc frame;
     frame.width = size->width;
     frame.height = size->height;
-    if (!options.settings.empty())
-        frame.shadows = shadows::loadShadowSettings(options.settings);
+    if (!options.settings.empty()) {
+        RenderSettings settings = loadRenderSettings(options.settings);
+        frame.shadows = settings.shadows;
+        frame.ambient = settings.ambient.value_or(frame.ambient);
+    }
+    if (!options.ambient.empty())
+        frame.ambient = parseAmbientOption(options.ambient).value();
     return frame;
 }
 

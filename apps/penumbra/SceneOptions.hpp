@@ -12,11 +12,12 @@
 
 namespace penumbra::apps {
 
-// What to render, shared by `render` and `parity`: --scene, --camera, --light, --settings, --size.
+// What to render, shared by `render` and `parity`: --scene, --camera, --light, --ambient, --settings, --size.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
     std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
+    std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
     std::string settings;
     std::string size = "1280x720";
 };
@@ -33,7 +34,8 @@ struct LoadedScene {
 // errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 
-// Size and shadow settings of the frame; throws rhi::Error naming the settings file and field.
+// Size, shadow settings and ambient light of the frame (--ambient over the settings file's "ambient"); throws
+// rhi::Error naming the settings file and field.
 render::FrameDesc frameDesc(const SceneOptions& options);
 
 // One line per rendered configuration: size, lights, caster draws and the GPU time of each pass;

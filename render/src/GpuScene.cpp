@@ -78,6 +78,18 @@ const rhi::Sampler& GpuScene::sampler(std::optional<std::uint32_t> index) const
     return index ? *samplers_.at(*index) : *whiteSampler_;
 }
 
+const rhi::Texture& GpuScene::map(const scene::Material& material, scene::TextureSlot slot) const
+{
+    const std::optional<scene::MaterialTexture>& texture = material.texture(slot);
+    return this->texture(texture ? std::optional(texture->image) : std::nullopt);
+}
+
+const rhi::Sampler& GpuScene::mapSampler(const scene::Material& material, scene::TextureSlot slot) const
+{
+    const std::optional<scene::MaterialTexture>& texture = material.texture(slot);
+    return sampler(texture ? std::optional(texture->image) : std::nullopt);
+}
+
 void GpuScene::setMaxAnisotropy(float anisotropy)
 {
     if (anisotropy == anisotropy_)
@@ -88,16 +100,24 @@ void GpuScene::setMaxAnisotropy(float anisotropy)
             samplerDesc(scene_.textures[i].sampler, anisotropy_, debugName(scene_.textures[i])));
 }
 
+shadows::UvTransformRows GpuScene::uvTransform(const std::optional<scene::MaterialTexture>& texture)
+{
+    return texture ? shadows::uvTransformRows(texture->transform.matrix(), texture->texCoord)
+                   : shadows::uvTransformRows(glm::mat3(1.0f), 0);
+}
+
 std::vector<shadows::ShadowCaster> GpuScene::casters() const
 {
     std::vector<shadows::ShadowCaster> casters;
     for (const scene::Object& object : scene_.objects) {
         const scene::Material& material = scene_.materialOf(object);
+        const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
         if (const auto mode = casterMode(material.caster))
             casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
                                static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
                                *mode, material.baseColor.a, material.alphaCutoff, &baseColorMap(material),
-                               &baseColorSampler(material), material.baseColorTexture.has_value()});
+                               &baseColorSampler(material), baseColor.has_value(), uvTransform(baseColor),
+                               material.doubleSided});
     }
     return casters;
 }
@@ -113,7 +133,8 @@ std::vector<shadows::Bounds> GpuScene::casterBounds() const
 
 shadows::CasterVertexFormat GpuScene::vertexFormat()
 {
-    return {sizeof(scene::Vertex), offsetof(scene::Vertex, position), offsetof(scene::Vertex, uv)};
+    return {sizeof(scene::Vertex), offsetof(scene::Vertex, position), offsetof(scene::Vertex, uv),
+            offsetof(scene::Vertex, uv1)};
 }
 
 } // namespace penumbra::render

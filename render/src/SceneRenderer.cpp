@@ -14,14 +14,6 @@
 namespace penumbra::render {
 namespace {
 
-constexpr std::uint32_t kFrameBinding = 0;
-constexpr std::uint32_t kObjectBinding = 1;
-constexpr std::uint32_t kShadowBinding = 2;
-constexpr std::uint32_t kAtlasBinding = 3;
-constexpr std::uint32_t kOtherShadowBinding = 4;
-constexpr std::uint32_t kOtherAtlasBinding = 5;
-constexpr std::uint32_t kShadowCubesBinding = 6;
-constexpr std::uint32_t kBaseColorBinding = 7;
 constexpr rhi::Format kLitFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
@@ -143,11 +135,46 @@ void checkPlansFitFrame(const ShadowPlans& plans, const shadows::ShadowSettings&
 
 LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
 {
-    return {object.transform,
-            glm::transpose(glm::inverse(object.transform)),
-            material.baseColor,
-            {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
-            {material.receiveShadows ? 1 : 0, material.baseColorTexture ? 1 : 0, 0, 0}};
+    int textures = 0;
+    LitObjectUniforms u{object.transform,
+                        glm::transpose(glm::inverse(object.transform)),
+                        material.baseColor,
+                        {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
+                        {},
+                        glm::vec4(material.emissive, material.occlusionStrength),
+                        {material.normalScale, glm::determinant(glm::mat3(object.transform)) < 0.0f ? -1.0f : 1.0f,
+                         0.0f, 0.0f},
+                        {}};
+    for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
+        const std::optional<scene::MaterialTexture>& texture = material.textures[slot];
+        textures |= texture ? 1 << slot : 0;
+        const shadows::UvTransformRows rows = GpuScene::uvTransform(texture);
+        u.uvTransforms[2 * slot] = rows[0];
+        u.uvTransforms[2 * slot + 1] = rows[1];
+    }
+    u.flags = {material.receiveShadows ? 1 : 0, textures, material.unlit ? 1 : 0, material.blend ? 1 : 0};
+    return u;
+}
+
+// The lit pipeline's variants: culled or not (glTF doubleSided), opaque or alpha-blended over what is drawn
+// (alphaMode BLEND: tested against the opaque depth, not written).
+std::uint32_t pipelineIndex(bool doubleSided, bool blend) { return (doubleSided ? 1u : 0u) + (blend ? 2u : 0u); }
+
+// Opaque and masked objects in scene order, then blended ones from the farthest to the nearest (their world
+// bounds' centres from the camera), so each blends over what lies behind it (glTF 2.0 section 3.9.4, BLEND).
+std::vector<std::uint32_t> drawOrder(const scene::Scene& scene, const glm::vec3& camera)
+{
+    std::vector<std::uint32_t> order, blended;
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
+        (scene.materialOf(scene.objects[i]).blend ? blended : order).push_back(i);
+    const auto distance2 = [&](std::uint32_t i) {
+        const glm::vec3 d = scene.objects[i].worldBounds.center() - camera;
+        return glm::dot(d, d);
+    };
+    std::stable_sort(blended.begin(), blended.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return distance2(a) > distance2(b); });
+    order.insert(order.end(), blended.begin(), blended.end());
+    return order;
 }
 
 std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& frame, const std::string& name)
@@ -164,25 +191,36 @@ std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& 
 SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     : device_(device), gpuScene_(device, scene), shadowPass_(device, GpuScene::vertexFormat()),
       otherShadowPass_(device, GpuScene::vertexFormat()),
-      litVertex_(device.createShader(shaders::load("lit.vert"))),
-      litFragment_(device.createShader(shaders::load("lit.frag"))), commands_(device.createCommandList()),
+      litVertex_(device.createShader(litShader("lit.vert"))),
+      litFragment_(device.createShader(litShader("lit.frag"))), commands_(device.createCommandList()),
       timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(4) : nullptr),
       uniforms_(device, "lit pass uniforms")
 {
-    const shadows::CasterVertexFormat vertex = GpuScene::vertexFormat();
+    const auto offset = [](std::size_t bytes) { return static_cast<std::uint32_t>(bytes); };
     rhi::PipelineDesc desc;
     desc.vertex = litVertex_.get();
     desc.fragment = litFragment_.get();
-    desc.vertexLayout = {{{vertex.stride, false}},
-                         {{0, rhi::VertexFormat::Float3, vertex.positionOffset, 0},
-                          {1, rhi::VertexFormat::Float3, static_cast<std::uint32_t>(offsetof(scene::Vertex, normal)), 0},
-                          {2, rhi::VertexFormat::Float2, vertex.uvOffset, 0}}};
-    desc.cull = rhi::CullMode::Back;
-    desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
-    desc.colorTargets = {{kLitFormat}};
+    desc.vertexLayout = {{{sizeof(scene::Vertex), false}},
+                         {{0, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, position)), 0},
+                          {1, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, normal)), 0},
+                          {2, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv)), 0},
+                          {3, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv1)), 0},
+                          {4, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, tangent)), 0},
+                          {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
     desc.depthFormat = kDepthFormat;
-    desc.debugName = "lit";
-    litPipeline_ = device.createPipeline(desc);
+    for (const bool blend : {false, true})
+        for (const bool doubleSided : {false, true}) {
+            desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
+            desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
+            rhi::ColorTarget target{kLitFormat};
+            if (blend)
+                target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
+                                rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
+            desc.colorTargets = {target};
+            desc.debugName = fmt::format("lit ({}, {})", blend ? "blended" : "opaque",
+                                         doubleSided ? "double-sided" : "culled");
+            litPipelines_[pipelineIndex(doubleSided, blend)] = device.createPipeline(desc);
+        }
 }
 
 void SceneRenderer::prepareTargets(const FrameDesc& frame)
@@ -237,7 +275,8 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
         u.lightColor[i] = glm::vec4(lights[i].color * lights[i].intensity, 0.0f);
         u.lightDirection[i] = glm::vec4(glm::normalize(lights[i].direction), static_cast<float>(plan_.shadowSlots[i]));
     }
-    u.ambient = glm::vec4(frame.ambient, 0.0f);
+    u.ambient = glm::vec4(frame.ambient.sky(), 0.0f);
+    u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);
     u.config = {static_cast<int>(count), static_cast<int>(view), 0, 0};
     fillLocalLights(u, gpuScene_.scene(), otherPlan_);
     return u;
@@ -272,20 +311,33 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
                                   const rhi::UniformSlice& otherShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
+    // The visibility view reports shadows on every surface: blended ones are drawn opaque there, so the alpha
+    // channel keeps saying whether a shadow map decides the pixel.
     const bool visibility = frame.config.y == static_cast<int>(LitView::Visibility);
     commands.beginPass({.framebuffer = &target, .clearColor = visibility ? kUndecided : kBackground});
-    commands.bindPipeline(*litPipeline_);
-    rhi::bindUniform(commands, kFrameBinding, uniforms_.push(frame));
-    rhi::bindUniform(commands, kShadowBinding, shadowUniforms);
-    commands.bindTexture(kAtlasBinding, atlas_->texture(), atlas_->sampler());
-    rhi::bindUniform(commands, kOtherShadowBinding, otherShadowUniforms);
-    commands.bindTexture(kOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
-    commands.bindTexture(kShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
-    for (const scene::Object& object : scene.objects) {
+    const rhi::UniformSlice frameSlice = uniforms_.push(frame);
+    const rhi::Pipeline* bound = nullptr;
+    for (const std::uint32_t index : drawOrder(scene, glm::vec3(frame.cameraPosition))) {
+        const scene::Object& object = scene.objects[index];
         const scene::Material& material = scene.materialOf(object);
-        rhi::bindUniform(commands, kObjectBinding, uniforms_.push(objectUniforms(object, material)));
-        commands.bindTexture(kBaseColorBinding, gpuScene_.baseColorMap(material),
-                             gpuScene_.baseColorSampler(material));
+        const rhi::Pipeline* pipeline = litPipelines_[pipelineIndex(material.doubleSided, material.blend && !visibility)].get();
+        if (pipeline != bound) {
+            // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
+            commands.bindPipeline(*pipeline);
+            rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
+            rhi::bindUniform(commands, kLitShadowBinding, shadowUniforms);
+            commands.bindTexture(kLitAtlasBinding, atlas_->texture(), atlas_->sampler());
+            rhi::bindUniform(commands, kLitOtherShadowBinding, otherShadowUniforms);
+            commands.bindTexture(kLitOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
+            commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
+            bound = pipeline;
+        }
+        rhi::bindUniform(commands, kLitObjectBinding, uniforms_.push(objectUniforms(object, material)));
+        for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
+            const auto textureSlot = static_cast<scene::TextureSlot>(slot);
+            commands.bindTexture(litMaterialMapBinding(textureSlot), gpuScene_.map(material, textureSlot),
+                                 gpuScene_.mapSampler(material, textureSlot));
+        }
         commands.bindVertexBuffer(0, gpuScene_.vertices(object.mesh));
         commands.bindIndexBuffer(gpuScene_.indices(object.mesh), rhi::IndexType::UInt32);
         commands.drawIndexed(static_cast<std::uint32_t>(scene.meshOf(object).indices.size()));
@@ -314,6 +366,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
 FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans)
 {
     shadows::validate(frame.shadows);
+    validate(frame.ambient);
     checkPlansFitFrame(plans, frame.shadows);
     const AnisotropyChoice anisotropy = chooseAnisotropy(frame.maxAnisotropy, device_.capabilities());
     const int visibilityLight = frame.visibilityOf ? litLightIndex(*frame.visibilityOf) : -1;

@@ -187,13 +187,16 @@ Scene makeForestScene()
         scene.addMaterial({.name = "grass", .baseColor = {0.25f, 0.4f, 0.15f, 1.0f}, .roughness = 0.9f});
     const std::uint32_t bark =
         scene.addMaterial({.name = "bark", .baseColor = {0.3f, 0.2f, 0.12f, 1.0f}, .roughness = 0.8f});
+    const auto leafTexture = static_cast<std::uint32_t>(scene.textures.size());
     scene.textures.push_back(makeLeafTexture());
+    // Leaf cards are seen and lit from both sides, and cast from both.
     const std::uint32_t leaves = scene.addMaterial({.name = "leaves",
                                                     .baseColor = {1.0f, 1.0f, 1.0f, 1.0f},
                                                     .roughness = 0.6f,
                                                     .alphaCutoff = 0.5f,
                                                     .caster = CasterMode::Clip,
-                                                    .baseColorTexture = 0});
+                                                    .doubleSided = true,
+                                                    .textures = {MaterialTexture{.image = leafTexture}}});
     scene.addObject("terrain", scene.addMesh(makeTerrain()), ground, glm::mat4(1.0f));
     for (std::uint32_t i = 0; i < kTrees.size(); ++i) {
         Tree tree = makeTree(i + 1);

@@ -1,9 +1,10 @@
 #include "GltfAccessors.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
-#include <initializer_list>
+#include <span>
 
 namespace penumbra::scene::gltf {
 namespace {
@@ -47,7 +48,7 @@ struct ElementView {
 };
 
 ElementView viewOf(const Document& document, int index, std::string_view owner, std::string_view semantic,
-                   int expectedType, std::initializer_list<int> componentTypes)
+                   int expectedType, std::span<const int> componentTypes)
 {
     const tinygltf::Model& model = document.model();
     const tinygltf::Accessor& accessor = document.at(model.accessors, index, "accessor", owner);
@@ -127,6 +128,20 @@ std::vector<glm::vec<N, float>> readFloats(const Document& document, const Eleme
     return values;
 }
 
+constexpr std::array<int, 1> kFloatOnly{TINYGLTF_COMPONENT_TYPE_FLOAT};
+constexpr std::array<int, 3> kFloatOrNormalized{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+
+// VECn elements of one of `componentTypes`, as floats.
+template <int N, std::size_t C>
+std::vector<glm::vec<N, float>> readVectors(const Document& document, int accessor, std::string_view owner,
+                                            std::string_view semantic, const std::array<int, C>& componentTypes)
+{
+    constexpr int type = N == 2 ? TINYGLTF_TYPE_VEC2 : N == 3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4;
+    const ElementView view = viewOf(document, accessor, owner, semantic, type, componentTypes);
+    return readFloats<N>(document, view, accessor, owner, semantic);
+}
+
 } // namespace
 
 std::string describe(std::string_view kind, int index, const std::string& name)
@@ -137,25 +152,38 @@ std::string describe(std::string_view kind, int index, const std::string& name)
 std::vector<glm::vec3> readVec3(const Document& document, int accessor, std::string_view owner,
                                 std::string_view semantic)
 {
-    const ElementView view =
-        viewOf(document, accessor, owner, semantic, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT});
-    return readFloats<3>(document, view, accessor, owner, semantic);
+    return readVectors<3>(document, accessor, owner, semantic, kFloatOnly);
 }
 
 std::vector<glm::vec2> readTexCoords(const Document& document, int accessor, std::string_view owner,
                                      std::string_view semantic)
 {
-    const ElementView view = viewOf(document, accessor, owner, semantic, TINYGLTF_TYPE_VEC2,
-                                    {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT});
-    return readFloats<2>(document, view, accessor, owner, semantic);
+    return readVectors<2>(document, accessor, owner, semantic, kFloatOrNormalized);
+}
+
+std::vector<glm::vec4> readVec4(const Document& document, int accessor, std::string_view owner,
+                                std::string_view semantic)
+{
+    return readVectors<4>(document, accessor, owner, semantic, kFloatOnly);
+}
+
+std::vector<glm::vec4> readColors(const Document& document, int accessor, std::string_view owner,
+                                  std::string_view semantic)
+{
+    // glTF 2.0 section 3.7.2.1: COLOR_n is VEC3 or VEC4.
+    if (document.at(document.model().accessors, accessor, "accessor", owner).type != TINYGLTF_TYPE_VEC3)
+        return readVectors<4>(document, accessor, owner, semantic, kFloatOrNormalized);
+    std::vector<glm::vec4> colors;
+    for (const glm::vec3& color : readVectors<3>(document, accessor, owner, semantic, kFloatOrNormalized))
+        colors.emplace_back(color, 1.0f);
+    return colors;
 }
 
 std::vector<std::uint32_t> readIndices(const Document& document, int accessor, std::string_view owner)
 {
-    const ElementView view = viewOf(document, accessor, owner, "indices", TINYGLTF_TYPE_SCALAR,
-                                    {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT});
+    constexpr std::array<int, 3> indexTypes{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT};
+    const ElementView view = viewOf(document, accessor, owner, "indices", TINYGLTF_TYPE_SCALAR, indexTypes);
     std::vector<std::uint32_t> indices(view.count, 0u);
     if (!view.data)
         return indices;

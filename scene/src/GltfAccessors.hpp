@@ -4,6 +4,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstdint>
 #include <string_view>
@@ -24,6 +25,14 @@ std::vector<glm::vec3> readVec3(const Document& document, int accessor, std::str
 // VEC2 of FLOAT, or of normalized UNSIGNED_BYTE / UNSIGNED_SHORT (TEXCOORD_n).
 std::vector<glm::vec2> readTexCoords(const Document& document, int accessor, std::string_view owner,
                                      std::string_view semantic);
+
+// VEC4 of FLOAT (TANGENT).
+std::vector<glm::vec4> readVec4(const Document& document, int accessor, std::string_view owner,
+                                std::string_view semantic);
+
+// VEC3 or VEC4 of FLOAT, or of normalized UNSIGNED_BYTE / UNSIGNED_SHORT (COLOR_n); VEC3 gets alpha 1.
+std::vector<glm::vec4> readColors(const Document& document, int accessor, std::string_view owner,
+                                  std::string_view semantic);
 
 // SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT (indices).
 std::vector<std::uint32_t> readIndices(const Document& document, int accessor, std::string_view owner);

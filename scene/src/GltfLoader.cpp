@@ -2,6 +2,7 @@
 
 #include "GltfDocument.hpp"
 #include "GltfNodes.hpp"
+#include "GltfUnsupported.hpp"
 
 #include "penumbra/scene/SceneDefaults.hpp"
 
@@ -158,12 +159,7 @@ GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options
     Scene& scene = result.scene;
     std::vector<std::string>& notes = result.notes;
     const Document document = parse(path, notes);
-    for (const std::string& extension : document.model().extensionsRequired)
-        if (extension != "KHR_lights_punctual")
-            document.fail(fmt::format("requires extension {}, which is not supported", extension));
-    for (const std::string& extension : document.model().extensionsUsed)
-        if (extension != "KHR_lights_punctual")
-            notes.push_back(fmt::format("extension {} ignored", extension));
+    gltf::checkSupport(document, notes);
     const gltf::NodeWalk walk = gltf::walkNodes(document, scene, notes);
     for (const gltf::LightInstance& light : walk.lights)
         addLight(document, light, scene, notes);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace penumbra::scene::gltf {
 namespace {
@@ -53,6 +54,58 @@ TextureImage toRgba8(const Document& document, const tinygltf::Image& image, con
     return texture;
 }
 
+double number(const Document& document, const tinygltf::Value& value, const std::string& field)
+{
+    if (!value.IsNumber() && !value.IsInt())
+        document.fail(fmt::format("{} is not a number", field));
+    return value.GetNumberAsDouble();
+}
+
+// A value of a glTF field that must lie in [low, high].
+float inRange(const Document& document, double value, double low, double high, const std::string& field)
+{
+    if (!(value >= low && value <= high))
+        document.fail(fmt::format("{} {} is outside [{}, {}]", field, value, low, high));
+    return float(value);
+}
+
+glm::vec2 vec2Field(const Document& document, const tinygltf::Value& object, const char* key, glm::vec2 fallback,
+                    const std::string& owner)
+{
+    if (!object.Has(key))
+        return fallback;
+    const tinygltf::Value& value = object.Get(key);
+    const std::string field = fmt::format("{}.{}", owner, key);
+    if (!value.IsArray() || value.ArrayLen() != 2)
+        document.fail(fmt::format("{} is not an array of 2 numbers", field));
+    return {float(number(document, value.Get(0), field)), float(number(document, value.Get(1), field))};
+}
+
+// KHR_texture_transform on a textureInfo: offset, rotation, scale, and a texCoord that overrides the
+// textureInfo's.
+void readTextureTransform(const Document& document, const tinygltf::ExtensionMap& extensions, MaterialTexture& texture,
+                          const std::string& owner)
+{
+    const auto found = extensions.find("KHR_texture_transform");
+    if (found == extensions.end())
+        return;
+    const tinygltf::Value& value = found->second;
+    const std::string field = owner + ".extensions.KHR_texture_transform";
+    texture.transform.offset = vec2Field(document, value, "offset", glm::vec2(0.0f), field);
+    texture.transform.scale = vec2Field(document, value, "scale", glm::vec2(1.0f), field);
+    if (value.Has("rotation"))
+        texture.transform.rotation = float(number(document, value.Get("rotation"), field + ".rotation"));
+    if (value.Has("texCoord"))
+        texture.texCoord = std::uint32_t(inRange(document, number(document, value.Get("texCoord"), field + ".texCoord"),
+                                                 0, kTexCoordSets - 1, field + ".texCoord"));
+}
+
+const tinygltf::Value* extension(const tinygltf::Material& material, const std::string& name)
+{
+    const auto found = material.extensions.find(name);
+    return found == material.extensions.end() ? nullptr : &found->second;
+}
+
 } // namespace
 
 std::uint32_t MaterialTable::material(int index, const std::string& primitive)
@@ -67,15 +120,59 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
         if (pbr.baseColorFactor.size() != 4)
             document_.fail(fmt::format("{}: baseColorFactor has {} values, expected 4", owner,
                                        pbr.baseColorFactor.size()));
+        const auto unit = [&](double value, const std::string& field) {
+            return inRange(document_, value, 0.0, 1.0, fmt::format("{}: {}", owner, field));
+        };
         material.name = gltf.name;
-        material.baseColor = glm::vec4(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]),
-                                       float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3]));
-        material.metallic = float(pbr.metallicFactor);
-        material.roughness = float(pbr.roughnessFactor);
+        for (int c = 0; c < 4; ++c)
+            material.baseColor[c] = unit(pbr.baseColorFactor[std::size_t(c)], "pbrMetallicRoughness.baseColorFactor");
+        material.metallic = unit(pbr.metallicFactor, "pbrMetallicRoughness.metallicFactor");
+        material.roughness = unit(pbr.roughnessFactor, "pbrMetallicRoughness.roughnessFactor");
         material.caster = casterMode(document_, gltf, owner);
-        material.alphaCutoff = float(gltf.alphaCutoff);
-        if (pbr.baseColorTexture.index >= 0)
-            material.baseColorTexture = texture(pbr.baseColorTexture.index, owner, TextureColorSpace::Srgb);
+        material.blend = gltf.alphaMode == "BLEND";
+        material.alphaCutoff = inRange(document_, gltf.alphaCutoff, 0.0, 1.0, owner + ": alphaCutoff");
+        material.doubleSided = gltf.doubleSided;
+        material.unlit = extension(gltf, "KHR_materials_unlit") != nullptr;
+        if (gltf.emissiveFactor.size() != 3)
+            document_.fail(fmt::format("{}: emissiveFactor has {} values, expected 3", owner, gltf.emissiveFactor.size()));
+        float emissiveStrength = 1.0f;
+        if (const tinygltf::Value* strength = extension(gltf, "KHR_materials_emissive_strength");
+            strength && strength->Has("emissiveStrength")) {
+            const std::string field = owner + ": extensions.KHR_materials_emissive_strength.emissiveStrength";
+            emissiveStrength = inRange(document_, number(document_, strength->Get("emissiveStrength"), field), 0.0,
+                                       std::numeric_limits<double>::infinity(), field);
+        }
+        for (int c = 0; c < 3; ++c)
+            material.emissive[c] = unit(gltf.emissiveFactor[std::size_t(c)], "emissiveFactor") * emissiveStrength;
+        material.normalScale = float(gltf.normalTexture.scale);
+        material.occlusionStrength = unit(gltf.occlusionTexture.strength, "occlusionTexture.strength");
+
+        // Base colour and emissive textures hold sRGB-encoded colour, the others linear data (glTF 2.0, section
+        // 3.9); one glTF texture read both ways becomes two images.
+        const auto read = [&](TextureSlot slot, int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions,
+                              const char* field) {
+            if (textureIndex < 0)
+                return;
+            const std::string where = fmt::format("{}: {}", owner, field);
+            const TextureColorSpace colorSpace = slot == TextureSlot::BaseColor || slot == TextureSlot::Emissive
+                                                     ? TextureColorSpace::Srgb
+                                                     : TextureColorSpace::Linear;
+            MaterialTexture texture{.image = this->texture(textureIndex, where, colorSpace),
+                                    .texCoord = std::uint32_t(inRange(document_, texCoord, 0, kTexCoordSets - 1,
+                                                                      where + ".texCoord"))};
+            readTextureTransform(document_, extensions, texture, where);
+            material.texture(slot) = texture;
+        };
+        read(TextureSlot::BaseColor, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+             pbr.baseColorTexture.extensions, "pbrMetallicRoughness.baseColorTexture");
+        read(TextureSlot::MetallicRoughness, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+             pbr.metallicRoughnessTexture.extensions, "pbrMetallicRoughness.metallicRoughnessTexture");
+        read(TextureSlot::Normal, gltf.normalTexture.index, gltf.normalTexture.texCoord, gltf.normalTexture.extensions,
+             "normalTexture");
+        read(TextureSlot::Occlusion, gltf.occlusionTexture.index, gltf.occlusionTexture.texCoord,
+             gltf.occlusionTexture.extensions, "occlusionTexture");
+        read(TextureSlot::Emissive, gltf.emissiveTexture.index, gltf.emissiveTexture.texCoord,
+             gltf.emissiveTexture.extensions, "emissiveTexture");
     }
     const std::uint32_t sceneIndex = scene_.addMaterial(std::move(material));
     materials_.emplace(index, sceneIndex);

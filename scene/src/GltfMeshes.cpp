@@ -1,6 +1,7 @@
 #include "GltfMeshes.hpp"
 
 #include "GltfAccessors.hpp"
+#include "GltfTangents.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -52,7 +53,8 @@ MeshData flatShaded(const std::vector<Vertex>& vertices, const std::vector<std::
 
 } // namespace
 
-MeshData readPrimitive(const Document& document, int meshIndex, int primitiveIndex)
+MeshData readPrimitive(const Document& document, int meshIndex, int primitiveIndex,
+                       std::optional<std::uint32_t> normalTexCoord)
 {
     const tinygltf::Mesh& gltfMesh = document.model().meshes[std::size_t(meshIndex)];
     const tinygltf::Primitive& primitive = gltfMesh.primitives[std::size_t(primitiveIndex)];
@@ -70,24 +72,30 @@ MeshData readPrimitive(const Document& document, int meshIndex, int primitiveInd
     for (std::size_t i = 0; i < positions.size(); ++i)
         vertices[i].position = positions[i];
 
-    const auto checkCount = [&](int accessor, const char* semantic, std::size_t count) {
+    const auto checkCount = [&](int accessor, const std::string& semantic, std::size_t count) {
         if (count != positions.size())
             document.fail(fmt::format("{}: accessor {} ({}) has {} elements but POSITION has {}", owner, accessor,
                                       semantic, count, positions.size()));
     };
-    const int normalAccessor = attribute(primitive, "NORMAL");
-    if (normalAccessor >= 0) {
-        const std::vector<glm::vec3> normals = readVec3(document, normalAccessor, owner, "NORMAL");
-        checkCount(normalAccessor, "NORMAL", normals.size());
-        for (std::size_t i = 0; i < normals.size(); ++i)
-            vertices[i].normal = normals[i];
-    }
-    if (const int uvAccessor = attribute(primitive, "TEXCOORD_0"); uvAccessor >= 0) {
-        const std::vector<glm::vec2> uvs = readTexCoords(document, uvAccessor, owner, "TEXCOORD_0");
-        checkCount(uvAccessor, "TEXCOORD_0", uvs.size());
-        for (std::size_t i = 0; i < uvs.size(); ++i)
-            vertices[i].uv = uvs[i];
-    }
+    // Reads the attribute `semantic`, if the primitive has it, into each vertex with `store`.
+    const auto readAttribute = [&](const std::string& semantic, auto read, auto store) {
+        const int accessor = attribute(primitive, semantic);
+        if (accessor < 0)
+            return false;
+        const auto values = read(document, accessor, owner, semantic);
+        checkCount(accessor, semantic, values.size());
+        for (std::size_t i = 0; i < values.size(); ++i)
+            store(vertices[i], values[i]);
+        return true;
+    };
+    const bool hasNormals =
+        readAttribute("NORMAL", readVec3, [](Vertex& v, const glm::vec3& n) { v.normal = n; });
+    readAttribute("TEXCOORD_0", readTexCoords, [](Vertex& v, const glm::vec2& uv) { v.uv = uv; });
+    readAttribute("TEXCOORD_1", readTexCoords, [](Vertex& v, const glm::vec2& uv) { v.uv1 = uv; });
+    readAttribute("COLOR_0", readColors, [](Vertex& v, const glm::vec4& c) { v.color = c; });
+    // glTF 2.0 section 3.7.2.1: TANGENT is only used together with NORMAL; flat normals need their own.
+    const bool hasTangents =
+        hasNormals && readAttribute("TANGENT", readVec4, [](Vertex& v, const glm::vec4& t) { v.tangent = t; });
 
     std::vector<std::uint32_t> indices;
     if (primitive.indices >= 0) {
@@ -105,12 +113,14 @@ MeshData readPrimitive(const Document& document, int meshIndex, int primitiveInd
                                   primitive.indices >= 0 ? "indices" : "vertices"));
 
     MeshData mesh;
-    if (normalAccessor >= 0) {
+    if (hasNormals) {
         mesh.vertices = std::move(vertices);
         mesh.indices = std::move(indices);
     } else {
         mesh = flatShaded(vertices, indices);
     }
+    if (normalTexCoord && !hasTangents)
+        computeTangents(mesh, *normalTexCoord);
     updateBounds(mesh);
     return mesh;
 }

@@ -67,19 +67,19 @@ private:
             notes_.push_back(fmt::format("{}: skipped, its transform scales it to nothing", name));
             return;
         }
-        if (node.skin >= 0)
-            notes_.push_back(fmt::format("{}: skin ignored, drawn in its bind pose", name));
         const bool mirrored = determinant < 0.0f;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const std::uint32_t material = materials_.material(
+                mesh.primitives[p].material, fmt::format("{} primitive {}", describe("mesh", node.mesh, mesh.name), p));
             const auto key = std::make_tuple(node.mesh, int(p), mirrored);
             auto found = meshes_.find(key);
             if (found == meshes_.end()) {
-                MeshData data = readPrimitive(document_, node.mesh, int(p));
+                const std::optional<MaterialTexture>& normal = scene_.materials[material].texture(TextureSlot::Normal);
+                MeshData data = readPrimitive(document_, node.mesh, int(p),
+                                              normal ? std::optional(normal->texCoord) : std::nullopt);
                 found = meshes_.emplace(key, scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data)))
                             .first;
             }
-            const std::uint32_t material = materials_.material(
-                mesh.primitives[p].material, fmt::format("{} primitive {}", describe("mesh", node.mesh, mesh.name), p));
             const std::string base = node.name.empty() ? (mesh.name.empty() ? name : mesh.name) : node.name;
             scene_.addObject(mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), found->second,
                              material, world);

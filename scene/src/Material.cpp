@@ -4,6 +4,21 @@
 
 namespace penumbra::scene {
 
+glm::mat3 TextureTransform::matrix() const
+{
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    // KHR_texture_transform: T * R * S with R = [[c, s], [-s, c]] in column-major order.
+    return glm::mat3(glm::vec3(c * scale.x, -s * scale.x, 0.0f), glm::vec3(s * scale.y, c * scale.y, 0.0f),
+                     glm::vec3(offset, 1.0f));
+}
+
+glm::vec2 textureUv(const std::optional<MaterialTexture>& texture, glm::vec2 uv0, glm::vec2 uv1)
+{
+    if (!texture)
+        return uv0;
+    return glm::vec2(texture->transform.matrix() * glm::vec3(texture->texCoord == 1 ? uv1 : uv0, 1.0f));
+}
+
 float textureAlpha(const TextureImage& texture, glm::vec2 uv)
 {
     if (texture.width == 0 || texture.height == 0)

@@ -36,8 +36,9 @@ struct AlphaTest {
 std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& material, RayKind kind)
 {
     std::optional<TextureImage> texture;
-    if (material.baseColorTexture && material.caster != CasterMode::On && material.caster != CasterMode::Off)
-        texture = scene.textures.at(*material.baseColorTexture);
+    const std::optional<MaterialTexture>& baseColor = material.texture(TextureSlot::BaseColor);
+    if (baseColor && material.caster != CasterMode::On && material.caster != CasterMode::Off)
+        texture = scene.textures.at(baseColor->image);
     switch (material.caster) {
     case CasterMode::Clip: return AlphaTest{material, material.alphaCutoff, std::move(texture)};
     case CasterMode::Dither:
@@ -172,7 +173,9 @@ RayCaster::RayCaster(const Scene& scene, RayKind kind) : data_(std::make_unique<
             for (std::size_t k = 0; k < 3; ++k) {
                 const Vertex& vertex = mesh.vertices[mesh.indices[3 * t + k]];
                 world[k] = glm::vec3(object.transform * glm::vec4(vertex.position, 1.0f));
-                uv[k] = vertex.uv;
+                // Where the passes read the base colour texture (its uv set and transform, affine, so it may be
+                // applied before the barycentric interpolation).
+                uv[k] = textureUv(material.texture(TextureSlot::BaseColor), vertex.uv, vertex.uv1);
                 triangleBounds.extend(world[k]);
             }
             triangles.push_back({world[0], world[1] - world[0], world[2] - world[0]});

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace penumbra::scene {
 namespace {
@@ -53,10 +55,24 @@ void validateObject(const Scene& scene, const Object& object, std::size_t index)
 
 void validateMaterial(const Scene& scene, const Material& material, std::size_t index)
 {
-    if (material.baseColorTexture && *material.baseColorTexture >= scene.textures.size())
-        throw SceneError(fmt::format("{}: texture {} does not exist (the scene has {} textures)",
-                                     describe("material", index, material.name), *material.baseColorTexture,
-                                     scene.textures.size()));
+    const std::string what = describe("material", index, material.name);
+    for (std::size_t slot = 0; slot < kTextureSlots; ++slot) {
+        const std::optional<MaterialTexture>& texture = material.textures[slot];
+        if (!texture)
+            continue;
+        if (texture->image >= scene.textures.size())
+            throw SceneError(fmt::format("{}: texture {} does not exist (the scene has {} textures)", what,
+                                         texture->image, scene.textures.size()));
+        if (texture->texCoord >= kTexCoordSets)
+            throw SceneError(fmt::format("{}: texture slot {} reads uv set {}, allowed 0 to {}", what, slot,
+                                         texture->texCoord, kTexCoordSets - 1));
+    }
+    if (material.occlusionStrength < 0.0f || material.occlusionStrength > 1.0f)
+        throw SceneError(fmt::format("{}: occlusionStrength {} is outside [0, 1]", what, material.occlusionStrength));
+    if (!(glm::all(glm::greaterThanEqual(material.emissive, glm::vec3(0.0f))) &&
+          glm::all(glm::lessThan(material.emissive, glm::vec3(std::numeric_limits<float>::infinity())))))
+        throw SceneError(fmt::format("{}: emissive ({}, {}, {}) is not finite and at least 0", what,
+                                     material.emissive.x, material.emissive.y, material.emissive.z));
 }
 
 void validateTexture(const TextureImage& texture, std::size_t index)

@@ -14,6 +14,11 @@ constexpr std::uint32_t kBaseColorBinding = 1;
 
 } // namespace
 
+UvTransformRows uvTransformRows(const glm::mat3& m, std::uint32_t uvSet)
+{
+    return {glm::vec4(m[0][0], m[1][0], m[2][0], static_cast<float>(uvSet)), glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f)};
+}
+
 rhi::Rect scissorOf(const rhi::Viewport& v)
 {
     return {static_cast<std::int32_t>(v.x), static_cast<std::int32_t>(v.y), static_cast<std::uint32_t>(v.width),
@@ -39,18 +44,23 @@ const ShadowCasterDraws::Pipelines& ShadowCasterDraws::pipelines(rhi::Format dep
     desc.vertex = vertex_.get();
     desc.vertexLayout = {{{vertexFormat_.stride, false}},
                          {{0, rhi::VertexFormat::Float3, vertexFormat_.positionOffset, 0},
-                          {2, rhi::VertexFormat::Float2, vertexFormat_.uvOffset, 0}}};
-    // Casters render their light-facing side, also through the mirrored cube face views.
-    desc.cull = mirrored ? rhi::cubeFaceCullMode(rhi::CullMode::Back) : rhi::CullMode::Back;
+                          {2, rhi::VertexFormat::Float2, vertexFormat_.uvOffset, 0},
+                          {3, rhi::VertexFormat::Float2, vertexFormat_.uv1Offset, 0}}};
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer, .clamp = clamp};
     desc.depthFormat = depthFormat;
     Pipelines created;
-    desc.fragment = opaqueFragment_.get();
-    desc.debugName = "shadow casters (opaque)";
-    created.opaque = device_.createPipeline(desc);
-    desc.fragment = alphaFragment_.get();
-    desc.debugName = "shadow casters (clip, dither)";
-    created.alphaTested = device_.createPipeline(desc);
+    for (const bool doubleSided : {false, true}) {
+        // Casters render their light-facing side, also through the mirrored cube face views; double-sided
+        // ones both sides.
+        desc.cull = doubleSided ? rhi::CullMode::None
+                                : (mirrored ? rhi::cubeFaceCullMode(rhi::CullMode::Back) : rhi::CullMode::Back);
+        desc.fragment = opaqueFragment_.get();
+        desc.debugName = doubleSided ? "shadow casters (opaque, double-sided)" : "shadow casters (opaque)";
+        created.opaque[doubleSided] = device_.createPipeline(desc);
+        desc.fragment = alphaFragment_.get();
+        desc.debugName = doubleSided ? "shadow casters (clip, dither, double-sided)" : "shadow casters (clip, dither)";
+        created.alphaTested[doubleSided] = device_.createPipeline(desc);
+    }
     return pipelines_.emplace(key, std::move(created)).first->second;
 }
 
@@ -67,8 +77,8 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
             throw rhi::Error(
                 fmt::format("shadow plan names caster {}, but {} casters were given", index, casters.size()));
         const ShadowCaster& caster = casters[index];
-        const rhi::Pipeline* pipeline =
-            caster.mode == ShadowCasterMode::Opaque ? pipelines.opaque.get() : pipelines.alphaTested.get();
+        const auto& variants = caster.mode == ShadowCasterMode::Opaque ? pipelines.opaque : pipelines.alphaTested;
+        const rhi::Pipeline* pipeline = variants[caster.doubleSided].get();
         if (pipeline != bound) {
             commands.bindPipeline(*pipeline);
             commands.setDepthBias(bias);
@@ -77,7 +87,8 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
         const ShadowCasterUniforms draw{view.viewProjection * caster.model,
                                         {caster.alpha, caster.alphaCutoff, static_cast<float>(caster.mode),
                                          pancakeInShader},
-                                        {view.ditherOrigin, caster.textured ? 1.0f : 0.0f, 0.0f}};
+                                        {view.ditherOrigin, caster.textured ? 1.0f : 0.0f, 0.0f},
+                                        caster.baseColorUv};
         rhi::bindUniform(commands, kDrawBinding, uniforms_.push(draw));
         if (caster.mode != ShadowCasterMode::Opaque) {
             if (!caster.baseColorMap || !caster.baseColorSampler)

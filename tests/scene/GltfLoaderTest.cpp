@@ -1,4 +1,4 @@
-#include "GltfBuilder.hpp"
+#include "GltfLoaderFixture.hpp"
 
 #include "penumbra/scene/GltfLoader.hpp"
 
@@ -7,64 +7,13 @@
 #include <glm/matrix.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <unistd.h>
 
 namespace penumbra::scene {
 namespace {
-
-using testing::Component;
-using testing::GltfBuilder;
-
-class GltfLoaderTest : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = std::filesystem::temp_directory_path() /
-                  ("penumbra-gltf-" + std::to_string(::getpid())) / info->name();
-        std::filesystem::create_directories(folder_);
-    }
-    void TearDown() override { std::filesystem::remove_all(folder_.parent_path()); }
-
-    std::filesystem::path write(const GltfBuilder& builder, const std::string& name = "scene.gltf")
-    {
-        const std::filesystem::path path = folder_ / name;
-        if (path.extension() == ".glb")
-            builder.writeGlb(path);
-        else
-            builder.writeGltf(path);
-        return path;
-    }
-
-    // The GltfError's message for loading `path`, or "" when it loads.
-    static std::string errorOf(const std::filesystem::path& path, const GltfOptions& options = {})
-    {
-        try {
-            loadGltf(path, options);
-        } catch (const GltfError& error) {
-            return error.what();
-        }
-        return {};
-    }
-
-    std::filesystem::path folder_;
-};
-
-// One cube mesh under one root node: the smallest scene with geometry.
-GltfBuilder cubeScene(Component indices = Component::UnsignedShort)
-{
-    GltfBuilder b;
-    const int mesh = testing::addCubeMesh(b, "Cube", -1, indices);
-    b.addRoot(b.add("nodes", {{"name", "cube"}, {"mesh", mesh}}));
-    return b;
-}
-
-nlohmann::json& primitive(GltfBuilder& b, int mesh = 0) { return b.json()["meshes"][std::size_t(mesh)]["primitives"][0]; }
-
-int attribute(GltfBuilder& b, const char* name) { return primitive(b)["attributes"][name].get<int>(); }
-
-#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
 
 TEST_F(GltfLoaderTest, HierarchyMultipliesTransformsInOrder)
 {
@@ -265,7 +214,10 @@ TEST_F(GltfLoaderTest, BaseColorTextureIsDecodedToRgba8)
         EXPECT_EQ(scene.textures[0].width, 2u);
         EXPECT_EQ(scene.textures[0].height, 2u);
         EXPECT_EQ(scene.textures[0].rgba, texels);
-        EXPECT_EQ(scene.materials.at(scene.objects[0].material).baseColorTexture, 0u);
+        const auto& baseColor = scene.materials.at(scene.objects[0].material).texture(TextureSlot::BaseColor);
+        ASSERT_TRUE(baseColor.has_value());
+        EXPECT_EQ(baseColor->image, 0u);
+        EXPECT_EQ(baseColor->texCoord, 0u);
     }
 }
 
@@ -281,8 +233,8 @@ TEST_F(GltfLoaderTest, SamplersReachTheSceneTextures)
     ASSERT_EQ(scene.textures.size(), 4u) << "one scene texture per glTF texture";
     const auto sampler = [&](int cube) {
         const Material& m = scene.materialOf(scene.objects.at(*scene.findObject("cube " + std::to_string(cube))));
-        EXPECT_EQ(scene.textures.at(*m.baseColorTexture).colorSpace, TextureColorSpace::Srgb);
-        return scene.textures.at(*m.baseColorTexture).sampler;
+        EXPECT_EQ(scene.textures.at(m.texture(TextureSlot::BaseColor)->image).colorSpace, TextureColorSpace::Srgb);
+        return scene.textures.at(m.texture(TextureSlot::BaseColor)->image).sampler;
     };
     const TextureSampler nearestMirrored = sampler(0);
     EXPECT_EQ(nearestMirrored.magFilter, TextureFilter::Nearest);
@@ -324,13 +276,17 @@ TEST_F(GltfLoaderTest, DefaultsForASceneWithoutLightsOrCamera)
     EXPECT_EQ(loaded.scene.lights[0].name, "default sun");
     EXPECT_LT(loaded.scene.lights[0].direction.y, 0.0f);
     const Camera& camera = loaded.scene.camera;
-    // The framing camera sees every corner of the cube in front of it, between its planes.
+    // The framing camera sees every corner of the cube in front of it, between its planes, and the cube fills most of
+    // the frame: its widest corner reaches 1 / 1.1 of the half field of view.
+    float widest = 0.0f;
     for (const glm::vec3& corner : loaded.scene.worldBounds().corners()) {
         const glm::vec3 view = glm::vec3(camera.view() * glm::vec4(corner, 1.0f));
         EXPECT_GT(-view.z, camera.nearPlane);
         EXPECT_LT(-view.z, camera.farPlane);
         EXPECT_LT(std::abs(view.y / view.z), std::tan(0.5f * camera.fovY));
+        widest = std::max({widest, std::abs(view.x / view.z), std::abs(view.y / view.z)});
     }
+    EXPECT_NEAR(widest / std::tan(0.5f * camera.fovY), 1.0f / 1.1f, 1e-3f);
     EXPECT_EQ(loaded.notes.size(), 2u);
 }
 

@@ -171,7 +171,8 @@ TEST(ForestSceneTest, HasTheTerrainFiveTreesAndOneSun)
         EXPECT_LT(triangles, 5500u) << tree;
         const Material& leaves = forest.materialOf(object(forest, tree + " leaves"));
         EXPECT_EQ(leaves.caster, CasterMode::Clip);
-        ASSERT_TRUE(leaves.baseColorTexture);
+        EXPECT_TRUE(leaves.doubleSided) << "leaf cards are drawn and cast from both faces";
+        ASSERT_TRUE(leaves.texture(TextureSlot::BaseColor));
     }
     ASSERT_EQ(forest.lights.size(), 1u);
     EXPECT_EQ(forest.objects.size(), 11u);

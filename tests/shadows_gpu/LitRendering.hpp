@@ -5,6 +5,7 @@
 #include "penumbra/scene/Scene.hpp"
 
 #include <functional>
+#include <glm/vec2.hpp>
 #include <string>
 
 namespace penumbra::testing {
@@ -15,6 +16,20 @@ inline rhi::Image renderLit(rhi::Device& device, const scene::Scene& scene, cons
     render::SceneRenderer renderer(device, scene);
     renderer.render(scene.camera, frame);
     return rhi::readTexture(device, renderer.litImage());
+}
+
+// The pixel a world point lands on in a width x height frame from `camera` (row 0 at the top).
+inline glm::uvec2 pixelOf(const rhi::Device& device, const scene::Camera& camera, std::uint32_t width,
+                          std::uint32_t height, glm::vec3 world)
+{
+    const glm::mat4 viewProjection =
+        device.conventions().perspective(camera.fovY, float(width) / float(height), camera.nearPlane,
+                                         camera.farPlane) *
+        camera.view();
+    const glm::vec4 clip = viewProjection * glm::vec4(world, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {static_cast<std::uint32_t>((0.5f * ndc.x + 0.5f) * float(width)),
+            static_cast<std::uint32_t>((0.5f - 0.5f * ndc.y) * float(height))};
 }
 
 // A change to the planned shadows before they are drawn: the negative controls' faults (ShadowFaults.hpp).

@@ -26,7 +26,7 @@ protected:
         render::FrameDesc f;
         f.width = kWidth;
         f.height = kHeight;
-        f.ambient = glm::vec3(0.0f);
+        f.ambient.intensity = 0.0f;
         return f;
     }
 

@@ -9,6 +9,7 @@
 // Across conventions the projection matrices themselves differ, so atlases are compared per texel within a few
 // ulp plus 4 subpixel steps of the local depth gradient, coverage exactly; lit images exactly where they
 // agree exactly and by count and PSNR against Vulkan.
+#include "GltfBuilder.hpp"
 #include "GpuTesting.hpp"
 #include "ImageDifference.hpp"
 #include "ShadowScene.hpp"
@@ -17,6 +18,7 @@
 #include "penumbra/rhi/Configuration.hpp"
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/GltfLoader.hpp"
 #include "penumbra/scene/Scene.hpp"
 
 #include <fmt/format.h>
@@ -26,9 +28,11 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace penumbra {
@@ -75,13 +79,25 @@ scene::TextureImage texturedChecker()
     return image;
 }
 
+// testing::materialsScene() as the glTF loader reads it: every supported material feature.
+scene::Scene gltfMaterialsScene()
+{
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / fmt::format("penumbra-parity-materials-{}.glb", ::getpid());
+    testing::materialsScene().writeGlb(path);
+    scene::Scene scene = scene::loadGltf(path).scene;
+    std::filesystem::remove(path);
+    return scene;
+}
+
 scene::Scene sceneOf(const Variant& variant)
 {
-    scene::Scene scene = apps::namedScene(variant.scene);
+    scene::Scene scene = variant.scene == "gltf-materials" ? gltfMaterialsScene() : apps::namedScene(variant.scene);
     if (variant.textured) {
+        const auto checker = static_cast<std::uint32_t>(scene.textures.size());
         scene.textures.push_back(texturedChecker());
         for (scene::Material& material : scene.materials)
-            material.baseColorTexture = 0;
+            material.texture(scene::TextureSlot::BaseColor) = scene::MaterialTexture{.image = checker};
     }
     if (variant.casters) {
         const std::uint32_t ground = scene.objects.at(scene.findObject("ground").value()).material;
@@ -416,6 +432,9 @@ TEST(ShadowParity, PointLightRoomCubeMaps)
 {
     checkParity({.name = "room-cube", .scene = "room", .pointMode = shadows::PointShadowMode::CubeMap});
 }
+// glTF materials as authored: double-sided, vertex colours, metallic-roughness, normal (with and without tangents),
+// occlusion, emissive, transformed and TEXCOORD_1 textures, unlit and blended surfaces.
+TEST(ShadowParity, GltfMaterials) { checkParity({.name = "gltf-materials", .scene = "gltf-materials"}); }
 TEST(ShadowParity, PointLightRoom) { checkParity({.name = "room", .scene = "room", .otherFilter = ShadowFilter::PCF3x3}); }
 
 // The negative controls: a real render of the 1x1 variant on the first compiled configuration, one texel or pixel

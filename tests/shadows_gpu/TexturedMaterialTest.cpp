@@ -55,17 +55,9 @@ protected:
         return renderLit(*device, scene, frame);
     }
 
-    // The pixel a world point lands on (row 0 at the top).
     glm::uvec2 pixelOf(const scene::Scene& scene, glm::vec3 world) const
     {
-        const glm::mat4 viewProjection =
-            device->conventions().perspective(scene.camera.fovY, float(kWidth) / float(kHeight),
-                                              scene.camera.nearPlane, scene.camera.farPlane) *
-            scene.camera.view();
-        const glm::vec4 clip = viewProjection * glm::vec4(world, 1.0f);
-        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-        return {static_cast<std::uint32_t>((0.5f * ndc.x + 0.5f) * kWidth),
-                static_cast<std::uint32_t>((0.5f - 0.5f * ndc.y) * kHeight)};
+        return testing::pixelOf(*device, scene.camera, kWidth, kHeight, world);
     }
 };
 

@@ -4,6 +4,7 @@
 #include <glm/common.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -242,6 +243,54 @@ int addCubeMesh(GltfBuilder& builder, const std::string& name, int material, Com
     return builder.add("meshes", {{"name", name}, {"primitives", {primitive}}});
 }
 
+int addQuadMesh(GltfBuilder& builder, const std::string& name, int material, const QuadAttributes& attributes)
+{
+    const std::array<glm::vec3, 4> positions{{{-1, 1, 0}, {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}}};
+    const std::array<glm::vec3, 4> normals{{{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}}};
+    const std::array<glm::vec2, 4> uvs{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+    const std::array<std::uint32_t, 6> indices{0, 3, 2, 0, 2, 1};
+    nlohmann::json attributeJson = {{"POSITION", builder.addPositions(positions)},
+                                    {"NORMAL", builder.addNormals(normals)},
+                                    {"TEXCOORD_0", builder.addUvs(uvs)}};
+    if (attributes.mirroredUv1) {
+        std::array<glm::vec2, 4> mirrored{};
+        for (std::size_t i = 0; i < uvs.size(); ++i)
+            mirrored[i] = {1.0f - uvs[i].x, uvs[i].y};
+        attributeJson["TEXCOORD_1"] = builder.addUvs(mirrored);
+    }
+    if (const auto color = attributes.color) {
+        if (color->a == 1.0f) {
+            std::vector<std::uint8_t> bytes;
+            for (std::size_t i = 0; i < positions.size(); ++i)
+                for (int c = 0; c < 3; ++c)
+                    bytes.push_back(std::uint8_t(std::lround((*color)[c] * 255.0f)));
+            attributeJson["COLOR_0"] = builder.addAccessor(bytes, positions.size(), "VEC3", Component::UnsignedByte, true);
+        } else {
+            const std::array<glm::vec4, 4> colors{*color, *color, *color, *color};
+            attributeJson["COLOR_0"] = builder.addAccessor(bytesOf(std::span<const glm::vec4>(colors)), colors.size(),
+                                                           "VEC4", Component::Float);
+        }
+    }
+    if (const auto tangent = attributes.tangent) {
+        const std::array<glm::vec4, 4> tangents{*tangent, *tangent, *tangent, *tangent};
+        attributeJson["TANGENT"] = builder.addAccessor(bytesOf(std::span<const glm::vec4>(tangents)), tangents.size(),
+                                                       "VEC4", Component::Float);
+    }
+    nlohmann::json primitive = {{"attributes", attributeJson},
+                                {"indices", builder.addIndices(indices, Component::UnsignedShort)}};
+    if (material >= 0)
+        primitive["material"] = material;
+    return builder.add("meshes", {{"name", name}, {"primitives", {primitive}}});
+}
+
+int addTextureRow(GltfBuilder& builder, std::span<const std::array<std::uint8_t, 4>> texels)
+{
+    std::vector<std::uint8_t> rgba;
+    for (const auto& texel : texels)
+        rgba.insert(rgba.end(), texel.begin(), texel.end());
+    return builder.add("textures", {{"source", builder.addPngImage(std::uint32_t(texels.size()), 1, rgba)}});
+}
+
 GltfBuilder exampleScene()
 {
     GltfBuilder b;
@@ -282,6 +331,80 @@ GltfBuilder exampleScene()
     // At (0, 5, 9), pitched down about 30 degrees towards the cubes.
     b.addRoot(b.add("nodes", {{"name", "overview camera"}, {"camera", 0}, {"translation", {0, 5, 9}},
                               {"rotation", {-0.2588190, 0, 0, 0.9659258}}}));
+    return b;
+}
+
+GltfBuilder materialsScene()
+{
+    GltfBuilder b;
+    using Texel = std::array<std::uint8_t, 4>;
+    const std::array<Texel, 2> redGreen{{{230, 30, 30, 255}, {30, 230, 30, 255}}};
+    const std::array<Texel, 2> metalRough{{{0, 255, 0, 255}, {0, 60, 255, 255}}};
+    const std::array<Texel, 2> tilted{{{204, 128, 230, 255}, {128, 204, 230, 255}}};
+    const std::array<Texel, 2> halves{{{255, 255, 255, 255}, {40, 40, 40, 255}}};
+    const auto factors = [](double r, double g, double bl, double a = 1.0) {
+        return nlohmann::json{{"baseColorFactor", {r, g, bl, a}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.6}};
+    };
+    const int ground = b.add("materials", {{"name", "ground"}, {"pbrMetallicRoughness", factors(0.8, 0.8, 0.75)}});
+    const int twoSided = b.add("materials", {{"name", "double-sided"}, {"doubleSided", true},
+                                             {"pbrMetallicRoughness", factors(0.8, 0.2, 0.2)}});
+    const int white = b.add("materials", {{"name", "white"}, {"pbrMetallicRoughness", factors(1, 1, 1)}});
+    nlohmann::json metal = factors(0.9, 0.6, 0.2);
+    metal["metallicFactor"] = 1.0;
+    metal["roughnessFactor"] = 1.0;
+    metal["metallicRoughnessTexture"] = {{"index", addTextureRow(b, metalRough)}};
+    const int metallic = b.add("materials", {{"name", "metal-rough"}, {"pbrMetallicRoughness", metal}});
+    const int bumpy = b.add("materials", {{"name", "normal"}, {"pbrMetallicRoughness", factors(0.7, 0.7, 0.9)},
+                                          {"normalTexture", {{"index", addTextureRow(b, tilted)}, {"scale", 1.0}}}});
+    const int glowing =
+        b.add("materials", {{"name", "occlusion-emissive"}, {"pbrMetallicRoughness", factors(0.5, 0.5, 0.5)},
+                            {"occlusionTexture", {{"index", addTextureRow(b, halves)}, {"strength", 1.0}}},
+                            {"emissiveTexture", {{"index", addTextureRow(b, halves)}}},
+                            {"emissiveFactor", {0.2, 0.6, 1.0}},
+                            {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1.5}}}}}});
+    nlohmann::json transformed = factors(1, 1, 1);
+    transformed["baseColorTexture"] = {
+        {"index", addTextureRow(b, redGreen)},
+        {"texCoord", 1},
+        {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0.0}}, {"rotation", 0.3}, {"scale", {2.0, 1.0}}}}}}};
+    const int moved = b.add("materials", {{"name", "transform-texcoord1"}, {"pbrMetallicRoughness", transformed}});
+    const int unlit = b.add("materials", {{"name", "unlit"}, {"pbrMetallicRoughness", factors(0.9, 0.5, 0.1)},
+                                          {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
+    const int glassRed = b.add("materials", {{"name", "glass red"}, {"alphaMode", "BLEND"},
+                                             {"pbrMetallicRoughness", factors(0.9, 0.1, 0.1, 0.5)}});
+    const int glassBlue = b.add("materials", {{"name", "glass blue"}, {"alphaMode", "BLEND"}, {"doubleSided", true},
+                                              {"pbrMetallicRoughness", factors(0.1, 0.2, 0.9, 0.5)}});
+    b.json()["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit"};
+
+    b.addRoot(b.add("nodes", {{"name", "ground"}, {"mesh", addCubeMesh(b, "ground", ground)},
+                              {"translation", {0, -0.1, 0}}, {"scale", {10, 0.1, 6}}}));
+    const auto quad = [&](const std::string& name, int mesh, double x, double y, double z, double yaw = 0.0) {
+        b.addRoot(b.add("nodes", {{"name", name}, {"mesh", mesh}, {"translation", {x, y, z}},
+                                  {"rotation", {0.0, std::sin(0.5 * yaw), 0.0, std::cos(0.5 * yaw)}},
+                                  {"scale", {0.8, 0.8, 0.8}}}));
+    };
+    quad("double-sided", addQuadMesh(b, "double-sided", twoSided), -6, 1, 0, 3.14159265);
+    quad("vertex colours", addQuadMesh(b, "vertex colours", white, {.color = glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)}), -4,
+         1, 0);
+    quad("metal-rough", addQuadMesh(b, "metal-rough", metallic), -2, 1, 0);
+    quad("normal with tangents", addQuadMesh(b, "normal with tangents", bumpy, {.tangent = glm::vec4(1, 0, 0, 1)}), 0,
+         1, 0);
+    quad("normal without tangents", addQuadMesh(b, "normal without tangents", bumpy), 2, 1, 0);
+    quad("occlusion-emissive", addQuadMesh(b, "occlusion-emissive", glowing), 4, 1, 0);
+    quad("transform-texcoord1", addQuadMesh(b, "transform-texcoord1", moved, {.mirroredUv1 = true}), 6, 1, 0);
+    quad("unlit", addQuadMesh(b, "unlit", unlit), -3, 1, 2.5);
+    quad("glass red", addQuadMesh(b, "glass red", glassRed), 2.5, 0.9, 2.5);
+    quad("glass blue", addQuadMesh(b, "glass blue", glassBlue), 3.1, 1.3, 3.0);
+
+    b.json()["extensionsUsed"].push_back("KHR_lights_punctual");
+    b.json()["extensions"]["KHR_lights_punctual"]["lights"] = {{{"name", "sun"}, {"type", "directional"}, {"intensity", 2.5}}};
+    // Behind the camera's right shoulder, 40 degrees up: the fronts of the quads and the ground are lit.
+    b.addRoot(b.add("nodes", {{"name", "sun"}, {"rotation", {-0.3265056, 0.2126311, 0.0761205, 0.9178247}},
+                              {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}));
+    b.add("cameras", {{"name", "materials"}, {"type", "perspective"},
+                      {"perspective", {{"yfov", 0.7}, {"znear", 0.1}, {"zfar", 60.0}}}});
+    b.addRoot(b.add("nodes", {{"name", "materials camera"}, {"camera", 0}, {"translation", {0, 3, 13}},
+                              {"rotation", {-0.0871557, 0, 0, 0.9961947}}}));
     return b;
 }
 

@@ -2,10 +2,13 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -62,9 +65,30 @@ int addCubeMesh(GltfBuilder& builder, const std::string& name, int material, Com
 // sampled by that glTF sampler (a JSON object), or by none for a null entry.
 GltfBuilder sampledTexturesScene(const std::vector<nlohmann::json>& samplers);
 
+// What a quad mesh carries besides POSITION, NORMAL and TEXCOORD_0.
+struct QuadAttributes {
+    std::optional<glm::vec4> color;            // COLOR_0 of every vertex, stored as normalized UNSIGNED_BYTE VEC3
+                                               // when alpha is 1, FLOAT VEC4 otherwise
+    std::optional<glm::vec4> tangent;          // TANGENT of every vertex
+    bool mirroredUv1 = false;                  // TEXCOORD_1 = (1 - u, v) of TEXCOORD_0
+};
+
+// A 2 x 2 quad in the xy plane facing +z (counter-clockwise seen from +z), u along +x and v along -y (uv (0, 0) at
+// the top left corner, (-1, 1, 0)). Returns the mesh index.
+int addQuadMesh(GltfBuilder& builder, const std::string& name, int material, const QuadAttributes& attributes = {});
+
+// An RGBA8 picture of width x 1 texels, each given as one RGBA value, as an image and a texture; returns the texture.
+int addTextureRow(GltfBuilder& builder, std::span<const std::array<std::uint8_t, 4>> texels);
+
 // The scene the command-line tests render: a ground plane, a cube standing on it and a rotated,
 // scaled one above it, a masked and a blended material, a directional light, a spot light, a
 // point light and a camera named "overview" looking at the cubes.
 GltfBuilder exampleScene();
+
+// Every material feature the loader supports in one scene, for parity across configurations: a ground, a
+// double-sided quad seen from behind, vertex colours, a metallic-roughness texture, a normal texture with and
+// without tangents, occlusion and emissive textures, transformed and TEXCOORD_1 textures, an unlit quad and two
+// blended ones; a sun and a camera named "materials".
+GltfBuilder materialsScene();
 
 } // namespace penumbra::testing

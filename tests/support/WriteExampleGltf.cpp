@@ -1,19 +1,23 @@
-// Writes the command-line tests' glTF scene (testing::exampleScene): write-example-gltf <file.gltf|file.glb>.
+// Writes the command-line tests' glTF scene (testing::exampleScene), or with `materials` the material features'
+// scene (testing::materialsScene): write-example-gltf [materials] <file.gltf|file.glb>.
 #include "GltfBuilder.hpp"
 
 #include <cstdio>
 #include <exception>
+#include <string_view>
 
 int main(int argc, char** argv)
 {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: %s <file.gltf|file.glb>\n", argv[0]);
+    const bool materials = argc == 3 && std::string_view(argv[1]) == "materials";
+    if (argc != 2 && !materials) {
+        std::fprintf(stderr, "usage: %s [materials] <file.gltf|file.glb>\n", argv[0]);
         return 2;
     }
     try {
-        const std::filesystem::path path = argv[1];
+        const std::filesystem::path path = argv[argc - 1];
         std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
-        const penumbra::testing::GltfBuilder scene = penumbra::testing::exampleScene();
+        const penumbra::testing::GltfBuilder scene =
+            materials ? penumbra::testing::materialsScene() : penumbra::testing::exampleScene();
         if (path.extension() == ".glb")
             scene.writeGlb(path);
         else

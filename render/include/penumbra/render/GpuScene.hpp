@@ -16,9 +16,10 @@ namespace penumbra::render {
 // casters in the order the shadow planner sees their bounds.
 class GpuScene {
 public:
-    // Validates the scene (scene::SceneError names what is wrong) and uploads every mesh and texture: RGBA8_SRGB
-    // for sRGB ones, with mip chains made on the CPU (rhi::writeMipChain) where their samplers read mip levels.
-    // Samplers start without anisotropic filtering.
+    // Validates the scene (scene::SceneError names what is wrong) and uploads every mesh and texture, each
+    // texture through one helper: colour ones (base colour, emissive; scene::TextureColorSpace::Srgb) as
+    // RGBA8_SRGB, data ones (metallic-roughness, normal, occlusion) as RGBA8, with mip chains made on the CPU
+    // (rhi::writeMipChain) where their samplers read mip levels. Samplers start without anisotropic filtering.
     GpuScene(rhi::Device& device, const scene::Scene& scene);
 
     const scene::Scene& scene() const { return scene_; }
@@ -28,13 +29,17 @@ public:
     // channel) and a bilinear sampler for nullopt.
     const rhi::Texture& texture(std::optional<std::uint32_t> index) const;
     const rhi::Sampler& sampler(std::optional<std::uint32_t> index) const;
+    // The material's texture in `slot` and the sampler of its glTF texture, or the white texel and its
+    // sampler for a material without one.
+    const rhi::Texture& map(const scene::Material& material, scene::TextureSlot slot) const;
+    const rhi::Sampler& mapSampler(const scene::Material& material, scene::TextureSlot slot) const;
     const rhi::Texture& baseColorMap(const scene::Material& material) const
     {
-        return texture(material.baseColorTexture);
+        return map(material, scene::TextureSlot::BaseColor);
     }
     const rhi::Sampler& baseColorSampler(const scene::Material& material) const
     {
-        return sampler(material.baseColorTexture);
+        return mapSampler(material, scene::TextureSlot::BaseColor);
     }
     // Makes every texture's sampler anew with this anisotropy (within the device's limit) where it changed.
     void setMaxAnisotropy(float anisotropy);
@@ -45,6 +50,8 @@ public:
     std::vector<shadows::Bounds> casterBounds() const;
 
     static shadows::CasterVertexFormat vertexFormat();
+    // The uv transform rows of a material texture (identity on TEXCOORD_0 without one).
+    static shadows::UvTransformRows uvTransform(const std::optional<scene::MaterialTexture>& texture);
 
 private:
     struct Mesh {

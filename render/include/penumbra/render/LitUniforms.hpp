@@ -1,10 +1,14 @@
 #pragma once
 
+#include "penumbra/rhi/Shader.hpp"
+#include "penumbra/scene/Material.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
+#include <string_view>
 
 namespace penumbra::render {
 
@@ -28,19 +32,44 @@ struct LitFrameUniforms {
     std::array<glm::vec4, maxLitLocalLights> localColor{};     // rgb x intensity, w = 1 point, 0 spot
     std::array<glm::vec4, maxLitLocalLights> localAxis{};      // spot cone axis
     std::array<glm::vec4, maxLitLocalLights> localShadow{};    // cone scale, offset, first tile or -1, strength
+    glm::vec4 ambientGround{0.0f}; // linear rgb from below (the hemisphere's ground; = ambient without one)
 };
 static_assert(offsetof(LitFrameUniforms, lightColor) == 96);
 static_assert(offsetof(LitFrameUniforms, ambient) == 352);
 static_assert(offsetof(LitFrameUniforms, localPosition) == 384);
-static_assert(sizeof(LitFrameUniforms) == 1408);
+static_assert(sizeof(LitFrameUniforms) == 1424);
 
 struct LitObjectUniforms {
     glm::mat4 model{1.0f};
     glm::mat4 normalMatrix{1.0f};
     glm::vec4 baseColor{1.0f};
-    glm::vec4 surface{0.0f}; // metallic, roughness, alpha cutoff, caster mode (material.glsl)
-    glm::ivec4 flags{0};     // receives shadows, has a base colour texture
+    glm::vec4 surface{0.0f};  // metallic, roughness, alpha cutoff, caster mode (material.glsl)
+    glm::ivec4 flags{0};      // receives shadows, textures present (bit per scene::TextureSlot), unlit, blended
+    glm::vec4 emissive{0.0f}; // linear rgb, w = occlusion strength
+    glm::vec4 normal{0.0f};   // normal texture scale, sign of det(model) (a mirroring transform flips bitangents)
+    // Per scene::TextureSlot, rows 0 and 1 of its uv transform, row 0's w its uv set (shadows::uvTransformRows).
+    std::array<glm::vec4, 2 * scene::kTextureSlots> uvTransforms{};
 };
-static_assert(sizeof(LitObjectUniforms) == 176);
+static_assert(sizeof(LitObjectUniforms) == 368);
+
+// Bindings of the lit pass; material textures take kLitMaterialMapBinding + scene::TextureSlot.
+inline constexpr std::uint32_t kLitFrameBinding = 0;
+inline constexpr std::uint32_t kLitObjectBinding = 1;
+inline constexpr std::uint32_t kLitShadowBinding = 2;
+inline constexpr std::uint32_t kLitAtlasBinding = 3;
+inline constexpr std::uint32_t kLitOtherShadowBinding = 4;
+inline constexpr std::uint32_t kLitOtherAtlasBinding = 5;
+inline constexpr std::uint32_t kLitShadowCubesBinding = 6;
+inline constexpr std::uint32_t kLitMaterialMapBinding = 7;
+
+inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
+{
+    return kLitMaterialMapBinding + static_cast<std::uint32_t>(slot);
+}
+
+// The lit pass shader `fileName` ("lit.vert", "lit.frag") with the include "lit_constants.glsl" that
+// lit.glsl reads: the material texture bindings and TextureSlot numbers above as GLSL macros, so the
+// numbers are written once, here.
+rhi::ShaderSource litShader(std::string_view fileName);
 
 } // namespace penumbra::render

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "penumbra/render/AmbientLight.hpp"
 #include "penumbra/render/GpuScene.hpp"
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/rhi/Device.hpp"
@@ -12,6 +13,7 @@
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -24,7 +26,7 @@ struct FrameDesc {
     std::uint32_t width = 1280;
     std::uint32_t height = 720;
     shadows::ShadowSettings shadows;
-    glm::vec3 ambient{0.03f};
+    AmbientLight ambient;
     bool cascadeView = false; // also render the lit image tinted by cascade index
     // Also render this light's raw shadow-map visibility (SceneRenderer::visibilityImage()): the filtered
     // shadow in red, green and blue (1 = lit) before strength and fades, and in alpha 1 where its shadow map
@@ -68,8 +70,8 @@ public:
 
     // render(camera, frame, planShadows(camera, frame)).
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
-    // Throws rhi::Error for settings out of range (naming the field; maxAnisotropy below 1 too), a zero-sized
-    // frame, plans whose atlases do not match the frame's settings, or a visibility view of a light the lit
+    // Throws rhi::Error for settings or ambient light out of range (naming the field; maxAnisotropy below 1 too), a
+    // zero-sized frame, plans whose atlases do not match the frame's settings, or a visibility view of a light the lit
     // pass does not draw.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
@@ -102,7 +104,8 @@ private:
     shadows::OtherShadowPass otherShadowPass_;
     std::unique_ptr<rhi::Shader> litVertex_;
     std::unique_ptr<rhi::Shader> litFragment_;
-    std::unique_ptr<rhi::Pipeline> litPipeline_;
+    // Culled or not, opaque or blended (SceneRenderer.cpp, pipelineIndex).
+    std::array<std::unique_ptr<rhi::Pipeline>, 4> litPipelines_;
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<rhi::TimestampQueries> timestamps_;
     rhi::UniformArena uniforms_;

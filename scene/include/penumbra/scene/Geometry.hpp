@@ -3,6 +3,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <array>
 #include <cstdint>
@@ -15,14 +16,19 @@ namespace penumbra::scene {
 // Front faces are counter-clockwise seen from outside, normals point outward; with the
 // RHI's conventions (CCW front faces in NDC, y up) back-face culling keeps the outside.
 
-// The vertex layout the lit pass and the shadow caster pass read: three attributes at
-// offsets 0, 12 and 24, stride 32, no padding.
+// The vertex layout the lit pass and the shadow caster pass read: six attributes, tightly packed
+// (offsets 0, 12, 24, 32, 40 and 56, stride 72).
 struct Vertex {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f, 1.0f, 0.0f};
-    glm::vec2 uv{0.0f}; // v = 0 is the top row of a texture, as in the RHI
+    glm::vec2 uv{0.0f};  // TEXCOORD_0; v = 0 is the top row of a texture, as in the RHI
+    glm::vec2 uv1{0.0f}; // TEXCOORD_1
+    // xyz along +u of the normal texture's uv set, w = +1 or -1: bitangent = w * cross(normal, xyz)
+    // (glTF 2.0 section 3.7.2.1, TANGENT). Only read for materials with a normal texture.
+    glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};
+    glm::vec4 color{1.0f}; // COLOR_0, linear, multiplies the base colour
 };
-static_assert(sizeof(Vertex) == 32, "Vertex must stay tightly packed: vertex input strides depend on it");
+static_assert(sizeof(Vertex) == 72, "Vertex must stay tightly packed: vertex input strides depend on it");
 
 // Axis-aligned box. The default value is empty (min > max), so extend() from it gives the
 // box of exactly the points added.

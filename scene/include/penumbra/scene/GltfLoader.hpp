@@ -31,15 +31,17 @@ struct GltfScene {
 };
 
 // Loads a glTF 2.0 file (.gltf with external or data-URI buffers, or .glb) into a validated Scene:
-// - every primitive of mode TRIANGLES becomes a mesh (POSITION, NORMAL, TEXCOORD_0; indices of
-//   8, 16 or 32 bits or none). Missing normals are computed flat, as glTF requires. Primitives are
+// - every primitive of mode TRIANGLES becomes a mesh (POSITION, NORMAL, TEXCOORD_0 and _1, COLOR_0,
+//   TANGENT, computed for normal textures without it; indices of 8, 16 or 32 bits or none). Missing normals are computed flat, as glTF requires. Primitives are
 //   shared between the nodes that use them; a node with a mirroring transform gets a copy with
 //   reversed winding (see Object).
 // - the default scene's node hierarchy (matrix or translation/rotation/scale); nodes with a
 //   singular transform (scale 0) are skipped.
-// - materials: baseColorFactor, metallic and roughness factors, baseColorTexture decoded into
-//   Scene::textures; alphaMode OPAQUE -> CasterMode::On, MASK -> Clip with alphaCutoff,
-//   BLEND -> Dither.
+// - materials (Material): factors and the five textures (decoded into Scene::textures, each image
+//   once) with texCoord and KHR_texture_transform, normal scale, occlusion strength, emissive with
+//   KHR_materials_emissive_strength, doubleSided, KHR_materials_unlit; alphaMode OPAQUE ->
+//   CasterMode::On, MASK -> Clip with alphaCutoff, BLEND -> Dither and Material::blend.
+// - what is left out (skins, morph targets, animations, other extensions) is noted once per file.
 // - KHR_lights_punctual: directional -> Scene::lights, spot -> spotLights (cone angles are
 //   half-angles in both), point -> pointLights; lights shine along their node's -z. A light
 //   without range gets kDefaultRangePerSqrtIntensity * sqrt(intensity) (at least 1): the distance

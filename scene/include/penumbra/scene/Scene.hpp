@@ -47,7 +47,7 @@ struct Scene {
     std::vector<DirectionalLight> lights;
     std::vector<SpotLight> spotLights;
     std::vector<PointLight> pointLights;
-    std::vector<TextureImage> textures; // referred to by Material::baseColorTexture
+    std::vector<TextureImage> textures; // referred to by Material::textures
     Camera camera;
 
     std::uint32_t addMesh(MeshData mesh);

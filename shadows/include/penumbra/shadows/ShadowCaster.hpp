@@ -2,8 +2,11 @@
 
 #include "penumbra/rhi/Resources.hpp"
 
+#include <array>
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
 
 namespace penumbra::shadows {
 
@@ -14,12 +17,18 @@ enum class ShadowCasterMode : std::uint8_t {
     Dither, // a texel is kept where alpha reaches the interleaved-gradient dither (alpha as coverage)
 };
 
-// Where position and uv sit in the caster's vertices (float3 and float2).
+// Where position and the two uv sets sit in the caster's vertices (float3, float2, float2).
 struct CasterVertexFormat {
     std::uint32_t stride = 0;
     std::uint32_t positionOffset = 0;
     std::uint32_t uvOffset = 0;
+    std::uint32_t uv1Offset = 0;
 };
+
+// A texture's uv transform (KHR_texture_transform) and uv set as shaders read it (material.glsl's
+// transformedUv): rows 0 and 1 of the 3 x 3 matrix, row 0's w the uv set (0 or 1).
+using UvTransformRows = std::array<glm::vec4, 2>;
+UvTransformRows uvTransformRows(const glm::mat3& transform, std::uint32_t uvSet);
 
 // One indexed mesh instance that casts shadows. A frame's casters are listed in the same order as
 // the caster bounds given to planDirectionalShadows, whose per-cascade lists index them.
@@ -36,6 +45,10 @@ struct ShadowCaster {
     const rhi::Texture* baseColorMap = nullptr;
     const rhi::Sampler* baseColorSampler = nullptr;
     bool textured = false;
+    UvTransformRows baseColorUv = uvTransformRows(glm::mat3(1.0f), 0); // where the base colour texture is read
+    // Drawn without culling, so both faces cast (glTF doubleSided); single-sided casters cast their
+    // light-facing side.
+    bool doubleSided = false;
 };
 
 } // namespace penumbra::shadows

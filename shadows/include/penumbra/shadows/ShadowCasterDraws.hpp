@@ -5,6 +5,7 @@
 #include "penumbra/rhi/UniformArena.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -18,8 +19,9 @@ struct ShadowCasterUniforms {
     glm::mat4 worldToClip{1.0f};
     glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
     glm::vec4 sampling{0.0f}; // dither origin, 1 when the alpha comes from the base colour texture, 0
+    UvTransformRows baseColorUv{}; // ShadowCaster::baseColorUv
 };
-static_assert(sizeof(ShadowCasterUniforms) == 96);
+static_assert(sizeof(ShadowCasterUniforms) == 128);
 
 // One shadow view's casters, drawn into the bound target's current viewport.
 struct ShadowViewDraw {
@@ -47,9 +49,10 @@ public:
                        std::span<const std::uint32_t> indices, std::span<const ShadowCaster> casters);
 
 private:
+    // Indexed by ShadowCaster::doubleSided: culled, not culled.
     struct Pipelines {
-        std::unique_ptr<rhi::Pipeline> opaque;
-        std::unique_ptr<rhi::Pipeline> alphaTested;
+        std::array<std::unique_ptr<rhi::Pipeline>, 2> opaque;
+        std::array<std::unique_ptr<rhi::Pipeline>, 2> alphaTested;
     };
     const Pipelines& pipelines(rhi::Format depthFormat, bool clamp, bool mirrored);
 

@@ -1,0 +1,79 @@
+#include "RenderSettings.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/shadows/ShadowSettingsJson.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fmt/format.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace penumbra::apps {
+namespace {
+
+using Json = nlohmann::json;
+
+glm::vec3 colorOf(const Json& value, const std::string& source, const char* field)
+{
+    if (!value.is_array() || value.size() != 3 || !value[0].is_number() || !value[1].is_number() ||
+        !value[2].is_number())
+        throw rhi::Error(fmt::format("{}: {}: {} is not an array of 3 numbers, allowed [r, g, b] each at least 0",
+                                     source, field, value.dump()));
+    return {value[0].get<float>(), value[1].get<float>(), value[2].get<float>()};
+}
+
+render::AmbientLight ambientOf(const Json& object, const std::string& source)
+{
+    if (!object.is_object())
+        throw rhi::Error(fmt::format("{}: ambient: {} is not an object, allowed fields color, intensity, ground", source,
+                                     object.dump()));
+    render::AmbientLight ambient;
+    for (const auto& [key, value] : object.items()) {
+        if (key == "color") {
+            ambient.color = colorOf(value, source, "ambient.color");
+        } else if (key == "ground") {
+            ambient.ground = colorOf(value, source, "ambient.ground");
+        } else if (key == "intensity") {
+            if (!value.is_number())
+                throw rhi::Error(fmt::format("{}: ambient.intensity: {} is not a number, allowed 0 to {}", source,
+                                             value.dump(), render::kMaxAmbientIntensity));
+            ambient.intensity = value.get<float>();
+        } else {
+            throw rhi::Error(fmt::format("{}: ambient.{}: unknown field, allowed color, intensity, ground", source, key));
+        }
+    }
+    try {
+        render::validate(ambient);
+    } catch (const rhi::Error& e) {
+        throw rhi::Error(fmt::format("{}: {}", source, e.what()));
+    }
+    return ambient;
+}
+
+} // namespace
+
+RenderSettings loadRenderSettings(const std::filesystem::path& path)
+{
+    const std::string source = path.string();
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw rhi::Error(fmt::format("{}: cannot open: {}", source, std::strerror(errno)));
+    std::ostringstream text;
+    text << in.rdbuf();
+    RenderSettings settings;
+    // The ambient object is this tool's; the rest is the shadow settings' JSON, whose parser names its own errors
+    // (bad JSON included).
+    Json root = Json::parse(text.str(), nullptr, false);
+    if (root.is_object() && root.contains("ambient")) {
+        settings.ambient = ambientOf(root["ambient"], source);
+        root.erase("ambient");
+        settings.shadows = shadows::parseShadowSettings(root.dump(), source);
+    } else {
+        settings.shadows = shadows::parseShadowSettings(text.str(), source);
+    }
+    return settings;
+}
+
+} // namespace penumbra::apps
