@@ -6,6 +6,7 @@
 
 #include <array>
 #include <fmt/format.h>
+#include <optional>
 #include <span>
 
 namespace penumbra::apps {
@@ -44,39 +45,39 @@ rhi::Image picture(std::uint32_t width, std::uint32_t height, Colour colour)
 
 bool isSurface(const LightTruth& t, std::size_t i) { return t.raycast.pixels[i] != scene::LightVisibility::Background; }
 
-rhi::Image raycastPicture(std::span<const LightTruth> lights)
+// Grey by the mean of visibilityOf(light, pixel) over the lights that decide the pixel (nullopt: undecided).
+template <typename VisibilityOf>
+rhi::Image meanVisibilityPicture(std::span<const LightTruth> lights, VisibilityOf visibilityOf)
 {
     const scene::LightVisibilityMask& first = lights.front().raycast;
     return picture(first.width, first.height, [&](std::size_t i) {
         float seen = 0.0f;
         int decided = 0;
-        for (const LightTruth& t : lights) {
-            const scene::LightVisibility v = t.raycast.pixels[i];
-            if (v == scene::LightVisibility::Lit || v == scene::LightVisibility::Shadowed) {
-                seen += v == scene::LightVisibility::Lit ? 1.0f : 0.0f;
+        for (const LightTruth& t : lights)
+            if (const std::optional<float> v = visibilityOf(t, i)) {
+                seen += *v;
                 ++decided;
             }
-        }
         if (decided == 0)
             return isSurface(lights.front(), i) ? kNoLight : kBackground;
         return grey(seen / float(decided));
     });
 }
 
+rhi::Image raycastPicture(std::span<const LightTruth> lights)
+{
+    return meanVisibilityPicture(lights, [](const LightTruth& t, std::size_t i) -> std::optional<float> {
+        const scene::LightVisibility v = t.raycast.pixels[i];
+        if (v != scene::LightVisibility::Lit && v != scene::LightVisibility::Shadowed)
+            return std::nullopt;
+        return v == scene::LightVisibility::Lit ? 1.0f : 0.0f;
+    });
+}
+
 rhi::Image shadowMapPicture(std::span<const LightTruth> lights)
 {
-    const scene::RenderedVisibility& first = lights.front().rendered;
-    return picture(first.width, first.height, [&](std::size_t i) {
-        float seen = 0.0f;
-        int decided = 0;
-        for (const LightTruth& t : lights)
-            if (t.rendered.decided[i]) {
-                seen += t.rendered.lit[i];
-                ++decided;
-            }
-        if (decided == 0)
-            return isSurface(lights.front(), i) ? kNoLight : kBackground;
-        return grey(seen / float(decided));
+    return meanVisibilityPicture(lights, [](const LightTruth& t, std::size_t i) -> std::optional<float> {
+        return t.rendered.decided[i] ? std::optional<float>(t.rendered.lit[i]) : std::nullopt;
     });
 }
 
