@@ -95,7 +95,7 @@ private:
         camera_.update(input);
         if (imgui_) {
             imgui_->newFrame();
-            if (drawSettingsPanel(edited_, status_))
+            if (drawSettingsPanel(edited_, status_, scene_))
                 status_.error = applyViewState(edited_, applied_, scene_);
             ImGui::Render();
         }
