@@ -173,6 +173,7 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     changed |= ImGui::Checkbox("cascade view", &state.cascadeView);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
+    changed |= ImGui::SliderFloat("texture anisotropy", &state.maxAnisotropy, 1.0f, 16.0f, "%.0f");
     if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen))
         changed |= shadowSettings(state.shadows);
     if (ImGui::CollapsingHeader("lights")) {

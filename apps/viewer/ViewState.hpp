@@ -28,6 +28,7 @@ struct ViewState {
     std::vector<ObjectShadowState> objects; // one per scene object, in scene order
     bool cascadeView = false;
     bool atlasOverlay = false;
+    float maxAnisotropy = 8.0f; // render::FrameDesc::maxAnisotropy
 };
 
 // What the panel shows besides the state.
