@@ -35,7 +35,23 @@ std::string debugName(const scene::TextureImage& image)
     return "texture '" + image.name + "'";
 }
 
-std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image)
+// The texture alpha that the first Clip material reading it as its base colour cuts at (its alphaCutoff over its
+// base colour's alpha, which multiplies the texture's): its mip levels keep level 0's alpha-tested coverage
+// (rhi::generateMipChain), so leaves do not thin out, lit or in shadow, as they recede.
+std::optional<float> clipCutoffOf(const scene::Scene& scene, std::uint32_t image)
+{
+    for (const scene::Material& material : scene.materials) {
+        const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
+        if (material.caster != scene::CasterMode::Clip || !baseColor || baseColor->image != image)
+            continue;
+        const float cutoff = material.alphaCutoff / material.baseColor.a;
+        return cutoff > 0.0f && cutoff <= 1.0f ? std::optional(cutoff) : std::nullopt;
+    }
+    return std::nullopt;
+}
+
+std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image,
+                                            std::optional<float> alphaCutoff = std::nullopt)
 {
     auto texture = device.createTexture({.width = image.width,
                                          .height = image.height,
@@ -44,7 +60,7 @@ std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::Te
                                                        ? rhi::Format::RGBA8_SRGB
                                                        : rhi::Format::RGBA8,
                                          .debugName = debugName(image)});
-    rhi::writeMipChain(device, *texture, 0, std::as_bytes(std::span(image.rgba)));
+    rhi::writeMipChain(device, *texture, 0, std::as_bytes(std::span(image.rgba)), alphaCutoff);
     return texture;
 }
 
@@ -60,7 +76,7 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
                            upload(device, mesh.indices, rhi::BufferUsage::Index, name + " indices")});
     }
     for (const scene::TextureImage& image : scene.textures) {
-        textures_.push_back(uploadTexture(device, image));
+        textures_.push_back(uploadTexture(device, image, clipCutoffOf(scene, std::uint32_t(textures_.size()))));
         samplers_.push_back(device.createSampler(samplerDesc(image.sampler, anisotropy_, debugName(image))));
     }
     const scene::TextureImage white{.name = "white texel", .width = 1, .height = 1, .rgba = {255, 255, 255, 255},
