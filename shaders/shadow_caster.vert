@@ -1,19 +1,37 @@
 #version 450
-// Shadow caster pass: light clip space, pancaked onto the near plane when the device has no depth clamp.
+// Shadow caster pass: light clip space, pancaked onto the near plane when the device has no depth clamp. In the
+// caster-side normal bias mode the vertices move against their light-facing normal by the offset receivers would
+// take (Unity's UnityClipSpaceShadowCasterPos; Catlike Coding, "Rendering 7: Shadows", section 2.1, Bias).
 
 #include "material.glsl"
+#include "normal_offset.glsl"
 #include "shadow_caster.glsl"
 #include "transform.glsl"
 
 layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 layout(location = 3) in vec2 inUv1;
 
 layout(location = 0) out vec2 vUv;
 
+vec4 casterClip()
+{
+    if (draw.reach.x <= 0.0)
+        return transformPoint(draw.worldToClip, inPosition);
+    const vec3 world = transformPoint(draw.model, inPosition).xyz;
+    const vec3 normal = normalize(vec3(dot(draw.normalRows[0].xyz, inNormal), dot(draw.normalRows[1].xyz, inNormal),
+                                       dot(draw.normalRows[2].xyz, inNormal)));
+    const bool positional = draw.light.w > 0.5;
+    const vec3 towardsLight = positional ? draw.light.xyz - world : -draw.light.xyz;
+    const float distance = length(towardsLight);
+    const float reach = draw.reach.x * (positional ? distance : 1.0);
+    return transformPoint(draw.viewProjection, world - receiverNormalOffset(normal, towardsLight / distance, reach));
+}
+
 void main()
 {
-    const vec4 clip = transformPoint(draw.worldToClip, inPosition);
+    const vec4 clip = casterClip();
     gl_Position = draw.material.w > 0.5 ? penumbraClampToNearPlane(clip) : clip;
     vUv = transformedUv(draw.baseColorUv, inUv, inUv1);
 }

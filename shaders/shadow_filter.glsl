@@ -3,17 +3,7 @@
 // texelFetch: the bilinear comparison is built from nearest comparisons on every backend (lavapipe
 // cannot filter depth linearly, conventions note section 4).
 
-// The receiver's normal offset (Castano 2013, "Shadow Mapping Summary - Part 1"), along its geometric normal turned
-// towards the light, so that a two-sided surface seen from either side is lifted out of its own shadow. A plane at
-// angle theta to the light rises reach * tan(theta) in light depth across a lookup that reaches `reach` (world
-// units) around the receiver; moved d along its normal the receiver is d / cos(theta) in front of the plane, so
-// d = reach * sin(theta) clears every texel the lookup reads. penumbra::shadows::receiverNormalOffset is the same.
-vec3 receiverNormalOffset(vec3 geometricNormal, vec3 towardsLight, float reach)
-{
-    const vec3 n = dot(geometricNormal, towardsLight) < 0.0 ? -geometricNormal : geometricNormal;
-    const float cosine = dot(n, towardsLight);
-    return n * (reach * sqrt(max(1.0 - cosine * cosine, 0.0)));
-}
+#include "normal_offset.glsl"
 
 // 1 where the stored caster is not nearer to the light than the receiver (lit), else 0.
 float compareTexel(sampler2D atlas, ivec2 texel, float receiverDepth)

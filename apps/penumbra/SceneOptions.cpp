@@ -129,6 +129,11 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                                 "lowered to its limit and noted; default {}",
                                 kMaxAnisotropyOption, render::FrameDesc{}.maxAnisotropy))
         ->check(anisotropyValidator());
+    command
+        .add_option("--normal-bias-side", options.normalBiasSide,
+                    "Where every light's normal bias goes: receiver (shadow lookups move towards the light, the "
+                    "default) or caster (the shadow pass moves casters away from it)")
+        ->check(CLI::IsMember({"receiver", "caster"}));
     command.add_option("--settings", options.settings,
                        "Shadow settings JSON file, with optional \"ambient\" object and \"anisotropy\" number")
         ->check(CLI::ExistingFile);
@@ -162,6 +167,14 @@ LoadedScene loadScene(const SceneOptions& options)
     }
     for (const std::string& light : options.lights)
         addLight(loaded.scene, parseLightOption(light).value());
+    if (const std::optional<scene::NormalBiasSide> side = scene::parseNormalBiasSide(options.normalBiasSide)) {
+        for (scene::DirectionalLight& light : loaded.scene.lights)
+            light.normalBiasSide = *side;
+        for (scene::SpotLight& light : loaded.scene.spotLights)
+            light.normalBiasSide = *side;
+        for (scene::PointLight& light : loaded.scene.pointLights)
+            light.normalBiasSide = *side;
+    }
     if (!options.lights.empty())
         loaded.scene.validate();
     if (lookAt) {

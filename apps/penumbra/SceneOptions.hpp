@@ -13,14 +13,15 @@
 
 namespace penumbra::apps {
 
-// What to render, shared by `render` and `parity`: --scene, --camera, --light, --ambient, --anisotropy, --settings,
-// --size.
+// What to render, shared by `render` and `parity`: --scene, --camera, --light, --ambient, --anisotropy,
+// --normal-bias-side, --settings, --size.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
     std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
     std::optional<float> anisotropy; // empty: the settings file's, or FrameDesc's default
+    std::string normalBiasSide;      // "receiver" or "caster" for every light; empty: each light's own
     std::string settings;
     std::string size = "1280x720";
 };
@@ -36,7 +37,7 @@ struct LoadedScene {
     std::vector<std::string> notes; // from the glTF loader
 };
 
-// The built-in scene or glTF file, with --camera and --light applied. Throws scene::SceneError (a glTF file's
+// The built-in scene or glTF file, with --camera, --light and --normal-bias-side applied. Throws scene::SceneError (a glTF file's
 // errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 

@@ -79,6 +79,7 @@ bool commonLightSettings(Light& light)
     changed |= ImGui::SliderFloat("shadow strength", &light.shadowStrength, 0.0f, 1.0f);
     changed |= ImGui::DragFloat("slope-scale bias", &light.slopeScaleBias, 0.01f, 0.0f, 10.0f);
     changed |= ImGui::DragFloat("normal bias", &light.normalBias, 0.01f, 0.0f, 10.0f);
+    changed |= enumCombo("normal bias side", light.normalBiasSide, std::array{"receiver", "caster"});
     return changed;
 }
 

@@ -151,8 +151,8 @@ std::vector<shadows::Bounds> GpuScene::casterBounds() const
 
 shadows::CasterVertexFormat GpuScene::vertexFormat()
 {
-    return {sizeof(scene::Vertex), offsetof(scene::Vertex, position), offsetof(scene::Vertex, uv),
-            offsetof(scene::Vertex, uv1)};
+    return {sizeof(scene::Vertex), offsetof(scene::Vertex, position), offsetof(scene::Vertex, normal),
+            offsetof(scene::Vertex, uv), offsetof(scene::Vertex, uv1)};
 }
 
 } // namespace penumbra::render

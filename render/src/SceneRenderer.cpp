@@ -25,12 +25,17 @@ shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect)
     return {camera.position, camera.forward, up, camera.fovY, aspect, camera.nearPlane, camera.farPlane};
 }
 
+shadows::NormalBiasSide biasSide(scene::NormalBiasSide side)
+{
+    return side == scene::NormalBiasSide::Caster ? shadows::NormalBiasSide::Caster : shadows::NormalBiasSide::Receiver;
+}
+
 std::vector<shadows::DirectionalShadowLightInput> shadowLights(const std::vector<scene::DirectionalLight>& lights)
 {
     std::vector<shadows::DirectionalShadowLightInput> inputs;
     for (const scene::DirectionalLight& light : lights)
         inputs.push_back({light.direction, light.shadowStrength, light.nearPlaneOffset, light.normalBias,
-                          light.slopeScaleBias, true});
+                          light.slopeScaleBias, true, biasSide(light.normalBiasSide)});
     return inputs;
 }
 
@@ -39,7 +44,7 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
     std::vector<shadows::SpotShadowInput> inputs;
     for (const scene::SpotLight& l : lights)
         inputs.push_back({l.position, l.direction, l.range, l.outerAngle, l.shadowStrength, l.normalBias,
-                          l.slopeScaleBias, l.shadowNearPlane});
+                          l.slopeScaleBias, l.shadowNearPlane, biasSide(l.normalBiasSide)});
     return inputs;
 }
 
@@ -47,7 +52,8 @@ std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene
 {
     std::vector<shadows::PointShadowInput> inputs;
     for (const scene::PointLight& l : lights)
-        inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias, l.shadowNearPlane});
+        inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias, l.shadowNearPlane,
+                          biasSide(l.normalBiasSide)});
     return inputs;
 }
 

@@ -17,6 +17,20 @@ const char* lightKindName(LightKind kind)
     return "light";
 }
 
+std::string_view normalBiasSideName(NormalBiasSide side)
+{
+    return side == NormalBiasSide::Caster ? "caster" : "receiver";
+}
+
+std::optional<NormalBiasSide> parseNormalBiasSide(std::string_view name)
+{
+    if (name == "receiver")
+        return NormalBiasSide::Receiver;
+    if (name == "caster")
+        return NormalBiasSide::Caster;
+    return std::nullopt;
+}
+
 glm::vec3 lightDirection(float pitch, float yaw)
 {
     const float horizontal = std::cos(pitch);

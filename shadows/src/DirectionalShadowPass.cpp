@@ -28,13 +28,15 @@ std::uint32_t DirectionalShadowPass::record(rhi::CommandList& commands, const Sh
     std::uint32_t draws = 0;
     commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = true});
     for (const ShadowedDirectionalLight& light : plan.lights) {
-        for (const DirectionalCascadePlan& cascade : light.cascades) {
+        for (std::uint32_t c = 0; c < light.cascades.size(); ++c) {
+            const DirectionalCascadePlan& cascade = light.cascades[c];
             commands.setViewport(cascade.viewport);
             commands.setScissor(scissorOf(cascade.viewport));
             const ShadowViewDraw view{.viewProjection = cascade.fit.viewProjection,
                                       .slopeScaleBias = light.slopeScaleBias,
                                       .pancake = true,
-                                      .ditherOrigin = ditherOrigin(cascade.fit, plan.atlas, cascade.tile)};
+                                      .ditherOrigin = ditherOrigin(cascade.fit, plan.atlas, cascade.tile),
+                                      .normalOffset = casterNormalOffset(plan, light, c)};
             draws += draws_.draw(commands, atlas.format(), view, cascade.casters.casters, casters);
         }
     }

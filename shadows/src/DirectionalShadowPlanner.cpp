@@ -41,13 +41,23 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
     }
     for (std::size_t slot = 0; slot < plan.lights.size(); ++slot) {
         const ShadowedDirectionalLight& light = plan.lights[slot];
-        u.lightShadowData[slot] = {light.strength, light.normalBias, static_cast<float>(light.firstTile), 0.0f};
+        // On the caster side the lit pass looks up where the surface is.
+        const float receiverBias = light.normalBiasSide == NormalBiasSide::Receiver ? light.normalBias : 0.0f;
+        u.lightShadowData[slot] = {light.strength, receiverBias, static_cast<float>(light.firstTile), 0.0f};
         for (const DirectionalCascadePlan& cascade : light.cascades)
             u.worldToAtlas[cascade.tile] = cascade.worldToAtlas;
     }
 }
 
 } // namespace
+
+CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const ShadowedDirectionalLight& light,
+                                      std::uint32_t cascade)
+{
+    if (light.normalBiasSide != NormalBiasSide::Caster || cascade >= plan.cascadeData.size())
+        return {};
+    return {light.normalBias * plan.cascadeData[cascade].data.y, glm::vec4(light.direction, 0.0f)};
+}
 
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
@@ -88,8 +98,15 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
     for (std::uint32_t slot = 0; slot < selected.size(); ++slot) {
         const DirectionalShadowLightInput& input = lights[selected[slot]];
-        ShadowedDirectionalLight light{selected[slot], input.strength, input.normalBias, input.slopeScaleBias,
-                                       input.nearPlaneOffset, directionalTileIndex(slot, 0, cascadeCount), {}};
+        ShadowedDirectionalLight light{selected[slot],
+                                       input.strength,
+                                       input.normalBias,
+                                       input.slopeScaleBias,
+                                       input.nearPlaneOffset,
+                                       directionalTileIndex(slot, 0, cascadeCount),
+                                       {},
+                                       input.normalBiasSide,
+                                       input.direction};
         const LightBasis basis = lightBasis(input.direction);
         for (std::uint32_t c = 0; c < cascadeCount; ++c) {
             DirectionalCascadePlan cascade;

@@ -28,7 +28,8 @@ std::uint32_t OtherShadowPass::record(rhi::CommandList& commands, const ShadowAt
         // The dither follows the tile's own texel grid: local lights do not move with the camera.
         const ShadowViewDraw view{.viewProjection = tile.view.viewProjection,
                                   .slopeScaleBias = tile.view.slopeScaleBias,
-                                  .ditherOrigin = -glm::vec2(plan.atlas.tileOffset(tile.tile))};
+                                  .ditherOrigin = -glm::vec2(plan.atlas.tileOffset(tile.tile)),
+                                  .normalOffset = tile.view.normalOffset};
         draws += draws_.draw(commands, atlas.format(), view, tile.view.casters, casters);
     }
     commands.endPass();
@@ -44,7 +45,8 @@ std::uint32_t OtherShadowPass::record(rhi::CommandList& commands, const ShadowAt
             commands.setScissor(scissorOf(viewport));
             const ShadowViewDraw view{.viewProjection = faceView.viewProjection,
                                       .slopeScaleBias = faceView.slopeScaleBias,
-                                      .mirrored = true};
+                                      .mirrored = true,
+                                      .normalOffset = faceView.normalOffset};
             draws += draws_.draw(commands, cubes.format(), view, faceView.casters, casters);
             commands.endPass();
         }

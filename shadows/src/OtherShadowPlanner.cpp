@@ -88,7 +88,7 @@ LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, fl
 {
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, range);
     return {projection, projection * view, slopeScaleBias,
-            cullCastersInFrustum(view, fov, nearPlane, range, casterBounds)};
+            cullCastersInFrustum(view, fov, nearPlane, range, casterBounds), {}};
 }
 
 glm::vec4 tileBounds(const ShadowAtlasLayout& atlas, std::uint32_t tile)
@@ -96,6 +96,16 @@ glm::vec4 tileBounds(const ShadowAtlasLayout& atlas, std::uint32_t tile)
     const glm::vec2 first(atlas.tileOffset(tile));
     const glm::vec2 last = first + static_cast<float>(atlas.tileSize() - 1);
     return {first, last};
+}
+
+// The normal offset's reach per unit of distance, `scale`, goes to the lit pass's lookups on the receiver side and
+// to the caster pass's vertices (with the light at `position`) on the caster side; returns the lit pass's share.
+float sideOfNormalBias(LocalShadowView& view, NormalBiasSide side, float scale, glm::vec3 position)
+{
+    if (side == NormalBiasSide::Receiver)
+        return scale;
+    view.normalOffset = {scale, glm::vec4(position, 1.0f)};
+    return 0.0f;
 }
 
 void addTile(OtherShadowPlan& plan, std::uint32_t tile, LocalShadowView view, float normalBiasScale,
@@ -114,10 +124,10 @@ void planSpot(OtherShadowPlan& plan, const OtherShadowSettings& other, const Spo
     const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, other);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
     const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), other.filter, spot.normalBias);
-    addTile(plan, tile,
-            shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range, spot.slopeScaleBias,
-                       conventions, casterBounds),
-            bias, conventions);
+    LocalShadowView view = shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range,
+                                      spot.slopeScaleBias, conventions, casterBounds);
+    const float receiverBias = sideOfNormalBias(view, spot.normalBiasSide, bias, spot.position);
+    addTile(plan, tile, std::move(view), receiverBias, conventions);
 }
 
 void planPointTiles(OtherShadowPlan& plan, const OtherShadowSettings& other, const PointShadowInput& point,
@@ -128,11 +138,12 @@ void planPointTiles(OtherShadowPlan& plan, const OtherShadowSettings& other, con
     const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, other);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, point.range);
     const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), other.filter, point.normalBias);
-    for (std::uint32_t face = 0; face < cubeFaceCount; ++face)
-        addTile(plan, firstTile + face,
-                shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane, point.range,
-                           point.slopeScaleBias, conventions, casterBounds),
-                bias, conventions);
+    for (std::uint32_t face = 0; face < cubeFaceCount; ++face) {
+        LocalShadowView view = shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane,
+                                          point.range, point.slopeScaleBias, conventions, casterBounds);
+        const float receiverBias = sideOfNormalBias(view, point.normalBiasSide, bias, point.position);
+        addTile(plan, firstTile + face, std::move(view), receiverBias, conventions);
+    }
 }
 
 // CubeMap mode: the six mirrored face views of the hardware cube layout (rhi::cubeFaceView), 90 degrees each.
@@ -145,16 +156,18 @@ void planCube(OtherShadowPlan& plan, const OtherShadowSettings& other, const Poi
     // Window depth of major-axis distance z is (a * -z + b) / z: the projection's depth row through clipToTexture.
     const glm::mat4 toTexture = conventions.clipToTexture() * projection;
     const float bias = localNormalBiasScale(projection, other.cubeMapSize, other.filter, point.normalBias);
-    plan.uniforms.cubeData[plan.cubes.size()] = {toTexture[2][2], toTexture[3][2], bias,
-                                                 1.0f / static_cast<float>(other.cubeMapSize)};
     ShadowCube cube;
     cube.lightIndex = pointIndex;
+    float receiverBias = bias;
     for (const CubeFace face : rhi::allCubeFaces) {
         const glm::mat4 view = rhi::cubeFaceView(face, point.position);
-        cube.faces[static_cast<std::size_t>(face)] = {projection, projection * view, point.slopeScaleBias,
-                                                      cullCastersInFrustum(view, kRightAngle, nearPlane, point.range,
-                                                                           casterBounds)};
+        LocalShadowView& faceView = cube.faces[static_cast<std::size_t>(face)];
+        faceView = {projection, projection * view, point.slopeScaleBias,
+                    cullCastersInFrustum(view, kRightAngle, nearPlane, point.range, casterBounds), {}};
+        receiverBias = sideOfNormalBias(faceView, point.normalBiasSide, bias, point.position);
     }
+    plan.uniforms.cubeData[plan.cubes.size()] = {toTexture[2][2], toTexture[3][2], receiverBias,
+                                                 1.0f / static_cast<float>(other.cubeMapSize)};
     plan.cubes.push_back(std::move(cube));
 }
 

@@ -5,12 +5,32 @@
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <fmt/format.h>
+#include <glm/gtc/matrix_access.hpp>
+#include <glm/matrix.hpp>
 
 namespace penumbra::shadows {
 namespace {
 
 constexpr std::uint32_t kDrawBinding = 0;
 constexpr std::uint32_t kBaseColorBinding = 1;
+
+ShadowCasterUniforms casterUniforms(const ShadowViewDraw& view, const ShadowCaster& caster, float pancakeInShader)
+{
+    ShadowCasterUniforms u{view.viewProjection * caster.model,
+                           {caster.alpha, caster.alphaCutoff, static_cast<float>(caster.mode), pancakeInShader},
+                           {view.ditherOrigin, caster.textured ? 1.0f : 0.0f, 0.0f},
+                           caster.baseColorUv};
+    if (view.normalOffset.reach > 0.0f) {
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(caster.model)));
+        u.model = caster.model;
+        for (int row = 0; row < 3; ++row)
+            u.normalRows[std::size_t(row)] = glm::vec4(glm::row(normalMatrix, row), 0.0f);
+        u.viewProjection = view.viewProjection;
+        u.light = view.normalOffset.light;
+        u.reach = {view.normalOffset.reach, 0.0f, 0.0f, 0.0f};
+    }
+    return u;
+}
 
 } // namespace
 
@@ -44,6 +64,7 @@ const ShadowCasterDraws::Pipelines& ShadowCasterDraws::pipelines(rhi::Format dep
     desc.vertex = vertex_.get();
     desc.vertexLayout = {{{vertexFormat_.stride, false}},
                          {{0, rhi::VertexFormat::Float3, vertexFormat_.positionOffset, 0},
+                          {1, rhi::VertexFormat::Float3, vertexFormat_.normalOffset, 0},
                           {2, rhi::VertexFormat::Float2, vertexFormat_.uvOffset, 0},
                           {3, rhi::VertexFormat::Float2, vertexFormat_.uv1Offset, 0}}};
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer, .clamp = clamp};
@@ -84,12 +105,7 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
             commands.setDepthBias(bias);
             bound = pipeline;
         }
-        const ShadowCasterUniforms draw{view.viewProjection * caster.model,
-                                        {caster.alpha, caster.alphaCutoff, static_cast<float>(caster.mode),
-                                         pancakeInShader},
-                                        {view.ditherOrigin, caster.textured ? 1.0f : 0.0f, 0.0f},
-                                        caster.baseColorUv};
-        rhi::bindUniform(commands, kDrawBinding, uniforms_.push(draw));
+        rhi::bindUniform(commands, kDrawBinding, uniforms_.push(casterUniforms(view, caster, pancakeInShader)));
         if (caster.mode != ShadowCasterMode::Opaque) {
             if (!caster.baseColorMap || !caster.baseColorSampler)
                 throw rhi::Error(fmt::format("shadow caster {}: clip and dither casters need a base colour texture "

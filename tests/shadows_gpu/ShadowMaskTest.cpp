@@ -319,6 +319,20 @@ TEST_F(ShadowMaskTest, LowSunAgreesWithTheRayCast)
     EXPECT_TRUE(k.failures.empty()) << joined(k.failures);
 }
 
+// The caster-side normal bias (the shadow pass moves casters away from the light; the lit pass looks up where the
+// surface is) against the same ray cast, high and low sun: the same bounds and no contact gap.
+TEST_F(ShadowMaskTest, CasterSideNormalBiasAgreesWithTheRayCast)
+{
+    for (const float pitch : {50.0f, kLowSunPitchDegrees}) {
+        scene::Scene scene = keyLightScene(pitch);
+        scene.lights[0].normalBiasSide = scene::NormalBiasSide::Caster;
+        const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kWidth, kHeight, kKeyLight));
+        const KeyLightFigures k = measureKeyLight(*this, fmt::format("caster side {:.0f}", pitch), scene, scene, truth,
+                                                  4000, kClassBound);
+        EXPECT_TRUE(k.failures.empty()) << pitch << " degrees: " << joined(k.failures);
+    }
+}
+
 // Negative controls, on one configuration at half size: the metrics above must report each fault.
 
 constexpr std::uint32_t kControlWidth = kWidth / 2;

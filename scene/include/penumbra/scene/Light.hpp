@@ -3,9 +3,19 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace penumbra::scene {
+
+// Where a light's normal bias moves things (shadows::NormalBiasSide): the receivers' shadow lookups towards the
+// light, or the casters' vertices away from it in the shadow pass.
+enum class NormalBiasSide : std::uint8_t { Receiver, Caster };
+
+// "receiver", "caster": the names on the command line and in the viewer.
+std::string_view normalBiasSideName(NormalBiasSide side);
+std::optional<NormalBiasSide> parseNormalBiasSide(std::string_view name);
 
 struct DirectionalLight {
     std::string name;
@@ -16,6 +26,7 @@ struct DirectionalLight {
     float slopeScaleBias = 1.0f;            // the RHI's depth-bias slope factor for this light's casters
     float normalBias = 1.0f;                // receiver offset along its normal, in units of the cascade's filter-sized texel diagonal
     float nearPlaneOffset = 0.2f;           // pulls the shadow projection's near plane back, in world units
+    NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 
 // A cone light. Its light falls off with distance (zero at range) and between the inner and
@@ -33,6 +44,7 @@ struct SpotLight {
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f; // receiver offset in filter-sized texel diagonals at the receiver's distance
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
+    NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 
 // An omnidirectional light; its shadow is six cube faces.
@@ -46,6 +58,7 @@ struct PointLight {
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f;
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
+    NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 
 // A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.

@@ -8,6 +8,7 @@
 #include "penumbra/shadows/CasterCulling.hpp"
 #include "penumbra/shadows/DirectionalCascadeFit.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
+#include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/ShadowAtlasLayout.hpp"
 #include "penumbra/shadows/ShadowCamera.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
@@ -27,6 +28,7 @@ struct DirectionalShadowLightInput {
     float normalBias = 1.0f;                // multiple of the cascade's normal bias
     float slopeScaleBias = 0.0f;            // rasterizer slope-scaled depth bias of the shadow pass
     bool castsShadows = true;
+    NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 
 struct DirectionalCascadePlan {
@@ -45,7 +47,10 @@ struct ShadowedDirectionalLight {
     float nearPlaneOffset = 0.0f;
     std::uint32_t firstTile = 0;
     std::vector<DirectionalCascadePlan> cascades;
+    NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // into the scene
 };
+
 
 // Why a light (or, without a light index, the whole plan) gets no shadow tiles.
 struct ShadowPlanNote {
@@ -63,6 +68,11 @@ struct DirectionalShadowPlan {
     std::vector<ShadowPlanNote> report;
     DirectionalShadowUniforms uniforms;
 };
+
+// The caster pass's normal offset for cascade `cascade` of `light`: the lit pass's reach there (the cascade's
+// filter-sized texel diagonal times the light's normalBias) on the caster side, none on the receiver side.
+CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const ShadowedDirectionalLight& light,
+                                      std::uint32_t cascade);
 
 // Plans a frame's directional shadows: the first 4 lights that cast shadows with strength > 0 get
 // cascadeCount tiles each; every other light is listed in the report with the reason (never an

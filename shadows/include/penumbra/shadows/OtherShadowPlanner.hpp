@@ -4,6 +4,7 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
+#include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/OtherShadowUniforms.hpp"
 #include "penumbra/shadows/ShadowCamera.hpp"
 #include "penumbra/shadows/ShadowAtlasLayout.hpp"
@@ -25,6 +26,7 @@ struct SpotShadowInput {
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
     float nearPlane = 0.0f; // world units; 0: OtherShadowSettings::nearPlane x range
+    NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 
 struct PointShadowInput {
@@ -34,6 +36,7 @@ struct PointShadowInput {
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
     float nearPlane = 0.0f; // world units; 0: OtherShadowSettings::nearPlane x range
+    NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 
 enum class LocalLightKind : std::uint8_t { Spot, Point };
@@ -44,6 +47,7 @@ struct LocalShadowView {
     glm::mat4 viewProjection{1.0f};
     float slopeScaleBias = 0.0f;
     std::vector<std::uint32_t> casters; // indices into the caster bounds, the views' frustum culled
+    CasterNormalOffset normalOffset;    // the caster-side normal bias; none on the receiver side
 };
 
 struct OtherAtlasTile {

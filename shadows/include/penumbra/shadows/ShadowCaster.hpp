@@ -17,10 +17,11 @@ enum class ShadowCasterMode : std::uint8_t {
     Dither, // a texel is kept where alpha reaches the interleaved-gradient dither (alpha as coverage)
 };
 
-// Where position and the two uv sets sit in the caster's vertices (float3, float2, float2).
+// Where position, normal and the two uv sets sit in the caster's vertices (float3, float3, float2, float2).
 struct CasterVertexFormat {
     std::uint32_t stride = 0;
     std::uint32_t positionOffset = 0;
+    std::uint32_t normalOffset = 0;
     std::uint32_t uvOffset = 0;
     std::uint32_t uv1Offset = 0;
 };

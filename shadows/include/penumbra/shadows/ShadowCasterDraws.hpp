@@ -3,6 +3,7 @@
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
 #include <array>
@@ -20,8 +21,14 @@ struct ShadowCasterUniforms {
     glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
     glm::vec4 sampling{0.0f}; // dither origin, 1 when the alpha comes from the base colour texture, 0
     UvTransformRows baseColorUv{}; // ShadowCaster::baseColorUv
+    // The caster-side normal offset, read where reach.x > 0 (shadow_caster.vert).
+    glm::mat4 model{1.0f};
+    std::array<glm::vec4, 3> normalRows{}; // the inverse transpose of the model matrix, as rows
+    glm::mat4 viewProjection{1.0f};
+    glm::vec4 light{0.0f};
+    glm::vec4 reach{0.0f};
 };
-static_assert(sizeof(ShadowCasterUniforms) == 128);
+static_assert(sizeof(ShadowCasterUniforms) == 336);
 
 // One shadow view's casters, drawn into the bound target's current viewport.
 struct ShadowViewDraw {
@@ -33,6 +40,7 @@ struct ShadowViewDraw {
     // Cube-map faces are mirrored views (rhi::cubeFaceView): their front faces are clockwise in NDC.
     bool mirrored = false;
     glm::vec2 ditherOrigin{0.0f}; // added to gl_FragCoord: the dither's grid origin
+    CasterNormalOffset normalOffset; // the caster-side normal bias; none by default
 };
 
 // The shadow caster shaders and pipelines every shadow pass shares, and its per-draw uniforms.
