@@ -12,7 +12,8 @@
 
 namespace penumbra::apps {
 
-// What to render, shared by `render` and `parity`: --scene, --camera, --light, --ambient, --settings, --size.
+// What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
+// --settings, --size, --prepass.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -20,6 +21,7 @@ struct SceneOptions {
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
     std::string settings;
     std::string size = "1280x720";
+    std::string prepass = "on"; // render::FrameDesc::depthPrepass
 };
 
 // Adds the options with validators that reject bad values before anything renders.

@@ -51,6 +51,7 @@ void addViewCommand(CLI::App& app)
     view->add_flag("!--no-ui", options->ui, "Hide the settings panel");
     view->add_flag("--cascade-view", options->cascadeView, "Start with the cascade view");
     view->add_flag("--atlas-overlay", options->atlasOverlay, "Start with the shadow atlas overlay");
+    addValidateFlag(*view, options->validate);
     view->callback([options] { viewer::runViewer(*options); });
 }
 

@@ -16,6 +16,7 @@ struct ViewerOptions {
     bool ui = true;                      // the settings panel
     bool cascadeView = false;            // start with the panel's toggles on
     bool atlasOverlay = false;
+    bool validate = false;               // the validation layer / debug output (penumbra view --validate)
 };
 
 // Opens the window and runs the viewer. Throws rhi::Error when there is no display, no driver,
