@@ -103,6 +103,8 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
     commands.beginPass({.framebuffer = target_.get(), .clearColor = glm::vec4(0.2f, 0.22f, 0.26f, 1.0f)});
     const rhi::Pipeline* bound = nullptr;
     for (const scene::Object& object : scene.objects) {
+        if (object.castShadows == scene::ShadowCasting::ShadowsOnly)
+            continue;
         const scene::Material& material = scene.materialOf(object);
         const rhi::Pipeline* pipeline = pipelines_[material.doubleSided ? 1 : 0].get();
         if (pipeline != bound) {
