@@ -200,17 +200,10 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(5) : nullptr),
       uniforms_(device, "lit pass uniforms")
 {
-    const auto offset = [](std::size_t bytes) { return static_cast<std::uint32_t>(bytes); };
     rhi::PipelineDesc desc;
     desc.vertex = litVertex_.get();
     desc.fragment = litFragment_.get();
-    desc.vertexLayout = {{{sizeof(scene::Vertex), false}},
-                         {{0, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, position)), 0},
-                          {1, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, normal)), 0},
-                          {2, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv)), 0},
-                          {3, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv1)), 0},
-                          {4, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, tangent)), 0},
-                          {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
+    desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kDepthFormat;
     for (const bool blend : {false, true})
         for (const bool doubleSided : {false, true}) {
@@ -357,14 +350,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, objectSlices_[index]);
-        for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
-            const auto textureSlot = static_cast<scene::TextureSlot>(slot);
-            commands.bindTexture(litMaterialMapBinding(textureSlot), gpuScene_.map(material, textureSlot),
-                                 gpuScene_.mapSampler(material, textureSlot));
-        }
-        commands.bindVertexBuffer(0, gpuScene_.vertices(object.mesh));
-        commands.bindIndexBuffer(gpuScene_.indices(object.mesh), rhi::IndexType::UInt32);
-        commands.drawIndexed(static_cast<std::uint32_t>(scene.meshOf(object).indices.size()));
+        gpuScene_.drawWithMaps(commands, object, kLitMaterialMapBinding);
     }
     commands.endPass();
 }

@@ -18,14 +18,9 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat)
       opaqueFragment_(device.createShader(shaders::load("shadow_caster_opaque.frag"))),
       clipFragment_(device.createShader(litShader("depth_prepass_clip.frag")))
 {
-    const auto offset = [](std::size_t bytes) { return static_cast<std::uint32_t>(bytes); };
     rhi::PipelineDesc desc;
     desc.vertex = vertex_.get();
-    desc.vertexLayout = {{{sizeof(scene::Vertex), false}},
-                         {{0, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, position)), 0},
-                          {2, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv)), 0},
-                          {3, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv1)), 0},
-                          {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
+    desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = depthFormat;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
     for (const bool clip : {false, true})
@@ -59,14 +54,7 @@ void DepthPrepass::record(rhi::CommandList& commands, const rhi::Framebuffer& ta
         }
         rhi::bindUniform(commands, kLitObjectBinding, objects[index]);
         // lit.glsl declares every material map; the RHI asks for all of them bound.
-        for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
-            const auto textureSlot = static_cast<scene::TextureSlot>(slot);
-            commands.bindTexture(litMaterialMapBinding(textureSlot), gpuScene.map(material, textureSlot),
-                                 gpuScene.mapSampler(material, textureSlot));
-        }
-        commands.bindVertexBuffer(0, gpuScene.vertices(object.mesh));
-        commands.bindIndexBuffer(gpuScene.indices(object.mesh), rhi::IndexType::UInt32);
-        commands.drawIndexed(static_cast<std::uint32_t>(scene.meshOf(object).indices.size()));
+        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding);
     }
     commands.endPass();
 }

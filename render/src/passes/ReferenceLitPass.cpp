@@ -57,14 +57,10 @@ ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const GpuScene& scene)
       timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(2) : nullptr),
       uniforms_(device, "reference lit pass uniforms")
 {
-    const auto offset = [](std::size_t bytes) { return static_cast<std::uint32_t>(bytes); };
     rhi::PipelineDesc desc;
     desc.vertex = vertex_.get();
     desc.fragment = fragment_.get();
-    desc.vertexLayout = {{{sizeof(scene::Vertex), false}},
-                         {{0, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, position)), 0},
-                          {1, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, normal)), 0},
-                          {2, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv)), 0}}};
+    desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kDepthFormat;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
     desc.colorTargets = {rhi::ColorTarget{kColorFormat}};
@@ -120,14 +116,7 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
         u.normalMatrix = glm::transpose(glm::inverse(object.transform));
         u.baseColor = material.baseColor;
         rhi::bindUniform(commands, kLitObjectBinding, uniforms_.push(u));
-        for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
-            const auto textureSlot = static_cast<scene::TextureSlot>(slot);
-            commands.bindTexture(litMaterialMapBinding(textureSlot), scene_.map(material, textureSlot),
-                                 scene_.mapSampler(material, textureSlot));
-        }
-        commands.bindVertexBuffer(0, scene_.vertices(object.mesh));
-        commands.bindIndexBuffer(scene_.indices(object.mesh), rhi::IndexType::UInt32);
-        commands.drawIndexed(static_cast<std::uint32_t>(scene.meshOf(object).indices.size()));
+        scene_.drawWithMaps(commands, object, kLitMaterialMapBinding);
     }
     commands.endPass();
     if (timestamps_)
