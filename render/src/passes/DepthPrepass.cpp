@@ -3,10 +3,13 @@
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace penumbra::render {
 namespace {
+
+constexpr std::uint32_t kLocations[] = {0, 2, 3, 5}; // the vertex attributes depth_prepass.vert reads
 
 std::uint32_t pipelineIndex(bool doubleSided, bool clip) { return (doubleSided ? 1u : 0u) + (clip ? 2u : 0u); }
 
@@ -20,7 +23,11 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat)
 {
     rhi::PipelineDesc desc;
     desc.vertex = vertex_.get();
+    // Only the attributes depth_prepass.vert reads: the validation layer reports attributes a shader does not consume.
     desc.vertexLayout = GpuScene::vertexLayout();
+    std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
+        return std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
+    });
     desc.depthFormat = depthFormat;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
     for (const bool clip : {false, true})

@@ -2,11 +2,14 @@
 
 #include "penumbra/render/LitUniforms.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <glm/matrix.hpp>
 
 namespace penumbra::render {
 namespace {
+
+constexpr std::uint32_t kLocations[] = {0, 1, 2}; // the vertex attributes reference_lit.vert reads
 
 constexpr rhi::Format kColorFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
@@ -60,7 +63,11 @@ ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const GpuScene& scene)
     rhi::PipelineDesc desc;
     desc.vertex = vertex_.get();
     desc.fragment = fragment_.get();
+    // Only the attributes reference_lit.vert reads: the validation layer reports attributes a shader does not consume.
     desc.vertexLayout = GpuScene::vertexLayout();
+    std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
+        return std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
+    });
     desc.depthFormat = kDepthFormat;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
     desc.colorTargets = {rhi::ColorTarget{kColorFormat}};

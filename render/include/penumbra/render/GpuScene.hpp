@@ -51,7 +51,7 @@ public:
 
     static shadows::CasterVertexFormat vertexFormat();
     // scene::Vertex's six attributes at locations 0 to 5 (position, normal, uv, uv1, tangent, colour), as the
-    // lit, depth prepass and reference lit shaders read them.
+    // lit shaders read them; a pass whose shader reads fewer removes the others.
     static rhi::VertexLayout vertexLayout();
 
     // Binds the material's maps (material textures, or the white texel) at firstMapBinding + scene::TextureSlot,
