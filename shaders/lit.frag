@@ -50,14 +50,7 @@ vec3 linearToSrgb(vec3 c)
 // Smallest roughness the GGX terms take: at 0 the distribution is a Dirac peak (0 / 0 at n = h).
 const float MIN_ROUGHNESS = 0.03;
 
-// A material without the map would read its white texel, 1 in every channel: the same value without the lookup
-// (each costs a few hundred instructions on llvmpipe and lavapipe). The branch is uniform per draw.
-vec4 sampleMap(sampler2D map, int slot)
-{
-    if (!hasMap(slot))
-        return vec4(1.0);
-    return texture(map, transformedUv(uvRows(slot), vUv, vUv1));
-}
+vec4 sampleMap(sampler2D map, int slot) { return texture(map, transformedUv(uvRows(slot), vUv, vUv1)); }
 
 // The front face's shading normal: the interpolated normal, perturbed by the normal texture in the tangent frame
 // (glTF 2.0 section 3.9.3: bitangent = w * cross(normal, tangent), x and y scaled by normalTexture.scale).
@@ -131,7 +124,7 @@ void main()
     const int casterMode = int(object.surface.w);
     const bool textured = hasMap(PENUMBRA_TEXTURE_BASE_COLOR);
     const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
-    const vec4 texel = textured ? texture(baseColorMap, baseUv) : vec4(1.0);
+    const vec4 texel = texture(baseColorMap, baseUv);
     const float alpha = materialAlpha(object.baseColor.a, casterMode, baseUv, textured, texel.a) * vColor.a;
 #if !PENUMBRA_DEPTH_PREPASSED
     if (casterMode == PENUMBRA_CASTER_CLIP && alpha < object.surface.z)
