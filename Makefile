@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench sanitize docs clean
+.PHONY: all deps configure build test demo bench bench-forest sanitize docs clean
 
 all: build
 
@@ -32,6 +32,12 @@ demo: build
 
 bench: build
 	@$(PENUMBRA) bench --json out/bench.json
+
+# The forest's frame against the reference lit pass, 4 cascades of 2048^2 and of 4096^2 tiles, PCF 2x2, both backends
+# in one run per tile size: out/bench-forest-2048.json, out/bench-forest-4096.json (the README's table).
+bench-forest: build
+	@for tiles in 2048 4096; do $(PENUMBRA) bench --scene forest --settings scripts/bench/forest-$$tiles-tiles.json \
+		--backend vulkan,opengl --frames 10 --warmup 2 --json out/bench-forest-$$tiles.json || exit 1; done
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run in build-sanitize/.
 sanitize:

@@ -126,8 +126,12 @@ void main()
     const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
     const vec4 texel = texture(baseColorMap, baseUv);
     const float alpha = materialAlpha(object.baseColor.a, casterMode, baseUv, textured, texel.a) * vColor.a;
+#if !PENUMBRA_DEPTH_PREPASSED
     if (casterMode == PENUMBRA_CASTER_CLIP && alpha < object.surface.z)
         discard;
+#endif
+    // After a depth prepass the equal depth test has already cut clip holes (depth_prepass_clip.frag): no discard
+    // here keeps early depth testing on, so each visible pixel is shaded once.
     // Blended surfaces cover by their alpha; everything else is opaque.
     const float coverage = object.flags.w != 0 ? alpha : 1.0;
 

@@ -17,6 +17,7 @@ layout(location = 3) out vec2 vUv1;
 layout(location = 4) out vec4 vTangent;
 layout(location = 5) out vec4 vColor;
 
+
 void main()
 {
     const vec3 world = transformPoint(object.model, inPosition).xyz;
@@ -28,5 +29,5 @@ void main()
     // handedness takes its sign.
     vTangent = vec4(mat3(object.model) * inTangent.xyz, inTangent.w * object.normal.y);
     vColor = inColor;
-    gl_Position = transformPoint(frame.viewProjection, world);
+    gl_Position = cameraClipPosition(frame.viewProjection, object.model, inPosition);
 }

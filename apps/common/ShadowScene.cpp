@@ -80,9 +80,11 @@ scene::Scene namedScene(const std::string& name)
 }
 
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame)
+                                 const render::FrameDesc& frame, const ShadowSceneRun& run)
 {
-    auto device = createDevice(configuration);
+    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
+    desc.validation = run.validate;
+    auto device = createDevice(desc);
     render::SceneRenderer renderer(*device, scene);
     ShadowPictures pictures;
     pictures.configuration = configuration;
@@ -94,13 +96,15 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
     if (frame.cascadeView)
         pictures.cascades = rhi::readTexture(*device, renderer.cascadeImage());
     const rhi::Conventions& conventions = device->conventions();
-    pictures.atlases.push_back(
-        atlasPictures("directional", rhi::readDepth(*device, renderer.atlas().texture()), conventions));
-    pictures.atlases.push_back(atlasPictures("other", rhi::readDepth(*device, renderer.otherAtlas().texture()),
-                                             conventions, render::perspectiveTiles(renderer.otherPlan())));
-    if (!renderer.otherPlan().cubes.empty())
+    if (run.readAtlases) {
         pictures.atlases.push_back(
-            atlasPictures("cube", cubeFacesSideBySide(*device, renderer.shadowCubes()), conventions));
+            atlasPictures("directional", rhi::readDepth(*device, renderer.atlas().texture()), conventions));
+        pictures.atlases.push_back(atlasPictures("other", rhi::readDepth(*device, renderer.otherAtlas().texture()),
+                                                 conventions, render::perspectiveTiles(renderer.otherPlan())));
+        if (!renderer.otherPlan().cubes.empty())
+            pictures.atlases.push_back(
+                atlasPictures("cube", cubeFacesSideBySide(*device, renderer.shadowCubes()), conventions));
+    }
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;

@@ -49,10 +49,17 @@ scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
 inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest";
 
+// How renderShadowScene runs: with the validation layer / debug output (the library's default, and the tests'),
+// and whether it reads the atlases back (AtlasPictures; a 4096^2 atlas is 64 MiB to copy).
+struct ShadowSceneRun {
+    bool validate = true;
+    bool readAtlases = true;
+};
+
 // Renders scene.camera's view; the cascade view too when frame.cascadeView is set. Throws
 // rhi::Error when the device reports a validation or debug message.
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame);
+                                 const render::FrameDesc& frame, const ShadowSceneRun& run = {});
 
 // The file stem of an atlas in a demo folder: "atlas" for "directional", "<name>-atlas" otherwise.
 std::string atlasFileStem(std::string_view name);

@@ -47,6 +47,22 @@ CLI::Validator backendValidator()
         "BACKEND");
 }
 
+void addValidateFlag(CLI::App& command, bool& validate)
+{
+    command
+        .add_flag("--validate", validate,
+                  "Run with the Vulkan validation layer and OpenGL debug output; any message they report fails the run "
+                  "(also PENUMBRA_VALIDATE=1)")
+        ->envname("PENUMBRA_VALIDATE");
+}
+
+rhi::DeviceDesc toolDeviceDesc(const std::string& configuration, bool validate)
+{
+    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
+    desc.validation = validate;
+    return desc;
+}
+
 std::vector<std::string> expandBackends(const std::vector<std::string>& backends)
 {
     std::vector<std::string> configurations;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/rhi/Configuration.hpp"
+
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -14,5 +16,13 @@ CLI::Validator backendValidator();
 
 // The configurations --backend values name, in order, each once; "all" is every configuration.
 std::vector<std::string> expandBackends(const std::vector<std::string>& backends);
+
+// --validate: the Vulkan validation layer and GL debug output for this run. The tools run without them by default
+// because they slow every call; PENUMBRA_VALIDATE=1 in the environment turns them on too, which is how the test
+// suite keeps every run of the tools validating.
+void addValidateFlag(CLI::App& command, bool& validate);
+
+// The named configuration's device, with the validation layer and debug output as `validate` says.
+rhi::DeviceDesc toolDeviceDesc(const std::string& configuration, bool validate);
 
 } // namespace penumbra::apps

@@ -3,6 +3,7 @@
 #include "DrawScene.hpp"
 #include "ImageFiles.hpp"
 #include "RawDraws.hpp"
+#include "SceneBench.hpp"
 #include "ShadowBench.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
@@ -119,19 +120,59 @@ void runBenchmarks(const BenchOptions& options)
 void addBenchCommand(CLI::App& app)
 {
     auto options = std::make_shared<BenchOptions>();
+    auto scene = std::make_shared<SceneBenchOptions>();
     CLI::App* bench = app.add_subcommand(
         "bench", "Time N small draws per frame through the RHI and through hand-written raw API code, and the "
-                 "shadow passes of the test scene");
-    bench->add_option("-s,--suites", options->suites, "draws, shadows")->check(CLI::IsMember({"draws", "shadows"}));
-    bench->add_option("-c,--configurations", options->configurations, "Configurations to measure")
-        ->check(configurationValidator());
-    bench->add_option("-n,--draws", options->draws, "Draws per frame")->check(CLI::Range(1u, 1000000u));
-    bench->add_option("--min-time", options->minTime, "Minimum seconds per benchmark")->check(CLI::Range(0.01, 60.0));
+                 "shadow passes of the test scene; or, with --scene, every pass of any scene's frames");
+    CLI::Option* suites =
+        bench->add_option("-s,--suites", options->suites, "draws, shadows")->check(CLI::IsMember({"draws", "shadows"}));
+    CLI::Option* configurations =
+        bench->add_option("-c,--configurations", options->configurations, "Configurations to measure")
+            ->check(configurationValidator());
+    CLI::Option* draws =
+        bench->add_option("-n,--draws", options->draws, "Draws per frame")->check(CLI::Range(1u, 1000000u));
+    CLI::Option* minTime = bench->add_option("--min-time", options->minTime, "Minimum seconds per benchmark")
+                               ->check(CLI::Range(0.01, 60.0));
     bench->add_option("--json", options->json,
                       "Also write the figures to this file: {\"draws\": [{configuration, draws, rhiNsPerDraw, "
-                      "rawNsPerDraw, rhiOverRaw}], \"shadows\": [{configuration, scenario, atlasPassMs, otherAtlasPassMs, litPassMs, frameMs, "
-                      "casterDraws, ...}]}");
-    bench->callback([options] { runBenchmarks(*options); });
+                      "rawNsPerDraw, rhiOverRaw}], \"shadows\": [{configuration, scenario, atlasPassMs, "
+                      "otherAtlasPassMs, litPassMs, frameMs, casterDraws, ...}]}; with --scene {\"scene\": "
+                      "[{configuration, frames, frameMs, frameMsMin, frameMsMax, passes: {depth, directionalAtlas, "
+                      "otherAtlas, screenSpaceShadows, lit, resolve, reference}, litOverReference, ...}]}");
+
+    // Any scene's frames: the options of `render`, each meaningful only with --scene.
+    addSceneOptions(*bench, scene->scene);
+    CLI::Option* sceneOption = bench->get_option("--scene");
+    sceneOption->excludes(suites)->excludes(configurations)->excludes(draws)->excludes(minTime);
+    for (const char* name : {"--camera", "--light", "--ambient", "--settings", "--size", "--prepass"})
+        bench->get_option(name)->needs(sceneOption);
+    bench
+        ->add_option("-b,--backend", scene->backends,
+                     "With --scene: configurations to measure, comma-separated, or all")
+        ->check(backendValidator())
+        ->delimiter(',')
+        ->needs(sceneOption)
+        ->capture_default_str();
+    bench->add_option("--frames", scene->frames, "With --scene: frames measured per configuration")
+        ->check(CLI::Range(1u, 100000u))
+        ->needs(sceneOption)
+        ->capture_default_str();
+    bench->add_option("--warmup", scene->warmup, "With --scene: frames drawn first and not measured")
+        ->check(CLI::Range(0u, 1000u))
+        ->needs(sceneOption)
+        ->capture_default_str();
+    addValidateFlag(*bench, scene->validate);
+    bench->callback([options, scene, bench] {
+        if (bench->count("--scene") == 0) {
+            runBenchmarks(*options);
+            return;
+        }
+        const nlohmann::json json = runSceneBench(*scene);
+        if (!options->json.empty()) {
+            writeTextFile(options->json, json.dump(2) + "\n");
+            fmt::print("wrote {}\n", options->json);
+        }
+    });
 }
 
 } // namespace penumbra::apps

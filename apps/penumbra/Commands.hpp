@@ -16,7 +16,8 @@ void addConfigurationsCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addTruthCommand(CLI::App& app);
 
-// The RHI test pattern through one configuration, size x size pixels.
-rhi::Image renderPattern(const std::string& configuration, std::uint32_t size);
+// The RHI test pattern through one configuration, size x size pixels, with the validation layer / debug output
+// when `validate` is set.
+rhi::Image renderPattern(const std::string& configuration, std::uint32_t size, bool validate);
 
 } // namespace penumbra::apps

@@ -1,3 +1,4 @@
+#include "BackendOptions.hpp"
 #include "Commands.hpp"
 #include "ImageFiles.hpp"
 #include "ParityReport.hpp"
@@ -18,6 +19,7 @@ constexpr std::uint32_t kPatternSize = 256;
 struct ParityOptions {
     SceneOptions scene;
     std::string out = "out/parity";
+    bool validate = false;
 };
 
 void runParity(const ParityOptions& options)
@@ -32,8 +34,8 @@ void runParity(const ParityOptions& options)
     std::vector<ShadowPictures> pictures;
     for (const rhi::NamedConfiguration& c : penumbra::namedConfigurations()) {
         const std::string name(c.name);
-        patterns.push_back(renderPattern(name, kPatternSize));
-        pictures.push_back(renderShadowScene(name, loaded.scene, frame));
+        patterns.push_back(renderPattern(name, kPatternSize, options.validate));
+        pictures.push_back(renderShadowScene(name, loaded.scene, frame, {.validate = options.validate}));
         printStats(pictures.back(), loaded.scene);
     }
     const ParityReport report = compareParity(pictures, patterns);
@@ -65,6 +67,7 @@ void addParityCommand(CLI::App& app)
                   "cascades}.png and atlas.exr; exits non-zero when a pair misses the thresholds");
     addSceneOptions(*command, options->scene);
     command->add_option("-o,--out", options->out, "Report folder")->capture_default_str();
+    addValidateFlag(*command, options->validate);
     command->callback([options] { runParity(*options); });
 }
 

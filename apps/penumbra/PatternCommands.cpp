@@ -17,13 +17,14 @@ struct PatternOptions {
     std::string configuration = "vulkan";
     std::string out = "pattern.png";
     std::uint32_t size = 256;
+    bool validate = false;
 };
 
 } // namespace
 
-rhi::Image renderPattern(const std::string& configuration, std::uint32_t size)
+rhi::Image renderPattern(const std::string& configuration, std::uint32_t size, bool validate)
 {
-    auto device = createDevice(configuration);
+    auto device = createDevice(toolDeviceDesc(configuration, validate));
     pattern::PatternRenderer renderer(*device, {.width = size, .height = size});
     renderer.render(pattern::testPattern());
     rhi::Image image = renderer.color();
@@ -40,8 +41,9 @@ void addPatternCommand(CLI::App& app)
         ->check(configurationValidator());
     render->add_option("-o,--out", options->out, "PNG file to write");
     render->add_option("-s,--size", options->size, "Width and height in pixels")->check(CLI::Range(1u, 8192u));
+    addValidateFlag(*render, options->validate);
     render->callback([options] {
-        writePng(options->out, renderPattern(options->configuration, options->size));
+        writePng(options->out, renderPattern(options->configuration, options->size, options->validate));
         fmt::print("{}: {}\n", options->configuration, options->out);
     });
 }

@@ -16,6 +16,7 @@ struct RenderOptions {
     std::string out = "out/render/lit.png";
     std::string atlas; // file prefix; empty: no atlas files
     std::vector<std::string> debug;
+    bool validate = false;
 };
 
 // X.png -> X-<suffix>.png
@@ -60,7 +61,8 @@ void render(const RenderOptions& options)
     // Rendered first, written after: a failing configuration leaves no files from the others.
     std::vector<ShadowPictures> all;
     for (const std::string& configuration : configurations) {
-        all.push_back(renderShadowScene(configuration, loaded.scene, frame));
+        all.push_back(renderShadowScene(configuration, loaded.scene, frame,
+                                        {.validate = options.validate, .readAtlases = !options.atlas.empty()}));
         printStats(all.back(), loaded.scene);
     }
     for (const ShadowPictures& pictures : all)
@@ -98,6 +100,7 @@ void addRenderCommand(CLI::App& app)
                         "PREFIX-<configuration>-<atlas>");
     command->add_option("--debug", options->debug, "cascades: also write X-cascades.png, tinted by cascade")
         ->check(CLI::IsMember({"cascades"}));
+    addValidateFlag(*command, options->validate);
     command->callback([options] { render(*options); });
 }
 

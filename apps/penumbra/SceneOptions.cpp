@@ -145,6 +145,12 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
             },
             "WxH"))
         ->capture_default_str();
+    command
+        .add_option("--prepass", options.prepass,
+                    "on: draw opaque and alpha-tested geometry depth-only first, then shade each visible pixel once "
+                    "(equal depth test); off: the lit pass alone")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
 }
 
 LoadedScene loadScene(const SceneOptions& options)
@@ -199,6 +205,7 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     render::FrameDesc frame;
     frame.width = size->width;
     frame.height = size->height;
+    frame.depthPrepass = options.prepass == "on";
     if (!options.settings.empty()) {
         RenderSettings settings = loadRenderSettings(options.settings);
         frame.shadows = settings.shadows;

@@ -13,8 +13,8 @@
 
 namespace penumbra::apps {
 
-// What to render, shared by `render` and `parity`: --scene, --camera, --light, --ambient, --anisotropy,
-// --normal-bias-side, --settings, --size.
+// What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -24,6 +24,7 @@ struct SceneOptions {
     std::string normalBiasSide;      // "receiver" or "caster" for every light; empty: each light's own
     std::string settings;
     std::string size = "1280x720";
+    std::string prepass = "on"; // render::FrameDesc::depthPrepass
 };
 
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.

@@ -23,6 +23,7 @@ struct TruthOptions {
     std::string backend = "vulkan";
     SceneOptions scene;
     std::string out;
+    bool validate = false;
 };
 
 // The lights the frame gives a shadow map and draws, in the lit pass's order.
@@ -105,7 +106,7 @@ void truth(const TruthOptions& options)
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);
 
-    auto device = createDevice(options.backend);
+    auto device = createDevice(toolDeviceDesc(options.backend, options.validate));
     render::SceneRenderer renderer(*device, scene);
     const render::ShadowPlans plans = renderer.planShadows(scene.camera, frame);
     const std::vector<scene::LightRef> lights = shadowedLights(plans, scene);
@@ -174,6 +175,7 @@ void addTruthCommand(CLI::App& app)
         ->capture_default_str();
     addSceneOptions(*command, options->scene);
     command->add_option("-o,--out", options->out, "Output folder")->required();
+    addValidateFlag(*command, options->validate);
     command->callback([options] { truth(*options); });
 }
 

@@ -59,6 +59,7 @@ void addViewCommand(CLI::App& app)
                                  kMaxAnisotropyOption))
         ->check(anisotropyValidator())
         ->capture_default_str();
+    addValidateFlag(*view, options->validate);
     view->callback([options] { viewer::runViewer(*options); });
 }
 

@@ -27,9 +27,10 @@
 namespace penumbra::viewer {
 namespace {
 
-rhi::DeviceDesc windowDeviceDesc(const std::string& configuration, GLFWwindow* window)
+rhi::DeviceDesc windowDeviceDesc(const std::string& configuration, bool validate, GLFWwindow* window)
 {
     rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
+    desc.validation = validate;
     desc.window.glfwWindow = window;
     return desc;
 }
@@ -41,7 +42,7 @@ public:
     explicit ViewerApp(const ViewerOptions& options)
         : options_(options), window_(penumbra::parseConfiguration(options.configuration), options.width, options.height,
                                      fmt::format("Penumbra viewer: {} ({})", options.scene, options.configuration)),
-          device_(createDevice(windowDeviceDesc(options.configuration, window_.handle()))),
+          device_(createDevice(windowDeviceDesc(options.configuration, options.validate, window_.handle()))),
           swapchain_(device_->createSwapchain()), input_(window_.handle()), scene_(loadViewerScene(options.scene)),
           camera_(scene_.camera, orbitTargetDistance(scene_)), renderer_(*device_, scene_), compositor_(*device_)
     {

@@ -17,6 +17,7 @@ struct ViewerOptions {
     bool cascadeView = false;            // start with the panel's toggles on
     bool atlasOverlay = false;
     float maxAnisotropy = 8.0f;          // of texture sampling, 1 (off) to 16, as render::FrameDesc takes it
+    bool validate = false;               // the validation layer / debug output (penumbra view --validate)
 };
 
 // Opens the window and runs the viewer. Throws rhi::Error when there is no display, no driver,

@@ -155,4 +155,28 @@ shadows::CasterVertexFormat GpuScene::vertexFormat()
             offsetof(scene::Vertex, uv), offsetof(scene::Vertex, uv1)};
 }
 
+rhi::VertexLayout GpuScene::vertexLayout()
+{
+    const auto offset = [](std::size_t bytes) { return static_cast<std::uint32_t>(bytes); };
+    return {{{sizeof(scene::Vertex), false}},
+            {{0, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, position)), 0},
+             {1, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, normal)), 0},
+             {2, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv)), 0},
+             {3, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv1)), 0},
+             {4, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, tangent)), 0},
+             {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
+}
+
+void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding) const
+{
+    const scene::Material& material = scene_.materialOf(object);
+    for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
+        const auto textureSlot = static_cast<scene::TextureSlot>(slot);
+        commands.bindTexture(firstMapBinding + slot, map(material, textureSlot), mapSampler(material, textureSlot));
+    }
+    commands.bindVertexBuffer(0, vertices(object.mesh));
+    commands.bindIndexBuffer(indices(object.mesh), rhi::IndexType::UInt32);
+    commands.drawIndexed(static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()));
+}
+
 } // namespace penumbra::render

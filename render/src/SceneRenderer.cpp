@@ -1,6 +1,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 
 #include "TextureSampling.hpp"
+#include "passes/DepthPrepass.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
@@ -16,6 +17,7 @@ namespace {
 
 constexpr rhi::Format kLitFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
+constexpr std::uint32_t kStandInAtlasSize = 16; // an atlas without tiles in use
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
 constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f};     // the visibility view where no shadow map decides
 
@@ -201,20 +203,13 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       otherShadowPass_(device, GpuScene::vertexFormat()),
       litVertex_(device.createShader(litShader("lit.vert"))),
       litFragment_(device.createShader(litShader("lit.frag"))), commands_(device.createCommandList()),
-      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(4) : nullptr),
+      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(5) : nullptr),
       uniforms_(device, "lit pass uniforms")
 {
-    const auto offset = [](std::size_t bytes) { return static_cast<std::uint32_t>(bytes); };
     rhi::PipelineDesc desc;
     desc.vertex = litVertex_.get();
     desc.fragment = litFragment_.get();
-    desc.vertexLayout = {{{sizeof(scene::Vertex), false}},
-                         {{0, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, position)), 0},
-                          {1, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, normal)), 0},
-                          {2, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv)), 0},
-                          {3, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv1)), 0},
-                          {4, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, tangent)), 0},
-                          {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
+    desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kDepthFormat;
     for (const bool blend : {false, true})
         for (const bool doubleSided : {false, true}) {
@@ -229,18 +224,35 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
                                          doubleSided ? "double-sided" : "culled");
             litPipelines_[pipelineIndex(doubleSided, blend)] = device.createPipeline(desc);
         }
+    prepassedLitFragment_ = device.createShader(litShader("lit.frag", true));
+    desc.fragment = prepassedLitFragment_.get();
+    desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
+    desc.colorTargets = {rhi::ColorTarget{kLitFormat}};
+    for (const bool doubleSided : {false, true}) {
+        desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
+        desc.debugName = fmt::format("lit (after the depth prepass, {})", doubleSided ? "double-sided" : "culled");
+        prepassedLitPipelines_[doubleSided ? 1 : 0] = device.createPipeline(desc);
+    }
+    depthPrepass_ = std::make_unique<DepthPrepass>(device, kDepthFormat);
 }
 
-void SceneRenderer::prepareTargets(const FrameDesc& frame)
+SceneRenderer::~SceneRenderer() = default;
+
+void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
 {
     checkFrameSize(frame);
+    // An atlas without a tile in use is a small stand-in: the lit pass reads no texel of it, and a full-size one
+    // would still be cleared every frame (what Catlike Coding's "Directional Shadows" tutorial, section "Shadow
+    // Atlas", avoids with its 1 x 1 dummy texture).
     const shadows::DirectionalShadowSettings& directional = frame.shadows.directional;
-    if (!atlas_ || atlas_->size() != directional.atlasSize || atlas_->format() != directional.atlasFormat)
-        atlas_ = std::make_unique<shadows::ShadowAtlas>(device_, directional.atlasSize, directional.atlasFormat,
+    const std::uint32_t atlasSize = plans.directional.lights.empty() ? kStandInAtlasSize : directional.atlasSize;
+    if (!atlas_ || atlas_->size() != atlasSize || atlas_->format() != directional.atlasFormat)
+        atlas_ = std::make_unique<shadows::ShadowAtlas>(device_, atlasSize, directional.atlasFormat,
                                                         "directional shadow atlas");
     const shadows::OtherShadowSettings& other = frame.shadows.other;
-    if (!otherAtlas_ || otherAtlas_->size() != other.atlasSize || otherAtlas_->format() != other.atlasFormat)
-        otherAtlas_ = std::make_unique<shadows::ShadowAtlas>(device_, other.atlasSize, other.atlasFormat,
+    const std::uint32_t otherSize = plans.other.tiles.empty() ? kStandInAtlasSize : other.atlasSize;
+    if (!otherAtlas_ || otherAtlas_->size() != otherSize || otherAtlas_->format() != other.atlasFormat)
+        otherAtlas_ = std::make_unique<shadows::ShadowAtlas>(device_, otherSize, other.atlasFormat,
                                                              "other shadow atlas");
     // Cube-map mode keeps room for every cube it may plan; otherwise one small cube stands in for the binding.
     const bool cubeMode = other.pointMode == shadows::PointShadowMode::CubeMap;
@@ -262,6 +274,7 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame)
     const rhi::Attachment litColor{lit_.get(), 0};
     const rhi::Attachment cascadeColor{cascades_.get(), 0};
     litTarget_ = device_.createFramebuffer({.colors = {&litColor, 1}, .depth = {depth_.get(), 0}, .debugName = "lit"});
+    prepassTarget_ = device_.createFramebuffer({.depth = {depth_.get(), 0}, .debugName = "depth prepass"});
     cascadeTarget_ = device_.createFramebuffer(
         {.colors = {&cascadeColor, 1}, .depth = {depth_.get(), 0}, .debugName = "cascade view"});
     const rhi::Attachment visibilityColor{visibility_.get(), 0};
@@ -315,20 +328,22 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 }
 
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
-                                  const LitFrameUniforms& frame, const rhi::UniformSlice& shadowUniforms,
-                                  const rhi::UniformSlice& otherShadowUniforms)
+                                  const rhi::UniformSlice& frameSlice, bool visibility, bool prepassed,
+                                  const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
     // The visibility view reports shadows on every surface: blended ones are drawn opaque there, so the alpha
     // channel keeps saying whether a shadow map decides the pixel.
-    const bool visibility = frame.config.y == static_cast<int>(LitView::Visibility);
-    commands.beginPass({.framebuffer = &target, .clearColor = visibility ? kUndecided : kBackground});
-    const rhi::UniformSlice frameSlice = uniforms_.push(frame);
+    commands.beginPass(
+        {.framebuffer = &target, .clearColor = visibility ? kUndecided : kBackground, .clearDepth = !prepassed});
     const rhi::Pipeline* bound = nullptr;
-    for (const std::uint32_t index : drawOrder(scene, glm::vec3(frame.cameraPosition))) {
+    for (const std::uint32_t index : drawOrder_) {
         const scene::Object& object = scene.objects[index];
         const scene::Material& material = scene.materialOf(object);
-        const rhi::Pipeline* pipeline = litPipelines_[pipelineIndex(material.doubleSided, material.blend && !visibility)].get();
+        const bool blend = material.blend && !visibility;
+        const rhi::Pipeline* pipeline = prepassed && !blend
+                                            ? prepassedLitPipelines_[material.doubleSided ? 1 : 0].get()
+                                            : litPipelines_[pipelineIndex(material.doubleSided, blend)].get();
         if (pipeline != bound) {
             // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
             commands.bindPipeline(*pipeline);
@@ -340,15 +355,8 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
             bound = pipeline;
         }
-        rhi::bindUniform(commands, kLitObjectBinding, uniforms_.push(objectUniforms(object, material)));
-        for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
-            const auto textureSlot = static_cast<scene::TextureSlot>(slot);
-            commands.bindTexture(litMaterialMapBinding(textureSlot), gpuScene_.map(material, textureSlot),
-                                 gpuScene_.mapSampler(material, textureSlot));
-        }
-        commands.bindVertexBuffer(0, gpuScene_.vertices(object.mesh));
-        commands.bindIndexBuffer(gpuScene_.indices(object.mesh), rhi::IndexType::UInt32);
-        commands.drawIndexed(static_cast<std::uint32_t>(scene.meshOf(object).indices.size()));
+        rhi::bindUniform(commands, kLitObjectBinding, objectSlices_[index]);
+        gpuScene_.drawWithMaps(commands, object, kLitMaterialMapBinding);
     }
     commands.endPass();
 }
@@ -378,7 +386,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     checkPlansFitFrame(plans, frame.shadows);
     const AnisotropyChoice anisotropy = chooseAnisotropy(frame.maxAnisotropy, device_.capabilities());
     const int visibilityLight = frame.visibilityOf ? litLightIndex(*frame.visibilityOf) : -1;
-    prepareTargets(frame);
+    prepareTargets(frame, plans);
     gpuScene_.setMaxAnisotropy(anisotropy.value);
     notes_ = frameNotes(gpuScene_.scene(), plans);
     if (anisotropy.note && !gpuScene_.scene().textures.empty())
@@ -393,6 +401,11 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
             stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;
 
     uniforms_.reset();
+    const scene::Scene& scene = gpuScene_.scene();
+    drawOrder_ = drawOrder(scene, camera.position);
+    objectSlices_.clear();
+    for (const scene::Object& object : scene.objects)
+        objectSlices_.push_back(uniforms_.push(objectUniforms(object, scene.materialOf(object))));
     const rhi::UniformSlice shadowUniforms = uniforms_.push(plan_.uniforms);
     const rhi::UniformSlice otherShadowUniforms = uniforms_.push(otherPlan_.uniforms);
     const std::vector<shadows::ShadowCaster> casters = gpuScene_.casters();
@@ -405,24 +418,32 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     stats.otherCasterDraws = otherShadowPass_.record(commands, *otherAtlas_, *shadowCubes_, otherPlan_, casters);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 2);
-    recordLitPass(commands, *litTarget_, frameUniforms(camera, frame, LitView::Lit), shadowUniforms,
-                  otherShadowUniforms);
+    const rhi::UniformSlice litFrame = uniforms_.push(frameUniforms(camera, frame, LitView::Lit));
+    if (frame.depthPrepass)
+        depthPrepass_->record(commands, *prepassTarget_, gpuScene_, drawOrder_, litFrame, objectSlices_);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 3);
+    recordLitPass(commands, *litTarget_, litFrame, false, frame.depthPrepass, shadowUniforms, otherShadowUniforms);
+    if (timestamps_)
+        commands.writeTimestamp(*timestamps_, 4);
+    // The debug views draw without the prepass: they clear the depth the lit pass tested against.
     if (frame.cascadeView)
-        recordLitPass(commands, *cascadeTarget_, frameUniforms(camera, frame, LitView::Cascades), shadowUniforms,
-                      otherShadowUniforms);
+        recordLitPass(commands, *cascadeTarget_, uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)),
+                      false, false, shadowUniforms, otherShadowUniforms);
     if (frame.visibilityOf) {
         LitFrameUniforms u = frameUniforms(camera, frame, LitView::Visibility);
         u.config.w = visibilityLight;
-        recordLitPass(commands, *visibilityTarget_, u, shadowUniforms, otherShadowUniforms);
+        recordLitPass(commands, *visibilityTarget_, uniforms_.push(u), true, false, shadowUniforms,
+                      otherShadowUniforms);
     }
     device_.submit(commands);
     if (timestamps_) {
         const std::vector<double> ns = device_.readTimestamps(*timestamps_);
         stats.atlasPassMs = (ns[1] - ns[0]) * 1e-6;
         stats.otherAtlasPassMs = (ns[2] - ns[1]) * 1e-6;
-        stats.litPassMs = (ns[3] - ns[2]) * 1e-6;
+        if (frame.depthPrepass)
+            stats.depthPrepassMs = (ns[3] - ns[2]) * 1e-6;
+        stats.litPassMs = (ns[4] - ns[3]) * 1e-6;
     }
     return stats;
 }

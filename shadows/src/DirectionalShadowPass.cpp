@@ -21,7 +21,7 @@ DirectionalShadowPass::DirectionalShadowPass(rhi::Device& device, const CasterVe
 std::uint32_t DirectionalShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas,
                                             const DirectionalShadowPlan& plan, std::span<const ShadowCaster> casters)
 {
-    if (atlas.size() != plan.atlas.atlasSize())
+    if (!plan.lights.empty() && atlas.size() != plan.atlas.atlasSize())
         throw rhi::Error(fmt::format("shadow atlas is {} texels wide, the plan was made for {}", atlas.size(),
                                      plan.atlas.atlasSize()));
     draws_.reset();

@@ -50,6 +50,13 @@ public:
     std::vector<shadows::Bounds> casterBounds() const;
 
     static shadows::CasterVertexFormat vertexFormat();
+    // scene::Vertex's six attributes at locations 0 to 5 (position, normal, uv, uv1, tangent, colour), as the
+    // lit shaders read them; a pass whose shader reads fewer removes the others.
+    static rhi::VertexLayout vertexLayout();
+
+    // Binds the material's maps (material textures, or the white texel) at firstMapBinding + scene::TextureSlot,
+    // then the object's mesh, and draws it.
+    void drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding) const;
     // The uv transform rows of a material texture (identity on TEXCOORD_0 without one).
     static shadows::UvTransformRows uvTransform(const std::optional<scene::MaterialTexture>& texture);
 

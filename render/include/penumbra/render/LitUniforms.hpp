@@ -69,7 +69,8 @@ inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 
 // The lit pass shader `fileName` ("lit.vert", "lit.frag") with the include "lit_constants.glsl" that
 // lit.glsl reads: the material texture bindings and TextureSlot numbers above as GLSL macros, so the
-// numbers are written once, here.
-rhi::ShaderSource litShader(std::string_view fileName);
+// numbers are written once, here; and PENUMBRA_DEPTH_PREPASSED, 1 for the lit pass after a depth prepass (an
+// equal depth test instead of lit.frag's alpha discard).
+rhi::ShaderSource litShader(std::string_view fileName, bool depthPrepassed = false);
 
 } // namespace penumbra::render

@@ -22,6 +22,8 @@
 
 namespace penumbra::render {
 
+class DepthPrepass;
+
 struct FrameDesc {
     std::uint32_t width = 1280;
     std::uint32_t height = 720;
@@ -35,12 +37,16 @@ struct FrameDesc {
     // Anisotropic filtering of the scene's trilinear textures, at least 1 (off); more than the device offers is
     // clamped to its limit (1 where it has none), and the frame's notes say so.
     float maxAnisotropy = 8.0f;
+    // Draw opaque and clip geometry depth-only first (render/src/passes/DepthPrepass.hpp): the lit pass then tests
+    // depth for equality and shades each visible pixel once instead of once per overlapping surface.
+    bool depthPrepass = true;
 };
 
 struct FrameStats {
     std::uint32_t casterDraws = 0;                  // issued into the directional atlas
     std::uint32_t casterDrawsWithoutCullingBias = 0; // casters overlapping each cascade's light box
     std::uint32_t otherCasterDraws = 0;             // issued into the spot and point shadows
+    std::optional<double> depthPrepassMs;           // GPU time, where the device has timestamps (and a prepass ran)
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
     std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
@@ -64,6 +70,7 @@ class SceneRenderer {
 public:
     // The scene must outlive the renderer; it is validated and its meshes uploaded here.
     SceneRenderer(rhi::Device& device, const scene::Scene& scene);
+    ~SceneRenderer();
 
     // Throws rhi::Error for settings out of range (naming the field).
     ShadowPlans planShadows(const scene::Camera& camera, const FrameDesc& frame) const;
@@ -80,9 +87,10 @@ public:
     const GpuScene& gpuScene() const { return gpuScene_; }
     const rhi::Texture& cascadeImage() const { return *cascades_; }
     const rhi::Texture& visibilityImage() const { return *visibility_; }
+    // 16 texels wide where the last frame used no tile of it (no shadowed directional light).
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
-    // Spot and point shadows: tiles of this atlas.
+    // Spot and point shadows: tiles of this atlas (16 texels wide where the last frame used none).
     const shadows::ShadowAtlas& otherAtlas() const { return *otherAtlas_; }
     const shadows::OtherShadowPlan& otherPlan() const { return otherPlan_; }
     // Point shadow cube maps (PointShadowMode::CubeMap; one unused cube otherwise).
@@ -92,11 +100,14 @@ public:
     const std::vector<std::string>& notes() const { return notes_; }
 
 private:
-    void prepareTargets(const FrameDesc& frame);
+    void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
     int litLightIndex(const scene::LightRef& light) const;
-    void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const LitFrameUniforms& frame,
-                       const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms);
+    // After the depth prepass (`prepassed`) the opaque objects are drawn with an equal depth test into the
+    // prepass's depth; otherwise the target's depth is cleared.
+    void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const rhi::UniformSlice& frameSlice,
+                       bool visibility, bool prepassed, const rhi::UniformSlice& shadowUniforms,
+                       const rhi::UniformSlice& otherShadowUniforms);
 
     rhi::Device& device_;
     GpuScene gpuScene_;
@@ -106,6 +117,13 @@ private:
     std::unique_ptr<rhi::Shader> litFragment_;
     // Culled or not, opaque or blended (SceneRenderer.cpp, pipelineIndex).
     std::array<std::unique_ptr<rhi::Pipeline>, 4> litPipelines_;
+    // After the depth prepass: culled or not, opaque (equal depth test, no discard); blended ones are litPipelines_'.
+    std::unique_ptr<rhi::Shader> prepassedLitFragment_;
+    std::array<std::unique_ptr<rhi::Pipeline>, 2> prepassedLitPipelines_;
+    std::unique_ptr<DepthPrepass> depthPrepass_;
+    // Per object, this frame's Object block (shaders/lit.glsl), shared by the prepass and every lit view.
+    std::vector<rhi::UniformSlice> objectSlices_;
+    std::vector<std::uint32_t> drawOrder_; // this frame's (SceneRenderer.cpp, drawOrder)
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<rhi::TimestampQueries> timestamps_;
     rhi::UniformArena uniforms_;
@@ -117,6 +135,7 @@ private:
     std::unique_ptr<rhi::Texture> cascades_;
     std::unique_ptr<rhi::Texture> depth_;
     std::unique_ptr<rhi::Framebuffer> litTarget_;
+    std::unique_ptr<rhi::Framebuffer> prepassTarget_; // depth_ alone
     std::unique_ptr<rhi::Framebuffer> cascadeTarget_;
     std::unique_ptr<rhi::Texture> visibility_;
     std::unique_ptr<rhi::Framebuffer> visibilityTarget_;

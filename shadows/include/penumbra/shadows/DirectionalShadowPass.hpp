@@ -24,7 +24,8 @@ public:
     DirectionalShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
-    // next record(), so submit `commands` before recording again.
+    // next record(), so submit `commands` before recording again. `atlas` may be any size where the plan has no
+    // shadowed light.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const DirectionalShadowPlan& plan,
                          std::span<const ShadowCaster> casters);
 

@@ -21,7 +21,7 @@ public:
 
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
     // next record(), so submit `commands` before recording again.
-    // `cubes` must hold at least plan.cubes.size() cubes.
+    // `cubes` must hold at least plan.cubes.size() cubes; `atlas` may be any size where the plan has no tile.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
                          const OtherShadowPlan& plan, std::span<const ShadowCaster> casters);
 

@@ -1,0 +1,175 @@
+#include "SceneBench.hpp"
+
+#include "BackendOptions.hpp"
+
+#include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/render/ReferenceLitPass.hpp"
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/rhi/Error.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <fmt/format.h>
+
+namespace penumbra::apps {
+namespace {
+
+constexpr std::size_t kPasses = std::size(kBenchPassNames);
+
+// One series of per-frame figures in milliseconds.
+struct Series {
+    std::vector<double> ms;
+
+    double median() const
+    {
+        if (ms.empty())
+            return 0.0;
+        std::vector<double> sorted = ms;
+        std::sort(sorted.begin(), sorted.end());
+        const std::size_t n = sorted.size();
+        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    }
+    double min() const { return ms.empty() ? 0.0 : *std::min_element(ms.begin(), ms.end()); }
+    double max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
+};
+
+struct ConfigurationResult {
+    std::string configuration;
+    Series frame;
+    std::array<Series, kPasses> passes;
+    render::FrameStats last;
+};
+
+// Each pass's GPU time of one frame, in kBenchPassNames order; 0 for a pass the frame does not draw.
+std::array<double, kPasses> passTimes(const render::FrameStats& s, double referenceMs)
+{
+    return {s.depthPrepassMs.value_or(0.0), s.atlasPassMs.value_or(0.0), s.otherAtlasPassMs.value_or(0.0), 0.0,
+            s.litPassMs.value_or(0.0),     0.0,                          referenceMs};
+}
+
+// "bench vulkan: frame 12/20", redrawn on one line of stderr.
+void showProgress(const std::string& configuration, std::uint32_t done, std::uint32_t total)
+{
+    fmt::print(stderr, "\rbench {}: frame {}/{}", configuration, done, total);
+    if (done == total)
+        fmt::print(stderr, "\n");
+    std::fflush(stderr);
+}
+
+ConfigurationResult benchConfiguration(const std::string& configuration, const scene::Scene& scene,
+                                       const render::FrameDesc& frame, const SceneBenchOptions& options)
+{
+    auto device = createDevice(toolDeviceDesc(configuration, options.validate));
+    if (!device->capabilities().timestamps)
+        throw rhi::Error(fmt::format("{}: the device has no timestamp queries, so passes cannot be timed",
+                                     configuration));
+    render::SceneRenderer renderer(*device, scene);
+    render::ReferenceLitPass reference(*device, renderer.gpuScene());
+    ConfigurationResult result{configuration, {}, {}, {}};
+    const std::uint32_t total = options.warmup + options.frames;
+    for (std::uint32_t i = 0; i < total; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        render::FrameStats stats = renderer.render(scene.camera, frame);
+        const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        // After the frame, on its plan and atlas, in a submission of its own: not part of the frame's wall time.
+        const double referenceMs = reference.render(scene.camera, frame, renderer);
+        showProgress(configuration, i + 1, total);
+        if (i < options.warmup)
+            continue;
+        result.frame.ms.push_back(wallMs);
+        const std::array<double, kPasses> times = passTimes(stats, referenceMs);
+        for (std::size_t p = 0; p < kPasses; ++p)
+            result.passes[p].ms.push_back(times[p]);
+        result.last = std::move(stats);
+    }
+    if (const auto messages = device->debugMessages(); !messages.empty())
+        throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
+    return result;
+}
+
+std::size_t passIndex(std::string_view name)
+{
+    return static_cast<std::size_t>(std::find(std::begin(kBenchPassNames), std::end(kBenchPassNames), name) -
+                                    std::begin(kBenchPassNames));
+}
+
+// Our passes that the reference lit pass stands for: the depth prepass and the lit pass.
+double litOverReference(const ConfigurationResult& r)
+{
+    const double reference = r.passes[passIndex("reference")].median();
+    const double ours = r.passes[passIndex("depth")].median() + r.passes[passIndex("lit")].median();
+    return reference > 0.0 ? ours / reference : 0.0;
+}
+
+nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& options, const render::FrameDesc& frame)
+{
+    nlohmann::json passes = nlohmann::json::object(), mins = nlohmann::json::object(),
+                   maxs = nlohmann::json::object();
+    for (std::size_t p = 0; p < kPasses; ++p) {
+        passes[kBenchPassNames[p]] = r.passes[p].median();
+        mins[kBenchPassNames[p]] = r.passes[p].min();
+        maxs[kBenchPassNames[p]] = r.passes[p].max();
+    }
+    return {{"configuration", r.configuration},
+            {"scene", options.scene.scene},
+            {"width", frame.width},
+            {"height", frame.height},
+            {"frames", options.frames},
+            {"warmup", options.warmup},
+            {"depthPrepass", frame.depthPrepass},
+            {"cascadeCount", frame.shadows.directional.cascadeCount},
+            {"atlasSize", frame.shadows.directional.atlasSize},
+            {"frameMs", r.frame.median()},
+            {"frameMsMin", r.frame.min()},
+            {"frameMsMax", r.frame.max()},
+            {"passes", passes},
+            {"passesMin", mins},
+            {"passesMax", maxs},
+            {"litOverReference", litOverReference(r)},
+            {"casterDraws", r.last.casterDraws + r.last.otherCasterDraws}};
+}
+
+void printTable(const std::vector<ConfigurationResult>& results, const SceneBenchOptions& options,
+                const render::FrameDesc& frame)
+{
+    fmt::print("\n{} at {}x{}, {} cascades in a {}^2 atlas, depth prepass {}; {} frames after {} warm-up (medians; GPU "
+               "timestamps per pass, wall time per frame)\n",
+               options.scene.scene, frame.width, frame.height, frame.shadows.directional.cascadeCount,
+               frame.shadows.directional.atlasSize, frame.depthPrepass ? "on" : "off", options.frames, options.warmup);
+    fmt::print("{:<24} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>11} {:>9}\n", "configuration", "frame ms", "depth",
+               "atlas", "other", "lit", "reference", "ours / ref", "frame max");
+    for (const ConfigurationResult& r : results)
+        fmt::print("{:<24} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>11.3f} {:>9.2f}\n", r.configuration,
+                   r.frame.median(), r.passes[passIndex("depth")].median(),
+                   r.passes[passIndex("directionalAtlas")].median(), r.passes[passIndex("otherAtlas")].median(),
+                   r.passes[passIndex("lit")].median(), r.passes[passIndex("reference")].median(), litOverReference(r),
+                   r.frame.max());
+    if (results.size() == 2 && results[1].frame.median() > 0.0)
+        fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,
+                   results[0].frame.median() / results[1].frame.median());
+}
+
+} // namespace
+
+nlohmann::json runSceneBench(const SceneBenchOptions& options)
+{
+    const std::vector<std::string> configurations = expandBackends(options.backends);
+    const LoadedScene loaded = loadScene(options.scene);
+    const render::FrameDesc frame = frameDesc(options.scene);
+    for (const std::string& note : loaded.notes)
+        fmt::print("{}: {}\n", options.scene.scene, note);
+    std::vector<ConfigurationResult> results;
+    for (const std::string& configuration : configurations)
+        results.push_back(benchConfiguration(configuration, loaded.scene, frame, options));
+    printTable(results, options, frame);
+    for (const std::string& note : results.front().last.notes)
+        fmt::print("  note: {}\n", note);
+    nlohmann::json rows = nlohmann::json::array();
+    for (const ConfigurationResult& r : results)
+        rows.push_back(toJson(r, options, frame));
+    return {{"scene", rows}};
+}
+
+} // namespace penumbra::apps

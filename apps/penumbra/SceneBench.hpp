@@ -1,0 +1,34 @@
+#pragma once
+
+#include "SceneOptions.hpp"
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace penumbra::apps {
+
+// `penumbra bench --scene S`: any built-in or glTF scene, N frames in one process per configuration after K
+// warm-up frames, each pass's GPU time (timestamps) and each frame's wall time (planning, recording, submission
+// and the wait for the GPU), medians and spread.
+struct SceneBenchOptions {
+    SceneOptions scene;
+    std::vector<std::string> backends = {"vulkan", "opengl"};
+    std::uint32_t frames = 20;
+    std::uint32_t warmup = 3;
+    bool validate = false;
+};
+
+// The pass names of the JSON's "passes" objects, in frame order: the depth prepass, the directional and the
+// other atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass.
+inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "otherAtlas", "screenSpaceShadows",
+                                                  "lit", "resolve", "reference"};
+
+// Prints a table and returns {"scene": [one object per configuration: configuration, scene, width, height,
+// frames, warmup, frameMs (median), frameMsMin, frameMsMax, passes {name: median ms}, passesMin, passesMax,
+// litOverReference, casterDraws]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that
+// is missing or, with validate, reports a message.
+nlohmann::json runSceneBench(const SceneBenchOptions& options);
+
+} // namespace penumbra::apps

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "penumbra/render/GpuScene.hpp"
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/UniformArena.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+
+namespace penumbra::render {
+
+inline constexpr std::uint32_t kReferenceSplitsBinding = 4;
+
+// The reference block of shaders/reference_lit.frag, std140.
+struct ReferenceSplitUniforms {
+    glm::vec4 farDepths{0.0f}; // view depth where cascade i ends
+    glm::ivec4 config{0};      // cascade count, the first directional light's first atlas tile (-1: no shadows)
+};
+static_assert(sizeof(ReferenceSplitUniforms) == 32);
+
+// The floor a lit pass is measured against (penumbra bench): the lit shader of the public cascaded shadow map
+// samples (Sascha Willems' Vulkan examples, "shadowmappingcascade"; LearnOpenGL, "Cascaded Shadow Mapping"), drawn
+// on the renderer's scene, meshes and directional atlas: vertex transform, one base colour texture sample with an
+// alpha test at 0.5, the cascade chosen by view depth against the split distances, one nearest comparison in the
+// atlas, Lambert n.l of the first directional light plus ambient; forward, no prepass, into targets of its own.
+class ReferenceLitPass {
+public:
+    ReferenceLitPass(rhi::Device& device, const GpuScene& scene);
+
+    // Draws the camera's view with the renderer's last plan and atlas (after SceneRenderer::render) in one
+    // submission; returns its GPU time in milliseconds (0 on a device without timestamps).
+    double render(const scene::Camera& camera, const FrameDesc& frame, const SceneRenderer& renderer);
+
+    const rhi::Texture& image() const { return *color_; }
+
+private:
+    rhi::Device& device_;
+    const GpuScene& scene_;
+    std::unique_ptr<rhi::Shader> vertex_, fragment_;
+    std::array<std::unique_ptr<rhi::Pipeline>, 2> pipelines_; // culled, double-sided
+    std::unique_ptr<rhi::CommandList> commands_;
+    std::unique_ptr<rhi::TimestampQueries> timestamps_;
+    rhi::UniformArena uniforms_;
+    std::unique_ptr<rhi::Texture> color_, depth_;
+    std::unique_ptr<rhi::Framebuffer> target_;
+};
+
+} // namespace penumbra::render

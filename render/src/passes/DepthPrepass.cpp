@@ -1,0 +1,69 @@
+#include "DepthPrepass.hpp"
+
+#include "penumbra/render/LitUniforms.hpp"
+#include "penumbra/shaders/ShaderLibrary.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace penumbra::render {
+namespace {
+
+constexpr std::uint32_t kLocations[] = {0, 2, 3, 5}; // the vertex attributes depth_prepass.vert reads
+
+std::uint32_t pipelineIndex(bool doubleSided, bool clip) { return (doubleSided ? 1u : 0u) + (clip ? 2u : 0u); }
+
+} // namespace
+
+DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat)
+    : vertex_(device.createShader(litShader("depth_prepass.vert"))),
+      // Depth only, no discard: early depth testing stays on.
+      opaqueFragment_(device.createShader(shaders::load("shadow_caster_opaque.frag"))),
+      clipFragment_(device.createShader(litShader("depth_prepass_clip.frag")))
+{
+    rhi::PipelineDesc desc;
+    desc.vertex = vertex_.get();
+    // Only the attributes depth_prepass.vert reads: the validation layer reports attributes a shader does not consume.
+    desc.vertexLayout = GpuScene::vertexLayout();
+    std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
+        return std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
+    });
+    desc.depthFormat = depthFormat;
+    desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
+    for (const bool clip : {false, true})
+        for (const bool doubleSided : {false, true}) {
+            desc.fragment = clip ? clipFragment_.get() : opaqueFragment_.get();
+            desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
+            desc.debugName = fmt::format("depth prepass ({}, {})", clip ? "clip" : "opaque",
+                                         doubleSided ? "double-sided" : "culled");
+            pipelines_[pipelineIndex(doubleSided, clip)] = device.createPipeline(desc);
+        }
+}
+
+void DepthPrepass::record(rhi::CommandList& commands, const rhi::Framebuffer& target, const GpuScene& gpuScene,
+                          std::span<const std::uint32_t> order, const rhi::UniformSlice& frame,
+                          std::span<const rhi::UniformSlice> objects) const
+{
+    const scene::Scene& scene = gpuScene.scene();
+    commands.beginPass({.framebuffer = &target, .clearColor = std::nullopt, .clearDepth = true});
+    const rhi::Pipeline* bound = nullptr;
+    for (const std::uint32_t index : order) {
+        const scene::Object& object = scene.objects[index];
+        const scene::Material& material = scene.materialOf(object);
+        if (material.blend)
+            continue;
+        const bool clip = material.caster == scene::CasterMode::Clip;
+        const rhi::Pipeline* pipeline = pipelines_[pipelineIndex(material.doubleSided, clip)].get();
+        if (pipeline != bound) {
+            commands.bindPipeline(*pipeline);
+            rhi::bindUniform(commands, kLitFrameBinding, frame);
+            bound = pipeline;
+        }
+        rhi::bindUniform(commands, kLitObjectBinding, objects[index]);
+        // lit.glsl declares every material map; the RHI asks for all of them bound.
+        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding);
+    }
+    commands.endPass();
+}
+
+} // namespace penumbra::render

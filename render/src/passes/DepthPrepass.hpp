@@ -1,0 +1,33 @@
+#pragma once
+
+#include "penumbra/render/GpuScene.hpp"
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/UniformArena.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+
+namespace penumbra::render {
+
+// The depth prepass: opaque and clip objects depth-only, clip ones cut with the lit pass's alpha, so that the lit
+// pass after it (equal depth test, no depth write, no discard) shades each visible pixel once, however many leaf
+// cards overlap it. Blended objects are not drawn: they blend over the opaque depth in the lit pass.
+class DepthPrepass {
+public:
+    DepthPrepass(rhi::Device& device, rhi::Format depthFormat);
+
+    // Clears `target` (depth only) and draws `order`'s objects that are not blended; `frame` is the lit pass's
+    // Frame block and objects[i] object i's Object block (shaders/lit.glsl).
+    void record(rhi::CommandList& commands, const rhi::Framebuffer& target, const GpuScene& scene,
+                std::span<const std::uint32_t> order, const rhi::UniformSlice& frame,
+                std::span<const rhi::UniformSlice> objects) const;
+
+private:
+    std::unique_ptr<rhi::Shader> vertex_, opaqueFragment_, clipFragment_;
+    // Culled or not (glTF doubleSided), opaque or clip (pipelineIndex in DepthPrepass.cpp).
+    std::array<std::unique_ptr<rhi::Pipeline>, 4> pipelines_;
+};
+
+} // namespace penumbra::render

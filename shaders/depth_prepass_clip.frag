@@ -1,0 +1,20 @@
+#version 450
+// The depth prepass of clip materials: the lit pass's alpha (lit.frag), cut at the material's cutoff, so the
+// lit pass after it needs no discard.
+
+#include "lit.glsl"
+#include "material.glsl"
+
+layout(location = 2) in vec2 vUv;
+layout(location = 3) in vec2 vUv1;
+layout(location = 5) in vec4 vColor;
+
+void main()
+{
+    const bool textured = hasMap(PENUMBRA_TEXTURE_BASE_COLOR);
+    const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
+    const vec4 texel = texture(baseColorMap, baseUv);
+    const float alpha = materialAlpha(object.baseColor.a, PENUMBRA_CASTER_CLIP, baseUv, textured, texel.a) * vColor.a;
+    if (alpha < object.surface.z)
+        discard;
+}
