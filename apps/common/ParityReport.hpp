@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ImageDifference.hpp"
+#include "penumbra/parity/ImageDifference.hpp"
 #include "ShadowScene.hpp"
 
 #include <filesystem>

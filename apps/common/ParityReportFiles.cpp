@@ -1,5 +1,5 @@
-#include "HeatMap.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/HeatMap.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "ParityReport.hpp"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "ShadowScene.hpp"
 
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"

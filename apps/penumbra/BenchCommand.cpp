@@ -1,7 +1,7 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
 #include "DrawScene.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "RawDraws.hpp"
 #include "ShadowBench.hpp"
 

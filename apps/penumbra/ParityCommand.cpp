@@ -1,5 +1,5 @@
 #include "Commands.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "ParityReport.hpp"
 #include "SceneOptions.hpp"
 

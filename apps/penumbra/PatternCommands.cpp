@@ -1,6 +1,6 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "TestPattern.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"

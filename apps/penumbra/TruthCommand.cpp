@@ -1,7 +1,7 @@
 // penumbra truth: a scene's shadow maps against a CPU ray cast of the same pixels, per shadowed light.
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "SceneOptions.hpp"
 #include "TruthPictures.hpp"
 

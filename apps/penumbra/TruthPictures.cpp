@@ -1,6 +1,6 @@
 #include "TruthPictures.hpp"
 
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 
 #include "penumbra/rhi/Image.hpp"
 

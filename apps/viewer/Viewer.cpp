@@ -5,7 +5,7 @@
 #include "GlfwSession.hpp"
 #include "ImGuiRenderer.hpp"
 #include "ImGuiSession.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "ViewState.hpp"
 #include "ViewerScene.hpp"
 #include "ViewerWindow.hpp"

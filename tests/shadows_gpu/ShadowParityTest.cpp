@@ -11,7 +11,7 @@
 // agree exactly and by count and PSNR against Vulkan.
 #include "GltfBuilder.hpp"
 #include "GpuTesting.hpp"
-#include "ImageDifference.hpp"
+#include "penumbra/parity/ImageDifference.hpp"
 #include "ShadowScene.hpp"
 
 #include "penumbra/render/AtlasPicture.hpp"

@@ -1,6 +1,6 @@
 #include "GpuTesting.hpp"
 
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 

@@ -1,6 +1,6 @@
 // The parity report's verdicts on made-up pictures: which pairs pass, what the failures name, what the
 // heat maps show. CPU only; the commands that render real pictures are tested in cli.parity-*.
-#include "HeatMap.hpp"
+#include "penumbra/parity/HeatMap.hpp"
 #include "ParityReport.hpp"
 
 #include <gtest/gtest.h>

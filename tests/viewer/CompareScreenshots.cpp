@@ -3,7 +3,7 @@
 //   panel <without-ui.png> <with-ui.png> <panel right edge x>: the pictures differ, and only left
 //   of the edge (where the panel is drawn).
 // Prints max difference, PSNR and differing pixels; exits 1 on failure, naming both files.
-#include "ImageDifference.hpp"
+#include "penumbra/parity/ImageDifference.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 

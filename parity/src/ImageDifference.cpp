@@ -1,4 +1,4 @@
-#include "ImageDifference.hpp"
+#include "penumbra/parity/ImageDifference.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 

@@ -1,4 +1,4 @@
-#include "HeatMap.hpp"
+#include "penumbra/parity/HeatMap.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 

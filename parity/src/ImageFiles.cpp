@@ -1,4 +1,4 @@
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 
 #include "penumbra/rhi/ColorSpace.hpp"
 #include "penumbra/rhi/Error.hpp"
