@@ -16,13 +16,13 @@ ParityReport compareParity(const std::vector<ShadowPictures>& pictures, const st
         for (std::size_t j = i + 1; j < pictures.size(); ++j) {
             const ShadowPictures& a = pictures[i];
             const ShadowPictures& b = pictures[j];
-            PairParity pair{i, j, compareImages(a.lit, b.lit), {}, true};
+            PairParity pair{i, j, parity::compareImages(a.lit, b.lit), {}, true};
             pair.pass = pair.lit.psnr >= thresholds.minLitPsnr;
             for (const AtlasPictures& atlasA : a.atlases) {
                 const AtlasPictures& atlasB = b.atlas(atlasA.name);
-                AtlasParity atlas{atlasA.name, compareFloats(atlasA.lightDepth, atlasB.lightDepth), std::nullopt, true};
+                AtlasParity atlas{atlasA.name, parity::compareFloats(atlasA.lightDepth, atlasB.lightDepth), std::nullopt, true};
                 if (a.depthRange == b.depthRange && a.reversedZ == b.reversedZ)
-                    atlas.rawIdentical = compareFloats(atlasA.depth.depth, atlasB.depth.depth).differingPixels == 0;
+                    atlas.rawIdentical = parity::compareFloats(atlasA.depth.depth, atlasB.depth.depth).differingPixels == 0;
                 atlas.pass = atlas.lightDepth.maxAbs <= thresholds.maxLightDepthDifference;
                 pair.pass = pair.pass && atlas.pass;
                 pair.atlases.push_back(atlas);

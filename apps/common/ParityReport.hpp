@@ -20,7 +20,7 @@ struct ParityThresholds {
 
 struct AtlasParity {
     std::string name;
-    FloatDifference lightDepth;       // comparable across conventions
+    parity::FloatDifference lightDepth;       // comparable across conventions
     std::optional<bool> rawIdentical; // only where depth range and reversed-Z agree
     bool pass = true;
 };
@@ -28,7 +28,7 @@ struct AtlasParity {
 // Two configurations, by index into the compared pictures.
 struct PairParity {
     std::size_t a = 0, b = 0;
-    ImageDifference lit;
+    parity::ImageDifference lit;
     std::vector<AtlasParity> atlases;
     bool pass = true;
 };

@@ -135,14 +135,14 @@ void writeParityReport(const std::filesystem::path& folder, const ParityReport& 
         const ShadowPictures& a = pictures[pair.a];
         const ShadowPictures& b = pictures[pair.b];
         const std::filesystem::path stem = folder / "diff" / pairStem(pair, pictures);
-        writePng(stem.string() + "-lit.png", differenceHeatMap(a.lit, b.lit, kLitHeatScale));
+        parity::writePng(stem.string() + "-lit.png", parity::differenceHeatMap(a.lit, b.lit, kLitHeatScale));
         for (const AtlasPictures& atlas : a.atlases)
-            writePng(fmt::format("{}-{}.png", stem.string(), atlas.name),
-                     differenceHeatMap(atlas.lightDepth, b.atlas(atlas.name).lightDepth, atlas.depth.width,
+            parity::writePng(fmt::format("{}-{}.png", stem.string(), atlas.name),
+                     parity::differenceHeatMap(atlas.lightDepth, b.atlas(atlas.name).lightDepth, atlas.depth.width,
                                        atlas.depth.height, report.thresholds.maxLightDepthDifference));
     }
-    writeTextFile(folder / "parity.json", toJson(report, pictures, sceneName).dump(2) + "\n");
-    writeTextFile(folder / "index.html", html(report, pictures, sceneName));
+    parity::writeTextFile(folder / "parity.json", toJson(report, pictures, sceneName).dump(2) + "\n");
+    parity::writeTextFile(folder / "index.html", html(report, pictures, sceneName));
 }
 
 } // namespace penumbra::apps

@@ -113,13 +113,13 @@ std::string atlasFileStem(std::string_view name)
 
 void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictures& pictures)
 {
-    writePng(folder / "lit.png", pictures.lit);
+    parity::writePng(folder / "lit.png", pictures.lit);
     for (const AtlasPictures& atlas : pictures.atlases) {
-        writePng(folder / (atlasFileStem(atlas.name) + ".png"), atlas.picture);
-        writeExr(folder / (atlasFileStem(atlas.name) + ".exr"), atlas.depth);
+        parity::writePng(folder / (atlasFileStem(atlas.name) + ".png"), atlas.picture);
+        parity::writeExr(folder / (atlasFileStem(atlas.name) + ".exr"), atlas.depth);
     }
     if (!pictures.cascades.bytes.empty())
-        writePng(folder / "cascades.png", pictures.cascades);
+        parity::writePng(folder / "cascades.png", pictures.cascades);
 }
 
 } // namespace penumbra::apps

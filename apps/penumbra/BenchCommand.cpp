@@ -109,7 +109,7 @@ void runBenchmarks(const BenchOptions& options)
                                  {"rhiOverRaw", rhi / raw}});
     }
     if (!options.json.empty()) {
-        writeTextFile(options.json, json.dump(2) + "\n");
+        parity::writeTextFile(options.json, json.dump(2) + "\n");
         fmt::print("wrote {}\n", options.json);
     }
 }

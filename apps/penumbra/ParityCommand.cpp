@@ -39,7 +39,7 @@ void runParity(const ParityOptions& options)
     const ParityReport report = compareParity(pictures, patterns);
     const std::filesystem::path folder = options.out;
     for (std::size_t i = 0; i < pictures.size(); ++i) {
-        writePng(folder / pictures[i].configuration / "pattern.png", patterns[i]);
+        parity::writePng(folder / pictures[i].configuration / "pattern.png", patterns[i]);
         writeShadowPictures(folder / pictures[i].configuration, pictures[i]);
     }
     writeParityReport(folder, report, pictures, options.scene.scene);

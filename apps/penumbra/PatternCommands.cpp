@@ -41,7 +41,7 @@ void addPatternCommand(CLI::App& app)
     render->add_option("-o,--out", options->out, "PNG file to write");
     render->add_option("-s,--size", options->size, "Width and height in pixels")->check(CLI::Range(1u, 8192u));
     render->callback([options] {
-        writePng(options->out, renderPattern(options->configuration, options->size));
+        parity::writePng(options->out, renderPattern(options->configuration, options->size));
         fmt::print("{}: {}\n", options->configuration, options->out);
     });
 }

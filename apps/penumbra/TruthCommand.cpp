@@ -149,7 +149,7 @@ void truth(const TruthOptions& options)
     // Everything is computed before the first file is written: a failure leaves no partial report.
     const std::filesystem::path out(options.out);
     writeTruthPictures(out, truths);
-    writeTextFile(out / "truth.json", report.dump(2) + "\n");
+    parity::writeTextFile(out / "truth.json", report.dump(2) + "\n");
     for (const LightTruth& t : truths) {
         const scene::TruthComparison& c = t.comparison;
         fmt::print("{} ({} {}): agreement {} of {} pixels; truly lit {} right of {}, truly shadowed {} right of {}; "

@@ -74,7 +74,7 @@ public:
                 throw rhi::Error(fmt::format("--screenshot {}: no frame reached the window (minimised, or closed before "
                                              "--frames)",
                                              options_.screenshot));
-            apps::writePng(options_.screenshot, windowPicture);
+            parity::writePng(options_.screenshot, windowPicture);
             fmt::print("screenshot: {}\n", options_.screenshot);
         }
         const std::vector<std::string> messages = device_->debugMessages();

@@ -158,7 +158,7 @@ std::vector<float> localGradient(const std::vector<float>& lightDepth, std::uint
 }
 
 struct AtlasComparison {
-    apps::FloatDifference difference;
+    parity::FloatDifference difference;
     std::size_t coverageMismatches = 0; // drawn in one, cleared in the other
     std::size_t beyondBound = 0;        // |difference| > rounding slack + 2 subpixel steps of the local gradient
     float worstRatio = 0.0f;            // max (|difference| - slack) / (gradient * subpixel step)
@@ -176,7 +176,7 @@ std::size_t outliersAllowed(const std::string& atlas) { return atlas == "directi
 AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<float>& b, const rhi::DepthImage& shape)
 {
     AtlasComparison c;
-    c.difference = apps::compareFloats(a, b);
+    c.difference = parity::compareFloats(a, b);
     const std::vector<float> gradient = localGradient(a, shape.width, shape.height);
     for (std::size_t i = 0; i < a.size(); ++i) {
         if ((a[i] > 0.0f) != (b[i] > 0.0f)) {
@@ -214,7 +214,7 @@ void report(const std::string& key, const std::string& line, double maxAbs, doub
 // One atlas of two configurations: raw window depth where the conventions agree, light depth always.
 struct AtlasPair {
     std::string key;
-    std::optional<apps::FloatDifference> raw;
+    std::optional<parity::FloatDifference> raw;
     AtlasComparison light;
 };
 
@@ -222,7 +222,7 @@ AtlasPair compareAtlasPair(const apps::ShadowPictures& a, const apps::ShadowPict
 {
     AtlasPair pair{fmt::format("{}.{}.{}", atlas, a.configuration, b.configuration), std::nullopt, {}};
     if (a.depthRange == b.depthRange && a.reversedZ == b.reversedZ)
-        pair.raw = apps::compareFloats(a.atlas(atlas).depth.depth, b.atlas(atlas).depth.depth);
+        pair.raw = parity::compareFloats(a.atlas(atlas).depth.depth, b.atlas(atlas).depth.depth);
     pair.light = compareAtlases(a.atlas(atlas).lightDepth, b.atlas(atlas).lightDepth, a.atlas(atlas).depth);
     return pair;
 }
@@ -231,7 +231,7 @@ AtlasPair compareAtlasPair(const apps::ShadowPictures& a, const apps::ShadowPict
 // negative controls (...CatchesFault) call the same ones.
 
 // Same depth range and reversal: bit-identical window depth (measured 0 texels of 1M in every variant).
-::testing::AssertionResult rawIdentical(const apps::FloatDifference& raw)
+::testing::AssertionResult rawIdentical(const parity::FloatDifference& raw)
 {
     if (raw.differingPixels == 0)
         return ::testing::AssertionSuccess();
@@ -256,7 +256,7 @@ AtlasPair compareAtlasPair(const apps::ShadowPictures& a, const apps::ShadowPict
 }
 
 // A configuration against its twin of the same backend with the other depth mapping: byte-identical.
-::testing::AssertionResult litIdentical(const apps::ImageDifference& d)
+::testing::AssertionResult litIdentical(const parity::ImageDifference& d)
 {
     if (d.differingPixels == 0)
         return ::testing::AssertionSuccess();
@@ -266,7 +266,7 @@ AtlasPair compareAtlasPair(const apps::ShadowPictures& a, const apps::ShadowPict
 // Vulkan against GL: at most 1 of the 57 600 pixels (a shadow edge) and PSNR >= 60 dB.
 constexpr std::size_t kLitPixelsAllowed = 1;
 constexpr double kLitPsnrFloor = 60.0;
-::testing::AssertionResult litWithinBackendBounds(const apps::ImageDifference& d)
+::testing::AssertionResult litWithinBackendBounds(const parity::ImageDifference& d)
 {
     if (d.differingPixels <= kLitPixelsAllowed && d.psnr >= kLitPsnrFloor)
         return ::testing::AssertionSuccess();
@@ -356,7 +356,7 @@ void checkParity(const Variant& variant)
     for (std::size_t i = 1; i < pictures.size(); ++i) {
         const apps::ShadowPictures& other = pictures[i];
         const std::string key = fmt::format("lit.vulkan.{}", other.configuration);
-        const apps::ImageDifference d = apps::compareImages(vulkan.lit, other.lit);
+        const parity::ImageDifference d = parity::compareImages(vulkan.lit, other.lit);
         report(key,
                fmt::format("{} {}: max abs diff {}, PSNR {:.1f} dB, differing pixels {} of {}", variant.name, key,
                            d.maxAbs, d.psnr, d.differingPixels, std::size_t(kWidth) * kHeight),
@@ -376,7 +376,7 @@ void checkParity(const Variant& variant)
                 !sameBackend(pictures[i].configuration, pictures[j].configuration))
                 continue;
             const std::string key = fmt::format("lit.{}.{}", pictures[i].configuration, pictures[j].configuration);
-            const apps::ImageDifference d = apps::compareImages(pictures[i].lit, pictures[j].lit);
+            const parity::ImageDifference d = parity::compareImages(pictures[i].lit, pictures[j].lit);
             report(key,
                    fmt::format("{} {}: max abs diff {}, PSNR {:.1f} dB, differing pixels {}", variant.name, key,
                                d.maxAbs, d.psnr, d.differingPixels),
@@ -485,19 +485,19 @@ TEST(ShadowParity, ChangedAtlasTexelCatchesFault)
 TEST(ShadowParity, ChangedLitPixelCatchesFault)
 {
     const rhi::Image& lit = oneLightRendered().lit;
-    ASSERT_TRUE(litIdentical(apps::compareImages(lit, lit)));
+    ASSERT_TRUE(litIdentical(parity::compareImages(lit, lit)));
     rhi::Image changed = lit;
     const auto nudge = [&](std::uint32_t x, std::uint32_t y) {
         std::byte& green = changed.bytes[(std::size_t(y) * changed.width + x) * 4 + 1];
         green = std::byte(std::uint8_t(green) ^ 1u);
     };
     nudge(kWidth / 2, kHeight / 2);
-    const apps::ImageDifference one = apps::compareImages(lit, changed);
+    const parity::ImageDifference one = parity::compareImages(lit, changed);
     EXPECT_EQ(one.differingPixels, 1u);
     EXPECT_FALSE(litIdentical(one));
     EXPECT_TRUE(litWithinBackendBounds(one));
     nudge(kWidth / 4, kHeight / 4);
-    EXPECT_FALSE(litWithinBackendBounds(apps::compareImages(lit, changed)));
+    EXPECT_FALSE(litWithinBackendBounds(parity::compareImages(lit, changed)));
 }
 
 } // namespace

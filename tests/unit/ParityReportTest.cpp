@@ -57,7 +57,7 @@ TEST(ParityReportTest, HeatMapsAreBlackWhereEqualAndSaturateAtFullScale)
     rhi::Image a = grey(10), b = grey(10);
     b.bytes[4] = std::byte{11};  // pixel 1: one step
     b.bytes[8] = std::byte{200}; // pixel 2: far beyond full scale
-    const rhi::Image map = differenceHeatMap(a, b, 8);
+    const rhi::Image map = parity::differenceHeatMap(a, b, 8);
     EXPECT_EQ(map.bytes[0], std::byte{0});
     EXPECT_GT(map.bytes[4], std::byte{0}) << "a single step stays visible";
     EXPECT_EQ(map.bytes[8 + 0], std::byte{255});
@@ -65,7 +65,7 @@ TEST(ParityReportTest, HeatMapsAreBlackWhereEqualAndSaturateAtFullScale)
     EXPECT_EQ(map.bytes[8 + 2], std::byte{255});
 
     const std::vector<float> x = {0.0f, 0.5f}, y = {0.0f, 0.5001f};
-    const rhi::Image floats = differenceHeatMap(x, y, 2, 1, 1e-4f);
+    const rhi::Image floats = parity::differenceHeatMap(x, y, 2, 1, 1e-4f);
     EXPECT_EQ(floats.bytes[0], std::byte{0});
     EXPECT_EQ(floats.bytes[4], std::byte{255});
 }
