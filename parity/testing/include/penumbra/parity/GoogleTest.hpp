@@ -31,9 +31,25 @@ Result expectParity(const RenderFunction& render, const Options& options, const 
 // one render: Options::configurations is not used.
 Result expectParity(std::vector<ConfigurationRun> runs, const Options& options, const char* file, int line);
 
+// Where PENUMBRA_EXPECT_PARITY was written, so that its options can be a braced list.
+struct ExpectParityAt {
+    const char* file;
+    int line;
+
+    Result operator()(const RenderFunction& render, const Options& options = {}) const
+    {
+        return expectParity(render, options, file, line);
+    }
+    Result operator()(std::vector<ConfigurationRun> runs, const Options& options = {}) const
+    {
+        return expectParity(std::move(runs), options, file, line);
+    }
+};
+
 } // namespace penumbra::parity::testing
 
 // PENUMBRA_EXPECT_PARITY(render) or PENUMBRA_EXPECT_PARITY(render, options), with a RenderFunction or
-// the runs of one; returns the parity::Result.
+// the runs of one, options a parity::Options or a braced list of its fields
+// ({.configurations = {"vulkan", "opengl"}}); returns the parity::Result.
 #define PENUMBRA_EXPECT_PARITY(render, ...)                                                                           \
-    ::penumbra::parity::testing::expectParity((render), ::penumbra::parity::Options{__VA_ARGS__}, __FILE__, __LINE__)
+    ::penumbra::parity::testing::ExpectParityAt{__FILE__, __LINE__}((render)__VA_OPT__(, ) __VA_ARGS__)
