@@ -35,7 +35,8 @@ rhi::Image greyPicture(const Picture& picture, const rhi::Conventions& conventio
     float low = 0.0f, high = 1.0f;
     const bool scaled = picture.kind == PictureKind::Float || picture.space == DepthSpace::LinearView;
     if (scaled) {
-        low = INFINITY, high = -INFINITY;
+        low = INFINITY;
+        high = -INFINITY;
         for (std::size_t i = 0; i < v.values.size(); ++i)
             if (v.drawn[i] && std::isfinite(v.values[i]))
                 low = std::min(low, v.values[i]), high = std::max(high, v.values[i]);

@@ -1,7 +1,6 @@
 // The parity harness's comparisons and report on made-up pictures (CPU only): what passes, what each
 // threshold catches, how mismatched pictures and failed configurations are reported, what the heat
 // maps show. tests/parity/HarnessTest.cpp runs it through the real drivers.
-#include "penumbra/backends/Registry.hpp"
 #include "penumbra/parity/Harness.hpp"
 #include "penumbra/parity/HeatMap.hpp"
 #include "penumbra/parity/Report.hpp"
@@ -24,9 +23,20 @@ rhi::Image grey(std::uint8_t value, std::uint32_t width = 4, std::uint32_t heigh
     return {width, height, rhi::Format::RGBA8, std::vector<std::byte>(std::size_t(width) * height * 4, std::byte{value})};
 }
 
+// A configuration's desc as its name says, whichever backends this build has: the comparisons need only the
+// conventions.
+rhi::NamedConfiguration named(const std::string& configuration)
+{
+    return {configuration,
+            {.backend = configuration.starts_with("vulkan") ? "vulkan" : "opengl",
+             .depthRange = configuration.find("noclip") != std::string::npos ? rhi::DepthRange::MinusOneToOne
+                                                                             : rhi::DepthRange::ZeroToOne,
+             .reversedZ = configuration.ends_with("-reversed")}};
+}
+
 ConfigurationRun made(const std::string& configuration, std::vector<Picture> pictures)
 {
-    return {{configuration, parseConfiguration(configuration)}, ConfigurationRun::Status::Rendered, {}, std::move(pictures)};
+    return {named(configuration), ConfigurationRun::Status::Rendered, {}, std::move(pictures)};
 }
 
 std::string joined(const std::vector<std::string>& lines)
@@ -130,10 +140,9 @@ TEST(ParityHarnessTest, APictureOnlyOneConfigurationRenderedFails)
 
 TEST(ParityHarnessTest, AFailedConfigurationIsReportedAndTheOthersCompared)
 {
-    ConfigurationRun failed{{"opengl", parseConfiguration("opengl")}, ConfigurationRun::Status::Failed,
-                            "the render function threw: no", {}};
-    ConfigurationRun unsupported{{"opengl-noclip", parseConfiguration("opengl-noclip")},
-                                 ConfigurationRun::Status::Unsupported, "no clip control", {}};
+    const ConfigurationRun failed{named("opengl"), ConfigurationRun::Status::Failed, "the render function threw: no", {}};
+    const ConfigurationRun unsupported{named("opengl-noclip"), ConfigurationRun::Status::Unsupported, "no clip control",
+                                       {}};
     const Result result = compare({made("vulkan", {colorPicture("colour", grey(1))}), failed, unsupported,
                                    made("vulkan-reversed", {colorPicture("colour", grey(1))})});
     ASSERT_EQ(result.pairs.size(), 1u);
