@@ -1,7 +1,5 @@
 #include "ShadowScene.hpp"
 
-#include "ImageFiles.hpp"
-
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
@@ -79,51 +77,55 @@ scene::Scene namedScene(const std::string& name)
     throw rhi::Error(fmt::format("no scene named '{}'; known scenes: {}", name, kSceneNames));
 }
 
+ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
+                                 const render::FrameDesc& frame, bool readAtlases)
+{
+    render::SceneRenderer renderer(device, scene);
+    ShadowPictures pictures;
+    pictures.configuration = configuration;
+    pictures.depthRange = device.conventions().depthRange();
+    pictures.reversedZ = device.conventions().reversedZ();
+    pictures.stats = renderer.render(scene.camera, frame);
+    pictures.notes = renderer.notes();
+    pictures.lit = rhi::readTexture(device, renderer.litImage());
+    if (frame.cascadeView)
+        pictures.cascades = rhi::readTexture(device, renderer.cascadeImage());
+    if (!readAtlases)
+        return pictures;
+    const rhi::Conventions& conventions = device.conventions();
+    pictures.atlases.push_back(
+        atlasPictures("directional", rhi::readDepth(device, renderer.atlas().texture()), conventions));
+    pictures.atlases.push_back(atlasPictures("other", rhi::readDepth(device, renderer.otherAtlas().texture()),
+                                             conventions, render::perspectiveTiles(renderer.otherPlan())));
+    if (!renderer.otherPlan().cubes.empty())
+        pictures.atlases.push_back(
+            atlasPictures("cube", cubeFacesSideBySide(device, renderer.shadowCubes()), conventions));
+    return pictures;
+}
+
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame, const ShadowSceneRun& run)
 {
     rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
     desc.validation = run.validate;
     auto device = createDevice(desc);
-    render::SceneRenderer renderer(*device, scene);
-    ShadowPictures pictures;
-    pictures.configuration = configuration;
-    pictures.depthRange = device->conventions().depthRange();
-    pictures.reversedZ = device->conventions().reversedZ();
-    pictures.stats = renderer.render(scene.camera, frame);
-    pictures.notes = renderer.notes();
-    pictures.lit = rhi::readTexture(*device, renderer.litImage());
-    if (frame.cascadeView)
-        pictures.cascades = rhi::readTexture(*device, renderer.cascadeImage());
-    const rhi::Conventions& conventions = device->conventions();
-    if (run.readAtlases) {
-        pictures.atlases.push_back(
-            atlasPictures("directional", rhi::readDepth(*device, renderer.atlas().texture()), conventions));
-        pictures.atlases.push_back(atlasPictures("other", rhi::readDepth(*device, renderer.otherAtlas().texture()),
-                                                 conventions, render::perspectiveTiles(renderer.otherPlan())));
-        if (!renderer.otherPlan().cubes.empty())
-            pictures.atlases.push_back(
-                atlasPictures("cube", cubeFacesSideBySide(*device, renderer.shadowCubes()), conventions));
-    }
+    ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases);
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;
 }
 
+std::vector<parity::Picture> parityPictures(const ShadowPictures& pictures)
+{
+    std::vector<parity::Picture> out{parity::colorPicture("lit", pictures.lit)};
+    for (const AtlasPictures& atlas : pictures.atlases)
+        out.push_back(parity::depthPicture(atlasFileStem(atlas.name), atlas.depth, atlas.lightDepth));
+    return out;
+}
+
 std::string atlasFileStem(std::string_view name)
 {
     return name == "directional" ? std::string("atlas") : fmt::format("{}-atlas", name);
-}
-
-void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictures& pictures)
-{
-    writePng(folder / "lit.png", pictures.lit);
-    for (const AtlasPictures& atlas : pictures.atlases) {
-        writePng(folder / (atlasFileStem(atlas.name) + ".png"), atlas.picture);
-        writeExr(folder / (atlasFileStem(atlas.name) + ".exr"), atlas.depth);
-    }
-    if (!pictures.cascades.bytes.empty())
-        writePng(folder / "cascades.png", pictures.cascades);
 }
 
 } // namespace penumbra::apps

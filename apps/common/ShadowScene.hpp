@@ -1,11 +1,11 @@
 #pragma once
 
+#include "penumbra/parity/Picture.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/Scene.hpp"
 
-#include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -56,15 +56,18 @@ struct ShadowSceneRun {
     bool readAtlases = true;
 };
 
-// Renders scene.camera's view; the cascade view too when frame.cascadeView is set. Throws
-// rhi::Error when the device reports a validation or debug message.
+// Renders scene.camera's view on `device`; the cascade view too when frame.cascadeView is set.
+ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
+                                 const render::FrameDesc& frame, bool readAtlases = true);
+// The same on a device of its own; throws rhi::Error when the device reports a validation or debug message.
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame, const ShadowSceneRun& run = {});
 
+// What the parity harness compares: "lit" (colour) and each atlas by its atlasFileStem ("atlas",
+// "other-atlas", "cube-atlas"), depth compared in its light-depth fraction (AtlasPictures::lightDepth).
+std::vector<parity::Picture> parityPictures(const ShadowPictures& pictures);
+
 // The file stem of an atlas in a demo folder: "atlas" for "directional", "<name>-atlas" otherwise.
 std::string atlasFileStem(std::string_view name);
-
-// The demo folder: lit.png, cascades.png (when rendered), and <atlasFileStem>.png and .exr per atlas.
-void writeShadowPictures(const std::filesystem::path& folder, const ShadowPictures& pictures);
 
 } // namespace penumbra::apps

@@ -1,7 +1,7 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
 #include "DrawScene.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "RawDraws.hpp"
 #include "SceneBench.hpp"
 #include "ShadowBench.hpp"
@@ -110,7 +110,7 @@ void runBenchmarks(const BenchOptions& options)
                                  {"rhiOverRaw", rhi / raw}});
     }
     if (!options.json.empty()) {
-        writeTextFile(options.json, json.dump(2) + "\n");
+        parity::writeTextFile(options.json, json.dump(2) + "\n");
         fmt::print("wrote {}\n", options.json);
     }
 }

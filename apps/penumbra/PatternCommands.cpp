@@ -1,6 +1,6 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "TestPattern.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
@@ -43,7 +43,7 @@ void addPatternCommand(CLI::App& app)
     render->add_option("-s,--size", options->size, "Width and height in pixels")->check(CLI::Range(1u, 8192u));
     addValidateFlag(*render, options->validate);
     render->callback([options] {
-        writePng(options->out, renderPattern(options->configuration, options->size, options->validate));
+        parity::writePng(options->out, renderPattern(options->configuration, options->size, options->validate));
         fmt::print("{}: {}\n", options->configuration, options->out);
     });
 }

@@ -1,6 +1,6 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "SceneOptions.hpp"
 
 #include <filesystem>
@@ -30,17 +30,17 @@ void writeOutputs(const RenderOptions& options, const ShadowPictures& pictures, 
     const std::filesystem::path lit =
         several ? withSuffix(options.out, pictures.configuration) : std::filesystem::path(options.out);
     std::vector<std::string> written = {lit.string()};
-    writePicture(lit, pictures.lit);
+    parity::writePicture(lit, pictures.lit);
     if (!pictures.cascades.bytes.empty()) {
         written.push_back(withSuffix(lit, "cascades").string());
-        writePicture(written.back(), pictures.cascades);
+        parity::writePicture(written.back(), pictures.cascades);
     }
     if (!options.atlas.empty()) {
         const std::string prefix = several ? fmt::format("{}-{}", options.atlas, pictures.configuration) : options.atlas;
         for (const AtlasPictures& atlas : pictures.atlases) {
             const std::string stem = fmt::format("{}-{}", prefix, atlas.name);
-            writeExr(stem + ".exr", atlas.depth);
-            writePng(stem + ".png", atlas.picture);
+            parity::writeExr(stem + ".exr", atlas.depth);
+            parity::writePng(stem + ".png", atlas.picture);
             written.insert(written.end(), {stem + ".exr", stem + ".png"});
         }
     }
@@ -89,7 +89,7 @@ void addRenderCommand(CLI::App& app)
     command->add_option("-o,--out", options->out, "Lit picture: .png, or .exr (linear float RGBA)")
         ->check(CLI::Validator(
             [](std::string& path) {
-                return isPicturePath(path) ? std::string()
+                return parity::isPicturePath(path) ? std::string()
                                            : fmt::format("'{}' does not end in .png or .exr", path);
             },
             "FILE"))

@@ -1,7 +1,7 @@
 // penumbra truth: a scene's shadow maps against a CPU ray cast of the same pixels, per shadowed light.
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "SceneOptions.hpp"
 #include "TruthPictures.hpp"
 
@@ -150,7 +150,7 @@ void truth(const TruthOptions& options)
     // Everything is computed before the first file is written: a failure leaves no partial report.
     const std::filesystem::path out(options.out);
     writeTruthPictures(out, truths);
-    writeTextFile(out / "truth.json", report.dump(2) + "\n");
+    parity::writeTextFile(out / "truth.json", report.dump(2) + "\n");
     for (const LightTruth& t : truths) {
         const scene::TruthComparison& c = t.comparison;
         fmt::print("{} ({} {}): agreement {} of {} pixels; truly lit {} right of {}, truly shadowed {} right of {}; "

@@ -1,6 +1,6 @@
 #include "TruthPictures.hpp"
 
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 
 #include "penumbra/rhi/Image.hpp"
 
@@ -106,9 +106,9 @@ rhi::Image disagreementPicture(std::span<const LightTruth> lights)
 
 void writeSet(const std::filesystem::path& folder, std::span<const LightTruth> lights, const std::string& suffix)
 {
-    writePng(folder / fmt::format("raycast{}.png", suffix), raycastPicture(lights));
-    writePng(folder / fmt::format("shadowmap{}.png", suffix), shadowMapPicture(lights));
-    writePng(folder / fmt::format("disagreement{}.png", suffix), disagreementPicture(lights));
+    parity::writePng(folder / fmt::format("raycast{}.png", suffix), raycastPicture(lights));
+    parity::writePng(folder / fmt::format("shadowmap{}.png", suffix), shadowMapPicture(lights));
+    parity::writePng(folder / fmt::format("disagreement{}.png", suffix), disagreementPicture(lights));
 }
 
 } // namespace

@@ -5,7 +5,7 @@
 #include "GlfwSession.hpp"
 #include "ImGuiRenderer.hpp"
 #include "ImGuiSession.hpp"
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 #include "ViewState.hpp"
 #include "ViewerScene.hpp"
 #include "ViewerWindow.hpp"
@@ -76,7 +76,7 @@ public:
                 throw rhi::Error(fmt::format("--screenshot {}: no frame reached the window (minimised, or closed before "
                                              "--frames)",
                                              options_.screenshot));
-            apps::writePng(options_.screenshot, windowPicture);
+            parity::writePng(options_.screenshot, windowPicture);
             fmt::print("screenshot: {}\n", options_.screenshot);
         }
         const std::vector<std::string> messages = device_->debugMessages();

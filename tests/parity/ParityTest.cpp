@@ -2,6 +2,7 @@
 #include "PrecisionScene.hpp"
 #include "TestPattern.hpp"
 
+#include "penumbra/parity/GoogleTest.hpp"
 #include "penumbra/rhi/Error.hpp"
 
 #include <cmath>
@@ -11,124 +12,88 @@
 namespace penumbra::testing {
 namespace {
 
-struct Rendered {
-    std::string configuration;
-    rhi::Image color;
-    std::vector<float> viewDepth; // NaN where the far plane was kept
-};
-
-struct Patterns {
-    std::vector<Rendered> rendered;
-    std::vector<SkippedConfiguration> skipped;
-};
-
-// The test pattern through every configuration this build has, with validation on.
-const Patterns& renderedPatterns()
+// The test pattern, 128 x 128: its colours and its depth in linear view depth.
+std::vector<parity::Picture> renderPattern(rhi::Device& device, const rhi::NamedConfiguration&)
 {
-    static const Patterns results = [] {
-        Patterns out;
-        out.skipped = forEachConfiguration([&](rhi::Device& device, const std::string& name) {
-            pattern::PatternRenderer renderer(device, {.width = 128, .height = 128});
-            renderer.render(pattern::testPattern());
-            Rendered r{name, renderer.color(), {}};
-            const rhi::DepthImage depth = renderer.depth();
-            for (float d : depth.depth)
-                r.viewDepth.push_back(d == device.conventions().farDepth()
-                                          ? NAN
-                                          : device.conventions().viewDepth(renderer.projection(), d));
-            savePicture(r.color, fmt::format("parity/{}", name));
-            out.rendered.push_back(std::move(r));
-        });
-        return out;
-    }();
-    return results;
+    pattern::PatternRenderer renderer(device, {.width = 128, .height = 128});
+    renderer.render(pattern::testPattern());
+    return {parity::colorPicture("pattern", renderer.color()),
+            parity::viewDepthPicture("depth", renderer.depth(), renderer.projection())};
 }
 
-struct Difference {
-    int maxAbs = 0;
-    double psnr = INFINITY;
-};
-
-Difference compare(const rhi::Image& a, const rhi::Image& b)
+// The pattern through every configuration this build has, with validation on, once for the tests below.
+const std::vector<parity::ConfigurationRun>& patternRuns()
 {
-    Difference d;
-    double squared = 0.0;
-    for (std::size_t i = 0; i < a.bytes.size(); ++i) {
-        const int delta = std::abs(int(a.bytes[i]) - int(b.bytes[i]));
-        d.maxAbs = std::max(d.maxAbs, delta);
-        squared += double(delta) * delta;
-    }
-    if (squared > 0.0)
-        d.psnr = 10.0 * std::log10(255.0 * 255.0 / (squared / double(a.bytes.size())));
-    return d;
+    static const std::vector<parity::ConfigurationRun> runs = parity::renderConfigurations(renderPattern);
+    return runs;
 }
 
-// PatternIsByteIdenticalEverywhere's judgement of one configuration's pattern against the first's.
-::testing::AssertionResult sameBytes(const rhi::Image& reference, const rhi::Image& image)
+// Colours byte-identical; view depth (2 to 9 units) within 2e-4 units (measured 6.3e-5), coverage exact, and raw depth
+// bit-identical where the conventions agree.
+const parity::Options& patternThresholds()
 {
-    const Difference d = compare(reference, image);
-    if (d.maxAbs == 0)
-        return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "max abs diff " << d.maxAbs << ", PSNR " << d.psnr << " dB";
+    static const parity::Options options{
+        .thresholds = {{"pattern", parity::identical()}, {"depth", {.maxDifference = 2e-4}}}};
+    return options;
 }
 
 TEST(ParityTest, EveryConfigurationIsRendered)
 {
     std::vector<std::string> rendered;
-    for (const Rendered& r : renderedPatterns().rendered)
-        rendered.push_back(r.configuration);
     std::string reasons;
-    for (const SkippedConfiguration& s : renderedPatterns().skipped)
-        reasons += fmt::format("\n  {}: {}", s.name, s.reason);
-    EXPECT_EQ(rendered, compiledConfigurations()) << "configurations this build has that the driver refused:" << reasons;
-}
-
-TEST(ParityTest, PatternIsByteIdenticalEverywhere)
-{
-    const auto& all = renderedPatterns().rendered;
-    ASSERT_FALSE(all.empty());
-    for (const Rendered& r : all) {
-        const Difference d = compare(all.front().color, r.color);
-        std::cout << fmt::format("[ parity ] pattern {} vs {}: max abs diff {}, PSNR {} dB\n", r.configuration,
-                                 all.front().configuration, d.maxAbs, d.psnr);
-        EXPECT_TRUE(sameBytes(all.front().color, r.color)) << r.configuration << " differs from " << all.front().configuration;
+    for (const parity::ConfigurationRun& run : patternRuns()) {
+        if (run.status == parity::ConfigurationRun::Status::Rendered)
+            rendered.push_back(run.name());
+        else
+            reasons += fmt::format("\n  {}: {}", run.name(), run.message);
     }
-    reportSkipped(renderedPatterns().skipped);
+    EXPECT_EQ(rendered, compiledConfigurations()) << "configurations this build has that did not render:" << reasons;
 }
 
-// The negative control of PatternIsByteIdenticalEverywhere: one pixel of a real rendered pattern changed by
-// one level in one channel, the smallest fault there is, must be caught.
+TEST(ParityTest, PatternIsByteIdenticalAndViewDepthAgreesEverywhere)
+{
+    PENUMBRA_EXPECT_PARITY(patternRuns(), patternThresholds());
+}
+
+// The negative controls of the test above, judged by the same thresholds on a real rendered pattern: one
+// pixel changed by one level in one channel, the smallest fault there is; one texel of depth 0.1 % farther
+// (5e-3 units at the centre's depth of 5).
 TEST(ParityTest, ChangedPatternPixelCatchesFault)
 {
-    const auto& all = renderedPatterns().rendered;
-    ASSERT_FALSE(all.empty());
-    rhi::Image changed = all.front().color;
-    std::byte& green = changed.bytes[(std::size_t(changed.width) * (changed.height / 2) + changed.width / 2) * 4 + 1];
+    const parity::ConfigurationRun& first = patternRuns().front();
+    ASSERT_EQ(first.status, parity::ConfigurationRun::Status::Rendered) << first.message;
+    const rhi::Conventions conventions = first.conventions();
+    const parity::Picture& pattern = first.picture("pattern");
+    parity::Picture changed = pattern;
+    std::byte& green = changed.color.bytes[(std::size_t(changed.width()) * (changed.height() / 2) + changed.width() / 2) * 4 + 1];
     green = std::byte(std::uint8_t(green) ^ 1u);
-    ASSERT_TRUE(sameBytes(all.front().color, all.front().color));
-    EXPECT_FALSE(sameBytes(all.front().color, changed));
+    const parity::Thresholds& exact = patternThresholds().thresholds.at("pattern");
+    ASSERT_TRUE(parity::comparePictures(pattern, conventions, pattern, conventions, exact).pass());
+    EXPECT_FALSE(parity::comparePictures(pattern, conventions, changed, conventions, exact).pass());
 }
 
-TEST(ParityTest, LinearViewDepthAgreesEverywhere)
+TEST(ParityTest, ChangedDepthTexelCatchesFault)
 {
-    const auto& all = renderedPatterns().rendered;
-    ASSERT_FALSE(all.empty());
-    for (const Rendered& r : all) {
-        double worst = 0.0;
-        int coverageMismatch = 0;
-        for (std::size_t i = 0; i < r.viewDepth.size(); ++i) {
-            const float a = all.front().viewDepth[i], b = r.viewDepth[i];
-            if (std::isnan(a) != std::isnan(b))
-                ++coverageMismatch;
-            else if (!std::isnan(a))
-                worst = std::max(worst, std::abs(double(a) - b) / a);
-        }
-        std::cout << fmt::format("[ parity ] view depth {} vs {}: max relative diff {:.3g}\n", r.configuration,
-                                 all.front().configuration, worst);
-        EXPECT_EQ(coverageMismatch, 0) << r.configuration;
-        EXPECT_LT(worst, 1e-4) << r.configuration;
-    }
-    reportSkipped(renderedPatterns().skipped);
+    const parity::ConfigurationRun& first = patternRuns().front();
+    ASSERT_EQ(first.status, parity::ConfigurationRun::Status::Rendered) << first.message;
+    const rhi::Conventions conventions = first.conventions();
+    const parity::Picture& depth = first.picture("depth");
+    const std::size_t centre = std::size_t(depth.width()) * (depth.height() / 2) + depth.width() / 2;
+    ASSERT_NE(depth.depth.depth[centre], conventions.farDepth()) << "the pattern covers the centre";
+    parity::Picture farther = depth;
+    const float view = conventions.viewDepth(depth.projection, depth.depth.depth[centre]);
+    farther.depth.depth[centre] = conventions.windowDepth(depth.projection, view * 1.001f);
+    const parity::Thresholds& bound = patternThresholds().thresholds.at("depth");
+    ASSERT_TRUE(parity::comparePictures(depth, conventions, depth, conventions, bound).pass());
+    const parity::PictureComparison same = parity::comparePictures(depth, conventions, farther, conventions, bound);
+    EXPECT_EQ(same.figures.rawDifferingTexels, 1u);
+    EXPECT_FALSE(same.pass());
+    // The view-depth bound catches it on its own, as it must across conventions, where raw depth is not compared.
+    parity::Thresholds viewDepthOnly = bound;
+    viewDepthOnly.bitExactWhereConventionsAgree = false;
+    const parity::PictureComparison across = parity::comparePictures(depth, conventions, farther, conventions, viewDepthOnly);
+    EXPECT_GT(across.figures.maxDifference, bound.maxDifference);
+    EXPECT_FALSE(across.pass());
 }
 
 TEST(ParityTest, ReversedZBeatsTheStandardMappingAtDistance)

@@ -3,7 +3,9 @@
 // unchanged everywhere.
 #include "GpuTesting.hpp"
 
+#include "penumbra/parity/GoogleTest.hpp"
 #include "penumbra/rhi/ColorSpace.hpp"
+#include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/MipChain.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
@@ -12,7 +14,6 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
-#include <map>
 
 namespace penumbra::testing {
 namespace {
@@ -138,17 +139,6 @@ private:
     std::unique_ptr<rhi::Framebuffer> framebuffer_;
 };
 
-struct Rendered {
-    std::string configuration;
-    std::map<std::string, rhi::Image> planes;      // by sampler case
-    std::vector<std::vector<std::byte>> mipChain; // a CPU-made chain as read back, level by level
-};
-
-struct Renders {
-    std::vector<Rendered> rendered;
-    std::vector<SkippedConfiguration> skipped;
-};
-
 // A 37 x 23 sRGB picture with alpha, odd in both sizes: the chain the loader would make for a texture.
 std::vector<std::uint8_t> oddPicture()
 {
@@ -158,49 +148,53 @@ std::vector<std::uint8_t> oddPicture()
     return rgba;
 }
 
-const Renders& renders()
+std::string mipName(std::uint32_t level) { return fmt::format("mip-{}", level); }
+
+// Per configuration: the plane through each sampler case (pictures named after it), and a CPU-made mip
+// chain as read back, level by level ("mip-0", ...).
+std::vector<parity::Picture> renderPlanesAndChain(rhi::Device& device, const rhi::NamedConfiguration&)
 {
-    static const Renders results = [] {
-        Renders out;
-        out.skipped = forEachConfiguration([&](rhi::Device& device, const std::string& name) {
-            Rendered r{name, {}, {}};
-            GrazingPlane plane(device);
-            auto texture = levelCodedChecker(device);
-            for (const SamplerCase& c : samplerCases()) {
-                rhi::SamplerDesc desc = c.desc;
-                desc.maxAnisotropy = c.anisotropic ? device.capabilities().maxSamplerAnisotropy : 1.0f;
-                auto sampler = device.createSampler(desc);
-                r.planes.emplace(c.name, plane.render(*texture, *sampler));
-                savePicture(r.planes.at(c.name), fmt::format("texture-parity/{}-{}", c.name, name));
-            }
-            const std::vector<std::uint8_t> picture = oddPicture();
-            auto chain = device.createTexture({.width = 37, .height = 23, .mipLevels = rhi::fullMipChain(37, 23),
-                                               .format = rhi::Format::RGBA8_SRGB});
-            rhi::writeMipChain(device, *chain, 0, std::as_bytes(std::span(picture)));
-            for (std::uint32_t level = 0; level < chain->desc().mipLevels; ++level)
-                r.mipChain.push_back(rhi::readTexture(device, *chain, 0, level).bytes);
-            out.rendered.push_back(std::move(r));
-        });
-        return out;
-    }();
-    return results;
+    std::vector<parity::Picture> pictures;
+    GrazingPlane plane(device);
+    auto texture = levelCodedChecker(device);
+    for (const SamplerCase& c : samplerCases()) {
+        rhi::SamplerDesc desc = c.desc;
+        desc.maxAnisotropy = c.anisotropic ? device.capabilities().maxSamplerAnisotropy : 1.0f;
+        auto sampler = device.createSampler(desc);
+        pictures.push_back(parity::colorPicture(c.name, plane.render(*texture, *sampler)));
+    }
+    const std::vector<std::uint8_t> picture = oddPicture();
+    auto chain = device.createTexture({.width = 37, .height = 23, .mipLevels = rhi::fullMipChain(37, 23),
+                                       .format = rhi::Format::RGBA8_SRGB});
+    rhi::writeMipChain(device, *chain, 0, std::as_bytes(std::span(picture)));
+    for (std::uint32_t level = 0; level < chain->desc().mipLevels; ++level)
+        pictures.push_back(parity::colorPicture(mipName(level), rhi::readTexture(device, *chain, 0, level)));
+    return pictures;
 }
 
-// The judgement of every plane comparison: byte identity, or the differing pixels and the largest difference.
+const std::vector<parity::ConfigurationRun>& renders()
+{
+    static const std::vector<parity::ConfigurationRun> runs = parity::renderConfigurations(renderPlanesAndChain);
+    return runs;
+}
+
+const parity::ConfigurationRun& firstRendered()
+{
+    const parity::ConfigurationRun& first = renders().front();
+    if (first.status != parity::ConfigurationRun::Status::Rendered)
+        throw rhi::Error(fmt::format("{} did not render: {}", first.name(), first.message));
+    return first;
+}
+
+// The judgement of the comparisons below: byte identity, as the harness's default thresholds.
 ::testing::AssertionResult identical(const rhi::Image& reference, const rhi::Image& image)
 {
-    int differing = 0, largest = 0;
-    for (std::size_t i = 0; i < reference.bytes.size(); i += 4) {
-        int worst = 0;
-        for (std::size_t c = 0; c < 4; ++c)
-            worst = std::max(worst, std::abs(int(reference.bytes[i + c]) - int(image.bytes[i + c])));
-        differing += worst > 0;
-        largest = std::max(largest, worst);
-    }
-    if (differing == 0)
+    const rhi::Conventions any(rhi::DepthRange::ZeroToOne, false);
+    const parity::PictureComparison c = parity::comparePictures(parity::colorPicture("plane", reference), any,
+                                                                parity::colorPicture("plane", image), any);
+    if (c.pass())
         return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << differing << " of " << reference.bytes.size() / 4
-                                         << " pixels differ, by up to " << largest;
+    return ::testing::AssertionFailure() << parity::describe(c);
 }
 
 // The level whose hue is nearest the pixel's (by angle); -1 for the background. The target stores the
@@ -223,28 +217,17 @@ int levelOf(const rhi::Image& image, std::uint32_t x, std::uint32_t y)
     return best;
 }
 
+// Every sampler case's plane, and every mip level, against the first configuration's: byte-identical.
 TEST(TextureParity, GrazingPlaneIsByteIdenticalEverywhereInEverySamplerConfiguration)
 {
-    const auto& all = renders().rendered;
-    ASSERT_FALSE(all.empty());
-    for (const SamplerCase& c : samplerCases()) {
-        for (const Rendered& r : all) {
-            const ::testing::AssertionResult same = identical(all.front().planes.at(c.name), r.planes.at(c.name));
-            std::cout << fmt::format("[ texture parity ] {} {} vs {}: {}\n", c.name, r.configuration,
-                                     all.front().configuration, same ? "identical" : same.message());
-            EXPECT_TRUE(same) << c.name << ": " << r.configuration << " against " << all.front().configuration;
-        }
-    }
-    reportSkipped(renders().skipped);
+    PENUMBRA_EXPECT_PARITY(renders(), {.pairing = parity::Pairing::AgainstReference});
 }
 
 // The picture shows mip selection at work: level 0 or 1 at the near edge, small levels towards the horizon,
 // never a smaller level nearer the camera down the middle column.
 TEST(TextureParity, MipLevelsGrowTowardsTheHorizon)
 {
-    const auto& all = renders().rendered;
-    ASSERT_FALSE(all.empty());
-    const rhi::Image& image = all.front().planes.at("bilinear-mip-nearest");
+    const rhi::Image& image = firstRendered().picture("bilinear-mip-nearest").color;
     int nearest = -1, farthest = -1, previous = 0;
     for (std::uint32_t y = kHeight; y-- > 0;) {
         const int level = levelOf(image, kWidth / 2, y);
@@ -264,23 +247,20 @@ TEST(TextureParity, MipLevelsGrowTowardsTheHorizon)
 // Each sampler setting reaches the driver: the pictures of settings that differ, differ.
 TEST(TextureParity, EverySamplerSettingChangesThePicture)
 {
-    const auto& all = renders().rendered;
-    ASSERT_FALSE(all.empty());
-    const auto& planes = all.front().planes;
+    const parity::ConfigurationRun& planes = firstRendered();
     const std::pair<const char*, const char*> pairs[] = {
         {"nearest", "nearest-mip-nearest"}, {"nearest-mip-nearest", "bilinear-mip-nearest"},
         {"bilinear-mip-nearest", "trilinear"}, {"trilinear", "anisotropic"}, {"trilinear", "lod-clamped"},
         {"trilinear", "mirrored"}, {"trilinear", "clamped"}};
     for (const auto& [a, b] : pairs)
-        EXPECT_FALSE(identical(planes.at(a), planes.at(b))) << a << " and " << b << " gave the same picture";
+        EXPECT_FALSE(identical(planes.picture(a).color, planes.picture(b).color)) << a << " and " << b
+                                                                                  << " gave the same picture";
 }
 
 // The negative control of the byte comparison: one pixel of a real render one level off in one channel.
 TEST(TextureParity, ChangedFilteredPixelCatchesFault)
 {
-    const auto& all = renders().rendered;
-    ASSERT_FALSE(all.empty());
-    const rhi::Image& reference = all.front().planes.at("anisotropic");
+    const rhi::Image& reference = firstRendered().picture("anisotropic").color;
     rhi::Image changed = reference;
     std::byte& red = changed.bytes[(std::size_t(kWidth) * (kHeight - 10) + kWidth / 2) * 4];
     red = std::byte(std::uint8_t(red) ^ 1u);
@@ -291,14 +271,15 @@ TEST(TextureParity, ChangedFilteredPixelCatchesFault)
 // A chain made on the CPU reads back, level by level, as generateMipChain made it, in every configuration.
 TEST(TextureParity, MipChainIsIdenticalEverywhere)
 {
-    const auto& all = renders().rendered;
-    ASSERT_FALSE(all.empty());
     const std::vector<std::uint8_t> picture = oddPicture();
     const auto expected = rhi::generateMipChain(rhi::Format::RGBA8_SRGB, 37, 23, rhi::fullMipChain(37, 23),
                                                 std::as_bytes(std::span(picture)));
-    for (const Rendered& r : all)
-        EXPECT_TRUE(r.mipChain == expected) << r.configuration;
-    reportSkipped(renders().skipped);
+    for (const parity::ConfigurationRun& run : renders()) {
+        if (run.status != parity::ConfigurationRun::Status::Rendered)
+            continue; // GrazingPlane... reports it
+        for (std::uint32_t level = 0; level < expected.size(); ++level)
+            EXPECT_TRUE(run.picture(mipName(level)).color.bytes == expected[level]) << run.name() << " level " << level;
+    }
 }
 
 } // namespace

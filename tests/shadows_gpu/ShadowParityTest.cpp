@@ -1,5 +1,6 @@
 // Backend parity of directional, spot and point shadows: the same scene through every RHI configuration,
-// both atlases and the lit images compared across backends.
+// both atlases and the lit images of every pair of configurations compared by the parity harness
+// (penumbra::parity) against the thresholds below.
 //
 // Two causes kept lavapipe's and llvmpipe's atlases apart and are fixed: the provoking vertex (llvmpipe sets
 // up a clockwise triangle's depth plane in provoking order; the GL backend now provokes from the first vertex,
@@ -7,13 +8,13 @@
 // fused multiply-adds, an ulp that moves a vertex one 1/256-texel subpixel step; shaders/transform.glsl spells
 // the fma chain out). Where depth range and format agree the atlases are now bit-identical at this size.
 // Across conventions the projection matrices themselves differ, so atlases are compared per texel within a few
-// ulp plus 4 subpixel steps of the local depth gradient, coverage exactly; lit images exactly where they
-// agree exactly and by count and PSNR against Vulkan.
+// ulp plus 4 subpixel steps of the local depth gradient, coverage exactly; lit images byte-identical between
+// twins that differ only in reversed-Z, by count and PSNR otherwise.
 #include "GltfBuilder.hpp"
 #include "GpuTesting.hpp"
-#include "ImageDifference.hpp"
 #include "ShadowScene.hpp"
 
+#include "penumbra/parity/GoogleTest.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
 #include "penumbra/rhi/Configuration.hpp"
 #include "penumbra/rhi/Conventions.hpp"
@@ -158,11 +159,9 @@ std::vector<float> localGradient(const std::vector<float>& lightDepth, std::uint
 }
 
 struct AtlasComparison {
-    apps::FloatDifference difference;
     std::size_t coverageMismatches = 0; // drawn in one, cleared in the other
-    std::size_t beyondBound = 0;        // |difference| > rounding slack + 2 subpixel steps of the local gradient
+    std::size_t beyondBound = 0;        // |difference| > rounding slack + 4 subpixel steps of the local gradient
     float worstRatio = 0.0f;            // max (|difference| - slack) / (gradient * subpixel step)
-    float maxAbsCovered = 0.0f;         // max |difference| where both atlases are drawn
     std::size_t withoutGradient = 0;    // differing texels with no local gradient (checked by the absolute bound)
 };
 
@@ -170,21 +169,20 @@ struct AtlasComparison {
 // (the "other" atlas, the "cube" faces) clip casters at their near and far planes, whose clip-space
 // equations differ per convention (z = 0, -w or w), so a caster crossing the light's range may gain or
 // lose a texel there; the orthographic directional views pancake instead of clipping and keep coverage
-// exact.
-std::size_t outliersAllowed(const std::string& atlas) { return atlas == "directional" ? 0 : 16; }
+// exact. Atlases by their parity picture names (apps::parityPictures): "atlas" is the directional one.
+std::size_t outliersAllowed(const std::string& atlas) { return atlas == "atlas" ? 0 : 16; }
 
-AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<float>& b, const rhi::DepthImage& shape)
+AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<float>& b, std::uint32_t width,
+                               std::uint32_t height)
 {
     AtlasComparison c;
-    c.difference = apps::compareFloats(a, b);
-    const std::vector<float> gradient = localGradient(a, shape.width, shape.height);
+    const std::vector<float> gradient = localGradient(a, width, height);
     for (std::size_t i = 0; i < a.size(); ++i) {
         if ((a[i] > 0.0f) != (b[i] > 0.0f)) {
             ++c.coverageMismatches;
             continue;
         }
         const float diff = std::abs(a[i] - b[i]);
-        c.maxAbsCovered = std::max(c.maxAbsCovered, diff);
         if (diff <= kRoundingSlack)
             continue;
         const float step = gradient[i] * kSubpixelStep;
@@ -203,196 +201,99 @@ AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<fl
     return c;
 }
 
-void report(const std::string& key, const std::string& line, double maxAbs, double psnr, std::size_t pixels)
-{
-    fmt::print("{}\n", line);
-    ::testing::Test::RecordProperty(key + ".maxAbs", fmt::format("{}", maxAbs));
-    ::testing::Test::RecordProperty(key + ".psnr", fmt::format("{:.2f}", psnr));
-    ::testing::Test::RecordProperty(key + ".differingPixels", std::to_string(pixels));
-}
+// The bounds the README's "Parity across backends" states, as the harness's thresholds; the parity tests and
+// their negative controls (...CatchesFault) judge with the same ones.
 
-// One atlas of two configurations: raw window depth where the conventions agree, light depth always.
-struct AtlasPair {
-    std::string key;
-    std::optional<apps::FloatDifference> raw;
-    AtlasComparison light;
-};
-
-AtlasPair compareAtlasPair(const apps::ShadowPictures& a, const apps::ShadowPictures& b, const std::string& atlas)
-{
-    AtlasPair pair{fmt::format("{}.{}.{}", atlas, a.configuration, b.configuration), std::nullopt, {}};
-    if (a.depthRange == b.depthRange && a.reversedZ == b.reversedZ)
-        pair.raw = apps::compareFloats(a.atlas(atlas).depth.depth, b.atlas(atlas).depth.depth);
-    pair.light = compareAtlases(a.atlas(atlas).lightDepth, b.atlas(atlas).lightDepth, a.atlas(atlas).depth);
-    return pair;
-}
-
-// The bounds the README's "Parity across backends" states, one judgement each; the parity tests and their
-// negative controls (...CatchesFault) call the same ones.
-
-// Same depth range and reversal: bit-identical window depth (measured 0 texels of 1M in every variant).
-::testing::AssertionResult rawIdentical(const apps::FloatDifference& raw)
-{
-    if (raw.differingPixels == 0)
-        return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << raw.differingPixels << " texels differ in raw window depth (bound 0), max "
-                                         << raw.maxAbs;
-}
-
-// Across conventions, in light depth: coverage and the local-gradient bound, then the absolute one (measured
-// max 2.5e-5 across conventions, the beam; the gradient bound is the real check).
-::testing::AssertionResult lightDepthWithinBounds(const AtlasComparison& c, const std::string& atlas)
+// Across conventions, in light depth: coverage and the local-gradient bound together.
+::testing::AssertionResult withinGradientBound(const AtlasComparison& c, const std::string& atlas)
 {
     const std::size_t outliers = c.coverageMismatches + c.beyondBound;
-    const float maxAbsAllowed = outliersAllowed(atlas) == 0 ? 2e-4f : 1e-2f;
-    if (outliers <= outliersAllowed(atlas) && c.maxAbsCovered <= maxAbsAllowed)
+    if (outliers <= outliersAllowed(atlas))
         return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure()
            << c.coverageMismatches << " texels drawn in one atlas and cleared in the other, " << c.beyondBound
            << " differ by more than " << kRoundingSlack << " + " << kStepsAllowed
            << " subpixel steps of the local depth gradient (worst ratio " << c.worstRatio << "; bound "
-           << outliersAllowed(atlas) << " together); max difference where both are drawn " << c.maxAbsCovered
-           << " (bound " << maxAbsAllowed << ")";
+           << outliersAllowed(atlas) << " together)";
 }
 
-// A configuration against its twin of the same backend with the other depth mapping: byte-identical.
-::testing::AssertionResult litIdentical(const apps::ImageDifference& d)
+// Same depth range and reversal: bit-identical window depth (measured 0 texels of 1M in every variant). Across
+// conventions the gradient bound above, then the absolute one where both are drawn (measured max 2.5e-5, the beam;
+// the gradient bound is the real check).
+parity::Thresholds atlasThresholds(const std::string& atlas)
 {
-    if (d.differingPixels == 0)
-        return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << d.differingPixels << " pixels differ (bound 0), max " << d.maxAbs;
+    return {.maxDifference = outliersAllowed(atlas) == 0 ? 2e-4 : 1e-2,
+            .maxCoverageMismatches = parity::kAnyCount, // judged with the gradient bound's outliers
+            .bitExactWhereConventionsAgree = true,
+            .check = [atlas](const parity::Picture& a, const rhi::Conventions&, const parity::Picture& b,
+                             const rhi::Conventions&) -> std::optional<std::string> {
+                const AtlasComparison c = compareAtlases(a.given, b.given, a.width(), a.height());
+                fmt::print("[ gradient ] {}: worst diff / subpixel step {:.2f}, coverage mismatches {}, beyond bound {}, "
+                           "without gradient {}\n",
+                           atlas, c.worstRatio, c.coverageMismatches, c.beyondBound, c.withoutGradient);
+                const ::testing::AssertionResult verdict = withinGradientBound(c, atlas);
+                return verdict ? std::nullopt : std::optional<std::string>(verdict.message());
+            }};
 }
 
-// Vulkan against GL: at most 1 of the 57 600 pixels (a shadow edge) and PSNR >= 60 dB.
-constexpr std::size_t kLitPixelsAllowed = 1;
-constexpr double kLitPsnrFloor = 60.0;
-::testing::AssertionResult litWithinBackendBounds(const apps::ImageDifference& d)
+bool reversedTwins(const std::string& a, const std::string& b) { return a + "-reversed" == b || b + "-reversed" == a; }
+
+// Lit images. A configuration against its twin of the same backend with the other depth mapping: byte-identical
+// (measured). Otherwise at most 1 of the 57 600 pixels (a shadow edge) and PSNR >= 60 dB.
+parity::Thresholds litThresholds(const std::string& a, const std::string& b)
 {
-    if (d.differingPixels <= kLitPixelsAllowed && d.psnr >= kLitPsnrFloor)
-        return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << d.differingPixels << " pixels differ (bound " << kLitPixelsAllowed
-                                         << "), PSNR " << d.psnr << " dB (bound >= " << kLitPsnrFloor << ")";
+    if (reversedTwins(a, b))
+        return parity::identical();
+    return {.maxDifference = parity::kAnyDifference, .minPsnr = 60.0, .maxDifferingPixels = 1};
 }
 
-// Every pair of configurations.
-void checkAtlasPairs(const Variant& variant, const std::vector<apps::ShadowPictures>& pictures,
-                     const std::string& atlas)
+parity::Options shadowParityOptions()
 {
-    for (std::size_t i = 0; i < pictures.size(); ++i)
-        for (std::size_t j = i + 1; j < pictures.size(); ++j) {
-            const AtlasPair pair = compareAtlasPair(pictures[i], pictures[j], atlas);
-            if (pair.raw) {
-                fmt::print("{} {} raw window depth: max abs diff {:.3g}, differing texels {}\n", variant.name, pair.key,
-                           pair.raw->maxAbs, pair.raw->differingPixels);
-                ::testing::Test::RecordProperty(pair.key + ".rawMaxAbs", fmt::format("{}", pair.raw->maxAbs));
-                ::testing::Test::RecordProperty(pair.key + ".rawDifferingTexels", std::to_string(pair.raw->differingPixels));
-                EXPECT_TRUE(rawIdentical(*pair.raw)) << pair.key;
-            }
-            const AtlasComparison& c = pair.light;
-            const std::size_t texels = pictures[i].atlas(atlas).lightDepth.size();
-            report(pair.key,
-                   fmt::format("{} {} light depth: max abs diff {:.3g}, PSNR {:.1f} dB, differing texels {} ({:.2f}%), "
-                               "worst diff / subpixel step {:.2f}, coverage mismatches {}, beyond bound {}, without gradient {}",
-                               variant.name, pair.key, c.difference.maxAbs, c.difference.psnr,
-                               c.difference.differingPixels, 100.0 * double(c.difference.differingPixels) / double(texels),
-                               c.worstRatio, c.coverageMismatches, c.beyondBound, c.withoutGradient),
-                   c.difference.maxAbs, c.difference.psnr, c.difference.differingPixels);
-            EXPECT_TRUE(lightDepthWithinBounds(c, atlas)) << pair.key;
-        }
+    parity::Options options;
+    for (const char* atlas : {"atlas", "other-atlas", "cube-atlas"})
+        options.thresholds[atlas] = atlasThresholds(atlas);
+    options.pairThresholds = [](const std::string& picture, const parity::ConfigurationRun& a,
+                                const parity::ConfigurationRun& b, const parity::Thresholds& perPicture) {
+        return picture == "lit" ? litThresholds(a.name(), b.name()) : perPicture;
+    };
+    return options;
 }
 
-struct RenderedEverywhere {
-    std::vector<apps::ShadowPictures> pictures;
-    std::vector<testing::SkippedConfiguration> skipped;
-};
-
-// The scene through every configuration this build compiles; those the driver refuses are listed, not rendered.
-RenderedEverywhere renderEverywhere(const scene::Scene& scene, const render::FrameDesc& frame)
+// The scene through every configuration this build compiles, each on a validated device of its own.
+std::vector<parity::ConfigurationRun> renderEverywhere(const scene::Scene& scene, const render::FrameDesc& frame)
 {
-    RenderedEverywhere out;
-    for (const std::string& configuration : testing::compiledConfigurations()) {
-        try {
-            out.pictures.push_back(apps::renderShadowScene(configuration, scene, frame));
-        } catch (const rhi::UnsupportedError& e) {
-            out.skipped.push_back({configuration, e.what()});
-        }
-    }
-    return out;
-}
-
-bool sameBackend(const std::string& a, const std::string& b)
-{
-    return penumbra::parseConfiguration(a).backend == penumbra::parseConfiguration(b).backend;
+    return parity::renderConfigurations([&](rhi::Device& device, const rhi::NamedConfiguration& configuration) {
+        return apps::parityPictures(apps::renderShadowScene(device, configuration.name, scene, frame));
+    });
 }
 
 void checkParity(const Variant& variant)
 {
     const auto start = std::chrono::steady_clock::now();
-    const scene::Scene scene = sceneOf(variant);
-    const render::FrameDesc frame = frameOf(variant);
-    const RenderedEverywhere rendered = renderEverywhere(scene, frame);
-    const std::vector<apps::ShadowPictures>& pictures = rendered.pictures;
-    ASSERT_FALSE(pictures.empty());
-    ASSERT_EQ(pictures.front().configuration, "vulkan");
-    const apps::ShadowPictures& vulkan = pictures.front();
+    const std::vector<parity::ConfigurationRun> runs = renderEverywhere(sceneOf(variant), frameOf(variant));
+    ASSERT_FALSE(runs.empty());
+    const parity::ConfigurationRun& vulkan = runs.front();
+    ASSERT_EQ(vulkan.name(), "vulkan");
+    ASSERT_EQ(vulkan.status, parity::ConfigurationRun::Status::Rendered) << vulkan.message;
 
     // Something to compare: casters in the atlas (unless every caster is off) and shadow in the lit image.
     std::size_t drawn = 0;
-    for (const apps::AtlasPictures& atlas : vulkan.atlases)
-        for (float d : atlas.lightDepth)
-            drawn += d > 0.0f;
+    for (const parity::Picture& picture : vulkan.pictures)
+        if (picture.kind == parity::PictureKind::Depth)
+            drawn += std::size_t(std::count_if(picture.given.begin(), picture.given.end(), [](float d) { return d > 0.0f; }));
     if (variant.casters == CasterMode::Off) {
-        EXPECT_LT(drawn, vulkan.atlas("directional").lightDepth.size() / 2) << "only the ground should cast";
+        EXPECT_LT(drawn, vulkan.picture("atlas").given.size() / 2) << "only the ground should cast";
     }
     EXPECT_GT(drawn, 0u) << "empty atlas";
-    testing::savePicture(vulkan.lit, fmt::format("shadow-parity-{}-vulkan-lit", variant.name));
-    for (const apps::AtlasPictures& atlas : vulkan.atlases)
-        testing::savePicture(atlas.picture, fmt::format("shadow-parity-{}-vulkan-{}-atlas", variant.name, atlas.name));
+    testing::savePicture(vulkan.picture("lit").color, fmt::format("shadow-parity-{}-vulkan-lit", variant.name));
 
-    for (const apps::AtlasPictures& atlas : vulkan.atlases)
-        checkAtlasPairs(variant, pictures, atlas.name);
-
-    // Lit images against vulkan.
-    for (std::size_t i = 1; i < pictures.size(); ++i) {
-        const apps::ShadowPictures& other = pictures[i];
-        const std::string key = fmt::format("lit.vulkan.{}", other.configuration);
-        const apps::ImageDifference d = apps::compareImages(vulkan.lit, other.lit);
-        report(key,
-               fmt::format("{} {}: max abs diff {}, PSNR {:.1f} dB, differing pixels {} of {}", variant.name, key,
-                           d.maxAbs, d.psnr, d.differingPixels, std::size_t(kWidth) * kHeight),
-               d.maxAbs, d.psnr, d.differingPixels);
-        if (sameBackend(other.configuration, pictures.front().configuration)) {
-            EXPECT_TRUE(litIdentical(d)) << key;
-        } else {
-            EXPECT_TRUE(litWithinBackendBounds(d)) << key;
-            if (d.differingPixels != 0)
-                testing::savePicture(other.lit, fmt::format("shadow-parity-{}-{}-lit", variant.name, other.configuration));
-        }
-    }
-    // The configurations of each other backend (OpenGL) among themselves.
-    for (std::size_t i = 0; i < pictures.size(); ++i)
-        for (std::size_t j = i + 1; j < pictures.size(); ++j) {
-            if (sameBackend(pictures[i].configuration, pictures.front().configuration) ||
-                !sameBackend(pictures[i].configuration, pictures[j].configuration))
-                continue;
-            const std::string key = fmt::format("lit.{}.{}", pictures[i].configuration, pictures[j].configuration);
-            const apps::ImageDifference d = apps::compareImages(pictures[i].lit, pictures[j].lit);
-            report(key,
-                   fmt::format("{} {}: max abs diff {}, PSNR {:.1f} dB, differing pixels {}", variant.name, key,
-                               d.maxAbs, d.psnr, d.differingPixels),
-                   d.maxAbs, d.psnr, d.differingPixels);
-            // Reversing Z within one GL path changes nothing visible (measured byte-identical).
-            if (pictures[j].configuration == pictures[i].configuration + "-reversed") {
-                EXPECT_TRUE(litIdentical(d)) << key;
-            }
-        }
+    PENUMBRA_EXPECT_PARITY(runs, shadowParityOptions());
     fmt::print("{}: {:.2f} s\n", variant.name,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    testing::reportSkipped(rendered.skipped);
 }
 
-// Skips in the tests above do not fail them; this does: every compiled configuration renders the mixed scene
-// (directional, spot and point shadows) at a small size.
+// Unsupported configurations skip the tests above (the others still compared); this fails instead: every compiled
+// configuration renders the mixed scene (directional, spot and point shadows) at a small size.
 TEST(ShadowParity, EveryConfigurationIsRendered)
 {
     render::FrameDesc frame;
@@ -400,12 +301,15 @@ TEST(ShadowParity, EveryConfigurationIsRendered)
     frame.height = 36;
     frame.shadows.directional.atlasSize = 256;
     frame.shadows.other.atlasSize = 256;
-    const RenderedEverywhere rendered = renderEverywhere(apps::namedScene("mixed"), frame);
+    std::vector<std::string> rendered;
     std::string reasons;
-    for (const testing::SkippedConfiguration& s : rendered.skipped)
-        reasons += fmt::format("\n  {}: {}", s.name, s.reason);
-    EXPECT_EQ(rendered.pictures.size(), testing::compiledConfigurations().size())
-        << "configurations this build has that the driver refused:" << reasons;
+    for (const parity::ConfigurationRun& run : renderEverywhere(apps::namedScene("mixed"), frame)) {
+        if (run.status == parity::ConfigurationRun::Status::Rendered)
+            rendered.push_back(run.name());
+        else
+            reasons += fmt::format("\n  {}: {}", run.name(), run.message);
+    }
+    EXPECT_EQ(rendered, testing::compiledConfigurations()) << "configurations this build has that did not render:" << reasons;
 }
 
 TEST(ShadowParity, OneLightOneCascade) { checkParity({.name = "1x1", .scene = "key-light", .cascades = 1}); }
@@ -438,66 +342,80 @@ TEST(ShadowParity, GltfMaterials) { checkParity({.name = "gltf-materials", .scen
 TEST(ShadowParity, PointLightRoom) { checkParity({.name = "room", .scene = "room", .otherFilter = ShadowFilter::PCF3x3}); }
 
 // The negative controls: a real render of the 1x1 variant on the first compiled configuration, one texel or pixel
-// changed, judged by the functions the parity tests above use.
-const apps::ShadowPictures& oneLightRendered()
+// changed, judged by the thresholds the parity tests above use.
+const parity::ConfigurationRun& oneLightRendered()
 {
-    static const apps::ShadowPictures pictures = [] {
+    static const parity::ConfigurationRun run = [] {
         const Variant variant{.name = "1x1", .scene = "key-light", .cascades = 1};
-        return apps::renderShadowScene(testing::compiledConfigurations().front(), sceneOf(variant), frameOf(variant));
+        const scene::Scene scene = sceneOf(variant);
+        const render::FrameDesc frame = frameOf(variant);
+        return parity::renderConfigurations(
+                   [&](rhi::Device& device, const rhi::NamedConfiguration& configuration) {
+                       return apps::parityPictures(apps::renderShadowScene(device, configuration.name, scene, frame));
+                   },
+                   {testing::compiledConfigurations().front()})
+            .front();
     }();
-    return pictures;
+    if (run.status != parity::ConfigurationRun::Status::Rendered)
+        throw rhi::Error(fmt::format("{} did not render: {}", run.name(), run.message));
+    return run;
 }
 
 // One directional texel inside a caster written 5 % of the depth range deeper: a caster one backend draws
 // differently. Same convention, so raw window depth and light depth both see it.
 TEST(ShadowParity, ChangedAtlasTexelCatchesFault)
 {
-    const apps::ShadowPictures& rendered = oneLightRendered();
-    apps::ShadowPictures changed = rendered;
-    apps::AtlasPictures& atlas = changed.atlases.at(0);
-    ASSERT_EQ(atlas.name, "directional");
+    const parity::ConfigurationRun& rendered = oneLightRendered();
+    const rhi::Conventions conventions = rendered.conventions();
+    const parity::Picture& atlas = rendered.picture("atlas");
+    parity::Picture changed = atlas;
     // The first drawn texel with a local depth gradient, so the gradient bound (not only the absolute one) applies.
-    const std::vector<float> gradient = localGradient(atlas.lightDepth, atlas.depth.width, atlas.depth.height);
+    const std::vector<float> gradient = localGradient(atlas.given, atlas.width(), atlas.height());
     std::optional<std::size_t> texel;
     for (std::size_t i = 0; i < gradient.size() && !texel; ++i)
         if (gradient[i] > 0.0f && atlas.depth.depth[i] < 0.9f)
             texel = i;
     ASSERT_TRUE(texel) << "no drawn texel with a depth gradient in the atlas";
-    atlas.depth.depth[*texel] += 0.05f;
-    atlas.lightDepth = render::lightDepthFraction(atlas.depth, rhi::Conventions(changed.depthRange, changed.reversedZ));
+    changed.depth.depth[*texel] += 0.05f;
+    changed.given = render::lightDepthFraction(changed.depth, conventions);
 
-    const AtlasPair intact = compareAtlasPair(rendered, rendered, "directional");
-    ASSERT_TRUE(intact.raw);
-    EXPECT_TRUE(rawIdentical(*intact.raw));
-    EXPECT_TRUE(lightDepthWithinBounds(intact.light, "directional"));
+    const parity::Thresholds thresholds = atlasThresholds("atlas");
+    EXPECT_TRUE(parity::comparePictures(atlas, conventions, atlas, conventions, thresholds).pass());
+    const parity::PictureComparison broken = parity::comparePictures(atlas, conventions, changed, conventions, thresholds);
+    EXPECT_EQ(broken.figures.rawDifferingTexels, 1u);
+    EXPECT_FALSE(broken.pass());
 
-    const AtlasPair pair = compareAtlasPair(rendered, changed, "directional");
-    ASSERT_TRUE(pair.raw);
-    EXPECT_EQ(pair.raw->differingPixels, 1u);
-    EXPECT_FALSE(rawIdentical(*pair.raw));
-    EXPECT_EQ(pair.light.beyondBound, 1u);
-    EXPECT_EQ(pair.light.coverageMismatches, 0u);
-    EXPECT_FALSE(lightDepthWithinBounds(pair.light, "directional"));
+    const AtlasComparison light = compareAtlases(atlas.given, changed.given, atlas.width(), atlas.height());
+    EXPECT_EQ(light.beyondBound, 1u);
+    EXPECT_EQ(light.coverageMismatches, 0u);
+    EXPECT_FALSE(withinGradientBound(light, "atlas"));
+    // Across conventions raw depth is not compared; the gradient bound alone still fails it.
+    parity::Thresholds acrossConventions = thresholds;
+    acrossConventions.bitExactWhereConventionsAgree = false;
+    EXPECT_FALSE(parity::comparePictures(atlas, conventions, changed, conventions, acrossConventions).pass());
 }
 
 // Lit images: one pixel one level off breaks byte identity but not the Vulkan-GL bound, which allows one pixel;
 // a second one breaks that too.
 TEST(ShadowParity, ChangedLitPixelCatchesFault)
 {
-    const rhi::Image& lit = oneLightRendered().lit;
-    ASSERT_TRUE(litIdentical(apps::compareImages(lit, lit)));
-    rhi::Image changed = lit;
+    const parity::Picture& lit = oneLightRendered().picture("lit");
+    const rhi::Conventions conventions = oneLightRendered().conventions();
+    const parity::Thresholds twins = litThresholds("vulkan", "vulkan-reversed");
+    const parity::Thresholds backends = litThresholds("vulkan", "opengl");
+    ASSERT_TRUE(parity::comparePictures(lit, conventions, lit, conventions, twins).pass());
+    parity::Picture changed = lit;
     const auto nudge = [&](std::uint32_t x, std::uint32_t y) {
-        std::byte& green = changed.bytes[(std::size_t(y) * changed.width + x) * 4 + 1];
+        std::byte& green = changed.color.bytes[(std::size_t(y) * changed.width() + x) * 4 + 1];
         green = std::byte(std::uint8_t(green) ^ 1u);
     };
     nudge(kWidth / 2, kHeight / 2);
-    const apps::ImageDifference one = apps::compareImages(lit, changed);
-    EXPECT_EQ(one.differingPixels, 1u);
-    EXPECT_FALSE(litIdentical(one));
-    EXPECT_TRUE(litWithinBackendBounds(one));
+    const parity::PictureComparison one = parity::comparePictures(lit, conventions, changed, conventions, twins);
+    EXPECT_EQ(one.figures.differingPixels, 1u);
+    EXPECT_FALSE(one.pass());
+    EXPECT_TRUE(parity::comparePictures(lit, conventions, changed, conventions, backends).pass());
     nudge(kWidth / 4, kHeight / 4);
-    EXPECT_FALSE(litWithinBackendBounds(apps::compareImages(lit, changed)));
+    EXPECT_FALSE(parity::comparePictures(lit, conventions, changed, conventions, backends).pass());
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 #include "GpuTesting.hpp"
 
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
@@ -106,7 +106,7 @@ std::string savePicture(const rhi::Image& image, const std::string& name)
 {
     const char* root = std::getenv("PENUMBRA_TEST_OUTPUT");
     const std::string path = fmt::format("{}/{}.png", root ? root : "test-output", name);
-    apps::writePng(path, image);
+    parity::writePng(path, image);
     return path;
 }
 

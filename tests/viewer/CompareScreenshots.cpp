@@ -3,7 +3,7 @@
 //   panel <without-ui.png> <with-ui.png> <panel right edge x>: the pictures differ, and only left
 //   of the edge (where the panel is drawn).
 // Prints max difference, PSNR and differing pixels; exits 1 on failure, naming both files.
-#include "ImageDifference.hpp"
+#include "penumbra/parity/ImageDifference.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
@@ -32,7 +32,7 @@ penumbra::rhi::Image readPng(const std::string& path)
 
 int compareScene(const std::string& reference, const std::string& view, double minPsnr)
 {
-    const penumbra::apps::ImageDifference d = penumbra::apps::compareImages(readPng(reference), readPng(view));
+    const penumbra::parity::ImageDifference d = penumbra::parity::compareImages(readPng(reference), readPng(view));
     fmt::print("scene: {} vs {}: max difference {}, PSNR {:.2f} dB, {} pixels differ (threshold PSNR >= {} dB)\n",
                reference, view, d.maxAbs, d.psnr, d.differingPixels, minPsnr);
     return d.psnr >= minPsnr ? 0 : 1;
@@ -42,7 +42,7 @@ int comparePanel(const std::string& withoutUi, const std::string& withUi, std::u
 {
     const penumbra::rhi::Image a = readPng(withoutUi);
     const penumbra::rhi::Image b = readPng(withUi);
-    const penumbra::apps::ImageDifference d = penumbra::apps::compareImages(a, b);
+    const penumbra::parity::ImageDifference d = penumbra::parity::compareImages(a, b);
     std::size_t outside = 0;
     for (std::uint32_t y = 0; y < a.height; ++y)
         for (std::uint32_t x = panelRight; x < a.width; ++x)

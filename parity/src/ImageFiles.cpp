@@ -1,4 +1,4 @@
-#include "ImageFiles.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 
 #include "penumbra/rhi/ColorSpace.hpp"
 #include "penumbra/rhi/Error.hpp"
@@ -9,7 +9,7 @@
 #include <unistd.h>
 #include <vector>
 
-namespace penumbra::apps {
+namespace penumbra::parity {
 namespace {
 
 // Written first and renamed into place, so no reader sees half a file; named per process, so that two
@@ -89,4 +89,4 @@ void writeTextFile(const std::filesystem::path& path, std::string_view text)
     std::filesystem::rename(temporary, path);
 }
 
-} // namespace penumbra::apps
+} // namespace penumbra::parity

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <span>
 
-namespace penumbra::apps {
+namespace penumbra::parity {
 
 // Difference heat maps for parity reports, RGBA8, rows as the inputs: black where the pictures
 // agree, then red, yellow and white as |a - b| grows to `fullScale` (and beyond, saturated), so
@@ -18,4 +18,4 @@ rhi::Image differenceHeatMap(const rhi::Image& a, const rhi::Image& b, int fullS
 rhi::Image differenceHeatMap(std::span<const float> a, std::span<const float> b, std::uint32_t width,
                              std::uint32_t height, float fullScale);
 
-} // namespace penumbra::apps
+} // namespace penumbra::parity

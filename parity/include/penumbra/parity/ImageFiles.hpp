@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string_view>
 
-namespace penumbra::apps {
+namespace penumbra::parity {
 
 // Writes through OpenImageIO, creating parent folders; a failure throws rhi::Error naming the
 // file. Files are written to a temporary name and renamed, so nothing is left half-written.
@@ -20,4 +20,4 @@ bool isPicturePath(const std::filesystem::path& path);
 // A report or other text file, written to a temporary name and renamed like the pictures.
 void writeTextFile(const std::filesystem::path& path, std::string_view text);
 
-} // namespace penumbra::apps
+} // namespace penumbra::parity

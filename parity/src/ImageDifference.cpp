@@ -1,4 +1,4 @@
-#include "ImageDifference.hpp"
+#include "penumbra/parity/ImageDifference.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <limits>
 
-namespace penumbra::apps {
+namespace penumbra::parity {
 
 ImageDifference compareImages(const rhi::Image& a, const rhi::Image& b)
 {
@@ -49,4 +49,4 @@ FloatDifference compareFloats(std::span<const float> a, std::span<const float> b
     return d;
 }
 
-} // namespace penumbra::apps
+} // namespace penumbra::parity

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <span>
 
-namespace penumbra::apps {
+namespace penumbra::parity {
 
 // How far two pictures of equal size and format are apart, per 8-bit channel.
 struct ImageDifference {
@@ -26,4 +26,4 @@ struct FloatDifference {
 };
 FloatDifference compareFloats(std::span<const float> a, std::span<const float> b);
 
-} // namespace penumbra::apps
+} // namespace penumbra::parity

@@ -1,4 +1,4 @@
-#include "HeatMap.hpp"
+#include "penumbra/parity/HeatMap.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <vector>
 
-namespace penumbra::apps {
+namespace penumbra::parity {
 namespace {
 
 // t in [0, 1] along black -> red -> yellow -> white; any difference at all is at least dark red.
@@ -55,4 +55,4 @@ rhi::Image differenceHeatMap(std::span<const float> a, std::span<const float> b,
     return map;
 }
 
-} // namespace penumbra::apps
+} // namespace penumbra::parity
