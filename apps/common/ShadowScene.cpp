@@ -1,6 +1,7 @@
 #include "ShadowScene.hpp"
 
 #include "ImageFiles.hpp"
+#include "ToolDevices.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
@@ -82,7 +83,7 @@ scene::Scene namedScene(const std::string& name)
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame)
 {
-    auto device = createDevice(configuration);
+    auto device = createToolDevice(configuration);
     render::SceneRenderer renderer(*device, scene);
     ShadowPictures pictures;
     pictures.configuration = configuration;

@@ -2,6 +2,7 @@
 #include "Commands.hpp"
 #include "ImageFiles.hpp"
 #include "TestPattern.hpp"
+#include "ToolDevices.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/rhi/Error.hpp"
@@ -23,7 +24,7 @@ struct PatternOptions {
 
 rhi::Image renderPattern(const std::string& configuration, std::uint32_t size)
 {
-    auto device = createDevice(configuration);
+    auto device = createToolDevice(configuration);
     pattern::PatternRenderer renderer(*device, {.width = size, .height = size});
     renderer.render(pattern::testPattern());
     rhi::Image image = renderer.color();

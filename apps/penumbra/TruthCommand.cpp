@@ -3,6 +3,7 @@
 #include "Commands.hpp"
 #include "ImageFiles.hpp"
 #include "SceneOptions.hpp"
+#include "ToolDevices.hpp"
 #include "TruthPictures.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
@@ -105,7 +106,7 @@ void truth(const TruthOptions& options)
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);
 
-    auto device = createDevice(options.backend);
+    auto device = apps::createToolDevice(options.backend);
     render::SceneRenderer renderer(*device, scene);
     const render::ShadowPlans plans = renderer.planShadows(scene.camera, frame);
     const std::vector<scene::LightRef> lights = shadowedLights(plans, scene);

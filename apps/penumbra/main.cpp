@@ -1,5 +1,6 @@
 // penumbra: the command-line tool. Every subcommand runs on any configuration by name.
 #include "Commands.hpp"
+#include "ToolDevices.hpp"
 #include "ViewCommand.hpp"
 
 #include "penumbra/rhi/Error.hpp"
@@ -23,6 +24,16 @@ int main(int argc, char** argv)
 {
     CLI::App app{"Penumbra: one renderer, Vulkan and OpenGL, identical pixels"};
     app.require_subcommand(1);
+    // The RHI's validation layer (DeviceDesc::validateUsage) is on in debug builds; release builds leave it to
+    // --validate, since `penumbra bench` measures what it costs.
+    bool validate = false;
+    app.fallthrough(); // --validate also after the subcommand's name
+    app.add_flag("--validate", validate,
+                 "Check every call against the RHI's rules (on anyway in debug builds; `penumbra bench -s draws` "
+                 "reports its cost)");
+#ifdef NDEBUG
+    app.parse_complete_callback([&validate] { penumbra::apps::setToolUsageValidation(validate); });
+#endif
     penumbra::apps::addRenderCommand(app);
     penumbra::apps::addPatternCommand(app);
     penumbra::apps::addParityCommand(app);

@@ -8,6 +8,7 @@
 #include "ImageFiles.hpp"
 #include "ViewState.hpp"
 #include "ViewerScene.hpp"
+#include "ToolDevices.hpp"
 #include "ViewerWindow.hpp"
 #include "WindowInput.hpp"
 
@@ -29,7 +30,7 @@ namespace {
 
 rhi::DeviceDesc windowDeviceDesc(const std::string& configuration, GLFWwindow* window)
 {
-    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
+    rhi::DeviceDesc desc = apps::toolDeviceDesc(configuration);
     desc.window.glfwWindow = window;
     return desc;
 }

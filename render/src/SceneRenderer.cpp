@@ -4,6 +4,8 @@
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/DirectionalShadowUniforms.hpp"
+#include "penumbra/shadows/OtherShadowUniforms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -208,6 +210,8 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
                           {4, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, tangent)), 0},
                           {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
     desc.depthFormat = kDepthFormat;
+    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
+                           shadows::otherShadowLayout()};
     for (const bool blend : {false, true})
         for (const bool doubleSided : {false, true}) {
             desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/rhi/UniformLayout.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
 #include <array>
@@ -22,6 +23,18 @@ struct ShadowCasterUniforms {
     UvTransformRows baseColorUv{}; // ShadowCaster::baseColorUv
 };
 static_assert(sizeof(ShadowCasterUniforms) == 128);
+
+// The struct as the PipelineDesc::uniformLayouts entry of shadow_caster.glsl's block ShadowCasterDraw.
+inline rhi::UniformLayout shadowCasterLayout()
+{
+    return {"ShadowCasterDraw", sizeof(ShadowCasterUniforms),
+            {
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, worldToClip),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, material),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, sampling),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, baseColorUv),
+            }};
+}
 
 // One shadow view's casters, drawn into the bound target's current viewport.
 struct ShadowViewDraw {
