@@ -495,6 +495,21 @@ TEST_F(MisuseTest, TheFixturesDrawBreaksNoRule)
     EXPECT_NO_THROW(device->submit(*o.list));
 }
 
+// Size 0 is no misuse: an empty buffer (a scene with nothing to draw) is created, written with nothing and bound
+// where no byte is read, on every backend alike.
+TEST_F(MisuseTest, AnEmptyBufferIsValid)
+{
+    Objects o(*device);
+    auto empty = device->createBuffer({.size = 0, .usage = rhi::BufferUsage::Vertex, .debugName = "empty"});
+    EXPECT_EQ(empty->desc().size, 0u);
+    empty->write(0, {});
+    o.bindForDraw("vertex");
+    o.list->bindVertexBuffer(0, *empty);
+    o.list->draw(0);
+    o.list->endPass();
+    EXPECT_NO_THROW(device->submit(*o.list));
+}
+
 TEST_F(MisuseTest, EveryRuleRaisesItsErrorAtTheBreakingCall)
 {
     for (const Rule& rule : rules()) {
