@@ -9,15 +9,16 @@
 namespace penumbra::render {
 namespace {
 
-std::optional<shadows::ShadowCasterMode> casterMode(scene::CasterMode mode)
+// How a caster's texels enter the atlas; only asked of objects that cast (Scene::castsShadows).
+shadows::ShadowCasterMode casterMode(scene::CasterMode mode)
 {
     switch (mode) {
-    case scene::CasterMode::On: return shadows::ShadowCasterMode::Opaque;
     case scene::CasterMode::Clip: return shadows::ShadowCasterMode::Clip;
     case scene::CasterMode::Dither: return shadows::ShadowCasterMode::Dither;
+    case scene::CasterMode::On:
     case scene::CasterMode::Off: break;
     }
-    return std::nullopt;
+    return shadows::ShadowCasterMode::Opaque;
 }
 
 template <typename T>
@@ -112,12 +113,13 @@ std::vector<shadows::ShadowCaster> GpuScene::casters() const
     for (const scene::Object& object : scene_.objects) {
         const scene::Material& material = scene_.materialOf(object);
         const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
-        if (const auto mode = casterMode(material.caster))
+        if (scene_.castsShadows(object))
             casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
                                static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
-                               *mode, material.baseColor.a, material.alphaCutoff, &baseColorMap(material),
-                               &baseColorSampler(material), baseColor.has_value(), uvTransform(baseColor),
-                               material.doubleSided});
+                               casterMode(material.caster), material.baseColor.a, material.alphaCutoff,
+                               &baseColorMap(material), &baseColorSampler(material), baseColor.has_value(),
+                               uvTransform(baseColor),
+                               material.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided});
     }
     return casters;
 }
@@ -126,7 +128,7 @@ std::vector<shadows::Bounds> GpuScene::casterBounds() const
 {
     std::vector<shadows::Bounds> bounds;
     for (const scene::Object& object : scene_.objects)
-        if (casterMode(scene_.materialOf(object).caster))
+        if (scene_.castsShadows(object))
             bounds.push_back({object.worldBounds.min, object.worldBounds.max});
     return bounds;
 }
