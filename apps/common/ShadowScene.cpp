@@ -1,5 +1,7 @@
 #include "ShadowScene.hpp"
 
+#include "ToolDevices.hpp"
+
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
@@ -106,8 +108,9 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame, const ShadowSceneRun& run)
 {
-    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
+    rhi::DeviceDesc desc = toolDeviceDesc(configuration);
     desc.validation = run.validate;
+    desc.validateUsage = desc.validateUsage || run.validate;
     auto device = createDevice(desc);
     ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases);
     if (const auto messages = device->debugMessages(); !messages.empty())

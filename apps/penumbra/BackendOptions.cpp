@@ -1,5 +1,7 @@
 #include "BackendOptions.hpp"
 
+#include "ToolDevices.hpp"
+
 #include "penumbra/backends/Registry.hpp"
 #include "penumbra/rhi/Error.hpp"
 
@@ -58,8 +60,9 @@ void addValidateFlag(CLI::App& command, bool& validate)
 
 rhi::DeviceDesc toolDeviceDesc(const std::string& configuration, bool validate)
 {
-    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
+    rhi::DeviceDesc desc = toolDeviceDesc(configuration);
     desc.validation = validate;
+    desc.validateUsage = desc.validateUsage || validate;
     return desc;
 }
 

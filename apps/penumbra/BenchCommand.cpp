@@ -49,7 +49,7 @@ public:
 struct Case {
     std::string configuration;
     std::uint32_t draws;
-    std::string rhiName, rawName;
+    std::string rhiName, validatedName, rawName;
 };
 
 void runBenchmarks(const BenchOptions& options)
@@ -62,20 +62,30 @@ void runBenchmarks(const BenchOptions& options)
     std::vector<Case> cases;
     for (const std::string& configuration : wants(options, "draws") ? options.configurations : std::vector<std::string>{}) {
         rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
-        desc.validation = false; // timing the driver, not the validation layer
+        desc.validation = false; // timing the driver, not the API's validation layer
+        desc.validateUsage = false;
         rhi::Device& device = *devices.emplace_back(createDevice(desc));
-        for (std::uint32_t n : options.draws) {
-            const DrawScene& scene = *scenes.emplace_back(std::make_unique<DrawScene>(device, n));
-            rhi::CommandList& commands = *lists.emplace_back(device.createCommandList());
-            RawDraws& raw = *raws.emplace_back(createRawDraws(device, scene));
-            const Case c{configuration, n, fmt::format("draws/{}/rhi/{}", configuration, n),
-                         fmt::format("draws/{}/raw/{}", configuration, n)};
-            benchmark::RegisterBenchmark(c.rhiName.c_str(), [&device, &scene, &commands](benchmark::State& state) {
+        // The same draws through the RHI's own validation layer: its overhead is validated / rhi.
+        desc.validateUsage = true;
+        rhi::Device& validatedDevice = *devices.emplace_back(createDevice(desc));
+        const auto registerRhi = [&](const std::string& name, rhi::Device& target, std::uint32_t n) {
+            const DrawScene& scene = *scenes.emplace_back(std::make_unique<DrawScene>(target, n));
+            rhi::CommandList& commands = *lists.emplace_back(target.createCommandList());
+            benchmark::RegisterBenchmark(name.c_str(), [&target, &scene, &commands](benchmark::State& state) {
                 for (auto _ : state) {
                     scene.recordRhi(commands);
-                    device.submit(commands);
+                    target.submit(commands);
                 }
             })->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(options.minTime);
+            return &scene;
+        };
+        for (std::uint32_t n : options.draws) {
+            const Case c{configuration, n, fmt::format("draws/{}/rhi/{}", configuration, n),
+                         fmt::format("draws/{}/rhi-validated/{}", configuration, n),
+                         fmt::format("draws/{}/raw/{}", configuration, n)};
+            const DrawScene& scene = *registerRhi(c.rhiName, device, n);
+            registerRhi(c.validatedName, validatedDevice, n);
+            RawDraws& raw = *raws.emplace_back(createRawDraws(device, scene));
             benchmark::RegisterBenchmark(c.rawName.c_str(), [&raw](benchmark::State& state) {
                 for (auto _ : state)
                     raw.frame();
@@ -97,17 +107,21 @@ void runBenchmarks(const BenchOptions& options)
         json["shadows"] = shadowBench->toJson();
     }
     if (!cases.empty())
-        fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw", "raw ns/draw",
-                   "rhi / raw");
+        fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw",
+                   "raw ns/draw", "rhi / raw", "validated", "val. / rhi");
     for (const Case& c : cases) {
         const double rhi = reporter.seconds.at(c.rhiName) * 1e9 / c.draws;
+        const double validated = reporter.seconds.at(c.validatedName) * 1e9 / c.draws;
         const double raw = reporter.seconds.at(c.rawName) * 1e9 / c.draws;
-        fmt::print("{:<24} {:>7} {:>14.1f} {:>14.1f} {:>10.3f}\n", c.configuration, c.draws, rhi, raw, rhi / raw);
+        fmt::print("{:<24} {:>7} {:>14.1f} {:>14.1f} {:>10.3f} {:>14.1f} {:>10.3f}\n", c.configuration, c.draws, rhi,
+                   raw, rhi / raw, validated, validated / rhi);
         json["draws"].push_back({{"configuration", c.configuration},
                                  {"draws", c.draws},
                                  {"rhiNsPerDraw", rhi},
                                  {"rawNsPerDraw", raw},
-                                 {"rhiOverRaw", rhi / raw}});
+                                 {"rhiOverRaw", rhi / raw},
+                                 {"validatedNsPerDraw", validated},
+                                 {"validatedOverRhi", validated / rhi}});
     }
     if (!options.json.empty()) {
         parity::writeTextFile(options.json, json.dump(2) + "\n");
@@ -122,8 +136,9 @@ void addBenchCommand(CLI::App& app)
     auto options = std::make_shared<BenchOptions>();
     auto scene = std::make_shared<SceneBenchOptions>();
     CLI::App* bench = app.add_subcommand(
-        "bench", "Time N small draws per frame through the RHI and through hand-written raw API code, and the "
-                 "shadow passes of the test scene; or, with --scene, every pass of any scene's frames");
+        "bench", "Time N small draws per frame through the RHI (without and with its validation layer) and "
+                 "through hand-written raw API code, and the shadow passes of the test scene; or, with --scene, "
+                 "every pass of any scene's frames");
     CLI::Option* suites =
         bench->add_option("-s,--suites", options->suites, "draws, shadows")->check(CLI::IsMember({"draws", "shadows"}));
     CLI::Option* configurations =
@@ -135,7 +150,7 @@ void addBenchCommand(CLI::App& app)
                                ->check(CLI::Range(0.01, 60.0));
     bench->add_option("--json", options->json,
                       "Also write the figures to this file: {\"draws\": [{configuration, draws, rhiNsPerDraw, "
-                      "rawNsPerDraw, rhiOverRaw}], \"shadows\": [{configuration, scenario, atlasPassMs, "
+                      "rawNsPerDraw, rhiOverRaw, validatedNsPerDraw, validatedOverRhi}], \"shadows\": [{configuration, scenario, atlasPassMs, "
                       "otherAtlasPassMs, litPassMs, frameMs, casterDraws, ...}]}; with --scene {\"scene\": "
                       "[{configuration, frames, frameMs, frameMsMin, frameMsMax, passes: {depth, directionalAtlas, "
                       "otherAtlas, screenSpaceShadows, lit, resolve, reference}, litOverReference, ...}]}");

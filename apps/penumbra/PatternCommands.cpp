@@ -2,6 +2,7 @@
 #include "Commands.hpp"
 #include "penumbra/parity/ImageFiles.hpp"
 #include "TestPattern.hpp"
+#include "ToolDevices.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/rhi/Error.hpp"

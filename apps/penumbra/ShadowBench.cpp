@@ -1,5 +1,7 @@
 #include "ShadowBench.hpp"
 
+#include "ToolDevices.hpp"
+
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/TestScenes.hpp"
@@ -91,8 +93,8 @@ struct ShadowBench::Case {
 ShadowBench::ShadowBench(const std::vector<std::string>& configurations, double minTime)
 {
     for (const std::string& configuration : configurations) {
-        rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
-        desc.validation = false; // timing the driver, not the validation layer
+        rhi::DeviceDesc desc = toolDeviceDesc(configuration);
+        desc.validation = false; // timing the driver, not the API's validation layer
         for (Scenario& scenario : scenarios()) {
             auto c = std::make_unique<Case>();
             c->configuration = configuration;

@@ -3,6 +3,7 @@
 #include "Commands.hpp"
 #include "penumbra/parity/ImageFiles.hpp"
 #include "SceneOptions.hpp"
+#include "ToolDevices.hpp"
 #include "TruthPictures.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"

@@ -1,5 +1,6 @@
 // penumbra: the command-line tool. Every subcommand runs on any configuration by name.
 #include "Commands.hpp"
+#include "ToolDevices.hpp"
 #include "ViewCommand.hpp"
 
 #include "penumbra/rhi/Error.hpp"
@@ -23,6 +24,11 @@ int main(int argc, char** argv)
 {
     CLI::App app{"Penumbra: one renderer, Vulkan and OpenGL, identical pixels"};
     app.require_subcommand(1);
+    // The RHI's validation layer (DeviceDesc::validateUsage) is on in debug builds; release builds leave it to each
+    // command's --validate (toolDeviceDesc), since `penumbra bench -s draws` measures what it costs.
+#ifdef NDEBUG
+    penumbra::apps::setToolUsageValidation(false);
+#endif
     penumbra::apps::addRenderCommand(app);
     penumbra::apps::addPatternCommand(app);
     penumbra::apps::addParityCommand(app);

@@ -8,6 +8,7 @@
 #include "penumbra/parity/ImageFiles.hpp"
 #include "ViewState.hpp"
 #include "ViewerScene.hpp"
+#include "ToolDevices.hpp"
 #include "ViewerWindow.hpp"
 #include "WindowInput.hpp"
 
@@ -29,8 +30,9 @@ namespace {
 
 rhi::DeviceDesc windowDeviceDesc(const std::string& configuration, bool validate, GLFWwindow* window)
 {
-    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
+    rhi::DeviceDesc desc = apps::toolDeviceDesc(configuration);
     desc.validation = validate;
+    desc.validateUsage = desc.validateUsage || validate;
     desc.window.glfwWindow = window;
     return desc;
 }

@@ -5,6 +5,8 @@
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/DirectionalShadowUniforms.hpp"
+#include "penumbra/shadows/OtherShadowUniforms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -211,6 +213,8 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     desc.fragment = litFragment_.get();
     desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kDepthFormat;
+    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
+                           shadows::otherShadowLayout()};
     for (const bool blend : {false, true})
         for (const bool doubleSided : {false, true}) {
             desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;

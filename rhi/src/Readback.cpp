@@ -1,4 +1,5 @@
 #include "penumbra/rhi/BackendSupport.hpp"
+#include "penumbra/rhi/ValidationRules.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Image.hpp"

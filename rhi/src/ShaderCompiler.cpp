@@ -40,9 +40,15 @@ std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spi
             throw ShaderCompileError(fmt::format("{}: '{}' uses a descriptor set other than 0", name, r.name));
         if (!compiler.has_decoration(r.id, spv::DecorationBinding))
             throw ShaderCompileError(fmt::format("{}: '{}' needs layout(binding = N)", name, r.name));
-        ShaderBinding b{compiler.get_decoration(r.id, spv::DecorationBinding), kind, r.name, 0};
-        if (kind == BindingKind::UniformBuffer)
-            b.size = std::uint32_t(compiler.get_declared_struct_size(compiler.get_type(r.base_type_id)));
+        ShaderBinding b{compiler.get_decoration(r.id, spv::DecorationBinding), kind, r.name, 0, {}};
+        if (kind == BindingKind::UniformBuffer) {
+            const spirv_cross::SPIRType& block = compiler.get_type(r.base_type_id);
+            b.size = std::uint32_t(compiler.get_declared_struct_size(block));
+            for (std::uint32_t i = 0; i < block.member_types.size(); ++i)
+                b.members.push_back({compiler.get_member_name(r.base_type_id, i),
+                                     compiler.type_struct_member_offset(block, i),
+                                     std::uint32_t(compiler.get_declared_struct_member_size(block, i))});
+        }
         bindings.push_back(b);
     };
     for (const spirv_cross::Resource& r : resources.uniform_buffers)

@@ -69,6 +69,7 @@ const ShadowCasterDraws::Pipelines& ShadowCasterDraws::pipelines(rhi::Format dep
                           {3, rhi::VertexFormat::Float2, vertexFormat_.uv1Offset, 0}}};
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer, .clamp = clamp};
     desc.depthFormat = depthFormat;
+    desc.uniformLayouts = {shadowCasterLayout()};
     Pipelines created;
     for (const bool doubleSided : {false, true}) {
         // Casters render their light-facing side, also through the mirrored cube face views; double-sided

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Shader.hpp"
 
 #include <gtest/gtest.h>
+#include <tuple>
 
 namespace penumbra::rhi {
 namespace {
@@ -24,6 +25,30 @@ void main() { outColor = light.color * texture(shadowMap, vec3(0.5, 0.5, PENUMBR
     EXPECT_EQ(shader.bindings[0].size, 80u);
     EXPECT_EQ(shader.bindings[1].binding, 3u);
     EXPECT_EQ(shader.bindings[1].kind, BindingKind::SampledTexture);
+}
+
+// The std140 layout the uniform-layout comparison checks C++ structs against (GLSL 4.60 section 7.6.2.2):
+// a vec3 takes 12 bytes on a 16-byte boundary, a float may follow in its last 4, and array elements are
+// rounded up to 16 bytes.
+TEST(ShaderCompilerTest, ReflectsStd140MemberOffsetsAndSizes)
+{
+    const CompiledShader shader = compileShader({ShaderStage::Fragment, R"(#version 450
+layout(std140, binding = 0) uniform Layout { vec3 direction; float range; float weights[3]; ivec4 config; } l;
+layout(location = 0) out vec4 outColor;
+void main() { outColor = vec4(l.direction, l.range + l.weights[1] + float(l.config.x)); }
+)", "layout.frag"}, header);
+    ASSERT_EQ(shader.bindings.size(), 1u);
+    const ShaderBinding& block = shader.bindings[0];
+    EXPECT_EQ(block.name, "Layout");
+    EXPECT_EQ(block.size, 80u);
+    ASSERT_EQ(block.members.size(), 4u);
+    const std::vector<std::tuple<std::string, std::uint32_t, std::uint32_t>> expected{
+        {"direction", 0, 12}, {"range", 12, 4}, {"weights", 16, 48}, {"config", 64, 16}};
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_EQ(block.members[i].name, std::get<0>(expected[i]));
+        EXPECT_EQ(block.members[i].offset, std::get<1>(expected[i])) << block.members[i].name;
+        EXPECT_EQ(block.members[i].size, std::get<2>(expected[i])) << block.members[i].name;
+    }
 }
 
 TEST(ShaderCompilerTest, ConventionsHeaderCompilesInEveryConvention)

@@ -11,14 +11,7 @@
 namespace penumbra::opengl {
 namespace {
 
-constexpr std::uint32_t maxVertexBuffers = 16;
-
-void checkBufferRange(const char* what, const rhi::Buffer& buffer, std::uint64_t offset, std::uint64_t size)
-{
-    if (offset > buffer.desc().size || size > buffer.desc().size - offset)
-        throw rhi::Error(fmt::format("{}: {} bytes at offset {} exceed buffer '{}' ({} bytes)", what, size, offset,
-                                     buffer.desc().debugName, buffer.desc().size));
-}
+constexpr std::uint32_t maxVertexBuffers = rhi::ValidatingCommandList::maxVertexBuffers;
 
 // Replays one list; lives for one submit and tracks what the recorded commands bound.
 class Replayer {
@@ -165,8 +158,6 @@ private:
 
     void prepareDraw(std::uint32_t firstInstance)
     {
-        if (!pipeline_)
-            throw rhi::Error("draw without a bound pipeline");
         GlVertexArrayCache& vao = pipeline_->vertexArrayCache();
         if (vao.generation != r_.generation) {
             vao.generation = r_.generation;
@@ -211,111 +202,90 @@ private:
 
 } // namespace
 
-void GlCommandList::beginPass(const rhi::PassDesc& pass)
+void GlCommandList::apiBeginPass(const rhi::PassDesc& pass)
 {
-    if (!pass.framebuffer)
-        throw rhi::Error("beginPass: no framebuffer");
     commands_.push_back(command::BeginPass{&glObject<const GlFramebuffer>(*pass.framebuffer, "beginPass framebuffer"),
                                            pass.clearColor, pass.clearDepth});
 }
 
-void GlCommandList::endPass() { commands_.push_back(command::EndPass{}); }
+void GlCommandList::apiEndPass() { commands_.push_back(command::EndPass{}); }
 
-void GlCommandList::setViewport(const rhi::Viewport& viewport) { commands_.push_back(command::SetViewport{viewport}); }
+void GlCommandList::apiSetViewport(const rhi::Viewport& viewport) { commands_.push_back(command::SetViewport{viewport}); }
 
-void GlCommandList::setScissor(const rhi::Rect& scissor) { commands_.push_back(command::SetScissor{scissor}); }
+void GlCommandList::apiSetScissor(const rhi::Rect& scissor) { commands_.push_back(command::SetScissor{scissor}); }
 
-void GlCommandList::setDepthBias(const rhi::DepthBias& bias)
+void GlCommandList::apiSetDepthBias(const rhi::DepthBias& bias)
 {
-    if (bias.clamp != 0.0f && !device_.capabilities().depthBiasClamp)
-        throw rhi::UnsupportedError(
-            fmt::format("setDepthBias: clamp {} needs glPolygonOffsetClamp, which this driver lacks", bias.clamp));
     commands_.push_back(command::SetDepthBias{rhi::signedDepthBias(device_.conventions(), bias)});
 }
 
-void GlCommandList::bindPipeline(const rhi::Pipeline& pipeline)
+void GlCommandList::apiBindPipeline(const rhi::Pipeline& pipeline)
 {
     commands_.push_back(command::BindPipeline{&glObject<const GlPipeline>(pipeline, "bindPipeline pipeline")});
 }
 
-void GlCommandList::bindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset)
+void GlCommandList::apiBindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset)
 {
-    if (slot >= maxVertexBuffers)
-        throw rhi::Error(fmt::format("bindVertexBuffer: slot {} exceeds the {} slots", slot, maxVertexBuffers));
-    checkBufferRange("bindVertexBuffer", buffer, offset, 0);
     commands_.push_back(
         command::BindVertexBuffer{slot, glObject<const GlBuffer>(buffer, "vertex buffer").name(), offset});
 }
 
-void GlCommandList::bindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset)
+void GlCommandList::apiBindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset)
 {
-    checkBufferRange("bindIndexBuffer", buffer, offset, 0);
     commands_.push_back(command::BindIndexBuffer{glObject<const GlBuffer>(buffer, "index buffer").name(),
                                                  GLenum(type == rhi::IndexType::UInt16 ? GL_UNSIGNED_SHORT
                                                                                        : GL_UNSIGNED_INT),
                                                  offset});
 }
 
-void GlCommandList::bindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+void GlCommandList::apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
                                       std::uint64_t size)
 {
-    checkBufferRange("bindUniformBuffer", buffer, offset, size);
-    const std::uint32_t alignment = device_.capabilities().uniformBufferOffsetAlignment;
-    if (offset % alignment != 0)
-        throw rhi::Error(fmt::format("bindUniformBuffer: offset {} of buffer '{}' is not a multiple of {}", offset,
-                                     buffer.desc().debugName, alignment));
     commands_.push_back(command::BindUniformBuffer{
         binding, glObject<const GlBuffer>(buffer, "uniform buffer").name(), offset, size});
 }
 
-void GlCommandList::bindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler)
+void GlCommandList::apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler)
 {
-    rhi::checkTextureBinding(device_.capabilities(), texture, sampler);
     commands_.push_back(command::BindTexture{binding, glObject<const GlTexture>(texture, "bound texture").name(),
                                              glObject<const GlSampler>(sampler, "bound sampler").name()});
 }
 
-void GlCommandList::draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
+void GlCommandList::apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
                          std::uint32_t firstInstance)
 {
     commands_.push_back(command::Draw{vertexCount, instanceCount, firstVertex, firstInstance});
 }
 
-void GlCommandList::drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
+void GlCommandList::apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
                                 std::int32_t vertexOffset, std::uint32_t firstInstance)
 {
     commands_.push_back(command::DrawIndexed{indexCount, instanceCount, firstIndex, vertexOffset, firstInstance});
 }
 
-void GlCommandList::copyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst,
+void GlCommandList::apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst,
                                std::uint64_t dstOffset, std::uint64_t size)
 {
-    checkBufferRange("copyBuffer source", src, srcOffset, size);
-    checkBufferRange("copyBuffer destination", dst, dstOffset, size);
     commands_.push_back(command::CopyBuffer{glObject<const GlBuffer>(src, "copy source").name(), srcOffset,
                                             glObject<GlBuffer>(dst, "copy destination").name(), dstOffset, size});
 }
 
-void GlCommandList::copyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
+void GlCommandList::apiCopyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
                                 std::uint32_t dstLayer)
 {
-    rhi::checkTextureCopy(src, srcLayer, dst, dstLayer);
     commands_.push_back(command::CopyTexture{&glObject<const GlTexture>(src, "copy source"), srcLayer,
                                              &glObject<GlTexture>(dst, "copy destination"), dstLayer});
 }
 
-void GlCommandList::copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level,
+void GlCommandList::apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level,
                                         rhi::Buffer& dst, std::uint64_t dstOffset)
 {
-    rhi::checkTextureReadback(src.desc(), layer, level, dst.desc(), dstOffset);
     commands_.push_back(command::CopyTextureToBuffer{&glObject<const GlTexture>(src, "copy source"), layer, level,
                                                      &glObject<GlBuffer>(dst, "copy destination"), dstOffset});
 }
 
-void GlCommandList::writeTimestamp(rhi::TimestampQueries& queries, std::uint32_t index)
+void GlCommandList::apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index)
 {
-    if (index >= queries.count())
-        throw rhi::Error(fmt::format("writeTimestamp: index {} of {} queries", index, queries.count()));
     commands_.push_back(command::WriteTimestamp{&glObject<GlTimestampQueries>(queries, "timestamp queries"), index});
 }
 

@@ -2,8 +2,7 @@
 
 #include "GlPipeline.hpp"
 #include "GlResources.hpp"
-#include "penumbra/rhi/CommandList.hpp"
-#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/ValidatingDevice.hpp"
 
 #include <optional>
 #include <variant>
@@ -103,38 +102,42 @@ struct GlReplayContext {
 
 // Records into a vector and replays at submit, so buffer writes made before submit are seen
 // (Vulkan's semantics). A list must not outlive the device that created it.
-class GlCommandList final : public rhi::CommandList {
+class GlCommandList final : public rhi::ValidatingCommandList {
 public:
-    GlCommandList(const rhi::Device& device, const GlContext& context) : device_(device), context_(context) {}
-
-    void beginPass(const rhi::PassDesc& pass) override;
-    void endPass() override;
-    void setViewport(const rhi::Viewport& viewport) override;
-    void setScissor(const rhi::Rect& scissor) override;
-    void setDepthBias(const rhi::DepthBias& bias) override;
-    void bindPipeline(const rhi::Pipeline& pipeline) override;
-    void bindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset) override;
-    void bindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset) override;
-    void bindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
-                           std::uint64_t size) override;
-    void bindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler) override;
-    void draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
-              std::uint32_t firstInstance) override;
-    void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
-                     std::int32_t vertexOffset, std::uint32_t firstInstance) override;
-    void copyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst, std::uint64_t dstOffset,
-                    std::uint64_t size) override;
-    void copyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
-                     std::uint32_t dstLayer) override;
-    void copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level, rhi::Buffer& dst,
-                             std::uint64_t dstOffset) override;
-    void writeTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
+    GlCommandList(rhi::ValidatingDevice& device, const GlContext& context)
+        : ValidatingCommandList(device), device_(device), context_(context)
+    {
+    }
 
     const GlContext& context() const { return context_; }
     // Runs every recorded command on the current context, then empties the list (also on error).
     void replay(const GlReplayContext& replay);
 
 private:
+
+    void apiBeginPass(const rhi::PassDesc& pass) override;
+    void apiEndPass() override;
+    void apiSetViewport(const rhi::Viewport& viewport) override;
+    void apiSetScissor(const rhi::Rect& scissor) override;
+    void apiSetDepthBias(const rhi::DepthBias& bias) override;
+    void apiBindPipeline(const rhi::Pipeline& pipeline) override;
+    void apiBindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiBindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset) override;
+    void apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+                           std::uint64_t size) override;
+    void apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler) override;
+    void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
+              std::uint32_t firstInstance) override;
+    void apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
+                     std::int32_t vertexOffset, std::uint32_t firstInstance) override;
+    void apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst, std::uint64_t dstOffset,
+                    std::uint64_t size) override;
+    void apiCopyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
+                     std::uint32_t dstLayer) override;
+    void apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level, rhi::Buffer& dst,
+                             std::uint64_t dstOffset) override;
+    void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
+
     const rhi::Device& device_;
     const GlContext& context_;
     std::vector<command::Any> commands_;

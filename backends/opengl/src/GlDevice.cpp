@@ -6,7 +6,6 @@
 #include "GlResources.hpp"
 #include "GlSwapchain.hpp"
 #include "penumbra/opengl/OpenGLDevice.hpp"
-#include "penumbra/rhi/BackendSupport.hpp"
 
 #include <cstring>
 #include <fmt/format.h>
@@ -38,7 +37,8 @@ std::unique_ptr<rhi::Device> createOpenGLDevice(const rhi::DeviceDesc& desc, con
 }
 
 GlDevice::GlDevice(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options)
-    : desc_(desc),
+    : ValidatingDevice(desc.validateUsage),
+      desc_(desc),
       context_(std::make_shared<GlContext>(desc, options)),
       orientation_(desc.depthRange == rhi::DepthRange::ZeroToOne),
       conventions_(orientation_.conventions(desc.reversedZ))
@@ -67,6 +67,7 @@ rhi::Capabilities GlDevice::queryCapabilities() const
     gl.GetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &timestampBits);
     caps.timestamps = timestampBits > 0;
     caps.uniformBufferOffsetAlignment = std::uint32_t(integer(gl, GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT));
+    caps.maxUniformBufferRange = std::uint32_t(integer(gl, GL_MAX_UNIFORM_BLOCK_SIZE));
     caps.maxTextureSize = std::uint32_t(integer(gl, GL_MAX_TEXTURE_SIZE));
     caps.maxTextureLayers = std::uint32_t(integer(gl, GL_MAX_ARRAY_TEXTURE_LAYERS));
     caps.cubeArrays = true; // GL_TEXTURE_CUBE_MAP_ARRAY is core since 4.0
@@ -96,23 +97,21 @@ rhi::FormatSupport GlDevice::formatSupport(rhi::Format format) const
             .renderTarget = query(GL_FRAMEBUFFER_RENDERABLE) == GL_FULL_SUPPORT};
 }
 
-std::unique_ptr<rhi::Buffer> GlDevice::createBuffer(const rhi::BufferDesc& desc)
+std::unique_ptr<rhi::Buffer> GlDevice::apiCreateBuffer(const rhi::BufferDesc& desc)
 {
     return std::make_unique<GlBuffer>(context_, desc);
 }
 
-std::unique_ptr<rhi::Texture> GlDevice::createTexture(const rhi::TextureDesc& desc)
+std::unique_ptr<rhi::Texture> GlDevice::apiCreateTexture(const rhi::TextureDesc& desc)
 {
-    rhi::checkTextureDesc(capabilities_, desc);
     return std::make_unique<GlTexture>(context_, desc);
 }
 
-void GlDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
-                            std::span<const std::byte> data)
+void GlDevice::apiWriteTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
+                               std::span<const std::byte> data)
 {
     auto& t = glObject<GlTexture>(texture, "writeTexture texture");
     const rhi::TextureDesc& d = t.desc();
-    rhi::checkTextureUpload(d, layer, level, data.size());
     const auto width = GLsizei(rhi::mipExtent(d.width, level));
     const auto height = GLsizei(rhi::mipExtent(d.height, level));
     const GlTextureFormat f = glTextureFormat(d.format);
@@ -137,9 +136,8 @@ void GlDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::uin
         gl.TextureSubImage2D(t.name(), GLint(level), 0, 0, width, height, f.pixelFormat, f.pixelType, pixels);
 }
 
-std::unique_ptr<rhi::Sampler> GlDevice::createSampler(const rhi::SamplerDesc& desc)
+std::unique_ptr<rhi::Sampler> GlDevice::apiCreateSampler(const rhi::SamplerDesc& desc)
 {
-    rhi::checkSamplerDesc(capabilities_, desc);
     return std::make_unique<GlSampler>(context_, desc, conventions_);
 }
 
@@ -148,17 +146,17 @@ std::unique_ptr<rhi::Shader> GlDevice::createShader(const rhi::ShaderSource& sou
     return std::make_unique<GlShader>(context_, rhi::compileShader(source, conventions_.glslHeader()), orientation_);
 }
 
-std::unique_ptr<rhi::Pipeline> GlDevice::createPipeline(const rhi::PipelineDesc& desc)
+std::unique_ptr<rhi::Pipeline> GlDevice::apiCreatePipeline(const rhi::PipelineDesc& desc)
 {
-    return std::make_unique<GlPipeline>(context_, desc, conventions_, capabilities_.depthBiasClamp);
+    return std::make_unique<GlPipeline>(context_, desc, conventions_);
 }
 
-std::unique_ptr<rhi::Framebuffer> GlDevice::createFramebuffer(const rhi::FramebufferDesc& desc)
+std::unique_ptr<rhi::Framebuffer> GlDevice::apiCreateFramebuffer(const rhi::FramebufferDesc& desc)
 {
     return std::make_unique<GlFramebuffer>(context_, desc);
 }
 
-std::unique_ptr<rhi::TimestampQueries> GlDevice::createTimestampQueries(std::uint32_t count)
+std::unique_ptr<rhi::TimestampQueries> GlDevice::apiCreateTimestampQueries(std::uint32_t count)
 {
     return std::make_unique<GlTimestampQueries>(context_, count);
 }
@@ -187,11 +185,9 @@ void GlDevice::applySubmitDefaults()
     cache_->frontFace(orientation_.frontFace());
 }
 
-void GlDevice::submit(rhi::CommandList& commands)
+void GlDevice::apiSubmit(rhi::CommandList& commands)
 {
     auto& list = glObject<GlCommandList>(commands, "submitted command list");
-    if (&list.context() != context_.get())
-        throw rhi::Error("submit: the command list was created by another device");
     context_->makeCurrent();
     applySubmitDefaults();
     list.replay({context_->gl(), *cache_, orientation_, conventions_.clearDepth(), ++submitCount_});

@@ -4,14 +4,14 @@
 #include "GlOrientation.hpp"
 #include "GlStateCache.hpp"
 #include "penumbra/opengl/OpenGLDevice.hpp"
-#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/ValidatingDevice.hpp"
 
 #include <memory>
 #include <optional>
 
 namespace penumbra::opengl {
 
-class GlDevice final : public rhi::Device {
+class GlDevice final : public rhi::ValidatingDevice {
 public:
     GlDevice(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options);
     ~GlDevice() override;
@@ -20,19 +20,9 @@ public:
     const rhi::Conventions& conventions() const override { return conventions_; }
     const rhi::Capabilities& capabilities() const override { return capabilities_; }
 
-    std::unique_ptr<rhi::Buffer> createBuffer(const rhi::BufferDesc& desc) override;
-    std::unique_ptr<rhi::Texture> createTexture(const rhi::TextureDesc& desc) override;
-    void writeTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
-                      std::span<const std::byte> data) override;
-    std::unique_ptr<rhi::Sampler> createSampler(const rhi::SamplerDesc& desc) override;
     std::unique_ptr<rhi::Shader> createShader(const rhi::ShaderSource& source) override;
-    std::unique_ptr<rhi::Pipeline> createPipeline(const rhi::PipelineDesc& desc) override;
-    std::unique_ptr<rhi::Framebuffer> createFramebuffer(const rhi::FramebufferDesc& desc) override;
-    std::unique_ptr<rhi::TimestampQueries> createTimestampQueries(std::uint32_t count) override;
     std::unique_ptr<rhi::CommandList> createCommandList() override;
     std::unique_ptr<rhi::Swapchain> createSwapchain() override;
-
-    void submit(rhi::CommandList& commands) override;
     std::vector<double> readTimestamps(const rhi::TimestampQueries& queries) override;
 
     std::vector<std::string> debugMessages() const override;
@@ -41,6 +31,16 @@ public:
     const GlContext& context() const { return *context_; }
 
 private:
+    std::unique_ptr<rhi::Buffer> apiCreateBuffer(const rhi::BufferDesc& desc) override;
+    std::unique_ptr<rhi::Texture> apiCreateTexture(const rhi::TextureDesc& desc) override;
+    void apiWriteTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
+                         std::span<const std::byte> data) override;
+    std::unique_ptr<rhi::Sampler> apiCreateSampler(const rhi::SamplerDesc& desc) override;
+    std::unique_ptr<rhi::Pipeline> apiCreatePipeline(const rhi::PipelineDesc& desc) override;
+    std::unique_ptr<rhi::Framebuffer> apiCreateFramebuffer(const rhi::FramebufferDesc& desc) override;
+    std::unique_ptr<rhi::TimestampQueries> apiCreateTimestampQueries(std::uint32_t count) override;
+    void apiSubmit(rhi::CommandList& commands) override;
+
     rhi::Capabilities queryCapabilities() const;
     rhi::FormatSupport formatSupport(rhi::Format format) const;
     // State that every submit assumes; set again each time because raw GL may run between submits.

@@ -62,10 +62,10 @@ struct GlVertexArrayCache {
 
 class GlPipeline final : public rhi::Pipeline {
 public:
-    GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions,
-               bool depthBiasClamp);
+    GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions);
 
     const rhi::PipelineDesc& desc() const override { return desc_; }
+    const std::vector<rhi::ShaderBinding>& bindings() const override { return bindings_; }
     GLuint program() const { return program_.get(); }
     GLuint vertexArray() const { return vertexArray_.get(); }
     const GlFixedState& state() const { return state_; }
@@ -80,6 +80,7 @@ private:
 
     GlContextPtr context_;
     rhi::PipelineDesc desc_;
+    std::vector<rhi::ShaderBinding> bindings_;
     GlProgramName program_;
     GlVertexArrayName vertexArray_;
     GlFixedState state_;

@@ -2,6 +2,9 @@
 
 #include "GlFormats.hpp"
 #include "penumbra/rhi/BackendSupport.hpp"
+#include "penumbra/rhi/ValidationRules.hpp"
+
+#include <algorithm>
 
 #include <cstring>
 #include <fmt/format.h>
@@ -35,14 +38,14 @@ GLenum textureTarget(const rhi::TextureDesc& desc)
 
 GlBuffer::GlBuffer(GlContextPtr context, const rhi::BufferDesc& desc) : context_(std::move(context)), desc_(desc)
 {
-    if (desc.size == 0)
-        throw rhi::Error(fmt::format("buffer '{}': size must not be 0", desc.debugName));
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
     constexpr GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
     name_ = createName<GlBufferName>(*context_, gl.CreateBuffers);
-    gl.NamedBufferStorage(name_.get(), GLsizeiptr(desc.size), nullptr, flags);
-    mapped_ = static_cast<std::byte*>(gl.MapNamedBufferRange(name_.get(), 0, GLsizeiptr(desc.size), flags));
+    // An empty RHI buffer is valid; glNamedBufferStorage refuses size 0 (GL 4.5 section 6.2), so it gets a byte.
+    const auto size = GLsizeiptr(std::max<std::uint64_t>(desc.size, 1));
+    gl.NamedBufferStorage(name_.get(), size, nullptr, flags);
+    mapped_ = static_cast<std::byte*>(gl.MapNamedBufferRange(name_.get(), 0, size, flags));
     if (!mapped_)
         throw rhi::Error(fmt::format("buffer '{}': cannot map {} bytes persistently", desc.debugName, desc.size));
     label(gl, GL_BUFFER, name_.get(), desc.debugName);
@@ -54,22 +57,15 @@ GlBuffer::~GlBuffer()
     context_->gl().UnmapNamedBuffer(name_.get());
 }
 
-void GlBuffer::checkRange(const char* operation, std::uint64_t offset, std::uint64_t size) const
-{
-    if (offset > desc_.size || size > desc_.size - offset)
-        throw rhi::Error(fmt::format("buffer '{}': {} of {} bytes at offset {} exceeds its size {}", desc_.debugName,
-                                     operation, size, offset, desc_.size));
-}
-
 void GlBuffer::write(std::uint64_t offset, std::span<const std::byte> data)
 {
-    checkRange("write", offset, data.size());
+    rhi::checkBufferRange("Buffer::write", desc_, offset, data.size());
     std::memcpy(mapped_ + offset, data.data(), data.size());
 }
 
 void GlBuffer::read(std::uint64_t offset, std::span<std::byte> data) const
 {
-    checkRange("read", offset, data.size());
+    rhi::checkBufferRange("Buffer::read", desc_, offset, data.size());
     std::memcpy(data.data(), mapped_ + offset, data.size());
 }
 
@@ -120,9 +116,9 @@ GlSampler::GlSampler(GlContextPtr context, const rhi::SamplerDesc& desc, const r
     label(gl, GL_SAMPLER, name_.get(), desc.debugName);
 }
 
-GlFramebuffer::GlFramebuffer(GlContextPtr context, const rhi::FramebufferDesc& desc) : context_(std::move(context))
+GlFramebuffer::GlFramebuffer(GlContextPtr context, const rhi::FramebufferDesc& desc)
+    : context_(std::move(context)), formats_(rhi::attachmentFormats(desc))
 {
-    rhi::checkFramebuffer(desc);
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
     name_ = createName<GlFramebufferName>(*context_, gl.CreateFramebuffers);
@@ -156,8 +152,6 @@ GlFramebuffer::GlFramebuffer(GlContextPtr context, const rhi::FramebufferDesc& d
 GlTimestampQueries::GlTimestampQueries(GlContextPtr context, std::uint32_t count)
     : context_(std::move(context)), written_(count, false)
 {
-    if (count == 0)
-        throw rhi::Error("timestamp queries: count must not be 0");
     context_->makeCurrent();
     for (std::uint32_t i = 0; i < count; ++i) {
         GLuint query = 0;
@@ -178,7 +172,7 @@ std::vector<double> GlTimestampQueries::read() const
     std::vector<double> nanoseconds(names_.size());
     for (std::size_t i = 0; i < names_.size(); ++i) {
         if (!written_[i])
-            throw rhi::Error(fmt::format("timestamp query {} was never written by a submitted command list", i));
+            throw rhi::Error(fmt::format("readTimestamps: query {} was not written by a submitted command list", i));
         GLuint64 value = 0;
         context_->gl().GetQueryObjectui64v(names_[i].get(), GL_QUERY_RESULT, &value);
         nanoseconds[i] = double(value);

@@ -41,8 +41,6 @@ public:
     std::byte* mapped() const { return mapped_; }
 
 private:
-    void checkRange(const char* operation, std::uint64_t offset, std::uint64_t size) const;
-
     GlContextPtr context_;
     rhi::BufferDesc desc_;
     GlBufferName name_;
@@ -86,6 +84,7 @@ public:
 
     std::uint32_t width() const override { return width_; }
     std::uint32_t height() const override { return height_; }
+    const rhi::AttachmentFormats& formats() const override { return formats_; }
     GLuint name() const { return name_.get(); }
     std::uint32_t colorCount() const { return colorCount_; }
     bool hasDepth() const { return hasDepth_; }
@@ -93,6 +92,7 @@ public:
 private:
     GlContextPtr context_;
     GlFramebufferName name_;
+    rhi::AttachmentFormats formats_;
     std::uint32_t width_ = 0;
     std::uint32_t height_ = 0;
     std::uint32_t colorCount_ = 0;

@@ -15,8 +15,8 @@
 
 namespace penumbra::vulkan {
 
-VulkanCommandList::VulkanCommandList(std::shared_ptr<Context> context)
-    : context_(std::move(context)), descriptors_(context_)
+VulkanCommandList::VulkanCommandList(rhi::ValidatingDevice& owner, std::shared_ptr<Context> context)
+    : ValidatingCommandList(owner), context_(std::move(context)), descriptors_(context_)
 {
     const VkDevice device = context_->device;
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -50,8 +50,6 @@ void VulkanCommandList::beginPrologue()
 
 void VulkanCommandList::submit()
 {
-    if (inPass_)
-        throw rhi::Error("submit: the command list is inside a pass; call endPass() first");
     std::array<VkCommandBuffer, 2> buffers{};
     std::size_t count = 0;
     if (prologueRecording_) {
@@ -70,31 +68,8 @@ void VulkanCommandList::submit()
     begin();
 }
 
-void VulkanCommandList::requireDraw(std::string_view what) const
+void VulkanCommandList::apiBeginPass(const rhi::PassDesc& pass)
 {
-    if (!inPass_ || !pipeline_)
-        throw rhi::Error(fmt::format("{}: needs {} first", what, inPass_ ? "bindPipeline()" : "beginPass()"));
-    if (!pipelineFitsPass_)
-        throw rhi::Error(fmt::format("{}: pipeline '{}' renders to other attachment formats than framebuffer '{}' has",
-                                     what, pipeline_->desc().debugName, passName_));
-}
-
-void VulkanCommandList::requireOutsidePass(std::string_view what) const
-{
-    if (inPass_)
-        throw rhi::Error(fmt::format("{}: not allowed inside a pass; call endPass() first", what));
-}
-
-void VulkanCommandList::matchPipelineToPass()
-{
-    pipelineFitsPass_ = inPass_ && pipeline_ && pipeline_->formats() == *passFormats_;
-}
-
-void VulkanCommandList::beginPass(const rhi::PassDesc& pass)
-{
-    requireOutsidePass("beginPass");
-    if (!pass.framebuffer)
-        throw rhi::Error("beginPass: PassDesc::framebuffer is null");
     auto& framebuffer = const_cast<VulkanFramebuffer&>(
         vulkanObject<const VulkanFramebuffer>(*pass.framebuffer, "beginPass: the framebuffer"));
 
@@ -112,31 +87,23 @@ void VulkanCommandList::beginPass(const rhi::PassDesc& pass)
     info.clearValueCount = std::uint32_t(clears.size());
     info.pClearValues = clears.data();
     vkCmdBeginRenderPass(commands_, &info, VK_SUBPASS_CONTENTS_INLINE);
-    inPass_ = true;
-    passFormats_ = &framebuffer.formats();
-    passName_ = framebuffer.name();
-    matchPipelineToPass();
-
-    setViewport({0.0f, 0.0f, float(framebuffer.width()), float(framebuffer.height())});
-    setScissor({0, 0, framebuffer.width(), framebuffer.height()});
+    apiSetViewport({0.0f, 0.0f, float(framebuffer.width()), float(framebuffer.height())});
+    apiSetScissor({0, 0, framebuffer.width(), framebuffer.height()});
 }
 
-void VulkanCommandList::endPass()
+void VulkanCommandList::apiEndPass()
 {
-    if (!inPass_)
-        throw rhi::Error("endPass: no pass is open");
     vkCmdEndRenderPass(commands_);
-    inPass_ = false;
 }
 
-void VulkanCommandList::setViewport(const rhi::Viewport& v)
+void VulkanCommandList::apiSetViewport(const rhi::Viewport& v)
 {
     // Negative height (core since 1.1) puts NDC +y on row 0, the top: the library's convention.
     const VkViewport viewport{v.x, v.y + v.height, v.width, -v.height, 0.0f, 1.0f};
     vkCmdSetViewport(commands_, 0, 1, &viewport);
 }
 
-void VulkanCommandList::setScissor(const rhi::Rect& r)
+void VulkanCommandList::apiSetScissor(const rhi::Rect& r)
 {
     // Vulkan refuses negative offsets; the part left of or above the target is empty anyway.
     const std::int32_t x = std::max(r.x, 0);
@@ -148,82 +115,68 @@ void VulkanCommandList::setScissor(const rhi::Rect& r)
     vkCmdSetScissor(commands_, 0, 1, &scissor);
 }
 
-void VulkanCommandList::setDepthBias(const rhi::DepthBias& bias)
+void VulkanCommandList::apiSetDepthBias(const rhi::DepthBias& bias)
 {
-    if (bias.clamp != 0.0f && !context_->capabilities.depthBiasClamp)
-        throw rhi::UnsupportedError(
-            fmt::format("setDepthBias: depth bias clamp is not supported by {}", context_->capabilities.device));
     const rhi::DepthBias b = rhi::signedDepthBias(context_->conventions, bias);
     vkCmdSetDepthBias(commands_, b.constant, b.clamp, b.slope);
 }
 
-void VulkanCommandList::bindPipeline(const rhi::Pipeline& pipeline)
+void VulkanCommandList::apiBindPipeline(const rhi::Pipeline& pipeline)
 {
     pipeline_ = &vulkanObject<const VulkanPipeline>(pipeline, "bindPipeline: the pipeline");
-    matchPipelineToPass();
     vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->handle());
     const rhi::DepthBias& b = pipeline_->signedBias();
     vkCmdSetDepthBias(commands_, b.constant, b.clamp, b.slope);
     descriptors_.setPipeline(*pipeline_);
 }
 
-void VulkanCommandList::bindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset)
+void VulkanCommandList::apiBindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset)
 {
     const VkBuffer handle = vulkanObject<const VulkanBuffer>(buffer, "bindVertexBuffer: the buffer").handle();
     vkCmdBindVertexBuffers(commands_, slot, 1, &handle, &offset);
 }
 
-void VulkanCommandList::bindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset)
+void VulkanCommandList::apiBindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset)
 {
     const VkBuffer handle = vulkanObject<const VulkanBuffer>(buffer, "bindIndexBuffer: the buffer").handle();
     vkCmdBindIndexBuffer(commands_, handle, offset, toVkIndexType(type));
 }
 
-void VulkanCommandList::bindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+void VulkanCommandList::apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
                                           std::uint64_t size)
 {
     const auto& vk = vulkanObject<const VulkanBuffer>(buffer, "bindUniformBuffer: the buffer");
-    // Vulkan guarantees a power-of-two alignment, so a mask tests it.
-    const std::uint64_t total = vk.desc().size;
-    if (size == 0 || size > context_->properties.limits.maxUniformBufferRange || offset > total || size > total - offset || (offset & (context_->capabilities.uniformBufferOffsetAlignment - 1)) ||
-        offset > UINT32_MAX)
-        throw rhi::Error(fmt::format("bindUniformBuffer {}: {} bytes at offset {} of buffer '{}' ({} bytes); offsets "
-                                     "must be multiples of {} and sizes at most {}",
-                                     binding, size, offset, vk.desc().debugName, total,
-                                     context_->capabilities.uniformBufferOffsetAlignment,
-                                     context_->properties.limits.maxUniformBufferRange));
+    // Dynamic offsets are 32-bit (VkCmdBindDescriptorSets' pDynamicOffsets).
+    if (offset > UINT32_MAX)
+        throw rhi::UnsupportedError(
+            fmt::format("bindUniformBuffer: offset {} exceeds Vulkan's 32-bit dynamic offsets", offset));
     descriptors_.setUniformBuffer(binding, vk.handle(), std::uint32_t(offset), size);
 }
 
-void VulkanCommandList::bindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler)
+void VulkanCommandList::apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler)
 {
     const auto& vkTexture = vulkanObject<const VulkanTexture>(texture, "bindTexture: the texture");
     const auto& vkSampler = vulkanObject<const VulkanSampler>(sampler, "bindTexture: the sampler");
-    rhi::checkTextureBinding(context_->capabilities, texture, sampler);
     descriptors_.setTexture(binding, vkTexture.sampledView(), vkSampler.handle());
 }
 
-void VulkanCommandList::draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
+void VulkanCommandList::apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
                              std::uint32_t firstInstance)
 {
-    requireDraw("draw");
     descriptors_.flush(commands_);
     vkCmdDraw(commands_, vertexCount, instanceCount, firstVertex, firstInstance);
 }
 
-void VulkanCommandList::drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
+void VulkanCommandList::apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
                                     std::int32_t vertexOffset, std::uint32_t firstInstance)
 {
-    requireDraw("drawIndexed");
     descriptors_.flush(commands_);
     vkCmdDrawIndexed(commands_, indexCount, instanceCount, firstIndex, vertexOffset, firstInstance);
 }
 
-void VulkanCommandList::writeTimestamp(rhi::TimestampQueries& queries, std::uint32_t index)
+void VulkanCommandList::apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index)
 {
     const auto& vk = vulkanObject<const VulkanTimestampQueries>(queries, "writeTimestamp: the queries");
-    if (index >= vk.count())
-        throw rhi::Error(fmt::format("writeTimestamp: index {} is out of range [0, {}]", index, vk.count() - 1));
     // Reset once per submission, in the prologue that runs before this list's commands.
     if (std::find(resetPools_.begin(), resetPools_.end(), vk.handle()) == resetPools_.end()) {
         if (!prologueRecording_)

@@ -3,7 +3,7 @@
 #include "VulkanContext.hpp"
 #include "VulkanDescriptors.hpp"
 
-#include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/rhi/ValidatingDevice.hpp"
 
 #include <vector>
 #include <vulkan/vulkan.h>
@@ -14,44 +14,41 @@ class VulkanPipeline;
 
 // Records into a VkCommandBuffer from creation on; submit() runs it and starts a new recording.
 // Query-pool resets go into a separate prologue buffer, because they are not allowed inside passes.
-class VulkanCommandList final : public rhi::CommandList {
+class VulkanCommandList final : public rhi::ValidatingCommandList {
 public:
-    explicit VulkanCommandList(std::shared_ptr<Context> context);
-
-    void beginPass(const rhi::PassDesc& pass) override;
-    void endPass() override;
-    void setViewport(const rhi::Viewport& viewport) override;
-    void setScissor(const rhi::Rect& scissor) override;
-    void setDepthBias(const rhi::DepthBias& bias) override;
-    void bindPipeline(const rhi::Pipeline& pipeline) override;
-    void bindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset) override;
-    void bindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset) override;
-    void bindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
-                           std::uint64_t size) override;
-    void bindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler) override;
-    void draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
-              std::uint32_t firstInstance) override;
-    void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
-                     std::int32_t vertexOffset, std::uint32_t firstInstance) override;
-    void copyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst, std::uint64_t dstOffset,
-                    std::uint64_t size) override;
-    void copyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
-                     std::uint32_t dstLayer) override;
-    void copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level, rhi::Buffer& dst,
-                             std::uint64_t dstOffset) override;
-    void writeTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
+    VulkanCommandList(rhi::ValidatingDevice& owner, std::shared_ptr<Context> context);
 
     // Ends recording, runs the prologue and the commands, waits, and begins recording anew.
     void submit();
     VkCommandBuffer commandBuffer() const { return commands_; }
 
 private:
+
+    void apiBeginPass(const rhi::PassDesc& pass) override;
+    void apiEndPass() override;
+    void apiSetViewport(const rhi::Viewport& viewport) override;
+    void apiSetScissor(const rhi::Rect& scissor) override;
+    void apiSetDepthBias(const rhi::DepthBias& bias) override;
+    void apiBindPipeline(const rhi::Pipeline& pipeline) override;
+    void apiBindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiBindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset) override;
+    void apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+                           std::uint64_t size) override;
+    void apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler) override;
+    void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
+              std::uint32_t firstInstance) override;
+    void apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
+                     std::int32_t vertexOffset, std::uint32_t firstInstance) override;
+    void apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst, std::uint64_t dstOffset,
+                    std::uint64_t size) override;
+    void apiCopyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
+                     std::uint32_t dstLayer) override;
+    void apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level, rhi::Buffer& dst,
+                             std::uint64_t dstOffset) override;
+    void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
+
     void begin();
     void beginPrologue();
-    void requireDraw(std::string_view what) const;
-    void requireOutsidePass(std::string_view what) const;
-    // Draws need a pipeline made for the open pass's attachment formats; checked once per change.
-    void matchPipelineToPass();
 
     std::shared_ptr<Context> context_;
     UniqueCommandPool pool_; // destroying it frees both command buffers
@@ -62,10 +59,6 @@ private:
     std::vector<VkQueryPool> resetPools_;
     DescriptorBinder descriptors_;
     const VulkanPipeline* pipeline_ = nullptr;
-    bool inPass_ = false;
-    const std::vector<VkFormat>* passFormats_ = nullptr; // of the open pass's framebuffer
-    std::string_view passName_;
-    bool pipelineFitsPass_ = false;
 };
 
 } // namespace penumbra::vulkan

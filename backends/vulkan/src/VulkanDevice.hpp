@@ -4,13 +4,13 @@
 
 #include "VulkanContext.hpp"
 
-#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/ValidatingDevice.hpp"
 
 #include <memory>
 
 namespace penumbra::vulkan {
 
-class VulkanDevice final : public rhi::Device {
+class VulkanDevice final : public rhi::ValidatingDevice {
 public:
     explicit VulkanDevice(const rhi::DeviceDesc& desc);
 
@@ -18,19 +18,9 @@ public:
     const rhi::Conventions& conventions() const override { return context_->conventions; }
     const rhi::Capabilities& capabilities() const override { return context_->capabilities; }
 
-    std::unique_ptr<rhi::Buffer> createBuffer(const rhi::BufferDesc& desc) override;
-    std::unique_ptr<rhi::Texture> createTexture(const rhi::TextureDesc& desc) override;
-    void writeTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
-                      std::span<const std::byte> data) override;
-    std::unique_ptr<rhi::Sampler> createSampler(const rhi::SamplerDesc& desc) override;
     std::unique_ptr<rhi::Shader> createShader(const rhi::ShaderSource& source) override;
-    std::unique_ptr<rhi::Pipeline> createPipeline(const rhi::PipelineDesc& desc) override;
-    std::unique_ptr<rhi::Framebuffer> createFramebuffer(const rhi::FramebufferDesc& desc) override;
-    std::unique_ptr<rhi::TimestampQueries> createTimestampQueries(std::uint32_t count) override;
     std::unique_ptr<rhi::CommandList> createCommandList() override;
     std::unique_ptr<rhi::Swapchain> createSwapchain() override;
-
-    void submit(rhi::CommandList& commands) override;
     std::vector<double> readTimestamps(const rhi::TimestampQueries& queries) override;
 
     std::vector<std::string> debugMessages() const override { return context_->log.all(); }
@@ -39,6 +29,16 @@ public:
     const Context& context() const { return *context_; }
 
 private:
+    std::unique_ptr<rhi::Buffer> apiCreateBuffer(const rhi::BufferDesc& desc) override;
+    std::unique_ptr<rhi::Texture> apiCreateTexture(const rhi::TextureDesc& desc) override;
+    void apiWriteTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
+                         std::span<const std::byte> data) override;
+    std::unique_ptr<rhi::Sampler> apiCreateSampler(const rhi::SamplerDesc& desc) override;
+    std::unique_ptr<rhi::Pipeline> apiCreatePipeline(const rhi::PipelineDesc& desc) override;
+    std::unique_ptr<rhi::Framebuffer> apiCreateFramebuffer(const rhi::FramebufferDesc& desc) override;
+    std::unique_ptr<rhi::TimestampQueries> apiCreateTimestampQueries(std::uint32_t count) override;
+    void apiSubmit(rhi::CommandList& commands) override;
+
     std::shared_ptr<Context> context_;
 };
 

@@ -29,30 +29,11 @@ const VulkanShader& vulkanShader(const rhi::Shader* shader, const rhi::PipelineD
     return *vk;
 }
 
-void checkVertexLayout(const rhi::PipelineDesc& desc)
-{
-    for (const rhi::VertexAttribute& a : desc.vertexLayout.attributes)
-        if (a.buffer >= desc.vertexLayout.buffers.size())
-            throw rhi::Error(fmt::format("pipeline '{}': attribute at location {} reads vertex buffer slot {}, but "
-                                         "the layout describes {} buffer(s)",
-                                         desc.debugName, a.location, a.buffer, desc.vertexLayout.buffers.size()));
-}
-
 void checkUniformCount(const VkPhysicalDeviceLimits& limits, const rhi::PipelineDesc& desc, std::size_t count)
 {
     if (count > limits.maxDescriptorSetUniformBuffersDynamic)
         throw rhi::UnsupportedError(fmt::format("pipeline '{}': {} uniform blocks, but the device binds at most {}",
                                                 desc.debugName, count, limits.maxDescriptorSetUniformBuffersDynamic));
-}
-
-void checkFeatures(const rhi::Capabilities& caps, const rhi::PipelineDesc& desc)
-{
-    if (desc.depth.clamp && !caps.depthClamp)
-        throw rhi::UnsupportedError(
-            fmt::format("pipeline '{}': depth clamp is not supported by {}", desc.debugName, caps.device));
-    if (desc.depth.bias.clamp != 0.0f && !caps.depthBiasClamp)
-        throw rhi::UnsupportedError(
-            fmt::format("pipeline '{}': depth bias clamp is not supported by {}", desc.debugName, caps.device));
 }
 
 RenderPassKey compatibleRenderPass(const rhi::PipelineDesc& desc)
@@ -127,18 +108,14 @@ LayoutCache::Entry LayoutCache::create(const std::vector<rhi::ShaderBinding>& bi
 VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::PipelineDesc& desc)
     : context_(std::move(context)), desc_(desc)
 {
-    rhi::checkPipeline(desc);
-    checkFeatures(context_->capabilities, desc);
     bindings_ = rhi::pipelineBindings(desc);
     for (const rhi::ShaderBinding& b : bindings_)
         if (b.kind == rhi::BindingKind::UniformBuffer)
             uniformBindings_.push_back(b.binding);
-    checkVertexLayout(desc);
     checkUniformCount(context_->properties.limits, desc, uniformBindings_.size());
     signedBias_ = rhi::signedDepthBias(context_->conventions, desc.depth.bias);
     layout_ = context_->layouts().get(bindings_);
     const RenderPassKey passKey = compatibleRenderPass(desc);
-    formats_ = passKey.formats();
     renderPass_ = context_->renderPasses().get(passKey);
 
     const std::array<VkPipelineShaderStageCreateInfo, 2> stages{{

@@ -60,15 +60,13 @@ public:
     VkPipeline handle() const { return pipeline_.get(); }
     const PipelineLayout& layout() const { return layout_; }
     // Every binding both stages declare, sorted by number: the descriptor set's contents.
-    const std::vector<rhi::ShaderBinding>& bindings() const { return bindings_; }
+    const std::vector<rhi::ShaderBinding>& bindings() const override { return bindings_; }
     // Binding numbers of the uniform blocks, in the order of their dynamic offsets.
     const std::vector<std::uint32_t>& uniformBindings() const { return uniformBindings_; }
     // The desc's bias with the sign the conventions give it.
     const rhi::DepthBias& signedBias() const { return signedBias_; }
     // The render pass this pipeline was created against (compatible with matching framebuffers).
     VkRenderPass renderPass() const { return renderPass_; }
-    // Attachment formats as RenderPassKey::formats() lists them; a framebuffer must match.
-    const std::vector<VkFormat>& formats() const { return formats_; }
 
 private:
     std::shared_ptr<Context> context_;
@@ -77,7 +75,6 @@ private:
     std::vector<std::uint32_t> uniformBindings_;
     rhi::DepthBias signedBias_;
     PipelineLayout layout_;
-    std::vector<VkFormat> formats_;
     VkRenderPass renderPass_ = VK_NULL_HANDLE;
     UniquePipeline pipeline_;
 };

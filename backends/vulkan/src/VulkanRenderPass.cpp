@@ -51,15 +51,6 @@ AttachmentKey attachmentKey(const rhi::Attachment& attachment)
 
 } // namespace
 
-std::vector<VkFormat> RenderPassKey::formats() const
-{
-    std::vector<VkFormat> all;
-    for (const AttachmentKey& c : colors)
-        all.push_back(c.format);
-    all.push_back(depth ? depth->format : VK_FORMAT_UNDEFINED);
-    return all;
-}
-
 VkRenderPass RenderPassCache::get(const RenderPassKey& key)
 {
     std::vector<std::uint32_t> flat = flatten(key);
@@ -108,9 +99,8 @@ UniqueRenderPass RenderPassCache::create(const RenderPassKey& key) const
 }
 
 VulkanFramebuffer::VulkanFramebuffer(std::shared_ptr<Context> context, const rhi::FramebufferDesc& desc)
-    : context_(std::move(context))
+    : context_(std::move(context)), formats_(rhi::attachmentFormats(desc))
 {
-    rhi::checkFramebuffer(desc);
     std::vector<rhi::Attachment> attachments(desc.colors.begin(), desc.colors.end());
     for (const rhi::Attachment& c : desc.colors)
         key_.colors.push_back(attachmentKey(c));
@@ -118,7 +108,6 @@ VulkanFramebuffer::VulkanFramebuffer(std::shared_ptr<Context> context, const rhi
         key_.depth = attachmentKey(desc.depth);
         attachments.push_back(desc.depth);
     }
-    formats_ = key_.formats();
     name_ = desc.debugName;
     width_ = attachments.front().texture->desc().width;
     height_ = attachments.front().texture->desc().height;

@@ -23,9 +23,6 @@ struct AttachmentKey {
 struct RenderPassKey {
     std::vector<AttachmentKey> colors;
     std::optional<AttachmentKey> depth;
-
-    // What render-pass compatibility depends on: colour formats, then the depth format or UNDEFINED.
-    std::vector<VkFormat> formats() const;
 };
 
 // One VkRenderPass per distinct key, alive as long as the device: pipelines and framebuffers
@@ -50,19 +47,19 @@ public:
 
     std::uint32_t width() const override { return width_; }
     std::uint32_t height() const override { return height_; }
+    const rhi::AttachmentFormats& formats() const override { return formats_; }
 
     VkFramebuffer handle() const { return framebuffer_.get(); }
     std::uint32_t colorCount() const { return std::uint32_t(key_.colors.size()); }
     bool hasDepth() const { return key_.depth.has_value(); }
-    const std::vector<VkFormat>& formats() const { return formats_; }
     const std::string& name() const { return name_; }
     // The render pass for a pass that loads or clears colour and depth.
     VkRenderPass renderPass(bool loadColor, bool loadDepth);
 
 private:
     std::shared_ptr<Context> context_;
+    rhi::AttachmentFormats formats_;
     RenderPassKey key_;
-    std::vector<VkFormat> formats_;
     std::string name_;
     std::uint32_t width_ = 0;
     std::uint32_t height_ = 0;

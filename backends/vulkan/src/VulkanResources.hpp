@@ -35,7 +35,6 @@ public:
     VkBuffer handle() const { return buffer_.handle(); }
 
 private:
-    void checkRange(std::string_view what, std::uint64_t offset, std::uint64_t size) const;
 
     rhi::BufferDesc desc_;
     MappedBuffer buffer_;

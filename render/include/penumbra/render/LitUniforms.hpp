@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/Shader.hpp"
+#include "penumbra/rhi/UniformLayout.hpp"
 #include "penumbra/scene/Material.hpp"
 
 #include <array>
@@ -51,6 +52,41 @@ struct LitObjectUniforms {
     std::array<glm::vec4, 2 * scene::kTextureSlots> uvTransforms{};
 };
 static_assert(sizeof(LitObjectUniforms) == 368);
+
+// The two structs as PipelineDesc::uniformLayouts of lit.glsl's blocks Frame and Object.
+inline rhi::UniformLayout litFrameLayout()
+{
+    return {"Frame", sizeof(LitFrameUniforms),
+            {
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, viewProjection),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraPosition),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraForward),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, lightColor),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, lightDirection),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, ambient),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, config),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localPosition),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localColor),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localAxis),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localShadow),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, ambientGround),
+            }};
+}
+
+inline rhi::UniformLayout litObjectLayout()
+{
+    return {"Object", sizeof(LitObjectUniforms),
+            {
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, model),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, normalMatrix),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, baseColor),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, surface),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, flags),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, emissive),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, normal),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, uvTransforms),
+            }};
+}
 
 // Bindings of the lit pass; material textures take kLitMaterialMapBinding + scene::TextureSlot.
 inline constexpr std::uint32_t kLitFrameBinding = 0;

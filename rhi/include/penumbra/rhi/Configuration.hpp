@@ -22,6 +22,11 @@ struct DeviceDesc {
     // Device::debugMessages) and, with throwOnDebugMessage, raised as an Error at the next submit.
     bool validation = true;
     bool throwOnDebugMessage = false;
+    // The RHI's own validation layer (rhi/src/validation): every rule these headers state is checked at the
+    // call that breaks it, with the same Error or UnsupportedError and the same text on every backend (the
+    // rules: tests/gpu/MisuseTest.cpp). On by default, as in every test; the tools turn it off in release
+    // builds unless given --validate. Without it a broken rule is undefined behaviour, as in the APIs.
+    bool validateUsage = true;
     // A window to present to (Device::createSwapchain); none for offscreen devices. With one, an
     // OpenGL device takes its context from the window instead of a headless one.
     WindowDesc window;

@@ -32,6 +32,8 @@ struct Capabilities {
     bool depthBiasClamp = false;
     bool timestamps = false;
     std::uint32_t uniformBufferOffsetAlignment = 256;
+    // Largest range bindUniformBuffer takes (Vulkan's maxUniformBufferRange, GL_MAX_UNIFORM_BLOCK_SIZE).
+    std::uint32_t maxUniformBufferRange = 16384;
     std::uint32_t maxTextureSize = 0;
     std::uint32_t maxTextureLayers = 0;
     // Cube textures (TextureDesc::cube) are cube-map arrays: Vulkan's imageCubeArray feature, core in GL 4.0.

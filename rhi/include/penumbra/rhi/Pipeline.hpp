@@ -3,6 +3,8 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Flags.hpp"
 #include "penumbra/rhi/Format.hpp"
+#include "penumbra/rhi/Shader.hpp"
+#include "penumbra/rhi/UniformLayout.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -10,8 +12,6 @@
 #include <vector>
 
 namespace penumbra::rhi {
-
-class Shader;
 
 enum class VertexFormat : std::uint8_t { Float, Float2, Float3, Float4, UByte4Norm };
 
@@ -80,8 +80,11 @@ struct ColorTarget {
     BlendState blend;
 };
 
-// A pipeline renders into framebuffers whose attachment formats match colorTargets and depthFormat.
-// A depth-only pass has no colour targets.
+// A pipeline renders into framebuffers whose attachment formats match colorTargets and depthFormat
+// (checked at each draw). A depth-only pass has no colour targets; at most 8 colour targets. Every attribute
+// reads a vertex buffer slot the layout describes, and every draw needs those slots bound.
+// uniformLayouts describe the C++ structs uploaded into uniform blocks: at creation each is compared with the
+// std140 layout the shaders' reflection gives the block of that name (size, member names, offsets, sizes).
 struct PipelineDesc {
     const Shader* vertex = nullptr;
     const Shader* fragment = nullptr;
@@ -91,6 +94,7 @@ struct PipelineDesc {
     DepthState depth;
     std::vector<ColorTarget> colorTargets;
     std::optional<Format> depthFormat;
+    std::vector<UniformLayout> uniformLayouts;
     std::string debugName;
 };
 
@@ -98,6 +102,9 @@ class Pipeline {
 public:
     virtual ~Pipeline() = default;
     virtual const PipelineDesc& desc() const = 0;
+    // Every binding both stages declare, sorted by number: what a draw needs bound (uniform blocks with at
+    // least their reflected size, textures with a sampler).
+    virtual const std::vector<ShaderBinding>& bindings() const = 0;
 };
 
 } // namespace penumbra::rhi

@@ -7,8 +7,10 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace penumbra::rhi {
 
@@ -24,6 +26,9 @@ enum class BufferUsage : std::uint8_t {
 };
 constexpr bool enableFlags(BufferUsage) { return true; }
 
+// A size of 0 is a valid empty buffer (a scene with nothing to draw): it can be bound where no byte is read.
+// Binding checks the usage: Vertex for bindVertexBuffer, Index for bindIndexBuffer, Uniform for
+// bindUniformBuffer.
 struct BufferDesc {
     std::uint64_t size = 0;
     BufferUsage usage = BufferUsage::None;
@@ -135,11 +140,23 @@ struct FramebufferDesc {
     std::string debugName;
 };
 
+// The formats of a framebuffer's attachments, in order; a pipeline draws into a pass whose framebuffer has
+// exactly its PipelineDesc::colorTargets formats and depthFormat.
+struct AttachmentFormats {
+    std::vector<Format> colors;
+    std::optional<Format> depth;
+
+    bool operator==(const AttachmentFormats&) const = default;
+};
+
+AttachmentFormats attachmentFormats(const FramebufferDesc& desc);
+
 class Framebuffer {
 public:
     virtual ~Framebuffer() = default;
     virtual std::uint32_t width() const = 0;
     virtual std::uint32_t height() const = 0;
+    virtual const AttachmentFormats& formats() const = 0;
 };
 
 class TimestampQueries {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/rhi/UniformLayout.hpp"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,6 +35,8 @@ struct ShaderBinding {
     BindingKind kind = BindingKind::UniformBuffer;
     std::string name;
     std::uint32_t size = 0; // uniform block size in bytes (std140)
+    // A uniform block's members as reflection gives them (std140 offsets and sizes); `name` is the block's.
+    std::vector<UniformMember> members;
 };
 
 // glslang's SPIR-V for one stage, with the bindings it declares.

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/rhi/UniformLayout.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -41,5 +43,20 @@ static_assert(offsetof(DirectionalShadowUniforms, atlasSize) == 1168);
 static_assert(offsetof(DirectionalShadowUniforms, config) == 1184);
 static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1200);
 static_assert(sizeof(DirectionalShadowUniforms) == 1264);
+
+// The struct as the PipelineDesc::uniformLayouts entry of the block above.
+inline rhi::UniformLayout directionalShadowLayout()
+{
+    return {"DirectionalShadows", sizeof(DirectionalShadowUniforms),
+            {
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, worldToAtlas),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cullingSpheres),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeData),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, distanceFade),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, atlasSize),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, config),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightShadowData),
+            }};
+}
 
 } // namespace penumbra::shadows

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/rhi/UniformLayout.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -36,5 +38,19 @@ static_assert(offsetof(OtherShadowUniforms, cubeData) == 1536);
 static_assert(offsetof(OtherShadowUniforms, atlasSize) == 1600);
 static_assert(offsetof(OtherShadowUniforms, config) == 1616);
 static_assert(sizeof(OtherShadowUniforms) == 1632);
+
+// The struct as the PipelineDesc::uniformLayouts entry of the block above.
+inline rhi::UniformLayout otherShadowLayout()
+{
+    return {"OtherShadows", sizeof(OtherShadowUniforms),
+            {
+                PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, worldToAtlas),
+                PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, tileBounds),
+                PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, tileData),
+                PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, cubeData),
+                PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, atlasSize),
+                PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, config),
+            }};
+}
 
 } // namespace penumbra::shadows

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/rhi/UniformLayout.hpp"
 #include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
@@ -29,6 +30,23 @@ struct ShadowCasterUniforms {
     glm::vec4 reach{0.0f};
 };
 static_assert(sizeof(ShadowCasterUniforms) == 336);
+
+// The struct as the PipelineDesc::uniformLayouts entry of shadow_caster.glsl's block ShadowCasterDraw.
+inline rhi::UniformLayout shadowCasterLayout()
+{
+    return {"ShadowCasterDraw", sizeof(ShadowCasterUniforms),
+            {
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, worldToClip),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, material),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, sampling),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, baseColorUv),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, model),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, normalRows),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, viewProjection),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, light),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, reach),
+            }};
+}
 
 // One shadow view's casters, drawn into the bound target's current viewport.
 struct ShadowViewDraw {

@@ -1,0 +1,31 @@
+#include "ToolDevices.hpp"
+
+#include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/backends/Registry.hpp"
+
+#include <atomic>
+
+namespace penumbra::apps {
+namespace {
+
+std::atomic<bool> usageValidation = true;
+
+} // namespace
+
+void setToolUsageValidation(bool on) { usageValidation = on; }
+
+bool toolUsageValidation() { return usageValidation; }
+
+rhi::DeviceDesc toolDeviceDesc(const std::string& configuration)
+{
+    rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
+    desc.validateUsage = toolUsageValidation();
+    return desc;
+}
+
+std::unique_ptr<rhi::Device> createToolDevice(const std::string& configuration)
+{
+    return penumbra::createDevice(toolDeviceDesc(configuration));
+}
+
+} // namespace penumbra::apps

@@ -1,0 +1,144 @@
+#pragma once
+
+// For backends: the base classes every backend's device and command list derive from. They are the RHI's one
+// validation layer (rhi/src/validation): each public call checks the rules of the public headers and then
+// calls the backend's api* function, so a backend holds only API calls and API failures.
+//
+// Why base classes and not a wrapper device around the backend's (NVRHI's validation layer, LLGL's DebugLayer):
+// a wrapper hands users its own objects, so every backend entry point and the native-handle functions
+// (penumbra/vulkan/Native.hpp, penumbra/opengl/Native.hpp) would first have to unwrap them, and each resource
+// would exist twice. Here the user holds the backend's own objects; the checks still live in one place and a
+// backend cannot skip them, since the public functions are final and only the api* ones are its to write.
+
+#include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/rhi/Device.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace penumbra::rhi {
+
+class ValidatingCommandList;
+struct DeviceLifetime;
+
+class ValidatingDevice : public Device {
+public:
+    ~ValidatingDevice() override;
+
+    std::unique_ptr<Buffer> createBuffer(const BufferDesc& desc) final;
+    std::unique_ptr<Texture> createTexture(const TextureDesc& desc) final;
+    void writeTexture(Texture& texture, std::uint32_t layer, std::uint32_t level,
+                      std::span<const std::byte> data) final;
+    std::unique_ptr<Sampler> createSampler(const SamplerDesc& desc) final;
+    std::unique_ptr<Pipeline> createPipeline(const PipelineDesc& desc) final;
+    std::unique_ptr<Framebuffer> createFramebuffer(const FramebufferDesc& desc) final;
+    std::unique_ptr<TimestampQueries> createTimestampQueries(std::uint32_t count) final;
+    void submit(CommandList& commands) final;
+
+protected:
+    // `validate`: DeviceDesc::validateUsage.
+    explicit ValidatingDevice(bool validate);
+
+    virtual std::unique_ptr<Buffer> apiCreateBuffer(const BufferDesc& desc) = 0;
+    virtual std::unique_ptr<Texture> apiCreateTexture(const TextureDesc& desc) = 0;
+    virtual void apiWriteTexture(Texture& texture, std::uint32_t layer, std::uint32_t level,
+                                 std::span<const std::byte> data) = 0;
+    virtual std::unique_ptr<Sampler> apiCreateSampler(const SamplerDesc& desc) = 0;
+    virtual std::unique_ptr<Pipeline> apiCreatePipeline(const PipelineDesc& desc) = 0;
+    virtual std::unique_ptr<Framebuffer> apiCreateFramebuffer(const FramebufferDesc& desc) = 0;
+    virtual std::unique_ptr<TimestampQueries> apiCreateTimestampQueries(std::uint32_t count) = 0;
+    virtual void apiSubmit(CommandList& commands) = 0;
+
+private:
+    friend class ValidatingCommandList;
+
+    bool validate_;
+    std::shared_ptr<DeviceLifetime> lifetime_;
+};
+
+class ValidatingCommandList : public CommandList {
+public:
+    ~ValidatingCommandList() override;
+
+    void beginPass(const PassDesc& pass) final;
+    void endPass() final;
+    void setViewport(const Viewport& viewport) final;
+    void setScissor(const Rect& scissor) final;
+    void setDepthBias(const DepthBias& bias) final;
+    void bindPipeline(const Pipeline& pipeline) final;
+    void bindVertexBuffer(std::uint32_t slot, const Buffer& buffer, std::uint64_t offset) final;
+    void bindIndexBuffer(const Buffer& buffer, IndexType type, std::uint64_t offset) final;
+    void bindUniformBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
+                           std::uint64_t size) final;
+    void bindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) final;
+    void draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
+              std::uint32_t firstInstance) final;
+    void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
+                     std::int32_t vertexOffset, std::uint32_t firstInstance) final;
+    void copyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,
+                    std::uint64_t size) final;
+    void copyTexture(const Texture& src, std::uint32_t srcLayer, Texture& dst, std::uint32_t dstLayer) final;
+    void copyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
+                             std::uint64_t dstOffset) final;
+    void writeTimestamp(TimestampQueries& queries, std::uint32_t index) final;
+
+    // Vertex buffer slots bindVertexBuffer takes: 0..maxVertexBuffers - 1.
+    static constexpr std::uint32_t maxVertexBuffers = 16;
+
+protected:
+    explicit ValidatingCommandList(ValidatingDevice& device);
+
+    virtual void apiBeginPass(const PassDesc& pass) = 0;
+    virtual void apiEndPass() = 0;
+    virtual void apiSetViewport(const Viewport& viewport) = 0;
+    virtual void apiSetScissor(const Rect& scissor) = 0;
+    virtual void apiSetDepthBias(const DepthBias& bias) = 0;
+    virtual void apiBindPipeline(const Pipeline& pipeline) = 0;
+    virtual void apiBindVertexBuffer(std::uint32_t slot, const Buffer& buffer, std::uint64_t offset) = 0;
+    virtual void apiBindIndexBuffer(const Buffer& buffer, IndexType type, std::uint64_t offset) = 0;
+    virtual void apiBindUniformBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
+                                      std::uint64_t size) = 0;
+    virtual void apiBindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) = 0;
+    virtual void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
+                         std::uint32_t firstInstance) = 0;
+    virtual void apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
+                                std::int32_t vertexOffset, std::uint32_t firstInstance) = 0;
+    virtual void apiCopyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,
+                               std::uint64_t size) = 0;
+    virtual void apiCopyTexture(const Texture& src, std::uint32_t srcLayer, Texture& dst,
+                                std::uint32_t dstLayer) = 0;
+    virtual void apiCopyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
+                                        std::uint64_t dstOffset) = 0;
+    virtual void apiWriteTimestamp(TimestampQueries& queries, std::uint32_t index) = 0;
+
+private:
+    friend class ValidatingDevice;
+
+    // What a binding number holds, for the checks at draw time.
+    struct Bound {
+        bool uniform = false;
+        bool texture = false;
+        std::uint64_t size = 0; // bytes of a uniform range
+    };
+
+    // Every recording call starts here: the device must still exist.
+    void requireDevice(std::string_view what) const;
+    void requireOutsidePass(std::string_view what) const;
+    void checkDraw(std::string_view what);
+    void forgetRecording();
+
+    const Capabilities& capabilities_;
+    bool validate_;
+    std::shared_ptr<DeviceLifetime> lifetime_;
+    bool inPass_ = false;
+    const Framebuffer* framebuffer_ = nullptr;
+    const Pipeline* pipeline_ = nullptr;
+    std::vector<Bound> bound_;
+    std::uint32_t vertexSlots_ = 0; // bit per bound slot
+    bool indexBuffer_ = false;
+    bool drawChecked_ = false; // nothing a draw depends on changed since the last checked draw
+};
+
+} // namespace penumbra::rhi

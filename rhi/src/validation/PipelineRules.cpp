@@ -1,0 +1,104 @@
+// Pipeline rules: shaders, formats, vertex layout, features, and the C++ uniform layouts against reflection.
+
+#include "Rules.hpp"
+
+#include "penumbra/rhi/BackendSupport.hpp"
+#include "penumbra/rhi/Error.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace penumbra::rhi {
+namespace {
+
+// GL 4.5 guarantees at least 8 draw buffers (Table 23.69, MAX_DRAW_BUFFERS); so do lavapipe's and every
+// desktop Vulkan driver's maxColorAttachments.
+constexpr std::size_t maxColorTargets = 8;
+
+const UniformMember* findMember(const UniformLayout& layout, const std::string& name)
+{
+    auto found = std::find_if(layout.members.begin(), layout.members.end(),
+                              [&](const UniformMember& m) { return m.name == name; });
+    return found == layout.members.end() ? nullptr : &*found;
+}
+
+// One reflected block against its C++ description; `shader` names the file that declares it.
+void compareBlock(const PipelineDesc& desc, const UniformLayout& layout, const ShaderBinding& block,
+                  const std::string& shader)
+{
+    for (const UniformMember& glsl : block.members) {
+        const UniformMember* cpp = findMember(layout, glsl.name);
+        if (!cpp)
+            throw Error(fmt::format("pipeline '{}': uniform block '{}' member '{}' (offset {} in {}) is missing "
+                                    "from the C++ layout",
+                                    desc.debugName, block.name, glsl.name, glsl.offset, shader));
+        if (cpp->offset != glsl.offset)
+            throw Error(fmt::format("pipeline '{}': uniform block '{}' member '{}' is at offset {} in {} but at "
+                                    "offset {} in C++",
+                                    desc.debugName, block.name, glsl.name, glsl.offset, shader, cpp->offset));
+        if (cpp->size != glsl.size)
+            throw Error(fmt::format("pipeline '{}': uniform block '{}' member '{}' takes {} bytes in {} but {} in C++",
+                                    desc.debugName, block.name, glsl.name, glsl.size, shader, cpp->size));
+    }
+    for (const UniformMember& cpp : layout.members)
+        if (std::none_of(block.members.begin(), block.members.end(),
+                         [&](const UniformMember& m) { return m.name == cpp.name; }))
+            throw Error(fmt::format("pipeline '{}': uniform block '{}' has no member '{}' in {}, but the C++ layout "
+                                    "has",
+                                    desc.debugName, block.name, cpp.name, shader));
+    if (layout.size != block.size)
+        throw Error(fmt::format("pipeline '{}': uniform block '{}' is {} bytes in {} but {} bytes in C++",
+                                desc.debugName, block.name, block.size, shader, layout.size));
+}
+
+} // namespace
+
+void checkPipeline(const Capabilities& caps, const PipelineDesc& desc)
+{
+    if (!desc.vertex || !desc.fragment)
+        throw Error(fmt::format("pipeline '{}' needs a vertex and a fragment shader", desc.debugName));
+    if (desc.vertex->compiled().stage != ShaderStage::Vertex || desc.fragment->compiled().stage != ShaderStage::Fragment)
+        throw Error(fmt::format("pipeline '{}': shader stages are swapped", desc.debugName));
+    if (desc.depthFormat && !isDepthFormat(*desc.depthFormat))
+        throw Error(fmt::format("pipeline '{}': depthFormat {} is not a depth format", desc.debugName,
+                                formatName(*desc.depthFormat)));
+    for (const ColorTarget& c : desc.colorTargets)
+        if (isDepthFormat(c.format))
+            throw Error(fmt::format("pipeline '{}': colour target format {} is a depth format", desc.debugName,
+                                    formatName(c.format)));
+    if (desc.colorTargets.size() > maxColorTargets)
+        throw Error(fmt::format("pipeline '{}': {} colour targets, at most {}", desc.debugName,
+                                desc.colorTargets.size(), maxColorTargets));
+    for (const VertexAttribute& a : desc.vertexLayout.attributes)
+        if (a.buffer >= desc.vertexLayout.buffers.size())
+            throw Error(fmt::format("pipeline '{}': attribute at location {} reads vertex buffer slot {}, but the "
+                                    "layout describes {} buffer(s)",
+                                    desc.debugName, a.location, a.buffer, desc.vertexLayout.buffers.size()));
+    if (desc.depth.clamp && !caps.depthClamp)
+        throw UnsupportedError(fmt::format("pipeline '{}': depth clamp is not supported by {}", desc.debugName,
+                                           caps.device));
+    if (desc.depth.bias.clamp != 0.0f && !caps.depthBiasClamp)
+        throw UnsupportedError(fmt::format("pipeline '{}': depth bias clamp is not supported by {}", desc.debugName,
+                                           caps.device));
+    pipelineBindings(desc);
+    checkUniformLayouts(desc);
+}
+
+void checkUniformLayouts(const PipelineDesc& desc)
+{
+    for (const UniformLayout& layout : desc.uniformLayouts) {
+        bool declared = false;
+        for (const Shader* shader : {desc.vertex, desc.fragment})
+            for (const ShaderBinding& b : shader->compiled().bindings)
+                if (b.kind == BindingKind::UniformBuffer && b.name == layout.block) {
+                    compareBlock(desc, layout, b, shader->compiled().name);
+                    declared = true;
+                }
+        if (!declared)
+            throw Error(fmt::format("pipeline '{}': the C++ layout of uniform block '{}' matches no block of {} or {}",
+                                    desc.debugName, layout.block, desc.vertex->compiled().name,
+                                    desc.fragment->compiled().name));
+    }
+}
+
+} // namespace penumbra::rhi

@@ -1,0 +1,51 @@
+#pragma once
+
+// The stateless rules of the validation layer, one function per call they guard; ValidatingDevice and
+// ValidatingCommandList call them first when DeviceDesc::validateUsage is on.
+
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/ValidationRules.hpp"
+
+#include <cstdint>
+#include <string_view>
+
+namespace penumbra::rhi {
+
+// The buffer must have been created with `usage` (named `usageName` in the message).
+void checkBufferUsage(std::string_view what, const BufferDesc& buffer, BufferUsage usage, std::string_view usageName);
+
+// Size, layer count, mip level count, format support and cube rules of a texture description, against the
+// driver's limits.
+void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc);
+
+// LOD clamps and anisotropy of a sampler description, against the driver's limit.
+void checkSamplerDesc(const Capabilities& caps, const SamplerDesc& desc);
+
+// An upload of `size` bytes into one level of one layer: the subresource exists and the size is the level's.
+void checkTextureUpload(const TextureDesc& desc, std::uint32_t layer, std::uint32_t level, std::uint64_t size);
+
+// copyTextureToBuffer's rules: the subresource exists, the level fits the buffer at `offset`, and the offset
+// is a multiple of the texel size (4 for depth formats; Vulkan 1.3, VUID-VkBufferImageCopy-bufferOffset-00193).
+void checkTextureReadback(const TextureDesc& desc, std::uint32_t layer, std::uint32_t level, const BufferDesc& buffer,
+                          std::uint64_t offset);
+
+// copyTexture's rules: layers in range, equal size, format and level count, not a layer onto itself.
+void checkTextureCopy(const Texture& src, std::uint32_t srcLayer, const Texture& dst, std::uint32_t dstLayer);
+
+// The texture must be Sampled; a linear filter is refused on a format the driver cannot filter linearly.
+void checkTextureBinding(const Capabilities& caps, const Texture& texture, const Sampler& sampler);
+
+// A framebuffer's attachments must exist, share one size, be render targets, and have layers in range.
+void checkFramebuffer(const FramebufferDesc& desc);
+
+// At least one query, on a device with timestamps.
+void checkTimestampQueries(const Capabilities& caps, std::uint32_t count);
+
+// Both shaders in their stages, formats, colour target count, vertex layout slots, the features the depth
+// state needs, bindings that agree between the stages, and the uniform layouts against reflection.
+void checkPipeline(const Capabilities& caps, const PipelineDesc& desc);
+
+// Each of desc.uniformLayouts against the std140 layout reflection gives the block of that name.
+void checkUniformLayouts(const PipelineDesc& desc);
+
+} // namespace penumbra::rhi

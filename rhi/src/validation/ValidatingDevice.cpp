@@ -1,0 +1,84 @@
+#include "penumbra/rhi/ValidatingDevice.hpp"
+
+#include "DeviceLifetime.hpp"
+#include "Rules.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+namespace penumbra::rhi {
+
+ValidatingDevice::ValidatingDevice(bool validate) : validate_(validate), lifetime_(std::make_shared<DeviceLifetime>())
+{
+}
+
+ValidatingDevice::~ValidatingDevice()
+{
+    lifetime_->alive.store(false, std::memory_order_release);
+}
+
+std::unique_ptr<Buffer> ValidatingDevice::createBuffer(const BufferDesc& desc)
+{
+    return apiCreateBuffer(desc);
+}
+
+std::unique_ptr<Texture> ValidatingDevice::createTexture(const TextureDesc& desc)
+{
+    if (validate_)
+        checkTextureDesc(capabilities(), desc);
+    return apiCreateTexture(desc);
+}
+
+void ValidatingDevice::writeTexture(Texture& texture, std::uint32_t layer, std::uint32_t level,
+                                    std::span<const std::byte> data)
+{
+    if (validate_)
+        checkTextureUpload(texture.desc(), layer, level, data.size());
+    apiWriteTexture(texture, layer, level, data);
+}
+
+std::unique_ptr<Sampler> ValidatingDevice::createSampler(const SamplerDesc& desc)
+{
+    if (validate_)
+        checkSamplerDesc(capabilities(), desc);
+    return apiCreateSampler(desc);
+}
+
+std::unique_ptr<Pipeline> ValidatingDevice::createPipeline(const PipelineDesc& desc)
+{
+    if (validate_)
+        checkPipeline(capabilities(), desc);
+    return apiCreatePipeline(desc);
+}
+
+std::unique_ptr<Framebuffer> ValidatingDevice::createFramebuffer(const FramebufferDesc& desc)
+{
+    if (validate_)
+        checkFramebuffer(desc);
+    return apiCreateFramebuffer(desc);
+}
+
+std::unique_ptr<TimestampQueries> ValidatingDevice::createTimestampQueries(std::uint32_t count)
+{
+    if (validate_)
+        checkTimestampQueries(capabilities(), count);
+    return apiCreateTimestampQueries(count);
+}
+
+void ValidatingDevice::submit(CommandList& commands)
+{
+    if (!validate_)
+        return apiSubmit(commands);
+    if (!lifetime_->owns(&commands))
+        throw Error("submit: the command list was not created by this device");
+    auto& list = static_cast<ValidatingCommandList&>(commands);
+    if (list.inPass_)
+        throw Error("submit: the command list is inside a pass; call endPass() first");
+    // A submit empties the list, also when it fails: recording starts from nothing either way.
+    struct ForgetOnExit {
+        ValidatingCommandList& list;
+        ~ForgetOnExit() { list.forgetRecording(); }
+    } forget{list};
+    apiSubmit(commands);
+}
+
+} // namespace penumbra::rhi

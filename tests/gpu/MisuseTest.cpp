@@ -1,0 +1,539 @@
+// The rules of the RHI's validation layer (rhi/src/validation), one row each: the calls before the rule is
+// broken, the one call that breaks it, and the error it raises there. Every configuration runs the whole table
+// and must raise the same exception type with the same text at the same call, so the table is also the
+// documentation of the rules (README, "Validation rules").
+#include "GpuTesting.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <cstddef>
+#include <fmt/format.h>
+#include <functional>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+#include <typeinfo>
+#include <vector>
+
+namespace penumbra::testing {
+namespace {
+
+const char* const vertexGlsl = R"(#version 450
+layout(location = 0) in vec3 position;
+layout(std140, binding = 0) uniform Transform {
+    mat4 clip;
+    vec4 tint;
+} transform;
+layout(location = 0) out vec4 tint;
+void main() { gl_Position = transform.clip * vec4(position, 1.0); tint = transform.tint; }
+)";
+
+const char* const fragmentGlsl = R"(#version 450
+layout(location = 0) in vec4 tint;
+layout(binding = 1) uniform sampler2D image;
+layout(location = 0) out vec4 color;
+void main() { color = tint * texture(image, vec2(0.5)); }
+)";
+
+// Binding 0 is a texture here but the vertex shader's uniform block.
+const char* const conflictingFragmentGlsl = R"(#version 450
+layout(binding = 0) uniform sampler2D image;
+layout(location = 0) out vec4 color;
+void main() { color = texture(image, vec2(0.5)); }
+)";
+
+const char* const depthOnlyFragmentGlsl = "#version 450\nvoid main() {}\n";
+
+// The C++ twin of Transform, right and wrong.
+struct TransformUniforms {
+    glm::mat4 clip{1.0f};
+    glm::vec4 tint{1.0f};
+};
+struct MisplacedTransformUniforms {
+    glm::mat4 clip{1.0f};
+    float scale = 1.0f;
+    glm::vec4 tint{1.0f};
+};
+
+rhi::UniformLayout transformLayout()
+{
+    return {"Transform", sizeof(TransformUniforms),
+            {PENUMBRA_UNIFORM_MEMBER(TransformUniforms, clip), PENUMBRA_UNIFORM_MEMBER(TransformUniforms, tint)}};
+}
+
+// What every row starts from: one device's resources for a draw into an 8x8 RGBA8 + D32F target, and a fresh
+// command list.
+struct Objects {
+    explicit Objects(rhi::Device& d) : device(d)
+    {
+        list = device.createCommandList();
+        vertices = device.createBuffer({.size = 36, .usage = rhi::BufferUsage::Vertex, .debugName = "vertices"});
+        indices = device.createBuffer({.size = 6, .usage = rhi::BufferUsage::Index, .debugName = "indices"});
+        uniforms = device.createBuffer({.size = 256, .usage = rhi::BufferUsage::Uniform, .debugName = "uniforms"});
+        readback = device.createBuffer({.size = 512, .usage = rhi::BufferUsage::Readback, .debugName = "readback"});
+        color = device.createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled, .debugName = "color"});
+        depth = device.createTexture({.width = 8, .height = 8, .format = rhi::Format::D32F, .usage = rhi::TextureUsage::RenderTarget, .debugName = "depth"});
+        image = device.createTexture({.width = 4, .height = 4, .usage = rhi::TextureUsage::Sampled, .debugName = "image"});
+        small = device.createTexture({.width = 4, .height = 4, .usage = rhi::TextureUsage::RenderTarget, .debugName = "small"});
+        sampler = device.createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "nearest"});
+        vertex = device.createShader({rhi::ShaderStage::Vertex, vertexGlsl, "misuse.vert"});
+        fragment = device.createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "misuse.frag"});
+        const rhi::Attachment colorAttachment{color.get(), 0};
+        target = device.createFramebuffer({.colors = {&colorAttachment, 1}, .depth = {depth.get(), 0}, .debugName = "target"});
+        pipeline = device.createPipeline(pipelineDesc());
+    }
+
+    rhi::PipelineDesc pipelineDesc() const
+    {
+        rhi::PipelineDesc desc;
+        desc.vertex = vertex.get();
+        desc.fragment = fragment.get();
+        desc.vertexLayout = {{{.stride = 12}}, {{.location = 0, .format = rhi::VertexFormat::Float3}}};
+        desc.colorTargets = {{.format = rhi::Format::RGBA8}};
+        desc.depthFormat = rhi::Format::D32F;
+        desc.uniformLayouts = {transformLayout()};
+        desc.debugName = "bad";
+        return desc;
+    }
+
+    void beginPass() { list->beginPass({.framebuffer = target.get()}); }
+    // A pass with everything `pipeline` reads bound, but for `except` ("vertex", "uniform", "texture").
+    void bindForDraw(std::string_view except = "")
+    {
+        beginPass();
+        list->bindPipeline(*pipeline);
+        if (except != "vertex")
+            list->bindVertexBuffer(0, *vertices);
+        if (except != "uniform")
+            list->bindUniformBuffer(0, *uniforms, 0, sizeof(TransformUniforms));
+        if (except != "texture")
+            list->bindTexture(1, *image, *sampler);
+    }
+
+    rhi::Device& device;
+    std::unique_ptr<rhi::Buffer> vertices, indices, uniforms, readback;
+    std::unique_ptr<rhi::Texture> color, depth, image, small;
+    std::unique_ptr<rhi::Sampler> sampler;
+    std::unique_ptr<rhi::Shader> vertex, fragment, otherShader;
+    std::unique_ptr<rhi::Framebuffer> target;
+    std::unique_ptr<rhi::Pipeline> pipeline, otherPipeline; // otherPipeline: a row's own
+    std::unique_ptr<rhi::CommandList> list; // last: it goes first, before what it names
+};
+
+enum class Raises { Error, Unsupported };
+
+struct Rule {
+    const char* rule;
+    // Everything before the breaking call; must not throw.
+    std::function<void(Objects&)> setup;
+    // The one call that breaks the rule.
+    std::function<void(Objects&)> breaking;
+    Raises raises;
+    // The text, from the device's capabilities where the rule quotes a limit.
+    std::function<std::string(const rhi::Capabilities&)> message;
+};
+
+auto text(std::string message)
+{
+    return [message](const rhi::Capabilities&) { return message; };
+}
+void nothing(Objects&) {}
+
+rhi::Attachment attach(const std::unique_ptr<rhi::Texture>& texture, std::uint32_t layer = 0) { return {texture.get(), layer}; }
+
+const std::vector<Rule>& rules()
+{
+    using E = Raises;
+    static const std::vector<Rule> table{
+        // Descriptors.
+        {"texture sizes are 1..maxTextureSize", nothing,
+         [](Objects& o) { o.device.createTexture({.width = 0, .height = 8, .debugName = "bad"}); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("texture 'bad': 0x8 with 1 layers is outside 1..{} texels and 1..{} layers",
+                                c.maxTextureSize, c.maxTextureLayers);
+         }},
+        {"mip levels are 1..fullMipChain", nothing,
+         [](Objects& o) { o.device.createTexture({.width = 8, .height = 8, .mipLevels = 5, .debugName = "bad"}); },
+         E::Error, text("texture 'bad': mipLevels 5 is outside 1..4 (the full chain of 8x8)")},
+        {"a texture has at least one mip level", nothing,
+         [](Objects& o) { o.device.createTexture({.width = 8, .height = 8, .mipLevels = 0, .debugName = "bad"}); },
+         E::Error, text("texture 'bad': mipLevels 0 is outside 1..4 (the full chain of 8x8)")},
+        {"cube textures have 6 layers per cube", nothing,
+         [](Objects& o) { o.device.createTexture({.width = 8, .height = 8, .layers = 4, .cube = true, .debugName = "bad"}); },
+         E::Error, text("texture 'bad': a cube texture needs a multiple of 6 layers (one per face), not 4")},
+        {"cube faces are square", nothing,
+         [](Objects& o) { o.device.createTexture({.width = 8, .height = 4, .layers = 6, .cube = true, .debugName = "bad"}); },
+         E::Error, text("texture 'bad': a cube texture needs square faces, not 8x4")},
+        {"sampler LOD clamps are ordered", nothing,
+         [](Objects& o) { o.device.createSampler({.minLod = 2.0f, .maxLod = 1.0f, .debugName = "bad"}); }, E::Error,
+         text("sampler 'bad': minLod 2 and maxLod 1 must satisfy 0 <= minLod <= maxLod")},
+        {"sampler anisotropy is 1..maxSamplerAnisotropy", nothing,
+         [](Objects& o) { o.device.createSampler({.maxAnisotropy = 0.5f, .debugName = "bad"}); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("sampler 'bad': maxAnisotropy 0.5 is outside [1, {}], the limit of {}",
+                                c.maxSamplerAnisotropy, c.device);
+         }},
+        {"a framebuffer has an attachment", nothing,
+         [](Objects& o) { o.device.createFramebuffer({.debugName = "bad"}); }, E::Error,
+         text("framebuffer 'bad' has no attachments")},
+        {"colour attachments have colour formats", nothing,
+         [](Objects& o) {
+             const rhi::Attachment a = attach(o.depth);
+             o.device.createFramebuffer({.colors = {&a, 1}, .debugName = "bad"});
+         },
+         E::Error, text("framebuffer 'bad': texture 'depth' (D32F) cannot be a colour attachment")},
+        {"attachments are RenderTarget textures", nothing,
+         [](Objects& o) {
+             const rhi::Attachment a = attach(o.image);
+             o.device.createFramebuffer({.colors = {&a, 1}, .debugName = "bad"});
+         },
+         E::Error, text("framebuffer 'bad': texture 'image' lacks TextureUsage::RenderTarget")},
+        {"attachment layers exist", nothing,
+         [](Objects& o) {
+             const rhi::Attachment a = attach(o.color, 1);
+             o.device.createFramebuffer({.colors = {&a, 1}, .debugName = "bad"});
+         },
+         E::Error, text("framebuffer 'bad': layer 1 of texture 'color' is out of range [0, 0]")},
+        {"attachments share one size", nothing,
+         [](Objects& o) {
+             const rhi::Attachment a[] = {attach(o.color), attach(o.small)};
+             o.device.createFramebuffer({.colors = a, .debugName = "bad"});
+         },
+         E::Error, text("framebuffer 'bad': texture 'small' is 4x4 but 'color' is 8x8")},
+        {"colour attachments name a texture", nothing,
+         [](Objects& o) {
+             const rhi::Attachment a{};
+             o.device.createFramebuffer({.colors = {&a, 1}, .debugName = "bad"});
+         },
+         E::Error, text("framebuffer 'bad': a colour attachment has no texture")},
+        {"a pipeline has both shaders", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.fragment = nullptr;
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad' needs a vertex and a fragment shader")},
+        {"pipeline shaders are in their stages", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             std::swap(d.vertex, d.fragment);
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad': shader stages are swapped")},
+        {"depthFormat is a depth format", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.depthFormat = rhi::Format::RGBA8;
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad': depthFormat RGBA8 is not a depth format")},
+        {"colour targets have colour formats", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.colorTargets = {{.format = rhi::Format::D32F}};
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad': colour target format D32F is a depth format")},
+        {"at most 8 colour targets", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.colorTargets.resize(9);
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad': 9 colour targets, at most 8")},
+        {"attributes read slots the vertex layout describes", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.vertexLayout.attributes[0].buffer = 1;
+             o.device.createPipeline(d);
+         },
+         E::Error,
+         text("pipeline 'bad': attribute at location 0 reads vertex buffer slot 1, but the layout describes 1 buffer(s)")},
+        {"both stages give a binding the same kind", nothing,
+         [](Objects& o) {
+             auto conflicting = o.device.createShader({rhi::ShaderStage::Fragment, conflictingFragmentGlsl, "conflict.frag"});
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.fragment = conflicting.get();
+             d.uniformLayouts.clear();
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad': binding 0 is 'Transform' in misuse.vert but 'image' in conflict.frag")},
+        {"C++ uniform layouts match the std140 offsets", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.uniformLayouts = {{"Transform", sizeof(MisplacedTransformUniforms),
+                                  {PENUMBRA_UNIFORM_MEMBER(MisplacedTransformUniforms, clip),
+                                   PENUMBRA_UNIFORM_MEMBER(MisplacedTransformUniforms, tint)}}};
+             o.device.createPipeline(d);
+         },
+         E::Error,
+         text("pipeline 'bad': uniform block 'Transform' member 'tint' is at offset 64 in misuse.vert but at offset 68 "
+              "in C++")},
+        {"C++ uniform layouts have every member of the block", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.uniformLayouts = {{"Transform", sizeof(TransformUniforms), {PENUMBRA_UNIFORM_MEMBER(TransformUniforms, clip)}}};
+             o.device.createPipeline(d);
+         },
+         E::Error,
+         text("pipeline 'bad': uniform block 'Transform' member 'tint' (offset 64 in misuse.vert) is missing from the "
+              "C++ layout")},
+        {"C++ uniform layouts have the block's size", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.uniformLayouts[0].size = 96;
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad': uniform block 'Transform' is 80 bytes in misuse.vert but 96 bytes in C++")},
+        {"C++ uniform layouts name a block of the shaders", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.uniformLayouts[0].block = "Missing";
+             o.device.createPipeline(d);
+         },
+         E::Error,
+         text("pipeline 'bad': the C++ layout of uniform block 'Missing' matches no block of misuse.vert or misuse.frag")},
+        {"timestamp queries count at least one", nothing, [](Objects& o) { o.device.createTimestampQueries(0); },
+         E::Error, text("createTimestampQueries: count must be at least 1")},
+        // Uploads and CPU access.
+        {"an upload is one whole level", nothing,
+         [](Objects& o) {
+             const std::vector<std::byte> bytes(4);
+             o.device.writeTexture(*o.color, 0, 0, bytes);
+         },
+         E::Error, text("writeTexture: level 0 of 'color' (8x8 RGBA8) takes 256 bytes, got 4")},
+        {"an upload's layer exists", nothing,
+         [](Objects& o) {
+             const std::vector<std::byte> bytes(256);
+             o.device.writeTexture(*o.color, 1, 0, bytes);
+         },
+         E::Error, text("writeTexture: layer 1 of texture 'color' is out of range [0, 0]")},
+        {"buffer writes stay inside the buffer", nothing,
+         [](Objects& o) {
+             const std::vector<std::byte> bytes(8);
+             o.uniforms->write(252, bytes);
+         },
+         E::Error, text("Buffer::write: 8 bytes at offset 252 exceed buffer 'uniforms' (256 bytes)")},
+        {"buffer reads stay inside the buffer", nothing,
+         [](Objects& o) {
+             std::vector<std::byte> bytes(8);
+             o.vertices->read(32, bytes);
+         },
+         E::Error, text("Buffer::read: 8 bytes at offset 32 exceed buffer 'vertices' (36 bytes)")},
+        // Pass state.
+        {"a pass has a framebuffer", nothing, [](Objects& o) { o.list->beginPass({}); }, E::Error,
+         text("beginPass: PassDesc::framebuffer is null")},
+        {"passes do not nest", [](Objects& o) { o.beginPass(); }, [](Objects& o) { o.beginPass(); }, E::Error,
+         text("beginPass: a pass is already open; call endPass() first")},
+        {"endPass ends an open pass", nothing, [](Objects& o) { o.list->endPass(); }, E::Error,
+         text("endPass: no pass is open")},
+        {"draws are inside a pass", [](Objects& o) { o.list->bindPipeline(*o.pipeline); },
+         [](Objects& o) { o.list->draw(3); }, E::Error, text("draw: not inside a pass; call beginPass() first")},
+        {"draws need a pipeline", [](Objects& o) { o.beginPass(); }, [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: no pipeline is bound; call bindPipeline() first")},
+        {"copies are outside passes: copyBuffer", [](Objects& o) { o.beginPass(); },
+         [](Objects& o) { o.list->copyBuffer(*o.vertices, 0, *o.readback, 0, 4); }, E::Error,
+         text("copyBuffer: not allowed inside a pass; call endPass() first")},
+        {"copies are outside passes: copyTexture", [](Objects& o) { o.beginPass(); },
+         [](Objects& o) { o.list->copyTexture(*o.image, 0, *o.small, 0); }, E::Error,
+         text("copyTexture: not allowed inside a pass; call endPass() first")},
+        {"copies are outside passes: copyTextureToBuffer", [](Objects& o) { o.beginPass(); },
+         [](Objects& o) { o.list->copyTextureToBuffer(*o.image, 0, 0, *o.readback); }, E::Error,
+         text("copyTextureToBuffer: not allowed inside a pass; call endPass() first")},
+        {"submitted lists are outside passes", [](Objects& o) { o.beginPass(); },
+         [](Objects& o) { o.device.submit(*o.list); }, E::Error,
+         text("submit: the command list is inside a pass; call endPass() first")},
+        // Pipelines against the pass and what is bound, checked at each draw.
+        {"pipelines draw into framebuffers of their formats",
+         [](Objects& o) {
+             o.bindForDraw();
+             o.otherShader = o.device.createShader({rhi::ShaderStage::Fragment, depthOnlyFragmentGlsl, "depth.frag"});
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.fragment = o.otherShader.get();
+             d.colorTargets.clear();
+             d.debugName = "depth only";
+             o.otherPipeline = o.device.createPipeline(d);
+             o.list->bindPipeline(*o.otherPipeline);
+         },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: pipeline 'depth only' renders to depth D32F, but the pass's framebuffer has RGBA8, depth D32F")},
+        {"uniform blocks are bound at draws", [](Objects& o) { o.bindForDraw("uniform"); },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: pipeline 'bad' binding 0 ('Transform') needs a uniform buffer, but nothing is bound")},
+        {"uniform blocks are bound with buffers", [](Objects& o) {
+             o.bindForDraw("uniform");
+             o.list->bindTexture(0, *o.image, *o.sampler);
+         },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: pipeline 'bad' binding 0 ('Transform') needs a uniform buffer, but a texture is bound")},
+        {"bound uniform ranges cover the block", [](Objects& o) {
+             o.bindForDraw("uniform");
+             o.list->bindUniformBuffer(0, *o.uniforms, 0, 16);
+         },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: pipeline 'bad' binding 0 ('Transform') is a uniform block of 80 bytes, but 16 bytes are bound")},
+        {"textures are bound at draws", [](Objects& o) { o.bindForDraw("texture"); },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: pipeline 'bad' binding 1 ('image') needs a texture and sampler, but nothing is bound")},
+        {"vertex buffer slots are bound at draws", [](Objects& o) { o.bindForDraw("vertex"); },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: pipeline 'bad' reads vertex buffer slot 0, which is not bound")},
+        {"indexed draws need an index buffer", [](Objects& o) { o.bindForDraw(); },
+         [](Objects& o) { o.list->drawIndexed(3); }, E::Error,
+         text("drawIndexed: no index buffer is bound; call bindIndexBuffer() first")},
+        // Usages and ranges at bind time.
+        {"vertex buffer slots are 0..15", nothing, [](Objects& o) { o.list->bindVertexBuffer(16, *o.vertices); },
+         E::Error, text("bindVertexBuffer: slot 16 is outside 0..15")},
+        {"vertex buffers have BufferUsage::Vertex", nothing,
+         [](Objects& o) { o.list->bindVertexBuffer(0, *o.uniforms); }, E::Error,
+         text("bindVertexBuffer: buffer 'uniforms' lacks BufferUsage::Vertex")},
+        {"vertex buffer offsets are inside the buffer", nothing,
+         [](Objects& o) { o.list->bindVertexBuffer(0, *o.vertices, 40); }, E::Error,
+         text("bindVertexBuffer: 0 bytes at offset 40 exceed buffer 'vertices' (36 bytes)")},
+        {"index buffers have BufferUsage::Index", nothing,
+         [](Objects& o) { o.list->bindIndexBuffer(*o.vertices, rhi::IndexType::UInt16); }, E::Error,
+         text("bindIndexBuffer: buffer 'vertices' lacks BufferUsage::Index")},
+        {"index buffer offsets are multiples of the index size", nothing,
+         [](Objects& o) { o.list->bindIndexBuffer(*o.indices, rhi::IndexType::UInt16, 1); }, E::Error,
+         text("bindIndexBuffer: offset 1 is not a multiple of the index size, 2 bytes")},
+        {"uniform buffers have BufferUsage::Uniform", nothing,
+         [](Objects& o) { o.list->bindUniformBuffer(0, *o.vertices, 0, 16); }, E::Error,
+         text("bindUniformBuffer: buffer 'vertices' lacks BufferUsage::Uniform")},
+        {"uniform ranges are at least a byte", nothing,
+         [](Objects& o) { o.list->bindUniformBuffer(0, *o.uniforms, 0, 0); }, E::Error,
+         text("bindUniformBuffer: binding 0: a uniform range needs at least 1 byte")},
+        {"uniform ranges are at most maxUniformBufferRange", nothing,
+         [](Objects& o) {
+             o.list->bindUniformBuffer(0, *o.uniforms, 0, o.device.capabilities().maxUniformBufferRange + 16ull);
+         },
+         E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("bindUniformBuffer: binding 0: {} bytes exceed Capabilities::maxUniformBufferRange ({})",
+                                c.maxUniformBufferRange + 16ull, c.maxUniformBufferRange);
+         }},
+        {"uniform ranges are inside the buffer", nothing,
+         [](Objects& o) { o.list->bindUniformBuffer(0, *o.uniforms, 0, 512); }, E::Error,
+         text("bindUniformBuffer: 512 bytes at offset 0 exceed buffer 'uniforms' (256 bytes)")},
+        {"uniform offsets are aligned", nothing,
+         [](Objects& o) { o.list->bindUniformBuffer(0, *o.uniforms, 1, 16); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("bindUniformBuffer: offset 1 is not a multiple of "
+                                "Capabilities::uniformBufferOffsetAlignment ({})",
+                                c.uniformBufferOffsetAlignment);
+         }},
+        {"bound textures have TextureUsage::Sampled", nothing,
+         [](Objects& o) { o.list->bindTexture(1, *o.small, *o.sampler); }, E::Error,
+         text("bindTexture: texture 'small' lacks TextureUsage::Sampled")},
+        // Copies.
+        {"buffer copies stay inside the source", nothing,
+         [](Objects& o) { o.list->copyBuffer(*o.vertices, 0, *o.readback, 0, 64); }, E::Error,
+         text("copyBuffer source: 64 bytes at offset 0 exceed buffer 'vertices' (36 bytes)")},
+        {"buffer copies stay inside the destination", nothing,
+         [](Objects& o) { o.list->copyBuffer(*o.readback, 0, *o.vertices, 0, 64); }, E::Error,
+         text("copyBuffer destination: 64 bytes at offset 0 exceed buffer 'vertices' (36 bytes)")},
+        {"texture copies are between equal textures", nothing,
+         [](Objects& o) { o.list->copyTexture(*o.color, 0, *o.small, 0); }, E::Error,
+         text("copyTexture: 'color' is 8x8 RGBA8 with 1 levels but 'small' is 4x4 RGBA8 with 1 levels")},
+        {"a texture layer is not copied onto itself", nothing,
+         [](Objects& o) { o.list->copyTexture(*o.image, 0, *o.image, 0); }, E::Error,
+         text("copyTexture: layer 0 of 'image' onto itself")},
+        {"readbacks fit the buffer", nothing,
+         [](Objects& o) { o.list->copyTextureToBuffer(*o.color, 0, 0, *o.vertices); }, E::Error,
+         text("copyTextureToBuffer: 256 bytes at offset 0 exceed buffer 'vertices' (36 bytes)")},
+        {"readback offsets are texel-aligned", nothing,
+         [](Objects& o) { o.list->copyTextureToBuffer(*o.color, 0, 0, *o.readback, 2); }, E::Error,
+         text("copyTextureToBuffer: offset 2 is not a multiple of 4 for RGBA8")},
+        {"readback levels exist", nothing,
+         [](Objects& o) { o.list->copyTextureToBuffer(*o.color, 0, 1, *o.readback); }, E::Error,
+         text("copyTextureToBuffer: mip level 1 of texture 'color' is out of range [0, 0]")},
+        {"timestamp indices exist",
+         nothing,
+         [](Objects& o) {
+             auto queries = o.device.createTimestampQueries(2);
+             o.list->writeTimestamp(*queries, 2);
+         },
+         E::Error, text("writeTimestamp: index 2 is out of range [0, 1]")},
+        // Ownership and lifetime.
+        {"lists are submitted to the device that created them", nothing,
+         [](Objects& o) {
+             auto other = createValidatedDevice(configuration());
+             auto foreign = other->createCommandList();
+             o.device.submit(*foreign);
+         },
+         E::Error, text("submit: the command list was not created by this device")},
+        {"lists are not used after their device", nothing,
+         [](Objects&) {
+             auto other = createValidatedDevice(configuration());
+             auto orphan = other->createCommandList();
+             other.reset();
+             orphan->endPass();
+         },
+         E::Error, text("endPass: the device that created this command list was destroyed")},
+    };
+    return table;
+}
+
+std::string describe(const std::exception& e)
+{
+    return fmt::format("{} \"{}\"", dynamic_cast<const rhi::UnsupportedError*>(&e) ? "UnsupportedError"
+                                    : dynamic_cast<const rhi::Error*>(&e)           ? "Error"
+                                                                                    : typeid(e).name(),
+                       e.what());
+}
+
+using MisuseTest = GpuTest;
+
+TEST_F(MisuseTest, TheTableHasAtLeastThirtyRules) { EXPECT_GE(rules().size(), 30u); }
+
+// The positive control: the fixture's draw is valid, so no rule fires for it and it runs.
+TEST_F(MisuseTest, TheFixturesDrawBreaksNoRule)
+{
+    Objects o(*device);
+    o.uniforms->writeObject(TransformUniforms{});
+    o.bindForDraw();
+    o.list->draw(3);
+    o.list->endPass();
+    EXPECT_NO_THROW(device->submit(*o.list));
+}
+
+// Size 0 is no misuse: an empty buffer (a scene with nothing to draw) is created, written with nothing and bound
+// where no byte is read, on every backend alike.
+TEST_F(MisuseTest, AnEmptyBufferIsValid)
+{
+    Objects o(*device);
+    auto empty = device->createBuffer({.size = 0, .usage = rhi::BufferUsage::Vertex, .debugName = "empty"});
+    EXPECT_EQ(empty->desc().size, 0u);
+    empty->write(0, {});
+    o.bindForDraw("vertex");
+    o.list->bindVertexBuffer(0, *empty);
+    o.list->draw(0);
+    o.list->endPass();
+    EXPECT_NO_THROW(device->submit(*o.list));
+}
+
+TEST_F(MisuseTest, EveryRuleRaisesItsErrorAtTheBreakingCall)
+{
+    for (const Rule& rule : rules()) {
+        SCOPED_TRACE(rule.rule);
+        Objects o(*device);
+        try {
+            rule.setup(o);
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "the setup threw " << describe(e);
+            continue;
+        }
+        const std::string expected = rule.message(device->capabilities());
+        try {
+            rule.breaking(o);
+            ADD_FAILURE() << "the breaking call was accepted; expected \"" << expected << "\"";
+        } catch (const rhi::UnsupportedError& e) {
+            EXPECT_EQ(rule.raises, Raises::Unsupported) << describe(e);
+            EXPECT_EQ(std::string(e.what()), expected);
+        } catch (const rhi::Error& e) {
+            EXPECT_EQ(rule.raises, Raises::Error) << describe(e);
+            EXPECT_EQ(std::string(e.what()), expected);
+        }
+    }
+}
+
+} // namespace
+} // namespace penumbra::testing
