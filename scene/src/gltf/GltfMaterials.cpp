@@ -154,6 +154,11 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
             if (textureIndex < 0)
                 return;
             const std::string where = fmt::format("{}: {}", owner, field);
+            // glTF 2.0, section 5.29: a texture without source leaves its image to an extension.
+            if (document_.at(document_.model().textures, textureIndex, "texture", where).source < 0) {
+                notes_.push_back(fmt::format("{}: texture {} has no source image: left out", where, textureIndex));
+                return;
+            }
             const TextureColorSpace colorSpace = slot == TextureSlot::BaseColor || slot == TextureSlot::Emissive
                                                      ? TextureColorSpace::Srgb
                                                      : TextureColorSpace::Linear;
