@@ -1,5 +1,7 @@
 #include "GltfLoaderFixture.hpp"
 
+#include <fmt/format.h>
+
 #include "penumbra/scene/GltfLoader.hpp"
 
 #include <glm/geometric.hpp>
@@ -338,6 +340,51 @@ TEST_F(GltfLoaderTest, WrongTypesAreNamedByTheirJsonPointer)
     b.json()["nodes"][0].erase("scale");
     b.json()["accessors"][0]["bufferView"] = 99;
     EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /accessors/0/bufferView: expected an index of bufferViews");
+}
+
+// Out-of-memory requests are refused with a named limit before anything is allocated for them.
+
+TEST_F(GltfLoaderTest, AHugeAccessorIsRefusedBeforeAllocation)
+{
+    GltfBuilder b = cubeScene();
+    for (nlohmann::json& accessor : b.json()["accessors"]) {
+        accessor.erase("bufferView");
+        accessor["count"] = std::int64_t(1) << 31;
+    }
+    EXPECT_CONTAINS(errorOf(write(b)), "/count: 2147483648 elements, over the limit of 16777216");
+}
+
+TEST_F(GltfLoaderTest, AHugeTextureIsRefusedBeforeDecoding)
+{
+    const std::array<std::uint8_t, 4> texel{255, 255, 255, 255};
+    GltfBuilder b = testing::sampledTexturesScene({nullptr});
+    const int image = b.addPngImage(1, 1, texel);
+    // The PNG header's IHDR width and height (RFC 2083, section 4.1.1) at bytes 16 to 23, set to 65535 each.
+    const nlohmann::json& view = b.json()["bufferViews"][b.json()["images"][std::size_t(image)]["bufferView"].get<std::size_t>()];
+    const std::size_t ihdr = view["byteOffset"].get<std::size_t>() + 16;
+    for (std::size_t i = 0; i < 8; ++i)
+        b.bin()[ihdr + i] = i % 4 < 2 ? 0x00 : 0xff;
+    b.json()["textures"][0]["source"] = image;
+    EXPECT_CONTAINS(errorOf(write(b)), fmt::format("/images/{}: the picture is 65535x65535 texels, over the limits", image));
+}
+
+TEST_F(GltfLoaderTest, TooManyNodesAreRefused)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["nodes"] = nlohmann::json::array();
+    for (int i = 0; i < 100001; ++i)
+        b.json()["nodes"].push_back(nlohmann::json::object());
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /nodes: 100001 elements, over the limit of 100000");
+}
+
+TEST_F(GltfLoaderTest, DeepNodeChainsAreRefused)
+{
+    GltfBuilder b = cubeScene();
+    for (int i = 1; i <= 1001; ++i) {
+        b.json()["nodes"][std::size_t(i - 1)]["children"] = {i};
+        b.json()["nodes"].push_back(nlohmann::json::object());
+    }
+    EXPECT_CONTAINS(errorOf(write(b)), "levels deep, over the limit of 1000");
 }
 
 // Bad files: one GltfError naming the file and what is wrong.

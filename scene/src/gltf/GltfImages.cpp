@@ -8,6 +8,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace penumbra::scene::gltf {
 namespace {
@@ -23,6 +24,40 @@ bool startsWith(std::span<const std::uint8_t> bytes, const std::array<std::uint8
     return bytes.size() >= N && std::equal(signature.begin(), signature.end(), bytes.begin());
 }
 
+std::uint32_t bigEndian(std::span<const std::uint8_t> bytes, std::size_t at, std::size_t size)
+{
+    std::uint32_t value = 0;
+    for (std::size_t i = 0; i < size; ++i)
+        value = value << 8 | bytes[at + i];
+    return value;
+}
+
+struct Dimensions {
+    std::uint32_t width = 0, height = 0;
+};
+
+// The picture's size from its header, before any decoder sees it: PNG's IHDR chunk, first after the signature
+// (RFC 2083, section 4.1.1); JPEG's first start-of-frame marker SOF0 to SOF15 but DHT, JPG and DAC (ITU T.81,
+// B.2.2). Nothing for a header cut short.
+std::optional<Dimensions> headerDimensions(std::span<const std::uint8_t> bytes)
+{
+    if (startsWith(bytes, kPng))
+        return bytes.size() >= 24 ? std::optional(Dimensions{bigEndian(bytes, 16, 4), bigEndian(bytes, 20, 4)})
+                                  : std::nullopt;
+    for (std::size_t at = 2; at + 4 <= bytes.size();) {
+        if (bytes[at] != 0xff)
+            return std::nullopt;
+        const std::uint8_t marker = bytes[at + 1];
+        const std::uint32_t length = bigEndian(bytes, at + 2, 2);
+        if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc)
+            return at + 9 <= bytes.size()
+                       ? std::optional(Dimensions{bigEndian(bytes, at + 7, 2), bigEndian(bytes, at + 5, 2)})
+                       : std::nullopt;
+        at += 2 + length;
+    }
+    return std::nullopt;
+}
+
 struct StbFree {
     void operator()(void* pixels) const { stbi_image_free(pixels); }
 };
@@ -35,6 +70,11 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
         return "is neither a PNG nor a JPEG picture";
     if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
         return fmt::format("has {} bytes, more than a picture may have", bytes.size());
+    if (const std::optional<Dimensions> header = headerDimensions(bytes);
+        header && (header->width > kMaxImageSide || header->height > kMaxImageSide ||
+                   std::uint64_t(header->width) * header->height > kMaxImageTexels))
+        return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", header->width,
+                           header->height, kMaxImageSide, kMaxImageTexels);
     const int size = int(bytes.size());
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels))

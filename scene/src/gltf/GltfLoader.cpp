@@ -126,10 +126,10 @@ Camera chooseCamera(const Document& document, const std::vector<gltf::CameraInst
 
 namespace {
 
-GltfScene toScene(const Document& document, std::vector<std::string> notes, const GltfOptions& options)
+GltfScene toScene(const Document& document, std::vector<std::string> readNotes, const GltfOptions& options)
 {
     GltfScene result;
-    result.notes = std::move(notes);
+    result.notes = std::move(readNotes);
     Scene& scene = result.scene;
     std::vector<std::string>& notes = result.notes;
     gltf::checkSupport(document, notes);

@@ -1,5 +1,7 @@
 #include "GltfSchema.hpp"
 
+#include "GltfLimits.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -111,7 +113,8 @@ void checkAccessors(const JsonFile& file)
             *accessor.oneOf("componentType", {kByte, kUnsignedByte, kShort, kUnsignedShort, kUnsignedInt, kFloat});
         if (accessor.boolean("normalized").value_or(false) && (component == kFloat || component == kUnsignedInt))
             accessor.fail("normalized", "only BYTE, UNSIGNED_BYTE, SHORT and UNSIGNED_SHORT components may be normalized");
-        accessor.integer("count", 1, kMaxInteger);
+        if (const auto count = accessor.integer("count", 1, kMaxInteger); std::uint64_t(*count) > kMaxAccessorElements)
+            accessor.fail("count", fmt::format("{} elements, over the limit of {}", *count, kMaxAccessorElements));
         const std::string type = *accessor.oneOf("type", {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"});
         if (offset && !accessor.has("bufferView"))
             accessor.fail("byteOffset", "is only allowed with a bufferView");
@@ -279,9 +282,13 @@ void checkNodes(const JsonFile& file, const Fields& root)
     }
     for (std::size_t n = 0; n < nodes.size(); ++n) {
         std::size_t steps = 0;
-        for (int at = parent[n]; at >= 0; at = parent[std::size_t(at)])
+        for (int at = parent[n]; at >= 0; at = parent[std::size_t(at)]) {
             if (++steps > nodes.size())
                 file.fail(fmt::format("/nodes/{}", n), "the node is its own ancestor");
+            if (steps >= kMaxNodeDepth)
+                file.fail(fmt::format("/nodes/{}", n), fmt::format("the node is {} levels deep, over the limit of {}",
+                                                                   steps + 1, kMaxNodeDepth));
+        }
     }
     for (const Fields& scene : topLevel(file, "scenes"))
         for (const int node : scene.indices("nodes", "nodes"))
