@@ -7,20 +7,26 @@
 
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace penumbra::apps {
 
-// What to render, shared by `render` and `parity`: --scene, --camera, --light, --ambient, --settings, --size.
+// What to render, shared by `render` and `parity`: --scene, --camera, --light, --ambient, --anisotropy, --settings,
+// --size.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
     std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
+    std::optional<float> anisotropy; // empty: the settings file's, or FrameDesc's default
     std::string settings;
     std::string size = "1280x720";
 };
+
+// --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
+CLI::Validator anisotropyValidator();
 
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);
@@ -34,7 +40,8 @@ struct LoadedScene {
 // errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 
-// Size, shadow settings and ambient light of the frame (--ambient over the settings file's "ambient"); throws
+// Size, shadow settings, ambient light and anisotropy of the frame (--ambient and --anisotropy over the settings
+// file's "ambient" and "anisotropy"); throws
 // rhi::Error naming the settings file and field.
 render::FrameDesc frameDesc(const SceneOptions& options);
 
