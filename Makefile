@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench bench-forest sanitize docs clean
+.PHONY: all deps configure build test demo bench bench-forest sanitize fuzz docs clean
 
 all: build
 
@@ -43,6 +43,13 @@ bench-forest: build
 sanitize:
 	@$(MAKE) test BUILD=build-sanitize CMAKE_FLAGS="-DPENUMBRA_WERROR=ON -DPENUMBRA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
 
+# libFuzzer targets (tests/fuzz) with clang, ASan and UBSan in build-fuzz/, each run FUZZ_SECONDS (default 180) one
+# after another: executions, coverage and crashes per target. FUZZ_TARGETS picks some (gltf shadow_settings
+# command_line image shader).
+FUZZ_SECONDS ?= 180
+fuzz: deps
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) JOBS=$(JOBS) ./scripts/fuzz.sh $(FUZZ_TARGETS)
+
 # The API reference of the public headers with Doxygen, warnings as errors: $(BUILD)/docs/html/index.html.
 docs: deps
 	@mkdir -p $(BUILD)/docs
@@ -50,4 +57,4 @@ docs: deps
 	@echo "docs: $(BUILD)/docs/html/index.html"
 
 clean:
-	@rm -rf $(BUILD) build-sanitize out
+	@rm -rf $(BUILD) build-sanitize build-fuzz out

@@ -5,6 +5,16 @@ if(PENUMBRA_SANITIZE)
                       -fno-sanitize=vptr) # Debian's glslang has no RTTI for the vptr check
   add_link_options(-fsanitize=address,undefined)
 endif()
+# libFuzzer build (clang only, `make fuzz`): every library instrumented for coverage and sanitized; the fuzz
+# targets in tests/fuzz link libFuzzer's main.
+if(PENUMBRA_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "PENUMBRA_FUZZ needs clang (libFuzzer): configure with CC=clang CXX=clang++")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+                      -fno-sanitize-recover=undefined -fno-sanitize=vptr)
+  add_link_options(-fsanitize=address,undefined)
+endif()
 
 # Designated initializers that leave fields at their documented defaults are the intended
 # style of the descriptor structs, so GCC 12's missing-field-initializers warning is off.

@@ -1,5 +1,6 @@
 #include "SceneOptions.hpp"
 
+#include "CommandLineSpecs.hpp"
 #include "LightOption.hpp"
 #include "RenderSettings.hpp"
 
@@ -17,48 +18,10 @@
 namespace penumbra::apps {
 namespace {
 
-constexpr std::uint32_t kMaxSize = 8192;
-
-struct Size {
-    std::uint32_t width, height;
-};
-
-std::optional<Size> parseSize(const std::string& text)
-{
-    unsigned width = 0, height = 0;
-    int consumed = 0;
-    if (std::sscanf(text.c_str(), "%ux%u%n", &width, &height, &consumed) != 2 || std::size_t(consumed) != text.size())
-        return std::nullopt;
-    if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize)
-        return std::nullopt;
-    return Size{width, height};
-}
-
 bool isGltfPath(const std::string& scene)
 {
     const std::string extension = std::filesystem::path(scene).extension().string();
     return extension == ".gltf" || extension == ".glb";
-}
-
-struct LookAt {
-    glm::vec3 position, target;
-};
-
-// "px,py,pz:tx,ty,tz"
-std::optional<LookAt> parseLookAt(const std::string& text)
-{
-    float v[6];
-    int consumed = 0;
-    if (std::sscanf(text.c_str(), "%f,%f,%f:%f,%f,%f%n", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &consumed) != 6 ||
-        std::size_t(consumed) != text.size())
-        return std::nullopt;
-    for (const float f : v)
-        if (!std::isfinite(f))
-            return std::nullopt;
-    const LookAt lookAt{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-    if (lookAt.position == lookAt.target)
-        return std::nullopt;
-    return lookAt;
 }
 
 std::string validateScene(const std::string& scene)

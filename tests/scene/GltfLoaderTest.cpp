@@ -1,5 +1,7 @@
 #include "GltfLoaderFixture.hpp"
 
+#include <fmt/format.h>
+
 #include "penumbra/scene/GltfLoader.hpp"
 
 #include <glm/geometric.hpp>
@@ -262,11 +264,11 @@ TEST_F(GltfLoaderTest, SamplersReachTheSceneTextures)
 TEST_F(GltfLoaderTest, UnknownSamplerCodesAreRefused)
 {
     EXPECT_CONTAINS(errorOf(write(testing::sampledTexturesScene({{{"wrapS", 12345}}}))),
-                    "sampler 0: wrapS 12345 is not CLAMP_TO_EDGE (33071), MIRRORED_REPEAT (33648) or REPEAT (10497)");
+                    "scene.gltf: /samplers/0/wrapS: expected one of 33071, 33648, 10497, got 12345");
     EXPECT_CONTAINS(errorOf(write(testing::sampledTexturesScene({{{"minFilter", 9730}}}))),
-                    "sampler 0: minFilter 9730");
+                    "/samplers/0/minFilter: expected one of 9728, 9729, 9984, 9985, 9986, 9987, got 9730");
     EXPECT_CONTAINS(errorOf(write(testing::sampledTexturesScene({{{"magFilter", 9984}}}))),
-                    "sampler 0: magFilter 9984");
+                    "/samplers/0/magFilter: expected one of 9728, 9729, got 9984");
 }
 
 TEST_F(GltfLoaderTest, DefaultsForASceneWithoutLightsOrCamera)
@@ -304,6 +306,87 @@ TEST_F(GltfLoaderTest, GlbAndExternalBufferLoadLikeDataUris)
     }
 }
 
+TEST_F(GltfLoaderTest, APrimitiveWithoutPositionIsSkippedWithANote)
+{
+    GltfBuilder b = cubeScene();
+    nlohmann::json positionless = primitive(b);
+    positionless["attributes"].erase("POSITION");
+    b.json()["meshes"][0]["primitives"].push_back(positionless);
+    const GltfScene loaded = loadGltf(write(b));
+    EXPECT_EQ(loaded.scene.objects.size(), 1u);
+    std::string notes;
+    for (const std::string& note : loaded.notes)
+        notes += note + "\n";
+    EXPECT_CONTAINS(notes, "mesh 0 ('Cube') primitive 1: no POSITION attribute: skipped");
+}
+
+TEST_F(GltfLoaderTest, ToleratedDeviationsAreNotedOncePerKind)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["accessors"][std::size_t(attribute(b, "POSITION"))]["max"] = {2.0, 2.0, 2.0};
+    b.json()["accessors"][std::size_t(attribute(b, "POSITION"))]["min"] = {-2.0, -2.0, -2.0};
+    const GltfScene loaded = loadGltf(write(b));
+    std::size_t mismatches = 0;
+    for (const std::string& note : loaded.notes)
+        mismatches += note.find("tolerated: accessor min/max do not match its elements at /accessors/0") != std::string::npos;
+    EXPECT_EQ(mismatches, 1u);
+}
+
+TEST_F(GltfLoaderTest, WrongTypesAreNamedByTheirJsonPointer)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["nodes"][0]["scale"] = -1;
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /nodes/0/scale: expected an array of 3 numbers, got -1");
+    b.json()["nodes"][0].erase("scale");
+    b.json()["accessors"][0]["bufferView"] = 99;
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /accessors/0/bufferView: expected an index of bufferViews");
+}
+
+// Out-of-memory requests are refused with a named limit before anything is allocated for them.
+
+TEST_F(GltfLoaderTest, AHugeAccessorIsRefusedBeforeAllocation)
+{
+    GltfBuilder b = cubeScene();
+    for (nlohmann::json& accessor : b.json()["accessors"]) {
+        accessor.erase("bufferView");
+        accessor["count"] = std::int64_t(1) << 31;
+    }
+    EXPECT_CONTAINS(errorOf(write(b)), "/count: 2147483648 elements, over the limit of 16777216");
+}
+
+TEST_F(GltfLoaderTest, AHugeTextureIsRefusedBeforeDecoding)
+{
+    const std::array<std::uint8_t, 4> texel{255, 255, 255, 255};
+    GltfBuilder b = testing::sampledTexturesScene({nullptr});
+    const int image = b.addPngImage(1, 1, texel);
+    // The PNG header's IHDR width and height (RFC 2083, section 4.1.1) at bytes 16 to 23, set to 65535 each.
+    const nlohmann::json& view = b.json()["bufferViews"][b.json()["images"][std::size_t(image)]["bufferView"].get<std::size_t>()];
+    const std::size_t ihdr = view["byteOffset"].get<std::size_t>() + 16;
+    for (std::size_t i = 0; i < 8; ++i)
+        b.bin()[ihdr + i] = i % 4 < 2 ? 0x00 : 0xff;
+    b.json()["textures"][0]["source"] = image;
+    EXPECT_CONTAINS(errorOf(write(b)), fmt::format("/images/{}: the picture is 65535x65535 texels, over the limits", image));
+}
+
+TEST_F(GltfLoaderTest, TooManyNodesAreRefused)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["nodes"] = nlohmann::json::array();
+    for (int i = 0; i < 100001; ++i)
+        b.json()["nodes"].push_back(nlohmann::json::object());
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /nodes: 100001 elements, over the limit of 100000");
+}
+
+TEST_F(GltfLoaderTest, DeepNodeChainsAreRefused)
+{
+    GltfBuilder b = cubeScene();
+    for (int i = 1; i <= 1001; ++i) {
+        b.json()["nodes"][std::size_t(i - 1)]["children"] = {i};
+        b.json()["nodes"].push_back(nlohmann::json::object());
+    }
+    EXPECT_CONTAINS(errorOf(write(b)), "levels deep, over the limit of 1000");
+}
+
 // Bad files: one GltfError naming the file and what is wrong.
 
 TEST_F(GltfLoaderTest, MissingFile)
@@ -324,16 +407,19 @@ TEST_F(GltfLoaderTest, MissingBuffer)
 TEST_F(GltfLoaderTest, WrongAccessorType)
 {
     GltfBuilder b = cubeScene();
-    b.json()["accessors"][std::size_t(attribute(b, "POSITION"))]["type"] = "VEC2";
-    EXPECT_CONTAINS(errorOf(write(b)),
-                    "scene.gltf: mesh 0 ('Cube') primitive 0: accessor 0 (POSITION) is VEC2 of FLOAT, expected VEC3 of FLOAT");
+    nlohmann::json& accessor = b.json()["accessors"][std::size_t(attribute(b, "POSITION"))];
+    accessor["type"] = "VEC2";
+    accessor["min"] = {-1.0, -1.0};
+    accessor["max"] = {1.0, 1.0};
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /meshes/0/primitives/0/attributes/POSITION: accessor 0 is VEC2 of "
+                                       "component type 5126, which POSITION may not use");
 }
 
 TEST_F(GltfLoaderTest, WrongComponentType)
 {
     GltfBuilder b = cubeScene();
     b.json()["accessors"][primitive(b)["indices"].get<std::size_t>()]["componentType"] = 5126;
-    EXPECT_CONTAINS(errorOf(write(b)), "accessor 3 (indices) is SCALAR of FLOAT, expected SCALAR of UNSIGNED_BYTE or "
+    EXPECT_CONTAINS(errorOf(write(b)), "/meshes/0/primitives/0/indices: accessor 3 is not a SCALAR of UNSIGNED_BYTE, "
                                        "UNSIGNED_SHORT or UNSIGNED_INT");
 }
 
@@ -353,15 +439,16 @@ TEST_F(GltfLoaderTest, IndexPastTheVertices)
 TEST_F(GltfLoaderTest, AccessorPastTheBufferViewEnd)
 {
     GltfBuilder b = cubeScene();
-    b.json()["accessors"][std::size_t(attribute(b, "NORMAL"))]["count"] = 25;
-    EXPECT_CONTAINS(errorOf(write(b)), "accessor 1 (NORMAL): 25 elements need 300 bytes of buffer view 1, which has 288");
+    for (const char* semantic : {"POSITION", "NORMAL", "TEXCOORD_0"})
+        b.json()["accessors"][std::size_t(attribute(b, semantic))]["count"] = 25;
+    EXPECT_CONTAINS(errorOf(write(b)), "/accessors/0/count: 25 elements need 300 bytes of buffer view 0, which has 288");
 }
 
 TEST_F(GltfLoaderTest, BufferViewPastTheBufferEnd)
 {
     GltfBuilder b = cubeScene();
     b.json()["bufferViews"][0]["byteLength"] = 100000;
-    EXPECT_CONTAINS(errorOf(write(b)), "buffer view 0 ends at byte 100000, past the end of buffer 0");
+    EXPECT_CONTAINS(errorOf(write(b)), "/bufferViews/0/byteLength: the view ends at byte 100000, past the end of buffer 0");
 }
 
 TEST_F(GltfLoaderTest, AttributeCountsDiffer)
@@ -369,7 +456,7 @@ TEST_F(GltfLoaderTest, AttributeCountsDiffer)
     GltfBuilder b = cubeScene();
     const std::vector<glm::vec2> uvs(3, glm::vec2(0.0f));
     primitive(b)["attributes"]["TEXCOORD_0"] = b.addUvs(uvs);
-    EXPECT_CONTAINS(errorOf(write(b)), "(TEXCOORD_0) has 3 elements but POSITION has 24");
+    EXPECT_CONTAINS(errorOf(write(b)), "/meshes/0/primitives/0/attributes/TEXCOORD_0: accessor 4 has 3 elements, other attributes 24");
 }
 
 TEST_F(GltfLoaderTest, TruncatedGlb)
@@ -377,7 +464,7 @@ TEST_F(GltfLoaderTest, TruncatedGlb)
     const std::vector<std::uint8_t> bytes = cubeScene().glbBytes();
     const std::filesystem::path path = folder_ / "truncated.glb";
     std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size() / 2));
-    EXPECT_CONTAINS(errorOf(path), "truncated.glb: cannot read");
+    EXPECT_CONTAINS(errorOf(path), "truncated.glb: GLB: the header says");
 }
 
 TEST_F(GltfLoaderTest, UnsupportedPrimitiveMode)
@@ -391,14 +478,14 @@ TEST_F(GltfLoaderTest, NodeThatIsItsOwnAncestor)
 {
     GltfBuilder b = cubeScene();
     b.json()["nodes"][0]["children"] = {0};
-    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: node 0 ('cube') is its own ancestor");
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /nodes/0: the node is its own ancestor");
 }
 
 TEST_F(GltfLoaderTest, BadLightValuesAreReportedWithTheFile)
 {
     GltfBuilder b = testing::exampleScene();
     b.json()["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.6; // beyond the outer angle
-    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: spot light 0 ('spot'): angles inner 0.6 outer 0.5");
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /extensions/KHR_lights_punctual/lights/1/spot/innerConeAngle: 0.6 is not below outerConeAngle 0.5");
 }
 
 } // namespace

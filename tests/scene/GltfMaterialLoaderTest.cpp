@@ -43,7 +43,7 @@ TEST_F(GltfLoaderTest, MaterialFactorsTexturesAndExtensionsAreRead)
          {"emissiveFactor", {0.5, 0.25, 1.0}},
          {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}},
                          {"KHR_materials_unlit", nlohmann::json::object()}}}});
-    b.addRoot(b.add("nodes", {{"mesh", testing::addQuadMesh(b, "quad", material)}}));
+    b.addRoot(b.add("nodes", {{"mesh", testing::addQuadMesh(b, "quad", material, {.mirroredUv1 = true})}}));
     b.json()["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_unlit"};
     const GltfScene loaded = loadGltf(write(b));
     for (const std::string& note : loaded.notes)
@@ -178,23 +178,24 @@ TEST_F(GltfLoaderTest, BadMaterialValuesAreNamedWithTheirField)
     const auto errorFor = [&](const nlohmann::json& material) {
         GltfBuilder copy = b;
         copy.json()["materials"] = {material};
-        copy.addRoot(copy.add("nodes", {{"mesh", testing::addQuadMesh(copy, "quad", 0)}}));
+        copy.json()["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_texture_transform"};
+        copy.addRoot(copy.add("nodes", {{"mesh", testing::addQuadMesh(copy, "quad", 0, {.mirroredUv1 = true})}}));
         return errorOf(write(copy));
     };
     EXPECT_CONTAINS(errorFor({{"name", "m"}, {"normalTexture", {{"index", texture}, {"texCoord", 2}}}}),
-                    "scene.gltf: material 0 ('m'): normalTexture.texCoord 2 is outside [0, 1]");
+                    "scene.gltf: /meshes/0/primitives/0/material: material 0 reads TEXCOORD_2, which the primitive lacks");
     EXPECT_CONTAINS(errorFor({{"pbrMetallicRoughness", {{"metallicFactor", 1.5}}}}),
-                    "scene.gltf: material 0: pbrMetallicRoughness.metallicFactor 1.5 is outside [0, 1]");
+                    "scene.gltf: /materials/0/pbrMetallicRoughness/metallicFactor: expected a number in [0, 1], got 1.5");
     EXPECT_CONTAINS(errorFor({{"occlusionTexture", {{"index", texture}, {"strength", -1}}}}),
-                    "material 0: occlusionTexture.strength -1 is outside [0, 1]");
+                    "/materials/0/occlusionTexture/strength: expected a number in [0, 1], got -1");
     EXPECT_CONTAINS(errorFor({{"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", -2}}}}}}),
-                    "material 0: extensions.KHR_materials_emissive_strength.emissiveStrength -2 is outside [0, inf]");
+                    "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength: expected a number in [0, inf], got -2");
     EXPECT_CONTAINS(
         errorFor({{"emissiveTexture",
                    {{"index", texture}, {"extensions", {{"KHR_texture_transform", {{"offset", {1, 2, 3}}}}}}}}}),
-        "material 0: emissiveTexture.extensions.KHR_texture_transform.offset is not an array of 2 numbers");
+        "/materials/0/emissiveTexture/extensions/KHR_texture_transform/offset: expected an array of 2 numbers, got [1,2,3]");
     EXPECT_CONTAINS(errorFor({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 7}}}}}}),
-                    "material 0: pbrMetallicRoughness.baseColorTexture: texture 7 does not exist");
+                    "/materials/0/pbrMetallicRoughness/baseColorTexture/index: expected an index of textures (the file has 1), got 7");
 }
 
 } // namespace

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <set>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -60,6 +62,30 @@ GltfBuilder casterFile(GltfBuilder b, bool facingDown)
 // Where the casterFile quad's shadow falls with the sun of casterScene (the sun leans towards +x).
 constexpr glm::vec3 kShadowedGround{1.1f, 0.0f, 0.0f};
 
+// `b` with every extension its objects use listed in extensionsUsed, as glTF 2.0 section 3.12 requires (the loader
+// refuses a file that uses one without declaring it).
+GltfBuilder declaringExtensions(GltfBuilder b)
+{
+    std::set<std::string> used;
+    const std::function<void(const nlohmann::json&)> visit = [&](const nlohmann::json& j) {
+        if (j.is_array())
+            for (const nlohmann::json& item : j)
+                visit(item);
+        if (!j.is_object())
+            return;
+        for (const auto& [key, value] : j.items()) {
+            if (key == "extensions" && value.is_object())
+                for (const auto& [name, unused] : value.items())
+                    used.insert(name);
+            visit(value);
+        }
+    };
+    visit(b.json());
+    if (!used.empty())
+        b.json()["extensionsUsed"] = std::vector<std::string>(used.begin(), used.end());
+    return b;
+}
+
 class GltfMaterialsTest : public GpuTest {
 protected:
     // The file as the loader reads it, lit by one sun along `direction` (intensity 0: unlit but for ambient and
@@ -70,7 +96,7 @@ protected:
             std::filesystem::temp_directory_path() /
             ("penumbra-materials-" + configuration() + "-" +
              ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".glb");
-        b.writeGlb(path);
+        declaringExtensions(b).writeGlb(path);
         scene::Scene scene = scene::loadGltf(path).scene;
         std::filesystem::remove(path);
         scene.lights = {{.name = "sun", .intensity = intensity, .direction = glm::normalize(direction)}};

@@ -157,14 +157,20 @@ nlohmann::json GltfBuilder::withBuffer(const std::string& uri) const
     return document;
 }
 
+nlohmann::json GltfBuilder::embedded() const
+{
+    return withBuffer("data:application/octet-stream;base64," + base64(bin_));
+}
+
 void GltfBuilder::writeGltf(const std::filesystem::path& path, bool externalBuffer) const
 {
-    std::string uri = "data:application/octet-stream;base64," + base64(bin_);
+    nlohmann::json document = embedded();
     if (externalBuffer) {
-        uri = path.stem().string() + ".bin";
+        const std::string uri = path.stem().string() + ".bin";
         writeFile(path.parent_path() / uri, bin_);
+        document = withBuffer(uri);
     }
-    const std::string text = withBuffer(uri).dump(1);
+    const std::string text = document.dump(1);
     writeFile(path, {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
 }
 
@@ -260,11 +266,17 @@ int addQuadMesh(GltfBuilder& builder, const std::string& name, int material, con
     }
     if (const auto color = attributes.color) {
         if (color->a == 1.0f) {
+            // Vertex attributes start on 4-byte boundaries (glTF 2.0, section 3.6.2.4): 3 bytes and a pad byte each.
             std::vector<std::uint8_t> bytes;
-            for (std::size_t i = 0; i < positions.size(); ++i)
+            for (std::size_t i = 0; i < positions.size(); ++i) {
                 for (int c = 0; c < 3; ++c)
                     bytes.push_back(std::uint8_t(std::lround((*color)[c] * 255.0f)));
-            attributeJson["COLOR_0"] = builder.addAccessor(bytes, positions.size(), "VEC3", Component::UnsignedByte, true);
+                bytes.push_back(0);
+            }
+            const int accessor = builder.addAccessor(bytes, positions.size(), "VEC3", Component::UnsignedByte, true);
+            builder.json()["bufferViews"][builder.json()["accessors"][std::size_t(accessor)]["bufferView"].get<std::size_t>()]
+                          ["byteStride"] = 4;
+            attributeJson["COLOR_0"] = accessor;
         } else {
             const std::array<glm::vec4, 4> colors{*color, *color, *color, *color};
             attributeJson["COLOR_0"] = builder.addAccessor(bytesOf(std::span<const glm::vec4>(colors)), colors.size(),

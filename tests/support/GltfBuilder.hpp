@@ -47,6 +47,8 @@ public:
     // .gltf with the buffer inline as a base64 data URI, or beside it as <stem>.bin.
     void writeGltf(const std::filesystem::path& path, bool externalBuffer = false) const;
     void writeGlb(const std::filesystem::path& path) const;
+    // The whole document as writeGltf writes it, the buffer inline as a base64 data URI.
+    nlohmann::json embedded() const;
     std::vector<std::uint8_t> glbBytes() const;
 
 private:

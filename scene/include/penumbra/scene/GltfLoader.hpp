@@ -3,7 +3,9 @@
 #include "penumbra/scene/Scene.hpp"
 
 #include <filesystem>
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -52,8 +54,20 @@ struct GltfScene {
 // - cameras: perspective, looking along the node's -z with +y up; aspectRatio is ignored (the
 //   frame decides it); an infinite far plane ends beyond the scene's bounds.
 // - no light: defaultSun(); no camera: framingCamera() of the scene's bounds.
+// Before anything is read the file is checked as the Khronos glTF Validator checks it: the type, range and
+// enum value of every property read, required properties, every index, the node hierarchy, the byte ranges
+// of buffers, views and accessors, and the limits of src/gltf/GltfLimits.hpp and GltfImages.hpp (file,
+// buffer and accessor sizes, object counts, node depth, picture sizes). A bad file's error names the JSON
+// pointer of the offending value: "scene.gltf: /nodes/17/scale: expected an array of 3 numbers, got -1".
+// A primitive without POSITION is skipped with a note; the deviations the validator reports but
+// rendering does not depend on (accessor min/max, non-unit normals) are noted once per kind.
 // Throws GltfError, and nothing else for a bad file; no partial scene is returned.
 GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options = {});
+
+// The same for a file's bytes in memory: `name` is what errors call the file, external buffers and
+// images are looked up in `folder`.
+GltfScene loadGltf(std::span<const std::uint8_t> bytes, const std::string& name, const std::filesystem::path& folder,
+                   const GltfOptions& options = {});
 
 inline constexpr float kDefaultRangePerSqrtIntensity = 16.0f;
 

@@ -69,6 +69,16 @@ float inRange(const Document& document, double value, double low, double high, c
     return float(value);
 }
 
+// A texture coordinate set the passes read (TEXCOORD_0 or TEXCOORD_1); the schema check has bounded it by the sets
+// the primitive has.
+std::uint32_t supportedSet(const Document& document, double set, const std::string& field)
+{
+    if (set > kTexCoordSets - 1)
+        document.fail(fmt::format("{} {}: texture coordinate sets past TEXCOORD_{} are not supported", field, set,
+                                  kTexCoordSets - 1));
+    return std::uint32_t(set);
+}
+
 glm::vec2 vec2Field(const Document& document, const tinygltf::Value& object, const char* key, glm::vec2 fallback,
                     const std::string& owner)
 {
@@ -96,8 +106,8 @@ void readTextureTransform(const Document& document, const tinygltf::ExtensionMap
     if (value.Has("rotation"))
         texture.transform.rotation = float(number(document, value.Get("rotation"), field + ".rotation"));
     if (value.Has("texCoord"))
-        texture.texCoord = std::uint32_t(inRange(document, number(document, value.Get("texCoord"), field + ".texCoord"),
-                                                 0, kTexCoordSets - 1, field + ".texCoord"));
+        texture.texCoord = supportedSet(document, number(document, value.Get("texCoord"), field + ".texCoord"),
+                                        field + ".texCoord");
 }
 
 const tinygltf::Value* extension(const tinygltf::Material& material, const std::string& name)
@@ -154,12 +164,16 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
             if (textureIndex < 0)
                 return;
             const std::string where = fmt::format("{}: {}", owner, field);
+            // glTF 2.0, section 5.29: a texture without source leaves its image to an extension.
+            if (document_.at(document_.model().textures, textureIndex, "texture", where).source < 0) {
+                notes_.push_back(fmt::format("{}: texture {} has no source image: left out", where, textureIndex));
+                return;
+            }
             const TextureColorSpace colorSpace = slot == TextureSlot::BaseColor || slot == TextureSlot::Emissive
                                                      ? TextureColorSpace::Srgb
                                                      : TextureColorSpace::Linear;
             MaterialTexture texture{.image = this->texture(textureIndex, where, colorSpace),
-                                    .texCoord = std::uint32_t(inRange(document_, texCoord, 0, kTexCoordSets - 1,
-                                                                      where + ".texCoord"))};
+                                    .texCoord = supportedSet(document_, texCoord, where + ".texCoord")};
             readTextureTransform(document_, extensions, texture, where);
             material.texture(slot) = texture;
         };

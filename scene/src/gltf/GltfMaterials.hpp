@@ -5,6 +5,8 @@
 #include "penumbra/scene/Scene.hpp"
 
 #include <map>
+#include <string>
+#include <vector>
 #include <utility>
 
 namespace penumbra::scene::gltf {
@@ -13,7 +15,10 @@ namespace penumbra::scene::gltf {
 // Scene::textures (RGBA8 with the texture's sampler), each once per colour space however many materials share it.
 class MaterialTable {
 public:
-    MaterialTable(const Document& document, Scene& scene) : document_(document), scene_(scene) {}
+    MaterialTable(const Document& document, Scene& scene, std::vector<std::string>& notes)
+        : document_(document), scene_(scene), notes_(notes)
+    {
+    }
 
     // The scene material for glTF material `index`, which `owner` (a primitive) refers to; -1 is
     // glTF's default material (white, metallic 1, roughness 1, opaque).
@@ -24,6 +29,7 @@ private:
 
     const Document& document_;
     Scene& scene_;
+    std::vector<std::string>& notes_;
     std::map<int, std::uint32_t> materials_;
     std::map<std::pair<int, TextureColorSpace>, std::uint32_t> textures_; // by glTF texture
 };

@@ -1,6 +1,7 @@
 #include "penumbra/scene/GltfLoader.hpp"
 
 #include "GltfDocument.hpp"
+#include "GltfFile.hpp"
 #include "GltfNodes.hpp"
 #include "GltfUnsupported.hpp"
 
@@ -10,7 +11,6 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 namespace penumbra::scene {
@@ -22,35 +22,6 @@ using gltf::Document;
 constexpr float kMaxSpotOuterAngle = 1.5707963f - 1e-3f;
 // Behind the farthest corner of the scene, so an infinite glTF far plane clips nothing.
 constexpr float kFarPlaneMargin = 1.05f;
-
-// tinygltf's warnings of a file it could read become notes, a line each.
-Document parse(const std::filesystem::path& path, std::vector<std::string>& notes)
-{
-    const std::string name = path.string();
-    if (!std::filesystem::is_regular_file(path))
-        throw GltfError(fmt::format("{}: no such file", name));
-    tinygltf::TinyGLTF loader;
-    tinygltf::Model model;
-    std::string error, warning;
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    const bool ok = extension == ".glb" ? loader.LoadBinaryFromFile(&model, &error, &warning, name)
-                                        : loader.LoadASCIIFromFile(&model, &error, &warning, name);
-    if (!ok) {
-        std::string why = error.empty() ? warning : error;
-        while (!why.empty() && std::isspace(static_cast<unsigned char>(why.back())))
-            why.pop_back();
-        throw GltfError(fmt::format("{}: cannot read: {}", name, why));
-    }
-    std::size_t start = 0;
-    while (start < warning.size()) {
-        const std::size_t end = std::min(warning.find('\n', start), warning.size());
-        if (end > start)
-            notes.push_back(warning.substr(start, end - start));
-        start = end + 1;
-    }
-    return Document(name, std::move(model));
-}
 
 glm::vec3 origin(const glm::mat4& world) { return glm::vec3(world[3]); }
 
@@ -153,12 +124,14 @@ Camera chooseCamera(const Document& document, const std::vector<gltf::CameraInst
 
 } // namespace
 
-GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options)
+namespace {
+
+GltfScene toScene(const Document& document, std::vector<std::string> readNotes, const GltfOptions& options)
 {
     GltfScene result;
+    result.notes = std::move(readNotes);
     Scene& scene = result.scene;
     std::vector<std::string>& notes = result.notes;
-    const Document document = parse(path, notes);
     gltf::checkSupport(document, notes);
     const gltf::NodeWalk walk = gltf::walkNodes(document, scene, notes);
     for (const gltf::LightInstance& light : walk.lights)
@@ -168,6 +141,8 @@ GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options
         notes.push_back("no lights: added a default sun");
     }
     scene.camera = chooseCamera(document, walk.cameras, options, scene.worldBounds(), notes);
+    for (std::string& note : document.deviations().notes())
+        notes.push_back(std::move(note));
     try {
         scene.validate();
     } catch (const GltfError&) {
@@ -176,6 +151,23 @@ GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options
         document.fail(error.what());
     }
     return result;
+}
+
+} // namespace
+
+GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options)
+{
+    std::vector<std::string> notes;
+    const Document document = gltf::readDocument(path, notes);
+    return toScene(document, std::move(notes), options);
+}
+
+GltfScene loadGltf(std::span<const std::uint8_t> bytes, const std::string& name, const std::filesystem::path& folder,
+                   const GltfOptions& options)
+{
+    std::vector<std::string> notes;
+    const Document document = gltf::readDocument(name, bytes, folder, notes);
+    return toScene(document, std::move(notes), options);
 }
 
 } // namespace penumbra::scene

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "GltfDeviations.hpp"
+
 #include "penumbra/scene/GltfLoader.hpp"
 
 #include <fmt/format.h>
@@ -13,9 +15,14 @@ namespace penumbra::scene::gltf {
 // A parsed glTF model and the path its errors name.
 class Document {
 public:
-    Document(std::string path, tinygltf::Model model) : path_(std::move(path)), model_(std::move(model)) {}
+    Document(std::string path, tinygltf::Model model, Deviations deviations = {})
+        : path_(std::move(path)), model_(std::move(model)), deviations_(std::move(deviations))
+    {
+    }
 
     const tinygltf::Model& model() const { return model_; }
+    // Reading accessors finds deviations too; they are the loader's bookkeeping, not the document's state.
+    Deviations& deviations() const { return deviations_; }
 
     // Throws GltfError "<path>: <what>".
     [[noreturn]] void fail(std::string_view what) const { throw GltfError(fmt::format("{}: {}", path_, what)); }
@@ -32,6 +39,7 @@ public:
 private:
     std::string path_;
     tinygltf::Model model_;
+    mutable Deviations deviations_;
 };
 
 // "mesh 2 ('Cube')", or "mesh 2" when unnamed.

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 
 namespace penumbra::scene::gltf {
@@ -23,7 +24,7 @@ constexpr float kSingularDeterminant = 1e-12f;
 class Walker {
 public:
     Walker(const Document& document, Scene& scene, std::vector<std::string>& notes)
-        : document_(document), model_(document.model()), scene_(scene), notes_(notes), materials_(document, scene),
+        : document_(document), model_(document.model()), scene_(scene), notes_(notes), materials_(document, scene, notes),
           onPath_(model_.nodes.size(), false)
     {
     }
@@ -71,6 +72,14 @@ private:
         }
         const bool mirrored = determinant < 0.0f;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            // glTF 2.0, section 3.7.2.1: without POSITION "the client implementation should skip the
+            // primitive's rendering".
+            if (!mesh.primitives[p].attributes.count("POSITION")) {
+                if (positionless_.insert({node.mesh, int(p)}).second)
+                    notes_.push_back(fmt::format("{} primitive {}: no POSITION attribute: skipped",
+                                                 describe("mesh", node.mesh, mesh.name), p));
+                continue;
+            }
             const std::uint32_t material = materials_.material(
                 mesh.primitives[p].material, fmt::format("{} primitive {}", describe("mesh", node.mesh, mesh.name), p));
             const auto key = std::make_tuple(node.mesh, int(p), mirrored);
@@ -97,6 +106,7 @@ private:
     MaterialTable materials_;
     std::vector<bool> onPath_;
     std::map<std::tuple<int, int, bool>, std::uint32_t> meshes_; // (mesh, primitive, mirrored) -> scene mesh
+    std::set<std::pair<int, int>> positionless_;                 // (mesh, primitive) noted as skipped
     NodeWalk walk_;
 };
 

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <span>
 
+#include <glm/geometric.hpp>
+
 namespace penumbra::scene::gltf {
 namespace {
 
@@ -110,6 +112,45 @@ float component(const unsigned char* at, int componentType)
     }
 }
 
+// The normalized value of an integer component as component() reads it.
+double normalizedScale(int componentType)
+{
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1.0 / 255.0;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 1.0 / 65535.0;
+    default: return 1.0;
+    }
+}
+
+// glTF 2.0, section 3.6.2.5: an accessor's min and max are the least and greatest value of each component.
+void checkBounds(const Document& document, int index, const std::vector<std::vector<double>>& components, double scale)
+{
+    const tinygltf::Accessor& accessor = document.model().accessors[std::size_t(index)];
+    const auto differs = [&](const std::vector<double>& declared, bool least) {
+        for (std::size_t c = 0; c < declared.size() && c < components.size(); ++c) {
+            if (components[c].empty())
+                continue;
+            const auto [lo, hi] = std::minmax_element(components[c].begin(), components[c].end());
+            const double actual = least ? *lo : *hi, expected = declared[c] * scale;
+            if (std::abs(actual - expected) > 1e-6 * std::max(1.0, std::abs(actual)))
+                return true;
+        }
+        return false;
+    };
+    if (differs(accessor.minValues, true) || differs(accessor.maxValues, false))
+        document.deviations().add(kMinMaxMismatch, fmt::format("/accessors/{}", index));
+}
+
+template <int N>
+void checkBounds(const Document& document, int index, const std::vector<glm::vec<N, float>>& values, int componentType)
+{
+    std::vector<std::vector<double>> components(N);
+    for (const glm::vec<N, float>& value : values)
+        for (int c = 0; c < N; ++c)
+            components[std::size_t(c)].push_back(value[c]);
+    checkBounds(document, index, components, normalizedScale(componentType));
+}
+
 template <int N>
 std::vector<glm::vec<N, float>> readFloats(const Document& document, const ElementView& view, int index,
                                            std::string_view owner, std::string_view semantic)
@@ -125,6 +166,21 @@ std::vector<glm::vec<N, float>> readFloats(const Document& document, const Eleme
                 document.fail(fmt::format("{}: accessor {} ({}) element {} is not finite", owner, index, semantic, i));
         }
     }
+    checkBounds(document, index, values, view.componentType);
+    // The validator's tolerance for a unit vector (gltf-validator, ACCESSOR_NON_UNIT).
+    if constexpr (N >= 3)
+        if (semantic == "NORMAL" || semantic == "TANGENT")
+            for (std::size_t i = 0; i < view.count; ++i)
+                if (std::abs(glm::length(glm::vec3(values[i])) - 1.0f) > 5e-4f) {
+                    document.deviations().add(kNonUnit, fmt::format("/accessors/{}", index));
+                    break;
+                }
+    if constexpr (N == 4)
+        if (semantic == "TANGENT")
+            for (std::size_t i = 0; i < view.count; ++i)
+                if (values[i].w != 1.0f && values[i].w != -1.0f)
+                    document.fail(fmt::format("{}: accessor {} (TANGENT) element {} has w {}, expected 1 or -1", owner,
+                                              index, i, values[i].w));
     return values;
 }
 
@@ -195,6 +251,17 @@ std::vector<std::uint32_t> readIndices(const Document& document, int accessor, s
         default: indices[i] = load<std::uint32_t>(at); break;
         }
     }
+    // glTF 2.0, section 3.7.2.1: the largest value of the index type is the primitive restart value, never an index.
+    const std::uint32_t restart = view.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 0xffu
+                                  : view.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 0xffffu
+                                                                                                 : 0xffffffffu;
+    for (std::size_t i = 0; i < indices.size(); ++i)
+        if (indices[i] == restart)
+            document.fail(fmt::format("{}: accessor {} (indices) element {} is the primitive restart value {}", owner,
+                                      accessor, i, restart));
+    std::vector<std::vector<double>> components(1);
+    components[0].assign(indices.begin(), indices.end());
+    checkBounds(document, accessor, components, 1.0);
     return indices;
 }
 

@@ -1,0 +1,147 @@
+#include "GltfFile.hpp"
+
+#include "GltfImages.hpp"
+#include "GltfLayout.hpp"
+#include "GltfLimits.hpp"
+#include "GltfSchema.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <fstream>
+
+namespace penumbra::scene::gltf {
+namespace {
+
+// glTF 2.0, section 4.4.3 and 4.4.3.2: the GLB header's magic "glTF" and the chunk types.
+constexpr std::uint32_t kGlbMagic = 0x46546C67;
+constexpr std::uint32_t kJsonChunk = 0x4E4F534A;
+constexpr std::uint32_t kGlbHeaderBytes = 12, kChunkHeaderBytes = 8;
+
+std::uint32_t readU32(std::span<const std::uint8_t> bytes, std::size_t at)
+{
+    std::uint32_t value = 0;
+    std::memcpy(&value, bytes.data() + at, 4);
+    return value;
+}
+
+bool isGlb(std::span<const std::uint8_t> bytes) { return bytes.size() >= 4 && readU32(bytes, 0) == kGlbMagic; }
+
+// The JSON chunk of a GLB file, after checking the header and the chunk layout.
+std::string_view glbJson(const std::string& name, std::span<const std::uint8_t> bytes)
+{
+    const auto fail = [&](const std::string& what) { throw GltfError(fmt::format("{}: GLB: {}", name, what)); };
+    if (bytes.size() < kGlbHeaderBytes + kChunkHeaderBytes)
+        fail(fmt::format("{} bytes, too few for the header and a chunk", bytes.size()));
+    if (readU32(bytes, 4) != 2)
+        fail(fmt::format("version {} is not 2", readU32(bytes, 4)));
+    if (readU32(bytes, 8) != bytes.size())
+        fail(fmt::format("the header says {} bytes, the file has {}", readU32(bytes, 8), bytes.size()));
+    std::size_t at = kGlbHeaderBytes;
+    std::string_view json;
+    for (int chunk = 0; at < bytes.size(); ++chunk) {
+        if (bytes.size() - at < kChunkHeaderBytes)
+            fail(fmt::format("chunk {} at byte {} is cut short", chunk, at));
+        const std::uint32_t length = readU32(bytes, at), type = readU32(bytes, at + 4);
+        if (length % 4 != 0)
+            fail(fmt::format("chunk {} has {} bytes, not a multiple of 4", chunk, length));
+        if (length > bytes.size() - at - kChunkHeaderBytes)
+            fail(fmt::format("chunk {} of {} bytes runs past the end of the file", chunk, length));
+        if (chunk == 0) {
+            if (type != kJsonChunk)
+                fail("the first chunk is not JSON");
+            json = {reinterpret_cast<const char*>(bytes.data() + at + kChunkHeaderBytes), length};
+        }
+        at += kChunkHeaderBytes + length;
+    }
+    return json;
+}
+
+Json parseJson(const std::string& name, std::string_view text)
+{
+    const Json::parser_callback_t depthLimit = [&](int depth, Json::parse_event_t, Json&) {
+        if (depth > kMaxJsonDepth)
+            throw GltfError(fmt::format("{}: cannot read: JSON nested deeper than {} levels", name, kMaxJsonDepth));
+        return true;
+    };
+    try {
+        return Json::parse(text.begin(), text.end(), depthLimit);
+    } catch (const Json::exception& error) {
+        throw GltfError(fmt::format("{}: cannot read: {}", name, error.what()));
+    }
+}
+
+void checkObjectCounts(const JsonFile& file)
+{
+    if (!file.root.is_object())
+        file.fail("", fmt::format("expected an object, got {}", shortDump(file.root)));
+    for (const auto& [key, value] : file.root.items())
+        if (value.is_array() && value.size() > kMaxObjects)
+            file.fail("/" + key, fmt::format("{} elements, over the limit of {}", value.size(), kMaxObjects));
+}
+
+std::string trimmed(std::string text)
+{
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+        text.pop_back();
+    return text;
+}
+
+} // namespace
+
+Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes,
+                      const std::filesystem::path& folder, std::vector<std::string>& notes)
+{
+    const bool glb = isGlb(bytes);
+    const Json root = parseJson(name, glb ? glbJson(name, bytes)
+                                          : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    Deviations deviations;
+    const JsonFile file{name, root, deviations};
+    checkObjectCounts(file);
+    checkSchema(file);
+
+    tinygltf::TinyGLTF loader;
+    std::string imageFailure;
+    loader.SetImageLoader(loadImageData, &imageFailure);
+    tinygltf::Model model;
+    std::string error, warning;
+    const std::string base = folder.string();
+    const bool ok = glb ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
+                                                      unsigned(bytes.size()), base)
+                        : loader.LoadASCIIFromString(&model, &error, &warning,
+                                                     reinterpret_cast<const char*>(bytes.data()),
+                                                     unsigned(bytes.size()), base);
+    if (!imageFailure.empty())
+        throw GltfError(fmt::format("{}: {}", name, imageFailure));
+    if (!ok)
+        throw GltfError(fmt::format("{}: cannot read: {}", name, trimmed(error.empty() ? warning : error)));
+    checkLayout(file, model);
+    std::size_t start = 0;
+    while (start < warning.size()) {
+        const std::size_t end = std::min(warning.find('\n', start), warning.size());
+        if (end > start)
+            notes.push_back(warning.substr(start, end - start));
+        start = end + 1;
+    }
+    return Document(name, std::move(model), std::move(deviations));
+}
+
+Document readDocument(const std::filesystem::path& path, std::vector<std::string>& notes)
+{
+    const std::string name = path.string();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        throw GltfError(fmt::format("{}: no such file", name));
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (error)
+        throw GltfError(fmt::format("{}: cannot read: {}", name, error.message()));
+    if (size > kMaxFileBytes)
+        throw GltfError(fmt::format("{}: {} bytes, over the limit of {}", name, size, kMaxFileBytes));
+    std::ifstream in(path, std::ios::binary);
+    std::vector<std::uint8_t> bytes(size);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+        throw GltfError(fmt::format("{}: cannot read the file", name));
+    return readDocument(name, bytes, path.parent_path(), notes);
+}
+
+} // namespace penumbra::scene::gltf

@@ -1,0 +1,33 @@
+#pragma once
+
+#include "GltfFields.hpp"
+
+#include <string>
+#include <vector>
+
+namespace penumbra::scene::gltf {
+
+// The glTF component types (glTF 2.0, section 5.1.3, accessor.componentType).
+inline constexpr std::int64_t kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123,
+                              kUnsignedInt = 5125, kFloat = 5126;
+
+std::int64_t componentSize(std::int64_t componentType);
+// How many components an accessor type ("SCALAR", "VEC3", "MAT4"...) has.
+std::size_t componentCount(const std::string& type);
+
+// Checks a glTF file's JSON as the Khronos glTF Validator does before any data is read: the type,
+// range and enum values of every property the loader reads, required properties, every index, the
+// node hierarchy (no loops, one parent, scenes list roots), the accessor formats each mesh attribute
+// allows, and texture coordinate sets that materials refer to. Throws GltfError naming the JSON
+// pointer of the first offending value.
+void checkSchema(const JsonFile& file);
+
+// The parts of checkSchema by topic.
+void checkMaterials(const JsonFile& file);
+void checkTexturesAndImages(const JsonFile& file);
+void checkCamerasAndLights(const JsonFile& file);
+
+// The top-level array `name` as objects (none when absent).
+std::vector<Fields> topLevel(const JsonFile& file, std::string_view name);
+
+} // namespace penumbra::scene::gltf
