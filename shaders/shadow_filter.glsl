@@ -3,6 +3,8 @@
 // texelFetch: the bilinear comparison is built from nearest comparisons on every backend (lavapipe
 // cannot filter depth linearly, conventions note section 4).
 
+#include "shadow_constants.glsl"
+
 // The receiver's normal offset (Castano 2013, "Shadow Mapping Summary - Part 1"), along its geometric normal turned
 // towards the light, so that a two-sided surface seen from either side is lifted out of its own shadow. A plane at
 // angle theta to the light rises reach * tan(theta) in light depth across a lookup that reaches `reach` (world

@@ -111,6 +111,24 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
             "AMBIENT"));
     command.add_option("--settings", options.settings, "Shadow settings JSON file, with an optional \"ambient\" object")
         ->check(CLI::ExistingFile);
+    command
+        .add_option("--filter", options.filter,
+                    fmt::format("Every light's shadow filter, over the settings' and the lights' own: {}",
+                                shadows::filterCommandNames()))
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return shadows::filterFromCommandName(s)
+                           ? std::string()
+                           : fmt::format("'{}' is not one of {}", s, shadows::filterCommandNames());
+            },
+            "FILTER"));
+    command
+        .add_option("--light-size", options.lightSize,
+                    fmt::format("Every light's source size for soft shadows: degrees of angular diameter for "
+                                "directional lights (0 to {}), world units of radius for spot and point lights (0 to "
+                                "their range)",
+                                scene::kMaxAngularDiameter))
+        ->check(CLI::NonNegativeNumber);
     command.add_option("--size", options.size, "Picture size as WIDTHxHEIGHT, each 1 to 8192")
         ->check(CLI::Validator(
             [](std::string& s) {
@@ -143,6 +161,7 @@ LoadedScene loadScene(const SceneOptions& options)
         addLight(loaded.scene, parseLightOption(light).value());
     if (!options.lights.empty())
         loaded.scene.validate();
+    applyLightOverrides(loaded.scene, options.filter, options.lightSize);
     if (lookAt) {
         scene::Camera& camera = loaded.scene.camera;
         // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
@@ -173,6 +192,32 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     if (!options.ambient.empty())
         frame.ambient = parseAmbientOption(options.ambient).value();
     return frame;
+}
+
+void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize)
+{
+    if (!filter.empty()) {
+        const std::optional<shadows::ShadowFilter> chosen = shadows::filterFromCommandName(filter);
+        if (!chosen)
+            throw rhi::Error(fmt::format("--filter '{}' is not one of {}", filter, shadows::filterCommandNames()));
+        const auto value = static_cast<std::int32_t>(*chosen);
+        for (scene::DirectionalLight& light : scene.lights)
+            light.shadowFilter = value;
+        for (scene::SpotLight& light : scene.spotLights)
+            light.shadowFilter = value;
+        for (scene::PointLight& light : scene.pointLights)
+            light.shadowFilter = value;
+    }
+    if (lightSize) {
+        for (scene::DirectionalLight& light : scene.lights)
+            light.angularDiameter = *lightSize;
+        for (scene::SpotLight& light : scene.spotLights)
+            light.sourceRadius = *lightSize;
+        for (scene::PointLight& light : scene.pointLights)
+            light.sourceRadius = *lightSize;
+    }
+    if (!filter.empty() || lightSize)
+        scene.validate();
 }
 
 void printStats(const ShadowPictures& pictures, const scene::Scene& scene)

@@ -7,12 +7,14 @@
 
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace penumbra::apps {
 
-// What to render, shared by `render` and `parity`: --scene, --camera, --light, --ambient, --settings, --size.
+// What to render, shared by `render`, `parity` and `truth`: --scene, --camera, --light, --ambient, --settings,
+// --size, --filter, --light-size.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -20,7 +22,13 @@ struct SceneOptions {
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
     std::string settings;
     std::string size = "1280x720";
+    std::string filter;             // shadows::filterFromCommandName; empty: each light's own
+    std::optional<float> lightSize; // every light's source size; nullopt: each light's own
 };
+
+// --filter and --light-size applied to every light of `scene` (degrees of angular diameter for directional lights,
+// world units of radius for spot and point lights); throws scene::SceneError for a size out of a light's range.
+void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize);
 
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);

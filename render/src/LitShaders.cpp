@@ -1,6 +1,7 @@
 #include "penumbra/render/LitUniforms.hpp"
 
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/FilterConstants.hpp"
 
 #include <fmt/format.h>
 
@@ -36,6 +37,10 @@ rhi::ShaderSource litShader(std::string_view fileName)
 {
     rhi::ShaderSource source = shaders::load(fileName);
     source.includes.push_back({"lit_constants.glsl", litConstants()});
+    source.includes.push_back({"shadow_constants.glsl",
+                               shadows::filterConstantsGlsl() +
+                                   fmt::format("#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n",
+                                               kLitShadowCubeDepthsBinding)});
     return source;
 }
 

@@ -25,12 +25,25 @@ shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect)
     return {camera.position, camera.forward, up, camera.fovY, aspect, camera.nearPlane, camera.farPlane};
 }
 
+// A scene light's shadow filter: nullopt for the atlas's, else a shadows::ShadowFilter.
+std::optional<shadows::ShadowFilter> lightFilter(std::int32_t filter, const std::string& what)
+{
+    if (filter == scene::kAtlasShadowFilter)
+        return std::nullopt;
+    if (filter < 0 || filter >= shadows::kShadowFilterCount)
+        throw rhi::Error(fmt::format("{}: shadowFilter {} is out of range, allowed {} (the atlas's) or 0..{} ({})",
+                                     what, filter, scene::kAtlasShadowFilter, shadows::kShadowFilterCount - 1,
+                                     shadows::filterCommandNames()));
+    return static_cast<shadows::ShadowFilter>(filter);
+}
+
 std::vector<shadows::DirectionalShadowLightInput> shadowLights(const std::vector<scene::DirectionalLight>& lights)
 {
     std::vector<shadows::DirectionalShadowLightInput> inputs;
     for (const scene::DirectionalLight& light : lights)
         inputs.push_back({light.direction, light.shadowStrength, light.nearPlaneOffset, light.normalBias,
-                          light.slopeScaleBias, true});
+                          light.slopeScaleBias, true, lightFilter(light.shadowFilter, "light '" + light.name + "'"),
+                          light.angularDiameter});
     return inputs;
 }
 
@@ -39,7 +52,8 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
     std::vector<shadows::SpotShadowInput> inputs;
     for (const scene::SpotLight& l : lights)
         inputs.push_back({l.position, l.direction, l.range, l.outerAngle, l.shadowStrength, l.normalBias,
-                          l.slopeScaleBias, l.shadowNearPlane});
+                          l.slopeScaleBias, l.shadowNearPlane, lightFilter(l.shadowFilter, "spot light '" + l.name + "'"),
+                          l.sourceRadius});
     return inputs;
 }
 
@@ -47,7 +61,8 @@ std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene
 {
     std::vector<shadows::PointShadowInput> inputs;
     for (const scene::PointLight& l : lights)
-        inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias, l.shadowNearPlane});
+        inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias, l.shadowNearPlane,
+                          lightFilter(l.shadowFilter, "point light '" + l.name + "'"), l.sourceRadius});
     return inputs;
 }
 
@@ -330,6 +345,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             rhi::bindUniform(commands, kLitOtherShadowBinding, otherShadowUniforms);
             commands.bindTexture(kLitOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
             commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
+            commands.bindTexture(kLitShadowCubeDepthsBinding, shadowCubes_->texture(), shadowCubes_->depthSampler());
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, uniforms_.push(objectUniforms(object, material)));

@@ -3,6 +3,7 @@
 #include "penumbra/shadows/AtlasMatrix.hpp"
 #include "penumbra/shadows/FrustumSliceSphere.hpp"
 #include "penumbra/shadows/ShadowFade.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -26,6 +27,40 @@ std::optional<std::string> exclusion(const DirectionalShadowLightInput& light, s
     return std::nullopt;
 }
 
+// What a tile texel adds to become the light's own texel grid (whole texels: the fit snaps the tile's centre), per
+// axis in the direction the atlas runs along the light's right and up axes.
+glm::vec2 lightTexelAnchor(const DirectionalCascadePlan& cascade)
+{
+    const DirectionalShadowCascade& fit = cascade.fit;
+    const glm::vec3 origin = fit.basis.right * fit.snappedCentre.x + fit.basis.up * fit.snappedCentre.y;
+    const auto atlasX = [&](glm::vec3 p) { return (cascade.worldToAtlas * glm::vec4(p, 1.0f)).x; };
+    const auto atlasY = [&](glm::vec3 p) { return (cascade.worldToAtlas * glm::vec4(p, 1.0f)).y; };
+    const float signX = atlasX(origin + fit.basis.right) > atlasX(origin) ? 1.0f : -1.0f;
+    const float signY = atlasY(origin + fit.basis.up) > atlasY(origin) ? 1.0f : -1.0f;
+    return {std::round(signX * fit.snappedCentre.x / fit.texelSize), std::round(signY * fit.snappedCentre.y / fit.texelSize)};
+}
+
+// The projection's texture-space depth row (t22, t32): depth = t22 * viewZ + t32.
+glm::vec2 depthRow(const DirectionalShadowCascade& fit, const rhi::Conventions& conventions)
+{
+    const glm::mat4 toTexture = conventions.clipToTexture() * fit.projection;
+    return {toTexture[2][2], toTexture[3][2]};
+}
+
+void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions)
+{
+    DirectionalShadowUniforms& u = plan.uniforms;
+    u.soft = softShadowUniforms(settings.soft);
+    const float atlasFactor = normalBiasFilterFactor(settings.directional.filter);
+    for (std::size_t slot = 0; slot < plan.lights.size(); ++slot) {
+        const ShadowedDirectionalLight& light = plan.lights[slot];
+        u.lightSoft[slot] = {tanHalfAngularDiameter(light.angularDiameter),
+                             normalBiasFilterFactor(light.filter) / atlasFactor, 0.0f, 0.0f};
+        for (const DirectionalCascadePlan& cascade : light.cascades)
+            u.tileSoft[cascade.tile] = glm::vec4(lightTexelAnchor(cascade), depthRow(cascade.fit, conventions));
+    }
+}
+
 void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
 {
     DirectionalShadowUniforms& u = plan.uniforms;
@@ -41,7 +76,8 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
     }
     for (std::size_t slot = 0; slot < plan.lights.size(); ++slot) {
         const ShadowedDirectionalLight& light = plan.lights[slot];
-        u.lightShadowData[slot] = {light.strength, light.normalBias, static_cast<float>(light.firstTile), 0.0f};
+        u.lightShadowData[slot] = {light.strength, light.normalBias, static_cast<float>(light.firstTile),
+                                   static_cast<float>(light.filter)};
         for (const DirectionalCascadePlan& cascade : light.cascades)
             u.worldToAtlas[cascade.tile] = cascade.worldToAtlas;
     }
@@ -88,8 +124,15 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
     for (std::uint32_t slot = 0; slot < selected.size(); ++slot) {
         const DirectionalShadowLightInput& input = lights[selected[slot]];
-        ShadowedDirectionalLight light{selected[slot], input.strength, input.normalBias, input.slopeScaleBias,
-                                       input.nearPlaneOffset, directionalTileIndex(slot, 0, cascadeCount), {}};
+        ShadowedDirectionalLight light{selected[slot],
+                                       input.strength,
+                                       input.normalBias,
+                                       input.slopeScaleBias,
+                                       input.nearPlaneOffset,
+                                       input.filter.value_or(directional.filter),
+                                       input.angularDiameter,
+                                       directionalTileIndex(slot, 0, cascadeCount),
+                                       {}};
         const LightBasis basis = lightBasis(input.direction);
         for (std::uint32_t c = 0; c < cascadeCount; ++c) {
             DirectionalCascadePlan cascade;
@@ -111,6 +154,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
             plan.cascadeData.push_back(
                 cascadeData(plan.cullingSpheres[c], plan.lights[0].cascades[c].fit.texelSize, directional.filter));
     fillUniforms(plan, settings);
+    fillSoftUniforms(plan, settings, conventions);
     return plan;
 }
 

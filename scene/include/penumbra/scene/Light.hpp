@@ -7,6 +7,16 @@
 
 namespace penumbra::scene {
 
+// A light's own shadow filter: a penumbra::shadows::ShadowFilter value, or kAtlasShadowFilter for the shadow
+// settings' (the atlas's) filter. The renderer checks the value.
+inline constexpr std::int32_t kAtlasShadowFilter = -1;
+
+// Default source sizes: the sun's angular diameter (about 0.53 degrees) and a 5 cm bulb.
+inline constexpr float kDefaultAngularDiameter = 0.53f;
+inline constexpr float kDefaultSourceRadius = 0.05f;
+// Largest angular diameter a directional light may have, degrees (a soft-shadow filter's reach ends far earlier).
+inline constexpr float kMaxAngularDiameter = 30.0f;
+
 struct DirectionalLight {
     std::string name;
     glm::vec3 color{1.0f}; // linear RGB
@@ -16,6 +26,8 @@ struct DirectionalLight {
     float slopeScaleBias = 1.0f;            // the RHI's depth-bias slope factor for this light's casters
     float normalBias = 1.0f;                // receiver offset along its normal, in units of the cascade's filter-sized texel diagonal
     float nearPlaneOffset = 0.2f;           // pulls the shadow projection's near plane back, in world units
+    float angularDiameter = kDefaultAngularDiameter; // source size, degrees, 0..kMaxAngularDiameter (soft shadows)
+    std::int32_t shadowFilter = kAtlasShadowFilter;
 };
 
 // A cone light. Its light falls off with distance (zero at range) and between the inner and
@@ -33,6 +45,8 @@ struct SpotLight {
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f; // receiver offset in filter-sized texel diagonals at the receiver's distance
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
+    float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a disk facing the receiver (soft shadows)
+    std::int32_t shadowFilter = kAtlasShadowFilter;
 };
 
 // An omnidirectional light; its shadow is six cube faces.
@@ -46,6 +60,8 @@ struct PointLight {
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f;
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
+    float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a sphere (soft shadows)
+    std::int32_t shadowFilter = kAtlasShadowFilter;
 };
 
 // A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.
