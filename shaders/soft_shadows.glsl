@@ -144,7 +144,7 @@ SoftControls softControls(vec4 scales, vec4 counts)
 }
 
 // Directional lights (penumbra::shadows::directionalSearchTexels, directionalPenumbraTexels): distances past the
-// near plane from the depth row, the penumbra from the angular size in world units over the cascade's texel size.
+// nearest caster from the depth row (so the search does not follow the camera-fitted near plane), the penumbra from the angular size in world units over the cascade's texel size.
 float directionalSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftControls c, vec2 depthRow,
                             float tanHalfAngle, float texelWorld)
 {

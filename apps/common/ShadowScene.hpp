@@ -47,7 +47,7 @@ struct ShadowPictures {
 // listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
-inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest";
+inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact";
 
 // Renders scene.camera's view; the cascade view too when frame.cascadeView is set. Throws
 // rhi::Error when the device reports a validation or debug message.

@@ -4,6 +4,7 @@
 #include "ImageFiles.hpp"
 #include "RawDraws.hpp"
 #include "ShadowBench.hpp"
+#include "SoftShadowBench.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 
@@ -87,13 +88,22 @@ void runBenchmarks(const BenchOptions& options)
     if (wants(options, "shadows"))
         shadowBench.emplace(options.configurations, options.minTime);
 
+    std::optional<SoftShadowBench> softBench;
+    if (wants(options, "soft"))
+        softBench.emplace(options.configurations, options.minTime);
     CollectingReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
 
-    nlohmann::json json = {{"draws", nlohmann::json::array()}, {"shadows", nlohmann::json::array()}};
+    nlohmann::json json = {{"draws", nlohmann::json::array()},
+                           {"shadows", nlohmann::json::array()},
+                           {"soft", nlohmann::json::array()}};
     if (shadowBench) {
         shadowBench->printSummary();
         json["shadows"] = shadowBench->toJson();
+    }
+    if (softBench) {
+        softBench->printSummary();
+        json["soft"] = softBench->toJson();
     }
     if (!cases.empty())
         fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw", "raw ns/draw",
@@ -122,7 +132,8 @@ void addBenchCommand(CLI::App& app)
     CLI::App* bench = app.add_subcommand(
         "bench", "Time N small draws per frame through the RHI and through hand-written raw API code, and the "
                  "shadow passes of the test scene");
-    bench->add_option("-s,--suites", options->suites, "draws, shadows")->check(CLI::IsMember({"draws", "shadows"}));
+    bench->add_option("-s,--suites", options->suites, "draws, shadows, soft (the soft-shadow filters' lit pass)")
+        ->check(CLI::IsMember({"draws", "shadows", "soft"}));
     bench->add_option("-c,--configurations", options->configurations, "Configurations to measure")
         ->check(configurationValidator());
     bench->add_option("-n,--draws", options->draws, "Draws per frame")->check(CLI::Range(1u, 1000000u));

@@ -1,6 +1,7 @@
 #include "SceneOptions.hpp"
 
 #include "LightOption.hpp"
+#include "LightOverrides.hpp"
 #include "RenderSettings.hpp"
 
 #include "penumbra/rhi/Error.hpp"
@@ -192,32 +193,6 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     if (!options.ambient.empty())
         frame.ambient = parseAmbientOption(options.ambient).value();
     return frame;
-}
-
-void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize)
-{
-    if (!filter.empty()) {
-        const std::optional<shadows::ShadowFilter> chosen = shadows::filterFromCommandName(filter);
-        if (!chosen)
-            throw rhi::Error(fmt::format("--filter '{}' is not one of {}", filter, shadows::filterCommandNames()));
-        const auto value = static_cast<std::int32_t>(*chosen);
-        for (scene::DirectionalLight& light : scene.lights)
-            light.shadowFilter = value;
-        for (scene::SpotLight& light : scene.spotLights)
-            light.shadowFilter = value;
-        for (scene::PointLight& light : scene.pointLights)
-            light.shadowFilter = value;
-    }
-    if (lightSize) {
-        for (scene::DirectionalLight& light : scene.lights)
-            light.angularDiameter = *lightSize;
-        for (scene::SpotLight& light : scene.spotLights)
-            light.sourceRadius = *lightSize;
-        for (scene::PointLight& light : scene.pointLights)
-            light.sourceRadius = *lightSize;
-    }
-    if (!filter.empty() || lightSize)
-        scene.validate();
 }
 
 void printStats(const ShadowPictures& pictures, const scene::Scene& scene)

@@ -26,9 +26,6 @@ struct SceneOptions {
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
 };
 
-// --filter and --light-size applied to every light of `scene` (degrees of angular diameter for directional lights,
-// world units of radius for spot and point lights); throws scene::SceneError for a size out of a light's range.
-void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize);
 
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);

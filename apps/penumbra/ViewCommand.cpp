@@ -5,6 +5,8 @@
 #include "ShadowScene.hpp"
 #include "Viewer.hpp"
 
+#include "penumbra/shadows/ShadowSettings.hpp"
+
 #include <charconv>
 #include <fmt/format.h>
 #include <memory>
@@ -51,6 +53,19 @@ void addViewCommand(CLI::App& app)
     view->add_flag("!--no-ui", options->ui, "Hide the settings panel");
     view->add_flag("--cascade-view", options->cascadeView, "Start with the cascade view");
     view->add_flag("--atlas-overlay", options->atlasOverlay, "Start with the shadow atlas overlay");
+    view->add_option("--filter", options->filter,
+                     fmt::format("Every light's shadow filter: {}", shadows::filterCommandNames()))
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return shadows::filterFromCommandName(s)
+                           ? std::string()
+                           : fmt::format("'{}' is not one of {}", s, shadows::filterCommandNames());
+            },
+            "FILTER"));
+    view->add_option("--light-size", options->lightSize,
+                     "Every light's source size: degrees of angular diameter (directional), world units of radius "
+                     "(spot, point)")
+        ->check(CLI::NonNegativeNumber);
     view->callback([options] { viewer::runViewer(*options); });
 }
 

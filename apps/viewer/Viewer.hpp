@@ -16,6 +16,8 @@ struct ViewerOptions {
     bool ui = true;                      // the settings panel
     bool cascadeView = false;            // start with the panel's toggles on
     bool atlasOverlay = false;
+    std::string filter;             // every light's shadow filter (apps::applyLightOverrides); empty: their own
+    std::optional<float> lightSize; // every light's source size
 };
 
 // Opens the window and runs the viewer. Throws rhi::Error when there is no display, no driver,

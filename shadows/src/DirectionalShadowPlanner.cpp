@@ -5,6 +5,7 @@
 #include "penumbra/shadows/ShadowFade.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -40,14 +41,27 @@ glm::vec2 lightTexelAnchor(const DirectionalCascadePlan& cascade)
     return {std::round(signX * fit.snappedCentre.x / fit.texelSize), std::round(signY * fit.snappedCentre.y / fit.texelSize)};
 }
 
-// The projection's texture-space depth row (t22, t32): depth = t22 * viewZ + t32.
-glm::vec2 depthRow(const DirectionalShadowCascade& fit, const rhi::Conventions& conventions)
+// The light-space depth nearest the light of any caster: no blocker lies nearer. Unlike the near plane, which follows
+// the cascade's sphere, it does not move with the camera, so neither does the blocker search sized from it.
+float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBounds, float fallback)
 {
-    const glm::mat4 toTexture = conventions.clipToTexture() * fit.projection;
-    return {toTexture[2][2], toTexture[3][2]};
+    float top = fallback;
+    for (const Bounds& caster : casterBounds)
+        top = std::min(top, lightSpaceBounds(basis, caster).min.z);
+    return top;
 }
 
-void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions)
+// The projection's texture-space depth row (t22, t32'): depth = t22 * viewZ + t32, with t32' = t32 + t22 (near -
+// casterTop), so that orthographicDistanceFromNear(depth, row) is the distance past the casters' top (the blocker
+// search's receiver depth), and differences of two depths stay world distances.
+glm::vec2 depthRow(const DirectionalShadowCascade& fit, float casterTop, const rhi::Conventions& conventions)
+{
+    const glm::mat4 toTexture = conventions.clipToTexture() * fit.projection;
+    return {toTexture[2][2], toTexture[3][2] + toTexture[2][2] * (fit.nearDepth - std::min(casterTop, fit.nearDepth))};
+}
+
+void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions,
+                      std::span<const Bounds> casterBounds)
 {
     DirectionalShadowUniforms& u = plan.uniforms;
     u.soft = softShadowUniforms(settings.soft);
@@ -56,8 +70,10 @@ void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& setting
         const ShadowedDirectionalLight& light = plan.lights[slot];
         u.lightSoft[slot] = {tanHalfAngularDiameter(light.angularDiameter),
                              normalBiasFilterFactor(light.filter) / atlasFactor, 0.0f, 0.0f};
-        for (const DirectionalCascadePlan& cascade : light.cascades)
-            u.tileSoft[cascade.tile] = glm::vec4(lightTexelAnchor(cascade), depthRow(cascade.fit, conventions));
+        for (const DirectionalCascadePlan& cascade : light.cascades) {
+            const float top = casterTopDepth(cascade.fit.basis, casterBounds, cascade.fit.nearDepth);
+            u.tileSoft[cascade.tile] = glm::vec4(lightTexelAnchor(cascade), depthRow(cascade.fit, top, conventions));
+        }
     }
 }
 
@@ -154,7 +170,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
             plan.cascadeData.push_back(
                 cascadeData(plan.cullingSpheres[c], plan.lights[0].cascades[c].fit.texelSize, directional.filter));
     fillUniforms(plan, settings);
-    fillSoftUniforms(plan, settings, conventions);
+    fillSoftUniforms(plan, settings, conventions, casterBounds);
     return plan;
 }
 

@@ -259,11 +259,14 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
         for (const DirectionalCascadePlan& cascade : a.lights[0].cascades) {
             const glm::vec4 soft = a.uniforms.tileSoft[cascade.tile];
             const glm::vec2 row{soft.z, soft.w};
-            // Depth at the near and the far plane: 0 and the light-space depth range in world units.
+            // Depths at the near and the far plane are the light-space depth range apart in world units, and the near
+            // plane lies at or past the casters' top (the box's corner nearest the light).
             const float nearDepth = conventions.windowDepth(cascade.fit.projection, 0.0f);
             const float farDepth = conventions.windowDepth(cascade.fit.projection, cascade.fit.farDepth - cascade.fit.nearDepth);
-            EXPECT_NEAR(orthographicDistanceFromNear(nearDepth, row), 0.0f, 1e-3f);
-            EXPECT_NEAR(orthographicDistanceFromNear(farDepth, row), cascade.fit.farDepth - cascade.fit.nearDepth, 1e-2f);
+            const float top = lightSpaceBounds(cascade.fit.basis, casters[0]).min.z;
+            EXPECT_NEAR(orthographicDistanceFromNear(nearDepth, row), std::max(cascade.fit.nearDepth - top, 0.0f), 1e-3f);
+            EXPECT_NEAR(orthographicDistanceFromNear(farDepth, row) - orthographicDistanceFromNear(nearDepth, row),
+                        cascade.fit.farDepth - cascade.fit.nearDepth, 1e-2f);
         }
         // A world point's texel in the light's grid (tile texel - tile origin + anchor) is the same from either camera.
         const glm::vec3 point{0.4f, 0.0f, -6.0f};
@@ -276,6 +279,13 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
                                   glm::vec2(plan.uniforms.tileSoft[cascade.tile]) + 0.5f);
             };
             EXPECT_EQ(lightTexel(a), lightTexel(b)) << "cascade " << c;
+            // The blocker search's receiver depth does not follow the camera either.
+            const auto fromTop = [&](const DirectionalShadowPlan& plan) {
+                const DirectionalCascadePlan& cascade = plan.lights[0].cascades[c];
+                const glm::vec4 soft = plan.uniforms.tileSoft[cascade.tile];
+                return orthographicDistanceFromNear((cascade.worldToAtlas * glm::vec4(point, 1.0f)).z, {soft.z, soft.w});
+            };
+            EXPECT_NEAR(fromTop(a), fromTop(b), 1e-3f) << "cascade " << c;
         }
     }
 }

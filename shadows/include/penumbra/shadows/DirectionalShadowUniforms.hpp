@@ -25,7 +25,8 @@ inline constexpr std::uint32_t maxCascades = 4;
 //                                   // shadowed light count
 //       vec4 lightShadowData[4];    // per shadow slot: strength, normalBias, first tile, the light's filter
 //       vec4 tileSoft[16];          // per tile: x, y: add to a tile texel for the light-space texel (the disk's
-//                                   // rotation); z, w: (t22, t32), the depth row (orthographicDistanceFromNear)
+//                                   // rotation); z, w: the depth row (orthographicDistanceFromNear: the distance
+//                                   // past the nearest caster's light-space depth)
 //       vec4 lightSoft[4];          // per shadow slot: tan of half the angular diameter, normal bias factor of the
 //                                   // light's filter over the atlas's, 0, 0
 //       vec4 softScales;            // SoftShadowUniforms
