@@ -99,10 +99,14 @@ float directionalShadowVisibility(int slot, CascadeSelection s, vec3 position, v
 {
     const vec4 light = shadows.lightShadowData[slot];
     const int tile = int(light.z) + s.index;
-    float shadow = sampleCascade(tile, s.index, slot, position, normal, towardsLight, light.y);
-    if (s.blend < 1.0)
-        shadow = mix(sampleCascade(tile + 1, s.index + 1, slot, position, normal, towardsLight, light.y), shadow,
-                     s.blend);
+    // One call site for both cascades of a soft blend: the compilers inline every call, and the soft filters' loops
+    // are long.
+    float shadow = 0.0;
+    const int cascades = s.blend < 1.0 ? 2 : 1;
+    for (int k = 0; k < cascades; ++k) {
+        const float weight = cascades == 1 ? 1.0 : (k == 0 ? s.blend : 1.0 - s.blend);
+        shadow += weight * sampleCascade(tile + k, s.index + k, slot, position, normal, towardsLight, light.y);
+    }
     return shadow;
 }
 

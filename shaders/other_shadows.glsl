@@ -98,7 +98,7 @@ float cubePlaneDepth(CubeReceiver r, vec3 tap)
 
 vec3 cubeTap(CubeReceiver r, int index, float radius)
 {
-    const vec2 o = radius * (r.rotation * PENUMBRA_POISSON_DISK[index]);
+    const vec2 o = radius * (r.rotation * poissonPoint(index));
     return r.d + o.x * r.u + o.y * r.v;
 }
 
@@ -135,15 +135,17 @@ float cubePoissonFilter(CubeReceiver r, float radius, int count)
 float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
 {
     const SoftControls c = softControls(otherShadows.softScales, otherShadows.softCounts);
-    if (filterIndex == PENUMBRA_FILTER_POISSON)
-        return cubePoissonFilter(r, c.poissonRadius, c.filterSamples);
-    const vec3 a = abs(r.d);
-    const float receiver = max(max(a.x, a.y), a.z);
-    const vec2 blockers =
-        cubeSearchBlockers(r, perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c), c.blockerSamples);
-    if (blockers.y == 0.0)
-        return 1.0;
-    return cubePoissonFilter(r, perspectivePenumbraTexels(receiver, blockers.x, cubeSoft.y, c), c.filterSamples);
+    float radius = c.poissonRadius;
+    if (filterIndex == PENUMBRA_FILTER_PCSS) {
+        const vec3 a = abs(r.d);
+        const float receiver = max(max(a.x, a.y), a.z);
+        const vec2 blockers =
+            cubeSearchBlockers(r, perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c), c.blockerSamples);
+        if (blockers.y == 0.0)
+            return 1.0;
+        radius = perspectivePenumbraTexels(receiver, blockers.x, cubeSoft.y, c);
+    }
+    return cubePoissonFilter(r, radius, c.filterSamples);
 }
 
 // Cube-map mode: a k x k box of nearest comparisons (k = 2, 3, 5, 7 by the filter) spread over the face's

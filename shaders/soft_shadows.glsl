@@ -2,12 +2,23 @@
 // shadows (Fernando 2005, "Percentage-Closer Soft Shadows"; NVIDIA 2008, "Integrating Realistic Soft Shadows into
 // Your Game Engine"): a blocker search, the average blocker depth, the penumbra from the receiver and blocker depths,
 // then the Poisson disk over that penumbra. The same math as penumbra::shadows::SoftShadowMath; the disks are
-// PENUMBRA_POISSON_DISK (shadow_constants.glsl).
+// the PoissonDisks block.
 //
 // Every tap compares against the receiver's plane at the texel it reads, not the receiver's own depth (Isidoro 2006,
 // "Receiver Plane Depth Bias", GDC): a wide kernel over a sloped receiver then does not shadow the receiver itself.
 // The disk turns by a hash of the receiver's texel in the light's own grid, so a static scene's shadows stay put
 // while the camera moves, and both backends give the same pixels.
+
+// penumbra::shadows::PoissonDiskUniforms: the disks of 16, 32 and 64 points, disk n from point n - 16, two a vec4.
+layout(std140, binding = PENUMBRA_BINDING_POISSON_DISKS) uniform PoissonDisks {
+    vec4 points[PENUMBRA_POISSON_DISK_POINTS / 2];
+} poissonDisks;
+
+vec2 poissonPoint(int index)
+{
+    const vec4 pair = poissonDisks.points[index >> 1];
+    return (index & 1) == 0 ? pair.xy : pair.zw;
+}
 
 // The receiver's screen-space position derivatives, set once by main() in uniform control flow
 // (setReceiverDerivatives): the shadow functions run in per-light branches, where derivatives are undefined.
@@ -76,7 +87,7 @@ SoftTile softTile(vec3 p, vec3 dpdx, vec3 dpdy, float atlasSize, ivec2 tileMin, 
     return t;
 }
 
-vec2 diskTap(SoftTile t, int index, float radius) { return t.centre + radius * (t.rotation * PENUMBRA_POISSON_DISK[index]); }
+vec2 diskTap(SoftTile t, int index, float radius) { return t.centre + radius * (t.rotation * poissonPoint(index)); }
 
 // The receiver plane's depth at the centre of `texel`.
 float planeDepth(SoftTile t, ivec2 texel) { return t.depth + dot(t.gradient, vec2(texel) + 0.5 - t.centre); }
@@ -144,20 +155,23 @@ SoftControls softControls(vec4 scales, vec4 counts)
 }
 
 // Directional lights (penumbra::shadows::directionalSearchTexels, directionalPenumbraTexels): distances past the
-// nearest caster from the depth row (so the search does not follow the camera-fitted near plane), the penumbra from the angular size in world units over the cascade's texel size.
+// nearest caster from the depth row (so the search does not follow the camera-fitted near plane), the penumbra from
+// the angular size in world units over the cascade's texel size. Each loop appears once: the shader compilers inline
+// every call.
 float directionalSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftControls c, vec2 depthRow,
                             float tanHalfAngle, float texelWorld)
 {
-    if (filterIndex == PENUMBRA_FILTER_POISSON)
-        return poissonFilter(atlas, t, c.poissonRadius, c.filterSamples);
-    const float receiver = max((depthRow.y - t.depth) / depthRow.x, 0.0);
-    const float search = clamp(c.searchScale * receiver * tanHalfAngle / texelWorld, 1.0, max(c.maxTexels, 1.0));
-    const vec2 blockers = searchBlockers(atlas, t, search, c.blockerSamples);
-    if (blockers.y == 0.0)
-        return 1.0;
-    const float blocker = (depthRow.y - blockers.x) / depthRow.x;
-    const float radius =
-        clamp(c.penumbraScale * max(receiver - blocker, 0.0) * tanHalfAngle / texelWorld, c.minTexels, c.maxTexels);
+    float radius = c.poissonRadius;
+    if (filterIndex == PENUMBRA_FILTER_PCSS) {
+        const float receiver = max((depthRow.y - t.depth) / depthRow.x, 0.0);
+        const float search = clamp(c.searchScale * receiver * tanHalfAngle / texelWorld, 1.0, max(c.maxTexels, 1.0));
+        const vec2 blockers = searchBlockers(atlas, t, search, c.blockerSamples);
+        if (blockers.y == 0.0)
+            return 1.0;
+        const float blocker = (depthRow.y - blockers.x) / depthRow.x;
+        radius = clamp(c.penumbraScale * max(receiver - blocker, 0.0) * tanHalfAngle / texelWorld, c.minTexels,
+                       c.maxTexels);
+    }
     return poissonFilter(atlas, t, radius, c.filterSamples);
 }
 
@@ -181,15 +195,16 @@ float perspectivePenumbraTexels(float receiver, float blocker, float lightTexels
 // tileSoft = (t22, t32, lightTexels, near plane).
 float perspectiveSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftControls c, vec4 tileSoft)
 {
-    if (filterIndex == PENUMBRA_FILTER_POISSON)
-        return poissonFilter(atlas, t, c.poissonRadius, c.filterSamples);
-    const float receiver = perspectiveDistance(t.depth, tileSoft.xy);
-    const vec2 blockers =
-        searchBlockers(atlas, t, perspectiveSearchTexels(receiver, tileSoft.w, tileSoft.z, c), c.blockerSamples);
-    if (blockers.y == 0.0)
-        return 1.0;
-    const float blocker = perspectiveDistance(blockers.x, tileSoft.xy);
-    return poissonFilter(atlas, t, perspectivePenumbraTexels(receiver, blocker, tileSoft.z, c), c.filterSamples);
+    float radius = c.poissonRadius;
+    if (filterIndex == PENUMBRA_FILTER_PCSS) {
+        const float receiver = perspectiveDistance(t.depth, tileSoft.xy);
+        const vec2 blockers =
+            searchBlockers(atlas, t, perspectiveSearchTexels(receiver, tileSoft.w, tileSoft.z, c), c.blockerSamples);
+        if (blockers.y == 0.0)
+            return 1.0;
+        radius = perspectivePenumbraTexels(receiver, perspectiveDistance(blockers.x, tileSoft.xy), tileSoft.z, c);
+    }
+    return poissonFilter(atlas, t, radius, c.filterSamples);
 }
 
 // Screen derivatives of a perspective shadow-map position m * (p, 1) / w, from those of p (receiverDx, receiverDy).

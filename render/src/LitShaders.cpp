@@ -39,8 +39,9 @@ rhi::ShaderSource litShader(std::string_view fileName)
     source.includes.push_back({"lit_constants.glsl", litConstants()});
     source.includes.push_back({"shadow_constants.glsl",
                                shadows::filterConstantsGlsl() +
-                                   fmt::format("#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n",
-                                               kLitShadowCubeDepthsBinding)});
+                                   fmt::format("#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
+                                               "#define PENUMBRA_BINDING_POISSON_DISKS {}\n",
+                                               kLitShadowCubeDepthsBinding, kLitPoissonDisksBinding)});
     return source;
 }
 

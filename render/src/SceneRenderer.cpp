@@ -4,6 +4,7 @@
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/PoissonDisk.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -331,6 +332,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     const bool visibility = frame.config.y == static_cast<int>(LitView::Visibility);
     commands.beginPass({.framebuffer = &target, .clearColor = visibility ? kUndecided : kBackground});
     const rhi::UniformSlice frameSlice = uniforms_.push(frame);
+    const rhi::UniformSlice poissonDisks = uniforms_.push(shadows::poissonDiskUniforms());
     const rhi::Pipeline* bound = nullptr;
     for (const std::uint32_t index : drawOrder(scene, glm::vec3(frame.cameraPosition))) {
         const scene::Object& object = scene.objects[index];
@@ -346,6 +348,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             commands.bindTexture(kLitOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
             commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
             commands.bindTexture(kLitShadowCubeDepthsBinding, shadowCubes_->texture(), shadowCubes_->depthSampler());
+            rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonDisks);
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, uniforms_.push(objectUniforms(object, material)));

@@ -56,7 +56,15 @@ TEST(FilterConstantsTest, WritesEveryFilterAndEveryDiskPointOnce)
     EXPECT_NE(glsl.find("#define PENUMBRA_FILTER_POISSON 4\n"), std::string::npos);
     EXPECT_NE(glsl.find("#define PENUMBRA_FILTER_PCSS 5\n"), std::string::npos);
     EXPECT_NE(glsl.find("PENUMBRA_FILTER_SIZES[6] = int[](2, 3, 5, 7, 2, 2)"), std::string::npos);
-    EXPECT_NE(glsl.find("PENUMBRA_POISSON_DISK[112]"), std::string::npos);
+    EXPECT_NE(glsl.find("#define PENUMBRA_POISSON_DISK_POINTS 112\n"), std::string::npos);
+}
+
+TEST(PoissonDiskTest, UniformsHoldEveryDiskInOrder)
+{
+    const PoissonDiskUniforms u = poissonDiskUniforms();
+    EXPECT_EQ(glm::vec2(u.points[0].x, u.points[0].y), poissonDisk(16)[0]);
+    EXPECT_EQ(glm::vec2(u.points[8].x, u.points[8].y), poissonDisk(32)[0]);   // point 16
+    EXPECT_EQ(glm::vec2(u.points[55].z, u.points[55].w), poissonDisk(64)[63]); // point 111
 }
 
 TEST(RotationHashTest, IsDeterministicAndSpreadsAngles)

@@ -20,14 +20,7 @@ std::string filterConstantsGlsl()
         sizes += fmt::format("{}{}", sizes.empty() ? "" : ", ", filterSize(entry.filter));
     }
     text += fmt::format("const int PENUMBRA_FILTER_SIZES[{}] = int[]({});\n", kShadowFilterCount, sizes);
-    std::string points;
-    std::size_t total = 0;
-    for (const std::uint32_t count : kPoissonSampleCounts)
-        for (const glm::vec2& p : poissonDisk(count)) {
-            points += fmt::format("{}vec2({:.9g}, {:.9g})", total == 0 ? "" : ",\n    ", p.x, p.y);
-            ++total;
-        }
-    text += fmt::format("const vec2 PENUMBRA_POISSON_DISK[{}] = vec2[](\n    {});\n", total, points);
+    text += fmt::format("#define PENUMBRA_POISSON_DISK_POINTS {}\n", kPoissonDiskPoints);
     return text;
 }
 

@@ -71,4 +71,23 @@ std::span<const glm::vec2> poissonDisk(std::uint32_t count)
     throw rhi::Error(fmt::format("Poisson disk: {} points, allowed 16, 32, 64", count));
 }
 
+PoissonDiskUniforms poissonDiskUniforms()
+{
+    PoissonDiskUniforms u;
+    std::size_t next = 0;
+    for (const std::uint32_t count : {16u, 32u, 64u})
+        for (const glm::vec2& p : poissonDisk(count)) {
+            glm::vec4& slot = u.points[next / 2];
+            if (next % 2 == 0) {
+                slot.x = p.x;
+                slot.y = p.y;
+            } else {
+                slot.z = p.x;
+                slot.w = p.y;
+            }
+            ++next;
+        }
+    return u;
+}
+
 } // namespace penumbra::shadows
