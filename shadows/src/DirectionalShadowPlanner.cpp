@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -45,7 +46,9 @@ glm::vec2 lightTexelAnchor(const DirectionalCascadePlan& cascade)
 // the cascade's sphere, it does not move with the camera, so neither does the blocker search sized from it.
 float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBounds, float fallback)
 {
-    float top = fallback;
+    if (casterBounds.empty())
+        return fallback;
+    float top = std::numeric_limits<float>::max();
     for (const Bounds& caster : casterBounds)
         top = std::min(top, lightSpaceBounds(basis, caster).min.z);
     return top;
@@ -57,7 +60,7 @@ float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBoun
 glm::vec2 depthRow(const DirectionalShadowCascade& fit, float casterTop, const rhi::Conventions& conventions)
 {
     const glm::mat4 toTexture = conventions.clipToTexture() * fit.projection;
-    return {toTexture[2][2], toTexture[3][2] + toTexture[2][2] * (fit.nearDepth - std::min(casterTop, fit.nearDepth))};
+    return {toTexture[2][2], toTexture[3][2] + toTexture[2][2] * (fit.nearDepth - casterTop)};
 }
 
 void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions,

@@ -267,12 +267,12 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
         for (const DirectionalCascadePlan& cascade : a.lights[0].cascades) {
             const glm::vec4 soft = a.uniforms.tileSoft[cascade.tile];
             const glm::vec2 row{soft.z, soft.w};
-            // Depths at the near and the far plane are the light-space depth range apart in world units, and the near
-            // plane lies at or past the casters' top (the box's corner nearest the light).
+            // Depths at the near and the far plane are the light-space depth range apart in world units, measured from
+            // the casters' top (the box's corner nearest the light).
             const float nearDepth = conventions.windowDepth(cascade.fit.projection, 0.0f);
             const float farDepth = conventions.windowDepth(cascade.fit.projection, cascade.fit.farDepth - cascade.fit.nearDepth);
             const float top = lightSpaceBounds(cascade.fit.basis, casters[0]).min.z;
-            EXPECT_NEAR(orthographicDistanceFromNear(nearDepth, row), std::max(cascade.fit.nearDepth - top, 0.0f), 1e-3f);
+            EXPECT_NEAR(orthographicDistanceFromNear(nearDepth, row), cascade.fit.nearDepth - top, 1e-3f);
             EXPECT_NEAR(orthographicDistanceFromNear(farDepth, row) - orthographicDistanceFromNear(nearDepth, row),
                         cascade.fit.farDepth - cascade.fit.nearDepth, 1e-2f);
         }
