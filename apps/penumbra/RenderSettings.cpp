@@ -52,6 +52,14 @@ render::AmbientLight ambientOf(const Json& object, const std::string& source)
     return ambient;
 }
 
+float anisotropyOf(const Json& value, const std::string& source)
+{
+    if (!value.is_number() || value.get<float>() < 1.0f || value.get<float>() > kMaxAnisotropyOption)
+        throw rhi::Error(fmt::format("{}: anisotropy: {} is not a number from 1 (off) to {}", source, value.dump(),
+                                     kMaxAnisotropyOption));
+    return value.get<float>();
+}
+
 } // namespace
 
 RenderSettings loadRenderSettings(const std::filesystem::path& path)
@@ -66,13 +74,19 @@ RenderSettings loadRenderSettings(const std::filesystem::path& path)
     // The ambient object is this tool's; the rest is the shadow settings' JSON, whose parser names its own errors
     // (bad JSON included).
     Json root = Json::parse(text.str(), nullptr, false);
-    if (root.is_object() && root.contains("ambient")) {
+    if (!root.is_object() || (!root.contains("ambient") && !root.contains("anisotropy"))) {
+        settings.shadows = shadows::parseShadowSettings(text.str(), source);
+        return settings;
+    }
+    if (root.contains("ambient")) {
         settings.ambient = ambientOf(root["ambient"], source);
         root.erase("ambient");
-        settings.shadows = shadows::parseShadowSettings(root.dump(), source);
-    } else {
-        settings.shadows = shadows::parseShadowSettings(text.str(), source);
     }
+    if (root.contains("anisotropy")) {
+        settings.anisotropy = anisotropyOf(root["anisotropy"], source);
+        root.erase("anisotropy");
+    }
+    settings.shadows = shadows::parseShadowSettings(root.dump(), source);
     return settings;
 }
 

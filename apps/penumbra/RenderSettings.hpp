@@ -10,11 +10,17 @@ namespace penumbra::apps {
 
 // A --settings file: the shadow settings' JSON (shadows::parseShadowSettings) with an optional top-level "ambient"
 // object: {"color": [r, g, b], "intensity": i, "ground": [r, g, b]} (render::AmbientLight; each field optional,
-// "ground" makes it a sky/ground hemisphere).
+// "ground" makes it a sky/ground hemisphere) and an optional top-level "anisotropy" number, 1 to
+// kMaxAnisotropyOption (render::FrameDesc::maxAnisotropy).
 struct RenderSettings {
     shadows::ShadowSettings shadows;
     std::optional<render::AmbientLight> ambient;
+    std::optional<float> anisotropy;
 };
+
+// 16: what Vulkan requires of devices with samplerAnisotropy (the specification's Required Limits table,
+// maxSamplerAnisotropy) and more than GPUs offer.
+inline constexpr float kMaxAnisotropyOption = 16.0f;
 
 // Throws rhi::Error "<path>: <field>: <what>" for an unreadable file, bad JSON, an unknown field or a value out of
 // range.

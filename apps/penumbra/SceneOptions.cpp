@@ -7,6 +7,7 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/GltfLoader.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -79,6 +80,19 @@ std::string validateCamera(const std::string& camera)
 
 } // namespace
 
+CLI::Validator anisotropyValidator()
+{
+    return CLI::Validator(
+        [](std::string& s) {
+            float value = 0.0f;
+            const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+            return error == std::errc() && end == s.data() + s.size() && value >= 1.0f && value <= kMaxAnisotropyOption
+                       ? std::string()
+                       : fmt::format("'{}' is not a number from 1 (off) to {}", s, kMaxAnisotropyOption);
+        },
+        "N");
+}
+
 void addSceneOptions(CLI::App& command, SceneOptions& options)
 {
     command.add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
@@ -110,7 +124,14 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                                                            s, kAmbientSyntax, render::kMaxAmbientIntensity);
             },
             "AMBIENT"));
-    command.add_option("--settings", options.settings, "Shadow settings JSON file, with an optional \"ambient\" object")
+    command
+        .add_option("--anisotropy", options.anisotropy,
+                    fmt::format("Most anisotropic filtering of textures, 1 (off) to {}; more than the device allows is "
+                                "lowered to its limit and noted; default {}",
+                                kMaxAnisotropyOption, render::FrameDesc{}.maxAnisotropy))
+        ->check(anisotropyValidator());
+    command.add_option("--settings", options.settings,
+                       "Shadow settings JSON file, with optional \"ambient\" object and \"anisotropy\" number")
         ->check(CLI::ExistingFile);
     command
         .add_option("--filter", options.filter,
@@ -189,9 +210,11 @@ render::FrameDesc frameDesc(const SceneOptions& options)
         RenderSettings settings = loadRenderSettings(options.settings);
         frame.shadows = settings.shadows;
         frame.ambient = settings.ambient.value_or(frame.ambient);
+        frame.maxAnisotropy = settings.anisotropy.value_or(frame.maxAnisotropy);
     }
     if (!options.ambient.empty())
         frame.ambient = parseAmbientOption(options.ambient).value();
+    frame.maxAnisotropy = options.anisotropy.value_or(frame.maxAnisotropy);
     return frame;
 }
 

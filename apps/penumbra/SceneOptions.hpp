@@ -13,19 +13,22 @@
 
 namespace penumbra::apps {
 
-// What to render, shared by `render`, `parity` and `truth`: --scene, --camera, --light, --ambient, --settings,
-// --size, --filter, --light-size.
+// What to render, shared by `render`, `parity` and `truth`: --scene, --camera, --light, --ambient, --anisotropy,
+// --settings, --size, --filter, --light-size.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
     std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
+    std::optional<float> anisotropy; // empty: the settings file's, or FrameDesc's default
     std::string settings;
     std::string size = "1280x720";
     std::string filter;             // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
 };
 
+// --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
+CLI::Validator anisotropyValidator();
 
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);
@@ -39,7 +42,8 @@ struct LoadedScene {
 // errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 
-// Size, shadow settings and ambient light of the frame (--ambient over the settings file's "ambient"); throws
+// Size, shadow settings, ambient light and anisotropy of the frame (--ambient and --anisotropy over the settings
+// file's "ambient" and "anisotropy"); throws
 // rhi::Error naming the settings file and field.
 render::FrameDesc frameDesc(const SceneOptions& options);
 

@@ -2,6 +2,8 @@
 
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
+#include "RenderSettings.hpp"
+#include "SceneOptions.hpp"
 #include "ShadowScene.hpp"
 #include "Viewer.hpp"
 
@@ -53,6 +55,12 @@ void addViewCommand(CLI::App& app)
     view->add_flag("!--no-ui", options->ui, "Hide the settings panel");
     view->add_flag("--cascade-view", options->cascadeView, "Start with the cascade view");
     view->add_flag("--atlas-overlay", options->atlasOverlay, "Start with the shadow atlas overlay");
+    view->add_option("--anisotropy", options->maxAnisotropy,
+                     fmt::format("Most anisotropic filtering of textures, 1 (off) to {}; more than the device "
+                                 "allows is lowered to its limit",
+                                 kMaxAnisotropyOption))
+        ->check(anisotropyValidator())
+        ->capture_default_str();
     view->add_option("--filter", options->filter,
                      fmt::format("Every light's shadow filter: {}", shadows::filterCommandNames()))
         ->check(CLI::Validator(

@@ -2,6 +2,7 @@
 
 #include "penumbra/rhi/Format.hpp"
 
+#include <algorithm>
 #include <array>
 #include <fmt/format.h>
 #include <imgui.h>
@@ -179,6 +180,27 @@ bool lightSettings(scene::DirectionalLight& light, std::size_t index)
     return changed;
 }
 
+bool objectSettings(std::vector<ObjectShadowState>& objects, const scene::Scene& scene)
+{
+    constexpr std::array kCastingNames{"on", "off", "two-sided", "shadows only"};
+    bool changed = false;
+    ImGuiListClipper clipper;
+    clipper.Begin(int(std::min(objects.size(), scene.objects.size())));
+    while (clipper.Step())
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+            ImGui::PushID(int(3000 + i));
+            ObjectShadowState& object = objects[std::size_t(i)];
+            ImGui::SetNextItemWidth(110.0f);
+            changed |= enumCombo("##cast", object.cast, kCastingNames);
+            ImGui::SameLine();
+            changed |= ImGui::Checkbox("receive", &object.receive);
+            ImGui::SameLine();
+            ImGui::TextUnformatted(scene.objects[std::size_t(i)].name.c_str());
+            ImGui::PopID();
+        }
+    return changed;
+}
+
 void statusLines(const PanelStatus& status)
 {
     ImGui::Text("frame %.1f ms", status.frameMs);
@@ -194,7 +216,7 @@ void statusLines(const PanelStatus& status)
 
 } // namespace
 
-bool drawSettingsPanel(ViewState& state, const PanelStatus& status)
+bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene::Scene& scene)
 {
     bool changed = false;
     ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
@@ -204,6 +226,7 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status)
     changed |= ImGui::Checkbox("cascade view", &state.cascadeView);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
+    changed |= ImGui::SliderFloat("texture anisotropy", &state.maxAnisotropy, 1.0f, 16.0f, "%.0f");
     if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen))
         changed |= shadowSettings(state.shadows);
     if (ImGui::CollapsingHeader("lights")) {
@@ -214,6 +237,8 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status)
         for (std::size_t i = 0; i < state.pointLights.size(); ++i)
             changed |= pointLightSettings(state.pointLights[i], i);
     }
+    if (ImGui::CollapsingHeader("objects: cast and receive shadows"))
+        changed |= objectSettings(state.objects, scene);
     ImGui::End();
 
     if (state.atlasOverlay && status.atlasPicture) {

@@ -23,6 +23,10 @@ std::string applyViewState(const ViewState& edited, ViewState& applied, scene::S
         std::tie(scene.lights, scene.spotLights, scene.pointLights) = previous;
         return e.what();
     }
+    for (std::size_t i = 0; i < scene.objects.size() && i < candidate.objects.size(); ++i) {
+        scene.objects[i].castShadows = candidate.objects[i].cast;
+        scene.objects[i].receiveShadows = candidate.objects[i].receive;
+    }
     applied = std::move(candidate);
     return {};
 }
@@ -33,6 +37,8 @@ ViewState viewStateOf(const scene::Scene& scene)
     state.lights = scene.lights;
     state.spotLights = scene.spotLights;
     state.pointLights = scene.pointLights;
+    for (const scene::Object& object : scene.objects)
+        state.objects.push_back({object.castShadows, object.receiveShadows});
     return state;
 }
 

@@ -12,6 +12,12 @@
 
 namespace penumbra::viewer {
 
+// One object's shadow choices as the panel edits them (scene::Object::castShadows, receiveShadows).
+struct ObjectShadowState {
+    scene::ShadowCasting cast = scene::ShadowCasting::On;
+    bool receive = true;
+};
+
 // What the panel edits. The viewer renders with the last state that passed validation, so an
 // invalid edit shows its error in the panel and changes nothing else.
 struct ViewState {
@@ -19,8 +25,10 @@ struct ViewState {
     std::vector<scene::DirectionalLight> lights;
     std::vector<scene::SpotLight> spotLights;
     std::vector<scene::PointLight> pointLights;
+    std::vector<ObjectShadowState> objects; // one per scene object, in scene order
     bool cascadeView = false;
     bool atlasOverlay = false;
+    float maxAnisotropy = 8.0f; // render::FrameDesc::maxAnisotropy
 };
 
 // What the panel shows besides the state.
@@ -42,6 +50,7 @@ std::string applyViewState(const ViewState& edited, ViewState& applied, scene::S
 ViewState viewStateOf(const scene::Scene& scene);
 
 // Draws the panel into the current ImGui frame; returns whether the user changed `state`.
-bool drawSettingsPanel(ViewState& state, const PanelStatus& status);
+// Object names come from `scene`.
+bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene::Scene& scene);
 
 } // namespace penumbra::viewer

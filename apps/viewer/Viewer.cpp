@@ -48,6 +48,7 @@ public:
         applied_ = viewStateOf(scene_);
         applied_.cascadeView = options.cascadeView;
         applied_.atlasOverlay = options.atlasOverlay;
+        applied_.maxAnisotropy = options.maxAnisotropy;
         edited_ = applied_;
         if (options.ui) {
             imgui_.emplace(window_.handle());
@@ -95,7 +96,7 @@ private:
         camera_.update(input);
         if (imgui_) {
             imgui_->newFrame();
-            if (drawSettingsPanel(edited_, status_))
+            if (drawSettingsPanel(edited_, status_, scene_))
                 status_.error = applyViewState(edited_, applied_, scene_);
             ImGui::Render();
         }
@@ -121,6 +122,7 @@ private:
         frame.height = size.height;
         frame.shadows = applied_.shadows;
         frame.cascadeView = applied_.cascadeView;
+        frame.maxAnisotropy = applied_.maxAnisotropy;
         status_.stats = renderer_.render(camera_.camera(), frame);
         status_.notes = renderer_.notes();
         status_.atlasPicture = nullptr;

@@ -16,6 +16,7 @@ struct ViewerOptions {
     bool ui = true;                      // the settings panel
     bool cascadeView = false;            // start with the panel's toggles on
     bool atlasOverlay = false;
+    float maxAnisotropy = 8.0f;          // of texture sampling, 1 (off) to 16, as render::FrameDesc takes it
     std::string filter;             // every light's shadow filter (apps::applyLightOverrides); empty: their own
     std::optional<float> lightSize; // every light's source size
 };

@@ -9,15 +9,16 @@
 namespace penumbra::render {
 namespace {
 
-std::optional<shadows::ShadowCasterMode> casterMode(scene::CasterMode mode)
+// How a caster's texels enter the atlas; only asked of objects that cast (Scene::castsShadows).
+shadows::ShadowCasterMode casterMode(scene::CasterMode mode)
 {
     switch (mode) {
-    case scene::CasterMode::On: return shadows::ShadowCasterMode::Opaque;
     case scene::CasterMode::Clip: return shadows::ShadowCasterMode::Clip;
     case scene::CasterMode::Dither: return shadows::ShadowCasterMode::Dither;
+    case scene::CasterMode::On:
     case scene::CasterMode::Off: break;
     }
-    return std::nullopt;
+    return shadows::ShadowCasterMode::Opaque;
 }
 
 template <typename T>
@@ -34,7 +35,23 @@ std::string debugName(const scene::TextureImage& image)
     return "texture '" + image.name + "'";
 }
 
-std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image)
+// The texture alpha that the first Clip material reading it as its base colour cuts at (its alphaCutoff over its
+// base colour's alpha, which multiplies the texture's): its mip levels keep level 0's alpha-tested coverage
+// (rhi::generateMipChain), so leaves do not thin out, lit or in shadow, as they recede.
+std::optional<float> clipCutoffOf(const scene::Scene& scene, std::uint32_t image)
+{
+    for (const scene::Material& material : scene.materials) {
+        const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
+        if (material.caster != scene::CasterMode::Clip || !baseColor || baseColor->image != image)
+            continue;
+        const float cutoff = material.alphaCutoff / material.baseColor.a;
+        return cutoff > 0.0f && cutoff <= 1.0f ? std::optional(cutoff) : std::nullopt;
+    }
+    return std::nullopt;
+}
+
+std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image,
+                                            std::optional<float> alphaCutoff = std::nullopt)
 {
     auto texture = device.createTexture({.width = image.width,
                                          .height = image.height,
@@ -43,7 +60,7 @@ std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::Te
                                                        ? rhi::Format::RGBA8_SRGB
                                                        : rhi::Format::RGBA8,
                                          .debugName = debugName(image)});
-    rhi::writeMipChain(device, *texture, 0, std::as_bytes(std::span(image.rgba)));
+    rhi::writeMipChain(device, *texture, 0, std::as_bytes(std::span(image.rgba)), alphaCutoff);
     return texture;
 }
 
@@ -59,7 +76,7 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
                            upload(device, mesh.indices, rhi::BufferUsage::Index, name + " indices")});
     }
     for (const scene::TextureImage& image : scene.textures) {
-        textures_.push_back(uploadTexture(device, image));
+        textures_.push_back(uploadTexture(device, image, clipCutoffOf(scene, std::uint32_t(textures_.size()))));
         samplers_.push_back(device.createSampler(samplerDesc(image.sampler, anisotropy_, debugName(image))));
     }
     const scene::TextureImage white{.name = "white texel", .width = 1, .height = 1, .rgba = {255, 255, 255, 255},
@@ -112,12 +129,13 @@ std::vector<shadows::ShadowCaster> GpuScene::casters() const
     for (const scene::Object& object : scene_.objects) {
         const scene::Material& material = scene_.materialOf(object);
         const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
-        if (const auto mode = casterMode(material.caster))
+        if (scene_.castsShadows(object))
             casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
                                static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
-                               *mode, material.baseColor.a, material.alphaCutoff, &baseColorMap(material),
-                               &baseColorSampler(material), baseColor.has_value(), uvTransform(baseColor),
-                               material.doubleSided});
+                               casterMode(material.caster), material.baseColor.a, material.alphaCutoff,
+                               &baseColorMap(material), &baseColorSampler(material), baseColor.has_value(),
+                               uvTransform(baseColor),
+                               material.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided});
     }
     return casters;
 }
@@ -126,7 +144,7 @@ std::vector<shadows::Bounds> GpuScene::casterBounds() const
 {
     std::vector<shadows::Bounds> bounds;
     for (const scene::Object& object : scene_.objects)
-        if (casterMode(scene_.materialOf(object).caster))
+        if (scene_.castsShadows(object))
             bounds.push_back({object.worldBounds.min, object.worldBounds.max});
     return bounds;
 }

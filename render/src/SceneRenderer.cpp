@@ -168,7 +168,7 @@ LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Mater
         u.uvTransforms[2 * slot] = rows[0];
         u.uvTransforms[2 * slot + 1] = rows[1];
     }
-    u.flags = {material.receiveShadows ? 1 : 0, textures, material.unlit ? 1 : 0, material.blend ? 1 : 0};
+    u.flags = {object.receiveShadows && material.receiveShadows ? 1 : 0, textures, material.unlit ? 1 : 0, material.blend ? 1 : 0};
     return u;
 }
 
@@ -178,11 +178,13 @@ std::uint32_t pipelineIndex(bool doubleSided, bool blend) { return (doubleSided 
 
 // Opaque and masked objects in scene order, then blended ones from the farthest to the nearest (their world
 // bounds' centres from the camera), so each blends over what lies behind it (glTF 2.0 section 3.9.4, BLEND).
+// Shadows-only objects are not drawn.
 std::vector<std::uint32_t> drawOrder(const scene::Scene& scene, const glm::vec3& camera)
 {
     std::vector<std::uint32_t> order, blended;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
-        (scene.materialOf(scene.objects[i]).blend ? blended : order).push_back(i);
+        if (scene.objects[i].castShadows != scene::ShadowCasting::ShadowsOnly)
+            (scene.materialOf(scene.objects[i]).blend ? blended : order).push_back(i);
     const auto distance2 = [&](std::uint32_t i) {
         const glm::vec3 d = scene.objects[i].worldBounds.center() - camera;
         return glm::dot(d, d);

@@ -97,10 +97,34 @@ Plane halve(const Plane& source, std::uint32_t channels, bool alongX)
     return out;
 }
 
+// Share of the plane's texels whose alpha (channel 3 of 4) times `scale` reaches `cutoff`.
+double alphaCoverage(const Plane& plane, double scale, double cutoff)
+{
+    std::size_t covered = 0;
+    for (std::size_t i = 3; i < plane.values.size(); i += 4)
+        covered += plane.values[i] * scale >= cutoff ? 1 : 0;
+    return double(covered) / double(plane.values.size() / 4);
+}
+
+// `plane` with its alpha scaled so that alphaCoverage is as close to `coverage` as a bisection of the scale finds
+// (coverage grows with the scale), clamped to [0, 1].
+Plane withAlphaCoverage(Plane plane, double coverage, double cutoff)
+{
+    double low = 0.0, high = 64.0;
+    for (int step = 0; step < 32; ++step) {
+        const double mid = 0.5 * (low + high);
+        (alphaCoverage(plane, mid, cutoff) < coverage ? low : high) = mid;
+    }
+    for (std::size_t i = 3; i < plane.values.size(); i += 4)
+        plane.values[i] = std::min(plane.values[i] * high, 1.0);
+    return plane;
+}
+
 } // namespace
 
 std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_t width, std::uint32_t height,
-                                                     std::uint32_t levels, std::span<const std::byte> level0)
+                                                     std::uint32_t levels, std::span<const std::byte> level0,
+                                                     std::optional<float> alphaCutoff)
 {
     const Layout layout = layoutOf(format);
     const std::uint64_t expected = std::uint64_t(width) * height * texelSize(format);
@@ -110,22 +134,28 @@ std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_
     if (levels == 0 || levels > fullMipChain(width, height))
         throw Error(fmt::format("generateMipChain: {} levels is outside 1..{} for {}x{}", levels,
                                 fullMipChain(width, height), width, height));
+    if (alphaCutoff && (layout.channels != 4 || !(*alphaCutoff > 0.0f && *alphaCutoff <= 1.0f)))
+        throw Error(fmt::format("generateMipChain: an alpha cutoff ({}) needs an RGBA format and a value in (0, 1], "
+                                "got {}",
+                                *alphaCutoff, formatName(format)));
     std::vector<std::vector<std::byte>> chain{std::vector<std::byte>(level0.begin(), level0.end())};
     Plane plane = decode(layout, width, height, level0);
+    const double coverage = alphaCutoff ? alphaCoverage(plane, 1.0, *alphaCutoff) : 0.0;
     for (std::uint32_t level = 1; level < levels; ++level) {
         if (plane.width > 1)
             plane = halve(plane, layout.channels, true);
         if (plane.height > 1)
             plane = halve(plane, layout.channels, false);
-        chain.push_back(encode(layout, plane));
+        chain.push_back(encode(layout, alphaCutoff ? withAlphaCoverage(plane, coverage, *alphaCutoff) : plane));
     }
     return chain;
 }
 
-void writeMipChain(Device& device, Texture& texture, std::uint32_t layer, std::span<const std::byte> level0)
+void writeMipChain(Device& device, Texture& texture, std::uint32_t layer, std::span<const std::byte> level0,
+                   std::optional<float> alphaCutoff)
 {
     const TextureDesc& desc = texture.desc();
-    const auto chain = generateMipChain(desc.format, desc.width, desc.height, desc.mipLevels, level0);
+    const auto chain = generateMipChain(desc.format, desc.width, desc.height, desc.mipLevels, level0, alphaCutoff);
     for (std::uint32_t level = 0; level < desc.mipLevels; ++level)
         device.writeTexture(texture, layer, level, chain[level]);
 }

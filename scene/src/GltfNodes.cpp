@@ -2,6 +2,7 @@
 
 #include "GltfMaterials.hpp"
 #include "GltfMeshes.hpp"
+#include "GltfNodeShadows.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -27,7 +28,7 @@ public:
     {
     }
 
-    void visit(int index, const glm::mat4& parent, const std::string& owner)
+    void visit(int index, const glm::mat4& parent, const NodeShadows& parentShadows, const std::string& owner)
     {
         const tinygltf::Node& node = document_.at(model_.nodes, index, "node", owner);
         const auto slot = std::size_t(index);
@@ -36,8 +37,9 @@ public:
             document_.fail(fmt::format("{} is its own ancestor", name));
         onPath_[slot] = true;
         const glm::mat4 world = parent * localTransform(node);
+        const NodeShadows shadows = readNodeShadows(document_, node, index, parentShadows);
         if (node.mesh >= 0)
-            addMesh(index, node, world);
+            addMesh(index, node, world, shadows);
         if (node.camera >= 0) {
             document_.at(model_.cameras, node.camera, "camera", name);
             walk_.cameras.push_back({node.camera, index, world});
@@ -51,14 +53,14 @@ public:
             walk_.lights.push_back({lightIndex, index, world});
         }
         for (const int child : node.children)
-            visit(child, world, name);
+            visit(child, world, shadows, name);
         onPath_[slot] = false;
     }
 
     NodeWalk result() { return std::move(walk_); }
 
 private:
-    void addMesh(int index, const tinygltf::Node& node, const glm::mat4& world)
+    void addMesh(int index, const tinygltf::Node& node, const glm::mat4& world, const NodeShadows& shadows)
     {
         const std::string name = describe("node", index, node.name);
         const tinygltf::Mesh& mesh = document_.at(model_.meshes, node.mesh, "mesh", name);
@@ -81,8 +83,10 @@ private:
                             .first;
             }
             const std::string base = node.name.empty() ? (mesh.name.empty() ? name : mesh.name) : node.name;
-            scene_.addObject(mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), found->second,
-                             material, world);
+            Object& object = scene_.objects[scene_.addObject(
+                mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), found->second, material, world)];
+            object.castShadows = shadows.cast;
+            object.receiveShadows = shadows.receive;
         }
     }
 
@@ -143,7 +147,7 @@ NodeWalk walkNodes(const Document& document, Scene& scene, std::vector<std::stri
 {
     Walker walker(document, scene, notes);
     for (const int root : rootNodes(document, notes))
-        walker.visit(root, glm::mat4(1.0f), "the scene");
+        walker.visit(root, glm::mat4(1.0f), NodeShadows{}, "the scene");
     return walker.result();
 }
 

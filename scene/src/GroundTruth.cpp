@@ -121,7 +121,7 @@ LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowR
                 if (!sample.hit())
                     continue;
                 const ShadowRay ray = rayFrom(shadowRayOrigin(sample, normalOffset));
-                if (!scene.materialOf(scene.objects[sample.object]).receiveShadows)
+                if (!scene.receivesShadows(scene.objects[sample.object]))
                     mask.pixels[i] = LightVisibility::NotReceiving;
                 else if (glm::dot(sample.normal, ray.direction) <= 0.0f)
                     mask.pixels[i] = LightVisibility::FacingAway;

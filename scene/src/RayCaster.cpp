@@ -51,7 +51,10 @@ std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& materi
     return std::nullopt;
 }
 
-bool isSeen(const Material& material, RayKind kind) { return kind == RayKind::Camera || material.caster != CasterMode::Off; }
+bool isSeen(const Scene& scene, const Object& object, RayKind kind)
+{
+    return kind == RayKind::Camera ? object.castShadows != ShadowCasting::ShadowsOnly : scene.castsShadows(object);
+}
 
 struct PreparedRay {
     glm::vec3 origin;
@@ -163,7 +166,7 @@ RayCaster::RayCaster(const Scene& scene, RayKind kind) : data_(std::make_unique<
         const Object& object = scene.objects[objectIndex];
         const Material& material = scene.materialOf(object);
         data_->alphaTests.push_back(alphaTestFor(scene, material, kind));
-        if (!isSeen(material, kind))
+        if (!isSeen(scene, object, kind))
             continue;
         const MeshData& mesh = scene.meshOf(object);
         for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {

@@ -4,11 +4,19 @@
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
 namespace penumbra::scene {
 namespace {
+
+constexpr std::array<std::pair<ShadowCasting, std::string_view>, 4> kShadowCastingNames{{
+    {ShadowCasting::On, "on"},
+    {ShadowCasting::Off, "off"},
+    {ShadowCasting::TwoSided, "twoSided"},
+    {ShadowCasting::ShadowsOnly, "shadowsOnly"},
+}};
 
 constexpr float kUnitTolerance = 1e-3f;
 // Relative to the box's extent: the stored box may come from another float evaluation order.
@@ -149,6 +157,22 @@ void validateCamera(const Camera& camera)
 }
 
 } // namespace
+
+std::string_view shadowCastingName(ShadowCasting casting)
+{
+    for (const auto& [value, name] : kShadowCastingNames)
+        if (value == casting)
+            return name;
+    return "unknown";
+}
+
+std::optional<ShadowCasting> parseShadowCasting(std::string_view name)
+{
+    for (const auto& [value, known] : kShadowCastingNames)
+        if (known == name)
+            return value;
+    return std::nullopt;
+}
 
 std::uint32_t Scene::addMesh(MeshData mesh)
 {

@@ -26,6 +26,19 @@ TEST(ViewStateTest, AValidEditIsAppliedToTheStateAndTheSceneWithDirectionsNormal
     EXPECT_EQ(f.scene.lights[1].intensity, 3.0f);
 }
 
+TEST(ViewStateTest, ObjectShadowChoicesReachTheScene)
+{
+    scene::Scene scene = scene::makeShadowTestScene();
+    ViewState applied = viewStateOf(scene);
+    ASSERT_EQ(applied.objects.size(), scene.objects.size());
+    ViewState edited = applied;
+    edited.objects[1] = {scene::ShadowCasting::ShadowsOnly, false};
+    EXPECT_EQ(applyViewState(edited, applied, scene), "");
+    EXPECT_EQ(scene.objects[1].castShadows, scene::ShadowCasting::ShadowsOnly);
+    EXPECT_FALSE(scene.objects[1].receiveShadows);
+    EXPECT_EQ(scene.objects[0].castShadows, scene::ShadowCasting::On);
+}
+
 TEST(ViewStateTest, SpotAndPointLightEditsReachTheSceneAndBadOnesAreRefused)
 {
     scene::Scene scene = scene::makeMixedLightsScene();

@@ -41,6 +41,9 @@ struct GltfScene {
 //   once) with texCoord and KHR_texture_transform, normal scale, occlusion strength, emissive with
 //   KHR_materials_emissive_strength, doubleSided, KHR_materials_unlit; alphaMode OPAQUE ->
 //   CasterMode::On, MASK -> Clip with alphaCutoff, BLEND -> Dither and Material::blend.
+// - per node, extras {"penumbra": {"castShadows": "on" | "off" | "twoSided" | "shadowsOnly",
+//   "receiveShadows": bool}} set Object::castShadows and receiveShadows of its primitives; children
+//   inherit what they do not set.
 // - what is left out (skins, morph targets, animations, other extensions) is noted once per file.
 // - KHR_lights_punctual: directional -> Scene::lights, spot -> spotLights (cone angles are
 //   half-angles in both), point -> pointLights; lights shine along their node's -z. A light

@@ -20,7 +20,8 @@ namespace penumbra::scene {
 // a dithered caster's expected coverage is its alpha, which a binary answer cannot give, so
 // the ground truth thresholds it at kDitherShadowThreshold; compare dithered shadows
 // statistically, not per pixel. Camera is what the lit pass draws: Clip materials are
-// clipped there too, Dither ones are drawn solid.
+// clipped there too, Dither ones are drawn solid. Per object, Object::castShadows Off removes the
+// object from Shadow rays and ShadowsOnly from Camera rays.
 enum class RayKind : std::uint8_t { Shadow, Camera };
 
 inline constexpr float kDitherShadowThreshold = 0.5f;

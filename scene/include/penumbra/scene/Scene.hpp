@@ -25,6 +25,21 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Whether an object casts shadows, and how, on top of what its material says (Material::caster decides
+// which texels of a casting surface block light). The per-renderer choice of Unity's
+// Rendering.ShadowCastingMode (Scripting API), which real-time scenes rely on for proxies and for
+// hiding shadow-only geometry.
+enum class ShadowCasting : std::uint8_t {
+    On,          // casts as its material says, culled as the material says (doubleSided casts both faces)
+    Off,         // drawn, casts nothing
+    TwoSided,    // casts with both faces whatever its material's culling
+    ShadowsOnly, // not drawn, casts as On
+};
+
+// "on", "off", "twoSided", "shadowsOnly": the names in glTF extras and in the viewer.
+std::string_view shadowCastingName(ShadowCasting casting);
+std::optional<ShadowCasting> parseShadowCasting(std::string_view name);
+
 // One drawn instance: meshes[mesh] with materials[material], placed by transform.
 // worldBounds = meshes[mesh].bounds.transformed(transform); Scene::addObject fills it and
 // validate() rejects a stale one, because shadow fitting and culling trust it.
@@ -38,6 +53,9 @@ struct Object {
     std::uint32_t material = 0;
     glm::mat4 transform{1.0f};
     Bounds worldBounds;
+    ShadowCasting castShadows = ShadowCasting::On;
+    // False: lit as if nothing blocked its lights (and its material's receiveShadows = false does the same).
+    bool receiveShadows = true;
 };
 
 struct Scene {
@@ -59,6 +77,13 @@ struct Scene {
     std::optional<std::uint32_t> findObject(std::string_view name) const;
     const Material& materialOf(const Object& object) const { return materials.at(object.material); }
     const MeshData& meshOf(const Object& object) const { return meshes.at(object.mesh); }
+    // Shadow maps darken the object: both it and its material receive shadows.
+    bool receivesShadows(const Object& object) const { return object.receiveShadows && materialOf(object).receiveShadows; }
+    // The object enters shadow maps: neither it nor its material is set not to cast.
+    bool castsShadows(const Object& object) const
+    {
+        return object.castShadows != ShadowCasting::Off && materialOf(object).caster != CasterMode::Off;
+    }
 
     // Box of every object's world bounds (empty for a scene without objects).
     Bounds worldBounds() const;

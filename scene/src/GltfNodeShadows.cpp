@@ -1,0 +1,33 @@
+#include "GltfNodeShadows.hpp"
+
+namespace penumbra::scene::gltf {
+
+NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node, int index,
+                            const NodeShadows& inherited)
+{
+    NodeShadows shadows = inherited;
+    if (!node.extras.IsObject() || !node.extras.Has("penumbra"))
+        return shadows;
+    const std::string pointer = fmt::format("/nodes/{}/extras/penumbra", index);
+    const tinygltf::Value& ours = node.extras.Get("penumbra");
+    if (!ours.IsObject())
+        document.fail(fmt::format("{}: expected an object with castShadows and receiveShadows", pointer));
+    if (ours.Has("castShadows")) {
+        const tinygltf::Value& value = ours.Get("castShadows");
+        const std::optional<ShadowCasting> cast =
+            value.IsString() ? parseShadowCasting(value.Get<std::string>()) : std::nullopt;
+        if (!cast)
+            document.fail(fmt::format("{}/castShadows: expected one of \"on\", \"off\", \"twoSided\", \"shadowsOnly\"",
+                                      pointer));
+        shadows.cast = *cast;
+    }
+    if (ours.Has("receiveShadows")) {
+        const tinygltf::Value& value = ours.Get("receiveShadows");
+        if (!value.IsBool())
+            document.fail(fmt::format("{}/receiveShadows: expected true or false", pointer));
+        shadows.receive = value.Get<bool>();
+    }
+    return shadows;
+}
+
+} // namespace penumbra::scene::gltf
