@@ -93,6 +93,17 @@ CLI::Validator anisotropyValidator()
         "N");
 }
 
+CLI::Validator filterValidator()
+{
+    return CLI::Validator(
+        [](std::string& s) {
+            return shadows::filterFromCommandName(s) ? std::string()
+                                                     : fmt::format("'{}' is not one of {}", s,
+                                                                   shadows::filterCommandNames());
+        },
+        "FILTER");
+}
+
 void addSceneOptions(CLI::App& command, SceneOptions& options)
 {
     command.add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
@@ -137,13 +148,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         .add_option("--filter", options.filter,
                     fmt::format("Every light's shadow filter, over the settings' and the lights' own: {}",
                                 shadows::filterCommandNames()))
-        ->check(CLI::Validator(
-            [](std::string& s) {
-                return shadows::filterFromCommandName(s)
-                           ? std::string()
-                           : fmt::format("'{}' is not one of {}", s, shadows::filterCommandNames());
-            },
-            "FILTER"));
+        ->check(filterValidator());
     command
         .add_option("--light-size", options.lightSize,
                     fmt::format("Every light's source size for soft shadows: degrees of angular diameter for "

@@ -30,6 +30,9 @@ struct SceneOptions {
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
 CLI::Validator anisotropyValidator();
 
+// --filter's check, for every command that takes it: a shadows::filterFromCommandName name.
+CLI::Validator filterValidator();
+
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);
 

@@ -63,13 +63,7 @@ void addViewCommand(CLI::App& app)
         ->capture_default_str();
     view->add_option("--filter", options->filter,
                      fmt::format("Every light's shadow filter: {}", shadows::filterCommandNames()))
-        ->check(CLI::Validator(
-            [](std::string& s) {
-                return shadows::filterFromCommandName(s)
-                           ? std::string()
-                           : fmt::format("'{}' is not one of {}", s, shadows::filterCommandNames());
-            },
-            "FILTER"));
+        ->check(filterValidator());
     view->add_option("--light-size", options->lightSize,
                      "Every light's source size: degrees of angular diameter (directional), world units of radius "
                      "(spot, point)")

@@ -58,23 +58,22 @@ AreaLightSource areaLightOf(const DirectionalLight& light)
     return source;
 }
 
-AreaLightSource areaLightOf(const SpotLight& light)
+namespace {
+
+AreaLightSource diskAt(glm::vec3 position, float radius)
 {
     AreaLightSource source;
     source.atInfinity = false;
-    source.position = light.position;
-    source.radius = light.sourceRadius;
+    source.position = position;
+    source.radius = radius;
     return source;
 }
 
-AreaLightSource areaLightOf(const PointLight& light)
-{
-    AreaLightSource source;
-    source.atInfinity = false;
-    source.position = light.position;
-    source.radius = light.sourceRadius;
-    return source;
-}
+} // namespace
+
+AreaLightSource areaLightOf(const SpotLight& light) { return diskAt(light.position, light.sourceRadius); }
+
+AreaLightSource areaLightOf(const PointLight& light) { return diskAt(light.position, light.sourceRadius); }
 
 SoftVisibilityMap traceAreaLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                            const AreaLightSource& light, std::uint32_t raysPerSide,
