@@ -1,6 +1,6 @@
-// Directional shadow attenuation: cascade selection, fades, normal offset and tent-filtered PCF over
-// the atlas. The uniform block is penumbra::shadows::DirectionalShadowUniforms; the filter is the
-// same math as penumbra::shadows::tentFilterTaps.
+// Directional shadow attenuation: cascade selection, fades, normal offset and each light's filter over the
+// atlas: tent-filtered PCF (penumbra::shadows::tentFilterTaps) or the Poisson and PCSS filters
+// (soft_shadows.glsl). The uniform block is penumbra::shadows::DirectionalShadowUniforms.
 
 layout(std140, binding = 2) uniform DirectionalShadows {
     mat4 worldToAtlas[16];
@@ -10,6 +10,10 @@ layout(std140, binding = 2) uniform DirectionalShadows {
     vec4 atlasSize;
     ivec4 config;
     vec4 lightShadowData[4];
+    vec4 tileSoft[16];
+    vec4 lightSoft[4];
+    vec4 softScales;
+    vec4 softCounts;
 } shadows;
 
 // Read with texelFetch (shadow_filter.glsl).
@@ -61,22 +65,32 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
     return s;
 }
 
-// The directional atlas's tile `tile` filtered at atlas position (u, v, depth).
-float filterDirectionalShadow(vec3 atlasPosition, int tile)
+// The directional atlas's tile `tile` filtered at atlas position (u, v, depth) by light `slot`'s filter.
+float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slot)
 {
     const int split = int(shadows.atlasSize.x * shadows.atlasSize.w + 0.5);
     const int tileSize = int(shadows.atlasSize.z);
     const ivec2 tileMin = ivec2(tile % split, tile / split) * tileSize;
-    return filterShadowTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, shadows.config.y, tileMin,
-                            tileMin + tileSize - 1);
+    const int filterIndex = int(shadows.lightShadowData[slot].w);
+    if (filterIndex < PENUMBRA_FILTER_POISSON)
+        return filterShadowTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, filterIndex, tileMin,
+                                tileMin + tileSize - 1);
+    const mat3 toAtlas = mat3(shadows.worldToAtlas[tile]);
+    const vec4 tileSoft = shadows.tileSoft[tile];
+    const SoftTile t = softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, shadows.atlasSize.x,
+                                tileMin, tileMin + tileSize - 1, tileSoft.xy);
+    return directionalSoftShadow(shadowAtlas, t, filterIndex, softControls(shadows.softScales, shadows.softCounts),
+                                 tileSoft.zw, shadows.lightSoft[slot].x, shadows.cascadeData[cascade].z);
 }
 
-// The receiver moved by its normal offset over the cascade's filter-sized texel diagonal, then filtered.
-float sampleCascade(int tile, int cascade, vec3 position, vec3 normal, vec3 towardsLight, float normalBias)
+// The receiver moved by its normal offset over the cascade's filter-sized texel diagonal (scaled to the light's
+// filter), then filtered.
+float sampleCascade(int tile, int cascade, int slot, vec3 position, vec3 normal, vec3 towardsLight, float normalBias)
 {
-    precise vec3 biased =
-        position + receiverNormalOffset(normal, towardsLight, normalBias * shadows.cascadeData[cascade].y);
-    return filterDirectionalShadow(transformPoint(shadows.worldToAtlas[tile], biased).xyz, tile);
+    precise vec3 biased = position + receiverNormalOffset(normal, towardsLight,
+                                                          normalBias * shadows.cascadeData[cascade].y *
+                                                              shadows.lightSoft[slot].y);
+    return filterDirectionalShadow(transformPoint(shadows.worldToAtlas[tile], biased).xyz, tile, cascade, slot);
 }
 
 // The filtered shadow map alone, before any strength or fade (1 = lit): what ground truth compares.
@@ -85,9 +99,14 @@ float directionalShadowVisibility(int slot, CascadeSelection s, vec3 position, v
 {
     const vec4 light = shadows.lightShadowData[slot];
     const int tile = int(light.z) + s.index;
-    float shadow = sampleCascade(tile, s.index, position, normal, towardsLight, light.y);
-    if (s.blend < 1.0)
-        shadow = mix(sampleCascade(tile + 1, s.index + 1, position, normal, towardsLight, light.y), shadow, s.blend);
+    // One call site for both cascades of a soft blend: the compilers inline every call, and the soft filters' loops
+    // are long.
+    float shadow = 0.0;
+    const int cascades = s.blend < 1.0 ? 2 : 1;
+    for (int k = 0; k < cascades; ++k) {
+        const float weight = cascades == 1 ? 1.0 : (k == 0 ? s.blend : 1.0 - s.blend);
+        shadow += weight * sampleCascade(tile + k, s.index + k, slot, position, normal, towardsLight, light.y);
+    }
     return shadow;
 }
 

@@ -6,6 +6,7 @@
 
 #include "transform.glsl"
 #include "shadow_filter.glsl"
+#include "soft_shadows.glsl"
 #include "directional_shadows.glsl"
 #include "other_shadows.glsl"
 #include "lit.glsl"
@@ -147,6 +148,7 @@ void main()
     const vec3 n = gl_FrontFacing ? frontNormal() : -frontNormal();
     // The triangle's plane, for the shadows' normal offset (its sign does not matter: it is turned to each light).
     const vec3 geometric = normalize(cross(dFdxFine(vPosition), dFdyFine(vPosition)));
+    setReceiverDerivatives(dFdxFine(vPosition), dFdyFine(vPosition));
     const vec3 toCamera = frame.cameraPosition.xyz - vPosition;
     const vec3 v = normalize(toCamera);
     const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);

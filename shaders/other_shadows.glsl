@@ -9,12 +9,18 @@ layout(std140, binding = 4) uniform OtherShadows {
     vec4 cubeData[4];
     vec4 atlasSize;
     ivec4 config;
+    vec4 tileSoft[16];
+    vec4 cubeSoft[4];
+    vec4 softScales;
+    vec4 softCounts;
 } otherShadows;
 
 // Read with texelFetch (shadow_filter.glsl).
 layout(binding = 5) uniform sampler2D otherShadowAtlas;
 // Nearest comparisons, the compare op the convention's (lit where the receiver is nearer or as near).
 layout(binding = 6) uniform samplerCubeArrayShadow pointShadowCubes;
+// The same cubes read raw, no comparison: the soft filters compare against the receiver plane themselves.
+layout(binding = PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS) uniform samplerCubeArray pointShadowCubeDepths;
 
 const int PENUMBRA_POINT_CUBE_MAP = 1;
 
@@ -55,8 +61,91 @@ float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
         position + receiverNormalOffset(normal, normalize(-fromLight), distanceToPlane * otherShadows.tileData[tile].x);
     const vec4 p = transformPoint(otherShadows.worldToAtlas[tile], biased);
     const vec4 bounds = otherShadows.tileBounds[tile];
-    return filterShadowTile(otherShadowAtlas, p.xyz / p.w, otherShadows.atlasSize.x, otherShadows.config.x,
-                            ivec2(bounds.xy), ivec2(bounds.zw));
+    const int filterIndex = int(otherShadows.tileData[tile].y);
+    if (filterIndex < PENUMBRA_FILTER_POISSON)
+        return filterShadowTile(otherShadowAtlas, p.xyz / p.w, otherShadows.atlasSize.x, filterIndex,
+                                ivec2(bounds.xy), ivec2(bounds.zw));
+    const mat4 m = otherShadows.worldToAtlas[tile];
+    const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(m, p, receiverDx), projectedDerivative(m, p, receiverDy),
+                                otherShadows.atlasSize.x, ivec2(bounds.xy), ivec2(bounds.zw), vec2(0.0));
+    return perspectiveSoftShadow(otherShadowAtlas, t, filterIndex,
+                                 softControls(otherShadows.softScales, otherShadows.softCounts),
+                                 otherShadows.tileSoft[tile]);
+}
+
+// Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read
+// raw from the cube array with hardware face selection, compared against the receiver's plane along each tap's ray:
+// its major-axis distance there, as window depth (cubeData x, y).
+struct CubeReceiver {
+    vec3 d;        // light to the receiver
+    vec3 u;
+    vec3 v;
+    vec3 normal;   // the receiver plane's
+    int cube;
+    vec4 data;     // cubeData
+    mat2 rotation;
+};
+
+float cubePlaneDepth(CubeReceiver r, vec3 tap)
+{
+    const float along = dot(r.normal, tap);
+    // Rays that miss the plane (edge-on or behind): the receiver's own distance.
+    const float s = abs(along) > 1e-6 ? dot(r.normal, r.d) / along : -1.0;
+    const vec3 a = abs(s > 0.0 ? tap * s : r.d);
+    const float major = max(max(a.x, a.y), a.z);
+    return (r.data.x * -major + r.data.y) / major;
+}
+
+vec3 cubeTap(CubeReceiver r, int index, float radius)
+{
+    const vec2 o = radius * (r.rotation * poissonPoint(index));
+    return r.d + o.x * r.u + o.y * r.v;
+}
+
+// (average major-axis distance of the blockers, their count).
+vec2 cubeSearchBlockers(CubeReceiver r, float radius, int count)
+{
+    const int first = count - 16;
+    float sum = 0.0;
+    float blockers = 0.0;
+    for (int i = 0; i < count; ++i) {
+        const vec3 tap = cubeTap(r, first + i, radius);
+        const float stored = texture(pointShadowCubeDepths, vec4(tap, float(r.cube))).r;
+        if (penumbraIsNearer(stored, cubePlaneDepth(r, tap))) {
+            sum += perspectiveDistance(stored, r.data.xy);
+            blockers += 1.0;
+        }
+    }
+    return vec2(blockers > 0.0 ? sum / blockers : 0.0, blockers);
+}
+
+float cubePoissonFilter(CubeReceiver r, float radius, int count)
+{
+    const int first = count - 16;
+    float lit = 0.0;
+    for (int i = 0; i < count; ++i) {
+        const vec3 tap = cubeTap(r, first + i, radius);
+        lit += penumbraIsNearer(texture(pointShadowCubeDepths, vec4(tap, float(r.cube))).r, cubePlaneDepth(r, tap))
+                   ? 0.0
+                   : 1.0;
+    }
+    return lit / float(count);
+}
+
+float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
+{
+    const SoftControls c = softControls(otherShadows.softScales, otherShadows.softCounts);
+    float radius = c.poissonRadius;
+    if (filterIndex == PENUMBRA_FILTER_PCSS) {
+        const vec3 a = abs(r.d);
+        const float receiver = max(max(a.x, a.y), a.z);
+        const vec2 blockers =
+            cubeSearchBlockers(r, perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c), c.blockerSamples);
+        if (blockers.y == 0.0)
+            return 1.0;
+        radius = perspectivePenumbraTexels(receiver, blockers.x, cubeSoft.y, c);
+    }
+    return cubePoissonFilter(r, radius, c.filterSamples);
 }
 
 // Cube-map mode: a k x k box of nearest comparisons (k = 2, 3, 5, 7 by the filter) spread over the face's
@@ -74,7 +163,17 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
     const float reference = (data.x * -major + data.y) / major;
     const vec3 u = cubeFaceAxis((face + 2) % 6) * (2.0 * major * data.w);
     const vec3 v = cubeFaceAxis((face + 4) % 6) * (2.0 * major * data.w);
-    const int k = int[](2, 3, 5, 7)[otherShadows.config.x];
+    const vec4 cubeSoft = otherShadows.cubeSoft[cube];
+    const int filterIndex = int(cubeSoft.x);
+    if (filterIndex >= PENUMBRA_FILTER_POISSON) {
+        // The receiver's texel on its face, offset by face: the light's own texel grid for the disk's rotation.
+        const vec2 onFace = vec2(dot(d, cubeFaceAxis((face + 2) % 6)), dot(d, cubeFaceAxis((face + 4) % 6))) / major;
+        const ivec2 texel = ivec2(floor((onFace * 0.5 + 0.5) / data.w)) + ivec2(face * int(1.0 / data.w + 0.5), 0);
+        const CubeReceiver r = CubeReceiver(d, u, v, dot(normal, d) > 0.0 ? -normal : normal, cube, data,
+                                            diskRotation(texel));
+        return cubeSoftShadow(r, filterIndex, cubeSoft);
+    }
+    const int k = PENUMBRA_FILTER_SIZES[filterIndex];
     float lit = 0.0;
     for (int y = 0; y < k; ++y)
         for (int x = 0; x < k; ++x) {

@@ -4,6 +4,7 @@
 // cannot filter depth linearly, conventions note section 4).
 
 #include "normal_offset.glsl"
+#include "shadow_constants.glsl"
 
 // 1 where the stored caster is not nearer to the light than the receiver (lit), else 0.
 float compareTexel(sampler2D atlas, ivec2 texel, float receiverDepth)

@@ -58,11 +58,12 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 5> kNamedScenes{{{"test", scene::makeShadowTestScene},
+constexpr std::array<NamedScene, 6> kNamedScenes{{{"test", scene::makeShadowTestScene},
                                                   {"key-light", scene::makeSingleLightScene},
                                                   {"mixed", scene::makeMixedLightsScene},
                                                   {"room", scene::makePointLightRoomScene},
-                                                  {"forest", scene::makeForestScene}}};
+                                                  {"forest", scene::makeForestScene},
+                                                  {"contact", scene::makeContactScene}}};
 
 } // namespace
 

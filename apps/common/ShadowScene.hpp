@@ -47,7 +47,7 @@ struct ShadowPictures {
 // listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
-inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest";
+inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact";
 
 // How renderShadowScene runs: with the validation layer / debug output (the library's default, and the tests'),
 // and whether it reads the atlases back (AtlasPictures; a 4096^2 atlas is 64 MiB to copy).

@@ -5,6 +5,7 @@
 #include "RawDraws.hpp"
 #include "SceneBench.hpp"
 #include "ShadowBench.hpp"
+#include "SoftShadowBench.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 
@@ -98,13 +99,22 @@ void runBenchmarks(const BenchOptions& options)
     if (wants(options, "shadows"))
         shadowBench.emplace(options.configurations, options.minTime);
 
+    std::optional<SoftShadowBench> softBench;
+    if (wants(options, "soft"))
+        softBench.emplace(options.configurations, options.minTime);
     CollectingReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
 
-    nlohmann::json json = {{"draws", nlohmann::json::array()}, {"shadows", nlohmann::json::array()}};
+    nlohmann::json json = {{"draws", nlohmann::json::array()},
+                           {"shadows", nlohmann::json::array()},
+                           {"soft", nlohmann::json::array()}};
     if (shadowBench) {
         shadowBench->printSummary();
         json["shadows"] = shadowBench->toJson();
+    }
+    if (softBench) {
+        softBench->printSummary();
+        json["soft"] = softBench->toJson();
     }
     if (!cases.empty())
         fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw",
@@ -140,7 +150,8 @@ void addBenchCommand(CLI::App& app)
                  "through hand-written raw API code, and the shadow passes of the test scene; or, with --scene, "
                  "every pass of any scene's frames");
     CLI::Option* suites =
-        bench->add_option("-s,--suites", options->suites, "draws, shadows")->check(CLI::IsMember({"draws", "shadows"}));
+        bench->add_option("-s,--suites", options->suites, "draws, shadows, soft (the soft-shadow filters' lit pass)")
+            ->check(CLI::IsMember({"draws", "shadows", "soft"}));
     CLI::Option* configurations =
         bench->add_option("-c,--configurations", options->configurations, "Configurations to measure")
             ->check(configurationValidator());

@@ -2,6 +2,7 @@
 
 #include "CommandLineSpecs.hpp"
 #include "LightOption.hpp"
+#include "LightOverrides.hpp"
 #include "RenderSettings.hpp"
 
 #include "penumbra/rhi/Error.hpp"
@@ -55,6 +56,17 @@ CLI::Validator anisotropyValidator()
         "N");
 }
 
+CLI::Validator filterValidator()
+{
+    return CLI::Validator(
+        [](std::string& s) {
+            return shadows::filterFromCommandName(s) ? std::string()
+                                                     : fmt::format("'{}' is not one of {}", s,
+                                                                   shadows::filterCommandNames());
+        },
+        "FILTER");
+}
+
 void addSceneOptions(CLI::App& command, SceneOptions& options)
 {
     command.add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
@@ -100,6 +112,18 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
     command.add_option("--settings", options.settings,
                        "Shadow settings JSON file, with optional \"ambient\" object and \"anisotropy\" number")
         ->check(CLI::ExistingFile);
+    command
+        .add_option("--filter", options.filter,
+                    fmt::format("Every light's shadow filter, over the settings' and the lights' own: {}",
+                                shadows::filterCommandNames()))
+        ->check(filterValidator());
+    command
+        .add_option("--light-size", options.lightSize,
+                    fmt::format("Every light's source size for soft shadows: degrees of angular diameter for "
+                                "directional lights (0 to {}), world units of radius for spot and point lights (0 to "
+                                "their range)",
+                                scene::kMaxAngularDiameter))
+        ->check(CLI::NonNegativeNumber);
     command.add_option("--size", options.size, "Picture size as WIDTHxHEIGHT, each 1 to 8192")
         ->check(CLI::Validator(
             [](std::string& s) {
@@ -146,6 +170,7 @@ LoadedScene loadScene(const SceneOptions& options)
     }
     if (!options.lights.empty())
         loaded.scene.validate();
+    applyLightOverrides(loaded.scene, options.filter, options.lightSize);
     if (lookAt) {
         scene::Camera& camera = loaded.scene.camera;
         // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.

@@ -14,7 +14,7 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass.
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --filter, --light-size.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -25,10 +25,15 @@ struct SceneOptions {
     std::string settings;
     std::string size = "1280x720";
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
+    std::string filter;             // shadows::filterFromCommandName; empty: each light's own
+    std::optional<float> lightSize; // every light's source size; nullopt: each light's own
 };
 
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
 CLI::Validator anisotropyValidator();
+
+// --filter's check, for every command that takes it: a shadows::filterFromCommandName name.
+CLI::Validator filterValidator();
 
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);

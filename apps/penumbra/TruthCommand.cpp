@@ -8,6 +8,8 @@
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/ShadowTruth.hpp"
+#include "penumbra/render/SoftShadowTruth.hpp"
+#include "penumbra/scene/AreaLightTruth.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/RayCaster.hpp"
 
@@ -97,6 +99,15 @@ nlohmann::json lightReport(const scene::Scene& scene, const LightTruth& t)
             {"casters", casterReport(scene, c)}};
 }
 
+// The area-light ray cast of lights with a source size whose shadow map is soft (Poisson or PCSS), or of every light
+// with one when --light-size sets it: sourceSize, penumbraPixels and softMeanAbsError.
+bool wantsSoftTruth(const TruthOptions& options, const scene::Scene& scene, const render::ShadowPlans& plans,
+                    const scene::LightRef& light)
+{
+    return render::lightSourceSize(scene, light) > 0.0f &&
+           (options.scene.lightSize || shadows::isSoftFilter(render::plannedShadowFilter(plans, light)));
+}
+
 void truth(const TruthOptions& options)
 {
     const LoadedScene loaded = loadScene(options.scene);
@@ -145,7 +156,22 @@ void truth(const TruthOptions& options)
         t.contactGapTexels = scene::contactGapTexels(
             t.comparison, gbuffer, shadowRays, render::truthRays(scene, t.light),
             [&](glm::vec3 position) { return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position); });
-        report["lights"].push_back(lightReport(scene, t));
+        nlohmann::json entry = lightReport(scene, t);
+        if (wantsSoftTruth(options, scene, plans, t.light)) {
+            const scene::SoftVisibilityMap soft = scene::traceAreaLightVisibility(
+                scene, shadowRays, gbuffer, render::areaLightOf(scene, t.light), scene::kAreaLightRaysPerSide,
+                progressBar(fmt::format("'{}' area light", t.name)));
+            const scene::SoftTruthFigures figures = scene::compareSoftVisibility(soft, t.rendered);
+            entry["sourceSize"] = render::lightSourceSize(scene, t.light);
+            entry["filter"] = shadows::shadowFilterNames()[std::size_t(render::plannedShadowFilter(plans, t.light))].command;
+            entry["penumbraPixels"] = figures.penumbraPixels;
+            entry["softCompared"] = figures.compared;
+            entry["softMeanAbsError"] = figures.meanAbsError;
+            fmt::print("{}: source size {}, {} penumbra pixels, soft mean absolute error {:.4f} over {} pixels\n",
+                       t.name, render::lightSourceSize(scene, t.light), figures.penumbraPixels, figures.meanAbsError,
+                       figures.compared);
+        }
+        report["lights"].push_back(std::move(entry));
     }
 
     // Everything is computed before the first file is written: a failure leaves no partial report.

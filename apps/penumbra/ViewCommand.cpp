@@ -7,6 +7,8 @@
 #include "ShadowScene.hpp"
 #include "Viewer.hpp"
 
+#include "penumbra/shadows/ShadowSettings.hpp"
+
 #include <charconv>
 #include <fmt/format.h>
 #include <memory>
@@ -60,6 +62,13 @@ void addViewCommand(CLI::App& app)
         ->check(anisotropyValidator())
         ->capture_default_str();
     addValidateFlag(*view, options->validate);
+    view->add_option("--filter", options->filter,
+                     fmt::format("Every light's shadow filter: {}", shadows::filterCommandNames()))
+        ->check(filterValidator());
+    view->add_option("--light-size", options->lightSize,
+                     "Every light's source size: degrees of angular diameter (directional), world units of radius "
+                     "(spot, point)")
+        ->check(CLI::NonNegativeNumber);
     view->callback([options] { viewer::runViewer(*options); });
 }
 

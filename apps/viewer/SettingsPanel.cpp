@@ -20,7 +20,52 @@ bool enumCombo(const char* label, Enum& value, const std::array<const char*, N>&
     return changed;
 }
 
-constexpr std::array kFilterNames{"PCF 2x2", "PCF 3x3", "PCF 5x5", "PCF 7x7"};
+// shadows::ShadowFilter's command-line names, in its order.
+std::array<const char*, shadows::kShadowFilterCount> filterNames()
+{
+    std::array<const char*, shadows::kShadowFilterCount> names{};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        names[i] = shadows::shadowFilterNames()[i].command.data();
+    return names;
+}
+
+bool filterCombo(const char* label, shadows::ShadowFilter& filter) { return enumCombo(label, filter, filterNames()); }
+
+// A light's own filter: "atlas" (scene::kAtlasShadowFilter) or one of the filters.
+bool lightFilterCombo(std::int32_t& filter)
+{
+    std::array<const char*, shadows::kShadowFilterCount + 1> names{"atlas"};
+    for (std::size_t i = 0; i < shadows::kShadowFilterCount; ++i)
+        names[i + 1] = filterNames()[i];
+    int index = filter + 1;
+    const bool changed = ImGui::Combo("shadow filter", &index, names.data(), int(names.size()));
+    if (changed)
+        filter = index - 1;
+    return changed;
+}
+
+bool sampleCountCombo(const char* label, std::uint32_t& count)
+{
+    constexpr std::array names{"16", "32", "64"};
+    int index = count == 64 ? 2 : count == 32 ? 1 : 0;
+    const bool changed = ImGui::Combo(label, &index, names.data(), int(names.size()));
+    if (changed)
+        count = shadows::kPoissonSampleCounts[index];
+    return changed;
+}
+
+bool softSettings(shadows::SoftShadowSettings& s)
+{
+    bool changed = false;
+    changed |= ImGui::SliderFloat("blocker search scale", &s.blockerSearchScale, 0.1f, 10.0f);
+    changed |= ImGui::SliderFloat("penumbra scale", &s.penumbraScale, 0.1f, 10.0f);
+    changed |= sampleCountCombo("blocker samples", s.blockerSamples);
+    changed |= sampleCountCombo("filter samples", s.filterSamples);
+    changed |= ImGui::SliderFloat("min penumbra (texels)", &s.minPenumbraTexels, 0.0f, 64.0f);
+    changed |= ImGui::SliderFloat("max penumbra (texels)", &s.maxPenumbraTexels, 0.0f, 64.0f);
+    changed |= ImGui::SliderFloat("poisson radius (texels)", &s.poissonRadiusTexels, 0.5f, 64.0f);
+    return changed;
+}
 
 bool atlasFormatCombo(rhi::Format& format)
 {
@@ -47,7 +92,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
     shadows::DirectionalShadowSettings& d = s.directional;
     changed |= ImGui::InputScalar("atlas size", ImGuiDataType_U32, &d.atlasSize);
     changed |= atlasFormatCombo(d.atlasFormat);
-    changed |= enumCombo("filter", d.filter, kFilterNames);
+    changed |= filterCombo("filter", d.filter);
     int cascades = int(d.cascadeCount);
     if (ImGui::SliderInt("cascades", &cascades, 1, 4)) {
         d.cascadeCount = std::uint32_t(cascades);
@@ -62,10 +107,13 @@ bool shadowSettings(shadows::ShadowSettings& s)
     shadows::OtherShadowSettings& o = s.other;
     changed |= ImGui::InputScalar("atlas size", ImGuiDataType_U32, &o.atlasSize);
     changed |= atlasFormatCombo(o.atlasFormat);
-    changed |= enumCombo("filter", o.filter, kFilterNames);
+    changed |= filterCombo("filter", o.filter);
     changed |= enumCombo("point lights", o.pointMode, std::array{"atlas tiles", "cube maps"});
     changed |= ImGui::InputScalar("cube map size", ImGuiDataType_U32, &o.cubeMapSize);
     ImGui::PopID();
+    ImGui::Separator();
+    ImGui::TextUnformatted("soft shadows (poisson, pcss)");
+    changed |= softSettings(s.soft);
     return changed;
 }
 
@@ -80,6 +128,7 @@ bool commonLightSettings(Light& light)
     changed |= ImGui::DragFloat("slope-scale bias", &light.slopeScaleBias, 0.01f, 0.0f, 10.0f);
     changed |= ImGui::DragFloat("normal bias", &light.normalBias, 0.01f, 0.0f, 10.0f);
     changed |= enumCombo("normal bias side", light.normalBiasSide, std::array{"receiver", "caster"});
+    changed |= lightFilterCombo(light.shadowFilter);
     return changed;
 }
 
@@ -94,6 +143,7 @@ bool spotLightSettings(scene::SpotLight& light, std::size_t index)
         changed |= ImGui::DragFloat("range", &light.range, 0.05f, 0.01f, 1000.0f);
         changed |= ImGui::SliderAngle("inner angle", &light.innerAngle, 0.0f, 89.0f);
         changed |= ImGui::SliderAngle("outer angle", &light.outerAngle, 0.0f, 89.0f);
+        changed |= ImGui::DragFloat("source radius", &light.sourceRadius, 0.005f, 0.0f, light.range);
         ImGui::TreePop();
     }
     ImGui::PopID();
@@ -108,6 +158,7 @@ bool pointLightSettings(scene::PointLight& light, std::size_t index)
         changed |= commonLightSettings(light);
         changed |= ImGui::DragFloat3("position", &light.position.x, 0.05f);
         changed |= ImGui::DragFloat("range", &light.range, 0.05f, 0.01f, 1000.0f);
+        changed |= ImGui::DragFloat("source radius", &light.sourceRadius, 0.005f, 0.0f, light.range);
         ImGui::TreePop();
     }
     ImGui::PopID();
@@ -122,6 +173,8 @@ bool lightSettings(scene::DirectionalLight& light, std::size_t index)
         changed |= commonLightSettings(light);
         changed |= ImGui::DragFloat3("direction", &light.direction.x, 0.01f, -1.0f, 1.0f);
         changed |= ImGui::DragFloat("near plane offset", &light.nearPlaneOffset, 0.01f, 0.0f, 100.0f);
+        changed |= ImGui::SliderFloat("angular diameter", &light.angularDiameter, 0.0f, scene::kMaxAngularDiameter,
+                                      "%.2f deg");
         ImGui::TreePop();
     }
     ImGui::PopID();

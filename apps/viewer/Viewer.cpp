@@ -45,7 +45,7 @@ public:
         : options_(options), window_(penumbra::parseConfiguration(options.configuration), options.width, options.height,
                                      fmt::format("Penumbra viewer: {} ({})", options.scene, options.configuration)),
           device_(createDevice(windowDeviceDesc(options.configuration, options.validate, window_.handle()))),
-          swapchain_(device_->createSwapchain()), input_(window_.handle()), scene_(loadViewerScene(options.scene)),
+          swapchain_(device_->createSwapchain()), input_(window_.handle()), scene_(loadViewerScene(options.scene, options.filter, options.lightSize)),
           camera_(scene_.camera, orbitTargetDistance(scene_)), renderer_(*device_, scene_), compositor_(*device_)
     {
         applied_ = viewStateOf(scene_);

@@ -18,6 +18,8 @@ struct ViewerOptions {
     bool atlasOverlay = false;
     float maxAnisotropy = 8.0f;          // of texture sampling, 1 (off) to 16, as render::FrameDesc takes it
     bool validate = false;               // the validation layer / debug output (penumbra view --validate)
+    std::string filter;             // every light's shadow filter (apps::applyLightOverrides); empty: their own
+    std::optional<float> lightSize; // every light's source size
 };
 
 // Opens the window and runs the viewer. Throws rhi::Error when there is no display, no driver,

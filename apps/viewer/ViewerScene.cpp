@@ -1,5 +1,6 @@
 #include "ViewerScene.hpp"
 
+#include "LightOverrides.hpp"
 #include "ShadowScene.hpp"
 
 #include "penumbra/scene/GltfLoader.hpp"
@@ -10,12 +11,12 @@
 
 namespace penumbra::viewer {
 
-scene::Scene loadViewerScene(const std::string& name)
+scene::Scene loadViewerScene(const std::string& name, const std::string& filter, std::optional<float> lightSize)
 {
     const std::filesystem::path extension = std::filesystem::path(name).extension();
-    if (extension == ".gltf" || extension == ".glb")
-        return scene::loadGltf(name).scene;
-    return apps::namedScene(name);
+    scene::Scene scene = extension == ".gltf" || extension == ".glb" ? scene::loadGltf(name).scene : apps::namedScene(name);
+    apps::applyLightOverrides(scene, filter, lightSize);
+    return scene;
 }
 
 float orbitTargetDistance(const scene::Scene& scene)

@@ -2,12 +2,16 @@
 
 #include "penumbra/scene/Scene.hpp"
 
+#include <optional>
 #include <string>
 
 namespace penumbra::viewer {
 
 // The scene `--scene` names: a built-in scene (apps/common namedScene) or a .gltf / .glb file.
-scene::Scene loadViewerScene(const std::string& name);
+// With every light's filter and source size set when `filter` is not empty or `lightSize` is given
+// (apps::applyLightOverrides).
+scene::Scene loadViewerScene(const std::string& name, const std::string& filter = {},
+                             std::optional<float> lightSize = std::nullopt);
 
 // How far ahead of the scene's camera the orbit target lies: the depth of the scene's centre,
 // at least one unit.

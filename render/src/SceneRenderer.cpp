@@ -7,6 +7,7 @@
 #include "penumbra/shaders/ShaderLibrary.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 #include "penumbra/shadows/OtherShadowUniforms.hpp"
+#include "penumbra/shadows/PoissonDisk.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -34,12 +35,25 @@ shadows::NormalBiasSide biasSide(scene::NormalBiasSide side)
     return side == scene::NormalBiasSide::Caster ? shadows::NormalBiasSide::Caster : shadows::NormalBiasSide::Receiver;
 }
 
+// A scene light's shadow filter: nullopt for the atlas's, else a shadows::ShadowFilter.
+std::optional<shadows::ShadowFilter> lightFilter(std::int32_t filter, const std::string& what)
+{
+    if (filter == scene::kAtlasShadowFilter)
+        return std::nullopt;
+    if (filter < 0 || filter >= shadows::kShadowFilterCount)
+        throw rhi::Error(fmt::format("{}: shadowFilter {} is out of range, allowed {} (the atlas's) or 0..{} ({})",
+                                     what, filter, scene::kAtlasShadowFilter, shadows::kShadowFilterCount - 1,
+                                     shadows::filterCommandNames()));
+    return static_cast<shadows::ShadowFilter>(filter);
+}
+
 std::vector<shadows::DirectionalShadowLightInput> shadowLights(const std::vector<scene::DirectionalLight>& lights)
 {
     std::vector<shadows::DirectionalShadowLightInput> inputs;
     for (const scene::DirectionalLight& light : lights)
         inputs.push_back({light.direction, light.shadowStrength, light.nearPlaneOffset, light.normalBias,
-                          light.slopeScaleBias, true, biasSide(light.normalBiasSide)});
+                          light.slopeScaleBias, true, lightFilter(light.shadowFilter, "light '" + light.name + "'"),
+                          light.angularDiameter, biasSide(light.normalBiasSide)});
     return inputs;
 }
 
@@ -48,7 +62,8 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
     std::vector<shadows::SpotShadowInput> inputs;
     for (const scene::SpotLight& l : lights)
         inputs.push_back({l.position, l.direction, l.range, l.outerAngle, l.shadowStrength, l.normalBias,
-                          l.slopeScaleBias, l.shadowNearPlane, biasSide(l.normalBiasSide)});
+                          l.slopeScaleBias, l.shadowNearPlane, lightFilter(l.shadowFilter, "spot light '" + l.name + "'"),
+                          l.sourceRadius, biasSide(l.normalBiasSide)});
     return inputs;
 }
 
@@ -57,6 +72,7 @@ std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene
     std::vector<shadows::PointShadowInput> inputs;
     for (const scene::PointLight& l : lights)
         inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias, l.shadowNearPlane,
+                          lightFilter(l.shadowFilter, "point light '" + l.name + "'"), l.sourceRadius,
                           biasSide(l.normalBiasSide)});
     return inputs;
 }
@@ -340,6 +356,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     // channel keeps saying whether a shadow map decides the pixel.
     commands.beginPass(
         {.framebuffer = &target, .clearColor = visibility ? kUndecided : kBackground, .clearDepth = !prepassed});
+    const rhi::UniformSlice poissonDisks = uniforms_.push(shadows::poissonDiskUniforms());
     const rhi::Pipeline* bound = nullptr;
     for (const std::uint32_t index : drawOrder_) {
         const scene::Object& object = scene.objects[index];
@@ -357,6 +374,8 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             rhi::bindUniform(commands, kLitOtherShadowBinding, otherShadowUniforms);
             commands.bindTexture(kLitOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
             commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
+            commands.bindTexture(kLitShadowCubeDepthsBinding, shadowCubes_->texture(), shadowCubes_->depthSampler());
+            rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonDisks);
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, objectSlices_[index]);

@@ -100,6 +100,15 @@ void validateLight(const DirectionalLight& light, std::size_t index)
                                      light.direction.y, light.direction.z));
     if (light.shadowStrength < 0.0f || light.shadowStrength > 1.0f)
         throw SceneError(fmt::format("{}: shadowStrength {} is outside [0, 1]", what, light.shadowStrength));
+    if (!(light.angularDiameter >= 0.0f && light.angularDiameter <= kMaxAngularDiameter))
+        throw SceneError(fmt::format("{}: angularDiameter {} is outside [0, {}] degrees", what, light.angularDiameter,
+                                     kMaxAngularDiameter));
+}
+
+void validateSourceRadius(const std::string& what, float radius, float range)
+{
+    if (!(radius >= 0.0f && radius <= range))
+        throw SceneError(fmt::format("{}: sourceRadius {} is outside [0, range {}]", what, radius, range));
 }
 
 void validateLocalLight(const std::string& what, float range, float strength, float shadowNearPlane)
@@ -124,12 +133,14 @@ void validateSpotLight(const SpotLight& light, std::size_t index)
         throw SceneError(fmt::format("{}: angles inner {} outer {} need 0 <= inner < outer < pi/2 radians", what,
                                      light.innerAngle, light.outerAngle));
     validateLocalLight(what, light.range, light.shadowStrength, light.shadowNearPlane);
+    validateSourceRadius(what, light.sourceRadius, light.range);
 }
 
 void validatePointLight(const PointLight& light, std::size_t index)
 {
-    validateLocalLight(describe("point light", index, light.name), light.range, light.shadowStrength,
-                       light.shadowNearPlane);
+    const std::string what = describe("point light", index, light.name);
+    validateLocalLight(what, light.range, light.shadowStrength, light.shadowNearPlane);
+    validateSourceRadius(what, light.sourceRadius, light.range);
 }
 
 void validateCamera(const Camera& camera)

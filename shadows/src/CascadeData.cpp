@@ -8,7 +8,7 @@ CascadeData cascadeData(const Sphere& cullingSphere, float texelSize, ShadowFilt
     const float shrunk = cullingSphere.radius - filterWorldSize;
     const float shrunkSquared = shrunk * shrunk;
     return {glm::vec4(cullingSphere.centre, shrunkSquared),
-            glm::vec4(1.0f / shrunkSquared, filterWorldSize * 1.4142136f, 0.0f, 0.0f)};
+            glm::vec4(1.0f / shrunkSquared, filterWorldSize * 1.4142136f, texelSize, 0.0f)};
 }
 
 } // namespace penumbra::shadows

@@ -3,8 +3,11 @@
 #include "penumbra/shadows/AtlasMatrix.hpp"
 #include "penumbra/shadows/FrustumSliceSphere.hpp"
 #include "penumbra/shadows/ShadowFade.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -26,6 +29,57 @@ std::optional<std::string> exclusion(const DirectionalShadowLightInput& light, s
     return std::nullopt;
 }
 
+// What a tile texel adds to become the light's own texel grid (whole texels: the fit snaps the tile's centre), per
+// axis in the direction the atlas runs along the light's right and up axes.
+glm::vec2 lightTexelAnchor(const DirectionalCascadePlan& cascade)
+{
+    const DirectionalShadowCascade& fit = cascade.fit;
+    const glm::vec3 origin = fit.basis.right * fit.snappedCentre.x + fit.basis.up * fit.snappedCentre.y;
+    const auto atlasX = [&](glm::vec3 p) { return (cascade.worldToAtlas * glm::vec4(p, 1.0f)).x; };
+    const auto atlasY = [&](glm::vec3 p) { return (cascade.worldToAtlas * glm::vec4(p, 1.0f)).y; };
+    const float signX = atlasX(origin + fit.basis.right) > atlasX(origin) ? 1.0f : -1.0f;
+    const float signY = atlasY(origin + fit.basis.up) > atlasY(origin) ? 1.0f : -1.0f;
+    return {std::round(signX * fit.snappedCentre.x / fit.texelSize), std::round(signY * fit.snappedCentre.y / fit.texelSize)};
+}
+
+// The light-space depth nearest the light of any caster: no blocker lies nearer. Unlike the near plane, which follows
+// the cascade's sphere, it does not move with the camera, so neither does the blocker search sized from it.
+float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBounds, float fallback)
+{
+    if (casterBounds.empty())
+        return fallback;
+    float top = std::numeric_limits<float>::max();
+    for (const Bounds& caster : casterBounds)
+        top = std::min(top, lightSpaceBounds(basis, caster).min.z);
+    return top;
+}
+
+// The projection's texture-space depth row (t22, t32'): depth = t22 * viewZ + t32, with t32' = t32 + t22 (near -
+// casterTop), so that orthographicDistanceFromNear(depth, row) is the distance past the casters' top (the blocker
+// search's receiver depth), and differences of two depths stay world distances.
+glm::vec2 depthRow(const DirectionalShadowCascade& fit, float casterTop, const rhi::Conventions& conventions)
+{
+    const glm::mat4 toTexture = conventions.clipToTexture() * fit.projection;
+    return {toTexture[2][2], toTexture[3][2] + toTexture[2][2] * (fit.nearDepth - casterTop)};
+}
+
+void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions,
+                      std::span<const Bounds> casterBounds)
+{
+    DirectionalShadowUniforms& u = plan.uniforms;
+    u.soft = softShadowUniforms(settings.soft);
+    const float atlasFactor = normalBiasFilterFactor(settings.directional.filter);
+    for (std::size_t slot = 0; slot < plan.lights.size(); ++slot) {
+        const ShadowedDirectionalLight& light = plan.lights[slot];
+        u.lightSoft[slot] = {tanHalfAngularDiameter(light.angularDiameter),
+                             normalBiasFilterFactor(light.filter) / atlasFactor, 0.0f, 0.0f};
+        for (const DirectionalCascadePlan& cascade : light.cascades) {
+            const float top = casterTopDepth(cascade.fit.basis, casterBounds, cascade.fit.nearDepth);
+            u.tileSoft[cascade.tile] = glm::vec4(lightTexelAnchor(cascade), depthRow(cascade.fit, top, conventions));
+        }
+    }
+}
+
 void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
 {
     DirectionalShadowUniforms& u = plan.uniforms;
@@ -43,7 +97,8 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
         const ShadowedDirectionalLight& light = plan.lights[slot];
         // On the caster side the lit pass looks up where the surface is.
         const float receiverBias = light.normalBiasSide == NormalBiasSide::Receiver ? light.normalBias : 0.0f;
-        u.lightShadowData[slot] = {light.strength, receiverBias, static_cast<float>(light.firstTile), 0.0f};
+        u.lightShadowData[slot] = {light.strength, receiverBias, static_cast<float>(light.firstTile),
+                                   static_cast<float>(light.filter)};
         for (const DirectionalCascadePlan& cascade : light.cascades)
             u.worldToAtlas[cascade.tile] = cascade.worldToAtlas;
     }
@@ -103,6 +158,8 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
                                        input.normalBias,
                                        input.slopeScaleBias,
                                        input.nearPlaneOffset,
+                                       input.filter.value_or(directional.filter),
+                                       input.angularDiameter,
                                        directionalTileIndex(slot, 0, cascadeCount),
                                        {},
                                        input.normalBiasSide,
@@ -128,6 +185,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
             plan.cascadeData.push_back(
                 cascadeData(plan.cullingSpheres[c], plan.lights[0].cascades[c].fit.texelSize, directional.filter));
     fillUniforms(plan, settings);
+    fillSoftUniforms(plan, settings, conventions, casterBounds);
     return plan;
 }
 

@@ -1,6 +1,7 @@
 #include "penumbra/shadows/OtherShadowPlanner.hpp"
 
 #include "penumbra/shadows/AtlasMatrix.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -108,12 +109,28 @@ float sideOfNormalBias(LocalShadowView& view, NormalBiasSide side, float scale, 
     return 0.0f;
 }
 
+// What the soft filters need of a light's projection: the filter, its depth row (perspectiveDistance), the light's
+// radius in texels at unit distance (lightTexels) and the near plane.
+struct SoftProjection {
+    ShadowFilter filter;
+    glm::vec4 tileSoft;
+};
+
+SoftProjection softProjection(ShadowFilter filter, const glm::mat4& projection, std::uint32_t tileSize,
+                              float sourceRadius, float nearPlane, const rhi::Conventions& conventions)
+{
+    const glm::mat4 toTexture = conventions.clipToTexture() * projection;
+    return {filter, {toTexture[2][2], toTexture[3][2], sourceRadius / texelSizeAtUnitDistance(projection, tileSize),
+                     nearPlane}};
+}
+
 void addTile(OtherShadowPlan& plan, std::uint32_t tile, LocalShadowView view, float normalBiasScale,
-             const rhi::Conventions& conventions)
+             const SoftProjection& soft, const rhi::Conventions& conventions)
 {
     plan.uniforms.worldToAtlas[tile] = worldToAtlas(view.viewProjection, tile, plan.atlas, conventions);
     plan.uniforms.tileBounds[tile] = tileBounds(plan.atlas, tile);
-    plan.uniforms.tileData[tile] = {normalBiasScale, 0.0f, 0.0f, 0.0f};
+    plan.uniforms.tileData[tile] = {normalBiasScale, static_cast<float>(soft.filter), 0.0f, 0.0f};
+    plan.uniforms.tileSoft[tile] = soft.tileSoft;
     plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});
 }
 
@@ -123,26 +140,32 @@ void planSpot(OtherShadowPlan& plan, const OtherShadowSettings& other, const Spo
     const float fov = 2.0f * spot.outerAngle;
     const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, other);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
-    const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), other.filter, spot.normalBias);
+    const ShadowFilter filter = spot.filter.value_or(other.filter);
+    const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), filter, spot.normalBias);
     LocalShadowView view = shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range,
                                       spot.slopeScaleBias, conventions, casterBounds);
     const float receiverBias = sideOfNormalBias(view, spot.normalBiasSide, bias, spot.position);
-    addTile(plan, tile, std::move(view), receiverBias, conventions);
+    addTile(plan, tile, std::move(view), receiverBias,
+            softProjection(filter, projection, plan.atlas.tileSize(), spot.sourceRadius, nearPlane, conventions),
+            conventions);
 }
 
 void planPointTiles(OtherShadowPlan& plan, const OtherShadowSettings& other, const PointShadowInput& point,
                     std::uint32_t firstTile, const rhi::Conventions& conventions,
                     std::span<const Bounds> casterBounds)
 {
-    const float fov = pointFaceFieldOfView(plan.atlas.tileSize(), other.filter, point.normalBias);
+    const ShadowFilter filter = point.filter.value_or(other.filter);
+    const float fov = pointFaceFieldOfView(plan.atlas.tileSize(), filter, point.normalBias);
     const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, other);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, point.range);
-    const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), other.filter, point.normalBias);
+    const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), filter, point.normalBias);
+    const SoftProjection soft =
+        softProjection(filter, projection, plan.atlas.tileSize(), point.sourceRadius, nearPlane, conventions);
     for (std::uint32_t face = 0; face < cubeFaceCount; ++face) {
         LocalShadowView view = shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane,
                                           point.range, point.slopeScaleBias, conventions, casterBounds);
         const float receiverBias = sideOfNormalBias(view, point.normalBiasSide, bias, point.position);
-        addTile(plan, firstTile + face, std::move(view), receiverBias, conventions);
+        addTile(plan, firstTile + face, std::move(view), receiverBias, soft, conventions);
     }
 }
 
@@ -155,7 +178,11 @@ void planCube(OtherShadowPlan& plan, const OtherShadowSettings& other, const Poi
     const glm::mat4 projection = rhi::cubeFaceProjection(conventions, nearPlane, point.range);
     // Window depth of major-axis distance z is (a * -z + b) / z: the projection's depth row through clipToTexture.
     const glm::mat4 toTexture = conventions.clipToTexture() * projection;
-    const float bias = localNormalBiasScale(projection, other.cubeMapSize, other.filter, point.normalBias);
+    const ShadowFilter filter = point.filter.value_or(other.filter);
+    const float bias = localNormalBiasScale(projection, other.cubeMapSize, filter, point.normalBias);
+    plan.uniforms.cubeSoft[plan.cubes.size()] = {
+        static_cast<float>(filter), point.sourceRadius / std::abs(texelSizeAtUnitDistance(projection, other.cubeMapSize)),
+        nearPlane, 0.0f};
     ShadowCube cube;
     cube.lightIndex = pointIndex;
     float receiverBias = bias;
@@ -246,6 +273,7 @@ OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conv
     const auto atlasSize = static_cast<float>(other.atlasSize);
     plan.uniforms.atlasSize = {atlasSize, 1.0f / atlasSize, 0.0f, 0.0f};
     plan.uniforms.config = {static_cast<int>(other.filter), static_cast<int>(other.pointMode), 0, 0};
+    plan.uniforms.soft = softShadowUniforms(settings.soft);
     return plan;
 }
 

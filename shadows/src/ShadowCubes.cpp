@@ -26,6 +26,8 @@ ShadowCubes::ShadowCubes(rhi::Device& device, std::uint32_t faceSize, std::uint3
                                      .minFilter = rhi::Filter::Nearest,
                                      .compare = true,
                                      .debugName = "point shadow cubes"});
+    depthSampler_ = device.createSampler(
+        {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "point shadow cube depths"});
 }
 
 } // namespace penumbra::shadows

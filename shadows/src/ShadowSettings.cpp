@@ -9,18 +9,46 @@
 
 namespace penumbra::shadows {
 
+const std::array<ShadowFilterName, kShadowFilterCount>& shadowFilterNames()
+{
+    static constexpr std::array<ShadowFilterName, kShadowFilterCount> names{{
+        {ShadowFilter::PCF2x2, "pcf2x2", "hard"},
+        {ShadowFilter::PCF3x3, "pcf3x3", "pcf3"},
+        {ShadowFilter::PCF5x5, "pcf5x5", "pcf5"},
+        {ShadowFilter::PCF7x7, "pcf7x7", "pcf7"},
+        {ShadowFilter::Poisson, "poisson", "poisson"},
+        {ShadowFilter::PCSS, "pcss", "pcss"},
+    }};
+    return names;
+}
+
+std::optional<ShadowFilter> filterFromCommandName(std::string_view name)
+{
+    for (const ShadowFilterName& entry : shadowFilterNames())
+        if (entry.command == name)
+            return entry.filter;
+    return std::nullopt;
+}
+
+std::string_view filterCommandNames() { return "hard, pcf3, pcf5, pcf7, poisson, pcss"; }
+
+bool isSoftFilter(ShadowFilter filter) { return filter == ShadowFilter::Poisson || filter == ShadowFilter::PCSS; }
+
 int filterSize(ShadowFilter filter)
 {
-    constexpr std::array<int, 4> sizes{2, 3, 5, 7};
+    constexpr std::array<int, kShadowFilterCount> sizes{2, 3, 5, 7, 2, 2};
     return sizes[static_cast<std::size_t>(filter)];
 }
 
-float normalBiasFilterFactor(ShadowFilter filter) { return static_cast<float>(static_cast<int>(filter) + 1); }
+float normalBiasFilterFactor(ShadowFilter filter)
+{
+    return isSoftFilter(filter) ? 1.0f : static_cast<float>(static_cast<int>(filter) + 1);
+}
 
 int filterTapCount(ShadowFilter filter)
 {
     // An N-wide tent touches N + 1 texels per axis (N odd), read in pairs by bilinear taps.
-    const int perAxis = filter == ShadowFilter::PCF2x2 ? 1 : (filterSize(filter) + 1) / 2;
+    const int perAxis = filter == ShadowFilter::PCF2x2 || isSoftFilter(filter) ? 1 : (filterSize(filter) + 1) / 2;
     return perAxis * perAxis;
 }
 
@@ -46,22 +74,29 @@ SettingsProblem outOfRange(std::string field, std::string value)
 
 std::string_view allowedValues(std::string_view field)
 {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 15> table{{
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 22> table{{
         {"maxDistance", "> 0.001"},
         {"distanceFade", "0.001..1"},
         {"directional.atlasSize", "powers of two 256..8192"},
-        {"directional.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7"},
+        {"directional.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss"},
         {"directional.cascadeCount", "1..4"},
         {"directional.cascadeRatios", "3 numbers in 0..1, strictly increasing"},
         {"directional.cascadeFade", "0.001..1"},
         {"directional.cascadeBlend", "hard, soft, dither"},
         {"directional.atlasFormat", "d16, d24s8, d32f"},
         {"other.atlasSize", "powers of two 256..8192"},
-        {"other.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7"},
+        {"other.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss"},
         {"other.atlasFormat", "d16, d24s8, d32f"},
         {"other.pointMode", "atlas, cubemap"},
         {"other.cubeMapSize", "powers of two 64..4096"},
         {"other.nearPlane", "0.0001..0.5"},
+        {"soft.blockerSearchScale", "0.1..10"},
+        {"soft.penumbraScale", "0.1..10"},
+        {"soft.blockerSamples", "16, 32, 64"},
+        {"soft.filterSamples", "16, 32, 64"},
+        {"soft.minPenumbraTexels", "0..64"},
+        {"soft.maxPenumbraTexels", "minPenumbraTexels..64"},
+        {"soft.poissonRadiusTexels", "0.5..64"},
     }};
     for (const auto& [name, allowed] : table)
         if (name == field)
@@ -80,7 +115,7 @@ std::optional<SettingsProblem> findOtherSettingsProblem(const OtherShadowSetting
 {
     if (!powerOfTwoWithin(o.atlasSize, 256, 8192))
         return outOfRange("other.atlasSize", fmt::format("{}", o.atlasSize));
-    if (static_cast<unsigned>(o.filter) > static_cast<unsigned>(ShadowFilter::PCF7x7))
+    if (static_cast<unsigned>(o.filter) > static_cast<unsigned>(ShadowFilter::PCSS))
         return outOfRange("other.filter", fmt::format("{}", static_cast<int>(o.filter)));
     if (!rhi::isDepthFormat(o.atlasFormat))
         return outOfRange("other.atlasFormat", std::string(rhi::formatName(o.atlasFormat)));
@@ -90,6 +125,33 @@ std::optional<SettingsProblem> findOtherSettingsProblem(const OtherShadowSetting
         return outOfRange("other.cubeMapSize", fmt::format("{}", o.cubeMapSize));
     if (!within(o.nearPlane, 0.0001f, 0.5f))
         return outOfRange("other.nearPlane", fmt::format("{}", o.nearPlane));
+    return std::nullopt;
+}
+
+bool isPoissonSampleCount(std::uint32_t count)
+{
+    for (const std::uint32_t offered : kPoissonSampleCounts)
+        if (count == offered)
+            return true;
+    return false;
+}
+
+std::optional<SettingsProblem> findSoftSettingsProblem(const SoftShadowSettings& s)
+{
+    if (!within(s.blockerSearchScale, 0.1f, 10.0f))
+        return outOfRange("soft.blockerSearchScale", fmt::format("{}", s.blockerSearchScale));
+    if (!within(s.penumbraScale, 0.1f, 10.0f))
+        return outOfRange("soft.penumbraScale", fmt::format("{}", s.penumbraScale));
+    if (!isPoissonSampleCount(s.blockerSamples))
+        return outOfRange("soft.blockerSamples", fmt::format("{}", s.blockerSamples));
+    if (!isPoissonSampleCount(s.filterSamples))
+        return outOfRange("soft.filterSamples", fmt::format("{}", s.filterSamples));
+    if (!within(s.minPenumbraTexels, 0.0f, 64.0f))
+        return outOfRange("soft.minPenumbraTexels", fmt::format("{}", s.minPenumbraTexels));
+    if (!within(s.maxPenumbraTexels, s.minPenumbraTexels, 64.0f))
+        return outOfRange("soft.maxPenumbraTexels", fmt::format("{}", s.maxPenumbraTexels));
+    if (!within(s.poissonRadiusTexels, 0.5f, 64.0f))
+        return outOfRange("soft.poissonRadiusTexels", fmt::format("{}", s.poissonRadiusTexels));
     return std::nullopt;
 }
 
@@ -104,7 +166,7 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return outOfRange("distanceFade", fmt::format("{}", s.distanceFade));
     if (!powerOfTwoWithin(d.atlasSize, 256, 8192))
         return outOfRange("directional.atlasSize", fmt::format("{}", d.atlasSize));
-    if (static_cast<unsigned>(d.filter) > static_cast<unsigned>(ShadowFilter::PCF7x7))
+    if (static_cast<unsigned>(d.filter) > static_cast<unsigned>(ShadowFilter::PCSS))
         return outOfRange("directional.filter", fmt::format("{}", static_cast<int>(d.filter)));
     if (d.cascadeCount < 1 || d.cascadeCount > 4)
         return outOfRange("directional.cascadeCount", fmt::format("{}", d.cascadeCount));
@@ -118,7 +180,9 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return outOfRange("directional.cascadeBlend", fmt::format("{}", static_cast<int>(d.cascadeBlend)));
     if (!rhi::isDepthFormat(d.atlasFormat))
         return outOfRange("directional.atlasFormat", std::string(rhi::formatName(d.atlasFormat)));
-    return findOtherSettingsProblem(s.other);
+    if (auto problem = findOtherSettingsProblem(s.other))
+        return problem;
+    return findSoftSettingsProblem(s.soft);
 }
 
 } // namespace detail

@@ -25,10 +25,14 @@ struct EnumName {
     std::string_view name;
 };
 
-constexpr std::array<EnumName<ShadowFilter>, 4> filterNames{{{ShadowFilter::PCF2x2, "pcf2x2"},
-                                                            {ShadowFilter::PCF3x3, "pcf3x3"},
-                                                            {ShadowFilter::PCF5x5, "pcf5x5"},
-                                                            {ShadowFilter::PCF7x7, "pcf7x7"}}};
+std::array<EnumName<ShadowFilter>, kShadowFilterCount> jsonFilterNames()
+{
+    std::array<EnumName<ShadowFilter>, kShadowFilterCount> names{};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        names[i] = {shadowFilterNames()[i].filter, shadowFilterNames()[i].json};
+    return names;
+}
+const std::array<EnumName<ShadowFilter>, kShadowFilterCount> filterNames = jsonFilterNames();
 constexpr std::array<EnumName<CascadeBlend>, 3> blendNames{
     {{CascadeBlend::Hard, "hard"}, {CascadeBlend::Soft, "soft"}, {CascadeBlend::Dither, "dither"}}};
 constexpr std::array<EnumName<rhi::Format>, 3> formatNames{
@@ -156,6 +160,31 @@ void readOther(const Json& object, std::string_view source, OtherShadowSettings&
     }
 }
 
+void readSoft(const Json& object, std::string_view source, SoftShadowSettings& s)
+{
+    const FieldReader r(source, "soft.");
+    r.requireObject(object, "soft");
+    for (const auto& [key, value] : object.items()) {
+        if (key == "blockerSearchScale")
+            s.blockerSearchScale = r.number(value, key);
+        else if (key == "penumbraScale")
+            s.penumbraScale = r.number(value, key);
+        else if (key == "blockerSamples")
+            s.blockerSamples = r.integer(value, key);
+        else if (key == "filterSamples")
+            s.filterSamples = r.integer(value, key);
+        else if (key == "minPenumbraTexels")
+            s.minPenumbraTexels = r.number(value, key);
+        else if (key == "maxPenumbraTexels")
+            s.maxPenumbraTexels = r.number(value, key);
+        else if (key == "poissonRadiusTexels")
+            s.poissonRadiusTexels = r.number(value, key);
+        else
+            r.unknown(key, "blockerSearchScale, penumbraScale, blockerSamples, filterSamples, minPenumbraTexels, "
+                           "maxPenumbraTexels, poissonRadiusTexels");
+    }
+}
+
 } // namespace
 
 ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourceName)
@@ -178,8 +207,10 @@ ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourc
             readDirectional(value, sourceName, settings.directional);
         else if (key == "other")
             readOther(value, sourceName, settings.other);
+        else if (key == "soft")
+            readSoft(value, sourceName, settings.soft);
         else
-            r.unknown(key, "maxDistance, distanceFade, directional, other");
+            r.unknown(key, "maxDistance, distanceFade, directional, other, soft");
     }
     if (const auto problem = detail::findSettingsProblem(settings))
         throw rhi::Error(
@@ -206,11 +237,21 @@ std::string toJson(const ShadowSettings& s)
     other["pointMode"] = nameOf(pointModeNames, o.pointMode);
     other["cubeMapSize"] = o.cubeMapSize;
     other["nearPlane"] = o.nearPlane;
+    const SoftShadowSettings& f = s.soft;
+    nlohmann::ordered_json soft;
+    soft["blockerSearchScale"] = f.blockerSearchScale;
+    soft["penumbraScale"] = f.penumbraScale;
+    soft["blockerSamples"] = f.blockerSamples;
+    soft["filterSamples"] = f.filterSamples;
+    soft["minPenumbraTexels"] = f.minPenumbraTexels;
+    soft["maxPenumbraTexels"] = f.maxPenumbraTexels;
+    soft["poissonRadiusTexels"] = f.poissonRadiusTexels;
     nlohmann::ordered_json root;
     root["maxDistance"] = s.maxDistance;
     root["distanceFade"] = s.distanceFade;
     root["directional"] = std::move(directional);
     root["other"] = std::move(other);
+    root["soft"] = std::move(soft);
     return root.dump(2) + "\n";
 }
 

@@ -72,7 +72,8 @@ TEST(DirectionalShadowPlanner, TilesViewportsAndUniformsAgree)
     const DirectionalShadowUniforms& u = plan.uniforms;
     EXPECT_EQ(u.config, glm::ivec4(4, 2, 1, 4));
     EXPECT_EQ(u.atlasSize, glm::vec4(1024.0f, 1.0f / 1024.0f, 256.0f, 1.0f / 256.0f));
-    EXPECT_EQ(u.lightShadowData[1], glm::vec4(1.0f, 0.5f, 4.0f, 0.0f));
+    // w: the light's filter, the atlas's PCF5x5 for a light without its own.
+    EXPECT_EQ(u.lightShadowData[1], glm::vec4(1.0f, 0.5f, 4.0f, 2.0f));
     ASSERT_EQ(plan.cascadeData.size(), 4u);
     for (std::uint32_t c = 0; c < 4; ++c) {
         EXPECT_EQ(u.cullingSpheres[c], plan.cascadeData[c].selectionSphere);

@@ -126,7 +126,7 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
     EXPECT_EQ(parseError(R"({"maxDistanse": 5})"),
-              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, other");
+              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, other, soft");
     EXPECT_EQ(parseError(R"({"other": {"pointMode": "cube"}})"),
               "shadows.json: other.pointMode: unknown value \"cube\", allowed atlas, cubemap");
     EXPECT_EQ(parseError(R"({"other": {"atlasSize": 100}})"),
@@ -145,7 +145,7 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
     EXPECT_EQ(parseError(R"({"directional": {"cascadeCount": 9}})"),
               "shadows.json: directional.cascadeCount: 9 is out of range, allowed 1..4");
     EXPECT_EQ(parseError(R"({"directional": {"filter": "pcf4x4"}})"),
-              "shadows.json: directional.filter: unknown value \"pcf4x4\", allowed pcf2x2, pcf3x3, pcf5x5, pcf7x7");
+              "shadows.json: directional.filter: unknown value \"pcf4x4\", allowed pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss");
     EXPECT_EQ(parseError(R"({"directional": {"cascadeBlend": "Soft"}})"),
               "shadows.json: directional.cascadeBlend: unknown value \"Soft\", allowed hard, soft, dither");
     EXPECT_EQ(parseError(R"({"directional": {"atlasFormat": "rgba8"}})"),

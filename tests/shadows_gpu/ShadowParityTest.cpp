@@ -339,6 +339,19 @@ TEST(ShadowParity, PointLightRoomCubeMaps)
 // glTF materials as authored: double-sided, vertex colours, metallic-roughness, normal (with and without tangents),
 // occlusion, emissive, transformed and TEXCOORD_1 textures, unlit and blended surfaces.
 TEST(ShadowParity, GltfMaterials) { checkParity({.name = "gltf-materials", .scene = "gltf-materials"}); }
+// Soft shadows on every light (the directional light's angular diameter and the local lights' radii are the scene's
+// defaults): PCSS's Poisson disks turned by the light-space texel hash give both backends the same pixels.
+TEST(ShadowParity, MixedLightsPcss)
+{
+    checkParity({.name = "mixed-pcss", .scene = "mixed", .filter = ShadowFilter::PCSS, .otherFilter = ShadowFilter::PCSS});
+}
+TEST(ShadowParity, PointLightRoomCubeMapsPcss)
+{
+    checkParity({.name = "room-cube-pcss",
+                 .scene = "room",
+                 .otherFilter = ShadowFilter::PCSS,
+                 .pointMode = shadows::PointShadowMode::CubeMap});
+}
 TEST(ShadowParity, PointLightRoom) { checkParity({.name = "room", .scene = "room", .otherFilter = ShadowFilter::PCF3x3}); }
 
 // The negative controls: a real render of the 1x1 variant on the first compiled configuration, one texel or pixel

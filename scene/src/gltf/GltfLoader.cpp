@@ -30,6 +30,18 @@ glm::vec3 forward(const glm::mat4& world) { return glm::normalize(glm::mat3(worl
 
 float defaultRange(float intensity) { return std::max(kDefaultRangePerSqrtIntensity * std::sqrt(intensity), 1.0f); }
 
+// The light's source size from its `extras` {"sourceSize": S} (degrees of angular diameter for directional lights,
+// world units of radius for spot and point lights), or `fallback` without one.
+float sourceSize(const Document& document, const tinygltf::Light& light, const std::string& owner, float fallback)
+{
+    if (!light.extras.IsObject() || !light.extras.Has("sourceSize"))
+        return fallback;
+    const tinygltf::Value& value = light.extras.Get("sourceSize");
+    if (!value.IsNumber() && !value.IsInt())
+        document.fail(fmt::format("{}: extras.sourceSize is not a number", owner));
+    return float(value.GetNumberAsDouble());
+}
+
 void addLight(const Document& document, const gltf::LightInstance& instance, Scene& scene,
               std::vector<std::string>& notes)
 {
@@ -44,7 +56,8 @@ void addLight(const Document& document, const gltf::LightInstance& instance, Sce
     const float range = light.range > 0.0 ? float(light.range) : defaultRange(intensity);
     if (light.type == "directional") {
         scene.lights.push_back({.name = light.name, .color = color, .intensity = intensity,
-                                .direction = forward(instance.world)});
+                                .direction = forward(instance.world),
+                                .angularDiameter = sourceSize(document, light, owner, kDefaultAngularDiameter)});
     } else if (light.type == "spot") {
         auto outer = float(light.spot.outerConeAngle);
         if (outer > kMaxSpotOuterAngle) {
@@ -54,10 +67,12 @@ void addLight(const Document& document, const gltf::LightInstance& instance, Sce
         scene.spotLights.push_back({.name = light.name, .color = color, .intensity = intensity,
                                     .position = origin(instance.world), .direction = forward(instance.world),
                                     .range = range, .innerAngle = float(light.spot.innerConeAngle),
-                                    .outerAngle = outer});
+                                    .outerAngle = outer,
+                                    .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius)});
     } else if (light.type == "point") {
         scene.pointLights.push_back({.name = light.name, .color = color, .intensity = intensity,
-                                     .position = origin(instance.world), .range = range});
+                                     .position = origin(instance.world), .range = range,
+                                     .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius)});
     } else {
         document.fail(fmt::format("{}: type '{}' is not directional, spot or point", owner, light.type));
     }

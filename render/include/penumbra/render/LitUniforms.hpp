@@ -96,7 +96,10 @@ inline constexpr std::uint32_t kLitAtlasBinding = 3;
 inline constexpr std::uint32_t kLitOtherShadowBinding = 4;
 inline constexpr std::uint32_t kLitOtherAtlasBinding = 5;
 inline constexpr std::uint32_t kLitShadowCubesBinding = 6;
-inline constexpr std::uint32_t kLitMaterialMapBinding = 7;
+// The same cube array read raw (no comparison): the soft filters' blocker search.
+inline constexpr std::uint32_t kLitShadowCubeDepthsBinding = 7;
+inline constexpr std::uint32_t kLitPoissonDisksBinding = 8; // shadows::PoissonDiskUniforms
+inline constexpr std::uint32_t kLitMaterialMapBinding = 9;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {

@@ -16,6 +16,15 @@ enum class NormalBiasSide : std::uint8_t { Receiver, Caster };
 // "receiver", "caster": the names on the command line and in the viewer.
 std::string_view normalBiasSideName(NormalBiasSide side);
 std::optional<NormalBiasSide> parseNormalBiasSide(std::string_view name);
+// A light's own shadow filter: a penumbra::shadows::ShadowFilter value, or kAtlasShadowFilter for the shadow
+// settings' (the atlas's) filter. The renderer checks the value.
+inline constexpr std::int32_t kAtlasShadowFilter = -1;
+
+// Default source sizes: the sun's angular diameter (about 0.53 degrees) and a 5 cm bulb.
+inline constexpr float kDefaultAngularDiameter = 0.53f;
+inline constexpr float kDefaultSourceRadius = 0.05f;
+// Largest angular diameter a directional light may have, degrees (a soft-shadow filter's reach ends far earlier).
+inline constexpr float kMaxAngularDiameter = 30.0f;
 
 struct DirectionalLight {
     std::string name;
@@ -27,6 +36,8 @@ struct DirectionalLight {
     float normalBias = 1.0f;                // receiver offset along its normal, in units of the cascade's filter-sized texel diagonal
     float nearPlaneOffset = 0.2f;           // pulls the shadow projection's near plane back, in world units
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
+    float angularDiameter = kDefaultAngularDiameter; // source size, degrees, 0..kMaxAngularDiameter (soft shadows)
+    std::int32_t shadowFilter = kAtlasShadowFilter;
 };
 
 // A cone light. Its light falls off with distance (zero at range) and between the inner and
@@ -45,6 +56,8 @@ struct SpotLight {
     float normalBias = 1.0f; // receiver offset in filter-sized texel diagonals at the receiver's distance
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
+    float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a disk facing the receiver (soft shadows)
+    std::int32_t shadowFilter = kAtlasShadowFilter;
 };
 
 // An omnidirectional light; its shadow is six cube faces.
@@ -59,6 +72,8 @@ struct PointLight {
     float normalBias = 1.0f;
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
+    float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a sphere (soft shadows)
+    std::int32_t shadowFilter = kAtlasShadowFilter;
 };
 
 // A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.

@@ -34,4 +34,14 @@ Scene makePointLightRoomScene();
 // up. Objects: "terrain", "tree N wood" and "tree N leaves" for N = 1..5.
 Scene makeForestScene();
 
+// Contact points for soft shadows, seen from straight above: a 20 x 20 ground (top at y = 0), a pole 3 high and
+// 0.2 wide standing on it at the origin, a floating slab 1 above the ground at (1.2, -2.2) and a fence of eight
+// thin slats at z = 2.2. One sun 45 degrees up shining towards +x with a 10 degree angular diameter, so the pole's
+// shadow runs along +x from its foot (its point at height h falls at x = h) and widens with x. The camera looks down
+// on x in about [-2, 5] with +x to the right and +z down the picture. Objects: "ground", "pole", "slab",
+// "fence 1".."fence 8".
+inline constexpr float kContactPoleHeight = 3.0f;
+inline constexpr float kContactPoleHalfWidth = 0.1f;
+Scene makeContactScene();
+
 } // namespace penumbra::scene

@@ -28,6 +28,8 @@ struct DirectionalShadowLightInput {
     float normalBias = 1.0f;                // multiple of the cascade's normal bias
     float slopeScaleBias = 0.0f;            // rasterizer slope-scaled depth bias of the shadow pass
     bool castsShadows = true;
+    std::optional<ShadowFilter> filter;     // nullopt: the atlas's (DirectionalShadowSettings::filter)
+    float angularDiameter = 0.0f;           // degrees: the source size of Poisson and PCSS filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 
@@ -45,6 +47,8 @@ struct ShadowedDirectionalLight {
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
     float nearPlaneOffset = 0.0f;
+    ShadowFilter filter = ShadowFilter::PCF2x2; // the light's, resolved
+    float angularDiameter = 0.0f;
     std::uint32_t firstTile = 0;
     std::vector<DirectionalCascadePlan> cascades;
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;

@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstddef>
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
+
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -17,12 +19,20 @@ inline constexpr std::uint32_t maxCascades = 4;
 //   layout(std140) uniform DirectionalShadows {
 //       mat4 worldToAtlas[16];      // tile light * cascadeCount + cascade: world -> (u, v, depth) in the atlas
 //       vec4 cullingSpheres[4];     // xyz centre, w = r'^2 (sphere shrunk by the filter): cascade selection
-//       vec4 cascadeData[4];        // x = 1 / r'^2 (cascade fade), y = normal bias in world units per unit bias
+//       vec4 cascadeData[4];        // x = 1 / r'^2 (cascade fade), y = normal bias in world units per unit bias,
+//                                   // z = world size of a texel
 //       vec4 distanceFade;          // 1 / maxDistance, 1 / distanceFade, 1 / (1 - (1 - cascadeFade)^2), 0
 //       vec4 atlasSize;             // size, 1 / size, tile size, 1 / tile size (texels)
-//       ivec4 config;               // cascadeCount, filter (0..3: PCF2x2..7x7), blend (0..2: hard, soft, dither),
+//       ivec4 config;               // cascadeCount, filter (ShadowFilter), blend (0..2: hard, soft, dither),
 //                                   // shadowed light count
-//       vec4 lightShadowData[4];    // per shadow slot: strength, normalBias, first tile, 0
+//       vec4 lightShadowData[4];    // per shadow slot: strength, normalBias, first tile, the light's filter
+//       vec4 tileSoft[16];          // per tile: x, y: add to a tile texel for the light-space texel (the disk's
+//                                   // rotation); z, w: the depth row (orthographicDistanceFromNear: the distance
+//                                   // past the nearest caster's light-space depth)
+//       vec4 lightSoft[4];          // per shadow slot: tan of half the angular diameter, normal bias factor of the
+//                                   // light's filter over the atlas's, 0, 0
+//       vec4 softScales;            // SoftShadowUniforms
+//       vec4 softCounts;
 //   };
 struct DirectionalShadowUniforms {
     std::array<glm::mat4, maxShadowedDirectionalLights * maxCascades> worldToAtlas{};
@@ -32,6 +42,9 @@ struct DirectionalShadowUniforms {
     glm::vec4 atlasSize{0.0f};
     glm::ivec4 config{0};
     std::array<glm::vec4, maxShadowedDirectionalLights> lightShadowData{};
+    std::array<glm::vec4, maxShadowedDirectionalLights * maxCascades> tileSoft{};
+    std::array<glm::vec4, maxShadowedDirectionalLights> lightSoft{};
+    SoftShadowUniforms soft;
 };
 
 static_assert(sizeof(glm::mat4) == 64 && sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16);
@@ -42,7 +55,9 @@ static_assert(offsetof(DirectionalShadowUniforms, distanceFade) == 1152);
 static_assert(offsetof(DirectionalShadowUniforms, atlasSize) == 1168);
 static_assert(offsetof(DirectionalShadowUniforms, config) == 1184);
 static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1200);
-static_assert(sizeof(DirectionalShadowUniforms) == 1264);
+static_assert(offsetof(DirectionalShadowUniforms, tileSoft) == 1264);
+static_assert(offsetof(DirectionalShadowUniforms, soft) == 1584);
+static_assert(sizeof(DirectionalShadowUniforms) == 1616);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout directionalShadowLayout()

@@ -11,6 +11,7 @@
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -26,6 +27,8 @@ struct SpotShadowInput {
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
     float nearPlane = 0.0f; // world units; 0: OtherShadowSettings::nearPlane x range
+    std::optional<ShadowFilter> filter; // nullopt: the atlas's (OtherShadowSettings::filter)
+    float sourceRadius = 0.0f;          // world units: the source size of Poisson and PCSS filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 
@@ -36,6 +39,8 @@ struct PointShadowInput {
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
     float nearPlane = 0.0f; // world units; 0: OtherShadowSettings::nearPlane x range
+    std::optional<ShadowFilter> filter; // nullopt: the atlas's (OtherShadowSettings::filter)
+    float sourceRadius = 0.0f;
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
 };
 

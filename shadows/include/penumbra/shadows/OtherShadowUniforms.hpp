@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstddef>
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
+
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -17,11 +19,17 @@ inline constexpr std::uint32_t maxShadowCubes = 4;
 //   layout(std140) uniform OtherShadows {
 //       mat4 worldToAtlas[16]; // per tile: world -> (u, v, depth) x w in the other atlas (divide by w)
 //       vec4 tileBounds[16];   // per tile: first and last texel (x, y, x, y) that filter taps may read
-//       vec4 tileData[16];     // per tile: x = normal bias per unit distance from the light plane
+//       vec4 tileData[16];     // per tile: x = normal bias per unit distance from the light plane, y = the light's
+//                              // filter (ShadowFilter)
 //       vec4 cubeData[4];      // per cube: x, y: window depth = (x * -z + y) / z at major-axis distance z,
 //                              // z = normal bias per unit distance, w = 1 / face size (texels)
 //       vec4 atlasSize;        // size, 1 / size, 0, 0
-//       ivec4 config;          // filter (0..3: PCF2x2..7x7), point mode (0 atlas, 1 cube map), 0, 0
+//       ivec4 config;          // filter (ShadowFilter), point mode (0 atlas, 1 cube map), 0, 0
+//       vec4 tileSoft[16];     // per tile: (t22, t32) the depth row (perspectiveDistance), the light's radius in
+//                              // texels at unit distance (lightTexels), the near plane
+//       vec4 cubeSoft[4];      // per cube: the light's filter, lightTexels, the near plane, 0
+//       vec4 softScales;       // SoftShadowUniforms
+//       vec4 softCounts;
 //   };
 struct OtherShadowUniforms {
     std::array<glm::mat4, maxOtherShadowTiles> worldToAtlas{};
@@ -30,6 +38,9 @@ struct OtherShadowUniforms {
     std::array<glm::vec4, maxShadowCubes> cubeData{};
     glm::vec4 atlasSize{0.0f};
     glm::ivec4 config{0};
+    std::array<glm::vec4, maxOtherShadowTiles> tileSoft{};
+    std::array<glm::vec4, maxShadowCubes> cubeSoft{};
+    SoftShadowUniforms soft;
 };
 
 static_assert(offsetof(OtherShadowUniforms, tileBounds) == 1024);
@@ -37,7 +48,9 @@ static_assert(offsetof(OtherShadowUniforms, tileData) == 1280);
 static_assert(offsetof(OtherShadowUniforms, cubeData) == 1536);
 static_assert(offsetof(OtherShadowUniforms, atlasSize) == 1600);
 static_assert(offsetof(OtherShadowUniforms, config) == 1616);
-static_assert(sizeof(OtherShadowUniforms) == 1632);
+static_assert(offsetof(OtherShadowUniforms, tileSoft) == 1632);
+static_assert(offsetof(OtherShadowUniforms, soft) == 1952);
+static_assert(sizeof(OtherShadowUniforms) == 1984);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout otherShadowLayout()

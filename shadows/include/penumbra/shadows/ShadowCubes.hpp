@@ -23,6 +23,8 @@ public:
     const rhi::Texture& texture() const { return *texture_; }
     const rhi::Framebuffer& framebuffer(std::uint32_t layer) const { return *framebuffers_.at(layer); }
     const rhi::Sampler& sampler() const { return *sampler_; }
+    // Nearest, no comparison: the stored depths themselves (samplerCubeArray), for blocker searches.
+    const rhi::Sampler& depthSampler() const { return *depthSampler_; }
 
 private:
     std::uint32_t faceSize_;
@@ -31,6 +33,7 @@ private:
     std::unique_ptr<rhi::Texture> texture_;
     std::vector<std::unique_ptr<rhi::Framebuffer>> framebuffers_;
     std::unique_ptr<rhi::Sampler> sampler_;
+    std::unique_ptr<rhi::Sampler> depthSampler_;
 };
 
 } // namespace penumbra::shadows

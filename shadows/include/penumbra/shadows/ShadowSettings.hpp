@@ -2,27 +2,66 @@
 
 #include "penumbra/rhi/Format.hpp"
 
+#include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <optional>
+#include <string_view>
 
 namespace penumbra::shadows {
 
-// Percentage-closer filter of directional shadows: a tent N texels wide (2x2 is one bilinear tap).
-enum class ShadowFilter { PCF2x2, PCF3x3, PCF5x5, PCF7x7 };
+// A light's shadow filter: a percentage-closer tent N texels wide (2x2 is one bilinear tap, "hard"), a
+// fixed-radius Poisson disk, or percentage-closer soft shadows (Fernando 2005, "Percentage-Closer Soft Shadows"):
+// a blocker search, a penumbra estimate, then the Poisson disk over that penumbra. The values are the lit
+// shader's (generated into shadow_constants.glsl by filterConstantsGlsl).
+enum class ShadowFilter { PCF2x2, PCF3x3, PCF5x5, PCF7x7, Poisson, PCSS };
+inline constexpr int kShadowFilterCount = 6;
+
+// The filter's names: in the settings JSON ("pcf2x2".."pcf7x7", "poisson", "pcss") and on the command line
+// ("hard", "pcf3", "pcf5", "pcf7", "poisson", "pcss").
+struct ShadowFilterName {
+    ShadowFilter filter;
+    std::string_view json;
+    std::string_view command;
+};
+const std::array<ShadowFilterName, kShadowFilterCount>& shadowFilterNames();
+std::optional<ShadowFilter> filterFromCommandName(std::string_view name);
+// "hard, pcf3, pcf5, pcf7, poisson, pcss".
+std::string_view filterCommandNames();
+
+// Whether the filter is one of the Poisson-disk filters (Poisson, PCSS), which take SoftShadowSettings.
+bool isSoftFilter(ShadowFilter filter);
 
 // How the lit shader moves from one cascade to the next.
 enum class CascadeBlend { Hard, Soft, Dither };
 
-// Width of the filter's kernel in texels: 2, 3, 5, 7.
+// Width of a tent filter's kernel in texels: 2, 3, 5, 7 (the Poisson filters: 2, their centre tap's bilinear).
 int filterSize(ShadowFilter filter);
 
 // The "filter size" of Catlike Coding's "Directional Shadows" tutorial (section "Shadow Quality")
 // for the normal bias and the culling-sphere shrink:
-// enum + 1 = 1, 2, 3, 4 texels (texel size x this x sqrt 2 is the normal bias), not the kernel width.
+// enum + 1 = 1, 2, 3, 4 texels (texel size x this x sqrt 2 is the normal bias), not the kernel width. The Poisson
+// filters take 1, as the 2x2 does: their receiver-plane depth bias (soft_shadows.glsl) covers the wider kernel.
 float normalBiasFilterFactor(ShadowFilter filter);
 
-// Bilinear comparison taps the filter takes: 1, 4, 9, 16.
+// Bilinear comparison taps the tent filters take: 1, 4, 9, 16 (the Poisson filters: SoftShadowSettings's counts).
 int filterTapCount(ShadowFilter filter);
+
+// The Poisson disk sizes offered for blocker searches and filters.
+inline constexpr std::uint32_t kPoissonSampleCounts[] = {16, 32, 64};
+
+// Seed 003's PCSS controls (after NVIDIA's "Integrating Realistic Soft Shadows into Your Game Engine", 2008):
+// its s_search and s_penumbra as scales of the light-size terms, the Poisson sample counts and the penumbra's
+// clamp. Shared by every light whose filter is Poisson or PCSS.
+struct SoftShadowSettings {
+    float blockerSearchScale = 1.0f; // 0.1..10, scales w_search
+    float penumbraScale = 1.0f;      // 0.1..10, scales w_penumbra
+    std::uint32_t blockerSamples = 16; // 16, 32 or 64
+    std::uint32_t filterSamples = 16;  // 16, 32 or 64
+    float minPenumbraTexels = 1.0f;  // 0..64, the filter radius never goes below this
+    float maxPenumbraTexels = 24.0f; // minPenumbraTexels..64, nor above this (nor the blocker search)
+    float poissonRadiusTexels = 2.5f; // 0.5..64, the fixed-radius Poisson filter's radius
+};
 
 struct DirectionalShadowSettings {
     std::uint32_t atlasSize = 1024;            // texels per side, a power of two in 256..8192
@@ -58,6 +97,7 @@ struct ShadowSettings {
     float distanceFade = 0.1f;  // 0.001..1, fraction of maxDistance over which shadows fade out
     DirectionalShadowSettings directional;
     OtherShadowSettings other;
+    SoftShadowSettings soft;
 };
 
 // Throws rhi::Error "<field>: <value> is out of range, allowed <range>" for the first field out of range

@@ -1,0 +1,66 @@
+#include "penumbra/render/SoftShadowTruth.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <fmt/format.h>
+
+namespace penumbra::render {
+
+shadows::ShadowFilter plannedShadowFilter(const ShadowPlans& plans, const scene::LightRef& light)
+{
+    const auto noShadow = [&] {
+        return rhi::Error(fmt::format("{} {} has no shadow map in this frame", scene::lightKindName(light.kind),
+                                      light.index));
+    };
+    switch (light.kind) {
+    case scene::LightKind::Directional: {
+        const int slot = light.index < plans.directional.shadowSlots.size() ? plans.directional.shadowSlots[light.index] : -1;
+        if (slot < 0)
+            throw noShadow();
+        return plans.directional.lights[std::size_t(slot)].filter;
+    }
+    case scene::LightKind::Spot: {
+        const int tile = light.index < plans.other.spotTiles.size() ? plans.other.spotTiles[light.index] : -1;
+        if (tile < 0)
+            throw noShadow();
+        return static_cast<shadows::ShadowFilter>(plans.other.uniforms.tileData[std::size_t(tile)].y);
+    }
+    case scene::LightKind::Point: {
+        const int shadow = light.index < plans.other.pointShadows.size() ? plans.other.pointShadows[light.index] : -1;
+        if (shadow < 0)
+            throw noShadow();
+        return static_cast<shadows::ShadowFilter>(plans.other.cubes.empty()
+                                                      ? plans.other.uniforms.tileData[std::size_t(shadow)].y
+                                                      : plans.other.uniforms.cubeSoft[std::size_t(shadow)].x);
+    }
+    }
+    throw noShadow();
+}
+
+float lightSourceSize(const scene::Scene& scene, const scene::LightRef& light)
+{
+    switch (light.kind) {
+    case scene::LightKind::Directional:
+        return scene.lights.at(light.index).angularDiameter;
+    case scene::LightKind::Spot:
+        return scene.spotLights.at(light.index).sourceRadius;
+    case scene::LightKind::Point:
+        return scene.pointLights.at(light.index).sourceRadius;
+    }
+    return 0.0f;
+}
+
+scene::AreaLightSource areaLightOf(const scene::Scene& scene, const scene::LightRef& light)
+{
+    switch (light.kind) {
+    case scene::LightKind::Directional:
+        return scene::areaLightOf(scene.lights.at(light.index));
+    case scene::LightKind::Spot:
+        return scene::areaLightOf(scene.spotLights.at(light.index));
+    case scene::LightKind::Point:
+        return scene::areaLightOf(scene.pointLights.at(light.index));
+    }
+    return {};
+}
+
+} // namespace penumbra::render

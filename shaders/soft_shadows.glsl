@@ -1,0 +1,215 @@
+// The Poisson-disk filters over one tile of a depth atlas: a fixed-radius Poisson disk, and percentage-closer soft
+// shadows (Fernando 2005, "Percentage-Closer Soft Shadows"; NVIDIA 2008, "Integrating Realistic Soft Shadows into
+// Your Game Engine"): a blocker search, the average blocker depth, the penumbra from the receiver and blocker depths,
+// then the Poisson disk over that penumbra. The same math as penumbra::shadows::SoftShadowMath; the disks are
+// the PoissonDisks block.
+//
+// Every tap compares against the receiver's plane at the texel it reads, not the receiver's own depth (Isidoro 2006,
+// "Receiver Plane Depth Bias", GDC): a wide kernel over a sloped receiver then does not shadow the receiver itself.
+// The disk turns by a hash of the receiver's texel in the light's own grid, so a static scene's shadows stay put
+// while the camera moves, and both backends give the same pixels.
+
+// penumbra::shadows::PoissonDiskUniforms: the disks of 16, 32 and 64 points, disk n from point n - 16, two a vec4.
+layout(std140, binding = PENUMBRA_BINDING_POISSON_DISKS) uniform PoissonDisks {
+    vec4 points[PENUMBRA_POISSON_DISK_POINTS / 2];
+} poissonDisks;
+
+vec2 poissonPoint(int index)
+{
+    const vec4 pair = poissonDisks.points[index >> 1];
+    return (index & 1) == 0 ? pair.xy : pair.zw;
+}
+
+// The receiver's screen-space position derivatives, set once by main() in uniform control flow
+// (setReceiverDerivatives): the shadow functions run in per-light branches, where derivatives are undefined.
+vec3 receiverDx = vec3(0.0);
+vec3 receiverDy = vec3(0.0);
+
+void setReceiverDerivatives(vec3 dx, vec3 dy)
+{
+    receiverDx = dx;
+    receiverDy = dy;
+}
+
+// PCG2D (Jarzynski and Olano 2020, "Hash Functions for GPU Rendering", section 3): penumbra::shadows::pcg2d.
+uvec2 pcg2d(uvec2 v)
+{
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * 1664525u;
+    v.y += v.x * 1664525u;
+    v ^= v >> 16u;
+    v.x += v.y * 1664525u;
+    v.y += v.x * 1664525u;
+    v ^= v >> 16u;
+    return v;
+}
+
+mat2 diskRotation(ivec2 lightTexel)
+{
+    const float angle = 6.28318531 * (float(pcg2d(uvec2(lightTexel)).x >> 8u) * (1.0 / 16777216.0));
+    const float c = cos(angle);
+    const float s = sin(angle);
+    return mat2(c, s, -s, c);
+}
+
+// d(depth) per texel along x and y of the receiver's plane, from the screen derivatives of its shadow-map position
+// (texel x, texel y, depth): penumbra::shadows::receiverPlaneDepthGradient.
+vec2 receiverPlaneDepthGradient(vec3 dx, vec3 dy)
+{
+    const float determinant = dx.x * dy.y - dx.y * dy.x;
+    if (!(abs(determinant) > 1e-12))
+        return vec2(0.0);
+    return vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / determinant;
+}
+
+// One receiver over one tile: texel-space position, depth, receiver-plane gradient, tile and disk rotation.
+struct SoftTile {
+    vec2 centre;
+    float depth;
+    vec2 gradient;
+    ivec2 tileMin;
+    ivec2 tileMax;
+    mat2 rotation;
+};
+
+// The receiver in tile `tileMin..tileMax` at atlas position `p` (u, v, depth) whose screen derivatives are
+// dpdx, dpdy (atlas units); `lightTexel` adds to a tile texel for the light's own texel grid.
+SoftTile softTile(vec3 p, vec3 dpdx, vec3 dpdy, float atlasSize, ivec2 tileMin, ivec2 tileMax, vec2 lightTexel)
+{
+    SoftTile t;
+    t.centre = p.xy * atlasSize;
+    t.depth = p.z;
+    const vec3 scale = vec3(atlasSize, atlasSize, 1.0);
+    t.gradient = receiverPlaneDepthGradient(dpdx * scale, dpdy * scale);
+    t.tileMin = tileMin;
+    t.tileMax = tileMax;
+    t.rotation = diskRotation(ivec2(floor(t.centre - vec2(tileMin) + lightTexel)));
+    return t;
+}
+
+vec2 diskTap(SoftTile t, int index, float radius) { return t.centre + radius * (t.rotation * poissonPoint(index)); }
+
+// The receiver plane's depth at the centre of `texel`.
+float planeDepth(SoftTile t, ivec2 texel) { return t.depth + dot(t.gradient, vec2(texel) + 0.5 - t.centre); }
+
+// (average depth of the blockers, their count) among `count` taps within `radius` texels: a tap's texel, clamped
+// into the tile, is a blocker when its depth is nearer to the light than the receiver plane there.
+vec2 searchBlockers(sampler2D atlas, SoftTile t, float radius, int count)
+{
+    const int first = count - 16;
+    float sum = 0.0;
+    float blockers = 0.0;
+    for (int i = 0; i < count; ++i) {
+        const ivec2 texel = clamp(ivec2(floor(diskTap(t, first + i, radius))), t.tileMin, t.tileMax);
+        const float stored = texelFetch(atlas, texel, 0).r;
+        if (penumbraIsNearer(stored, planeDepth(t, texel))) {
+            sum += stored;
+            blockers += 1.0;
+        }
+    }
+    return vec2(blockers > 0.0 ? sum / blockers : 0.0, blockers);
+}
+
+float comparePlane(sampler2D atlas, SoftTile t, ivec2 texel)
+{
+    const ivec2 clamped = clamp(texel, t.tileMin, t.tileMax);
+    return penumbraIsNearer(texelFetch(atlas, clamped, 0).r, planeDepth(t, clamped)) ? 0.0 : 1.0;
+}
+
+// A bilinear comparison tap at texel-space `position` against the receiver plane (bilinearCompare's weights).
+float bilinearComparePlane(sampler2D atlas, SoftTile t, vec2 position)
+{
+    const vec2 corner = position - 0.5;
+    const vec2 base = floor(corner);
+    const vec2 f = corner - base;
+    const ivec2 b = ivec2(base);
+    const float top = mix(comparePlane(atlas, t, b), comparePlane(atlas, t, b + ivec2(1, 0)), f.x);
+    const float bottom = mix(comparePlane(atlas, t, b + ivec2(0, 1)), comparePlane(atlas, t, b + ivec2(1, 1)), f.x);
+    return mix(top, bottom, f.y);
+}
+
+// The Poisson disk of `count` bilinear taps over `radius` texels: 1 = lit.
+float poissonFilter(sampler2D atlas, SoftTile t, float radius, int count)
+{
+    const int first = count - 16;
+    float lit = 0.0;
+    for (int i = 0; i < count; ++i)
+        lit += bilinearComparePlane(atlas, t, diskTap(t, first + i, radius));
+    return lit / float(count);
+}
+
+// The controls of penumbra::shadows::SoftShadowUniforms.
+struct SoftControls {
+    float searchScale;
+    float penumbraScale;
+    float minTexels;
+    float maxTexels;
+    int blockerSamples;
+    int filterSamples;
+    float poissonRadius;
+};
+
+SoftControls softControls(vec4 scales, vec4 counts)
+{
+    return SoftControls(scales.x, scales.y, scales.z, scales.w, int(counts.x), int(counts.y), counts.z);
+}
+
+// Directional lights (penumbra::shadows::directionalSearchTexels, directionalPenumbraTexels): distances past the
+// nearest caster from the depth row (so the search does not follow the camera-fitted near plane), the penumbra from
+// the angular size in world units over the cascade's texel size. Each loop appears once: the shader compilers inline
+// every call.
+float directionalSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftControls c, vec2 depthRow,
+                            float tanHalfAngle, float texelWorld)
+{
+    float radius = c.poissonRadius;
+    if (filterIndex == PENUMBRA_FILTER_PCSS) {
+        const float receiver = max((depthRow.y - t.depth) / depthRow.x, 0.0);
+        const float search = clamp(c.searchScale * receiver * tanHalfAngle / texelWorld, 1.0, max(c.maxTexels, 1.0));
+        const vec2 blockers = searchBlockers(atlas, t, search, c.blockerSamples);
+        if (blockers.y == 0.0)
+            return 1.0;
+        const float blocker = (depthRow.y - blockers.x) / depthRow.x;
+        radius = clamp(c.penumbraScale * max(receiver - blocker, 0.0) * tanHalfAngle / texelWorld, c.minTexels,
+                       c.maxTexels);
+    }
+    return poissonFilter(atlas, t, radius, c.filterSamples);
+}
+
+// View distance of a perspective depth: penumbra::shadows::perspectiveDistance.
+float perspectiveDistance(float depth, vec2 depthRow) { return depthRow.y / (depth + depthRow.x); }
+
+// Spot and point lights of radius R (lightTexels = R x texels per unit size at unit distance):
+// penumbra::shadows::perspectiveSearchTexels, perspectivePenumbraTexels.
+float perspectiveSearchTexels(float receiver, float nearPlane, float lightTexels, SoftControls c)
+{
+    return clamp(c.searchScale * lightTexels * max(receiver - nearPlane, 0.0) / (receiver * nearPlane), 1.0,
+                 max(c.maxTexels, 1.0));
+}
+
+float perspectivePenumbraTexels(float receiver, float blocker, float lightTexels, SoftControls c)
+{
+    return clamp(c.penumbraScale * lightTexels * max(receiver - blocker, 0.0) / (blocker * receiver), c.minTexels,
+                 c.maxTexels);
+}
+
+// tileSoft = (t22, t32, lightTexels, near plane).
+float perspectiveSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftControls c, vec4 tileSoft)
+{
+    float radius = c.poissonRadius;
+    if (filterIndex == PENUMBRA_FILTER_PCSS) {
+        const float receiver = perspectiveDistance(t.depth, tileSoft.xy);
+        const vec2 blockers =
+            searchBlockers(atlas, t, perspectiveSearchTexels(receiver, tileSoft.w, tileSoft.z, c), c.blockerSamples);
+        if (blockers.y == 0.0)
+            return 1.0;
+        radius = perspectivePenumbraTexels(receiver, perspectiveDistance(blockers.x, tileSoft.xy), tileSoft.z, c);
+    }
+    return poissonFilter(atlas, t, radius, c.filterSamples);
+}
+
+// Screen derivatives of a perspective shadow-map position m * (p, 1) / w, from those of p (receiverDx, receiverDy).
+vec3 projectedDerivative(mat4 m, vec4 projected, vec3 dp)
+{
+    const vec4 d = m * vec4(dp, 0.0);
+    return (d.xyz - projected.xyz / projected.w * d.w) / projected.w;
+}

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+
+namespace penumbra::shadows {
+
+// The GLSL include "shadow_constants.glsl" of the lit shader: the ShadowFilter values, their kernel sizes and the
+// size of the Poisson disks' uniform block (PoissonDiskUniforms), so that every number is written once, in C++.
+//   PENUMBRA_FILTER_<NAME>          ShadowFilter values (PCF2X2 .. PCSS)
+//   PENUMBRA_FILTER_SIZES[n]        filterSize
+//   PENUMBRA_POISSON_DISK_POINTS    kPoissonDiskPoints
+std::string filterConstantsGlsl();
+
+} // namespace penumbra::shadows

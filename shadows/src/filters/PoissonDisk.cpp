@@ -1,0 +1,93 @@
+#include "penumbra/shadows/PoissonDisk.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <vector>
+
+namespace penumbra::shadows {
+namespace {
+
+// Candidates per placed point: Mitchell's k; 30 spreads points close to a maximal Poisson disk.
+constexpr std::uint32_t kCandidatesPerPoint = 30;
+
+// Knuth's MMIX linear congruential generator: integer arithmetic only, so the disk is the same everywhere.
+class Lcg {
+public:
+    float next()
+    {
+        state_ = state_ * 6364136223846793005ull + 1442695040888963407ull;
+        return static_cast<float>(state_ >> 40) / static_cast<float>(1u << 24);
+    }
+
+private:
+    std::uint64_t state_ = 0x9e3779b97f4a7c15ull;
+};
+
+glm::vec2 pointInDisk(Lcg& random)
+{
+    // Uniform over the disk's area: radius sqrt(u).
+    const float radius = std::sqrt(random.next());
+    const float angle = 6.28318531f * random.next();
+    return {radius * std::cos(angle), radius * std::sin(angle)};
+}
+
+std::vector<glm::vec2> bestCandidateDisk(std::uint32_t count)
+{
+    Lcg random;
+    std::vector<glm::vec2> points;
+    points.push_back(pointInDisk(random));
+    while (points.size() < count) {
+        glm::vec2 best{0.0f};
+        float bestDistance = -1.0f;
+        for (std::uint32_t c = 0; c < kCandidatesPerPoint * points.size(); ++c) {
+            const glm::vec2 candidate = pointInDisk(random);
+            float nearest = std::numeric_limits<float>::max();
+            for (const glm::vec2& p : points)
+                nearest = std::min(nearest, glm::distance(candidate, p));
+            if (nearest > bestDistance) {
+                bestDistance = nearest;
+                best = candidate;
+            }
+        }
+        points.push_back(best);
+    }
+    return points;
+}
+
+} // namespace
+
+std::span<const glm::vec2> poissonDisk(std::uint32_t count)
+{
+    static const std::array<std::vector<glm::vec2>, 3> disks{bestCandidateDisk(16), bestCandidateDisk(32),
+                                                             bestCandidateDisk(64)};
+    for (const std::vector<glm::vec2>& disk : disks)
+        if (disk.size() == count)
+            return disk;
+    throw rhi::Error(fmt::format("Poisson disk: {} points, allowed 16, 32, 64", count));
+}
+
+PoissonDiskUniforms poissonDiskUniforms()
+{
+    PoissonDiskUniforms u;
+    std::size_t next = 0;
+    for (const std::uint32_t count : {16u, 32u, 64u})
+        for (const glm::vec2& p : poissonDisk(count)) {
+            glm::vec4& slot = u.points[next / 2];
+            if (next % 2 == 0) {
+                slot.x = p.x;
+                slot.y = p.y;
+            } else {
+                slot.z = p.x;
+                slot.w = p.y;
+            }
+            ++next;
+        }
+    return u;
+}
+
+} // namespace penumbra::shadows

@@ -1,0 +1,332 @@
+#include "penumbra/rhi/Error.hpp"
+#include "ShadowTestSupport.hpp"
+
+#include "penumbra/shadows/CascadeData.hpp"
+#include "penumbra/shadows/DirectionalShadowPlanner.hpp"
+#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/FilterConstants.hpp"
+#include "penumbra/shadows/PoissonDisk.hpp"
+#include "penumbra/shadows/ShadowSettingsJson.hpp"
+#include "penumbra/shadows/SoftShadowMath.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <set>
+#include <string>
+
+namespace penumbra::shadows {
+namespace {
+
+using testing::allConventions;
+using testing::conventionName;
+
+TEST(PoissonDiskTest, PointsLieInTheUnitDiskAndKeepApart)
+{
+    for (const std::uint32_t count : kPoissonSampleCounts) {
+        const std::span<const glm::vec2> disk = poissonDisk(count);
+        ASSERT_EQ(disk.size(), count);
+        float nearest = 10.0f;
+        glm::vec2 mean(0.0f);
+        for (std::size_t i = 0; i < disk.size(); ++i) {
+            EXPECT_LE(glm::length(disk[i]), 1.0f);
+            mean += disk[i] / static_cast<float>(count);
+            for (std::size_t j = i + 1; j < disk.size(); ++j)
+                nearest = std::min(nearest, glm::distance(disk[i], disk[j]));
+        }
+        // A maximal Poisson disk of n points in the unit disk keeps about sqrt(1 / n) apart; random points come
+        // far closer (their expected nearest pair is about 1 / n).
+        EXPECT_GT(nearest, 0.6f / std::sqrt(static_cast<float>(count))) << count;
+        // Spread over the whole disk: no lopsided mean.
+        EXPECT_LT(glm::length(mean), 0.12f) << count;
+    }
+}
+
+TEST(PoissonDiskTest, IsTheSameEveryCallAndRefusesOtherCounts)
+{
+    EXPECT_EQ(poissonDisk(16).data(), poissonDisk(16).data());
+    EXPECT_THROW(poissonDisk(24), rhi::Error);
+}
+
+TEST(FilterConstantsTest, WritesEveryFilterAndEveryDiskPointOnce)
+{
+    const std::string glsl = filterConstantsGlsl();
+    EXPECT_NE(glsl.find("#define PENUMBRA_FILTER_PCF2X2 0\n"), std::string::npos);
+    EXPECT_NE(glsl.find("#define PENUMBRA_FILTER_POISSON 4\n"), std::string::npos);
+    EXPECT_NE(glsl.find("#define PENUMBRA_FILTER_PCSS 5\n"), std::string::npos);
+    EXPECT_NE(glsl.find("PENUMBRA_FILTER_SIZES[6] = int[](2, 3, 5, 7, 2, 2)"), std::string::npos);
+    EXPECT_NE(glsl.find("#define PENUMBRA_POISSON_DISK_POINTS 112\n"), std::string::npos);
+}
+
+TEST(PoissonDiskTest, UniformsHoldEveryDiskInOrder)
+{
+    const PoissonDiskUniforms u = poissonDiskUniforms();
+    EXPECT_EQ(glm::vec2(u.points[0].x, u.points[0].y), poissonDisk(16)[0]);
+    EXPECT_EQ(glm::vec2(u.points[8].x, u.points[8].y), poissonDisk(32)[0]);   // point 16
+    EXPECT_EQ(glm::vec2(u.points[55].z, u.points[55].w), poissonDisk(64)[63]); // point 111
+}
+
+TEST(RotationHashTest, IsDeterministicAndSpreadsAngles)
+{
+    // PCG2D of (0, 0), worked by hand from the paper's constants: v = (1013904223, 1013904223) first.
+    EXPECT_EQ(pcg2d(glm::uvec2(0u)), pcg2d(glm::uvec2(0u)));
+    std::set<int> bins;
+    float sum = 0.0f;
+    for (int y = -8; y < 8; ++y)
+        for (int x = -8; x < 8; ++x) {
+            const float a = diskRotationAngle({x, y});
+            ASSERT_GE(a, 0.0f);
+            ASSERT_LT(a, 6.2831854f);
+            bins.insert(static_cast<int>(a / 6.2831854f * 16.0f));
+            sum += a;
+        }
+    EXPECT_EQ(bins.size(), 16u); // every sixteenth of the circle is used by 256 texels
+    EXPECT_NEAR(sum / 256.0f, 3.14159f, 0.4f);
+    EXPECT_NE(diskRotationAngle({1, 0}), diskRotationAngle({0, 1}));
+}
+
+TEST(ReceiverPlaneTest, RecoversThePlaneGradientFromScreenDerivatives)
+{
+    // A plane depth = 0.01 x + 0.002 y seen through an arbitrary screen mapping.
+    const glm::vec2 g{0.01f, 0.002f};
+    const glm::vec2 dx{1.5f, 0.25f}, dy{-0.5f, 2.0f};
+    const glm::vec2 recovered =
+        receiverPlaneDepthGradient({dx, glm::dot(g, dx)}, {dy, glm::dot(g, dy)});
+    EXPECT_NEAR(recovered.x, g.x, 1e-6f);
+    EXPECT_NEAR(recovered.y, g.y, 1e-6f);
+    EXPECT_EQ(receiverPlaneDepthGradient({1, 1, 1}, {2, 2, 2}), glm::vec2(0.0f)); // edge-on
+}
+
+TEST(PenumbraTest, DirectionalPenumbraIsTheSameInWorldUnitsInEveryCascade)
+{
+    const PenumbraLimits wide{0.0f, 64.0f};
+    const float tanHalf = tanHalfAngularDiameter(2.0f);
+    // One blocker 3 world units above its receiver, seen by cascades of texel size 0.02 and 0.08: 4x fewer texels
+    // in the coarse cascade, the same world radius.
+    const float fine = directionalPenumbraTexels(3.0f, tanHalf, 0.02f, 1.0f, wide);
+    const float coarse = directionalPenumbraTexels(3.0f, tanHalf, 0.08f, 1.0f, wide);
+    EXPECT_NEAR(fine * 0.02f, coarse * 0.08f, 1e-5f);
+    EXPECT_NEAR(fine * 0.02f, 3.0f * std::tan(0.0174533f), 1e-5f);
+    // Contact hardening: twice the distance, twice the penumbra; clamped at the limits.
+    EXPECT_NEAR(directionalPenumbraTexels(6.0f, tanHalf, 0.02f, 1.0f, wide), 2.0f * fine, 1e-4f);
+    EXPECT_EQ(directionalPenumbraTexels(0.0f, tanHalf, 0.02f, 1.0f, {1.0f, 24.0f}), 1.0f);
+    EXPECT_EQ(directionalPenumbraTexels(100.0f, tanHalf, 0.02f, 1.0f, {1.0f, 24.0f}), 24.0f);
+    EXPECT_EQ(directionalSearchTexels(0.0f, tanHalf, 0.02f, 1.0f, {0.0f, 24.0f}), 1.0f);
+}
+
+TEST(PenumbraTest, PerspectiveFormsFollowFernando)
+{
+    const PenumbraLimits wide{0.0f, 1000.0f};
+    // w_penumbra = R (zR - zB) / zB at the receiver, in texels of size zR / f: lightTexels (zR - zB) / (zB zR).
+    EXPECT_NEAR(perspectivePenumbraTexels(4.0f, 2.0f, 100.0f, 1.0f, wide), 100.0f * 2.0f / 8.0f, 1e-4f);
+    EXPECT_EQ(perspectivePenumbraTexels(4.0f, 4.0f, 100.0f, 1.0f, {1.0f, 24.0f}), 1.0f);
+    // w_search = R (zR - n) / zR at the near plane, in its texels (n / f).
+    EXPECT_NEAR(perspectiveSearchTexels(4.0f, 0.5f, 10.0f, 1.0f, wide), 10.0f * 3.5f / 2.0f, 1e-4f);
+    EXPECT_NEAR(perspectiveSearchTexels(4.0f, 0.5f, 10.0f, 2.0f, wide), 35.0f, 1e-4f);
+}
+
+TEST(PenumbraTest, DepthRowsGiveDistances)
+{
+    // Orthographic depth = t22 viewZ + t32 with viewZ = -distance past the near plane.
+    const glm::vec2 row{-0.1f, 0.0f};
+    EXPECT_NEAR(orthographicDistanceFromNear(0.5f, row), 5.0f, 1e-5f);
+    // Perspective depth = (t22 (-z) + t32) / z.
+    const glm::vec2 perspective{-1.0f, 2.0f};
+    const float z = 4.0f;
+    EXPECT_NEAR(perspectiveDistance((perspective.x * -z + perspective.y) / z, perspective), z, 1e-5f);
+}
+
+TEST(TapClampTest, EveryTapOfAWideDiskStaysInItsTile)
+{
+    const glm::ivec2 tileMin{256, 0}, tileMax{511, 255};
+    for (const std::uint32_t count : kPoissonSampleCounts)
+        for (const glm::vec2& tap : poissonTaps({258.3f, 3.1f}, 64.0f, 1.0f, count)) {
+            const glm::ivec2 t = clampTapTexel(tap, tileMin, tileMax);
+            EXPECT_GE(t.x, tileMin.x);
+            EXPECT_GE(t.y, tileMin.y);
+            EXPECT_LE(t.x, tileMax.x);
+            EXPECT_LE(t.y, tileMax.y);
+        }
+}
+
+TEST(BlockerSearchTest, AveragesOnlyNearerTexelsAndIgnoresTheSlopedReceiver)
+{
+    // Depth grows with x along a sloped receiver, 0.01 per texel; a blocker at depth 0.2 covers x < 100.
+    DepthTileView tile;
+    tile.tileMin = {0, 0};
+    tile.tileMax = {255, 255};
+    tile.isNearer = [](float a, float b) { return a < b - 1e-6f; };
+    tile.depthAt = [](glm::ivec2 t) { return t.x < 100 ? 0.2f : 0.5f + 0.01f * (static_cast<float>(t.x) + 0.5f - 120.0f); };
+    const glm::vec2 gradient{0.01f, 0.0f};
+    // On the receiver far from the blocker: the plane matches every texel, no blocker.
+    EXPECT_EQ(searchBlockers(tile, {180.0f, 50.0f}, 0.5f + 0.01f * 60.0f, gradient, 8.0f, 0.3f, 16).blockers, 0u);
+    // Without the plane's gradient the sloped receiver shadows itself.
+    EXPECT_GT(searchBlockers(tile, {180.0f, 50.0f}, 0.5f + 0.01f * 60.0f, glm::vec2(0.0f), 8.0f, 0.3f, 16).blockers, 0u);
+    // Straddling the blocker's edge: some blockers, all at 0.2.
+    const BlockerSearch edge = searchBlockers(tile, {100.0f, 50.0f}, 0.5f - 0.01f * 20.0f, gradient, 8.0f, 0.3f, 32);
+    EXPECT_GT(edge.blockers, 4u);
+    EXPECT_LT(edge.blockers, 28u);
+    EXPECT_FLOAT_EQ(edge.averageDepth, 0.2f);
+}
+
+TEST(SoftSettingsTest, ValidatesEveryControl)
+{
+    ShadowSettings s;
+    EXPECT_NO_THROW(validate(s));
+    const auto rejects = [](auto change, const char* field) {
+        ShadowSettings bad;
+        change(bad.soft);
+        try {
+            validate(bad);
+            ADD_FAILURE() << field << " accepted";
+        } catch (const rhi::Error& e) {
+            EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+        }
+    };
+    rejects([](SoftShadowSettings& f) { f.blockerSearchScale = 0.0f; }, "soft.blockerSearchScale");
+    rejects([](SoftShadowSettings& f) { f.penumbraScale = 11.0f; }, "soft.penumbraScale");
+    rejects([](SoftShadowSettings& f) { f.blockerSamples = 20; }, "soft.blockerSamples");
+    rejects([](SoftShadowSettings& f) { f.filterSamples = 128; }, "soft.filterSamples");
+    rejects([](SoftShadowSettings& f) { f.minPenumbraTexels = -1.0f; }, "soft.minPenumbraTexels");
+    rejects([](SoftShadowSettings& f) { f.maxPenumbraTexels = 0.5f; }, "soft.maxPenumbraTexels");
+    rejects([](SoftShadowSettings& f) { f.poissonRadiusTexels = std::nanf(""); }, "soft.poissonRadiusTexels");
+}
+
+TEST(SoftSettingsTest, JsonRoundTripsAndNamesBadFields)
+{
+    ShadowSettings s;
+    s.directional.filter = ShadowFilter::PCSS;
+    s.other.filter = ShadowFilter::Poisson;
+    s.soft = {2.0f, 0.5f, 32, 64, 2.0f, 40.0f, 3.5f};
+    const ShadowSettings back = parseShadowSettings(toJson(s), "test");
+    EXPECT_EQ(back.directional.filter, ShadowFilter::PCSS);
+    EXPECT_EQ(back.other.filter, ShadowFilter::Poisson);
+    EXPECT_EQ(back.soft.blockerSearchScale, 2.0f);
+    EXPECT_EQ(back.soft.penumbraScale, 0.5f);
+    EXPECT_EQ(back.soft.blockerSamples, 32u);
+    EXPECT_EQ(back.soft.filterSamples, 64u);
+    EXPECT_EQ(back.soft.minPenumbraTexels, 2.0f);
+    EXPECT_EQ(back.soft.maxPenumbraTexels, 40.0f);
+    EXPECT_EQ(back.soft.poissonRadiusTexels, 3.5f);
+    try {
+        parseShadowSettings(R"({"soft": {"filterSamples": 48}})", "s.json");
+        ADD_FAILURE();
+    } catch (const rhi::Error& e) {
+        EXPECT_STREQ(e.what(), "s.json: soft.filterSamples: 48 is out of range, allowed 16, 32, 64");
+    }
+    EXPECT_THROW(parseShadowSettings(R"({"soft": {"samples": 16}})", "s.json"), rhi::Error);
+}
+
+TEST(SoftSettingsTest, FilterNamesOnTheCommandLine)
+{
+    EXPECT_EQ(filterFromCommandName("hard"), ShadowFilter::PCF2x2);
+    EXPECT_EQ(filterFromCommandName("pcf7"), ShadowFilter::PCF7x7);
+    EXPECT_EQ(filterFromCommandName("pcss"), ShadowFilter::PCSS);
+    EXPECT_EQ(filterFromCommandName("pcf2x2"), std::nullopt);
+    EXPECT_TRUE(isSoftFilter(ShadowFilter::Poisson));
+    EXPECT_FALSE(isSoftFilter(ShadowFilter::PCF7x7));
+}
+
+TEST(SoftSettingsTest, CascadeDataCarriesTheTexelSize)
+{
+    const CascadeData d = cascadeData({glm::vec3(0.0f), 10.0f}, 0.05f, ShadowFilter::PCSS);
+    EXPECT_EQ(d.data.z, 0.05f);
+    EXPECT_NEAR(d.data.y, 0.05f * 1.4142136f, 1e-7f); // the soft filters keep the 2x2's one-texel normal offset
+}
+
+ShadowCamera cameraAt(glm::vec3 position)
+{
+    ShadowCamera camera;
+    camera.position = position;
+    camera.forward = glm::normalize(glm::vec3(0.2f, -0.3f, -1.0f));
+    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    camera.fovY = 1.0f;
+    camera.aspect = 16.0f / 9.0f;
+    camera.nearPlane = 0.1f;
+    camera.farPlane = 200.0f;
+    return camera;
+}
+
+TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelGrid)
+{
+    const std::vector<Bounds> casters{{{-3, 0, -8}, {3, 2, -4}}};
+    std::vector<DirectionalShadowLightInput> lights(1);
+    lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    lights[0].filter = ShadowFilter::PCSS;
+    lights[0].angularDiameter = 3.0f;
+    ShadowSettings settings;
+    settings.maxDistance = 40.0f;
+    for (const rhi::Conventions& conventions : allConventions()) {
+        SCOPED_TRACE(conventionName(conventions));
+        const DirectionalShadowPlan a = planDirectionalShadows(settings, conventions, cameraAt({0, 2, 5}), lights, casters);
+        const DirectionalShadowPlan b = planDirectionalShadows(settings, conventions, cameraAt({0.37f, 2, 4.1f}), lights, casters);
+        EXPECT_EQ(a.uniforms.lightShadowData[0].w, static_cast<float>(ShadowFilter::PCSS));
+        EXPECT_NEAR(a.uniforms.lightSoft[0].x, std::tan(0.0261799f), 1e-6f);
+        EXPECT_EQ(a.uniforms.lightSoft[0].y, 1.0f); // PCSS's normal offset is the 2x2's, the atlas's default
+        for (const DirectionalCascadePlan& cascade : a.lights[0].cascades) {
+            const glm::vec4 soft = a.uniforms.tileSoft[cascade.tile];
+            const glm::vec2 row{soft.z, soft.w};
+            // Depths at the near and the far plane are the light-space depth range apart in world units, measured from
+            // the casters' top (the box's corner nearest the light).
+            const float nearDepth = conventions.windowDepth(cascade.fit.projection, 0.0f);
+            const float farDepth = conventions.windowDepth(cascade.fit.projection, cascade.fit.farDepth - cascade.fit.nearDepth);
+            const float top = lightSpaceBounds(cascade.fit.basis, casters[0]).min.z;
+            EXPECT_NEAR(orthographicDistanceFromNear(nearDepth, row), cascade.fit.nearDepth - top, 1e-3f);
+            EXPECT_NEAR(orthographicDistanceFromNear(farDepth, row) - orthographicDistanceFromNear(nearDepth, row),
+                        cascade.fit.farDepth - cascade.fit.nearDepth, 1e-2f);
+        }
+        // A world point's texel in the light's grid (tile texel - tile origin + anchor) is the same from either camera.
+        const glm::vec3 point{0.4f, 0.0f, -6.0f};
+        for (std::uint32_t c = 0; c < 2; ++c) {
+            const auto lightTexel = [&](const DirectionalShadowPlan& plan) {
+                const DirectionalCascadePlan& cascade = plan.lights[0].cascades[c];
+                const glm::vec4 atlas = cascade.worldToAtlas * glm::vec4(point, 1.0f);
+                const glm::vec2 texel = glm::vec2(atlas) * static_cast<float>(plan.atlas.atlasSize());
+                return glm::floor(texel - glm::vec2(plan.atlas.tileOffset(cascade.tile)) +
+                                  glm::vec2(plan.uniforms.tileSoft[cascade.tile]) + 0.5f);
+            };
+            EXPECT_EQ(lightTexel(a), lightTexel(b)) << "cascade " << c;
+            // The blocker search's receiver depth does not follow the camera either.
+            const auto fromTop = [&](const DirectionalShadowPlan& plan) {
+                const DirectionalCascadePlan& cascade = plan.lights[0].cascades[c];
+                const glm::vec4 soft = plan.uniforms.tileSoft[cascade.tile];
+                return orthographicDistanceFromNear((cascade.worldToAtlas * glm::vec4(point, 1.0f)).z, {soft.z, soft.w});
+            };
+            EXPECT_NEAR(fromTop(a), fromTop(b), 1e-3f) << "cascade " << c;
+        }
+    }
+}
+
+TEST(SoftPlannerTest, LocalLightsCarryTheirFilterRadiusAndNearPlane)
+{
+    const std::vector<Bounds> casters{{{-1, 0, -1}, {1, 1, 1}}};
+    SpotShadowInput spot;
+    spot.position = {0, 5, 0};
+    spot.filter = ShadowFilter::PCSS;
+    spot.sourceRadius = 0.2f;
+    PointShadowInput point;
+    point.position = {0, 4, 0};
+    point.filter = ShadowFilter::Poisson;
+    ShadowSettings settings;
+    for (const PointShadowMode mode : {PointShadowMode::Atlas, PointShadowMode::CubeMap}) {
+        settings.other.pointMode = mode;
+        const OtherShadowPlan plan =
+            planOtherShadows(settings, allConventions()[0], cameraAt({0, 2, 8}), std::span(&spot, 1),
+                             std::span(&point, 1), casters);
+        const int tile = plan.spotTiles[0];
+        ASSERT_GE(tile, 0);
+        EXPECT_EQ(plan.uniforms.tileData[tile].y, static_cast<float>(ShadowFilter::PCSS));
+        // lightTexels = R x tile size x P[0][0] / 2.
+        const float p00 = 1.0f / std::tan(spot.outerAngle);
+        EXPECT_NEAR(plan.uniforms.tileSoft[tile].z, 0.2f * static_cast<float>(plan.atlas.tileSize()) * p00 / 2.0f, 1e-3f);
+        EXPECT_NEAR(plan.uniforms.tileSoft[tile].w, 0.01f * spot.range, 1e-6f);
+        if (mode == PointShadowMode::CubeMap)
+            EXPECT_EQ(plan.uniforms.cubeSoft[0].x, static_cast<float>(ShadowFilter::Poisson));
+        else
+            EXPECT_EQ(plan.uniforms.tileData[plan.pointShadows[0]].y, static_cast<float>(ShadowFilter::Poisson));
+    }
+}
+
+} // namespace
+} // namespace penumbra::shadows
