@@ -1,13 +1,13 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
 #include "DrawScene.hpp"
-#include "penumbra/parity/ImageFiles.hpp"
 #include "RawDraws.hpp"
 #include "SceneBench.hpp"
 #include "ShadowBench.hpp"
 #include "SoftShadowBench.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/parity/ImageFiles.hpp"
 
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
@@ -195,7 +195,7 @@ void addBenchCommand(CLI::App& app)
         }
         const nlohmann::json json = runSceneBench(*scene);
         if (!options->json.empty()) {
-            writeTextFile(options->json, json.dump(2) + "\n");
+            parity::writeTextFile(options->json, json.dump(2) + "\n");
             fmt::print("wrote {}\n", options->json);
         }
     });
