@@ -62,8 +62,8 @@ static_assert(sizeof(DirectionalShadowUniforms) == 1616);
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout directionalShadowLayout()
 {
-    return {"DirectionalShadows", sizeof(DirectionalShadowUniforms),
-            {
+    rhi::UniformLayout layout{"DirectionalShadows", sizeof(DirectionalShadowUniforms),
+                              {
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, worldToAtlas),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cullingSpheres),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeData),
@@ -71,7 +71,12 @@ inline rhi::UniformLayout directionalShadowLayout()
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, atlasSize),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, config),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightShadowData),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, tileSoft),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightSoft),
             }};
+    for (rhi::UniformMember& member : softShadowMembers(std::uint32_t(offsetof(DirectionalShadowUniforms, soft))))
+        layout.members.push_back(std::move(member));
+    return layout;
 }
 
 } // namespace penumbra::shadows

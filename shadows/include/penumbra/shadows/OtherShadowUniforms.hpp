@@ -55,15 +55,20 @@ static_assert(sizeof(OtherShadowUniforms) == 1984);
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout otherShadowLayout()
 {
-    return {"OtherShadows", sizeof(OtherShadowUniforms),
-            {
+    rhi::UniformLayout layout{"OtherShadows", sizeof(OtherShadowUniforms),
+                              {
                 PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, worldToAtlas),
                 PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, tileBounds),
                 PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, tileData),
                 PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, cubeData),
                 PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, atlasSize),
                 PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, config),
+                PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, tileSoft),
+                PENUMBRA_UNIFORM_MEMBER(OtherShadowUniforms, cubeSoft),
             }};
+    for (rhi::UniformMember& member : softShadowMembers(std::uint32_t(offsetof(OtherShadowUniforms, soft))))
+        layout.members.push_back(std::move(member));
+    return layout;
 }
 
 } // namespace penumbra::shadows
