@@ -6,6 +6,7 @@
 
 #include "transform.glsl"
 #include "shadow_filter.glsl"
+#include "soft_shadows.glsl"
 #include "directional_shadows.glsl"
 #include "lit.glsl"
 #include "reference_constants.glsl"

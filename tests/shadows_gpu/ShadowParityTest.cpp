@@ -63,6 +63,10 @@ struct Variant {
     ShadowFilter otherFilter = ShadowFilter::PCF2x2;
     shadows::PointShadowMode pointMode = shadows::PointShadowMode::Atlas;
     bool textured = false; // every material gets texturedChecker() as its base colour texture
+    // Lit pixels a pair may differ in beyond the bounds of litThresholds: PCSS's blocker average and penumbra
+    // divide depths the two depth mappings round differently, which flips a penumbra pixel by 1/255 here and there
+    // (measured: 2 of 57 600 between reversed twins, 3 across backends).
+    std::uint32_t softPixels = 0;
 };
 
 // 1024 x 1024 texels in cells of 2 x 2 of two hues, sampled trilinear with repeat (the glTF default) and the
@@ -240,21 +244,23 @@ bool reversedTwins(const std::string& a, const std::string& b) { return a + "-re
 
 // Lit images. A configuration against its twin of the same backend with the other depth mapping: byte-identical
 // (measured). Otherwise at most 1 of the 57 600 pixels (a shadow edge) and PSNR >= 60 dB.
-parity::Thresholds litThresholds(const std::string& a, const std::string& b)
+parity::Thresholds litThresholds(const std::string& a, const std::string& b, std::uint32_t softPixels = 0)
 {
-    if (reversedTwins(a, b))
+    if (reversedTwins(a, b) && softPixels == 0)
         return parity::identical();
-    return {.maxDifference = parity::kAnyDifference, .minPsnr = 60.0, .maxDifferingPixels = 1};
+    if (reversedTwins(a, b))
+        return {.maxDifference = 1.0, .maxDifferingPixels = softPixels};
+    return {.maxDifference = parity::kAnyDifference, .minPsnr = 60.0, .maxDifferingPixels = 1 + softPixels};
 }
 
-parity::Options shadowParityOptions()
+parity::Options shadowParityOptions(std::uint32_t softPixels = 0)
 {
     parity::Options options;
     for (const char* atlas : {"atlas", "other-atlas", "cube-atlas"})
         options.thresholds[atlas] = atlasThresholds(atlas);
-    options.pairThresholds = [](const std::string& picture, const parity::ConfigurationRun& a,
+    options.pairThresholds = [softPixels](const std::string& picture, const parity::ConfigurationRun& a,
                                 const parity::ConfigurationRun& b, const parity::Thresholds& perPicture) {
-        return picture == "lit" ? litThresholds(a.name(), b.name()) : perPicture;
+        return picture == "lit" ? litThresholds(a.name(), b.name(), softPixels) : perPicture;
     };
     return options;
 }
@@ -287,7 +293,7 @@ void checkParity(const Variant& variant)
     EXPECT_GT(drawn, 0u) << "empty atlas";
     testing::savePicture(vulkan.picture("lit").color, fmt::format("shadow-parity-{}-vulkan-lit", variant.name));
 
-    PENUMBRA_EXPECT_PARITY(runs, shadowParityOptions());
+    PENUMBRA_EXPECT_PARITY(runs, shadowParityOptions(variant.softPixels));
     fmt::print("{}: {:.2f} s\n", variant.name,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
@@ -343,14 +349,16 @@ TEST(ShadowParity, GltfMaterials) { checkParity({.name = "gltf-materials", .scen
 // defaults): PCSS's Poisson disks turned by the light-space texel hash give both backends the same pixels.
 TEST(ShadowParity, MixedLightsPcss)
 {
-    checkParity({.name = "mixed-pcss", .scene = "mixed", .filter = ShadowFilter::PCSS, .otherFilter = ShadowFilter::PCSS});
+    checkParity({.name = "mixed-pcss", .scene = "mixed", .filter = ShadowFilter::PCSS, .otherFilter = ShadowFilter::PCSS,
+                 .softPixels = 4});
 }
 TEST(ShadowParity, PointLightRoomCubeMapsPcss)
 {
     checkParity({.name = "room-cube-pcss",
                  .scene = "room",
                  .otherFilter = ShadowFilter::PCSS,
-                 .pointMode = shadows::PointShadowMode::CubeMap});
+                 .pointMode = shadows::PointShadowMode::CubeMap,
+                 .softPixels = 4});
 }
 TEST(ShadowParity, PointLightRoom) { checkParity({.name = "room", .scene = "room", .otherFilter = ShadowFilter::PCF3x3}); }
 

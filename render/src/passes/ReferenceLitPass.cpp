@@ -1,8 +1,10 @@
 #include "penumbra/render/ReferenceLitPass.hpp"
 
 #include "penumbra/render/LitUniforms.hpp"
+#include "penumbra/shadows/PoissonDisk.hpp"
 
 #include <algorithm>
+
 #include <fmt/format.h>
 #include <glm/matrix.hpp>
 
@@ -100,6 +102,8 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
     const rhi::UniformSlice frameSlice = uniforms_.push(frameUniforms(camera, frame, scene, device_.conventions()));
     const rhi::UniformSlice shadowSlice = uniforms_.push(renderer.plan().uniforms);
     const rhi::UniformSlice splitSlice = uniforms_.push(splitUniforms(renderer.plan()));
+    // The shared shadow code declares the soft filters' disks; the reference's one lookup never reads them.
+    const rhi::UniformSlice poissonSlice = uniforms_.push(shadows::poissonDiskUniforms());
     rhi::CommandList& commands = *commands_;
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
@@ -115,6 +119,7 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
             rhi::bindUniform(commands, kLitShadowBinding, shadowSlice);
             rhi::bindUniform(commands, kReferenceSplitsBinding, splitSlice);
+            rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonSlice);
             commands.bindTexture(kLitAtlasBinding, renderer.atlas().texture(), renderer.atlas().sampler());
             bound = pipeline;
         }
