@@ -7,10 +7,12 @@
 
 namespace penumbra::apps {
 
-// --filter and --light-size applied to every light of `scene`: `filter` a shadows::filterFromCommandName name (empty:
-// each light keeps its own), `lightSize` degrees of angular diameter for directional lights and world units of radius
-// for spot and point lights. Throws rhi::Error for an unknown filter, scene::SceneError for a size out of a light's
-// range.
-void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize);
+// --filter, --light-size and --normal-bias-side applied to every light of `scene`: `filter` a
+// shadows::filterFromCommandName name (empty: each light keeps its own), `lightSize` degrees of angular diameter for
+// directional lights and world units of radius for spot and point lights, `normalBiasSide` "receiver" or "caster"
+// (empty: each light's own). Throws rhi::Error for an unknown filter or side, scene::SceneError for a size out of a
+// light's range.
+void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize,
+                         const std::string& normalBiasSide = {});
 
 } // namespace penumbra::apps

@@ -160,17 +160,9 @@ LoadedScene loadScene(const SceneOptions& options)
     }
     for (const std::string& light : options.lights)
         addLight(loaded.scene, parseLightOption(light).value());
-    if (const std::optional<scene::NormalBiasSide> side = scene::parseNormalBiasSide(options.normalBiasSide)) {
-        for (scene::DirectionalLight& light : loaded.scene.lights)
-            light.normalBiasSide = *side;
-        for (scene::SpotLight& light : loaded.scene.spotLights)
-            light.normalBiasSide = *side;
-        for (scene::PointLight& light : loaded.scene.pointLights)
-            light.normalBiasSide = *side;
-    }
     if (!options.lights.empty())
         loaded.scene.validate();
-    applyLightOverrides(loaded.scene, options.filter, options.lightSize);
+    applyLightOverrides(loaded.scene, options.filter, options.lightSize, options.normalBiasSide);
     if (lookAt) {
         scene::Camera& camera = loaded.scene.camera;
         // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
