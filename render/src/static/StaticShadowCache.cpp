@@ -1,6 +1,6 @@
 #include "StaticShadowCache.hpp"
 
-#include "ContentHash.hpp"
+#include "TileKeys.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
@@ -17,11 +17,8 @@ std::uint64_t viewKey(const shadows::StaticShadowMap& map, const shadows::Shadow
 {
     ContentHash h;
     h.add(atlas.size()).add(atlas.format());
-    for (const shadows::StaticShadowTile& tile : map.tiles) {
-        const shadows::ShadowViewDraw& v = tile.view;
-        h.add(tile.tile).add(tile.viewport).add(v.viewProjection).add(v.slopeScaleBias).add(v.pancake).add(v.mirrored);
-        h.add(v.ditherOrigin).add(v.normalOffset.reach).add(v.normalOffset.light);
-    }
+    for (const shadows::StaticShadowTile& tile : map.tiles)
+        addTileView(h, tile);
     return h.value();
 }
 
@@ -29,11 +26,7 @@ std::uint64_t casterKey(const shadows::StaticShadowMap& map, std::span<const sha
 {
     ContentHash h;
     for (const shadows::StaticShadowTile& tile : map.tiles)
-        for (const std::uint32_t i : tile.casters) {
-            const shadows::ShadowCaster& c = casters[i];
-            h.add(i).add(c.vertices).add(c.indices).add(c.indexCount).add(c.model).add(c.mode).add(c.alpha);
-            h.add(c.alphaCutoff).add(c.baseColorMap).add(c.textured).add(c.baseColorUv).add(c.doubleSided);
-        }
+        addTileCasters(h, tile, casters);
     return h.value();
 }
 
@@ -194,10 +187,18 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
         if (!otherMaps.empty())
             restore(*otherAtlas_, plan.otherAtlas, all(false));
     } else {
+            const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
+            std::vector<const shadows::ShadowTileDraw*> tiles;
+            for (const shadows::StaticShadowMap* map : maps)
+                for (const shadows::StaticShadowTile& tile : map->tiles)
+                    tiles.push_back(&tile);
+            return tiles;
+        };
         if (!directionalMaps.empty() || directionalNew)
-            draws.casterDraws += pass_.record(commands, *directionalAtlas_, directionalMaps, casters, directionalNew);
+            draws.casterDraws +=
+                pass_.record(commands, *directionalAtlas_, tilesOf(directionalMaps), casters, directionalNew);
         if (!otherMaps.empty() || otherNew)
-            draws.casterDraws += pass_.record(commands, *otherAtlas_, otherMaps, casters, otherNew);
+            draws.casterDraws += pass_.record(commands, *otherAtlas_, tilesOf(otherMaps), casters, otherNew);
     }
     drawn_ = std::move(keys);
     plan_ = std::move(plan);

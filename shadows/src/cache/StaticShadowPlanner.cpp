@@ -106,7 +106,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
                                                       casterSide ? 0.0f : reach, static_cast<float>(filter)};
         const ShadowFrustum frustum{fit.view, false, fit.halfSize, 0.0f, fit.farDepth - fit.nearDepth};
         plan.maps.push_back({ShadowLightKind::Directional, index,
-                             {{tile, plan.directionalAtlas.viewport(tile), view, all, fit.projection, frustum}},
+                             {{{tile, plan.directionalAtlas.viewport(tile), view, all}, fit.projection, frustum}},
                              fit.texelSize});
     }
 }
@@ -198,14 +198,18 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
             plan.uniforms.localLights[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
         StaticShadowMap map{light->kind, light->index, {}, 0.0f};
         for (const glm::mat4& view : views.views) {
-            ShadowViewDraw draw{.viewProjection = projection * view, .slopeScaleBias = light->slopeScaleBias};
+            // The dither follows the tile's own texel grid, as in the realtime atlas.
+            ShadowViewDraw draw{.viewProjection = projection * view,
+                                .slopeScaleBias = light->slopeScaleBias,
+                                .ditherOrigin = -glm::vec2(plan.otherAtlas.tileOffset(tile))};
             if (casterSide)
                 draw.normalOffset = {bias, glm::vec4(light->position, 1.0f)};
             plan.uniforms.otherWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.otherAtlas, conventions);
             plan.uniforms.otherBounds[tile] = tileBounds(plan.otherAtlas, tile);
             plan.uniforms.otherData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
-            map.tiles.push_back({tile, plan.otherAtlas.viewport(tile), draw,
-                                 castersInFrustum(view, views.fov, nearPlane, light->range, casters), projection,
+            map.tiles.push_back({{tile, plan.otherAtlas.viewport(tile), draw,
+                                  castersInFrustum(view, views.fov, nearPlane, light->range, casters)},
+                                 projection,
                                  ShadowFrustum{view, true, views.fov, nearPlane, light->range}});
             ++tile;
         }

@@ -26,6 +26,7 @@ namespace penumbra::render {
 
 class DepthPrepass;
 class StaticShadowCache;
+class StaticTileCache;
 
 struct FrameDesc {
     std::uint32_t width = 1280;
@@ -54,8 +55,9 @@ struct FrameStats {
     std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
     std::optional<double> staticAtlasPassMs;        // the static maps drawn this frame, where the device has timestamps
-    // Static shadow maps (ShadowSettings::staticMaps): the caster draws into them this frame, and which maps were
-    // drawn and why ("spot light 0 ('lamp'): a static caster in its view changed").
+    // Static shadow maps (ShadowSettings::staticMaps): the static caster draws this frame (into the static maps and,
+    // with RealtimeCasters::Dynamic, into the realtime tiles' cached static depth), and which static maps were drawn
+    // and why ("spot light 0 ('lamp'): a static caster in its view changed").
     std::uint32_t staticCasterDraws = 0;
     std::vector<std::string> staticMapUpdates;
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
@@ -148,6 +150,9 @@ private:
     std::array<std::unique_ptr<rhi::Pipeline>, 2> prepassedLitPipelines_;
     std::unique_ptr<DepthPrepass> depthPrepass_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
+    // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.
+    std::unique_ptr<StaticTileCache> directionalStaticTiles_;
+    std::unique_ptr<StaticTileCache> otherStaticTiles_;
     bool staticUpdateRequested_ = false;
     // Per object, this frame's Object block (shaders/lit.glsl), shared by the prepass and every lit view.
     std::vector<rhi::UniformSlice> objectSlices_;

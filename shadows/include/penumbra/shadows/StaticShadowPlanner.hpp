@@ -27,13 +27,9 @@ struct ShadowFrustum {
     float farPlane = 0.0f;
 };
 
-// One tile of a static shadow map and what is drawn into it.
-struct StaticShadowTile {
-    std::uint32_t tile = 0;
-    rhi::Viewport viewport;
-    ShadowViewDraw view;
-    std::vector<std::uint32_t> casters; // indices into the caster list: the static casters the view may see
-    glm::mat4 projection{1.0f};          // the convention's, view.viewProjection = projection * frustum.view
+// One tile of a static shadow map and what is drawn into it: the static casters the view may see.
+struct StaticShadowTile : ShadowTileDraw {
+    glm::mat4 projection{1.0f}; // the convention's, view.viewProjection = projection * frustum.view
     ShadowFrustum frustum;
 };
 
