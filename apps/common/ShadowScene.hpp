@@ -6,6 +6,7 @@
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/Scene.hpp"
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,10 +37,15 @@ struct ShadowPictures {
     std::vector<AtlasPictures> atlases;
     render::FrameStats stats;
     std::vector<std::string> notes;
+    // render::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
+    std::vector<float> texelsPerMetre;
 
     // Throws rhi::Error naming the atlases there are.
     const AtlasPictures& atlas(std::string_view name) const;
 };
+
+// View depths (metres) at which the tool reports the directional shadows' texels per metre.
+inline constexpr std::array<float, 5> kTexelDensityDepths{2.0f, 5.0f, 10.0f, 20.0f, 50.0f};
 
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
 // (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and

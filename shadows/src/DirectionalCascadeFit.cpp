@@ -88,7 +88,13 @@ float closeFitHalfSize(const Bounds& sliceBounds, std::uint32_t tileSize, float 
     // h = e + (m + 1/2) texel with texel = 2h / tile.
     const glm::vec3 extent = sliceBounds.max - sliceBounds.min;
     const float half = 0.5f * std::max(extent.x, extent.y);
-    return half / (1.0f - (2.0f * marginTexels + 1.0f) / static_cast<float>(tileSize));
+    const float exact = half / (1.0f - (2.0f * marginTexels + 1.0f) / static_cast<float>(tileSize));
+    // Rounded up to 12 significant bits (at most 0.05 % larger): float rounding of a translated slice's corners
+    // changes its bounds' size by an ulp or so, which would move every snapped texel as the camera translates.
+    int exponent = 0;
+    std::frexp(exact, &exponent);
+    const float quantum = std::ldexp(1.0f, exponent - 12);
+    return std::ceil(exact / quantum) * quantum;
 }
 
 DirectionalShadowCascade fitCloseCascade(const Bounds& sliceBounds, float halfSize, const Sphere& sphere,

@@ -52,8 +52,9 @@ Bounds closeFitBounds(const std::array<glm::vec3, 8>& sliceCorners, const LightB
 
 // The half size of a close-fit tile around `sliceBounds`: half its larger side, plus marginTexels texels (a
 // receiver's normal offset and filter taps stay in the tile), plus half a texel (the snap moves the centre at most
-// half a texel along each axis). A square, not the bounds' rectangle: square texels keep one texel size per cascade
-// for the normal bias, the filters and the soft shadows' penumbrae.
+// half a texel along each axis), rounded up to 12 significant bits so that camera translation leaves it alone. A
+// square, not the bounds' rectangle: square texels keep one texel size per cascade for the normal bias, the filters
+// and the soft shadows' penumbrae.
 float closeFitHalfSize(const Bounds& sliceBounds, std::uint32_t tileSize, float marginTexels);
 
 // Fits one cascade's light projection around a frustum slice (close fit): the square of half size halfSize (at
