@@ -148,6 +148,36 @@ TEST(CloseFit, SelectedCascadeFiltersStayInsideTheirTile)
         }
 }
 
+// Translation moves the slice's light-space bounds as a whole: every tile keeps its size and a fixed world point keeps
+// its sub-texel position in the atlas, as in the stable fit. Turning changes the bounds' size, and the texels swim.
+TEST(CloseFit, TranslatingTheCameraKeepsTheTexelSizeAndMovesTexelsByWholeTexels)
+{
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> step(-3.0f, 3.0f);
+    const ShadowCamera camera = sceneCamera();
+    const glm::vec3 light{-0.4f, -1.0f, 0.5f};
+    const glm::vec3 point = camera.position + camera.forward * 6.0f + glm::vec3(0.3f, 0.1f, -0.2f);
+    const DirectionalShadowPlan reference = plan(CascadeProjection::Close, camera, light);
+    const float texel = reference.lights[0].cascades[0].fit.texelSize;
+    const auto atlasTexel = [&](const DirectionalShadowPlan& p) {
+        return glm::vec2(p.uniforms.worldToAtlas[0] * glm::vec4(point, 1.0f)) * float(p.atlas.atlasSize());
+    };
+    for (int trial = 0; trial < 200; ++trial) {
+        ShadowCamera translated = camera;
+        translated.position += glm::vec3(step(rng), step(rng), step(rng)) * texel;
+        const DirectionalShadowPlan moved = plan(CascadeProjection::Close, translated, light);
+        for (std::uint32_t c = 0; c < 4; ++c)
+            EXPECT_EQ(moved.lights[0].cascades[c].fit.texelSize, reference.lights[0].cascades[c].fit.texelSize)
+                << "trial " << trial << " cascade " << c;
+        const glm::vec2 delta = atlasTexel(moved) - atlasTexel(reference);
+        EXPECT_NEAR(delta.x, std::round(delta.x), 2e-3f) << "trial " << trial;
+        EXPECT_NEAR(delta.y, std::round(delta.y), 2e-3f) << "trial " << trial;
+    }
+    ShadowCamera turned = camera;
+    turned.forward = glm::normalize(camera.forward + 0.01f * glm::cross(camera.forward, camera.up));
+    EXPECT_NE(plan(CascadeProjection::Close, turned, light).lights[0].cascades[0].fit.texelSize, texel);
+}
+
 // The culling bias follows the bands: a caster wholly inside the previous cascade's slice (its depth range scaled
 // by the culling factor) is skipped, one reaching past it or outside the frustum is drawn.
 TEST(CloseFit, CullingBiasSkipsCastersWhollyInsideThePreviousSlice)
