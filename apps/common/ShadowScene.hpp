@@ -44,8 +44,9 @@ struct ShadowPictures {
     const AtlasPictures& atlas(std::string_view name) const;
 };
 
-// View depths (metres) at which the tool reports the directional shadows' texels per metre.
-inline constexpr std::array<float, 5> kTexelDensityDepths{2.0f, 5.0f, 10.0f, 20.0f, 50.0f};
+// View depths (metres) at which the tool reports the directional shadows' texels per metre: one or two in each
+// cascade of the default splits (10, 25, 50, 100 m).
+inline constexpr std::array<float, 5> kTexelDensityDepths{3.0f, 8.0f, 15.0f, 35.0f, 70.0f};
 
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
 // (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and

@@ -24,11 +24,21 @@ float directionalTexel(const shadows::DirectionalShadowPlan& plan, std::uint32_t
 {
     if (index >= plan.shadowSlots.size() || plan.shadowSlots[index] < 0)
         return 0.0f;
-    // The cascade the lit shader selects at the point.
-    const float viewDepth = glm::dot(position - camera.position, camera.forward);
-    const std::uint32_t cascade = shadows::selectCascade(plan.uniforms, position, viewDepth).index;
     const auto& cascades = plan.lights[static_cast<std::size_t>(plan.shadowSlots[index])].cascades;
-    return cascade < cascades.size() ? cascades[cascade].fit.texelSize : 0.0f;
+    if (plan.uniforms.projection.x == static_cast<int>(shadows::CascadeProjection::Close)) {
+        // The band of the point's view depth, as the lit shader selects it.
+        const float viewDepth = glm::dot(position - camera.position, camera.forward);
+        const std::uint32_t cascade = shadows::selectCascade(plan.uniforms, position, viewDepth).index;
+        return cascade < cascades.size() ? cascades[cascade].fit.texelSize : 0.0f;
+    }
+    // The first cascade whose culling sphere holds the point (not shrunk by the filter: the edge margins of the
+    // ray cast take the coarser texel only past the sphere).
+    for (const shadows::DirectionalCascadePlan& cascade : cascades) {
+        const glm::vec3 offset = position - cascade.fit.cullingSphere.centre;
+        if (glm::dot(offset, offset) < cascade.fit.cullingSphere.radius * cascade.fit.cullingSphere.radius)
+            return cascade.fit.texelSize;
+    }
+    return 0.0f;
 }
 
 float pointTexel(const ShadowPlans& plans, std::uint32_t cubeFaceSize, const scene::PointLight& light, int shadow,
