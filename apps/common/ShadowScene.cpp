@@ -59,12 +59,13 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 6> kNamedScenes{{{"test", scene::makeShadowTestScene},
+constexpr std::array<NamedScene, 7> kNamedScenes{{{"test", scene::makeShadowTestScene},
                                                   {"key-light", scene::makeSingleLightScene},
                                                   {"mixed", scene::makeMixedLightsScene},
                                                   {"room", scene::makePointLightRoomScene},
                                                   {"forest", scene::makeForestScene},
-                                                  {"contact", scene::makeContactScene}}};
+                                                  {"contact", scene::makeContactScene},
+                                                  {"town", scene::makeTownScene}}};
 
 } // namespace
 
@@ -82,9 +83,11 @@ scene::Scene namedScene(const std::string& name)
 }
 
 ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame, bool readAtlases)
+                                 const render::FrameDesc& frame, bool readAtlases, const shadows::StaticShadowBake* bake)
 {
     render::SceneRenderer renderer(device, scene);
+    if (bake)
+        renderer.useBakedShadows(*bake);
     ShadowPictures pictures;
     pictures.configuration = configuration;
     pictures.depthRange = device.conventions().depthRange();
@@ -118,7 +121,7 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
     desc.validation = run.validate;
     desc.validateUsage = desc.validateUsage || run.validate;
     auto device = createDevice(desc);
-    ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases);
+    ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases, run.bake);
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;

@@ -5,6 +5,7 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/Scene.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 
 #include <array>
 #include <string>
@@ -50,22 +51,25 @@ inline constexpr std::array<float, 5> kTexelDensityDepths{3.0f, 8.0f, 15.0f, 35.
 
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
 // (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and
-// "room" (scene::makePointLightRoomScene) and "forest" (scene::makeForestScene). Unknown names throw rhi::Error
+// "room" (scene::makePointLightRoomScene), "forest" (scene::makeForestScene), "contact" (scene::makeContactScene)
+// and "town" (scene::makeTownScene). Unknown names throw rhi::Error
 // listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
-inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact";
+inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact, town";
 
 // How renderShadowScene runs: with the validation layer / debug output (the library's default, and the tests'),
 // and whether it reads the atlases back (AtlasPictures; a 4096^2 atlas is 64 MiB to copy).
 struct ShadowSceneRun {
     bool validate = true;
     bool readAtlases = true;
+    const shadows::StaticShadowBake* bake = nullptr; // static maps from a bake (SceneRenderer::useBakedShadows)
 };
 
 // Renders scene.camera's view on `device`; the cascade view too when frame.cascadeView is set.
 ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame, bool readAtlases = true);
+                                 const render::FrameDesc& frame, bool readAtlases = true,
+                                 const shadows::StaticShadowBake* bake = nullptr);
 // The same on a device of its own; throws rhi::Error when the device reports a validation or debug message.
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame, const ShadowSceneRun& run = {});

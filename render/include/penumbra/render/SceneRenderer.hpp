@@ -12,6 +12,8 @@
 #include "penumbra/shadows/OtherShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <array>
 #include <cstdint>
@@ -23,6 +25,7 @@
 namespace penumbra::render {
 
 class DepthPrepass;
+class StaticShadowCache;
 
 struct FrameDesc {
     std::uint32_t width = 1280;
@@ -50,6 +53,11 @@ struct FrameStats {
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
     std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
+    std::optional<double> staticAtlasPassMs;        // the static maps drawn this frame, where the device has timestamps
+    // Static shadow maps (ShadowSettings::staticMaps): the caster draws into them this frame, and which maps were
+    // drawn and why ("spot light 0 ('lamp'): a static caster in its view changed").
+    std::uint32_t staticCasterDraws = 0;
+    std::vector<std::string> staticMapUpdates;
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
     // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
@@ -61,6 +69,7 @@ struct FrameStats {
 struct ShadowPlans {
     shadows::DirectionalShadowPlan directional;
     shadows::OtherShadowPlan other;
+    shadows::StaticShadowPlan staticMaps; // empty without static maps (StaticShadowUpdate::EveryFrame)
 };
 
 // Draws a scene with cascaded directional shadows and spot and point shadows: plan (CPU) -> caster
@@ -99,6 +108,23 @@ public:
     // why textures get less anisotropy than FrameDesc::maxAnisotropy.
     const std::vector<std::string>& notes() const { return notes_; }
 
+    // Static shadow maps (ShadowSettings::staticMaps): the atlases as last drawn (16 texels wide without maps), and
+    // the plan they were drawn from.
+    const shadows::ShadowAtlas& staticDirectionalAtlas() const;
+    const shadows::ShadowAtlas& staticOtherAtlas() const;
+    const shadows::StaticShadowPlan& staticPlan() const;
+    // In StaticShadowUpdate::OnDemand mode, the next render() draws every static map again from its plan; other modes
+    // ignore it.
+    void requestStaticShadowUpdate() { staticUpdateRequested_ = true; }
+    // The static maps as the last render() left them, for a bake on disk (shadows::writeStaticShadowBake): light-space
+    // depth that any configuration restores, with the hashes a later load checks. `configuration` is recorded.
+    shadows::StaticShadowBake bakeStaticShadows(const std::string& configuration) const;
+    // From now on the static maps come from `bake` and no static caster is drawn into them. render() then throws
+    // rhi::Error, before drawing anything, when the frame's settings keep no static maps (staticMaps.update
+    // everyFrame) or the bake does not hold the maps the scene and settings plan now (naming the light and what
+    // differs).
+    void useBakedShadows(shadows::StaticShadowBake bake);
+
 private:
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
@@ -107,7 +133,7 @@ private:
     // prepass's depth; otherwise the target's depth is cleared.
     void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const rhi::UniformSlice& frameSlice,
                        bool visibility, bool prepassed, const rhi::UniformSlice& shadowUniforms,
-                       const rhi::UniformSlice& otherShadowUniforms);
+                       const rhi::UniformSlice& otherShadowUniforms, const rhi::UniformSlice& staticShadowUniforms);
 
     rhi::Device& device_;
     GpuScene gpuScene_;
@@ -121,6 +147,8 @@ private:
     std::unique_ptr<rhi::Shader> prepassedLitFragment_;
     std::array<std::unique_ptr<rhi::Pipeline>, 2> prepassedLitPipelines_;
     std::unique_ptr<DepthPrepass> depthPrepass_;
+    std::unique_ptr<StaticShadowCache> staticShadows_;
+    bool staticUpdateRequested_ = false;
     // Per object, this frame's Object block (shaders/lit.glsl), shared by the prepass and every lit view.
     std::vector<rhi::UniformSlice> objectSlices_;
     std::vector<std::uint32_t> drawOrder_; // this frame's (SceneRenderer.cpp, drawOrder)

@@ -1,0 +1,206 @@
+#include "StaticShadowCache.hpp"
+
+#include "ContentHash.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace penumbra::render {
+namespace {
+
+constexpr std::uint32_t kStandInAtlasSize = 16; // no map in use
+
+std::uint64_t viewKey(const shadows::StaticShadowMap& map, const shadows::ShadowAtlas& atlas)
+{
+    ContentHash h;
+    h.add(atlas.size()).add(atlas.format());
+    for (const shadows::StaticShadowTile& tile : map.tiles) {
+        const shadows::ShadowViewDraw& v = tile.view;
+        h.add(tile.tile).add(tile.viewport).add(v.viewProjection).add(v.slopeScaleBias).add(v.pancake).add(v.mirrored);
+        h.add(v.ditherOrigin).add(v.normalOffset.reach).add(v.normalOffset.light);
+    }
+    return h.value();
+}
+
+std::uint64_t casterKey(const shadows::StaticShadowMap& map, std::span<const shadows::ShadowCaster> casters)
+{
+    ContentHash h;
+    for (const shadows::StaticShadowTile& tile : map.tiles)
+        for (const std::uint32_t i : tile.casters) {
+            const shadows::ShadowCaster& c = casters[i];
+            h.add(i).add(c.vertices).add(c.indices).add(c.indexCount).add(c.model).add(c.mode).add(c.alpha);
+            h.add(c.alphaCutoff).add(c.baseColorMap).add(c.textured).add(c.baseColorUv).add(c.doubleSided);
+        }
+    return h.value();
+}
+
+bool isDirectional(const shadows::StaticShadowMap& map) { return map.kind == shadows::ShadowLightKind::Directional; }
+
+// Window depths as writeTexture takes them for a depth format (rhi::Device::writeTexture).
+std::vector<std::byte> depthTexels(const std::vector<float>& depth, rhi::Format format)
+{
+    std::vector<std::byte> bytes;
+    const auto append = [&](const auto value) {
+        const auto* first = reinterpret_cast<const std::byte*>(&value);
+        bytes.insert(bytes.end(), first, first + sizeof(value));
+    };
+    for (const float d : depth) {
+        const float clamped = std::clamp(d, 0.0f, 1.0f);
+        if (format == rhi::Format::D16)
+            append(static_cast<std::uint16_t>(std::lround(clamped * 65535.0f)));
+        else if (format == rhi::Format::D24S8)
+            append(static_cast<std::uint32_t>(std::lround(static_cast<double>(clamped) * 16777215.0)));
+        else
+            append(d);
+    }
+    return bytes;
+}
+
+std::string mapName(const shadows::StaticShadowMap& map)
+{
+    return fmt::format("{} {}", shadows::shadowLightKindName(map.kind), map.lightIndex);
+}
+
+} // namespace
+
+StaticShadowCache::StaticShadowCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat)
+    : device_(device), pass_(device, vertexFormat)
+{
+    prepareAtlas(device_, directionalAtlas_, kStandInAtlasSize, rhi::Format::D32F, "static directional shadow atlas");
+    prepareAtlas(device_, otherAtlas_, kStandInAtlasSize, rhi::Format::D32F, "static other shadow atlas");
+}
+
+bool StaticShadowCache::prepareAtlas(rhi::Device& device, std::unique_ptr<shadows::ShadowAtlas>& atlas,
+                                     std::uint32_t size, rhi::Format format, const char* name)
+{
+    if (atlas && atlas->size() == size && atlas->format() == format)
+        return false;
+    atlas = std::make_unique<shadows::ShadowAtlas>(device, size, format, name);
+    return true;
+}
+
+void StaticShadowCache::useBake(shadows::StaticShadowBake bake)
+{
+    bake_ = std::move(bake);
+    drawn_.clear();
+    hasPlan_ = false;
+}
+
+const shadows::BakedShadowMap* StaticShadowCache::bakedMap(const shadows::StaticShadowMap& map) const
+{
+    for (const shadows::BakedShadowMap& baked : bake_->maps)
+        if (baked.kind == map.kind && baked.lightIndex == map.lightIndex)
+            return &baked;
+    return nullptr;
+}
+
+void StaticShadowCache::checkBake(const shadows::StaticShadowPlan& plan, std::span<const std::uint64_t> hashes) const
+{
+    if (!bake_)
+        return;
+    for (std::size_t i = 0; i < plan.maps.size(); ++i) {
+        const shadows::StaticShadowMap& map = plan.maps[i];
+        const shadows::ShadowAtlasLayout& layout = isDirectional(map) ? plan.directionalAtlas : plan.otherAtlas;
+        const shadows::BakedShadowMap* baked = bakedMap(map);
+        if (!baked)
+            throw rhi::Error(fmt::format("baked shadows (made on {}): no map for {}; bake the scene again",
+                                         bake_->configuration, mapName(map)));
+        if (baked->size != layout.tileSize() || baked->frusta.size() != map.tiles.size())
+            throw rhi::Error(fmt::format("baked shadows: {} ('{}') was baked as {} tiles of {} texels, the settings "
+                                         "give {} of {}",
+                                         mapName(map), baked->lightName, baked->frusta.size(), baked->size,
+                                         map.tiles.size(), layout.tileSize()));
+        if (baked->hash != hashes[i])
+            throw rhi::Error(fmt::format("baked shadows: {} ('{}') is stale: the bake's hash {:016x}, the scene's "
+                                         "{:016x} (the light, its shadow settings or a static caster in its view "
+                                         "changed); bake the scene again",
+                                         mapName(map), baked->lightName, baked->hash, hashes[i]));
+    }
+}
+
+void StaticShadowCache::restore(shadows::ShadowAtlas& atlas, const shadows::ShadowAtlasLayout& layout,
+                                const std::vector<const shadows::StaticShadowMap*>& maps)
+{
+    if (maps.empty())
+        return;
+    std::vector<float> depth(std::size_t(atlas.size()) * atlas.size(), device_.conventions().clearDepth());
+    for (const shadows::StaticShadowMap* map : maps)
+        shadows::restoreShadowMap(*bakedMap(*map), *map, layout, device_.conventions(), depth);
+    device_.writeTexture(atlas.texture(), 0, 0, depthTexels(depth, atlas.format()));
+}
+
+StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shadows::ShadowSettings& settings,
+                                         shadows::StaticShadowPlan plan, std::span<const shadows::ShadowCaster> casters,
+                                         bool requested)
+{
+    const bool onDemand = settings.staticMaps.update == shadows::StaticShadowUpdate::OnDemand;
+    const auto sizeOf = [](const shadows::ShadowAtlasLayout& layout) {
+        return layout.tileCount() > 0 ? layout.atlasSize() : kStandInAtlasSize;
+    };
+    // On demand, what was drawn stays while its atlases can: the settings' sizes and formats still describe them.
+    const bool atlasesKept = sizeOf(plan.directionalAtlas) == sizeOf(plan_.directionalAtlas) &&
+                             sizeOf(plan.otherAtlas) == sizeOf(plan_.otherAtlas) &&
+                             directionalAtlas_->format() == settings.directional.atlasFormat &&
+                             otherAtlas_->format() == settings.other.atlasFormat;
+    if (onDemand && !requested && hasPlan_ && atlasesKept)
+        return {};
+    const bool directionalNew = prepareAtlas(device_, directionalAtlas_, sizeOf(plan.directionalAtlas),
+                                             settings.directional.atlasFormat, "static directional shadow atlas");
+    const bool otherNew = prepareAtlas(device_, otherAtlas_, sizeOf(plan.otherAtlas), settings.other.atlasFormat,
+                                       "static other shadow atlas");
+    StaticMapDraws draws;
+    std::map<LightId, Key> keys;
+    std::vector<const shadows::StaticShadowMap*> directionalMaps, otherMaps;
+    for (const shadows::StaticShadowMap& map : plan.maps) {
+        const bool directional = isDirectional(map);
+        const Key key{viewKey(map, directional ? *directionalAtlas_ : *otherAtlas_), casterKey(map, casters)};
+        const LightId id{map.kind, map.lightIndex};
+        const auto old = drawn_.find(id);
+        const char* reason = nullptr;
+        if (old == drawn_.end())
+            reason = "first drawn";
+        else if (directional ? directionalNew : otherNew)
+            reason = "its static atlas was created anew";
+        else if (requested)
+            reason = "asked for";
+        else if (old->second.view != key.view)
+            reason = "its view changed (the light, its shadow settings or the static casters' bounds)";
+        else if (old->second.casters != key.casters)
+            reason = "a static caster in its view changed";
+        if (reason) {
+            draws.updates.push_back({map.kind, map.lightIndex, reason});
+            (directional ? directionalMaps : otherMaps).push_back(&map);
+        }
+        keys.emplace(id, key);
+    }
+    if (bake_) {
+        // A restore rewrites the whole atlas, so every map of its kind is restored with the one that changed.
+        for (StaticMapUpdate& u : draws.updates)
+            u.reason = "restored from the bake";
+        const auto all = [&](bool directional) {
+            std::vector<const shadows::StaticShadowMap*> maps;
+            for (const shadows::StaticShadowMap& map : plan.maps)
+                if (isDirectional(map) == directional)
+                    maps.push_back(&map);
+            return maps;
+        };
+        if (!directionalMaps.empty())
+            restore(*directionalAtlas_, plan.directionalAtlas, all(true));
+        if (!otherMaps.empty())
+            restore(*otherAtlas_, plan.otherAtlas, all(false));
+    } else {
+        if (!directionalMaps.empty() || directionalNew)
+            draws.casterDraws += pass_.record(commands, *directionalAtlas_, directionalMaps, casters, directionalNew);
+        if (!otherMaps.empty() || otherNew)
+            draws.casterDraws += pass_.record(commands, *otherAtlas_, otherMaps, casters, otherNew);
+    }
+    drawn_ = std::move(keys);
+    plan_ = std::move(plan);
+    hasPlan_ = true;
+    return draws;
+}
+
+} // namespace penumbra::render

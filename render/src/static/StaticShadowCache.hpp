@@ -1,0 +1,86 @@
+#pragma once
+
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/shadows/ShadowAtlas.hpp"
+#include "penumbra/shadows/ShadowCaster.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
+#include "penumbra/shadows/StaticShadowPass.hpp"
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace penumbra::render {
+
+// One static map drawn this frame, and why.
+struct StaticMapUpdate {
+    shadows::ShadowLightKind kind = shadows::ShadowLightKind::Directional;
+    std::uint32_t lightIndex = 0;
+    std::string reason;
+};
+
+// What a frame drew into the static atlases.
+struct StaticMapDraws {
+    std::vector<StaticMapUpdate> updates;
+    std::uint32_t casterDraws = 0;
+};
+
+// The static shadow maps kept between frames: the two static atlases, and per light the map's key as last drawn (its
+// views and the static casters in them), so a frame draws again only the maps whose key changed, in OnChange mode,
+// or that the application asked for, in OnDemand mode.
+class StaticShadowCache {
+public:
+    StaticShadowCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat);
+
+    // Takes this frame's plan and records the draws of the maps it needs; returns those maps. In OnDemand mode,
+    // unless `requested`, the maps and uniforms drawn last stay as they are (`plan` is dropped) while the atlases
+    // keep their sizes and format. Without static maps (EveryFrame) the atlases are small stand-ins.
+    StaticMapDraws update(rhi::CommandList& commands, const shadows::ShadowSettings& settings,
+                          shadows::StaticShadowPlan plan, std::span<const shadows::ShadowCaster> casters,
+                          bool requested);
+
+    // From now on the maps come from `bake`: update() restores them into the atlases instead of drawing casters.
+    void useBake(shadows::StaticShadowBake bake);
+    bool baked() const { return bake_.has_value(); }
+    // With a bake: throws rhi::Error naming the light and what differs (no map for it, another size or tile count,
+    // another hash: the light, its settings or the static casters changed since the bake) unless the bake holds
+    // every map of `plan`; `hashes` are staticMapHashes(plan).
+    void checkBake(const shadows::StaticShadowPlan& plan, std::span<const std::uint64_t> hashes) const;
+
+    const shadows::ShadowAtlas& directionalAtlas() const { return *directionalAtlas_; }
+    const shadows::ShadowAtlas& otherAtlas() const { return *otherAtlas_; }
+    // The maps as drawn.
+    const shadows::StaticShadowPlan& plan() const { return plan_; }
+
+private:
+    struct Key {
+        std::uint64_t view = 0;    // tiles, viewports, matrices, biases
+        std::uint64_t casters = 0; // the static casters drawn and what they are
+    };
+    using LightId = std::pair<shadows::ShadowLightKind, std::uint32_t>;
+
+    // Whether the atlas had to be created anew (its old tiles are gone).
+    static bool prepareAtlas(rhi::Device& device, std::unique_ptr<shadows::ShadowAtlas>& atlas, std::uint32_t size,
+                             rhi::Format format, const char* name);
+
+    rhi::Device& device_;
+    shadows::StaticShadowPass pass_;
+    std::unique_ptr<shadows::ShadowAtlas> directionalAtlas_;
+    std::unique_ptr<shadows::ShadowAtlas> otherAtlas_;
+    shadows::StaticShadowPlan plan_;
+    std::map<LightId, Key> drawn_;
+    bool hasPlan_ = false;
+    std::optional<shadows::StaticShadowBake> bake_;
+
+    const shadows::BakedShadowMap* bakedMap(const shadows::StaticShadowMap& map) const;
+    // Restores every map of the plan (of the one kind of atlas) from the bake: one upload of the whole atlas.
+    void restore(shadows::ShadowAtlas& atlas, const shadows::ShadowAtlasLayout& layout,
+                 const std::vector<const shadows::StaticShadowMap*>& maps);
+};
+
+} // namespace penumbra::render
