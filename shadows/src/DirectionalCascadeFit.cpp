@@ -72,17 +72,6 @@ DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const Light
     return c;
 }
 
-Bounds closeFitBounds(const std::array<glm::vec3, 8>& sliceCorners, const LightBasis& basis)
-{
-    Bounds bounds{basis.toLight(sliceCorners[0]), basis.toLight(sliceCorners[0])};
-    for (const glm::vec3& corner : sliceCorners) {
-        const glm::vec3 p = basis.toLight(corner);
-        bounds.min = glm::min(bounds.min, p);
-        bounds.max = glm::max(bounds.max, p);
-    }
-    return bounds;
-}
-
 float closeFitHalfSize(const Bounds& sliceBounds, std::uint32_t tileSize, float marginTexels)
 {
     // h = e + (m + 1/2) texel with texel = 2h / tile.

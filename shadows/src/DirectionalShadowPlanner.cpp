@@ -139,7 +139,7 @@ std::vector<float> closeFitHalfSizes(const std::vector<FrustumSlice>& slices, st
             frustumSliceCorners(slice.camera, slice.nearDistance, slice.farDistance);
         float half = 0.0f;
         for (const ShadowedDirectionalLight& light : lights)
-            half = std::max(half, closeFitHalfSize(closeFitBounds(corners, lightBasis(light.direction)), tileSize, margin));
+            half = std::max(half, closeFitHalfSize(lightSpaceBounds(lightBasis(light.direction), corners), tileSize, margin));
         halfSizes.push_back(half);
     }
     return halfSizes;
@@ -218,7 +218,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
             const FrustumSlice& slice = slices[c];
             cascade.fit =
                 close ? fitCloseCascade(
-                            closeFitBounds(frustumSliceCorners(camera, slice.nearDistance, slice.farDistance), basis),
+                            lightSpaceBounds(basis, frustumSliceCorners(camera, slice.nearDistance, slice.farDistance)),
                             halfSizes[c], plan.cullingSpheres[c], basis, plan.atlas.tileSize(), light.nearPlaneOffset,
                             casterBounds, conventions)
                       : fitDirectionalCascade(plan.cullingSpheres[c], basis, plan.atlas.tileSize(),

@@ -47,10 +47,8 @@ DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const Light
                                                float nearPlaneOffset, std::span<const Bounds> casterBounds,
                                                const rhi::Conventions& conventions);
 
-// Close fit: the light-space bounds of a frustum slice's corners (x, y the tile's footprint, z its depth range).
-Bounds closeFitBounds(const std::array<glm::vec3, 8>& sliceCorners, const LightBasis& basis);
-
-// The half size of a close-fit tile around `sliceBounds`: half its larger side, plus marginTexels texels (a
+// The half size of a close-fit tile around `sliceBounds` (lightSpaceBounds of a frustum slice's corners: x, y the
+// tile's footprint, z its depth range): half its larger side, plus marginTexels texels (a
 // receiver's normal offset and filter taps stay in the tile), plus half a texel (the snap moves the centre at most
 // half a texel along each axis), rounded up to 12 significant bits so that camera translation leaves it alone. A
 // square, not the bounds' rectangle: square texels keep one texel size per cascade for the normal bias, the filters
