@@ -128,6 +128,9 @@ private:
         frame.shadows = applied_.shadows;
         frame.cascadeView = applied_.cascadeView;
         frame.maxAnisotropy = applied_.maxAnisotropy;
+        if (applied_.redrawStaticMaps)
+            renderer_.requestStaticShadowUpdate();
+        applied_.redrawStaticMaps = edited_.redrawStaticMaps = false;
         status_.stats = renderer_.render(camera_.camera(), frame);
         status_.notes = renderer_.notes();
         status_.atlasPicture = nullptr;

@@ -101,13 +101,15 @@ void StaticShadowCache::checkBake(const shadows::StaticShadowPlan& plan, std::sp
 {
     if (!bake_)
         return;
+    // A light the bake lacks first: it also reshapes the atlases, which would make every other map the wrong size.
+    for (const shadows::StaticShadowMap& map : plan.maps)
+        if (!bakedMap(map))
+            throw rhi::Error(fmt::format("baked shadows (made on {}): no map for {}; bake the scene again",
+                                         bake_->configuration, mapName(map)));
     for (std::size_t i = 0; i < plan.maps.size(); ++i) {
         const shadows::StaticShadowMap& map = plan.maps[i];
         const shadows::ShadowAtlasLayout& layout = isDirectional(map) ? plan.directionalAtlas : plan.otherAtlas;
         const shadows::BakedShadowMap* baked = bakedMap(map);
-        if (!baked)
-            throw rhi::Error(fmt::format("baked shadows (made on {}): no map for {}; bake the scene again",
-                                         bake_->configuration, mapName(map)));
         if (baked->size != layout.tileSize() || baked->frusta.size() != map.tiles.size())
             throw rhi::Error(fmt::format("baked shadows: {} ('{}') was baked as {} tiles of {} texels, the settings "
                                          "give {} of {}",
