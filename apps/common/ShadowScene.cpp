@@ -4,6 +4,7 @@
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
+#include "penumbra/render/ShadowTruth.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/TestScenes.hpp"
@@ -93,6 +94,10 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     pictures.reversedZ = device.conventions().reversedZ();
     pictures.stats = renderer.render(scene.camera, frame);
     pictures.notes = renderer.notes();
+    if (!scene.lights.empty())
+        for (const float depth : kTexelDensityDepths)
+            pictures.texelsPerMetre.push_back(render::directionalTexelsPerMetre(
+                renderer.plan(), 0, scene.camera, float(frame.width) / float(frame.height), depth));
     pictures.lit = rhi::readTexture(device, renderer.litImage());
     if (frame.cascadeView)
         pictures.cascades = rhi::readTexture(device, renderer.cascadeImage());

@@ -7,6 +7,7 @@
 #include "penumbra/scene/Scene.hpp"
 #include "penumbra/shadows/StaticShadowBake.hpp"
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,10 +38,16 @@ struct ShadowPictures {
     std::vector<AtlasPictures> atlases;
     render::FrameStats stats;
     std::vector<std::string> notes;
+    // render::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
+    std::vector<float> texelsPerMetre;
 
     // Throws rhi::Error naming the atlases there are.
     const AtlasPictures& atlas(std::string_view name) const;
 };
+
+// View depths (metres) at which the tool reports the directional shadows' texels per metre: one or two in each
+// cascade of the default splits (10, 25, 50, 100 m).
+inline constexpr std::array<float, 5> kTexelDensityDepths{3.0f, 8.0f, 15.0f, 35.0f, 70.0f};
 
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
 // (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and

@@ -15,8 +15,8 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --filter, --light-size, --dynamic, --static-maps,
-// --realtime-casters.
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --filter, --light-size, --projection, --dynamic,
+// --static-maps, --realtime-casters.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -29,6 +29,7 @@ struct SceneOptions {
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
     std::string filter;             // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
+    std::string projection;         // shadows::projectionFromName; empty: the settings file's
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
     std::string staticMaps;      // shadows::StaticShadowUpdate by its JSON name; empty: the settings file's
     std::string realtimeCasters; // shadows::RealtimeCasters by its JSON name; empty: the settings file's
@@ -40,6 +41,9 @@ CLI::Validator anisotropyValidator();
 
 // --filter's check, for every command that takes it: a shadows::filterFromCommandName name.
 CLI::Validator filterValidator();
+
+// --projection's check, for every command that takes it: a shadows::projectionFromName name.
+CLI::Validator projectionValidator();
 
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);

@@ -31,6 +31,15 @@ std::array<const char*, shadows::kShadowFilterCount> filterNames()
 
 bool filterCombo(const char* label, shadows::ShadowFilter& filter) { return enumCombo(label, filter, filterNames()); }
 
+// shadows::CascadeProjection's names, in its order.
+std::array<const char*, shadows::kCascadeProjectionCount> projectionNames()
+{
+    std::array<const char*, shadows::kCascadeProjectionCount> names{};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        names[i] = shadows::cascadeProjectionNames()[i].name.data();
+    return names;
+}
+
 // A light's own filter: "atlas" (scene::kAtlasShadowFilter) or one of the filters.
 bool lightFilterCombo(std::int32_t& filter)
 {
@@ -101,6 +110,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= ImGui::SliderFloat3("cascade ratios", &d.cascadeRatios.x, 0.0f, 1.0f);
     changed |= ImGui::SliderFloat("cascade fade", &d.cascadeFade, 0.001f, 1.0f);
     changed |= enumCombo("cascade blend", d.cascadeBlend, std::array{"hard", "soft", "dither"});
+    changed |= enumCombo("projection", d.projection, projectionNames());
     ImGui::Separator();
     ImGui::TextUnformatted("spot and point lights");
     ImGui::PushID("other");

@@ -52,6 +52,8 @@ public:
         applied_.cascadeView = options.cascadeView;
         applied_.atlasOverlay = options.atlasOverlay;
         applied_.maxAnisotropy = options.maxAnisotropy;
+        if (options.projection)
+            applied_.shadows.directional.projection = *options.projection;
         edited_ = applied_;
         if (options.ui) {
             imgui_.emplace(window_.handle());
