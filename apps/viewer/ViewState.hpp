@@ -5,6 +5,7 @@
 #include "penumbra/scene/Scene.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <tuple>
 #include <string>
@@ -29,6 +30,7 @@ struct ViewState {
     bool cascadeView = false;
     bool atlasOverlay = false;
     float maxAnisotropy = 8.0f; // render::FrameDesc::maxAnisotropy
+    std::uint32_t msaa = 1;     // render::FrameDesc::msaa
 };
 
 // What the panel shows besides the state.
@@ -38,6 +40,7 @@ struct PanelStatus {
     render::FrameStats stats;        // the last frame's passes
     std::vector<std::string> notes;  // SceneRenderer::notes()
     const rhi::Texture* atlasPicture = nullptr; // shown when atlasOverlay is on
+    std::uint32_t msaaCounts = 1; // the sample counts the device offers the lit pass (rhi::Capabilities::sampleCounts)
 };
 
 // Makes `edited` the state in use if it is valid: its shadow settings pass shadows::validate and

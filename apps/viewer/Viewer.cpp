@@ -19,6 +19,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <array>
 #include <chrono>
 #include <fmt/format.h>
 #include <imgui.h>
@@ -52,6 +53,9 @@ public:
         applied_.cascadeView = options.cascadeView;
         applied_.atlasOverlay = options.atlasOverlay;
         applied_.maxAnisotropy = options.maxAnisotropy;
+        applied_.msaa = options.msaa;
+        const std::array litTargets{render::kLitColorFormat, render::kLitDepthFormat};
+        status_.msaaCounts = device_->capabilities().sampleCounts(litTargets);
         edited_ = applied_;
         if (options.ui) {
             imgui_.emplace(window_.handle());
@@ -126,6 +130,7 @@ private:
         frame.shadows = applied_.shadows;
         frame.cascadeView = applied_.cascadeView;
         frame.maxAnisotropy = applied_.maxAnisotropy;
+        frame.msaa = applied_.msaa;
         status_.stats = renderer_.render(camera_.camera(), frame);
         status_.notes = renderer_.notes();
         status_.atlasPicture = nullptr;
