@@ -3,6 +3,9 @@
 // the two; with 1 sample every pixel is one or the other, with 4 the edge pixels take the covered share of white.
 #include "GpuTesting.hpp"
 
+#include "penumbra/rhi/Error.hpp"
+
+#include <array>
 #include <cstddef>
 #include <fmt/format.h>
 #include <glm/vec2.hpp>
@@ -130,13 +133,55 @@ TEST_F(MultisampleTest, ResolvedEdgesAreAntiAliased)
     const Edges hard = countEdges(single), smooth = countEdges(multi);
     savePicture(multi, fmt::format("{}/msaa-triangle-{}x", configuration(), samples));
     EXPECT_EQ(hard.intermediate, 0u) << savePicture(single, configuration() + "/msaa-triangle-1x");
-    // The three edges are about 360 pixels long; most edge pixels have some but not all samples covered.
-    EXPECT_GT(smooth.intermediate, 200u) << savePicture(multi, configuration() + "/msaa-triangle");
+    // The three edges are about 290 pixels long; most pixels they cross have some but not all samples covered
+    // (measured 208 with 4 samples on lavapipe and llvmpipe).
+    EXPECT_GT(smooth.intermediate, 150u) << savePicture(multi, configuration() + "/msaa-triangle");
     EXPECT_EQ(smooth.shades, samples - 1);
     // Inside pixels stay white; the white area shrinks by at most the edge pixels.
     EXPECT_GT(smooth.white, hard.white - smooth.intermediate);
     fmt::print("[ msaa ] {}x: {} intermediate pixels in {} shades, {} white (1x: {} white)\n", samples,
                smooth.intermediate, smooth.shades, smooth.white, hard.white);
+}
+
+// A count of 2, 4 or 8 that the device does not offer is refused by name, for textures and pipelines alike, with the
+// counts it does offer (on lavapipe and llvmpipe: 2 and 8, offered are 1 and 4). Not in MisuseTest's table, whose
+// rows hold on every device: a device offering every count has no such row.
+TEST_F(MultisampleTest, CountsTheDeviceLacksAreRefusedWithTheOnesItOffers)
+{
+    const rhi::Capabilities& caps = device->capabilities();
+    const std::uint32_t color = caps.format(rhi::Format::RGBA8).sampleCounts;
+    const std::array targets{rhi::Format::RGBA8, rhi::Format::D32F};
+    auto vertex = device->createShader({rhi::ShaderStage::Vertex, vertexGlsl, "triangle.vert"});
+    auto fragment = device->createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "white.frag"});
+    for (std::uint32_t count = 2; count <= 8; count *= 2) {
+        if ((color & count) == 0) {
+            try {
+                device->createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget,
+                                       .samples = count, .debugName = "bad"});
+                ADD_FAILURE() << count << " samples were accepted for a texture";
+            } catch (const rhi::UnsupportedError& e) {
+                EXPECT_EQ(std::string(e.what()),
+                          fmt::format("texture 'bad': {} offers {} samples for RGBA8 render targets, not {}",
+                                      caps.device, rhi::sampleCountList(color), count));
+            }
+        }
+        if ((caps.sampleCounts(targets) & count) == 0) {
+            rhi::PipelineDesc desc{.vertex = vertex.get(), .fragment = fragment.get()};
+            desc.vertexLayout = {{{.stride = sizeof(glm::vec2)}}, {{.location = 0, .format = rhi::VertexFormat::Float2}}};
+            desc.colorTargets = {{.format = rhi::Format::RGBA8}};
+            desc.depthFormat = rhi::Format::D32F;
+            desc.samples = count;
+            desc.debugName = "bad";
+            try {
+                device->createPipeline(desc);
+                ADD_FAILURE() << count << " samples were accepted for a pipeline";
+            } catch (const rhi::UnsupportedError& e) {
+                EXPECT_EQ(std::string(e.what()),
+                          fmt::format("pipeline 'bad': {} offers {} samples for RGBA8, D32F, not {}", caps.device,
+                                      rhi::sampleCountList(caps.sampleCounts(targets)), count));
+            }
+        }
+    }
 }
 
 } // namespace
