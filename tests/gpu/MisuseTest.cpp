@@ -61,15 +61,12 @@ rhi::UniformLayout transformLayout()
             {PENUMBRA_UNIFORM_MEMBER(TransformUniforms, clip), PENUMBRA_UNIFORM_MEMBER(TransformUniforms, tint)}};
 }
 
-// The lowest sample count above 1 the device offers for RGBA8 and D32F targets (MultisampleTest checks there is one).
+// The sample count of the fixture's multisampled textures: the lowest above 1 the device offers for RGBA8 and D32F
+// targets (MultisampleTest checks there is one).
 std::uint32_t multisampleCount(const rhi::Capabilities& caps)
 {
     const std::array targets{rhi::Format::RGBA8, rhi::Format::D32F};
-    const std::uint32_t offered = caps.sampleCounts(targets);
-    for (std::uint32_t count = 2; count <= 8; count *= 2)
-        if (offered & count)
-            return count;
-    return 1;
+    return lowestMultisampleCount(caps, targets);
 }
 
 // What every row starts from: one device's resources for a draw into an 8x8 RGBA8 + D32F target, and a fresh

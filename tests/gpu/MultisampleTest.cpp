@@ -53,15 +53,10 @@ Edges countEdges(const rhi::Image& image)
 
 class MultisampleTest : public GpuTest {
 protected:
-    // The lowest count above 1 that the device offers for RGBA8 and D32F targets; 0 if none.
     std::uint32_t multisampleCount() const
     {
         const std::array targets{rhi::Format::RGBA8, rhi::Format::D32F};
-        const std::uint32_t offered = device->capabilities().sampleCounts(targets);
-        for (std::uint32_t count = 2; count <= 8; count *= 2)
-            if (offered & count)
-                return count;
-        return 0;
+        return lowestMultisampleCount(device->capabilities(), targets);
     }
 
     // The triangle drawn with `samples` into colour and depth, resolved where multisampled, read back.

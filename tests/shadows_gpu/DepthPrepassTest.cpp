@@ -80,12 +80,7 @@ class DepthPrepassTest : public GpuTest {
 protected:
     rhi::Image render(const scene::Scene& scene, bool prepass, std::uint32_t msaa)
     {
-        render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
-        frame.depthPrepass = prepass;
-        frame.msaa = msaa;
-        return renderLit(*device, scene, frame);
+        return renderLit(*device, scene, litFrame(kWidth, kHeight, prepass, msaa));
     }
 
     // Pixels whose bytes differ, and pixels that are not the background (what the comparison covers).

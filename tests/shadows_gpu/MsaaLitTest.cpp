@@ -9,6 +9,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
 
+#include <array>
 #include <cstring>
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -35,27 +36,17 @@ scene::Scene turnedSquare()
     return scene;
 }
 
-// The lowest sample count above 1 the device offers the lit pass; 0 if none.
 std::uint32_t litMultisampleCount(const rhi::Device& device)
 {
     const std::array targets{render::kLitColorFormat, render::kLitDepthFormat};
-    const std::uint32_t offered = device.capabilities().sampleCounts(targets);
-    for (std::uint32_t count = 2; count <= 8; count *= 2)
-        if (offered & count)
-            return count;
-    return 0;
+    return lowestMultisampleCount(device.capabilities(), targets);
 }
 
 class MsaaLitTest : public GpuTest {
 protected:
-    rhi::Image render(const scene::Scene& scene, std::uint32_t msaa, bool prepass = true)
+    rhi::Image render(const scene::Scene& scene, std::uint32_t msaa)
     {
-        render::FrameDesc frame;
-        frame.width = kSize;
-        frame.height = kSize;
-        frame.msaa = msaa;
-        frame.depthPrepass = prepass;
-        return renderLit(*device, scene, frame);
+        return renderLit(*device, scene, litFrame(kSize, kSize, true, msaa));
     }
 };
 
