@@ -4,6 +4,7 @@
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 #include "penumbra/shadows/OtherShadowUniforms.hpp"
+#include "penumbra/shadows/StaticShadowUniforms.hpp"
 
 #include <fmt/format.h>
 
@@ -30,7 +31,7 @@ LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const
     desc.depthFormat = kLitDepthFormat;
     desc.samples = samples;
     desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
-                           shadows::otherShadowLayout()};
+                           shadows::otherShadowLayout(), shadows::staticShadowLayout()};
     for (const bool blend : {false, true})
         for (const bool doubleSided : {false, true}) {
             desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
