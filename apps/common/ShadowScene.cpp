@@ -82,9 +82,11 @@ scene::Scene namedScene(const std::string& name)
 }
 
 ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame, bool readAtlases)
+                                 const render::FrameDesc& frame, bool readAtlases, const shadows::StaticShadowBake* bake)
 {
     render::SceneRenderer renderer(device, scene);
+    if (bake)
+        renderer.useBakedShadows(*bake);
     ShadowPictures pictures;
     pictures.configuration = configuration;
     pictures.depthRange = device.conventions().depthRange();
@@ -114,7 +116,7 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
     desc.validation = run.validate;
     desc.validateUsage = desc.validateUsage || run.validate;
     auto device = createDevice(desc);
-    ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases);
+    ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases, run.bake);
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;

@@ -5,6 +5,7 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/Scene.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 
 #include <string>
 #include <string_view>
@@ -55,11 +56,13 @@ inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest
 struct ShadowSceneRun {
     bool validate = true;
     bool readAtlases = true;
+    const shadows::StaticShadowBake* bake = nullptr; // static maps from a bake (SceneRenderer::useBakedShadows)
 };
 
 // Renders scene.camera's view on `device`; the cascade view too when frame.cascadeView is set.
 ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame, bool readAtlases = true);
+                                 const render::FrameDesc& frame, bool readAtlases = true,
+                                 const shadows::StaticShadowBake* bake = nullptr);
 // The same on a device of its own; throws rhi::Error when the device reports a validation or debug message.
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame, const ShadowSceneRun& run = {});

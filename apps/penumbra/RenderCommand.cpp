@@ -55,6 +55,7 @@ void render(const RenderOptions& options)
     const LoadedScene loaded = loadScene(options.scene);
     render::FrameDesc frame = frameDesc(options.scene);
     frame.cascadeView = !options.debug.empty();
+    const std::optional<shadows::StaticShadowBake> bake = loadBake(options.scene);
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);
 
@@ -62,7 +63,9 @@ void render(const RenderOptions& options)
     std::vector<ShadowPictures> all;
     for (const std::string& configuration : configurations) {
         all.push_back(renderShadowScene(configuration, loaded.scene, frame,
-                                        {.validate = options.validate, .readAtlases = !options.atlas.empty()}));
+                                        {.validate = options.validate,
+                                         .readAtlases = !options.atlas.empty(),
+                                         .bake = bake ? &*bake : nullptr}));
         printStats(all.back(), loaded.scene);
     }
     for (const ShadowPictures& pictures : all)

@@ -178,6 +178,18 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                 return shadows::parseRealtimeCasters(s) ? std::string() : fmt::format("'{}' is not all or dynamic", s);
             },
             "CASTERS"));
+    command
+        .add_option("--baked", options.baked,
+                    "Static shadow maps from this `penumbra bake` folder instead of drawing static casters; a bake that "
+                    "does not match the scene, its lights or settings is refused")
+        ->check(CLI::ExistingDirectory);
+}
+
+std::optional<shadows::StaticShadowBake> loadBake(const SceneOptions& options)
+{
+    if (options.baked.empty())
+        return std::nullopt;
+    return shadows::readStaticShadowBake(options.baked);
 }
 
 namespace {
@@ -260,6 +272,9 @@ render::FrameDesc frameDesc(const SceneOptions& options)
         frame.shadows.staticMaps.update = shadows::parseStaticShadowUpdate(options.staticMaps).value();
     if (!options.realtimeCasters.empty())
         frame.shadows.staticMaps.realtimeCasters = shadows::parseRealtimeCasters(options.realtimeCasters).value();
+    // A bake is static maps: kept as loaded.
+    if (!options.baked.empty() && !shadows::hasStaticMaps(frame.shadows))
+        frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
     return frame;
 }
 

@@ -4,6 +4,7 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/Scene.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 
 #include <CLI/CLI.hpp>
 #include <memory>
@@ -32,6 +33,7 @@ struct SceneOptions {
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
     std::string staticMaps;      // shadows::StaticShadowUpdate by its JSON name; empty: the settings file's
     std::string realtimeCasters; // shadows::RealtimeCasters by its JSON name; empty: the settings file's
+    std::string baked;           // a `penumbra bake` folder: static maps from it; empty: none
 };
 
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
@@ -54,6 +56,9 @@ struct LoadedScene {
 // The built-in scene or glTF file, with --camera, --light, --normal-bias-side and --dynamic applied. Throws scene::SceneError (a glTF file's
 // errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
+
+// --baked's folder read (shadows::readStaticShadowBake), or nullopt without --baked.
+std::optional<shadows::StaticShadowBake> loadBake(const SceneOptions& options);
 
 // Size, shadow settings, ambient light, anisotropy and MSAA of the frame (--ambient, --anisotropy and --msaa over the
 // settings file's "ambient", "anisotropy" and "msaa"); throws

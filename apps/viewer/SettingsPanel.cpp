@@ -114,6 +114,15 @@ bool shadowSettings(shadows::ShadowSettings& s)
     ImGui::Separator();
     ImGui::TextUnformatted("soft shadows (poisson, pcss)");
     changed |= softSettings(s.soft);
+    ImGui::Separator();
+    ImGui::TextUnformatted("static shadow maps");
+    ImGui::PushID("static");
+    shadows::StaticShadowSettings& m = s.staticMaps;
+    changed |= enumCombo("update", m.update, std::array{"every frame (none)", "on change", "on demand"});
+    changed |= enumCombo("realtime casters", m.realtimeCasters, std::array{"all", "dynamic"});
+    changed |= ImGui::InputScalar("directional atlas size", ImGuiDataType_U32, &m.directionalAtlasSize);
+    changed |= ImGui::InputScalar("other atlas size", ImGuiDataType_U32, &m.otherAtlasSize);
+    ImGui::PopID();
     return changed;
 }
 
@@ -196,6 +205,12 @@ bool objectSettings(std::vector<ObjectShadowState>& objects, const scene::Scene&
             ImGui::SameLine();
             changed |= ImGui::Checkbox("receive", &object.receive);
             ImGui::SameLine();
+            bool dynamic = object.mobility == scene::Mobility::Dynamic;
+            if (ImGui::Checkbox("dynamic", &dynamic)) {
+                object.mobility = dynamic ? scene::Mobility::Dynamic : scene::Mobility::Static;
+                changed = true;
+            }
+            ImGui::SameLine();
             ImGui::TextUnformatted(scene.objects[std::size_t(i)].name.c_str());
             ImGui::PopID();
         }
@@ -249,8 +264,14 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
     changed |= ImGui::SliderFloat("texture anisotropy", &state.maxAnisotropy, 1.0f, 16.0f, "%.0f");
     changed |= msaaChoice(state.msaa, status.msaaCounts);
-    if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen))
+    if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
         changed |= shadowSettings(state.shadows);
+        if (state.shadows.staticMaps.update == shadows::StaticShadowUpdate::OnDemand &&
+            ImGui::Button("redraw static maps")) {
+            state.redrawStaticMaps = true;
+            changed = true;
+        }
+    }
     if (ImGui::CollapsingHeader("lights")) {
         for (std::size_t i = 0; i < state.lights.size(); ++i)
             changed |= lightSettings(state.lights[i], i);
@@ -259,7 +280,7 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
         for (std::size_t i = 0; i < state.pointLights.size(); ++i)
             changed |= pointLightSettings(state.pointLights[i], i);
     }
-    if (ImGui::CollapsingHeader("objects: cast and receive shadows"))
+    if (ImGui::CollapsingHeader("objects: cast and receive shadows, dynamic"))
         changed |= objectSettings(state.objects, scene);
     ImGui::End();
 

@@ -131,6 +131,9 @@ private:
         frame.cascadeView = applied_.cascadeView;
         frame.maxAnisotropy = applied_.maxAnisotropy;
         frame.msaa = applied_.msaa;
+        if (applied_.redrawStaticMaps)
+            renderer_.requestStaticShadowUpdate();
+        applied_.redrawStaticMaps = edited_.redrawStaticMaps = false;
         status_.stats = renderer_.render(camera_.camera(), frame);
         status_.notes = renderer_.notes();
         status_.atlasPicture = nullptr;

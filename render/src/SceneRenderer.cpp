@@ -3,6 +3,7 @@
 #include "TextureSampling.hpp"
 #include "passes/DepthPrepass.hpp"
 #include "passes/LitPipelines.hpp"
+#include "static/StaticMapHashes.hpp"
 #include "static/StaticShadowCache.hpp"
 
 #include "penumbra/rhi/Error.hpp"
@@ -315,6 +316,33 @@ const shadows::ShadowAtlas& SceneRenderer::staticOtherAtlas() const { return sta
 
 const shadows::StaticShadowPlan& SceneRenderer::staticPlan() const { return staticShadows_->plan(); }
 
+void SceneRenderer::useBakedShadows(shadows::StaticShadowBake bake) { staticShadows_->useBake(std::move(bake)); }
+
+shadows::StaticShadowBake SceneRenderer::bakeStaticShadows(const std::string& configuration) const
+{
+    const scene::Scene& scene = gpuScene_.scene();
+    const shadows::StaticShadowPlan& plan = staticShadows_->plan();
+    shadows::StaticShadowBake bake{configuration, {}, {}};
+    for (const scene::Object& object : scene.objects)
+        if (object.mobility == scene::Mobility::Static && scene.castsShadows(object))
+            bake.objects.push_back(object.name);
+    const std::vector<std::uint64_t> hashes = staticMapHashes(scene, plan);
+    std::optional<rhi::DepthImage> directional, other;
+    for (std::size_t i = 0; i < plan.maps.size(); ++i) {
+        const shadows::StaticShadowMap& map = plan.maps[i];
+        const bool isDirectional = map.kind == shadows::ShadowLightKind::Directional;
+        std::optional<rhi::DepthImage>& depth = isDirectional ? directional : other;
+        if (!depth)
+            depth = rhi::readDepth(device_, (isDirectional ? staticDirectionalAtlas() : staticOtherAtlas()).texture());
+        shadows::BakedShadowMap baked = shadows::bakeShadowMap(
+            map, isDirectional ? plan.directionalAtlas : plan.otherAtlas, *depth, device_.conventions());
+        baked.lightName = lightName(scene, map.kind, map.lightIndex);
+        baked.hash = hashes[i];
+        bake.maps.push_back(std::move(baked));
+    }
+    return bake;
+}
+
 void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
 {
     checkFrameSize(frame);
@@ -503,6 +531,12 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     plan_ = std::move(plans.directional);
     otherPlan_ = std::move(plans.other);
 
+    if (staticShadows_->baked()) {
+        if (!shadows::hasStaticMaps(frame.shadows))
+            throw rhi::Error("baked shadows: the frame's settings keep no static maps (static.update is everyFrame); "
+                             "set it to onChange or onDemand");
+        staticShadows_->checkBake(plans.staticMaps, staticMapHashes(gpuScene_.scene(), plans.staticMaps));
+    }
     FrameStats stats;
     stats.notes = notes_;
     for (const shadows::ShadowedDirectionalLight& light : plan_.lights)

@@ -12,6 +12,7 @@
 #include "penumbra/shadows/OtherShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 #include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <array>
@@ -124,6 +125,14 @@ public:
     // In StaticShadowUpdate::OnDemand mode, the next render() draws every static map again from its plan; other modes
     // ignore it.
     void requestStaticShadowUpdate() { staticUpdateRequested_ = true; }
+    // The static maps as the last render() left them, for a bake on disk (shadows::writeStaticShadowBake): light-space
+    // depth that any configuration restores, with the hashes a later load checks. `configuration` is recorded.
+    shadows::StaticShadowBake bakeStaticShadows(const std::string& configuration) const;
+    // From now on the static maps come from `bake` and no static caster is drawn into them. render() then throws
+    // rhi::Error, before drawing anything, when the frame's settings keep no static maps (staticMaps.update
+    // everyFrame) or the bake does not hold the maps the scene and settings plan now (naming the light and what
+    // differs).
+    void useBakedShadows(shadows::StaticShadowBake bake);
 
 private:
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
