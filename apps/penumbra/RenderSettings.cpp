@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fmt/format.h>
@@ -60,6 +61,17 @@ float anisotropyOf(const Json& value, const std::string& source)
     return value.get<float>();
 }
 
+std::uint32_t msaaOf(const Json& value, const std::string& source)
+{
+    const bool allowed = value.is_number_integer() &&
+                         std::find(std::begin(kMsaaCounts), std::end(kMsaaCounts), value.get<std::int64_t>()) !=
+                             std::end(kMsaaCounts);
+    if (!allowed)
+        throw rhi::Error(fmt::format("{}: msaa: {} is not a sample count, allowed 1, 2, 4 or 8", source,
+                                     value.dump()));
+    return value.get<std::uint32_t>();
+}
+
 } // namespace
 
 RenderSettings loadRenderSettings(const std::filesystem::path& path)
@@ -74,7 +86,7 @@ RenderSettings loadRenderSettings(const std::filesystem::path& path)
     // The ambient object is this tool's; the rest is the shadow settings' JSON, whose parser names its own errors
     // (bad JSON included).
     Json root = Json::parse(text.str(), nullptr, false);
-    if (!root.is_object() || (!root.contains("ambient") && !root.contains("anisotropy"))) {
+    if (!root.is_object() || (!root.contains("ambient") && !root.contains("anisotropy") && !root.contains("msaa"))) {
         settings.shadows = shadows::parseShadowSettings(text.str(), source);
         return settings;
     }
@@ -85,6 +97,10 @@ RenderSettings loadRenderSettings(const std::filesystem::path& path)
     if (root.contains("anisotropy")) {
         settings.anisotropy = anisotropyOf(root["anisotropy"], source);
         root.erase("anisotropy");
+    }
+    if (root.contains("msaa")) {
+        settings.msaa = msaaOf(root["msaa"], source);
+        root.erase("msaa");
     }
     settings.shadows = shadows::parseShadowSettings(root.dump(), source);
     return settings;

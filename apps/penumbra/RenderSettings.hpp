@@ -3,6 +3,7 @@
 #include "penumbra/render/AmbientLight.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 
@@ -10,13 +11,18 @@ namespace penumbra::apps {
 
 // A --settings file: the shadow settings' JSON (shadows::parseShadowSettings) with an optional top-level "ambient"
 // object: {"color": [r, g, b], "intensity": i, "ground": [r, g, b]} (render::AmbientLight; each field optional,
-// "ground" makes it a sky/ground hemisphere) and an optional top-level "anisotropy" number, 1 to
-// kMaxAnisotropyOption (render::FrameDesc::maxAnisotropy).
+// "ground" makes it a sky/ground hemisphere), an optional top-level "anisotropy" number, 1 to
+// kMaxAnisotropyOption (render::FrameDesc::maxAnisotropy), and an optional top-level "msaa" sample count, 1, 2, 4
+// or 8 (render::FrameDesc::msaa).
 struct RenderSettings {
     shadows::ShadowSettings shadows;
     std::optional<render::AmbientLight> ambient;
     std::optional<float> anisotropy;
+    std::optional<std::uint32_t> msaa;
 };
+
+// The sample counts --msaa and the settings' "msaa" take (render::FrameDesc::msaa); the device may offer fewer.
+inline constexpr std::uint32_t kMsaaCounts[] = {1, 2, 4, 8};
 
 // 16: what Vulkan requires of devices with samplerAnisotropy (the specification's Required Limits table,
 // maxSamplerAnisotropy) and more than GPUs offer.

@@ -57,6 +57,18 @@ CLI::Validator anisotropyValidator()
         "N");
 }
 
+CLI::Validator msaaValidator()
+{
+    return CLI::Validator(
+        [](std::string& s) {
+            for (std::uint32_t count : kMsaaCounts)
+                if (s == std::to_string(count))
+                    return std::string();
+            return fmt::format("'{}' is not a sample count: 1 (off), 2, 4 or 8", s);
+        },
+        "1|2|4|8");
+}
+
 CLI::Validator filterValidator()
 {
     return CLI::Validator(
@@ -156,6 +168,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                     "(equal depth test); off: the lit pass alone")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
+    command
+        .add_option("--msaa", options.msaa,
+                    "Samples per pixel of the lit pass: 1 (off), 2, 4 or 8, as the device offers them; default 1")
+        ->check(msaaValidator());
     command.add_option("--dynamic", options.dynamicObjects,
                        "Make the objects of this name dynamic (repeatable; a glTF mesh's primitives NAME/0, NAME/1 "
                        "follow NAME): they are drawn into the realtime shadows every frame, never into static maps");
@@ -263,12 +279,14 @@ render::FrameDesc frameDesc(const SceneOptions& options)
         frame.shadows = settings.shadows;
         frame.ambient = settings.ambient.value_or(frame.ambient);
         frame.maxAnisotropy = settings.anisotropy.value_or(frame.maxAnisotropy);
+        frame.msaa = settings.msaa.value_or(frame.msaa);
     }
     if (!options.ambient.empty())
         frame.ambient = parseAmbientOption(options.ambient).value();
     frame.maxAnisotropy = options.anisotropy.value_or(frame.maxAnisotropy);
     if (!options.projection.empty())
         frame.shadows.directional.projection = shadows::projectionFromName(options.projection).value();
+    frame.msaa = options.msaa.value_or(frame.msaa);
     if (!options.staticMaps.empty())
         frame.shadows.staticMaps.update = shadows::parseStaticShadowUpdate(options.staticMaps).value();
     if (!options.realtimeCasters.empty())
@@ -292,6 +310,8 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
     if (s.atlasPassMs && s.otherAtlasPassMs && s.litPassMs)
         fmt::print("; atlas pass {:.2f} ms, other atlas pass {:.2f} ms, lit pass {:.2f} ms", *s.atlasPassMs,
                    *s.otherAtlasPassMs, *s.litPassMs);
+    if (s.resolvePassMs)
+        fmt::print(", MSAA resolve {:.2f} ms", *s.resolvePassMs);
     fmt::print("\n");
     if (!pictures.texelsPerMetre.empty()) {
         fmt::print("  directional shadow texels per metre at view depth");

@@ -15,8 +15,8 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --filter, --light-size, --projection, --dynamic,
-// --static-maps, --realtime-casters.
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --msaa, --filter, --light-size, --projection,
+// --dynamic, --static-maps, --realtime-casters.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -27,6 +27,7 @@ struct SceneOptions {
     std::string settings;
     std::string size = "1280x720";
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
+    std::optional<std::uint32_t> msaa; // render::FrameDesc::msaa; empty: the settings file's, or 1
     std::string filter;             // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
     std::string projection;         // shadows::projectionFromName; empty: the settings file's
@@ -38,6 +39,9 @@ struct SceneOptions {
 
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
 CLI::Validator anisotropyValidator();
+
+// --msaa's check, for every command that takes it: a count of kMsaaCounts.
+CLI::Validator msaaValidator();
 
 // --filter's check, for every command that takes it: a shadows::filterFromCommandName name.
 CLI::Validator filterValidator();
@@ -60,8 +64,8 @@ LoadedScene loadScene(const SceneOptions& options);
 // --baked's folder read (shadows::readStaticShadowBake), or nullopt without --baked.
 std::optional<shadows::StaticShadowBake> loadBake(const SceneOptions& options);
 
-// Size, shadow settings, ambient light and anisotropy of the frame (--ambient and --anisotropy over the settings
-// file's "ambient" and "anisotropy"); throws
+// Size, shadow settings, ambient light, anisotropy and MSAA of the frame (--ambient, --anisotropy and --msaa over the
+// settings file's "ambient", "anisotropy" and "msaa"); throws
 // rhi::Error naming the settings file and field.
 render::FrameDesc frameDesc(const SceneOptions& options);
 

@@ -61,6 +61,10 @@ void addViewCommand(CLI::App& app)
                                  kMaxAnisotropyOption))
         ->check(anisotropyValidator())
         ->capture_default_str();
+    view->add_option("--msaa", options->msaa,
+                     "Samples per pixel of the lit pass: 1 (off), 2, 4 or 8, as the device offers them")
+        ->check(msaaValidator())
+        ->capture_default_str();
     addValidateFlag(*view, options->validate);
     view->add_option("--filter", options->filter,
                      fmt::format("Every light's shadow filter: {}", shadows::filterCommandNames()))

@@ -227,12 +227,32 @@ bool objectSettings(std::vector<ObjectShadowState>& objects, const scene::Scene&
     return changed;
 }
 
+// One radio button per sample count the device offers the lit pass.
+bool msaaChoice(std::uint32_t& msaa, std::uint32_t offered)
+{
+    bool changed = false;
+    ImGui::TextUnformatted("MSAA");
+    for (std::uint32_t count = 1; count <= 8; count *= 2) {
+        if ((offered & count) == 0)
+            continue;
+        ImGui::SameLine();
+        int value = int(msaa);
+        if (ImGui::RadioButton(count == 1 ? "off" : fmt::format("{}x", count).c_str(), &value, int(count))) {
+            msaa = count;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
 void statusLines(const PanelStatus& status)
 {
     ImGui::Text("frame %.1f ms", status.frameMs);
     if (status.stats.atlasPassMs && status.stats.otherAtlasPassMs && status.stats.litPassMs)
         ImGui::Text("atlas pass %.2f ms, other atlas %.2f ms, lit pass %.2f ms", *status.stats.atlasPassMs,
                     *status.stats.otherAtlasPassMs, *status.stats.litPassMs);
+    if (status.stats.resolvePassMs)
+        ImGui::Text("MSAA resolve %.2f ms", *status.stats.resolvePassMs);
     ImGui::Text("caster draws %u, spot and point %u", status.stats.casterDraws, status.stats.otherCasterDraws);
     for (const std::string& note : status.notes)
         ImGui::TextWrapped("%s", note.c_str());
@@ -253,6 +273,7 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     ImGui::SameLine();
     changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
     changed |= ImGui::SliderFloat("texture anisotropy", &state.maxAnisotropy, 1.0f, 16.0f, "%.0f");
+    changed |= msaaChoice(state.msaa, status.msaaCounts);
     if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
         changed |= shadowSettings(state.shadows);
         if (state.shadows.staticMaps.update == shadows::StaticShadowUpdate::OnDemand &&

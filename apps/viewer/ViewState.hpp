@@ -5,6 +5,7 @@
 #include "penumbra/scene/Scene.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <tuple>
 #include <string>
@@ -30,6 +31,7 @@ struct ViewState {
     bool cascadeView = false;
     bool atlasOverlay = false;
     float maxAnisotropy = 8.0f; // render::FrameDesc::maxAnisotropy
+    std::uint32_t msaa = 1;     // render::FrameDesc::msaa
     bool redrawStaticMaps = false; // once: SceneRenderer::requestStaticShadowUpdate (the on-demand mode's button)
 };
 
@@ -40,6 +42,7 @@ struct PanelStatus {
     render::FrameStats stats;        // the last frame's passes
     std::vector<std::string> notes;  // SceneRenderer::notes()
     const rhi::Texture* atlasPicture = nullptr; // shown when atlasOverlay is on
+    std::uint32_t msaaCounts = 1; // the sample counts the device offers the lit pass (rhi::Capabilities::sampleCounts)
 };
 
 // Makes `edited` the state in use if it is valid: its shadow settings pass shadows::validate and

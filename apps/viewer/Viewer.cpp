@@ -19,6 +19,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <array>
 #include <chrono>
 #include <fmt/format.h>
 #include <imgui.h>
@@ -54,6 +55,9 @@ public:
         applied_.maxAnisotropy = options.maxAnisotropy;
         if (options.projection)
             applied_.shadows.directional.projection = *options.projection;
+        applied_.msaa = options.msaa;
+        const std::array litTargets{render::kLitColorFormat, render::kLitDepthFormat};
+        status_.msaaCounts = device_->capabilities().sampleCounts(litTargets);
         edited_ = applied_;
         if (options.ui) {
             imgui_.emplace(window_.handle());
@@ -128,6 +132,7 @@ private:
         frame.shadows = applied_.shadows;
         frame.cascadeView = applied_.cascadeView;
         frame.maxAnisotropy = applied_.maxAnisotropy;
+        frame.msaa = applied_.msaa;
         if (applied_.redrawStaticMaps)
             renderer_.requestStaticShadowUpdate();
         applied_.redrawStaticMaps = edited_.redrawStaticMaps = false;

@@ -2,6 +2,7 @@
 
 #include "TextureSampling.hpp"
 #include "passes/DepthPrepass.hpp"
+#include "passes/LitPipelines.hpp"
 #include "static/StaticMapHashes.hpp"
 #include "static/StaticShadowCache.hpp"
 #include "static/StaticTileCache.hpp"
@@ -21,8 +22,6 @@
 namespace penumbra::render {
 namespace {
 
-constexpr rhi::Format kLitFormat = rhi::Format::RGBA8;
-constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
 constexpr std::uint32_t kStandInAtlasSize = 16; // an atlas without tiles in use
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
 constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f};     // the visibility view where no shadow map decides
@@ -252,10 +251,6 @@ LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Mater
     return u;
 }
 
-// The lit pipeline's variants: culled or not (glTF doubleSided), opaque or alpha-blended over what is drawn
-// (alphaMode BLEND: tested against the opaque depth, not written).
-std::uint32_t pipelineIndex(bool doubleSided, bool blend) { return (doubleSided ? 1u : 0u) + (blend ? 2u : 0u); }
-
 // Opaque and masked objects in scene order, then blended ones from the farthest to the nearest (their world
 // bounds' centres from the camera), so each blends over what lies behind it (glTF 2.0 section 3.9.4, BLEND).
 // Shadows-only objects are not drawn.
@@ -279,9 +274,34 @@ std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& 
 {
     return device.createTexture({.width = frame.width,
                                  .height = frame.height,
-                                 .format = kLitFormat,
+                                 .format = kLitColorFormat,
                                  .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
                                  .debugName = name});
+}
+
+std::unique_ptr<rhi::Texture> depthTarget(rhi::Device& device, const FrameDesc& frame, std::uint32_t samples,
+                                          const std::string& name)
+{
+    return device.createTexture({.width = frame.width,
+                                 .height = frame.height,
+                                 .format = kLitDepthFormat,
+                                 .usage = rhi::TextureUsage::RenderTarget,
+                                 .samples = samples,
+                                 .debugName = name});
+}
+
+// FrameDesc::msaa: 1, or a count the device offers for both of the lit pass's targets.
+void checkMsaa(const FrameDesc& frame, const rhi::Capabilities& caps)
+{
+    if (frame.msaa != 1 && frame.msaa != 2 && frame.msaa != 4 && frame.msaa != 8)
+        throw rhi::Error(fmt::format("FrameDesc::msaa: {} is not 1, 2, 4 or 8", frame.msaa));
+    const std::array targets{kLitColorFormat, kLitDepthFormat};
+    const std::uint32_t offered = caps.sampleCounts(targets);
+    if ((offered & frame.msaa) == 0)
+        throw rhi::UnsupportedError(fmt::format("msaa {}: {} offers {} samples per pixel for the lit pass ({} colour, "
+                                                "{} depth)",
+                                                frame.msaa, caps.device, rhi::sampleCountList(offered),
+                                                rhi::formatName(kLitColorFormat), rhi::formatName(kLitDepthFormat)));
 }
 
 } // namespace
@@ -290,41 +310,15 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     : device_(device), gpuScene_(device, scene), shadowPass_(device, GpuScene::vertexFormat()),
       otherShadowPass_(device, GpuScene::vertexFormat()),
       litVertex_(device.createShader(litShader("lit.vert"))),
-      litFragment_(device.createShader(litShader("lit.frag"))), commands_(device.createCommandList()),
-      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(6) : nullptr),
+      litFragment_(device.createShader(litShader("lit.frag"))),
+      prepassedLitFragment_(device.createShader(litShader("lit.frag", true))),
+      litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, *litFragment_, *prepassedLitFragment_, 1)),
+      depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
+      staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
+      commands_(device.createCommandList()),
+      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(7) : nullptr),
       uniforms_(device, "lit pass uniforms")
 {
-    rhi::PipelineDesc desc;
-    desc.vertex = litVertex_.get();
-    desc.fragment = litFragment_.get();
-    desc.vertexLayout = GpuScene::vertexLayout();
-    desc.depthFormat = kDepthFormat;
-    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
-                           shadows::otherShadowLayout(), shadows::staticShadowLayout()};
-    for (const bool blend : {false, true})
-        for (const bool doubleSided : {false, true}) {
-            desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-            desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
-            rhi::ColorTarget target{kLitFormat};
-            if (blend)
-                target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
-                                rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
-            desc.colorTargets = {target};
-            desc.debugName = fmt::format("lit ({}, {})", blend ? "blended" : "opaque",
-                                         doubleSided ? "double-sided" : "culled");
-            litPipelines_[pipelineIndex(doubleSided, blend)] = device.createPipeline(desc);
-        }
-    prepassedLitFragment_ = device.createShader(litShader("lit.frag", true));
-    desc.fragment = prepassedLitFragment_.get();
-    desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
-    desc.colorTargets = {rhi::ColorTarget{kLitFormat}};
-    for (const bool doubleSided : {false, true}) {
-        desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-        desc.debugName = fmt::format("lit (after the depth prepass, {})", doubleSided ? "double-sided" : "culled");
-        prepassedLitPipelines_[doubleSided ? 1 : 0] = device.createPipeline(desc);
-    }
-    depthPrepass_ = std::make_unique<DepthPrepass>(device, kDepthFormat);
-    staticShadows_ = std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat());
     directionalStaticTiles_ =
         std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "directional atlas, static casters");
     otherStaticTiles_ = std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "other atlas, static casters");
@@ -388,20 +382,34 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
     if (!shadowCubes_ || shadowCubes_->faceSize() != faceSize || shadowCubes_->cubeCount() != cubeCount ||
         shadowCubes_->format() != other.atlasFormat)
         shadowCubes_ = std::make_unique<shadows::ShadowCubes>(device_, faceSize, cubeCount, other.atlasFormat);
-    if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height)
+    if (frame.msaa > 1 && (!multisampledLitPipelines_ || multisampledLitPipelines_->samples() != frame.msaa))
+        multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, *litFragment_,
+                                                                   *prepassedLitFragment_, frame.msaa);
+    if (depthPrepass_->samples() != frame.msaa)
+        depthPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, frame.msaa);
+    const std::uint32_t litSamples = multisampledColor_ ? multisampledColor_->desc().samples : 1;
+    if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height && litSamples == frame.msaa)
         return;
     lit_ = colorTarget(device_, frame, "lit image");
     cascades_ = colorTarget(device_, frame, "cascade view");
     visibility_ = colorTarget(device_, frame, "visibility view");
-    depth_ = device_.createTexture({.width = frame.width,
-                                    .height = frame.height,
-                                    .format = kDepthFormat,
-                                    .usage = rhi::TextureUsage::RenderTarget,
-                                    .debugName = "lit depth"});
-    const rhi::Attachment litColor{lit_.get(), 0};
+    depth_ = depthTarget(device_, frame, 1, "lit depth");
+    multisampledColor_.reset();
+    multisampledDepth_.reset();
+    if (frame.msaa > 1) {
+        multisampledColor_ = device_.createTexture({.width = frame.width,
+                                                    .height = frame.height,
+                                                    .format = kLitColorFormat,
+                                                    .usage = rhi::TextureUsage::RenderTarget,
+                                                    .samples = frame.msaa,
+                                                    .debugName = "lit image (multisampled)"});
+        multisampledDepth_ = depthTarget(device_, frame, frame.msaa, "lit depth (multisampled)");
+    }
+    const rhi::Attachment litColor{multisampledColor_ ? multisampledColor_.get() : lit_.get(), 0};
+    const rhi::Attachment litDepth{multisampledDepth_ ? multisampledDepth_.get() : depth_.get(), 0};
     const rhi::Attachment cascadeColor{cascades_.get(), 0};
-    litTarget_ = device_.createFramebuffer({.colors = {&litColor, 1}, .depth = {depth_.get(), 0}, .debugName = "lit"});
-    prepassTarget_ = device_.createFramebuffer({.depth = {depth_.get(), 0}, .debugName = "depth prepass"});
+    litTarget_ = device_.createFramebuffer({.colors = {&litColor, 1}, .depth = litDepth, .debugName = "lit"});
+    prepassTarget_ = device_.createFramebuffer({.depth = litDepth, .debugName = "depth prepass"});
     cascadeTarget_ = device_.createFramebuffer(
         {.colors = {&cascadeColor, 1}, .depth = {depth_.get(), 0}, .debugName = "cascade view"});
     const rhi::Attachment visibilityColor{visibility_.get(), 0};
@@ -455,8 +463,9 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 }
 
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
-                                  const rhi::UniformSlice& frameSlice, bool visibility, bool prepassed,
-                                  const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms,
+                                  const LitPipelines& pipelines, const rhi::UniformSlice& frameSlice, bool visibility,
+                                  bool prepassed, const rhi::UniformSlice& shadowUniforms,
+                                  const rhi::UniformSlice& otherShadowUniforms,
                                   const rhi::UniformSlice& staticShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
@@ -470,9 +479,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
         const scene::Object& object = scene.objects[index];
         const scene::Material& material = scene.materialOf(object);
         const bool blend = material.blend && !visibility;
-        const rhi::Pipeline* pipeline = prepassed && !blend
-                                            ? prepassedLitPipelines_[material.doubleSided ? 1 : 0].get()
-                                            : litPipelines_[pipelineIndex(material.doubleSided, blend)].get();
+        const rhi::Pipeline* pipeline = &pipelines.choose(material.doubleSided, blend, prepassed);
         if (pipeline != bound) {
             // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
             commands.bindPipeline(*pipeline);
@@ -525,6 +532,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     shadows::validate(frame.shadows);
     validate(frame.ambient);
     checkPlansFitFrame(plans, frame.shadows);
+    checkMsaa(frame, device_.capabilities());
     const AnisotropyChoice anisotropy = chooseAnisotropy(frame.maxAnisotropy, device_.capabilities());
     const int visibilityLight = frame.visibilityOf ? litLightIndex(*frame.visibilityOf) : -1;
     prepareTargets(frame, plans);
@@ -592,18 +600,24 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
         depthPrepass_->record(commands, *prepassTarget_, gpuScene_, drawOrder_, litFrame, objectSlices_);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 4);
-    recordLitPass(commands, *litTarget_, litFrame, false, frame.depthPrepass, shadowUniforms, otherShadowUniforms,
-                  staticShadowUniforms);
+    const bool multisampled = frame.msaa > 1;
+    recordLitPass(commands, *litTarget_, multisampled ? *multisampledLitPipelines_ : *litPipelines_, litFrame, false,
+                  frame.depthPrepass, shadowUniforms, otherShadowUniforms, staticShadowUniforms);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 5);
-    // The debug views draw without the prepass: they clear the depth the lit pass tested against.
+    if (multisampled)
+        commands.resolveTexture(*multisampledColor_, *lit_);
+    if (timestamps_)
+        commands.writeTimestamp(*timestamps_, 6);
+    // The debug views draw single-sampled without the prepass: they clear the single-sampled depth.
     if (frame.cascadeView)
-        recordLitPass(commands, *cascadeTarget_, uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)),
-                      false, false, shadowUniforms, otherShadowUniforms, staticShadowUniforms);
+        recordLitPass(commands, *cascadeTarget_, *litPipelines_,
+                      uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)), false, false, shadowUniforms,
+                      otherShadowUniforms, staticShadowUniforms);
     if (frame.visibilityOf) {
         LitFrameUniforms u = frameUniforms(camera, frame, LitView::Visibility);
         u.config.w = visibilityLight;
-        recordLitPass(commands, *visibilityTarget_, uniforms_.push(u), true, false, shadowUniforms,
+        recordLitPass(commands, *visibilityTarget_, *litPipelines_, uniforms_.push(u), true, false, shadowUniforms,
                       otherShadowUniforms, staticShadowUniforms);
     }
     device_.submit(commands);
@@ -615,6 +629,8 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
         if (frame.depthPrepass)
             stats.depthPrepassMs = (ns[4] - ns[3]) * 1e-6;
         stats.litPassMs = (ns[5] - ns[4]) * 1e-6;
+        if (multisampled)
+            stats.resolvePassMs = (ns[6] - ns[5]) * 1e-6;
     }
     return stats;
 }

@@ -43,6 +43,8 @@ AttachmentFormats attachmentFormats(const FramebufferDesc& desc)
         formats.colors.push_back(c.texture->desc().format);
     if (desc.depth.texture)
         formats.depth = desc.depth.texture->desc().format;
+    const Texture* any = desc.colors.empty() ? desc.depth.texture : desc.colors.front().texture;
+    formats.samples = any ? any->desc().samples : 1;
     return formats;
 }
 

@@ -6,6 +6,7 @@
 
 #include "penumbra/rhi/Error.hpp"
 
+#include <array>
 #include <cstddef>
 #include <fmt/format.h>
 #include <functional>
@@ -60,6 +61,14 @@ rhi::UniformLayout transformLayout()
             {PENUMBRA_UNIFORM_MEMBER(TransformUniforms, clip), PENUMBRA_UNIFORM_MEMBER(TransformUniforms, tint)}};
 }
 
+// The sample count of the fixture's multisampled textures: the lowest above 1 the device offers for RGBA8 and D32F
+// targets (MultisampleTest checks there is one).
+std::uint32_t multisampleCount(const rhi::Capabilities& caps)
+{
+    const std::array targets{rhi::Format::RGBA8, rhi::Format::D32F};
+    return lowestMultisampleCount(caps, targets);
+}
+
 // What every row starts from: one device's resources for a draw into an 8x8 RGBA8 + D32F target, and a fresh
 // command list.
 struct Objects {
@@ -80,6 +89,11 @@ struct Objects {
         const rhi::Attachment colorAttachment{color.get(), 0};
         target = device.createFramebuffer({.colors = {&colorAttachment, 1}, .depth = {depth.get(), 0}, .debugName = "target"});
         pipeline = device.createPipeline(pipelineDesc());
+        const std::uint32_t samples = multisampleCount(device.capabilities());
+        multisampled = device.createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget, .samples = samples, .debugName = "multisampled"});
+        multisampledDepth = device.createTexture({.width = 8, .height = 8, .format = rhi::Format::D32F, .usage = rhi::TextureUsage::RenderTarget, .samples = samples, .debugName = "multisampled depth"});
+        const rhi::Attachment multisampledAttachment{multisampled.get(), 0};
+        multisampledTarget = device.createFramebuffer({.colors = {&multisampledAttachment, 1}, .depth = {multisampledDepth.get(), 0}, .debugName = "multisampled target"});
     }
 
     rhi::PipelineDesc pipelineDesc() const
@@ -112,9 +126,10 @@ struct Objects {
     rhi::Device& device;
     std::unique_ptr<rhi::Buffer> vertices, indices, uniforms, readback;
     std::unique_ptr<rhi::Texture> color, depth, image, small;
+    std::unique_ptr<rhi::Texture> multisampled, multisampledDepth; // 8x8 RGBA8 and D32F, multisampleCount samples
     std::unique_ptr<rhi::Sampler> sampler;
     std::unique_ptr<rhi::Shader> vertex, fragment, otherShader;
-    std::unique_ptr<rhi::Framebuffer> target;
+    std::unique_ptr<rhi::Framebuffer> target, multisampledTarget;
     std::unique_ptr<rhi::Pipeline> pipeline, otherPipeline; // otherPipeline: a row's own
     std::unique_ptr<rhi::CommandList> list; // last: it goes first, before what it names
 };
@@ -294,6 +309,102 @@ const std::vector<Rule>& rules()
          text("pipeline 'bad': the C++ layout of uniform block 'Missing' matches no block of misuse.vert or misuse.frag")},
         {"timestamp queries count at least one", nothing, [](Objects& o) { o.device.createTimestampQueries(0); },
          E::Error, text("createTimestampQueries: count must be at least 1")},
+        // Multisampling.
+        {"sample counts are 1, 2, 4 or 8", nothing,
+         [](Objects& o) { o.device.createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget, .samples = 3, .debugName = "bad"}); },
+         E::Error, text("texture 'bad': samples 3 is not 1, 2, 4 or 8")},
+        {"multisampled textures are render targets only", nothing,
+         [](Objects& o) {
+             o.device.createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled, .samples = multisampleCount(o.device.capabilities()), .debugName = "bad"});
+         },
+         E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("texture 'bad': a multisampled texture ({} samples) is a RenderTarget and not Sampled "
+                                "(resolveTexture makes a texture to sample)",
+                                multisampleCount(c));
+         }},
+        {"multisampled textures have one layer and one level", nothing,
+         [](Objects& o) {
+             o.device.createTexture({.width = 8, .height = 8, .layers = 2, .usage = rhi::TextureUsage::RenderTarget, .samples = multisampleCount(o.device.capabilities()), .debugName = "bad"});
+         },
+         E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("texture 'bad': a multisampled texture ({} samples) has one layer and one mip level, "
+                                "not 2 layers and 1 levels",
+                                multisampleCount(c));
+         }},
+        {"framebuffer attachments share one sample count", nothing,
+         [](Objects& o) {
+             const rhi::Attachment a = attach(o.multisampled);
+             o.device.createFramebuffer({.colors = {&a, 1}, .depth = attach(o.depth), .debugName = "bad"});
+         },
+         E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("framebuffer 'bad': texture 'depth' has 1 sample(s) but 'multisampled' has {}",
+                                multisampleCount(c));
+         }},
+        {"pipeline sample counts are 1, 2, 4 or 8", nothing,
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.samples = 5;
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad': samples 5 is not 1, 2, 4 or 8")},
+        {"a pipeline draws with its framebuffer's sample count",
+         [](Objects& o) {
+             o.list->beginPass({.framebuffer = o.multisampledTarget.get()});
+             o.list->bindPipeline(*o.pipeline);
+             o.list->bindVertexBuffer(0, *o.vertices);
+             o.list->bindUniformBuffer(0, *o.uniforms, 0, sizeof(TransformUniforms));
+             o.list->bindTexture(1, *o.image, *o.sampler);
+         },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("draw: pipeline 'bad' draws with 1 sample(s), but the pass's framebuffer has {}",
+                                multisampleCount(c));
+         }},
+        {"resolve reads a multisampled texture", nothing,
+         [](Objects& o) { o.list->resolveTexture(*o.color, *o.small); }, E::Error,
+         text("resolveTexture: source 'color' is not multisampled")},
+        {"resolve reads colour", nothing,
+         [](Objects& o) { o.list->resolveTexture(*o.multisampledDepth, *o.depth); }, E::Error,
+         text("resolveTexture: source 'multisampled depth' is D32F; only colour textures are resolved")},
+        {"resolve writes a single-sampled texture", nothing,
+         [](Objects& o) { o.list->resolveTexture(*o.multisampled, *o.multisampled); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("resolveTexture: destination 'multisampled' is multisampled ({} samples)",
+                                multisampleCount(c));
+         }},
+        {"resolve writes a render target", nothing,
+         [](Objects& o) { o.list->resolveTexture(*o.multisampled, *o.image); }, E::Error,
+         text("resolveTexture: destination 'image' must be a RenderTarget texture of one layer")},
+        {"resolve keeps size and format", nothing,
+         [](Objects& o) { o.list->resolveTexture(*o.multisampled, *o.small); }, E::Error,
+         text("resolveTexture: 'multisampled' is 8x8 RGBA8 but 'small' is 4x4 RGBA8")},
+        {"resolve is outside passes", [](Objects& o) { o.beginPass(); },
+         [](Objects& o) { o.list->resolveTexture(*o.multisampled, *o.color); }, E::Error,
+         text("resolveTexture: not allowed inside a pass; call endPass() first")},
+        {"multisampled textures are not read back", nothing,
+         [](Objects& o) { o.list->copyTextureToBuffer(*o.multisampled, 0, 0, *o.readback); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("copyTextureToBuffer: texture 'multisampled' is multisampled ({} samples); "
+                                "resolveTexture gives a single-sampled texture",
+                                multisampleCount(c));
+         }},
+        {"multisampled textures are not uploaded", nothing,
+         [](Objects& o) { o.device.writeTexture(*o.multisampled, 0, 0, std::vector<std::byte>(256)); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("writeTexture: texture 'multisampled' is multisampled ({} samples); resolveTexture "
+                                "gives a single-sampled texture",
+                                multisampleCount(c));
+         }},
+        {"multisampled textures are not copied", nothing,
+         [](Objects& o) { o.list->copyTexture(*o.multisampled, 0, *o.color, 0); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("copyTexture source: texture 'multisampled' is multisampled ({} samples); "
+                                "resolveTexture gives a single-sampled texture",
+                                multisampleCount(c));
+         }},
         // Uploads and CPU access.
         {"an upload is one whole level", nothing,
          [](Objects& o) {

@@ -10,6 +10,17 @@
 
 namespace penumbra::testing {
 
+// A frame of the default settings with the given size, depth prepass and MSAA sample count.
+inline render::FrameDesc litFrame(std::uint32_t width, std::uint32_t height, bool prepass, std::uint32_t msaa)
+{
+    render::FrameDesc frame;
+    frame.width = width;
+    frame.height = height;
+    frame.depthPrepass = prepass;
+    frame.msaa = msaa;
+    return frame;
+}
+
 // The scene's lit image from its own camera, read back.
 inline rhi::Image renderLit(rhi::Device& device, const scene::Scene& scene, const render::FrameDesc& frame)
 {

@@ -102,6 +102,15 @@ float luminance(const rhi::Image& image, std::uint32_t x, std::uint32_t y)
 
 std::string describe(Rgba c) { return fmt::format("rgba({}, {}, {}, {})", c[0], c[1], c[2], c[3]); }
 
+std::uint32_t lowestMultisampleCount(const rhi::Capabilities& caps, std::span<const rhi::Format> targets)
+{
+    const std::uint32_t offered = caps.sampleCounts(targets);
+    for (std::uint32_t count = 2; count <= 8; count *= 2)
+        if (offered & count)
+            return count;
+    return 0;
+}
+
 std::string savePicture(const rhi::Image& image, const std::string& name)
 {
     const char* root = std::getenv("PENUMBRA_TEST_OUTPUT");

@@ -9,6 +9,7 @@
 #include <functional>
 #include <gtest/gtest.h>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,10 @@ Rgba pixel(const rhi::Image& image, std::uint32_t x, std::uint32_t y);
 // Rec. 709 luma of an RGBA8 pixel's stored (sRGB-encoded) values, 0..255.
 float luminance(const rhi::Image& image, std::uint32_t x, std::uint32_t y);
 std::string describe(Rgba c);
+
+// The lowest sample count above 1 that the device offers for every one of `targets` (Capabilities::sampleCounts);
+// 0 where it offers none.
+std::uint32_t lowestMultisampleCount(const rhi::Capabilities& caps, std::span<const rhi::Format> targets);
 
 // Writes the picture under $PENUMBRA_TEST_OUTPUT (or ./test-output) and returns its path, for failure messages.
 std::string savePicture(const rhi::Image& image, const std::string& name);

@@ -146,6 +146,23 @@ public:
         std::memcpy(c.dst->mapped() + c.dstOffset, scratch_.data(), scratch_.size());
     }
 
+    // A blit from a multisampled read framebuffer averages each pixel's samples (GL 4.5 section 18.3.1); it obeys the
+    // scissor test, so that goes off first. The attachments are detached after, so no framebuffer keeps a texture.
+    void operator()(const command::ResolveTexture& c)
+    {
+        const auto width = GLint(c.src->desc().width);
+        const auto height = GLint(c.src->desc().height);
+        gl_.NamedFramebufferTexture(r_.resolveRead, GL_COLOR_ATTACHMENT0, c.src->name(), 0);
+        gl_.NamedFramebufferReadBuffer(r_.resolveRead, GL_COLOR_ATTACHMENT0);
+        gl_.NamedFramebufferTexture(r_.resolveDraw, GL_COLOR_ATTACHMENT0, c.dst->name(), 0);
+        gl_.NamedFramebufferDrawBuffer(r_.resolveDraw, GL_COLOR_ATTACHMENT0);
+        cache_.enable(GlStateCache::Cap::ScissorTest, false);
+        gl_.BlitNamedFramebuffer(r_.resolveRead, r_.resolveDraw, 0, 0, width, height, 0, 0, width, height,
+                                 GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        gl_.NamedFramebufferTexture(r_.resolveRead, GL_COLOR_ATTACHMENT0, 0, 0);
+        gl_.NamedFramebufferTexture(r_.resolveDraw, GL_COLOR_ATTACHMENT0, 0, 0);
+    }
+
     void operator()(const command::WriteTimestamp& c) { c.queries->write(c.index); }
 
 private:
@@ -282,6 +299,12 @@ void GlCommandList::apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_
 {
     commands_.push_back(command::CopyTextureToBuffer{&glObject<const GlTexture>(src, "copy source"), layer, level,
                                                      &glObject<GlBuffer>(dst, "copy destination"), dstOffset});
+}
+
+void GlCommandList::apiResolveTexture(const rhi::Texture& src, rhi::Texture& dst)
+{
+    commands_.push_back(command::ResolveTexture{&glObject<const GlTexture>(src, "resolve source"),
+                                                &glObject<GlTexture>(dst, "resolve destination")});
 }
 
 void GlCommandList::apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index)

@@ -81,6 +81,10 @@ struct CopyTextureToBuffer {
     const GlBuffer* dst;
     std::uint64_t dstOffset;
 };
+struct ResolveTexture {
+    const GlTexture* src;
+    const GlTexture* dst;
+};
 struct WriteTimestamp {
     GlTimestampQueries* queries;
     std::uint32_t index;
@@ -88,7 +92,7 @@ struct WriteTimestamp {
 
 using Any = std::variant<BeginPass, EndPass, SetViewport, SetScissor, SetDepthBias, BindPipeline, BindVertexBuffer,
                          BindIndexBuffer, BindUniformBuffer, BindTexture, Draw, DrawIndexed, CopyBuffer, CopyTexture,
-                         CopyTextureToBuffer, WriteTimestamp>;
+                         CopyTextureToBuffer, ResolveTexture, WriteTimestamp>;
 } // namespace command
 
 // What replaying needs from the device.
@@ -98,6 +102,7 @@ struct GlReplayContext {
     const GlOrientation& orientation;
     float clearDepth;
     std::uint64_t generation; // distinguishes submits for the per-VAO caches
+    GLuint resolveRead, resolveDraw; // framebuffers for ResolveTexture
 };
 
 // Records into a vector and replays at submit, so buffer writes made before submit are seen
@@ -136,6 +141,7 @@ private:
                      std::uint32_t dstLayer) override;
     void apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level, rhi::Buffer& dst,
                              std::uint64_t dstOffset) override;
+    void apiResolveTexture(const rhi::Texture& src, rhi::Texture& dst) override;
     void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
 
     const rhi::Device& device_;

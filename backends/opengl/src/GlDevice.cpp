@@ -51,6 +51,8 @@ GlDevice::GlDevice(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& optio
     capabilities_ = queryCapabilities();
     cache_.emplace(gl, std::uint32_t(integer(gl, GL_MAX_UNIFORM_BUFFER_BINDINGS)),
                    std::uint32_t(integer(gl, GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS)));
+    resolveRead_ = createName<GlFramebufferName>(*context_, gl.CreateFramebuffers);
+    resolveDraw_ = createName<GlFramebufferName>(*context_, gl.CreateFramebuffers);
 }
 
 GlDevice::~GlDevice() = default;
@@ -92,9 +94,30 @@ rhi::FormatSupport GlDevice::formatSupport(rhi::Format format) const
     };
     if (query(GL_INTERNALFORMAT_SUPPORTED) != GL_TRUE)
         return {};
-    return {.sampled = query(GL_FRAGMENT_TEXTURE) == GL_FULL_SUPPORT,
-            .linearFilter = query(GL_FILTER) == GL_FULL_SUPPORT,
-            .renderTarget = query(GL_FRAMEBUFFER_RENDERABLE) == GL_FULL_SUPPORT};
+    rhi::FormatSupport support{.sampled = query(GL_FRAGMENT_TEXTURE) == GL_FULL_SUPPORT,
+                               .linearFilter = query(GL_FILTER) == GL_FULL_SUPPORT,
+                               .renderTarget = query(GL_FRAMEBUFFER_RENDERABLE) == GL_FULL_SUPPORT};
+    if (support.renderTarget)
+        support.sampleCounts = 1 | multisampleCounts(internalFormat);
+    return support;
+}
+
+// The sample counts of GL_TEXTURE_2D_MULTISAMPLE in this format (GL 4.5 section 22.3, GL_NUM_SAMPLE_COUNTS and
+// GL_SAMPLES), as a mask of the counts 2, 4 and 8.
+std::uint32_t GlDevice::multisampleCounts(GLenum internalFormat) const
+{
+    const GlFunctions& gl = context_->gl();
+    GLint count = 0;
+    gl.GetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, internalFormat, GL_NUM_SAMPLE_COUNTS, 1, &count);
+    std::vector<GLint> samples(std::size_t(std::max(count, 0)));
+    if (!samples.empty())
+        gl.GetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, internalFormat, GL_SAMPLES, GLsizei(samples.size()),
+                               samples.data());
+    std::uint32_t mask = 0;
+    for (GLint n : samples)
+        if (n == 2 || n == 4 || n == 8)
+            mask |= std::uint32_t(n);
+    return mask;
 }
 
 std::unique_ptr<rhi::Buffer> GlDevice::apiCreateBuffer(const rhi::BufferDesc& desc)
@@ -180,6 +203,7 @@ void GlDevice::applySubmitDefaults()
     gl.Disable(GL_DITHER);             // Vulkan does not dither; keep RGBA8 results identical
     gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // Vulkan filters across cube faces always
     gl.Enable(GL_FRAMEBUFFER_SRGB);          // Vulkan encodes writes to sRGB attachments always
+    gl.Enable(GL_MULTISAMPLE);               // multisampled framebuffers rasterize per sample, as in Vulkan
     gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
     cache_->frontFace(orientation_.frontFace());
@@ -190,7 +214,8 @@ void GlDevice::apiSubmit(rhi::CommandList& commands)
     auto& list = glObject<GlCommandList>(commands, "submitted command list");
     context_->makeCurrent();
     applySubmitDefaults();
-    list.replay({context_->gl(), *cache_, orientation_, conventions_.clearDepth(), ++submitCount_});
+    list.replay({context_->gl(), *cache_, orientation_, conventions_.clearDepth(), ++submitCount_, resolveRead_.get(),
+                 resolveDraw_.get()});
     context_->gl().Finish();
     if (desc_.throwOnDebugMessage)
         context_->debugLog().raiseUnreported("OpenGL debug output");

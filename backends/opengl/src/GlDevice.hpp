@@ -1,6 +1,7 @@
 #pragma once
 
 #include "GlContext.hpp"
+#include "GlHandle.hpp"
 #include "GlOrientation.hpp"
 #include "GlStateCache.hpp"
 #include "penumbra/opengl/OpenGLDevice.hpp"
@@ -43,6 +44,7 @@ private:
 
     rhi::Capabilities queryCapabilities() const;
     rhi::FormatSupport formatSupport(rhi::Format format) const;
+    std::uint32_t multisampleCounts(GLenum internalFormat) const;
     // State that every submit assumes; set again each time because raw GL may run between submits.
     void applySubmitDefaults();
 
@@ -52,6 +54,8 @@ private:
     rhi::Conventions conventions_;
     rhi::Capabilities capabilities_;
     std::optional<GlStateCache> cache_;
+    // resolveTexture's read and draw framebuffers, the source and destination attached for each blit.
+    GlFramebufferName resolveRead_, resolveDraw_;
     std::uint64_t submitCount_ = 0;
 };
 

@@ -29,6 +29,8 @@ void attach(const GlFunctions& gl, GLuint framebuffer, GLenum attachment, const 
 
 GLenum textureTarget(const rhi::TextureDesc& desc)
 {
+    if (desc.samples > 1)
+        return GL_TEXTURE_2D_MULTISAMPLE;
     if (desc.cube)
         return GL_TEXTURE_CUBE_MAP_ARRAY;
     return desc.array || desc.layers > 1 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D;
@@ -79,6 +81,13 @@ GlTexture::GlTexture(GlContextPtr context, const rhi::TextureDesc& desc) : conte
     gl.CreateTextures(target_, 1, &texture);
     name_ = GlTextureName(*context_, texture);
     const auto levels = GLsizei(desc.mipLevels);
+    if (target_ == GL_TEXTURE_2D_MULTISAMPLE) {
+        // Fixed sample locations: the same pattern in every pixel, as Vulkan's standard locations are.
+        gl.TextureStorage2DMultisample(name_.get(), GLsizei(desc.samples), format.internalFormat, GLsizei(desc.width),
+                                       GLsizei(desc.height), GL_TRUE);
+        label(gl, GL_TEXTURE, name_.get(), desc.debugName);
+        return; // a multisampled texture has no sampler state (GL 4.5 section 8.10, INVALID_ENUM)
+    }
     if (isArray())
         gl.TextureStorage3D(name_.get(), levels, format.internalFormat, GLsizei(desc.width), GLsizei(desc.height),
                             GLsizei(desc.layers));

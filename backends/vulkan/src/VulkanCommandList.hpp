@@ -45,6 +45,7 @@ private:
                      std::uint32_t dstLayer) override;
     void apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level, rhi::Buffer& dst,
                              std::uint64_t dstOffset) override;
+    void apiResolveTexture(const rhi::Texture& src, rhi::Texture& dst) override;
     void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
 
     void begin();

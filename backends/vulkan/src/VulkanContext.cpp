@@ -76,9 +76,33 @@ rhi::FormatSupport Context::formatSupport(rhi::Format format) const
     const VkFormatFeatureFlags transfer = VK_FORMAT_FEATURE_TRANSFER_SRC_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
     const VkFormatFeatureFlags attachment = rhi::isDepthFormat(format) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT
                                                                       : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
-    return {.sampled = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | transfer),
-            .linearFilter = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT),
-            .renderTarget = all(attachment | transfer)};
+    rhi::FormatSupport support{.sampled = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | transfer),
+                               .linearFilter = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT),
+                               .renderTarget = all(attachment | transfer)};
+    if (support.renderTarget)
+        support.sampleCounts = renderTargetSampleCounts(format);
+    return support;
+}
+
+// The image's own sample counts (Vulkan 1.3 section 12.3, vkGetPhysicalDeviceImageFormatProperties) within the
+// framebuffer limit of its aspect (section 42.1, framebufferColorSampleCounts, framebufferDepthSampleCounts),
+// at most 8.
+std::uint32_t Context::renderTargetSampleCounts(rhi::Format format) const
+{
+    const bool depth = rhi::isDepthFormat(format);
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                    (depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
+                                           : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+    VkImageFormatProperties image{};
+    if (vkGetPhysicalDeviceImageFormatProperties(physicalDevice, toVkFormat(format), VK_IMAGE_TYPE_2D,
+                                                 VK_IMAGE_TILING_OPTIMAL, usage, 0, &image) != VK_SUCCESS)
+        return VK_SAMPLE_COUNT_1_BIT;
+    const VkPhysicalDeviceLimits& limits = properties.limits;
+    const VkSampleCountFlags framebuffer = depth ? limits.framebufferDepthSampleCounts
+                                                 : limits.framebufferColorSampleCounts;
+    const VkSampleCountFlags upToEight =
+        VK_SAMPLE_COUNT_1_BIT | VK_SAMPLE_COUNT_2_BIT | VK_SAMPLE_COUNT_4_BIT | VK_SAMPLE_COUNT_8_BIT;
+    return std::uint32_t(image.sampleCounts & framebuffer & upToEight) | VK_SAMPLE_COUNT_1_BIT;
 }
 
 bool Context::hasDeviceExtension(const char* name) const

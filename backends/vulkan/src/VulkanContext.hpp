@@ -61,6 +61,7 @@ private:
     void createDevice();
     void fillCapabilities();
     rhi::FormatSupport formatSupport(rhi::Format format) const;
+    std::uint32_t renderTargetSampleCounts(rhi::Format format) const;
 
     PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
     std::mutex queueMutex_;

@@ -1,4 +1,4 @@
-// The copy commands of VulkanCommandList.
+// The copy and resolve commands of VulkanCommandList.
 
 #include "VulkanCheck.hpp"
 #include "VulkanCommandList.hpp"
@@ -61,6 +61,24 @@ void VulkanCommandList::apiCopyTextureToBuffer(const rhi::Texture& src, std::uin
     vkCmdCopyImageToBuffer(commands_, from.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.handle(), 1, &region);
     from.transition(commands_, layer, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, from.restingLayout());
     fullBarrier(commands_);
+}
+
+void VulkanCommandList::apiResolveTexture(const rhi::Texture& src, rhi::Texture& dst)
+{
+    const auto& from = vulkanObject<const VulkanTexture>(src, "resolveTexture: the source");
+    const auto& to = vulkanObject<const VulkanTexture>(dst, "resolveTexture: the destination");
+    const rhi::TextureDesc& desc = from.desc();
+
+    from.transition(commands_, 0, from.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    to.transition(commands_, 0, to.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    VkImageResolve region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.extent = {desc.width, desc.height, 1};
+    vkCmdResolveImage(commands_, from.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.image(),
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    from.transition(commands_, 0, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, from.restingLayout());
+    to.transition(commands_, 0, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, to.restingLayout());
 }
 
 } // namespace penumbra::vulkan

@@ -39,10 +39,12 @@ void checkUniformCount(const VkPhysicalDeviceLimits& limits, const rhi::Pipeline
 RenderPassKey compatibleRenderPass(const rhi::PipelineDesc& desc)
 {
     RenderPassKey key;
+    const auto samples = VkSampleCountFlagBits(desc.samples);
     for (const rhi::ColorTarget& c : desc.colorTargets)
-        key.colors.push_back({toVkFormat(c.format), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false});
+        key.colors.push_back({toVkFormat(c.format), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false, samples});
     if (desc.depthFormat)
-        key.depth = AttachmentKey{toVkFormat(*desc.depthFormat), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, false};
+        key.depth = AttachmentKey{toVkFormat(*desc.depthFormat), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, false,
+                                  samples};
     return key;
 }
 
@@ -158,7 +160,7 @@ VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::Pipe
     raster.lineWidth = 1.0f;
 
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    multisample.rasterizationSamples = VkSampleCountFlagBits(desc.samples); // the RHI's counts are the flag bits
 
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = desc.depth.test;

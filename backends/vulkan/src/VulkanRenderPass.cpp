@@ -15,7 +15,8 @@ std::vector<std::uint32_t> flatten(const RenderPassKey& key)
 {
     std::vector<std::uint32_t> flat;
     auto add = [&](const AttachmentKey& a) {
-        flat.insert(flat.end(), {std::uint32_t(a.format), std::uint32_t(a.restingLayout), std::uint32_t(a.load)});
+        flat.insert(flat.end(), {std::uint32_t(a.format), std::uint32_t(a.restingLayout), std::uint32_t(a.load),
+                                 std::uint32_t(a.samples)});
     };
     for (const AttachmentKey& c : key.colors)
         add(c);
@@ -29,7 +30,7 @@ VkAttachmentDescription describe(const AttachmentKey& a)
 {
     VkAttachmentDescription d{};
     d.format = a.format;
-    d.samples = VK_SAMPLE_COUNT_1_BIT;
+    d.samples = a.samples;
     d.loadOp = a.load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
     d.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     d.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
@@ -46,7 +47,8 @@ AttachmentKey attachmentKey(const rhi::Attachment& attachment)
     if (!texture)
         throw rhi::Error(fmt::format("framebuffer: texture '{}' was not created by a Vulkan device",
                                      attachment.texture->desc().debugName));
-    return {texture->format(), texture->restingLayout(), false};
+    return {texture->format(), texture->restingLayout(), false,
+            VkSampleCountFlagBits(texture->desc().samples)};
 }
 
 } // namespace

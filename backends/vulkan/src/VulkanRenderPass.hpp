@@ -18,6 +18,7 @@ struct AttachmentKey {
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkImageLayout restingLayout = VK_IMAGE_LAYOUT_UNDEFINED; // initial (when loading) and final layout
     bool load = false;                                        // keep contents instead of clearing
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 };
 
 struct RenderPassKey {

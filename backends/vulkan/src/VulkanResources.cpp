@@ -119,7 +119,7 @@ VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::Textur
     info.extent = {desc.width, desc.height, 1};
     info.mipLevels = desc.mipLevels;
     info.arrayLayers = desc.layers;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.samples = VkSampleCountFlagBits(desc.samples); // 1, 2, 4, 8: the RHI's counts are the flag bits
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = imageUsage(desc);
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;

@@ -15,8 +15,8 @@ std::uint32_t pipelineIndex(bool doubleSided, bool clip) { return (doubleSided ?
 
 } // namespace
 
-DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat)
-    : vertex_(device.createShader(litShader("depth_prepass.vert"))),
+DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::uint32_t samples)
+    : samples_(samples), vertex_(device.createShader(litShader("depth_prepass.vert"))),
       // Depth only, no discard: early depth testing stays on.
       opaqueFragment_(device.createShader(shaders::load("shadow_caster_opaque.frag"))),
       clipFragment_(device.createShader(litShader("depth_prepass_clip.frag")))
@@ -29,13 +29,15 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat)
         return std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
     });
     desc.depthFormat = depthFormat;
+    desc.samples = samples;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
     for (const bool clip : {false, true})
         for (const bool doubleSided : {false, true}) {
             desc.fragment = clip ? clipFragment_.get() : opaqueFragment_.get();
             desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-            desc.debugName = fmt::format("depth prepass ({}, {})", clip ? "clip" : "opaque",
-                                         doubleSided ? "double-sided" : "culled");
+            desc.debugName = fmt::format("depth prepass ({}, {}{})", clip ? "clip" : "opaque",
+                                         doubleSided ? "double-sided" : "culled",
+                                         samples > 1 ? fmt::format(", {}x MSAA", samples) : std::string());
             pipelines_[pipelineIndex(doubleSided, clip)] = device.createPipeline(desc);
         }
 }

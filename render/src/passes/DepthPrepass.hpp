@@ -16,7 +16,11 @@ namespace penumbra::render {
 // cards overlap it. Blended objects are not drawn: they blend over the opaque depth in the lit pass.
 class DepthPrepass {
 public:
-    DepthPrepass(rhi::Device& device, rhi::Format depthFormat);
+    // `samples`: the depth target's sample count (FrameDesc::msaa); each sample's depth is the one the lit pass
+    // tests against, so the prepass rasterizes with the lit pass's samples.
+    DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::uint32_t samples);
+
+    std::uint32_t samples() const { return samples_; }
 
     // Clears `target` (depth only) and draws `order`'s objects that are not blended; `frame` is the lit pass's
     // Frame block and objects[i] object i's Object block (shaders/lit.glsl).
@@ -25,6 +29,7 @@ public:
                 std::span<const rhi::UniformSlice> objects) const;
 
 private:
+    std::uint32_t samples_;
     std::unique_ptr<rhi::Shader> vertex_, opaqueFragment_, clipFragment_;
     // Culled or not (glTF doubleSided), opaque or clip (pipelineIndex in DepthPrepass.cpp).
     std::array<std::unique_ptr<rhi::Pipeline>, 4> pipelines_;

@@ -74,6 +74,21 @@ void checkPipeline(const Capabilities& caps, const PipelineDesc& desc)
             throw Error(fmt::format("pipeline '{}': attribute at location {} reads vertex buffer slot {}, but the "
                                     "layout describes {} buffer(s)",
                                     desc.debugName, a.location, a.buffer, desc.vertexLayout.buffers.size()));
+    if (desc.samples != 1 && desc.samples != 2 && desc.samples != 4 && desc.samples != 8)
+        throw Error(fmt::format("pipeline '{}': samples {} is not 1, 2, 4 or 8", desc.debugName, desc.samples));
+    std::vector<Format> targets;
+    for (const ColorTarget& c : desc.colorTargets)
+        targets.push_back(c.format);
+    if (desc.depthFormat)
+        targets.push_back(*desc.depthFormat);
+    if ((caps.sampleCounts(targets) & desc.samples) == 0) {
+        std::string formats;
+        for (Format f : targets)
+            formats += (formats.empty() ? "" : ", ") + std::string(formatName(f));
+        throw UnsupportedError(fmt::format("pipeline '{}': {} offers {} samples for {}, not {}", desc.debugName,
+                                           caps.device, sampleCountList(caps.sampleCounts(targets)), formats,
+                                           desc.samples));
+    }
     if (desc.depth.clamp && !caps.depthClamp)
         throw UnsupportedError(fmt::format("pipeline '{}': depth clamp is not supported by {}", desc.debugName,
                                            caps.device));

@@ -15,6 +15,34 @@ bool filtersLinearly(const SamplerDesc& desc)
     return desc.magFilter == Filter::Linear || desc.minFilter == Filter::Linear || desc.mipFilter == MipFilter::Linear;
 }
 
+// What a multisampled texture may be (TextureDesc::samples): a render target of one layer and level, as Vulkan's
+// vkCmdResolveImage and GL's glBlitFramebuffer take it and nothing samples, uploads or reads it back.
+void checkMultisampledTexture(const Capabilities& caps, const TextureDesc& desc)
+{
+    if (desc.samples > 1 && (caps.format(desc.format).sampleCounts & desc.samples) == 0)
+        throw UnsupportedError(fmt::format("texture '{}': {} offers {} samples for {} render targets, not {}",
+                                           desc.debugName, caps.device,
+                                           sampleCountList(caps.format(desc.format).sampleCounts),
+                                           formatName(desc.format), desc.samples));
+    if (desc.usage != TextureUsage::RenderTarget)
+        throw Error(fmt::format("texture '{}': a multisampled texture ({} samples) is a RenderTarget and not Sampled "
+                                "(resolveTexture makes a texture to sample)",
+                                desc.debugName, desc.samples));
+    if (desc.layers != 1 || desc.mipLevels != 1 || desc.cube || desc.array)
+        throw Error(fmt::format("texture '{}': a multisampled texture ({} samples) has one layer and one mip level, "
+                                "not {} layers and {} levels{}",
+                                desc.debugName, desc.samples, desc.layers, desc.mipLevels,
+                                desc.cube ? " of a cube" : (desc.array ? " of an array" : "")));
+}
+
+void refuseMultisampled(std::string_view what, const TextureDesc& desc)
+{
+    if (desc.samples > 1)
+        throw Error(fmt::format("{}: texture '{}' is multisampled ({} samples); resolveTexture gives a single-sampled "
+                                "texture",
+                                what, desc.debugName, desc.samples));
+}
+
 } // namespace
 
 void checkTextureBinding(const Capabilities& caps, const Texture& texture, const Sampler& sampler)
@@ -48,6 +76,10 @@ void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc)
     if (hasFlag(desc.usage, TextureUsage::RenderTarget) && !support.renderTarget)
         throw UnsupportedError(fmt::format("texture '{}': {} cannot render to {}", desc.debugName, caps.device,
                                            formatName(desc.format)));
+    if (desc.samples != 1 && desc.samples != 2 && desc.samples != 4 && desc.samples != 8)
+        throw Error(fmt::format("texture '{}': samples {} is not 1, 2, 4 or 8", desc.debugName, desc.samples));
+    if (desc.samples > 1)
+        checkMultisampledTexture(caps, desc);
     if (!desc.cube)
         return;
     if (!caps.cubeArrays)
@@ -87,6 +119,7 @@ void checkSubresource(std::string_view what, const TextureDesc& desc, std::uint3
 
 void checkTextureUpload(const TextureDesc& desc, std::uint32_t layer, std::uint32_t level, std::uint64_t size)
 {
+    refuseMultisampled("writeTexture", desc);
     checkSubresource("writeTexture", desc, layer, level);
     if (size != levelSize(desc, level))
         throw Error(fmt::format("writeTexture: level {} of '{}' ({}x{} {}) takes {} bytes, got {}", level,
@@ -97,6 +130,7 @@ void checkTextureUpload(const TextureDesc& desc, std::uint32_t layer, std::uint3
 void checkTextureReadback(const TextureDesc& desc, std::uint32_t layer, std::uint32_t level, const BufferDesc& buffer,
                           std::uint64_t offset)
 {
+    refuseMultisampled("copyTextureToBuffer", desc);
     checkSubresource("copyTextureToBuffer", desc, layer, level);
     checkBufferRange("copyTextureToBuffer", buffer, offset, levelSize(desc, level));
     const std::uint32_t alignment = isDepthFormat(desc.format) ? 4 : texelSize(desc.format);
@@ -109,6 +143,8 @@ void checkTextureCopy(const Texture& src, std::uint32_t srcLayer, const Texture&
 {
     const TextureDesc& a = src.desc();
     const TextureDesc& b = dst.desc();
+    refuseMultisampled("copyTexture source", a);
+    refuseMultisampled("copyTexture destination", b);
     checkSubresource("copyTexture source", a, srcLayer, 0);
     checkSubresource("copyTexture destination", b, dstLayer, 0);
     if (a.width != b.width || a.height != b.height || a.format != b.format || a.mipLevels != b.mipLevels)
@@ -137,6 +173,9 @@ void checkFramebuffer(const FramebufferDesc& desc)
             throw Error(fmt::format("framebuffer '{}': texture '{}' is {}x{} but '{}' is {}x{}", desc.debugName,
                                     t.debugName, t.width, t.height, first->desc().debugName, first->desc().width,
                                     first->desc().height));
+        if (first && first->desc().samples != t.samples)
+            throw Error(fmt::format("framebuffer '{}': texture '{}' has {} sample(s) but '{}' has {}", desc.debugName,
+                                    t.debugName, t.samples, first->desc().debugName, first->desc().samples));
         first = first ? first : a.texture;
     };
     for (const Attachment& c : desc.colors) {
@@ -150,6 +189,26 @@ void checkFramebuffer(const FramebufferDesc& desc)
         throw Error(fmt::format("framebuffer '{}' has no attachments", desc.debugName));
 }
 
+void checkTextureResolve(const Texture& src, const Texture& dst)
+{
+    const TextureDesc& a = src.desc();
+    const TextureDesc& b = dst.desc();
+    if (a.samples == 1)
+        throw Error(fmt::format("resolveTexture: source '{}' is not multisampled", a.debugName));
+    if (isDepthFormat(a.format))
+        throw Error(fmt::format("resolveTexture: source '{}' is {}; only colour textures are resolved", a.debugName,
+                                formatName(a.format)));
+    if (b.samples != 1)
+        throw Error(fmt::format("resolveTexture: destination '{}' is multisampled ({} samples)", b.debugName,
+                                b.samples));
+    if (!hasFlag(b.usage, TextureUsage::RenderTarget) || b.layers != 1)
+        throw Error(fmt::format("resolveTexture: destination '{}' must be a RenderTarget texture of one layer",
+                                b.debugName));
+    if (a.width != b.width || a.height != b.height || a.format != b.format)
+        throw Error(fmt::format("resolveTexture: '{}' is {}x{} {} but '{}' is {}x{} {}", a.debugName, a.width,
+                                a.height, formatName(a.format), b.debugName, b.width, b.height,
+                                formatName(b.format)));
+}
 
 void checkBufferRange(std::string_view what, const BufferDesc& buffer, std::uint64_t offset, std::uint64_t size)
 {

@@ -14,7 +14,7 @@ namespace penumbra::rhi {
 // The buffer must have been created with `usage` (named `usageName` in the message).
 void checkBufferUsage(std::string_view what, const BufferDesc& buffer, BufferUsage usage, std::string_view usageName);
 
-// Size, layer count, mip level count, format support and cube rules of a texture description, against the
+// Size, layer count, mip level count, format support, sample count and cube rules of a texture description, against the
 // driver's limits.
 void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc);
 
@@ -32,10 +32,14 @@ void checkTextureReadback(const TextureDesc& desc, std::uint32_t layer, std::uin
 // copyTexture's rules: layers in range, equal size, format and level count, not a layer onto itself.
 void checkTextureCopy(const Texture& src, std::uint32_t srcLayer, const Texture& dst, std::uint32_t dstLayer);
 
+// resolveTexture's rules: a multisampled colour source, a single-sampled single-layer RenderTarget destination
+// of the same size and format.
+void checkTextureResolve(const Texture& src, const Texture& dst);
+
 // The texture must be Sampled; a linear filter is refused on a format the driver cannot filter linearly.
 void checkTextureBinding(const Capabilities& caps, const Texture& texture, const Sampler& sampler);
 
-// A framebuffer's attachments must exist, share one size, be render targets, and have layers in range.
+// A framebuffer's attachments must exist, share one size and sample count, be render targets, and have layers in range.
 void checkFramebuffer(const FramebufferDesc& desc);
 
 // At least one query, on a device with timestamps.

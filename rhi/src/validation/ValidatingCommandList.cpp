@@ -219,6 +219,9 @@ void ValidatingCommandList::checkDraw(std::string_view what)
     if (drawChecked_)
         return;
     const PipelineDesc& desc = pipeline_->desc();
+    if (desc.samples != framebuffer_->formats().samples)
+        throw Error(fmt::format("{}: pipeline '{}' draws with {} sample(s), but the pass's framebuffer has {}", what,
+                                desc.debugName, desc.samples, framebuffer_->formats().samples));
     if (!rendersTo(desc, framebuffer_->formats()))
         throw Error(fmt::format("{}: pipeline '{}' renders to {}, but the pass's framebuffer has {}", what,
                                 desc.debugName, describe(pipelineFormats(desc)), describe(framebuffer_->formats())));
@@ -292,6 +295,15 @@ void ValidatingCommandList::copyTextureToBuffer(const Texture& src, std::uint32_
         checkTextureReadback(src.desc(), layer, level, dst.desc(), dstOffset);
     }
     apiCopyTextureToBuffer(src, layer, level, dst, dstOffset);
+}
+
+void ValidatingCommandList::resolveTexture(const Texture& src, Texture& dst)
+{
+    if (validate_) {
+        requireOutsidePass("resolveTexture");
+        checkTextureResolve(src, dst);
+    }
+    apiResolveTexture(src, dst);
 }
 
 void ValidatingCommandList::writeTimestamp(TimestampQueries& queries, std::uint32_t index)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "penumbra/rhi/Format.hpp"
 #include "penumbra/rhi/Shader.hpp"
 #include "penumbra/rhi/UniformLayout.hpp"
 #include "penumbra/scene/Material.hpp"
@@ -15,6 +16,11 @@ namespace penumbra::render {
 
 inline constexpr std::uint32_t maxLitDirectionalLights = 8;
 inline constexpr std::uint32_t maxLitLocalLights = 16; // spot and point lights together
+
+// The lit pass's colour (SceneRenderer::litImage(), sRGB-encoded by the shader) and depth formats; with
+// FrameDesc::msaa above 1 both are multisampled, so the device must offer that count for both.
+inline constexpr rhi::Format kLitColorFormat = rhi::Format::RGBA8;
+inline constexpr rhi::Format kLitDepthFormat = rhi::Format::D32F;
 
 // What the lit pass writes: the lit image, the lit image tinted by cascade, or one light's raw shadow-map
 // visibility (FrameDesc::visibilityOf).

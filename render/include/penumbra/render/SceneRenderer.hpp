@@ -25,6 +25,7 @@
 namespace penumbra::render {
 
 class DepthPrepass;
+class LitPipelines;
 class StaticShadowCache;
 class StaticTileCache;
 
@@ -44,6 +45,13 @@ struct FrameDesc {
     // Draw opaque and clip geometry depth-only first (render/src/passes/DepthPrepass.hpp): the lit pass then tests
     // depth for equality and shades each visible pixel once instead of once per overlapping surface.
     bool depthPrepass = true;
+    // Samples per pixel of the lit pass and its depth prepass: 1 (off), 2, 4 or 8, a count the device offers for
+    // kLitColorFormat and kLitDepthFormat render targets (rhi::Capabilities::sampleCounts); others throw
+    // rhi::UnsupportedError listing the counts it offers. Above 1 the pass draws into multisampled colour and depth
+    // and resolves the colour into litImage(), so geometry edges are anti-aliased; shading still runs once per pixel,
+    // and alpha-tested edges stay as hard as their discard (no alpha to coverage). The cascade and visibility views
+    // stay single-sampled.
+    std::uint32_t msaa = 1;
 };
 
 struct FrameStats {
@@ -54,6 +62,7 @@ struct FrameStats {
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
     std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
+    std::optional<double> resolvePassMs; // the multisampled lit image into litImage(), where FrameDesc::msaa > 1
     std::optional<double> staticAtlasPassMs;        // the static maps drawn this frame, where the device has timestamps
     // Static shadow maps (ShadowSettings::staticMaps): the static caster draws this frame (into the static maps and,
     // with RealtimeCasters::Dynamic, into the realtime tiles' cached static depth), and which static maps were drawn
@@ -90,7 +99,7 @@ public:
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
     // Throws rhi::Error for settings or ambient light out of range (naming the field; maxAnisotropy below 1 too), a
     // zero-sized frame, plans whose atlases do not match the frame's settings, or a visibility view of a light the lit
-    // pass does not draw.
+    // pass does not draw; rhi::UnsupportedError for an msaa count the device does not offer.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
     const rhi::Texture& litImage() const { return *lit_; }
@@ -133,9 +142,10 @@ private:
     int litLightIndex(const scene::LightRef& light) const;
     // After the depth prepass (`prepassed`) the opaque objects are drawn with an equal depth test into the
     // prepass's depth; otherwise the target's depth is cleared.
-    void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const rhi::UniformSlice& frameSlice,
-                       bool visibility, bool prepassed, const rhi::UniformSlice& shadowUniforms,
-                       const rhi::UniformSlice& otherShadowUniforms, const rhi::UniformSlice& staticShadowUniforms);
+    void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const LitPipelines& pipelines,
+                       const rhi::UniformSlice& frameSlice, bool visibility, bool prepassed,
+                       const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms,
+                       const rhi::UniformSlice& staticShadowUniforms);
 
     rhi::Device& device_;
     GpuScene gpuScene_;
@@ -143,12 +153,13 @@ private:
     shadows::OtherShadowPass otherShadowPass_;
     std::unique_ptr<rhi::Shader> litVertex_;
     std::unique_ptr<rhi::Shader> litFragment_;
-    // Culled or not, opaque or blended (SceneRenderer.cpp, pipelineIndex).
-    std::array<std::unique_ptr<rhi::Pipeline>, 4> litPipelines_;
-    // After the depth prepass: culled or not, opaque (equal depth test, no discard); blended ones are litPipelines_'.
+    // lit.frag for after the depth prepass: an equal depth test and no discard.
     std::unique_ptr<rhi::Shader> prepassedLitFragment_;
-    std::array<std::unique_ptr<rhi::Pipeline>, 2> prepassedLitPipelines_;
-    std::unique_ptr<DepthPrepass> depthPrepass_;
+    // Single-sampled: the lit pass without MSAA and the debug views. Multisampled: the lit pass with FrameDesc::msaa
+    // samples, made when a frame first asks for that count.
+    std::unique_ptr<LitPipelines> litPipelines_;
+    std::unique_ptr<LitPipelines> multisampledLitPipelines_;
+    std::unique_ptr<DepthPrepass> depthPrepass_; // with the lit pass's sample count
     std::unique_ptr<StaticShadowCache> staticShadows_;
     // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.
     std::unique_ptr<StaticTileCache> directionalStaticTiles_;
@@ -167,8 +178,11 @@ private:
     std::unique_ptr<rhi::Texture> lit_;
     std::unique_ptr<rhi::Texture> cascades_;
     std::unique_ptr<rhi::Texture> depth_;
-    std::unique_ptr<rhi::Framebuffer> litTarget_;
-    std::unique_ptr<rhi::Framebuffer> prepassTarget_; // depth_ alone
+    // FrameDesc::msaa > 1: the lit pass's multisampled colour and depth, resolved into lit_.
+    std::unique_ptr<rhi::Texture> multisampledColor_;
+    std::unique_ptr<rhi::Texture> multisampledDepth_;
+    std::unique_ptr<rhi::Framebuffer> litTarget_;     // lit_ and depth_, or the multisampled pair
+    std::unique_ptr<rhi::Framebuffer> prepassTarget_; // litTarget_'s depth alone
     std::unique_ptr<rhi::Framebuffer> cascadeTarget_;
     std::unique_ptr<rhi::Texture> visibility_;
     std::unique_ptr<rhi::Framebuffer> visibilityTarget_;

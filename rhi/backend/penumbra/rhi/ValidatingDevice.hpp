@@ -82,6 +82,7 @@ public:
     void copyTexture(const Texture& src, std::uint32_t srcLayer, Texture& dst, std::uint32_t dstLayer) final;
     void copyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
                              std::uint64_t dstOffset) final;
+    void resolveTexture(const Texture& src, Texture& dst) final;
     void writeTimestamp(TimestampQueries& queries, std::uint32_t index) final;
 
     // Vertex buffer slots bindVertexBuffer takes: 0..maxVertexBuffers - 1.
@@ -111,6 +112,7 @@ protected:
                                 std::uint32_t dstLayer) = 0;
     virtual void apiCopyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
                                         std::uint64_t dstOffset) = 0;
+    virtual void apiResolveTexture(const Texture& src, Texture& dst) = 0;
     virtual void apiWriteTimestamp(TimestampQueries& queries, std::uint32_t index) = 0;
 
 private:

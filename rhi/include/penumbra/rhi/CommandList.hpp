@@ -77,6 +77,11 @@ public:
     virtual void copyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
                                      std::uint64_t dstOffset = 0) = 0;
 
+    // Outside passes: averages the samples of each texel of multisampled colour texture `src` into level 0 of
+    // single-sampled `dst`, a RenderTarget of the same size and format with one layer (Vulkan vkCmdResolveImage;
+    // GL glBlitFramebuffer from a multisampled read framebuffer, GL 4.5 section 18.3.1). Depth is not resolved.
+    virtual void resolveTexture(const Texture& src, Texture& dst) = 0;
+
     // Device::readTimestamps gives the values after submit.
     virtual void writeTimestamp(TimestampQueries& queries, std::uint32_t index) = 0;
 };

@@ -22,7 +22,15 @@ struct FormatSupport {
     bool sampled = false;      // created with TextureUsage::Sampled (and, like every texture, uploaded and copied)
     bool linearFilter = false; // sampled with a linear mag, min or mip filter
     bool renderTarget = false; // a colour or depth attachment, by format
+    // Sample counts of a render target of this format (TextureDesc::samples), one bit each with the count's value
+    // (1 | 2 | 4 | 8, Vulkan's VkSampleCountFlags): 1 where renderTarget, more as the driver reports them (Vulkan:
+    // the image format's sampleCounts within framebufferColorSampleCounts or framebufferDepthSampleCounts; GL:
+    // GL_SAMPLES of GL_TEXTURE_2D_MULTISAMPLE, ARB_internalformat_query2). Counts above 8 are not offered.
+    std::uint32_t sampleCounts = 0;
 };
+
+// The counts 1, 2, 4 and 8 that a sampleCounts mask holds, ascending ("1, 4").
+std::string sampleCountList(std::uint32_t sampleCounts);
 
 // What the driver really offers; nothing here is faked or emulated.
 struct Capabilities {
@@ -48,6 +56,9 @@ struct Capabilities {
 
     const FormatSupport& format(Format f) const { return formats[static_cast<std::size_t>(f)]; }
     bool supportsLinearFilter(Format f) const { return format(f).linearFilter; }
+    // The sample counts offered for every one of `targets` (their sampleCounts masks intersected): what a
+    // framebuffer of those formats can use.
+    std::uint32_t sampleCounts(std::span<const Format> targets) const;
 };
 
 class Device {

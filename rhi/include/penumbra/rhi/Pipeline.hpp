@@ -80,8 +80,8 @@ struct ColorTarget {
     BlendState blend;
 };
 
-// A pipeline renders into framebuffers whose attachment formats match colorTargets and depthFormat
-// (checked at each draw). A depth-only pass has no colour targets; at most 8 colour targets. Every attribute
+// A pipeline renders into framebuffers whose attachment formats match colorTargets and depthFormat and whose
+// sample count is `samples` (checked at each draw). A depth-only pass has no colour targets; at most 8 colour targets. Every attribute
 // reads a vertex buffer slot the layout describes, and every draw needs those slots bound.
 // uniformLayouts describe the C++ structs uploaded into uniform blocks: at creation each is compared with the
 // std140 layout the shaders' reflection gives the block of that name (size, member names, offsets, sizes).
@@ -94,6 +94,10 @@ struct PipelineDesc {
     DepthState depth;
     std::vector<ColorTarget> colorTargets;
     std::optional<Format> depthFormat;
+    // Rasterization samples: the framebuffer's TextureDesc::samples, one the device offers for every target
+    // format (Capabilities::sampleCounts). The fragment shader runs once per pixel and its output goes to the
+    // samples the primitive covers (multisampling, Vulkan 1.3 section 28.4; GL 4.5 section 14.3.1).
+    std::uint32_t samples = 1;
     std::vector<UniformLayout> uniformLayouts;
     std::string debugName;
 };

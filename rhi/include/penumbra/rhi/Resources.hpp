@@ -87,6 +87,11 @@ struct TextureDesc {
     std::uint32_t mipLevels = 1;
     Format format = Format::RGBA8;
     TextureUsage usage = TextureUsage::Sampled;
+    // Samples per texel: 1, or a multisampled render target of 2, 4 or 8 samples where the device offers that count
+    // for the format (FormatSupport::sampleCounts). A multisampled texture is a RenderTarget and nothing else: one
+    // layer, one mip level, not sampled, uploaded, copied or read back; CommandList::resolveTexture averages it into
+    // a single-sampled texture.
+    std::uint32_t samples = 1;
     std::string debugName;
 };
 
@@ -134,17 +139,19 @@ struct Attachment {
     std::uint32_t layer = 0;
 };
 
+// The attachments share one size and one sample count (TextureDesc::samples).
 struct FramebufferDesc {
     std::span<const Attachment> colors;
     Attachment depth;
     std::string debugName;
 };
 
-// The formats of a framebuffer's attachments, in order; a pipeline draws into a pass whose framebuffer has
-// exactly its PipelineDesc::colorTargets formats and depthFormat.
+// The formats of a framebuffer's attachments, in order, and their sample count; a pipeline draws into a pass whose
+// framebuffer has exactly its PipelineDesc::colorTargets formats, depthFormat and samples.
 struct AttachmentFormats {
     std::vector<Format> colors;
     std::optional<Format> depth;
+    std::uint32_t samples = 1;
 
     bool operator==(const AttachmentFormats&) const = default;
 };

@@ -106,6 +106,7 @@ namespace penumbra::opengl {
     X(ShaderSource, SHADERSOURCE)                                                                                      \
     X(TextureParameteri, TEXTUREPARAMETERI)                                                                            \
     X(TextureStorage2D, TEXTURESTORAGE2D)                                                                              \
+    X(TextureStorage2DMultisample, TEXTURESTORAGE2DMULTISAMPLE)                                                        \
     X(TextureStorage3D, TEXTURESTORAGE3D)                                                                              \
     X(TextureSubImage2D, TEXTURESUBIMAGE2D)                                                                            \
     X(TextureSubImage3D, TEXTURESUBIMAGE3D)                                                                            \
