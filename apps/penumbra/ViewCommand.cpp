@@ -78,6 +78,10 @@ void addViewCommand(CLI::App& app)
                      "Every light's source size: degrees of angular diameter (directional), world units of radius "
                      "(spot, point)")
         ->check(CLI::NonNegativeNumber);
+    view->add_option("--baked", options->baked,
+                     "Static shadow maps from this `penumbra bake` folder; the viewer stops with the bake's message when "
+                     "the scene, a light or the static settings no longer match it")
+        ->check(CLI::ExistingDirectory);
     view->callback([options] { viewer::runViewer(*options); });
 }
 

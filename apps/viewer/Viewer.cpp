@@ -55,6 +55,10 @@ public:
         applied_.maxAnisotropy = options.maxAnisotropy;
         if (options.projection)
             applied_.shadows.directional.projection = *options.projection;
+        if (!options.baked.empty()) {
+            renderer_.useBakedShadows(shadows::readStaticShadowBake(options.baked));
+            applied_.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+        }
         applied_.msaa = options.msaa;
         const std::array litTargets{render::kLitColorFormat, render::kLitDepthFormat};
         status_.msaaCounts = device_->capabilities().sampleCounts(litTargets);

@@ -24,6 +24,7 @@ struct ViewerOptions {
     std::string filter;             // every light's shadow filter (apps::applyLightOverrides); empty: their own
     std::optional<float> lightSize; // every light's source size
     std::optional<shadows::CascadeProjection> projection; // the directional cascades'; nullopt: the settings'
+    std::string baked; // a `penumbra bake` folder: static maps from it (static.update onChange); empty: none
 };
 
 // Opens the window and runs the viewer. Throws rhi::Error when there is no display, no driver,
