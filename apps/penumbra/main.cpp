@@ -1,5 +1,6 @@
 // penumbra: the command-line tool. Every subcommand runs on any configuration by name.
 #include "Commands.hpp"
+#include "Interrupt.hpp"
 #include "ToolDevices.hpp"
 #include "ViewCommand.hpp"
 
@@ -40,6 +41,9 @@ int main(int argc, char** argv)
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
+    } catch (const penumbra::apps::Interrupted& e) {
+        fmt::print(stderr, "\npenumbra: {}\n", e.what());
+        return 128 + e.signal();
     } catch (const penumbra::rhi::Error& e) {
         return reportError(e);
     } catch (const penumbra::scene::SceneError& e) {
