@@ -116,6 +116,14 @@ bool directionalShadowReaches(int slot, CascadeSelection s)
     return slot >= 0 && s.strength > 0.0;
 }
 
+// The realtime shadow with the distance and cascade fades, before the light's strength (1 = lit; 1 without a slot).
+float directionalRealtimeShadow(int slot, CascadeSelection s, vec3 position, vec3 normal, vec3 towardsLight)
+{
+    if (!directionalShadowReaches(slot, s))
+        return 1.0;
+    return mix(1.0, directionalShadowVisibility(slot, s, position, normal, towardsLight), s.strength);
+}
+
 // 1 = fully lit. `slot` is the light's shadow slot, -1 for a light without shadows.
 float directionalShadowAttenuation(int slot, CascadeSelection s, vec3 position, vec3 normal, vec3 towardsLight)
 {

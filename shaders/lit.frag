@@ -9,6 +9,7 @@
 #include "soft_shadows.glsl"
 #include "directional_shadows.glsl"
 #include "other_shadows.glsl"
+#include "static_shadows.glsl"
 #include "lit.glsl"
 #include "material.glsl"
 
@@ -106,18 +107,33 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
     const bool receives = object.flags.x != 0;
     if (index < frame.config.x) {
         const int slot = receives ? int(frame.lightDirection[index].w) : -1;
-        if (dot(n, -frame.lightDirection[index].xyz) <= 0.0 || !directionalShadowReaches(slot, cascade))
+        const vec4 map = staticShadows.directionalLights[index];
+        const bool realtime = directionalShadowReaches(slot, cascade);
+        const bool fromStatic = receives && map.x >= 0.0;
+        if (dot(n, -frame.lightDirection[index].xyz) <= 0.0 || !(realtime || fromStatic))
             return vec4(1.0, 1.0, 1.0, 0.0);
         const vec3 towardsLight = -frame.lightDirection[index].xyz;
-        return vec4(vec3(directionalShadowVisibility(slot, cascade, vPosition, geometric, towardsLight)), 1.0);
+        const float shadow = realtime ? directionalShadowVisibility(slot, cascade, vPosition, geometric, towardsLight) : 1.0;
+        return vec4(vec3(fromStatic ? min(shadow, staticDirectionalVisibility(map, vPosition, geometric, towardsLight))
+                                    : shadow),
+                    1.0);
     }
     const int i = index - frame.config.x;
     const LocalLight light = localLight(i);
     const vec4 shadow = frame.localShadow[i];
-    if (!receives || dot(n, light.l) <= 0.0 || light.falloff <= 0.0 || shadow.z < 0.0 || globalStrength <= 0.0)
+    const vec4 map = staticShadows.localLights[i];
+    const bool realtime = shadow.z >= 0.0 && globalStrength > 0.0;
+    const bool fromStatic = map.x >= 0.0;
+    if (!receives || dot(n, light.l) <= 0.0 || light.falloff <= 0.0 || !(realtime || fromStatic))
         return vec4(1.0, 1.0, 1.0, 0.0);
-    return vec4(vec3(otherShadowVisibility(int(shadow.z), light.isPoint, frame.localPosition[i].xyz,
-                                           frame.localAxis[i].xyz, vPosition, geometric)), 1.0);
+    const vec3 lightPosition = frame.localPosition[i].xyz;
+    const vec3 axis = frame.localAxis[i].xyz;
+    const float visibility =
+        realtime ? otherShadowVisibility(int(shadow.z), light.isPoint, lightPosition, axis, vPosition, geometric) : 1.0;
+    return vec4(vec3(fromStatic ? min(visibility, staticLocalVisibility(int(map.x), light.isPoint, lightPosition, axis,
+                                                                        vPosition, geometric))
+                                : visibility),
+                1.0);
 }
 
 void main()
@@ -171,8 +187,9 @@ void main()
         const float nl = dot(n, l);
         if (nl <= 0.0)
             continue;
-        const int slot = object.flags.x != 0 ? int(frame.lightDirection[i].w) : -1;
-        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric, l);
+        const bool receives = object.flags.x != 0;
+        const int slot = receives ? int(frame.lightDirection[i].w) : -1;
+        const float attenuation = directionalAttenuation(i, slot, receives, cascade, vPosition, geometric, l);
         color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }
     for (int i = 0; i < frame.config.z; ++i) {
@@ -180,10 +197,9 @@ void main()
         const float nl = dot(n, light.l);
         if (nl <= 0.0 || light.falloff <= 0.0)
             continue;
-        const vec4 shadow = frame.localShadow[i];
-        const vec2 shadowData = object.flags.x != 0 ? shadow.zw : vec2(-1.0, 0.0);
-        const float attenuation = otherShadowAttenuation(shadowData, light.isPoint, frame.localPosition[i].xyz,
-                                                         frame.localAxis[i].xyz, vPosition, geometric, globalStrength);
+        const float attenuation = localAttenuation(i, frame.localShadow[i].zw, object.flags.x != 0, light.isPoint,
+                                                   frame.localPosition[i].xyz, frame.localAxis[i].xyz, vPosition,
+                                                   geometric, globalStrength);
         color += brdf(n, v, light.l, base, metallic, roughness) * frame.localColor[i].rgb * nl * light.falloff *
                  attenuation;
     }

@@ -43,23 +43,39 @@ vec3 cubeFaceAxis(int face)
     return axis;
 }
 
+// The tile of a spot light's shadow (its first) or a point light's (first + the face the direction from the light
+// picks), and the plane its depth grows from: the cone's axis or the face's.
+struct LocalTile {
+    int tile;
+    vec3 plane;
+};
+
+LocalTile localTile(int firstTile, bool isPoint, vec3 axis, vec3 fromLight)
+{
+    if (!isPoint)
+        return LocalTile(firstTile, axis);
+    const int face = cubeFace(fromLight);
+    return LocalTile(firstTile + face, cubeFaceAxis(face));
+}
+
+// The receiver moved by its normal offset and projected into a perspective tile (divide by w): a perspective texel
+// grows linearly with the distance from the light plane, and the normal offset (`biasScale` per unit distance) with it.
+vec4 localShadowPosition(mat4 worldToAtlas, float biasScale, vec3 plane, vec3 fromLight, vec3 position, vec3 normal)
+{
+    precise vec3 biased =
+        position + receiverNormalOffset(normal, normalize(-fromLight), dot(fromLight, plane) * biasScale);
+    return transformPoint(worldToAtlas, biased);
+}
+
 // Shadow of a spot light (its cone `axis`) or a point light (six tiles from `firstTile`, the face picked
 // by the direction from the light) at a receiver; `normal` is its geometric normal, either side.
 float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
 {
     const vec3 fromLight = position - lightPosition;
-    int tile = firstTile;
-    vec3 plane = axis;
-    if (isPoint) {
-        const int face = cubeFace(fromLight);
-        tile += face;
-        plane = cubeFaceAxis(face);
-    }
-    // A perspective texel grows linearly with the distance from the light plane, and the normal offset with it.
-    const float distanceToPlane = dot(fromLight, plane);
-    precise vec3 biased =
-        position + receiverNormalOffset(normal, normalize(-fromLight), distanceToPlane * otherShadows.tileData[tile].x);
-    const vec4 p = transformPoint(otherShadows.worldToAtlas[tile], biased);
+    const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
+    const int tile = local.tile;
+    const vec4 p = localShadowPosition(otherShadows.worldToAtlas[tile], otherShadows.tileData[tile].x, local.plane,
+                                       fromLight, position, normal);
     const vec4 bounds = otherShadows.tileBounds[tile];
     const int filterIndex = int(otherShadows.tileData[tile].y);
     if (filterIndex < PENUMBRA_FILTER_POISSON)
@@ -201,4 +217,13 @@ float otherShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3
     if (shadow.x < 0.0 || s <= 0.0)
         return 1.0;
     return mix(1.0, otherShadowVisibility(int(shadow.x), isPoint, lightPosition, axis, position, normal), s);
+}
+
+// The realtime shadow faded by the global strength, before the light's own (1 = lit; 1 without a tile).
+float otherRealtimeShadow(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
+                          float strength)
+{
+    if (tile < 0 || strength <= 0.0)
+        return 1.0;
+    return mix(1.0, otherShadowVisibility(tile, isPoint, lightPosition, axis, position, normal), strength);
 }

@@ -58,12 +58,13 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 6> kNamedScenes{{{"test", scene::makeShadowTestScene},
+constexpr std::array<NamedScene, 7> kNamedScenes{{{"test", scene::makeShadowTestScene},
                                                   {"key-light", scene::makeSingleLightScene},
                                                   {"mixed", scene::makeMixedLightsScene},
                                                   {"room", scene::makePointLightRoomScene},
                                                   {"forest", scene::makeForestScene},
-                                                  {"contact", scene::makeContactScene}}};
+                                                  {"contact", scene::makeContactScene},
+                                                  {"town", scene::makeTownScene}}};
 
 } // namespace
 

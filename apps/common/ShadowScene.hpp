@@ -43,11 +43,12 @@ struct ShadowPictures {
 
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
 // (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and
-// "room" (scene::makePointLightRoomScene) and "forest" (scene::makeForestScene). Unknown names throw rhi::Error
+// "room" (scene::makePointLightRoomScene), "forest" (scene::makeForestScene), "contact" (scene::makeContactScene)
+// and "town" (scene::makeTownScene). Unknown names throw rhi::Error
 // listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
-inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact";
+inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact, town";
 
 // How renderShadowScene runs: with the validation layer / debug output (the library's default, and the tests'),
 // and whether it reads the atlases back (AtlasPictures; a 4096^2 atlas is 64 MiB to copy).

@@ -7,6 +7,7 @@
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -138,7 +139,47 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                     "(equal depth test); off: the lit pass alone")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
+    command.add_option("--dynamic", options.dynamicObjects,
+                       "Make the objects of this name dynamic (repeatable; a glTF mesh's primitives NAME/0, NAME/1 "
+                       "follow NAME): they are drawn into the realtime shadows every frame, never into static maps");
+    command
+        .add_option("--static-maps", options.staticMaps,
+                    "Static shadow maps of the static casters, over the settings' static.update: everyFrame (none, "
+                    "every caster drawn every frame), onChange (kept until a static caster or the light changes), "
+                    "onDemand (kept until asked)")
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return shadows::parseStaticShadowUpdate(s) ? std::string()
+                                                           : fmt::format("'{}' is not everyFrame, onChange or onDemand", s);
+            },
+            "MODE"));
+    command
+        .add_option("--realtime-casters", options.realtimeCasters,
+                    "With static maps, what the realtime atlases draw, over the settings' static.realtimeCasters: all "
+                    "or dynamic (static casters' shadows from the static maps alone)")
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return shadows::parseRealtimeCasters(s) ? std::string() : fmt::format("'{}' is not all or dynamic", s);
+            },
+            "CASTERS"));
 }
+
+namespace {
+
+// --dynamic NAME: every object named NAME, or a primitive NAME/k of a glTF mesh.
+void makeDynamic(scene::Scene& scene, const std::string& name)
+{
+    bool found = false;
+    for (scene::Object& object : scene.objects)
+        if (object.name == name || object.name.rfind(name + "/", 0) == 0) {
+            object.mobility = scene::Mobility::Dynamic;
+            found = true;
+        }
+    if (!found)
+        throw rhi::Error(fmt::format("--dynamic '{}': the scene has no object of that name", name));
+}
+
+} // namespace
 
 LoadedScene loadScene(const SceneOptions& options)
 {
@@ -163,6 +204,8 @@ LoadedScene loadScene(const SceneOptions& options)
     if (!options.lights.empty())
         loaded.scene.validate();
     applyLightOverrides(loaded.scene, options.filter, options.lightSize, options.normalBiasSide);
+    for (const std::string& name : options.dynamicObjects)
+        makeDynamic(loaded.scene, name);
     if (lookAt) {
         scene::Camera& camera = loaded.scene.camera;
         // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
@@ -195,6 +238,10 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     if (!options.ambient.empty())
         frame.ambient = parseAmbientOption(options.ambient).value();
     frame.maxAnisotropy = options.anisotropy.value_or(frame.maxAnisotropy);
+    if (!options.staticMaps.empty())
+        frame.shadows.staticMaps.update = shadows::parseStaticShadowUpdate(options.staticMaps).value();
+    if (!options.realtimeCasters.empty())
+        frame.shadows.staticMaps.realtimeCasters = shadows::parseRealtimeCasters(options.realtimeCasters).value();
     return frame;
 }
 

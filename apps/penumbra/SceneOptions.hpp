@@ -14,7 +14,8 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --filter, --light-size.
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --filter, --light-size, --dynamic, --static-maps,
+// --realtime-casters.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -27,6 +28,9 @@ struct SceneOptions {
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
     std::string filter;             // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
+    std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
+    std::string staticMaps;      // shadows::StaticShadowUpdate by its JSON name; empty: the settings file's
+    std::string realtimeCasters; // shadows::RealtimeCasters by its JSON name; empty: the settings file's
 };
 
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
@@ -43,7 +47,7 @@ struct LoadedScene {
     std::vector<std::string> notes; // from the glTF loader
 };
 
-// The built-in scene or glTF file, with --camera, --light and --normal-bias-side applied. Throws scene::SceneError (a glTF file's
+// The built-in scene or glTF file, with --camera, --light, --normal-bias-side and --dynamic applied. Throws scene::SceneError (a glTF file's
 // errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 

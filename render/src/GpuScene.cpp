@@ -149,6 +149,19 @@ std::vector<shadows::Bounds> GpuScene::casterBounds() const
     return bounds;
 }
 
+std::vector<std::uint32_t> GpuScene::staticCasters() const
+{
+    std::vector<std::uint32_t> indices;
+    std::uint32_t caster = 0;
+    for (const scene::Object& object : scene_.objects)
+        if (scene_.castsShadows(object)) {
+            if (object.mobility == scene::Mobility::Static)
+                indices.push_back(caster);
+            ++caster;
+        }
+    return indices;
+}
+
 shadows::CasterVertexFormat GpuScene::vertexFormat()
 {
     return {sizeof(scene::Vertex), offsetof(scene::Vertex, position), offsetof(scene::Vertex, normal),

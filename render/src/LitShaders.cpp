@@ -41,8 +41,13 @@ rhi::ShaderSource litShader(std::string_view fileName, bool depthPrepassed)
     source.includes.push_back({"shadow_constants.glsl",
                                shadows::filterConstantsGlsl() +
                                    fmt::format("#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
-                                               "#define PENUMBRA_BINDING_POISSON_DISKS {}\n",
-                                               kLitShadowCubeDepthsBinding, kLitPoissonDisksBinding)});
+                                               "#define PENUMBRA_BINDING_POISSON_DISKS {}\n"
+                                               "#define PENUMBRA_BINDING_STATIC_SHADOWS {}\n"
+                                               "#define PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS {}\n"
+                                               "#define PENUMBRA_BINDING_STATIC_OTHER_ATLAS {}\n",
+                                               kLitShadowCubeDepthsBinding, kLitPoissonDisksBinding,
+                                               kLitStaticShadowBinding, kLitStaticDirectionalAtlasBinding,
+                                               kLitStaticOtherAtlasBinding)});
     return source;
 }
 

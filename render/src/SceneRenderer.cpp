@@ -2,6 +2,7 @@
 
 #include "TextureSampling.hpp"
 #include "passes/DepthPrepass.hpp"
+#include "static/StaticShadowCache.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
@@ -110,20 +111,57 @@ void fillLocalLights(LitFrameUniforms& u, const scene::Scene& scene, const shado
     u.config.z = static_cast<int>(count);
 }
 
+const std::string& lightName(const scene::Scene& scene, shadows::ShadowLightKind kind, std::uint32_t index)
+{
+    switch (kind) {
+    case shadows::ShadowLightKind::Spot:
+        return scene.spotLights[index].name;
+    case shadows::ShadowLightKind::Point:
+        return scene.pointLights[index].name;
+    case shadows::ShadowLightKind::Directional:
+        break;
+    }
+    return scene.lights[index].name;
+}
+
+bool hasStaticMap(const shadows::StaticShadowPlan& plan, shadows::ShadowLightKind kind, std::uint32_t index)
+{
+    return std::any_of(plan.maps.begin(), plan.maps.end(), [&](const shadows::StaticShadowMap& map) {
+        return map.kind == kind && map.lightIndex == index;
+    });
+}
+
+shadows::ShadowLightKind shadowLightKind(shadows::LocalLightKind kind)
+{
+    return kind == shadows::LocalLightKind::Spot ? shadows::ShadowLightKind::Spot : shadows::ShadowLightKind::Point;
+}
+
+// What a light without realtime shadows has: nothing, or its static map alone.
+const char* withoutRealtime(const ShadowPlans& plans, shadows::ShadowLightKind kind, std::uint32_t index)
+{
+    return hasStaticMap(plans.staticMaps, kind, index) ? "has static shadows only" : "has no shadows";
+}
+
 // Lights drawn without shadows, or not drawn at all, and why.
 std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans& plans)
 {
     std::vector<std::string> notes;
     for (const shadows::ShadowPlanNote& note : plans.directional.report)
-        notes.push_back(note.lightIndex ? fmt::format("light {} ('{}') has no shadows: {}", *note.lightIndex,
-                                                      scene.lights[*note.lightIndex].name, note.reason)
-                                        : fmt::format("no shadows: {}", note.reason));
+        notes.push_back(note.lightIndex
+                            ? fmt::format("light {} ('{}') {}: {}", *note.lightIndex, scene.lights[*note.lightIndex].name,
+                                          withoutRealtime(plans, shadows::ShadowLightKind::Directional, *note.lightIndex),
+                                          note.reason)
+                            : fmt::format("no shadows: {}", note.reason));
     for (std::size_t i = maxLitDirectionalLights; i < scene.lights.size(); ++i)
         notes.push_back(fmt::format("light {} ('{}') is not drawn: beyond the limit of {} directional lights", i,
                                     scene.lights[i].name, maxLitDirectionalLights));
     for (const shadows::OtherShadowNote& note : plans.other.report)
-        notes.push_back(fmt::format("{} {} ('{}') has no shadows: {}", kindName(note.kind), note.lightIndex,
-                                    localLightName(scene, note.kind, note.lightIndex), note.reason));
+        notes.push_back(fmt::format("{} {} ('{}') {}: {}", kindName(note.kind), note.lightIndex,
+                                    localLightName(scene, note.kind, note.lightIndex),
+                                    withoutRealtime(plans, shadowLightKind(note.kind), note.lightIndex), note.reason));
+    for (const shadows::StaticShadowNote& note : plans.staticMaps.report)
+        notes.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(note.kind), note.lightIndex,
+                                    lightName(scene, note.kind, note.lightIndex), note.reason));
     const std::size_t spots = scene.spotLights.size();
     for (std::size_t i = maxLitLocalLights; i < spots + scene.pointLights.size(); ++i) {
         const auto kind = i < spots ? shadows::LocalLightKind::Spot : shadows::LocalLightKind::Point;
@@ -157,6 +195,24 @@ void checkPlansFitFrame(const ShadowPlans& plans, const shadows::ShadowSettings&
     if (plans.other.cubes.size() > shadows::maxShadowCubes)
         throw rhi::Error(fmt::format("shadow plans: {} shadow cube maps, at most {}", plans.other.cubes.size(),
                                      shadows::maxShadowCubes));
+}
+
+// RealtimeCasters::Dynamic: the realtime views keep their fit but draw no static caster (the static maps hold them).
+void dropStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_t>& staticCasters)
+{
+    const auto drop = [&](std::vector<std::uint32_t>& casters) {
+        std::erase_if(casters, [&](std::uint32_t i) {
+            return std::binary_search(staticCasters.begin(), staticCasters.end(), i);
+        });
+    };
+    for (shadows::ShadowedDirectionalLight& light : plans.directional.lights)
+        for (shadows::DirectionalCascadePlan& cascade : light.cascades)
+            drop(cascade.casters.casters);
+    for (shadows::OtherAtlasTile& tile : plans.other.tiles)
+        drop(tile.view.casters);
+    for (shadows::ShadowCube& cube : plans.other.cubes)
+        for (shadows::LocalShadowView& face : cube.faces)
+            drop(face.casters);
 }
 
 LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
@@ -221,7 +277,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       otherShadowPass_(device, GpuScene::vertexFormat()),
       litVertex_(device.createShader(litShader("lit.vert"))),
       litFragment_(device.createShader(litShader("lit.frag"))), commands_(device.createCommandList()),
-      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(5) : nullptr),
+      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(6) : nullptr),
       uniforms_(device, "lit pass uniforms")
 {
     rhi::PipelineDesc desc;
@@ -230,7 +286,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kDepthFormat;
     desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
-                           shadows::otherShadowLayout()};
+                           shadows::otherShadowLayout(), shadows::staticShadowLayout()};
     for (const bool blend : {false, true})
         for (const bool doubleSided : {false, true}) {
             desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
@@ -254,9 +310,16 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
         prepassedLitPipelines_[doubleSided ? 1 : 0] = device.createPipeline(desc);
     }
     depthPrepass_ = std::make_unique<DepthPrepass>(device, kDepthFormat);
+    staticShadows_ = std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat());
 }
 
 SceneRenderer::~SceneRenderer() = default;
+
+const shadows::ShadowAtlas& SceneRenderer::staticDirectionalAtlas() const { return staticShadows_->directionalAtlas(); }
+
+const shadows::ShadowAtlas& SceneRenderer::staticOtherAtlas() const { return staticShadows_->otherAtlas(); }
+
+const shadows::StaticShadowPlan& SceneRenderer::staticPlan() const { return staticShadows_->plan(); }
 
 void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
 {
@@ -349,7 +412,8 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
                                   const rhi::UniformSlice& frameSlice, bool visibility, bool prepassed,
-                                  const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms)
+                                  const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms,
+                                  const rhi::UniformSlice& staticShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
     // The visibility view reports shadows on every surface: blended ones are drawn opaque there, so the alpha
@@ -376,6 +440,11 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
             commands.bindTexture(kLitShadowCubeDepthsBinding, shadowCubes_->texture(), shadowCubes_->depthSampler());
             rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonDisks);
+            rhi::bindUniform(commands, kLitStaticShadowBinding, staticShadowUniforms);
+            const shadows::ShadowAtlas& staticDirectional = staticShadows_->directionalAtlas();
+            const shadows::ShadowAtlas& staticOther = staticShadows_->otherAtlas();
+            commands.bindTexture(kLitStaticDirectionalAtlasBinding, staticDirectional.texture(), staticDirectional.sampler());
+            commands.bindTexture(kLitStaticOtherAtlasBinding, staticOther.texture(), staticOther.sampler());
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, objectSlices_[index]);
@@ -390,11 +459,16 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
     const scene::Scene& scene = gpuScene_.scene();
     const std::vector<shadows::Bounds> bounds = gpuScene_.casterBounds();
-    return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect),
-                                            shadowLights(scene.lights), bounds),
-            shadows::planOtherShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect),
-                                      spotShadowInputs(scene.spotLights),
-                                      pointShadowInputs(scene.pointLights), bounds)};
+    const std::vector<shadows::DirectionalShadowLightInput> lights = shadowLights(scene.lights);
+    const std::vector<shadows::SpotShadowInput> spots = spotShadowInputs(scene.spotLights);
+    const std::vector<shadows::PointShadowInput> points = pointShadowInputs(scene.pointLights);
+    const std::vector<std::uint32_t> staticCasters = gpuScene_.staticCasters();
+    return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
+                                            bounds),
+            shadows::planOtherShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
+                                      bounds),
+            shadows::planStaticShadows(frame.shadows, device_.conventions(), lights, spots, points,
+                                       {bounds, staticCasters})};
 }
 
 FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame)
@@ -414,6 +488,10 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     notes_ = frameNotes(gpuScene_.scene(), plans);
     if (anisotropy.note && !gpuScene_.scene().textures.empty())
         notes_.push_back(*anisotropy.note);
+    const std::vector<std::uint32_t> staticCasters = gpuScene_.staticCasters();
+    if (shadows::hasStaticMaps(frame.shadows) &&
+        frame.shadows.staticMaps.realtimeCasters == shadows::RealtimeCasters::Dynamic)
+        dropStaticCasters(plans, staticCasters);
     plan_ = std::move(plans.directional);
     otherPlan_ = std::move(plans.other);
 
@@ -435,38 +513,51 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     rhi::CommandList& commands = *commands_;
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
-    stats.casterDraws = shadowPass_.record(commands, *atlas_, plan_, casters);
+    const StaticMapDraws staticDraws = staticShadows_->update(commands, frame.shadows, std::move(plans.staticMaps),
+                                                              casters, staticUpdateRequested_);
+    staticUpdateRequested_ = false;
+    stats.staticCasterDraws = staticDraws.casterDraws;
+    for (const StaticMapUpdate& update : staticDraws.updates)
+        stats.staticMapUpdates.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(update.kind),
+                                                     update.lightIndex, lightName(scene, update.kind, update.lightIndex),
+                                                     update.reason));
+    const rhi::UniformSlice staticShadowUniforms = uniforms_.push(staticShadows_->plan().uniforms);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 1);
-    stats.otherCasterDraws = otherShadowPass_.record(commands, *otherAtlas_, *shadowCubes_, otherPlan_, casters);
+    stats.casterDraws = shadowPass_.record(commands, *atlas_, plan_, casters);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 2);
+    stats.otherCasterDraws = otherShadowPass_.record(commands, *otherAtlas_, *shadowCubes_, otherPlan_, casters);
+    if (timestamps_)
+        commands.writeTimestamp(*timestamps_, 3);
     const rhi::UniformSlice litFrame = uniforms_.push(frameUniforms(camera, frame, LitView::Lit));
     if (frame.depthPrepass)
         depthPrepass_->record(commands, *prepassTarget_, gpuScene_, drawOrder_, litFrame, objectSlices_);
     if (timestamps_)
-        commands.writeTimestamp(*timestamps_, 3);
-    recordLitPass(commands, *litTarget_, litFrame, false, frame.depthPrepass, shadowUniforms, otherShadowUniforms);
-    if (timestamps_)
         commands.writeTimestamp(*timestamps_, 4);
+    recordLitPass(commands, *litTarget_, litFrame, false, frame.depthPrepass, shadowUniforms, otherShadowUniforms,
+                  staticShadowUniforms);
+    if (timestamps_)
+        commands.writeTimestamp(*timestamps_, 5);
     // The debug views draw without the prepass: they clear the depth the lit pass tested against.
     if (frame.cascadeView)
         recordLitPass(commands, *cascadeTarget_, uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)),
-                      false, false, shadowUniforms, otherShadowUniforms);
+                      false, false, shadowUniforms, otherShadowUniforms, staticShadowUniforms);
     if (frame.visibilityOf) {
         LitFrameUniforms u = frameUniforms(camera, frame, LitView::Visibility);
         u.config.w = visibilityLight;
         recordLitPass(commands, *visibilityTarget_, uniforms_.push(u), true, false, shadowUniforms,
-                      otherShadowUniforms);
+                      otherShadowUniforms, staticShadowUniforms);
     }
     device_.submit(commands);
     if (timestamps_) {
         const std::vector<double> ns = device_.readTimestamps(*timestamps_);
-        stats.atlasPassMs = (ns[1] - ns[0]) * 1e-6;
-        stats.otherAtlasPassMs = (ns[2] - ns[1]) * 1e-6;
+        stats.staticAtlasPassMs = (ns[1] - ns[0]) * 1e-6;
+        stats.atlasPassMs = (ns[2] - ns[1]) * 1e-6;
+        stats.otherAtlasPassMs = (ns[3] - ns[2]) * 1e-6;
         if (frame.depthPrepass)
-            stats.depthPrepassMs = (ns[3] - ns[2]) * 1e-6;
-        stats.litPassMs = (ns[4] - ns[3]) * 1e-6;
+            stats.depthPrepassMs = (ns[4] - ns[3]) * 1e-6;
+        stats.litPassMs = (ns[5] - ns[4]) * 1e-6;
     }
     return stats;
 }

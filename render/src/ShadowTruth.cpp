@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace penumbra::render {
@@ -68,8 +69,14 @@ float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& s
                       const scene::LightRef& light, glm::vec3 position)
 {
     switch (light.kind) {
-    case scene::LightKind::Directional:
-        return directionalTexel(plans.directional, light.index, position);
+    case scene::LightKind::Directional: {
+        // A static map decides with the realtime shadow (the darker of the two), or alone beyond the cascades.
+        float texel = directionalTexel(plans.directional, light.index, position);
+        for (const shadows::StaticShadowMap& map : plans.staticMaps.maps)
+            if (map.kind == shadows::ShadowLightKind::Directional && map.lightIndex == light.index)
+                texel = std::max(texel, map.texelSize);
+        return texel;
+    }
     case scene::LightKind::Spot: {
         const int tile = plans.other.spotTiles.at(light.index);
         if (tile < 0)

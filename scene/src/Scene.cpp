@@ -18,6 +18,29 @@ constexpr std::array<std::pair<ShadowCasting, std::string_view>, 4> kShadowCasti
     {ShadowCasting::ShadowsOnly, "shadowsOnly"},
 }};
 
+constexpr std::array<std::pair<Mobility, std::string_view>, 2> kMobilityNames{{
+    {Mobility::Static, "static"},
+    {Mobility::Dynamic, "dynamic"},
+}};
+
+template <typename Enum, std::size_t N>
+std::string_view nameIn(const std::array<std::pair<Enum, std::string_view>, N>& names, Enum value)
+{
+    for (const auto& [known, name] : names)
+        if (known == value)
+            return name;
+    return "unknown";
+}
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> valueIn(const std::array<std::pair<Enum, std::string_view>, N>& names, std::string_view name)
+{
+    for (const auto& [value, known] : names)
+        if (known == name)
+            return value;
+    return std::nullopt;
+}
+
 constexpr float kUnitTolerance = 1e-3f;
 // Relative to the box's extent: the stored box may come from another float evaluation order.
 constexpr float kBoundsTolerance = 1e-4f;
@@ -158,21 +181,13 @@ void validateCamera(const Camera& camera)
 
 } // namespace
 
-std::string_view shadowCastingName(ShadowCasting casting)
-{
-    for (const auto& [value, name] : kShadowCastingNames)
-        if (value == casting)
-            return name;
-    return "unknown";
-}
+std::string_view shadowCastingName(ShadowCasting casting) { return nameIn(kShadowCastingNames, casting); }
 
-std::optional<ShadowCasting> parseShadowCasting(std::string_view name)
-{
-    for (const auto& [value, known] : kShadowCastingNames)
-        if (known == name)
-            return value;
-    return std::nullopt;
-}
+std::optional<ShadowCasting> parseShadowCasting(std::string_view name) { return valueIn(kShadowCastingNames, name); }
+
+std::string_view mobilityName(Mobility mobility) { return nameIn(kMobilityNames, mobility); }
+
+std::optional<Mobility> parseMobility(std::string_view name) { return valueIn(kMobilityNames, name); }
 
 std::uint32_t Scene::addMesh(MeshData mesh)
 {

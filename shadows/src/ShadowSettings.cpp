@@ -74,7 +74,7 @@ SettingsProblem outOfRange(std::string field, std::string value)
 
 std::string_view allowedValues(std::string_view field)
 {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 22> table{{
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 26> table{{
         {"maxDistance", "> 0.001"},
         {"distanceFade", "0.001..1"},
         {"directional.atlasSize", "powers of two 256..8192"},
@@ -97,6 +97,10 @@ std::string_view allowedValues(std::string_view field)
         {"soft.minPenumbraTexels", "0..64"},
         {"soft.maxPenumbraTexels", "minPenumbraTexels..64"},
         {"soft.poissonRadiusTexels", "0.5..64"},
+        {"static.update", "everyFrame, onChange, onDemand"},
+        {"static.realtimeCasters", "all, dynamic"},
+        {"static.directionalAtlasSize", "powers of two 256..8192"},
+        {"static.otherAtlasSize", "powers of two 256..8192"},
     }};
     for (const auto& [name, allowed] : table)
         if (name == field)
@@ -155,6 +159,19 @@ std::optional<SettingsProblem> findSoftSettingsProblem(const SoftShadowSettings&
     return std::nullopt;
 }
 
+std::optional<SettingsProblem> findStaticSettingsProblem(const StaticShadowSettings& s)
+{
+    if (static_cast<unsigned>(s.update) > static_cast<unsigned>(StaticShadowUpdate::OnDemand))
+        return outOfRange("static.update", fmt::format("{}", static_cast<int>(s.update)));
+    if (static_cast<unsigned>(s.realtimeCasters) > static_cast<unsigned>(RealtimeCasters::Dynamic))
+        return outOfRange("static.realtimeCasters", fmt::format("{}", static_cast<int>(s.realtimeCasters)));
+    if (!powerOfTwoWithin(s.directionalAtlasSize, 256, 8192))
+        return outOfRange("static.directionalAtlasSize", fmt::format("{}", s.directionalAtlasSize));
+    if (!powerOfTwoWithin(s.otherAtlasSize, 256, 8192))
+        return outOfRange("static.otherAtlasSize", fmt::format("{}", s.otherAtlasSize));
+    return std::nullopt;
+}
+
 } // namespace
 
 std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
@@ -182,7 +199,9 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return outOfRange("directional.atlasFormat", std::string(rhi::formatName(d.atlasFormat)));
     if (auto problem = findOtherSettingsProblem(s.other))
         return problem;
-    return findSoftSettingsProblem(s.soft);
+    if (auto problem = findSoftSettingsProblem(s.soft))
+        return problem;
+    return findStaticSettingsProblem(s.staticMaps);
 }
 
 } // namespace detail

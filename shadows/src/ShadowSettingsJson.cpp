@@ -41,6 +41,12 @@ constexpr std::array<EnumName<rhi::Format>, 3> formatNames{
 constexpr std::array<EnumName<PointShadowMode>, 2> pointModeNames{
     {{PointShadowMode::Atlas, "atlas"}, {PointShadowMode::CubeMap, "cubemap"}}};
 
+constexpr std::array<EnumName<StaticShadowUpdate>, 3> updateNames{{{StaticShadowUpdate::EveryFrame, "everyFrame"},
+                                                                    {StaticShadowUpdate::OnChange, "onChange"},
+                                                                    {StaticShadowUpdate::OnDemand, "onDemand"}}};
+constexpr std::array<EnumName<RealtimeCasters>, 2> realtimeCasterNames{
+    {{RealtimeCasters::All, "all"}, {RealtimeCasters::Dynamic, "dynamic"}}};
+
 template <typename Enum, std::size_t N>
 std::string_view nameOf(const std::array<EnumName<Enum>, N>& names, Enum value)
 {
@@ -85,9 +91,8 @@ public:
     Enum enumeration(const Json& value, std::string_view key, const std::array<EnumName<Enum>, N>& names) const
     {
         if (value.is_string())
-            for (const auto& n : names)
-                if (n.name == value.get<std::string>())
-                    return n.value;
+            if (const std::optional<Enum> known = valueOf(names, value.get<std::string>()))
+                return *known;
         fail(key, fmt::format("unknown value {}", value.dump()));
     }
 
@@ -185,7 +190,38 @@ void readSoft(const Json& object, std::string_view source, SoftShadowSettings& s
     }
 }
 
+void readStatic(const Json& object, std::string_view source, StaticShadowSettings& s)
+{
+    const FieldReader r(source, "static.");
+    r.requireObject(object, "static");
+    for (const auto& [key, value] : object.items()) {
+        if (key == "update")
+            s.update = r.enumeration(value, key, updateNames);
+        else if (key == "realtimeCasters")
+            s.realtimeCasters = r.enumeration(value, key, realtimeCasterNames);
+        else if (key == "directionalAtlasSize")
+            s.directionalAtlasSize = r.integer(value, key);
+        else if (key == "otherAtlasSize")
+            s.otherAtlasSize = r.integer(value, key);
+        else
+            r.unknown(key, "update, realtimeCasters, directionalAtlasSize, otherAtlasSize");
+    }
+}
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> valueOf(const std::array<EnumName<Enum>, N>& names, std::string_view name)
+{
+    for (const auto& n : names)
+        if (n.name == name)
+            return n.value;
+    return std::nullopt;
+}
+
 } // namespace
+
+std::optional<StaticShadowUpdate> parseStaticShadowUpdate(std::string_view name) { return valueOf(updateNames, name); }
+
+std::optional<RealtimeCasters> parseRealtimeCasters(std::string_view name) { return valueOf(realtimeCasterNames, name); }
 
 ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourceName)
 {
@@ -209,8 +245,10 @@ ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourc
             readOther(value, sourceName, settings.other);
         else if (key == "soft")
             readSoft(value, sourceName, settings.soft);
+        else if (key == "static")
+            readStatic(value, sourceName, settings.staticMaps);
         else
-            r.unknown(key, "maxDistance, distanceFade, directional, other, soft");
+            r.unknown(key, "maxDistance, distanceFade, directional, other, soft, static");
     }
     if (const auto problem = detail::findSettingsProblem(settings))
         throw rhi::Error(
@@ -246,12 +284,18 @@ std::string toJson(const ShadowSettings& s)
     soft["minPenumbraTexels"] = f.minPenumbraTexels;
     soft["maxPenumbraTexels"] = f.maxPenumbraTexels;
     soft["poissonRadiusTexels"] = f.poissonRadiusTexels;
+    nlohmann::ordered_json staticMaps;
+    staticMaps["update"] = nameOf(updateNames, s.staticMaps.update);
+    staticMaps["realtimeCasters"] = nameOf(realtimeCasterNames, s.staticMaps.realtimeCasters);
+    staticMaps["directionalAtlasSize"] = s.staticMaps.directionalAtlasSize;
+    staticMaps["otherAtlasSize"] = s.staticMaps.otherAtlasSize;
     nlohmann::ordered_json root;
     root["maxDistance"] = s.maxDistance;
     root["distanceFade"] = s.distanceFade;
     root["directional"] = std::move(directional);
     root["other"] = std::move(other);
     root["soft"] = std::move(soft);
+    root["static"] = std::move(staticMaps);
     return root.dump(2) + "\n";
 }
 

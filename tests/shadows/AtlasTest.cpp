@@ -20,7 +20,8 @@ TEST(ShadowAtlasLayout, SplitFollowsTheTileCount)
     for (std::uint32_t tiles = 5; tiles <= 16; ++tiles)
         EXPECT_EQ(ShadowAtlasLayout(1024, tiles).split(), 4u);
     EXPECT_EQ(ShadowAtlasLayout(2048, 6).tileSize(), 512u);
-    EXPECT_THROW(ShadowAtlasLayout(1024, 17), rhi::Error);
+    EXPECT_THROW(ShadowAtlasLayout(1024, 65), rhi::Error);
+    EXPECT_EQ(ShadowAtlasLayout(1024, 17).split(), 8u);
 }
 
 TEST(ShadowAtlasLayout, TilesRunAlongRowsCountedFromTheTop)

@@ -48,6 +48,10 @@ ShadowSettings unusualSettings()
     s.other.pointMode = PointShadowMode::CubeMap;
     s.other.cubeMapSize = 256;
     s.other.nearPlane = 0.0375f;
+    s.staticMaps.update = StaticShadowUpdate::OnDemand;
+    s.staticMaps.realtimeCasters = RealtimeCasters::Dynamic;
+    s.staticMaps.directionalAtlasSize = 8192;
+    s.staticMaps.otherAtlasSize = 512;
     return s;
 }
 
@@ -126,7 +130,11 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
     EXPECT_EQ(parseError(R"({"maxDistanse": 5})"),
-              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, other, soft");
+              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, other, soft, static");
+    EXPECT_EQ(parseError(R"({"static": {"update": "sometimes"}})"),
+              "shadows.json: static.update: unknown value \"sometimes\", allowed everyFrame, onChange, onDemand");
+    EXPECT_EQ(parseError(R"({"static": {"directionalAtlasSize": 16384}})"),
+              "shadows.json: static.directionalAtlasSize: 16384 is out of range, allowed powers of two 256..8192");
     EXPECT_EQ(parseError(R"({"other": {"pointMode": "cube"}})"),
               "shadows.json: other.pointMode: unknown value \"cube\", allowed atlas, cubemap");
     EXPECT_EQ(parseError(R"({"other": {"atlasSize": 100}})"),

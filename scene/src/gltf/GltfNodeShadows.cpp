@@ -11,7 +11,7 @@ NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node
     const std::string pointer = fmt::format("/nodes/{}/extras/penumbra", index);
     const tinygltf::Value& ours = node.extras.Get("penumbra");
     if (!ours.IsObject())
-        document.fail(fmt::format("{}: expected an object with castShadows and receiveShadows", pointer));
+        document.fail(fmt::format("{}: expected an object with castShadows, receiveShadows and mobility", pointer));
     if (ours.Has("castShadows")) {
         const tinygltf::Value& value = ours.Get("castShadows");
         const std::optional<ShadowCasting> cast =
@@ -26,6 +26,13 @@ NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node
         if (!value.IsBool())
             document.fail(fmt::format("{}/receiveShadows: expected true or false", pointer));
         shadows.receive = value.Get<bool>();
+    }
+    if (ours.Has("mobility")) {
+        const tinygltf::Value& value = ours.Get("mobility");
+        const std::optional<Mobility> mobility = value.IsString() ? parseMobility(value.Get<std::string>()) : std::nullopt;
+        if (!mobility)
+            document.fail(fmt::format("{}/mobility: expected \"static\" or \"dynamic\"", pointer));
+        shadows.mobility = *mobility;
     }
     return shadows;
 }

@@ -96,6 +96,7 @@ private:
                 mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), found->second, material, world)];
             object.castShadows = shadows.cast;
             object.receiveShadows = shadows.receive;
+            object.mobility = shadows.mobility;
         }
     }
 

@@ -48,6 +48,8 @@ public:
     // from the scene on every call, so moved objects (with updated worldBounds) are seen.
     std::vector<shadows::ShadowCaster> casters() const;
     std::vector<shadows::Bounds> casterBounds() const;
+    // Indices into casters() of the casters whose objects are static (scene::Mobility), ascending.
+    std::vector<std::uint32_t> staticCasters() const;
 
     static shadows::CasterVertexFormat vertexFormat();
     // scene::Vertex's six attributes at locations 0 to 5 (position, normal, uv, uv1, tangent, colour), as the

@@ -100,6 +100,10 @@ inline constexpr std::uint32_t kLitShadowCubesBinding = 6;
 inline constexpr std::uint32_t kLitShadowCubeDepthsBinding = 7;
 inline constexpr std::uint32_t kLitPoissonDisksBinding = 8; // shadows::PoissonDiskUniforms
 inline constexpr std::uint32_t kLitMaterialMapBinding = 9;
+// After the material maps: the static shadow maps (shadows::StaticShadowUniforms and its two atlases).
+inline constexpr std::uint32_t kLitStaticShadowBinding = kLitMaterialMapBinding + scene::kTextureSlots;
+inline constexpr std::uint32_t kLitStaticDirectionalAtlasBinding = kLitStaticShadowBinding + 1;
+inline constexpr std::uint32_t kLitStaticOtherAtlasBinding = kLitStaticShadowBinding + 2;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {

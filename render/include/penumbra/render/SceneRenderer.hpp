@@ -12,6 +12,7 @@
 #include "penumbra/shadows/OtherShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <array>
 #include <cstdint>
@@ -23,6 +24,7 @@
 namespace penumbra::render {
 
 class DepthPrepass;
+class StaticShadowCache;
 
 struct FrameDesc {
     std::uint32_t width = 1280;
@@ -50,6 +52,11 @@ struct FrameStats {
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
     std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
+    std::optional<double> staticAtlasPassMs;        // the static maps drawn this frame, where the device has timestamps
+    // Static shadow maps (ShadowSettings::staticMaps): the caster draws into them this frame, and which maps were
+    // drawn and why ("spot light 0 ('lamp'): a static caster in its view changed").
+    std::uint32_t staticCasterDraws = 0;
+    std::vector<std::string> staticMapUpdates;
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
     // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
@@ -61,6 +68,7 @@ struct FrameStats {
 struct ShadowPlans {
     shadows::DirectionalShadowPlan directional;
     shadows::OtherShadowPlan other;
+    shadows::StaticShadowPlan staticMaps; // empty without static maps (StaticShadowUpdate::EveryFrame)
 };
 
 // Draws a scene with cascaded directional shadows and spot and point shadows: plan (CPU) -> caster
@@ -99,6 +107,15 @@ public:
     // why textures get less anisotropy than FrameDesc::maxAnisotropy.
     const std::vector<std::string>& notes() const { return notes_; }
 
+    // Static shadow maps (ShadowSettings::staticMaps): the atlases as last drawn (16 texels wide without maps), and
+    // the plan they were drawn from.
+    const shadows::ShadowAtlas& staticDirectionalAtlas() const;
+    const shadows::ShadowAtlas& staticOtherAtlas() const;
+    const shadows::StaticShadowPlan& staticPlan() const;
+    // In StaticShadowUpdate::OnDemand mode, the next render() draws every static map again from its plan; other modes
+    // ignore it.
+    void requestStaticShadowUpdate() { staticUpdateRequested_ = true; }
+
 private:
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
@@ -107,7 +124,7 @@ private:
     // prepass's depth; otherwise the target's depth is cleared.
     void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const rhi::UniformSlice& frameSlice,
                        bool visibility, bool prepassed, const rhi::UniformSlice& shadowUniforms,
-                       const rhi::UniformSlice& otherShadowUniforms);
+                       const rhi::UniformSlice& otherShadowUniforms, const rhi::UniformSlice& staticShadowUniforms);
 
     rhi::Device& device_;
     GpuScene gpuScene_;
@@ -121,6 +138,8 @@ private:
     std::unique_ptr<rhi::Shader> prepassedLitFragment_;
     std::array<std::unique_ptr<rhi::Pipeline>, 2> prepassedLitPipelines_;
     std::unique_ptr<DepthPrepass> depthPrepass_;
+    std::unique_ptr<StaticShadowCache> staticShadows_;
+    bool staticUpdateRequested_ = false;
     // Per object, this frame's Object block (shaders/lit.glsl), shared by the prepass and every lit view.
     std::vector<rhi::UniformSlice> objectSlices_;
     std::vector<std::uint32_t> drawOrder_; // this frame's (SceneRenderer.cpp, drawOrder)

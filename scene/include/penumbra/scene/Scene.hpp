@@ -40,6 +40,13 @@ enum class ShadowCasting : std::uint8_t {
 std::string_view shadowCastingName(ShadowCasting casting);
 std::optional<ShadowCasting> parseShadowCasting(std::string_view name);
 
+// Whether an object may move: static casters' shadows can be kept between frames or baked (Unity's
+// "Static" flag and HDRP's cached shadow maps, Godot's static/dynamic split); dynamic ones are drawn every frame.
+enum class Mobility : std::uint8_t { Static, Dynamic };
+
+std::string_view mobilityName(Mobility mobility);
+std::optional<Mobility> parseMobility(std::string_view name);
+
 // One drawn instance: meshes[mesh] with materials[material], placed by transform.
 // worldBounds = meshes[mesh].bounds.transformed(transform); Scene::addObject fills it and
 // validate() rejects a stale one, because shadow fitting and culling trust it.
@@ -56,6 +63,7 @@ struct Object {
     ShadowCasting castShadows = ShadowCasting::On;
     // False: lit as if nothing blocked its lights (and its material's receiveShadows = false does the same).
     bool receiveShadows = true;
+    Mobility mobility = Mobility::Static;
 };
 
 struct Scene {

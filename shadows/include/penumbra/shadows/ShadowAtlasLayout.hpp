@@ -8,13 +8,15 @@
 
 namespace penumbra::shadows {
 
+inline constexpr std::uint32_t maxAtlasTiles = 64;
+
 // A square atlas cut into split x split square tiles: split = 1 for one tile, 2 for up to 4,
-// 4 for up to 16. Tile i sits at column i % split, row i / split, rows counted from the TOP as
-// rhi::Viewport and texture v do. Used by the directional atlas (lights x cascades) and fit for
-// any other atlas of up to 16 tiles (spot and point lights).
+// 4 for up to 16, 8 for up to 64. Tile i sits at column i % split, row i / split, rows counted from the TOP as
+// rhi::Viewport and texture v do. Used by the directional atlas (lights x cascades), the other atlas (up to 16
+// tiles of spot and point lights) and the static other atlas (up to 64).
 class ShadowAtlasLayout {
 public:
-    // Throws rhi::Error when tileCount > 16 or atlasSize is not a multiple of the split.
+    // Throws rhi::Error when tileCount > maxAtlasTiles or atlasSize is not a multiple of the split.
     ShadowAtlasLayout(std::uint32_t atlasSize, std::uint32_t tileCount);
 
     std::uint32_t atlasSize() const { return atlasSize_; }

@@ -92,13 +92,46 @@ struct OtherShadowSettings {
     float nearPlane = 0.01f;
 };
 
+// When a light's static shadow map, the depth of its static casters alone, is drawn (Unity HDRP's shadow update
+// modes "Every Frame", "On Enable" and "On Demand"; Godot's shadow atlas re-renders a light only when it changes).
+enum class StaticShadowUpdate {
+    EveryFrame, // no static maps: every caster is drawn into the realtime atlases every frame, as before
+    OnChange,   // drawn once, then again only when a static caster, the light or its settings change
+    OnDemand,   // drawn once, then again only when the application asks (SceneRenderer::requestStaticShadowUpdate)
+};
+
+// Which casters the realtime atlases draw while static maps exist.
+enum class RealtimeCasters {
+    All,     // every caster; the static map adds the shadow beyond the shadow distance and for lights without tiles
+    Dynamic, // dynamic casters only; the static casters' shadow comes from the static map (Unity's Shadowmask mode)
+};
+
+// Static shadow maps: per shadowed light, the static casters' depth kept between frames, or loaded from a bake.
+struct StaticShadowSettings {
+    StaticShadowUpdate update = StaticShadowUpdate::EveryFrame;
+    RealtimeCasters realtimeCasters = RealtimeCasters::All;
+    // Directional lights: one orthographic map each over the static casters' bounds, tiles of this atlas
+    // (one light takes it whole, up to four share it as quarters); texels per side, a power of two in 256..8192.
+    std::uint32_t directionalAtlasSize = 4096;
+    // Spot and point lights: tiles of this atlas as in the other atlas (a spot light one, a point light six, up to
+    // 16); texels per side, a power of two in 256..8192.
+    std::uint32_t otherAtlasSize = 2048;
+};
+
 struct ShadowSettings {
     float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001; applies to every light
     float distanceFade = 0.1f;  // 0.001..1, fraction of maxDistance over which shadows fade out
     DirectionalShadowSettings directional;
     OtherShadowSettings other;
     SoftShadowSettings soft;
+    StaticShadowSettings staticMaps;
 };
+
+// Whether the settings keep static shadow maps (any update mode but EveryFrame).
+inline bool hasStaticMaps(const ShadowSettings& settings)
+{
+    return settings.staticMaps.update != StaticShadowUpdate::EveryFrame;
+}
 
 // Throws rhi::Error "<field>: <value> is out of range, allowed <range>" for the first field out of range
 // (field paths as in JSON: "directional.cascadeCount").

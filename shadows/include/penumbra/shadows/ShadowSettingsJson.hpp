@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <optional>
 #include <string_view>
 
 namespace penumbra::shadows {
@@ -13,6 +14,11 @@ namespace penumbra::shadows {
 // Missing fields keep their defaults; unknown fields, wrong types and out-of-range values throw
 // rhi::Error "<sourceName>: <field>: <what>, allowed <range>".
 ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourceName);
+
+// The static maps' modes by their JSON names ("everyFrame", "onChange", "onDemand"; "all", "dynamic"), which the
+// command line takes too; nullopt for any other name.
+std::optional<StaticShadowUpdate> parseStaticShadowUpdate(std::string_view name);
+std::optional<RealtimeCasters> parseRealtimeCasters(std::string_view name);
 
 // Every field, two-space indented; parseShadowSettings(toJson(s)) == s.
 std::string toJson(const ShadowSettings& settings);

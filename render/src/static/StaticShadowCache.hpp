@@ -1,0 +1,71 @@
+#pragma once
+
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/shadows/ShadowAtlas.hpp"
+#include "penumbra/shadows/ShadowCaster.hpp"
+#include "penumbra/shadows/StaticShadowPass.hpp"
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace penumbra::render {
+
+// One static map drawn this frame, and why.
+struct StaticMapUpdate {
+    shadows::ShadowLightKind kind = shadows::ShadowLightKind::Directional;
+    std::uint32_t lightIndex = 0;
+    std::string reason;
+};
+
+// What a frame drew into the static atlases.
+struct StaticMapDraws {
+    std::vector<StaticMapUpdate> updates;
+    std::uint32_t casterDraws = 0;
+};
+
+// The static shadow maps kept between frames: the two static atlases, and per light the map's key as last drawn (its
+// views and the static casters in them), so a frame draws again only the maps whose key changed, in OnChange mode,
+// or that the application asked for, in OnDemand mode.
+class StaticShadowCache {
+public:
+    StaticShadowCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat);
+
+    // Takes this frame's plan and records the draws of the maps it needs; returns those maps. In OnDemand mode,
+    // unless `requested`, the maps and uniforms drawn last stay as they are (`plan` is dropped) while the atlases
+    // keep their sizes and format. Without static maps (EveryFrame) the atlases are small stand-ins.
+    StaticMapDraws update(rhi::CommandList& commands, const shadows::ShadowSettings& settings,
+                          shadows::StaticShadowPlan plan, std::span<const shadows::ShadowCaster> casters,
+                          bool requested);
+
+    const shadows::ShadowAtlas& directionalAtlas() const { return *directionalAtlas_; }
+    const shadows::ShadowAtlas& otherAtlas() const { return *otherAtlas_; }
+    // The maps as drawn.
+    const shadows::StaticShadowPlan& plan() const { return plan_; }
+
+private:
+    struct Key {
+        std::uint64_t view = 0;    // tiles, viewports, matrices, biases
+        std::uint64_t casters = 0; // the static casters drawn and what they are
+    };
+    using LightId = std::pair<shadows::ShadowLightKind, std::uint32_t>;
+
+    // Whether the atlas had to be created anew (its old tiles are gone).
+    static bool prepareAtlas(rhi::Device& device, std::unique_ptr<shadows::ShadowAtlas>& atlas, std::uint32_t size,
+                             rhi::Format format, const char* name);
+
+    rhi::Device& device_;
+    shadows::StaticShadowPass pass_;
+    std::unique_ptr<shadows::ShadowAtlas> directionalAtlas_;
+    std::unique_ptr<shadows::ShadowAtlas> otherAtlas_;
+    shadows::StaticShadowPlan plan_;
+    std::map<LightId, Key> drawn_;
+    bool hasPlan_ = false;
+};
+
+} // namespace penumbra::render

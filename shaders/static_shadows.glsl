@@ -1,0 +1,77 @@
+// Static shadow maps (penumbra::shadows::StaticShadowUniforms): the static casters' depth of each light, kept
+// between frames or baked, mixed with the realtime shadow as Unity's shadow masks are (Catlike Coding's "Shadow
+// Masks" tutorial, MixBakedAndRealtimeShadows in its "Always" mode): the realtime shadow, faded out beyond the
+// shadow distance, and the static one combine by taking the darker, then the light's strength applies; a light
+// without realtime tiles keeps its static shadow. Needs directional_shadows.glsl and other_shadows.glsl first.
+
+layout(std140, binding = PENUMBRA_BINDING_STATIC_SHADOWS) uniform StaticShadows {
+    mat4 directionalWorldToMap[4];
+    vec4 directionalBounds[4];
+    vec4 directionalLights[8];
+    mat4 otherWorldToMap[64];
+    vec4 otherBounds[64];
+    vec4 otherData[64];
+    vec4 localLights[16];
+    vec4 atlasSizes;
+} staticShadows;
+
+// Read with texelFetch (shadow_filter.glsl), as the realtime atlases.
+layout(binding = PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS) uniform sampler2D staticDirectionalAtlas;
+layout(binding = PENUMBRA_BINDING_STATIC_OTHER_ATLAS) uniform sampler2D staticOtherAtlas;
+
+// Directional light `light`'s static map at a receiver (1 = lit), its normal offset as the cascades' over the
+// map's texel diagonal.
+float staticDirectionalVisibility(vec4 light, vec3 position, vec3 normal, vec3 towardsLight)
+{
+    const int tile = int(light.x);
+    precise vec3 biased = position + receiverNormalOffset(normal, towardsLight, light.z);
+    const vec4 bounds = staticShadows.directionalBounds[tile];
+    const vec3 p = transformPoint(staticShadows.directionalWorldToMap[tile], biased).xyz;
+    // The map covers the static casters' bounding sphere: a receiver beside it (a dynamic object moved away) has no
+    // static caster between it and the light.
+    const vec2 texel = p.xy * staticShadows.atlasSizes.x;
+    if (any(lessThan(texel, bounds.xy)) || any(greaterThan(texel, bounds.zw + 1.0)))
+        return 1.0;
+    return filterShadowTile(staticDirectionalAtlas, p, staticShadows.atlasSizes.x, int(light.w), ivec2(bounds.xy),
+                            ivec2(bounds.zw));
+}
+
+float staticLocalVisibility(int firstTile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
+{
+    const vec3 fromLight = position - lightPosition;
+    const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
+    const vec4 data = staticShadows.otherData[local.tile];
+    const vec4 p = localShadowPosition(staticShadows.otherWorldToMap[local.tile], data.x, local.plane, fromLight,
+                                       position, normal);
+    const vec4 bounds = staticShadows.otherBounds[local.tile];
+    return filterShadowTile(staticOtherAtlas, p.xyz / p.w, staticShadows.atlasSizes.y, int(data.y), ivec2(bounds.xy),
+                            ivec2(bounds.zw));
+}
+
+// Directional light `light` (the lit pass's index; `slot` its realtime shadow slot or -1) at a receiver, 1 = lit.
+float directionalAttenuation(int light, int slot, bool receives, CascadeSelection s, vec3 position, vec3 normal,
+                             vec3 towardsLight)
+{
+    const vec4 map = staticShadows.directionalLights[light];
+    if (!receives)
+        return 1.0;
+    if (map.x < 0.0)
+        return directionalShadowAttenuation(slot, s, position, normal, towardsLight);
+    const float realtime = directionalRealtimeShadow(slot, s, position, normal, towardsLight);
+    return mix(1.0, min(realtime, staticDirectionalVisibility(map, position, normal, towardsLight)), map.y);
+}
+
+// Spot or point light `light` (the lit pass's local index; `shadow` its first realtime tile or cube, or -1, and its
+// strength) at a receiver, 1 = lit. `strength` is the global one (distance fade).
+float localAttenuation(int light, vec2 shadow, bool receives, bool isPoint, vec3 lightPosition, vec3 axis,
+                       vec3 position, vec3 normal, float strength)
+{
+    const vec4 map = staticShadows.localLights[light];
+    if (!receives)
+        return 1.0;
+    if (map.x < 0.0)
+        return otherShadowAttenuation(shadow, isPoint, lightPosition, axis, position, normal, strength);
+    const float realtime = otherRealtimeShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal, strength);
+    return mix(1.0, min(realtime, staticLocalVisibility(int(map.x), isPoint, lightPosition, axis, position, normal)),
+               map.y);
+}

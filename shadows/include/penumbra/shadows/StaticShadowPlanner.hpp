@@ -1,0 +1,74 @@
+#pragma once
+
+#include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/DirectionalShadowPlanner.hpp"
+#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/ShadowAtlasLayout.hpp"
+#include "penumbra/shadows/ShadowCasterDraws.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/StaticShadowUniforms.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace penumbra::shadows {
+
+enum class ShadowLightKind : std::uint8_t { Directional, Spot, Point };
+
+// One tile of a static shadow map and what is drawn into it.
+struct StaticShadowTile {
+    std::uint32_t tile = 0;
+    rhi::Viewport viewport;
+    ShadowViewDraw view;
+    std::vector<std::uint32_t> casters; // indices into the caster list: the static casters the view may see
+};
+
+// The static shadow map of one light: one tile of the static directional atlas (an orthographic view over every
+// static caster), one tile of the static other atlas (a spot light's cone) or six (a point light's faces).
+struct StaticShadowMap {
+    ShadowLightKind kind = ShadowLightKind::Directional;
+    std::uint32_t lightIndex = 0; // into the planner's input lights of that kind
+    std::vector<StaticShadowTile> tiles;
+    float texelSize = 0.0f; // directional maps: the world size of a texel
+};
+
+// Why a light gets no static map, or gets one filtered otherwise than its realtime shadow.
+struct StaticShadowNote {
+    ShadowLightKind kind = ShadowLightKind::Directional;
+    std::uint32_t lightIndex = 0;
+    std::string reason;
+};
+
+struct StaticShadowPlan {
+    ShadowAtlasLayout directionalAtlas{256, 0};
+    ShadowAtlasLayout otherAtlas{256, 0};
+    std::vector<StaticShadowMap> maps; // directional lights first, then spot, then point lights
+    std::vector<StaticShadowNote> report;
+    StaticShadowUniforms uniforms;
+};
+
+// The casters whose depth the static maps hold: indices into the planner's caster bounds.
+struct StaticCasters {
+    std::span<const Bounds> bounds;          // every caster's
+    std::span<const std::uint32_t> indices;  // the static ones, ascending
+};
+
+// Plans the static shadow maps (settings.staticMaps) of every light that casts shadows with strength > 0 and has a
+// static caster in reach, whatever the camera sees: directional lights (up to 4) take a tile of the static
+// directional atlas fitted around the static casters' bounding sphere (the stable fit of a cascade, so its texels
+// stay put while nothing static moves); spot and point lights take one and six tiles of the static other atlas
+// (up to maxStaticOtherTiles), with the projections of their realtime tiles. Lights that do not fit, and lights whose soft filter
+// the static maps replace with the widest tent (PCF 7x7), are listed in the report. Uniform entries follow the lit
+// pass's light order: directional lights, then spot lights, then point lights. Throws rhi::Error only for settings
+// that fail validate().
+StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
+                                   std::span<const DirectionalShadowLightInput> lights,
+                                   std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,
+                                   const StaticCasters& casters);
+
+std::string_view shadowLightKindName(ShadowLightKind kind); // "directional light", "spot light", "point light"
+
+} // namespace penumbra::shadows

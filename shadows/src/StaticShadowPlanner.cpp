@@ -1,0 +1,243 @@
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
+
+#include "penumbra/shadows/AtlasMatrix.hpp"
+#include "penumbra/shadows/DirectionalCascadeFit.hpp"
+#include "penumbra/shadows/DirectionalShadowPass.hpp"
+#include "penumbra/shadows/LightBasis.hpp"
+#include "penumbra/shadows/LocalLightProjection.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace penumbra::shadows {
+namespace {
+
+constexpr float kSqrt2 = 1.41421356f;
+
+// The static maps filter with the tent filters only: the soft filters' blocker search reads the realtime atlases'
+// per-tile soft data, which a map over the whole static scene has no use for.
+ShadowFilter staticFilter(ShadowFilter filter, ShadowLightKind kind, std::uint32_t index, StaticShadowPlan& plan)
+{
+    if (!isSoftFilter(filter))
+        return filter;
+    plan.report.push_back({kind, index, "its static map is filtered with pcf7 (soft filters read the realtime atlas)"});
+    return ShadowFilter::PCF7x7;
+}
+
+glm::vec4 tileBounds(const ShadowAtlasLayout& atlas, std::uint32_t tile)
+{
+    const glm::vec2 first(atlas.tileOffset(tile));
+    return {first, first + static_cast<float>(atlas.tileSize() - 1)};
+}
+
+// The sphere around the union of the static casters' boxes.
+Sphere boundingSphere(const StaticCasters& casters)
+{
+    Bounds box = casters.bounds[casters.indices.front()];
+    for (const std::uint32_t i : casters.indices) {
+        box.min = glm::min(box.min, casters.bounds[i].min);
+        box.max = glm::max(box.max, casters.bounds[i].max);
+    }
+    return {0.5f * (box.min + box.max), std::max(0.5f * glm::length(box.max - box.min), 1e-3f)};
+}
+
+// The static casters whose boxes meet a perspective view's frustum, as caster indices.
+std::vector<std::uint32_t> castersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
+                                            const StaticCasters& casters)
+{
+    std::vector<Bounds> bounds;
+    for (const std::uint32_t i : casters.indices)
+        bounds.push_back(casters.bounds[i]);
+    std::vector<std::uint32_t> inside = cullCastersInFrustum(view, fov, nearPlane, farPlane, bounds);
+    for (std::uint32_t& i : inside)
+        i = casters.indices[i];
+    return inside;
+}
+
+void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions,
+                     std::span<const DirectionalShadowLightInput> lights, const StaticCasters& casters)
+{
+    std::vector<std::uint32_t> selected;
+    for (std::uint32_t i = 0; i < lights.size(); ++i) {
+        if (!lights[i].castsShadows || !(lights[i].strength > 0.0f))
+            continue;
+        if (selected.size() == maxStaticDirectionalMaps) {
+            plan.report.push_back({ShadowLightKind::Directional, i,
+                                   fmt::format("no static map: all {} static directional maps are taken",
+                                               maxStaticDirectionalMaps)});
+            continue;
+        }
+        selected.push_back(i);
+    }
+    plan.directionalAtlas = ShadowAtlasLayout(settings.staticMaps.directionalAtlasSize,
+                                              static_cast<std::uint32_t>(selected.size()));
+    if (selected.empty())
+        return;
+    const Sphere sphere = boundingSphere(casters);
+    const std::vector<std::uint32_t> all(casters.indices.begin(), casters.indices.end());
+    std::vector<Bounds> staticBounds;
+    for (const std::uint32_t i : casters.indices)
+        staticBounds.push_back(casters.bounds[i]);
+    for (std::uint32_t tile = 0; tile < selected.size(); ++tile) {
+        const std::uint32_t index = selected[tile];
+        const DirectionalShadowLightInput& light = lights[index];
+        const ShadowFilter filter = staticFilter(light.filter.value_or(settings.directional.filter),
+                                                 ShadowLightKind::Directional, index, plan);
+        const DirectionalShadowCascade fit =
+            fitDirectionalCascade(sphere, lightBasis(light.direction), plan.directionalAtlas.tileSize(),
+                                  light.nearPlaneOffset, staticBounds, conventions);
+        // The realtime cascades' normal offset: the filter-sized texel diagonal times the light's normal bias.
+        const float reach = light.normalBias * fit.texelSize * normalBiasFilterFactor(filter) * kSqrt2;
+        const bool casterSide = light.normalBiasSide == NormalBiasSide::Caster;
+        ShadowViewDraw view{.viewProjection = fit.viewProjection,
+                            .slopeScaleBias = light.slopeScaleBias,
+                            .pancake = true,
+                            .ditherOrigin = ditherOrigin(fit, plan.directionalAtlas, tile)};
+        if (casterSide)
+            view.normalOffset = {reach, glm::vec4(glm::normalize(light.direction), 0.0f)};
+        plan.uniforms.directionalWorldToMap[tile] =
+            worldToAtlas(fit.viewProjection, tile, plan.directionalAtlas, conventions);
+        plan.uniforms.directionalBounds[tile] = tileBounds(plan.directionalAtlas, tile);
+        if (index < maxStaticMapDirectionalLights)
+            plan.uniforms.directionalLights[index] = {static_cast<float>(tile), light.strength,
+                                                      casterSide ? 0.0f : reach, static_cast<float>(filter)};
+        plan.maps.push_back({ShadowLightKind::Directional, index,
+                             {{tile, plan.directionalAtlas.viewport(tile), view, all}}, fit.texelSize});
+    }
+}
+
+// What a spot or point light's static map needs of it.
+struct LocalLightInput {
+    ShadowLightKind kind;
+    std::uint32_t index;
+    glm::vec3 position;
+    glm::vec3 direction; // spot lights
+    float range;
+    float outerAngle; // spot lights
+    float strength;
+    float normalBias;
+    float slopeScaleBias;
+    float nearPlane;
+    std::optional<ShadowFilter> filter;
+    NormalBiasSide normalBiasSide;
+};
+
+std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points)
+{
+    std::vector<LocalLightInput> inputs;
+    for (std::uint32_t i = 0; i < spots.size(); ++i) {
+        const SpotShadowInput& s = spots[i];
+        inputs.push_back({ShadowLightKind::Spot, i, s.position, s.direction, s.range, s.outerAngle, s.strength,
+                          s.normalBias, s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide});
+    }
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+        const PointShadowInput& p = points[i];
+        inputs.push_back({ShadowLightKind::Point, i, p.position, glm::vec3(0.0f, -1.0f, 0.0f), p.range, 0.0f,
+                          p.strength, p.normalBias, p.slopeScaleBias, p.nearPlane, p.filter, p.normalBiasSide});
+    }
+    return inputs;
+}
+
+// The light's views: a spot light's cone, or a point light's six faces (widened as its realtime tiles are).
+struct LocalViews {
+    float fov;
+    std::vector<glm::mat4> views;
+};
+
+LocalViews localViews(const LocalLightInput& light, std::uint32_t tileSize, ShadowFilter filter)
+{
+    if (light.kind == ShadowLightKind::Spot)
+        return {2.0f * light.outerAngle, {spotView(light.position, light.direction)}};
+    LocalViews faces{pointFaceFieldOfView(tileSize, filter, light.normalBias), {}};
+    for (std::uint32_t face = 0; face < cubeFaceCount; ++face)
+        faces.views.push_back(pointFaceView(static_cast<CubeFace>(face), light.position));
+    return faces;
+}
+
+void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions,
+               std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,
+               const StaticCasters& casters)
+{
+    const std::vector<LocalLightInput> inputs = localInputs(spots, points);
+    // Lights that shadow a static caster, and whether they fit: tiles are counted before the layout is known, and
+    // the casters a view meets do not depend on the tile size, only the point faces' widening does (by a texel).
+    std::vector<const LocalLightInput*> selected;
+    std::uint32_t tiles = 0;
+    for (const LocalLightInput& light : inputs) {
+        if (!(light.strength > 0.0f))
+            continue;
+        const std::uint32_t needed = light.kind == ShadowLightKind::Spot ? 1 : cubeFaceCount;
+        if (tiles + needed > maxStaticOtherTiles) {
+            plan.report.push_back({light.kind, light.index,
+                                   fmt::format("no static map: needs {} of the static other atlas's {} tiles, {} "
+                                               "are left",
+                                               needed, maxStaticOtherTiles, maxStaticOtherTiles - tiles)});
+            continue;
+        }
+        selected.push_back(&light);
+        tiles += needed;
+    }
+    plan.otherAtlas = ShadowAtlasLayout(settings.staticMaps.otherAtlasSize, tiles);
+    std::uint32_t tile = 0;
+    for (const LocalLightInput* light : selected) {
+        const std::uint32_t tileSize = plan.otherAtlas.tileSize();
+        const ShadowFilter filter =
+            staticFilter(light->filter.value_or(settings.other.filter), light->kind, light->index, plan);
+        const LocalViews views = localViews(*light, tileSize, filter);
+        const float nearPlane = localShadowNearPlane(light->range, light->nearPlane, settings.other);
+        const glm::mat4 projection = conventions.perspective(views.fov, 1.0f, nearPlane, light->range);
+        const float bias = localNormalBiasScale(projection, tileSize, filter, light->normalBias);
+        const bool casterSide = light->normalBiasSide == NormalBiasSide::Caster;
+        const std::uint32_t litIndex = light->index + (light->kind == ShadowLightKind::Point ? spots.size() : 0);
+        if (litIndex < maxStaticMapLocalLights)
+            plan.uniforms.localLights[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
+        StaticShadowMap map{light->kind, light->index, {}, 0.0f};
+        for (const glm::mat4& view : views.views) {
+            ShadowViewDraw draw{.viewProjection = projection * view, .slopeScaleBias = light->slopeScaleBias};
+            if (casterSide)
+                draw.normalOffset = {bias, glm::vec4(light->position, 1.0f)};
+            plan.uniforms.otherWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.otherAtlas, conventions);
+            plan.uniforms.otherBounds[tile] = tileBounds(plan.otherAtlas, tile);
+            plan.uniforms.otherData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
+            map.tiles.push_back({tile, plan.otherAtlas.viewport(tile), draw,
+                                 castersInFrustum(view, views.fov, nearPlane, light->range, casters)});
+            ++tile;
+        }
+        plan.maps.push_back(std::move(map));
+    }
+}
+
+} // namespace
+
+std::string_view shadowLightKindName(ShadowLightKind kind)
+{
+    switch (kind) {
+    case ShadowLightKind::Directional:
+        return "directional light";
+    case ShadowLightKind::Spot:
+        return "spot light";
+    case ShadowLightKind::Point:
+        return "point light";
+    }
+    return "light";
+}
+
+StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
+                                   std::span<const DirectionalShadowLightInput> lights,
+                                   std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,
+                                   const StaticCasters& casters)
+{
+    validate(settings);
+    StaticShadowPlan plan;
+    if (!hasStaticMaps(settings) || casters.indices.empty())
+        return plan;
+    planDirectional(plan, settings, conventions, lights, casters);
+    planLocal(plan, settings, conventions, spots, points, casters);
+    plan.uniforms.atlasSizes = {static_cast<float>(plan.directionalAtlas.atlasSize()),
+                                static_cast<float>(plan.otherAtlas.atlasSize()), 0.0f, 0.0f};
+    return plan;
+}
+
+} // namespace penumbra::shadows
