@@ -16,7 +16,15 @@ T pick(std::mt19937& random, const std::array<T, N>& values)
     return values[std::uniform_int_distribution<std::size_t>(0, N - 1)(random)];
 }
 
-float uniform(std::mt19937& random, float from, float to) { return std::uniform_real_distribution<float>(from, to)(random); }
+float uniform(std::mt19937& random, float from, float to)
+{
+    return std::uniform_real_distribution<float>(from, to)(random);
+}
+
+std::uint32_t uniform(std::mt19937& random, std::uint32_t from, std::uint32_t to)
+{
+    return std::uniform_int_distribution<std::uint32_t>(from, to)(random);
+}
 
 glm::vec3 pointIn(std::mt19937& random, const scene::Bounds& bounds)
 {
@@ -31,8 +39,9 @@ float sceneRange(const scene::Bounds& bounds) { return std::max(1.0f, glm::lengt
 constexpr std::array kAtlasSizes{256u, 512u, 1024u, 2048u};
 constexpr std::array kCubeSizes{64u, 128u, 256u, 512u};
 constexpr std::array kDepthFormats{rhi::Format::D16, rhi::Format::D24S8, rhi::Format::D32F};
-constexpr std::array kFilters{shadows::ShadowFilter::PCF2x2, shadows::ShadowFilter::PCF3x3, shadows::ShadowFilter::PCF5x5,
-                              shadows::ShadowFilter::PCF7x7, shadows::ShadowFilter::Poisson, shadows::ShadowFilter::PCSS};
+using shadows::ShadowFilter;
+constexpr std::array kFilters{ShadowFilter::PCF2x2, ShadowFilter::PCF3x3,  ShadowFilter::PCF5x5,
+                              ShadowFilter::PCF7x7, ShadowFilter::Poisson, ShadowFilter::PCSS};
 
 std::size_t localLights(const scene::Scene& scene) { return scene.spotLights.size() + scene.pointLights.size(); }
 
@@ -61,7 +70,8 @@ void moveLight(std::mt19937& random, SoakState& state)
     if (i < scene.lights.size()) {
         // Anywhere in the upper half of the sky.
         scene.lights[i].direction =
-            glm::normalize(glm::vec3(uniform(random, -1.0f, 1.0f), uniform(random, -1.0f, -0.2f), uniform(random, -1.0f, 1.0f)));
+            glm::normalize(glm::vec3(uniform(random, -1.0f, 1.0f), uniform(random, -1.0f, -0.2f),
+                                     uniform(random, -1.0f, 1.0f)));
         return;
     }
     i -= scene.lights.size();
@@ -113,10 +123,11 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
     case SoakChange::DirectionalFilter: s.directional.filter = pick(random, kFilters); break;
     case SoakChange::OtherFilter: s.other.filter = pick(random, kFilters); break;
     case SoakChange::LightFilter: setLightFilter(random, state.scene); break;
-    case SoakChange::CascadeCount: s.directional.cascadeCount = std::uniform_int_distribution<std::uint32_t>(1, 4)(random); break;
+    case SoakChange::CascadeCount: s.directional.cascadeCount = uniform(random, 1u, 4u); break;
     case SoakChange::CascadeBlend:
         s.directional.cascadeBlend =
-            pick(random, std::array{shadows::CascadeBlend::Hard, shadows::CascadeBlend::Soft, shadows::CascadeBlend::Dither});
+            pick(random, std::array{shadows::CascadeBlend::Hard, shadows::CascadeBlend::Soft,
+                                    shadows::CascadeBlend::Dither});
         break;
     case SoakChange::PointMode:
         s.other.pointMode = s.other.pointMode == shadows::PointShadowMode::Atlas ? shadows::PointShadowMode::CubeMap
@@ -127,7 +138,9 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
         s.soft.blockerSamples = pick(random, std::array{16u, 32u, 64u});
         s.soft.filterSamples = pick(random, std::array{16u, 32u, 64u});
         break;
-    case SoakChange::Anisotropy: state.frame.maxAnisotropy = pick(random, std::array{1.0f, 2.0f, 4.0f, 8.0f, 16.0f}); break;
+    case SoakChange::Anisotropy:
+        state.frame.maxAnisotropy = pick(random, std::array{1.0f, 2.0f, 4.0f, 8.0f, 16.0f});
+        break;
     case SoakChange::DepthPrepass: state.frame.depthPrepass = !state.frame.depthPrepass; break;
     case SoakChange::AddPointLight:
         if (localLights(state.scene) < render::maxLitLocalLights)
@@ -147,9 +160,8 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
     case SoakChange::MoveLight: moveLight(random, state); break;
     case SoakChange::RemoveLight: removeLight(random, state.scene); break;
     case SoakChange::Resize:
-        state.frame.width = std::uniform_int_distribution<std::uint32_t>(std::max(16u, state.start.width / 2), state.start.width)(random);
-        state.frame.height =
-            std::uniform_int_distribution<std::uint32_t>(std::max(16u, state.start.height / 2), state.start.height)(random);
+        state.frame.width = uniform(random, std::max(16u, state.start.width / 2), state.start.width);
+        state.frame.height = uniform(random, std::max(16u, state.start.height / 2), state.start.height);
         break;
     case SoakChange::SceneReload: break;
     }

@@ -58,7 +58,8 @@ TEST_F(OutOfMemoryTest, CubeAtlasesBeyondTheDeviceMemoryAreANamedError)
                                        cubes * 6, rhi::byteSize(rhi::textureBytes(huge)))),
               std::string::npos)
         << message;
-    EXPECT_NE(message.find(fmt::format("does not fit in the device's {} of memory", rhi::byteSize(caps.deviceMemoryBytes))),
+    EXPECT_NE(message.find(
+                  fmt::format("does not fit in the device's {} of memory", rhi::byteSize(caps.deviceMemoryBytes))),
               std::string::npos)
         << message;
     expectUsable(*device);
@@ -67,8 +68,8 @@ TEST_F(OutOfMemoryTest, CubeAtlasesBeyondTheDeviceMemoryAreANamedError)
 TEST_F(OutOfMemoryTest, BufferBeyondTheDeviceMemoryIsANamedError)
 {
     const std::uint64_t size = device->capabilities().deviceMemoryBytes + 1;
-    const std::string message =
-        errorOf([&] { device->createBuffer({.size = size, .usage = rhi::BufferUsage::Vertex, .debugName = "vertices"}); });
+    const rhi::BufferDesc desc{.size = size, .usage = rhi::BufferUsage::Vertex, .debugName = "vertices"};
+    const std::string message = errorOf([&] { device->createBuffer(desc); });
     EXPECT_NE(message.find(fmt::format("buffer 'vertices' ({}) does not fit", rhi::byteSize(size))), std::string::npos)
         << message;
     expectUsable(*device);

@@ -85,7 +85,8 @@ TEST(AtomicFile, FolderInThePlaceOfTheFileIsANamedError)
 
 TEST(AtomicFile, UnwritableFolderLeavesNoTemporaryFile)
 {
-    EXPECT_EQ(failureOf("/proc/penumbra-atomic.json"), "cannot write /proc/penumbra-atomic.json: No such file or directory");
+    EXPECT_EQ(failureOf("/proc/penumbra-atomic.json"),
+              "cannot write /proc/penumbra-atomic.json: No such file or directory");
 }
 
 } // namespace
