@@ -34,6 +34,7 @@ struct SoakOptions {
     std::uint32_t warmup = 100;
     std::uint32_t checkEvery = 50;
     double memoryToleranceMiB = 16.0;
+    std::uint32_t objectTolerance = 0;
     std::string json;
     std::string apiValidation = "on";
 };
@@ -108,7 +109,7 @@ void judge(const std::vector<Sample>& samples, const SoakOptions& options)
             floor.objects[k] = std::min(floor.objects[k], s->objects[k]);
     }
     for (std::size_t k = 0; k < rhi::kObjectKindCount; ++k)
-        if (floor.objects[k] > peak.objects[k])
+        if (floor.objects[k] > peak.objects[k] + options.objectTolerance)
             throw rhi::Error(fmt::format("soak: live {} objects stay above the warm-up's {} from frame {} on (at least "
                                          "{})",
                                          rhi::objectKindName(rhi::ObjectKind(k)), peak.objects[k], judged->frame,
@@ -242,6 +243,9 @@ void addSoakCommand(CLI::App& app)
                         "on: the Vulkan validation layer and GL debug output (the RHI's own validation is always on); "
                         "off measures the driver alone, without the layer's own bookkeeping")
         ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
+    command->add_option("--object-tolerance", options->objectTolerance,
+                        "Live objects of a kind the last checkpoints may hold above the warm-up's peak")
         ->capture_default_str();
     command->add_option("--json", options->json, "Write the checkpoints and the changes applied as JSON");
     command->callback([options] {
