@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench bench-forest soak sanitize fuzz docs clean
+.PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize fuzz docs clean
 
 all: build
 
@@ -46,6 +46,16 @@ SOAK_SCENE ?= test
 soak: build
 	@for backend in vulkan opengl; do $(PENUMBRA) soak --scene $(SOAK_SCENE) --backend $$backend --frames $(SOAK_FRAMES) \
 		--size 160x90 --warmup 500 --check-every 100 --json out/soak-$$backend.json || exit 1; done
+# The town (64 static buildings, one dynamic ball) with every caster drawn every frame, with static maps kept
+# (onChange) and from a bake, the realtime atlases drawing the ball alone: out/bench-static-<mode>.json.
+bench-static: build
+	@$(PENUMBRA) bake --scene town --settings scripts/bench/town-static.json --out out/bench-static-bake
+	@for mode in everyFrame onChange baked; do \
+		case $$mode in everyFrame) extra="--static-maps everyFrame";; \
+		onChange) extra="--static-maps onChange --realtime-casters dynamic";; \
+		baked) extra="--baked out/bench-static-bake --realtime-casters dynamic";; esac; \
+		$(PENUMBRA) bench --scene town --settings scripts/bench/town-static.json $$extra --backend vulkan,opengl \
+			--frames 10 --warmup 2 --json out/bench-static-$$mode.json || exit 1; done
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run in build-sanitize/.
 sanitize:

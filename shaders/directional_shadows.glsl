@@ -14,6 +14,7 @@ layout(std140, binding = 2) uniform DirectionalShadows {
     vec4 lightSoft[4];
     vec4 softScales;
     vec4 softCounts;
+    ivec4 projection;
 } shadows;
 
 // Read with texelFetch (shadow_filter.glsl).
@@ -35,19 +36,26 @@ float fadedShadowStrength(float distance, float scale, float fade)
     return clamp((1.0 - distance * scale) * fade, 0.0, 1.0);
 }
 
+// Stable fit: the first cascade whose selection sphere holds the point, faded on squared distance. Close fit: the
+// first whose far split the view depth has not reached, faded linearly on view depth (Unity's "Close Fit" bands,
+// Catlike Coding, "Rendering 7: Shadows", section 1.7). The C++ twin is penumbra::shadows::selectCascade.
 CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
 {
     CascadeSelection s;
     s.blend = 1.0;
     s.strength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
     const int count = shadows.config.x;
+    const bool close = shadows.projection.x == PENUMBRA_PROJECTION_CLOSE;
     int i = 0;
     for (; i < count; ++i) {
         const vec4 sphere = shadows.cullingSpheres[i];
         const vec3 offset = position - sphere.xyz;
         const float distanceSquared = dot(offset, offset);
-        if (distanceSquared < sphere.w) {
-            const float fade = fadedShadowStrength(distanceSquared, shadows.cascadeData[i].x, shadows.distanceFade.z);
+        const float farDepth = shadows.cascadeData[i].w;
+        if (close ? viewDepth < farDepth : distanceSquared < sphere.w) {
+            const float fade =
+                close ? fadedShadowStrength(viewDepth, 1.0 / farDepth, shadows.distanceFade.w)
+                      : fadedShadowStrength(distanceSquared, shadows.cascadeData[i].x, shadows.distanceFade.z);
             if (i == count - 1)
                 s.strength *= fade;
             else

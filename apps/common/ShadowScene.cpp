@@ -4,6 +4,7 @@
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
+#include "penumbra/render/ShadowTruth.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/TestScenes.hpp"
@@ -82,15 +83,21 @@ scene::Scene namedScene(const std::string& name)
 }
 
 ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame, bool readAtlases)
+                                 const render::FrameDesc& frame, bool readAtlases, const shadows::StaticShadowBake* bake)
 {
     render::SceneRenderer renderer(device, scene);
+    if (bake)
+        renderer.useBakedShadows(*bake);
     ShadowPictures pictures;
     pictures.configuration = configuration;
     pictures.depthRange = device.conventions().depthRange();
     pictures.reversedZ = device.conventions().reversedZ();
     pictures.stats = renderer.render(scene.camera, frame);
     pictures.notes = renderer.notes();
+    if (!scene.lights.empty())
+        for (const float depth : kTexelDensityDepths)
+            pictures.texelsPerMetre.push_back(render::directionalTexelsPerMetre(
+                renderer.plan(), 0, scene.camera, float(frame.width) / float(frame.height), depth));
     pictures.lit = rhi::readTexture(device, renderer.litImage());
     if (frame.cascadeView)
         pictures.cascades = rhi::readTexture(device, renderer.cascadeImage());
@@ -114,7 +121,7 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
     desc.validation = run.validate;
     desc.validateUsage = desc.validateUsage || run.validate;
     auto device = createDevice(desc);
-    ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases);
+    ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases, run.bake);
     if (const auto messages = device->debugMessages(); !messages.empty())
         throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;

@@ -5,7 +5,9 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/Scene.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,10 +38,16 @@ struct ShadowPictures {
     std::vector<AtlasPictures> atlases;
     render::FrameStats stats;
     std::vector<std::string> notes;
+    // render::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
+    std::vector<float> texelsPerMetre;
 
     // Throws rhi::Error naming the atlases there are.
     const AtlasPictures& atlas(std::string_view name) const;
 };
+
+// View depths (metres) at which the tool reports the directional shadows' texels per metre: one or two in each
+// cascade of the default splits (10, 25, 50, 100 m).
+inline constexpr std::array<float, 5> kTexelDensityDepths{3.0f, 8.0f, 15.0f, 35.0f, 70.0f};
 
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
 // (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and
@@ -55,11 +63,13 @@ inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest
 struct ShadowSceneRun {
     bool validate = true;
     bool readAtlases = true;
+    const shadows::StaticShadowBake* bake = nullptr; // static maps from a bake (SceneRenderer::useBakedShadows)
 };
 
 // Renders scene.camera's view on `device`; the cascade view too when frame.cascadeView is set.
 ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame, bool readAtlases = true);
+                                 const render::FrameDesc& frame, bool readAtlases = true,
+                                 const shadows::StaticShadowBake* bake = nullptr);
 // The same on a device of its own; throws rhi::Error when the device reports a validation or debug message.
 ShadowPictures renderShadowScene(const std::string& configuration, const scene::Scene& scene,
                                  const render::FrameDesc& frame, const ShadowSceneRun& run = {});

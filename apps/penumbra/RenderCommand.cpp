@@ -56,6 +56,7 @@ void render(const RenderOptions& options)
     const LoadedScene loaded = loadScene(options.scene);
     render::FrameDesc frame = frameDesc(options.scene);
     frame.cascadeView = !options.debug.empty();
+    const std::optional<shadows::StaticShadowBake> bake = loadBake(options.scene);
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);
 
@@ -64,7 +65,9 @@ void render(const RenderOptions& options)
     for (const std::string& configuration : configurations) {
         stopIfInterrupted();
         all.push_back(renderShadowScene(configuration, loaded.scene, frame,
-                                        {.validate = options.validate, .readAtlases = !options.atlas.empty()}));
+                                        {.validate = options.validate,
+                                         .readAtlases = !options.atlas.empty(),
+                                         .bake = bake ? &*bake : nullptr}));
         printStats(all.back(), loaded.scene);
     }
     stopIfInterrupted();

@@ -47,7 +47,7 @@ struct ConfigurationResult {
 std::array<double, kPasses> passTimes(const render::FrameStats& s, double referenceMs)
 {
     return {s.depthPrepassMs.value_or(0.0), s.atlasPassMs.value_or(0.0), s.otherAtlasPassMs.value_or(0.0), 0.0,
-            s.litPassMs.value_or(0.0),     0.0,                          referenceMs};
+            s.litPassMs.value_or(0.0),     0.0,                          referenceMs, s.staticAtlasPassMs.value_or(0.0)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -60,13 +60,16 @@ void showProgress(const std::string& configuration, std::uint32_t done, std::uin
 }
 
 ConfigurationResult benchConfiguration(const std::string& configuration, const scene::Scene& scene,
-                                       const render::FrameDesc& frame, const SceneBenchOptions& options)
+                                       const render::FrameDesc& frame, const SceneBenchOptions& options,
+                                       const std::optional<shadows::StaticShadowBake>& bake)
 {
     auto device = createDevice(toolDeviceDesc(configuration, options.validate));
     if (!device->capabilities().timestamps)
         throw rhi::Error(fmt::format("{}: the device has no timestamp queries, so passes cannot be timed",
                                      configuration));
     render::SceneRenderer renderer(*device, scene);
+    if (bake)
+        renderer.useBakedShadows(*bake);
     render::ReferenceLitPass reference(*device, renderer.gpuScene());
     ConfigurationResult result{configuration, {}, {}, {}};
     const std::uint32_t total = options.warmup + options.frames;
@@ -105,6 +108,22 @@ double litOverReference(const ConfigurationResult& r)
     return reference > 0.0 ? ours / reference : 0.0;
 }
 
+// How the static shadow maps came: "everyFrame" (none), "onChange", "onDemand" or "baked".
+std::string staticMapsMode(const render::FrameDesc& frame, const SceneBenchOptions& options)
+{
+    if (!options.scene.baked.empty())
+        return "baked";
+    switch (frame.shadows.staticMaps.update) {
+    case shadows::StaticShadowUpdate::OnChange:
+        return "onChange";
+    case shadows::StaticShadowUpdate::OnDemand:
+        return "onDemand";
+    case shadows::StaticShadowUpdate::EveryFrame:
+        break;
+    }
+    return "everyFrame";
+}
+
 nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& options, const render::FrameDesc& frame)
 {
     nlohmann::json passes = nlohmann::json::object(), mins = nlohmann::json::object(),
@@ -130,7 +149,9 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"passesMin", mins},
             {"passesMax", maxs},
             {"litOverReference", litOverReference(r)},
-            {"casterDraws", r.last.casterDraws + r.last.otherCasterDraws}};
+            {"casterDraws", r.last.casterDraws + r.last.otherCasterDraws},
+            {"staticCasterDraws", r.last.staticCasterDraws},
+            {"staticMaps", staticMapsMode(frame, options)}};
 }
 
 void printTable(const std::vector<ConfigurationResult>& results, const SceneBenchOptions& options,
@@ -160,11 +181,12 @@ nlohmann::json runSceneBench(const SceneBenchOptions& options)
     const std::vector<std::string> configurations = expandBackends(options.backends);
     const LoadedScene loaded = loadScene(options.scene);
     const render::FrameDesc frame = frameDesc(options.scene);
+    const std::optional<shadows::StaticShadowBake> bake = loadBake(options.scene);
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);
     std::vector<ConfigurationResult> results;
     for (const std::string& configuration : configurations)
-        results.push_back(benchConfiguration(configuration, loaded.scene, frame, options));
+        results.push_back(benchConfiguration(configuration, loaded.scene, frame, options, bake));
     printTable(results, options, frame);
     for (const std::string& note : results.front().last.notes)
         fmt::print("  note: {}\n", note);

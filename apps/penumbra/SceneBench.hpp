@@ -21,9 +21,10 @@ struct SceneBenchOptions {
 };
 
 // The pass names of the JSON's "passes" objects, in frame order: the depth prepass, the directional and the
-// other atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass.
+// other atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass; then the
+// static shadow maps drawn in the frame (drawn first, listed last to keep the older names' order).
 inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "otherAtlas", "screenSpaceShadows",
-                                                  "lit", "resolve", "reference"};
+                                                  "lit", "resolve", "reference", "staticAtlas"};
 
 // Prints a table and returns {"scene": [one object per configuration: configuration, scene, width, height,
 // frames, warmup, frameMs (median), frameMsMin, frameMsMax, passes {name: median ms}, passesMin, passesMax,

@@ -68,6 +68,16 @@ CLI::Validator filterValidator()
         "FILTER");
 }
 
+CLI::Validator projectionValidator()
+{
+    return CLI::Validator(
+        [](std::string& s) {
+            return shadows::projectionFromName(s) ? std::string()
+                                                  : fmt::format("'{}' is not one of {}", s, shadows::projectionNames());
+        },
+        "PROJECTION");
+}
+
 void addSceneOptions(CLI::App& command, SceneOptions& options)
 {
     command.add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
@@ -119,6 +129,13 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                                 shadows::filterCommandNames()))
         ->check(filterValidator());
     command
+        .add_option("--projection", options.projection,
+                    fmt::format("The directional cascades' projection, over the settings': {} (stable: bands of "
+                                "distance, shadow texels that stay put; close: bands of view depth, tiles fitted to "
+                                "their slices, more texels that swim as the camera turns)",
+                                shadows::projectionNames()))
+        ->check(projectionValidator());
+    command
         .add_option("--light-size", options.lightSize,
                     fmt::format("Every light's source size for soft shadows: degrees of angular diameter for "
                                 "directional lights (0 to {}), world units of radius for spot and point lights (0 to "
@@ -162,6 +179,18 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                 return shadows::parseRealtimeCasters(s) ? std::string() : fmt::format("'{}' is not all or dynamic", s);
             },
             "CASTERS"));
+    command
+        .add_option("--baked", options.baked,
+                    "Static shadow maps from this `penumbra bake` folder instead of drawing static casters; a bake that "
+                    "does not match the scene, its lights or settings is refused")
+        ->check(CLI::ExistingDirectory);
+}
+
+std::optional<shadows::StaticShadowBake> loadBake(const SceneOptions& options)
+{
+    if (options.baked.empty())
+        return std::nullopt;
+    return shadows::readStaticShadowBake(options.baked);
 }
 
 namespace {
@@ -238,10 +267,15 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     if (!options.ambient.empty())
         frame.ambient = parseAmbientOption(options.ambient).value();
     frame.maxAnisotropy = options.anisotropy.value_or(frame.maxAnisotropy);
+    if (!options.projection.empty())
+        frame.shadows.directional.projection = shadows::projectionFromName(options.projection).value();
     if (!options.staticMaps.empty())
         frame.shadows.staticMaps.update = shadows::parseStaticShadowUpdate(options.staticMaps).value();
     if (!options.realtimeCasters.empty())
         frame.shadows.staticMaps.realtimeCasters = shadows::parseRealtimeCasters(options.realtimeCasters).value();
+    // A bake is static maps: kept as loaded.
+    if (!options.baked.empty() && !shadows::hasStaticMaps(frame.shadows))
+        frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
     return frame;
 }
 
@@ -259,6 +293,12 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
         fmt::print("; atlas pass {:.2f} ms, other atlas pass {:.2f} ms, lit pass {:.2f} ms", *s.atlasPassMs,
                    *s.otherAtlasPassMs, *s.litPassMs);
     fmt::print("\n");
+    if (!pictures.texelsPerMetre.empty()) {
+        fmt::print("  directional shadow texels per metre at view depth");
+        for (std::size_t i = 0; i < pictures.texelsPerMetre.size(); ++i)
+            fmt::print(" {:g} m: {:.1f}{}", kTexelDensityDepths[i], pictures.texelsPerMetre[i],
+                       i + 1 < pictures.texelsPerMetre.size() ? "," : "\n");
+    }
     for (const std::string& note : pictures.notes)
         fmt::print("  note: {}\n", note);
 }

@@ -4,6 +4,7 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/Scene.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 
 #include <CLI/CLI.hpp>
 #include <memory>
@@ -14,8 +15,8 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --filter, --light-size, --dynamic, --static-maps,
-// --realtime-casters.
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --filter, --light-size, --projection, --dynamic,
+// --static-maps, --realtime-casters.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -28,9 +29,11 @@ struct SceneOptions {
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
     std::string filter;             // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
+    std::string projection;         // shadows::projectionFromName; empty: the settings file's
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
     std::string staticMaps;      // shadows::StaticShadowUpdate by its JSON name; empty: the settings file's
     std::string realtimeCasters; // shadows::RealtimeCasters by its JSON name; empty: the settings file's
+    std::string baked;           // a `penumbra bake` folder: static maps from it; empty: none
 };
 
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
@@ -38,6 +41,9 @@ CLI::Validator anisotropyValidator();
 
 // --filter's check, for every command that takes it: a shadows::filterFromCommandName name.
 CLI::Validator filterValidator();
+
+// --projection's check, for every command that takes it: a shadows::projectionFromName name.
+CLI::Validator projectionValidator();
 
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);
@@ -50,6 +56,9 @@ struct LoadedScene {
 // The built-in scene or glTF file, with --camera, --light, --normal-bias-side and --dynamic applied. Throws scene::SceneError (a glTF file's
 // errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
+
+// --baked's folder read (shadows::readStaticShadowBake), or nullopt without --baked.
+std::optional<shadows::StaticShadowBake> loadBake(const SceneOptions& options);
 
 // Size, shadow settings, ambient light and anisotropy of the frame (--ambient and --anisotropy over the settings
 // file's "ambient" and "anisotropy"); throws

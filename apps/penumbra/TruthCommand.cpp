@@ -120,8 +120,11 @@ void truth(const TruthOptions& options)
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);
 
+    std::optional<shadows::StaticShadowBake> bake = loadBake(options.scene);
     auto device = createDevice(toolDeviceDesc(options.backend, options.validate));
     render::SceneRenderer renderer(*device, scene);
+    if (bake)
+        renderer.useBakedShadows(std::move(*bake));
     const render::ShadowPlans plans = renderer.planShadows(scene.camera, frame);
     const std::vector<scene::LightRef> lights = shadowedLights(plans, scene);
     if (lights.empty())

@@ -36,6 +36,7 @@ int main(int argc, char** argv)
     penumbra::apps::addConfigurationsCommand(app);
     penumbra::apps::addBenchCommand(app);
     penumbra::apps::addTruthCommand(app);
+    penumbra::apps::addBakeCommand(app);
     penumbra::apps::addSoakCommand(app);
     penumbra::apps::addViewCommand(app);
     try {

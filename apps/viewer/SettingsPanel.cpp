@@ -31,6 +31,15 @@ std::array<const char*, shadows::kShadowFilterCount> filterNames()
 
 bool filterCombo(const char* label, shadows::ShadowFilter& filter) { return enumCombo(label, filter, filterNames()); }
 
+// shadows::CascadeProjection's names, in its order.
+std::array<const char*, shadows::kCascadeProjectionCount> projectionNames()
+{
+    std::array<const char*, shadows::kCascadeProjectionCount> names{};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        names[i] = shadows::cascadeProjectionNames()[i].name.data();
+    return names;
+}
+
 // A light's own filter: "atlas" (scene::kAtlasShadowFilter) or one of the filters.
 bool lightFilterCombo(std::int32_t& filter)
 {
@@ -101,6 +110,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= ImGui::SliderFloat3("cascade ratios", &d.cascadeRatios.x, 0.0f, 1.0f);
     changed |= ImGui::SliderFloat("cascade fade", &d.cascadeFade, 0.001f, 1.0f);
     changed |= enumCombo("cascade blend", d.cascadeBlend, std::array{"hard", "soft", "dither"});
+    changed |= enumCombo("projection", d.projection, projectionNames());
     ImGui::Separator();
     ImGui::TextUnformatted("spot and point lights");
     ImGui::PushID("other");
@@ -114,6 +124,15 @@ bool shadowSettings(shadows::ShadowSettings& s)
     ImGui::Separator();
     ImGui::TextUnformatted("soft shadows (poisson, pcss)");
     changed |= softSettings(s.soft);
+    ImGui::Separator();
+    ImGui::TextUnformatted("static shadow maps");
+    ImGui::PushID("static");
+    shadows::StaticShadowSettings& m = s.staticMaps;
+    changed |= enumCombo("update", m.update, std::array{"every frame (none)", "on change", "on demand"});
+    changed |= enumCombo("realtime casters", m.realtimeCasters, std::array{"all", "dynamic"});
+    changed |= ImGui::InputScalar("directional atlas size", ImGuiDataType_U32, &m.directionalAtlasSize);
+    changed |= ImGui::InputScalar("other atlas size", ImGuiDataType_U32, &m.otherAtlasSize);
+    ImGui::PopID();
     return changed;
 }
 
@@ -196,6 +215,12 @@ bool objectSettings(std::vector<ObjectShadowState>& objects, const scene::Scene&
             ImGui::SameLine();
             changed |= ImGui::Checkbox("receive", &object.receive);
             ImGui::SameLine();
+            bool dynamic = object.mobility == scene::Mobility::Dynamic;
+            if (ImGui::Checkbox("dynamic", &dynamic)) {
+                object.mobility = dynamic ? scene::Mobility::Dynamic : scene::Mobility::Static;
+                changed = true;
+            }
+            ImGui::SameLine();
             ImGui::TextUnformatted(scene.objects[std::size_t(i)].name.c_str());
             ImGui::PopID();
         }
@@ -228,8 +253,14 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     ImGui::SameLine();
     changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
     changed |= ImGui::SliderFloat("texture anisotropy", &state.maxAnisotropy, 1.0f, 16.0f, "%.0f");
-    if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen))
+    if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
         changed |= shadowSettings(state.shadows);
+        if (state.shadows.staticMaps.update == shadows::StaticShadowUpdate::OnDemand &&
+            ImGui::Button("redraw static maps")) {
+            state.redrawStaticMaps = true;
+            changed = true;
+        }
+    }
     if (ImGui::CollapsingHeader("lights")) {
         for (std::size_t i = 0; i < state.lights.size(); ++i)
             changed |= lightSettings(state.lights[i], i);
@@ -238,7 +269,7 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
         for (std::size_t i = 0; i < state.pointLights.size(); ++i)
             changed |= pointLightSettings(state.pointLights[i], i);
     }
-    if (ImGui::CollapsingHeader("objects: cast and receive shadows"))
+    if (ImGui::CollapsingHeader("objects: cast and receive shadows, dynamic"))
         changed |= objectSettings(state.objects, scene);
     ImGui::End();
 

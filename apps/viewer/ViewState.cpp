@@ -26,6 +26,7 @@ std::string applyViewState(const ViewState& edited, ViewState& applied, scene::S
     for (std::size_t i = 0; i < scene.objects.size() && i < candidate.objects.size(); ++i) {
         scene.objects[i].castShadows = candidate.objects[i].cast;
         scene.objects[i].receiveShadows = candidate.objects[i].receive;
+        scene.objects[i].mobility = candidate.objects[i].mobility;
     }
     applied = std::move(candidate);
     return {};
@@ -38,7 +39,7 @@ ViewState viewStateOf(const scene::Scene& scene)
     state.spotLights = scene.spotLights;
     state.pointLights = scene.pointLights;
     for (const scene::Object& object : scene.objects)
-        state.objects.push_back({object.castShadows, object.receiveShadows});
+        state.objects.push_back({object.castShadows, object.receiveShadows, object.mobility});
     return state;
 }
 

@@ -12,10 +12,11 @@
 
 namespace penumbra::viewer {
 
-// One object's shadow choices as the panel edits them (scene::Object::castShadows, receiveShadows).
+// One object's shadow choices as the panel edits them (scene::Object::castShadows, receiveShadows, mobility).
 struct ObjectShadowState {
     scene::ShadowCasting cast = scene::ShadowCasting::On;
     bool receive = true;
+    scene::Mobility mobility = scene::Mobility::Static;
 };
 
 // What the panel edits. The viewer renders with the last state that passed validation, so an
@@ -29,6 +30,7 @@ struct ViewState {
     bool cascadeView = false;
     bool atlasOverlay = false;
     float maxAnisotropy = 8.0f; // render::FrameDesc::maxAnisotropy
+    bool redrawStaticMaps = false; // once: SceneRenderer::requestStaticShadowUpdate (the on-demand mode's button)
 };
 
 // What the panel shows besides the state.

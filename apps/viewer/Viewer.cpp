@@ -52,6 +52,8 @@ public:
         applied_.cascadeView = options.cascadeView;
         applied_.atlasOverlay = options.atlasOverlay;
         applied_.maxAnisotropy = options.maxAnisotropy;
+        if (options.projection)
+            applied_.shadows.directional.projection = *options.projection;
         edited_ = applied_;
         if (options.ui) {
             imgui_.emplace(window_.handle());
@@ -126,6 +128,9 @@ private:
         frame.shadows = applied_.shadows;
         frame.cascadeView = applied_.cascadeView;
         frame.maxAnisotropy = applied_.maxAnisotropy;
+        if (applied_.redrawStaticMaps)
+            renderer_.requestStaticShadowUpdate();
+        applied_.redrawStaticMaps = edited_.redrawStaticMaps = false;
         status_.stats = renderer_.render(camera_.camera(), frame);
         status_.notes = renderer_.notes();
         status_.atlasPicture = nullptr;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/shadows/ShadowSettings.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -20,6 +22,7 @@ struct ViewerOptions {
     bool validate = false;               // the validation layer / debug output (penumbra view --validate)
     std::string filter;             // every light's shadow filter (apps::applyLightOverrides); empty: their own
     std::optional<float> lightSize; // every light's source size
+    std::optional<shadows::CascadeProjection> projection; // the directional cascades'; nullopt: the settings'
 };
 
 // Opens the window and runs the viewer. Throws rhi::Error when there is no display, no driver,

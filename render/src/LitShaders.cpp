@@ -1,6 +1,7 @@
 #include "penumbra/render/LitUniforms.hpp"
 
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/FilterConstants.hpp"
 
 #include <fmt/format.h>
@@ -39,7 +40,7 @@ rhi::ShaderSource litShader(std::string_view fileName, bool depthPrepassed)
     rhi::ShaderSource source = shaders::load(fileName);
     source.includes.push_back({"lit_constants.glsl", litConstants(depthPrepassed)});
     source.includes.push_back({"shadow_constants.glsl",
-                               shadows::filterConstantsGlsl() +
+                               shadows::filterConstantsGlsl() + shadows::cascadeProjectionConstantsGlsl() +
                                    fmt::format("#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
                                                "#define PENUMBRA_BINDING_POISSON_DISKS {}\n"
                                                "#define PENUMBRA_BINDING_STATIC_SHADOWS {}\n"

@@ -2,7 +2,9 @@
 
 #include "TextureSampling.hpp"
 #include "passes/DepthPrepass.hpp"
+#include "static/StaticMapHashes.hpp"
 #include "static/StaticShadowCache.hpp"
+#include "static/StaticTileCache.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
@@ -197,22 +199,34 @@ void checkPlansFitFrame(const ShadowPlans& plans, const shadows::ShadowSettings&
                                      shadows::maxShadowCubes));
 }
 
-// RealtimeCasters::Dynamic: the realtime views keep their fit but draw no static caster (the static maps hold them).
-void dropStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_t>& staticCasters)
+bool isStatic(const std::vector<std::uint32_t>& staticCasters, std::uint32_t caster)
 {
+    return std::binary_search(staticCasters.begin(), staticCasters.end(), caster);
+}
+
+// RealtimeCasters::Dynamic: the tiles' static casters, which the realtime atlases take from StaticTileCache, and
+// the tiles without them, which the passes draw over it.
+struct SplitTiles {
+    std::vector<shadows::ShadowTileDraw> directional;
+    std::vector<shadows::ShadowTileDraw> other;
+};
+
+SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_t>& staticCasters)
+{
+    SplitTiles split{shadows::DirectionalShadowPass::tileDraws(plans.directional),
+                     shadows::OtherShadowPass::tileDraws(plans.other)};
+    for (std::vector<shadows::ShadowTileDraw>* tiles : {&split.directional, &split.other})
+        for (shadows::ShadowTileDraw& tile : *tiles)
+            std::erase_if(tile.casters, [&](std::uint32_t i) { return !isStatic(staticCasters, i); });
     const auto drop = [&](std::vector<std::uint32_t>& casters) {
-        std::erase_if(casters, [&](std::uint32_t i) {
-            return std::binary_search(staticCasters.begin(), staticCasters.end(), i);
-        });
+        std::erase_if(casters, [&](std::uint32_t i) { return isStatic(staticCasters, i); });
     };
     for (shadows::ShadowedDirectionalLight& light : plans.directional.lights)
         for (shadows::DirectionalCascadePlan& cascade : light.cascades)
             drop(cascade.casters.casters);
     for (shadows::OtherAtlasTile& tile : plans.other.tiles)
         drop(tile.view.casters);
-    for (shadows::ShadowCube& cube : plans.other.cubes)
-        for (shadows::LocalShadowView& face : cube.faces)
-            drop(face.casters);
+    return split;
 }
 
 LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
@@ -311,6 +325,9 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     }
     depthPrepass_ = std::make_unique<DepthPrepass>(device, kDepthFormat);
     staticShadows_ = std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat());
+    directionalStaticTiles_ =
+        std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "directional atlas, static casters");
+    otherStaticTiles_ = std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "other atlas, static casters");
 }
 
 SceneRenderer::~SceneRenderer() = default;
@@ -320,6 +337,33 @@ const shadows::ShadowAtlas& SceneRenderer::staticDirectionalAtlas() const { retu
 const shadows::ShadowAtlas& SceneRenderer::staticOtherAtlas() const { return staticShadows_->otherAtlas(); }
 
 const shadows::StaticShadowPlan& SceneRenderer::staticPlan() const { return staticShadows_->plan(); }
+
+void SceneRenderer::useBakedShadows(shadows::StaticShadowBake bake) { staticShadows_->useBake(std::move(bake)); }
+
+shadows::StaticShadowBake SceneRenderer::bakeStaticShadows(const std::string& configuration) const
+{
+    const scene::Scene& scene = gpuScene_.scene();
+    const shadows::StaticShadowPlan& plan = staticShadows_->plan();
+    shadows::StaticShadowBake bake{configuration, {}, {}};
+    for (const scene::Object& object : scene.objects)
+        if (object.mobility == scene::Mobility::Static && scene.castsShadows(object))
+            bake.objects.push_back(object.name);
+    const std::vector<std::uint64_t> hashes = staticMapHashes(scene, plan);
+    std::optional<rhi::DepthImage> directional, other;
+    for (std::size_t i = 0; i < plan.maps.size(); ++i) {
+        const shadows::StaticShadowMap& map = plan.maps[i];
+        const bool isDirectional = map.kind == shadows::ShadowLightKind::Directional;
+        std::optional<rhi::DepthImage>& depth = isDirectional ? directional : other;
+        if (!depth)
+            depth = rhi::readDepth(device_, (isDirectional ? staticDirectionalAtlas() : staticOtherAtlas()).texture());
+        shadows::BakedShadowMap baked = shadows::bakeShadowMap(
+            map, isDirectional ? plan.directionalAtlas : plan.otherAtlas, *depth, device_.conventions());
+        baked.lightName = lightName(scene, map.kind, map.lightIndex);
+        baked.hash = hashes[i];
+        bake.maps.push_back(std::move(baked));
+    }
+    return bake;
+}
 
 void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
 {
@@ -488,13 +532,18 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     notes_ = frameNotes(gpuScene_.scene(), plans);
     if (anisotropy.note && !gpuScene_.scene().textures.empty())
         notes_.push_back(*anisotropy.note);
-    const std::vector<std::uint32_t> staticCasters = gpuScene_.staticCasters();
-    if (shadows::hasStaticMaps(frame.shadows) &&
-        frame.shadows.staticMaps.realtimeCasters == shadows::RealtimeCasters::Dynamic)
-        dropStaticCasters(plans, staticCasters);
+    const bool dynamicOnly = shadows::hasStaticMaps(frame.shadows) &&
+                             frame.shadows.staticMaps.realtimeCasters == shadows::RealtimeCasters::Dynamic;
+    const SplitTiles staticTiles = dynamicOnly ? splitStaticCasters(plans, gpuScene_.staticCasters()) : SplitTiles{};
     plan_ = std::move(plans.directional);
     otherPlan_ = std::move(plans.other);
 
+    if (staticShadows_->baked()) {
+        if (!shadows::hasStaticMaps(frame.shadows))
+            throw rhi::Error("baked shadows: the frame's settings keep no static maps (static.update is everyFrame); "
+                             "set it to onChange or onDemand");
+        staticShadows_->checkBake(plans.staticMaps, staticMapHashes(gpuScene_.scene(), plans.staticMaps));
+    }
     FrameStats stats;
     stats.notes = notes_;
     for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
@@ -524,10 +573,18 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     const rhi::UniformSlice staticShadowUniforms = uniforms_.push(staticShadows_->plan().uniforms);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 1);
-    stats.casterDraws = shadowPass_.record(commands, *atlas_, plan_, casters);
+    // Dynamic casters only: the tiles' static depth comes from the caches, then the passes draw over it.
+    const bool cachedDirectional = dynamicOnly && !staticTiles.directional.empty();
+    const bool cachedOther = dynamicOnly && !staticTiles.other.empty();
+    if (cachedDirectional)
+        stats.staticCasterDraws += directionalStaticTiles_->update(commands, *atlas_, staticTiles.directional, casters);
+    stats.casterDraws = shadowPass_.record(commands, *atlas_, plan_, casters, !cachedDirectional);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 2);
-    stats.otherCasterDraws = otherShadowPass_.record(commands, *otherAtlas_, *shadowCubes_, otherPlan_, casters);
+    if (cachedOther)
+        stats.staticCasterDraws += otherStaticTiles_->update(commands, *otherAtlas_, staticTiles.other, casters);
+    stats.otherCasterDraws =
+        otherShadowPass_.record(commands, *otherAtlas_, *shadowCubes_, otherPlan_, casters, !cachedOther);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 3);
     const rhi::UniformSlice litFrame = uniforms_.push(frameUniforms(camera, frame, LitView::Lit));

@@ -1,6 +1,7 @@
 #include "penumbra/render/ShadowTruth.hpp"
 
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
 
 #include <fmt/format.h>
@@ -19,13 +20,21 @@ float perspectiveTexel(const glm::mat4& projection, std::uint32_t tileSize, glm:
     return shadows::texelSizeAtUnitDistance(projection, tileSize) * glm::dot(fromLight, axis);
 }
 
-float directionalTexel(const shadows::DirectionalShadowPlan& plan, std::uint32_t index, glm::vec3 position)
+float directionalTexel(const shadows::DirectionalShadowPlan& plan, std::uint32_t index, const scene::Camera& camera,
+                       glm::vec3 position)
 {
     if (index >= plan.shadowSlots.size() || plan.shadowSlots[index] < 0)
         return 0.0f;
-    // The first cascade whose culling sphere holds the point, as the lit shader selects it.
-    for (const shadows::DirectionalCascadePlan& cascade :
-         plan.lights[static_cast<std::size_t>(plan.shadowSlots[index])].cascades) {
+    const auto& cascades = plan.lights[static_cast<std::size_t>(plan.shadowSlots[index])].cascades;
+    if (plan.uniforms.projection.x == static_cast<int>(shadows::CascadeProjection::Close)) {
+        // The band of the point's view depth, as the lit shader selects it.
+        const float viewDepth = glm::dot(position - camera.position, camera.forward);
+        const std::uint32_t cascade = shadows::selectCascade(plan.uniforms, position, viewDepth).index;
+        return cascade < cascades.size() ? cascades[cascade].fit.texelSize : 0.0f;
+    }
+    // The first cascade whose culling sphere holds the point (not shrunk by the filter: the edge margins of the
+    // ray cast take the coarser texel only past the sphere).
+    for (const shadows::DirectionalCascadePlan& cascade : cascades) {
         const glm::vec3 offset = position - cascade.fit.cullingSphere.centre;
         if (glm::dot(offset, offset) < cascade.fit.cullingSphere.radius * cascade.fit.cullingSphere.radius)
             return cascade.fit.texelSize;
@@ -65,13 +74,36 @@ scene::RenderedVisibility renderedVisibility(const rhi::Image& view)
     return v;
 }
 
+float directionalTexelsPerMetre(const shadows::DirectionalShadowPlan& plan, std::uint32_t lightIndex,
+                                const scene::Camera& camera, float aspect, float viewDepth)
+{
+    const glm::vec3 right = camera.right();
+    const glm::vec3 up = glm::normalize(glm::cross(right, camera.forward));
+    const float halfHeight = viewDepth * std::tan(0.5f * camera.fovY);
+    constexpr int kColumns = 16, kRows = 9;
+    float sum = 0.0f;
+    int covered = 0;
+    for (int row = 0; row < kRows; ++row)
+        for (int column = 0; column < kColumns; ++column) {
+            const float x = (2.0f * (static_cast<float>(column) + 0.5f) / kColumns - 1.0f) * halfHeight * aspect;
+            const float y = (2.0f * (static_cast<float>(row) + 0.5f) / kRows - 1.0f) * halfHeight;
+            const float texel = directionalTexel(plan, lightIndex, camera,
+                                                 camera.position + camera.forward * viewDepth + right * x + up * y);
+            if (texel > 0.0f) {
+                sum += 1.0f / texel;
+                ++covered;
+            }
+        }
+    return covered > 0 ? sum / static_cast<float>(covered) : 0.0f;
+}
+
 float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& settings, const scene::Scene& scene,
                       const scene::LightRef& light, glm::vec3 position)
 {
     switch (light.kind) {
     case scene::LightKind::Directional: {
         // A static map decides with the realtime shadow (the darker of the two), or alone beyond the cascades.
-        float texel = directionalTexel(plans.directional, light.index, position);
+        float texel = directionalTexel(plans.directional, light.index, scene.camera, position);
         for (const shadows::StaticShadowMap& map : plans.staticMaps.maps)
             if (map.kind == shadows::ShadowLightKind::Directional && map.lightIndex == light.index)
                 texel = std::max(texel, map.texelSize);

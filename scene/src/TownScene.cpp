@@ -15,7 +15,7 @@ Scene makeTownScene()
     const std::uint32_t ball = scene.addMaterial({.name = "ball", .baseColor = {0.85f, 0.25f, 0.2f, 1.0f}});
     scene.addObject("ground", scene.addMesh(makeBox({kTownHalfSize, 0.1f, kTownHalfSize})), ground,
                     glm::translate(glm::mat4(1.0f), {0.0f, -0.1f, 0.0f}));
-    // Blocks of kTownBlock metres on a grid, streets 8 wide between them along x and z; heights vary by a fixed
+    // Buildings 8 to 10 wide on a 25 metre grid, streets of 15 or more between them along x and z; heights vary by a fixed
     // pattern, so shadows of every length lie on the streets.
     constexpr int kBlocks = 8;
     constexpr float kPitch = 2.0f * kTownHalfSize / kBlocks;
@@ -24,7 +24,7 @@ Scene makeTownScene()
             const float height = 6.0f + 4.0f * static_cast<float>((row * 5 + column * 3) % 5);
             const glm::vec3 centre{-kTownHalfSize + kPitch * (static_cast<float>(column) + 0.5f), 0.5f * height,
                                    -kTownHalfSize + kPitch * (static_cast<float>(row) + 0.5f)};
-            const float half = 0.5f * (kPitch - 8.0f) * (0.55f + 0.1f * static_cast<float>((row + column) % 3));
+            const float half = 0.5f * (kPitch - 12.0f) * (0.6f + 0.1f * static_cast<float>((row + column) % 3));
             scene.addObject("building " + std::to_string(row * kBlocks + column + 1),
                             scene.addMesh(makeBox({half, 0.5f * height, half})), walls,
                             glm::translate(glm::mat4(1.0f), centre));
@@ -33,8 +33,8 @@ Scene makeTownScene()
                                                    glm::translate(glm::mat4(1.0f), kTownBallStart))];
     moving.mobility = Mobility::Dynamic;
     // Low in the west-south-west, so the buildings throw long shadows along the streets.
-    scene.lights = {{.name = "sun", .intensity = 2.5f, .direction = glm::normalize(glm::vec3(0.7f, -0.55f, 0.45f))}};
-    scene.camera = lookAt({-6.0f, 5.0f, 70.0f}, {10.0f, 0.0f, -40.0f}, glm::radians(60.0f));
+    scene.lights = {{.name = "sun", .intensity = 2.5f, .direction = glm::normalize(glm::vec3(0.75f, -0.5f, -0.35f))}};
+    scene.camera = lookAt({-20.0f, 30.0f, 125.0f}, {15.0f, 0.0f, 10.0f}, glm::radians(60.0f));
     scene.camera.farPlane = 400.0f;
     return scene;
 }

@@ -1,6 +1,7 @@
 #include "penumbra/shadows/CasterCulling.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -22,12 +23,10 @@ bool insideSphere(const Bounds& box, glm::vec3 centre, float radius)
     return glm::dot(farthest, farthest) <= radius * radius;
 }
 
-} // namespace
-
-float cascadeBlendCullingFactor(float cascadeFade) { return std::max(0.0f, 0.8f - cascadeFade); }
-
-CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, std::span<const Bounds> casterBounds,
-                                      const std::optional<Sphere>& previousCullingSphere, float cullingFactor)
+// The culling loop of either fit: `heldByPrevious` says whether the previous cascade already holds a caster's shadow.
+template <typename HeldByPrevious>
+CasterCullingResult cullCasters(const DirectionalShadowCascade& cascade, std::span<const Bounds> casterBounds,
+                                HeldByPrevious heldByPrevious)
 {
     CasterCullingResult result;
     for (std::uint32_t i = 0; i < casterBounds.size(); ++i) {
@@ -35,14 +34,52 @@ CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, s
         if (!overlapsCascade(lightSpaceBounds(cascade.basis, caster), cascade))
             continue;
         ++result.overlapping;
-        if (previousCullingSphere &&
-            insideSphere(caster, previousCullingSphere->centre, previousCullingSphere->radius * cullingFactor)) {
+        if (heldByPrevious(caster)) {
             ++result.culledByBias;
             continue;
         }
         result.casters.push_back(i);
     }
     return result;
+}
+
+} // namespace
+
+float cascadeBlendCullingFactor(float cascadeFade) { return std::max(0.0f, 0.8f - cascadeFade); }
+
+CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, std::span<const Bounds> casterBounds,
+                                      const std::optional<Sphere>& previousCullingSphere, float cullingFactor)
+{
+    return cullCasters(cascade, casterBounds, [&](const Bounds& caster) {
+        return previousCullingSphere &&
+               insideSphere(caster, previousCullingSphere->centre, previousCullingSphere->radius * cullingFactor);
+    });
+}
+
+bool insideFrustumSlice(const Bounds& box, const FrustumSlice& slice, float depthFactor)
+{
+    const ShadowCamera& camera = slice.camera;
+    const glm::vec3 right = glm::cross(camera.forward, camera.up);
+    const float tanY = std::tan(0.5f * camera.fovY);
+    const float tanX = tanY * camera.aspect;
+    const float farDistance = slice.nearDistance + (slice.farDistance - slice.nearDistance) * depthFactor;
+    for (const glm::vec3& corner : box.corners()) {
+        const glm::vec3 offset = corner - camera.position;
+        const float depth = glm::dot(offset, camera.forward);
+        if (depth < slice.nearDistance || depth > farDistance || std::abs(glm::dot(offset, right)) > depth * tanX ||
+            std::abs(glm::dot(offset, camera.up)) > depth * tanY)
+            return false;
+    }
+    return true;
+}
+
+CasterCullingResult cullCloseFitShadowCasters(const DirectionalShadowCascade& cascade,
+                                              std::span<const Bounds> casterBounds,
+                                              const std::optional<FrustumSlice>& previousSlice, float cullingFactor)
+{
+    return cullCasters(cascade, casterBounds, [&](const Bounds& caster) {
+        return previousSlice && insideFrustumSlice(caster, *previousSlice, cullingFactor);
+    });
 }
 
 } // namespace penumbra::shadows

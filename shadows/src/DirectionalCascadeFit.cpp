@@ -29,6 +29,29 @@ glm::mat4 lightView(const LightBasis& b, glm::vec2 snapped, float nearDepth)
     return view;
 }
 
+// Depth planes and matrices of a fit whose square (halfSize, snappedCentre) is set: the near plane at minDepth pulled
+// back over every caster box whose light-space footprint overlaps the square, then by nearPlaneOffset; the far plane
+// at maxDepth.
+void placeDepthPlanes(DirectionalShadowCascade& c, float minDepth, float maxDepth, float nearPlaneOffset,
+                      std::span<const Bounds> casterBounds, const rhi::Conventions& conventions)
+{
+    c.nearDepth = minDepth;
+    for (const Bounds& caster : casterBounds) {
+        const Bounds light = lightSpaceBounds(c.basis, caster);
+        if (overlapsSquare(light, c.snappedCentre, c.halfSize))
+            c.nearDepth = std::min(c.nearDepth, light.min.z);
+    }
+    c.nearDepth -= nearPlaneOffset;
+    c.farDepth = maxDepth;
+
+    c.view = lightView(c.basis, c.snappedCentre, c.nearDepth);
+    c.projection =
+        conventions.orthographic(-c.halfSize, c.halfSize, -c.halfSize, c.halfSize, 0.0f, c.farDepth - c.nearDepth);
+    c.viewProjection = c.projection * c.view;
+}
+
+glm::vec2 snapToTexels(glm::vec2 centre, float texelSize) { return glm::round(centre / texelSize) * texelSize; }
+
 } // namespace
 
 DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightBasis& basis, std::uint32_t tileSize,
@@ -43,21 +66,38 @@ DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const Light
     c.halfSize = sphere.radius / (1.0f - std::sqrt(2.0f) / tile);
     c.texelSize = 2.0f * c.halfSize / tile;
     const glm::vec3 centre = basis.toLight(sphere.centre);
-    c.snappedCentre = glm::round(glm::vec2(centre) / c.texelSize) * c.texelSize;
+    c.fittedCentre = glm::vec2(centre);
+    c.snappedCentre = snapToTexels(c.fittedCentre, c.texelSize);
+    placeDepthPlanes(c, centre.z - sphere.radius, centre.z + sphere.radius, nearPlaneOffset, casterBounds, conventions);
+    return c;
+}
 
-    c.nearDepth = centre.z - sphere.radius;
-    for (const Bounds& caster : casterBounds) {
-        const Bounds light = lightSpaceBounds(basis, caster);
-        if (overlapsSquare(light, c.snappedCentre, c.halfSize))
-            c.nearDepth = std::min(c.nearDepth, light.min.z);
-    }
-    c.nearDepth -= nearPlaneOffset;
-    c.farDepth = centre.z + sphere.radius;
+float closeFitHalfSize(const Bounds& sliceBounds, std::uint32_t tileSize, float marginTexels)
+{
+    // h = e + (m + 1/2) texel with texel = 2h / tile.
+    const glm::vec3 extent = sliceBounds.max - sliceBounds.min;
+    const float half = 0.5f * std::max(extent.x, extent.y);
+    const float exact = half / (1.0f - (2.0f * marginTexels + 1.0f) / static_cast<float>(tileSize));
+    // Rounded up to 12 significant bits (at most 0.05 % larger): float rounding of a translated slice's corners
+    // changes its bounds' size by an ulp or so, which would move every snapped texel as the camera translates.
+    int exponent = 0;
+    std::frexp(exact, &exponent);
+    const float quantum = std::ldexp(1.0f, exponent - 12);
+    return std::ceil(exact / quantum) * quantum;
+}
 
-    c.view = lightView(basis, c.snappedCentre, c.nearDepth);
-    c.projection =
-        conventions.orthographic(-c.halfSize, c.halfSize, -c.halfSize, c.halfSize, 0.0f, c.farDepth - c.nearDepth);
-    c.viewProjection = c.projection * c.view;
+DirectionalShadowCascade fitCloseCascade(const Bounds& sliceBounds, float halfSize, const Sphere& sphere,
+                                         const LightBasis& basis, std::uint32_t tileSize, float nearPlaneOffset,
+                                         std::span<const Bounds> casterBounds, const rhi::Conventions& conventions)
+{
+    DirectionalShadowCascade c;
+    c.basis = basis;
+    c.cullingSphere = sphere;
+    c.halfSize = halfSize;
+    c.texelSize = 2.0f * c.halfSize / static_cast<float>(tileSize);
+    c.fittedCentre = 0.5f * glm::vec2(sliceBounds.min + sliceBounds.max);
+    c.snappedCentre = snapToTexels(c.fittedCentre, c.texelSize);
+    placeDepthPlanes(c, sliceBounds.min.z, sliceBounds.max.z, nearPlaneOffset, casterBounds, conventions);
     return c;
 }
 

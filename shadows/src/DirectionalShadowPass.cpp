@@ -18,27 +18,38 @@ DirectionalShadowPass::DirectionalShadowPass(rhi::Device& device, const CasterVe
 {
 }
 
+std::vector<ShadowTileDraw> DirectionalShadowPass::tileDraws(const DirectionalShadowPlan& plan)
+{
+    std::vector<ShadowTileDraw> tiles;
+    for (const ShadowedDirectionalLight& light : plan.lights)
+        for (std::uint32_t c = 0; c < light.cascades.size(); ++c) {
+            const DirectionalCascadePlan& cascade = light.cascades[c];
+            tiles.push_back({cascade.tile,
+                             cascade.viewport,
+                             {.viewProjection = cascade.fit.viewProjection,
+                              .slopeScaleBias = light.slopeScaleBias,
+                              .pancake = true,
+                              .ditherOrigin = ditherOrigin(cascade.fit, plan.atlas, cascade.tile),
+                              .normalOffset = casterNormalOffset(plan, light, c)},
+                             cascade.casters.casters});
+        }
+    return tiles;
+}
+
 std::uint32_t DirectionalShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas,
-                                            const DirectionalShadowPlan& plan, std::span<const ShadowCaster> casters)
+                                            const DirectionalShadowPlan& plan, std::span<const ShadowCaster> casters,
+                                            bool clear)
 {
     if (!plan.lights.empty() && atlas.size() != plan.atlas.atlasSize())
         throw rhi::Error(fmt::format("shadow atlas is {} texels wide, the plan was made for {}", atlas.size(),
                                      plan.atlas.atlasSize()));
     draws_.reset();
     std::uint32_t draws = 0;
-    commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = true});
-    for (const ShadowedDirectionalLight& light : plan.lights) {
-        for (std::uint32_t c = 0; c < light.cascades.size(); ++c) {
-            const DirectionalCascadePlan& cascade = light.cascades[c];
-            commands.setViewport(cascade.viewport);
-            commands.setScissor(scissorOf(cascade.viewport));
-            const ShadowViewDraw view{.viewProjection = cascade.fit.viewProjection,
-                                      .slopeScaleBias = light.slopeScaleBias,
-                                      .pancake = true,
-                                      .ditherOrigin = ditherOrigin(cascade.fit, plan.atlas, cascade.tile),
-                                      .normalOffset = casterNormalOffset(plan, light, c)};
-            draws += draws_.draw(commands, atlas.format(), view, cascade.casters.casters, casters);
-        }
+    commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = clear});
+    for (const ShadowTileDraw& tile : tileDraws(plan)) {
+        commands.setViewport(tile.viewport);
+        commands.setScissor(scissorOf(tile.viewport));
+        draws += draws_.draw(commands, atlas.format(), tile.view, tile.casters, casters);
     }
     commands.endPass();
     return draws;

@@ -89,6 +89,7 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
     u.distanceFade = shadowDistanceFade(settings);
     u.config = {static_cast<int>(plan.splits.count), static_cast<int>(settings.directional.filter),
                 static_cast<int>(settings.directional.cascadeBlend), static_cast<int>(plan.lights.size())};
+    u.projection = {static_cast<int>(settings.directional.projection), 0, 0, 0};
     for (std::size_t i = 0; i < plan.cascadeData.size(); ++i) {
         u.cullingSpheres[i] = plan.cascadeData[i].selectionSphere;
         u.cascadeData[i] = plan.cascadeData[i].data;
@@ -102,6 +103,46 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
         for (const DirectionalCascadePlan& cascade : light.cascades)
             u.worldToAtlas[cascade.tile] = cascade.worldToAtlas;
     }
+}
+
+// The frustum slice each cascade is fitted to. Close fit with a soft or dithered blend: a slice starts where the
+// previous cascade's fade band does, so that the blended receivers lie in both tiles.
+std::vector<FrustumSlice> cascadeSlices(const ShadowCamera& camera, const CascadeSplits& splits,
+                                        const DirectionalShadowSettings& directional)
+{
+    const bool overlap =
+        directional.projection == CascadeProjection::Close && directional.cascadeBlend != CascadeBlend::Hard;
+    std::vector<FrustumSlice> slices;
+    for (std::uint32_t c = 0; c < splits.count; ++c) {
+        const float nearDistance = overlap && c > 0
+                                       ? std::max(camera.nearPlane, splits.nearOf(c) * (1.0f - directional.cascadeFade))
+                                       : splits.nearOf(c);
+        slices.push_back({camera, nearDistance, splits.farOf(c)});
+    }
+    return slices;
+}
+
+// Close fit: one tile half size per cascade, the largest any light's slice bounds need, so that every light's tile
+// of a cascade has the texel size its CascadeData carries. The margin is the widest light's reach past its slice:
+// its filter's normal bias factor in texels for the taps, sqrt 2 times that times its normal bias for the offset.
+std::vector<float> closeFitHalfSizes(const std::vector<FrustumSlice>& slices, std::span<const ShadowedDirectionalLight> lights,
+                                     std::uint32_t tileSize)
+{
+    float margin = 0.0f;
+    for (const ShadowedDirectionalLight& light : lights) {
+        const float receiverBias = light.normalBiasSide == NormalBiasSide::Receiver ? light.normalBias : 0.0f;
+        margin = std::max(margin, normalBiasFilterFactor(light.filter) * (1.0f + std::sqrt(2.0f) * receiverBias));
+    }
+    std::vector<float> halfSizes;
+    for (const FrustumSlice& slice : slices) {
+        const std::array<glm::vec3, 8> corners =
+            frustumSliceCorners(slice.camera, slice.nearDistance, slice.farDistance);
+        float half = 0.0f;
+        for (const ShadowedDirectionalLight& light : lights)
+            half = std::max(half, closeFitHalfSize(lightSpaceBounds(lightBasis(light.direction), corners), tileSize, margin));
+        halfSizes.push_back(half);
+    }
+    return halfSizes;
 }
 
 } // namespace
@@ -145,45 +186,63 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     }
 
     const std::uint32_t cascadeCount = directional.cascadeCount;
+    const bool close = directional.projection == CascadeProjection::Close;
     plan.atlas = ShadowAtlasLayout(directional.atlasSize, static_cast<std::uint32_t>(selected.size()) * cascadeCount);
+    const std::vector<FrustumSlice> slices = cascadeSlices(camera, plan.splits, directional);
     if (!selected.empty()) {
-        for (std::uint32_t c = 0; c < cascadeCount; ++c)
-            plan.cullingSpheres.push_back(frustumSliceSphere(camera, plan.splits.nearOf(c), plan.splits.farOf(c)));
+        for (const FrustumSlice& slice : slices)
+            plan.cullingSpheres.push_back(frustumSliceSphere(camera, slice.nearDistance, slice.farDistance));
     }
-    const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
     for (std::uint32_t slot = 0; slot < selected.size(); ++slot) {
         const DirectionalShadowLightInput& input = lights[selected[slot]];
-        ShadowedDirectionalLight light{selected[slot],
-                                       input.strength,
-                                       input.normalBias,
-                                       input.slopeScaleBias,
-                                       input.nearPlaneOffset,
-                                       input.filter.value_or(directional.filter),
-                                       input.angularDiameter,
-                                       directionalTileIndex(slot, 0, cascadeCount),
-                                       {},
-                                       input.normalBiasSide,
-                                       input.direction};
-        const LightBasis basis = lightBasis(input.direction);
+        plan.lights.push_back({selected[slot],
+                               input.strength,
+                               input.normalBias,
+                               input.slopeScaleBias,
+                               input.nearPlaneOffset,
+                               input.filter.value_or(directional.filter),
+                               input.angularDiameter,
+                               directionalTileIndex(slot, 0, cascadeCount),
+                               {},
+                               input.normalBiasSide,
+                               input.direction});
+    }
+    const std::vector<float> halfSizes =
+        close ? closeFitHalfSizes(slices, plan.lights, plan.atlas.tileSize()) : std::vector<float>();
+    const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
+    for (std::uint32_t slot = 0; slot < plan.lights.size(); ++slot) {
+        ShadowedDirectionalLight& light = plan.lights[slot];
+        const LightBasis basis = lightBasis(light.direction);
         for (std::uint32_t c = 0; c < cascadeCount; ++c) {
             DirectionalCascadePlan cascade;
-            cascade.fit = fitDirectionalCascade(plan.cullingSpheres[c], basis, plan.atlas.tileSize(),
-                                                input.nearPlaneOffset, casterBounds, conventions);
+            const FrustumSlice& slice = slices[c];
+            cascade.fit =
+                close ? fitCloseCascade(
+                            lightSpaceBounds(basis, frustumSliceCorners(camera, slice.nearDistance, slice.farDistance)),
+                            halfSizes[c], plan.cullingSpheres[c], basis, plan.atlas.tileSize(), light.nearPlaneOffset,
+                            casterBounds, conventions)
+                      : fitDirectionalCascade(plan.cullingSpheres[c], basis, plan.atlas.tileSize(),
+                                              light.nearPlaneOffset, casterBounds, conventions);
             cascade.tile = directionalTileIndex(slot, c, cascadeCount);
             cascade.worldToAtlas = worldToAtlas(cascade.fit.viewProjection, cascade.tile, plan.atlas, conventions);
             cascade.viewport = plan.atlas.viewport(cascade.tile);
-            const std::optional<Sphere> previous =
-                c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt;
-            cascade.casters = cullShadowCasters(cascade.fit, casterBounds, previous, cullingFactor);
+            if (close)
+                cascade.casters = cullCloseFitShadowCasters(
+                    cascade.fit, casterBounds, c > 0 ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
+                    cullingFactor);
+            else
+                cascade.casters = cullShadowCasters(
+                    cascade.fit, casterBounds,
+                    c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt, cullingFactor);
             light.cascades.push_back(std::move(cascade));
         }
-        plan.lights.push_back(std::move(light));
     }
-    // The texel size depends on the sphere's radius and the tile size only, so any light's serves.
+    // The texel size depends on the slice and the tile size only (close fit: the planner gives every light's tile of
+    // a cascade the same half size), so any light's serves.
     if (!plan.lights.empty())
         for (std::uint32_t c = 0; c < cascadeCount; ++c)
-            plan.cascadeData.push_back(
-                cascadeData(plan.cullingSpheres[c], plan.lights[0].cascades[c].fit.texelSize, directional.filter));
+            plan.cascadeData.push_back(cascadeData(plan.cullingSpheres[c], plan.lights[0].cascades[c].fit.texelSize,
+                                                   directional.filter, plan.splits.farOf(c)));
     fillUniforms(plan, settings);
     fillSoftUniforms(plan, settings, conventions, casterBounds);
     return plan;

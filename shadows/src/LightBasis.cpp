@@ -14,9 +14,8 @@ LightBasis lightBasis(glm::vec3 direction)
     return {right, glm::cross(right, d), d};
 }
 
-Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world)
+Bounds lightSpaceBounds(const LightBasis& basis, const std::array<glm::vec3, 8>& corners)
 {
-    const std::array<glm::vec3, 8> corners = world.corners();
     Bounds light{basis.toLight(corners[0]), basis.toLight(corners[0])};
     for (const glm::vec3& corner : corners) {
         const glm::vec3 p = basis.toLight(corner);
@@ -25,5 +24,7 @@ Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world)
     }
     return light;
 }
+
+Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world) { return lightSpaceBounds(basis, world.corners()); }
 
 } // namespace penumbra::shadows

@@ -11,8 +11,24 @@ OtherShadowPass::OtherShadowPass(rhi::Device& device, const CasterVertexFormat& 
 {
 }
 
+std::vector<ShadowTileDraw> OtherShadowPass::tileDraws(const OtherShadowPlan& plan)
+{
+    std::vector<ShadowTileDraw> tiles;
+    for (const OtherAtlasTile& tile : plan.tiles)
+        // The dither follows the tile's own texel grid: local lights do not move with the camera.
+        tiles.push_back({tile.tile,
+                         tile.viewport,
+                         {.viewProjection = tile.view.viewProjection,
+                          .slopeScaleBias = tile.view.slopeScaleBias,
+                          .ditherOrigin = -glm::vec2(plan.atlas.tileOffset(tile.tile)),
+                          .normalOffset = tile.view.normalOffset},
+                         tile.view.casters});
+    return tiles;
+}
+
 std::uint32_t OtherShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
-                                      const OtherShadowPlan& plan, std::span<const ShadowCaster> casters)
+                                      const OtherShadowPlan& plan, std::span<const ShadowCaster> casters,
+                                      bool clearAtlas)
 {
     if (cubes.cubeCount() < plan.cubes.size())
         throw rhi::Error(fmt::format("{} shadow cube maps, the plan needs {}", cubes.cubeCount(), plan.cubes.size()));
@@ -21,16 +37,11 @@ std::uint32_t OtherShadowPass::record(rhi::CommandList& commands, const ShadowAt
                                      plan.atlas.atlasSize()));
     draws_.reset();
     std::uint32_t draws = 0;
-    commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = true});
-    for (const OtherAtlasTile& tile : plan.tiles) {
+    commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = clearAtlas});
+    for (const ShadowTileDraw& tile : tileDraws(plan)) {
         commands.setViewport(tile.viewport);
         commands.setScissor(scissorOf(tile.viewport));
-        // The dither follows the tile's own texel grid: local lights do not move with the camera.
-        const ShadowViewDraw view{.viewProjection = tile.view.viewProjection,
-                                  .slopeScaleBias = tile.view.slopeScaleBias,
-                                  .ditherOrigin = -glm::vec2(plan.atlas.tileOffset(tile.tile)),
-                                  .normalOffset = tile.view.normalOffset};
-        draws += draws_.draw(commands, atlas.format(), view, tile.view.casters, casters);
+        draws += draws_.draw(commands, atlas.format(), tile.view, tile.casters, casters);
     }
     commands.endPass();
     const auto size = static_cast<float>(cubes.faceSize());

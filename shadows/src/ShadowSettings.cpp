@@ -32,6 +32,25 @@ std::optional<ShadowFilter> filterFromCommandName(std::string_view name)
 
 std::string_view filterCommandNames() { return "hard, pcf3, pcf5, pcf7, poisson, pcss"; }
 
+const std::array<CascadeProjectionName, kCascadeProjectionCount>& cascadeProjectionNames()
+{
+    static constexpr std::array<CascadeProjectionName, kCascadeProjectionCount> names{{
+        {CascadeProjection::Stable, "stable"},
+        {CascadeProjection::Close, "close"},
+    }};
+    return names;
+}
+
+std::optional<CascadeProjection> projectionFromName(std::string_view name)
+{
+    for (const CascadeProjectionName& entry : cascadeProjectionNames())
+        if (entry.name == name)
+            return entry.projection;
+    return std::nullopt;
+}
+
+std::string_view projectionNames() { return "stable, close"; }
+
 bool isSoftFilter(ShadowFilter filter) { return filter == ShadowFilter::Poisson || filter == ShadowFilter::PCSS; }
 
 int filterSize(ShadowFilter filter)
@@ -74,7 +93,7 @@ SettingsProblem outOfRange(std::string field, std::string value)
 
 std::string_view allowedValues(std::string_view field)
 {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 26> table{{
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 27> table{{
         {"maxDistance", "> 0.001"},
         {"distanceFade", "0.001..1"},
         {"directional.atlasSize", "powers of two 256..8192"},
@@ -83,6 +102,7 @@ std::string_view allowedValues(std::string_view field)
         {"directional.cascadeRatios", "3 numbers in 0..1, strictly increasing"},
         {"directional.cascadeFade", "0.001..1"},
         {"directional.cascadeBlend", "hard, soft, dither"},
+        {"directional.projection", "stable, close"},
         {"directional.atlasFormat", "d16, d24s8, d32f"},
         {"other.atlasSize", "powers of two 256..8192"},
         {"other.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss"},
@@ -195,6 +215,8 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return outOfRange("directional.cascadeFade", fmt::format("{}", d.cascadeFade));
     if (static_cast<unsigned>(d.cascadeBlend) > static_cast<unsigned>(CascadeBlend::Dither))
         return outOfRange("directional.cascadeBlend", fmt::format("{}", static_cast<int>(d.cascadeBlend)));
+    if (static_cast<unsigned>(d.projection) >= static_cast<unsigned>(kCascadeProjectionCount))
+        return outOfRange("directional.projection", fmt::format("{}", static_cast<int>(d.projection)));
     if (!rhi::isDepthFormat(d.atlasFormat))
         return outOfRange("directional.atlasFormat", std::string(rhi::formatName(d.atlasFormat)));
     if (auto problem = findOtherSettingsProblem(s.other))

@@ -35,6 +35,14 @@ std::array<EnumName<ShadowFilter>, kShadowFilterCount> jsonFilterNames()
 const std::array<EnumName<ShadowFilter>, kShadowFilterCount> filterNames = jsonFilterNames();
 constexpr std::array<EnumName<CascadeBlend>, 3> blendNames{
     {{CascadeBlend::Hard, "hard"}, {CascadeBlend::Soft, "soft"}, {CascadeBlend::Dither, "dither"}}};
+std::array<EnumName<CascadeProjection>, kCascadeProjectionCount> jsonProjectionNames()
+{
+    std::array<EnumName<CascadeProjection>, kCascadeProjectionCount> names{};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        names[i] = {cascadeProjectionNames()[i].projection, cascadeProjectionNames()[i].name};
+    return names;
+}
+const std::array<EnumName<CascadeProjection>, kCascadeProjectionCount> projections = jsonProjectionNames();
 constexpr std::array<EnumName<rhi::Format>, 3> formatNames{
     {{rhi::Format::D16, "d16"}, {rhi::Format::D24S8, "d24s8"}, {rhi::Format::D32F, "d32f"}}};
 
@@ -136,10 +144,13 @@ void readDirectional(const Json& object, std::string_view source, DirectionalSha
             d.cascadeFade = r.number(value, key);
         else if (key == "cascadeBlend")
             d.cascadeBlend = r.enumeration(value, key, blendNames);
+        else if (key == "projection")
+            d.projection = r.enumeration(value, key, projections);
         else if (key == "atlasFormat")
             d.atlasFormat = r.enumeration(value, key, formatNames);
         else
-            r.unknown(key, "atlasSize, filter, cascadeCount, cascadeRatios, cascadeFade, cascadeBlend, atlasFormat");
+            r.unknown(key, "atlasSize, filter, cascadeCount, cascadeRatios, cascadeFade, cascadeBlend, projection, "
+                         "atlasFormat");
     }
 }
 
@@ -266,6 +277,7 @@ std::string toJson(const ShadowSettings& s)
     directional["cascadeRatios"] = {d.cascadeRatios.x, d.cascadeRatios.y, d.cascadeRatios.z};
     directional["cascadeFade"] = d.cascadeFade;
     directional["cascadeBlend"] = nameOf(blendNames, d.cascadeBlend);
+    directional["projection"] = nameOf(projections, d.projection);
     directional["atlasFormat"] = nameOf(formatNames, d.atlasFormat);
     const OtherShadowSettings& o = s.other;
     nlohmann::ordered_json other;

@@ -34,7 +34,7 @@ TEST(ShadowFade, CascadeFadeOnSquaredDistanceKeepsTheConfiguredBand)
     ShadowSettings settings;
     settings.directional.cascadeFade = 0.25f;
     const glm::vec4 fade = shadowDistanceFade(settings);
-    const CascadeData cascade = cascadeData({{0.0f, 0.0f, 0.0f}, 20.0f}, 0.05f, ShadowFilter::PCF3x3);
+    const CascadeData cascade = cascadeData({{0.0f, 0.0f, 0.0f}, 20.0f}, 0.05f, ShadowFilter::PCF3x3, 30.0f);
     const float r = std::sqrt(cascade.selectionSphere.w);
     auto strength = [&](float distance) { return fadedShadowStrength(distance * distance, cascade.data.x, fade.z); };
     EXPECT_FLOAT_EQ(strength(0.0f), 1.0f);
@@ -52,7 +52,7 @@ TEST(CascadeData, SphereShrunkByTheFilterAndNormalBiasOverTheTexelDiagonal)
          {ShadowFilter::PCF2x2, ShadowFilter::PCF3x3, ShadowFilter::PCF5x5, ShadowFilter::PCF7x7}) {
         const float factor = factors[static_cast<int>(filter)];
         EXPECT_EQ(normalBiasFilterFactor(filter), factor);
-        const CascadeData c = cascadeData(sphere, 0.1f, filter);
+        const CascadeData c = cascadeData(sphere, 0.1f, filter, 30.0f);
         const float shrunk = 10.0f - 0.1f * factor;
         EXPECT_EQ(glm::vec3(c.selectionSphere), sphere.centre);
         EXPECT_FLOAT_EQ(c.selectionSphere.w, shrunk * shrunk);

@@ -21,6 +21,7 @@ void expectEqual(const ShadowSettings& a, const ShadowSettings& b)
     EXPECT_EQ(a.directional.cascadeRatios, b.directional.cascadeRatios);
     EXPECT_EQ(a.directional.cascadeFade, b.directional.cascadeFade);
     EXPECT_EQ(a.directional.cascadeBlend, b.directional.cascadeBlend);
+    EXPECT_EQ(a.directional.projection, b.directional.projection);
     EXPECT_EQ(a.directional.atlasFormat, b.directional.atlasFormat);
     EXPECT_EQ(a.other.atlasSize, b.other.atlasSize);
     EXPECT_EQ(a.other.filter, b.other.filter);
@@ -41,6 +42,7 @@ ShadowSettings unusualSettings()
     s.directional.cascadeRatios = {0.05f, 0.3f, 0.71f};
     s.directional.cascadeFade = 0.2f;
     s.directional.cascadeBlend = CascadeBlend::Dither;
+    s.directional.projection = CascadeProjection::Close;
     s.directional.atlasFormat = rhi::Format::D24S8;
     s.other.atlasSize = 2048;
     s.other.filter = ShadowFilter::PCF3x3;
@@ -89,6 +91,8 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
               "directional.atlasSize: 1000 is out of range, allowed powers of two 256..8192");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.atlasSize = 16384; }),
               "directional.atlasSize: 16384 is out of range, allowed powers of two 256..8192");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.projection = CascadeProjection(2); }),
+              "directional.projection: 2 is out of range, allowed stable, close");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.maxDistance = 0.0f; }),
               "maxDistance: 0 is out of range, allowed > 0.001");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.distanceFade = 1.5f; }),
@@ -113,6 +117,8 @@ TEST(ShadowSettingsJson, RoundTripKeepsEveryField)
     const std::string json = toJson(unusualSettings());
     EXPECT_NE(json.find("\"filter\": \"pcf5x5\""), std::string::npos) << json;
     EXPECT_NE(json.find("\"cascadeBlend\": \"dither\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"projection\": \"close\""), std::string::npos) << json;
+    EXPECT_NE(toJson(ShadowSettings{}).find("\"projection\": \"stable\""), std::string::npos);
     EXPECT_NE(json.find("\"atlasFormat\": \"d24s8\""), std::string::npos) << json;
 }
 
@@ -145,7 +151,11 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
               "shadows.json: other.nearPlane: 0.6 is out of range, allowed 0.0001..0.5");
     EXPECT_EQ(parseError(R"({"directional": {"blend": "soft"}})"),
               "shadows.json: directional.blend: unknown field, allowed atlasSize, filter, cascadeCount, "
-              "cascadeRatios, cascadeFade, cascadeBlend, atlasFormat");
+              "cascadeRatios, cascadeFade, cascadeBlend, projection, atlasFormat");
+    EXPECT_EQ(parseError(R"({"directional": {"projection": "tight"}})"),
+              "shadows.json: directional.projection: unknown value \"tight\", allowed stable, close");
+    EXPECT_EQ(parseError(R"({"directional": {"projection": 1}})"),
+              "shadows.json: directional.projection: unknown value 1, allowed stable, close");
     EXPECT_EQ(parseError(R"({"maxDistance": "far"})"),
               "shadows.json: maxDistance: expected a number, got \"far\", allowed > 0.001");
     EXPECT_EQ(parseError(R"({"directional": {"cascadeCount": 2.5}})"),

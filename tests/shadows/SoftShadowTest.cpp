@@ -230,7 +230,7 @@ TEST(SoftSettingsTest, FilterNamesOnTheCommandLine)
 
 TEST(SoftSettingsTest, CascadeDataCarriesTheTexelSize)
 {
-    const CascadeData d = cascadeData({glm::vec3(0.0f), 10.0f}, 0.05f, ShadowFilter::PCSS);
+    const CascadeData d = cascadeData({glm::vec3(0.0f), 10.0f}, 0.05f, ShadowFilter::PCSS, 15.0f);
     EXPECT_EQ(d.data.z, 0.05f);
     EXPECT_NEAR(d.data.y, 0.05f * 1.4142136f, 1e-7f); // the soft filters keep the 2x2's one-texel normal offset
 }

@@ -4,6 +4,7 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
 
 #include <algorithm>
@@ -59,7 +60,8 @@ struct SeamFigures {
 
 class CascadeSeamTest : public GpuTest {
 protected:
-    SeamFigures measure(shadows::CascadeBlend blend, float normalBias = 1.0f)
+    SeamFigures measure(shadows::CascadeBlend blend, float normalBias = 1.0f,
+                        shadows::CascadeProjection projection = shadows::CascadeProjection::Stable)
     {
         scene::Scene scene = wallScene();
         scene.lights[0].normalBias *= normalBias;
@@ -69,6 +71,7 @@ protected:
         frame.height = kHeight;
         frame.shadows.directional.cascadeBlend = blend;
         frame.shadows.directional.cascadeFade = 0.2f;
+        frame.shadows.directional.projection = projection;
         renderer.render(scene.camera, frame);
         const rhi::Image lit = rhi::readTexture(*device, renderer.litImage());
         const shadows::DirectionalShadowPlan& plan = renderer.plan();
@@ -100,23 +103,19 @@ protected:
                 }
             }
         }
+        const bool close = projection == shadows::CascadeProjection::Close;
         EXPECT_GT(edges.size(), 100u) << "the wall's shadow edge must be in view: "
-                                      << savePicture(lit, "seam-" + configuration());
-        // Measured in the texels of the cascade the point selects (selectCascade of directional_shadows.glsl),
+                                      << savePicture(lit, std::string(close ? "seam-close-" : "seam-") + configuration());
+        // Measured in the texels of the cascade the point selects (shadows::selectCascade, the lit shader's twin),
         // or, blending softly, of the next, coarser one where the two are blended.
-        const shadows::DirectionalShadowUniforms& u = plan.uniforms;
         const auto cascadeAt = [&](glm::vec3 p) {
             const std::size_t count = plan.cullingSpheres.size();
-            for (std::size_t c = 0; c < count; ++c) {
-                const glm::vec3 offset = p - glm::vec3(u.cullingSpheres[c]);
-                const float distanceSquared = glm::dot(offset, offset);
-                if (distanceSquared >= u.cullingSpheres[c].w)
-                    continue;
-                const float blendWeight = (1.0f - distanceSquared * u.cascadeData[c].x) * u.distanceFade.z;
-                const bool blended = blend != shadows::CascadeBlend::Hard && blendWeight < 1.0f && c + 1 < count;
-                return blended ? c + 1 : c;
-            }
-            return count - 1;
+            const float viewDepth = glm::dot(p - scene.camera.position, scene.camera.forward);
+            const shadows::CascadeSelection s = shadows::selectCascade(plan.uniforms, p, viewDepth);
+            if (s.index >= count)
+                return count - 1;
+            const bool blended = blend != shadows::CascadeBlend::Hard && s.fade < 1.0f && s.index + 1 < count;
+            return blended ? std::size_t(s.index) + 1 : std::size_t(s.index);
         };
         const auto texelOf = [&](std::size_t cascade) { return plan.lights[0].cascades[cascade].fit.texelSize; };
         SeamFigures figures;
@@ -134,9 +133,10 @@ protected:
                 figures.worstBoundaryStep = std::max(figures.worstBoundaryStep, step);
             }
         }
-        std::printf("[ seams    ] %s %s blend, normal bias x%.0f: %zu rows, %zu at cascade boundaries; edge within "
+        std::printf("[ seams    ] %s %s fit, %s blend, normal bias x%.0f: %zu rows, %zu at cascade boundaries; edge within "
                     "%.2f texels of the truth; worst step between rows %.2f texels, at cascade boundaries %.2f\n",
-                    configuration().c_str(), blend == shadows::CascadeBlend::Hard ? "hard" : "soft", normalBias,
+                    configuration().c_str(), close ? "close" : "stable",
+                    blend == shadows::CascadeBlend::Hard ? "hard" : "soft", normalBias,
                     figures.samples, figures.boundaries, figures.worstError, figures.worstStep,
                     figures.worstBoundaryStep);
         return figures;
@@ -153,17 +153,23 @@ constexpr float kHardBoundaryStepBound = 2.5f;
 // The soft blend spreads that difference over the fade band: no row steps by more than about a texel.
 constexpr float kSoftStepBound = 1.25f;
 
+// In both projections: the close fit's bands of view depth meet at the same split depths, its finer texels keep
+// the same bounds in texels.
 TEST_F(CascadeSeamTest, SoftBlendMovesTheShadowEdgeSmoothlyAcrossCascades)
 {
-    const SeamFigures hard = measure(shadows::CascadeBlend::Hard);
-    const SeamFigures soft = measure(shadows::CascadeBlend::Soft);
-    for (const SeamFigures* f : {&hard, &soft})
-        EXPECT_GE(f->boundaries, 3u) << "the probe must cross every cascade boundary";
-    EXPECT_LT(hard.worstError, kEdgeErrorBound);
-    EXPECT_LT(soft.worstError, kEdgeErrorBound);
-    EXPECT_LE(hard.worstBoundaryStep, kHardBoundaryStepBound);
-    EXPECT_LE(soft.worstStep, kSoftStepBound);
-    EXPECT_LT(soft.worstBoundaryStep, 0.6f * hard.worstBoundaryStep);
+    for (const shadows::CascadeProjection projection :
+         {shadows::CascadeProjection::Stable, shadows::CascadeProjection::Close}) {
+        SCOPED_TRACE(projection == shadows::CascadeProjection::Close ? "close fit" : "stable fit");
+        const SeamFigures hard = measure(shadows::CascadeBlend::Hard, 1.0f, projection);
+        const SeamFigures soft = measure(shadows::CascadeBlend::Soft, 1.0f, projection);
+        for (const SeamFigures* f : {&hard, &soft})
+            EXPECT_GE(f->boundaries, 3u) << "the probe must cross every cascade boundary";
+        EXPECT_LT(hard.worstError, kEdgeErrorBound);
+        EXPECT_LT(soft.worstError, kEdgeErrorBound);
+        EXPECT_LE(hard.worstBoundaryStep, kHardBoundaryStepBound);
+        EXPECT_LE(soft.worstStep, kSoftStepBound);
+        EXPECT_LT(soft.worstBoundaryStep, 0.6f * hard.worstBoundaryStep);
+    }
 }
 
 // Negative control: a tripled normal bias pulls the edge three times as far and widens the jumps between cascades.

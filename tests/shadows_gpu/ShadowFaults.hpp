@@ -13,16 +13,15 @@
 
 namespace penumbra::testing {
 
-// The stable fit without its texel snap: every cascade's tile centred on its culling sphere, wherever that
-// falls between texels, so that the shadow texels move with the camera.
+// Either fit without its texel snap: every cascade's tile centred on what it is fitted around (the culling sphere,
+// the slice's bounds), wherever that falls between texels, so that the shadow texels move with the camera.
 inline shadows::DirectionalShadowPlan withoutTexelSnap(shadows::DirectionalShadowPlan plan,
                                                       const rhi::Conventions& conventions)
 {
     for (shadows::ShadowedDirectionalLight& light : plan.lights)
         for (shadows::DirectionalCascadePlan& cascade : light.cascades) {
             shadows::DirectionalShadowCascade& fit = cascade.fit;
-            const glm::vec2 centre(fit.basis.toLight(fit.cullingSphere.centre));
-            fit.view = glm::translate(glm::mat4(1.0f), glm::vec3(fit.snappedCentre - centre, 0.0f)) * fit.view;
+            fit.view = glm::translate(glm::mat4(1.0f), glm::vec3(fit.snappedCentre - fit.fittedCentre, 0.0f)) * fit.view;
             fit.viewProjection = fit.projection * fit.view;
             cascade.worldToAtlas = shadows::worldToAtlas(fit.viewProjection, cascade.tile, plan.atlas, conventions);
             plan.uniforms.worldToAtlas[cascade.tile] = cascade.worldToAtlas;

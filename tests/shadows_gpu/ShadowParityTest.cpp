@@ -59,6 +59,7 @@ struct Variant {
     std::uint32_t cascades = 4;
     ShadowFilter filter = ShadowFilter::PCF2x2;
     CascadeBlend blend = CascadeBlend::Hard;
+    shadows::CascadeProjection projection = shadows::CascadeProjection::Stable;
     std::optional<CasterMode> casters; // every material but the ground's, when set
     ShadowFilter otherFilter = ShadowFilter::PCF2x2;
     shadows::PointShadowMode pointMode = shadows::PointShadowMode::Atlas;
@@ -129,6 +130,7 @@ render::FrameDesc frameOf(const Variant& variant)
     frame.shadows.directional.cascadeCount = variant.cascades;
     frame.shadows.directional.filter = variant.filter;
     frame.shadows.directional.cascadeBlend = variant.blend;
+    frame.shadows.directional.projection = variant.projection;
     frame.shadows.other.atlasSize = kAtlasSize;
     frame.shadows.other.filter = variant.otherFilter;
     frame.shadows.other.pointMode = variant.pointMode;
@@ -327,6 +329,16 @@ TEST(ShadowParity, FilterPcf7x7) { checkParity({.name = "pcf7", .filter = Shadow
 
 TEST(ShadowParity, BlendSoft) { checkParity({.name = "soft", .blend = CascadeBlend::Soft}); }
 TEST(ShadowParity, BlendDither) { checkParity({.name = "dither", .blend = CascadeBlend::Dither}); }
+TEST(ShadowParity, CloseFit) { checkParity({.name = "close", .projection = shadows::CascadeProjection::Close}); }
+TEST(ShadowParity, CloseFitBlendSoft)
+{
+    checkParity({.name = "close-soft", .blend = CascadeBlend::Soft, .projection = shadows::CascadeProjection::Close});
+}
+TEST(ShadowParity, CloseFitBlendDither)
+{
+    checkParity(
+        {.name = "close-dither", .blend = CascadeBlend::Dither, .projection = shadows::CascadeProjection::Close});
+}
 
 TEST(ShadowParity, CastersClip) { checkParity({.name = "clip", .casters = CasterMode::Clip}); }
 TEST(ShadowParity, CastersDither) { checkParity({.name = "casters-dither", .casters = CasterMode::Dither}); }

@@ -5,6 +5,7 @@
 #include "ShadowFaults.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace penumbra::testing {
@@ -22,23 +24,33 @@ namespace {
 struct ShadowFrame {
     shadows::DirectionalShadowPlan plan;
     rhi::DepthImage atlas;
+    scene::Camera camera;
 };
 
-// The cascade a world point selects (hard blend), and how far inside its sphere it lies (0 at the rim).
-struct Selection {
-    std::uint32_t cascade = 0;
-    float depthInside = 0.0f;
-};
+constexpr std::uint32_t kWidth = 320;
+constexpr std::uint32_t kHeight = 180;
 
-std::optional<Selection> selectCascade(const shadows::DirectionalShadowPlan& plan, glm::vec3 p)
+// Whether the camera sees the point (inside its frustum's side planes).
+bool inView(const scene::Camera& camera, glm::vec3 p)
 {
-    for (std::uint32_t c = 0; c < plan.cullingSpheres.size(); ++c) {
-        const glm::vec4 sphere = plan.uniforms.cullingSpheres[c];
-        const float distance = glm::length(p - glm::vec3(sphere));
-        if (distance * distance < sphere.w)
-            return Selection{c, std::sqrt(sphere.w) - distance};
-    }
-    return std::nullopt;
+    const glm::vec3 offset = p - camera.position;
+    const glm::vec3 up = glm::normalize(glm::cross(camera.right(), camera.forward));
+    const float tanY = std::tan(0.5f * camera.fovY);
+    const float depth = glm::dot(offset, camera.forward);
+    return std::abs(glm::dot(offset, up)) <= depth * tanY &&
+           std::abs(glm::dot(offset, camera.right())) <= depth * tanY * float(kWidth) / float(kHeight);
+}
+
+// The cascade a ground point selects (hard blend, shadows::selectCascade as the lit shader does), and how far inside
+// its region it lies (0 at the rim). The close fit's tiles hold the view's slices only: points out of view, which
+// no pixel shades, have no cascade there.
+std::optional<shadows::CascadeSelection> selectCascade(const ShadowFrame& frame, glm::vec3 p)
+{
+    if (frame.plan.uniforms.projection.x == int(shadows::CascadeProjection::Close) && !inView(frame.camera, p))
+        return std::nullopt;
+    const float viewDepth = glm::dot(p - frame.camera.position, frame.camera.forward);
+    const shadows::CascadeSelection s = shadows::selectCascade(frame.plan.uniforms, p, viewDepth);
+    return s.index < frame.plan.cullingSpheres.size() ? std::optional(s) : std::nullopt;
 }
 
 // The bilinear comparison of directional_shadows.glsl: four nearest comparisons clamped to the tile.
@@ -79,13 +91,13 @@ ShimmerFigures compareFrames(const ShadowFrame& before, const ShadowFrame& after
     for (float z = -15.0f; z <= 29.0f; z += 0.0371f)
         for (float x = -20.0f; x <= 20.0f; x += 0.0371f) {
             const glm::vec3 p{x, 0.0f, z};
-            const auto s0 = selectCascade(before.plan, p);
-            const auto s1 = selectCascade(after.plan, p);
+            const auto s0 = selectCascade(before, p);
+            const auto s1 = selectCascade(after, p);
             const float rim = 4.0f * before.plan.lights[0].cascades.back().fit.texelSize;
-            if (!s0 || !s1 || s0->cascade != s1->cascade || s0->depthInside < rim || s1->depthInside < rim)
+            if (!s0 || !s1 || s0->index != s1->index || s0->margin < rim || s1->margin < rim)
                 continue;
-            const float v0 = lookUp(before, conventions, s0->cascade, p);
-            const float v1 = lookUp(after, conventions, s1->cascade, p);
+            const float v0 = lookUp(before, conventions, s0->index, p);
+            const float v1 = lookUp(after, conventions, s1->index, p);
             ++f.compared;
             f.changed += std::abs(v0 - v1) > 1e-3f;
             f.shadowed += v0 < 0.5f;
@@ -102,24 +114,26 @@ struct Move {
 
 class StableCascadesTest : public GpuTest {
 protected:
-    ShadowFrame render(render::SceneRenderer& renderer, const scene::Camera& camera, Fit fit)
+    ShadowFrame render(render::SceneRenderer& renderer, const scene::Camera& camera, Fit fit,
+                       shadows::CascadeProjection projection)
     {
         render::FrameDesc frame;
-        frame.width = 320;
-        frame.height = 180;
+        frame.width = kWidth;
+        frame.height = kHeight;
+        frame.shadows.directional.projection = projection;
         render::ShadowPlans plans = renderer.planShadows(camera, frame);
         if (fit == Fit::Unsnapped)
             plans.directional = withoutTexelSnap(std::move(plans.directional), device->conventions());
         renderer.render(camera, frame, std::move(plans));
-        return {renderer.plan(), rhi::readDepth(*device, renderer.atlas().texture())};
+        return {renderer.plan(), rhi::readDepth(*device, renderer.atlas().texture()), camera};
     }
 
     // Each move's figures, printed.
-    std::vector<ShimmerFigures> measure(Fit fit)
+    std::vector<ShimmerFigures> measure(Fit fit, shadows::CascadeProjection projection = shadows::CascadeProjection::Stable)
     {
         const scene::Scene scene = scene::makeSingleLightScene();
         render::SceneRenderer renderer(*device, scene);
-        const ShadowFrame before = render(renderer, scene.camera, fit);
+        const ShadowFrame before = render(renderer, scene.camera, fit, projection);
         const float texel = before.plan.lights.at(0).cascades.at(0).fit.texelSize;
         const scene::Camera& c = scene.camera;
         const glm::vec3 up = glm::normalize(glm::cross(c.right(), c.forward));
@@ -130,16 +144,21 @@ protected:
             {"1.7 texels diagonally", (c.right() + up + c.forward) * 1.7f * texel, 0.0f},
             {"0.2 degrees yaw", glm::vec3(0.0f), 0.2f},
         };
+        // The close fit's figures: the diagonal translation and the turn say what it does, in fewer frames.
+        const std::span<const Move> chosen =
+            projection == shadows::CascadeProjection::Close ? std::span<const Move>(moves).subspan(3) : moves;
         std::vector<ShimmerFigures> figures;
-        for (const Move& move : moves) {
+        for (const Move& move : chosen) {
             scene::Camera moved = c;
             moved.position += move.offset;
             const glm::mat4 yaw = glm::rotate(glm::mat4(1.0f), glm::radians(move.yawDegrees), glm::vec3(0.0f, 1.0f, 0.0f));
             moved.forward = glm::vec3(yaw * glm::vec4(c.forward, 0.0f));
-            const ShimmerFigures f = compareFrames(before, render(renderer, moved, fit), device->conventions());
-            std::printf("[ shimmer  ] %s%s, %s: %zu of %zu ground points changed (%zu shadowed, %zu on edges)\n",
-                        configuration().c_str(), fit == Fit::Unsnapped ? " without texel snap" : "", move.name,
-                        f.changed, f.compared, f.shadowed, f.partial);
+            const ShimmerFigures f =
+                compareFrames(before, render(renderer, moved, fit, projection), device->conventions());
+            std::printf("[ shimmer  ] %s%s%s, %s: %zu of %zu ground points changed (%zu shadowed, %zu on edges)\n",
+                        configuration().c_str(), projection == shadows::CascadeProjection::Close ? " close fit" : "",
+                        fit == Fit::Unsnapped ? " without texel snap" : "", move.name, f.changed, f.compared,
+                        f.shadowed, f.partial);
             EXPECT_GT(f.shadowed, f.compared / 100) << move.name << ": the probe must see shadows";
             EXPECT_GT(f.partial, 1000u) << move.name << ": and shadow edges, where a sub-texel shift would show";
             figures.push_back(f);
@@ -158,6 +177,19 @@ TEST_F(StableCascadesTest, SubTexelCameraMotionLeavesTheShadowOfStaticGeometryUn
 {
     for (const ShimmerFigures& f : measure(Fit::Snapped))
         EXPECT_FALSE(shimmers(f)) << f.changed << " of " << f.compared << " ground points changed";
+}
+
+// Close fit (the turn's count reported, not held to zero): the slice's light-space bounds translate with the
+// camera, so the snapped tile keeps its (quantised) size and moves by whole texels, and camera translation changes
+// no more than the stable fit does; turning the camera resizes every tile, and the shadow edges swim.
+TEST_F(StableCascadesTest, CloseFitShimmersOnlyWhenTheCameraTurns)
+{
+    const std::vector<ShimmerFigures> figures = measure(Fit::Snapped, shadows::CascadeProjection::Close);
+    ASSERT_EQ(figures.size(), 2u);
+    EXPECT_FALSE(shimmers(figures.front())) << "translation: " << figures.front().changed << " of "
+                                            << figures.front().compared << " ground points changed";
+    EXPECT_TRUE(shimmers(figures.back())) << "turning resizes the close fit's tiles: only " << figures.back().changed
+                                          << " of " << figures.back().compared << " ground points changed";
 }
 
 TEST_F(StableCascadesTest, MissingTexelSnapCatchesFault)

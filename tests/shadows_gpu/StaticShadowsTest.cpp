@@ -5,10 +5,14 @@
 #include "LitRendering.hpp"
 
 #include "penumbra/render/ShadowTruth.hpp"
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <functional>
 #include <cstdio>
 #include <cstdlib>
 #include <glm/geometric.hpp>
@@ -102,8 +106,11 @@ TEST_F(StaticShadowsTest, RealtimeDynamicCastersOnlyGiveTheSamePictureWhenNothin
     const render::FrameStats allStats = all.render(scene.camera, frame);
     frame.shadows.staticMaps.realtimeCasters = shadows::RealtimeCasters::Dynamic;
     render::SceneRenderer dynamic(*device, scene);
+    dynamic.render(scene.camera, frame);
+    // From the second frame on, the realtime tiles' static depth comes from their caches.
     const render::FrameStats dynamicStats = dynamic.render(scene.camera, frame);
     EXPECT_LE(dynamicStats.casterDraws, frame.shadows.directional.cascadeCount) << "the ball alone, once per cascade";
+    EXPECT_EQ(dynamicStats.staticCasterDraws, 0u);
     EXPECT_GT(allStats.casterDraws, dynamicStats.casterDraws);
     const rhi::Image a = read(all);
     const rhi::Image d = read(dynamic);
@@ -264,6 +271,95 @@ TEST_F(StaticShadowsTest, ALightWithoutRealtimeTilesKeepsItsStaticShadow)
     }));
     frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::EveryFrame;
     EXPECT_EQ(decided(frame, notes), 0u);
+}
+
+std::filesystem::path bakeFolder(const std::string& name)
+{
+    const char* root = std::getenv("PENUMBRA_TEST_OUTPUT");
+    return std::filesystem::path(root ? root : "test-output") / ("bake-" + name + "-" + configuration());
+}
+
+std::string errorOf(const std::function<void()>& f)
+{
+    try {
+        f();
+    } catch (const rhi::Error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST_F(StaticShadowsTest, ABakeLoadsOnEveryConfigurationWithTheSameShadows)
+{
+    const scene::Scene scene = boxesUnderASpot();
+    const render::FrameDesc frame = cachedFrame();
+    render::SceneRenderer baker(*device, scene);
+    baker.render(scene.camera, frame);
+    const rhi::Image live = read(baker);
+    const std::filesystem::path folder = bakeFolder("round-trip");
+    shadows::writeStaticShadowBake(folder, baker.bakeStaticShadows(configuration()));
+    const shadows::StaticShadowBake bake = shadows::readStaticShadowBake(folder);
+    ASSERT_EQ(bake.maps.size(), 2u);
+    EXPECT_EQ(bake.objects.size(), 4u);
+    reportSkipped(forEachConfiguration([&](rhi::Device& loader, const std::string& other) {
+        SCOPED_TRACE("loaded on " + other);
+        render::SceneRenderer renderer(loader, scene);
+        renderer.useBakedShadows(bake);
+        const render::FrameStats stats = renderer.render(scene.camera, frame);
+        EXPECT_EQ(stats.staticCasterDraws, 0u) << "a bake draws no static caster";
+        EXPECT_EQ(stats.staticMapUpdates.size(), 2u);
+        const rhi::Image loaded = rhi::readTexture(loader, renderer.litImage());
+        EXPECT_LE(differingShare(live, loaded), 0.001)
+            << picture(live, "baked-here") << " vs " << picture(loaded, "loaded-on-" + other);
+    }));
+}
+
+TEST_F(StaticShadowsTest, StaleMismatchedAndTruncatedBakesAreRefusedByName)
+{
+    scene::Scene scene = boxesUnderASpot();
+    render::FrameDesc frame = cachedFrame();
+    const std::filesystem::path folder = bakeFolder("refused");
+    {
+        render::SceneRenderer baker(*device, scene);
+        baker.render(scene.camera, frame);
+        shadows::writeStaticShadowBake(folder, baker.bakeStaticShadows(configuration()));
+    }
+    const shadows::StaticShadowBake bake = shadows::readStaticShadowBake(folder);
+    const auto renderWith = [&](const scene::Scene& s, const render::FrameDesc& f) {
+        return errorOf([&] {
+            render::SceneRenderer renderer(*device, s);
+            renderer.useBakedShadows(bake);
+            renderer.render(s.camera, f);
+        });
+    };
+    EXPECT_EQ(renderWith(scene, frame), "(no error)");
+    scene::Scene moved = scene;
+    moveObject(moved, "a", {0.5f, 0.0f, 0.0f});
+    // The sun's map holds every static caster, so it is the first to be stale.
+    const std::string stale = renderWith(moved, frame);
+    EXPECT_NE(stale.find("directional light 0 ('sun') is stale"), std::string::npos) << stale;
+    render::FrameDesc smaller = frame;
+    smaller.shadows.staticMaps.otherAtlasSize = 512;
+    const std::string resized = renderWith(scene, smaller);
+    EXPECT_NE(resized.find("was baked as 1 tiles of 1024 texels, the settings give 1 of 512"), std::string::npos)
+        << resized;
+    scene::Scene more = scene;
+    more.spotLights.push_back(more.spotLights[0]);
+    more.spotLights[1].name = "second lamp";
+    const std::string missing = renderWith(more, frame);
+    EXPECT_NE(missing.find("no map for spot light 1"), std::string::npos) << missing;
+
+    // A cut depth file and a cut manifest.
+    const std::filesystem::path exr = folder / "spot-0.exr";
+    std::filesystem::resize_file(exr, std::filesystem::file_size(exr) / 2);
+    EXPECT_NE(errorOf([&] { shadows::readStaticShadowBake(folder); }).find("spot-0.exr"), std::string::npos);
+    const std::filesystem::path manifest = folder / "manifest.json";
+    std::filesystem::resize_file(manifest, std::filesystem::file_size(manifest) / 2);
+    EXPECT_NE(errorOf([&] { shadows::readStaticShadowBake(folder); }).find("manifest.json: not valid JSON"),
+              std::string::npos);
+    std::filesystem::remove_all(folder);
+    EXPECT_NE(errorOf([&] { shadows::readStaticShadowBake(folder); }).find("cannot open the bake's manifest"),
+              std::string::npos);
 }
 
 } // namespace

@@ -1,57 +1,61 @@
 #include "StaticShadowCache.hpp"
 
-#include <cstring>
-#include <type_traits>
+#include "TileKeys.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
 
 namespace penumbra::render {
 namespace {
 
 constexpr std::uint32_t kStandInAtlasSize = 16; // no map in use
 
-// FNV-1a over the bytes of plain values: a map's key only has to change when what it was drawn from changes.
-class Hasher {
-public:
-    template <typename T>
-    Hasher& add(const T& value)
-    {
-        static_assert(std::is_trivially_copyable_v<T>);
-        unsigned char bytes[sizeof(T)];
-        std::memcpy(bytes, &value, sizeof(T));
-        for (const unsigned char b : bytes)
-            hash_ = (hash_ ^ b) * 1099511628211ull;
-        return *this;
-    }
-    std::uint64_t value() const { return hash_; }
-
-private:
-    std::uint64_t hash_ = 14695981039346656037ull;
-};
-
 std::uint64_t viewKey(const shadows::StaticShadowMap& map, const shadows::ShadowAtlas& atlas)
 {
-    Hasher h;
+    ContentHash h;
     h.add(atlas.size()).add(atlas.format());
-    for (const shadows::StaticShadowTile& tile : map.tiles) {
-        const shadows::ShadowViewDraw& v = tile.view;
-        h.add(tile.tile).add(tile.viewport).add(v.viewProjection).add(v.slopeScaleBias).add(v.pancake).add(v.mirrored);
-        h.add(v.ditherOrigin).add(v.normalOffset.reach).add(v.normalOffset.light);
-    }
+    for (const shadows::StaticShadowTile& tile : map.tiles)
+        addTileView(h, tile);
     return h.value();
 }
 
 std::uint64_t casterKey(const shadows::StaticShadowMap& map, std::span<const shadows::ShadowCaster> casters)
 {
-    Hasher h;
+    ContentHash h;
     for (const shadows::StaticShadowTile& tile : map.tiles)
-        for (const std::uint32_t i : tile.casters) {
-            const shadows::ShadowCaster& c = casters[i];
-            h.add(i).add(c.vertices).add(c.indices).add(c.indexCount).add(c.model).add(c.mode).add(c.alpha);
-            h.add(c.alphaCutoff).add(c.baseColorMap).add(c.textured).add(c.baseColorUv).add(c.doubleSided);
-        }
+        addTileCasters(h, tile, casters);
     return h.value();
 }
 
 bool isDirectional(const shadows::StaticShadowMap& map) { return map.kind == shadows::ShadowLightKind::Directional; }
+
+// Window depths as writeTexture takes them for a depth format (rhi::Device::writeTexture).
+std::vector<std::byte> depthTexels(const std::vector<float>& depth, rhi::Format format)
+{
+    std::vector<std::byte> bytes;
+    const auto append = [&](const auto value) {
+        const auto* first = reinterpret_cast<const std::byte*>(&value);
+        bytes.insert(bytes.end(), first, first + sizeof(value));
+    };
+    for (const float d : depth) {
+        const float clamped = std::clamp(d, 0.0f, 1.0f);
+        if (format == rhi::Format::D16)
+            append(static_cast<std::uint16_t>(std::lround(clamped * 65535.0f)));
+        else if (format == rhi::Format::D24S8)
+            append(static_cast<std::uint32_t>(std::lround(static_cast<double>(clamped) * 16777215.0)));
+        else
+            append(d);
+    }
+    return bytes;
+}
+
+std::string mapName(const shadows::StaticShadowMap& map)
+{
+    return fmt::format("{} {}", shadows::shadowLightKindName(map.kind), map.lightIndex);
+}
 
 } // namespace
 
@@ -69,6 +73,58 @@ bool StaticShadowCache::prepareAtlas(rhi::Device& device, std::unique_ptr<shadow
         return false;
     atlas = std::make_unique<shadows::ShadowAtlas>(device, size, format, name);
     return true;
+}
+
+void StaticShadowCache::useBake(shadows::StaticShadowBake bake)
+{
+    bake_ = std::move(bake);
+    drawn_.clear();
+    hasPlan_ = false;
+}
+
+const shadows::BakedShadowMap* StaticShadowCache::bakedMap(const shadows::StaticShadowMap& map) const
+{
+    for (const shadows::BakedShadowMap& baked : bake_->maps)
+        if (baked.kind == map.kind && baked.lightIndex == map.lightIndex)
+            return &baked;
+    return nullptr;
+}
+
+void StaticShadowCache::checkBake(const shadows::StaticShadowPlan& plan, std::span<const std::uint64_t> hashes) const
+{
+    if (!bake_)
+        return;
+    // A light the bake lacks first: it also reshapes the atlases, which would make every other map the wrong size.
+    for (const shadows::StaticShadowMap& map : plan.maps)
+        if (!bakedMap(map))
+            throw rhi::Error(fmt::format("baked shadows (made on {}): no map for {}; bake the scene again",
+                                         bake_->configuration, mapName(map)));
+    for (std::size_t i = 0; i < plan.maps.size(); ++i) {
+        const shadows::StaticShadowMap& map = plan.maps[i];
+        const shadows::ShadowAtlasLayout& layout = isDirectional(map) ? plan.directionalAtlas : plan.otherAtlas;
+        const shadows::BakedShadowMap* baked = bakedMap(map);
+        if (baked->size != layout.tileSize() || baked->frusta.size() != map.tiles.size())
+            throw rhi::Error(fmt::format("baked shadows: {} ('{}') was baked as {} tiles of {} texels, the settings "
+                                         "give {} of {}",
+                                         mapName(map), baked->lightName, baked->frusta.size(), baked->size,
+                                         map.tiles.size(), layout.tileSize()));
+        if (baked->hash != hashes[i])
+            throw rhi::Error(fmt::format("baked shadows: {} ('{}') is stale: the bake's hash {:016x}, the scene's "
+                                         "{:016x} (the light, its shadow settings or a static caster in its view "
+                                         "changed); bake the scene again",
+                                         mapName(map), baked->lightName, baked->hash, hashes[i]));
+    }
+}
+
+void StaticShadowCache::restore(shadows::ShadowAtlas& atlas, const shadows::ShadowAtlasLayout& layout,
+                                const std::vector<const shadows::StaticShadowMap*>& maps)
+{
+    if (maps.empty())
+        return;
+    std::vector<float> depth(std::size_t(atlas.size()) * atlas.size(), device_.conventions().clearDepth());
+    for (const shadows::StaticShadowMap* map : maps)
+        shadows::restoreShadowMap(*bakedMap(*map), *map, layout, device_.conventions(), depth);
+    device_.writeTexture(atlas.texture(), 0, 0, depthTexels(depth, atlas.format()));
 }
 
 StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shadows::ShadowSettings& settings,
@@ -115,10 +171,35 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
         }
         keys.emplace(id, key);
     }
-    if (!directionalMaps.empty() || directionalNew)
-        draws.casterDraws += pass_.record(commands, *directionalAtlas_, directionalMaps, casters, directionalNew);
-    if (!otherMaps.empty() || otherNew)
-        draws.casterDraws += pass_.record(commands, *otherAtlas_, otherMaps, casters, otherNew);
+    if (bake_) {
+        // A restore rewrites the whole atlas, so every map of its kind is restored with the one that changed.
+        for (StaticMapUpdate& u : draws.updates)
+            u.reason = "restored from the bake";
+        const auto all = [&](bool directional) {
+            std::vector<const shadows::StaticShadowMap*> maps;
+            for (const shadows::StaticShadowMap& map : plan.maps)
+                if (isDirectional(map) == directional)
+                    maps.push_back(&map);
+            return maps;
+        };
+        if (!directionalMaps.empty())
+            restore(*directionalAtlas_, plan.directionalAtlas, all(true));
+        if (!otherMaps.empty())
+            restore(*otherAtlas_, plan.otherAtlas, all(false));
+    } else {
+            const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
+            std::vector<const shadows::ShadowTileDraw*> tiles;
+            for (const shadows::StaticShadowMap* map : maps)
+                for (const shadows::StaticShadowTile& tile : map->tiles)
+                    tiles.push_back(&tile);
+            return tiles;
+        };
+        if (!directionalMaps.empty() || directionalNew)
+            draws.casterDraws +=
+                pass_.record(commands, *directionalAtlas_, tilesOf(directionalMaps), casters, directionalNew);
+        if (!otherMaps.empty() || otherNew)
+            draws.casterDraws += pass_.record(commands, *otherAtlas_, tilesOf(otherMaps), casters, otherNew);
+    }
     drawn_ = std::move(keys);
     plan_ = std::move(plan);
     hasPlan_ = true;

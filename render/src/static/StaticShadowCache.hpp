@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 #include "penumbra/shadows/StaticShadowPass.hpp"
 #include "penumbra/shadows/StaticShadowPlanner.hpp"
 
@@ -43,6 +44,14 @@ public:
                           shadows::StaticShadowPlan plan, std::span<const shadows::ShadowCaster> casters,
                           bool requested);
 
+    // From now on the maps come from `bake`: update() restores them into the atlases instead of drawing casters.
+    void useBake(shadows::StaticShadowBake bake);
+    bool baked() const { return bake_.has_value(); }
+    // With a bake: throws rhi::Error naming the light and what differs (no map for it, another size or tile count,
+    // another hash: the light, its settings or the static casters changed since the bake) unless the bake holds
+    // every map of `plan`; `hashes` are staticMapHashes(plan).
+    void checkBake(const shadows::StaticShadowPlan& plan, std::span<const std::uint64_t> hashes) const;
+
     const shadows::ShadowAtlas& directionalAtlas() const { return *directionalAtlas_; }
     const shadows::ShadowAtlas& otherAtlas() const { return *otherAtlas_; }
     // The maps as drawn.
@@ -66,6 +75,12 @@ private:
     shadows::StaticShadowPlan plan_;
     std::map<LightId, Key> drawn_;
     bool hasPlan_ = false;
+    std::optional<shadows::StaticShadowBake> bake_;
+
+    const shadows::BakedShadowMap* bakedMap(const shadows::StaticShadowMap& map) const;
+    // Restores every map of the plan (of the one kind of atlas) from the bake: one upload of the whole atlas.
+    void restore(shadows::ShadowAtlas& atlas, const shadows::ShadowAtlasLayout& layout,
+                 const std::vector<const shadows::StaticShadowMap*>& maps);
 };
 
 } // namespace penumbra::render

@@ -12,6 +12,7 @@
 #include "penumbra/shadows/OtherShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/StaticShadowBake.hpp"
 #include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <array>
@@ -25,6 +26,7 @@ namespace penumbra::render {
 
 class DepthPrepass;
 class StaticShadowCache;
+class StaticTileCache;
 
 struct FrameDesc {
     std::uint32_t width = 1280;
@@ -53,8 +55,9 @@ struct FrameStats {
     std::optional<double> otherAtlasPassMs;
     std::optional<double> litPassMs;
     std::optional<double> staticAtlasPassMs;        // the static maps drawn this frame, where the device has timestamps
-    // Static shadow maps (ShadowSettings::staticMaps): the caster draws into them this frame, and which maps were
-    // drawn and why ("spot light 0 ('lamp'): a static caster in its view changed").
+    // Static shadow maps (ShadowSettings::staticMaps): the static caster draws this frame (into the static maps and,
+    // with RealtimeCasters::Dynamic, into the realtime tiles' cached static depth), and which static maps were drawn
+    // and why ("spot light 0 ('lamp'): a static caster in its view changed").
     std::uint32_t staticCasterDraws = 0;
     std::vector<std::string> staticMapUpdates;
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
@@ -115,6 +118,14 @@ public:
     // In StaticShadowUpdate::OnDemand mode, the next render() draws every static map again from its plan; other modes
     // ignore it.
     void requestStaticShadowUpdate() { staticUpdateRequested_ = true; }
+    // The static maps as the last render() left them, for a bake on disk (shadows::writeStaticShadowBake): light-space
+    // depth that any configuration restores, with the hashes a later load checks. `configuration` is recorded.
+    shadows::StaticShadowBake bakeStaticShadows(const std::string& configuration) const;
+    // From now on the static maps come from `bake` and no static caster is drawn into them. render() then throws
+    // rhi::Error, before drawing anything, when the frame's settings keep no static maps (staticMaps.update
+    // everyFrame) or the bake does not hold the maps the scene and settings plan now (naming the light and what
+    // differs).
+    void useBakedShadows(shadows::StaticShadowBake bake);
 
 private:
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
@@ -139,6 +150,9 @@ private:
     std::array<std::unique_ptr<rhi::Pipeline>, 2> prepassedLitPipelines_;
     std::unique_ptr<DepthPrepass> depthPrepass_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
+    // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.
+    std::unique_ptr<StaticTileCache> directionalStaticTiles_;
+    std::unique_ptr<StaticTileCache> otherStaticTiles_;
     bool staticUpdateRequested_ = false;
     // Per object, this frame's Object block (shaders/lit.glsl), shared by the prepass and every lit view.
     std::vector<rhi::UniformSlice> objectSlices_;

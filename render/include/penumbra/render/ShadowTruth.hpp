@@ -21,6 +21,12 @@ scene::RenderedVisibility renderedVisibility(const rhi::Image& visibilityView);
 float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& settings, const scene::Scene& scene,
                       const scene::LightRef& light, glm::vec3 position);
 
+// Effective shadow resolution on screen: texels per metre of directional light `lightIndex`'s map on receivers at
+// view depth `viewDepth`, the mean of 1 / texel size of the cascade the lit shader selects over a 16 x 9 grid across
+// the picture (width / height `aspect`) at that depth; 0 where no cascade covers any of it.
+float directionalTexelsPerMetre(const shadows::DirectionalShadowPlan& plan, std::uint32_t lightIndex,
+                                const scene::Camera& camera, float aspect, float viewDepth);
+
 // Shadow rays towards `light`, as the ray cast casts them.
 scene::ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef& light);
 

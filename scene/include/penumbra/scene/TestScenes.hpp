@@ -45,11 +45,11 @@ inline constexpr float kContactPoleHalfWidth = 0.1f;
 Scene makeContactScene();
 
 // A town larger than the default shadow distance, for static and baked shadows: a 200 x 200 ground (top at y = 0)
-// with 8 x 8 static buildings 6 to 22 high on blocks 25 apart, and one dynamic red ball of radius 1 ("ball", at
-// kTownBallStart) that applications move. One low sun; the camera looks along the streets from the south edge, so
+// with 8 x 8 static buildings 6 to 22 high and 8 to 10 wide, 25 apart, and one dynamic red ball of radius 1 ("ball", at
+// kTownBallStart) that applications move. One low sun; the camera looks over the town from above its south edge, so
 // the distant buildings lie far beyond 100 units. Objects: "ground", "building 1".."building 64", "ball".
 inline constexpr float kTownHalfSize = 100.0f;
-inline constexpr glm::vec3 kTownBallStart{-12.5f, 1.0f, 60.0f};
+inline constexpr glm::vec3 kTownBallStart{0.0f, 1.0f, 75.0f};
 Scene makeTownScene();
 
 } // namespace penumbra::scene

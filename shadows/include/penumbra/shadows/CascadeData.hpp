@@ -12,12 +12,12 @@ struct CascadeData {
     // Culling sphere shrunk by the filter size, r' = r - texelSize * filterFactor, so filter taps
     // of a selected receiver stay inside the tile: (centre, r'^2) for selection.
     glm::vec4 selectionSphere{0.0f};
-    // (1 / r'^2, texelSize * filterFactor * sqrt 2, texelSize, 0): the cascade fade scale, the normal
-    // bias in world units (sqrt 2: a texel's diagonal is the worst case) and the texel's world size (soft shadows'
-    // penumbrae in world units).
+    // (1 / r'^2, texelSize * filterFactor * sqrt 2, texelSize, farDepth): the cascade fade scale, the normal
+    // bias in world units (sqrt 2: a texel's diagonal is the worst case), the texel's world size (soft shadows'
+    // penumbrae in world units) and the view depth where the cascade ends (the close fit's selection and fade).
     glm::vec4 data{0.0f};
 };
 
-CascadeData cascadeData(const Sphere& cullingSphere, float texelSize, ShadowFilter filter);
+CascadeData cascadeData(const Sphere& cullingSphere, float texelSize, ShadowFilter filter, float farDepth);
 
 } // namespace penumbra::shadows

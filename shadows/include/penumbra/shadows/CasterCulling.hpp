@@ -2,6 +2,7 @@
 
 #include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/DirectionalCascadeFit.hpp"
+#include "penumbra/shadows/ShadowCamera.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -26,5 +27,22 @@ float cascadeBlendCullingFactor(float cascadeFade);
 // skipped (culling bias): the previous, sharper cascade already holds its shadow.
 CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, std::span<const Bounds> casterBounds,
                                       const std::optional<Sphere>& previousCullingSphere, float cullingFactor);
+
+// A close-fit cascade's region: the camera frustum between two view depths.
+struct FrustumSlice {
+    ShadowCamera camera;
+    float nearDistance = 0.0f;
+    float farDistance = 0.0f;
+};
+
+// Whether every corner of the box lies in the slice: inside the frustum's side planes, at view depths from
+// nearDistance to nearDistance + (farDistance - nearDistance) * depthFactor.
+bool insideFrustumSlice(const Bounds& box, const FrustumSlice& slice, float depthFactor);
+
+// The close fit's rule, the same with the previous cascade's frustum slice for its sphere: a caster wholly inside
+// that slice, its depth range scaled by cullingFactor from its near end, is skipped.
+CasterCullingResult cullCloseFitShadowCasters(const DirectionalShadowCascade& cascade,
+                                              std::span<const Bounds> casterBounds,
+                                              const std::optional<FrustumSlice>& previousSlice, float cullingFactor);
 
 } // namespace penumbra::shadows

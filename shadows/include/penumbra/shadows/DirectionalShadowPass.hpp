@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace penumbra::shadows {
 
@@ -25,9 +26,12 @@ public:
 
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
     // next record(), so submit `commands` before recording again. `atlas` may be any size where the plan has no
-    // shadowed light.
+    // shadowed light. `clear` false draws over what the atlas holds (cached static depth).
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const DirectionalShadowPlan& plan,
-                         std::span<const ShadowCaster> casters);
+                         std::span<const ShadowCaster> casters, bool clear = true);
+
+    // Every cascade tile of the plan as the pass draws it: viewport, view, biases, casters.
+    static std::vector<ShadowTileDraw> tileDraws(const DirectionalShadowPlan& plan);
 
 private:
     ShadowCasterDraws draws_;

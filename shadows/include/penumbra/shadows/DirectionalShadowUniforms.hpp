@@ -20,8 +20,9 @@ inline constexpr std::uint32_t maxCascades = 4;
 //       mat4 worldToAtlas[16];      // tile light * cascadeCount + cascade: world -> (u, v, depth) in the atlas
 //       vec4 cullingSpheres[4];     // xyz centre, w = r'^2 (sphere shrunk by the filter): cascade selection
 //       vec4 cascadeData[4];        // x = 1 / r'^2 (cascade fade), y = normal bias in world units per unit bias,
-//                                   // z = world size of a texel
-//       vec4 distanceFade;          // 1 / maxDistance, 1 / distanceFade, 1 / (1 - (1 - cascadeFade)^2), 0
+//                                   // z = world size of a texel, w = view depth where the cascade ends (close fit)
+//       vec4 distanceFade;          // 1 / maxDistance, 1 / distanceFade, 1 / (1 - (1 - cascadeFade)^2),
+//                                   // 1 / cascadeFade
 //       vec4 atlasSize;             // size, 1 / size, tile size, 1 / tile size (texels)
 //       ivec4 config;               // cascadeCount, filter (ShadowFilter), blend (0..2: hard, soft, dither),
 //                                   // shadowed light count
@@ -33,6 +34,7 @@ inline constexpr std::uint32_t maxCascades = 4;
 //                                   // light's filter over the atlas's, 0, 0
 //       vec4 softScales;            // SoftShadowUniforms
 //       vec4 softCounts;
+//       ivec4 projection;           // x: the cascades' CascadeProjection (PENUMBRA_PROJECTION_*), y, z, w: 0
 //   };
 struct DirectionalShadowUniforms {
     std::array<glm::mat4, maxShadowedDirectionalLights * maxCascades> worldToAtlas{};
@@ -45,6 +47,7 @@ struct DirectionalShadowUniforms {
     std::array<glm::vec4, maxShadowedDirectionalLights * maxCascades> tileSoft{};
     std::array<glm::vec4, maxShadowedDirectionalLights> lightSoft{};
     SoftShadowUniforms soft;
+    glm::ivec4 projection{0};
 };
 
 static_assert(sizeof(glm::mat4) == 64 && sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16);
@@ -57,7 +60,8 @@ static_assert(offsetof(DirectionalShadowUniforms, config) == 1184);
 static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1200);
 static_assert(offsetof(DirectionalShadowUniforms, tileSoft) == 1264);
 static_assert(offsetof(DirectionalShadowUniforms, soft) == 1584);
-static_assert(sizeof(DirectionalShadowUniforms) == 1616);
+static_assert(offsetof(DirectionalShadowUniforms, projection) == 1616);
+static_assert(sizeof(DirectionalShadowUniforms) == 1632);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout directionalShadowLayout()
@@ -76,6 +80,7 @@ inline rhi::UniformLayout directionalShadowLayout()
             }};
     for (rhi::UniformMember& member : softShadowMembers(std::uint32_t(offsetof(DirectionalShadowUniforms, soft))))
         layout.members.push_back(std::move(member));
+    layout.members.push_back(PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, projection));
     return layout;
 }
 

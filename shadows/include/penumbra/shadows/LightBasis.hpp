@@ -2,6 +2,7 @@
 
 #include "penumbra/shadows/Bounds.hpp"
 
+#include <array>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -24,5 +25,7 @@ LightBasis lightBasis(glm::vec3 direction);
 
 // Light-space (x, y, depth) box around a world box's 8 corners.
 Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world);
+// Around 8 world points (a frustum slice's corners: the close fit's bounds).
+Bounds lightSpaceBounds(const LightBasis& basis, const std::array<glm::vec3, 8>& corners);
 
 } // namespace penumbra::shadows

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace penumbra::shadows {
 
@@ -22,8 +23,12 @@ public:
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
     // next record(), so submit `commands` before recording again.
     // `cubes` must hold at least plan.cubes.size() cubes; `atlas` may be any size where the plan has no tile.
+    // `clearAtlas` false draws over what the atlas holds (cached static depth); cubes are always cleared.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
-                         const OtherShadowPlan& plan, std::span<const ShadowCaster> casters);
+                         const OtherShadowPlan& plan, std::span<const ShadowCaster> casters, bool clearAtlas = true);
+
+    // Every atlas tile of the plan as the pass draws it (not the cube faces).
+    static std::vector<ShadowTileDraw> tileDraws(const OtherShadowPlan& plan);
 
 private:
     ShadowCasterDraws draws_;

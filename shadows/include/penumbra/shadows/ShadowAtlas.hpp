@@ -17,6 +17,7 @@ public:
     std::uint32_t size() const { return size_; }
     rhi::Format format() const { return format_; }
     const rhi::Texture& texture() const { return *texture_; }
+    rhi::Texture& texture() { return *texture_; } // to upload a baked map into
     const rhi::Framebuffer& framebuffer() const { return *framebuffer_; }
     const rhi::Sampler& sampler() const { return *sampler_; }
 

@@ -13,6 +13,7 @@
 #include <memory>
 #include <span>
 #include <tuple>
+#include <vector>
 
 namespace penumbra::shadows {
 
@@ -59,6 +60,14 @@ struct ShadowViewDraw {
     bool mirrored = false;
     glm::vec2 ditherOrigin{0.0f}; // added to gl_FragCoord: the dither's grid origin
     CasterNormalOffset normalOffset; // the caster-side normal bias; none by default
+};
+
+// One atlas tile's view and the casters drawn into it.
+struct ShadowTileDraw {
+    std::uint32_t tile = 0;
+    rhi::Viewport viewport;
+    ShadowViewDraw view;
+    std::vector<std::uint32_t> casters; // indices into the caster list
 };
 
 // The shadow caster shaders and pipelines every shadow pass shares, and its per-draw uniforms.

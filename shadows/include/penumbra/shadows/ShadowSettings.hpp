@@ -35,6 +35,25 @@ bool isSoftFilter(ShadowFilter filter);
 // How the lit shader moves from one cascade to the next.
 enum class CascadeBlend { Hard, Soft, Dither };
 
+// Unity's "Shadow Projection" quality setting (Catlike Coding, "Rendering 7: Shadows", section 1.7 "Shadow
+// Quality"). Stable fit: cascades are bands of distance to the camera, each tile a texel-snapped square around the
+// slice's bounding sphere, so the shadow texels stay put while the camera moves or turns. Close fit: cascades are
+// bands of the camera's view depth, each tile fitted to the light-space bounds of its frustum slice: more texels on
+// screen, but the tiles change size as the camera turns and the shadow edges swim. The values are the lit shader's
+// (generated into shadow_constants.glsl as PENUMBRA_PROJECTION_<NAME>).
+enum class CascadeProjection { Stable, Close };
+inline constexpr int kCascadeProjectionCount = 2;
+
+// The projection's names, in the settings JSON and on the command line alike: "stable", "close".
+struct CascadeProjectionName {
+    CascadeProjection projection;
+    std::string_view name;
+};
+const std::array<CascadeProjectionName, kCascadeProjectionCount>& cascadeProjectionNames();
+std::optional<CascadeProjection> projectionFromName(std::string_view name);
+// "stable, close".
+std::string_view projectionNames();
+
 // Width of a tent filter's kernel in texels: 2, 3, 5, 7 (the Poisson filters: 2, their centre tap's bilinear).
 int filterSize(ShadowFilter filter);
 
@@ -70,6 +89,7 @@ struct DirectionalShadowSettings {
     glm::vec3 cascadeRatios{0.1f, 0.25f, 0.5f}; // ends of cascades 1..3 as fractions of the shadow distance
     float cascadeFade = 0.1f;                  // 0.001..1, fraction of the last cascade's radius that fades
     CascadeBlend cascadeBlend = CascadeBlend::Hard;
+    CascadeProjection projection = CascadeProjection::Stable;
     rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
 };
 

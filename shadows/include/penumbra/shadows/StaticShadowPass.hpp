@@ -4,7 +4,6 @@
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 #include "penumbra/shadows/ShadowCasterDraws.hpp"
-#include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <cstdint>
 #include <map>
@@ -13,17 +12,17 @@
 
 namespace penumbra::shadows {
 
-// Renders static shadow maps into a static atlas, keeping the tiles of the maps it is not given: each map's tiles
-// are cleared to the far plane one by one (a full-tile triangle that writes the far depth), then its casters drawn
-// with the light's biases, as the realtime passes draw them.
+// Renders tiles into an atlas, keeping the tiles it is not given: each tile is cleared to the far plane on its own
+// (a full-tile triangle that writes the far depth), then its casters drawn with the view's biases, as the realtime
+// passes draw them. Static shadow maps and the cached static depth of realtime tiles are drawn so.
 class StaticShadowPass {
 public:
     StaticShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
-    // Records the maps' tiles (all into `atlas`); returns the caster draws issued. `clearAll` clears the whole
-    // atlas first (a new atlas, whose other tiles hold nothing yet). Submit `commands` before recording again.
+    // Records the tiles into `atlas`; returns the caster draws issued. `clearAll` clears the whole atlas first (a
+    // new atlas, whose other tiles hold nothing yet). Submit `commands` before recording again.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas,
-                         std::span<const StaticShadowMap* const> maps, std::span<const ShadowCaster> casters,
+                         std::span<const ShadowTileDraw* const> tiles, std::span<const ShadowCaster> casters,
                          bool clearAll);
 
 private:

@@ -18,13 +18,25 @@ namespace penumbra::shadows {
 
 enum class ShadowLightKind : std::uint8_t { Directional, Spot, Point };
 
-// One tile of a static shadow map and what is drawn into it.
-struct StaticShadowTile {
-    std::uint32_t tile = 0;
-    rhi::Viewport viewport;
-    ShadowViewDraw view;
-    std::vector<std::uint32_t> casters; // indices into the caster list: the static casters the view may see
+// A shadow view as no convention sees it: the light's view and its frustum, what a bake records and checks.
+struct ShadowFrustum {
+    glm::mat4 view{1.0f};   // world -> light view, looking down -z
+    bool perspective = false;
+    float extent = 0.0f;    // half the side of the orthographic square, or the perspective field of view (radians)
+    float nearPlane = 0.0f; // view depths along -z
+    float farPlane = 0.0f;
 };
+
+// One tile of a static shadow map and what is drawn into it: the static casters the view may see.
+struct StaticShadowTile : ShadowTileDraw {
+    glm::mat4 projection{1.0f}; // the convention's, view.viewProjection = projection * frustum.view
+    ShadowFrustum frustum;
+};
+
+// Light-space depth along the view's -z of a stored window depth, and back: how bakes store depth whatever the
+// convention (depth range, reversed-Z) that rendered them. `projection` is the tile's.
+float linearShadowDepth(float windowDepth, const glm::mat4& projection, const rhi::Conventions& conventions);
+float windowShadowDepth(float linearDepth, const glm::mat4& projection, const rhi::Conventions& conventions);
 
 // The static shadow map of one light: one tile of the static directional atlas (an orthographic view over every
 // static caster), one tile of the static other atlas (a spot light's cone) or six (a point light's faces).

@@ -29,23 +29,22 @@ const rhi::Pipeline& StaticShadowPass::clearPipeline(rhi::Format format)
 }
 
 std::uint32_t StaticShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas,
-                                       std::span<const StaticShadowMap* const> maps,
+                                       std::span<const ShadowTileDraw* const> tiles,
                                        std::span<const ShadowCaster> casters, bool clearAll)
 {
     draws_.reset();
     std::uint32_t draws = 0;
     commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = clearAll});
     const rhi::Pipeline& clear = clearPipeline(atlas.format());
-    for (const StaticShadowMap* map : maps)
-        for (const StaticShadowTile& tile : map->tiles) {
-            commands.setViewport(tile.viewport);
-            commands.setScissor(scissorOf(tile.viewport));
-            if (!clearAll) {
-                commands.bindPipeline(clear);
-                commands.draw(3);
-            }
-            draws += draws_.draw(commands, atlas.format(), tile.view, tile.casters, casters);
+    for (const ShadowTileDraw* tile : tiles) {
+        commands.setViewport(tile->viewport);
+        commands.setScissor(scissorOf(tile->viewport));
+        if (!clearAll) {
+            commands.bindPipeline(clear);
+            commands.draw(3);
         }
+        draws += draws_.draw(commands, atlas.format(), tile->view, tile->casters, casters);
+    }
     commands.endPass();
     return draws;
 }

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/mat2x2.hpp>
 
 namespace penumbra::shadows {
 namespace {
@@ -103,8 +104,10 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         if (index < maxStaticMapDirectionalLights)
             plan.uniforms.directionalLights[index] = {static_cast<float>(tile), light.strength,
                                                       casterSide ? 0.0f : reach, static_cast<float>(filter)};
+        const ShadowFrustum frustum{fit.view, false, fit.halfSize, 0.0f, fit.farDepth - fit.nearDepth};
         plan.maps.push_back({ShadowLightKind::Directional, index,
-                             {{tile, plan.directionalAtlas.viewport(tile), view, all}}, fit.texelSize});
+                             {{{tile, plan.directionalAtlas.viewport(tile), view, all}, fit.projection, frustum}},
+                             fit.texelSize});
     }
 }
 
@@ -195,21 +198,47 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
             plan.uniforms.localLights[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
         StaticShadowMap map{light->kind, light->index, {}, 0.0f};
         for (const glm::mat4& view : views.views) {
-            ShadowViewDraw draw{.viewProjection = projection * view, .slopeScaleBias = light->slopeScaleBias};
+            // The dither follows the tile's own texel grid, as in the realtime atlas.
+            ShadowViewDraw draw{.viewProjection = projection * view,
+                                .slopeScaleBias = light->slopeScaleBias,
+                                .ditherOrigin = -glm::vec2(plan.otherAtlas.tileOffset(tile))};
             if (casterSide)
                 draw.normalOffset = {bias, glm::vec4(light->position, 1.0f)};
             plan.uniforms.otherWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.otherAtlas, conventions);
             plan.uniforms.otherBounds[tile] = tileBounds(plan.otherAtlas, tile);
             plan.uniforms.otherData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
-            map.tiles.push_back({tile, plan.otherAtlas.viewport(tile), draw,
-                                 castersInFrustum(view, views.fov, nearPlane, light->range, casters)});
+            map.tiles.push_back({{tile, plan.otherAtlas.viewport(tile), draw,
+                                  castersInFrustum(view, views.fov, nearPlane, light->range, casters)},
+                                 projection,
+                                 ShadowFrustum{view, true, views.fov, nearPlane, light->range}});
             ++tile;
         }
         plan.maps.push_back(std::move(map));
     }
 }
 
+// Window depth of view-space z (negative in front): (t22 z + t32) / (t23 z + t33) with t = clipToTexture * projection.
+glm::mat2 depthRows(const glm::mat4& projection, const rhi::Conventions& conventions)
+{
+    const glm::mat4 t = conventions.clipToTexture() * projection;
+    return {t[2][2], t[2][3], t[3][2], t[3][3]};
+}
+
 } // namespace
+
+float linearShadowDepth(float windowDepth, const glm::mat4& projection, const rhi::Conventions& conventions)
+{
+    const glm::mat2 r = depthRows(projection, conventions);
+    // d (t23 z + t33) = t22 z + t32, solved for z; the depth along -z is its negation.
+    return -(r[1][0] - windowDepth * r[1][1]) / (windowDepth * r[0][1] - r[0][0]);
+}
+
+float windowShadowDepth(float linearDepth, const glm::mat4& projection, const rhi::Conventions& conventions)
+{
+    const glm::mat2 r = depthRows(projection, conventions);
+    const float z = -linearDepth;
+    return (r[0][0] * z + r[1][0]) / (r[0][1] * z + r[1][1]);
+}
 
 std::string_view shadowLightKindName(ShadowLightKind kind)
 {

@@ -1,0 +1,40 @@
+#include "StaticTileCache.hpp"
+
+#include "TileKeys.hpp"
+
+namespace penumbra::render {
+
+StaticTileCache::StaticTileCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat,
+                                 std::string name)
+    : device_(device), name_(std::move(name)), pass_(device, vertexFormat)
+{
+}
+
+std::uint32_t StaticTileCache::update(rhi::CommandList& commands, shadows::ShadowAtlas& atlas,
+                                      const std::vector<shadows::ShadowTileDraw>& tiles,
+                                      std::span<const shadows::ShadowCaster> casters)
+{
+    const bool fresh = !twin_ || twin_->size() != atlas.size() || twin_->format() != atlas.format();
+    if (fresh) {
+        twin_ = std::make_unique<shadows::ShadowAtlas>(device_, atlas.size(), atlas.format(), name_);
+        keys_.clear();
+    }
+    std::map<std::uint32_t, std::uint64_t> keys;
+    std::vector<const shadows::ShadowTileDraw*> changed;
+    for (const shadows::ShadowTileDraw& tile : tiles) {
+        ContentHash h;
+        addTileView(h, tile);
+        addTileCasters(h, tile, casters);
+        keys[tile.tile] = h.value();
+        const auto old = keys_.find(tile.tile);
+        if (fresh || old == keys_.end() || old->second != h.value())
+            changed.push_back(&tile);
+    }
+    keys_ = std::move(keys);
+    const std::uint32_t draws =
+        changed.empty() && !fresh ? 0 : pass_.record(commands, *twin_, changed, casters, fresh);
+    commands.copyTexture(twin_->texture(), 0, atlas.texture(), 0);
+    return draws;
+}
+
+} // namespace penumbra::render

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "ContentHash.hpp"
+
+#include "penumbra/shadows/ShadowCaster.hpp"
+#include "penumbra/shadows/ShadowCasterDraws.hpp"
+
+#include <span>
+
+namespace penumbra::render {
+
+// What a tile's depth is drawn from: its place, its view and biases.
+inline void addTileView(ContentHash& h, const shadows::ShadowTileDraw& tile)
+{
+    const shadows::ShadowViewDraw& v = tile.view;
+    h.add(tile.tile).add(tile.viewport).add(v.viewProjection).add(v.slopeScaleBias).add(v.pancake).add(v.mirrored);
+    h.add(v.ditherOrigin).add(v.normalOffset.reach).add(v.normalOffset.light);
+}
+
+// ... and the casters drawn into it, as the GPU objects and values they are this frame.
+inline void addTileCasters(ContentHash& h, const shadows::ShadowTileDraw& tile,
+                           std::span<const shadows::ShadowCaster> casters)
+{
+    for (const std::uint32_t i : tile.casters) {
+        const shadows::ShadowCaster& c = casters[i];
+        h.add(i).add(c.vertices).add(c.indices).add(c.indexCount).add(c.model).add(c.mode).add(c.alpha);
+        h.add(c.alphaCutoff).add(c.baseColorMap).add(c.textured).add(c.baseColorUv).add(c.doubleSided);
+    }
+}
+
+} // namespace penumbra::render
