@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench bench-forest bench-static sanitize fuzz docs clean
+.PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize fuzz docs clean
 
 all: build
 
@@ -39,6 +39,13 @@ bench-forest: build
 	@for tiles in 2048 4096; do $(PENUMBRA) bench --scene forest --settings scripts/bench/forest-$$tiles-tiles.json \
 		--backend vulkan,opengl --frames 10 --warmup 2 --json out/bench-forest-$$tiles.json || exit 1; done
 
+# The long soak on both backends: SOAK_FRAMES (default 10000) frames of seeded viewer changes on SOAK_SCENE (default
+# test), out/soak-<backend>.json with every checkpoint's resident memory and live RHI objects.
+SOAK_FRAMES ?= 10000
+SOAK_SCENE ?= test
+soak: build
+	@for backend in vulkan opengl; do $(PENUMBRA) soak --scene $(SOAK_SCENE) --backend $$backend --frames $(SOAK_FRAMES) \
+		--size 160x90 --warmup 500 --check-every 100 --json out/soak-$$backend.json || exit 1; done
 # The town (64 static buildings, one dynamic ball) with every caster drawn every frame, with static maps kept
 # (onChange) and from a bake, the realtime atlases drawing the ball alone: out/bench-static-<mode>.json.
 bench-static: build

@@ -22,11 +22,16 @@ for target in "${targets[@]}"; do
   corpus="$BUILD/corpus/$target" crashes="$BUILD/crashes/$target"
   mkdir -p "$corpus" "$crashes"
   log="$BUILD/fuzz-$target.log"
+  # libFuzzer stops at a corpus folder that does not exist: a target without regressions yet has none.
+  corpora=("$corpus")
+  for extra in "$root/tests/fuzz/seeds/$target" "$root/tests/fuzz/regressions/$target"; do
+    [ -d "$extra" ] && corpora+=("$extra")
+  done
   dict=()
   [ -f "$root/tests/fuzz/dictionaries/$target.dict" ] && dict=(-dict="$root/tests/fuzz/dictionaries/$target.dict")
   set +e
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    "$BUILD/fuzz/penumbra_fuzz_$target" "$corpus" "$root/tests/fuzz/seeds/$target" "$root/tests/fuzz/regressions/$target" \
+    "$BUILD/fuzz/penumbra_fuzz_$target" "${corpora[@]}" \
     "${dict[@]}" -jobs=1 -workers=1 -max_total_time="$FUZZ_SECONDS" -runs="$FUZZ_RUNS" -timeout=10 -rss_limit_mb=2048 \
     -max_len=65536 -print_final_stats=1 -artifact_prefix="$crashes/" >"$log" 2>&1
   status=$?

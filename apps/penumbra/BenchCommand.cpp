@@ -1,6 +1,7 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
 #include "DrawScene.hpp"
+#include "Interrupt.hpp"
 #include "RawDraws.hpp"
 #include "SceneBench.hpp"
 #include "ShadowBench.hpp"
@@ -36,8 +37,10 @@ class CollectingReporter : public benchmark::ConsoleReporter {
 public:
     CollectingReporter() : ConsoleReporter(OO_Tabular) {}
 
+    // Called after each benchmark: an interruption stops the run here, before the next one starts.
     void ReportRuns(const std::vector<Run>& runs) override
     {
+        stopIfInterrupted();
         for (const Run& run : runs)
             if (run.run_type == Run::RT_Iteration)
                 seconds[run.run_name.function_name] =
@@ -133,6 +136,7 @@ void runBenchmarks(const BenchOptions& options)
                                  {"validatedNsPerDraw", validated},
                                  {"validatedOverRhi", validated / rhi}});
     }
+    stopIfInterrupted();
     if (!options.json.empty()) {
         parity::writeTextFile(options.json, json.dump(2) + "\n");
         fmt::print("wrote {}\n", options.json);
@@ -189,11 +193,13 @@ void addBenchCommand(CLI::App& app)
         ->capture_default_str();
     addValidateFlag(*bench, scene->validate);
     bench->callback([options, scene, bench] {
+        installInterruptHandler();
         if (bench->count("--scene") == 0) {
             runBenchmarks(*options);
             return;
         }
         const nlohmann::json json = runSceneBench(*scene);
+        stopIfInterrupted();
         if (!options->json.empty()) {
             parity::writeTextFile(options->json, json.dump(2) + "\n");
             fmt::print("wrote {}\n", options->json);

@@ -16,6 +16,7 @@ void addConfigurationsCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addTruthCommand(CLI::App& app);
 void addBakeCommand(CLI::App& app);
+void addSoakCommand(CLI::App& app);
 
 // The RHI test pattern through one configuration, size x size pixels, with the validation layer / debug output
 // when `validate` is set.

@@ -56,7 +56,10 @@ std::optional<float> intensityOf(const std::vector<std::vector<float>>& fields, 
 std::optional<glm::vec3> directionOf(const std::vector<float>& field)
 {
     const std::optional<glm::vec3> d = vec3Of(field);
-    return d && glm::length(*d) > 0.0f ? std::optional<glm::vec3>(glm::normalize(*d)) : std::nullopt;
+    // The length of (1e38, -1, 0) overflows float to infinity and normalizes to (0, -0, 0): a length that is not a
+    // finite positive number gives no direction (found by tests/fuzz/FuzzCommandLine.cpp).
+    const float length = d ? glm::length(*d) : 0.0f;
+    return std::isfinite(length) && length > 0.0f ? std::optional<glm::vec3>(*d / length) : std::nullopt;
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
+#include "Interrupt.hpp"
 #include "SceneOptions.hpp"
 #include "TestPattern.hpp"
 
@@ -54,6 +55,7 @@ void runParity(const ParityOptions& options)
     std::map<std::string, rhi::Image> cascades; // written beside the report's pictures, not compared
     const parity::Result result = parity::run(
         [&](rhi::Device& device, const rhi::NamedConfiguration& configuration) {
+            stopIfInterrupted();
             pattern::PatternRenderer pattern(device, {.width = kPatternSize, .height = kPatternSize});
             pattern.render(pattern::testPattern());
             const ShadowPictures pictures = renderShadowScene(device, configuration.name, loaded.scene, frame);
@@ -68,6 +70,9 @@ void runParity(const ParityOptions& options)
             o.validate = options.validate;
             return o;
         }());
+    // The harness reports a render function's exception as that configuration's failure: an interruption is
+    // read again here, so that no report is written.
+    stopIfInterrupted();
     const std::filesystem::path folder = options.out;
     parity::writeReport(folder, result, options.scene.scene);
     for (const auto& [configuration, picture] : cascades)
@@ -96,7 +101,10 @@ void addParityCommand(CLI::App& app)
     addSceneOptions(*command, options->scene);
     command->add_option("-o,--out", options->out, "Report folder")->capture_default_str();
     addValidateFlag(*command, options->validate);
-    command->callback([options] { runParity(*options); });
+    command->callback([options] {
+        installInterruptHandler();
+        runParity(*options);
+    });
 }
 
 } // namespace penumbra::apps

@@ -1,5 +1,6 @@
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
+#include "Interrupt.hpp"
 #include "penumbra/parity/ImageFiles.hpp"
 #include "SceneOptions.hpp"
 
@@ -62,12 +63,14 @@ void render(const RenderOptions& options)
     // Rendered first, written after: a failing configuration leaves no files from the others.
     std::vector<ShadowPictures> all;
     for (const std::string& configuration : configurations) {
+        stopIfInterrupted();
         all.push_back(renderShadowScene(configuration, loaded.scene, frame,
                                         {.validate = options.validate,
                                          .readAtlases = !options.atlas.empty(),
                                          .bake = bake ? &*bake : nullptr}));
         printStats(all.back(), loaded.scene);
     }
+    stopIfInterrupted();
     for (const ShadowPictures& pictures : all)
         writeOutputs(options, pictures, all.size() > 1);
 }
@@ -104,7 +107,10 @@ void addRenderCommand(CLI::App& app)
     command->add_option("--debug", options->debug, "cascades: also write X-cascades.png, tinted by cascade")
         ->check(CLI::IsMember({"cascades"}));
     addValidateFlag(*command, options->validate);
-    command->callback([options] { render(*options); });
+    command->callback([options] {
+        installInterruptHandler();
+        render(*options);
+    });
 }
 
 } // namespace penumbra::apps

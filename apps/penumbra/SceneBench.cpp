@@ -1,6 +1,7 @@
 #include "SceneBench.hpp"
 
 #include "BackendOptions.hpp"
+#include "Interrupt.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/ReferenceLitPass.hpp"
@@ -73,6 +74,7 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
     ConfigurationResult result{configuration, {}, {}, {}};
     const std::uint32_t total = options.warmup + options.frames;
     for (std::uint32_t i = 0; i < total; ++i) {
+        stopIfInterrupted();
         const auto start = std::chrono::steady_clock::now();
         render::FrameStats stats = renderer.render(scene.camera, frame);
         const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

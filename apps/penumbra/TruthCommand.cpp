@@ -1,6 +1,7 @@
 // penumbra truth: a scene's shadow maps against a CPU ray cast of the same pixels, per shadowed light.
 #include "BackendOptions.hpp"
 #include "Commands.hpp"
+#include "Interrupt.hpp"
 #include "penumbra/parity/ImageFiles.hpp"
 #include "SceneOptions.hpp"
 #include "ToolDevices.hpp"
@@ -51,6 +52,7 @@ std::vector<scene::LightRef> shadowedLights(const render::ShadowPlans& plans, co
 scene::TraceProgress progressBar(std::string what)
 {
     return [what = std::move(what), shown = -1](std::uint32_t done, std::uint32_t rows) mutable {
+        stopIfInterrupted();
         const int percent = rows == 0 ? 100 : static_cast<int>(100u * done / rows) / 5 * 5;
         if (percent == shown)
             return;
@@ -130,6 +132,7 @@ void truth(const TruthOptions& options)
                                      options.scene.scene));
     std::vector<LightTruth> truths;
     for (const scene::LightRef& light : lights) {
+        stopIfInterrupted();
         frame.visibilityOf = light;
         renderer.render(scene.camera, frame, plans);
         const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
@@ -178,6 +181,7 @@ void truth(const TruthOptions& options)
     }
 
     // Everything is computed before the first file is written: a failure leaves no partial report.
+    stopIfInterrupted();
     const std::filesystem::path out(options.out);
     writeTruthPictures(out, truths);
     parity::writeTextFile(out / "truth.json", report.dump(2) + "\n");
@@ -206,7 +210,10 @@ void addTruthCommand(CLI::App& app)
     addSceneOptions(*command, options->scene);
     command->add_option("-o,--out", options->out, "Output folder")->required();
     addValidateFlag(*command, options->validate);
-    command->callback([options] { truth(*options); });
+    command->callback([options] {
+        installInterruptHandler();
+        truth(*options);
+    });
 }
 
 } // namespace penumbra::apps

@@ -1,5 +1,6 @@
 // penumbra: the command-line tool. Every subcommand runs on any configuration by name.
 #include "Commands.hpp"
+#include "Interrupt.hpp"
 #include "ToolDevices.hpp"
 #include "ViewCommand.hpp"
 
@@ -36,11 +37,15 @@ int main(int argc, char** argv)
     penumbra::apps::addBenchCommand(app);
     penumbra::apps::addTruthCommand(app);
     penumbra::apps::addBakeCommand(app);
+    penumbra::apps::addSoakCommand(app);
     penumbra::apps::addViewCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
+    } catch (const penumbra::apps::Interrupted& e) {
+        fmt::print(stderr, "\npenumbra: {}\n", e.what());
+        return 128 + e.signal();
     } catch (const penumbra::rhi::Error& e) {
         return reportError(e);
     } catch (const penumbra::scene::SceneError& e) {

@@ -1,37 +1,30 @@
 #include "penumbra/parity/ImageFiles.hpp"
 
+#include "penumbra/rhi/AtomicFile.hpp"
 #include "penumbra/rhi/ColorSpace.hpp"
 #include "penumbra/rhi/Error.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-#include <fstream>
 #include <fmt/format.h>
-#include <unistd.h>
 #include <vector>
 
 namespace penumbra::parity {
 namespace {
 
-// Written first and renamed into place, so no reader sees half a file; named per process, so that two
-// processes writing the same file (tests running in parallel, two runs of the tool) never share one.
-std::filesystem::path temporaryFor(const std::filesystem::path& path)
-{
-    return fmt::format("{}.partial-{}{}", path.string(), ::getpid(), path.extension().string());
-}
-
+// Encoded in memory by the writer the path's extension names, then written as one file by
+// rhi::writeFileAtomically, so every picture shares the text files' temporary-and-rename path.
 void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec, const void* pixels)
 {
-    std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
-    const std::filesystem::path temporary = temporaryFor(path);
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out)
-        throw rhi::Error(fmt::format("{}: no image writer: {}", path.string(), OIIO::geterror()));
-    if (!out->open(temporary.string(), spec) || !out->write_image(spec.format, pixels) || !out->close()) {
-        const std::string why = out->geterror();
-        std::filesystem::remove(temporary);
-        throw rhi::Error(fmt::format("{}: cannot write: {}", path.string(), why));
-    }
-    std::filesystem::rename(temporary, path);
+        throw rhi::Error(fmt::format("cannot write {}: no image writer: {}", path.string(), OIIO::geterror()));
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    if (!out->set_ioproxy(&memory) || !out->open(path.string(), spec) || !out->write_image(spec.format, pixels)
+        || !out->close())
+        throw rhi::Error(fmt::format("cannot write {}: {}", path.string(), out->geterror()));
+    rhi::writeFileAtomically(path, {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
 }
 
 } // namespace
@@ -75,18 +68,7 @@ void writePicture(const std::filesystem::path& path, const rhi::Image& image)
 
 void writeTextFile(const std::filesystem::path& path, std::string_view text)
 {
-    std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
-    const std::filesystem::path temporary = temporaryFor(path);
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out.write(text.data(), std::streamsize(text.size()));
-        out.close();
-        if (!out) {
-            std::filesystem::remove(temporary);
-            throw rhi::Error(fmt::format("{}: cannot write", path.string()));
-        }
-    }
-    std::filesystem::rename(temporary, path);
+    rhi::writeFileAtomically(path, text);
 }
 
 } // namespace penumbra::parity

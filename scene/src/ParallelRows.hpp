@@ -29,7 +29,14 @@ inline void forEachRow(std::uint32_t rows, const std::function<void(std::uint32_
     std::vector<std::jthread> threads;
     for (unsigned i = 0; i < helpers && i + 1 < rows; ++i)
         threads.emplace_back(work, false);
-    work(true);
+    try {
+        work(true);
+    } catch (...) {
+        // A progress callback that throws (the tool's SIGINT check) stops the helpers after their current row.
+        next = rows;
+        threads.clear();
+        throw;
+    }
     threads.clear();
     if (progress)
         progress(rows, rows);

@@ -1,6 +1,7 @@
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include "ShadowSettingsCheck.hpp"
+#include "penumbra/rhi/AtomicFile.hpp"
 #include "penumbra/rhi/Error.hpp"
 
 #include <array>
@@ -12,7 +13,6 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <unistd.h>
 
 namespace penumbra::shadows {
 namespace {
@@ -326,26 +326,7 @@ ShadowSettings loadShadowSettings(const std::filesystem::path& path)
 void saveShadowSettings(const std::filesystem::path& path, const ShadowSettings& settings)
 {
     validate(settings);
-    // A per-process name, so that two writers never share a temporary file.
-    const std::filesystem::path temporary = path.string() + fmt::format(".{}.tmp", ::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << toJson(settings);
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            throw rhi::Error(fmt::format("{}: cannot write: {}", temporary.string(), std::strerror(errno)));
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw rhi::Error(fmt::format("{}: cannot replace with {}: {}", path.string(), temporary.string(),
-                                     error.message()));
-    }
+    rhi::writeFileAtomically(path, toJson(settings));
 }
 
 } // namespace penumbra::shadows

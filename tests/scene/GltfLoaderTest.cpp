@@ -377,6 +377,33 @@ TEST_F(GltfLoaderTest, TooManyNodesAreRefused)
     EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /nodes: 100001 elements, over the limit of 100000");
 }
 
+// As many nodes as the limit allows load, one object each: the structure of a file that took the loader seconds
+// while the JSON parser's depth check was quadratic in the length of an array (GltfFile.cpp, checkJsonDepth). How
+// long it takes is `penumbra bench`'s business, not a unit test's.
+TEST_F(GltfLoaderTest, AsManyNodesAsTheLimitLoad)
+{
+    GltfBuilder b = cubeScene();
+    nlohmann::json& nodes = b.json()["nodes"];
+    nlohmann::json& roots = b.json()["scenes"][0]["nodes"];
+    for (int i = 1; i < 100000; ++i) {
+        nodes.push_back({{"mesh", 0}, {"translation", {i % 100, 0, i / 100}}});
+        roots.push_back(i);
+    }
+    const GltfScene loaded = loadGltf(write(b));
+    EXPECT_EQ(loaded.scene.objects.size(), 100000u);
+    EXPECT_EQ(loaded.scene.meshes.size(), 1u);
+}
+
+TEST_F(GltfLoaderTest, JsonNestedTooDeeplyIsRefused)
+{
+    GltfBuilder b = cubeScene();
+    nlohmann::json deep = nlohmann::json::array();
+    for (int i = 0; i < 200; ++i)
+        deep = nlohmann::json::array({deep});
+    b.json()["extras"] = deep;
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: cannot read: JSON nested deeper than 128 levels");
+}
+
 TEST_F(GltfLoaderTest, DeepNodeChainsAreRefused)
 {
     GltfBuilder b = cubeScene();

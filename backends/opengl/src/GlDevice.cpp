@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <unistd.h>
 
 namespace penumbra::opengl {
 namespace {
@@ -79,6 +80,9 @@ rhi::Capabilities GlDevice::queryCapabilities() const
         gl.GetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &caps.maxSamplerAnisotropy);
     for (rhi::Format f : rhi::allFormats)
         caps.formats[std::size_t(f)] = formatSupport(f);
+    // GL has no query of a device's memory; Mesa's software renderers keep every texture in system memory.
+    if (caps.device.starts_with("llvmpipe") || caps.device.starts_with("softpipe"))
+        caps.deviceMemoryBytes = std::uint64_t(::sysconf(_SC_PHYS_PAGES)) * std::uint64_t(::sysconf(_SC_PAGESIZE));
     return caps;
 }
 

@@ -2,6 +2,8 @@
 
 #include "GlFormats.hpp"
 #include "penumbra/rhi/BackendSupport.hpp"
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/MemorySize.hpp"
 #include "penumbra/rhi/ValidationRules.hpp"
 
 #include <algorithm>
@@ -93,6 +95,10 @@ GlTexture::GlTexture(GlContextPtr context, const rhi::TextureDesc& desc) : conte
                             GLsizei(desc.layers));
     else
         gl.TextureStorage2D(name_.get(), levels, format.internalFormat, GLsizei(desc.width), GLsizei(desc.height));
+    // GL 4.5 section 2.3.1: a command that runs out of memory sets GL_OUT_OF_MEMORY and leaves the state
+    // undefined only for that object, which is deleted here with the name.
+    if (gl.GetError() == GL_OUT_OF_MEMORY)
+        throw rhi::Error(fmt::format("glTextureStorage for {}: GL_OUT_OF_MEMORY", rhi::describeAllocation(desc)));
     gl.TextureParameteri(name_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TextureParameteri(name_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     if (desc.format == rhi::Format::D24S8)

@@ -64,6 +64,12 @@ void Context::fillCapabilities()
     capabilities.cubeArrays = features.imageCubeArray;
     capabilities.maxCubeSize = limits.maxImageDimensionCube;
     capabilities.maxSamplerAnisotropy = features.samplerAnisotropy ? limits.maxSamplerAnisotropy : 1.0f;
+    VkPhysicalDeviceMemoryProperties memory;
+    vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memory);
+    for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)
+        if (memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            capabilities.deviceMemoryBytes =
+                std::max<std::uint64_t>(capabilities.deviceMemoryBytes, memory.memoryHeaps[i].size);
     for (rhi::Format f : rhi::allFormats)
         capabilities.formats[std::size_t(f)] = formatSupport(f);
 }

@@ -6,6 +6,7 @@
 #include "penumbra/rhi/BackendSupport.hpp"
 #include "penumbra/rhi/ValidationRules.hpp"
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/MemorySize.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -130,7 +131,9 @@ VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::Textur
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = requirements.size;
     alloc.memoryTypeIndex = context_->memoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
-    memory_ = createOwned<UniqueMemory>(device, vkAllocateMemory, alloc, "vkAllocateMemory");
+    memory_ = createOwned<UniqueMemory>(device, vkAllocateMemory, alloc,
+                                        fmt::format("vkAllocateMemory of {} for {}", rhi::byteSize(requirements.size),
+                                                    rhi::describeAllocation(desc)));
     check(vkBindImageMemory(device, image_.get(), memory_.get(), 0), "vkBindImageMemory");
 
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};

@@ -4,6 +4,7 @@
 #include "Rules.hpp"
 
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/MemorySize.hpp"
 
 namespace penumbra::rhi {
 
@@ -16,8 +17,10 @@ ValidatingDevice::~ValidatingDevice()
     lifetime_->alive.store(false, std::memory_order_release);
 }
 
+// Out of memory is checked with validation off too: it is the machine's limit, not a misuse of the API.
 std::unique_ptr<Buffer> ValidatingDevice::createBuffer(const BufferDesc& desc)
 {
+    checkFitsInMemory(capabilities(), describeAllocation(desc), desc.size);
     return apiCreateBuffer(desc);
 }
 
@@ -25,6 +28,7 @@ std::unique_ptr<Texture> ValidatingDevice::createTexture(const TextureDesc& desc
 {
     if (validate_)
         checkTextureDesc(capabilities(), desc);
+    checkFitsInMemory(capabilities(), describeAllocation(desc), textureBytes(desc));
     return apiCreateTexture(desc);
 }
 

@@ -1,7 +1,9 @@
 #include "penumbra/shadows/StaticShadowBake.hpp"
 
+#include "penumbra/rhi/AtomicFile.hpp"
 #include "penumbra/rhi/Error.hpp"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <cerrno>
 #include <cstring>
@@ -9,7 +11,6 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <unistd.h>
 
 namespace penumbra::shadows {
 namespace {
@@ -20,38 +21,21 @@ constexpr std::string_view kFormat = "penumbra static shadow bake";
 constexpr int kVersion = 1;
 
 // Written under a per-process name and renamed into place, so no reader sees half a file.
-std::filesystem::path temporaryFor(const std::filesystem::path& path)
-{
-    return fmt::format("{}.partial-{}{}", path.string(), ::getpid(), path.extension().string());
-}
-
-void replaceWith(const std::filesystem::path& temporary, const std::filesystem::path& path)
-{
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::filesystem::remove(temporary, error);
-        throw rhi::Error(fmt::format("{}: cannot write: {}", path.string(), error.message()));
-    }
-}
-
+// Encoded in memory, then written whole by rhi::writeFileAtomically (a temporary file renamed into place).
 void writeDepthFile(const std::filesystem::path& path, const BakedShadowMap& map)
 {
     const auto height = static_cast<int>(map.size * map.frusta.size());
     OIIO::ImageSpec spec(static_cast<int>(map.size), height, 1, OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"Z"};
-    const std::filesystem::path temporary = temporaryFor(path);
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out)
-        throw rhi::Error(fmt::format("{}: no image writer: {}", path.string(), OIIO::geterror()));
-    if (!out->open(temporary.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, map.depth.data()) ||
-        !out->close()) {
-        const std::string why = out->geterror();
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw rhi::Error(fmt::format("{}: cannot write: {}", path.string(), why));
-    }
-    replaceWith(temporary, path);
+        throw rhi::Error(fmt::format("cannot write {}: no image writer: {}", path.string(), OIIO::geterror()));
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    if (!out->set_ioproxy(&memory) || !out->open(path.string(), spec) ||
+        !out->write_image(OIIO::TypeDesc::FLOAT, map.depth.data()) || !out->close())
+        throw rhi::Error(fmt::format("cannot write {}: {}", path.string(), out->geterror()));
+    rhi::writeFileAtomically(path, {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
 }
 
 std::vector<float> readDepthFile(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height)
@@ -236,18 +220,7 @@ void writeStaticShadowBake(const std::filesystem::path& directory, const StaticS
                                       {"hash", fmt::format("{:016x}", map.hash)},
                                       {"frusta", std::move(frusta)}});
     }
-    const std::filesystem::path path = directory / "manifest.json";
-    const std::filesystem::path temporary = temporaryFor(path);
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << manifest.dump(2) << "\n";
-        out.close();
-        if (!out) {
-            std::filesystem::remove(temporary, error);
-            throw rhi::Error(fmt::format("{}: cannot write: {}", path.string(), std::strerror(errno)));
-        }
-    }
-    replaceWith(temporary, path);
+    rhi::writeFileAtomically(directory / "manifest.json", manifest.dump(2) + "\n");
 }
 
 StaticShadowBake readStaticShadowBake(const std::filesystem::path& directory)

@@ -7,8 +7,8 @@
 
 namespace penumbra::parity {
 
-// Writes through OpenImageIO, creating parent folders; a failure throws rhi::Error naming the
-// file. Files are written to a temporary name and renamed, so nothing is left half-written.
+// Encodes through OpenImageIO and writes with rhi::writeFileAtomically (parent folders created, a
+// temporary file renamed into place); a failure throws rhi::Error "cannot write <path>: <reason>".
 void writePng(const std::filesystem::path& path, const rhi::Image& image);
 // The raw depth values as one 32-bit float channel, exactly as read back.
 void writeExr(const std::filesystem::path& path, const rhi::DepthImage& depth);
@@ -17,7 +17,7 @@ void writeExr(const std::filesystem::path& path, const rhi::DepthImage& depth);
 void writePicture(const std::filesystem::path& path, const rhi::Image& image);
 // Whether writePicture takes this path's extension.
 bool isPicturePath(const std::filesystem::path& path);
-// A report or other text file, written to a temporary name and renamed like the pictures.
+// A report or other text file, written by rhi::writeFileAtomically like the pictures.
 void writeTextFile(const std::filesystem::path& path, std::string_view text);
 
 } // namespace penumbra::parity

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/rhi/LiveObjects.hpp"
+
 #include <cstdint>
 #include <glm/vec4.hpp>
 #include <optional>
@@ -42,7 +44,7 @@ struct PassDesc {
 // Records commands; Device::submit runs them in order and waits. After a submit the list is
 // empty and records anew. Resources a list names must outlive its submission; the list must not
 // outlive its device.
-class CommandList {
+class CommandList : private LiveObject<ObjectKind::CommandList> {
 public:
     virtual ~CommandList() = default;
 

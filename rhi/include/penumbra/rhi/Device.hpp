@@ -3,6 +3,7 @@
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Configuration.hpp"
 #include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/rhi/LiveObjects.hpp"
 #include "penumbra/rhi/Pipeline.hpp"
 #include "penumbra/rhi/Resources.hpp"
 #include "penumbra/rhi/Shader.hpp"
@@ -50,6 +51,10 @@ struct Capabilities {
     // Highest SamplerDesc::maxAnisotropy: Vulkan's samplerAnisotropy feature and limit, GL 4.6 or
     // ARB/EXT_texture_filter_anisotropic; 1 where the device has no anisotropic filtering.
     float maxSamplerAnisotropy = 1.0f;
+    // Bytes of the device's largest memory heap (Vulkan's largest DEVICE_LOCAL heap; for OpenGL's software
+    // renderers, which keep textures in system memory, the machine's physical memory); 0 where the API does not
+    // say. A buffer or texture larger than this is refused before the API is asked (Device::createTexture).
+    std::uint64_t deviceMemoryBytes = 0;
     // Indexed by Format. Linear filtering of depth formats is hardware 2x2 PCF with a comparison sampler;
     // lavapipe offers it for none (conventions note, section 4).
     std::array<FormatSupport, formatCount> formats{};
@@ -61,7 +66,11 @@ struct Capabilities {
     std::uint32_t sampleCounts(std::span<const Format> targets) const;
 };
 
-class Device {
+// Threading: a Device and every object it created (buffers, textures, command lists, ...) are used only from the
+// thread that created the device, one call at a time; nothing here is thread-safe (an OpenGL context is current on
+// one thread, EGL 1.5 section 3.7.3 "eglMakeCurrent"). Each device owns its own API context, so devices share no
+// state with one another.
+class Device : private LiveObject<ObjectKind::Device> {
 public:
     virtual ~Device() = default;
 
@@ -69,6 +78,9 @@ public:
     virtual const Conventions& conventions() const = 0;
     virtual const Capabilities& capabilities() const = 0;
 
+    // Out of memory is an Error naming the resource (its debugName) and its size: a request larger than
+    // Capabilities::deviceMemoryBytes before the API is asked, an allocation the driver refuses after. Nothing is
+    // created then and the device stays usable.
     virtual std::unique_ptr<Buffer> createBuffer(const BufferDesc& desc) = 0;
     virtual std::unique_ptr<Texture> createTexture(const TextureDesc& desc) = 0;
     // Uploads one whole mip level of one layer: tightly packed rows of mipExtent(width, level) texels, row 0

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Flags.hpp"
 #include "penumbra/rhi/Format.hpp"
+#include "penumbra/rhi/LiveObjects.hpp"
 #include "penumbra/rhi/Shader.hpp"
 #include "penumbra/rhi/UniformLayout.hpp"
 
@@ -102,7 +103,7 @@ struct PipelineDesc {
     std::string debugName;
 };
 
-class Pipeline {
+class Pipeline : private LiveObject<ObjectKind::Pipeline> {
 public:
     virtual ~Pipeline() = default;
     virtual const PipelineDesc& desc() const = 0;

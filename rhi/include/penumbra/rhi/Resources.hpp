@@ -2,6 +2,7 @@
 
 #include "penumbra/rhi/Flags.hpp"
 #include "penumbra/rhi/Format.hpp"
+#include "penumbra/rhi/LiveObjects.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -37,7 +38,7 @@ struct BufferDesc {
 
 // Buffers live in CPU-visible memory. The GPU reads them when a command list is submitted,
 // so a write between recording and submitting is seen by every draw of that submission.
-class Buffer {
+class Buffer : private LiveObject<ObjectKind::Buffer> {
 public:
     virtual ~Buffer() = default;
     virtual const BufferDesc& desc() const = 0;
@@ -95,7 +96,7 @@ struct TextureDesc {
     std::string debugName;
 };
 
-class Texture {
+class Texture : private LiveObject<ObjectKind::Texture> {
 public:
     virtual ~Texture() = default;
     virtual const TextureDesc& desc() const = 0;
@@ -127,7 +128,7 @@ struct SamplerDesc {
     std::string debugName;
 };
 
-class Sampler {
+class Sampler : private LiveObject<ObjectKind::Sampler> {
 public:
     virtual ~Sampler() = default;
     virtual const SamplerDesc& desc() const = 0;
@@ -158,7 +159,7 @@ struct AttachmentFormats {
 
 AttachmentFormats attachmentFormats(const FramebufferDesc& desc);
 
-class Framebuffer {
+class Framebuffer : private LiveObject<ObjectKind::Framebuffer> {
 public:
     virtual ~Framebuffer() = default;
     virtual std::uint32_t width() const = 0;
@@ -166,7 +167,7 @@ public:
     virtual const AttachmentFormats& formats() const = 0;
 };
 
-class TimestampQueries {
+class TimestampQueries : private LiveObject<ObjectKind::TimestampQueries> {
 public:
     virtual ~TimestampQueries() = default;
     virtual std::uint32_t count() const = 0;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "penumbra/rhi/LiveObjects.hpp"
 #include "penumbra/rhi/UniformLayout.hpp"
 
 #include <cstdint>
@@ -47,7 +48,7 @@ struct CompiledShader {
     std::vector<ShaderBinding> bindings;
 };
 
-class Shader {
+class Shader : private LiveObject<ObjectKind::Shader> {
 public:
     virtual ~Shader() = default;
     virtual const CompiledShader& compiled() const = 0;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/Image.hpp"
+#include "penumbra/rhi/LiveObjects.hpp"
 
 #include <cstdint>
 
@@ -26,7 +27,7 @@ struct Extent {
 // Shows finished pictures in the device's window. The picture is an RHI texture laid out as
 // every render target is (row 0 at the top), so presenting needs no flip from the caller: the
 // backend puts row 0 at the top of the window, whatever its API's window origin is.
-class Swapchain {
+class Swapchain : private LiveObject<ObjectKind::Swapchain> {
 public:
     virtual ~Swapchain() = default;
 

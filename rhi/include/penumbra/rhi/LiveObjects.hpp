@@ -1,0 +1,48 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace penumbra::rhi {
+
+// Every RHI object kind: each interface class (Device, Buffer, Texture, ...) derives from LiveObject<kind>,
+// so the live count of each kind is kept in this one place, whatever the backend. `penumbra soak` reads them to
+// find objects that are created and never destroyed.
+enum class ObjectKind : std::uint8_t {
+    Device,
+    Buffer,
+    Texture,
+    Sampler,
+    Framebuffer,
+    Shader,
+    Pipeline,
+    CommandList,
+    TimestampQueries,
+    Swapchain,
+};
+inline constexpr std::size_t kObjectKindCount = 10;
+
+// "device", "buffer", "texture", ... (as the soak's report names them).
+std::string_view objectKindName(ObjectKind kind);
+
+// Objects alive in this process now, per kind (indexed by ObjectKind), over every device.
+using LiveObjectCounts = std::array<std::int64_t, kObjectKindCount>;
+LiveObjectCounts liveObjectCounts();
+
+namespace detail {
+void countLiveObject(ObjectKind kind, int change) noexcept;
+} // namespace detail
+
+// Counts itself in at construction (copies too) and out at destruction.
+template <ObjectKind Kind>
+class LiveObject {
+protected:
+    LiveObject() noexcept { detail::countLiveObject(Kind, +1); }
+    LiveObject(const LiveObject&) noexcept { detail::countLiveObject(Kind, +1); }
+    LiveObject& operator=(const LiveObject&) noexcept = default;
+    ~LiveObject() { detail::countLiveObject(Kind, -1); }
+};
+
+} // namespace penumbra::rhi
