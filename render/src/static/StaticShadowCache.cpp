@@ -187,7 +187,7 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
         if (!otherMaps.empty())
             restore(*otherAtlas_, plan.otherAtlas, all(false));
     } else {
-            const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
+        const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
             std::vector<const shadows::ShadowTileDraw*> tiles;
             for (const shadows::StaticShadowMap* map : maps)
                 for (const shadows::StaticShadowTile& tile : map->tiles)
