@@ -92,13 +92,6 @@ LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, fl
             cullCastersInFrustum(view, fov, nearPlane, range, casterBounds), {}};
 }
 
-glm::vec4 tileBounds(const ShadowAtlasLayout& atlas, std::uint32_t tile)
-{
-    const glm::vec2 first(atlas.tileOffset(tile));
-    const glm::vec2 last = first + static_cast<float>(atlas.tileSize() - 1);
-    return {first, last};
-}
-
 // The normal offset's reach per unit of distance, `scale`, goes to the lit pass's lookups on the receiver side and
 // to the caster pass's vertices (with the light at `position`) on the caster side; returns the lit pass's share.
 float sideOfNormalBias(LocalShadowView& view, NormalBiasSide side, float scale, glm::vec3 position)
@@ -128,7 +121,7 @@ void addTile(OtherShadowPlan& plan, std::uint32_t tile, LocalShadowView view, fl
              const SoftProjection& soft, const rhi::Conventions& conventions)
 {
     plan.uniforms.worldToAtlas[tile] = worldToAtlas(view.viewProjection, tile, plan.atlas, conventions);
-    plan.uniforms.tileBounds[tile] = tileBounds(plan.atlas, tile);
+    plan.uniforms.tileBounds[tile] = plan.atlas.tileTexelBounds(tile);
     plan.uniforms.tileData[tile] = {normalBiasScale, static_cast<float>(soft.filter), 0.0f, 0.0f};
     plan.uniforms.tileSoft[tile] = soft.tileSoft;
     plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});

@@ -27,12 +27,6 @@ ShadowFilter staticFilter(ShadowFilter filter, ShadowLightKind kind, std::uint32
     return ShadowFilter::PCF7x7;
 }
 
-glm::vec4 tileBounds(const ShadowAtlasLayout& atlas, std::uint32_t tile)
-{
-    const glm::vec2 first(atlas.tileOffset(tile));
-    return {first, first + static_cast<float>(atlas.tileSize() - 1)};
-}
-
 // The sphere around the union of the static casters' boxes.
 Sphere boundingSphere(const StaticCasters& casters)
 {
@@ -100,7 +94,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
             view.normalOffset = {reach, glm::vec4(glm::normalize(light.direction), 0.0f)};
         plan.uniforms.directionalWorldToMap[tile] =
             worldToAtlas(fit.viewProjection, tile, plan.directionalAtlas, conventions);
-        plan.uniforms.directionalBounds[tile] = tileBounds(plan.directionalAtlas, tile);
+        plan.uniforms.directionalBounds[tile] = plan.directionalAtlas.tileTexelBounds(tile);
         if (index < maxStaticMapDirectionalLights)
             plan.uniforms.directionalLights[index] = {static_cast<float>(tile), light.strength,
                                                       casterSide ? 0.0f : reach, static_cast<float>(filter)};
@@ -205,7 +199,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
             if (casterSide)
                 draw.normalOffset = {bias, glm::vec4(light->position, 1.0f)};
             plan.uniforms.otherWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.otherAtlas, conventions);
-            plan.uniforms.otherBounds[tile] = tileBounds(plan.otherAtlas, tile);
+            plan.uniforms.otherBounds[tile] = plan.otherAtlas.tileTexelBounds(tile);
             plan.uniforms.otherData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
             map.tiles.push_back({{tile, plan.otherAtlas.viewport(tile), draw,
                                   castersInFrustum(view, views.fov, nearPlane, light->range, casters)},

@@ -28,6 +28,8 @@ public:
     glm::uvec2 tileCoordinates(std::uint32_t tile) const;
     // Top-left texel of a tile.
     glm::uvec2 tileOffset(std::uint32_t tile) const;
+    // First and last texel of a tile (x, y, x, y): the texels its filter taps may read.
+    glm::vec4 tileTexelBounds(std::uint32_t tile) const;
     rhi::Viewport viewport(std::uint32_t tile) const;
     // Maps a tile's texture coordinates (u, v in [0, 1], depth) to the atlas's; depth passes through.
     glm::mat4 tileToAtlas(std::uint32_t tile) const;
