@@ -22,43 +22,46 @@ std::string samplesSuffix(std::uint32_t samples)
 
 LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const rhi::Shader& fragment,
                            const rhi::Shader& prepassedFragment, std::uint32_t samples)
-    : samples_(samples)
+    : device_(device), vertex_(vertex), fragment_(fragment), prepassedFragment_(prepassedFragment), samples_(samples)
 {
-    rhi::PipelineDesc desc;
-    desc.vertex = &vertex;
-    desc.fragment = &fragment;
-    desc.vertexLayout = GpuScene::vertexLayout();
-    desc.depthFormat = kLitDepthFormat;
-    desc.samples = samples;
-    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
-                           shadows::otherShadowLayout(), shadows::staticShadowLayout()};
-    for (const bool blend : {false, true})
-        for (const bool doubleSided : {false, true}) {
-            desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-            desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
-            rhi::ColorTarget target{kLitColorFormat};
-            if (blend)
-                target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
-                                rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
-            desc.colorTargets = {target};
-            desc.debugName = fmt::format("lit ({}, {}{})", blend ? "blended" : "opaque",
-                                         doubleSided ? "double-sided" : "culled", samplesSuffix(samples));
-            forward_[pipelineIndex(doubleSided, blend)] = device.createPipeline(desc);
-        }
-    desc.fragment = &prepassedFragment;
-    desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
-    desc.colorTargets = {rhi::ColorTarget{kLitColorFormat}};
-    for (const bool doubleSided : {false, true}) {
-        desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-        desc.debugName = fmt::format("lit (after the depth prepass, {}{})", doubleSided ? "double-sided" : "culled",
-                                     samplesSuffix(samples));
-        prepassed_[doubleSided ? 1 : 0] = device.createPipeline(desc);
-    }
 }
 
-const rhi::Pipeline& LitPipelines::choose(bool doubleSided, bool blend, bool prepassed) const
+std::unique_ptr<rhi::Pipeline> LitPipelines::create(bool doubleSided, bool blend, bool prepassed) const
 {
-    return prepassed && !blend ? *prepassed_[doubleSided ? 1 : 0] : *forward_[pipelineIndex(doubleSided, blend)];
+    rhi::PipelineDesc desc;
+    desc.vertex = &vertex_;
+    desc.fragment = prepassed ? &prepassedFragment_ : &fragment_;
+    desc.vertexLayout = GpuScene::vertexLayout();
+    desc.depthFormat = kLitDepthFormat;
+    desc.samples = samples_;
+    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
+                           shadows::otherShadowLayout(), shadows::staticShadowLayout()};
+    desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
+    rhi::ColorTarget target{kLitColorFormat};
+    if (prepassed) {
+        desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
+        desc.debugName = fmt::format("lit (after the depth prepass, {}{})", doubleSided ? "double-sided" : "culled",
+                                     samplesSuffix(samples_));
+    } else {
+        desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
+        if (blend)
+            target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
+                            rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
+        desc.debugName = fmt::format("lit ({}, {}{})", blend ? "blended" : "opaque",
+                                     doubleSided ? "double-sided" : "culled", samplesSuffix(samples_));
+    }
+    desc.colorTargets = {target};
+    return device_.createPipeline(desc);
+}
+
+const rhi::Pipeline& LitPipelines::choose(bool doubleSided, bool blend, bool prepassed)
+{
+    const bool afterPrepass = prepassed && !blend;
+    std::unique_ptr<rhi::Pipeline>& pipeline =
+        afterPrepass ? prepassed_[doubleSided ? 1 : 0] : forward_[pipelineIndex(doubleSided, blend)];
+    if (!pipeline)
+        pipeline = create(doubleSided, blend, afterPrepass);
+    return *pipeline;
 }
 
 } // namespace penumbra::render
