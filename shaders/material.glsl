@@ -6,21 +6,20 @@ const int PENUMBRA_CASTER_DITHER = 2;
 
 // Clip materials without a texture get a checker of holes, 5 cells per uv unit (scene::kClipCheckerCells);
 // textured ones take the texture's alpha (`textureAlpha`, 1 without a texture).
+// Chosen with mix(a, b, bool), not branches on the material's uniforms (shadow_caster.vert says why).
 float materialAlpha(float baseAlpha, int casterMode, vec2 uv, bool textured, float textureAlpha)
 {
-    if (textured)
-        return baseAlpha * textureAlpha;
-    if (casterMode != PENUMBRA_CASTER_CLIP)
-        return baseAlpha;
     const ivec2 cell = ivec2(floor(uv * 5.0));
-    return ((cell.x + cell.y) & 1) == 0 ? baseAlpha : 0.0;
+    const float checker = mix(0.0, baseAlpha, ((cell.x + cell.y) & 1) == 0);
+    const float untextured = mix(baseAlpha, checker, casterMode == PENUMBRA_CASTER_CLIP);
+    return mix(untextured, baseAlpha * textureAlpha, textured);
 }
 
 // A texture's uv (KHR_texture_transform): rows[0].w picks TEXCOORD_0 or TEXCOORD_1 (textureInfo.texCoord), rows 0
 // and 1 of the transform's 3 x 3 matrix map it (penumbra::shadows::uvTransformRows packs them).
 vec2 transformedUv(vec4 rows[2], vec2 uv0, vec2 uv1)
 {
-    const vec3 uv = vec3(rows[0].w > 0.5 ? uv1 : uv0, 1.0);
+    const vec3 uv = vec3(mix(uv0, uv1, bvec2(rows[0].w > 0.5)), 1.0);
     return vec2(dot(rows[0].xyz, uv), dot(rows[1].xyz, uv));
 }
 

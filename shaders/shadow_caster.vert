@@ -15,23 +15,28 @@ layout(location = 3) in vec2 inUv1;
 
 layout(location = 0) out vec2 vUv;
 
+// Uniform values pick between results with mix(a, b, bool), a per-component select, never a branch: lavapipe (Mesa
+// 22) inlines uniforms that decide branches into a freshly compiled shader whenever a draw's uniform block changes
+// (lvp_execute.c, update_inline_shader_state), which cost about a millisecond and 135 KiB that are never freed per
+// caster draw.
 vec4 casterClip()
 {
-    if (draw.reach.x <= 0.0)
-        return transformPoint(draw.worldToClip, inPosition);
+    const vec4 plain = transformPoint(draw.worldToClip, inPosition);
     const vec3 world = transformPoint(draw.model, inPosition).xyz;
     const vec3 normal = normalize(vec3(dot(draw.normalRows[0].xyz, inNormal), dot(draw.normalRows[1].xyz, inNormal),
                                        dot(draw.normalRows[2].xyz, inNormal)));
     const bool positional = draw.light.w > 0.5;
-    const vec3 towardsLight = positional ? draw.light.xyz - world : -draw.light.xyz;
+    const vec3 towardsLight = mix(-draw.light.xyz, draw.light.xyz - world, bvec3(positional));
     const float distance = length(towardsLight);
-    const float reach = draw.reach.x * (positional ? distance : 1.0);
-    return transformPoint(draw.viewProjection, world - receiverNormalOffset(normal, towardsLight / distance, reach));
+    const float reach = draw.reach.x * mix(1.0, distance, positional);
+    const vec4 moved =
+        transformPoint(draw.viewProjection, world - receiverNormalOffset(normal, towardsLight / distance, reach));
+    return mix(plain, moved, bvec4(draw.reach.x > 0.0));
 }
 
 void main()
 {
     const vec4 clip = casterClip();
-    gl_Position = draw.material.w > 0.5 ? penumbraClampToNearPlane(clip) : clip;
+    gl_Position = mix(clip, penumbraClampToNearPlane(clip), bvec4(draw.material.w > 0.5));
     vUv = transformedUv(draw.baseColorUv, inUv, inUv1);
 }

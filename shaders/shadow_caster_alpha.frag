@@ -15,7 +15,8 @@ void main()
     const int mode = int(draw.material.z);
     const bool textured = draw.sampling.z > 0.5;
     const float alpha = materialAlpha(draw.material.x, mode, vUv, textured, texture(baseColorMap, vUv).a);
-    const float threshold = mode == PENUMBRA_CASTER_DITHER ? interleavedGradientNoise(gl_FragCoord.xy + draw.sampling.xy) : draw.material.y;
+    const float threshold = mix(draw.material.y, interleavedGradientNoise(gl_FragCoord.xy + draw.sampling.xy),
+                                mode == PENUMBRA_CASTER_DITHER);
     if (alpha < threshold)
         discard;
 }
