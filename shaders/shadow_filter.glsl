@@ -56,15 +56,9 @@ TentAxis tentTaps(int n, float centre)
     return axis;
 }
 
-// PCF 2x2 (one bilinear tap) or the 3x3, 5x5, 7x7 tents (4, 9, 16 taps) at atlas position (u, v, depth).
-// Taps read only texels tileMin..tileMax: clamping texels is clamping tap positions to the tile shrunk by
-// half a texel, so no filter or normal bias reads a neighbouring tile.
-float filterShadowTile(sampler2D atlas, vec3 atlasPosition, float atlasSize, int filterIndex, ivec2 tileMin,
-                       ivec2 tileMax)
+// The 3x3, 5x5, 7x7 tents (4, 9, 16 taps, filterIndex 1 to 3) at texel-space position `texel`.
+float tentFilter(sampler2D atlas, vec2 texel, float receiverDepth, int filterIndex, ivec2 tileMin, ivec2 tileMax)
 {
-    const vec2 texel = atlasPosition.xy * atlasSize;
-    if (filterIndex == 0)
-        return bilinearCompare(atlas, texel, atlasPosition.z, tileMin, tileMax);
     const int n = 2 * filterIndex + 1;
     const TentAxis u = tentTaps(n, texel.x);
     const TentAxis v = tentTaps(n, texel.y);
@@ -73,6 +67,21 @@ float filterShadowTile(sampler2D atlas, vec3 atlasPosition, float atlasSize, int
     for (int y = 0; y < pairs; ++y)
         for (int x = 0; x < pairs; ++x)
             shadow += u.weights[x] * v.weights[y] *
-                      bilinearCompare(atlas, vec2(u.positions[x], v.positions[y]), atlasPosition.z, tileMin, tileMax);
+                      bilinearCompare(atlas, vec2(u.positions[x], v.positions[y]), receiverDepth, tileMin, tileMax);
     return shadow;
+}
+
+// PCF 2x2 (one bilinear tap) or the tents at atlas position (u, v, depth); the tents only where the shader is built
+// with them (PENUMBRA_TENT_FILTERS).
+// Taps read only texels tileMin..tileMax: clamping texels is clamping tap positions to the tile shrunk by
+// half a texel, so no filter or normal bias reads a neighbouring tile.
+float filterShadowTile(sampler2D atlas, vec3 atlasPosition, float atlasSize, int filterIndex, ivec2 tileMin,
+                       ivec2 tileMax)
+{
+    const vec2 texel = atlasPosition.xy * atlasSize;
+#if PENUMBRA_TENT_FILTERS
+    if (filterIndex > 0)
+        return tentFilter(atlas, texel, atlasPosition.z, filterIndex, tileMin, tileMax);
+#endif
+    return bilinearCompare(atlas, texel, atlasPosition.z, tileMin, tileMax);
 }

@@ -1,64 +1,107 @@
 #include "LitPipelines.hpp"
 
 #include "penumbra/render/GpuScene.hpp"
-#include "penumbra/render/LitUniforms.hpp"
-#include "penumbra/shadows/DirectionalShadowUniforms.hpp"
-#include "penumbra/shadows/OtherShadowUniforms.hpp"
-#include "penumbra/shadows/StaticShadowUniforms.hpp"
 
 #include <fmt/format.h>
 
 namespace penumbra::render {
 namespace {
 
-std::uint32_t pipelineIndex(bool doubleSided, bool blend) { return (doubleSided ? 1u : 0u) + (blend ? 2u : 0u); }
+std::uint32_t featureKey(const LitShaderFeatures& f)
+{
+    return (f.depthPrepassed ? 1u : 0u) | static_cast<std::uint32_t>(f.view) << 1 | (f.localLights ? 1u << 3 : 0u) |
+           (f.staticShadows ? 1u << 4 : 0u) | (f.tentFilters ? 1u << 5 : 0u) | (f.softFilters ? 1u << 6 : 0u) |
+           f.materialMaps << 7;
+}
 
 std::string samplesSuffix(std::uint32_t samples)
 {
     return samples > 1 ? fmt::format(", {}x MSAA", samples) : std::string();
 }
 
-} // namespace
-
-LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const rhi::Shader& fragment,
-                           const rhi::Shader& prepassedFragment, std::uint32_t samples)
-    : samples_(samples)
+bool isTent(int filter)
 {
-    rhi::PipelineDesc desc;
-    desc.vertex = &vertex;
-    desc.fragment = &fragment;
-    desc.vertexLayout = GpuScene::vertexLayout();
-    desc.depthFormat = kLitDepthFormat;
-    desc.samples = samples;
-    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
-                           shadows::otherShadowLayout(), shadows::staticShadowLayout()};
-    for (const bool blend : {false, true})
-        for (const bool doubleSided : {false, true}) {
-            desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-            desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
-            rhi::ColorTarget target{kLitColorFormat};
-            if (blend)
-                target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
-                                rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
-            desc.colorTargets = {target};
-            desc.debugName = fmt::format("lit ({}, {}{})", blend ? "blended" : "opaque",
-                                         doubleSided ? "double-sided" : "culled", samplesSuffix(samples));
-            forward_[pipelineIndex(doubleSided, blend)] = device.createPipeline(desc);
-        }
-    desc.fragment = &prepassedFragment;
-    desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
-    desc.colorTargets = {rhi::ColorTarget{kLitColorFormat}};
-    for (const bool doubleSided : {false, true}) {
-        desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-        desc.debugName = fmt::format("lit (after the depth prepass, {}{})", doubleSided ? "double-sided" : "culled",
-                                     samplesSuffix(samples));
-        prepassed_[doubleSided ? 1 : 0] = device.createPipeline(desc);
-    }
+    return filter >= static_cast<int>(shadows::ShadowFilter::PCF3x3) &&
+           filter <= static_cast<int>(shadows::ShadowFilter::PCF7x7);
 }
 
-const rhi::Pipeline& LitPipelines::choose(bool doubleSided, bool blend, bool prepassed) const
+bool isSoft(int filter) { return filter >= static_cast<int>(shadows::ShadowFilter::Poisson); }
+
+} // namespace
+
+LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, std::uint32_t samples)
+    : device_(device), vertex_(vertex), samples_(samples)
 {
-    return prepassed && !blend ? *prepassed_[doubleSided ? 1 : 0] : *forward_[pipelineIndex(doubleSided, blend)];
+}
+
+const rhi::Shader& LitPipelines::fragment(const LitShaderFeatures& features)
+{
+    std::unique_ptr<rhi::Shader>& shader = fragments_[featureKey(features)];
+    if (!shader)
+        shader = device_.createShader(litShader("lit.frag", features));
+    return *shader;
+}
+
+const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubleSided, bool blend)
+{
+    if (blend)
+        features.depthPrepassed = false;
+    const std::uint32_t key = featureKey(features) << 2 | (doubleSided ? 1u : 0u) | (blend ? 2u : 0u);
+    std::unique_ptr<rhi::Pipeline>& pipeline = pipelines_[key];
+    if (pipeline)
+        return *pipeline;
+    rhi::PipelineDesc desc;
+    desc.vertex = &vertex_;
+    desc.fragment = &fragment(features);
+    desc.vertexLayout = GpuScene::vertexLayout();
+    desc.depthFormat = kLitDepthFormat;
+    desc.samples = samples_;
+    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
+                           shadows::otherShadowLayout(), shadows::staticShadowLayout()};
+    desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
+    rhi::ColorTarget target{kLitColorFormat};
+    if (features.depthPrepassed) {
+        desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
+    } else {
+        desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
+        if (blend)
+            target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
+                            rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
+    }
+    desc.colorTargets = {target};
+    desc.debugName = fmt::format("lit ({}, {}{}, features {:#x})",
+                                 features.depthPrepassed ? "after the depth prepass" : blend ? "blended" : "opaque",
+                                 doubleSided ? "double-sided" : "culled", samplesSuffix(samples_), featureKey(features));
+    pipeline = device_.createPipeline(desc);
+    return *pipeline;
+}
+
+LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame, const shadows::DirectionalShadowUniforms& directional,
+                                      const shadows::OtherShadowUniforms& other,
+                                      const shadows::StaticShadowUniforms& staticMaps)
+{
+    std::vector<int> filters{directional.config.y, other.config.x};
+    for (const glm::vec4& light : directional.lightShadowData)
+        filters.push_back(static_cast<int>(light.w));
+    for (const glm::vec4& tile : other.tileData)
+        filters.push_back(static_cast<int>(tile.y));
+    for (const glm::vec4& cube : other.cubeSoft)
+        filters.push_back(static_cast<int>(cube.x));
+    bool staticShadows = false;
+    for (const glm::vec4& light : staticMaps.directionalLights) {
+        staticShadows = staticShadows || light.x >= 0.0f;
+        filters.push_back(static_cast<int>(light.w));
+    }
+    for (const glm::vec4& light : staticMaps.localLights)
+        staticShadows = staticShadows || light.x >= 0.0f;
+    for (const glm::vec4& tile : staticMaps.otherData)
+        filters.push_back(static_cast<int>(tile.y));
+    LitShaderFeatures features;
+    features.localLights = frame.config.z > 0;
+    features.staticShadows = staticShadows;
+    features.tentFilters = std::any_of(filters.begin(), filters.end(), isTent);
+    features.softFilters = std::any_of(filters.begin(), filters.end(), isSoft);
+    return features;
 }
 
 } // namespace penumbra::render
