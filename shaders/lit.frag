@@ -142,15 +142,18 @@ void main()
     const bool textured = hasMap(PENUMBRA_TEXTURE_BASE_COLOR);
     const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
     const vec4 texel = textured ? texture(baseColorMap, baseUv) : vec4(1.0);
-    const float alpha = materialAlpha(object.baseColor.a, casterMode, baseUv, textured, texel.a) * vColor.a;
-#if !PENUMBRA_DEPTH_PREPASSED
+#if PENUMBRA_DEPTH_PREPASSED
+    // After a depth prepass the equal depth test has already cut clip holes (depth_prepass_clip.frag): no discard
+    // here keeps early depth testing on, so each visible pixel is shaded once. Blended surfaces are drawn without it.
+    const float coverage = 1.0;
+#else
+    const float textureAlpha = textured ? texture(coverageMap, baseUv).a : 1.0;
+    const float alpha = materialAlpha(object.baseColor.a, casterMode, baseUv, textured, textureAlpha) * vColor.a;
     if (casterMode == PENUMBRA_CASTER_CLIP && alpha < object.surface.z)
         discard;
-#endif
-    // After a depth prepass the equal depth test has already cut clip holes (depth_prepass_clip.frag): no discard
-    // here keeps early depth testing on, so each visible pixel is shaded once.
     // Blended surfaces cover by their alpha; everything else is opaque.
     const float coverage = object.flags.w != 0 ? alpha : 1.0;
+#endif
 
     // Base colour textures are RGBA8_SRGB: sampling has decoded them to linear light before filtering.
     const vec3 base = object.baseColor.rgb * vColor.rgb * (textured ? texel.rgb : vec3(1.0));

@@ -29,6 +29,7 @@ std::string litConstants(const LitShaderFeatures& features)
         text += fmt::format("#define PENUMBRA_TEXTURE_{} {}\n", entry.name, static_cast<std::uint32_t>(entry.slot));
         text += fmt::format("#define PENUMBRA_BINDING_{}_MAP {}\n", entry.name, litMaterialMapBinding(entry.slot));
     }
+    text += fmt::format("#define PENUMBRA_BINDING_COVERAGE_MAP {}\n", kLitCoverageMapBinding);
     text += fmt::format("#define PENUMBRA_DEPTH_PREPASSED {}\n", features.depthPrepassed ? 1 : 0);
     text += fmt::format("#define PENUMBRA_VIEW_LIT {}\n#define PENUMBRA_VIEW_CASCADES {}\n"
                         "#define PENUMBRA_VIEW_VISIBILITY {}\n#define PENUMBRA_LIT_VIEW {}\n",

@@ -498,7 +498,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, objectSlices_[index]);
-        gpuScene_.drawWithMaps(commands, object, kLitMaterialMapBinding);
+        gpuScene_.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding);
     }
     commands.endPass();
 }

@@ -110,6 +110,8 @@ inline constexpr std::uint32_t kLitMaterialMapBinding = 9;
 inline constexpr std::uint32_t kLitStaticShadowBinding = kLitMaterialMapBinding + scene::kTextureSlots;
 inline constexpr std::uint32_t kLitStaticDirectionalAtlasBinding = kLitStaticShadowBinding + 1;
 inline constexpr std::uint32_t kLitStaticOtherAtlasBinding = kLitStaticShadowBinding + 2;
+// The base colour map again, through GpuScene::coverageSampler: the alpha every pass cuts and blends by.
+inline constexpr std::uint32_t kLitCoverageMapBinding = kLitStaticShadowBinding + 3;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {
