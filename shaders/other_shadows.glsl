@@ -209,9 +209,13 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
 // light's first tile (or cube).
 float otherShadowVisibility(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
 {
+#if PENUMBRA_SHADOW_CUBES
     return isPoint && otherShadows.config.y == PENUMBRA_POINT_CUBE_MAP
                ? cubeMapShadow(tile, lightPosition, position, normal)
                : otherAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
+#else
+    return otherAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
+#endif
 }
 
 // 1 = fully lit. `shadow`: first tile (or cube), -1 without shadows; the light's shadow strength. `strength` is the

@@ -11,7 +11,7 @@ std::uint32_t featureKey(const LitShaderFeatures& f)
 {
     return (f.depthPrepassed ? 1u : 0u) | static_cast<std::uint32_t>(f.view) << 1 | (f.localLights ? 1u << 3 : 0u) |
            (f.staticShadows ? 1u << 4 : 0u) | (f.tentFilters ? 1u << 5 : 0u) | (f.softFilters ? 1u << 6 : 0u) |
-           f.materialMaps << 7;
+           (f.shadowCubes ? 1u << 7 : 0u) | f.materialMaps << 8;
 }
 
 std::string samplesSuffix(std::uint32_t samples)
@@ -101,6 +101,7 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame, const shado
     features.staticShadows = staticShadows;
     features.tentFilters = std::any_of(filters.begin(), filters.end(), isTent);
     features.softFilters = std::any_of(filters.begin(), filters.end(), isSoft);
+    features.shadowCubes = other.config.y == static_cast<int>(shadows::PointShadowMode::CubeMap);
     return features;
 }
 

@@ -132,6 +132,7 @@ struct LitShaderFeatures {
     bool staticShadows = true; // static shadow maps (shadows::StaticShadowUniforms)
     bool tentFilters = true;   // PCF 3x3, 5x5, 7x7 (PCF 2x2 is always compiled in)
     bool softFilters = true;   // Poisson and PCSS
+    bool shadowCubes = true;   // point lights' shadows in cube maps (shadows::PointShadowMode::CubeMap)
 
     bool operator==(const LitShaderFeatures&) const = default;
 };
@@ -142,8 +143,8 @@ std::uint32_t litMaterialMaps(const scene::Material& material);
 // The lit pass shader `fileName` ("lit.vert", "lit.frag") with the includes "lit_constants.glsl" that lit.glsl reads
 // (the material texture bindings and TextureSlot numbers above as GLSL macros, so the numbers are written once,
 // here, and `features` as PENUMBRA_DEPTH_PREPASSED, PENUMBRA_LIT_VIEW, PENUMBRA_LIT_MAPS, PENUMBRA_LOCAL_LIGHTS and
-// PENUMBRA_STATIC_SHADOWS) and "shadow_constants.glsl" (the filters, with PENUMBRA_TENT_FILTERS and
-// PENUMBRA_SOFT_FILTERS).
+// PENUMBRA_STATIC_SHADOWS) and "shadow_constants.glsl" (the filters, with PENUMBRA_TENT_FILTERS,
+// PENUMBRA_SOFT_FILTERS and PENUMBRA_SHADOW_CUBES).
 rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& features = {});
 
 } // namespace penumbra::render
