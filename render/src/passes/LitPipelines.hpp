@@ -15,7 +15,8 @@ namespace penumbra::render {
 // The lit pass's pipelines for one sample count (FrameDesc::msaa): culled or double-sided (glTF doubleSided), opaque
 // or alpha-blended over what is drawn (alphaMode BLEND: tested against the opaque depth, not written), and the opaque
 // ones after the depth prepass (equal depth test, no depth write, no discard); each for the shader features it is
-// asked for, built the first time it is.
+// asked for (LitShaderFeatures), created when first chosen: a driver compiles the whole lit shader for every pipeline
+// (lavapipe takes about half a second each), and most frames use few of them.
 class LitPipelines {
 public:
     LitPipelines(rhi::Device& device, const rhi::Shader& vertex, std::uint32_t samples);
