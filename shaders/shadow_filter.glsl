@@ -15,8 +15,8 @@ float compareTexel(sampler2D atlas, ivec2 texel, float receiverDepth)
 // A bilinear comparison tap at texel-space position `position` (texel i spans [i, i + 1)) over texels tileMin..tileMax
 // only, so that no filter reads a neighbouring tile: a position beyond the tile's outer texel centres takes the
 // outer texels, as clamping each texel to the tile would. The four texels come from one textureGather at their
-// shared corner (GLSL 4.50 specification, "Texture Gather Functions": x = (i0, j1), y = (i1, j1), z = (i1, j0), w = (i0, j0)); at the tile's
-// far edge the texel past it gets the weight 0.
+// shared corner (GLSL 4.50 specification, "Texture Gather Functions": x = (i0, j1), y = (i1, j1), z = (i1, j0),
+// w = (i0, j0)); at the tile's far edge the texel past it gets the weight 0.
 float bilinearCompare(sampler2D atlas, vec2 position, float receiverDepth, ivec2 tileMin, ivec2 tileMax)
 {
     const vec2 corner = clamp(position, vec2(tileMin) + 0.5, vec2(tileMax) + 0.5) - 0.5;

@@ -2,7 +2,9 @@
 
 #include "penumbra/render/GpuScene.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
+#include <vector>
 
 namespace penumbra::render {
 namespace {
@@ -71,12 +73,14 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
     desc.colorTargets = {target};
     desc.debugName = fmt::format("lit ({}, {}{}, features {:#x})",
                                  features.depthPrepassed ? "after the depth prepass" : blend ? "blended" : "opaque",
-                                 doubleSided ? "double-sided" : "culled", samplesSuffix(samples_), featureKey(features));
+                                 doubleSided ? "double-sided" : "culled", samplesSuffix(samples_),
+                                 featureKey(features));
     pipeline = device_.createPipeline(desc);
     return *pipeline;
 }
 
-LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame, const shadows::DirectionalShadowUniforms& directional,
+LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
+                                      const shadows::DirectionalShadowUniforms& directional,
                                       const shadows::OtherShadowUniforms& other,
                                       const shadows::StaticShadowUniforms& staticMaps)
 {

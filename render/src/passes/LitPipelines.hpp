@@ -37,7 +37,8 @@ private:
 
 // The features a frame's lights and shadow maps need, read from what the lit shader reads (the lit pass's own view,
 // no prepass and every material map: the caller sets those).
-LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame, const shadows::DirectionalShadowUniforms& directional,
+LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
+                                      const shadows::DirectionalShadowUniforms& directional,
                                       const shadows::OtherShadowUniforms& other,
                                       const shadows::StaticShadowUniforms& staticMaps);
 
