@@ -13,8 +13,9 @@ void main()
 {
     const bool textured = hasMap(PENUMBRA_TEXTURE_BASE_COLOR);
     const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
-    const vec4 texel = texture(baseColorMap, baseUv);
-    const float alpha = materialAlpha(object.baseColor.a, PENUMBRA_CASTER_CLIP, baseUv, textured, texel.a) * vColor.a;
+    const float textureAlpha = textured ? texture(coverageMap, baseUv).a : 1.0;
+    const float alpha =
+        materialAlpha(object.baseColor.a, PENUMBRA_CASTER_CLIP, baseUv, textured, textureAlpha) * vColor.a;
     if (alpha < object.surface.z)
         discard;
 }

@@ -80,15 +80,19 @@ float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slo
     const int tileSize = int(shadows.atlasSize.z);
     const ivec2 tileMin = ivec2(tile % split, tile / split) * tileSize;
     const int filterIndex = int(shadows.lightShadowData[slot].w);
+#if PENUMBRA_SOFT_FILTERS
     if (filterIndex < PENUMBRA_FILTER_POISSON)
+#endif
         return filterShadowTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, filterIndex, tileMin,
                                 tileMin + tileSize - 1);
+#if PENUMBRA_SOFT_FILTERS
     const mat3 toAtlas = mat3(shadows.worldToAtlas[tile]);
     const vec4 tileSoft = shadows.tileSoft[tile];
     const SoftTile t = softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, shadows.atlasSize.x,
                                 tileMin, tileMin + tileSize - 1, tileSoft.xy);
     return directionalSoftShadow(shadowAtlas, t, filterIndex, softControls(shadows.softScales, shadows.softCounts),
                                  tileSoft.zw, shadows.lightSoft[slot].x, shadows.cascadeData[cascade].z);
+#endif
 }
 
 // The receiver moved by its normal offset over the cascade's filter-sized texel diagonal (scaled to the light's

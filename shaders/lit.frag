@@ -52,7 +52,11 @@ vec3 linearToSrgb(vec3 c)
 // Smallest roughness the GGX terms take: at 0 the distribution is a Dirac peak (0 / 0 at n = h).
 const float MIN_ROUGHNESS = 0.03;
 
-vec4 sampleMap(sampler2D map, int slot) { return texture(map, transformedUv(uvRows(slot), vUv, vUv1)); }
+// An absent map reads as its white stand-in texel would.
+vec4 sampleMap(sampler2D map, int slot)
+{
+    return hasMap(slot) ? texture(map, transformedUv(uvRows(slot), vUv, vUv1)) : vec4(1.0);
+}
 
 // The front face's shading normal: the interpolated normal, perturbed by the normal texture in the tangent frame
 // (glTF 2.0 section 3.9.3: bitangent = w * cross(normal, tangent), x and y scaled by normalTexture.scale).
@@ -70,10 +74,6 @@ vec3 frontNormal()
 
 const vec3 cascadeColors[5] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.25, 0.4, 1.0),
                                      vec3(1.0, 1.0, 0.25), vec3(0.5, 0.5, 0.5));
-
-// penumbra::render::LitView.
-const int PENUMBRA_VIEW_CASCADES = 1;
-const int PENUMBRA_VIEW_VISIBILITY = 2;
 
 // Spot or point light i at the fragment: direction towards it and the light that arrives before N.L.
 struct LocalLight {
@@ -141,27 +141,31 @@ void main()
     const int casterMode = int(object.surface.w);
     const bool textured = hasMap(PENUMBRA_TEXTURE_BASE_COLOR);
     const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
-    const vec4 texel = texture(baseColorMap, baseUv);
-    const float alpha = materialAlpha(object.baseColor.a, casterMode, baseUv, textured, texel.a) * vColor.a;
-#if !PENUMBRA_DEPTH_PREPASSED
+    const vec4 texel = textured ? texture(baseColorMap, baseUv) : vec4(1.0);
+#if PENUMBRA_DEPTH_PREPASSED
+    // After a depth prepass the equal depth test has already cut clip holes (depth_prepass_clip.frag): no discard
+    // here keeps early depth testing on, so each visible pixel is shaded once. Blended surfaces are drawn without it.
+    const float coverage = 1.0;
+#else
+    const float textureAlpha = textured ? texture(coverageMap, baseUv).a : 1.0;
+    const float alpha = materialAlpha(object.baseColor.a, casterMode, baseUv, textured, textureAlpha) * vColor.a;
     if (casterMode == PENUMBRA_CASTER_CLIP && alpha < object.surface.z)
         discard;
-#endif
-    // After a depth prepass the equal depth test has already cut clip holes (depth_prepass_clip.frag): no discard
-    // here keeps early depth testing on, so each visible pixel is shaded once.
     // Blended surfaces cover by their alpha; everything else is opaque.
     const float coverage = object.flags.w != 0 ? alpha : 1.0;
+#endif
 
     // Base colour textures are RGBA8_SRGB: sampling has decoded them to linear light before filtering.
     const vec3 base = object.baseColor.rgb * vColor.rgb * (textured ? texel.rgb : vec3(1.0));
     // Unlit surfaces show no shadow: the visibility view leaves them undecided.
     if (object.flags.z != 0) {
-        outColor = frame.config.y == PENUMBRA_VIEW_VISIBILITY ? vec4(1.0, 1.0, 1.0, 0.0)
-                                                              : vec4(linearToSrgb(base), coverage);
+        outColor = PENUMBRA_LIT_VIEW == PENUMBRA_VIEW_VISIBILITY ? vec4(1.0, 1.0, 1.0, 0.0)
+                                                                 : vec4(linearToSrgb(base), coverage);
         return;
     }
     // Back faces (of double-sided materials, or seen through clip holes) are shaded with the flipped normal.
-    const vec3 n = gl_FrontFacing ? frontNormal() : -frontNormal();
+    const vec3 front = frontNormal();
+    const vec3 n = gl_FrontFacing ? front : -front;
     // The triangle's plane, for the shadows' normal offset (its sign does not matter: it is turned to each light).
     const vec3 geometric = normalize(cross(dFdxFine(vPosition), dFdyFine(vPosition)));
     setReceiverDerivatives(dFdxFine(vPosition), dFdyFine(vPosition));
@@ -170,10 +174,9 @@ void main()
     const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);
     const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
     const float globalStrength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
-    if (frame.config.y == PENUMBRA_VIEW_VISIBILITY) {
-        outColor = shadowVisibility(frame.config.w, n, geometric, cascade, globalStrength);
-        return;
-    }
+#if PENUMBRA_LIT_VIEW == PENUMBRA_VIEW_VISIBILITY
+    outColor = shadowVisibility(frame.config.w, n, geometric, cascade, globalStrength);
+#else
 
     const vec4 metalRough = sampleMap(metallicRoughnessMap, PENUMBRA_TEXTURE_METALLIC_ROUGHNESS);
     const float metallic = object.surface.x * metalRough.b;
@@ -189,23 +192,39 @@ void main()
             continue;
         const bool receives = object.flags.x != 0;
         const int slot = receives ? int(frame.lightDirection[i].w) : -1;
+#if PENUMBRA_STATIC_SHADOWS
         const float attenuation = directionalAttenuation(i, slot, receives, cascade, vPosition, geometric, l);
+#else
+        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric, l);
+#endif
         color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }
+#if PENUMBRA_LOCAL_LIGHTS
     for (int i = 0; i < frame.config.z; ++i) {
         const LocalLight light = localLight(i);
         const float nl = dot(n, light.l);
         if (nl <= 0.0 || light.falloff <= 0.0)
             continue;
-        const float attenuation = localAttenuation(i, frame.localShadow[i].zw, object.flags.x != 0, light.isPoint,
+        const bool receives = object.flags.x != 0;
+#if PENUMBRA_STATIC_SHADOWS
+        const float attenuation = localAttenuation(i, frame.localShadow[i].zw, receives, light.isPoint,
                                                    frame.localPosition[i].xyz, frame.localAxis[i].xyz, vPosition,
                                                    geometric, globalStrength);
+#else
+        const float attenuation =
+            receives ? otherShadowAttenuation(frame.localShadow[i].zw, light.isPoint, frame.localPosition[i].xyz,
+                                              frame.localAxis[i].xyz, vPosition, geometric, globalStrength)
+                     : 1.0;
+#endif
         color += brdf(n, v, light.l, base, metallic, roughness) * frame.localColor[i].rgb * nl * light.falloff *
                  attenuation;
     }
+#endif
     // Emissive textures are RGBA8_SRGB too: already linear when sampled.
     color += object.emissive.rgb * sampleMap(emissiveMap, PENUMBRA_TEXTURE_EMISSIVE).rgb;
-    if (frame.config.y == PENUMBRA_VIEW_CASCADES)
-        color = mix(color, cascadeColors[min(cascade.index, 4)] * 0.8, 0.6);
+#if PENUMBRA_LIT_VIEW == PENUMBRA_VIEW_CASCADES
+    color = mix(color, cascadeColors[min(cascade.index, 4)] * 0.8, 0.6);
+#endif
     outColor = vec4(linearToSrgb(color), coverage);
+#endif
 }

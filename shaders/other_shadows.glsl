@@ -78,15 +78,19 @@ float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
                                        fromLight, position, normal);
     const vec4 bounds = otherShadows.tileBounds[tile];
     const int filterIndex = int(otherShadows.tileData[tile].y);
+#if PENUMBRA_SOFT_FILTERS
     if (filterIndex < PENUMBRA_FILTER_POISSON)
+#endif
         return filterShadowTile(otherShadowAtlas, p.xyz / p.w, otherShadows.atlasSize.x, filterIndex,
                                 ivec2(bounds.xy), ivec2(bounds.zw));
+#if PENUMBRA_SOFT_FILTERS
     const mat4 m = otherShadows.worldToAtlas[tile];
     const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(m, p, receiverDx), projectedDerivative(m, p, receiverDy),
                                 otherShadows.atlasSize.x, ivec2(bounds.xy), ivec2(bounds.zw), vec2(0.0));
     return perspectiveSoftShadow(otherShadowAtlas, t, filterIndex,
                                  softControls(otherShadows.softScales, otherShadows.softCounts),
                                  otherShadows.tileSoft[tile]);
+#endif
 }
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read
@@ -181,6 +185,7 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
     const vec3 v = cubeFaceAxis((face + 4) % 6) * (2.0 * major * data.w);
     const vec4 cubeSoft = otherShadows.cubeSoft[cube];
     const int filterIndex = int(cubeSoft.x);
+#if PENUMBRA_SOFT_FILTERS
     if (filterIndex >= PENUMBRA_FILTER_POISSON) {
         // The receiver's texel on its face, offset by face: the light's own texel grid for the disk's rotation.
         const vec2 onFace = vec2(dot(d, cubeFaceAxis((face + 2) % 6)), dot(d, cubeFaceAxis((face + 4) % 6))) / major;
@@ -189,6 +194,7 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
                                             diskRotation(texel));
         return cubeSoftShadow(r, filterIndex, cubeSoft);
     }
+#endif
     const int k = PENUMBRA_FILTER_SIZES[filterIndex];
     float lit = 0.0;
     for (int y = 0; y < k; ++y)
@@ -203,9 +209,13 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
 // light's first tile (or cube).
 float otherShadowVisibility(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
 {
+#if PENUMBRA_SHADOW_CUBES
     return isPoint && otherShadows.config.y == PENUMBRA_POINT_CUBE_MAP
                ? cubeMapShadow(tile, lightPosition, position, normal)
                : otherAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
+#else
+    return otherAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
+#endif
 }
 
 // 1 = fully lit. `shadow`: first tile (or cube), -1 without shadows; the light's shadow strength. `strength` is the

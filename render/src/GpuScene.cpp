@@ -78,6 +78,8 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
     for (const scene::TextureImage& image : scene.textures) {
         textures_.push_back(uploadTexture(device, image, clipCutoffOf(scene, std::uint32_t(textures_.size()))));
         samplers_.push_back(device.createSampler(samplerDesc(image.sampler, anisotropy_, debugName(image))));
+        coverageSamplers_.push_back(
+            device.createSampler(samplerDesc(image.sampler, 1.0f, debugName(image) + " (coverage)")));
     }
     const scene::TextureImage white{.name = "white texel", .width = 1, .height = 1, .rgba = {255, 255, 255, 255},
                                     .sampler = {.mipFilter = scene::TextureMipFilter::None}};
@@ -107,6 +109,12 @@ const rhi::Sampler& GpuScene::mapSampler(const scene::Material& material, scene:
     return sampler(texture ? std::optional(texture->image) : std::nullopt);
 }
 
+const rhi::Sampler& GpuScene::coverageSampler(const scene::Material& material) const
+{
+    const std::optional<scene::MaterialTexture>& texture = material.texture(scene::TextureSlot::BaseColor);
+    return texture ? *coverageSamplers_.at(texture->image) : *whiteSampler_;
+}
+
 void GpuScene::setMaxAnisotropy(float anisotropy)
 {
     if (anisotropy == anisotropy_)
@@ -133,7 +141,7 @@ std::vector<shadows::ShadowCaster> GpuScene::casters() const
             casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
                                static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
                                casterMode(material.caster), material.baseColor.a, material.alphaCutoff,
-                               &baseColorMap(material), &baseColorSampler(material), baseColor.has_value(),
+                               &baseColorMap(material), &coverageSampler(material), baseColor.has_value(),
                                uvTransform(baseColor),
                                material.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided});
     }
@@ -180,13 +188,15 @@ rhi::VertexLayout GpuScene::vertexLayout()
              {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
 }
 
-void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding) const
+void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
+                            std::uint32_t coverageBinding) const
 {
     const scene::Material& material = scene_.materialOf(object);
     for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
         const auto textureSlot = static_cast<scene::TextureSlot>(slot);
         commands.bindTexture(firstMapBinding + slot, map(material, textureSlot), mapSampler(material, textureSlot));
     }
+    commands.bindTexture(coverageBinding, baseColorMap(material), coverageSampler(material));
     commands.bindVertexBuffer(0, vertices(object.mesh));
     commands.bindIndexBuffer(indices(object.mesh), rhi::IndexType::UInt32);
     commands.drawIndexed(static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()));

@@ -230,7 +230,6 @@ SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_
 
 LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
 {
-    int textures = 0;
     LitObjectUniforms u{object.transform,
                         glm::transpose(glm::inverse(object.transform)),
                         material.baseColor,
@@ -241,13 +240,12 @@ LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Mater
                          0.0f, 0.0f},
                         {}};
     for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
-        const std::optional<scene::MaterialTexture>& texture = material.textures[slot];
-        textures |= texture ? 1 << slot : 0;
-        const shadows::UvTransformRows rows = GpuScene::uvTransform(texture);
+        const shadows::UvTransformRows rows = GpuScene::uvTransform(material.textures[slot]);
         u.uvTransforms[2 * slot] = rows[0];
         u.uvTransforms[2 * slot + 1] = rows[1];
     }
-    u.flags = {object.receiveShadows && material.receiveShadows ? 1 : 0, textures, material.unlit ? 1 : 0, material.blend ? 1 : 0};
+    u.flags = {object.receiveShadows && material.receiveShadows ? 1 : 0, static_cast<int>(litMaterialMaps(material)),
+               material.unlit ? 1 : 0, material.blend ? 1 : 0};
     return u;
 }
 
@@ -310,9 +308,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     : device_(device), gpuScene_(device, scene), shadowPass_(device, GpuScene::vertexFormat()),
       otherShadowPass_(device, GpuScene::vertexFormat()),
       litVertex_(device.createShader(litShader("lit.vert"))),
-      litFragment_(device.createShader(litShader("lit.frag"))),
-      prepassedLitFragment_(device.createShader(litShader("lit.frag", true))),
-      litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, *litFragment_, *prepassedLitFragment_, 1)),
+      litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, 1)),
       depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
       staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
       commands_(device.createCommandList()),
@@ -383,8 +379,7 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         shadowCubes_->format() != other.atlasFormat)
         shadowCubes_ = std::make_unique<shadows::ShadowCubes>(device_, faceSize, cubeCount, other.atlasFormat);
     if (frame.msaa > 1 && (!multisampledLitPipelines_ || multisampledLitPipelines_->samples() != frame.msaa))
-        multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, *litFragment_,
-                                                                   *prepassedLitFragment_, frame.msaa);
+        multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, frame.msaa);
     if (depthPrepass_->samples() != frame.msaa)
         depthPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, frame.msaa);
     const std::uint32_t litSamples = multisampledColor_ ? multisampledColor_->desc().samples : 1;
@@ -463,12 +458,14 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 }
 
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
-                                  LitPipelines& pipelines, const rhi::UniformSlice& frameSlice, bool visibility,
-                                  bool prepassed, const rhi::UniformSlice& shadowUniforms,
+                                  LitPipelines& pipelines, const rhi::UniformSlice& frameSlice,
+                                  const LitShaderFeatures& features, const rhi::UniformSlice& shadowUniforms,
                                   const rhi::UniformSlice& otherShadowUniforms,
                                   const rhi::UniformSlice& staticShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
+    const bool visibility = features.view == LitView::Visibility;
+    const bool prepassed = features.depthPrepassed;
     // The visibility view reports shadows on every surface: blended ones are drawn opaque there, so the alpha
     // channel keeps saying whether a shadow map decides the pixel.
     commands.beginPass(
@@ -479,7 +476,9 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
         const scene::Object& object = scene.objects[index];
         const scene::Material& material = scene.materialOf(object);
         const bool blend = material.blend && !visibility;
-        const rhi::Pipeline* pipeline = &pipelines.choose(material.doubleSided, blend, prepassed);
+        LitShaderFeatures objectFeatures = features;
+        objectFeatures.materialMaps = litMaterialMaps(material);
+        const rhi::Pipeline* pipeline = &pipelines.choose(objectFeatures, material.doubleSided, blend);
         if (pipeline != bound) {
             // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
             commands.bindPipeline(*pipeline);
@@ -499,7 +498,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, objectSlices_[index]);
-        gpuScene_.drawWithMaps(commands, object, kLitMaterialMapBinding);
+        gpuScene_.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding);
     }
     commands.endPass();
 }
@@ -595,30 +594,38 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
         otherShadowPass_.record(commands, *otherAtlas_, *shadowCubes_, otherPlan_, casters, !cachedOther);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 3);
-    const rhi::UniformSlice litFrame = uniforms_.push(frameUniforms(camera, frame, LitView::Lit));
+    const LitFrameUniforms litFrameUniforms = frameUniforms(camera, frame, LitView::Lit);
+    const rhi::UniformSlice litFrame = uniforms_.push(litFrameUniforms);
+    LitShaderFeatures features = frameShaderFeatures(litFrameUniforms, plan_.uniforms, otherPlan_.uniforms,
+                                                     staticShadows_->plan().uniforms);
     if (frame.depthPrepass)
         depthPrepass_->record(commands, *prepassTarget_, gpuScene_, drawOrder_, litFrame, objectSlices_);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 4);
     const bool multisampled = frame.msaa > 1;
-    recordLitPass(commands, *litTarget_, multisampled ? *multisampledLitPipelines_ : *litPipelines_, litFrame, false,
-                  frame.depthPrepass, shadowUniforms, otherShadowUniforms, staticShadowUniforms);
+    features.depthPrepassed = frame.depthPrepass;
+    recordLitPass(commands, *litTarget_, multisampled ? *multisampledLitPipelines_ : *litPipelines_, litFrame, features,
+                  shadowUniforms, otherShadowUniforms, staticShadowUniforms);
+    // The debug views draw single-sampled without the prepass: they clear the single-sampled depth.
+    features.depthPrepassed = false;
+    features.view = LitView::Cascades;
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 5);
     if (multisampled)
         commands.resolveTexture(*multisampledColor_, *lit_);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 6);
-    // The debug views draw single-sampled without the prepass: they clear the single-sampled depth.
     if (frame.cascadeView)
         recordLitPass(commands, *cascadeTarget_, *litPipelines_,
-                      uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)), false, false, shadowUniforms,
-                      otherShadowUniforms, staticShadowUniforms);
+                      uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)),
+features, shadowUniforms, otherShadowUniforms, staticShadowUniforms);
     if (frame.visibilityOf) {
         LitFrameUniforms u = frameUniforms(camera, frame, LitView::Visibility);
         u.config.w = visibilityLight;
-        recordLitPass(commands, *visibilityTarget_, *litPipelines_, uniforms_.push(u), true, false, shadowUniforms,
-                      otherShadowUniforms, staticShadowUniforms);
+        // The visibility view of any light, with every part of the shader: a debug view, not worth a variant each.
+        recordLitPass(commands, *visibilityTarget_, *litPipelines_, uniforms_.push(u),
+                      LitShaderFeatures{.view = LitView::Visibility}, shadowUniforms, otherShadowUniforms,
+                      staticShadowUniforms);
     }
     device_.submit(commands);
     if (timestamps_) {

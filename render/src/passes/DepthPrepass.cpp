@@ -63,7 +63,7 @@ void DepthPrepass::record(rhi::CommandList& commands, const rhi::Framebuffer& ta
         }
         rhi::bindUniform(commands, kLitObjectBinding, objects[index]);
         // lit.glsl declares every material map; the RHI asks for all of them bound.
-        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding);
+        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding);
     }
     commands.endPass();
 }

@@ -1,36 +1,60 @@
 #include "LitPipelines.hpp"
 
 #include "penumbra/render/GpuScene.hpp"
-#include "penumbra/render/LitUniforms.hpp"
-#include "penumbra/shadows/DirectionalShadowUniforms.hpp"
-#include "penumbra/shadows/OtherShadowUniforms.hpp"
-#include "penumbra/shadows/StaticShadowUniforms.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
+#include <vector>
 
 namespace penumbra::render {
 namespace {
 
-std::uint32_t pipelineIndex(bool doubleSided, bool blend) { return (doubleSided ? 1u : 0u) + (blend ? 2u : 0u); }
+std::uint32_t featureKey(const LitShaderFeatures& f)
+{
+    return (f.depthPrepassed ? 1u : 0u) | static_cast<std::uint32_t>(f.view) << 1 | (f.localLights ? 1u << 3 : 0u) |
+           (f.staticShadows ? 1u << 4 : 0u) | (f.tentFilters ? 1u << 5 : 0u) | (f.softFilters ? 1u << 6 : 0u) |
+           (f.shadowCubes ? 1u << 7 : 0u) | f.materialMaps << 8;
+}
 
 std::string samplesSuffix(std::uint32_t samples)
 {
     return samples > 1 ? fmt::format(", {}x MSAA", samples) : std::string();
 }
 
+bool isTent(int filter)
+{
+    return filter >= static_cast<int>(shadows::ShadowFilter::PCF3x3) &&
+           filter <= static_cast<int>(shadows::ShadowFilter::PCF7x7);
+}
+
+bool isSoft(int filter) { return filter >= static_cast<int>(shadows::ShadowFilter::Poisson); }
+
 } // namespace
 
-LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const rhi::Shader& fragment,
-                           const rhi::Shader& prepassedFragment, std::uint32_t samples)
-    : device_(device), vertex_(vertex), fragment_(fragment), prepassedFragment_(prepassedFragment), samples_(samples)
+LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, std::uint32_t samples)
+    : device_(device), vertex_(vertex), samples_(samples)
 {
 }
 
-std::unique_ptr<rhi::Pipeline> LitPipelines::create(bool doubleSided, bool blend, bool prepassed) const
+const rhi::Shader& LitPipelines::fragment(const LitShaderFeatures& features)
 {
+    std::unique_ptr<rhi::Shader>& shader = fragments_[featureKey(features)];
+    if (!shader)
+        shader = device_.createShader(litShader("lit.frag", features));
+    return *shader;
+}
+
+const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubleSided, bool blend)
+{
+    if (blend)
+        features.depthPrepassed = false;
+    const std::uint32_t key = featureKey(features) << 2 | (doubleSided ? 1u : 0u) | (blend ? 2u : 0u);
+    std::unique_ptr<rhi::Pipeline>& pipeline = pipelines_[key];
+    if (pipeline)
+        return *pipeline;
     rhi::PipelineDesc desc;
     desc.vertex = &vertex_;
-    desc.fragment = prepassed ? &prepassedFragment_ : &fragment_;
+    desc.fragment = &fragment(features);
     desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kLitDepthFormat;
     desc.samples = samples_;
@@ -38,30 +62,51 @@ std::unique_ptr<rhi::Pipeline> LitPipelines::create(bool doubleSided, bool blend
                            shadows::otherShadowLayout(), shadows::staticShadowLayout()};
     desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
     rhi::ColorTarget target{kLitColorFormat};
-    if (prepassed) {
+    if (features.depthPrepassed) {
         desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
-        desc.debugName = fmt::format("lit (after the depth prepass, {}{})", doubleSided ? "double-sided" : "culled",
-                                     samplesSuffix(samples_));
     } else {
         desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
         if (blend)
             target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
                             rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
-        desc.debugName = fmt::format("lit ({}, {}{})", blend ? "blended" : "opaque",
-                                     doubleSided ? "double-sided" : "culled", samplesSuffix(samples_));
     }
     desc.colorTargets = {target};
-    return device_.createPipeline(desc);
+    desc.debugName = fmt::format("lit ({}, {}{}, features {:#x})",
+                                 features.depthPrepassed ? "after the depth prepass" : blend ? "blended" : "opaque",
+                                 doubleSided ? "double-sided" : "culled", samplesSuffix(samples_),
+                                 featureKey(features));
+    pipeline = device_.createPipeline(desc);
+    return *pipeline;
 }
 
-const rhi::Pipeline& LitPipelines::choose(bool doubleSided, bool blend, bool prepassed)
+LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
+                                      const shadows::DirectionalShadowUniforms& directional,
+                                      const shadows::OtherShadowUniforms& other,
+                                      const shadows::StaticShadowUniforms& staticMaps)
 {
-    const bool afterPrepass = prepassed && !blend;
-    std::unique_ptr<rhi::Pipeline>& pipeline =
-        afterPrepass ? prepassed_[doubleSided ? 1 : 0] : forward_[pipelineIndex(doubleSided, blend)];
-    if (!pipeline)
-        pipeline = create(doubleSided, blend, afterPrepass);
-    return *pipeline;
+    std::vector<int> filters{directional.config.y, other.config.x};
+    for (const glm::vec4& light : directional.lightShadowData)
+        filters.push_back(static_cast<int>(light.w));
+    for (const glm::vec4& tile : other.tileData)
+        filters.push_back(static_cast<int>(tile.y));
+    for (const glm::vec4& cube : other.cubeSoft)
+        filters.push_back(static_cast<int>(cube.x));
+    bool staticShadows = false;
+    for (const glm::vec4& light : staticMaps.directionalLights) {
+        staticShadows = staticShadows || light.x >= 0.0f;
+        filters.push_back(static_cast<int>(light.w));
+    }
+    for (const glm::vec4& light : staticMaps.localLights)
+        staticShadows = staticShadows || light.x >= 0.0f;
+    for (const glm::vec4& tile : staticMaps.otherData)
+        filters.push_back(static_cast<int>(tile.y));
+    LitShaderFeatures features;
+    features.localLights = frame.config.z > 0;
+    features.staticShadows = staticShadows;
+    features.tentFilters = std::any_of(filters.begin(), filters.end(), isTent);
+    features.softFilters = std::any_of(filters.begin(), filters.end(), isSoft);
+    features.shadowCubes = other.config.y == static_cast<int>(shadows::PointShadowMode::CubeMap);
+    return features;
 }
 
 } // namespace penumbra::render

@@ -128,7 +128,7 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
         u.normalMatrix = glm::transpose(glm::inverse(object.transform));
         u.baseColor = material.baseColor;
         rhi::bindUniform(commands, kLitObjectBinding, uniforms_.push(u));
-        scene_.drawWithMaps(commands, object, kLitMaterialMapBinding);
+        scene_.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding);
     }
     commands.endPass();
     if (timestamps_)

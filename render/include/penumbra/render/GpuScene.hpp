@@ -41,6 +41,11 @@ public:
     {
         return mapSampler(material, scene::TextureSlot::BaseColor);
     }
+    // The base colour map's sampler without anisotropic filtering (the white texel's sampler without one): the alpha
+    // that decides coverage in every pass (the depth prepass, the lit pass's cut and blend, the shadow casters), so
+    // that all of them cut the same holes, and cheaply on software rasterizers, whose anisotropic filter loops
+    // over the whole footprint.
+    const rhi::Sampler& coverageSampler(const scene::Material& material) const;
     // Makes every texture's sampler anew with this anisotropy (within the device's limit) where it changed.
     void setMaxAnisotropy(float anisotropy);
 
@@ -56,9 +61,10 @@ public:
     // lit shaders read them; a pass whose shader reads fewer removes the others.
     static rhi::VertexLayout vertexLayout();
 
-    // Binds the material's maps (material textures, or the white texel) at firstMapBinding + scene::TextureSlot,
-    // then the object's mesh, and draws it.
-    void drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding) const;
+    // Binds the material's maps (material textures, or the white texel) at firstMapBinding + scene::TextureSlot and
+    // the base colour map with coverageSampler() at coverageBinding, then the object's mesh, and draws it.
+    void drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
+                      std::uint32_t coverageBinding) const;
     // The uv transform rows of a material texture (identity on TEXCOORD_0 without one).
     static shadows::UvTransformRows uvTransform(const std::optional<scene::MaterialTexture>& texture);
 
@@ -71,7 +77,8 @@ private:
     std::vector<Mesh> meshes_;
     rhi::Device& device_;
     std::vector<std::unique_ptr<rhi::Texture>> textures_;
-    std::vector<std::unique_ptr<rhi::Sampler>> samplers_; // one per texture
+    std::vector<std::unique_ptr<rhi::Sampler>> samplers_;         // one per texture
+    std::vector<std::unique_ptr<rhi::Sampler>> coverageSamplers_; // one per texture, without anisotropy
     float anisotropy_ = 1.0f;
     std::unique_ptr<rhi::Texture> white_;
     std::unique_ptr<rhi::Sampler> whiteSampler_;

@@ -110,16 +110,41 @@ inline constexpr std::uint32_t kLitMaterialMapBinding = 9;
 inline constexpr std::uint32_t kLitStaticShadowBinding = kLitMaterialMapBinding + scene::kTextureSlots;
 inline constexpr std::uint32_t kLitStaticDirectionalAtlasBinding = kLitStaticShadowBinding + 1;
 inline constexpr std::uint32_t kLitStaticOtherAtlasBinding = kLitStaticShadowBinding + 2;
+// The base colour map again, through GpuScene::coverageSampler: the alpha every pass cuts and blends by.
+inline constexpr std::uint32_t kLitCoverageMapBinding = kLitStaticShadowBinding + 3;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {
     return kLitMaterialMapBinding + static_cast<std::uint32_t>(slot);
 }
 
-// The lit pass shader `fileName` ("lit.vert", "lit.frag") with the include "lit_constants.glsl" that
-// lit.glsl reads: the material texture bindings and TextureSlot numbers above as GLSL macros, so the
-// numbers are written once, here; and PENUMBRA_DEPTH_PREPASSED, 1 for the lit pass after a depth prepass (an
-// equal depth test instead of lit.frag's alpha discard).
-rhi::ShaderSource litShader(std::string_view fileName, bool depthPrepassed = false);
+// Which parts of the lit shader are compiled in. Mesa's llvmpipe and lavapipe run both sides of every branch under
+// an execution mask and every loop body at least once, whatever the uniforms say (Mesa,
+// src/gallium/auxiliary/gallivm/lp_bld_nir_soa.c: if_cond, endloop), so a part that neither the frame nor the
+// material can use is left out of the shader instead of skipped at run time. The default compiles everything in.
+struct LitShaderFeatures {
+    bool depthPrepassed = false; // after a depth prepass: an equal depth test instead of lit.frag's alpha discard
+    LitView view = LitView::Lit;
+    // The material maps lit.frag may read (bit per scene::TextureSlot, as LitObjectUniforms::flags.y); a map
+    // outside it reads as the white texel that stands in for an absent map.
+    std::uint32_t materialMaps = (1u << scene::kTextureSlots) - 1;
+    bool localLights = true;   // spot and point lights
+    bool staticShadows = true; // static shadow maps (shadows::StaticShadowUniforms)
+    bool tentFilters = true;   // PCF 3x3, 5x5, 7x7 (PCF 2x2 is always compiled in)
+    bool softFilters = true;   // Poisson and PCSS
+    bool shadowCubes = true;   // point lights' shadows in cube maps (shadows::PointShadowMode::CubeMap)
+
+    bool operator==(const LitShaderFeatures&) const = default;
+};
+
+// The material maps a material has, bit per scene::TextureSlot (LitObjectUniforms::flags.y).
+std::uint32_t litMaterialMaps(const scene::Material& material);
+
+// The lit pass shader `fileName` ("lit.vert", "lit.frag") with the includes "lit_constants.glsl" that lit.glsl reads
+// (the material texture bindings and TextureSlot numbers above as GLSL macros, so the numbers are written once,
+// here, and `features` as PENUMBRA_DEPTH_PREPASSED, PENUMBRA_LIT_VIEW, PENUMBRA_LIT_MAPS, PENUMBRA_LOCAL_LIGHTS and
+// PENUMBRA_STATIC_SHADOWS) and "shadow_constants.glsl" (the filters, with PENUMBRA_TENT_FILTERS,
+// PENUMBRA_SOFT_FILTERS and PENUMBRA_SHADOW_CUBES).
+rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& features = {});
 
 } // namespace penumbra::render

@@ -140,10 +140,11 @@ private:
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
     int litLightIndex(const scene::LightRef& light) const;
-    // After the depth prepass (`prepassed`) the opaque objects are drawn with an equal depth test into the
-    // prepass's depth; otherwise the target's depth is cleared.
+    // After the depth prepass (features.depthPrepassed) the opaque objects are drawn with an equal depth test into
+    // the prepass's depth; otherwise the target's depth is cleared. Each object takes `features` with its material's
+    // maps.
     void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
-                       const rhi::UniformSlice& frameSlice, bool visibility, bool prepassed,
+                       const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
                        const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms,
                        const rhi::UniformSlice& staticShadowUniforms);
 
@@ -152,9 +153,6 @@ private:
     shadows::DirectionalShadowPass shadowPass_;
     shadows::OtherShadowPass otherShadowPass_;
     std::unique_ptr<rhi::Shader> litVertex_;
-    std::unique_ptr<rhi::Shader> litFragment_;
-    // lit.frag for after the depth prepass: an equal depth test and no discard.
-    std::unique_ptr<rhi::Shader> prepassedLitFragment_;
     // Single-sampled: the lit pass without MSAA and the debug views. Multisampled: the lit pass with FrameDesc::msaa
     // samples, made when a frame first asks for that count.
     std::unique_ptr<LitPipelines> litPipelines_;
