@@ -11,7 +11,14 @@
 namespace penumbra::render {
 namespace {
 
-std::uint32_t pipelineIndex(bool doubleSided, bool blend) { return (doubleSided ? 1u : 0u) + (blend ? 2u : 0u); }
+// Forward: culled or double-sided, opaque or blended (0..3); after the prepass: culled or double-sided (4, 5). A
+// blended object never takes the prepass's equal test.
+std::uint32_t pipelineIndex(bool doubleSided, bool blend, bool prepassed)
+{
+    if (prepassed && !blend)
+        return 4u + (doubleSided ? 1u : 0u);
+    return (doubleSided ? 1u : 0u) + (blend ? 2u : 0u);
+}
 
 std::string samplesSuffix(std::uint32_t samples)
 {
@@ -22,43 +29,45 @@ std::string samplesSuffix(std::uint32_t samples)
 
 LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const rhi::Shader& fragment,
                            const rhi::Shader& prepassedFragment, std::uint32_t samples)
-    : samples_(samples)
+    : device_(device), vertex_(vertex), fragment_(fragment), prepassedFragment_(prepassedFragment), samples_(samples)
+{
+}
+
+rhi::PipelineDesc LitPipelines::describe(bool doubleSided, bool blend, bool prepassed) const
 {
     rhi::PipelineDesc desc;
-    desc.vertex = &vertex;
-    desc.fragment = &fragment;
+    desc.vertex = &vertex_;
     desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kLitDepthFormat;
-    desc.samples = samples;
+    desc.samples = samples_;
     desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
                            shadows::otherShadowLayout(), shadows::staticShadowLayout()};
-    for (const bool blend : {false, true})
-        for (const bool doubleSided : {false, true}) {
-            desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-            desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
-            rhi::ColorTarget target{kLitColorFormat};
-            if (blend)
-                target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
-                                rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
-            desc.colorTargets = {target};
-            desc.debugName = fmt::format("lit ({}, {}{})", blend ? "blended" : "opaque",
-                                         doubleSided ? "double-sided" : "culled", samplesSuffix(samples));
-            forward_[pipelineIndex(doubleSided, blend)] = device.createPipeline(desc);
-        }
-    desc.fragment = &prepassedFragment;
-    desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
-    desc.colorTargets = {rhi::ColorTarget{kLitColorFormat}};
-    for (const bool doubleSided : {false, true}) {
-        desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
+    desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
+    rhi::ColorTarget target{kLitColorFormat};
+    if (prepassed) {
+        desc.fragment = &prepassedFragment_;
+        desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
         desc.debugName = fmt::format("lit (after the depth prepass, {}{})", doubleSided ? "double-sided" : "culled",
-                                     samplesSuffix(samples));
-        prepassed_[doubleSided ? 1 : 0] = device.createPipeline(desc);
+                                     samplesSuffix(samples_));
+    } else {
+        desc.fragment = &fragment_;
+        desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
+        if (blend)
+            target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
+                            rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
+        desc.debugName = fmt::format("lit ({}, {}{})", blend ? "blended" : "opaque",
+                                     doubleSided ? "double-sided" : "culled", samplesSuffix(samples_));
     }
+    desc.colorTargets = {target};
+    return desc;
 }
 
 const rhi::Pipeline& LitPipelines::choose(bool doubleSided, bool blend, bool prepassed) const
 {
-    return prepassed && !blend ? *prepassed_[doubleSided ? 1 : 0] : *forward_[pipelineIndex(doubleSided, blend)];
+    std::unique_ptr<rhi::Pipeline>& pipeline = pipelines_[pipelineIndex(doubleSided, blend, prepassed)];
+    if (!pipeline)
+        pipeline = device_.createPipeline(describe(doubleSided, blend, prepassed && !blend));
+    return *pipeline;
 }
 
 } // namespace penumbra::render

@@ -10,10 +10,13 @@ namespace penumbra::render {
 
 // The lit pass's pipelines for one sample count (FrameDesc::msaa): culled or double-sided (glTF doubleSided), opaque
 // or alpha-blended over what is drawn (alphaMode BLEND: tested against the opaque depth, not written), and the opaque
-// ones after the depth prepass (equal depth test, no depth write, no discard).
+// ones after the depth prepass (equal depth test, no depth write, no discard). Each is made when first chosen: a
+// driver compiles the lit shader per pipeline (lavapipe takes most of a second each), and most scenes draw with one
+// or two of the six.
 class LitPipelines {
 public:
-    // `fragment` is lit.frag, `prepassedFragment` lit.frag built for after the depth prepass.
+    // `fragment` is lit.frag, `prepassedFragment` lit.frag built for after the depth prepass; the shaders and the
+    // device must outlive this.
     LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const rhi::Shader& fragment,
                  const rhi::Shader& prepassedFragment, std::uint32_t samples);
 
@@ -21,9 +24,15 @@ public:
     const rhi::Pipeline& choose(bool doubleSided, bool blend, bool prepassed) const;
 
 private:
+    rhi::PipelineDesc describe(bool doubleSided, bool blend, bool prepassed) const;
+
+    rhi::Device& device_;
+    const rhi::Shader& vertex_;
+    const rhi::Shader& fragment_;
+    const rhi::Shader& prepassedFragment_;
     std::uint32_t samples_;
-    std::array<std::unique_ptr<rhi::Pipeline>, 4> forward_;   // pipelineIndex in LitPipelines.cpp
-    std::array<std::unique_ptr<rhi::Pipeline>, 2> prepassed_; // culled, double-sided
+    // Indexed by pipelineIndex in LitPipelines.cpp; made by choose().
+    mutable std::array<std::unique_ptr<rhi::Pipeline>, 6> pipelines_;
 };
 
 } // namespace penumbra::render
