@@ -137,6 +137,57 @@ TEST_F(StaticShadowsTest, AChangeDrawsExactlyTheMapsItTouches)
     EXPECT_EQ(updated(), none);
 }
 
+bool hasStaticMap(const render::SceneRenderer& renderer, shadows::ShadowLightKind kind)
+{
+    const std::vector<shadows::StaticShadowMap>& maps = renderer.staticPlan().maps;
+    return std::any_of(maps.begin(), maps.end(), [&](const shadows::StaticShadowMap& m) { return m.kind == kind; });
+}
+
+// Each light in a mode of its own (scene::ShadowUpdate) under settings that keep no static maps: the sun on demand,
+// the lamp on change, a bulb every frame (no static map at all).
+TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
+{
+    scene::Scene scene = boxesUnderASpot();
+    scene.lights[0].shadowUpdate = scene::ShadowUpdate::OnDemand;
+    scene.spotLights[0].shadowUpdate = scene::ShadowUpdate::OnChange;
+    scene.pointLights.push_back({.name = "bulb", .intensity = 10.0f, .position = {3.0f, 2.5f, 1.0f}, .range = 8.0f,
+                                 .shadowUpdate = scene::ShadowUpdate::EveryFrame});
+    const scene::Scene first = scene;
+    render::FrameDesc frame = staticMapsFrame(shadows::StaticShadowUpdate::EveryFrame);
+    render::SceneRenderer renderer(*device, scene);
+    const auto updated = [&] { return lightsOf(renderer.render(scene.camera, frame).staticMapUpdates); };
+    const std::vector<std::string> sun{"directional light 0 ('sun')"};
+    const std::vector<std::string> lamp{"spot light 0 ('lamp')"};
+    const std::vector<std::string> both{sun[0], lamp[0]};
+    const std::vector<std::string> none;
+    EXPECT_EQ(updated(), both);
+    EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point)) << "the bulb draws every frame";
+    const rhi::Image mixed = read(renderer);
+    EXPECT_EQ(updated(), none);
+    moveObject(scene, "a", {0.3f, 0.0f, 0.0f}); // in the lamp's cone and the sun's view
+    EXPECT_EQ(updated(), lamp);
+    scene.lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.4f));
+    EXPECT_EQ(updated(), none);
+    renderer.requestStaticShadowUpdate();
+    EXPECT_EQ(updated(), both);
+    EXPECT_EQ(updated(), none);
+
+    // The scene as at first, the sun and the lamp on change as the settings now say, the bulb still every frame:
+    // both maps drawn again, the first picture again.
+    scene.objects.at(scene.findObject("a").value()) = first.objects.at(first.findObject("a").value());
+    scene.lights[0] = first.lights[0];
+    scene.lights[0].shadowUpdate = scene::ShadowUpdate::Settings;
+    scene.spotLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
+    frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+    EXPECT_EQ(updated(), both);
+    EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point));
+    const rhi::Image again = read(renderer);
+    EXPECT_LE(differingShare(mixed, again), 0.001) << picture(mixed, "mixed-modes") << " vs " << picture(again, "on-change");
+    // The bulb's six tiles reshape the static other atlas: the lamp's tile moves with them.
+    scene.pointLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
+    EXPECT_EQ(updated(), (std::vector<std::string>{lamp[0], "point light 0 ('bulb')"}));
+}
+
 // The sun's visibility view at view depths beyond the shadow distance: pixels some shadow map decides, and of those
 // the shadowed ones; with static maps it agrees with the ray cast, without them nothing decides.
 TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowAsTheRayCastDoes)

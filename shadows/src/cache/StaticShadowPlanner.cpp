@@ -56,7 +56,8 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
 {
     std::vector<std::uint32_t> selected;
     for (std::uint32_t i = 0; i < lights.size(); ++i) {
-        if (!lights[i].castsShadows || !(lights[i].strength > 0.0f))
+        if (!lights[i].castsShadows || !(lights[i].strength > 0.0f) ||
+            staticUpdateOf(lights[i].staticUpdate, settings) == StaticShadowUpdate::EveryFrame)
             continue;
         if (selected.size() == maxStaticDirectionalMaps) {
             plan.report.push_back({ShadowLightKind::Directional, i,
@@ -101,7 +102,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         const ShadowFrustum frustum{fit.view, false, fit.halfSize, 0.0f, fit.farDepth - fit.nearDepth};
         plan.maps.push_back({ShadowLightKind::Directional, index,
                              {{{tile, plan.directionalAtlas.viewport(tile), view, all}, fit.projection, frustum}},
-                             fit.texelSize});
+                             fit.texelSize, staticUpdateOf(light.staticUpdate, settings), index});
     }
 }
 
@@ -119,6 +120,7 @@ struct LocalLightInput {
     float nearPlane;
     std::optional<ShadowFilter> filter;
     NormalBiasSide normalBiasSide;
+    std::optional<StaticShadowUpdate> staticUpdate;
 };
 
 std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points)
@@ -127,12 +129,13 @@ std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots,
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& s = spots[i];
         inputs.push_back({ShadowLightKind::Spot, i, s.position, s.direction, s.range, s.outerAngle, s.strength,
-                          s.normalBias, s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide});
+                          s.normalBias, s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide, s.staticUpdate});
     }
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const PointShadowInput& p = points[i];
         inputs.push_back({ShadowLightKind::Point, i, p.position, glm::vec3(0.0f, -1.0f, 0.0f), p.range, 0.0f,
-                          p.strength, p.normalBias, p.slopeScaleBias, p.nearPlane, p.filter, p.normalBiasSide});
+                          p.strength, p.normalBias, p.slopeScaleBias, p.nearPlane, p.filter, p.normalBiasSide,
+                          p.staticUpdate});
     }
     return inputs;
 }
@@ -163,7 +166,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
     std::vector<const LocalLightInput*> selected;
     std::uint32_t tiles = 0;
     for (const LocalLightInput& light : inputs) {
-        if (!(light.strength > 0.0f))
+        if (!(light.strength > 0.0f) || staticUpdateOf(light.staticUpdate, settings) == StaticShadowUpdate::EveryFrame)
             continue;
         const std::uint32_t needed = light.kind == ShadowLightKind::Spot ? 1 : cubeFaceCount;
         if (tiles + needed > maxStaticOtherTiles) {
@@ -190,7 +193,8 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
         const std::uint32_t litIndex = light->index + (light->kind == ShadowLightKind::Point ? spots.size() : 0);
         if (litIndex < maxStaticMapLocalLights)
             plan.uniforms.localLights[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
-        StaticShadowMap map{light->kind, light->index, {}, 0.0f};
+        StaticShadowMap map{light->kind, light->index, {}, 0.0f, staticUpdateOf(light->staticUpdate, settings),
+                            litIndex};
         for (const glm::mat4& view : views.views) {
             // The dither follows the tile's own texel grid, as in the realtime atlas.
             ShadowViewDraw draw{.viewProjection = projection * view,
@@ -254,7 +258,7 @@ StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Co
 {
     validate(settings);
     StaticShadowPlan plan;
-    if (!hasStaticMaps(settings) || casters.indices.empty())
+    if (casters.indices.empty())
         return plan;
     planDirectional(plan, settings, conventions, lights, casters);
     planLocal(plan, settings, conventions, spots, points, casters);

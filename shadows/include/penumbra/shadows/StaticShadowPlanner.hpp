@@ -45,6 +45,8 @@ struct StaticShadowMap {
     std::uint32_t lightIndex = 0; // into the planner's input lights of that kind
     std::vector<StaticShadowTile> tiles;
     float texelSize = 0.0f; // directional maps: the world size of a texel
+    StaticShadowUpdate update = StaticShadowUpdate::OnChange; // the light's own mode, or the settings'
+    std::uint32_t litIndex = 0; // its entry in the uniforms' directionalLights or localLights
 };
 
 // Why a light gets no static map, or gets one filtered otherwise than its realtime shadow.
@@ -68,8 +70,15 @@ struct StaticCasters {
     std::span<const std::uint32_t> indices;  // the static ones, ascending
 };
 
-// Plans the static shadow maps (settings.staticMaps) of every light that casts shadows with strength > 0 and has a
-// static caster in reach, whatever the camera sees: directional lights (up to 4) take a tile of the static
+// The update mode of a light: its own, or the settings'.
+inline StaticShadowUpdate staticUpdateOf(std::optional<StaticShadowUpdate> light, const ShadowSettings& settings)
+{
+    return light.value_or(settings.staticMaps.update);
+}
+
+// Plans the static shadow maps (settings.staticMaps) of every light that casts shadows with strength > 0, whose
+// update mode (its own staticUpdate, or the settings') is not EveryFrame, and has a static caster in reach, whatever
+// the camera sees: directional lights (up to 4) take a tile of the static
 // directional atlas fitted around the static casters' bounding sphere (the stable fit of a cascade, so its texels
 // stay put while nothing static moves); spot and point lights take one and six tiles of the static other atlas
 // (up to maxStaticOtherTiles), with the projections of their realtime tiles. Lights that do not fit, and lights whose soft filter
