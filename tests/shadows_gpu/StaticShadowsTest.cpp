@@ -23,6 +23,8 @@
 namespace penumbra::testing {
 namespace {
 
+using shadows::ShadowFilter;
+
 constexpr std::uint32_t kWidth = kStaticWidth;
 constexpr std::uint32_t kHeight = kStaticHeight;
 
@@ -186,6 +188,83 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     // The bulb's six tiles reshape the static other atlas: the lamp's tile moves with them.
     scene.pointLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
     EXPECT_EQ(updated(), (std::vector<std::string>{lamp[0], "point light 0 ('bulb')"}));
+}
+
+// Over the pixels both visibility views decide: how many `b` has in penumbra (neither fully lit nor fully shadowed),
+// and how much shadow (sum of 1 - visibility) it has.
+struct SoftShadowSummary {
+    std::size_t penumbra = 0;
+    double shadow = 0.0;
+};
+
+SoftShadowSummary softSummary(const rhi::Image& a, const rhi::Image& b)
+{
+    SoftShadowSummary summary;
+    for (std::uint32_t y = 0; y < kHeight; ++y)
+        for (std::uint32_t x = 0; x < kWidth; ++x) {
+            const Rgba p = pixel(a, x, y);
+            const Rgba q = pixel(b, x, y);
+            if (p[3] < 128 || q[3] < 128)
+                continue;
+            summary.penumbra += q[0] >= 8 && q[0] <= 247 ? 1 : 0;
+            summary.shadow += 1.0 - q[0] / 255.0;
+        }
+    return summary;
+}
+
+// A light whose shadow comes from its static map alone (the shadow distance ends before the camera sees anything)
+// has the soft shadow of its realtime tiles: PCSS for the sun, the Poisson disk for the lamp. The static maps' texels
+// are not the cascades' (the lamp's are the size of its realtime tile's, as the Poisson disk's radius is in texels), so
+// the disks' noise falls elsewhere: the pictures are compared by how much shadow they hold
+// (within 10%) and how many penumbra pixels (within a factor of 1.6); a hard-filtered static map has less than half
+// the penumbra, which is what the bounds tell apart.
+TEST_F(StaticShadowsTest, StaticMapsTakeTheLightsSoftFilter)
+{
+    scene::Scene scene = boxesUnderASpot();
+    scene.lights[0].angularDiameter = 20.0f;
+    // Behind box "a", so its shadow falls towards the camera.
+    scene.spotLights[0].position = {-3.0f, 3.0f, -3.0f};
+    scene.spotLights[0].direction = glm::normalize(glm::vec3(-3.0f, 0.0f, 1.0f) - scene.spotLights[0].position);
+    scene.spotLights[0].sourceRadius = 0.5f;
+    render::SceneRenderer renderer(*device, scene);
+    const auto view = [&](scene::LightRef light, float maxDistance, shadows::StaticShadowUpdate update) {
+        render::FrameDesc frame = staticMapsFrame(update);
+        frame.shadows.maxDistance = maxDistance;
+        frame.visibilityOf = light;
+        // The Poisson disk's radius is in texels: the lamp's static tile has the texels of its realtime one.
+        frame.shadows.staticMaps.otherAtlasSize = frame.shadows.other.atlasSize;
+        frame.shadows.soft.poissonRadiusTexels = 8.0f;
+        renderer.render(scene.camera, frame);
+        return rhi::readTexture(*device, renderer.visibilityImage());
+    };
+    struct Case {
+        scene::LightRef light;
+        std::int32_t* filter;
+        ShadowFilter soft;
+    };
+    for (const Case& c : {Case{{scene::LightKind::Directional, 0}, &scene.lights[0].shadowFilter, ShadowFilter::PCSS},
+                          Case{{scene::LightKind::Spot, 0}, &scene.spotLights[0].shadowFilter, ShadowFilter::Poisson}}) {
+        *c.filter = static_cast<std::int32_t>(c.soft);
+        const rhi::Image realtime = view(c.light, 100.0f, shadows::StaticShadowUpdate::EveryFrame);
+        const rhi::Image fromStatic = view(c.light, 0.01f, shadows::StaticShadowUpdate::OnChange);
+        *c.filter = static_cast<std::int32_t>(ShadowFilter::PCF2x2);
+        const rhi::Image hard = view(c.light, 0.01f, shadows::StaticShadowUpdate::OnChange);
+        *c.filter = scene::kAtlasShadowFilter;
+        const SoftShadowSummary r = softSummary(fromStatic, realtime);
+        const SoftShadowSummary st = softSummary(realtime, fromStatic);
+        const SoftShadowSummary h = softSummary(realtime, hard);
+        const std::string name(shadows::shadowFilterNames()[std::size_t(c.soft)].command);
+        std::printf("[ static   ] %s %s, %s: penumbra pixels realtime %zu, static %zu, hard static %zu; shadow %.1f, "
+                    "%.1f, %.1f\n",
+                    configuration().c_str(), scene::lightKindName(c.light.kind), name.c_str(), r.penumbra, st.penumbra,
+                    h.penumbra, r.shadow, st.shadow, h.shadow);
+        const std::string pictures = picture(realtime, name + "-realtime") + " vs " + picture(fromStatic, name + "-static");
+        EXPECT_GT(r.penumbra, 20u) << pictures;
+        EXPECT_NEAR(st.shadow, r.shadow, 0.1 * r.shadow) << pictures;
+        EXPECT_GE(double(st.penumbra), r.penumbra / 1.6) << pictures;
+        EXPECT_LE(double(st.penumbra), r.penumbra * 1.6) << pictures;
+        EXPECT_LT(2 * h.penumbra, r.penumbra) << picture(hard, name + "-hard-static");
+    }
 }
 
 // The sun's visibility view at view depths beyond the shadow distance: pixels some shadow map decides, and of those

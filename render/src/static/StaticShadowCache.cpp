@@ -237,6 +237,7 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
         if (!otherMaps.empty())
             restore(*otherAtlas_, plan.otherAtlas, all(false));
     } else {
+        pass_.begin();
         const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
             std::vector<const shadows::ShadowTileDraw*> tiles;
             for (const shadows::StaticShadowMap* map : maps)

@@ -3,8 +3,10 @@
 #include "penumbra/shadows/AtlasMatrix.hpp"
 #include "penumbra/shadows/DirectionalCascadeFit.hpp"
 #include "penumbra/shadows/DirectionalShadowPass.hpp"
+#include "penumbra/shadows/DirectionalSoftData.hpp"
 #include "penumbra/shadows/LightBasis.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -16,16 +18,6 @@ namespace penumbra::shadows {
 namespace {
 
 constexpr float kSqrt2 = 1.41421356f;
-
-// The static maps filter with the tent filters only: the soft filters' blocker search reads the realtime atlases'
-// per-tile soft data, which a map over the whole static scene has no use for.
-ShadowFilter staticFilter(ShadowFilter filter, ShadowLightKind kind, std::uint32_t index, StaticShadowPlan& plan)
-{
-    if (!isSoftFilter(filter))
-        return filter;
-    plan.report.push_back({kind, index, "its static map is filtered with pcf7 (soft filters read the realtime atlas)"});
-    return ShadowFilter::PCF7x7;
-}
 
 // The sphere around the union of the static casters' boxes.
 Sphere boundingSphere(const StaticCasters& casters)
@@ -79,8 +71,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
     for (std::uint32_t tile = 0; tile < selected.size(); ++tile) {
         const std::uint32_t index = selected[tile];
         const DirectionalShadowLightInput& light = lights[index];
-        const ShadowFilter filter = staticFilter(light.filter.value_or(settings.directional.filter),
-                                                 ShadowLightKind::Directional, index, plan);
+        const ShadowFilter filter = light.filter.value_or(settings.directional.filter);
         const DirectionalShadowCascade fit =
             fitDirectionalCascade(sphere, lightBasis(light.direction), plan.directionalAtlas.tileSize(),
                                   light.nearPlaneOffset, staticBounds, conventions);
@@ -96,6 +87,12 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         plan.uniforms.directionalWorldToMap[tile] =
             worldToAtlas(fit.viewProjection, tile, plan.directionalAtlas, conventions);
         plan.uniforms.directionalBounds[tile] = plan.directionalAtlas.tileTexelBounds(tile);
+        const float top = casterTopDepth(fit.basis, staticBounds, fit.nearDepth);
+        plan.uniforms.directionalSoft[tile] =
+            glm::vec4(lightTexelAnchor(fit, plan.uniforms.directionalWorldToMap[tile]),
+                      directionalDepthRow(fit, top, conventions));
+        plan.uniforms.directionalSource[tile] = {tanHalfAngularDiameter(light.angularDiameter), fit.texelSize, 0.0f,
+                                                 0.0f};
         if (index < maxStaticMapDirectionalLights)
             plan.uniforms.directionalLights[index] = {static_cast<float>(tile), light.strength,
                                                       casterSide ? 0.0f : reach, static_cast<float>(filter)};
@@ -121,6 +118,7 @@ struct LocalLightInput {
     std::optional<ShadowFilter> filter;
     NormalBiasSide normalBiasSide;
     std::optional<StaticShadowUpdate> staticUpdate;
+    float sourceRadius; // soft filters
 };
 
 std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points)
@@ -129,13 +127,14 @@ std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots,
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& s = spots[i];
         inputs.push_back({ShadowLightKind::Spot, i, s.position, s.direction, s.range, s.outerAngle, s.strength,
-                          s.normalBias, s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide, s.staticUpdate});
+                          s.normalBias, s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide, s.staticUpdate,
+                          s.sourceRadius});
     }
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const PointShadowInput& p = points[i];
         inputs.push_back({ShadowLightKind::Point, i, p.position, glm::vec3(0.0f, -1.0f, 0.0f), p.range, 0.0f,
                           p.strength, p.normalBias, p.slopeScaleBias, p.nearPlane, p.filter, p.normalBiasSide,
-                          p.staticUpdate});
+                          p.staticUpdate, p.sourceRadius});
     }
     return inputs;
 }
@@ -183,8 +182,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
     std::uint32_t tile = 0;
     for (const LocalLightInput* light : selected) {
         const std::uint32_t tileSize = plan.otherAtlas.tileSize();
-        const ShadowFilter filter =
-            staticFilter(light->filter.value_or(settings.other.filter), light->kind, light->index, plan);
+        const ShadowFilter filter = light->filter.value_or(settings.other.filter);
         const LocalViews views = localViews(*light, tileSize, filter);
         const float nearPlane = localShadowNearPlane(light->range, light->nearPlane, settings.other);
         const glm::mat4 projection = conventions.perspective(views.fov, 1.0f, nearPlane, light->range);
@@ -205,6 +203,8 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
             plan.uniforms.otherWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.otherAtlas, conventions);
             plan.uniforms.otherBounds[tile] = plan.otherAtlas.tileTexelBounds(tile);
             plan.uniforms.otherData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
+            plan.uniforms.otherSoft[tile] =
+                perspectiveTileSoft(projection, tileSize, light->sourceRadius, nearPlane, conventions);
             map.tiles.push_back({{tile, plan.otherAtlas.viewport(tile), draw,
                                   castersInFrustum(view, views.fov, nearPlane, light->range, casters)},
                                  projection,
