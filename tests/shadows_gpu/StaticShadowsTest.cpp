@@ -12,6 +12,7 @@
 #include "penumbra/scene/TestScenes.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <cstdio>
@@ -265,6 +266,60 @@ TEST_F(StaticShadowsTest, StaticMapsTakeTheLightsSoftFilter)
         EXPECT_LE(double(st.penumbra), r.penumbra * 1.6) << pictures;
         EXPECT_LT(2 * h.penumbra, r.penumbra) << picture(hard, name + "-hard-static");
     }
+}
+
+double linear(std::uint8_t encoded)
+{
+    const double c = encoded / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// The lit pass mixes as static_shadows.glsl says: attenuation = mix(1, min(realtime faded, static), strength), so the
+// picture is linear in the sun's shadow strength wherever its shadow comes from: at strength 0.5 every pixel is the
+// mean of strengths 0 and 1 in linear light, near the camera (realtime and static), in the distance fade and beyond
+// the shadow distance (static alone), within the rounding of 8-bit sRGB.
+TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
+{
+    scene::Scene scene = boxesUnderASpot();
+    render::FrameDesc frame = staticMapsFrame();
+    frame.shadows.maxDistance = 11.0f; // the far boxes' shadows lie in the fade and beyond
+    render::SceneRenderer renderer(*device, scene);
+    const auto lit = [&](float strength) {
+        scene.lights[0].shadowStrength = strength;
+        renderer.render(scene.camera, frame);
+        return read(renderer);
+    };
+    const rhi::Image none = lit(0.0f);
+    const rhi::Image full = lit(1.0f);
+    const rhi::Image half = lit(0.5f);
+    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
+    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    double worst = 0.0;
+    std::size_t shadowed = 0;
+    std::size_t shadowedBeyond = 0; // past the start of the distance fade: the static map's share grows to all
+    for (std::size_t i = 0; i < half.bytes.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c) {
+            const double a = linear(std::to_integer<std::uint8_t>(none.bytes[i + c]));
+            const double b = linear(std::to_integer<std::uint8_t>(full.bytes[i + c]));
+            const double m = linear(std::to_integer<std::uint8_t>(half.bytes[i + c]));
+            // One 8-bit step around each value, in linear light.
+            const double slack = linear(std::min(255, std::to_integer<int>(half.bytes[i + c]) + 1)) - m;
+            worst = std::max(worst, std::abs(m - 0.5 * (a + b)) / std::max(slack, 1e-6));
+            const bool inShadow = c == 0 && a - b > 0.05;
+            shadowed += inShadow ? 1 : 0;
+            const scene::GBufferSample& sample = gbuffer.at(std::uint32_t(i / 4 % kWidth), std::uint32_t(i / 4 / kWidth));
+            shadowedBeyond += inShadow && sample.object != scene::kNoObject &&
+                                      sample.viewDepth > frame.shadows.maxDistance * (1.0f - frame.shadows.distanceFade)
+                                  ? 1
+                                  : 0;
+        }
+    std::printf("[ static   ] %s strength 0.5 against the mean of 0 and 1: worst %.2f 8-bit steps, %zu shadowed "
+                "pixels, %zu in the distance fade or beyond\n",
+                configuration().c_str(), worst, shadowed, shadowedBeyond);
+    EXPECT_GT(shadowed, 50u) << picture(full, "strength-1");
+    EXPECT_GT(shadowedBeyond, 10u) << picture(full, "strength-1");
+    EXPECT_LE(worst, 1.5) << picture(none, "strength-0") << " " << picture(half, "strength-half") << " "
+                          << picture(full, "strength-1");
 }
 
 // The sun's visibility view at view depths beyond the shadow distance: pixels some shadow map decides, and of those
