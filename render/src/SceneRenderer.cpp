@@ -479,7 +479,7 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 }
 
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
-                                  const LitPipelines& pipelines, const rhi::UniformSlice& frameSlice, bool visibility,
+                                  LitPipelines& pipelines, const rhi::UniformSlice& frameSlice, bool visibility,
                                   bool prepassed, const rhi::UniformSlice& shadowUniforms,
                                   const rhi::UniformSlice& otherShadowUniforms,
                                   const rhi::UniformSlice& staticShadowUniforms)

@@ -5,6 +5,7 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
+#include <map>
 #include <mutex>
 #include <spirv_cross/spirv_cross.hpp>
 
@@ -82,9 +83,17 @@ private:
     const std::vector<ShaderInclude>& includes_;
 };
 
-} // namespace
+// Everything the SPIR-V depends on, as one string: the stage, the preamble, the name errors cite, every source.
+std::string compileKey(const ShaderSource& source, const std::string& preamble)
+{
+    std::string key = fmt::format("{}\n{}\n{}\n{}\n{}", int(source.stage), preamble.size(), preamble, source.name,
+                                  source.source);
+    for (const ShaderInclude& include : source.includes)
+        key += fmt::format("\n{}\n{}\n{}", include.name, include.source.size(), include.source);
+    return key;
+}
 
-CompiledShader compileShader(const ShaderSource& source, const std::string& preamble)
+CompiledShader compileWithGlslang(const ShaderSource& source, const std::string& preamble)
 {
     initializeGlslang();
     const EShLanguage stage = glslangStage(source.stage);
@@ -113,6 +122,26 @@ CompiledShader compileShader(const ShaderSource& source, const std::string& prea
     glslang::GlslangToSpv(*program.getIntermediate(stage), compiled.spirv, &options);
     compiled.bindings = reflectBindings(compiled.spirv, source.name);
     return compiled;
+}
+
+} // namespace
+
+// Compilation is a pure function of its inputs, and glslang plus SPIR-V validation cost tens of milliseconds for the
+// lit shader: every renderer of a process (tests, scene reloads, the soak) compiles the same sources, so each is
+// compiled once per process. Failures are not kept: they throw every time.
+CompiledShader compileShader(const ShaderSource& source, const std::string& preamble)
+{
+    static std::mutex mutex;
+    static std::map<std::string, CompiledShader> compiled;
+    std::string key = compileKey(source, preamble);
+    {
+        const std::lock_guard lock(mutex);
+        if (const auto found = compiled.find(key); found != compiled.end())
+            return found->second;
+    }
+    CompiledShader result = compileWithGlslang(source, preamble);
+    const std::lock_guard lock(mutex);
+    return compiled.emplace(std::move(key), std::move(result)).first->second;
 }
 
 } // namespace penumbra::rhi

@@ -11,14 +11,7 @@
 namespace penumbra::render {
 namespace {
 
-// Forward: culled or double-sided, opaque or blended (0..3); after the prepass: culled or double-sided (4, 5). A
-// blended object never takes the prepass's equal test.
-std::uint32_t pipelineIndex(bool doubleSided, bool blend, bool prepassed)
-{
-    if (prepassed && !blend)
-        return 4u + (doubleSided ? 1u : 0u);
-    return (doubleSided ? 1u : 0u) + (blend ? 2u : 0u);
-}
+std::uint32_t pipelineIndex(bool doubleSided, bool blend) { return (doubleSided ? 1u : 0u) + (blend ? 2u : 0u); }
 
 std::string samplesSuffix(std::uint32_t samples)
 {
@@ -33,10 +26,11 @@ LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const
 {
 }
 
-rhi::PipelineDesc LitPipelines::describe(bool doubleSided, bool blend, bool prepassed) const
+std::unique_ptr<rhi::Pipeline> LitPipelines::create(bool doubleSided, bool blend, bool prepassed) const
 {
     rhi::PipelineDesc desc;
     desc.vertex = &vertex_;
+    desc.fragment = prepassed ? &prepassedFragment_ : &fragment_;
     desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kLitDepthFormat;
     desc.samples = samples_;
@@ -45,12 +39,10 @@ rhi::PipelineDesc LitPipelines::describe(bool doubleSided, bool blend, bool prep
     desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
     rhi::ColorTarget target{kLitColorFormat};
     if (prepassed) {
-        desc.fragment = &prepassedFragment_;
         desc.depth = {.test = true, .write = false, .compare = rhi::DepthTest::Equal};
         desc.debugName = fmt::format("lit (after the depth prepass, {}{})", doubleSided ? "double-sided" : "culled",
                                      samplesSuffix(samples_));
     } else {
-        desc.fragment = &fragment_;
         desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
         if (blend)
             target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
@@ -59,14 +51,16 @@ rhi::PipelineDesc LitPipelines::describe(bool doubleSided, bool blend, bool prep
                                      doubleSided ? "double-sided" : "culled", samplesSuffix(samples_));
     }
     desc.colorTargets = {target};
-    return desc;
+    return device_.createPipeline(desc);
 }
 
-const rhi::Pipeline& LitPipelines::choose(bool doubleSided, bool blend, bool prepassed) const
+const rhi::Pipeline& LitPipelines::choose(bool doubleSided, bool blend, bool prepassed)
 {
-    std::unique_ptr<rhi::Pipeline>& pipeline = pipelines_[pipelineIndex(doubleSided, blend, prepassed)];
+    const bool afterPrepass = prepassed && !blend;
+    std::unique_ptr<rhi::Pipeline>& pipeline =
+        afterPrepass ? prepassed_[doubleSided ? 1 : 0] : forward_[pipelineIndex(doubleSided, blend)];
     if (!pipeline)
-        pipeline = device_.createPipeline(describe(doubleSided, blend, prepassed && !blend));
+        pipeline = create(doubleSided, blend, afterPrepass);
     return *pipeline;
 }
 

@@ -142,7 +142,7 @@ private:
     int litLightIndex(const scene::LightRef& light) const;
     // After the depth prepass (`prepassed`) the opaque objects are drawn with an equal depth test into the
     // prepass's depth; otherwise the target's depth is cleared.
-    void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, const LitPipelines& pipelines,
+    void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
                        const rhi::UniformSlice& frameSlice, bool visibility, bool prepassed,
                        const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms,
                        const rhi::UniformSlice& staticShadowUniforms);
