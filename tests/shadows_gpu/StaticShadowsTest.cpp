@@ -36,6 +36,12 @@ void moveObject(scene::Scene& scene, const std::string& name, glm::vec3 offset)
     object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
 }
 
+// The static map updates of boxesUnderASpot(), by light.
+const std::vector<std::string> kSunMap{"directional light 0 ('sun')"};
+const std::vector<std::string> kLampMap{"spot light 0 ('lamp')"};
+const std::vector<std::string> kBothMaps{kSunMap[0], kLampMap[0]};
+const std::vector<std::string> kNoMap;
+
 std::vector<std::string> lightsOf(const std::vector<std::string>& updates)
 {
     std::vector<std::string> lights;
@@ -110,34 +116,30 @@ TEST_F(StaticShadowsTest, AChangeDrawsExactlyTheMapsItTouches)
     render::FrameDesc frame = staticMapsFrame();
     render::SceneRenderer renderer(*device, scene);
     const auto updated = [&] { return lightsOf(renderer.render(scene.camera, frame).staticMapUpdates); };
-    const std::vector<std::string> sun{"directional light 0 ('sun')"};
-    const std::vector<std::string> lamp{"spot light 0 ('lamp')"};
-    const std::vector<std::string> both{sun[0], lamp[0]};
-    const std::vector<std::string> none;
-    EXPECT_EQ(updated(), both);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kBothMaps);
+    EXPECT_EQ(updated(), kNoMap);
     moveObject(scene, "c", {0.0f, 0.0f, -1.0f}); // outside the lamp's cone
-    EXPECT_EQ(updated(), sun);
+    EXPECT_EQ(updated(), kSunMap);
     moveObject(scene, "a", {0.3f, 0.0f, 0.0f});
-    EXPECT_EQ(updated(), both);
+    EXPECT_EQ(updated(), kBothMaps);
     scene.spotLights[0].range = 9.0f;
-    EXPECT_EQ(updated(), lamp);
+    EXPECT_EQ(updated(), kLampMap);
     scene.lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.4f));
-    EXPECT_EQ(updated(), sun);
+    EXPECT_EQ(updated(), kSunMap);
     scene.spotLights[0].slopeScaleBias = 2.0f;
-    EXPECT_EQ(updated(), lamp);
+    EXPECT_EQ(updated(), kLampMap);
     frame.shadows.staticMaps.otherAtlasSize = 256;
-    EXPECT_EQ(updated(), lamp);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kLampMap);
+    EXPECT_EQ(updated(), kNoMap);
 
     // On demand, nothing is drawn until asked, whatever moves.
     frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnDemand;
     moveObject(scene, "a", {0.3f, 0.0f, 0.0f});
-    EXPECT_EQ(updated(), none);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kNoMap);
+    EXPECT_EQ(updated(), kNoMap);
     renderer.requestStaticShadowUpdate();
-    EXPECT_EQ(updated(), both);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kBothMaps);
+    EXPECT_EQ(updated(), kNoMap);
 }
 
 bool hasStaticMap(const render::SceneRenderer& renderer, shadows::ShadowLightKind kind)
@@ -159,21 +161,17 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     render::FrameDesc frame = staticMapsFrame(shadows::StaticShadowUpdate::EveryFrame);
     render::SceneRenderer renderer(*device, scene);
     const auto updated = [&] { return lightsOf(renderer.render(scene.camera, frame).staticMapUpdates); };
-    const std::vector<std::string> sun{"directional light 0 ('sun')"};
-    const std::vector<std::string> lamp{"spot light 0 ('lamp')"};
-    const std::vector<std::string> both{sun[0], lamp[0]};
-    const std::vector<std::string> none;
-    EXPECT_EQ(updated(), both);
+    EXPECT_EQ(updated(), kBothMaps);
     EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point)) << "the bulb draws every frame";
     const rhi::Image mixed = read(renderer);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kNoMap);
     moveObject(scene, "a", {0.3f, 0.0f, 0.0f}); // in the lamp's cone and the sun's view
-    EXPECT_EQ(updated(), lamp);
+    EXPECT_EQ(updated(), kLampMap);
     scene.lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.4f));
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kNoMap);
     renderer.requestStaticShadowUpdate();
-    EXPECT_EQ(updated(), both);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kBothMaps);
+    EXPECT_EQ(updated(), kNoMap);
 
     // The scene as at first, the sun and the lamp on change as the settings now say, the bulb still every frame:
     // both maps drawn again, the first picture again.
@@ -182,13 +180,13 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     scene.lights[0].shadowUpdate = scene::ShadowUpdate::Settings;
     scene.spotLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
     frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
-    EXPECT_EQ(updated(), both);
+    EXPECT_EQ(updated(), kBothMaps);
     EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point));
     const rhi::Image again = read(renderer);
     EXPECT_LE(differingShare(mixed, again), 0.001) << picture(mixed, "mixed-modes") << " vs " << picture(again, "on-change");
     // The bulb's six tiles reshape the static other atlas: the lamp's tile moves with them.
     scene.pointLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
-    EXPECT_EQ(updated(), (std::vector<std::string>{lamp[0], "point light 0 ('bulb')"}));
+    EXPECT_EQ(updated(), (std::vector<std::string>{kLampMap[0], "point light 0 ('bulb')"}));
 }
 
 // Over the pixels both visibility views decide: how many `b` has in penumbra (neither fully lit nor fully shadowed),
