@@ -73,26 +73,35 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
     return s;
 }
 
+// Tile tileMin..tileMax of a directional depth atlas filtered at atlas position (u, v, depth) by `filterIndex`: the
+// tent filters, or the Poisson and PCSS filters with the tile's soft data (tileSoft: the light texel anchor and the
+// depth row), the light's tan of half its angular diameter and the world size of a tile texel. `toAtlas` turns the
+// receiver's screen derivatives into atlas units. The realtime cascades and the static maps (static_shadows.glsl)
+// both filter through it.
+float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize, ivec2 tileMin, ivec2 tileMax,
+                            int filterIndex, mat3 toAtlas, vec4 tileSoft, float tanHalfAngle, float texelWorld)
+{
+#if PENUMBRA_SOFT_FILTERS
+    if (filterIndex < PENUMBRA_FILTER_POISSON)
+#endif
+        return filterShadowTile(atlas, atlasPosition, atlasSize, filterIndex, tileMin, tileMax);
+#if PENUMBRA_SOFT_FILTERS
+    const SoftTile t =
+        softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, atlasSize, tileMin, tileMax, tileSoft.xy);
+    return directionalSoftShadow(atlas, t, filterIndex, softControls(shadows.softScales, shadows.softCounts),
+                                 tileSoft.zw, tanHalfAngle, texelWorld);
+#endif
+}
+
 // The directional atlas's tile `tile` filtered at atlas position (u, v, depth) by light `slot`'s filter.
 float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slot)
 {
     const int split = int(shadows.atlasSize.x * shadows.atlasSize.w + 0.5);
     const int tileSize = int(shadows.atlasSize.z);
     const ivec2 tileMin = ivec2(tile % split, tile / split) * tileSize;
-    const int filterIndex = int(shadows.lightShadowData[slot].w);
-#if PENUMBRA_SOFT_FILTERS
-    if (filterIndex < PENUMBRA_FILTER_POISSON)
-#endif
-        return filterShadowTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, filterIndex, tileMin,
-                                tileMin + tileSize - 1);
-#if PENUMBRA_SOFT_FILTERS
-    const mat3 toAtlas = mat3(shadows.worldToAtlas[tile]);
-    const vec4 tileSoft = shadows.tileSoft[tile];
-    const SoftTile t = softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, shadows.atlasSize.x,
-                                tileMin, tileMin + tileSize - 1, tileSoft.xy);
-    return directionalSoftShadow(shadowAtlas, t, filterIndex, softControls(shadows.softScales, shadows.softCounts),
-                                 tileSoft.zw, shadows.lightSoft[slot].x, shadows.cascadeData[cascade].z);
-#endif
+    return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, tileMin, tileMin + tileSize - 1,
+                                 int(shadows.lightShadowData[slot].w), mat3(shadows.worldToAtlas[tile]),
+                                 shadows.tileSoft[tile], shadows.lightSoft[slot].x, shadows.cascadeData[cascade].z);
 }
 
 // The receiver moved by its normal offset over the cascade's filter-sized texel diagonal (scaled to the light's

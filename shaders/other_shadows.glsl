@@ -67,6 +67,26 @@ vec4 localShadowPosition(mat4 worldToAtlas, float biasScale, vec3 plane, vec3 fr
     return transformPoint(worldToAtlas, biased);
 }
 
+// A perspective tile (first and last texel `bounds`) of a depth atlas at the receiver's projected position `p`
+// (worldToAtlas x its position, before the divide by w), filtered by `filterIndex`: the tent filters, or the Poisson
+// and PCSS filters with the tile's soft data (tileSoft: the depth row, the light's radius in texels at unit distance,
+// the near plane). The realtime tiles and the static maps (static_shadows.glsl) both filter through it.
+float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 p, vec4 bounds, int filterIndex,
+                      vec4 tileSoft)
+{
+#if PENUMBRA_SOFT_FILTERS
+    if (filterIndex < PENUMBRA_FILTER_POISSON)
+#endif
+        return filterShadowTile(atlas, p.xyz / p.w, atlasSize, filterIndex, ivec2(bounds.xy), ivec2(bounds.zw));
+#if PENUMBRA_SOFT_FILTERS
+    const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(worldToAtlas, p, receiverDx),
+                                projectedDerivative(worldToAtlas, p, receiverDy), atlasSize, ivec2(bounds.xy),
+                                ivec2(bounds.zw), vec2(0.0));
+    return perspectiveSoftShadow(atlas, t, filterIndex, softControls(otherShadows.softScales, otherShadows.softCounts),
+                                 tileSoft);
+#endif
+}
+
 // Shadow of a spot light (its cone `axis`) or a point light (six tiles from `firstTile`, the face picked
 // by the direction from the light) at a receiver; `normal` is its geometric normal, either side.
 float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
@@ -74,23 +94,10 @@ float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
     const vec3 fromLight = position - lightPosition;
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
     const int tile = local.tile;
-    const vec4 p = localShadowPosition(otherShadows.worldToAtlas[tile], otherShadows.tileData[tile].x, local.plane,
-                                       fromLight, position, normal);
-    const vec4 bounds = otherShadows.tileBounds[tile];
-    const int filterIndex = int(otherShadows.tileData[tile].y);
-#if PENUMBRA_SOFT_FILTERS
-    if (filterIndex < PENUMBRA_FILTER_POISSON)
-#endif
-        return filterShadowTile(otherShadowAtlas, p.xyz / p.w, otherShadows.atlasSize.x, filterIndex,
-                                ivec2(bounds.xy), ivec2(bounds.zw));
-#if PENUMBRA_SOFT_FILTERS
     const mat4 m = otherShadows.worldToAtlas[tile];
-    const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(m, p, receiverDx), projectedDerivative(m, p, receiverDy),
-                                otherShadows.atlasSize.x, ivec2(bounds.xy), ivec2(bounds.zw), vec2(0.0));
-    return perspectiveSoftShadow(otherShadowAtlas, t, filterIndex,
-                                 softControls(otherShadows.softScales, otherShadows.softCounts),
-                                 otherShadows.tileSoft[tile]);
-#endif
+    const vec4 p = localShadowPosition(m, otherShadows.tileData[tile].x, local.plane, fromLight, position, normal);
+    return filterLocalTile(otherShadowAtlas, otherShadows.atlasSize.x, m, p, otherShadows.tileBounds[tile],
+                           int(otherShadows.tileData[tile].y), otherShadows.tileSoft[tile]);
 }
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read

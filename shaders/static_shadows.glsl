@@ -13,6 +13,9 @@ layout(std140, binding = PENUMBRA_BINDING_STATIC_SHADOWS) uniform StaticShadows 
     vec4 otherData[64];
     vec4 localLights[16];
     vec4 atlasSizes;
+    vec4 directionalSoft[4];
+    vec4 directionalSource[4];
+    vec4 otherSoft[64];
 } staticShadows;
 
 // Read with texelFetch (shadow_filter.glsl), as the realtime atlases.
@@ -20,7 +23,7 @@ layout(binding = PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS) uniform sampler2D st
 layout(binding = PENUMBRA_BINDING_STATIC_OTHER_ATLAS) uniform sampler2D staticOtherAtlas;
 
 // Directional light `light`'s static map at a receiver (1 = lit), its normal offset as the cascades' over the
-// map's texel diagonal.
+// map's texel diagonal, filtered as the light's cascades are.
 float staticDirectionalVisibility(vec4 light, vec3 position, vec3 normal, vec3 towardsLight)
 {
     const int tile = int(light.x);
@@ -32,20 +35,22 @@ float staticDirectionalVisibility(vec4 light, vec3 position, vec3 normal, vec3 t
     const vec2 texel = p.xy * staticShadows.atlasSizes.x;
     if (any(lessThan(texel, bounds.xy)) || any(greaterThan(texel, bounds.zw + 1.0)))
         return 1.0;
-    return filterShadowTile(staticDirectionalAtlas, p, staticShadows.atlasSizes.x, int(light.w), ivec2(bounds.xy),
-                            ivec2(bounds.zw));
+    return filterDirectionalTile(staticDirectionalAtlas, p, staticShadows.atlasSizes.x, ivec2(bounds.xy),
+                                 ivec2(bounds.zw), int(light.w), mat3(staticShadows.directionalWorldToMap[tile]),
+                                 staticShadows.directionalSoft[tile], staticShadows.directionalSource[tile].x,
+                                 staticShadows.directionalSource[tile].y);
 }
 
+// A spot or point light's static map at a receiver (1 = lit), biased and filtered as its realtime tiles are.
 float staticLocalVisibility(int firstTile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
 {
     const vec3 fromLight = position - lightPosition;
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
     const vec4 data = staticShadows.otherData[local.tile];
-    const vec4 p = localShadowPosition(staticShadows.otherWorldToMap[local.tile], data.x, local.plane, fromLight,
-                                       position, normal);
-    const vec4 bounds = staticShadows.otherBounds[local.tile];
-    return filterShadowTile(staticOtherAtlas, p.xyz / p.w, staticShadows.atlasSizes.y, int(data.y), ivec2(bounds.xy),
-                            ivec2(bounds.zw));
+    const mat4 m = staticShadows.otherWorldToMap[local.tile];
+    const vec4 p = localShadowPosition(m, data.x, local.plane, fromLight, position, normal);
+    return filterLocalTile(staticOtherAtlas, staticShadows.atlasSizes.y, m, p, staticShadows.otherBounds[local.tile],
+                           int(data.y), staticShadows.otherSoft[local.tile]);
 }
 
 // Directional light `light` (the lit pass's index; `slot` its realtime shadow slot or -1) at a receiver, 1 = lit.

@@ -4,6 +4,8 @@
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <fmt/format.h>
+#include <optional>
+#include <utility>
 
 namespace penumbra::apps {
 
@@ -21,7 +23,38 @@ void forEveryLight(scene::Scene& scene, const Set& set)
         set(light);
 }
 
+// NAME and MODE of a NAME=MODE spec (the last '=' splits: light names may hold one).
+std::optional<std::pair<std::string, scene::ShadowUpdate>> parseLightShadowUpdate(const std::string& spec)
+{
+    const std::size_t split = spec.rfind('=');
+    if (split == std::string::npos || split == 0)
+        return std::nullopt;
+    const std::optional<scene::ShadowUpdate> update = scene::parseShadowUpdate(std::string_view(spec).substr(split + 1));
+    if (!update)
+        return std::nullopt;
+    return std::pair{spec.substr(0, split), *update};
+}
+
 } // namespace
+
+bool isLightShadowUpdate(const std::string& spec) { return parseLightShadowUpdate(spec).has_value(); }
+
+void applyLightShadowUpdate(scene::Scene& scene, const std::string& spec)
+{
+    const auto parsed = parseLightShadowUpdate(spec);
+    if (!parsed)
+        throw rhi::Error(fmt::format("--light-static-map '{}' is not NAME=MODE with MODE one of {}", spec,
+                                     scene::kShadowUpdateNames));
+    bool found = false;
+    forEveryLight(scene, [&](auto& light) {
+        if (light.name == parsed->first) {
+            light.shadowUpdate = parsed->second;
+            found = true;
+        }
+    });
+    if (!found)
+        throw rhi::Error(fmt::format("--light-static-map '{}': the scene has no light named '{}'", spec, parsed->first));
+}
 
 void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize,
                          const std::string& normalBiasSide)

@@ -15,4 +15,11 @@ namespace penumbra::apps {
 void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize,
                          const std::string& normalBiasSide = {});
 
+// --light-static-map NAME=MODE: the light named NAME (directional, spot or point; every light of that name) draws
+// its static shadow map in scene::ShadowUpdate MODE ("settings", "everyFrame", "onChange", "onDemand"). Throws
+// rhi::Error naming the option for a malformed spec, an unknown mode or a name no light has.
+void applyLightShadowUpdate(scene::Scene& scene, const std::string& spec);
+// Whether `spec` has the NAME=MODE form with a known MODE: the option's check.
+bool isLightShadowUpdate(const std::string& spec);
+
 } // namespace penumbra::apps

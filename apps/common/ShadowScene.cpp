@@ -111,6 +111,20 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     if (!renderer.otherPlan().cubes.empty())
         pictures.atlases.push_back(
             atlasPictures("cube", cubeFacesSideBySide(device, renderer.shadowCubes()), conventions));
+    // The static maps, where the frame kept any: compared across configurations as the realtime atlases are.
+    const shadows::StaticShadowPlan& statics = renderer.staticPlan();
+    const auto has = [&](bool directional) {
+        return std::any_of(statics.maps.begin(), statics.maps.end(), [&](const shadows::StaticShadowMap& m) {
+            return (m.kind == shadows::ShadowLightKind::Directional) == directional;
+        });
+    };
+    if (has(true))
+        pictures.atlases.push_back(atlasPictures(
+            "static-directional", rhi::readDepth(device, renderer.staticDirectionalAtlas().texture()), conventions));
+    if (has(false))
+        pictures.atlases.push_back(atlasPictures("static-other",
+                                                 rhi::readDepth(device, renderer.staticOtherAtlas().texture()),
+                                                 conventions, render::perspectiveTiles(statics)));
     return pictures;
 }
 

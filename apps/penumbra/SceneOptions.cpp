@@ -187,6 +187,18 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
             },
             "MODE"));
     command
+        .add_option("--light-static-map", options.lightStaticMaps,
+                    fmt::format("A light's own static map mode, over --static-maps and the settings' (repeatable): "
+                                "NAME=MODE, MODE one of {} (settings: the settings' mode)",
+                                scene::kShadowUpdateNames))
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return isLightShadowUpdate(s) ? std::string()
+                                              : fmt::format("'{}' is not NAME=MODE with MODE one of {}", s,
+                                                            scene::kShadowUpdateNames);
+            },
+            "NAME=MODE"));
+    command
         .add_option("--realtime-casters", options.realtimeCasters,
                     "With static maps, what the realtime atlases draw, over the settings' static.realtimeCasters: all "
                     "or dynamic (static casters' shadows from the static maps alone)")
@@ -249,6 +261,8 @@ LoadedScene loadScene(const SceneOptions& options)
     if (!options.lights.empty())
         loaded.scene.validate();
     applyLightOverrides(loaded.scene, options.filter, options.lightSize, options.normalBiasSide);
+    for (const std::string& spec : options.lightStaticMaps)
+        applyLightShadowUpdate(loaded.scene, spec);
     for (const std::string& name : options.dynamicObjects)
         makeDynamic(loaded.scene, name);
     if (lookAt) {

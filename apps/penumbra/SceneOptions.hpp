@@ -33,6 +33,7 @@ struct SceneOptions {
     std::string projection;         // shadows::projectionFromName; empty: the settings file's
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
     std::string staticMaps;      // shadows::StaticShadowUpdate by its JSON name; empty: the settings file's
+    std::vector<std::string> lightStaticMaps; // NAME=MODE: a light's own static map mode (applyLightShadowUpdate)
     std::string realtimeCasters; // shadows::RealtimeCasters by its JSON name; empty: the settings file's
     std::string baked;           // a `penumbra bake` folder: static maps from it; empty: none
 };

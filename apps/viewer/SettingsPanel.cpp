@@ -148,7 +148,20 @@ bool commonLightSettings(Light& light)
     changed |= ImGui::DragFloat("normal bias", &light.normalBias, 0.01f, 0.0f, 10.0f);
     changed |= enumCombo("normal bias side", light.normalBiasSide, std::array{"receiver", "caster"});
     changed |= lightFilterCombo(light.shadowFilter);
+    changed |= enumCombo("static map", light.shadowUpdate,
+                         std::array{"settings'", "every frame (none)", "on change", "on demand"});
     return changed;
+}
+
+// Whether a static map is drawn on demand: the settings' mode, or a light's own.
+bool anyOnDemand(const ViewState& state)
+{
+    const auto onDemand = [](const auto& lights) {
+        return std::any_of(lights.begin(), lights.end(),
+                           [](const auto& l) { return l.shadowUpdate == scene::ShadowUpdate::OnDemand; });
+    };
+    return state.shadows.staticMaps.update == shadows::StaticShadowUpdate::OnDemand || onDemand(state.lights) ||
+           onDemand(state.spotLights) || onDemand(state.pointLights);
 }
 
 bool spotLightSettings(scene::SpotLight& light, std::size_t index)
@@ -276,8 +289,7 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     changed |= msaaChoice(state.msaa, status.msaaCounts);
     if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
         changed |= shadowSettings(state.shadows);
-        if (state.shadows.staticMaps.update == shadows::StaticShadowUpdate::OnDemand &&
-            ImGui::Button("redraw static maps")) {
+        if (anyOnDemand(state) && ImGui::Button("redraw static maps")) {
             state.redrawStaticMaps = true;
             changed = true;
         }

@@ -13,6 +13,16 @@ std::vector<PerspectiveTile> perspectiveTiles(const shadows::OtherShadowPlan& pl
     return tiles;
 }
 
+std::vector<PerspectiveTile> perspectiveTiles(const shadows::StaticShadowPlan& plan)
+{
+    std::vector<PerspectiveTile> tiles;
+    for (const shadows::StaticShadowMap& map : plan.maps)
+        if (map.kind != shadows::ShadowLightKind::Directional)
+            for (const shadows::StaticShadowTile& tile : map.tiles)
+                tiles.push_back({tile.viewport, tile.projection});
+    return tiles;
+}
+
 std::vector<float> lightDepthFraction(const rhi::DepthImage& atlas, const rhi::Conventions& conventions,
                                       std::span<const PerspectiveTile> perspectiveTiles)
 {

@@ -49,13 +49,29 @@ std::optional<shadows::ShadowFilter> lightFilter(std::int32_t filter, const std:
     return static_cast<shadows::ShadowFilter>(filter);
 }
 
+// A scene light's static shadow map mode: nullopt for the settings'.
+std::optional<shadows::StaticShadowUpdate> staticUpdate(scene::ShadowUpdate update)
+{
+    switch (update) {
+    case scene::ShadowUpdate::EveryFrame:
+        return shadows::StaticShadowUpdate::EveryFrame;
+    case scene::ShadowUpdate::OnChange:
+        return shadows::StaticShadowUpdate::OnChange;
+    case scene::ShadowUpdate::OnDemand:
+        return shadows::StaticShadowUpdate::OnDemand;
+    case scene::ShadowUpdate::Settings:
+        break;
+    }
+    return std::nullopt;
+}
+
 std::vector<shadows::DirectionalShadowLightInput> shadowLights(const std::vector<scene::DirectionalLight>& lights)
 {
     std::vector<shadows::DirectionalShadowLightInput> inputs;
     for (const scene::DirectionalLight& light : lights)
         inputs.push_back({light.direction, light.shadowStrength, light.nearPlaneOffset, light.normalBias,
                           light.slopeScaleBias, true, lightFilter(light.shadowFilter, "light '" + light.name + "'"),
-                          light.angularDiameter, biasSide(light.normalBiasSide)});
+                          light.angularDiameter, biasSide(light.normalBiasSide), staticUpdate(light.shadowUpdate)});
     return inputs;
 }
 
@@ -65,7 +81,7 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
     for (const scene::SpotLight& l : lights)
         inputs.push_back({l.position, l.direction, l.range, l.outerAngle, l.shadowStrength, l.normalBias,
                           l.slopeScaleBias, l.shadowNearPlane, lightFilter(l.shadowFilter, "spot light '" + l.name + "'"),
-                          l.sourceRadius, biasSide(l.normalBiasSide)});
+                          l.sourceRadius, biasSide(l.normalBiasSide), staticUpdate(l.shadowUpdate)});
     return inputs;
 }
 
@@ -75,7 +91,7 @@ std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene
     for (const scene::PointLight& l : lights)
         inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias, l.shadowNearPlane,
                           lightFilter(l.shadowFilter, "point light '" + l.name + "'"), l.sourceRadius,
-                          biasSide(l.normalBiasSide)});
+                          biasSide(l.normalBiasSide), staticUpdate(l.shadowUpdate)});
     return inputs;
 }
 
@@ -539,16 +555,18 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     notes_ = frameNotes(gpuScene_.scene(), plans);
     if (anisotropy.note && !gpuScene_.scene().textures.empty())
         notes_.push_back(*anisotropy.note);
-    const bool dynamicOnly = shadows::hasStaticMaps(frame.shadows) &&
-                             frame.shadows.staticMaps.realtimeCasters == shadows::RealtimeCasters::Dynamic;
+    // Every static map mode, the settings' or a light's own, keeps static depth for the realtime tiles.
+    const bool keepsStaticMaps = shadows::hasStaticMaps(frame.shadows) || !plans.staticMaps.maps.empty();
+    const bool dynamicOnly =
+        keepsStaticMaps && frame.shadows.staticMaps.realtimeCasters == shadows::RealtimeCasters::Dynamic;
     const SplitTiles staticTiles = dynamicOnly ? splitStaticCasters(plans, gpuScene_.staticCasters()) : SplitTiles{};
     plan_ = std::move(plans.directional);
     otherPlan_ = std::move(plans.other);
 
     if (staticShadows_->baked()) {
-        if (!shadows::hasStaticMaps(frame.shadows))
-            throw rhi::Error("baked shadows: the frame's settings keep no static maps (static.update is everyFrame); "
-                             "set it to onChange or onDemand");
+        if (!keepsStaticMaps)
+            throw rhi::Error("baked shadows: the frame's settings keep no static maps (static.update is everyFrame, "
+                             "and so is every light's own mode); set it to onChange or onDemand");
         staticShadows_->checkBake(plans.staticMaps, staticMapHashes(gpuScene_.scene(), plans.staticMaps));
     }
     FrameStats stats;

@@ -1,5 +1,6 @@
 #include "penumbra/scene/Light.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace penumbra::scene {
@@ -28,6 +29,22 @@ std::optional<NormalBiasSide> parseNormalBiasSide(std::string_view name)
         return NormalBiasSide::Receiver;
     if (name == "caster")
         return NormalBiasSide::Caster;
+    return std::nullopt;
+}
+
+namespace {
+
+constexpr std::array<std::string_view, 4> kUpdateNames{"settings", "everyFrame", "onChange", "onDemand"};
+
+} // namespace
+
+std::string_view shadowUpdateName(ShadowUpdate update) { return kUpdateNames.at(static_cast<std::size_t>(update)); }
+
+std::optional<ShadowUpdate> parseShadowUpdate(std::string_view name)
+{
+    for (std::size_t i = 0; i < kUpdateNames.size(); ++i)
+        if (kUpdateNames[i] == name)
+            return static_cast<ShadowUpdate>(i);
     return std::nullopt;
 }
 

@@ -1,6 +1,7 @@
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
 
 #include "penumbra/shadows/AtlasMatrix.hpp"
+#include "penumbra/shadows/DirectionalSoftData.hpp"
 #include "penumbra/shadows/FrustumSliceSphere.hpp"
 #include "penumbra/shadows/ShadowFade.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
@@ -29,40 +30,6 @@ std::optional<std::string> exclusion(const DirectionalShadowLightInput& light, s
     return std::nullopt;
 }
 
-// What a tile texel adds to become the light's own texel grid (whole texels: the fit snaps the tile's centre), per
-// axis in the direction the atlas runs along the light's right and up axes.
-glm::vec2 lightTexelAnchor(const DirectionalCascadePlan& cascade)
-{
-    const DirectionalShadowCascade& fit = cascade.fit;
-    const glm::vec3 origin = fit.basis.right * fit.snappedCentre.x + fit.basis.up * fit.snappedCentre.y;
-    const auto atlasX = [&](glm::vec3 p) { return (cascade.worldToAtlas * glm::vec4(p, 1.0f)).x; };
-    const auto atlasY = [&](glm::vec3 p) { return (cascade.worldToAtlas * glm::vec4(p, 1.0f)).y; };
-    const float signX = atlasX(origin + fit.basis.right) > atlasX(origin) ? 1.0f : -1.0f;
-    const float signY = atlasY(origin + fit.basis.up) > atlasY(origin) ? 1.0f : -1.0f;
-    return {std::round(signX * fit.snappedCentre.x / fit.texelSize), std::round(signY * fit.snappedCentre.y / fit.texelSize)};
-}
-
-// The light-space depth nearest the light of any caster: no blocker lies nearer. Unlike the near plane, which follows
-// the cascade's sphere, it does not move with the camera, so neither does the blocker search sized from it.
-float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBounds, float fallback)
-{
-    if (casterBounds.empty())
-        return fallback;
-    float top = std::numeric_limits<float>::max();
-    for (const Bounds& caster : casterBounds)
-        top = std::min(top, lightSpaceBounds(basis, caster).min.z);
-    return top;
-}
-
-// The projection's texture-space depth row (t22, t32'): depth = t22 * viewZ + t32, with t32' = t32 + t22 (near -
-// casterTop), so that orthographicDistanceFromNear(depth, row) is the distance past the casters' top (the blocker
-// search's receiver depth), and differences of two depths stay world distances.
-glm::vec2 depthRow(const DirectionalShadowCascade& fit, float casterTop, const rhi::Conventions& conventions)
-{
-    const glm::mat4 toTexture = conventions.clipToTexture() * fit.projection;
-    return {toTexture[2][2], toTexture[3][2] + toTexture[2][2] * (fit.nearDepth - casterTop)};
-}
-
 void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions,
                       std::span<const Bounds> casterBounds)
 {
@@ -75,7 +42,8 @@ void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& setting
                              normalBiasFilterFactor(light.filter) / atlasFactor, 0.0f, 0.0f};
         for (const DirectionalCascadePlan& cascade : light.cascades) {
             const float top = casterTopDepth(cascade.fit.basis, casterBounds, cascade.fit.nearDepth);
-            u.tileSoft[cascade.tile] = glm::vec4(lightTexelAnchor(cascade), depthRow(cascade.fit, top, conventions));
+            u.tileSoft[cascade.tile] = glm::vec4(lightTexelAnchor(cascade.fit, cascade.worldToAtlas),
+                                                 directionalDepthRow(cascade.fit, top, conventions));
         }
     }
 }

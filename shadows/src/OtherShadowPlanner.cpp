@@ -112,9 +112,7 @@ struct SoftProjection {
 SoftProjection softProjection(ShadowFilter filter, const glm::mat4& projection, std::uint32_t tileSize,
                               float sourceRadius, float nearPlane, const rhi::Conventions& conventions)
 {
-    const glm::mat4 toTexture = conventions.clipToTexture() * projection;
-    return {filter, {toTexture[2][2], toTexture[3][2], sourceRadius / texelSizeAtUnitDistance(projection, tileSize),
-                     nearPlane}};
+    return {filter, perspectiveTileSoft(projection, tileSize, sourceRadius, nearPlane, conventions)};
 }
 
 void addTile(OtherShadowPlan& plan, std::uint32_t tile, LocalShadowView view, float normalBiasScale,

@@ -515,5 +515,20 @@ TEST_F(GltfLoaderTest, BadLightValuesAreReportedWithTheFile)
     EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /extensions/KHR_lights_punctual/lights/1/spot/innerConeAngle: 0.6 is not below outerConeAngle 0.5");
 }
 
+TEST_F(GltfLoaderTest, ALightsExtrasSetItsStaticMapMode)
+{
+    GltfBuilder b = testing::exampleScene();
+    auto& lights = b.json()["extensions"]["KHR_lights_punctual"]["lights"];
+    lights[0]["extras"]["shadowUpdate"] = "onDemand";
+    lights[2]["extras"]["shadowUpdate"] = "everyFrame";
+    const Scene scene = loadGltf(write(b)).scene;
+    EXPECT_EQ(scene.lights[0].shadowUpdate, ShadowUpdate::OnDemand);
+    EXPECT_EQ(scene.spotLights[0].shadowUpdate, ShadowUpdate::Settings);
+    EXPECT_EQ(scene.pointLights[0].shadowUpdate, ShadowUpdate::EveryFrame);
+    lights[1]["extras"]["shadowUpdate"] = "sometimes";
+    EXPECT_CONTAINS(errorOf(write(b)),
+                    "light 1 ('spot'): extras.shadowUpdate is not one of settings, everyFrame, onChange, onDemand");
+}
+
 } // namespace
 } // namespace penumbra::scene

@@ -2,6 +2,7 @@
 // for spot and point lights, and the uniforms in the lit pass's light order.
 #include "ShadowTestSupport.hpp"
 
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 #include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <gtest/gtest.h>
@@ -101,13 +102,16 @@ TEST(StaticShadowPlanner, LightsBeyondTheTileBudgetAreReported)
     EXPECT_NE(plan.report[0].reason.find("no static map"), std::string::npos);
 }
 
-TEST(StaticShadowPlanner, SoftFiltersAreNotedAndReplacedByTheWidestTent)
+TEST(StaticShadowPlanner, SoftFiltersStayWithTheirSoftData)
 {
     const rhi::Conventions conventions{rhi::DepthRange::ZeroToOne, false};
-    const std::vector<DirectionalShadowLightInput> sun{{.filter = ShadowFilter::PCSS}};
+    const std::vector<DirectionalShadowLightInput> sun{{.filter = ShadowFilter::PCSS, .angularDiameter = 2.0f}};
     const StaticShadowPlan plan = planStaticShadows(cachedSettings(), conventions, sun, {}, {}, {kBounds, kStatic});
-    ASSERT_EQ(plan.report.size(), 1u);
-    EXPECT_EQ(plan.uniforms.directionalLights[0].w, static_cast<float>(ShadowFilter::PCF7x7));
+    EXPECT_TRUE(plan.report.empty());
+    EXPECT_EQ(plan.uniforms.directionalLights[0].w, static_cast<float>(ShadowFilter::PCSS));
+    EXPECT_FLOAT_EQ(plan.uniforms.directionalSource[0].x, tanHalfAngularDiameter(2.0f));
+    EXPECT_FLOAT_EQ(plan.uniforms.directionalSource[0].y, plan.maps[0].texelSize);
+    EXPECT_NE(plan.uniforms.directionalSoft[0].z, 0.0f) << "the depth row";
 }
 
 } // namespace

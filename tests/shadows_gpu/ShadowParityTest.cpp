@@ -64,6 +64,7 @@ struct Variant {
     ShadowFilter otherFilter = ShadowFilter::PCF2x2;
     shadows::PointShadowMode pointMode = shadows::PointShadowMode::Atlas;
     bool textured = false; // every material gets texturedChecker() as its base colour texture
+    bool staticMaps = false; // static shadow maps kept (onChange) in static atlases of kAtlasSize
     // Lit pixels a pair may differ in beyond the bounds of litThresholds: PCSS's blocker average and penumbra
     // divide depths the two depth mappings round differently, which flips a penumbra pixel by 1/255 here and there
     // (measured: 2 of 57 600 between reversed twins, 3 across backends).
@@ -134,6 +135,11 @@ render::FrameDesc frameOf(const Variant& variant)
     frame.shadows.other.atlasSize = kAtlasSize;
     frame.shadows.other.filter = variant.otherFilter;
     frame.shadows.other.pointMode = variant.pointMode;
+    if (variant.staticMaps) {
+        frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+        frame.shadows.staticMaps.directionalAtlasSize = kAtlasSize;
+        frame.shadows.staticMaps.otherAtlasSize = kAtlasSize;
+    }
     return frame;
 }
 
@@ -176,7 +182,10 @@ struct AtlasComparison {
 // equations differ per convention (z = 0, -w or w), so a caster crossing the light's range may gain or
 // lose a texel there; the orthographic directional views pancake instead of clipping and keep coverage
 // exact. Atlases by their parity picture names (apps::parityPictures): "atlas" is the directional one.
-std::size_t outliersAllowed(const std::string& atlas) { return atlas == "atlas" ? 0 : 16; }
+std::size_t outliersAllowed(const std::string& atlas)
+{
+    return atlas == "atlas" || atlas == "static-directional-atlas" ? 0 : 16;
+}
 
 AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<float>& b, std::uint32_t width,
                                std::uint32_t height)
@@ -258,7 +267,7 @@ parity::Thresholds litThresholds(const std::string& a, const std::string& b, std
 parity::Options shadowParityOptions(std::uint32_t softPixels = 0)
 {
     parity::Options options;
-    for (const char* atlas : {"atlas", "other-atlas", "cube-atlas"})
+    for (const char* atlas : {"atlas", "other-atlas", "cube-atlas", "static-directional-atlas", "static-other-atlas"})
         options.thresholds[atlas] = atlasThresholds(atlas);
     options.pairThresholds = [softPixels](const std::string& picture, const parity::ConfigurationRun& a,
                                 const parity::ConfigurationRun& b, const parity::Thresholds& perPicture) {
@@ -349,6 +358,8 @@ TEST(ShadowParity, TexturedMaterials) { checkParity({.name = "textured", .textur
 
 // Directional + 3 spot + 2 point lights: the other atlas holds 15 tiles.
 TEST(ShadowParity, MixedLights) { checkParity({.name = "mixed", .scene = "mixed"}); }
+// The static maps of the mixed scene's lights, read back from both static atlases: like the realtime atlases.
+TEST(ShadowParity, StaticMaps) { checkParity({.name = "static", .scene = "mixed", .staticMaps = true}); }
 TEST(ShadowParity, MixedLightsPcf5) { checkParity({.name = "mixed-pcf5", .scene = "mixed", .otherFilter = ShadowFilter::PCF5x5}); }
 TEST(ShadowParity, PointLightRoomCubeMaps)
 {

@@ -3,6 +3,7 @@
 // realtime shadows beyond the shadow distance and for lights without realtime tiles.
 #include "GpuTesting.hpp"
 #include "LitRendering.hpp"
+#include "StaticShadowScenes.hpp"
 
 #include "penumbra/render/ShadowTruth.hpp"
 #include "penumbra/rhi/Error.hpp"
@@ -11,6 +12,7 @@
 #include "penumbra/scene/TestScenes.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <cstdio>
@@ -22,19 +24,10 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 256;
-constexpr std::uint32_t kHeight = 144;
+using shadows::ShadowFilter;
 
-render::FrameDesc cachedFrame(shadows::StaticShadowUpdate update = shadows::StaticShadowUpdate::OnChange)
-{
-    render::FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
-    frame.shadows.staticMaps.update = update;
-    frame.shadows.staticMaps.directionalAtlasSize = 2048;
-    frame.shadows.staticMaps.otherAtlasSize = 1024;
-    return frame;
-}
+constexpr std::uint32_t kWidth = kStaticWidth;
+constexpr std::uint32_t kHeight = kStaticHeight;
 
 void moveObject(scene::Scene& scene, const std::string& name, glm::vec3 offset)
 {
@@ -43,18 +36,11 @@ void moveObject(scene::Scene& scene, const std::string& name, glm::vec3 offset)
     object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
 }
 
-// Pixels whose channels differ by more than 1 step, out of all.
-double differingShare(const rhi::Image& a, const rhi::Image& b)
-{
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < a.bytes.size(); i += 4) {
-        bool differs = false;
-        for (std::size_t c = 0; c < 3; ++c)
-            differs |= std::abs(std::to_integer<int>(a.bytes[i + c]) - std::to_integer<int>(b.bytes[i + c])) > 1;
-        differing += differs ? 1 : 0;
-    }
-    return static_cast<double>(differing) / static_cast<double>(a.bytes.size() / 4);
-}
+// The static map updates of boxesUnderASpot(), by light.
+const std::vector<std::string> kSunMap{"directional light 0 ('sun')"};
+const std::vector<std::string> kLampMap{"spot light 0 ('lamp')"};
+const std::vector<std::string> kBothMaps{kSunMap[0], kLampMap[0]};
+const std::vector<std::string> kNoMap;
 
 std::vector<std::string> lightsOf(const std::vector<std::string>& updates)
 {
@@ -77,8 +63,12 @@ protected:
 TEST_F(StaticShadowsTest, StaticMapsAreDrawnOnceWhileTheDynamicBallMoves)
 {
     scene::Scene scene = scene::makeTownScene();
-    const render::FrameDesc frame = cachedFrame();
+    const render::FrameDesc frame = staticMapsFrame();
     render::SceneRenderer cached(*device, scene);
+    // A renderer asked to draw every map afresh each frame, for the same scene: what the kept maps must give.
+    render::FrameDesc freshFrame = frame;
+    freshFrame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnDemand;
+    render::SceneRenderer fresh(*device, scene);
     for (int k = 0; k < 3; ++k) {
         const render::FrameStats stats = cached.render(scene.camera, frame);
         if (k == 0) {
@@ -89,11 +79,12 @@ TEST_F(StaticShadowsTest, StaticMapsAreDrawnOnceWhileTheDynamicBallMoves)
             EXPECT_EQ(stats.staticCasterDraws, 0u);
         }
         EXPECT_GT(stats.casterDraws, 0u);
-        // A renderer of its own draws every map afresh for the same scene: what the kept maps must give.
         const rhi::Image kept = read(cached);
-        const rhi::Image fresh = renderLit(*device, scene, frame);
-        EXPECT_LE(differingShare(kept, fresh), 0.001)
-            << "frame " << k << ": " << picture(kept, "kept") << " vs " << picture(fresh, "fresh");
+        fresh.requestStaticShadowUpdate();
+        EXPECT_EQ(fresh.render(scene.camera, freshFrame).staticCasterDraws, 65u);
+        const rhi::Image drawn = read(fresh);
+        EXPECT_LE(differingShare(kept, drawn), 0.001)
+            << "frame " << k << ": " << picture(kept, "kept") << " vs " << picture(drawn, "fresh");
         moveObject(scene, "ball", {3.0f, 0.0f, -4.0f});
     }
 }
@@ -101,108 +92,264 @@ TEST_F(StaticShadowsTest, StaticMapsAreDrawnOnceWhileTheDynamicBallMoves)
 TEST_F(StaticShadowsTest, RealtimeDynamicCastersOnlyGiveTheSamePictureWhenNothingMoves)
 {
     const scene::Scene scene = scene::makeTownScene();
-    render::FrameDesc frame = cachedFrame();
-    render::SceneRenderer all(*device, scene);
-    const render::FrameStats allStats = all.render(scene.camera, frame);
+    render::FrameDesc frame = staticMapsFrame();
+    render::SceneRenderer renderer(*device, scene);
+    const render::FrameStats allStats = renderer.render(scene.camera, frame);
+    const rhi::Image a = read(renderer);
     frame.shadows.staticMaps.realtimeCasters = shadows::RealtimeCasters::Dynamic;
-    render::SceneRenderer dynamic(*device, scene);
-    dynamic.render(scene.camera, frame);
+    renderer.render(scene.camera, frame);
     // From the second frame on, the realtime tiles' static depth comes from their caches.
-    const render::FrameStats dynamicStats = dynamic.render(scene.camera, frame);
+    const render::FrameStats dynamicStats = renderer.render(scene.camera, frame);
     EXPECT_LE(dynamicStats.casterDraws, frame.shadows.directional.cascadeCount) << "the ball alone, once per cascade";
     EXPECT_EQ(dynamicStats.staticCasterDraws, 0u);
     EXPECT_GT(allStats.casterDraws, dynamicStats.casterDraws);
-    const rhi::Image a = read(all);
-    const rhi::Image d = read(dynamic);
+    const rhi::Image d = read(renderer);
     const double share = differingShare(a, d);
     std::printf("[ static   ] %s realtime dynamic casters only vs all: %.4f%% of pixels differ by more than 1/255\n",
                 configuration().c_str(), 100.0 * share);
     EXPECT_LE(share, 0.001) << picture(a, "all-casters") << " vs " << picture(d, "dynamic-casters");
 }
 
-// Ground, three boxes and a spot light over box "a"; the sun sees them all.
-scene::Scene boxesUnderASpot()
-{
-    scene::Scene s;
-    const std::uint32_t grey = s.addMaterial({.name = "grey", .baseColor = {0.7f, 0.7f, 0.7f, 1.0f}});
-    s.addObject("ground", s.addMesh(scene::makeBox({12.0f, 0.1f, 12.0f})), grey,
-                glm::translate(glm::mat4(1.0f), {0.0f, -0.1f, 0.0f}));
-    const std::uint32_t box = s.addMesh(scene::makeBox({0.5f, 0.5f, 0.5f}));
-    s.addObject("a", box, grey, glm::translate(glm::mat4(1.0f), {-3.0f, 0.5f, 0.0f}));
-    s.addObject("b", box, grey, glm::translate(glm::mat4(1.0f), {0.0f, 0.5f, 0.0f}));
-    s.addObject("c", box, grey, glm::translate(glm::mat4(1.0f), {6.0f, 0.5f, 3.0f}));
-    s.lights = {{.name = "sun", .intensity = 1.5f, .direction = glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f))}};
-    s.spotLights = {{.name = "lamp",
-                     .intensity = 40.0f,
-                     .position = {-3.0f, 4.0f, 0.0f},
-                     .direction = {0.0f, -1.0f, 0.0f},
-                     .range = 8.0f,
-                     .innerAngle = 0.4f,
-                     .outerAngle = 0.5f}};
-    s.camera = scene::lookAt({0.0f, 8.0f, 10.0f}, {0.0f, 0.0f, 0.0f}, 0.9f);
-    return s;
-}
-
 TEST_F(StaticShadowsTest, AChangeDrawsExactlyTheMapsItTouches)
 {
     scene::Scene scene = boxesUnderASpot();
-    render::FrameDesc frame = cachedFrame();
+    render::FrameDesc frame = staticMapsFrame();
     render::SceneRenderer renderer(*device, scene);
     const auto updated = [&] { return lightsOf(renderer.render(scene.camera, frame).staticMapUpdates); };
-    const std::vector<std::string> sun{"directional light 0 ('sun')"};
-    const std::vector<std::string> lamp{"spot light 0 ('lamp')"};
-    const std::vector<std::string> both{sun[0], lamp[0]};
-    const std::vector<std::string> none;
-    EXPECT_EQ(updated(), both);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kBothMaps);
+    EXPECT_EQ(updated(), kNoMap);
     moveObject(scene, "c", {0.0f, 0.0f, -1.0f}); // outside the lamp's cone
-    EXPECT_EQ(updated(), sun);
+    EXPECT_EQ(updated(), kSunMap);
     moveObject(scene, "a", {0.3f, 0.0f, 0.0f});
-    EXPECT_EQ(updated(), both);
+    EXPECT_EQ(updated(), kBothMaps);
     scene.spotLights[0].range = 9.0f;
-    EXPECT_EQ(updated(), lamp);
+    EXPECT_EQ(updated(), kLampMap);
     scene.lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.4f));
-    EXPECT_EQ(updated(), sun);
+    EXPECT_EQ(updated(), kSunMap);
     scene.spotLights[0].slopeScaleBias = 2.0f;
-    EXPECT_EQ(updated(), lamp);
-    frame.shadows.staticMaps.otherAtlasSize = 512;
-    EXPECT_EQ(updated(), lamp);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kLampMap);
+    frame.shadows.staticMaps.otherAtlasSize = 256;
+    EXPECT_EQ(updated(), kLampMap);
+    EXPECT_EQ(updated(), kNoMap);
 
     // On demand, nothing is drawn until asked, whatever moves.
     frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnDemand;
     moveObject(scene, "a", {0.3f, 0.0f, 0.0f});
-    EXPECT_EQ(updated(), none);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kNoMap);
+    EXPECT_EQ(updated(), kNoMap);
     renderer.requestStaticShadowUpdate();
-    EXPECT_EQ(updated(), both);
-    EXPECT_EQ(updated(), none);
+    EXPECT_EQ(updated(), kBothMaps);
+    EXPECT_EQ(updated(), kNoMap);
 }
 
-// The visibility view of the sun at view depths beyond the shadow distance: pixels some shadow map decides, and of
-// those the shadowed ones.
-struct FarShadow {
-    std::size_t decided = 0;
-    std::size_t shadowed = 0;
+bool hasStaticMap(const render::SceneRenderer& renderer, shadows::ShadowLightKind kind)
+{
+    const std::vector<shadows::StaticShadowMap>& maps = renderer.staticPlan().maps;
+    return std::any_of(maps.begin(), maps.end(), [&](const shadows::StaticShadowMap& m) { return m.kind == kind; });
+}
+
+// Each light in a mode of its own (scene::ShadowUpdate) under settings that keep no static maps: the sun on demand,
+// the lamp on change, a bulb every frame (no static map at all).
+TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
+{
+    scene::Scene scene = boxesUnderASpot();
+    scene.lights[0].shadowUpdate = scene::ShadowUpdate::OnDemand;
+    scene.spotLights[0].shadowUpdate = scene::ShadowUpdate::OnChange;
+    scene.pointLights.push_back({.name = "bulb", .intensity = 10.0f, .position = {3.0f, 2.5f, 1.0f}, .range = 8.0f,
+                                 .shadowUpdate = scene::ShadowUpdate::EveryFrame});
+    const scene::Scene first = scene;
+    render::FrameDesc frame = staticMapsFrame(shadows::StaticShadowUpdate::EveryFrame);
+    render::SceneRenderer renderer(*device, scene);
+    const auto updated = [&] { return lightsOf(renderer.render(scene.camera, frame).staticMapUpdates); };
+    EXPECT_EQ(updated(), kBothMaps);
+    EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point)) << "the bulb draws every frame";
+    const rhi::Image mixed = read(renderer);
+    EXPECT_EQ(updated(), kNoMap);
+    moveObject(scene, "a", {0.3f, 0.0f, 0.0f}); // in the lamp's cone and the sun's view
+    EXPECT_EQ(updated(), kLampMap);
+    scene.lights[0].direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.4f));
+    EXPECT_EQ(updated(), kNoMap);
+    renderer.requestStaticShadowUpdate();
+    EXPECT_EQ(updated(), kBothMaps);
+    EXPECT_EQ(updated(), kNoMap);
+
+    // The scene as at first, the sun and the lamp on change as the settings now say, the bulb still every frame:
+    // both maps drawn again, the first picture again.
+    scene.objects.at(scene.findObject("a").value()) = first.objects.at(first.findObject("a").value());
+    scene.lights[0] = first.lights[0];
+    scene.lights[0].shadowUpdate = scene::ShadowUpdate::Settings;
+    scene.spotLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
+    frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+    EXPECT_EQ(updated(), kBothMaps);
+    EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point));
+    const rhi::Image again = read(renderer);
+    EXPECT_LE(differingShare(mixed, again), 0.001) << picture(mixed, "mixed-modes") << " vs " << picture(again, "on-change");
+    // The bulb's six tiles reshape the static other atlas: the lamp's tile moves with them.
+    scene.pointLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
+    EXPECT_EQ(updated(), (std::vector<std::string>{kLampMap[0], "point light 0 ('bulb')"}));
+}
+
+// Over the pixels both visibility views decide: how many `b` has in penumbra (neither fully lit nor fully shadowed),
+// and how much shadow (sum of 1 - visibility) it has.
+struct SoftShadowSummary {
+    std::size_t penumbra = 0;
+    double shadow = 0.0;
 };
 
-TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadow)
+SoftShadowSummary softSummary(const rhi::Image& a, const rhi::Image& b)
+{
+    SoftShadowSummary summary;
+    for (std::uint32_t y = 0; y < kHeight; ++y)
+        for (std::uint32_t x = 0; x < kWidth; ++x) {
+            const Rgba p = pixel(a, x, y);
+            const Rgba q = pixel(b, x, y);
+            if (p[3] < 128 || q[3] < 128)
+                continue;
+            summary.penumbra += q[0] >= 8 && q[0] <= 247 ? 1 : 0;
+            summary.shadow += 1.0 - q[0] / 255.0;
+        }
+    return summary;
+}
+
+// A light whose shadow comes from its static map alone (the shadow distance ends before the camera sees anything)
+// has the soft shadow of its realtime tiles: PCSS for the sun, the Poisson disk for the lamp. The static maps' texels
+// are not the cascades' (the lamp's are the size of its realtime tile's, as the Poisson disk's radius is in texels), so
+// the disks' noise falls elsewhere: the pictures are compared by how much shadow they hold
+// (within 10%) and how many penumbra pixels (within a factor of 1.6); a hard-filtered static map has less than half
+// the penumbra, which is what the bounds tell apart.
+TEST_F(StaticShadowsTest, StaticMapsTakeTheLightsSoftFilter)
+{
+    scene::Scene scene = boxesUnderASpot();
+    scene.lights[0].angularDiameter = 20.0f;
+    // Behind box "a", so its shadow falls towards the camera.
+    scene.spotLights[0].position = {-3.0f, 3.0f, -3.0f};
+    scene.spotLights[0].direction = glm::normalize(glm::vec3(-3.0f, 0.0f, 1.0f) - scene.spotLights[0].position);
+    scene.spotLights[0].sourceRadius = 0.5f;
+    render::SceneRenderer renderer(*device, scene);
+    const auto view = [&](scene::LightRef light, float maxDistance, shadows::StaticShadowUpdate update) {
+        render::FrameDesc frame = staticMapsFrame(update);
+        frame.shadows.maxDistance = maxDistance;
+        frame.visibilityOf = light;
+        // The Poisson disk's radius is in texels: the lamp's static tile has the texels of its realtime one.
+        frame.shadows.staticMaps.otherAtlasSize = frame.shadows.other.atlasSize;
+        frame.shadows.soft.poissonRadiusTexels = 8.0f;
+        renderer.render(scene.camera, frame);
+        return rhi::readTexture(*device, renderer.visibilityImage());
+    };
+    struct Case {
+        scene::LightRef light;
+        std::int32_t* filter;
+        ShadowFilter soft;
+    };
+    for (const Case& c : {Case{{scene::LightKind::Directional, 0}, &scene.lights[0].shadowFilter, ShadowFilter::PCSS},
+                          Case{{scene::LightKind::Spot, 0}, &scene.spotLights[0].shadowFilter, ShadowFilter::Poisson}}) {
+        *c.filter = static_cast<std::int32_t>(c.soft);
+        const rhi::Image realtime = view(c.light, 100.0f, shadows::StaticShadowUpdate::EveryFrame);
+        const rhi::Image fromStatic = view(c.light, 0.01f, shadows::StaticShadowUpdate::OnChange);
+        *c.filter = static_cast<std::int32_t>(ShadowFilter::PCF2x2);
+        const rhi::Image hard = view(c.light, 0.01f, shadows::StaticShadowUpdate::OnChange);
+        *c.filter = scene::kAtlasShadowFilter;
+        const SoftShadowSummary r = softSummary(fromStatic, realtime);
+        const SoftShadowSummary st = softSummary(realtime, fromStatic);
+        const SoftShadowSummary h = softSummary(realtime, hard);
+        const std::string name(shadows::shadowFilterNames()[std::size_t(c.soft)].command);
+        std::printf("[ static   ] %s %s, %s: penumbra pixels realtime %zu, static %zu, hard static %zu; shadow %.1f, "
+                    "%.1f, %.1f\n",
+                    configuration().c_str(), scene::lightKindName(c.light.kind), name.c_str(), r.penumbra, st.penumbra,
+                    h.penumbra, r.shadow, st.shadow, h.shadow);
+        const std::string pictures = picture(realtime, name + "-realtime") + " vs " + picture(fromStatic, name + "-static");
+        EXPECT_GT(r.penumbra, 20u) << pictures;
+        EXPECT_NEAR(st.shadow, r.shadow, 0.1 * r.shadow) << pictures;
+        EXPECT_GE(double(st.penumbra), r.penumbra / 1.6) << pictures;
+        EXPECT_LE(double(st.penumbra), r.penumbra * 1.6) << pictures;
+        EXPECT_LT(2 * h.penumbra, r.penumbra) << picture(hard, name + "-hard-static");
+    }
+}
+
+double linear(std::uint8_t encoded)
+{
+    const double c = encoded / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// The lit pass mixes as static_shadows.glsl says: attenuation = mix(1, min(realtime faded, static), strength), so the
+// picture is linear in the sun's shadow strength wherever its shadow comes from: at strength 0.5 every pixel is the
+// mean of strengths 0 and 1 in linear light, near the camera (realtime and static), in the distance fade and beyond
+// the shadow distance (static alone), within the rounding of 8-bit sRGB.
+TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
+{
+    scene::Scene scene = boxesUnderASpot();
+    render::FrameDesc frame = staticMapsFrame();
+    frame.shadows.maxDistance = 11.0f; // the far boxes' shadows lie in the fade and beyond
+    render::SceneRenderer renderer(*device, scene);
+    const auto lit = [&](float strength) {
+        scene.lights[0].shadowStrength = strength;
+        renderer.render(scene.camera, frame);
+        return read(renderer);
+    };
+    const rhi::Image none = lit(0.0f);
+    const rhi::Image full = lit(1.0f);
+    const rhi::Image half = lit(0.5f);
+    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
+    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    double worst = 0.0;
+    std::size_t shadowed = 0;
+    std::size_t shadowedBeyond = 0; // past the start of the distance fade: the static map's share grows to all
+    for (std::size_t i = 0; i < half.bytes.size(); i += 4)
+        for (std::size_t c = 0; c < 3; ++c) {
+            const double a = linear(std::to_integer<std::uint8_t>(none.bytes[i + c]));
+            const double b = linear(std::to_integer<std::uint8_t>(full.bytes[i + c]));
+            const double m = linear(std::to_integer<std::uint8_t>(half.bytes[i + c]));
+            // One 8-bit step around each value, in linear light.
+            const double slack = linear(std::min(255, std::to_integer<int>(half.bytes[i + c]) + 1)) - m;
+            worst = std::max(worst, std::abs(m - 0.5 * (a + b)) / std::max(slack, 1e-6));
+            const bool inShadow = c == 0 && a - b > 0.05;
+            shadowed += inShadow ? 1 : 0;
+            const scene::GBufferSample& sample = gbuffer.at(std::uint32_t(i / 4 % kWidth), std::uint32_t(i / 4 / kWidth));
+            shadowedBeyond += inShadow && sample.object != scene::kNoObject &&
+                                      sample.viewDepth > frame.shadows.maxDistance * (1.0f - frame.shadows.distanceFade)
+                                  ? 1
+                                  : 0;
+        }
+    std::printf("[ static   ] %s strength 0.5 against the mean of 0 and 1: worst %.2f 8-bit steps, %zu shadowed "
+                "pixels, %zu in the distance fade or beyond\n",
+                configuration().c_str(), worst, shadowed, shadowedBeyond);
+    EXPECT_GT(shadowed, 50u) << picture(full, "strength-1");
+    EXPECT_GT(shadowedBeyond, 10u) << picture(full, "strength-1");
+    EXPECT_LE(worst, 1.5) << picture(none, "strength-0") << " " << picture(half, "strength-half") << " "
+                          << picture(full, "strength-1");
+}
+
+// The sun's visibility view at view depths beyond the shadow distance: pixels some shadow map decides, and of those
+// the shadowed ones; with static maps it agrees with the ray cast, without them nothing decides.
+TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowAsTheRayCastDoes)
 {
     const scene::Scene scene = scene::makeTownScene();
-    render::FrameDesc frame = cachedFrame();
+    render::FrameDesc frame = staticMapsFrame();
     frame.shadows.maxDistance = 40.0f;
-    frame.visibilityOf = scene::LightRef{scene::LightKind::Directional, 0};
-    const auto farShadow = [&](const render::FrameDesc& f) {
-        render::SceneRenderer renderer(*device, scene);
-        renderer.render(scene.camera, f);
-        const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
-        const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-        const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    const scene::LightRef sun{scene::LightKind::Directional, 0};
+    frame.visibilityOf = sun;
+    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
+    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    render::SceneRenderer renderer(*device, scene);
+    struct FarShadow {
+        std::size_t decided = 0;
+        std::size_t shadowed = 0;
+    };
+    // A pixel whose 3 x 3 neighbourhood lies beyond: the rasterizer and the ray cast may see different sides of
+    // an edge.
+    const auto far = [&](std::uint32_t x, std::uint32_t y) {
+        for (std::uint32_t v = std::max(y, 1u) - 1; v <= std::min(y + 1, kHeight - 1); ++v)
+            for (std::uint32_t u = std::max(x, 1u) - 1; u <= std::min(x + 1, kWidth - 1); ++u)
+                if (gbuffer.at(u, v).object == scene::kNoObject || gbuffer.at(u, v).viewDepth < 50.0f)
+                    return false;
+        return true;
+    };
+    const auto farShadow = [&](const rhi::Image& view) {
         FarShadow result;
         for (std::uint32_t y = 0; y < kHeight; ++y)
             for (std::uint32_t x = 0; x < kWidth; ++x) {
-                const scene::GBufferSample& sample = gbuffer.at(x, y);
-                if (sample.object == scene::kNoObject || sample.viewDepth < 50.0f)
+                if (!far(x, y))
                     continue;
                 const Rgba p = pixel(view, x, y);
                 result.decided += p[3] >= 128 ? 1 : 0;
@@ -210,35 +357,26 @@ TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadow)
             }
         return result;
     };
-    const FarShadow cached = farShadow(frame);
-    frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::EveryFrame;
-    const FarShadow realtime = farShadow(frame);
-    EXPECT_EQ(realtime.decided, 0u) << "realtime shadows end at the shadow distance";
+
+    renderer.render(scene.camera, frame);
+    const rhi::Image cachedView = rhi::readTexture(*device, renderer.visibilityImage());
+    const FarShadow cached = farShadow(cachedView);
     EXPECT_GT(cached.decided, std::size_t(kWidth) * kHeight / 10);
     EXPECT_GT(cached.shadowed, cached.decided / 10) << "the buildings' far shadows";
-}
-
-TEST_F(StaticShadowsTest, BakedShadowsBeyondTheShadowDistanceAgreeWithTheRayCast)
-{
-    const scene::Scene scene = scene::makeTownScene();
-    render::FrameDesc frame = cachedFrame();
-    frame.shadows.maxDistance = 40.0f;
-    const scene::LightRef sun{scene::LightKind::Directional, 0};
-    frame.visibilityOf = sun;
-    render::SceneRenderer renderer(*device, scene);
-    renderer.render(scene.camera, frame);
-    const scene::RenderedVisibility mask =
-        render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
     const scene::RayCaster shadowRays(scene);
-    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
     const render::LightTruthTrace truth = render::traceLightTruth(
         scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows, sun);
-    const scene::TruthComparison f = scene::compareWithTruth(gbuffer, truth.visibility, mask, truth.shadowEdges);
+    const scene::TruthComparison f =
+        scene::compareWithTruth(gbuffer, truth.visibility, render::renderedVisibility(cachedView), truth.shadowEdges);
     std::printf("[ truth    ] %s town with static maps: lit %zu of %zu right, shadowed %zu of %zu right\n",
                 configuration().c_str(), f.lit.right, f.lit.compared, f.shadowed.right, f.shadowed.compared);
     EXPECT_GE(f.lit.share(), 0.99);
     EXPECT_GE(f.shadowed.share(), 0.99);
+
+    frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::EveryFrame;
+    renderer.render(scene.camera, frame);
+    EXPECT_EQ(farShadow(rhi::readTexture(*device, renderer.visibilityImage())).decided, 0u)
+        << "realtime shadows end at the shadow distance";
 }
 
 TEST_F(StaticShadowsTest, ALightWithoutRealtimeTilesKeepsItsStaticShadow)
@@ -252,25 +390,25 @@ TEST_F(StaticShadowsTest, ALightWithoutRealtimeTilesKeepsItsStaticShadow)
                                      .intensity = 20.0f,
                                      .position = {-3.0f + 3.0f * static_cast<float>(i), 2.5f, 1.0f},
                                      .range = 10.0f});
-    render::FrameDesc frame = cachedFrame();
+    render::FrameDesc frame = staticMapsFrame();
     frame.visibilityOf = scene::LightRef{scene::LightKind::Point, 2};
-    const auto decided = [&](const render::FrameDesc& f, std::vector<std::string>& notes) {
-        render::SceneRenderer renderer(*device, scene);
-        notes = renderer.render(scene.camera, f).notes;
+    render::SceneRenderer renderer(*device, scene);
+    const auto shadowed = [&](std::vector<std::string>& notes) {
+        notes = renderer.render(scene.camera, frame).notes;
         const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
-        std::size_t shadowed = 0;
+        std::size_t count = 0;
         for (std::uint32_t y = 0; y < kHeight; ++y)
             for (std::uint32_t x = 0; x < kWidth; ++x)
-                shadowed += pixel(view, x, y)[3] >= 128 && pixel(view, x, y)[0] < 128 ? 1 : 0;
-        return shadowed;
+                count += pixel(view, x, y)[3] >= 128 && pixel(view, x, y)[0] < 128 ? 1 : 0;
+        return count;
     };
     std::vector<std::string> notes;
-    EXPECT_GT(decided(frame, notes), 100u);
+    EXPECT_GT(shadowed(notes), 30u);
     EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
         return n.find("point light 2 ('bulb 3') has static shadows only") != std::string::npos;
     }));
     frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::EveryFrame;
-    EXPECT_EQ(decided(frame, notes), 0u);
+    EXPECT_EQ(shadowed(notes), 0u);
 }
 
 std::filesystem::path bakeFolder(const std::string& name)
@@ -289,64 +427,35 @@ std::string errorOf(const std::function<void()>& f)
     return "(no error)";
 }
 
-TEST_F(StaticShadowsTest, ABakeLoadsOnEveryConfigurationWithTheSameShadows)
-{
-    const scene::Scene scene = boxesUnderASpot();
-    const render::FrameDesc frame = cachedFrame();
-    render::SceneRenderer baker(*device, scene);
-    baker.render(scene.camera, frame);
-    const rhi::Image live = read(baker);
-    const std::filesystem::path folder = bakeFolder("round-trip");
-    shadows::writeStaticShadowBake(folder, baker.bakeStaticShadows(configuration()));
-    const shadows::StaticShadowBake bake = shadows::readStaticShadowBake(folder);
-    ASSERT_EQ(bake.maps.size(), 2u);
-    EXPECT_EQ(bake.objects.size(), 4u);
-    reportSkipped(forEachConfiguration([&](rhi::Device& loader, const std::string& other) {
-        SCOPED_TRACE("loaded on " + other);
-        render::SceneRenderer renderer(loader, scene);
-        renderer.useBakedShadows(bake);
-        const render::FrameStats stats = renderer.render(scene.camera, frame);
-        EXPECT_EQ(stats.staticCasterDraws, 0u) << "a bake draws no static caster";
-        EXPECT_EQ(stats.staticMapUpdates.size(), 2u);
-        const rhi::Image loaded = rhi::readTexture(loader, renderer.litImage());
-        EXPECT_LE(differingShare(live, loaded), 0.001)
-            << picture(live, "baked-here") << " vs " << picture(loaded, "loaded-on-" + other);
-    }));
-}
-
+// One renderer bakes, then loads the bake back under a scene and settings changed in turn. (A bake made on each
+// configuration and loaded on every other: StaticShadowParity.)
 TEST_F(StaticShadowsTest, StaleMismatchedAndTruncatedBakesAreRefusedByName)
 {
     scene::Scene scene = boxesUnderASpot();
-    render::FrameDesc frame = cachedFrame();
+    render::FrameDesc frame = staticMapsFrame();
     const std::filesystem::path folder = bakeFolder("refused");
-    {
-        render::SceneRenderer baker(*device, scene);
-        baker.render(scene.camera, frame);
-        shadows::writeStaticShadowBake(folder, baker.bakeStaticShadows(configuration()));
-    }
+    render::SceneRenderer renderer(*device, scene);
+    renderer.render(scene.camera, frame);
+    shadows::writeStaticShadowBake(folder, renderer.bakeStaticShadows(configuration()));
     const shadows::StaticShadowBake bake = shadows::readStaticShadowBake(folder);
-    const auto renderWith = [&](const scene::Scene& s, const render::FrameDesc& f) {
-        return errorOf([&] {
-            render::SceneRenderer renderer(*device, s);
-            renderer.useBakedShadows(bake);
-            renderer.render(s.camera, f);
-        });
-    };
-    EXPECT_EQ(renderWith(scene, frame), "(no error)");
-    scene::Scene moved = scene;
-    moveObject(moved, "a", {0.5f, 0.0f, 0.0f});
-    // The sun's map holds every static caster, so it is the first to be stale.
-    const std::string stale = renderWith(moved, frame);
-    EXPECT_NE(stale.find("directional light 0 ('sun') is stale"), std::string::npos) << stale;
+    ASSERT_EQ(bake.maps.size(), 2u);
+    EXPECT_EQ(bake.objects.size(), 4u);
+    renderer.useBakedShadows(bake);
+    const auto renderWith = [&](const render::FrameDesc& f) { return errorOf([&] { renderer.render(scene.camera, f); }); };
+    EXPECT_EQ(renderWith(frame), "(no error)");
     render::FrameDesc smaller = frame;
-    smaller.shadows.staticMaps.otherAtlasSize = 512;
-    const std::string resized = renderWith(scene, smaller);
-    EXPECT_NE(resized.find("was baked as 1 tiles of 1024 texels, the settings give 1 of 512"), std::string::npos)
+    smaller.shadows.staticMaps.otherAtlasSize = 256;
+    const std::string resized = renderWith(smaller);
+    EXPECT_NE(resized.find("was baked as 1 tiles of 512 texels, the settings give 1 of 256"), std::string::npos)
         << resized;
-    scene::Scene more = scene;
-    more.spotLights.push_back(more.spotLights[0]);
-    more.spotLights[1].name = "second lamp";
-    const std::string missing = renderWith(more, frame);
+    moveObject(scene, "a", {0.5f, 0.0f, 0.0f});
+    // The sun's map holds every static caster, so it is the first to be stale.
+    const std::string stale = renderWith(frame);
+    EXPECT_NE(stale.find("directional light 0 ('sun') is stale"), std::string::npos) << stale;
+    // A light the bake lacks is named before any stale map.
+    scene.spotLights.push_back(scene.spotLights[0]);
+    scene.spotLights[1].name = "second lamp";
+    const std::string missing = renderWith(frame);
     EXPECT_NE(missing.find("no map for spot light 1"), std::string::npos) << missing;
 
     // A cut depth file and a cut manifest.

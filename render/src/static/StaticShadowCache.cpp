@@ -52,6 +52,20 @@ std::vector<std::byte> depthTexels(const std::vector<float>& depth, rhi::Format 
     return bytes;
 }
 
+// Whether two plans of a light's map put it in the same texels of its atlas.
+bool sameTiles(const shadows::StaticShadowMap& a, const shadows::StaticShadowMap& b)
+{
+    if (a.tiles.size() != b.tiles.size())
+        return false;
+    for (std::size_t i = 0; i < a.tiles.size(); ++i) {
+        const rhi::Viewport& x = a.tiles[i].viewport;
+        const rhi::Viewport& y = b.tiles[i].viewport;
+        if (a.tiles[i].tile != b.tiles[i].tile || x.x != y.x || x.y != y.y || x.width != y.width || x.height != y.height)
+            return false;
+    }
+    return true;
+}
+
 std::string mapName(const shadows::StaticShadowMap& map)
 {
     return fmt::format("{} {}", shadows::shadowLightKindName(map.kind), map.lightIndex);
@@ -79,7 +93,6 @@ void StaticShadowCache::useBake(shadows::StaticShadowBake bake)
 {
     bake_ = std::move(bake);
     drawn_.clear();
-    hasPlan_ = false;
 }
 
 const shadows::BakedShadowMap* StaticShadowCache::bakedMap(const shadows::StaticShadowMap& map) const
@@ -127,21 +140,48 @@ void StaticShadowCache::restore(shadows::ShadowAtlas& atlas, const shadows::Shad
     device_.writeTexture(atlas.texture(), 0, 0, depthTexels(depth, atlas.format()));
 }
 
+const shadows::StaticShadowMap* StaticShadowCache::drawnMap(const shadows::StaticShadowMap& map) const
+{
+    for (const shadows::StaticShadowMap& old : plan_.maps)
+        if (old.kind == map.kind && old.lightIndex == map.lightIndex)
+            return &old;
+    return nullptr;
+}
+
+void StaticShadowCache::keepDrawn(shadows::StaticShadowMap& map, shadows::StaticShadowUniforms& uniforms) const
+{
+    const shadows::StaticShadowMap& old = *drawnMap(map);
+    const shadows::StaticShadowUniforms& was = plan_.uniforms;
+    // The map's matrices, bounds, normal offsets and filter as drawn; the light's strength as it is now.
+    if (isDirectional(map)) {
+        const std::uint32_t tile = map.tiles.front().tile;
+        uniforms.directionalWorldToMap[tile] = was.directionalWorldToMap[tile];
+        uniforms.directionalBounds[tile] = was.directionalBounds[tile];
+        if (map.litIndex < shadows::maxStaticMapDirectionalLights && old.litIndex < shadows::maxStaticMapDirectionalLights)
+            uniforms.directionalLights[map.litIndex] =
+                glm::vec4(was.directionalLights[old.litIndex].x, uniforms.directionalLights[map.litIndex].y,
+                          was.directionalLights[old.litIndex].z, was.directionalLights[old.litIndex].w);
+    } else {
+        for (const shadows::StaticShadowTile& tile : map.tiles) {
+            uniforms.otherWorldToMap[tile.tile] = was.otherWorldToMap[tile.tile];
+            uniforms.otherBounds[tile.tile] = was.otherBounds[tile.tile];
+            uniforms.otherData[tile.tile] = was.otherData[tile.tile];
+        }
+    }
+    const std::uint32_t litIndex = map.litIndex;
+    const shadows::StaticShadowUpdate update = map.update;
+    map = old;
+    map.litIndex = litIndex;
+    map.update = update;
+}
+
 StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shadows::ShadowSettings& settings,
                                          shadows::StaticShadowPlan plan, std::span<const shadows::ShadowCaster> casters,
                                          bool requested)
 {
-    const bool onDemand = settings.staticMaps.update == shadows::StaticShadowUpdate::OnDemand;
     const auto sizeOf = [](const shadows::ShadowAtlasLayout& layout) {
         return layout.tileCount() > 0 ? layout.atlasSize() : kStandInAtlasSize;
     };
-    // On demand, what was drawn stays while its atlases can: the settings' sizes and formats still describe them.
-    const bool atlasesKept = sizeOf(plan.directionalAtlas) == sizeOf(plan_.directionalAtlas) &&
-                             sizeOf(plan.otherAtlas) == sizeOf(plan_.otherAtlas) &&
-                             directionalAtlas_->format() == settings.directional.atlasFormat &&
-                             otherAtlas_->format() == settings.other.atlasFormat;
-    if (onDemand && !requested && hasPlan_ && atlasesKept)
-        return {};
     const bool directionalNew = prepareAtlas(device_, directionalAtlas_, sizeOf(plan.directionalAtlas),
                                              settings.directional.atlasFormat, "static directional shadow atlas");
     const bool otherNew = prepareAtlas(device_, otherAtlas_, sizeOf(plan.otherAtlas), settings.other.atlasFormat,
@@ -149,18 +189,28 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
     StaticMapDraws draws;
     std::map<LightId, Key> keys;
     std::vector<const shadows::StaticShadowMap*> directionalMaps, otherMaps;
-    for (const shadows::StaticShadowMap& map : plan.maps) {
+    for (shadows::StaticShadowMap& map : plan.maps) {
         const bool directional = isDirectional(map);
-        const Key key{viewKey(map, directional ? *directionalAtlas_ : *otherAtlas_), casterKey(map, casters)};
+        const bool atlasNew = directional ? directionalNew : otherNew;
         const LightId id{map.kind, map.lightIndex};
         const auto old = drawn_.find(id);
+        // On demand, a map drawn before stays as drawn while it keeps its tiles, whatever changed since.
+        if (map.update == shadows::StaticShadowUpdate::OnDemand && !requested && !atlasNew && old != drawn_.end() &&
+            sameTiles(*drawnMap(map), map)) {
+            keepDrawn(map, plan.uniforms);
+            keys.emplace(id, old->second);
+            continue;
+        }
+        const Key key{viewKey(map, directional ? *directionalAtlas_ : *otherAtlas_), casterKey(map, casters)};
         const char* reason = nullptr;
         if (old == drawn_.end())
             reason = "first drawn";
-        else if (directional ? directionalNew : otherNew)
+        else if (atlasNew)
             reason = "its static atlas was created anew";
         else if (requested)
             reason = "asked for";
+        else if (map.update == shadows::StaticShadowUpdate::OnDemand)
+            reason = "its tiles moved in the static atlas";
         else if (old->second.view != key.view)
             reason = "its view changed (the light, its shadow settings or the static casters' bounds)";
         else if (old->second.casters != key.casters)
@@ -187,6 +237,7 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
         if (!otherMaps.empty())
             restore(*otherAtlas_, plan.otherAtlas, all(false));
     } else {
+        pass_.begin();
         const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
             std::vector<const shadows::ShadowTileDraw*> tiles;
             for (const shadows::StaticShadowMap* map : maps)
@@ -202,7 +253,6 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
     }
     drawn_ = std::move(keys);
     plan_ = std::move(plan);
-    hasPlan_ = true;
     return draws;
 }
 

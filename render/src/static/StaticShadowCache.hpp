@@ -37,9 +37,10 @@ class StaticShadowCache {
 public:
     StaticShadowCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat);
 
-    // Takes this frame's plan and records the draws of the maps it needs; returns those maps. In OnDemand mode,
-    // unless `requested`, the maps and uniforms drawn last stay as they are (`plan` is dropped) while the atlases
-    // keep their sizes and format. Without static maps (EveryFrame) the atlases are small stand-ins.
+    // Takes this frame's plan and records the draws of the maps it needs; returns those maps. A map in OnChange
+    // mode is drawn when its key changed; one in OnDemand mode (StaticShadowMap::update, the light's own or the
+    // settings'), unless `requested`, keeps the tiles and uniforms it was drawn with while its atlas and its tiles
+    // stay, whatever else changed. `requested` draws every map. Without maps the atlases are small stand-ins.
     StaticMapDraws update(rhi::CommandList& commands, const shadows::ShadowSettings& settings,
                           shadows::StaticShadowPlan plan, std::span<const shadows::ShadowCaster> casters,
                           bool requested);
@@ -74,10 +75,13 @@ private:
     std::unique_ptr<shadows::ShadowAtlas> otherAtlas_;
     shadows::StaticShadowPlan plan_;
     std::map<LightId, Key> drawn_;
-    bool hasPlan_ = false;
     std::optional<shadows::StaticShadowBake> bake_;
 
     const shadows::BakedShadowMap* bakedMap(const shadows::StaticShadowMap& map) const;
+    // The light's map as last drawn (in plan_), or nullptr.
+    const shadows::StaticShadowMap* drawnMap(const shadows::StaticShadowMap& map) const;
+    // Replaces `map` and its entries of `uniforms` with the map as last drawn (strength stays `uniforms`').
+    void keepDrawn(shadows::StaticShadowMap& map, shadows::StaticShadowUniforms& uniforms) const;
     // Restores every map of the plan (of the one kind of atlas) from the bake: one upload of the whole atlas.
     void restore(shadows::ShadowAtlas& atlas, const shadows::ShadowAtlasLayout& layout,
                  const std::vector<const shadows::StaticShadowMap*>& maps);

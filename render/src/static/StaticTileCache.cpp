@@ -31,8 +31,11 @@ std::uint32_t StaticTileCache::update(rhi::CommandList& commands, shadows::Shado
             changed.push_back(&tile);
     }
     keys_ = std::move(keys);
-    const std::uint32_t draws =
-        changed.empty() && !fresh ? 0 : pass_.record(commands, *twin_, changed, casters, fresh);
+    std::uint32_t draws = 0;
+    if (!changed.empty() || fresh) {
+        pass_.begin();
+        draws = pass_.record(commands, *twin_, changed, casters, fresh);
+    }
     commands.copyTexture(twin_->texture(), 0, atlas.texture(), 0);
     return draws;
 }

@@ -42,6 +42,20 @@ float sourceSize(const Document& document, const tinygltf::Light& light, const s
     return float(value.GetNumberAsDouble());
 }
 
+// The light's static shadow map mode from its `extras` {"shadowUpdate": "onDemand"} (scene::ShadowUpdate's names),
+// the shadow settings' without one.
+ShadowUpdate shadowUpdate(const Document& document, const tinygltf::Light& light, const std::string& owner)
+{
+    if (!light.extras.IsObject() || !light.extras.Has("shadowUpdate"))
+        return ShadowUpdate::Settings;
+    const tinygltf::Value& value = light.extras.Get("shadowUpdate");
+    const std::optional<ShadowUpdate> update =
+        value.IsString() ? parseShadowUpdate(value.Get<std::string>()) : std::nullopt;
+    if (!update)
+        document.fail(fmt::format("{}: extras.shadowUpdate is not one of {}", owner, kShadowUpdateNames));
+    return *update;
+}
+
 void addLight(const Document& document, const gltf::LightInstance& instance, Scene& scene,
               std::vector<std::string>& notes)
 {
@@ -57,7 +71,8 @@ void addLight(const Document& document, const gltf::LightInstance& instance, Sce
     if (light.type == "directional") {
         scene.lights.push_back({.name = light.name, .color = color, .intensity = intensity,
                                 .direction = forward(instance.world),
-                                .angularDiameter = sourceSize(document, light, owner, kDefaultAngularDiameter)});
+                                .angularDiameter = sourceSize(document, light, owner, kDefaultAngularDiameter),
+                                .shadowUpdate = shadowUpdate(document, light, owner)});
     } else if (light.type == "spot") {
         auto outer = float(light.spot.outerConeAngle);
         if (outer > kMaxSpotOuterAngle) {
@@ -68,11 +83,13 @@ void addLight(const Document& document, const gltf::LightInstance& instance, Sce
                                     .position = origin(instance.world), .direction = forward(instance.world),
                                     .range = range, .innerAngle = float(light.spot.innerConeAngle),
                                     .outerAngle = outer,
-                                    .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius)});
+                                    .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius),
+                                    .shadowUpdate = shadowUpdate(document, light, owner)});
     } else if (light.type == "point") {
         scene.pointLights.push_back({.name = light.name, .color = color, .intensity = intensity,
                                      .position = origin(instance.world), .range = range,
-                                     .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius)});
+                                     .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius),
+                                    .shadowUpdate = shadowUpdate(document, light, owner)});
     } else {
         document.fail(fmt::format("{}: type '{}' is not directional, spot or point", owner, light.type));
     }

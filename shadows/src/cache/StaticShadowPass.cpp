@@ -32,7 +32,6 @@ std::uint32_t StaticShadowPass::record(rhi::CommandList& commands, const ShadowA
                                        std::span<const ShadowTileDraw* const> tiles,
                                        std::span<const ShadowCaster> casters, bool clearAll)
 {
-    draws_.reset();
     std::uint32_t draws = 0;
     commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = clearAll});
     const rhi::Pipeline& clear = clearPipeline(atlas.format());

@@ -3,8 +3,10 @@
 #include "penumbra/shadows/AtlasMatrix.hpp"
 #include "penumbra/shadows/DirectionalCascadeFit.hpp"
 #include "penumbra/shadows/DirectionalShadowPass.hpp"
+#include "penumbra/shadows/DirectionalSoftData.hpp"
 #include "penumbra/shadows/LightBasis.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -16,16 +18,6 @@ namespace penumbra::shadows {
 namespace {
 
 constexpr float kSqrt2 = 1.41421356f;
-
-// The static maps filter with the tent filters only: the soft filters' blocker search reads the realtime atlases'
-// per-tile soft data, which a map over the whole static scene has no use for.
-ShadowFilter staticFilter(ShadowFilter filter, ShadowLightKind kind, std::uint32_t index, StaticShadowPlan& plan)
-{
-    if (!isSoftFilter(filter))
-        return filter;
-    plan.report.push_back({kind, index, "its static map is filtered with pcf7 (soft filters read the realtime atlas)"});
-    return ShadowFilter::PCF7x7;
-}
 
 // The sphere around the union of the static casters' boxes.
 Sphere boundingSphere(const StaticCasters& casters)
@@ -56,7 +48,8 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
 {
     std::vector<std::uint32_t> selected;
     for (std::uint32_t i = 0; i < lights.size(); ++i) {
-        if (!lights[i].castsShadows || !(lights[i].strength > 0.0f))
+        if (!lights[i].castsShadows || !(lights[i].strength > 0.0f) ||
+            staticUpdateOf(lights[i].staticUpdate, settings) == StaticShadowUpdate::EveryFrame)
             continue;
         if (selected.size() == maxStaticDirectionalMaps) {
             plan.report.push_back({ShadowLightKind::Directional, i,
@@ -78,8 +71,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
     for (std::uint32_t tile = 0; tile < selected.size(); ++tile) {
         const std::uint32_t index = selected[tile];
         const DirectionalShadowLightInput& light = lights[index];
-        const ShadowFilter filter = staticFilter(light.filter.value_or(settings.directional.filter),
-                                                 ShadowLightKind::Directional, index, plan);
+        const ShadowFilter filter = light.filter.value_or(settings.directional.filter);
         const DirectionalShadowCascade fit =
             fitDirectionalCascade(sphere, lightBasis(light.direction), plan.directionalAtlas.tileSize(),
                                   light.nearPlaneOffset, staticBounds, conventions);
@@ -95,13 +87,19 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         plan.uniforms.directionalWorldToMap[tile] =
             worldToAtlas(fit.viewProjection, tile, plan.directionalAtlas, conventions);
         plan.uniforms.directionalBounds[tile] = plan.directionalAtlas.tileTexelBounds(tile);
+        const float top = casterTopDepth(fit.basis, staticBounds, fit.nearDepth);
+        plan.uniforms.directionalSoft[tile] =
+            glm::vec4(lightTexelAnchor(fit, plan.uniforms.directionalWorldToMap[tile]),
+                      directionalDepthRow(fit, top, conventions));
+        plan.uniforms.directionalSource[tile] = {tanHalfAngularDiameter(light.angularDiameter), fit.texelSize, 0.0f,
+                                                 0.0f};
         if (index < maxStaticMapDirectionalLights)
             plan.uniforms.directionalLights[index] = {static_cast<float>(tile), light.strength,
                                                       casterSide ? 0.0f : reach, static_cast<float>(filter)};
         const ShadowFrustum frustum{fit.view, false, fit.halfSize, 0.0f, fit.farDepth - fit.nearDepth};
         plan.maps.push_back({ShadowLightKind::Directional, index,
                              {{{tile, plan.directionalAtlas.viewport(tile), view, all}, fit.projection, frustum}},
-                             fit.texelSize});
+                             fit.texelSize, staticUpdateOf(light.staticUpdate, settings), index});
     }
 }
 
@@ -119,6 +117,8 @@ struct LocalLightInput {
     float nearPlane;
     std::optional<ShadowFilter> filter;
     NormalBiasSide normalBiasSide;
+    std::optional<StaticShadowUpdate> staticUpdate;
+    float sourceRadius; // soft filters
 };
 
 std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points)
@@ -127,12 +127,14 @@ std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots,
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& s = spots[i];
         inputs.push_back({ShadowLightKind::Spot, i, s.position, s.direction, s.range, s.outerAngle, s.strength,
-                          s.normalBias, s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide});
+                          s.normalBias, s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide, s.staticUpdate,
+                          s.sourceRadius});
     }
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const PointShadowInput& p = points[i];
         inputs.push_back({ShadowLightKind::Point, i, p.position, glm::vec3(0.0f, -1.0f, 0.0f), p.range, 0.0f,
-                          p.strength, p.normalBias, p.slopeScaleBias, p.nearPlane, p.filter, p.normalBiasSide});
+                          p.strength, p.normalBias, p.slopeScaleBias, p.nearPlane, p.filter, p.normalBiasSide,
+                          p.staticUpdate, p.sourceRadius});
     }
     return inputs;
 }
@@ -163,7 +165,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
     std::vector<const LocalLightInput*> selected;
     std::uint32_t tiles = 0;
     for (const LocalLightInput& light : inputs) {
-        if (!(light.strength > 0.0f))
+        if (!(light.strength > 0.0f) || staticUpdateOf(light.staticUpdate, settings) == StaticShadowUpdate::EveryFrame)
             continue;
         const std::uint32_t needed = light.kind == ShadowLightKind::Spot ? 1 : cubeFaceCount;
         if (tiles + needed > maxStaticOtherTiles) {
@@ -180,8 +182,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
     std::uint32_t tile = 0;
     for (const LocalLightInput* light : selected) {
         const std::uint32_t tileSize = plan.otherAtlas.tileSize();
-        const ShadowFilter filter =
-            staticFilter(light->filter.value_or(settings.other.filter), light->kind, light->index, plan);
+        const ShadowFilter filter = light->filter.value_or(settings.other.filter);
         const LocalViews views = localViews(*light, tileSize, filter);
         const float nearPlane = localShadowNearPlane(light->range, light->nearPlane, settings.other);
         const glm::mat4 projection = conventions.perspective(views.fov, 1.0f, nearPlane, light->range);
@@ -190,7 +191,8 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
         const std::uint32_t litIndex = light->index + (light->kind == ShadowLightKind::Point ? spots.size() : 0);
         if (litIndex < maxStaticMapLocalLights)
             plan.uniforms.localLights[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
-        StaticShadowMap map{light->kind, light->index, {}, 0.0f};
+        StaticShadowMap map{light->kind, light->index, {}, 0.0f, staticUpdateOf(light->staticUpdate, settings),
+                            litIndex};
         for (const glm::mat4& view : views.views) {
             // The dither follows the tile's own texel grid, as in the realtime atlas.
             ShadowViewDraw draw{.viewProjection = projection * view,
@@ -201,6 +203,8 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
             plan.uniforms.otherWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.otherAtlas, conventions);
             plan.uniforms.otherBounds[tile] = plan.otherAtlas.tileTexelBounds(tile);
             plan.uniforms.otherData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
+            plan.uniforms.otherSoft[tile] =
+                perspectiveTileSoft(projection, tileSize, light->sourceRadius, nearPlane, conventions);
             map.tiles.push_back({{tile, plan.otherAtlas.viewport(tile), draw,
                                   castersInFrustum(view, views.fov, nearPlane, light->range, casters)},
                                  projection,
@@ -254,7 +258,7 @@ StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Co
 {
     validate(settings);
     StaticShadowPlan plan;
-    if (!hasStaticMaps(settings) || casters.indices.empty())
+    if (casters.indices.empty())
         return plan;
     planDirectional(plan, settings, conventions, lights, casters);
     planLocal(plan, settings, conventions, spots, points, casters);

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <span>
@@ -18,6 +19,8 @@ struct PerspectiveTile {
 
 // The tiles of the other atlas, for the two functions below.
 std::vector<PerspectiveTile> perspectiveTiles(const shadows::OtherShadowPlan& plan);
+// The tiles of the static other atlas: the spot and point lights' static maps.
+std::vector<PerspectiveTile> perspectiveTiles(const shadows::StaticShadowPlan& plan);
 
 // Per texel, where its light depth lies between the light's far (0) and near (1) planes, linear in
 // view depth: orthographic shadow projections store depth linearly in every convention; texels of

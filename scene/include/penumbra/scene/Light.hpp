@@ -16,6 +16,15 @@ enum class NormalBiasSide : std::uint8_t { Receiver, Caster };
 // "receiver", "caster": the names on the command line and in the viewer.
 std::string_view normalBiasSideName(NormalBiasSide side);
 std::optional<NormalBiasSide> parseNormalBiasSide(std::string_view name);
+// When a light's static shadow map (penumbra::shadows::StaticShadowUpdate) is drawn: as the shadow settings'
+// static.update says, or the light's own mode. The names are the settings JSON's: "settings", "everyFrame",
+// "onChange", "onDemand".
+enum class ShadowUpdate : std::uint8_t { Settings, EveryFrame, OnChange, OnDemand };
+std::string_view shadowUpdateName(ShadowUpdate update);
+std::optional<ShadowUpdate> parseShadowUpdate(std::string_view name);
+// "settings, everyFrame, onChange, onDemand": for messages.
+inline constexpr const char* kShadowUpdateNames = "settings, everyFrame, onChange, onDemand";
+
 // A light's own shadow filter: a penumbra::shadows::ShadowFilter value, or kAtlasShadowFilter for the shadow
 // settings' (the atlas's) filter. The renderer checks the value.
 inline constexpr std::int32_t kAtlasShadowFilter = -1;
@@ -38,6 +47,7 @@ struct DirectionalLight {
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     float angularDiameter = kDefaultAngularDiameter; // source size, degrees, 0..kMaxAngularDiameter (soft shadows)
     std::int32_t shadowFilter = kAtlasShadowFilter;
+    ShadowUpdate shadowUpdate = ShadowUpdate::Settings;
 };
 
 // A cone light. Its light falls off with distance (zero at range) and between the inner and
@@ -58,6 +68,7 @@ struct SpotLight {
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a disk facing the receiver (soft shadows)
     std::int32_t shadowFilter = kAtlasShadowFilter;
+    ShadowUpdate shadowUpdate = ShadowUpdate::Settings;
 };
 
 // An omnidirectional light; its shadow is six cube faces.
@@ -74,6 +85,7 @@ struct PointLight {
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a sphere (soft shadows)
     std::int32_t shadowFilter = kAtlasShadowFilter;
+    ShadowUpdate shadowUpdate = ShadowUpdate::Settings;
 };
 
 // A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.

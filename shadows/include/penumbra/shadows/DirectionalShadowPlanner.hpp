@@ -31,6 +31,7 @@ struct DirectionalShadowLightInput {
     std::optional<ShadowFilter> filter;     // nullopt: the atlas's (DirectionalShadowSettings::filter)
     float angularDiameter = 0.0f;           // degrees: the source size of Poisson and PCSS filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
+    std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
 
 struct DirectionalCascadePlan {

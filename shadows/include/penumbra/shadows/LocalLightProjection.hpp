@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace penumbra::shadows {
 
@@ -37,6 +38,12 @@ float localShadowNearPlane(float range, float lightNearPlane, const OtherShadowS
 // World-space texel size at distance 1 from the light plane: the tile spans 2 / projection[0][0]
 // there (twice the tangent of half the field of view).
 float texelSizeAtUnitDistance(const glm::mat4& projection, std::uint32_t tileSize);
+
+// What the Poisson and PCSS filters need of a perspective tile (OtherShadowUniforms::tileSoft and
+// StaticShadowUniforms::otherSoft): its depth row (t22, t32 of clipToTexture x projection: perspectiveDistance), the
+// light's radius in texels at unit distance, the near plane.
+glm::vec4 perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSize, float sourceRadius, float nearPlane,
+                              const rhi::Conventions& conventions);
 
 // Normal bias per unit distance from the light plane: texel size x filter size x sqrt 2 (a texel's
 // diagonal is the worst case), times the light's normal bias.

@@ -30,6 +30,7 @@ struct SpotShadowInput {
     std::optional<ShadowFilter> filter; // nullopt: the atlas's (OtherShadowSettings::filter)
     float sourceRadius = 0.0f;          // world units: the source size of Poisson and PCSS filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
+    std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
 
 struct PointShadowInput {
@@ -42,6 +43,7 @@ struct PointShadowInput {
     std::optional<ShadowFilter> filter; // nullopt: the atlas's (OtherShadowSettings::filter)
     float sourceRadius = 0.0f;
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
+    std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
 
 enum class LocalLightKind : std::uint8_t { Spot, Point };

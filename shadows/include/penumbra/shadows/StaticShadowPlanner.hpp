@@ -45,9 +45,11 @@ struct StaticShadowMap {
     std::uint32_t lightIndex = 0; // into the planner's input lights of that kind
     std::vector<StaticShadowTile> tiles;
     float texelSize = 0.0f; // directional maps: the world size of a texel
+    StaticShadowUpdate update = StaticShadowUpdate::OnChange; // the light's own mode, or the settings'
+    std::uint32_t litIndex = 0; // its entry in the uniforms' directionalLights or localLights
 };
 
-// Why a light gets no static map, or gets one filtered otherwise than its realtime shadow.
+// Why a light gets no static map.
 struct StaticShadowNote {
     ShadowLightKind kind = ShadowLightKind::Directional;
     std::uint32_t lightIndex = 0;
@@ -68,14 +70,21 @@ struct StaticCasters {
     std::span<const std::uint32_t> indices;  // the static ones, ascending
 };
 
-// Plans the static shadow maps (settings.staticMaps) of every light that casts shadows with strength > 0 and has a
-// static caster in reach, whatever the camera sees: directional lights (up to 4) take a tile of the static
-// directional atlas fitted around the static casters' bounding sphere (the stable fit of a cascade, so its texels
-// stay put while nothing static moves); spot and point lights take one and six tiles of the static other atlas
-// (up to maxStaticOtherTiles), with the projections of their realtime tiles. Lights that do not fit, and lights whose soft filter
-// the static maps replace with the widest tent (PCF 7x7), are listed in the report. Uniform entries follow the lit
-// pass's light order: directional lights, then spot lights, then point lights. Throws rhi::Error only for settings
-// that fail validate().
+// The update mode of a light: its own, or the settings'.
+inline StaticShadowUpdate staticUpdateOf(std::optional<StaticShadowUpdate> light, const ShadowSettings& settings)
+{
+    return light.value_or(settings.staticMaps.update);
+}
+
+// Plans the static shadow maps (settings.staticMaps) of every light that casts shadows with strength > 0, whose
+// update mode (its own staticUpdate, or the settings') is not EveryFrame, and has a static caster in reach, whatever
+// the camera sees: directional lights (up to 4) take a tile of the static directional atlas fitted around the static
+// casters' bounding sphere (the stable fit of a cascade, so its texels stay put while nothing static moves); spot and
+// point lights take one and six tiles of the static other atlas (up to maxStaticOtherTiles), with the projections of
+// their realtime tiles. Lights that do not fit are listed in the report. A map is filtered as the light's realtime
+// shadow is (its own filter or the atlas's; the Poisson and PCSS filters with the soft data of StaticShadowUniforms),
+// with the same normal bias scaled to the map's texels. Uniform entries follow the lit pass's light order:
+// directional lights, then spot lights, then point lights. Throws rhi::Error only for settings that fail validate().
 StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                    std::span<const DirectionalShadowLightInput> lights,
                                    std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,

@@ -30,6 +30,12 @@ inline constexpr std::uint32_t maxStaticMapLocalLights = 16;
 //       vec4 otherData[64];            // per tile: normal bias per unit distance from the light plane, filter, 0, 0
 //       vec4 localLights[16];          // per spot light, then point light: first tile or -1, shadow strength, 0, 0
 //       vec4 atlasSizes;               // directional atlas size, other atlas size, 0, 0
+//       vec4 directionalSoft[4];       // per directional tile, for the Poisson and PCSS filters: the light texel
+//                                      // anchor (x, y) and the depth row (z, w), as DirectionalShadowUniforms::tileSoft
+//       vec4 directionalSource[4];     // per directional tile: tan of half the light's angular diameter, the world
+//                                      // size of a texel, 0, 0
+//       vec4 otherSoft[64];            // per spot and point tile: the depth row (t22, t32), the light's radius in
+//                                      // texels at unit distance, the near plane, as OtherShadowUniforms::tileSoft
 //   };
 struct StaticShadowUniforms {
     std::array<glm::mat4, maxStaticDirectionalMaps> directionalWorldToMap{};
@@ -40,6 +46,9 @@ struct StaticShadowUniforms {
     std::array<glm::vec4, maxStaticOtherTiles> otherData{};
     std::array<glm::vec4, maxStaticMapLocalLights> localLights{};
     glm::vec4 atlasSizes{0.0f};
+    std::array<glm::vec4, maxStaticDirectionalMaps> directionalSoft{};
+    std::array<glm::vec4, maxStaticDirectionalMaps> directionalSource{};
+    std::array<glm::vec4, maxStaticOtherTiles> otherSoft{};
 
     // No light has a static map.
     StaticShadowUniforms()
@@ -53,7 +62,8 @@ static_assert(offsetof(StaticShadowUniforms, directionalBounds) == 256);
 static_assert(offsetof(StaticShadowUniforms, otherWorldToMap) == 448);
 static_assert(offsetof(StaticShadowUniforms, otherBounds) == 4544);
 static_assert(offsetof(StaticShadowUniforms, localLights) == 6592);
-static_assert(sizeof(StaticShadowUniforms) == 6864);
+static_assert(offsetof(StaticShadowUniforms, directionalSoft) == 6864);
+static_assert(sizeof(StaticShadowUniforms) == 8016);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout staticShadowLayout()
@@ -68,6 +78,9 @@ inline rhi::UniformLayout staticShadowLayout()
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, otherData),
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localLights),
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, atlasSizes),
+                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalSoft),
+                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalSource),
+                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, otherSoft),
             }};
 }
 
