@@ -4,7 +4,6 @@
 #include "penumbra/rhi/MemorySize.hpp"
 
 #include <fmt/format.h>
-#include <functional>
 #include <gtest/gtest.h>
 
 namespace penumbra::testing {
@@ -13,16 +12,6 @@ namespace {
 using OutOfMemoryTest = GpuTest;
 
 constexpr std::uint32_t kAtlasSide = 8192;
-
-std::string errorOf(const std::function<void()>& create)
-{
-    try {
-        create();
-    } catch (const rhi::Error& e) {
-        return e.what();
-    }
-    return "no error";
-}
 
 // After the refusal the device still creates, clears and reads back an atlas: the next smaller request succeeds.
 void expectUsable(rhi::Device& device)

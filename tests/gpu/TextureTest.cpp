@@ -9,7 +9,6 @@
 
 #include <array>
 #include <fmt/format.h>
-#include <functional>
 
 namespace penumbra::testing {
 namespace {
@@ -231,16 +230,6 @@ TEST_F(TextureTest, WrapModesAddressTexelsOutsideTheTexture)
         EXPECT_NEAR(b.r, expected(c.atPlus), 1e-3f) << "u at 1.375, mode " << int(c.mode);
         EXPECT_NEAR(b.g, expected(c.atMinus), 1e-3f) << "v at -0.375, mode " << int(c.mode);
     }
-}
-
-std::string errorOf(const std::function<void()>& f)
-{
-    try {
-        f();
-    } catch (const rhi::Error& e) {
-        return e.what();
-    }
-    return {};
 }
 
 TEST_F(TextureTest, AnisotropyAboveTheDeviceLimitIsRefused)

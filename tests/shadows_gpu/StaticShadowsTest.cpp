@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <functional>
 #include <cstdio>
 #include <cstdlib>
 #include <glm/geometric.hpp>
@@ -415,16 +414,6 @@ std::filesystem::path bakeFolder(const std::string& name)
 {
     const char* root = std::getenv("PENUMBRA_TEST_OUTPUT");
     return std::filesystem::path(root ? root : "test-output") / ("bake-" + name + "-" + configuration());
-}
-
-std::string errorOf(const std::function<void()>& f)
-{
-    try {
-        f();
-    } catch (const rhi::Error& e) {
-        return e.what();
-    }
-    return "(no error)";
 }
 
 // One renderer bakes, then loads the bake back under a scene and settings changed in turn. (A bake made on each

@@ -53,6 +53,16 @@ std::vector<SkippedConfiguration> forEachConfiguration(
     return skipped;
 }
 
+std::string errorOf(const std::function<void()>& f)
+{
+    try {
+        f();
+    } catch (const rhi::Error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
 const std::vector<std::string>& compiledConfigurations()
 {
     // PENUMBRA_TEST_CONFIGURATIONS is tests/CMakeLists.txt's `configurations` list, comma-separated.

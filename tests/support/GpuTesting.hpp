@@ -32,6 +32,9 @@ struct SkippedConfiguration {
 // the test recorded for the configurations that ran still fail it (GoogleTest's skip does not clear them).
 void reportSkipped(const std::vector<SkippedConfiguration>& skipped);
 
+// The message of the rhi::Error that `f` throws, or "(no error)" when it throws none.
+std::string errorOf(const std::function<void()>& f);
+
 // A device with validation / debug output on; any message it records fails the test.
 std::unique_ptr<rhi::Device> createValidatedDevice(const std::string& configuration);
 void expectNoDebugMessages(rhi::Device& device);
