@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize fuzz docs clean
+.PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize tsan fuzz docs clean
 
 all: build
 
@@ -62,6 +62,15 @@ bench-static: build
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run in build-sanitize/.
 sanitize:
 	@$(MAKE) test BUILD=build-sanitize CMAKE_FLAGS="-DPENUMBRA_WERROR=ON -DPENUMBRA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug"
+
+# ThreadSanitizer build in build-tsan/ of what the RHI's threading contract covers (rhi::Device: a device per thread,
+# devices sharing no state): the threading tests. ASLR is off for the run (setarch -R): GCC 12's ThreadSanitizer
+# cannot map its shadow memory under the wide mmap randomization of newer kernels.
+tsan: deps
+	@cmake -S . -B build-tsan -DPENUMBRA_WERROR=ON -DPENUMBRA_TSAN=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo --log-level=WARNING
+	@cmake --build build-tsan -j $(JOBS) --target penumbra_threading_tests
+	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" setarch $$(uname -m) -R \
+		ctest --test-dir build-tsan -R '^threading\.' --output-on-failure
 
 # libFuzzer targets (tests/fuzz) with clang, ASan and UBSan in build-fuzz/, each run FUZZ_SECONDS (default 180) one
 # after another: executions, coverage and crashes per target. FUZZ_TARGETS picks some (gltf shadow_settings

@@ -5,6 +5,13 @@ if(PENUMBRA_SANITIZE)
                       -fno-sanitize=vptr) # Debian's glslang has no RTTI for the vptr check
   add_link_options(-fsanitize=address,undefined)
 endif()
+if(PENUMBRA_TSAN)
+  if(PENUMBRA_SANITIZE)
+    message(FATAL_ERROR "PENUMBRA_TSAN and PENUMBRA_SANITIZE exclude each other (ThreadSanitizer cannot run with ASan)")
+  endif()
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()
 # libFuzzer build (clang only, `make fuzz`): every library instrumented for coverage and sanitized; the fuzz
 # targets in tests/fuzz link libFuzzer's main.
 if(PENUMBRA_FUZZ)

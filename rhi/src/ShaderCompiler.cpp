@@ -5,9 +5,10 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
-#include <map>
+#include <list>
 #include <mutex>
 #include <spirv_cross/spirv_cross.hpp>
+#include <unordered_map>
 
 namespace penumbra::rhi {
 namespace {
@@ -128,20 +129,38 @@ CompiledShader compileWithGlslang(const ShaderSource& source, const std::string&
 
 // Compilation is a pure function of its inputs, and glslang plus SPIR-V validation cost tens of milliseconds for the
 // lit shader: every renderer of a process (tests, scene reloads, the soak) compiles the same sources, so each is
-// compiled once per process. Failures are not kept: they throw every time.
+// compiled once per process. The memo keeps the most recently used kShaderMemoEntries (a renderer uses a few
+// dozen; a program that generates shaders, or a fuzzer, must not grow without bound). Failures are not kept: they
+// throw every time.
 CompiledShader compileShader(const ShaderSource& source, const std::string& preamble)
 {
+    constexpr std::size_t kShaderMemoEntries = 512;
+    using Recency = std::list<std::string>;
+    struct Entry {
+        CompiledShader shader;
+        Recency::iterator recency;
+    };
     static std::mutex mutex;
-    static std::map<std::string, CompiledShader> compiled;
+    static std::unordered_map<std::string, Entry> compiled;
+    static Recency recency; // most recently used first
     std::string key = compileKey(source, preamble);
     {
         const std::lock_guard lock(mutex);
-        if (const auto found = compiled.find(key); found != compiled.end())
-            return found->second;
+        if (const auto found = compiled.find(key); found != compiled.end()) {
+            recency.splice(recency.begin(), recency, found->second.recency);
+            return found->second.shader;
+        }
     }
     CompiledShader result = compileWithGlslang(source, preamble);
     const std::lock_guard lock(mutex);
-    return compiled.emplace(std::move(key), std::move(result)).first->second;
+    if (const auto found = compiled.find(key); found != compiled.end())
+        return found->second.shader; // another thread compiled it meanwhile
+    if (compiled.size() == kShaderMemoEntries) {
+        compiled.erase(recency.back());
+        recency.pop_back();
+    }
+    recency.push_front(key);
+    return compiled.emplace(std::move(key), Entry{std::move(result), recency.begin()}).first->second.shader;
 }
 
 } // namespace penumbra::rhi
