@@ -346,6 +346,8 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
     if (s.atlasPassMs && s.otherAtlasPassMs && s.litPassMs)
         fmt::print("; atlas pass {:.2f} ms, other atlas pass {:.2f} ms, lit pass {:.2f} ms", *s.atlasPassMs,
                    *s.otherAtlasPassMs, *s.litPassMs);
+    if (s.screenSpaceShadowsMs)
+        fmt::print(", screen-space shadows {:.2f} ms", *s.screenSpaceShadowsMs);
     if (s.resolvePassMs)
         fmt::print(", MSAA resolve {:.2f} ms", *s.resolvePassMs);
     fmt::print("\n");

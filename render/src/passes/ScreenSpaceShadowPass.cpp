@@ -106,8 +106,11 @@ const rhi::Pipeline& ScreenSpaceShadowPass::pipeline(const LitShaderFeatures& fe
     desc.vertex = vertex_.get();
     desc.fragment = fragment.get();
     desc.colorTargets = {rhi::ColorTarget{kScreenSpaceShadowFormat}};
-    desc.uniformLayouts = {collectionLayout(), shadows::directionalShadowLayout(), shadows::otherShadowLayout(),
-                           shadows::staticShadowLayout()};
+    desc.uniformLayouts = {collectionLayout(), shadows::directionalShadowLayout()};
+    // The static maps' functions come with other_shadows.glsl's block (screen_space_shadows.frag).
+    if (features.staticShadows)
+        desc.uniformLayouts.insert(desc.uniformLayouts.end(),
+                                   {shadows::otherShadowLayout(), shadows::staticShadowLayout()});
     desc.debugName = fmt::format("screen-space shadows (features {:#x})", key);
     pipeline = device_.createPipeline(desc);
     return *pipeline;
