@@ -1,21 +1,11 @@
 #version 450
-// The depth prepass of clip materials: the lit pass's alpha (lit.frag), cut at the material's cutoff, so the
-// lit pass after it needs no discard.
+// The depth prepass of clip materials (prepass_coverage.glsl).
 
 #include "lit.glsl"
 #include "material.glsl"
-
-layout(location = 2) in vec2 vUv;
-layout(location = 3) in vec2 vUv1;
-layout(location = 5) in vec4 vColor;
+#include "prepass_coverage.glsl"
 
 void main()
 {
-    const bool textured = hasMap(PENUMBRA_TEXTURE_BASE_COLOR);
-    const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
-    const float textureAlpha = textured ? texture(coverageMap, baseUv).a : 1.0;
-    const float alpha =
-        materialAlpha(object.baseColor.a, PENUMBRA_CASTER_CLIP, baseUv, textured, textureAlpha) * vColor.a;
-    if (alpha < object.surface.z)
-        discard;
+    discardClipHoles();
 }

@@ -12,6 +12,7 @@
 #include "static_shadows.glsl"
 #include "lit.glsl"
 #include "material.glsl"
+#include "collected_shadows.glsl"
 
 layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
@@ -185,6 +186,12 @@ void main()
     // A sky/ground hemisphere: the ambient colour from above, the ground colour from below.
     const vec3 ambient = mix(frame.ambientGround.rgb, frame.ambient.rgb, 0.5 + 0.5 * n.y);
     vec3 color = ambient * base * occlusion;
+#if PENUMBRA_SCREEN_SPACE_SHADOWS
+    const vec4 collected = collectedShadows();
+#endif
+#if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_EDGES
+    const bool fromCollection = collectedHere();
+#endif
     for (int i = 0; i < frame.config.x; ++i) {
         const vec3 l = -frame.lightDirection[i].xyz;
         const float nl = dot(n, l);
@@ -192,10 +199,20 @@ void main()
             continue;
         const bool receives = object.flags.x != 0;
         const int slot = receives ? int(frame.lightDirection[i].w) : -1;
-#if PENUMBRA_STATIC_SHADOWS
-        const float attenuation = directionalAttenuation(i, slot, receives, cascade, vPosition, geometric, l);
+#if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_PIXELS
+        const float attenuation = receives ? collectedShadow(collected, i) : 1.0;
 #else
-        const float attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric, l);
+        float attenuation;
+#if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_EDGES
+        if (fromCollection)
+            attenuation = receives ? collectedShadow(collected, i) : 1.0;
+        else
+#endif
+#if PENUMBRA_STATIC_SHADOWS
+        attenuation = directionalAttenuation(i, slot, receives, cascade, vPosition, geometric, l);
+#else
+        attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric, l);
+#endif
 #endif
         color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }

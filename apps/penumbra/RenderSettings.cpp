@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -72,7 +73,25 @@ std::uint32_t msaaOf(const Json& value, const std::string& source)
     return value.get<std::uint32_t>();
 }
 
+render::ShadowPath shadowPathOf(const Json& value, const std::string& source)
+{
+    const std::optional<render::ShadowPath> path =
+        value.is_string() ? parseShadowPath(value.get<std::string>()) : std::nullopt;
+    if (!path)
+        throw rhi::Error(fmt::format("{}: shadowPath: {} is not a shadow path, allowed {}", source, value.dump(),
+                                     fmt::join(kShadowPathNames, ", ")));
+    return *path;
+}
+
 } // namespace
+
+std::optional<render::ShadowPath> parseShadowPath(std::string_view name)
+{
+    for (std::size_t i = 0; i < std::size(kShadowPathNames); ++i)
+        if (name == kShadowPathNames[i])
+            return static_cast<render::ShadowPath>(i);
+    return std::nullopt;
+}
 
 RenderSettings loadRenderSettings(const std::filesystem::path& path)
 {
@@ -86,7 +105,8 @@ RenderSettings loadRenderSettings(const std::filesystem::path& path)
     // The ambient object is this tool's; the rest is the shadow settings' JSON, whose parser names its own errors
     // (bad JSON included).
     Json root = Json::parse(text.str(), nullptr, false);
-    if (!root.is_object() || (!root.contains("ambient") && !root.contains("anisotropy") && !root.contains("msaa"))) {
+    if (!root.is_object() || (!root.contains("ambient") && !root.contains("anisotropy") && !root.contains("msaa") &&
+                              !root.contains("shadowPath"))) {
         settings.shadows = shadows::parseShadowSettings(text.str(), source);
         return settings;
     }
@@ -101,6 +121,10 @@ RenderSettings loadRenderSettings(const std::filesystem::path& path)
     if (root.contains("msaa")) {
         settings.msaa = msaaOf(root["msaa"], source);
         root.erase("msaa");
+    }
+    if (root.contains("shadowPath")) {
+        settings.shadowPath = shadowPathOf(root["shadowPath"], source);
+        root.erase("shadowPath");
     }
     settings.shadows = shadows::parseShadowSettings(root.dump(), source);
     return settings;

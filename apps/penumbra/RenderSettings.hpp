@@ -1,25 +1,35 @@
 #pragma once
 
 #include "penumbra/render/AmbientLight.hpp"
+#include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string_view>
 
 namespace penumbra::apps {
 
 // A --settings file: the shadow settings' JSON (shadows::parseShadowSettings) with an optional top-level "ambient"
 // object: {"color": [r, g, b], "intensity": i, "ground": [r, g, b]} (render::AmbientLight; each field optional,
 // "ground" makes it a sky/ground hemisphere), an optional top-level "anisotropy" number, 1 to
-// kMaxAnisotropyOption (render::FrameDesc::maxAnisotropy), and an optional top-level "msaa" sample count, 1, 2, 4
-// or 8 (render::FrameDesc::msaa).
+// kMaxAnisotropyOption (render::FrameDesc::maxAnisotropy), an optional top-level "msaa" sample count, 1, 2, 4
+// or 8 (render::FrameDesc::msaa), and an optional top-level "shadowPath", one of kShadowPathNames
+// (render::FrameDesc::shadowPath).
 struct RenderSettings {
     shadows::ShadowSettings shadows;
     std::optional<render::AmbientLight> ambient;
     std::optional<float> anisotropy;
     std::optional<std::uint32_t> msaa;
+    std::optional<render::ShadowPath> shadowPath;
 };
+
+// render::ShadowPath's names, in its order: in the settings' "shadowPath" and on the command line (--shadow-path).
+inline constexpr const char* kShadowPathNames[] = {"forward", "screenSpace"};
+
+// One of kShadowPathNames, or nullopt.
+std::optional<render::ShadowPath> parseShadowPath(std::string_view name);
 
 // The sample counts --msaa and the settings' "msaa" take (render::FrameDesc::msaa); the device may offer fewer.
 inline constexpr std::uint32_t kMsaaCounts[] = {1, 2, 4, 8};

@@ -2,6 +2,7 @@
 
 #include "BackendOptions.hpp"
 #include "Interrupt.hpp"
+#include "RenderSettings.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/ReferenceLitPass.hpp"
@@ -46,8 +47,8 @@ struct ConfigurationResult {
 // Each pass's GPU time of one frame, in kBenchPassNames order; 0 for a pass the frame does not draw.
 std::array<double, kPasses> passTimes(const render::FrameStats& s, double referenceMs)
 {
-    return {s.depthPrepassMs.value_or(0.0), s.atlasPassMs.value_or(0.0), s.otherAtlasPassMs.value_or(0.0), 0.0,
-            s.litPassMs.value_or(0.0),     s.resolvePassMs.value_or(0.0), referenceMs, s.staticAtlasPassMs.value_or(0.0)};
+    return {s.depthPrepassMs.value_or(0.0),       s.atlasPassMs.value_or(0.0), s.otherAtlasPassMs.value_or(0.0),
+            s.screenSpaceShadowsMs.value_or(0.0), s.litPassMs.value_or(0.0),     s.resolvePassMs.value_or(0.0), referenceMs, s.staticAtlasPassMs.value_or(0.0)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -104,7 +105,8 @@ std::size_t passIndex(std::string_view name)
 double litOverReference(const ConfigurationResult& r)
 {
     const double reference = r.passes[passIndex("reference")].median();
-    const double ours = r.passes[passIndex("depth")].median() + r.passes[passIndex("lit")].median();
+    const double ours = r.passes[passIndex("depth")].median() + r.passes[passIndex("screenSpaceShadows")].median() +
+                        r.passes[passIndex("lit")].median();
     return reference > 0.0 ? ours / reference : 0.0;
 }
 
@@ -141,6 +143,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"warmup", options.warmup},
             {"depthPrepass", frame.depthPrepass},
             {"msaa", frame.msaa},
+            {"shadowPath", kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)]},
             {"cascadeCount", frame.shadows.directional.cascadeCount},
             {"atlasSize", frame.shadows.directional.atlasSize},
             {"frameMs", r.frame.median()},
@@ -158,18 +161,18 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
 void printTable(const std::vector<ConfigurationResult>& results, const SceneBenchOptions& options,
                 const render::FrameDesc& frame)
 {
-    fmt::print("\n{} at {}x{}, {} cascades in a {}^2 atlas, depth prepass {}, msaa {}; {} frames after {} warm-up "
-               "(medians; GPU timestamps per pass, wall time per frame)\n",
+    fmt::print("\n{} at {}x{}, {} cascades in a {}^2 atlas, depth prepass {}, msaa {}, {} shadows; {} frames after {} "
+               "warm-up (medians; GPU timestamps per pass, wall time per frame)\n",
                options.scene.scene, frame.width, frame.height, frame.shadows.directional.cascadeCount,
-               frame.shadows.directional.atlasSize, frame.depthPrepass ? "on" : "off", frame.msaa, options.frames,
-               options.warmup);
-    fmt::print("{:<24} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>11} {:>9}\n", "configuration", "frame ms", "depth",
-               "atlas", "other", "lit", "resolve", "reference", "ours / ref", "frame max");
+               frame.shadows.directional.atlasSize, frame.depthPrepass ? "on" : "off", frame.msaa,
+               kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)], options.frames, options.warmup);
+    fmt::print("{:<24} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>11} {:>9}\n", "configuration", "frame ms",
+               "depth", "atlas", "other", "ss shadow", "lit", "resolve", "reference", "ours / ref", "frame max");
     for (const ConfigurationResult& r : results)
-        fmt::print("{:<24} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>11.3f} {:>9.2f}\n",
+        fmt::print("{:<24} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>11.3f} {:>9.2f}\n",
                    r.configuration, r.frame.median(), r.passes[passIndex("depth")].median(),
                    r.passes[passIndex("directionalAtlas")].median(), r.passes[passIndex("otherAtlas")].median(),
-                   r.passes[passIndex("lit")].median(), r.passes[passIndex("resolve")].median(),
+                   r.passes[passIndex("screenSpaceShadows")].median(), r.passes[passIndex("lit")].median(), r.passes[passIndex("resolve")].median(),
                    r.passes[passIndex("reference")].median(), litOverReference(r), r.frame.max());
     if (results.size() == 2 && results[1].frame.median() > 0.0)
         fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,

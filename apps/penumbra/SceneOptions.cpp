@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <glm/geometric.hpp>
 #include <optional>
 
@@ -67,6 +68,23 @@ CLI::Validator msaaValidator()
             return fmt::format("'{}' is not a sample count: 1 (off), 2, 4 or 8", s);
         },
         "1|2|4|8");
+}
+
+CLI::Validator shadowPathValidator()
+{
+    return CLI::Validator(
+        [](std::string& s) {
+            return parseShadowPath(s) ? std::string()
+                                      : fmt::format("'{}' is not a shadow path: {}", s, fmt::join(kShadowPathNames, ", "));
+        },
+        "PATH");
+}
+
+std::string shadowPathHelp()
+{
+    return "Where directional shadows are evaluated: forward (in the lit pass) or screenSpace (collected after the "
+           "depth prepass by one full-screen pass into a screen-space shadow texture that the lit pass reads; needs "
+           "--prepass on); default: the settings file's shadowPath, or forward";
 }
 
 CLI::Validator filterValidator()
@@ -172,6 +190,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         .add_option("--msaa", options.msaa,
                     "Samples per pixel of the lit pass: 1 (off), 2, 4 or 8, as the device offers them; default 1")
         ->check(msaaValidator());
+    command.add_option("--shadow-path", options.shadowPath, shadowPathHelp())->check(shadowPathValidator());
     command.add_option("--dynamic", options.dynamicObjects,
                        "Make the objects of this name dynamic (repeatable; a glTF mesh's primitives NAME/0, NAME/1 "
                        "follow NAME): they are drawn into the realtime shadows every frame, never into static maps");
@@ -294,7 +313,10 @@ render::FrameDesc frameDesc(const SceneOptions& options)
         frame.ambient = settings.ambient.value_or(frame.ambient);
         frame.maxAnisotropy = settings.anisotropy.value_or(frame.maxAnisotropy);
         frame.msaa = settings.msaa.value_or(frame.msaa);
+        frame.shadowPath = settings.shadowPath.value_or(frame.shadowPath);
     }
+    if (!options.shadowPath.empty())
+        frame.shadowPath = parseShadowPath(options.shadowPath).value();
     if (!options.ambient.empty())
         frame.ambient = parseAmbientOption(options.ambient).value();
     frame.maxAnisotropy = options.anisotropy.value_or(frame.maxAnisotropy);
@@ -324,6 +346,8 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
     if (s.atlasPassMs && s.otherAtlasPassMs && s.litPassMs)
         fmt::print("; atlas pass {:.2f} ms, other atlas pass {:.2f} ms, lit pass {:.2f} ms", *s.atlasPassMs,
                    *s.otherAtlasPassMs, *s.litPassMs);
+    if (s.screenSpaceShadowsMs)
+        fmt::print(", screen-space shadows {:.2f} ms", *s.screenSpaceShadowsMs);
     if (s.resolvePassMs)
         fmt::print(", MSAA resolve {:.2f} ms", *s.resolvePassMs);
     fmt::print("\n");

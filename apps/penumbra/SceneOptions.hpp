@@ -15,7 +15,7 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --msaa, --filter, --light-size, --projection,
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --msaa, --shadow-path, --filter, --light-size, --projection,
 // --dynamic, --static-maps, --realtime-casters.
 struct SceneOptions {
     std::string scene = "test";
@@ -28,6 +28,7 @@ struct SceneOptions {
     std::string size = "1280x720";
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
     std::optional<std::uint32_t> msaa; // render::FrameDesc::msaa; empty: the settings file's, or 1
+    std::string shadowPath; // kShadowPathNames (render::FrameDesc::shadowPath); empty: the settings file's, or forward
     std::string filter;             // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
     std::string projection;         // shadows::projectionFromName; empty: the settings file's
@@ -43,6 +44,10 @@ CLI::Validator anisotropyValidator();
 
 // --msaa's check, for every command that takes it: a count of kMsaaCounts.
 CLI::Validator msaaValidator();
+
+// --shadow-path's check and help, for every command that takes it: one of kShadowPathNames.
+CLI::Validator shadowPathValidator();
+std::string shadowPathHelp();
 
 // --filter's check, for every command that takes it: a shadows::filterFromCommandName name.
 CLI::Validator filterValidator();
@@ -65,8 +70,8 @@ LoadedScene loadScene(const SceneOptions& options);
 // --baked's folder read (shadows::readStaticShadowBake), or nullopt without --baked.
 std::optional<shadows::StaticShadowBake> loadBake(const SceneOptions& options);
 
-// Size, shadow settings, ambient light, anisotropy and MSAA of the frame (--ambient, --anisotropy and --msaa over the
-// settings file's "ambient", "anisotropy" and "msaa"); throws
+// Size, shadow settings, ambient light, anisotropy, MSAA and shadow path of the frame (--ambient, --anisotropy, --msaa
+// and --shadow-path over the settings file's "ambient", "anisotropy", "msaa" and "shadowPath"); throws
 // rhi::Error naming the settings file and field.
 render::FrameDesc frameDesc(const SceneOptions& options);
 

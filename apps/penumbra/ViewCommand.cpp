@@ -65,6 +65,10 @@ void addViewCommand(CLI::App& app)
                      "Samples per pixel of the lit pass: 1 (off), 2, 4 or 8, as the device offers them")
         ->check(msaaValidator())
         ->capture_default_str();
+    view->add_option_function<std::string>(
+            "--shadow-path", [options](const std::string& name) { options->shadowPath = parseShadowPath(name).value(); },
+            shadowPathHelp())
+        ->check(shadowPathValidator());
     addValidateFlag(*view, options->validate);
     view->add_option("--filter", options->filter,
                      fmt::format("Every light's shadow filter: {}", shadows::filterCommandNames()))

@@ -6,6 +6,7 @@
 #include <array>
 #include <fmt/format.h>
 #include <imgui.h>
+#include <utility>
 
 namespace penumbra::viewer {
 namespace {
@@ -258,12 +259,31 @@ bool msaaChoice(std::uint32_t& msaa, std::uint32_t offered)
     return changed;
 }
 
+// Forward or screen-space directional shadows (render::FrameDesc::shadowPath).
+bool shadowPathChoice(render::ShadowPath& path)
+{
+    ImGui::TextUnformatted("directional shadows");
+    int value = static_cast<int>(path);
+    bool changed = false;
+    for (const auto& [choice, label] : {std::pair{render::ShadowPath::Forward, "forward"},
+                                        std::pair{render::ShadowPath::ScreenSpace, "screen-space"}}) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(label, &value, static_cast<int>(choice))) {
+            path = choice;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
 void statusLines(const PanelStatus& status)
 {
     ImGui::Text("frame %.1f ms", status.frameMs);
     if (status.stats.atlasPassMs && status.stats.otherAtlasPassMs && status.stats.litPassMs)
         ImGui::Text("atlas pass %.2f ms, other atlas %.2f ms, lit pass %.2f ms", *status.stats.atlasPassMs,
                     *status.stats.otherAtlasPassMs, *status.stats.litPassMs);
+    if (status.stats.screenSpaceShadowsMs)
+        ImGui::Text("screen-space shadows %.2f ms", *status.stats.screenSpaceShadowsMs);
     if (status.stats.resolvePassMs)
         ImGui::Text("MSAA resolve %.2f ms", *status.stats.resolvePassMs);
     ImGui::Text("caster draws %u, spot and point %u", status.stats.casterDraws, status.stats.otherCasterDraws);
@@ -287,6 +307,7 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
     changed |= ImGui::SliderFloat("texture anisotropy", &state.maxAnisotropy, 1.0f, 16.0f, "%.0f");
     changed |= msaaChoice(state.msaa, status.msaaCounts);
+    changed |= shadowPathChoice(state.shadowPath);
     if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
         changed |= shadowSettings(state.shadows);
         if (anyOnDemand(state) && ImGui::Button("redraw static maps")) {

@@ -32,6 +32,7 @@ struct ViewState {
     bool atlasOverlay = false;
     float maxAnisotropy = 8.0f; // render::FrameDesc::maxAnisotropy
     std::uint32_t msaa = 1;     // render::FrameDesc::msaa
+    render::ShadowPath shadowPath = render::ShadowPath::Forward; // render::FrameDesc::shadowPath
     bool redrawStaticMaps = false; // once: SceneRenderer::requestStaticShadowUpdate (the on-demand mode's button)
 };
 

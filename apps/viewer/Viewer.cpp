@@ -60,6 +60,7 @@ public:
             applied_.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
         }
         applied_.msaa = options.msaa;
+        applied_.shadowPath = options.shadowPath;
         const std::array litTargets{render::kLitColorFormat, render::kLitDepthFormat};
         status_.msaaCounts = device_->capabilities().sampleCounts(litTargets);
         edited_ = applied_;
@@ -137,6 +138,7 @@ private:
         frame.cascadeView = applied_.cascadeView;
         frame.maxAnisotropy = applied_.maxAnisotropy;
         frame.msaa = applied_.msaa;
+        frame.shadowPath = applied_.shadowPath;
         if (applied_.redrawStaticMaps)
             renderer_.requestStaticShadowUpdate();
         applied_.redrawStaticMaps = edited_.redrawStaticMaps = false;

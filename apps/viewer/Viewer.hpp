@@ -1,5 +1,6 @@
 #pragma once
 
+#include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <cstdint>
@@ -20,6 +21,7 @@ struct ViewerOptions {
     bool atlasOverlay = false;
     float maxAnisotropy = 8.0f;          // of texture sampling, 1 (off) to 16, as render::FrameDesc takes it
     std::uint32_t msaa = 1;              // samples per pixel of the lit pass, as render::FrameDesc takes it
+    render::ShadowPath shadowPath = render::ShadowPath::Forward; // as render::FrameDesc takes it
     bool validate = false;               // the validation layer / debug output (penumbra view --validate)
     std::string filter;             // every light's shadow filter (apps::applyLightOverrides); empty: their own
     std::optional<float> lightSize; // every light's source size

@@ -38,6 +38,14 @@ std::string litConstants(const LitShaderFeatures& features)
     text += fmt::format("#define PENUMBRA_LIT_MAPS {}\n", features.materialMaps);
     text += fmt::format("#define PENUMBRA_LOCAL_LIGHTS {}\n", features.localLights ? 1 : 0);
     text += fmt::format("#define PENUMBRA_STATIC_SHADOWS {}\n", features.staticShadows ? 1 : 0);
+    text += fmt::format("#define PENUMBRA_SCREEN_SPACE_PIXELS {}\n#define PENUMBRA_SCREEN_SPACE_EDGES {}\n"
+                        "#define PENUMBRA_SCREEN_SPACE_SHADOWS {}\n#define PENUMBRA_COLLECTED_LIGHTS {}\n",
+                        static_cast<int>(DirectionalShadowSource::ScreenSpace),
+                        static_cast<int>(DirectionalShadowSource::ScreenSpaceEdges),
+                        static_cast<int>(features.directionalShadows), maxCollectedDirectionalLights);
+    text += fmt::format("#define PENUMBRA_LIT_SAMPLES {}\n", features.samples);
+    text += fmt::format("#define PENUMBRA_BINDING_SCREEN_SPACE_SHADOWS {}\n#define PENUMBRA_BINDING_SCREEN_SPACE_DEPTH {}\n",
+                        kLitScreenSpaceShadowsBinding, kLitScreenSpaceDepthBinding);
     return text;
 }
 

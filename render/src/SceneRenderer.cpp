@@ -3,6 +3,7 @@
 #include "TextureSampling.hpp"
 #include "passes/DepthPrepass.hpp"
 #include "passes/LitPipelines.hpp"
+#include "passes/ScreenSpaceShadowPass.hpp"
 #include "static/StaticMapHashes.hpp"
 #include "static/StaticShadowCache.hpp"
 #include "static/StaticTileCache.hpp"
@@ -12,6 +13,7 @@
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 #include "penumbra/shadows/OtherShadowUniforms.hpp"
 #include "penumbra/shadows/PoissonDisk.hpp"
+#include "penumbra/shadows/StaticShadowUniforms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -296,10 +298,12 @@ std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& 
 std::unique_ptr<rhi::Texture> depthTarget(rhi::Device& device, const FrameDesc& frame, std::uint32_t samples,
                                           const std::string& name)
 {
+    // The single-sampled depth is what the screen-space shadow collection reads.
     return device.createTexture({.width = frame.width,
                                  .height = frame.height,
                                  .format = kLitDepthFormat,
-                                 .usage = rhi::TextureUsage::RenderTarget,
+                                 .usage = samples == 1 ? rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget
+                                                       : rhi::TextureUsage::RenderTarget,
                                  .samples = samples,
                                  .debugName = name});
 }
@@ -318,6 +322,27 @@ void checkMsaa(const FrameDesc& frame, const rhi::Capabilities& caps)
                                                 rhi::formatName(kLitColorFormat), rhi::formatName(kLitDepthFormat)));
 }
 
+void checkShadowPath(const FrameDesc& frame)
+{
+    if (frame.shadowPath == ShadowPath::ScreenSpace && !frame.depthPrepass)
+        throw rhi::Error("FrameDesc::shadowPath: the screen-space shadow path collects shadows from the depth "
+                         "prepass's depth; it needs FrameDesc::depthPrepass");
+}
+
+// Why a screen-space frame's directional shadows cannot all be collected (a light past the collected ones has
+// realtime or static shadows), or nullopt.
+std::optional<std::string> uncollectedShadows(const scene::Scene& scene, const shadows::DirectionalShadowPlan& plan,
+                                              const shadows::StaticShadowUniforms& staticMaps)
+{
+    const std::size_t count = std::min<std::size_t>(plan.shadowSlots.size(), maxLitDirectionalLights);
+    for (std::size_t i = maxCollectedDirectionalLights; i < count; ++i)
+        if (plan.shadowSlots[i] >= 0 || staticMaps.directionalLights[i].x >= 0.0f)
+            return fmt::format("screen-space shadows: directional light {} ('{}') has shadows, but the screen-space "
+                               "shadow texture holds lights 0 to {}; the frame is drawn with forward shadows",
+                               i, scene.lights[i].name, maxCollectedDirectionalLights - 1);
+    return std::nullopt;
+}
+
 } // namespace
 
 SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
@@ -328,7 +353,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
       staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
       commands_(device.createCommandList()),
-      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(7) : nullptr),
+      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(8) : nullptr),
       uniforms_(device, "lit pass uniforms")
 {
     directionalStaticTiles_ =
@@ -337,6 +362,13 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
 }
 
 SceneRenderer::~SceneRenderer() = default;
+
+const rhi::Texture& SceneRenderer::screenSpaceShadowImage() const
+{
+    if (!screenSpace_)
+        throw rhi::Error("screenSpaceShadowImage: no frame has been drawn with ShadowPath::ScreenSpace");
+    return screenSpace_->shadows();
+}
 
 const shadows::ShadowAtlas& SceneRenderer::staticDirectionalAtlas() const { return staticShadows_->directionalAtlas(); }
 
@@ -398,13 +430,23 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, frame.msaa);
     if (depthPrepass_->samples() != frame.msaa)
         depthPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, frame.msaa);
+    const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
+    if (firstScreenSpace) {
+        receiverPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, true);
+        screenSpace_ = std::make_unique<ScreenSpaceShadowPass>(device_);
+    }
     const std::uint32_t litSamples = multisampledColor_ ? multisampledColor_->desc().samples : 1;
-    if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height && litSamples == frame.msaa)
+    if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height && litSamples == frame.msaa) {
+        if (firstScreenSpace)
+            screenSpace_->prepare(*depth_);
         return;
+    }
     lit_ = colorTarget(device_, frame, "lit image");
     cascades_ = colorTarget(device_, frame, "cascade view");
     visibility_ = colorTarget(device_, frame, "visibility view");
     depth_ = depthTarget(device_, frame, 1, "lit depth");
+    if (screenSpace_)
+        screenSpace_->prepare(*depth_);
     multisampledColor_.reset();
     multisampledDepth_.reset();
     if (frame.msaa > 1) {
@@ -473,6 +515,25 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
     return static_cast<int>(directional + local);
 }
 
+void SceneRenderer::bindShadowMaps(rhi::CommandList& commands, const rhi::UniformSlice& shadowUniforms,
+                                   const rhi::UniformSlice& otherShadowUniforms,
+                                   const rhi::UniformSlice& staticShadowUniforms,
+                                   const rhi::UniformSlice& poissonDisks) const
+{
+    rhi::bindUniform(commands, kLitShadowBinding, shadowUniforms);
+    commands.bindTexture(kLitAtlasBinding, atlas_->texture(), atlas_->sampler());
+    rhi::bindUniform(commands, kLitOtherShadowBinding, otherShadowUniforms);
+    commands.bindTexture(kLitOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
+    commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
+    commands.bindTexture(kLitShadowCubeDepthsBinding, shadowCubes_->texture(), shadowCubes_->depthSampler());
+    rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonDisks);
+    rhi::bindUniform(commands, kLitStaticShadowBinding, staticShadowUniforms);
+    const shadows::ShadowAtlas& staticDirectional = staticShadows_->directionalAtlas();
+    const shadows::ShadowAtlas& staticOther = staticShadows_->otherAtlas();
+    commands.bindTexture(kLitStaticDirectionalAtlasBinding, staticDirectional.texture(), staticDirectional.sampler());
+    commands.bindTexture(kLitStaticOtherAtlasBinding, staticOther.texture(), staticOther.sampler());
+}
+
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
                                   LitPipelines& pipelines, const rhi::UniformSlice& frameSlice,
                                   const LitShaderFeatures& features, const rhi::UniformSlice& shadowUniforms,
@@ -487,6 +548,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     commands.beginPass(
         {.framebuffer = &target, .clearColor = visibility ? kUndecided : kBackground, .clearDepth = !prepassed});
     const rhi::UniformSlice poissonDisks = uniforms_.push(shadows::poissonDiskUniforms());
+    const DirectionalShadowSource directionalShadows = features.directionalShadows;
     const rhi::Pipeline* bound = nullptr;
     for (const std::uint32_t index : drawOrder_) {
         const scene::Object& object = scene.objects[index];
@@ -499,18 +561,12 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
             commands.bindPipeline(*pipeline);
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
-            rhi::bindUniform(commands, kLitShadowBinding, shadowUniforms);
-            commands.bindTexture(kLitAtlasBinding, atlas_->texture(), atlas_->sampler());
-            rhi::bindUniform(commands, kLitOtherShadowBinding, otherShadowUniforms);
-            commands.bindTexture(kLitOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
-            commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
-            commands.bindTexture(kLitShadowCubeDepthsBinding, shadowCubes_->texture(), shadowCubes_->depthSampler());
-            rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonDisks);
-            rhi::bindUniform(commands, kLitStaticShadowBinding, staticShadowUniforms);
-            const shadows::ShadowAtlas& staticDirectional = staticShadows_->directionalAtlas();
-            const shadows::ShadowAtlas& staticOther = staticShadows_->otherAtlas();
-            commands.bindTexture(kLitStaticDirectionalAtlasBinding, staticDirectional.texture(), staticDirectional.sampler());
-            commands.bindTexture(kLitStaticOtherAtlasBinding, staticOther.texture(), staticOther.sampler());
+            bindShadowMaps(commands, shadowUniforms, otherShadowUniforms, staticShadowUniforms, poissonDisks);
+            if (directionalShadows != DirectionalShadowSource::Forward)
+                commands.bindTexture(kLitScreenSpaceShadowsBinding, screenSpace_->shadows(), screenSpace_->sampler());
+            // Only where the lit pass does not draw into it: multisampled, the single-sampled depth is no attachment.
+            if (directionalShadows == DirectionalShadowSource::ScreenSpaceEdges)
+                commands.bindTexture(kLitScreenSpaceDepthBinding, screenSpace_->depth(), screenSpace_->sampler());
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, objectSlices_[index]);
@@ -548,6 +604,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     validate(frame.ambient);
     checkPlansFitFrame(plans, frame.shadows);
     checkMsaa(frame, device_.capabilities());
+    checkShadowPath(frame);
     const AnisotropyChoice anisotropy = chooseAnisotropy(frame.maxAnisotropy, device_.capabilities());
     const int visibilityLight = frame.visibilityOf ? litLightIndex(*frame.visibilityOf) : -1;
     prepareTargets(frame, plans);
@@ -616,23 +673,49 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     const rhi::UniformSlice litFrame = uniforms_.push(litFrameUniforms);
     LitShaderFeatures features = frameShaderFeatures(litFrameUniforms, plan_.uniforms, otherPlan_.uniforms,
                                                      staticShadows_->plan().uniforms);
-    if (frame.depthPrepass)
+    const bool multisampled = frame.msaa > 1;
+    std::optional<std::string> uncollected;
+    if (frame.shadowPath == ShadowPath::ScreenSpace)
+        uncollected = uncollectedShadows(scene, plan_, staticShadows_->plan().uniforms);
+    if (uncollected) {
+        notes_.push_back(*uncollected);
+        stats.notes.push_back(*uncollected);
+    }
+    const bool screenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !uncollected;
+    // Single-sampled, the receiver prepass is the depth prepass; with MSAA it adds the one-sample depth the
+    // collection reads.
+    if (frame.depthPrepass && (multisampled || !screenSpace))
         depthPrepass_->record(commands, *prepassTarget_, gpuScene_, drawOrder_, litFrame, objectSlices_);
+    if (screenSpace)
+        receiverPrepass_->record(commands, screenSpace_->receiverTarget(), gpuScene_, drawOrder_, litFrame,
+                                 objectSlices_);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 4);
-    const bool multisampled = frame.msaa > 1;
+    if (screenSpace) {
+        screenSpace_->begin(commands, features,
+                            uniforms_.push(screenSpaceShadowUniforms(litFrameUniforms, frame.width, frame.height)));
+        bindShadowMaps(commands, shadowUniforms, otherShadowUniforms, staticShadowUniforms,
+                       uniforms_.push(shadows::poissonDiskUniforms()));
+        screenSpace_->draw(commands);
+        features.directionalShadows =
+            multisampled ? DirectionalShadowSource::ScreenSpaceEdges : DirectionalShadowSource::ScreenSpace;
+    }
+    if (timestamps_)
+        commands.writeTimestamp(*timestamps_, 5);
     features.depthPrepassed = frame.depthPrepass;
     recordLitPass(commands, *litTarget_, multisampled ? *multisampledLitPipelines_ : *litPipelines_, litFrame, features,
                   shadowUniforms, otherShadowUniforms, staticShadowUniforms);
-    // The debug views draw single-sampled without the prepass: they clear the single-sampled depth.
+    // The debug views draw single-sampled without the prepass, with forward shadows: they clear the single-sampled
+    // depth.
     features.depthPrepassed = false;
+    features.directionalShadows = DirectionalShadowSource::Forward;
     features.view = LitView::Cascades;
     if (timestamps_)
-        commands.writeTimestamp(*timestamps_, 5);
+        commands.writeTimestamp(*timestamps_, 6);
     if (multisampled)
         commands.resolveTexture(*multisampledColor_, *lit_);
     if (timestamps_)
-        commands.writeTimestamp(*timestamps_, 6);
+        commands.writeTimestamp(*timestamps_, 7);
     if (frame.cascadeView)
         recordLitPass(commands, *cascadeTarget_, *litPipelines_,
                       uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)),
@@ -653,9 +736,11 @@ features, shadowUniforms, otherShadowUniforms, staticShadowUniforms);
         stats.otherAtlasPassMs = (ns[3] - ns[2]) * 1e-6;
         if (frame.depthPrepass)
             stats.depthPrepassMs = (ns[4] - ns[3]) * 1e-6;
-        stats.litPassMs = (ns[5] - ns[4]) * 1e-6;
+        if (screenSpace)
+            stats.screenSpaceShadowsMs = (ns[5] - ns[4]) * 1e-6;
+        stats.litPassMs = (ns[6] - ns[5]) * 1e-6;
         if (multisampled)
-            stats.resolvePassMs = (ns[6] - ns[5]) * 1e-6;
+            stats.resolvePassMs = (ns[7] - ns[6]) * 1e-6;
     }
     return stats;
 }

@@ -151,10 +151,15 @@ std::string Conventions::glslHeader() const
         "const mat4 PENUMBRA_CLIP_TO_TEXTURE = mat4({});\n"
         "bool penumbraIsNearer(float depth, float than) {{ return depth {} than; }}\n"
         "// Pancaking: moves clip-space points in front of the near plane onto it.\n"
-        "vec4 penumbraClampToNearPlane(vec4 clip) {{ clip.z = {}(clip.z, clip.w * PENUMBRA_NEAR_CLIP_VALUE); return clip; }}\n",
+        "vec4 penumbraClampToNearPlane(vec4 clip) {{ clip.z = {}(clip.z, clip.w * PENUMBRA_NEAR_CLIP_VALUE); return clip; }}\n"
+        "// Screen space back to NDC: a fragment's gl_FragCoord.xy in a width x height target (row 0 at the top,\n"
+        "// NDC +y up) and a depth read from a depth texture (the depth range's inverse; reversed-Z is the\n"
+        "// projection's, which the inverse view-projection undoes).\n"
+        "vec2 penumbraFragCoordToNdc(vec2 fragCoord, vec2 size) {{ return vec2(2.0, -2.0) * fragCoord / size + vec2(-1.0, 1.0); }}\n"
+        "float penumbraWindowDepthToNdc(float depth) {{ return {}; }}\n",
         reversedZ_ ? 1 : 0, range_ == DepthRange::ZeroToOne ? 1 : 0, glslFloat(nearClipValue()),
         glslFloat(nearDepth()), glslFloat(farDepth()), matrix, nearerIsGreater ? ">" : "<",
-        reversedZ_ ? "min" : "max");
+        reversedZ_ ? "min" : "max", range_ == DepthRange::ZeroToOne ? "depth" : "2.0 * depth - 1.0");
 }
 
 } // namespace penumbra::rhi

@@ -13,13 +13,23 @@ constexpr std::uint32_t kLocations[] = {0, 2, 3, 5}; // the vertex attributes de
 
 std::uint32_t pipelineIndex(bool doubleSided, bool clip) { return (doubleSided ? 1u : 0u) + (clip ? 2u : 0u); }
 
+// receiver_prepass.frag, opaque or with the clip materials' alpha test.
+rhi::ShaderSource receiverFragment(bool clip)
+{
+    rhi::ShaderSource source = litShader("receiver_prepass.frag");
+    source.includes.push_back({"receiver_prepass_variant.glsl", fmt::format("#define PENUMBRA_RECEIVER_CLIP {}\n", clip ? 1 : 0)});
+    return source;
+}
+
 } // namespace
 
-DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::uint32_t samples)
-    : samples_(samples), vertex_(device.createShader(litShader("depth_prepass.vert"))),
+DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::uint32_t samples, bool receivers)
+    : samples_(samples), receivers_(receivers),
+      vertex_(device.createShader(litShader(receivers ? "receiver_prepass.vert" : "depth_prepass.vert"))),
       // Depth only, no discard: early depth testing stays on.
-      opaqueFragment_(device.createShader(shaders::load("shadow_caster_opaque.frag"))),
-      clipFragment_(device.createShader(litShader("depth_prepass_clip.frag")))
+      opaqueFragment_(device.createShader(receivers ? receiverFragment(false)
+                                                    : shaders::load("shadow_caster_opaque.frag"))),
+      clipFragment_(device.createShader(receivers ? receiverFragment(true) : litShader("depth_prepass_clip.frag")))
 {
     rhi::PipelineDesc desc;
     desc.vertex = vertex_.get();
@@ -30,12 +40,14 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::ui
     });
     desc.depthFormat = depthFormat;
     desc.samples = samples;
+    if (receivers)
+        desc.colorTargets = {rhi::ColorTarget{kReceiverDerivativeFormat}, rhi::ColorTarget{kReceiverDerivativeFormat}};
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
     for (const bool clip : {false, true})
         for (const bool doubleSided : {false, true}) {
             desc.fragment = clip ? clipFragment_.get() : opaqueFragment_.get();
             desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-            desc.debugName = fmt::format("depth prepass ({}, {}{})", clip ? "clip" : "opaque",
+            desc.debugName = fmt::format("depth prepass ({}{}, {}{})", receivers ? "receivers, " : "", clip ? "clip" : "opaque",
                                          doubleSided ? "double-sided" : "culled",
                                          samples > 1 ? fmt::format(", {}x MSAA", samples) : std::string());
             pipelines_[pipelineIndex(doubleSided, clip)] = device.createPipeline(desc);

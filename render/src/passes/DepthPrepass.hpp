@@ -11,16 +11,22 @@
 
 namespace penumbra::render {
 
+// The receiver prepass's derivative targets: full float, the lit pass's own values.
+inline constexpr rhi::Format kReceiverDerivativeFormat = rhi::Format::RGBA32F;
+
 // The depth prepass: opaque and clip objects depth-only, clip ones cut with the lit pass's alpha, so that the lit
 // pass after it (equal depth test, no depth write, no discard) shades each visible pixel once, however many leaf
 // cards overlap it. Blended objects are not drawn: they blend over the opaque depth in the lit pass.
 class DepthPrepass {
 public:
     // `samples`: the depth target's sample count (FrameDesc::msaa); each sample's depth is the one the lit pass
-    // tests against, so the prepass rasterizes with the lit pass's samples.
-    DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::uint32_t samples);
+    // tests against, so the prepass rasterizes with the lit pass's samples. With `receivers` (the screen-space
+    // shadow path) it also writes the world position's screen derivatives, dFdxFine and dFdyFine as lit.frag takes
+    // them, into two kReceiverDerivativeFormat colour targets (receiver_prepass.frag).
+    DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::uint32_t samples, bool receivers = false);
 
     std::uint32_t samples() const { return samples_; }
+    bool receivers() const { return receivers_; }
 
     // Clears `target` (depth only) and draws `order`'s objects that are not blended; `frame` is the lit pass's
     // Frame block and objects[i] object i's Object block (shaders/lit.glsl).
@@ -30,6 +36,7 @@ public:
 
 private:
     std::uint32_t samples_;
+    bool receivers_;
     std::unique_ptr<rhi::Shader> vertex_, opaqueFragment_, clipFragment_;
     // Culled or not (glTF doubleSided), opaque or clip (pipelineIndex in DepthPrepass.cpp).
     std::array<std::unique_ptr<rhi::Pipeline>, 4> pipelines_;

@@ -16,6 +16,8 @@ namespace penumbra::render {
 
 inline constexpr std::uint32_t maxLitDirectionalLights = 8;
 inline constexpr std::uint32_t maxLitLocalLights = 16; // spot and point lights together
+// The screen-space shadow texture's channels: directional lights 0 to 3 (FrameDesc::shadowPath).
+inline constexpr std::uint32_t maxCollectedDirectionalLights = 4;
 
 // The lit pass's colour (SceneRenderer::litImage(), sRGB-encoded by the shader) and depth formats; with
 // FrameDesc::msaa above 1 both are multisampled, so the device must offer that count for both.
@@ -112,11 +114,22 @@ inline constexpr std::uint32_t kLitStaticDirectionalAtlasBinding = kLitStaticSha
 inline constexpr std::uint32_t kLitStaticOtherAtlasBinding = kLitStaticShadowBinding + 2;
 // The base colour map again, through GpuScene::coverageSampler: the alpha every pass cuts and blends by.
 inline constexpr std::uint32_t kLitCoverageMapBinding = kLitStaticShadowBinding + 3;
+// The screen-space shadow texture (DirectionalShadowSource::ScreenSpace), and with ScreenSpaceEdges the single-sampled
+// depth it was collected from.
+inline constexpr std::uint32_t kLitScreenSpaceShadowsBinding = kLitCoverageMapBinding + 1;
+inline constexpr std::uint32_t kLitScreenSpaceDepthBinding = kLitCoverageMapBinding + 2;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {
     return kLitMaterialMapBinding + static_cast<std::uint32_t>(slot);
 }
+
+// Where the lit shader's directional shadows come from (FrameDesc::shadowPath). Forward: evaluated per fragment.
+// ScreenSpace: read at the fragment's pixel from the screen-space shadow texture (ScreenSpaceShadowPass), which
+// holds each of the first maxCollectedDirectionalLights lights' attenuation for the surface the depth prepass left
+// there. ScreenSpaceEdges (multisampled lit pass): read where the fragment covers every sample of its pixel and the
+// collection's depth is its own, evaluated forward elsewhere, so edge pixels do not take the surface behind's shadow.
+enum class DirectionalShadowSource : std::uint8_t { Forward = 0, ScreenSpace = 1, ScreenSpaceEdges = 2 };
 
 // Which parts of the lit shader are compiled in. Mesa's llvmpipe and lavapipe run both sides of every branch under
 // an execution mask and every loop body at least once, whatever the uniforms say (Mesa,
@@ -133,6 +146,10 @@ struct LitShaderFeatures {
     bool tentFilters = true;   // PCF 3x3, 5x5, 7x7 (PCF 2x2 is always compiled in)
     bool softFilters = true;   // Poisson and PCSS
     bool shadowCubes = true;   // point lights' shadows in cube maps (shadows::PointShadowMode::CubeMap)
+    DirectionalShadowSource directionalShadows = DirectionalShadowSource::Forward;
+    // The lit pass's samples per pixel (FrameDesc::msaa; LitPipelines sets it): ScreenSpaceEdges tells a fragment
+    // that covers its whole pixel by it.
+    std::uint32_t samples = 1;
 
     bool operator==(const LitShaderFeatures&) const = default;
 };
@@ -142,8 +159,8 @@ std::uint32_t litMaterialMaps(const scene::Material& material);
 
 // The lit pass shader `fileName` ("lit.vert", "lit.frag") with the includes "lit_constants.glsl" that lit.glsl reads
 // (the material texture bindings and TextureSlot numbers above as GLSL macros, so the numbers are written once,
-// here, and `features` as PENUMBRA_DEPTH_PREPASSED, PENUMBRA_LIT_VIEW, PENUMBRA_LIT_MAPS, PENUMBRA_LOCAL_LIGHTS and
-// PENUMBRA_STATIC_SHADOWS) and "shadow_constants.glsl" (the filters, with PENUMBRA_TENT_FILTERS,
+// here, and `features` as PENUMBRA_DEPTH_PREPASSED, PENUMBRA_LIT_VIEW, PENUMBRA_LIT_MAPS, PENUMBRA_LOCAL_LIGHTS,
+// PENUMBRA_STATIC_SHADOWS and PENUMBRA_SCREEN_SPACE_SHADOWS) and "shadow_constants.glsl" (the filters, with PENUMBRA_TENT_FILTERS,
 // PENUMBRA_SOFT_FILTERS and PENUMBRA_SHADOW_CUBES).
 rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& features = {});
 

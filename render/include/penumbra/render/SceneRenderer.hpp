@@ -26,8 +26,15 @@ namespace penumbra::render {
 
 class DepthPrepass;
 class LitPipelines;
+class ScreenSpaceShadowPass;
 class StaticShadowCache;
 class StaticTileCache;
+
+// Where the lit pass's directional shadows are evaluated. Forward: in the lit pass, per fragment. ScreenSpace: after
+// the depth prepass, one full-screen pass collects the cascaded shadows of directional lights 0 to
+// maxCollectedDirectionalLights - 1 into a screen-space shadow texture (SceneRenderer::screenSpaceShadowImage()),
+// which the lit pass reads at its pixel; the same picture as Forward. Spot and point shadows stay forward.
+enum class ShadowPath : std::uint8_t { Forward, ScreenSpace };
 
 struct FrameDesc {
     std::uint32_t width = 1280;
@@ -52,6 +59,11 @@ struct FrameDesc {
     // and alpha-tested edges stay as hard as their discard (no alpha to coverage). The cascade and visibility views
     // stay single-sampled.
     std::uint32_t msaa = 1;
+    // ShadowPath::ScreenSpace needs depthPrepass (render() throws rhi::Error without it). A frame whose directional
+    // lights past the collected ones have shadows is drawn Forward, and its notes say so. With msaa above 1 the
+    // collection is single-sampled, per pixel; fragments on geometry edges (not covering all their samples, or not
+    // the collected surface) evaluate their shadows forward instead of taking the surface behind's.
+    ShadowPath shadowPath = ShadowPath::Forward;
 };
 
 struct FrameStats {
@@ -61,6 +73,7 @@ struct FrameStats {
     std::optional<double> depthPrepassMs;           // GPU time, where the device has timestamps (and a prepass ran)
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
     std::optional<double> otherAtlasPassMs;
+    std::optional<double> screenSpaceShadowsMs; // the screen-space shadow collection (ShadowPath::ScreenSpace)
     std::optional<double> litPassMs;
     std::optional<double> resolvePassMs; // the multisampled lit image into litImage(), where FrameDesc::msaa > 1
     std::optional<double> staticAtlasPassMs;        // the static maps drawn this frame, where the device has timestamps
@@ -98,8 +111,8 @@ public:
     // render(camera, frame, planShadows(camera, frame)).
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
     // Throws rhi::Error for settings or ambient light out of range (naming the field; maxAnisotropy below 1 too), a
-    // zero-sized frame, plans whose atlases do not match the frame's settings, or a visibility view of a light the lit
-    // pass does not draw; rhi::UnsupportedError for an msaa count the device does not offer.
+    // zero-sized frame, plans whose atlases do not match the frame's settings, a visibility view of a light the lit
+    // pass does not draw, or ShadowPath::ScreenSpace without the depth prepass; rhi::UnsupportedError for an msaa count the device does not offer.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
     const rhi::Texture& litImage() const { return *lit_; }
@@ -107,6 +120,9 @@ public:
     const GpuScene& gpuScene() const { return gpuScene_; }
     const rhi::Texture& cascadeImage() const { return *cascades_; }
     const rhi::Texture& visibilityImage() const { return *visibility_; }
+    // The last ShadowPath::ScreenSpace frame's screen-space shadow texture: RGBA32F, channel i directional light i's
+    // attenuation at the pixel's surface (1 = lit; 1 where nothing is drawn). Throws rhi::Error before such a frame.
+    const rhi::Texture& screenSpaceShadowImage() const;
     // 16 texels wide where the last frame used no tile of it (no shadowed directional light).
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
@@ -143,6 +159,11 @@ private:
     // After the depth prepass (features.depthPrepassed) the opaque objects are drawn with an equal depth test into
     // the prepass's depth; otherwise the target's depth is cleared. Each object takes `features` with its material's
     // maps.
+    // The lit pass's shadow bindings (atlases, cubes, their blocks, the Poisson disks, static maps), which the
+    // screen-space collection shares.
+    void bindShadowMaps(rhi::CommandList& commands, const rhi::UniformSlice& shadowUniforms,
+                        const rhi::UniformSlice& otherShadowUniforms, const rhi::UniformSlice& staticShadowUniforms,
+                        const rhi::UniformSlice& poissonDisks) const;
     void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
                        const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
                        const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms,
@@ -158,6 +179,10 @@ private:
     std::unique_ptr<LitPipelines> litPipelines_;
     std::unique_ptr<LitPipelines> multisampledLitPipelines_;
     std::unique_ptr<DepthPrepass> depthPrepass_; // with the lit pass's sample count
+    // ShadowPath::ScreenSpace, made when a frame first asks for it: the single-sampled prepass with receivers (after
+    // the multisampled depthPrepass_ with MSAA, instead of it without) and the collection.
+    std::unique_ptr<DepthPrepass> receiverPrepass_;
+    std::unique_ptr<ScreenSpaceShadowPass> screenSpace_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
     // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.
     std::unique_ptr<StaticTileCache> directionalStaticTiles_;
