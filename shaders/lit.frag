@@ -11,6 +11,7 @@
 #include "other_shadows.glsl"
 #include "static_shadows.glsl"
 #include "lit.glsl"
+#include "directional_light_shadow.glsl"
 #include "material.glsl"
 #include "collected_shadows.glsl"
 
@@ -201,18 +202,12 @@ void main()
         const int slot = receives ? int(frame.lightDirection[i].w) : -1;
 #if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_PIXELS
         const float attenuation = receives ? collectedShadow(collected, i) : 1.0;
+#elif PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_EDGES
+        const float attenuation = fromCollection ? (receives ? collectedShadow(collected, i) : 1.0)
+                                                 : directionalLightShadow(i, slot, receives, cascade, vPosition,
+                                                                          geometric, l);
 #else
-        float attenuation;
-#if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_EDGES
-        if (fromCollection)
-            attenuation = receives ? collectedShadow(collected, i) : 1.0;
-        else
-#endif
-#if PENUMBRA_STATIC_SHADOWS
-        attenuation = directionalAttenuation(i, slot, receives, cascade, vPosition, geometric, l);
-#else
-        attenuation = directionalShadowAttenuation(slot, cascade, vPosition, geometric, l);
-#endif
+        const float attenuation = directionalLightShadow(i, slot, receives, cascade, vPosition, geometric, l);
 #endif
         color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }

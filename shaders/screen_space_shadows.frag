@@ -17,6 +17,7 @@
 #include "other_shadows.glsl"
 #include "static_shadows.glsl"
 #endif
+#include "directional_light_shadow.glsl"
 #include "material.glsl"
 
 // penumbra::render::ScreenSpaceShadowUniforms.
@@ -58,10 +59,6 @@ void main()
     for (int i = 0; i < collection.config.x; ++i) {
         const vec3 l = -collection.lightDirection[i].xyz;
         const int slot = int(collection.lightDirection[i].w);
-#if PENUMBRA_STATIC_SHADOWS
-        outShadows[i] = directionalAttenuation(i, slot, true, cascade, position, geometric, l);
-#else
-        outShadows[i] = directionalShadowAttenuation(slot, cascade, position, geometric, l);
-#endif
+        outShadows[i] = directionalLightShadow(i, slot, true, cascade, position, geometric, l);
     }
 }
