@@ -8,7 +8,7 @@
 #include "shadow_filter.glsl"
 #include "soft_shadows.glsl"
 #include "directional_shadows.glsl"
-#include "other_shadows.glsl"
+#include "local_shadows.glsl"
 #include "static_shadows.glsl"
 #include "lit.glsl"
 #include "directional_light_shadow.glsl"
@@ -131,7 +131,7 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
     const vec3 lightPosition = frame.localPosition[i].xyz;
     const vec3 axis = frame.localAxis[i].xyz;
     const float visibility =
-        realtime ? otherShadowVisibility(int(shadow.z), light.isPoint, lightPosition, axis, vPosition, geometric) : 1.0;
+        realtime ? localShadowVisibility(int(shadow.z), light.isPoint, lightPosition, axis, vPosition, geometric) : 1.0;
     return vec4(vec3(fromStatic ? min(visibility, staticLocalVisibility(int(map.x), light.isPoint, lightPosition, axis,
                                                                         vPosition, geometric))
                                 : visibility),
@@ -224,7 +224,7 @@ void main()
                                                    geometric, globalStrength);
 #else
         const float attenuation =
-            receives ? otherShadowAttenuation(frame.localShadow[i].zw, light.isPoint, frame.localPosition[i].xyz,
+            receives ? localShadowAttenuation(frame.localShadow[i].zw, light.isPoint, frame.localPosition[i].xyz,
                                               frame.localAxis[i].xyz, vPosition, geometric, globalStrength)
                      : 1.0;
 #endif

@@ -14,7 +14,7 @@
 #include "soft_shadows.glsl"
 #include "directional_shadows.glsl"
 #if PENUMBRA_STATIC_SHADOWS
-#include "other_shadows.glsl"
+#include "local_shadows.glsl"
 #include "static_shadows.glsl"
 #endif
 #include "directional_light_shadow.glsl"

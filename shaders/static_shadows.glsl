@@ -2,25 +2,25 @@
 // between frames or baked, mixed with the realtime shadow as Unity's shadow masks are (Catlike Coding's "Shadow
 // Masks" tutorial, MixBakedAndRealtimeShadows in its "Always" mode): the realtime shadow, faded out beyond the
 // shadow distance, and the static one combine by taking the darker, then the light's strength applies; a light
-// without realtime tiles keeps its static shadow. Needs directional_shadows.glsl and other_shadows.glsl first.
+// without realtime tiles keeps its static shadow. Needs directional_shadows.glsl and local_shadows.glsl first.
 
 layout(std140, binding = PENUMBRA_BINDING_STATIC_SHADOWS) uniform StaticShadows {
     mat4 directionalWorldToMap[4];
     vec4 directionalBounds[4];
     vec4 directionalLights[8];
-    mat4 otherWorldToMap[64];
-    vec4 otherBounds[64];
-    vec4 otherData[64];
+    mat4 localWorldToMap[64];
+    vec4 localBounds[64];
+    vec4 localData[64];
     vec4 localLights[16];
     vec4 atlasSizes;
     vec4 directionalSoft[4];
     vec4 directionalSource[4];
-    vec4 otherSoft[64];
+    vec4 localSoft[64];
 } staticShadows;
 
 // Read with texelFetch (shadow_filter.glsl), as the realtime atlases.
 layout(binding = PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS) uniform sampler2D staticDirectionalAtlas;
-layout(binding = PENUMBRA_BINDING_STATIC_OTHER_ATLAS) uniform sampler2D staticOtherAtlas;
+layout(binding = PENUMBRA_BINDING_STATIC_LOCAL_ATLAS) uniform sampler2D staticLocalAtlas;
 
 // Directional light `light`'s static map at a receiver (1 = lit), its normal offset as the cascades' over the
 // map's texel diagonal, filtered as the light's cascades are.
@@ -46,11 +46,11 @@ float staticLocalVisibility(int firstTile, bool isPoint, vec3 lightPosition, vec
 {
     const vec3 fromLight = position - lightPosition;
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
-    const vec4 data = staticShadows.otherData[local.tile];
-    const mat4 m = staticShadows.otherWorldToMap[local.tile];
+    const vec4 data = staticShadows.localData[local.tile];
+    const mat4 m = staticShadows.localWorldToMap[local.tile];
     const vec4 p = localShadowPosition(m, data.x, local.plane, fromLight, position, normal);
-    return filterLocalTile(staticOtherAtlas, staticShadows.atlasSizes.y, m, p, staticShadows.otherBounds[local.tile],
-                           int(data.y), staticShadows.otherSoft[local.tile]);
+    return filterLocalTile(staticLocalAtlas, staticShadows.atlasSizes.y, m, p, staticShadows.localBounds[local.tile],
+                           int(data.y), staticShadows.localSoft[local.tile]);
 }
 
 // Directional light `light` (the lit pass's index; `slot` its realtime shadow slot or -1) at a receiver, 1 = lit.
@@ -75,8 +75,8 @@ float localAttenuation(int light, vec2 shadow, bool receives, bool isPoint, vec3
     if (!receives)
         return 1.0;
     if (map.x < 0.0)
-        return otherShadowAttenuation(shadow, isPoint, lightPosition, axis, position, normal, strength);
-    const float realtime = otherRealtimeShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal, strength);
+        return localShadowAttenuation(shadow, isPoint, lightPosition, axis, position, normal, strength);
+    const float realtime = localRealtimeShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal, strength);
     return mix(1.0, min(realtime, staticLocalVisibility(int(map.x), isPoint, lightPosition, axis, position, normal)),
                map.y);
 }

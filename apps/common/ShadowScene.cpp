@@ -106,9 +106,9 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     const rhi::Conventions& conventions = device.conventions();
     pictures.atlases.push_back(
         atlasPictures("directional", rhi::readDepth(device, renderer.atlas().texture()), conventions));
-    pictures.atlases.push_back(atlasPictures("other", rhi::readDepth(device, renderer.otherAtlas().texture()),
-                                             conventions, render::perspectiveTiles(renderer.otherPlan())));
-    if (!renderer.otherPlan().cubes.empty())
+    pictures.atlases.push_back(atlasPictures("other", rhi::readDepth(device, renderer.localAtlas().texture()),
+                                             conventions, render::perspectiveTiles(renderer.localPlan())));
+    if (!renderer.localPlan().cubes.empty())
         pictures.atlases.push_back(
             atlasPictures("cube", cubeFacesSideBySide(device, renderer.shadowCubes()), conventions));
     // The static maps, where the frame kept any: compared across configurations as the realtime atlases are.
@@ -123,7 +123,7 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
             "static-directional", rhi::readDepth(device, renderer.staticDirectionalAtlas().texture()), conventions));
     if (has(false))
         pictures.atlases.push_back(atlasPictures("static-other",
-                                                 rhi::readDepth(device, renderer.staticOtherAtlas().texture()),
+                                                 rhi::readDepth(device, renderer.staticLocalAtlas().texture()),
                                                  conventions, render::perspectiveTiles(statics)));
     return pictures;
 }

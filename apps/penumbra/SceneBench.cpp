@@ -47,7 +47,7 @@ struct ConfigurationResult {
 // Each pass's GPU time of one frame, in kBenchPassNames order; 0 for a pass the frame does not draw.
 std::array<double, kPasses> passTimes(const render::FrameStats& s, double referenceMs)
 {
-    return {s.depthPrepassMs.value_or(0.0),       s.atlasPassMs.value_or(0.0), s.otherAtlasPassMs.value_or(0.0),
+    return {s.depthPrepassMs.value_or(0.0),       s.atlasPassMs.value_or(0.0), s.localAtlasPassMs.value_or(0.0),
             s.screenSpaceShadowsMs.value_or(0.0), s.litPassMs.value_or(0.0),     s.resolvePassMs.value_or(0.0), referenceMs, s.staticAtlasPassMs.value_or(0.0)};
 }
 
@@ -153,7 +153,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"passesMin", mins},
             {"passesMax", maxs},
             {"litOverReference", litOverReference(r)},
-            {"casterDraws", r.last.casterDraws + r.last.otherCasterDraws},
+            {"casterDraws", r.last.casterDraws + r.last.localCasterDraws},
             {"staticCasterDraws", r.last.staticCasterDraws},
             {"staticMaps", staticMapsMode(frame, options)}};
 }
@@ -167,7 +167,7 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
                frame.shadows.directional.atlasSize, frame.depthPrepass ? "on" : "off", frame.msaa,
                kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)], options.frames, options.warmup);
     fmt::print("{:<24} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>11} {:>9}\n", "configuration", "frame ms",
-               "depth", "atlas", "other", "ss shadow", "lit", "resolve", "reference", "ours / ref", "frame max");
+               "depth", "atlas", "local", "ss shadow", "lit", "resolve", "reference", "ours / ref", "frame max");
     for (const ConfigurationResult& r : results)
         fmt::print("{:<24} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>11.3f} {:>9.2f}\n",
                    r.configuration, r.frame.median(), r.passes[passIndex("depth")].median(),

@@ -21,7 +21,7 @@ struct SceneBenchOptions {
 };
 
 // The pass names of the JSON's "passes" objects, in frame order: the depth prepass, the directional and the
-// other atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass; then the
+// local atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass; then the
 // static shadow maps drawn in the frame (drawn first, listed last to keep the older names' order).
 inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "otherAtlas", "screenSpaceShadows",
                                                   "lit", "resolve", "reference", "staticAtlas"};

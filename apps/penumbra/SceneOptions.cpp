@@ -341,11 +341,11 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
                pictures.configuration, pictures.lit.width, pictures.lit.height, scene.objects.size(),
                scene.lights.size(), scene.spotLights.size(), scene.pointLights.size(), s.casterDraws,
                s.casterDrawsWithoutCullingBias);
-    if (s.otherCasterDraws != 0)
-        fmt::print(", {} into spot and point shadows", s.otherCasterDraws);
-    if (s.atlasPassMs && s.otherAtlasPassMs && s.litPassMs)
-        fmt::print("; atlas pass {:.2f} ms, other atlas pass {:.2f} ms, lit pass {:.2f} ms", *s.atlasPassMs,
-                   *s.otherAtlasPassMs, *s.litPassMs);
+    if (s.localCasterDraws != 0)
+        fmt::print(", {} into spot and point shadows", s.localCasterDraws);
+    if (s.atlasPassMs && s.localAtlasPassMs && s.litPassMs)
+        fmt::print("; atlas pass {:.2f} ms, local atlas pass {:.2f} ms, lit pass {:.2f} ms", *s.atlasPassMs,
+                   *s.localAtlasPassMs, *s.litPassMs);
     if (s.screenSpaceShadowsMs)
         fmt::print(", screen-space shadows {:.2f} ms", *s.screenSpaceShadowsMs);
     if (s.resolvePassMs)

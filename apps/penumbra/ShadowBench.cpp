@@ -15,7 +15,7 @@ namespace penumbra::apps {
 namespace {
 
 // What a benchmark renders: the shadow test scene with its four directional lights, or the same
-// geometry lit only by spot or point lights to time the other atlas (and the cube maps).
+// geometry lit only by spot or point lights to time the local atlas (and the cube maps).
 struct Scenario {
     std::string name;
     scene::Scene scene;
@@ -30,8 +30,8 @@ render::FrameDesc benchFrame()
     frame.shadows.directional.cascadeCount = 4;
     frame.shadows.directional.atlasSize = 2048;
     frame.shadows.directional.filter = shadows::ShadowFilter::PCF5x5;
-    frame.shadows.other.atlasSize = 2048;
-    frame.shadows.other.filter = shadows::ShadowFilter::PCF5x5;
+    frame.shadows.local.atlasSize = 2048;
+    frame.shadows.local.filter = shadows::ShadowFilter::PCF5x5;
     return frame;
 }
 
@@ -44,7 +44,7 @@ scene::Scene localLightsOnly()
     return scene;
 }
 
-// A 4 x 4 grid of spot lights 8 units up, each aimed at the ground below it: the other atlas's 16 tiles.
+// A 4 x 4 grid of spot lights 8 units up, each aimed at the ground below it: the local atlas's 16 tiles.
 scene::Scene sixteenSpots()
 {
     scene::Scene scene = localLightsOnly();
@@ -69,7 +69,7 @@ scene::Scene twoPoints()
 std::vector<Scenario> scenarios()
 {
     render::FrameDesc cubeMaps = benchFrame();
-    cubeMaps.shadows.other.pointMode = shadows::PointShadowMode::CubeMap;
+    cubeMaps.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
     return {{"directional", scene::makeShadowTestScene(), benchFrame()},
             {"16 spot tiles", sixteenSpots(), benchFrame()},
             {"2 points, 12 tiles", twoPoints(), benchFrame()},
@@ -85,7 +85,7 @@ struct ShadowBench::Case {
     scene::Scene scene;
     std::unique_ptr<render::SceneRenderer> renderer;
     render::FrameDesc frame;
-    double atlasMs = 0.0, otherMs = 0.0, litMs = 0.0, frameMs = 0.0;
+    double atlasMs = 0.0, localMs = 0.0, litMs = 0.0, frameMs = 0.0;
     std::uint32_t frames = 0;
     render::FrameStats last;
 };
@@ -112,14 +112,14 @@ ShadowBench::ShadowBench(const std::vector<std::string>& configurations, double 
                     bench.frameMs +=
                         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
                     bench.atlasMs += bench.last.atlasPassMs.value_or(0.0);
-                    bench.otherMs += bench.last.otherAtlasPassMs.value_or(0.0);
+                    bench.localMs += bench.last.localAtlasPassMs.value_or(0.0);
                     bench.litMs += bench.last.litPassMs.value_or(0.0);
                     ++bench.frames;
                 }
                 state.counters["atlas_ms"] = bench.atlasMs / bench.frames;
-                state.counters["other_atlas_ms"] = bench.otherMs / bench.frames;
+                state.counters["other_atlas_ms"] = bench.localMs / bench.frames;
                 state.counters["lit_ms"] = bench.litMs / bench.frames;
-                state.counters["caster_draws"] = bench.last.casterDraws + bench.last.otherCasterDraws;
+                state.counters["caster_draws"] = bench.last.casterDraws + bench.last.localCasterDraws;
             })->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(minTime);
             cases_.push_back(std::move(c));
         }
@@ -139,11 +139,11 @@ nlohmann::json ShadowBench::toJson() const
                         {"height", c->frame.height},
                         {"frames", c->frames},
                         {"atlasPassMs", c->atlasMs / frames},
-                        {"otherAtlasPassMs", c->otherMs / frames},
+                        {"otherAtlasPassMs", c->localMs / frames},
                         {"litPassMs", c->litMs / frames},
                         {"frameMs", c->frameMs / frames},
                         {"casterDraws", c->last.casterDraws},
-                        {"otherCasterDraws", c->last.otherCasterDraws},
+                        {"otherCasterDraws", c->last.localCasterDraws},
                         {"casterDrawsWithoutCullingBias", c->last.casterDrawsWithoutCullingBias}});
     }
     return rows;
@@ -154,14 +154,14 @@ void ShadowBench::printSummary() const
     fmt::print("\n1280x720; directional: 4 cascades, 2048 atlas, PCF 5x5; spot and point: 2048 atlas (512 cube faces), "
                "PCF 5x5 (GPU timestamps, mean per frame)\n");
     fmt::print("{:<24} {:<20} {:>9} {:>9} {:>9} {:>10} {:>11} {:>13} {:>13}\n", "configuration", "scenario", "atlas ms",
-               "other ms", "lit ms", "frame ms", "atlas/frame", "caster draws", "without bias");
+               "local ms", "lit ms", "frame ms", "atlas/frame", "caster draws", "without bias");
     for (const auto& c : cases_) {
         const double frames = std::max<std::uint32_t>(c->frames, 1);
-        const double atlas = c->atlasMs / frames, other = c->otherMs / frames, lit = c->litMs / frames,
+        const double atlas = c->atlasMs / frames, local = c->localMs / frames, lit = c->litMs / frames,
                      frame = c->frameMs / frames;
         fmt::print("{:<24} {:<20} {:>9.2f} {:>9.2f} {:>9.2f} {:>10.2f} {:>11.3f} {:>13} {:>13}\n", c->configuration,
-                   c->scenario, atlas, other, lit, frame, (atlas + other) / frame,
-                   c->last.casterDraws + c->last.otherCasterDraws, c->last.casterDrawsWithoutCullingBias);
+                   c->scenario, atlas, local, lit, frame, (atlas + local) / frame,
+                   c->last.casterDraws + c->last.localCasterDraws, c->last.casterDrawsWithoutCullingBias);
     }
     if (!cases_.empty()) {
         const render::FrameStats& s = cases_.front()->last;

@@ -97,8 +97,8 @@ void removeLight(std::mt19937& random, scene::Scene& scene)
 std::string_view soakChangeName(SoakChange change)
 {
     static constexpr std::array<std::string_view, kSoakChangeCount> names = {
-        "directionalAtlasSize", "otherAtlasSize", "directionalAtlasFormat", "otherAtlasFormat", "directionalFilter",
-        "otherFilter", "lightFilter", "cascadeCount", "cascadeBlend", "pointMode", "cubeMapSize", "softSamples",
+        "directionalAtlasSize", "localAtlasSize", "directionalAtlasFormat", "localAtlasFormat", "directionalFilter",
+        "localFilter", "lightFilter", "cascadeCount", "cascadeBlend", "pointMode", "cubeMapSize", "softSamples",
         "anisotropy", "depthPrepass", "addPointLight", "addSpotLight", "moveLight", "removeLight", "resize",
         "sceneReload"};
     return names.at(std::size_t(change));
@@ -117,11 +117,11 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
     shadows::ShadowSettings& s = state.frame.shadows;
     switch (change) {
     case SoakChange::DirectionalAtlasSize: s.directional.atlasSize = pick(random, kAtlasSizes); break;
-    case SoakChange::OtherAtlasSize: s.other.atlasSize = pick(random, kAtlasSizes); break;
+    case SoakChange::LocalAtlasSize: s.local.atlasSize = pick(random, kAtlasSizes); break;
     case SoakChange::DirectionalAtlasFormat: s.directional.atlasFormat = pick(random, kDepthFormats); break;
-    case SoakChange::OtherAtlasFormat: s.other.atlasFormat = pick(random, kDepthFormats); break;
+    case SoakChange::LocalAtlasFormat: s.local.atlasFormat = pick(random, kDepthFormats); break;
     case SoakChange::DirectionalFilter: s.directional.filter = pick(random, kFilters); break;
-    case SoakChange::OtherFilter: s.other.filter = pick(random, kFilters); break;
+    case SoakChange::LocalFilter: s.local.filter = pick(random, kFilters); break;
     case SoakChange::LightFilter: setLightFilter(random, state.scene); break;
     case SoakChange::CascadeCount: s.directional.cascadeCount = uniform(random, 1u, 4u); break;
     case SoakChange::CascadeBlend:
@@ -130,10 +130,10 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
                                     shadows::CascadeBlend::Dither});
         break;
     case SoakChange::PointMode:
-        s.other.pointMode = s.other.pointMode == shadows::PointShadowMode::Atlas ? shadows::PointShadowMode::CubeMap
+        s.local.pointMode = s.local.pointMode == shadows::PointShadowMode::Atlas ? shadows::PointShadowMode::CubeMap
                                                                                  : shadows::PointShadowMode::Atlas;
         break;
-    case SoakChange::CubeMapSize: s.other.cubeMapSize = pick(random, kCubeSizes); break;
+    case SoakChange::CubeMapSize: s.local.cubeMapSize = pick(random, kCubeSizes); break;
     case SoakChange::SoftSamples:
         s.soft.blockerSamples = pick(random, std::array{16u, 32u, 64u});
         s.soft.filterSamples = pick(random, std::array{16u, 32u, 64u});

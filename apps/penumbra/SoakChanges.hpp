@@ -13,11 +13,11 @@ namespace penumbra::apps {
 // What a user of the viewer changes between frames, one at a time.
 enum class SoakChange : std::uint8_t {
     DirectionalAtlasSize,
-    OtherAtlasSize,
+    LocalAtlasSize,
     DirectionalAtlasFormat,
-    OtherAtlasFormat,
+    LocalAtlasFormat,
     DirectionalFilter,
-    OtherFilter,
+    LocalFilter,
     LightFilter,
     CascadeCount,
     CascadeBlend,

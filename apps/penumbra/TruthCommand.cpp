@@ -40,10 +40,10 @@ std::vector<scene::LightRef> shadowedLights(const render::ShadowPlans& plans, co
             lights.push_back({scene::LightKind::Directional, i});
     std::size_t local = 0;
     for (std::uint32_t i = 0; i < scene.spotLights.size() && local < render::maxLitLocalLights; ++i, ++local)
-        if (plans.other.spotTiles[i] >= 0)
+        if (plans.local.spotTiles[i] >= 0)
             lights.push_back({scene::LightKind::Spot, i});
     for (std::uint32_t i = 0; i < scene.pointLights.size() && local < render::maxLitLocalLights; ++i, ++local)
-        if (plans.other.pointShadows[i] >= 0)
+        if (plans.local.pointShadows[i] >= 0)
             lights.push_back({scene::LightKind::Point, i});
     return lights;
 }

@@ -114,8 +114,8 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= enumCombo("projection", d.projection, projectionNames());
     ImGui::Separator();
     ImGui::TextUnformatted("spot and point lights");
-    ImGui::PushID("other");
-    shadows::OtherShadowSettings& o = s.other;
+    ImGui::PushID("local");
+    shadows::LocalShadowSettings& o = s.local;
     changed |= ImGui::InputScalar("atlas size", ImGuiDataType_U32, &o.atlasSize);
     changed |= atlasFormatCombo(o.atlasFormat);
     changed |= filterCombo("filter", o.filter);
@@ -132,7 +132,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= enumCombo("update", m.update, std::array{"every frame (none)", "on change", "on demand"});
     changed |= enumCombo("realtime casters", m.realtimeCasters, std::array{"all", "dynamic"});
     changed |= ImGui::InputScalar("directional atlas size", ImGuiDataType_U32, &m.directionalAtlasSize);
-    changed |= ImGui::InputScalar("other atlas size", ImGuiDataType_U32, &m.otherAtlasSize);
+    changed |= ImGui::InputScalar("local atlas size", ImGuiDataType_U32, &m.localAtlasSize);
     ImGui::PopID();
     return changed;
 }
@@ -279,14 +279,14 @@ bool shadowPathChoice(render::ShadowPath& path)
 void statusLines(const PanelStatus& status)
 {
     ImGui::Text("frame %.1f ms", status.frameMs);
-    if (status.stats.atlasPassMs && status.stats.otherAtlasPassMs && status.stats.litPassMs)
-        ImGui::Text("atlas pass %.2f ms, other atlas %.2f ms, lit pass %.2f ms", *status.stats.atlasPassMs,
-                    *status.stats.otherAtlasPassMs, *status.stats.litPassMs);
+    if (status.stats.atlasPassMs && status.stats.localAtlasPassMs && status.stats.litPassMs)
+        ImGui::Text("atlas pass %.2f ms, local atlas %.2f ms, lit pass %.2f ms", *status.stats.atlasPassMs,
+                    *status.stats.localAtlasPassMs, *status.stats.litPassMs);
     if (status.stats.screenSpaceShadowsMs)
         ImGui::Text("screen-space shadows %.2f ms", *status.stats.screenSpaceShadowsMs);
     if (status.stats.resolvePassMs)
         ImGui::Text("MSAA resolve %.2f ms", *status.stats.resolvePassMs);
-    ImGui::Text("caster draws %u, spot and point %u", status.stats.casterDraws, status.stats.otherCasterDraws);
+    ImGui::Text("caster draws %u, spot and point %u", status.stats.casterDraws, status.stats.localCasterDraws);
     for (const std::string& note : status.notes)
         ImGui::TextWrapped("%s", note.c_str());
     if (!status.error.empty())

@@ -5,10 +5,10 @@
 
 namespace penumbra::render {
 
-std::vector<PerspectiveTile> perspectiveTiles(const shadows::OtherShadowPlan& plan)
+std::vector<PerspectiveTile> perspectiveTiles(const shadows::LocalShadowPlan& plan)
 {
     std::vector<PerspectiveTile> tiles;
-    for (const shadows::OtherAtlasTile& tile : plan.tiles)
+    for (const shadows::LocalAtlasTile& tile : plan.tiles)
         tiles.push_back({tile.viewport, tile.view.projection});
     return tiles;
 }

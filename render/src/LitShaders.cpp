@@ -69,13 +69,13 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
                                                "#define PENUMBRA_BINDING_POISSON_DISKS {}\n"
                                                "#define PENUMBRA_BINDING_STATIC_SHADOWS {}\n"
                                                "#define PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS {}\n"
-                                               "#define PENUMBRA_BINDING_STATIC_OTHER_ATLAS {}\n"
+                                               "#define PENUMBRA_BINDING_STATIC_LOCAL_ATLAS {}\n"
                                                "#define PENUMBRA_TENT_FILTERS {}\n"
                                                "#define PENUMBRA_SOFT_FILTERS {}\n"
                                                "#define PENUMBRA_SHADOW_CUBES {}\n",
                                                kLitShadowCubeDepthsBinding, kLitPoissonDisksBinding,
                                                kLitStaticShadowBinding, kLitStaticDirectionalAtlasBinding,
-                                               kLitStaticOtherAtlasBinding, features.tentFilters ? 1 : 0,
+                                               kLitStaticLocalAtlasBinding, features.tentFilters ? 1 : 0,
                                                features.softFilters ? 1 : 0, features.shadowCubes ? 1 : 0)});
     return source;
 }

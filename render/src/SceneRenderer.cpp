@@ -11,7 +11,7 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
-#include "penumbra/shadows/OtherShadowUniforms.hpp"
+#include "penumbra/shadows/LocalShadowUniforms.hpp"
 #include "penumbra/shadows/PoissonDisk.hpp"
 #include "penumbra/shadows/StaticShadowUniforms.hpp"
 
@@ -108,7 +108,7 @@ const std::string& localLightName(const scene::Scene& scene, shadows::LocalLight
 }
 
 // The lit pass's local lights: spot lights, then point lights, up to maxLitLocalLights.
-void fillLocalLights(LitFrameUniforms& u, const scene::Scene& scene, const shadows::OtherShadowPlan& plan)
+void fillLocalLights(LitFrameUniforms& u, const scene::Scene& scene, const shadows::LocalShadowPlan& plan)
 {
     std::uint32_t count = 0;
     for (std::size_t i = 0; i < scene.spotLights.size() && count < maxLitLocalLights; ++i, ++count) {
@@ -174,7 +174,7 @@ std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans
     for (std::size_t i = maxLitDirectionalLights; i < scene.lights.size(); ++i)
         notes.push_back(fmt::format("light {} ('{}') is not drawn: beyond the limit of {} directional lights", i,
                                     scene.lights[i].name, maxLitDirectionalLights));
-    for (const shadows::OtherShadowNote& note : plans.other.report)
+    for (const shadows::LocalShadowNote& note : plans.local.report)
         notes.push_back(fmt::format("{} {} ('{}') {}: {}", kindName(note.kind), note.lightIndex,
                                     localLightName(scene, note.kind, note.lightIndex),
                                     withoutRealtime(plans, shadowLightKind(note.kind), note.lightIndex), note.reason));
@@ -204,15 +204,15 @@ void checkPlansFitFrame(const ShadowPlans& plans, const shadows::ShadowSettings&
         throw rhi::Error(fmt::format("shadow plans: the directional plan is for a {}-texel atlas, the frame's "
                                      "directional.atlasSize is {}",
                                      plans.directional.atlas.atlasSize(), settings.directional.atlasSize));
-    if (plans.other.atlas.atlasSize() != settings.other.atlasSize)
+    if (plans.local.atlas.atlasSize() != settings.local.atlasSize)
         throw rhi::Error(fmt::format("shadow plans: the spot and point plan is for a {}-texel atlas, the frame's "
-                                     "other.atlasSize is {}",
-                                     plans.other.atlas.atlasSize(), settings.other.atlasSize));
-    if (!plans.other.cubes.empty() && settings.other.pointMode != shadows::PointShadowMode::CubeMap)
-        throw rhi::Error("shadow plans: the spot and point plan has shadow cube maps, the frame's other.pointMode "
+                                     "local.atlasSize is {}",
+                                     plans.local.atlas.atlasSize(), settings.local.atlasSize));
+    if (!plans.local.cubes.empty() && settings.local.pointMode != shadows::PointShadowMode::CubeMap)
+        throw rhi::Error("shadow plans: the spot and point plan has shadow cube maps, the frame's local.pointMode "
                          "is atlas");
-    if (plans.other.cubes.size() > shadows::maxShadowCubes)
-        throw rhi::Error(fmt::format("shadow plans: {} shadow cube maps, at most {}", plans.other.cubes.size(),
+    if (plans.local.cubes.size() > shadows::maxShadowCubes)
+        throw rhi::Error(fmt::format("shadow plans: {} shadow cube maps, at most {}", plans.local.cubes.size(),
                                      shadows::maxShadowCubes));
 }
 
@@ -225,14 +225,14 @@ bool isStatic(const std::vector<std::uint32_t>& staticCasters, std::uint32_t cas
 // the tiles without them, which the passes draw over it.
 struct SplitTiles {
     std::vector<shadows::ShadowTileDraw> directional;
-    std::vector<shadows::ShadowTileDraw> other;
+    std::vector<shadows::ShadowTileDraw> local;
 };
 
 SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_t>& staticCasters)
 {
     SplitTiles split{shadows::DirectionalShadowPass::tileDraws(plans.directional),
-                     shadows::OtherShadowPass::tileDraws(plans.other)};
-    for (std::vector<shadows::ShadowTileDraw>* tiles : {&split.directional, &split.other})
+                     shadows::LocalShadowPass::tileDraws(plans.local)};
+    for (std::vector<shadows::ShadowTileDraw>* tiles : {&split.directional, &split.local})
         for (shadows::ShadowTileDraw& tile : *tiles)
             std::erase_if(tile.casters, [&](std::uint32_t i) { return !isStatic(staticCasters, i); });
     const auto drop = [&](std::vector<std::uint32_t>& casters) {
@@ -241,7 +241,7 @@ SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_
     for (shadows::ShadowedDirectionalLight& light : plans.directional.lights)
         for (shadows::DirectionalCascadePlan& cascade : light.cascades)
             drop(cascade.casters.casters);
-    for (shadows::OtherAtlasTile& tile : plans.other.tiles)
+    for (shadows::LocalAtlasTile& tile : plans.local.tiles)
         drop(tile.view.casters);
     return split;
 }
@@ -347,7 +347,7 @@ std::optional<std::string> uncollectedShadows(const scene::Scene& scene, const s
 
 SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     : device_(device), gpuScene_(device, scene), shadowPass_(device, GpuScene::vertexFormat()),
-      otherShadowPass_(device, GpuScene::vertexFormat()),
+      localShadowPass_(device, GpuScene::vertexFormat()),
       litVertex_(device.createShader(litShader("lit.vert"))),
       litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, 1)),
       depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
@@ -358,7 +358,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
 {
     directionalStaticTiles_ =
         std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "directional atlas, static casters");
-    otherStaticTiles_ = std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "other atlas, static casters");
+    localStaticTiles_ = std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "local atlas, static casters");
 }
 
 SceneRenderer::~SceneRenderer() = default;
@@ -372,7 +372,7 @@ const rhi::Texture& SceneRenderer::screenSpaceShadowImage() const
 
 const shadows::ShadowAtlas& SceneRenderer::staticDirectionalAtlas() const { return staticShadows_->directionalAtlas(); }
 
-const shadows::ShadowAtlas& SceneRenderer::staticOtherAtlas() const { return staticShadows_->otherAtlas(); }
+const shadows::ShadowAtlas& SceneRenderer::staticLocalAtlas() const { return staticShadows_->localAtlas(); }
 
 const shadows::StaticShadowPlan& SceneRenderer::staticPlan() const { return staticShadows_->plan(); }
 
@@ -387,15 +387,15 @@ shadows::StaticShadowBake SceneRenderer::bakeStaticShadows(const std::string& co
         if (object.mobility == scene::Mobility::Static && scene.castsShadows(object))
             bake.objects.push_back(object.name);
     const std::vector<std::uint64_t> hashes = staticMapHashes(scene, plan);
-    std::optional<rhi::DepthImage> directional, other;
+    std::optional<rhi::DepthImage> directional, local;
     for (std::size_t i = 0; i < plan.maps.size(); ++i) {
         const shadows::StaticShadowMap& map = plan.maps[i];
         const bool isDirectional = map.kind == shadows::ShadowLightKind::Directional;
-        std::optional<rhi::DepthImage>& depth = isDirectional ? directional : other;
+        std::optional<rhi::DepthImage>& depth = isDirectional ? directional : local;
         if (!depth)
-            depth = rhi::readDepth(device_, (isDirectional ? staticDirectionalAtlas() : staticOtherAtlas()).texture());
+            depth = rhi::readDepth(device_, (isDirectional ? staticDirectionalAtlas() : staticLocalAtlas()).texture());
         shadows::BakedShadowMap baked = shadows::bakeShadowMap(
-            map, isDirectional ? plan.directionalAtlas : plan.otherAtlas, *depth, device_.conventions());
+            map, isDirectional ? plan.directionalAtlas : plan.localAtlas, *depth, device_.conventions());
         baked.lightName = lightName(scene, map.kind, map.lightIndex);
         baked.hash = hashes[i];
         bake.maps.push_back(std::move(baked));
@@ -414,18 +414,18 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
     if (!atlas_ || atlas_->size() != atlasSize || atlas_->format() != directional.atlasFormat)
         atlas_ = std::make_unique<shadows::ShadowAtlas>(device_, atlasSize, directional.atlasFormat,
                                                         "directional shadow atlas");
-    const shadows::OtherShadowSettings& other = frame.shadows.other;
-    const std::uint32_t otherSize = plans.other.tiles.empty() ? kStandInAtlasSize : other.atlasSize;
-    if (!otherAtlas_ || otherAtlas_->size() != otherSize || otherAtlas_->format() != other.atlasFormat)
-        otherAtlas_ = std::make_unique<shadows::ShadowAtlas>(device_, otherSize, other.atlasFormat,
-                                                             "other shadow atlas");
+    const shadows::LocalShadowSettings& local = frame.shadows.local;
+    const std::uint32_t localSize = plans.local.tiles.empty() ? kStandInAtlasSize : local.atlasSize;
+    if (!localAtlas_ || localAtlas_->size() != localSize || localAtlas_->format() != local.atlasFormat)
+        localAtlas_ = std::make_unique<shadows::ShadowAtlas>(device_, localSize, local.atlasFormat,
+                                                             "local shadow atlas");
     // Cube-map mode keeps room for every cube it may plan; otherwise one small cube stands in for the binding.
-    const bool cubeMode = other.pointMode == shadows::PointShadowMode::CubeMap;
-    const std::uint32_t faceSize = cubeMode ? other.cubeMapSize : 16;
+    const bool cubeMode = local.pointMode == shadows::PointShadowMode::CubeMap;
+    const std::uint32_t faceSize = cubeMode ? local.cubeMapSize : 16;
     const std::uint32_t cubeCount = cubeMode ? shadows::maxShadowCubes : 1;
     if (!shadowCubes_ || shadowCubes_->faceSize() != faceSize || shadowCubes_->cubeCount() != cubeCount ||
-        shadowCubes_->format() != other.atlasFormat)
-        shadowCubes_ = std::make_unique<shadows::ShadowCubes>(device_, faceSize, cubeCount, other.atlasFormat);
+        shadowCubes_->format() != local.atlasFormat)
+        shadowCubes_ = std::make_unique<shadows::ShadowCubes>(device_, faceSize, cubeCount, local.atlasFormat);
     if (frame.msaa > 1 && (!multisampledLitPipelines_ || multisampledLitPipelines_->samples() != frame.msaa))
         multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, frame.msaa);
     if (depthPrepass_->samples() != frame.msaa)
@@ -487,7 +487,7 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     u.ambient = glm::vec4(frame.ambient.sky(), 0.0f);
     u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);
     u.config = {static_cast<int>(count), static_cast<int>(view), 0, 0};
-    fillLocalLights(u, gpuScene_.scene(), otherPlan_);
+    fillLocalLights(u, gpuScene_.scene(), localPlan_);
     return u;
 }
 
@@ -516,28 +516,28 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 }
 
 void SceneRenderer::bindShadowMaps(rhi::CommandList& commands, const rhi::UniformSlice& shadowUniforms,
-                                   const rhi::UniformSlice& otherShadowUniforms,
+                                   const rhi::UniformSlice& localShadowUniforms,
                                    const rhi::UniformSlice& staticShadowUniforms,
                                    const rhi::UniformSlice& poissonDisks) const
 {
     rhi::bindUniform(commands, kLitShadowBinding, shadowUniforms);
     commands.bindTexture(kLitAtlasBinding, atlas_->texture(), atlas_->sampler());
-    rhi::bindUniform(commands, kLitOtherShadowBinding, otherShadowUniforms);
-    commands.bindTexture(kLitOtherAtlasBinding, otherAtlas_->texture(), otherAtlas_->sampler());
+    rhi::bindUniform(commands, kLitLocalShadowBinding, localShadowUniforms);
+    commands.bindTexture(kLitLocalAtlasBinding, localAtlas_->texture(), localAtlas_->sampler());
     commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
     commands.bindTexture(kLitShadowCubeDepthsBinding, shadowCubes_->texture(), shadowCubes_->depthSampler());
     rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonDisks);
     rhi::bindUniform(commands, kLitStaticShadowBinding, staticShadowUniforms);
     const shadows::ShadowAtlas& staticDirectional = staticShadows_->directionalAtlas();
-    const shadows::ShadowAtlas& staticOther = staticShadows_->otherAtlas();
+    const shadows::ShadowAtlas& staticLocal = staticShadows_->localAtlas();
     commands.bindTexture(kLitStaticDirectionalAtlasBinding, staticDirectional.texture(), staticDirectional.sampler());
-    commands.bindTexture(kLitStaticOtherAtlasBinding, staticOther.texture(), staticOther.sampler());
+    commands.bindTexture(kLitStaticLocalAtlasBinding, staticLocal.texture(), staticLocal.sampler());
 }
 
 void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
                                   LitPipelines& pipelines, const rhi::UniformSlice& frameSlice,
                                   const LitShaderFeatures& features, const rhi::UniformSlice& shadowUniforms,
-                                  const rhi::UniformSlice& otherShadowUniforms,
+                                  const rhi::UniformSlice& localShadowUniforms,
                                   const rhi::UniformSlice& staticShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
@@ -561,7 +561,7 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
             // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
             commands.bindPipeline(*pipeline);
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
-            bindShadowMaps(commands, shadowUniforms, otherShadowUniforms, staticShadowUniforms, poissonDisks);
+            bindShadowMaps(commands, shadowUniforms, localShadowUniforms, staticShadowUniforms, poissonDisks);
             if (directionalShadows != DirectionalShadowSource::Forward)
                 commands.bindTexture(kLitScreenSpaceShadowsBinding, screenSpace_->shadows(), screenSpace_->sampler());
             // Only where the lit pass does not draw into it: multisampled, the single-sampled depth is no attachment.
@@ -587,7 +587,7 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     const std::vector<std::uint32_t> staticCasters = gpuScene_.staticCasters();
     return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
                                             bounds),
-            shadows::planOtherShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
+            shadows::planLocalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
                                       bounds),
             shadows::planStaticShadows(frame.shadows, device_.conventions(), lights, spots, points,
                                        {bounds, staticCasters})};
@@ -618,7 +618,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
         keepsStaticMaps && frame.shadows.staticMaps.realtimeCasters == shadows::RealtimeCasters::Dynamic;
     const SplitTiles staticTiles = dynamicOnly ? splitStaticCasters(plans, gpuScene_.staticCasters()) : SplitTiles{};
     plan_ = std::move(plans.directional);
-    otherPlan_ = std::move(plans.other);
+    localPlan_ = std::move(plans.local);
 
     if (staticShadows_->baked()) {
         if (!keepsStaticMaps)
@@ -639,7 +639,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     for (const scene::Object& object : scene.objects)
         objectSlices_.push_back(uniforms_.push(objectUniforms(object, scene.materialOf(object))));
     const rhi::UniformSlice shadowUniforms = uniforms_.push(plan_.uniforms);
-    const rhi::UniformSlice otherShadowUniforms = uniforms_.push(otherPlan_.uniforms);
+    const rhi::UniformSlice localShadowUniforms = uniforms_.push(localPlan_.uniforms);
     const std::vector<shadows::ShadowCaster> casters = gpuScene_.casters();
     rhi::CommandList& commands = *commands_;
     if (timestamps_)
@@ -657,21 +657,21 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
         commands.writeTimestamp(*timestamps_, 1);
     // Dynamic casters only: the tiles' static depth comes from the caches, then the passes draw over it.
     const bool cachedDirectional = dynamicOnly && !staticTiles.directional.empty();
-    const bool cachedOther = dynamicOnly && !staticTiles.other.empty();
+    const bool cachedLocal = dynamicOnly && !staticTiles.local.empty();
     if (cachedDirectional)
         stats.staticCasterDraws += directionalStaticTiles_->update(commands, *atlas_, staticTiles.directional, casters);
     stats.casterDraws = shadowPass_.record(commands, *atlas_, plan_, casters, !cachedDirectional);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 2);
-    if (cachedOther)
-        stats.staticCasterDraws += otherStaticTiles_->update(commands, *otherAtlas_, staticTiles.other, casters);
-    stats.otherCasterDraws =
-        otherShadowPass_.record(commands, *otherAtlas_, *shadowCubes_, otherPlan_, casters, !cachedOther);
+    if (cachedLocal)
+        stats.staticCasterDraws += localStaticTiles_->update(commands, *localAtlas_, staticTiles.local, casters);
+    stats.localCasterDraws =
+        localShadowPass_.record(commands, *localAtlas_, *shadowCubes_, localPlan_, casters, !cachedLocal);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 3);
     const LitFrameUniforms litFrameUniforms = frameUniforms(camera, frame, LitView::Lit);
     const rhi::UniformSlice litFrame = uniforms_.push(litFrameUniforms);
-    LitShaderFeatures features = frameShaderFeatures(litFrameUniforms, plan_.uniforms, otherPlan_.uniforms,
+    LitShaderFeatures features = frameShaderFeatures(litFrameUniforms, plan_.uniforms, localPlan_.uniforms,
                                                      staticShadows_->plan().uniforms);
     const bool multisampled = frame.msaa > 1;
     std::optional<std::string> uncollected;
@@ -694,7 +694,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     if (screenSpace) {
         screenSpace_->begin(commands, features,
                             uniforms_.push(screenSpaceShadowUniforms(litFrameUniforms, frame.width, frame.height)));
-        bindShadowMaps(commands, shadowUniforms, otherShadowUniforms, staticShadowUniforms,
+        bindShadowMaps(commands, shadowUniforms, localShadowUniforms, staticShadowUniforms,
                        uniforms_.push(shadows::poissonDiskUniforms()));
         screenSpace_->draw(commands);
         features.directionalShadows =
@@ -704,7 +704,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
         commands.writeTimestamp(*timestamps_, 5);
     features.depthPrepassed = frame.depthPrepass;
     recordLitPass(commands, *litTarget_, multisampled ? *multisampledLitPipelines_ : *litPipelines_, litFrame, features,
-                  shadowUniforms, otherShadowUniforms, staticShadowUniforms);
+                  shadowUniforms, localShadowUniforms, staticShadowUniforms);
     // The debug views draw single-sampled without the prepass, with forward shadows: they clear the single-sampled
     // depth.
     features.depthPrepassed = false;
@@ -719,13 +719,13 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     if (frame.cascadeView)
         recordLitPass(commands, *cascadeTarget_, *litPipelines_,
                       uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)),
-features, shadowUniforms, otherShadowUniforms, staticShadowUniforms);
+features, shadowUniforms, localShadowUniforms, staticShadowUniforms);
     if (frame.visibilityOf) {
         LitFrameUniforms u = frameUniforms(camera, frame, LitView::Visibility);
         u.config.w = visibilityLight;
         // The visibility view of any light, with every part of the shader: a debug view, not worth a variant each.
         recordLitPass(commands, *visibilityTarget_, *litPipelines_, uniforms_.push(u),
-                      LitShaderFeatures{.view = LitView::Visibility}, shadowUniforms, otherShadowUniforms,
+                      LitShaderFeatures{.view = LitView::Visibility}, shadowUniforms, localShadowUniforms,
                       staticShadowUniforms);
     }
     device_.submit(commands);
@@ -733,7 +733,7 @@ features, shadowUniforms, otherShadowUniforms, staticShadowUniforms);
         const std::vector<double> ns = device_.readTimestamps(*timestamps_);
         stats.staticAtlasPassMs = (ns[1] - ns[0]) * 1e-6;
         stats.atlasPassMs = (ns[2] - ns[1]) * 1e-6;
-        stats.otherAtlasPassMs = (ns[3] - ns[2]) * 1e-6;
+        stats.localAtlasPassMs = (ns[3] - ns[2]) * 1e-6;
         if (frame.depthPrepass)
             stats.depthPrepassMs = (ns[4] - ns[3]) * 1e-6;
         if (screenSpace)

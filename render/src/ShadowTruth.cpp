@@ -48,13 +48,13 @@ float pointTexel(const ShadowPlans& plans, std::uint32_t cubeFaceSize, const sce
     const glm::vec3 fromLight = position - light.position;
     const shadows::CubeFace face = shadows::cubeFace(fromLight);
     const glm::vec3 axis = shadows::cubeFaceAxis(face);
-    if (!plans.other.cubes.empty())
-        return perspectiveTexel(plans.other.cubes.at(static_cast<std::size_t>(shadow))
+    if (!plans.local.cubes.empty())
+        return perspectiveTexel(plans.local.cubes.at(static_cast<std::size_t>(shadow))
                                     .faces[static_cast<std::size_t>(face)]
                                     .projection,
                                 cubeFaceSize, axis, fromLight);
     const std::size_t tile = static_cast<std::size_t>(shadow) + static_cast<std::size_t>(face);
-    return perspectiveTexel(plans.other.tiles.at(tile).view.projection, plans.other.atlas.tileSize(), axis,
+    return perspectiveTexel(plans.local.tiles.at(tile).view.projection, plans.local.atlas.tileSize(), axis,
                             fromLight);
 }
 
@@ -110,16 +110,16 @@ float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& s
         return texel;
     }
     case scene::LightKind::Spot: {
-        const int tile = plans.other.spotTiles.at(light.index);
+        const int tile = plans.local.spotTiles.at(light.index);
         if (tile < 0)
             return 0.0f;
         const scene::SpotLight& spot = scene.spotLights.at(light.index);
-        return perspectiveTexel(plans.other.tiles.at(static_cast<std::size_t>(tile)).view.projection,
-                                plans.other.atlas.tileSize(), spot.direction, position - spot.position);
+        return perspectiveTexel(plans.local.tiles.at(static_cast<std::size_t>(tile)).view.projection,
+                                plans.local.atlas.tileSize(), spot.direction, position - spot.position);
     }
     case scene::LightKind::Point: {
-        const int shadow = plans.other.pointShadows.at(light.index);
-        return shadow < 0 ? 0.0f : pointTexel(plans, settings.other.cubeMapSize, scene.pointLights.at(light.index), shadow,
+        const int shadow = plans.local.pointShadows.at(light.index);
+        return shadow < 0 ? 0.0f : pointTexel(plans, settings.local.cubeMapSize, scene.pointLights.at(light.index), shadow,
                                                      position);
     }
     }
@@ -152,7 +152,7 @@ LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaste
 {
     const scene::ShadowRayFrom rays = truthRays(scene, light);
     const float margin = shadowEdgeMarginTexels(light.kind == scene::LightKind::Directional ? settings.directional.filter
-                                                                                            : settings.other.filter);
+                                                                                            : settings.local.filter);
     // Half the rows' progress for each of the two traces.
     const auto half = [&](std::uint32_t offset) -> scene::TraceProgress {
         if (!progress)

@@ -20,18 +20,18 @@ shadows::ShadowFilter plannedShadowFilter(const ShadowPlans& plans, const scene:
         return plans.directional.lights[std::size_t(slot)].filter;
     }
     case scene::LightKind::Spot: {
-        const int tile = light.index < plans.other.spotTiles.size() ? plans.other.spotTiles[light.index] : -1;
+        const int tile = light.index < plans.local.spotTiles.size() ? plans.local.spotTiles[light.index] : -1;
         if (tile < 0)
             throw noShadow();
-        return static_cast<shadows::ShadowFilter>(plans.other.uniforms.tileData[std::size_t(tile)].y);
+        return static_cast<shadows::ShadowFilter>(plans.local.uniforms.tileData[std::size_t(tile)].y);
     }
     case scene::LightKind::Point: {
-        const int shadow = light.index < plans.other.pointShadows.size() ? plans.other.pointShadows[light.index] : -1;
+        const int shadow = light.index < plans.local.pointShadows.size() ? plans.local.pointShadows[light.index] : -1;
         if (shadow < 0)
             throw noShadow();
-        return static_cast<shadows::ShadowFilter>(plans.other.cubes.empty()
-                                                      ? plans.other.uniforms.tileData[std::size_t(shadow)].y
-                                                      : plans.other.uniforms.cubeSoft[std::size_t(shadow)].x);
+        return static_cast<shadows::ShadowFilter>(plans.local.cubes.empty()
+                                                      ? plans.local.uniforms.tileData[std::size_t(shadow)].y
+                                                      : plans.local.uniforms.cubeSoft[std::size_t(shadow)].x);
     }
     }
     throw noShadow();

@@ -140,7 +140,7 @@ void validateLocalLight(const std::string& what, float range, float strength, fl
         throw SceneError(fmt::format("{}: range {} must be positive and finite", what, range));
     if (!(shadowNearPlane >= 0.0f && shadowNearPlane < range))
         throw SceneError(fmt::format("{}: shadowNearPlane {} must be in [0, range {}) (0: the shadow settings' "
-                                     "other.nearPlane)",
+                                     "local.nearPlane)",
                                      what, shadowNearPlane, range));
     if (strength < 0.0f || strength > 1.0f)
         throw SceneError(fmt::format("{}: shadowStrength {} is outside [0, 1]", what, strength));

@@ -56,7 +56,7 @@ glm::mat4 spotView(glm::vec3 position, glm::vec3 direction)
     return glm::lookAtRH(position, position + direction, up);
 }
 
-float localShadowNearPlane(float range, float lightNearPlane, const OtherShadowSettings& settings)
+float localShadowNearPlane(float range, float lightNearPlane, const LocalShadowSettings& settings)
 {
     return lightNearPlane > 0.0f ? lightNearPlane : settings.nearPlane * range;
 }

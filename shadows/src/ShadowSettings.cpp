@@ -104,12 +104,12 @@ std::string_view allowedValues(std::string_view field)
         {"directional.cascadeBlend", "hard, soft, dither"},
         {"directional.projection", "stable, close"},
         {"directional.atlasFormat", "d16, d24s8, d32f"},
-        {"other.atlasSize", "powers of two 256..8192"},
-        {"other.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss"},
-        {"other.atlasFormat", "d16, d24s8, d32f"},
-        {"other.pointMode", "atlas, cubemap"},
-        {"other.cubeMapSize", "powers of two 64..4096"},
-        {"other.nearPlane", "0.0001..0.5"},
+        {"local.atlasSize", "powers of two 256..8192"},
+        {"local.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss"},
+        {"local.atlasFormat", "d16, d24s8, d32f"},
+        {"local.pointMode", "atlas, cubemap"},
+        {"local.cubeMapSize", "powers of two 64..4096"},
+        {"local.nearPlane", "0.0001..0.5"},
         {"soft.blockerSearchScale", "0.1..10"},
         {"soft.penumbraScale", "0.1..10"},
         {"soft.blockerSamples", "16, 32, 64"},
@@ -120,7 +120,7 @@ std::string_view allowedValues(std::string_view field)
         {"static.update", "everyFrame, onChange, onDemand"},
         {"static.realtimeCasters", "all, dynamic"},
         {"static.directionalAtlasSize", "powers of two 256..8192"},
-        {"static.otherAtlasSize", "powers of two 256..8192"},
+        {"static.localAtlasSize", "powers of two 256..8192"},
     }};
     for (const auto& [name, allowed] : table)
         if (name == field)
@@ -135,20 +135,20 @@ bool powerOfTwoWithin(std::uint32_t value, std::uint32_t low, std::uint32_t high
     return (value & (value - 1)) == 0 && value >= low && value <= high;
 }
 
-std::optional<SettingsProblem> findOtherSettingsProblem(const OtherShadowSettings& o)
+std::optional<SettingsProblem> findLocalSettingsProblem(const LocalShadowSettings& o)
 {
     if (!powerOfTwoWithin(o.atlasSize, 256, 8192))
-        return outOfRange("other.atlasSize", fmt::format("{}", o.atlasSize));
+        return outOfRange("local.atlasSize", fmt::format("{}", o.atlasSize));
     if (static_cast<unsigned>(o.filter) > static_cast<unsigned>(ShadowFilter::PCSS))
-        return outOfRange("other.filter", fmt::format("{}", static_cast<int>(o.filter)));
+        return outOfRange("local.filter", fmt::format("{}", static_cast<int>(o.filter)));
     if (!rhi::isDepthFormat(o.atlasFormat))
-        return outOfRange("other.atlasFormat", std::string(rhi::formatName(o.atlasFormat)));
+        return outOfRange("local.atlasFormat", std::string(rhi::formatName(o.atlasFormat)));
     if (static_cast<unsigned>(o.pointMode) > static_cast<unsigned>(PointShadowMode::CubeMap))
-        return outOfRange("other.pointMode", fmt::format("{}", static_cast<int>(o.pointMode)));
+        return outOfRange("local.pointMode", fmt::format("{}", static_cast<int>(o.pointMode)));
     if (!powerOfTwoWithin(o.cubeMapSize, 64, 4096))
-        return outOfRange("other.cubeMapSize", fmt::format("{}", o.cubeMapSize));
+        return outOfRange("local.cubeMapSize", fmt::format("{}", o.cubeMapSize));
     if (!within(o.nearPlane, 0.0001f, 0.5f))
-        return outOfRange("other.nearPlane", fmt::format("{}", o.nearPlane));
+        return outOfRange("local.nearPlane", fmt::format("{}", o.nearPlane));
     return std::nullopt;
 }
 
@@ -187,8 +187,8 @@ std::optional<SettingsProblem> findStaticSettingsProblem(const StaticShadowSetti
         return outOfRange("static.realtimeCasters", fmt::format("{}", static_cast<int>(s.realtimeCasters)));
     if (!powerOfTwoWithin(s.directionalAtlasSize, 256, 8192))
         return outOfRange("static.directionalAtlasSize", fmt::format("{}", s.directionalAtlasSize));
-    if (!powerOfTwoWithin(s.otherAtlasSize, 256, 8192))
-        return outOfRange("static.otherAtlasSize", fmt::format("{}", s.otherAtlasSize));
+    if (!powerOfTwoWithin(s.localAtlasSize, 256, 8192))
+        return outOfRange("static.localAtlasSize", fmt::format("{}", s.localAtlasSize));
     return std::nullopt;
 }
 
@@ -219,7 +219,7 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return outOfRange("directional.projection", fmt::format("{}", static_cast<int>(d.projection)));
     if (!rhi::isDepthFormat(d.atlasFormat))
         return outOfRange("directional.atlasFormat", std::string(rhi::formatName(d.atlasFormat)));
-    if (auto problem = findOtherSettingsProblem(s.other))
+    if (auto problem = findLocalSettingsProblem(s.local))
         return problem;
     if (auto problem = findSoftSettingsProblem(s.soft))
         return problem;

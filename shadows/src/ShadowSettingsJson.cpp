@@ -117,6 +117,14 @@ public:
             throw rhi::Error(fmt::format("{}: {}: expected an object, got {}", source_, what, value.dump()));
     }
 
+    // Spot and point lights were once "other" lights: `oldName` is still read as `name`, but not both at once.
+    void refuseBothNames(const Json& object, std::string_view name, std::string_view oldName) const
+    {
+        if (object.contains(name) && object.contains(oldName))
+            throw rhi::Error(fmt::format("{}: {}{} and {}{} are one field (the old and the current name); give only {}{}",
+                                         source_, prefix_, oldName, prefix_, name, prefix_, name));
+    }
+
     [[noreturn]] void unknown(const std::string& key, std::string_view known) const
     {
         throw rhi::Error(fmt::format("{}: {}{}: unknown field, allowed {}", source_, prefix_, key, known));
@@ -154,10 +162,10 @@ void readDirectional(const Json& object, std::string_view source, DirectionalSha
     }
 }
 
-void readOther(const Json& object, std::string_view source, OtherShadowSettings& o)
+void readLocal(const Json& object, std::string_view source, LocalShadowSettings& o)
 {
-    const FieldReader r(source, "other.");
-    r.requireObject(object, "other");
+    const FieldReader r(source, "local.");
+    r.requireObject(object, "local");
     for (const auto& [key, value] : object.items()) {
         if (key == "atlasSize")
             o.atlasSize = r.integer(value, key);
@@ -205,6 +213,7 @@ void readStatic(const Json& object, std::string_view source, StaticShadowSetting
 {
     const FieldReader r(source, "static.");
     r.requireObject(object, "static");
+    r.refuseBothNames(object, "localAtlasSize", "otherAtlasSize");
     for (const auto& [key, value] : object.items()) {
         if (key == "update")
             s.update = r.enumeration(value, key, updateNames);
@@ -212,10 +221,10 @@ void readStatic(const Json& object, std::string_view source, StaticShadowSetting
             s.realtimeCasters = r.enumeration(value, key, realtimeCasterNames);
         else if (key == "directionalAtlasSize")
             s.directionalAtlasSize = r.integer(value, key);
-        else if (key == "otherAtlasSize")
-            s.otherAtlasSize = r.integer(value, key);
+        else if (key == "localAtlasSize" || key == "otherAtlasSize")
+            s.localAtlasSize = r.integer(value, "localAtlasSize");
         else
-            r.unknown(key, "update, realtimeCasters, directionalAtlasSize, otherAtlasSize");
+            r.unknown(key, "update, realtimeCasters, directionalAtlasSize, localAtlasSize");
     }
 }
 
@@ -245,6 +254,7 @@ ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourc
     ShadowSettings settings;
     const FieldReader r(sourceName, "");
     r.requireObject(root, "(top level)");
+    r.refuseBothNames(root, "local", "other");
     for (const auto& [key, value] : root.items()) {
         if (key == "maxDistance")
             settings.maxDistance = r.number(value, key);
@@ -252,14 +262,14 @@ ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourc
             settings.distanceFade = r.number(value, key);
         else if (key == "directional")
             readDirectional(value, sourceName, settings.directional);
-        else if (key == "other")
-            readOther(value, sourceName, settings.other);
+        else if (key == "local" || key == "other")
+            readLocal(value, sourceName, settings.local);
         else if (key == "soft")
             readSoft(value, sourceName, settings.soft);
         else if (key == "static")
             readStatic(value, sourceName, settings.staticMaps);
         else
-            r.unknown(key, "maxDistance, distanceFade, directional, other, soft, static");
+            r.unknown(key, "maxDistance, distanceFade, directional, local, soft, static");
     }
     if (const auto problem = detail::findSettingsProblem(settings))
         throw rhi::Error(
@@ -279,14 +289,14 @@ std::string toJson(const ShadowSettings& s)
     directional["cascadeBlend"] = nameOf(blendNames, d.cascadeBlend);
     directional["projection"] = nameOf(projections, d.projection);
     directional["atlasFormat"] = nameOf(formatNames, d.atlasFormat);
-    const OtherShadowSettings& o = s.other;
-    nlohmann::ordered_json other;
-    other["atlasSize"] = o.atlasSize;
-    other["filter"] = nameOf(filterNames, o.filter);
-    other["atlasFormat"] = nameOf(formatNames, o.atlasFormat);
-    other["pointMode"] = nameOf(pointModeNames, o.pointMode);
-    other["cubeMapSize"] = o.cubeMapSize;
-    other["nearPlane"] = o.nearPlane;
+    const LocalShadowSettings& o = s.local;
+    nlohmann::ordered_json local;
+    local["atlasSize"] = o.atlasSize;
+    local["filter"] = nameOf(filterNames, o.filter);
+    local["atlasFormat"] = nameOf(formatNames, o.atlasFormat);
+    local["pointMode"] = nameOf(pointModeNames, o.pointMode);
+    local["cubeMapSize"] = o.cubeMapSize;
+    local["nearPlane"] = o.nearPlane;
     const SoftShadowSettings& f = s.soft;
     nlohmann::ordered_json soft;
     soft["blockerSearchScale"] = f.blockerSearchScale;
@@ -300,12 +310,12 @@ std::string toJson(const ShadowSettings& s)
     staticMaps["update"] = nameOf(updateNames, s.staticMaps.update);
     staticMaps["realtimeCasters"] = nameOf(realtimeCasterNames, s.staticMaps.realtimeCasters);
     staticMaps["directionalAtlasSize"] = s.staticMaps.directionalAtlasSize;
-    staticMaps["otherAtlasSize"] = s.staticMaps.otherAtlasSize;
+    staticMaps["localAtlasSize"] = s.staticMaps.localAtlasSize;
     nlohmann::ordered_json root;
     root["maxDistance"] = s.maxDistance;
     root["distanceFade"] = s.distanceFade;
     root["directional"] = std::move(directional);
-    root["other"] = std::move(other);
+    root["local"] = std::move(local);
     root["soft"] = std::move(soft);
     root["static"] = std::move(staticMaps);
     return root.dump(2) + "\n";

@@ -128,9 +128,9 @@ struct Objects {
     std::unique_ptr<rhi::Texture> color, depth, image, small;
     std::unique_ptr<rhi::Texture> multisampled, multisampledDepth; // 8x8 RGBA8 and D32F, multisampleCount samples
     std::unique_ptr<rhi::Sampler> sampler;
-    std::unique_ptr<rhi::Shader> vertex, fragment, otherShader;
+    std::unique_ptr<rhi::Shader> vertex, fragment, localShader;
     std::unique_ptr<rhi::Framebuffer> target, multisampledTarget;
-    std::unique_ptr<rhi::Pipeline> pipeline, otherPipeline; // otherPipeline: a row's own
+    std::unique_ptr<rhi::Pipeline> pipeline, localPipeline; // localPipeline: a row's own
     std::unique_ptr<rhi::CommandList> list; // last: it goes first, before what it names
 };
 
@@ -457,13 +457,13 @@ const std::vector<Rule>& rules()
         {"pipelines draw into framebuffers of their formats",
          [](Objects& o) {
              o.bindForDraw();
-             o.otherShader = o.device.createShader({rhi::ShaderStage::Fragment, depthOnlyFragmentGlsl, "depth.frag"});
+             o.localShader = o.device.createShader({rhi::ShaderStage::Fragment, depthOnlyFragmentGlsl, "depth.frag"});
              rhi::PipelineDesc d = o.pipelineDesc();
-             d.fragment = o.otherShader.get();
+             d.fragment = o.localShader.get();
              d.colorTargets.clear();
              d.debugName = "depth only";
-             o.otherPipeline = o.device.createPipeline(d);
-             o.list->bindPipeline(*o.otherPipeline);
+             o.localPipeline = o.device.createPipeline(d);
+             o.list->bindPipeline(*o.localPipeline);
          },
          [](Objects& o) { o.list->draw(3); }, E::Error,
          text("draw: pipeline 'depth only' renders to depth D32F, but the pass's framebuffer has RGBA8, depth D32F")},

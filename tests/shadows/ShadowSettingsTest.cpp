@@ -23,12 +23,12 @@ void expectEqual(const ShadowSettings& a, const ShadowSettings& b)
     EXPECT_EQ(a.directional.cascadeBlend, b.directional.cascadeBlend);
     EXPECT_EQ(a.directional.projection, b.directional.projection);
     EXPECT_EQ(a.directional.atlasFormat, b.directional.atlasFormat);
-    EXPECT_EQ(a.other.atlasSize, b.other.atlasSize);
-    EXPECT_EQ(a.other.filter, b.other.filter);
-    EXPECT_EQ(a.other.atlasFormat, b.other.atlasFormat);
-    EXPECT_EQ(a.other.pointMode, b.other.pointMode);
-    EXPECT_EQ(a.other.cubeMapSize, b.other.cubeMapSize);
-    EXPECT_EQ(a.other.nearPlane, b.other.nearPlane);
+    EXPECT_EQ(a.local.atlasSize, b.local.atlasSize);
+    EXPECT_EQ(a.local.filter, b.local.filter);
+    EXPECT_EQ(a.local.atlasFormat, b.local.atlasFormat);
+    EXPECT_EQ(a.local.pointMode, b.local.pointMode);
+    EXPECT_EQ(a.local.cubeMapSize, b.local.cubeMapSize);
+    EXPECT_EQ(a.local.nearPlane, b.local.nearPlane);
 }
 
 ShadowSettings unusualSettings()
@@ -44,16 +44,16 @@ ShadowSettings unusualSettings()
     s.directional.cascadeBlend = CascadeBlend::Dither;
     s.directional.projection = CascadeProjection::Close;
     s.directional.atlasFormat = rhi::Format::D24S8;
-    s.other.atlasSize = 2048;
-    s.other.filter = ShadowFilter::PCF3x3;
-    s.other.atlasFormat = rhi::Format::D16;
-    s.other.pointMode = PointShadowMode::CubeMap;
-    s.other.cubeMapSize = 256;
-    s.other.nearPlane = 0.0375f;
+    s.local.atlasSize = 2048;
+    s.local.filter = ShadowFilter::PCF3x3;
+    s.local.atlasFormat = rhi::Format::D16;
+    s.local.pointMode = PointShadowMode::CubeMap;
+    s.local.cubeMapSize = 256;
+    s.local.nearPlane = 0.0375f;
     s.staticMaps.update = StaticShadowUpdate::OnDemand;
     s.staticMaps.realtimeCasters = RealtimeCasters::Dynamic;
     s.staticMaps.directionalAtlasSize = 8192;
-    s.staticMaps.otherAtlasSize = 512;
+    s.staticMaps.localAtlasSize = 512;
     return s;
 }
 
@@ -132,23 +132,47 @@ TEST(ShadowSettingsJson, MissingFieldsKeepTheirDefaults)
                 expected);
 }
 
+TEST(ShadowSettingsJson, OldNamesOfTheLocalFieldsStillLoad)
+{
+    ShadowSettings expected;
+    expected.local.atlasSize = 1024;
+    expected.local.pointMode = PointShadowMode::CubeMap;
+    expected.staticMaps.localAtlasSize = 512;
+    const char* current = R"({"local": {"atlasSize": 1024, "pointMode": "cubemap"}, "static": {"localAtlasSize": 512}})";
+    const char* old = R"({"other": {"atlasSize": 1024, "pointMode": "cubemap"}, "static": {"otherAtlasSize": 512}})";
+    expectEqual(parseShadowSettings(current, "current.json"), expected);
+    expectEqual(parseShadowSettings(old, "old.json"), expected);
+    EXPECT_EQ(toJson(parseShadowSettings(old, "old.json")), toJson(expected));
+}
+
+TEST(ShadowSettingsJson, BothNamesOfALocalFieldAreRefused)
+{
+    EXPECT_EQ(errorOf([] { parseShadowSettings(R"({"local": {}, "other": {}})", "both.json"); }),
+              "both.json: other and local are one field (the old and the current name); give only local");
+    EXPECT_EQ(errorOf([] {
+                  parseShadowSettings(R"({"static": {"otherAtlasSize": 512, "localAtlasSize": 512}})", "both.json");
+              }),
+              "both.json: static.otherAtlasSize and static.localAtlasSize are one field (the old and the current "
+              "name); give only static.localAtlasSize");
+}
+
 TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
     EXPECT_EQ(parseError(R"({"maxDistanse": 5})"),
-              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, other, soft, static");
+              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, local, soft, static");
     EXPECT_EQ(parseError(R"({"static": {"update": "sometimes"}})"),
               "shadows.json: static.update: unknown value \"sometimes\", allowed everyFrame, onChange, onDemand");
     EXPECT_EQ(parseError(R"({"static": {"directionalAtlasSize": 16384}})"),
               "shadows.json: static.directionalAtlasSize: 16384 is out of range, allowed powers of two 256..8192");
-    EXPECT_EQ(parseError(R"({"other": {"pointMode": "cube"}})"),
-              "shadows.json: other.pointMode: unknown value \"cube\", allowed atlas, cubemap");
-    EXPECT_EQ(parseError(R"({"other": {"atlasSize": 100}})"),
-              "shadows.json: other.atlasSize: 100 is out of range, allowed powers of two 256..8192");
-    EXPECT_EQ(parseError(R"({"other": {"cubeMapSize": 8192}})"),
-              "shadows.json: other.cubeMapSize: 8192 is out of range, allowed powers of two 64..4096");
-    EXPECT_EQ(parseError(R"({"other": {"nearPlane": 0.6}})"),
-              "shadows.json: other.nearPlane: 0.6 is out of range, allowed 0.0001..0.5");
+    EXPECT_EQ(parseError(R"({"local": {"pointMode": "cube"}})"),
+              "shadows.json: local.pointMode: unknown value \"cube\", allowed atlas, cubemap");
+    EXPECT_EQ(parseError(R"({"local": {"atlasSize": 100}})"),
+              "shadows.json: local.atlasSize: 100 is out of range, allowed powers of two 256..8192");
+    EXPECT_EQ(parseError(R"({"local": {"cubeMapSize": 8192}})"),
+              "shadows.json: local.cubeMapSize: 8192 is out of range, allowed powers of two 64..4096");
+    EXPECT_EQ(parseError(R"({"local": {"nearPlane": 0.6}})"),
+              "shadows.json: local.nearPlane: 0.6 is out of range, allowed 0.0001..0.5");
     EXPECT_EQ(parseError(R"({"directional": {"blend": "soft"}})"),
               "shadows.json: directional.blend: unknown field, allowed atlasSize, filter, cascadeCount, "
               "cascadeRatios, cascadeFade, cascadeBlend, projection, atlasFormat");

@@ -3,7 +3,7 @@
 
 #include "penumbra/shadows/CascadeData.hpp"
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
-#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 #include "penumbra/shadows/FilterConstants.hpp"
 #include "penumbra/shadows/PoissonDisk.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
@@ -197,11 +197,11 @@ TEST(SoftSettingsTest, JsonRoundTripsAndNamesBadFields)
 {
     ShadowSettings s;
     s.directional.filter = ShadowFilter::PCSS;
-    s.other.filter = ShadowFilter::Poisson;
+    s.local.filter = ShadowFilter::Poisson;
     s.soft = {2.0f, 0.5f, 32, 64, 2.0f, 40.0f, 3.5f};
     const ShadowSettings back = parseShadowSettings(toJson(s), "test");
     EXPECT_EQ(back.directional.filter, ShadowFilter::PCSS);
-    EXPECT_EQ(back.other.filter, ShadowFilter::Poisson);
+    EXPECT_EQ(back.local.filter, ShadowFilter::Poisson);
     EXPECT_EQ(back.soft.blockerSearchScale, 2.0f);
     EXPECT_EQ(back.soft.penumbraScale, 0.5f);
     EXPECT_EQ(back.soft.blockerSamples, 32u);
@@ -310,9 +310,9 @@ TEST(SoftPlannerTest, LocalLightsCarryTheirFilterRadiusAndNearPlane)
     point.filter = ShadowFilter::Poisson;
     ShadowSettings settings;
     for (const PointShadowMode mode : {PointShadowMode::Atlas, PointShadowMode::CubeMap}) {
-        settings.other.pointMode = mode;
-        const OtherShadowPlan plan =
-            planOtherShadows(settings, allConventions()[0], cameraAt({0, 2, 8}), std::span(&spot, 1),
+        settings.local.pointMode = mode;
+        const LocalShadowPlan plan =
+            planLocalShadows(settings, allConventions()[0], cameraAt({0, 2, 8}), std::span(&spot, 1),
                              std::span(&point, 1), casters);
         const int tile = plan.spotTiles[0];
         ASSERT_GE(tile, 0);

@@ -79,7 +79,7 @@ TEST(StaticShadowPlanner, SpotAndPointMapsTakeTilesInTheLitPassOrder)
     EXPECT_EQ(plan.maps[0].tiles.size(), 1u);
     EXPECT_EQ(plan.maps[1].kind, ShadowLightKind::Point);
     EXPECT_EQ(plan.maps[1].tiles.size(), 6u);
-    EXPECT_EQ(plan.otherAtlas.tileCount(), 7u);
+    EXPECT_EQ(plan.localAtlas.tileCount(), 7u);
     // The spot light sees the first box below it, never the dynamic one's index.
     EXPECT_EQ(plan.maps[0].tiles[0].casters, std::vector<std::uint32_t>{0});
     EXPECT_EQ(plan.uniforms.localLights[0].x, 0.0f);

@@ -4,7 +4,7 @@
 // difference between the two larger than a correct filter gives over that distance. Probed on the room's
 // surfaces at every point the twelve face edges' directions reach, lit and shadowed alike (every surface
 // along each ray from the light, not only the first), so shadow boundaries that cross an edge are included.
-// Each face is looked up in the read-back atlas or cube map exactly as shaders/other_shadows.glsl does.
+// Each face is looked up in the read-back atlas or cube map exactly as shaders/local_shadows.glsl does.
 #include "GpuTesting.hpp"
 #include "ShadowFaults.hpp"
 
@@ -104,14 +104,14 @@ std::vector<EdgeProbe> edgeProbes(const scene::Scene& scene, glm::vec3 light, st
     return probes;
 }
 
-// The shadow (1 lit) at a receiver through one chosen face, as otherAtlasShadow / cubeMapShadow compute it.
+// The shadow (1 lit) at a receiver through one chosen face, as localAtlasShadow / cubeMapShadow compute it.
 class PointShadowLookup {
 public:
     PointShadowLookup(rhi::Device& device, const render::SceneRenderer& renderer, glm::vec3 light)
-        : conventions_(device.conventions()), plan_(renderer.otherPlan()), light_(light)
+        : conventions_(device.conventions()), plan_(renderer.localPlan()), light_(light)
     {
         if (plan_.cubes.empty()) {
-            const rhi::DepthImage atlas = rhi::readDepth(device, renderer.otherAtlas().texture());
+            const rhi::DepthImage atlas = rhi::readDepth(device, renderer.localAtlas().texture());
             const std::uint32_t size = plan_.atlas.tileSize();
             for (std::uint32_t face = 0; face < shadows::cubeFaceCount; ++face) {
                 const glm::uvec2 offset = plan_.atlas.tileOffset(firstTile() + face);
@@ -185,7 +185,7 @@ private:
     }
 
     const rhi::Conventions& conventions_;
-    const shadows::OtherShadowPlan& plan_;
+    const shadows::LocalShadowPlan& plan_;
     glm::vec3 light_;
     std::array<shadows::ShadowDepthGrid, shadows::cubeFaceCount> grids_;
 };
@@ -228,16 +228,16 @@ protected:
         render::FrameDesc frame;
         frame.width = 64;
         frame.height = 36;
-        frame.shadows.other.filter = kFilter;
-        frame.shadows.other.pointMode = mode;
+        frame.shadows.local.filter = kFilter;
+        frame.shadows.local.pointMode = mode;
         render::SceneRenderer renderer(*device, scene);
         render::ShadowPlans plans = renderer.planShadows(scene.camera, frame);
         renderer.render(scene.camera, frame, fault ? fault(std::move(plans), scene) : std::move(plans));
         const PointShadowLookup lookup(*device, renderer, light);
         const float bound = seamBound(mode);
         SeamFigures figures;
-        const std::uint32_t faceSize = mode == PointShadowMode::Atlas ? renderer.otherPlan().atlas.tileSize()
-                                                                      : frame.shadows.other.cubeMapSize;
+        const std::uint32_t faceSize = mode == PointShadowMode::Atlas ? renderer.localPlan().atlas.tileSize()
+                                                                      : frame.shadows.local.cubeMapSize;
         for (const EdgeProbe& probe : edgeProbes(scene, light, faceSize)) {
             const float a = lookup(probe.faces[0], probe.positions[0], probe.normal);
             const float b = lookup(probe.faces[1], probe.positions[1], probe.normal);
@@ -273,7 +273,7 @@ protected:
     PlanFault facesOf(float degrees)
     {
         return [this, degrees](render::ShadowPlans plans, const scene::Scene& scene) {
-            plans.other = withPointFaceFieldOfView(std::move(plans.other), scene, glm::radians(degrees),
+            plans.local = withPointFaceFieldOfView(std::move(plans.local), scene, glm::radians(degrees),
                                                    device->conventions());
             return plans;
         };

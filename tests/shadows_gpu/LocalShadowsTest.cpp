@@ -55,7 +55,7 @@ scene::Scene roomLitFromInside()
 
 render::FrameDesc inMode(render::FrameDesc frame, shadows::PointShadowMode mode)
 {
-    frame.shadows.other.pointMode = mode;
+    frame.shadows.local.pointMode = mode;
     return frame;
 }
 
@@ -80,12 +80,12 @@ TEST_F(LocalShadowsTest, PointFacesStoreTheLightFacingSideOfACaster)
     for (const shadows::PointShadowMode mode : {shadows::PointShadowMode::Atlas, shadows::PointShadowMode::CubeMap}) {
         render::SceneRenderer renderer(*device, scene);
         renderer.render(scene.camera, inMode(frame(), mode));
-        const shadows::OtherShadowPlan& plan = renderer.otherPlan();
+        const shadows::LocalShadowPlan& plan = renderer.localPlan();
         const bool atlasMode = mode == shadows::PointShadowMode::Atlas;
         const std::uint32_t tile = static_cast<std::uint32_t>(plan.pointShadows[0]) + static_cast<std::uint32_t>(face);
         const shadows::LocalShadowView& view =
             atlasMode ? plan.tiles[tile].view : plan.cubes[0].faces[static_cast<std::size_t>(face)];
-        const rhi::DepthImage depth = atlasMode ? rhi::readDepth(*device, renderer.otherAtlas().texture())
+        const rhi::DepthImage depth = atlasMode ? rhi::readDepth(*device, renderer.localAtlas().texture())
                                                 : rhi::readDepth(*device, renderer.shadowCubes().texture(),
                                                                  rhi::cubeLayer(0, face));
         const glm::mat4 toTexture = atlasMode ? plan.uniforms.worldToAtlas[tile]
@@ -123,11 +123,11 @@ TEST_F(LocalShadowsTest, LightsBeyondTheTileBudgetAreLitWithoutShadowsAndReporte
     scene.pointLights.push_back({.name = "third bulb", .position = {4.0f, 2.0f, 6.0f}});
     render::SceneRenderer renderer(*device, scene);
     const render::FrameStats stats = renderer.render(scene.camera, frame());
-    const std::string expected = "point light 2 ('third bulb') has no shadows: needs 6 of the other atlas's 16 tiles, 1 "
+    const std::string expected = "point light 2 ('third bulb') has no shadows: needs 6 of the local atlas's 16 tiles, 1 "
                                  "are left";
     EXPECT_NE(std::find(stats.notes.begin(), stats.notes.end(), expected), stats.notes.end());
-    EXPECT_EQ(renderer.otherPlan().pointShadows, (std::vector<int>{3, 9, -1}));
-    EXPECT_EQ(renderer.otherPlan().atlas.tileCount(), 15u);
+    EXPECT_EQ(renderer.localPlan().pointShadows, (std::vector<int>{3, 9, -1}));
+    EXPECT_EQ(renderer.localPlan().atlas.tileCount(), 15u);
 }
 
 TEST_F(LocalShadowsTest, DistanceFadeAppliesWithoutDirectionalLights)

@@ -23,7 +23,7 @@ render::FrameDesc msaaFrame()
     frame.height = kSize;
     frame.msaa = kSamples;
     frame.shadows.directional.atlasSize = 512;
-    frame.shadows.other.atlasSize = 512;
+    frame.shadows.local.atlasSize = 512;
     return frame;
 }
 

@@ -7,7 +7,7 @@
 #include "penumbra/shadows/AtlasMatrix.hpp"
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
-#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -32,9 +32,9 @@ inline shadows::DirectionalShadowPlan withoutTexelSnap(shadows::DirectionalShado
 // Point light faces rendered with field of view `fov` (radians): 90 degrees is a plan without the FOV bias,
 // less leaves strips of directions that no face covers. Tiles keep their normal bias; cube maps are still
 // sampled as 90-degree faces.
-inline shadows::OtherShadowPlan withPointFaceFieldOfView(shadows::OtherShadowPlan plan, const scene::Scene& scene,
+inline shadows::LocalShadowPlan withPointFaceFieldOfView(shadows::LocalShadowPlan plan, const scene::Scene& scene,
                                                          float fov, const rhi::Conventions& conventions,
-                                                         const shadows::OtherShadowSettings& settings = {})
+                                                         const shadows::LocalShadowSettings& settings = {})
 {
     for (std::size_t i = 0; i < scene.pointLights.size(); ++i) {
         const int first = plan.pointShadows.at(i);
@@ -47,7 +47,7 @@ inline shadows::OtherShadowPlan withPointFaceFieldOfView(shadows::OtherShadowPla
         for (const shadows::CubeFace face : rhi::allCubeFaces) {
             const auto f = static_cast<std::uint32_t>(face);
             if (plan.cubes.empty()) {
-                shadows::OtherAtlasTile& tile = plan.tiles.at(static_cast<std::uint32_t>(first) + f);
+                shadows::LocalAtlasTile& tile = plan.tiles.at(static_cast<std::uint32_t>(first) + f);
                 tile.view.projection = projection;
                 tile.view.viewProjection = projection * shadows::pointFaceView(face, light.position);
                 plan.uniforms.worldToAtlas[tile.tile] =

@@ -225,7 +225,7 @@ TEST_F(ShadowMaskTest, PointShadowsAgreeWithTheRayCast)
     const scene::Scene room = roomLitFromInside();
     checkPositionalLight(*this, room, "room", kPoint);
     shadows::ShadowSettings cubeMaps;
-    cubeMaps.other.pointMode = shadows::PointShadowMode::CubeMap;
+    cubeMaps.local.pointMode = shadows::PointShadowMode::CubeMap;
     checkPositionalLight(*this, room, "room-cube-map", kPoint, cubeMaps);
 }
 
@@ -443,10 +443,10 @@ TEST_F(ShadowMaskTest, NarrowCubeFacesCatchesFault)
 {
     const scene::Scene room = roomLitFromInside();
     shadows::ShadowSettings cubeMaps;
-    cubeMaps.other.pointMode = shadows::PointShadowMode::CubeMap;
+    cubeMaps.local.pointMode = shadows::PointShadowMode::CubeMap;
     const render::FrameDesc frame = maskFrame(cubeMaps, kControlWidth, kControlHeight, kPoint);
     const ShadowMask mask = renderMask(room, frame, [&](render::ShadowPlans plans) {
-            plans.other = withPointFaceFieldOfView(std::move(plans.other), room, glm::radians(86.0f),
+            plans.local = withPointFaceFieldOfView(std::move(plans.local), room, glm::radians(86.0f),
                                                    gpu().conventions());
             return plans;
         });

@@ -61,7 +61,7 @@ struct Variant {
     CascadeBlend blend = CascadeBlend::Hard;
     shadows::CascadeProjection projection = shadows::CascadeProjection::Stable;
     std::optional<CasterMode> casters; // every material but the ground's, when set
-    ShadowFilter otherFilter = ShadowFilter::PCF2x2;
+    ShadowFilter localFilter = ShadowFilter::PCF2x2;
     shadows::PointShadowMode pointMode = shadows::PointShadowMode::Atlas;
     bool textured = false; // every material gets texturedChecker() as its base colour texture
     bool staticMaps = false; // static shadow maps kept (onChange) in static atlases of kAtlasSize
@@ -132,13 +132,13 @@ render::FrameDesc frameOf(const Variant& variant)
     frame.shadows.directional.filter = variant.filter;
     frame.shadows.directional.cascadeBlend = variant.blend;
     frame.shadows.directional.projection = variant.projection;
-    frame.shadows.other.atlasSize = kAtlasSize;
-    frame.shadows.other.filter = variant.otherFilter;
-    frame.shadows.other.pointMode = variant.pointMode;
+    frame.shadows.local.atlasSize = kAtlasSize;
+    frame.shadows.local.filter = variant.localFilter;
+    frame.shadows.local.pointMode = variant.pointMode;
     if (variant.staticMaps) {
         frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
         frame.shadows.staticMaps.directionalAtlasSize = kAtlasSize;
-        frame.shadows.staticMaps.otherAtlasSize = kAtlasSize;
+        frame.shadows.staticMaps.localAtlasSize = kAtlasSize;
     }
     return frame;
 }
@@ -317,7 +317,7 @@ TEST(ShadowParity, EveryConfigurationIsRendered)
     frame.width = 64;
     frame.height = 36;
     frame.shadows.directional.atlasSize = 256;
-    frame.shadows.other.atlasSize = 256;
+    frame.shadows.local.atlasSize = 256;
     std::vector<std::string> rendered;
     std::string reasons;
     for (const parity::ConfigurationRun& run : renderEverywhere(apps::namedScene("mixed"), frame)) {
@@ -356,11 +356,11 @@ TEST(ShadowParity, CastersOff) { checkParity({.name = "casters-off", .casters = 
 // sRGB base colour textures with CPU-made mip chains, trilinear and anisotropic, on every surface.
 TEST(ShadowParity, TexturedMaterials) { checkParity({.name = "textured", .textured = true}); }
 
-// Directional + 3 spot + 2 point lights: the other atlas holds 15 tiles.
+// Directional + 3 spot + 2 point lights: the local atlas holds 15 tiles.
 TEST(ShadowParity, MixedLights) { checkParity({.name = "mixed", .scene = "mixed"}); }
 // The static maps of the mixed scene's lights, read back from both static atlases: like the realtime atlases.
 TEST(ShadowParity, StaticMaps) { checkParity({.name = "static", .scene = "mixed", .staticMaps = true}); }
-TEST(ShadowParity, MixedLightsPcf5) { checkParity({.name = "mixed-pcf5", .scene = "mixed", .otherFilter = ShadowFilter::PCF5x5}); }
+TEST(ShadowParity, MixedLightsPcf5) { checkParity({.name = "mixed-pcf5", .scene = "mixed", .localFilter = ShadowFilter::PCF5x5}); }
 TEST(ShadowParity, PointLightRoomCubeMaps)
 {
     checkParity({.name = "room-cube", .scene = "room", .pointMode = shadows::PointShadowMode::CubeMap});
@@ -372,18 +372,18 @@ TEST(ShadowParity, GltfMaterials) { checkParity({.name = "gltf-materials", .scen
 // defaults): PCSS's Poisson disks turned by the light-space texel hash give both backends the same pixels.
 TEST(ShadowParity, MixedLightsPcss)
 {
-    checkParity({.name = "mixed-pcss", .scene = "mixed", .filter = ShadowFilter::PCSS, .otherFilter = ShadowFilter::PCSS,
+    checkParity({.name = "mixed-pcss", .scene = "mixed", .filter = ShadowFilter::PCSS, .localFilter = ShadowFilter::PCSS,
                  .softPixels = 4});
 }
 TEST(ShadowParity, PointLightRoomCubeMapsPcss)
 {
     checkParity({.name = "room-cube-pcss",
                  .scene = "room",
-                 .otherFilter = ShadowFilter::PCSS,
+                 .localFilter = ShadowFilter::PCSS,
                  .pointMode = shadows::PointShadowMode::CubeMap,
                  .softPixels = 4});
 }
-TEST(ShadowParity, PointLightRoom) { checkParity({.name = "room", .scene = "room", .otherFilter = ShadowFilter::PCF3x3}); }
+TEST(ShadowParity, PointLightRoom) { checkParity({.name = "room", .scene = "room", .localFilter = ShadowFilter::PCF3x3}); }
 
 // The negative controls: a real render of the 1x1 variant on the first compiled configuration, one texel or pixel
 // changed, judged by the thresholds the parity tests above use.

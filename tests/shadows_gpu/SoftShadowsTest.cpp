@@ -61,7 +61,7 @@ render::FrameDesc softFrame(LightRef light)
     frame.shadows.maxDistance = 20.0f;
     frame.shadows.directional.cascadeCount = 1;
     frame.shadows.directional.atlasSize = 2048;
-    frame.shadows.other.atlasSize = 2048;
+    frame.shadows.local.atlasSize = 2048;
     frame.visibilityOf = light;
     return frame;
 }
@@ -265,8 +265,8 @@ TEST_F(SoftShadowsTest, CubeMapsAgreeWithAtlasTiles)
     renderer.render(scene.camera, frame);
     const scene::RenderedVisibility atlas = render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
     // Cube faces a little finer than the atlas's six 682-texel tiles (a 2048 atlas split in 3 x 3).
-    frame.shadows.other.pointMode = shadows::PointShadowMode::CubeMap;
-    frame.shadows.other.cubeMapSize = 1024;
+    frame.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
+    frame.shadows.local.cubeMapSize = 1024;
     renderer.render(scene.camera, frame);
     const scene::RenderedVisibility cube = render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
     double difference = 0.0;

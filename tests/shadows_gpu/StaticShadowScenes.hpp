@@ -24,7 +24,7 @@ inline render::FrameDesc staticMapsFrame(shadows::StaticShadowUpdate update = sh
     frame.height = kStaticHeight;
     frame.shadows.staticMaps.update = update;
     frame.shadows.staticMaps.directionalAtlasSize = 1024;
-    frame.shadows.staticMaps.otherAtlasSize = 512;
+    frame.shadows.staticMaps.localAtlasSize = 512;
     return frame;
 }
 

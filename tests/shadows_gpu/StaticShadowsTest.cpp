@@ -127,7 +127,7 @@ TEST_F(StaticShadowsTest, AChangeDrawsExactlyTheMapsItTouches)
     EXPECT_EQ(updated(), kSunMap);
     scene.spotLights[0].slopeScaleBias = 2.0f;
     EXPECT_EQ(updated(), kLampMap);
-    frame.shadows.staticMaps.otherAtlasSize = 256;
+    frame.shadows.staticMaps.localAtlasSize = 256;
     EXPECT_EQ(updated(), kLampMap);
     EXPECT_EQ(updated(), kNoMap);
 
@@ -183,7 +183,7 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point));
     const rhi::Image again = read(renderer);
     EXPECT_LE(differingShare(mixed, again), 0.001) << picture(mixed, "mixed-modes") << " vs " << picture(again, "on-change");
-    // The bulb's six tiles reshape the static other atlas: the lamp's tile moves with them.
+    // The bulb's six tiles reshape the static local atlas: the lamp's tile moves with them.
     scene.pointLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
     EXPECT_EQ(updated(), (std::vector<std::string>{kLampMap[0], "point light 0 ('bulb')"}));
 }
@@ -230,7 +230,7 @@ TEST_F(StaticShadowsTest, StaticMapsTakeTheLightsSoftFilter)
         frame.shadows.maxDistance = maxDistance;
         frame.visibilityOf = light;
         // The Poisson disk's radius is in texels: the lamp's static tile has the texels of its realtime one.
-        frame.shadows.staticMaps.otherAtlasSize = frame.shadows.other.atlasSize;
+        frame.shadows.staticMaps.localAtlasSize = frame.shadows.local.atlasSize;
         frame.shadows.soft.poissonRadiusTexels = 8.0f;
         renderer.render(scene.camera, frame);
         return rhi::readTexture(*device, renderer.visibilityImage());
@@ -433,7 +433,7 @@ TEST_F(StaticShadowsTest, StaleMismatchedAndTruncatedBakesAreRefusedByName)
     const auto renderWith = [&](const render::FrameDesc& f) { return errorOf([&] { renderer.render(scene.camera, f); }); };
     EXPECT_EQ(renderWith(frame), "(no error)");
     render::FrameDesc smaller = frame;
-    smaller.shadows.staticMaps.otherAtlasSize = 256;
+    smaller.shadows.staticMaps.localAtlasSize = 256;
     const std::string resized = renderWith(smaller);
     EXPECT_NE(resized.find("was baked as 1 tiles of 512 texels, the settings give 1 of 256"), std::string::npos)
         << resized;

@@ -46,7 +46,7 @@ TEST(ViewStateTest, SpotAndPointLightEditsReachTheSceneAndBadOnesAreRefused)
     ViewState edited = applied;
     edited.spotLights[1].direction = {0.0f, -3.0f, 0.0f};
     edited.pointLights[0].range = 4.0f;
-    edited.shadows.other.pointMode = shadows::PointShadowMode::CubeMap;
+    edited.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
     EXPECT_EQ(applyViewState(edited, applied, scene), "");
     EXPECT_EQ(scene.spotLights[1].direction, glm::vec3(0.0f, -1.0f, 0.0f));
     EXPECT_EQ(scene.pointLights[0].range, 4.0f);
@@ -58,8 +58,8 @@ TEST(ViewStateTest, SpotAndPointLightEditsReachTheSceneAndBadOnesAreRefused)
     EXPECT_NE(error.find("spot light 0"), std::string::npos) << error;
     EXPECT_NE(scene.pointLights[1].intensity, 9.0f);
     edited = applied;
-    edited.shadows.other.cubeMapSize = 100;
-    EXPECT_NE(applyViewState(edited, applied, scene).find("other.cubeMapSize"), std::string::npos);
+    edited.shadows.local.cubeMapSize = 100;
+    EXPECT_NE(applyViewState(edited, applied, scene).find("local.cubeMapSize"), std::string::npos);
 }
 
 TEST(ViewStateTest, ShadowSettingsOutOfRangeAreRefusedNamingTheFieldAndChangeNothing)

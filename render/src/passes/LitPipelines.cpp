@@ -64,7 +64,7 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
     desc.depthFormat = kLitDepthFormat;
     desc.samples = samples_;
     desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
-                           shadows::otherShadowLayout(), shadows::staticShadowLayout()};
+                           shadows::localShadowLayout(), shadows::staticShadowLayout()};
     desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
     rhi::ColorTarget target{kLitColorFormat};
     if (features.depthPrepassed) {
@@ -86,15 +86,15 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
 
 LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
                                       const shadows::DirectionalShadowUniforms& directional,
-                                      const shadows::OtherShadowUniforms& other,
+                                      const shadows::LocalShadowUniforms& local,
                                       const shadows::StaticShadowUniforms& staticMaps)
 {
-    std::vector<int> filters{directional.config.y, other.config.x};
+    std::vector<int> filters{directional.config.y, local.config.x};
     for (const glm::vec4& light : directional.lightShadowData)
         filters.push_back(static_cast<int>(light.w));
-    for (const glm::vec4& tile : other.tileData)
+    for (const glm::vec4& tile : local.tileData)
         filters.push_back(static_cast<int>(tile.y));
-    for (const glm::vec4& cube : other.cubeSoft)
+    for (const glm::vec4& cube : local.cubeSoft)
         filters.push_back(static_cast<int>(cube.x));
     bool staticShadows = false;
     for (const glm::vec4& light : staticMaps.directionalLights) {
@@ -103,14 +103,14 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
     }
     for (const glm::vec4& light : staticMaps.localLights)
         staticShadows = staticShadows || light.x >= 0.0f;
-    for (const glm::vec4& tile : staticMaps.otherData)
+    for (const glm::vec4& tile : staticMaps.localData)
         filters.push_back(static_cast<int>(tile.y));
     LitShaderFeatures features;
     features.localLights = frame.config.z > 0;
     features.staticShadows = staticShadows;
     features.tentFilters = std::any_of(filters.begin(), filters.end(), isTent);
     features.softFilters = std::any_of(filters.begin(), filters.end(), isSoft);
-    features.shadowCubes = other.config.y == static_cast<int>(shadows::PointShadowMode::CubeMap);
+    features.shadowCubes = local.config.y == static_cast<int>(shadows::PointShadowMode::CubeMap);
     return features;
 }
 

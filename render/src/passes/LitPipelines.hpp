@@ -3,7 +3,7 @@
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
-#include "penumbra/shadows/OtherShadowUniforms.hpp"
+#include "penumbra/shadows/LocalShadowUniforms.hpp"
 #include "penumbra/shadows/StaticShadowUniforms.hpp"
 
 #include <cstdint>
@@ -39,7 +39,7 @@ private:
 // no prepass and every material map: the caller sets those).
 LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
                                       const shadows::DirectionalShadowUniforms& directional,
-                                      const shadows::OtherShadowUniforms& other,
+                                      const shadows::LocalShadowUniforms& local,
                                       const shadows::StaticShadowUniforms& staticMaps);
 
 } // namespace penumbra::render

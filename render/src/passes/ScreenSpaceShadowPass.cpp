@@ -4,7 +4,7 @@
 
 #include "penumbra/shaders/ShaderLibrary.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
-#include "penumbra/shadows/OtherShadowUniforms.hpp"
+#include "penumbra/shadows/LocalShadowUniforms.hpp"
 #include "penumbra/shadows/StaticShadowUniforms.hpp"
 
 #include <algorithm>
@@ -107,10 +107,10 @@ const rhi::Pipeline& ScreenSpaceShadowPass::pipeline(const LitShaderFeatures& fe
     desc.fragment = fragment.get();
     desc.colorTargets = {rhi::ColorTarget{kScreenSpaceShadowFormat}};
     desc.uniformLayouts = {collectionLayout(), shadows::directionalShadowLayout()};
-    // The static maps' functions come with other_shadows.glsl's block (screen_space_shadows.frag).
+    // The static maps' functions come with local_shadows.glsl's block (screen_space_shadows.frag).
     if (features.staticShadows)
         desc.uniformLayouts.insert(desc.uniformLayouts.end(),
-                                   {shadows::otherShadowLayout(), shadows::staticShadowLayout()});
+                                   {shadows::localShadowLayout(), shadows::staticShadowLayout()});
     desc.debugName = fmt::format("screen-space shadows (features {:#x})", key);
     pipeline = device_.createPipeline(desc);
     return *pipeline;

@@ -77,7 +77,7 @@ StaticShadowCache::StaticShadowCache(rhi::Device& device, const shadows::CasterV
     : device_(device), pass_(device, vertexFormat)
 {
     prepareAtlas(device_, directionalAtlas_, kStandInAtlasSize, rhi::Format::D32F, "static directional shadow atlas");
-    prepareAtlas(device_, otherAtlas_, kStandInAtlasSize, rhi::Format::D32F, "static other shadow atlas");
+    prepareAtlas(device_, localAtlas_, kStandInAtlasSize, rhi::Format::D32F, "static local shadow atlas");
 }
 
 bool StaticShadowCache::prepareAtlas(rhi::Device& device, std::unique_ptr<shadows::ShadowAtlas>& atlas,
@@ -114,7 +114,7 @@ void StaticShadowCache::checkBake(const shadows::StaticShadowPlan& plan, std::sp
                                          bake_->configuration, mapName(map)));
     for (std::size_t i = 0; i < plan.maps.size(); ++i) {
         const shadows::StaticShadowMap& map = plan.maps[i];
-        const shadows::ShadowAtlasLayout& layout = isDirectional(map) ? plan.directionalAtlas : plan.otherAtlas;
+        const shadows::ShadowAtlasLayout& layout = isDirectional(map) ? plan.directionalAtlas : plan.localAtlas;
         const shadows::BakedShadowMap* baked = bakedMap(map);
         if (baked->size != layout.tileSize() || baked->frusta.size() != map.tiles.size())
             throw rhi::Error(fmt::format("baked shadows: {} ('{}') was baked as {} tiles of {} texels, the settings "
@@ -163,9 +163,9 @@ void StaticShadowCache::keepDrawn(shadows::StaticShadowMap& map, shadows::Static
                           was.directionalLights[old.litIndex].z, was.directionalLights[old.litIndex].w);
     } else {
         for (const shadows::StaticShadowTile& tile : map.tiles) {
-            uniforms.otherWorldToMap[tile.tile] = was.otherWorldToMap[tile.tile];
-            uniforms.otherBounds[tile.tile] = was.otherBounds[tile.tile];
-            uniforms.otherData[tile.tile] = was.otherData[tile.tile];
+            uniforms.localWorldToMap[tile.tile] = was.localWorldToMap[tile.tile];
+            uniforms.localBounds[tile.tile] = was.localBounds[tile.tile];
+            uniforms.localData[tile.tile] = was.localData[tile.tile];
         }
     }
     const std::uint32_t litIndex = map.litIndex;
@@ -184,14 +184,14 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
     };
     const bool directionalNew = prepareAtlas(device_, directionalAtlas_, sizeOf(plan.directionalAtlas),
                                              settings.directional.atlasFormat, "static directional shadow atlas");
-    const bool otherNew = prepareAtlas(device_, otherAtlas_, sizeOf(plan.otherAtlas), settings.other.atlasFormat,
-                                       "static other shadow atlas");
+    const bool localNew = prepareAtlas(device_, localAtlas_, sizeOf(plan.localAtlas), settings.local.atlasFormat,
+                                       "static local shadow atlas");
     StaticMapDraws draws;
     std::map<LightId, Key> keys;
-    std::vector<const shadows::StaticShadowMap*> directionalMaps, otherMaps;
+    std::vector<const shadows::StaticShadowMap*> directionalMaps, localMaps;
     for (shadows::StaticShadowMap& map : plan.maps) {
         const bool directional = isDirectional(map);
-        const bool atlasNew = directional ? directionalNew : otherNew;
+        const bool atlasNew = directional ? directionalNew : localNew;
         const LightId id{map.kind, map.lightIndex};
         const auto old = drawn_.find(id);
         // On demand, a map drawn before stays as drawn while it keeps its tiles, whatever changed since.
@@ -201,7 +201,7 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
             keys.emplace(id, old->second);
             continue;
         }
-        const Key key{viewKey(map, directional ? *directionalAtlas_ : *otherAtlas_), casterKey(map, casters)};
+        const Key key{viewKey(map, directional ? *directionalAtlas_ : *localAtlas_), casterKey(map, casters)};
         const char* reason = nullptr;
         if (old == drawn_.end())
             reason = "first drawn";
@@ -217,7 +217,7 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
             reason = "a static caster in its view changed";
         if (reason) {
             draws.updates.push_back({map.kind, map.lightIndex, reason});
-            (directional ? directionalMaps : otherMaps).push_back(&map);
+            (directional ? directionalMaps : localMaps).push_back(&map);
         }
         keys.emplace(id, key);
     }
@@ -234,8 +234,8 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
         };
         if (!directionalMaps.empty())
             restore(*directionalAtlas_, plan.directionalAtlas, all(true));
-        if (!otherMaps.empty())
-            restore(*otherAtlas_, plan.otherAtlas, all(false));
+        if (!localMaps.empty())
+            restore(*localAtlas_, plan.localAtlas, all(false));
     } else {
         pass_.begin();
         const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
@@ -248,8 +248,8 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
         if (!directionalMaps.empty() || directionalNew)
             draws.casterDraws +=
                 pass_.record(commands, *directionalAtlas_, tilesOf(directionalMaps), casters, directionalNew);
-        if (!otherMaps.empty() || otherNew)
-            draws.casterDraws += pass_.record(commands, *otherAtlas_, tilesOf(otherMaps), casters, otherNew);
+        if (!localMaps.empty() || localNew)
+            draws.casterDraws += pass_.record(commands, *localAtlas_, tilesOf(localMaps), casters, localNew);
     }
     drawn_ = std::move(keys);
     plan_ = std::move(plan);

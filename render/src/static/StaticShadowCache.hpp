@@ -54,7 +54,7 @@ public:
     void checkBake(const shadows::StaticShadowPlan& plan, std::span<const std::uint64_t> hashes) const;
 
     const shadows::ShadowAtlas& directionalAtlas() const { return *directionalAtlas_; }
-    const shadows::ShadowAtlas& otherAtlas() const { return *otherAtlas_; }
+    const shadows::ShadowAtlas& localAtlas() const { return *localAtlas_; }
     // The maps as drawn.
     const shadows::StaticShadowPlan& plan() const { return plan_; }
 
@@ -72,7 +72,7 @@ private:
     rhi::Device& device_;
     shadows::StaticShadowPass pass_;
     std::unique_ptr<shadows::ShadowAtlas> directionalAtlas_;
-    std::unique_ptr<shadows::ShadowAtlas> otherAtlas_;
+    std::unique_ptr<shadows::ShadowAtlas> localAtlas_;
     shadows::StaticShadowPlan plan_;
     std::map<LightId, Key> drawn_;
     std::optional<shadows::StaticShadowBake> bake_;

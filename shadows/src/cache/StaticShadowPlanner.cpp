@@ -168,23 +168,23 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
         if (!(light.strength > 0.0f) || staticUpdateOf(light.staticUpdate, settings) == StaticShadowUpdate::EveryFrame)
             continue;
         const std::uint32_t needed = light.kind == ShadowLightKind::Spot ? 1 : cubeFaceCount;
-        if (tiles + needed > maxStaticOtherTiles) {
+        if (tiles + needed > maxStaticLocalTiles) {
             plan.report.push_back({light.kind, light.index,
-                                   fmt::format("no static map: needs {} of the static other atlas's {} tiles, {} "
+                                   fmt::format("no static map: needs {} of the static local atlas's {} tiles, {} "
                                                "are left",
-                                               needed, maxStaticOtherTiles, maxStaticOtherTiles - tiles)});
+                                               needed, maxStaticLocalTiles, maxStaticLocalTiles - tiles)});
             continue;
         }
         selected.push_back(&light);
         tiles += needed;
     }
-    plan.otherAtlas = ShadowAtlasLayout(settings.staticMaps.otherAtlasSize, tiles);
+    plan.localAtlas = ShadowAtlasLayout(settings.staticMaps.localAtlasSize, tiles);
     std::uint32_t tile = 0;
     for (const LocalLightInput* light : selected) {
-        const std::uint32_t tileSize = plan.otherAtlas.tileSize();
-        const ShadowFilter filter = light->filter.value_or(settings.other.filter);
+        const std::uint32_t tileSize = plan.localAtlas.tileSize();
+        const ShadowFilter filter = light->filter.value_or(settings.local.filter);
         const LocalViews views = localViews(*light, tileSize, filter);
-        const float nearPlane = localShadowNearPlane(light->range, light->nearPlane, settings.other);
+        const float nearPlane = localShadowNearPlane(light->range, light->nearPlane, settings.local);
         const glm::mat4 projection = conventions.perspective(views.fov, 1.0f, nearPlane, light->range);
         const float bias = localNormalBiasScale(projection, tileSize, filter, light->normalBias);
         const bool casterSide = light->normalBiasSide == NormalBiasSide::Caster;
@@ -197,15 +197,15 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
             // The dither follows the tile's own texel grid, as in the realtime atlas.
             ShadowViewDraw draw{.viewProjection = projection * view,
                                 .slopeScaleBias = light->slopeScaleBias,
-                                .ditherOrigin = -glm::vec2(plan.otherAtlas.tileOffset(tile))};
+                                .ditherOrigin = -glm::vec2(plan.localAtlas.tileOffset(tile))};
             if (casterSide)
                 draw.normalOffset = {bias, glm::vec4(light->position, 1.0f)};
-            plan.uniforms.otherWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.otherAtlas, conventions);
-            plan.uniforms.otherBounds[tile] = plan.otherAtlas.tileTexelBounds(tile);
-            plan.uniforms.otherData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
-            plan.uniforms.otherSoft[tile] =
+            plan.uniforms.localWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.localAtlas, conventions);
+            plan.uniforms.localBounds[tile] = plan.localAtlas.tileTexelBounds(tile);
+            plan.uniforms.localData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
+            plan.uniforms.localSoft[tile] =
                 perspectiveTileSoft(projection, tileSize, light->sourceRadius, nearPlane, conventions);
-            map.tiles.push_back({{tile, plan.otherAtlas.viewport(tile), draw,
+            map.tiles.push_back({{tile, plan.localAtlas.viewport(tile), draw,
                                   castersInFrustum(view, views.fov, nearPlane, light->range, casters)},
                                  projection,
                                  ShadowFrustum{view, true, views.fov, nearPlane, light->range}});
@@ -263,7 +263,7 @@ StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Co
     planDirectional(plan, settings, conventions, lights, casters);
     planLocal(plan, settings, conventions, spots, points, casters);
     plan.uniforms.atlasSizes = {static_cast<float>(plan.directionalAtlas.atlasSize()),
-                                static_cast<float>(plan.otherAtlas.atlasSize()), 0.0f, 0.0f};
+                                static_cast<float>(plan.localAtlas.atlasSize()), 0.0f, 0.0f};
     return plan;
 }
 

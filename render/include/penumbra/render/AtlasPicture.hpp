@@ -2,7 +2,7 @@
 
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Image.hpp"
-#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 #include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <glm/mat4x4.hpp>
@@ -17,9 +17,9 @@ struct PerspectiveTile {
     glm::mat4 projection{1.0f};
 };
 
-// The tiles of the other atlas, for the two functions below.
-std::vector<PerspectiveTile> perspectiveTiles(const shadows::OtherShadowPlan& plan);
-// The tiles of the static other atlas: the spot and point lights' static maps.
+// The tiles of the local atlas, for the two functions below.
+std::vector<PerspectiveTile> perspectiveTiles(const shadows::LocalShadowPlan& plan);
+// The tiles of the static local atlas: the spot and point lights' static maps.
 std::vector<PerspectiveTile> perspectiveTiles(const shadows::StaticShadowPlan& plan);
 
 // Per texel, where its light depth lies between the light's far (0) and near (1) planes, linear in

@@ -101,8 +101,8 @@ inline constexpr std::uint32_t kLitFrameBinding = 0;
 inline constexpr std::uint32_t kLitObjectBinding = 1;
 inline constexpr std::uint32_t kLitShadowBinding = 2;
 inline constexpr std::uint32_t kLitAtlasBinding = 3;
-inline constexpr std::uint32_t kLitOtherShadowBinding = 4;
-inline constexpr std::uint32_t kLitOtherAtlasBinding = 5;
+inline constexpr std::uint32_t kLitLocalShadowBinding = 4;
+inline constexpr std::uint32_t kLitLocalAtlasBinding = 5;
 inline constexpr std::uint32_t kLitShadowCubesBinding = 6;
 // The same cube array read raw (no comparison): the soft filters' blocker search.
 inline constexpr std::uint32_t kLitShadowCubeDepthsBinding = 7;
@@ -111,7 +111,7 @@ inline constexpr std::uint32_t kLitMaterialMapBinding = 9;
 // After the material maps: the static shadow maps (shadows::StaticShadowUniforms and its two atlases).
 inline constexpr std::uint32_t kLitStaticShadowBinding = kLitMaterialMapBinding + scene::kTextureSlots;
 inline constexpr std::uint32_t kLitStaticDirectionalAtlasBinding = kLitStaticShadowBinding + 1;
-inline constexpr std::uint32_t kLitStaticOtherAtlasBinding = kLitStaticShadowBinding + 2;
+inline constexpr std::uint32_t kLitStaticLocalAtlasBinding = kLitStaticShadowBinding + 2;
 // The base colour map again, through GpuScene::coverageSampler: the alpha every pass cuts and blends by.
 inline constexpr std::uint32_t kLitCoverageMapBinding = kLitStaticShadowBinding + 3;
 // The screen-space shadow texture (DirectionalShadowSource::ScreenSpace), and with ScreenSpaceEdges the single-sampled

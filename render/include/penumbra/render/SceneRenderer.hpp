@@ -8,8 +8,8 @@
 #include "penumbra/scene/Scene.hpp"
 #include "penumbra/shadows/DirectionalShadowPass.hpp"
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
-#include "penumbra/shadows/OtherShadowPass.hpp"
-#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/LocalShadowPass.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 #include "penumbra/shadows/StaticShadowBake.hpp"
@@ -69,10 +69,10 @@ struct FrameDesc {
 struct FrameStats {
     std::uint32_t casterDraws = 0;                  // issued into the directional atlas
     std::uint32_t casterDrawsWithoutCullingBias = 0; // casters overlapping each cascade's light box
-    std::uint32_t otherCasterDraws = 0;             // issued into the spot and point shadows
+    std::uint32_t localCasterDraws = 0;             // issued into the spot and point shadows
     std::optional<double> depthPrepassMs;           // GPU time, where the device has timestamps (and a prepass ran)
     std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
-    std::optional<double> otherAtlasPassMs;
+    std::optional<double> localAtlasPassMs;
     std::optional<double> screenSpaceShadowsMs; // the screen-space shadow collection (ShadowPath::ScreenSpace)
     std::optional<double> litPassMs;
     std::optional<double> resolvePassMs; // the multisampled lit image into litImage(), where FrameDesc::msaa > 1
@@ -92,12 +92,12 @@ struct FrameStats {
 // point mode stay those of the frame's settings.
 struct ShadowPlans {
     shadows::DirectionalShadowPlan directional;
-    shadows::OtherShadowPlan other;
+    shadows::LocalShadowPlan local;
     shadows::StaticShadowPlan staticMaps; // empty without static maps (StaticShadowUpdate::EveryFrame)
 };
 
 // Draws a scene with cascaded directional shadows and spot and point shadows: plan (CPU) -> caster
-// passes into the directional and the other atlas -> lit pass (and optionally the cascade view). One submission per frame; the results stay readable
+// passes into the directional and the local atlas -> lit pass (and optionally the cascade view). One submission per frame; the results stay readable
 // until the next render().
 class SceneRenderer {
 public:
@@ -127,8 +127,8 @@ public:
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
     // Spot and point shadows: tiles of this atlas (16 texels wide where the last frame used none).
-    const shadows::ShadowAtlas& otherAtlas() const { return *otherAtlas_; }
-    const shadows::OtherShadowPlan& otherPlan() const { return otherPlan_; }
+    const shadows::ShadowAtlas& localAtlas() const { return *localAtlas_; }
+    const shadows::LocalShadowPlan& localPlan() const { return localPlan_; }
     // Point shadow cube maps (PointShadowMode::CubeMap; one unused cube otherwise).
     const shadows::ShadowCubes& shadowCubes() const { return *shadowCubes_; }
     // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights, maxLitLocalLights), and
@@ -138,7 +138,7 @@ public:
     // Static shadow maps (ShadowSettings::staticMaps): the atlases as last drawn (16 texels wide without maps), and
     // the plan they were drawn from.
     const shadows::ShadowAtlas& staticDirectionalAtlas() const;
-    const shadows::ShadowAtlas& staticOtherAtlas() const;
+    const shadows::ShadowAtlas& staticLocalAtlas() const;
     const shadows::StaticShadowPlan& staticPlan() const;
     // In StaticShadowUpdate::OnDemand mode, the next render() draws every static map again from its plan; other modes
     // ignore it.
@@ -162,17 +162,17 @@ private:
     // The lit pass's shadow bindings (atlases, cubes, their blocks, the Poisson disks, static maps), which the
     // screen-space collection shares.
     void bindShadowMaps(rhi::CommandList& commands, const rhi::UniformSlice& shadowUniforms,
-                        const rhi::UniformSlice& otherShadowUniforms, const rhi::UniformSlice& staticShadowUniforms,
+                        const rhi::UniformSlice& localShadowUniforms, const rhi::UniformSlice& staticShadowUniforms,
                         const rhi::UniformSlice& poissonDisks) const;
     void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
                        const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
-                       const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& otherShadowUniforms,
+                       const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& localShadowUniforms,
                        const rhi::UniformSlice& staticShadowUniforms);
 
     rhi::Device& device_;
     GpuScene gpuScene_;
     shadows::DirectionalShadowPass shadowPass_;
-    shadows::OtherShadowPass otherShadowPass_;
+    shadows::LocalShadowPass localShadowPass_;
     std::unique_ptr<rhi::Shader> litVertex_;
     // Single-sampled: the lit pass without MSAA and the debug views. Multisampled: the lit pass with FrameDesc::msaa
     // samples, made when a frame first asks for that count.
@@ -186,7 +186,7 @@ private:
     std::unique_ptr<StaticShadowCache> staticShadows_;
     // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.
     std::unique_ptr<StaticTileCache> directionalStaticTiles_;
-    std::unique_ptr<StaticTileCache> otherStaticTiles_;
+    std::unique_ptr<StaticTileCache> localStaticTiles_;
     bool staticUpdateRequested_ = false;
     // Per object, this frame's Object block (shaders/lit.glsl), shared by the prepass and every lit view.
     std::vector<rhi::UniformSlice> objectSlices_;
@@ -196,7 +196,7 @@ private:
     rhi::UniformArena uniforms_;
 
     std::unique_ptr<shadows::ShadowAtlas> atlas_;
-    std::unique_ptr<shadows::ShadowAtlas> otherAtlas_;
+    std::unique_ptr<shadows::ShadowAtlas> localAtlas_;
     std::unique_ptr<shadows::ShadowCubes> shadowCubes_;
     std::unique_ptr<rhi::Texture> lit_;
     std::unique_ptr<rhi::Texture> cascades_;
@@ -211,7 +211,7 @@ private:
     std::unique_ptr<rhi::Framebuffer> visibilityTarget_;
 
     shadows::DirectionalShadowPlan plan_;
-    shadows::OtherShadowPlan otherPlan_;
+    shadows::LocalShadowPlan localPlan_;
     std::vector<std::string> notes_;
 };
 

@@ -64,7 +64,7 @@ struct SpotLight {
     float shadowStrength = 1.0f;            // 0: shadows ignored, 1: fully dark
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f; // receiver offset in filter-sized texel diagonals at the receiver's distance
-    float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
+    float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' local.nearPlane x range
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a disk facing the receiver (soft shadows)
     std::int32_t shadowFilter = kAtlasShadowFilter;
@@ -81,7 +81,7 @@ struct PointLight {
     float shadowStrength = 1.0f;
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f;
-    float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' other.nearPlane x range
+    float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' local.nearPlane x range
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a sphere (soft shadows)
     std::int32_t shadowFilter = kAtlasShadowFilter;

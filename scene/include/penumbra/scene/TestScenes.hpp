@@ -19,7 +19,7 @@ Scene makeShadowTestScene();
 Scene makeSingleLightScene();
 
 // The same geometry and camera lit by the key light at half intensity, three spot lights aimed at
-// objects and two point lights among them: 3 + 2 x 6 = 15 tiles of the other atlas.
+// objects and two point lights among them: 3 + 2 x 6 = 15 tiles of the local atlas.
 Scene makeMixedLightsScene();
 
 // A closed 10 x 4 x 10 room (floor, ceiling and walls are boxes 0.2 thick, outside the interior

@@ -20,7 +20,7 @@ inline constexpr std::uint32_t cubeFaceCount = 6;
 glm::vec3 cubeFaceAxis(CubeFace face);
 
 // The face whose axis has the largest component of `direction` (light to point); ties go to x, then y,
-// then z. shaders/other_shadows.glsl implements the same rule.
+// then z. shaders/local_shadows.glsl implements the same rule.
 CubeFace cubeFace(glm::vec3 direction);
 
 // A right-handed camera at `position` looking along the face's axis: an ordinary, unmirrored view,
@@ -33,14 +33,14 @@ glm::mat4 spotView(glm::vec3 position, glm::vec3 direction);
 
 // Near plane of a spot or point shadow projection: the light's own (`lightNearPlane`, world units) or, where it
 // sets none (0), `settings.nearPlane` times its range.
-float localShadowNearPlane(float range, float lightNearPlane, const OtherShadowSettings& settings);
+float localShadowNearPlane(float range, float lightNearPlane, const LocalShadowSettings& settings);
 
 // World-space texel size at distance 1 from the light plane: the tile spans 2 / projection[0][0]
 // there (twice the tangent of half the field of view).
 float texelSizeAtUnitDistance(const glm::mat4& projection, std::uint32_t tileSize);
 
-// What the Poisson and PCSS filters need of a perspective tile (OtherShadowUniforms::tileSoft and
-// StaticShadowUniforms::otherSoft): its depth row (t22, t32 of clipToTexture x projection: perspectiveDistance), the
+// What the Poisson and PCSS filters need of a perspective tile (LocalShadowUniforms::tileSoft and
+// StaticShadowUniforms::localSoft): its depth row (t22, t32 of clipToTexture x projection: perspectiveDistance), the
 // light's radius in texels at unit distance, the near plane.
 glm::vec4 perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSize, float sourceRadius, float nearPlane,
                               const rhi::Conventions& conventions);

@@ -12,8 +12,8 @@ inline constexpr std::uint32_t maxAtlasTiles = 64;
 
 // A square atlas cut into split x split square tiles: split = 1 for one tile, 2 for up to 4,
 // 4 for up to 16, 8 for up to 64. Tile i sits at column i % split, row i / split, rows counted from the TOP as
-// rhi::Viewport and texture v do. Used by the directional atlas (lights x cascades), the other atlas (up to 16
-// tiles of spot and point lights) and the static other atlas (up to 64).
+// rhi::Viewport and texture v do. Used by the directional atlas (lights x cascades), the local atlas (up to 16
+// tiles of spot and point lights) and the static local atlas (up to 64).
 class ShadowAtlasLayout {
 public:
     // Throws rhi::Error when tileCount > maxAtlasTiles or atlasSize is not a multiple of the split.

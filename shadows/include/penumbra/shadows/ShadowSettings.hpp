@@ -95,12 +95,12 @@ struct DirectionalShadowSettings {
 
 // Where point lights keep their six faces.
 enum class PointShadowMode {
-    Atlas,   // six tiles of the other atlas, the face picked in the lit shader (Catlike Coding's "Point and Spot Shadows")
+    Atlas,   // six tiles of the local atlas, the face picked in the lit shader (Catlike Coding's "Point and Spot Shadows")
     CubeMap, // a depth cube map per light, sampled with hardware cube lookups
 };
 
 // Spot and point shadows: the second atlas of up to 16 tiles (a spot light takes one, a point light six).
-struct OtherShadowSettings {
+struct LocalShadowSettings {
     std::uint32_t atlasSize = 1024; // texels per side, a power of two in 256..8192
     ShadowFilter filter = ShadowFilter::PCF2x2;
     rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
@@ -133,16 +133,16 @@ struct StaticShadowSettings {
     // Directional lights: one orthographic map each over the static casters' bounds, tiles of this atlas
     // (one light takes it whole, up to four share it as quarters); texels per side, a power of two in 256..8192.
     std::uint32_t directionalAtlasSize = 4096;
-    // Spot and point lights: tiles of this atlas as in the other atlas (a spot light one, a point light six, up to
+    // Spot and point lights: tiles of this atlas as in the local atlas (a spot light one, a point light six, up to
     // 16); texels per side, a power of two in 256..8192.
-    std::uint32_t otherAtlasSize = 2048;
+    std::uint32_t localAtlasSize = 2048;
 };
 
 struct ShadowSettings {
     float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001; applies to every light
     float distanceFade = 0.1f;  // 0.001..1, fraction of maxDistance over which shadows fade out
     DirectionalShadowSettings directional;
-    OtherShadowSettings other;
+    LocalShadowSettings local;
     SoftShadowSettings soft;
     StaticShadowSettings staticMaps;
 };

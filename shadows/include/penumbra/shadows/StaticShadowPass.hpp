@@ -23,7 +23,7 @@ public:
     void begin() { draws_.reset(); }
     // Records the tiles into `atlas`; returns the caster draws issued. `clearAll` clears the whole atlas first (a
     // new atlas, whose other tiles hold nothing yet). Several records may share a command list (the directional
-    // and the other static atlas): their caster uniforms stay apart until the next begin(), which must follow the
+    // and the local static atlas): their caster uniforms stay apart until the next begin(), which must follow the
     // submission.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas,
                          std::span<const ShadowTileDraw* const> tiles, std::span<const ShadowCaster> casters,

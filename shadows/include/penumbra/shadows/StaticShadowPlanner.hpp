@@ -3,7 +3,7 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
-#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlasLayout.hpp"
 #include "penumbra/shadows/ShadowCasterDraws.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
@@ -39,7 +39,7 @@ float linearShadowDepth(float windowDepth, const glm::mat4& projection, const rh
 float windowShadowDepth(float linearDepth, const glm::mat4& projection, const rhi::Conventions& conventions);
 
 // The static shadow map of one light: one tile of the static directional atlas (an orthographic view over every
-// static caster), one tile of the static other atlas (a spot light's cone) or six (a point light's faces).
+// static caster), one tile of the static local atlas (a spot light's cone) or six (a point light's faces).
 struct StaticShadowMap {
     ShadowLightKind kind = ShadowLightKind::Directional;
     std::uint32_t lightIndex = 0; // into the planner's input lights of that kind
@@ -58,7 +58,7 @@ struct StaticShadowNote {
 
 struct StaticShadowPlan {
     ShadowAtlasLayout directionalAtlas{256, 0};
-    ShadowAtlasLayout otherAtlas{256, 0};
+    ShadowAtlasLayout localAtlas{256, 0};
     std::vector<StaticShadowMap> maps; // directional lights first, then spot, then point lights
     std::vector<StaticShadowNote> report;
     StaticShadowUniforms uniforms;
@@ -80,7 +80,7 @@ inline StaticShadowUpdate staticUpdateOf(std::optional<StaticShadowUpdate> light
 // update mode (its own staticUpdate, or the settings') is not EveryFrame, and has a static caster in reach, whatever
 // the camera sees: directional lights (up to 4) take a tile of the static directional atlas fitted around the static
 // casters' bounding sphere (the stable fit of a cascade, so its texels stay put while nothing static moves); spot and
-// point lights take one and six tiles of the static other atlas (up to maxStaticOtherTiles), with the projections of
+// point lights take one and six tiles of the static local atlas (up to maxStaticLocalTiles), with the projections of
 // their realtime tiles. Lights that do not fit are listed in the report. A map is filtered as the light's realtime
 // shadow is (its own filter or the atlas's; the Poisson and PCSS filters with the soft data of StaticShadowUniforms),
 // with the same normal bias scaled to the map's texels. Uniform entries follow the lit pass's light order:

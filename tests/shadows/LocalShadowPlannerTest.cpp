@@ -2,7 +2,7 @@
 #include "ShadowTestSupport.hpp"
 
 #include "penumbra/shadows/LocalLightProjection.hpp"
-#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,7 +16,7 @@ using testing::allConventions;
 using testing::conventionName;
 
 // (u, v, window depth) of a world point in tile `tile`, u and v over the tile.
-glm::vec3 atlasPosition(const OtherShadowPlan& plan, std::uint32_t tile, glm::vec3 world)
+glm::vec3 atlasPosition(const LocalShadowPlan& plan, std::uint32_t tile, glm::vec3 world)
 {
     const glm::vec4 p = plan.uniforms.worldToAtlas[tile] * glm::vec4(world, 1.0f);
     const glm::vec2 uv = glm::vec2(p) / p.w * static_cast<float>(plan.atlas.split()) -
@@ -83,7 +83,7 @@ TEST(SpotShadow, AxisHitsTheTileCentreAndTheConeEdgeItsBorder)
         const SpotShadowInput spot{.position = {0, 5, 0}, .direction = glm::normalize(glm::vec3(0.3f, -1, 0.2f)),
                                    .range = 20.0f, .outerAngle = glm::radians(30.0f)};
         ShadowSettings settings;
-        const OtherShadowPlan plan = planOtherShadows(settings, conventions, {}, {&spot, 1}, {}, kEverywhere);
+        const LocalShadowPlan plan = planLocalShadows(settings, conventions, {}, {&spot, 1}, {}, kEverywhere);
         ASSERT_EQ(plan.tiles.size(), 1u);
         const glm::vec3 onAxis = atlasPosition(plan, 0, spot.position + 7.0f * spot.direction);
         EXPECT_NEAR(onAxis.x, 0.5f, 1e-5f);
@@ -98,7 +98,7 @@ TEST(SpotShadow, AxisHitsTheTileCentreAndTheConeEdgeItsBorder)
         const glm::vec3 edge = spot.position + distance * spot.direction + distance * std::tan(spot.outerAngle) * right;
         EXPECT_NEAR(atlasPosition(plan, 0, edge).x, 1.0f, 1e-4f);
         // Normal bias: texel size at distance 1 x filter factor x sqrt 2.
-        const float texel = 2.0f * std::tan(spot.outerAngle) / static_cast<float>(settings.other.atlasSize);
+        const float texel = 2.0f * std::tan(spot.outerAngle) / static_cast<float>(settings.local.atlasSize);
         EXPECT_NEAR(plan.uniforms.tileData[0].x, texel * std::sqrt(2.0f), 1e-6f);
     }
 }
@@ -108,7 +108,7 @@ TEST(PointShadow, EachFaceTileHoldsItsDirection)
     for (const rhi::Conventions& conventions : allConventions()) {
         SCOPED_TRACE(conventionName(conventions));
         const PointShadowInput point{.position = {2, 3, -1}, .range = 10.0f};
-        const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, conventions, {}, {}, {&point, 1}, kEverywhere);
+        const LocalShadowPlan plan = planLocalShadows(ShadowSettings{}, conventions, {}, {}, {&point, 1}, kEverywhere);
         ASSERT_EQ(plan.tiles.size(), 6u);
         EXPECT_EQ(plan.pointShadows[0], 0);
         for (std::uint32_t f = 0; f < cubeFaceCount; ++f) {
@@ -127,12 +127,12 @@ TEST(PointShadow, EachFaceTileHoldsItsDirection)
     }
 }
 
-TEST(OtherAtlas, TileBoundsAreTheTilesTexelsAndTilesAreUniformlySplit)
+TEST(LocalAtlas, TileBoundsAreTheTilesTexelsAndTilesAreUniformlySplit)
 {
     const std::vector<SpotShadowInput> spots(5);
     ShadowSettings settings;
-    settings.other.atlasSize = 512;
-    const OtherShadowPlan plan = planOtherShadows(settings, allConventions()[0], {}, spots, {}, kEverywhere);
+    settings.local.atlasSize = 512;
+    const LocalShadowPlan plan = planLocalShadows(settings, allConventions()[0], {}, spots, {}, kEverywhere);
     EXPECT_EQ(plan.atlas.split(), 4u);
     EXPECT_EQ(plan.atlas.tileSize(), 128u);
     EXPECT_EQ(plan.uniforms.tileBounds[0], glm::vec4(0, 0, 127, 127));
@@ -145,12 +145,12 @@ TEST(OtherAtlas, TileBoundsAreTheTilesTexelsAndTilesAreUniformlySplit)
     }
 }
 
-TEST(OtherAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
+TEST(LocalAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
 {
     const std::vector<SpotShadowInput> spots(5);
     std::vector<PointShadowInput> points(3);
     points[1].strength = 0.0f;
-    const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, allConventions()[0], {}, spots, points, kEverywhere);
+    const LocalShadowPlan plan = planLocalShadows(ShadowSettings{}, allConventions()[0], {}, spots, points, kEverywhere);
     // 5 spots + 6 (point 0) = 11; point 1 casts nothing; point 2 needs 6 more, 5 are left.
     EXPECT_EQ(plan.atlas.tileCount(), 11u);
     EXPECT_EQ(plan.spotTiles, (std::vector<int>{0, 1, 2, 3, 4}));
@@ -160,16 +160,16 @@ TEST(OtherAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
     EXPECT_EQ(plan.report[0].lightIndex, 1u);
     EXPECT_EQ(plan.report[0].reason, "shadow strength is 0");
     EXPECT_EQ(plan.report[1].lightIndex, 2u);
-    EXPECT_EQ(plan.report[1].reason, "needs 6 of the other atlas's 16 tiles, 5 are left");
+    EXPECT_EQ(plan.report[1].reason, "needs 6 of the local atlas's 16 tiles, 5 are left");
 
     const std::vector<SpotShadowInput> many(18);
-    const OtherShadowPlan full = planOtherShadows(ShadowSettings{}, allConventions()[0], {}, many, {}, kEverywhere);
+    const LocalShadowPlan full = planLocalShadows(ShadowSettings{}, allConventions()[0], {}, many, {}, kEverywhere);
     EXPECT_EQ(full.atlas.tileCount(), 16u);
     EXPECT_EQ(full.spotTiles[16], -1);
     EXPECT_EQ(full.report.size(), 2u);
 }
 
-TEST(OtherAtlas, FrustumCullingKeepsOnlyCastersInTheCone)
+TEST(LocalAtlas, FrustumCullingKeepsOnlyCastersInTheCone)
 {
     const SpotShadowInput spot{.position = {0, 10, 0}, .direction = {0, -1, 0}, .range = 15.0f,
                                .outerAngle = glm::radians(20.0f)};
@@ -178,24 +178,24 @@ TEST(OtherAtlas, FrustumCullingKeepsOnlyCastersInTheCone)
                                       {{-1, 11, -1}, {1, 12, 1}},    // behind the light
                                       {{-1, -9, -1}, {1, -8, 1}},    // beyond the range
                                       {{3, 0, -0.5f}, {5, 1, 0.5f}}}; // reaching into the cone's edge
-    const OtherShadowPlan plan = planOtherShadows(ShadowSettings{}, allConventions()[0], {}, {&spot, 1}, {}, casters);
+    const LocalShadowPlan plan = planLocalShadows(ShadowSettings{}, allConventions()[0], {}, {&spot, 1}, {}, casters);
     EXPECT_EQ(plan.tiles[0].view.casters, (std::vector<std::uint32_t>{0, 4}));
 }
 
-TEST(OtherAtlas, NearPlaneIsTheLightsOwnOrTheSettingsFractionOfItsRange)
+TEST(LocalAtlas, NearPlaneIsTheLightsOwnOrTheSettingsFractionOfItsRange)
 {
     const rhi::Conventions& conventions = allConventions()[0];
     ShadowSettings settings;
-    settings.other.nearPlane = 0.05f;
+    settings.local.nearPlane = 0.05f;
     const std::vector<SpotShadowInput> spots{{.position = {0, 5, 0}, .range = 20.0f},
                                              {.position = {0, 5, 0}, .range = 20.0f, .nearPlane = 0.25f}};
-    const OtherShadowPlan plan = planOtherShadows(settings, conventions, {}, spots, {}, kEverywhere);
+    const LocalShadowPlan plan = planLocalShadows(settings, conventions, {}, spots, {}, kEverywhere);
     ASSERT_EQ(plan.tiles.size(), 2u);
     EXPECT_EQ(plan.tiles[0].view.projection, conventions.perspective(2.0f * spots[0].outerAngle, 1.0f, 1.0f, 20.0f));
     EXPECT_EQ(plan.tiles[1].view.projection, conventions.perspective(2.0f * spots[1].outerAngle, 1.0f, 0.25f, 20.0f));
 }
 
-TEST(OtherAtlas, LightsThatShadowNothingInViewTakeNoTile)
+TEST(LocalAtlas, LightsThatShadowNothingInViewTakeNoTile)
 {
     // Spot 0 shines down on the caster; spot 1 shines up, away from it; point 0 is 30 units from it with a range
     // of 10; point 1 is beside it but 200 units ahead of the camera, beyond the shadow distance of 100.
@@ -206,8 +206,8 @@ TEST(OtherAtlas, LightsThatShadowNothingInViewTakeNoTile)
                                                {.position = {0, 2, -205}, .range = 10.0f}};
     const std::vector<Bounds> withFarCaster{casters[0], {{-1, 0, -206}, {1, 1, -204}}};
     const ShadowCamera camera; // at the origin, looking down -z
-    const OtherShadowPlan plan =
-        planOtherShadows(ShadowSettings{}, allConventions()[0], camera, spots, points, withFarCaster);
+    const LocalShadowPlan plan =
+        planLocalShadows(ShadowSettings{}, allConventions()[0], camera, spots, points, withFarCaster);
     EXPECT_EQ(plan.spotTiles, (std::vector<int>{0, -1}));
     EXPECT_EQ(plan.pointShadows, (std::vector<int>{-1, -1}));
     EXPECT_EQ(plan.atlas.tileCount(), 1u);

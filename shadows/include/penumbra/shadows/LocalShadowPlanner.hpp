@@ -5,7 +5,7 @@
 #include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
 #include "penumbra/shadows/NormalOffset.hpp"
-#include "penumbra/shadows/OtherShadowUniforms.hpp"
+#include "penumbra/shadows/LocalShadowUniforms.hpp"
 #include "penumbra/shadows/ShadowCamera.hpp"
 #include "penumbra/shadows/ShadowAtlasLayout.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
@@ -26,8 +26,8 @@ struct SpotShadowInput {
     float strength = 1.0f;
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
-    float nearPlane = 0.0f; // world units; 0: OtherShadowSettings::nearPlane x range
-    std::optional<ShadowFilter> filter; // nullopt: the atlas's (OtherShadowSettings::filter)
+    float nearPlane = 0.0f; // world units; 0: LocalShadowSettings::nearPlane x range
+    std::optional<ShadowFilter> filter; // nullopt: the atlas's (LocalShadowSettings::filter)
     float sourceRadius = 0.0f;          // world units: the source size of Poisson and PCSS filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
@@ -39,8 +39,8 @@ struct PointShadowInput {
     float strength = 1.0f;
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
-    float nearPlane = 0.0f; // world units; 0: OtherShadowSettings::nearPlane x range
-    std::optional<ShadowFilter> filter; // nullopt: the atlas's (OtherShadowSettings::filter)
+    float nearPlane = 0.0f; // world units; 0: LocalShadowSettings::nearPlane x range
+    std::optional<ShadowFilter> filter; // nullopt: the atlas's (LocalShadowSettings::filter)
     float sourceRadius = 0.0f;
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
@@ -57,7 +57,7 @@ struct LocalShadowView {
     CasterNormalOffset normalOffset;    // the caster-side normal bias; none on the receiver side
 };
 
-struct OtherAtlasTile {
+struct LocalAtlasTile {
     LocalShadowView view;
     std::uint32_t tile = 0;
     rhi::Viewport viewport;
@@ -69,29 +69,29 @@ struct ShadowCube {
     std::array<LocalShadowView, cubeFaceCount> faces;
 };
 
-struct OtherShadowNote {
+struct LocalShadowNote {
     LocalLightKind kind = LocalLightKind::Spot;
     std::uint32_t lightIndex = 0;
     std::string reason;
 };
 
-struct OtherShadowPlan {
+struct LocalShadowPlan {
     ShadowAtlasLayout atlas{256, 0};
-    std::vector<OtherAtlasTile> tiles; // in tile order
+    std::vector<LocalAtlasTile> tiles; // in tile order
     std::vector<ShadowCube> cubes;     // CubeMap mode only
     std::vector<int> spotTiles;        // per spot light: its tile, or -1 without shadows
     std::vector<int> pointShadows;     // per point light: first of its six tiles (Atlas mode) or its cube, or -1
-    std::vector<OtherShadowNote> report;
-    OtherShadowUniforms uniforms;
+    std::vector<LocalShadowNote> report;
+    LocalShadowUniforms uniforms;
 };
 
 // Plans the spot and point shadows of a frame: spot lights first, then point lights, take tiles of the
-// other atlas (one per spot light, six per point light in Atlas mode; up to 16) or, in CubeMap mode, a
+// local atlas (one per spot light, six per point light in Atlas mode; up to 16) or, in CubeMap mode, a
 // cube each (up to maxShadowCubes). A light that casts no shadow (strength 0), shadows nothing the camera can
 // see (no caster's box meets its cone or range, or its range lies wholly beyond the shadow distance in the
 // camera's view depth) or does not fit is listed in the report with the reason, never an exception, and takes
 // no tile from the others. Throws rhi::Error only for settings that fail validate().
-OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
+LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                  const ShadowCamera& camera, std::span<const SpotShadowInput> spots,
                                  std::span<const PointShadowInput> points, std::span<const Bounds> casterBounds);
 

@@ -1,4 +1,4 @@
-#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 
 #include "penumbra/shadows/AtlasMatrix.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
@@ -53,7 +53,7 @@ std::optional<std::string> shadowsNothing(const LightReach& light, const ShadowC
     return std::nullopt;
 }
 
-void reserve(Reservations& r, OtherShadowPlan& plan, LocalLightKind kind, std::uint32_t index, float strength,
+void reserve(Reservations& r, LocalShadowPlan& plan, LocalLightKind kind, std::uint32_t index, float strength,
              PointShadowMode mode, const std::optional<std::string>& nothingToShadow)
 {
     if (!(strength > 0.0f)) {
@@ -74,9 +74,9 @@ void reserve(Reservations& r, OtherShadowPlan& plan, LocalLightKind kind, std::u
         return;
     }
     const std::uint32_t needed = tilesNeeded(kind, mode);
-    if (r.tileCount + needed > maxOtherShadowTiles) {
-        plan.report.push_back({kind, index, fmt::format("needs {} of the other atlas's {} tiles, {} are left", needed,
-                                                        maxOtherShadowTiles, maxOtherShadowTiles - r.tileCount)});
+    if (r.tileCount + needed > maxLocalShadowTiles) {
+        plan.report.push_back({kind, index, fmt::format("needs {} of the local atlas's {} tiles, {} are left", needed,
+                                                        maxLocalShadowTiles, maxLocalShadowTiles - r.tileCount)});
         return;
     }
     (kind == LocalLightKind::Spot ? plan.spotTiles : plan.pointShadows)[index] = static_cast<int>(r.tileCount);
@@ -115,7 +115,7 @@ SoftProjection softProjection(ShadowFilter filter, const glm::mat4& projection, 
     return {filter, perspectiveTileSoft(projection, tileSize, sourceRadius, nearPlane, conventions)};
 }
 
-void addTile(OtherShadowPlan& plan, std::uint32_t tile, LocalShadowView view, float normalBiasScale,
+void addTile(LocalShadowPlan& plan, std::uint32_t tile, LocalShadowView view, float normalBiasScale,
              const SoftProjection& soft, const rhi::Conventions& conventions)
 {
     plan.uniforms.worldToAtlas[tile] = worldToAtlas(view.viewProjection, tile, plan.atlas, conventions);
@@ -125,13 +125,13 @@ void addTile(OtherShadowPlan& plan, std::uint32_t tile, LocalShadowView view, fl
     plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});
 }
 
-void planSpot(OtherShadowPlan& plan, const OtherShadowSettings& other, const SpotShadowInput& spot,
+void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot,
               std::uint32_t tile, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     const float fov = 2.0f * spot.outerAngle;
-    const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, other);
+    const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, local);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
-    const ShadowFilter filter = spot.filter.value_or(other.filter);
+    const ShadowFilter filter = spot.filter.value_or(local.filter);
     const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), filter, spot.normalBias);
     LocalShadowView view = shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range,
                                       spot.slopeScaleBias, conventions, casterBounds);
@@ -141,13 +141,13 @@ void planSpot(OtherShadowPlan& plan, const OtherShadowSettings& other, const Spo
             conventions);
 }
 
-void planPointTiles(OtherShadowPlan& plan, const OtherShadowSettings& other, const PointShadowInput& point,
+void planPointTiles(LocalShadowPlan& plan, const LocalShadowSettings& local, const PointShadowInput& point,
                     std::uint32_t firstTile, const rhi::Conventions& conventions,
                     std::span<const Bounds> casterBounds)
 {
-    const ShadowFilter filter = point.filter.value_or(other.filter);
+    const ShadowFilter filter = point.filter.value_or(local.filter);
     const float fov = pointFaceFieldOfView(plan.atlas.tileSize(), filter, point.normalBias);
-    const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, other);
+    const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, local);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, point.range);
     const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), filter, point.normalBias);
     const SoftProjection soft =
@@ -161,18 +161,18 @@ void planPointTiles(OtherShadowPlan& plan, const OtherShadowSettings& other, con
 }
 
 // CubeMap mode: the six mirrored face views of the hardware cube layout (rhi::cubeFaceView), 90 degrees each.
-void planCube(OtherShadowPlan& plan, const OtherShadowSettings& other, const PointShadowInput& point,
+void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const PointShadowInput& point,
               std::uint32_t pointIndex, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     constexpr float kRightAngle = 1.57079633f;
-    const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, other);
+    const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, local);
     const glm::mat4 projection = rhi::cubeFaceProjection(conventions, nearPlane, point.range);
     // Window depth of major-axis distance z is (a * -z + b) / z: the projection's depth row through clipToTexture.
     const glm::mat4 toTexture = conventions.clipToTexture() * projection;
-    const ShadowFilter filter = point.filter.value_or(other.filter);
-    const float bias = localNormalBiasScale(projection, other.cubeMapSize, filter, point.normalBias);
+    const ShadowFilter filter = point.filter.value_or(local.filter);
+    const float bias = localNormalBiasScale(projection, local.cubeMapSize, filter, point.normalBias);
     plan.uniforms.cubeSoft[plan.cubes.size()] = {
-        static_cast<float>(filter), point.sourceRadius / std::abs(texelSizeAtUnitDistance(projection, other.cubeMapSize)),
+        static_cast<float>(filter), point.sourceRadius / std::abs(texelSizeAtUnitDistance(projection, local.cubeMapSize)),
         nearPlane, 0.0f};
     ShadowCube cube;
     cube.lightIndex = pointIndex;
@@ -185,7 +185,7 @@ void planCube(OtherShadowPlan& plan, const OtherShadowSettings& other, const Poi
         receiverBias = sideOfNormalBias(faceView, point.normalBiasSide, bias, point.position);
     }
     plan.uniforms.cubeData[plan.cubes.size()] = {toTexture[2][2], toTexture[3][2], receiverBias,
-                                                 1.0f / static_cast<float>(other.cubeMapSize)};
+                                                 1.0f / static_cast<float>(local.cubeMapSize)};
     plan.cubes.push_back(std::move(cube));
 }
 
@@ -223,47 +223,47 @@ bool castersInRange(glm::vec3 position, float range, std::span<const Bounds> cas
     });
 }
 
-OtherShadowPlan planOtherShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
+LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                  const ShadowCamera& camera, std::span<const SpotShadowInput> spots,
                                  std::span<const PointShadowInput> points, std::span<const Bounds> casterBounds)
 {
     validate(settings);
-    const OtherShadowSettings& other = settings.other;
-    OtherShadowPlan plan;
+    const LocalShadowSettings& local = settings.local;
+    LocalShadowPlan plan;
     plan.spotTiles.assign(spots.size(), -1);
     plan.pointShadows.assign(points.size(), -1);
     Reservations r;
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& spot = spots[i];
         const bool anyCaster = !cullCastersInFrustum(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
-                                                     localShadowNearPlane(spot.range, spot.nearPlane, other), spot.range,
+                                                     localShadowNearPlane(spot.range, spot.nearPlane, local), spot.range,
                                                      casterBounds)
                                     .empty();
-        reserve(r, plan, LocalLightKind::Spot, i, spot.strength, other.pointMode,
+        reserve(r, plan, LocalLightKind::Spot, i, spot.strength, local.pointMode,
                 shadowsNothing({spot.position, spot.range, anyCaster}, camera, settings.maxDistance));
     }
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const PointShadowInput& point = points[i];
         const bool anyCaster = castersInRange(point.position, point.range, casterBounds);
-        reserve(r, plan, LocalLightKind::Point, i, point.strength, other.pointMode,
+        reserve(r, plan, LocalLightKind::Point, i, point.strength, local.pointMode,
                 shadowsNothing({point.position, point.range, anyCaster}, camera, settings.maxDistance));
     }
 
-    plan.atlas = ShadowAtlasLayout(other.atlasSize, r.tileCount);
+    plan.atlas = ShadowAtlasLayout(local.atlasSize, r.tileCount);
     for (const Reservation& reservation : r.atlas) {
         if (reservation.kind == LocalLightKind::Spot)
-            planSpot(plan, other, spots[reservation.lightIndex], reservation.firstTile, conventions, casterBounds);
+            planSpot(plan, local, spots[reservation.lightIndex], reservation.firstTile, conventions, casterBounds);
         else
-            planPointTiles(plan, other, points[reservation.lightIndex], reservation.firstTile, conventions,
+            planPointTiles(plan, local, points[reservation.lightIndex], reservation.firstTile, conventions,
                            casterBounds);
     }
 
     for (const std::uint32_t pointIndex : r.cubes)
-        planCube(plan, other, points[pointIndex], pointIndex, conventions, casterBounds);
+        planCube(plan, local, points[pointIndex], pointIndex, conventions, casterBounds);
 
-    const auto atlasSize = static_cast<float>(other.atlasSize);
+    const auto atlasSize = static_cast<float>(local.atlasSize);
     plan.uniforms.atlasSize = {atlasSize, 1.0f / atlasSize, 0.0f, 0.0f};
-    plan.uniforms.config = {static_cast<int>(other.filter), static_cast<int>(other.pointMode), 0, 0};
+    plan.uniforms.config = {static_cast<int>(local.filter), static_cast<int>(local.pointMode), 0, 0};
     plan.uniforms.soft = softShadowUniforms(settings.soft);
     return plan;
 }

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/Device.hpp"
-#include "penumbra/shadows/OtherShadowPlanner.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 #include "penumbra/shadows/ShadowCasterDraws.hpp"
@@ -13,22 +13,22 @@
 
 namespace penumbra::shadows {
 
-// Renders the casters of a spot and point shadow plan: one pass over the other atlas, every tile in its
+// Renders the casters of a spot and point shadow plan: one pass over the local atlas, every tile in its
 // viewport and scissor with its light's slope-scale bias, then (CubeMap mode) one pass per cube face
 // layer, culling through the mirrored face views. Perspective views, so nothing is pancaked.
-class OtherShadowPass {
+class LocalShadowPass {
 public:
-    OtherShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
+    LocalShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
     // next record(), so submit `commands` before recording again.
     // `cubes` must hold at least plan.cubes.size() cubes; `atlas` may be any size where the plan has no tile.
     // `clearAtlas` false draws over what the atlas holds (cached static depth); cubes are always cleared.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
-                         const OtherShadowPlan& plan, std::span<const ShadowCaster> casters, bool clearAtlas = true);
+                         const LocalShadowPlan& plan, std::span<const ShadowCaster> casters, bool clearAtlas = true);
 
     // Every atlas tile of the plan as the pass draws it (not the cube faces).
-    static std::vector<ShadowTileDraw> tileDraws(const OtherShadowPlan& plan);
+    static std::vector<ShadowTileDraw> tileDraws(const LocalShadowPlan& plan);
 
 private:
     ShadowCasterDraws draws_;

@@ -1,8 +1,8 @@
-// Spot and point shadow attenuation over the other atlas: the light plane's normal bias, the cube face
+// Spot and point shadow attenuation over the local atlas: the light plane's normal bias, the cube face
 // of a point light, tile-clamped PCF (shadow_filter.glsl); or, in cube-map mode, point lights through
-// hardware cube lookups. The block is penumbra::shadows::OtherShadowUniforms.
+// hardware cube lookups. The block is penumbra::shadows::LocalShadowUniforms.
 
-layout(std140, binding = 4) uniform OtherShadows {
+layout(std140, binding = 4) uniform LocalShadows {
     mat4 worldToAtlas[16];
     vec4 tileBounds[16];
     vec4 tileData[16];
@@ -13,10 +13,10 @@ layout(std140, binding = 4) uniform OtherShadows {
     vec4 cubeSoft[4];
     vec4 softScales;
     vec4 softCounts;
-} otherShadows;
+} localShadows;
 
 // Read with texelFetch (shadow_filter.glsl).
-layout(binding = 5) uniform sampler2D otherShadowAtlas;
+layout(binding = 5) uniform sampler2D localShadowAtlas;
 // Nearest comparisons, the compare op the convention's (lit where the receiver is nearer or as near).
 layout(binding = 6) uniform samplerCubeArrayShadow pointShadowCubes;
 // The same cubes read raw, no comparison: the soft filters compare against the receiver plane themselves.
@@ -82,22 +82,22 @@ float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 
     const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(worldToAtlas, p, receiverDx),
                                 projectedDerivative(worldToAtlas, p, receiverDy), atlasSize, ivec2(bounds.xy),
                                 ivec2(bounds.zw), vec2(0.0));
-    return perspectiveSoftShadow(atlas, t, filterIndex, softControls(otherShadows.softScales, otherShadows.softCounts),
+    return perspectiveSoftShadow(atlas, t, filterIndex, softControls(localShadows.softScales, localShadows.softCounts),
                                  tileSoft);
 #endif
 }
 
 // Shadow of a spot light (its cone `axis`) or a point light (six tiles from `firstTile`, the face picked
 // by the direction from the light) at a receiver; `normal` is its geometric normal, either side.
-float otherAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
+float localAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
 {
     const vec3 fromLight = position - lightPosition;
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
     const int tile = local.tile;
-    const mat4 m = otherShadows.worldToAtlas[tile];
-    const vec4 p = localShadowPosition(m, otherShadows.tileData[tile].x, local.plane, fromLight, position, normal);
-    return filterLocalTile(otherShadowAtlas, otherShadows.atlasSize.x, m, p, otherShadows.tileBounds[tile],
-                           int(otherShadows.tileData[tile].y), otherShadows.tileSoft[tile]);
+    const mat4 m = localShadows.worldToAtlas[tile];
+    const vec4 p = localShadowPosition(m, localShadows.tileData[tile].x, local.plane, fromLight, position, normal);
+    return filterLocalTile(localShadowAtlas, localShadows.atlasSize.x, m, p, localShadows.tileBounds[tile],
+                           int(localShadows.tileData[tile].y), localShadows.tileSoft[tile]);
 }
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read
@@ -161,7 +161,7 @@ float cubePoissonFilter(CubeReceiver r, float radius, int count)
 
 float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
 {
-    const SoftControls c = softControls(otherShadows.softScales, otherShadows.softCounts);
+    const SoftControls c = softControls(localShadows.softScales, localShadows.softCounts);
     float radius = c.poissonRadius;
     if (filterIndex == PENUMBRA_FILTER_PCSS) {
         const vec3 a = abs(r.d);
@@ -179,7 +179,7 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
 // texels around the receiver's direction; hardware face selection carries taps across face edges.
 float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
 {
-    const vec4 data = otherShadows.cubeData[cube];
+    const vec4 data = localShadows.cubeData[cube];
     const vec3 fromLight = position - lightPosition;
     const int face = cubeFace(fromLight);
     const vec3 axis = cubeFaceAxis(face);
@@ -190,7 +190,7 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
     const float reference = (data.x * -major + data.y) / major;
     const vec3 u = cubeFaceAxis((face + 2) % 6) * (2.0 * major * data.w);
     const vec3 v = cubeFaceAxis((face + 4) % 6) * (2.0 * major * data.w);
-    const vec4 cubeSoft = otherShadows.cubeSoft[cube];
+    const vec4 cubeSoft = localShadows.cubeSoft[cube];
     const int filterIndex = int(cubeSoft.x);
 #if PENUMBRA_SOFT_FILTERS
     if (filterIndex >= PENUMBRA_FILTER_POISSON) {
@@ -214,33 +214,33 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
 
 // The filtered shadow map alone, before any strength (1 = lit): what ground truth compares. `tile`: the
 // light's first tile (or cube).
-float otherShadowVisibility(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
+float localShadowVisibility(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
 {
 #if PENUMBRA_SHADOW_CUBES
-    return isPoint && otherShadows.config.y == PENUMBRA_POINT_CUBE_MAP
+    return isPoint && localShadows.config.y == PENUMBRA_POINT_CUBE_MAP
                ? cubeMapShadow(tile, lightPosition, position, normal)
-               : otherAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
+               : localAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
 #else
-    return otherAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
+    return localAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
 #endif
 }
 
 // 1 = fully lit. `shadow`: first tile (or cube), -1 without shadows; the light's shadow strength. `strength` is the
 // global one (distance fade), which applies to every light.
-float otherShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
+float localShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
                              float strength)
 {
     const float s = shadow.y * strength;
     if (shadow.x < 0.0 || s <= 0.0)
         return 1.0;
-    return mix(1.0, otherShadowVisibility(int(shadow.x), isPoint, lightPosition, axis, position, normal), s);
+    return mix(1.0, localShadowVisibility(int(shadow.x), isPoint, lightPosition, axis, position, normal), s);
 }
 
 // The realtime shadow faded by the global strength, before the light's own (1 = lit; 1 without a tile).
-float otherRealtimeShadow(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
+float localRealtimeShadow(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
                           float strength)
 {
     if (tile < 0 || strength <= 0.0)
         return 1.0;
-    return mix(1.0, otherShadowVisibility(tile, isPoint, lightPosition, axis, position, normal), strength);
+    return mix(1.0, localShadowVisibility(tile, isPoint, lightPosition, axis, position, normal), strength);
 }

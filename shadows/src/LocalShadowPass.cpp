@@ -1,4 +1,4 @@
-#include "penumbra/shadows/OtherShadowPass.hpp"
+#include "penumbra/shadows/LocalShadowPass.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
@@ -6,15 +6,15 @@
 
 namespace penumbra::shadows {
 
-OtherShadowPass::OtherShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat)
+LocalShadowPass::LocalShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat)
     : draws_(device, vertexFormat)
 {
 }
 
-std::vector<ShadowTileDraw> OtherShadowPass::tileDraws(const OtherShadowPlan& plan)
+std::vector<ShadowTileDraw> LocalShadowPass::tileDraws(const LocalShadowPlan& plan)
 {
     std::vector<ShadowTileDraw> tiles;
-    for (const OtherAtlasTile& tile : plan.tiles)
+    for (const LocalAtlasTile& tile : plan.tiles)
         // The dither follows the tile's own texel grid: local lights do not move with the camera.
         tiles.push_back({tile.tile,
                          tile.viewport,
@@ -26,14 +26,14 @@ std::vector<ShadowTileDraw> OtherShadowPass::tileDraws(const OtherShadowPlan& pl
     return tiles;
 }
 
-std::uint32_t OtherShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
-                                      const OtherShadowPlan& plan, std::span<const ShadowCaster> casters,
+std::uint32_t LocalShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
+                                      const LocalShadowPlan& plan, std::span<const ShadowCaster> casters,
                                       bool clearAtlas)
 {
     if (cubes.cubeCount() < plan.cubes.size())
         throw rhi::Error(fmt::format("{} shadow cube maps, the plan needs {}", cubes.cubeCount(), plan.cubes.size()));
     if (!plan.tiles.empty() && atlas.size() != plan.atlas.atlasSize())
-        throw rhi::Error(fmt::format("other shadow atlas is {} texels wide, the plan was made for {}", atlas.size(),
+        throw rhi::Error(fmt::format("local shadow atlas is {} texels wide, the plan was made for {}", atlas.size(),
                                      plan.atlas.atlasSize()));
     draws_.reset();
     std::uint32_t draws = 0;
