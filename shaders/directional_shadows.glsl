@@ -2,26 +2,26 @@
 // atlas: tent-filtered PCF (penumbra::shadows::tentFilterTaps) or the Poisson and PCSS filters
 // (soft_shadows.glsl). The uniform block is penumbra::shadows::DirectionalShadowUniforms.
 
-layout(std140, binding = 2) uniform DirectionalShadows {
-    mat4 worldToAtlas[16];
-    vec4 cullingSpheres[4];
-    vec4 cascadeData[4];
+layout(std140, binding = PENUMBRA_BINDING_DIRECTIONAL_SHADOWS) uniform DirectionalShadows {
+    mat4 worldToAtlas[PENUMBRA_MAX_DIRECTIONAL_TILES];
+    vec4 cullingSpheres[PENUMBRA_MAX_CASCADES];
+    vec4 cascadeData[PENUMBRA_MAX_CASCADES];
     vec4 distanceFade;
     vec4 atlasSize;
-    ivec4 config;
-    vec4 lightShadowData[4];
-    vec4 tileSoft[16];
-    vec4 lightSoft[4];
+    int cascadeCount;
+    int defaultFilter;
+    int cascadeBlend;
+    int shadowedLightCount;
+    int cascadeProjection;
+    vec4 lightShadowData[PENUMBRA_MAX_SHADOWED_DIRECTIONAL_LIGHTS];
+    vec4 tileSoft[PENUMBRA_MAX_DIRECTIONAL_TILES];
+    vec4 lightSoft[PENUMBRA_MAX_SHADOWED_DIRECTIONAL_LIGHTS];
     vec4 softScales;
     vec4 softCounts;
-    ivec4 projection;
 } shadows;
 
 // Read with texelFetch (shadow_filter.glsl).
-layout(binding = 3) uniform sampler2D shadowAtlas;
-
-const int PENUMBRA_BLEND_SOFT = 1;
-const int PENUMBRA_BLEND_DITHER = 2;
+layout(binding = PENUMBRA_BINDING_DIRECTIONAL_ATLAS) uniform sampler2D shadowAtlas;
 
 struct CascadeSelection {
     int index;      // cascadeCount when the point is beyond every cascade
@@ -44,8 +44,8 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
     CascadeSelection s;
     s.blend = 1.0;
     s.strength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
-    const int count = shadows.config.x;
-    const bool close = shadows.projection.x == PENUMBRA_PROJECTION_CLOSE;
+    const int count = shadows.cascadeCount;
+    const bool close = shadows.cascadeProjection == PENUMBRA_PROJECTION_CLOSE;
     int i = 0;
     for (; i < count; ++i) {
         const vec4 sphere = shadows.cullingSpheres[i];
@@ -65,9 +65,9 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
     }
     if (i == count)
         s.strength = 0.0;
-    else if (shadows.config.z == PENUMBRA_BLEND_DITHER && s.blend < dither)
+    else if (shadows.cascadeBlend == PENUMBRA_BLEND_DITHER && s.blend < dither)
         i += 1;
-    if (shadows.config.z != PENUMBRA_BLEND_SOFT)
+    if (shadows.cascadeBlend != PENUMBRA_BLEND_SOFT)
         s.blend = 1.0;
     s.index = i;
     return s;
@@ -82,7 +82,7 @@ float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize
                             int filterIndex, mat3 toAtlas, vec4 tileSoft, float tanHalfAngle, float texelWorld)
 {
 #if PENUMBRA_SOFT_FILTERS
-    if (filterIndex < PENUMBRA_FILTER_POISSON)
+    if (filterIndex < PENUMBRA_FILTER_FIRST_POISSON_DISK)
 #endif
         return filterShadowTile(atlas, atlasPosition, atlasSize, filterIndex, tileMin, tileMax);
 #if PENUMBRA_SOFT_FILTERS

@@ -91,7 +91,7 @@ LocalLight localLight(int i)
     const float d2 = max(dot(toLight, toLight), 1e-5);
     LocalLight result;
     result.l = toLight * inversesqrt(d2);
-    result.isPoint = frame.localColor[i].w > 0.5;
+    result.isPoint = int(frame.localColor[i].w) == PENUMBRA_LIGHT_POINT;
     // Smooth range window over inverse-square falloff (Karis 2013, "Real Shading in Unreal Engine 4", section
     // "Lights"), then the spot cone's smooth step between outer and inner angle.
     const float window = clamp(1.0 - d2 * light.w * d2 * light.w, 0.0, 1.0);
@@ -106,8 +106,8 @@ LocalLight localLight(int i)
 // light does not reach it, it has no shadow there, or the material receives none).
 vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascade, float globalStrength)
 {
-    const bool receives = object.flags.x != 0;
-    if (index < frame.config.x) {
+    const bool receives = object.receivesShadows != 0;
+    if (index < frame.directionalLightCount) {
         const int slot = receives ? int(frame.lightDirection[index].w) : -1;
         const vec4 map = staticShadows.directionalLights[index];
         const bool realtime = directionalShadowReaches(slot, cascade);
@@ -120,7 +120,7 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
                                     : shadow),
                     1.0);
     }
-    const int i = index - frame.config.x;
+    const int i = index - frame.directionalLightCount;
     const LocalLight light = localLight(i);
     const vec4 shadow = frame.localShadow[i];
     const vec4 map = staticShadows.localLights[i];
@@ -154,13 +154,13 @@ void main()
     if (casterMode == PENUMBRA_CASTER_CLIP && alpha < object.surface.z)
         discard;
     // Blended surfaces cover by their alpha; everything else is opaque.
-    const float coverage = object.flags.w != 0 ? alpha : 1.0;
+    const float coverage = object.blended != 0 ? alpha : 1.0;
 #endif
 
     // Base colour textures are RGBA8_SRGB: sampling has decoded them to linear light before filtering.
     const vec3 base = object.baseColor.rgb * vColor.rgb * (textured ? texel.rgb : vec3(1.0));
     // Unlit surfaces show no shadow: the visibility view leaves them undecided.
-    if (object.flags.z != 0) {
+    if (object.unlit != 0) {
         outColor = PENUMBRA_LIT_VIEW == PENUMBRA_VIEW_VISIBILITY ? vec4(1.0, 1.0, 1.0, 0.0)
                                                                  : vec4(linearToSrgb(base), coverage);
         return;
@@ -177,7 +177,7 @@ void main()
     const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
     const float globalStrength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
 #if PENUMBRA_LIT_VIEW == PENUMBRA_VIEW_VISIBILITY
-    outColor = shadowVisibility(frame.config.w, n, geometric, cascade, globalStrength);
+    outColor = shadowVisibility(frame.visibilityLight, n, geometric, cascade, globalStrength);
 #else
 
     const vec4 metalRough = sampleMap(metallicRoughnessMap, PENUMBRA_TEXTURE_METALLIC_ROUGHNESS);
@@ -193,12 +193,12 @@ void main()
 #if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_EDGES
     const bool fromCollection = collectedHere();
 #endif
-    for (int i = 0; i < frame.config.x; ++i) {
+    for (int i = 0; i < frame.directionalLightCount; ++i) {
         const vec3 l = -frame.lightDirection[i].xyz;
         const float nl = dot(n, l);
         if (nl <= 0.0)
             continue;
-        const bool receives = object.flags.x != 0;
+        const bool receives = object.receivesShadows != 0;
         const int slot = receives ? int(frame.lightDirection[i].w) : -1;
 #if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_PIXELS
         const float attenuation = receives ? collectedShadow(collected, i) : 1.0;
@@ -212,12 +212,12 @@ void main()
         color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }
 #if PENUMBRA_LOCAL_LIGHTS
-    for (int i = 0; i < frame.config.z; ++i) {
+    for (int i = 0; i < frame.localLightCount; ++i) {
         const LocalLight light = localLight(i);
         const float nl = dot(n, light.l);
         if (nl <= 0.0 || light.falloff <= 0.0)
             continue;
-        const bool receives = object.flags.x != 0;
+        const bool receives = object.receivesShadows != 0;
 #if PENUMBRA_STATIC_SHADOWS
         const float attenuation = localAttenuation(i, frame.localShadow[i].zw, receives, light.isPoint,
                                                    frame.localPosition[i].xyz, frame.localAxis[i].xyz, vPosition,

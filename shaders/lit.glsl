@@ -2,31 +2,36 @@
 
 #include "lit_constants.glsl"
 
-layout(std140, binding = 0) uniform Frame {
+layout(std140, binding = PENUMBRA_BINDING_FRAME) uniform Frame {
     mat4 viewProjection;
-    vec4 cameraPosition;     // xyz
-    vec4 cameraForward;      // xyz, unit: view depth is the distance along it
-    vec4 lightColor[8];      // linear rgb x intensity
-    vec4 lightDirection[8];  // xyz from the light into the scene, w = shadow slot or -1
-    vec4 ambient;            // linear rgb
-    ivec4 config;            // directional light count, view (penumbra::render::LitView), local light count, the
-                             // visibility view's light (directional lights first, then spot and point lights)
-    vec4 localPosition[16];  // xyz, w = 1 / range^2
-    vec4 localColor[16];     // linear rgb x intensity, w = 1 for a point light, 0 for a spot light
-    vec4 localAxis[16];      // spot cone axis (unit, away from the light)
-    vec4 localShadow[16];    // spot angle scale and offset, first shadow tile or -1, shadow strength
-    vec4 ambientGround;      // linear rgb from below (= ambient without a hemisphere)
+    vec4 cameraPosition; // xyz
+    vec4 cameraForward;  // xyz, unit: view depth is the distance along it
+    vec4 lightColor[PENUMBRA_MAX_LIT_DIRECTIONAL_LIGHTS];     // linear rgb x intensity
+    vec4 lightDirection[PENUMBRA_MAX_LIT_DIRECTIONAL_LIGHTS]; // xyz from the light into the scene, w = shadow slot or -1
+    vec4 ambient;        // linear rgb
+    int directionalLightCount;
+    int litView;         // penumbra::render::LitView (PENUMBRA_VIEW_*)
+    int localLightCount;
+    int visibilityLight; // the visibility view's light (directional lights first, then spot and point lights)
+    vec4 localPosition[PENUMBRA_MAX_LIT_LOCAL_LIGHTS]; // xyz, w = 1 / range^2
+    vec4 localColor[PENUMBRA_MAX_LIT_LOCAL_LIGHTS];    // linear rgb x intensity, w = PENUMBRA_LIGHT_SPOT or _POINT
+    vec4 localAxis[PENUMBRA_MAX_LIT_LOCAL_LIGHTS];     // spot cone axis (unit, away from the light)
+    vec4 localShadow[PENUMBRA_MAX_LIT_LOCAL_LIGHTS];   // spot angle scale and offset, first shadow tile or -1, strength
+    vec4 ambientGround;  // linear rgb from below (= ambient without a hemisphere)
 } frame;
 
-layout(std140, binding = 1) uniform Object {
+layout(std140, binding = PENUMBRA_BINDING_OBJECT) uniform Object {
     mat4 model;
     mat4 normalMatrix;       // inverse transpose of the model matrix
     vec4 baseColor;          // linear rgb, alpha
     vec4 surface;            // metallic, roughness, alpha cutoff, caster mode (material.glsl)
-    ivec4 flags;             // receives shadows, textures present (bit per PENUMBRA_TEXTURE_*), unlit, blended
+    int receivesShadows;
+    int materialMaps;        // textures present, bit per PENUMBRA_TEXTURE_*
+    int unlit;
+    int blended;
     vec4 emissive;           // linear rgb, w = occlusion strength
     vec4 normal;             // normal texture scale, sign of det(model)
-    vec4 uvTransforms[10];   // per PENUMBRA_TEXTURE_*: its uv transform rows (material.glsl, transformedUv)
+    vec4 uvTransforms[2 * PENUMBRA_TEXTURE_SLOTS]; // per PENUMBRA_TEXTURE_*: its uv transform rows (material.glsl, transformedUv)
 } object;
 
 // A white texel where the material has no such texture.
@@ -40,7 +45,7 @@ layout(binding = PENUMBRA_BINDING_EMISSIVE_MAP) uniform sampler2D emissiveMap;  
 layout(binding = PENUMBRA_BINDING_COVERAGE_MAP) uniform sampler2D coverageMap;
 
 // Only the maps the shader is built with (PENUMBRA_LIT_MAPS): the others are left out of it.
-bool hasMap(int slot) { return ((PENUMBRA_LIT_MAPS >> slot) & 1) != 0 && (object.flags.y & (1 << slot)) != 0; }
+bool hasMap(int slot) { return ((PENUMBRA_LIT_MAPS >> slot) & 1) != 0 && (object.materialMaps & (1 << slot)) != 0; }
 
 vec4[2] uvRows(int slot) { return vec4[2](object.uvTransforms[2 * slot], object.uvTransforms[2 * slot + 1]); }
 

@@ -2,27 +2,26 @@
 // of a point light, tile-clamped PCF (shadow_filter.glsl); or, in cube-map mode, point lights through
 // hardware cube lookups. The block is penumbra::shadows::LocalShadowUniforms.
 
-layout(std140, binding = 4) uniform LocalShadows {
-    mat4 worldToAtlas[16];
-    vec4 tileBounds[16];
-    vec4 tileData[16];
-    vec4 cubeData[4];
+layout(std140, binding = PENUMBRA_BINDING_LOCAL_SHADOWS) uniform LocalShadows {
+    mat4 worldToAtlas[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
+    vec4 tileBounds[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
+    vec4 tileData[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
+    vec4 cubeData[PENUMBRA_MAX_SHADOW_CUBES];
     vec4 atlasSize;
-    ivec4 config;
-    vec4 tileSoft[16];
-    vec4 cubeSoft[4];
+    int defaultFilter;
+    int pointMode;
+    vec4 tileSoft[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
+    vec4 cubeSoft[PENUMBRA_MAX_SHADOW_CUBES];
     vec4 softScales;
     vec4 softCounts;
 } localShadows;
 
 // Read with texelFetch (shadow_filter.glsl).
-layout(binding = 5) uniform sampler2D localShadowAtlas;
+layout(binding = PENUMBRA_BINDING_LOCAL_ATLAS) uniform sampler2D localShadowAtlas;
 // Nearest comparisons, the compare op the convention's (lit where the receiver is nearer or as near).
-layout(binding = 6) uniform samplerCubeArrayShadow pointShadowCubes;
+layout(binding = PENUMBRA_BINDING_SHADOW_CUBES) uniform samplerCubeArrayShadow pointShadowCubes;
 // The same cubes read raw, no comparison: the soft filters compare against the receiver plane themselves.
 layout(binding = PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS) uniform samplerCubeArray pointShadowCubeDepths;
-
-const int PENUMBRA_POINT_CUBE_MAP = 1;
 
 // The face of the largest component of d (light to point), ties to x, then y, then z:
 // penumbra::shadows::cubeFace. Faces in the order +X, -X, +Y, -Y, +Z, -Z.
@@ -75,7 +74,7 @@ float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 
                       vec4 tileSoft)
 {
 #if PENUMBRA_SOFT_FILTERS
-    if (filterIndex < PENUMBRA_FILTER_POISSON)
+    if (filterIndex < PENUMBRA_FILTER_FIRST_POISSON_DISK)
 #endif
         return filterShadowTile(atlas, p.xyz / p.w, atlasSize, filterIndex, ivec2(bounds.xy), ivec2(bounds.zw));
 #if PENUMBRA_SOFT_FILTERS
@@ -193,7 +192,7 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
     const vec4 cubeSoft = localShadows.cubeSoft[cube];
     const int filterIndex = int(cubeSoft.x);
 #if PENUMBRA_SOFT_FILTERS
-    if (filterIndex >= PENUMBRA_FILTER_POISSON) {
+    if (filterIndex >= PENUMBRA_FILTER_FIRST_POISSON_DISK) {
         // The receiver's texel on its face, offset by face: the light's own texel grid for the disk's rotation.
         const vec2 onFace = vec2(dot(d, cubeFaceAxis((face + 2) % 6)), dot(d, cubeFaceAxis((face + 4) % 6))) / major;
         const ivec2 texel = ivec2(floor((onFace * 0.5 + 0.5) / data.w)) + ivec2(face * int(1.0 / data.w + 0.5), 0);
@@ -217,7 +216,7 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
 float localShadowVisibility(int tile, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal)
 {
 #if PENUMBRA_SHADOW_CUBES
-    return isPoint && localShadows.config.y == PENUMBRA_POINT_CUBE_MAP
+    return isPoint && localShadows.pointMode == PENUMBRA_POINT_CUBE_MAP
                ? cubeMapShadow(tile, lightPosition, position, normal)
                : localAtlasShadow(tile, isPoint, lightPosition, axis, position, normal);
 #else

@@ -1,8 +1,6 @@
 // Material facts shared by the caster and lit passes; the same math as penumbra::scene::materialAlpha.
 
-const int PENUMBRA_CASTER_ON = 0;
-const int PENUMBRA_CASTER_CLIP = 1;
-const int PENUMBRA_CASTER_DITHER = 2;
+#include "caster_constants.glsl"
 
 // Clip materials without a texture get a checker of holes, 5 cells per uv unit (scene::kClipCheckerCells);
 // textured ones take the texture's alpha (`textureAlpha`, 1 without a texture).

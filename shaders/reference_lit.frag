@@ -12,8 +12,9 @@
 #include "reference_constants.glsl"
 
 layout(std140, binding = PENUMBRA_BINDING_REFERENCE_SPLITS) uniform ReferenceSplits {
+    int cascadeCount;
+    int firstTile;  // the light's first atlas tile (-1: no shadows)
     vec4 farDepths; // view depth where cascade i ends
-    ivec4 config;   // cascade count, the light's first atlas tile (-1: no shadows)
 } reference;
 
 layout(location = 0) in vec3 vPosition;
@@ -28,14 +29,14 @@ void main()
     if (color.a < 0.5)
         discard;
     const float viewDepth = dot(vPosition - frame.cameraPosition.xyz, frame.cameraForward.xyz);
-    const int count = reference.config.x;
+    const int count = reference.cascadeCount;
     int cascade = 0;
     for (int i = 0; i < count - 1; ++i)
         if (viewDepth > reference.farDepths[i])
             cascade = i + 1;
     float shadow = 1.0;
-    if (reference.config.y >= 0 && count > 0 && viewDepth < reference.farDepths[count - 1]) {
-        const vec3 p = transformPoint(shadows.worldToAtlas[reference.config.y + cascade], vPosition).xyz;
+    if (reference.firstTile >= 0 && count > 0 && viewDepth < reference.farDepths[count - 1]) {
+        const vec3 p = transformPoint(shadows.worldToAtlas[reference.firstTile + cascade], vPosition).xyz;
         shadow = compareTexel(shadowAtlas, ivec2(p.xy * shadows.atlasSize.x), p.z);
     }
     const vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);

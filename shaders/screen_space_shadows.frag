@@ -25,9 +25,9 @@ layout(std140, binding = PENUMBRA_BINDING_COLLECTION) uniform Collection {
     mat4 clipToWorld;        // inverse of the lit pass's view-projection
     vec4 cameraPosition;     // xyz
     vec4 cameraForward;      // xyz, unit
-    vec4 lightDirection[4];  // xyz from the light into the scene, w = shadow slot or -1
+    int lightCount;          // lights collected
+    vec4 lightDirection[PENUMBRA_COLLECTED_LIGHTS]; // xyz from the light into the scene, w = shadow slot or -1
     vec4 targetSize;         // width, height in pixels
-    ivec4 config;            // lights collected
 } collection;
 
 // The prepass's depth and its world position derivatives (receiver_prepass.frag), read with texelFetch.
@@ -56,7 +56,7 @@ void main()
     setReceiverDerivatives(dx, dy);
     const float viewDepth = -dot(collection.cameraPosition.xyz - position, collection.cameraForward.xyz);
     const CascadeSelection cascade = selectCascade(position, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
-    for (int i = 0; i < collection.config.x; ++i) {
+    for (int i = 0; i < collection.lightCount; ++i) {
         const vec3 l = -collection.lightDirection[i].xyz;
         const int slot = int(collection.lightDirection[i].w);
         outShadows[i] = directionalLightShadow(i, slot, true, cascade, position, geometric, l);

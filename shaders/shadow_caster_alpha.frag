@@ -6,7 +6,7 @@
 #include "material.glsl"
 #include "shadow_caster.glsl"
 
-layout(binding = 1) uniform sampler2D baseColorMap; // a white texel for untextured casters
+layout(binding = PENUMBRA_BINDING_CASTER_BASE_COLOR) uniform sampler2D baseColorMap; // a white texel for untextured casters
 
 layout(location = 0) in vec2 vUv;
 

@@ -5,17 +5,17 @@
 // without realtime tiles keeps its static shadow. Needs directional_shadows.glsl and local_shadows.glsl first.
 
 layout(std140, binding = PENUMBRA_BINDING_STATIC_SHADOWS) uniform StaticShadows {
-    mat4 directionalWorldToMap[4];
-    vec4 directionalBounds[4];
-    vec4 directionalLights[8];
-    mat4 localWorldToMap[64];
-    vec4 localBounds[64];
-    vec4 localData[64];
-    vec4 localLights[16];
+    mat4 directionalWorldToMap[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
+    vec4 directionalBounds[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
+    vec4 directionalLights[PENUMBRA_MAX_STATIC_MAP_DIRECTIONAL_LIGHTS];
+    mat4 localWorldToMap[PENUMBRA_MAX_STATIC_LOCAL_TILES];
+    vec4 localBounds[PENUMBRA_MAX_STATIC_LOCAL_TILES];
+    vec4 localData[PENUMBRA_MAX_STATIC_LOCAL_TILES];
+    vec4 localLights[PENUMBRA_MAX_STATIC_MAP_LOCAL_LIGHTS];
     vec4 atlasSizes;
-    vec4 directionalSoft[4];
-    vec4 directionalSource[4];
-    vec4 localSoft[64];
+    vec4 directionalSoft[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
+    vec4 directionalSource[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
+    vec4 localSoft[PENUMBRA_MAX_STATIC_LOCAL_TILES];
 } staticShadows;
 
 // Read with texelFetch (shadow_filter.glsl), as the realtime atlases.

@@ -5,6 +5,11 @@
 #include <glm/gtc/constants.hpp>
 
 namespace penumbra::pattern {
+namespace {
+
+constexpr std::uint32_t kPatternBinding = 0; // pattern.vert's Pattern block
+
+} // namespace
 
 std::vector<PatternVertex> testPattern()
 {
@@ -28,7 +33,7 @@ std::vector<PatternVertex> testPattern()
 PatternRenderer::PatternRenderer(rhi::Device& device, const PatternTarget& target)
     : device_(device), target_(target),
       projection_(device.conventions().perspective(glm::half_pi<float>(), 1.0f, target.zNear, target.zFar)),
-      vertexShader_(device.createShader(shaders::load("pattern.vert"))),
+      vertexShader_(device.createShader(shaders::load("pattern.vert", {{"BINDING_PATTERN", kPatternBinding}}))),
       fragmentShader_(device.createShader(shaders::load("pattern.frag"))),
       color_(device.createTexture({.width = target.width, .height = target.height, .format = rhi::Format::RGBA8,
                                    .usage = target.sampled ? rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled
@@ -79,7 +84,7 @@ void PatternRenderer::render(std::span<const PatternVertex> triangles, rhi::Cull
                 {.size = size, .usage = rhi::BufferUsage::Vertex, .debugName = "pattern.vertices"});
         vertices_->write(0, std::as_bytes(triangles));
         commands_->bindPipeline(pipeline(cull));
-        commands_->bindUniformBuffer(0, *uniforms_, 0, sizeof(glm::mat4));
+        commands_->bindUniformBuffer(kPatternBinding, *uniforms_, 0, sizeof(glm::mat4));
         commands_->bindVertexBuffer(0, *vertices_);
         commands_->draw(std::uint32_t(triangles.size()));
     }

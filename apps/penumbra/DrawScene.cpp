@@ -10,13 +10,18 @@
 #include <vector>
 
 namespace penumbra::apps {
+namespace {
+
+constexpr std::uint32_t kObjectBinding = 0; // mesh.vert's Object block
+
+} // namespace
 
 DrawScene::DrawScene(rhi::Device& device, std::uint32_t count)
     : count_(count),
       objectStride_((objectSize + device.capabilities().uniformBufferOffsetAlignment - 1) /
                     device.capabilities().uniformBufferOffsetAlignment *
                     device.capabilities().uniformBufferOffsetAlignment),
-      vertexShader_(device.createShader(shaders::load("mesh.vert"))),
+      vertexShader_(device.createShader(shaders::load("mesh.vert", {{"BINDING_OBJECT", kObjectBinding}}))),
       fragmentShader_(device.createShader(shaders::load("mesh.frag")))
 {
     pipeline_ = device.createPipeline({
@@ -74,7 +79,7 @@ void DrawScene::recordRhi(rhi::CommandList& commands) const
     commands.bindVertexBuffer(0, *vertices_);
     commands.bindIndexBuffer(*indices_, rhi::IndexType::UInt16);
     for (std::uint32_t i = 0; i < count_; ++i) {
-        commands.bindUniformBuffer(0, *objects_, objectStride_ * i, objectSize);
+        commands.bindUniformBuffer(kObjectBinding, *objects_, objectStride_ * i, objectSize);
         commands.drawIndexed(indexCount());
     }
     commands.endPass();

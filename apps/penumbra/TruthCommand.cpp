@@ -169,7 +169,7 @@ void truth(const TruthOptions& options)
                 progressBar(fmt::format("'{}' area light", t.name)));
             const scene::SoftTruthFigures figures = scene::compareSoftVisibility(soft, t.rendered);
             entry["sourceSize"] = render::lightSourceSize(scene, t.light);
-            entry["filter"] = shadows::shadowFilterNames()[std::size_t(render::plannedShadowFilter(plans, t.light))].command;
+            entry["filter"] = shadows::shadowFilters()[std::size_t(render::plannedShadowFilter(plans, t.light))].command;
             entry["penumbraPixels"] = figures.penumbraPixels;
             entry["softCompared"] = figures.compared;
             entry["softMeanAbsError"] = figures.meanAbsError;

@@ -39,8 +39,8 @@ rhi::PipelineDesc pipelineDesc(const rhi::Shader& vertex, const rhi::Shader& fra
 } // namespace
 
 ImGuiRenderer::ImGuiRenderer(rhi::Device& device, rhi::Format targetFormat)
-    : device_(device), vertex_(device.createShader(shaders::load("imgui.vert"))),
-      fragment_(device.createShader(shaders::load("imgui.frag"))),
+    : device_(device), vertex_(device.createShader(shaders::load("imgui.vert", {{"BINDING_FRAME", kFrameBinding}}))),
+      fragment_(device.createShader(shaders::load("imgui.frag", {{"BINDING_TEXTURE", kTextureBinding}}))),
       pipeline_(device.createPipeline(pipelineDesc(*vertex_, *fragment_, targetFormat))),
       sampler_(device.createSampler({.magFilter = rhi::Filter::Linear,
                                      .minFilter = rhi::Filter::Linear, .debugName = "imgui"})),

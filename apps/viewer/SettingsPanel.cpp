@@ -26,7 +26,7 @@ std::array<const char*, shadows::kShadowFilterCount> filterNames()
 {
     std::array<const char*, shadows::kShadowFilterCount> names{};
     for (std::size_t i = 0; i < names.size(); ++i)
-        names[i] = shadows::shadowFilterNames()[i].command.data();
+        names[i] = shadows::shadowFilters()[i].command.data();
     return names;
 }
 

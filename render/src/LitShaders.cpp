@@ -1,8 +1,10 @@
 #include "penumbra/render/LitUniforms.hpp"
 
+#include "penumbra/scene/Light.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/FilterConstants.hpp"
+#include "penumbra/shadows/ShaderInterface.hpp"
 
 #include <fmt/format.h>
 
@@ -29,7 +31,14 @@ std::string litConstants(const LitShaderFeatures& features)
         text += fmt::format("#define PENUMBRA_TEXTURE_{} {}\n", entry.name, static_cast<std::uint32_t>(entry.slot));
         text += fmt::format("#define PENUMBRA_BINDING_{}_MAP {}\n", entry.name, litMaterialMapBinding(entry.slot));
     }
+    text += fmt::format("#define PENUMBRA_TEXTURE_SLOTS {}\n", scene::kTextureSlots);
     text += fmt::format("#define PENUMBRA_BINDING_COVERAGE_MAP {}\n", kLitCoverageMapBinding);
+    text += fmt::format("#define PENUMBRA_BINDING_FRAME {}\n#define PENUMBRA_BINDING_OBJECT {}\n", kLitFrameBinding,
+                        kLitObjectBinding);
+    text += fmt::format("#define PENUMBRA_MAX_LIT_DIRECTIONAL_LIGHTS {}\n#define PENUMBRA_MAX_LIT_LOCAL_LIGHTS {}\n",
+                        maxLitDirectionalLights, maxLitLocalLights);
+    text += fmt::format("#define PENUMBRA_LIGHT_SPOT {}\n#define PENUMBRA_LIGHT_POINT {}\n",
+                        static_cast<int>(scene::LightKind::Spot), static_cast<int>(scene::LightKind::Point));
     text += fmt::format("#define PENUMBRA_DEPTH_PREPASSED {}\n", features.depthPrepassed ? 1 : 0);
     text += fmt::format("#define PENUMBRA_VIEW_LIT {}\n#define PENUMBRA_VIEW_CASCADES {}\n"
                         "#define PENUMBRA_VIEW_VISIBILITY {}\n#define PENUMBRA_LIT_VIEW {}\n",
@@ -63,9 +72,16 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
 {
     rhi::ShaderSource source = shaders::load(fileName);
     source.includes.push_back({"lit_constants.glsl", litConstants(features)});
+    source.includes.push_back({"caster_constants.glsl", shadows::casterConstantsGlsl()});
     source.includes.push_back({"shadow_constants.glsl",
                                shadows::filterConstantsGlsl() + shadows::cascadeProjectionConstantsGlsl() +
-                                   fmt::format("#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
+                                   shadows::shadowInterfaceGlsl() +
+                                   fmt::format("#define PENUMBRA_BINDING_DIRECTIONAL_SHADOWS {}\n"
+                                               "#define PENUMBRA_BINDING_DIRECTIONAL_ATLAS {}\n"
+                                               "#define PENUMBRA_BINDING_LOCAL_SHADOWS {}\n"
+                                               "#define PENUMBRA_BINDING_LOCAL_ATLAS {}\n"
+                                               "#define PENUMBRA_BINDING_SHADOW_CUBES {}\n"
+                                               "#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
                                                "#define PENUMBRA_BINDING_POISSON_DISKS {}\n"
                                                "#define PENUMBRA_BINDING_STATIC_SHADOWS {}\n"
                                                "#define PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS {}\n"
@@ -73,6 +89,8 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
                                                "#define PENUMBRA_TENT_FILTERS {}\n"
                                                "#define PENUMBRA_SOFT_FILTERS {}\n"
                                                "#define PENUMBRA_SHADOW_CUBES {}\n",
+                                               kLitShadowBinding, kLitAtlasBinding, kLitLocalShadowBinding,
+                                               kLitLocalAtlasBinding, kLitShadowCubesBinding,
                                                kLitShadowCubeDepthsBinding, kLitPoissonDisksBinding,
                                                kLitStaticShadowBinding, kLitStaticDirectionalAtlasBinding,
                                                kLitStaticLocalAtlasBinding, features.tentFilters ? 1 : 0,

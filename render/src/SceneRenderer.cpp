@@ -13,6 +13,7 @@
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 #include "penumbra/shadows/LocalShadowUniforms.hpp"
 #include "penumbra/shadows/PoissonDisk.hpp"
+#include "penumbra/shadows/ShadowCaster.hpp"
 #include "penumbra/shadows/StaticShadowUniforms.hpp"
 
 #include <algorithm>
@@ -117,17 +118,17 @@ void fillLocalLights(LitFrameUniforms& u, const scene::Scene& scene, const shado
         const float cosOuter = std::cos(l.outerAngle);
         const float scale = 1.0f / std::max(std::cos(l.innerAngle) - cosOuter, 1e-3f);
         u.localPosition[count] = glm::vec4(l.position, 1.0f / (l.range * l.range));
-        u.localColor[count] = glm::vec4(l.color * l.intensity, 0.0f);
+        u.localColor[count] = glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Spot));
         u.localAxis[count] = glm::vec4(l.direction, 0.0f);
         u.localShadow[count] = {scale, -cosOuter * scale, static_cast<float>(plan.spotTiles[i]), l.shadowStrength};
     }
     for (std::size_t i = 0; i < scene.pointLights.size() && count < maxLitLocalLights; ++i, ++count) {
         const scene::PointLight& l = scene.pointLights[i];
         u.localPosition[count] = glm::vec4(l.position, 1.0f / (l.range * l.range));
-        u.localColor[count] = glm::vec4(l.color * l.intensity, 1.0f);
+        u.localColor[count] = glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Point));
         u.localShadow[count] = {0.0f, 0.0f, static_cast<float>(plan.pointShadows[i]), l.shadowStrength};
     }
-    u.config.z = static_cast<int>(count);
+    u.localLightCount = static_cast<int>(count);
 }
 
 const std::string& lightName(const scene::Scene& scene, shadows::ShadowLightKind kind, std::uint32_t index)
@@ -246,13 +247,20 @@ SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_
     return split;
 }
 
+// The lit shaders compare the material's caster mode against the caster pass's PENUMBRA_CASTER_* (material.glsl).
+static_assert(static_cast<int>(scene::CasterMode::Clip) == static_cast<int>(shadows::ShadowCasterMode::Clip) &&
+              static_cast<int>(scene::CasterMode::Dither) == static_cast<int>(shadows::ShadowCasterMode::Dither));
+
 LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
 {
     LitObjectUniforms u{object.transform,
                         glm::transpose(glm::inverse(object.transform)),
                         material.baseColor,
                         {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
-                        {},
+                        0,
+                        0,
+                        0,
+                        0,
                         glm::vec4(material.emissive, material.occlusionStrength),
                         {material.normalScale, glm::determinant(glm::mat3(object.transform)) < 0.0f ? -1.0f : 1.0f,
                          0.0f, 0.0f},
@@ -262,8 +270,10 @@ LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Mater
         u.uvTransforms[2 * slot] = rows[0];
         u.uvTransforms[2 * slot + 1] = rows[1];
     }
-    u.flags = {object.receiveShadows && material.receiveShadows ? 1 : 0, static_cast<int>(litMaterialMaps(material)),
-               material.unlit ? 1 : 0, material.blend ? 1 : 0};
+    u.receivesShadows = object.receiveShadows && material.receiveShadows ? 1 : 0;
+    u.materialMaps = static_cast<int>(litMaterialMaps(material));
+    u.unlit = material.unlit ? 1 : 0;
+    u.blended = material.blend ? 1 : 0;
     return u;
 }
 
@@ -486,7 +496,8 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     }
     u.ambient = glm::vec4(frame.ambient.sky(), 0.0f);
     u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);
-    u.config = {static_cast<int>(count), static_cast<int>(view), 0, 0};
+    u.directionalLightCount = static_cast<int>(count);
+    u.litView = static_cast<int>(view);
     fillLocalLights(u, gpuScene_.scene(), localPlan_);
     return u;
 }
@@ -722,7 +733,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
 features, shadowUniforms, localShadowUniforms, staticShadowUniforms);
     if (frame.visibilityOf) {
         LitFrameUniforms u = frameUniforms(camera, frame, LitView::Visibility);
-        u.config.w = visibilityLight;
+        u.visibilityLight = visibilityLight;
         // The visibility view of any light, with every part of the shader: a debug view, not worth a variant each.
         recordLitPass(commands, *visibilityTarget_, *litPipelines_, uniforms_.push(u),
                       LitShaderFeatures{.view = LitView::Visibility}, shadowUniforms, localShadowUniforms,

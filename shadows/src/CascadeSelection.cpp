@@ -13,8 +13,8 @@ namespace penumbra::shadows {
 
 CascadeSelection selectCascade(const DirectionalShadowUniforms& u, glm::vec3 position, float viewDepth)
 {
-    const auto count = static_cast<std::uint32_t>(u.config.x);
-    const bool close = u.projection.x == static_cast<int>(CascadeProjection::Close);
+    const auto count = static_cast<std::uint32_t>(u.cascadeCount);
+    const bool close = u.cascadeProjection == static_cast<int>(CascadeProjection::Close);
     for (std::uint32_t i = 0; i < count; ++i) {
         const glm::vec4& data = u.cascadeData[i];
         if (close) {

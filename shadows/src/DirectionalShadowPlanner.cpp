@@ -55,9 +55,11 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
     const auto tileSize = static_cast<float>(plan.atlas.tileSize());
     u.atlasSize = {atlasSize, 1.0f / atlasSize, tileSize, 1.0f / tileSize};
     u.distanceFade = shadowDistanceFade(settings);
-    u.config = {static_cast<int>(plan.splits.count), static_cast<int>(settings.directional.filter),
-                static_cast<int>(settings.directional.cascadeBlend), static_cast<int>(plan.lights.size())};
-    u.projection = {static_cast<int>(settings.directional.projection), 0, 0, 0};
+    u.cascadeCount = static_cast<int>(plan.splits.count);
+    u.defaultFilter = static_cast<int>(settings.directional.filter);
+    u.cascadeBlend = static_cast<int>(settings.directional.cascadeBlend);
+    u.shadowedLightCount = static_cast<int>(plan.lights.size());
+    u.cascadeProjection = static_cast<int>(settings.directional.projection);
     for (std::size_t i = 0; i < plan.cascadeData.size(); ++i) {
         u.cullingSpheres[i] = plan.cascadeData[i].selectionSphere;
         u.cascadeData[i] = plan.cascadeData[i].data;

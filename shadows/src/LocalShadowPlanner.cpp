@@ -34,8 +34,9 @@ struct Reservations {
     std::uint32_t tileCount = 0;
 };
 
-// Why a light with shadows would shadow nothing the camera sees (the first design document's
-// GetShadowCasterBounds check, and its shadow distance), or nullopt.
+// Why a light with shadows would shadow nothing the camera sees (Unity's
+// CullingResults.GetShadowCasterBounds check, as Catlike Coding's "Directional Shadows" uses it, and the shadow
+// distance), or nullopt.
 struct LightReach {
     glm::vec3 position;
     float range;
@@ -263,7 +264,8 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
 
     const auto atlasSize = static_cast<float>(local.atlasSize);
     plan.uniforms.atlasSize = {atlasSize, 1.0f / atlasSize, 0.0f, 0.0f};
-    plan.uniforms.config = {static_cast<int>(local.filter), static_cast<int>(local.pointMode), 0, 0};
+    plan.uniforms.defaultFilter = static_cast<int>(local.filter);
+    plan.uniforms.pointMode = static_cast<int>(local.pointMode);
     plan.uniforms.soft = softShadowUniforms(settings.soft);
     return plan;
 }

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/ShaderInterface.hpp"
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_access.hpp>
@@ -11,8 +12,12 @@
 namespace penumbra::shadows {
 namespace {
 
-constexpr std::uint32_t kDrawBinding = 0;
-constexpr std::uint32_t kBaseColorBinding = 1;
+rhi::ShaderSource casterShader(std::string_view fileName)
+{
+    rhi::ShaderSource source = shaders::load(fileName);
+    source.includes.push_back({"caster_constants.glsl", casterConstantsGlsl()});
+    return source;
+}
 
 ShadowCasterUniforms casterUniforms(const ShadowViewDraw& view, const ShadowCaster& caster, float pancakeInShader)
 {
@@ -47,9 +52,9 @@ rhi::Rect scissorOf(const rhi::Viewport& v)
 
 ShadowCasterDraws::ShadowCasterDraws(rhi::Device& device, const CasterVertexFormat& vertexFormat)
     : device_(device), vertexFormat_(vertexFormat),
-      vertex_(device.createShader(shaders::load("shadow_caster.vert"))),
-      opaqueFragment_(device.createShader(shaders::load("shadow_caster_opaque.frag"))),
-      alphaFragment_(device.createShader(shaders::load("shadow_caster_alpha.frag"))),
+      vertex_(device.createShader(casterShader("shadow_caster.vert"))),
+      opaqueFragment_(device.createShader(casterShader("shadow_caster_opaque.frag"))),
+      alphaFragment_(device.createShader(casterShader("shadow_caster_alpha.frag"))),
       uniforms_(device, "shadow caster draws")
 {
 }
@@ -106,13 +111,13 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
             commands.setDepthBias(bias);
             bound = pipeline;
         }
-        rhi::bindUniform(commands, kDrawBinding, uniforms_.push(casterUniforms(view, caster, pancakeInShader)));
+        rhi::bindUniform(commands, kCasterDrawBinding, uniforms_.push(casterUniforms(view, caster, pancakeInShader)));
         if (caster.mode != ShadowCasterMode::Opaque) {
             if (!caster.baseColorMap || !caster.baseColorSampler)
                 throw rhi::Error(fmt::format("shadow caster {}: clip and dither casters need a base colour texture "
                                              "and sampler",
                                              index));
-            commands.bindTexture(kBaseColorBinding, *caster.baseColorMap, *caster.baseColorSampler);
+            commands.bindTexture(kCasterBaseColorBinding, *caster.baseColorMap, *caster.baseColorSampler);
         }
         commands.bindVertexBuffer(0, *caster.vertices);
         commands.bindIndexBuffer(*caster.indices, rhi::IndexType::UInt32);

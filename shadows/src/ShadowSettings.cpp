@@ -4,33 +4,57 @@
 #include "penumbra/rhi/Error.hpp"
 
 #include <array>
+#include <string>
 #include <fmt/format.h>
 #include <utility>
 
 namespace penumbra::shadows {
 
-const std::array<ShadowFilterName, kShadowFilterCount>& shadowFilterNames()
+namespace {
+
+// The Poisson filters' size is their centre tap's bilinear 2.
+constexpr std::array<ShadowFilterInfo, kShadowFilterCount> kFilters{{
+    {ShadowFilter::PCF2x2, "pcf2x2", "hard", 2, ShadowFilterFamily::Bilinear},
+    {ShadowFilter::PCF3x3, "pcf3x3", "pcf3", 3, ShadowFilterFamily::Tent},
+    {ShadowFilter::PCF5x5, "pcf5x5", "pcf5", 5, ShadowFilterFamily::Tent},
+    {ShadowFilter::PCF7x7, "pcf7x7", "pcf7", 7, ShadowFilterFamily::Tent},
+    {ShadowFilter::Poisson, "poisson", "poisson", 2, ShadowFilterFamily::PoissonDisk},
+    {ShadowFilter::PCSS, "pcss", "pcss", 2, ShadowFilterFamily::PoissonDisk},
+}};
+
+// Each filter at its value's index, the families in order: the shaders tell them apart by comparing a filter with
+// the first of a family (PENUMBRA_FILTER_FIRST_POISSON_DISK).
+constexpr bool listedInOrder()
 {
-    static constexpr std::array<ShadowFilterName, kShadowFilterCount> names{{
-        {ShadowFilter::PCF2x2, "pcf2x2", "hard"},
-        {ShadowFilter::PCF3x3, "pcf3x3", "pcf3"},
-        {ShadowFilter::PCF5x5, "pcf5x5", "pcf5"},
-        {ShadowFilter::PCF7x7, "pcf7x7", "pcf7"},
-        {ShadowFilter::Poisson, "poisson", "poisson"},
-        {ShadowFilter::PCSS, "pcss", "pcss"},
-    }};
-    return names;
+    for (std::size_t i = 0; i < kFilters.size(); ++i)
+        if (static_cast<std::size_t>(kFilters[i].filter) != i || (i > 0 && kFilters[i - 1].family > kFilters[i].family))
+            return false;
+    return true;
 }
+static_assert(listedInOrder());
+
+} // namespace
+
+const std::array<ShadowFilterInfo, kShadowFilterCount>& shadowFilters() { return kFilters; }
 
 std::optional<ShadowFilter> filterFromCommandName(std::string_view name)
 {
-    for (const ShadowFilterName& entry : shadowFilterNames())
+    for (const ShadowFilterInfo& entry : shadowFilters())
         if (entry.command == name)
             return entry.filter;
     return std::nullopt;
 }
 
-std::string_view filterCommandNames() { return "hard, pcf3, pcf5, pcf7, poisson, pcss"; }
+std::string_view filterCommandNames()
+{
+    static const std::string names = [] {
+        std::string text;
+        for (const ShadowFilterInfo& entry : shadowFilters())
+            text += fmt::format("{}{}", text.empty() ? "" : ", ", entry.command);
+        return text;
+    }();
+    return names;
+}
 
 const std::array<CascadeProjectionName, kCascadeProjectionCount>& cascadeProjectionNames()
 {
@@ -51,23 +75,21 @@ std::optional<CascadeProjection> projectionFromName(std::string_view name)
 
 std::string_view projectionNames() { return "stable, close"; }
 
-bool isSoftFilter(ShadowFilter filter) { return filter == ShadowFilter::Poisson || filter == ShadowFilter::PCSS; }
+ShadowFilterFamily filterFamily(ShadowFilter filter) { return shadowFilters()[static_cast<std::size_t>(filter)].family; }
 
-int filterSize(ShadowFilter filter)
-{
-    constexpr std::array<int, kShadowFilterCount> sizes{2, 3, 5, 7, 2, 2};
-    return sizes[static_cast<std::size_t>(filter)];
-}
+bool isSoftFilter(ShadowFilter filter) { return filterFamily(filter) == ShadowFilterFamily::PoissonDisk; }
+
+int filterSize(ShadowFilter filter) { return shadowFilters()[static_cast<std::size_t>(filter)].size; }
 
 float normalBiasFilterFactor(ShadowFilter filter)
 {
-    return isSoftFilter(filter) ? 1.0f : static_cast<float>(static_cast<int>(filter) + 1);
+    return isSoftFilter(filter) ? 1.0f : static_cast<float>((filterSize(filter) + 1) / 2);
 }
 
 int filterTapCount(ShadowFilter filter)
 {
     // An N-wide tent touches N + 1 texels per axis (N odd), read in pairs by bilinear taps.
-    const int perAxis = filter == ShadowFilter::PCF2x2 || isSoftFilter(filter) ? 1 : (filterSize(filter) + 1) / 2;
+    const int perAxis = filterFamily(filter) == ShadowFilterFamily::Tent ? (filterSize(filter) + 1) / 2 : 1;
     return perAxis * perAxis;
 }
 
@@ -93,11 +115,18 @@ SettingsProblem outOfRange(std::string field, std::string value)
 
 std::string_view allowedValues(std::string_view field)
 {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 27> table{{
+    static const std::string filterNames = [] {
+        std::string text;
+        for (const ShadowFilterInfo& entry : shadowFilters())
+            text += fmt::format("{}{}", text.empty() ? "" : ", ", entry.json);
+        return text;
+    }();
+    if (field == "directional.filter" || field == "local.filter")
+        return filterNames;
+    static constexpr std::array<std::pair<std::string_view, std::string_view>, 25> table{{
         {"maxDistance", "> 0.001"},
         {"distanceFade", "0.001..1"},
         {"directional.atlasSize", "powers of two 256..8192"},
-        {"directional.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss"},
         {"directional.cascadeCount", "1..4"},
         {"directional.cascadeRatios", "3 numbers in 0..1, strictly increasing"},
         {"directional.cascadeFade", "0.001..1"},
@@ -105,7 +134,6 @@ std::string_view allowedValues(std::string_view field)
         {"directional.projection", "stable, close"},
         {"directional.atlasFormat", "d16, d24s8, d32f"},
         {"local.atlasSize", "powers of two 256..8192"},
-        {"local.filter", "pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss"},
         {"local.atlasFormat", "d16, d24s8, d32f"},
         {"local.pointMode", "atlas, cubemap"},
         {"local.cubeMapSize", "powers of two 64..4096"},

@@ -29,7 +29,7 @@ std::array<EnumName<ShadowFilter>, kShadowFilterCount> jsonFilterNames()
 {
     std::array<EnumName<ShadowFilter>, kShadowFilterCount> names{};
     for (std::size_t i = 0; i < names.size(); ++i)
-        names[i] = {shadowFilterNames()[i].filter, shadowFilterNames()[i].json};
+        names[i] = {shadowFilters()[i].filter, shadowFilters()[i].json};
     return names;
 }
 const std::array<EnumName<ShadowFilter>, kShadowFilterCount> filterNames = jsonFilterNames();

@@ -75,8 +75,8 @@ TEST(CloseFit, TheCascadeIsChosenByViewDepth)
     const ShadowCamera camera = sceneCamera();
     const DirectionalShadowPlan close = plan(CascadeProjection::Close, camera, {-0.4f, -1.0f, 0.5f});
     const DirectionalShadowPlan stable = plan(CascadeProjection::Stable, camera, {-0.4f, -1.0f, 0.5f});
-    EXPECT_EQ(close.uniforms.projection.x, static_cast<int>(CascadeProjection::Close));
-    EXPECT_EQ(stable.uniforms.projection.x, static_cast<int>(CascadeProjection::Stable));
+    EXPECT_EQ(close.uniforms.cascadeProjection, static_cast<int>(CascadeProjection::Close));
+    EXPECT_EQ(stable.uniforms.cascadeProjection, static_cast<int>(CascadeProjection::Stable));
     const glm::vec3 right = glm::cross(camera.forward, camera.up);
     const float tanY = std::tan(0.5f * camera.fovY);
     int stableDiffers = 0;

@@ -70,7 +70,10 @@ TEST(DirectionalShadowPlanner, TilesViewportsAndUniformsAgree)
     const std::vector<DirectionalShadowLightInput> lights = sixLights();
     const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, {});
     const DirectionalShadowUniforms& u = plan.uniforms;
-    EXPECT_EQ(u.config, glm::ivec4(4, 2, 1, 4));
+    EXPECT_EQ(u.cascadeCount, 4);
+    EXPECT_EQ(u.defaultFilter, 2);
+    EXPECT_EQ(u.cascadeBlend, 1);
+    EXPECT_EQ(u.shadowedLightCount, 4);
     EXPECT_EQ(u.atlasSize, glm::vec4(1024.0f, 1.0f / 1024.0f, 256.0f, 1.0f / 256.0f));
     // w: the light's filter, the atlas's PCF5x5 for a light without its own.
     EXPECT_EQ(u.lightShadowData[1], glm::vec4(1.0f, 0.5f, 4.0f, 2.0f));
@@ -154,7 +157,7 @@ TEST(DirectionalShadowPlanner, NoShadowDistanceBeyondTheNearPlane)
     EXPECT_TRUE(plan.lights.empty());
     ASSERT_EQ(plan.report.size(), 3u);
     EXPECT_FALSE(plan.report[0].lightIndex.has_value());
-    EXPECT_EQ(plan.uniforms.config.w, 0);
+    EXPECT_EQ(plan.uniforms.shadowedLightCount, 0);
 }
 
 TEST(DirectionalShadowPlanner, InvalidSettingsThrow)

@@ -46,7 +46,7 @@ bool inView(const scene::Camera& camera, glm::vec3 p)
 // no pixel shades, have no cascade there.
 std::optional<shadows::CascadeSelection> selectCascade(const ShadowFrame& frame, glm::vec3 p)
 {
-    if (frame.plan.uniforms.projection.x == int(shadows::CascadeProjection::Close) && !inView(frame.camera, p))
+    if (frame.plan.uniforms.cascadeProjection == int(shadows::CascadeProjection::Close) && !inView(frame.camera, p))
         return std::nullopt;
     const float viewDepth = glm::dot(p - frame.camera.position, frame.camera.forward);
     const shadows::CascadeSelection s = shadows::selectCascade(frame.plan.uniforms, p, viewDepth);

@@ -251,7 +251,7 @@ TEST_F(StaticShadowsTest, StaticMapsTakeTheLightsSoftFilter)
         const SoftShadowSummary r = softSummary(fromStatic, realtime);
         const SoftShadowSummary st = softSummary(realtime, fromStatic);
         const SoftShadowSummary h = softSummary(realtime, hard);
-        const std::string name(shadows::shadowFilterNames()[std::size_t(c.soft)].command);
+        const std::string name(shadows::shadowFilters()[std::size_t(c.soft)].command);
         std::printf("[ static   ] %s %s, %s: penumbra pixels realtime %zu, static %zu, hard static %zu; shadow %.1f, "
                     "%.1f, %.1f\n",
                     configuration().c_str(), scene::lightKindName(c.light.kind), name.c_str(), r.penumbra, st.penumbra,

@@ -24,11 +24,10 @@ std::string samplesSuffix(std::uint32_t samples)
 
 bool isTent(int filter)
 {
-    return filter >= static_cast<int>(shadows::ShadowFilter::PCF3x3) &&
-           filter <= static_cast<int>(shadows::ShadowFilter::PCF7x7);
+    return shadows::filterFamily(static_cast<shadows::ShadowFilter>(filter)) == shadows::ShadowFilterFamily::Tent;
 }
 
-bool isSoft(int filter) { return filter >= static_cast<int>(shadows::ShadowFilter::Poisson); }
+bool isSoft(int filter) { return shadows::isSoftFilter(static_cast<shadows::ShadowFilter>(filter)); }
 
 } // namespace
 
@@ -89,7 +88,7 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
                                       const shadows::LocalShadowUniforms& local,
                                       const shadows::StaticShadowUniforms& staticMaps)
 {
-    std::vector<int> filters{directional.config.y, local.config.x};
+    std::vector<int> filters{directional.defaultFilter, local.defaultFilter};
     for (const glm::vec4& light : directional.lightShadowData)
         filters.push_back(static_cast<int>(light.w));
     for (const glm::vec4& tile : local.tileData)
@@ -106,11 +105,11 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
     for (const glm::vec4& tile : staticMaps.localData)
         filters.push_back(static_cast<int>(tile.y));
     LitShaderFeatures features;
-    features.localLights = frame.config.z > 0;
+    features.localLights = frame.localLightCount > 0;
     features.staticShadows = staticShadows;
     features.tentFilters = std::any_of(filters.begin(), filters.end(), isTent);
     features.softFilters = std::any_of(filters.begin(), filters.end(), isSoft);
-    features.shadowCubes = local.config.y == static_cast<int>(shadows::PointShadowMode::CubeMap);
+    features.shadowCubes = local.pointMode == static_cast<int>(shadows::PointShadowMode::CubeMap);
     return features;
 }
 

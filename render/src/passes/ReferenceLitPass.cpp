@@ -46,11 +46,11 @@ LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& fra
 ReferenceSplitUniforms splitUniforms(const shadows::DirectionalShadowPlan& plan)
 {
     ReferenceSplitUniforms u;
-    u.config = {static_cast<int>(plan.splits.count), -1, 0, 0};
+    u.cascadeCount = static_cast<int>(plan.splits.count);
     for (std::uint32_t i = 0; i < plan.splits.count && i < 4; ++i)
         u.farDepths[static_cast<int>(i)] = plan.splits.farOf(i);
     if (!plan.shadowSlots.empty() && plan.shadowSlots[0] >= 0)
-        u.config.y = static_cast<int>(plan.lights[static_cast<std::size_t>(plan.shadowSlots[0])].firstTile);
+        u.firstTile = static_cast<int>(plan.lights[static_cast<std::size_t>(plan.shadowSlots[0])].firstTile);
     return u;
 }
 

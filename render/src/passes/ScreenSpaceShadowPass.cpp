@@ -21,9 +21,9 @@ rhi::UniformLayout collectionLayout()
                 PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, clipToWorld),
                 PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, cameraPosition),
                 PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, cameraForward),
+                PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, lightCount),
                 PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, lightDirection),
                 PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, targetSize),
-                PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, config),
             }};
 }
 
@@ -65,10 +65,10 @@ ScreenSpaceShadowUniforms screenSpaceShadowUniforms(const LitFrameUniforms& fram
     u.clipToWorld = glm::mat4(glm::inverse(glm::dmat4(frame.viewProjection)));
     u.cameraPosition = frame.cameraPosition;
     u.cameraForward = frame.cameraForward;
-    const int lights = std::min(frame.config.x, static_cast<int>(maxCollectedDirectionalLights));
+    const int lights = std::min(frame.directionalLightCount, static_cast<int>(maxCollectedDirectionalLights));
     std::copy_n(frame.lightDirection.begin(), lights, u.lightDirection.begin());
     u.targetSize = glm::vec4(static_cast<float>(width), static_cast<float>(height), 0.0f, 0.0f);
-    u.config.x = lights;
+    u.lightCount = lights;
     return u;
 }
 

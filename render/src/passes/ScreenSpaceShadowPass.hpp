@@ -27,9 +27,10 @@ struct ScreenSpaceShadowUniforms {
     glm::mat4 clipToWorld{1.0f};
     glm::vec4 cameraPosition{0.0f};
     glm::vec4 cameraForward{0.0f};
-    std::array<glm::vec4, maxCollectedDirectionalLights> lightDirection{}; // as LitFrameUniforms::lightDirection
+    std::int32_t lightCount = 0; // lights collected
+    // as LitFrameUniforms::lightDirection; std140 aligns a vec4 array to 16 bytes
+    alignas(16) std::array<glm::vec4, maxCollectedDirectionalLights> lightDirection{};
     glm::vec4 targetSize{0.0f};
-    glm::ivec4 config{0}; // lights collected
 };
 static_assert(sizeof(ScreenSpaceShadowUniforms) == 192);
 

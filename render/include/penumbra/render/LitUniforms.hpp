@@ -36,9 +36,12 @@ struct LitFrameUniforms {
     std::array<glm::vec4, maxLitDirectionalLights> lightColor{};
     std::array<glm::vec4, maxLitDirectionalLights> lightDirection{}; // w = shadow slot or -1
     glm::vec4 ambient{0.0f};
-    glm::ivec4 config{0}; // directional light count, LitView, local light count, visibility view's light
+    std::int32_t directionalLightCount = 0;
+    std::int32_t litView = 0;         // LitView
+    std::int32_t localLightCount = 0;
+    std::int32_t visibilityLight = 0; // LitView::Visibility's light: directional lights first, then spot and point
     std::array<glm::vec4, maxLitLocalLights> localPosition{};  // xyz, w = 1 / range^2
-    std::array<glm::vec4, maxLitLocalLights> localColor{};     // rgb x intensity, w = 1 point, 0 spot
+    std::array<glm::vec4, maxLitLocalLights> localColor{};     // rgb x intensity, w = scene::LightKind
     std::array<glm::vec4, maxLitLocalLights> localAxis{};      // spot cone axis
     std::array<glm::vec4, maxLitLocalLights> localShadow{};    // cone scale, offset, first tile or -1, strength
     glm::vec4 ambientGround{0.0f}; // linear rgb from below (the hemisphere's ground; = ambient without one)
@@ -53,7 +56,10 @@ struct LitObjectUniforms {
     glm::mat4 normalMatrix{1.0f};
     glm::vec4 baseColor{1.0f};
     glm::vec4 surface{0.0f};  // metallic, roughness, alpha cutoff, caster mode (material.glsl)
-    glm::ivec4 flags{0};      // receives shadows, textures present (bit per scene::TextureSlot), unlit, blended
+    std::int32_t receivesShadows = 0;
+    std::int32_t materialMaps = 0; // textures present, bit per scene::TextureSlot
+    std::int32_t unlit = 0;
+    std::int32_t blended = 0;
     glm::vec4 emissive{0.0f}; // linear rgb, w = occlusion strength
     glm::vec4 normal{0.0f};   // normal texture scale, sign of det(model) (a mirroring transform flips bitangents)
     // Per scene::TextureSlot, rows 0 and 1 of its uv transform, row 0's w its uv set (shadows::uvTransformRows).
@@ -72,7 +78,10 @@ inline rhi::UniformLayout litFrameLayout()
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, lightColor),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, lightDirection),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, ambient),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, config),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, directionalLightCount),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, litView),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localLightCount),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, visibilityLight),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localPosition),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localColor),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localAxis),
@@ -89,7 +98,10 @@ inline rhi::UniformLayout litObjectLayout()
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, normalMatrix),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, baseColor),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, surface),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, flags),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, receivesShadows),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, materialMaps),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, unlit),
+                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, blended),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, emissive),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, normal),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, uvTransforms),

@@ -14,7 +14,8 @@
 
 namespace penumbra::scene {
 
-// How a material's surface enters the shadow maps (the seeds' _Shadows keyword enum).
+// How a material's surface enters the shadow maps: the shadow modes of Catlike Coding's "Directional Shadows"
+// tutorial, section "Transparency".
 enum class CasterMode : std::uint8_t {
     On,     // solid caster
     Clip,   // alpha-tested: texels with materialAlpha < alphaCutoff cast nothing

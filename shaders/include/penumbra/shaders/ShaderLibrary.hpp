@@ -2,6 +2,8 @@
 
 #include "penumbra/rhi/Shader.hpp"
 
+#include <cstdint>
+#include <initializer_list>
 #include <string_view>
 
 namespace penumbra::shaders {
@@ -11,5 +13,14 @@ std::string_view source(std::string_view fileName);
 
 // A ShaderSource for a file, its stage taken from the extension (.vert, .frag); the .glsl files are its includes.
 rhi::ShaderSource load(std::string_view fileName);
+
+// A number the C++ caller shares with a shader (a binding, say), written once in C++: `#define PENUMBRA_<name> value`.
+struct ShaderConstant {
+    std::string_view name;
+    std::int64_t value;
+};
+
+// load(fileName) with the include "constants.glsl" of `constants`, which the file includes.
+rhi::ShaderSource load(std::string_view fileName, std::initializer_list<ShaderConstant> constants);
 
 } // namespace penumbra::shaders

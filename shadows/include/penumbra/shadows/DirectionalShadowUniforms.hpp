@@ -24,8 +24,11 @@ inline constexpr std::uint32_t maxCascades = 4;
 //       vec4 distanceFade;          // 1 / maxDistance, 1 / distanceFade, 1 / (1 - (1 - cascadeFade)^2),
 //                                   // 1 / cascadeFade
 //       vec4 atlasSize;             // size, 1 / size, tile size, 1 / tile size (texels)
-//       ivec4 config;               // cascadeCount, filter (ShadowFilter), blend (0..2: hard, soft, dither),
-//                                   // shadowed light count
+//       int cascadeCount;
+//       int defaultFilter;          // ShadowFilter of a light without its own
+//       int cascadeBlend;           // CascadeBlend (PENUMBRA_BLEND_*)
+//       int shadowedLightCount;
+//       int cascadeProjection;      // CascadeProjection (PENUMBRA_PROJECTION_*)
 //       vec4 lightShadowData[4];    // per shadow slot: strength, normalBias, first tile, the light's filter
 //       vec4 tileSoft[16];          // per tile: x, y: add to a tile texel for the light-space texel (the disk's
 //                                   // rotation); z, w: the depth row (orthographicDistanceFromNear: the distance
@@ -34,7 +37,6 @@ inline constexpr std::uint32_t maxCascades = 4;
 //                                   // light's filter over the atlas's, 0, 0
 //       vec4 softScales;            // SoftShadowUniforms
 //       vec4 softCounts;
-//       ivec4 projection;           // x: the cascades' CascadeProjection (PENUMBRA_PROJECTION_*), y, z, w: 0
 //   };
 struct DirectionalShadowUniforms {
     std::array<glm::mat4, maxShadowedDirectionalLights * maxCascades> worldToAtlas{};
@@ -42,12 +44,15 @@ struct DirectionalShadowUniforms {
     std::array<glm::vec4, maxCascades> cascadeData{};
     glm::vec4 distanceFade{0.0f};
     glm::vec4 atlasSize{0.0f};
-    glm::ivec4 config{0};
-    std::array<glm::vec4, maxShadowedDirectionalLights> lightShadowData{};
+    std::int32_t cascadeCount = 0;
+    std::int32_t defaultFilter = 0;
+    std::int32_t cascadeBlend = 0;
+    std::int32_t shadowedLightCount = 0;
+    std::int32_t cascadeProjection = 0;
+    alignas(16) std::array<glm::vec4, maxShadowedDirectionalLights> lightShadowData{}; // std140: vec4 arrays align to 16
     std::array<glm::vec4, maxShadowedDirectionalLights * maxCascades> tileSoft{};
     std::array<glm::vec4, maxShadowedDirectionalLights> lightSoft{};
     SoftShadowUniforms soft;
-    glm::ivec4 projection{0};
 };
 
 static_assert(sizeof(glm::mat4) == 64 && sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16);
@@ -56,11 +61,10 @@ static_assert(offsetof(DirectionalShadowUniforms, cullingSpheres) == 1024);
 static_assert(offsetof(DirectionalShadowUniforms, cascadeData) == 1088);
 static_assert(offsetof(DirectionalShadowUniforms, distanceFade) == 1152);
 static_assert(offsetof(DirectionalShadowUniforms, atlasSize) == 1168);
-static_assert(offsetof(DirectionalShadowUniforms, config) == 1184);
-static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1200);
-static_assert(offsetof(DirectionalShadowUniforms, tileSoft) == 1264);
-static_assert(offsetof(DirectionalShadowUniforms, soft) == 1584);
-static_assert(offsetof(DirectionalShadowUniforms, projection) == 1616);
+static_assert(offsetof(DirectionalShadowUniforms, cascadeCount) == 1184);
+static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1216);
+static_assert(offsetof(DirectionalShadowUniforms, tileSoft) == 1280);
+static_assert(offsetof(DirectionalShadowUniforms, soft) == 1600);
 static_assert(sizeof(DirectionalShadowUniforms) == 1632);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
@@ -73,14 +77,17 @@ inline rhi::UniformLayout directionalShadowLayout()
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeData),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, distanceFade),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, atlasSize),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, config),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeCount),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, defaultFilter),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeBlend),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, shadowedLightCount),
+                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeProjection),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightShadowData),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, tileSoft),
                 PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightSoft),
             }};
     for (rhi::UniformMember& member : softShadowMembers(std::uint32_t(offsetof(DirectionalShadowUniforms, soft))))
         layout.members.push_back(std::move(member));
-    layout.members.push_back(PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, projection));
     return layout;
 }
 

@@ -8,6 +8,7 @@ namespace penumbra::shadows {
 // size of the Poisson disks' uniform block (PoissonDiskUniforms), so that every number is written once, in C++.
 //   PENUMBRA_FILTER_<NAME>          ShadowFilter values (PCF2X2 .. PCSS)
 //   PENUMBRA_FILTER_SIZES[n]        filterSize
+//   PENUMBRA_FILTER_FIRST_POISSON_DISK  the first filter of ShadowFilterFamily::PoissonDisk
 //   PENUMBRA_POISSON_DISK_POINTS    kPoissonDiskPoints
 std::string filterConstantsGlsl();
 

@@ -24,7 +24,8 @@ inline constexpr std::uint32_t maxShadowCubes = 4;
 //       vec4 cubeData[4];      // per cube: x, y: window depth = (x * -z + y) / z at major-axis distance z,
 //                              // z = normal bias per unit distance, w = 1 / face size (texels)
 //       vec4 atlasSize;        // size, 1 / size, 0, 0
-//       ivec4 config;          // filter (ShadowFilter), point mode (0 atlas, 1 cube map), 0, 0
+//       int defaultFilter;     // ShadowFilter of a light without its own
+//       int pointMode;         // PointShadowMode (PENUMBRA_POINT_*)
 //       vec4 tileSoft[16];     // per tile: (t22, t32) the depth row (perspectiveDistance), the light's radius in
 //                              // texels at unit distance (lightTexels), the near plane
 //       vec4 cubeSoft[4];      // per cube: the light's filter, lightTexels, the near plane, 0
@@ -37,8 +38,9 @@ struct LocalShadowUniforms {
     std::array<glm::vec4, maxLocalShadowTiles> tileData{};
     std::array<glm::vec4, maxShadowCubes> cubeData{};
     glm::vec4 atlasSize{0.0f};
-    glm::ivec4 config{0};
-    std::array<glm::vec4, maxLocalShadowTiles> tileSoft{};
+    std::int32_t defaultFilter = 0;
+    std::int32_t pointMode = 0;
+    alignas(16) std::array<glm::vec4, maxLocalShadowTiles> tileSoft{}; // std140: vec4 arrays align to 16
     std::array<glm::vec4, maxShadowCubes> cubeSoft{};
     SoftShadowUniforms soft;
 };
@@ -47,7 +49,7 @@ static_assert(offsetof(LocalShadowUniforms, tileBounds) == 1024);
 static_assert(offsetof(LocalShadowUniforms, tileData) == 1280);
 static_assert(offsetof(LocalShadowUniforms, cubeData) == 1536);
 static_assert(offsetof(LocalShadowUniforms, atlasSize) == 1600);
-static_assert(offsetof(LocalShadowUniforms, config) == 1616);
+static_assert(offsetof(LocalShadowUniforms, defaultFilter) == 1616);
 static_assert(offsetof(LocalShadowUniforms, tileSoft) == 1632);
 static_assert(offsetof(LocalShadowUniforms, soft) == 1952);
 static_assert(sizeof(LocalShadowUniforms) == 1984);
@@ -62,7 +64,8 @@ inline rhi::UniformLayout localShadowLayout()
                 PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, tileData),
                 PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, cubeData),
                 PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, atlasSize),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, config),
+                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, defaultFilter),
+                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, pointMode),
                 PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, tileSoft),
                 PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, cubeSoft),
             }};

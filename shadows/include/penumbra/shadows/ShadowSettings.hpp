@@ -17,18 +17,26 @@ namespace penumbra::shadows {
 enum class ShadowFilter { PCF2x2, PCF3x3, PCF5x5, PCF7x7, Poisson, PCSS };
 inline constexpr int kShadowFilterCount = 6;
 
-// The filter's names: in the settings JSON ("pcf2x2".."pcf7x7", "poisson", "pcss") and on the command line
-// ("hard", "pcf3", "pcf5", "pcf7", "poisson", "pcss").
-struct ShadowFilterName {
+// How the lit shader filters the atlas: one bilinear comparison, a tent of bilinear comparisons, or a Poisson disk
+// (with PCSS's blocker search or without). The enum lists the families in this order.
+enum class ShadowFilterFamily { Bilinear, Tent, PoissonDisk };
+
+// Everything about one filter, in one table (shadowFilters()): its names in the settings JSON ("pcf2x2".."pcf7x7",
+// "poisson", "pcss") and on the command line ("hard", "pcf3", "pcf5", "pcf7", "poisson", "pcss"), its kernel width
+// in texels and its family. The names, the validation messages, the viewer's list and the shader constants follow it.
+struct ShadowFilterInfo {
     ShadowFilter filter;
     std::string_view json;
     std::string_view command;
+    int size;
+    ShadowFilterFamily family;
 };
-const std::array<ShadowFilterName, kShadowFilterCount>& shadowFilterNames();
+const std::array<ShadowFilterInfo, kShadowFilterCount>& shadowFilters();
 std::optional<ShadowFilter> filterFromCommandName(std::string_view name);
 // "hard, pcf3, pcf5, pcf7, poisson, pcss".
 std::string_view filterCommandNames();
 
+ShadowFilterFamily filterFamily(ShadowFilter filter);
 // Whether the filter is one of the Poisson-disk filters (Poisson, PCSS), which take SoftShadowSettings.
 bool isSoftFilter(ShadowFilter filter);
 
@@ -69,7 +77,7 @@ int filterTapCount(ShadowFilter filter);
 // The Poisson disk sizes offered for blocker searches and filters.
 inline constexpr std::uint32_t kPoissonSampleCounts[] = {16, 32, 64};
 
-// Seed 003's PCSS controls (after NVIDIA's "Integrating Realistic Soft Shadows into Your Game Engine", 2008):
+// The PCSS controls (after NVIDIA's "Integrating Realistic Soft Shadows into Your Game Engine", 2008):
 // its s_search and s_penumbra as scales of the light-size terms, the Poisson sample counts and the penumbra's
 // clamp. Shared by every light whose filter is Poisson or PCSS.
 struct SoftShadowSettings {
