@@ -80,13 +80,37 @@ std::vector<glm::vec2> withStratifiedRadii(std::vector<glm::vec2> points)
     return points;
 }
 
+glm::vec2 centroid(const std::vector<glm::vec2>& points)
+{
+    glm::vec2 sum{0.0f};
+    for (const glm::vec2& p : points)
+        sum += p;
+    return sum / static_cast<float>(points.size());
+}
+
+// The disk turns by a random angle per receiver, so a disk whose points' mean lies off the centre (best candidate's
+// 16 points: 0.11 of the radius) shifts its estimate by that much of the radius in a random direction: noise at
+// every edge. Moving the points by minus their mean and stratifying the radii again converges to a centred,
+// area-uniform disk; 32 rounds leave a mean under 1e-5 for every count.
+std::vector<glm::vec2> centredUniformDisk(std::vector<glm::vec2> points)
+{
+    points = withStratifiedRadii(std::move(points));
+    for (int round = 0; round < 32; ++round) {
+        const glm::vec2 mean = centroid(points);
+        for (glm::vec2& p : points)
+            p -= mean;
+        points = withStratifiedRadii(std::move(points));
+    }
+    return points;
+}
+
 } // namespace
 
 std::span<const glm::vec2> poissonDisk(std::uint32_t count)
 {
-    static const std::array<std::vector<glm::vec2>, 3> disks{withStratifiedRadii(bestCandidateDisk(16)),
-                                                             withStratifiedRadii(bestCandidateDisk(32)),
-                                                             withStratifiedRadii(bestCandidateDisk(64))};
+    static const std::array<std::vector<glm::vec2>, 3> disks{centredUniformDisk(bestCandidateDisk(16)),
+                                                             centredUniformDisk(bestCandidateDisk(32)),
+                                                             centredUniformDisk(bestCandidateDisk(64))};
     for (const std::vector<glm::vec2>& disk : disks)
         if (disk.size() == count)
             return disk;
