@@ -60,7 +60,7 @@ std::vector<glm::vec2> bestCandidateDisk(std::uint32_t count)
     return points;
 }
 
-// Best candidate leaves the points near the disk's rim too many: nothing lies beyond the rim to push them back in,
+// Best candidate puts too many points near the disk's rim: nothing lies beyond the rim to push them back in,
 // so the 16-point disk's mean squared radius is 0.68 where a disk uniform over its area has 0.5, and a filter over it
 // blurs as a disk 17% wider than its radius. Giving the k-th nearest of n points (k from 0) the radius sqrt((k + 0.5)
 // / n), the radii of n strata of equal area, keeps the directions and the order of the radii (so the spacing) and
@@ -91,7 +91,7 @@ glm::vec2 centroid(const std::vector<glm::vec2>& points)
 // The disk turns by a random angle per receiver, so a disk whose points' mean lies off the centre (best candidate's
 // 16 points: 0.11 of the radius) shifts its estimate by that much of the radius in a random direction: noise at
 // every edge. Moving the points by minus their mean and stratifying the radii again converges to a centred,
-// area-uniform disk; 32 rounds leave a mean under 1e-5 for every count.
+// area-uniform disk; 32 rounds leave a mean under 1e-4 of the radius for every count.
 std::vector<glm::vec2> centredUniformDisk(std::vector<glm::vec2> points)
 {
     points = withStratifiedRadii(std::move(points));
