@@ -26,8 +26,10 @@ using shadows::ShadowFilter;
 
 constexpr std::uint32_t kSize = 160;
 // PCSS's mean absolute error against the area light over the best fixed filter's, at most (see
-// checkAgainstTheAreaLight).
-constexpr double kPcssOverBestFixed = 0.85;
+// checkAgainstTheAreaLight): the 0.5 for spot and point lights; 0.6 for the sun, measured 0.53 on every
+// configuration at 16 + 16 samples, where the 16 filter taps' noise and the fence's stacked slats (one depth layer
+// holds the slat nearest the light, not the one that casts the umbra) make up most of what is left.
+double pcssOverBestFixed(LightKind kind) { return kind == LightKind::Directional ? 0.6 : 0.5; }
 
 // The contact scene lit by one light of `kind`: its sun, or a spot or point light of radius 0.15 up and to the
 // left of the pole, so every shadow still runs along +x from the pole's foot.
@@ -140,9 +142,8 @@ AreaLightFigures checkAgainstTheAreaLight(rhi::Device& device, LightKind kind)
         figures.bestFixed = std::min(figures.bestFixed, e);
     }
     EXPECT_GT(pcss.penumbraPixels, 200u);
-    // The target is 0.5; measured 0.77 (directional), 0.41 (spot), 0.49 (point) on vulkan at 16 + 16 samples,
-    // where the Poisson disk's noise dominates the directional light's wide penumbrae (64 + 64 samples: 0.6).
-    EXPECT_LE(figures.pcss, kPcssOverBestFixed * figures.bestFixed) << "pcss " << figures.pcss << "; " << fixed;
+    // Measured 0.53 (directional), 0.39 (spot), 0.35 (point) on every configuration at 16 + 16 samples.
+    EXPECT_LE(figures.pcss, pcssOverBestFixed(kind) * figures.bestFixed) << "pcss " << figures.pcss << "; " << fixed;
     std::printf("%s: %zu penumbra pixels, pcss %.4f (%.2f of the best fixed filter); %s\n", scene::lightKindName(kind),
                 pcss.penumbraPixels, figures.pcss, figures.pcss / figures.bestFixed, fixed.c_str());
     for (const float x : {0.14f, 0.2f, 0.3f}) {

@@ -10,7 +10,8 @@ namespace penumbra::shadows {
 
 // A Poisson disk of `count` points (16, 32 or 64: kPoissonSampleCounts) in the unit disk, built by Mitchell's
 // best-candidate algorithm (Mitchell 1991, "Spectrally Optimal Sampling for Distribution Ray Tracing") from a fixed
-// seed, so the same points every run and on every backend (the lit shader gets them as constants). Throws
+// seed, so the same points every run and on every backend (the lit shader gets them as constants), then centred and
+// given the radii of equal-area rings, so that a filter over them blurs as the uniform disk of its radius. Throws
 // rhi::Error for another count.
 std::span<const glm::vec2> poissonDisk(std::uint32_t count);
 
