@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 #include <glm/common.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -82,6 +83,20 @@ int GltfBuilder::add(const std::string& array, nlohmann::json element)
 }
 
 void GltfBuilder::addRoot(int node) { json_["scenes"][0]["nodes"].push_back(node); }
+
+void GltfBuilder::useExtension(const std::string& name, bool required)
+{
+    const auto list = [&](const char* key) {
+        nlohmann::json& names = json_[key];
+        if (names.is_null())
+            names = nlohmann::json::array();
+        if (std::find(names.begin(), names.end(), name) == names.end())
+            names.push_back(name);
+    };
+    list("extensionsUsed");
+    if (required)
+        list("extensionsRequired");
+}
 
 int GltfBuilder::addView(std::span<const std::uint8_t> bytes)
 {
@@ -216,6 +231,40 @@ GltfBuilder sampledTexturesScene(const std::vector<nlohmann::json>& samplers)
                                   {"translation", {3.0 * double(i), 0, 0}}}));
     }
     return b;
+}
+
+int addInstancedNode(GltfBuilder& builder, nlohmann::json node, const InstanceAttributes& instances)
+{
+    nlohmann::json attributes = nlohmann::json::object();
+    if (!instances.translations.empty())
+        attributes["TRANSLATION"] = builder.addAccessor(bytesOf(std::span<const glm::vec3>(instances.translations)),
+                                                        instances.translations.size(), "VEC3", Component::Float);
+    if (!instances.rotations.empty()) {
+        const std::span<const glm::vec4> rotations(instances.rotations);
+        if (instances.rotationComponent == Component::Float) {
+            attributes["ROTATION"] =
+                builder.addAccessor(bytesOf(rotations), rotations.size(), "VEC4", Component::Float);
+        } else {
+            // glTF 2.0 section 3.11: c = round(f * 127) for BYTE, round(f * 32767) for SHORT.
+            const bool bytes = instances.rotationComponent == Component::Byte;
+            std::vector<std::uint8_t> encoded;
+            for (const glm::vec4& rotation : rotations)
+                for (int c = 0; c < 4; ++c) {
+                    const auto value = std::int16_t(std::lround(rotation[c] * (bytes ? 127.0f : 32767.0f)));
+                    encoded.push_back(std::uint8_t(value & 0xff));
+                    if (!bytes)
+                        encoded.push_back(std::uint8_t((value >> 8) & 0xff));
+                }
+            attributes["ROTATION"] =
+                builder.addAccessor(encoded, rotations.size(), "VEC4", instances.rotationComponent, true);
+        }
+    }
+    if (!instances.scales.empty())
+        attributes["SCALE"] = builder.addAccessor(bytesOf(std::span<const glm::vec3>(instances.scales)),
+                                                  instances.scales.size(), "VEC3", Component::Float);
+    node["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", attributes}};
+    builder.useExtension("EXT_mesh_gpu_instancing", true);
+    return builder.add("nodes", std::move(node));
 }
 
 int addCubeMesh(GltfBuilder& builder, const std::string& name, int material, Component indexComponent)

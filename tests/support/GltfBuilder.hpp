@@ -16,7 +16,8 @@
 namespace penumbra::testing {
 
 // glTF component types, as the specification numbers them.
-enum class Component : int { UnsignedByte = 5121, UnsignedShort = 5123, UnsignedInt = 5125, Float = 5126 };
+enum class Component : int { Byte = 5120, UnsignedByte = 5121, Short = 5122, UnsignedShort = 5123, UnsignedInt = 5125,
+                             Float = 5126 };
 
 // Writes small glTF 2.0 files for tests: a JSON document plus one binary buffer that accessors,
 // and images embedded in it, are appended to. Everything is public JSON to edit, so a test can
@@ -43,6 +44,8 @@ public:
     int add(const std::string& array, nlohmann::json element);
     // Adds a node to the default scene's roots.
     void addRoot(int node);
+    // Lists the extension in extensionsUsed, and in extensionsRequired when `required`, once each.
+    void useExtension(const std::string& name, bool required = false);
 
     // .gltf with the buffer inline as a base64 data URI, or beside it as <stem>.bin.
     void writeGltf(const std::filesystem::path& path, bool externalBuffer = false) const;
@@ -58,6 +61,19 @@ private:
     nlohmann::json json_;
     std::vector<std::uint8_t> bin_;
 };
+
+// What each instance of an EXT_mesh_gpu_instancing node gets; an empty list leaves its attribute out.
+struct InstanceAttributes {
+    std::vector<glm::vec3> translations;
+    std::vector<glm::vec4> rotations; // quaternions x, y, z, w
+    std::vector<glm::vec3> scales;
+    // FLOAT, or normalized Byte or Short (each component rounded to the nearest step).
+    Component rotationComponent = Component::Float;
+};
+
+// Adds `node` (a JSON object with a mesh) with EXT_mesh_gpu_instancing attributes, the extension listed as used and
+// required as the extension recommends; returns the node index.
+int addInstancedNode(GltfBuilder& builder, nlohmann::json node, const InstanceAttributes& instances);
 
 // A cube of half size 1 as one primitive: 24 vertices with flat normals and uvs, 36 indices of
 // the given component type, counter-clockwise seen from outside. Returns the mesh index.

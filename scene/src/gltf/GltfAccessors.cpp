@@ -102,22 +102,27 @@ T load(const unsigned char* at)
     return value;
 }
 
-// One component as a float; normalized integers map to [0, 1] as glTF defines.
+// One component as a float; normalized integers map to [0, 1], or [-1, 1] for signed ones, as glTF 2.0 section
+// 3.11 defines: c / (2^n - 1) unsigned, max(c / (2^(n-1) - 1), -1) signed.
 float component(const unsigned char* at, int componentType)
 {
     switch (componentType) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return float(load<std::uint8_t>(at)) / 255.0f;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return float(load<std::uint16_t>(at)) / 65535.0f;
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return std::max(float(load<std::int8_t>(at)) / 127.0f, -1.0f);
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return std::max(float(load<std::int16_t>(at)) / 32767.0f, -1.0f);
     default: return load<float>(at);
     }
 }
 
-// The normalized value of an integer component as component() reads it.
+// The normalized value of an integer component as component() reads it (before the clamp at -1).
 double normalizedScale(int componentType)
 {
     switch (componentType) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1.0 / 255.0;
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 1.0 / 65535.0;
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return 1.0 / 127.0;
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return 1.0 / 32767.0;
     default: return 1.0;
     }
 }
@@ -131,7 +136,9 @@ void checkBounds(const Document& document, int index, const std::vector<std::vec
             if (components[c].empty())
                 continue;
             const auto [lo, hi] = std::minmax_element(components[c].begin(), components[c].end());
-            const double actual = least ? *lo : *hi, expected = declared[c] * scale;
+            // Normalized values clamp at -1 as component() does; other scales are 1.
+            const double actual = least ? *lo : *hi,
+                         expected = scale < 1.0 ? std::max(declared[c] * scale, -1.0) : declared[c];
             if (std::abs(actual - expected) > 1e-6 * std::max(1.0, std::abs(actual)))
                 return true;
         }
@@ -167,11 +174,10 @@ std::vector<glm::vec<N, float>> readFloats(const Document& document, const Eleme
         }
     }
     checkBounds(document, index, values, view.componentType);
-    // The validator's tolerance for a unit vector (gltf-validator, ACCESSOR_NON_UNIT).
     if constexpr (N >= 3)
         if (semantic == "NORMAL" || semantic == "TANGENT")
             for (std::size_t i = 0; i < view.count; ++i)
-                if (std::abs(glm::length(glm::vec3(values[i])) - 1.0f) > 5e-4f) {
+                if (std::abs(glm::length(glm::vec3(values[i])) - 1.0f) > float(kUnitLengthTolerance)) {
                     document.deviations().add(kNonUnit, fmt::format("/accessors/{}", index));
                     break;
                 }
@@ -185,6 +191,8 @@ std::vector<glm::vec<N, float>> readFloats(const Document& document, const Eleme
 }
 
 constexpr std::array<int, 1> kFloatOnly{TINYGLTF_COMPONENT_TYPE_FLOAT};
+constexpr std::array<int, 3> kFloatOrSignedNormalized{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                                                      TINYGLTF_COMPONENT_TYPE_SHORT};
 constexpr std::array<int, 3> kFloatOrNormalized{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
 
@@ -221,6 +229,12 @@ std::vector<glm::vec4> readVec4(const Document& document, int accessor, std::str
                                 std::string_view semantic)
 {
     return readVectors<4>(document, accessor, owner, semantic, kFloatOnly);
+}
+
+std::vector<glm::vec4> readRotations(const Document& document, int accessor, std::string_view owner,
+                                     std::string_view semantic)
+{
+    return readVectors<4>(document, accessor, owner, semantic, kFloatOrSignedNormalized);
 }
 
 std::vector<glm::vec4> readColors(const Document& document, int accessor, std::string_view owner,

@@ -30,6 +30,10 @@ std::vector<glm::vec2> readTexCoords(const Document& document, int accessor, std
 std::vector<glm::vec4> readVec4(const Document& document, int accessor, std::string_view owner,
                                 std::string_view semantic);
 
+// VEC4 of FLOAT, or of normalized BYTE / SHORT (EXT_mesh_gpu_instancing's ROTATION quaternions, x y z w).
+std::vector<glm::vec4> readRotations(const Document& document, int accessor, std::string_view owner,
+                                     std::string_view semantic);
+
 // VEC3 or VEC4 of FLOAT, or of normalized UNSIGNED_BYTE / UNSIGNED_SHORT (COLOR_n); VEC3 gets alpha 1.
 std::vector<glm::vec4> readColors(const Document& document, int accessor, std::string_view owner,
                                   std::string_view semantic);

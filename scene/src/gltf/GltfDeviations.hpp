@@ -27,4 +27,8 @@ inline constexpr std::string_view kMinMaxMismatch = "accessor min/max do not mat
 inline constexpr std::string_view kMissingBounds = "POSITION accessor without min/max";
 inline constexpr std::string_view kNonUnit = "normals or tangents not unit length (normalized when shaded)";
 
+// The Khronos glTF Validator's tolerance for a unit vector or quaternion (gltf-validator, ACCESSOR_NON_UNIT and
+// ROTATION_NON_UNIT): |length - 1| above it is not unit length.
+inline constexpr double kUnitLengthTolerance = 5e-4;
+
 } // namespace penumbra::scene::gltf

@@ -1,5 +1,6 @@
 #include "GltfNodes.hpp"
 
+#include "GltfInstances.hpp"
 #include "GltfMaterials.hpp"
 #include "GltfMeshes.hpp"
 #include "GltfNodeShadows.hpp"
@@ -65,39 +66,64 @@ private:
     {
         const std::string name = describe("node", index, node.name);
         const tinygltf::Mesh& mesh = document_.at(model_.meshes, node.mesh, "mesh", name);
-        const float determinant = glm::determinant(glm::mat3(world));
-        if (std::abs(determinant) < kSingularDeterminant) {
-            notes_.push_back(fmt::format("{}: skipped, its transform scales it to nothing", name));
+        const std::string base = node.name.empty() ? (mesh.name.empty() ? name : mesh.name) : node.name;
+        const std::optional<Instances> instances = readInstances(document_, node, index);
+        if (!instances) {
+            if (!addPrimitives(node.mesh, mesh, base, world, shadows))
+                notes_.push_back(fmt::format("{}: skipped, its transform scales it to nothing", name));
             return;
         }
+        for (const std::string& attribute : instances->ignored)
+            if (ignoredAttributes_.insert(attribute).second)
+                notes_.push_back(fmt::format("{}: EXT_mesh_gpu_instancing attribute {} is application-specific: "
+                                             "ignored",
+                                             name, attribute));
+        // The extension's implementation note: "the non-instanced version of the mesh should not be rendered".
+        std::size_t skipped = 0;
+        for (std::size_t i = 0; i < instances->transforms.size(); ++i)
+            skipped += !addPrimitives(node.mesh, mesh, fmt::format("{}/instance {}", base, i),
+                                      world * instances->transforms[i], shadows);
+        if (skipped > 0)
+            notes_.push_back(fmt::format("{}: {} of {} instances skipped, their transforms scale them to nothing", name,
+                                         skipped, instances->transforms.size()));
+    }
+
+    // An object per primitive of mesh `meshIndex` at `world`, named `base` (`base/<primitive>` for a mesh of more
+    // than one); false, adding nothing, for a transform that scales the mesh to nothing.
+    bool addPrimitives(int meshIndex, const tinygltf::Mesh& mesh, const std::string& base, const glm::mat4& world,
+                       const NodeShadows& shadows)
+    {
+        const float determinant = glm::determinant(glm::mat3(world));
+        if (std::abs(determinant) < kSingularDeterminant)
+            return false;
         const bool mirrored = determinant < 0.0f;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             // glTF 2.0, section 3.7.2.1: without POSITION "the client implementation should skip the
             // primitive's rendering".
             if (!mesh.primitives[p].attributes.count("POSITION")) {
-                if (positionless_.insert({node.mesh, int(p)}).second)
+                if (positionless_.insert({meshIndex, int(p)}).second)
                     notes_.push_back(fmt::format("{} primitive {}: no POSITION attribute: skipped",
-                                                 describe("mesh", node.mesh, mesh.name), p));
+                                                 describe("mesh", meshIndex, mesh.name), p));
                 continue;
             }
             const std::uint32_t material = materials_.material(
-                mesh.primitives[p].material, fmt::format("{} primitive {}", describe("mesh", node.mesh, mesh.name), p));
-            const auto key = std::make_tuple(node.mesh, int(p), mirrored);
+                mesh.primitives[p].material, fmt::format("{} primitive {}", describe("mesh", meshIndex, mesh.name), p));
+            const auto key = std::make_tuple(meshIndex, int(p), mirrored);
             auto found = meshes_.find(key);
             if (found == meshes_.end()) {
                 const std::optional<MaterialTexture>& normal = scene_.materials[material].texture(TextureSlot::Normal);
-                MeshData data = readPrimitive(document_, node.mesh, int(p),
+                MeshData data = readPrimitive(document_, meshIndex, int(p),
                                               normal ? std::optional(normal->texCoord) : std::nullopt);
                 found = meshes_.emplace(key, scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data)))
                             .first;
             }
-            const std::string base = node.name.empty() ? (mesh.name.empty() ? name : mesh.name) : node.name;
             Object& object = scene_.objects[scene_.addObject(
                 mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), found->second, material, world)];
             object.castShadows = shadows.cast;
             object.receiveShadows = shadows.receive;
             object.mobility = shadows.mobility;
         }
+        return true;
     }
 
     const Document& document_;
@@ -108,6 +134,7 @@ private:
     std::vector<bool> onPath_;
     std::map<std::tuple<int, int, bool>, std::uint32_t> meshes_; // (mesh, primitive, mirrored) -> scene mesh
     std::set<std::pair<int, int>> positionless_;                 // (mesh, primitive) noted as skipped
+    std::set<std::string> ignoredAttributes_;                    // instance attributes noted as ignored
     NodeWalk walk_;
 };
 
@@ -142,16 +169,20 @@ glm::mat4 localTransform(const tinygltf::Node& node)
                 m[column][row] = float(node.matrix[std::size_t(column * 4 + row)]);
         return m;
     }
-    glm::mat4 m(1.0f);
-    if (node.translation.size() == 3)
-        m = glm::translate(m, glm::vec3(float(node.translation[0]), float(node.translation[1]),
-                                        float(node.translation[2])));
-    if (node.rotation.size() == 4) // glTF stores x, y, z, w; glm::quat takes w first
-        m *= glm::mat4_cast(glm::normalize(glm::quat(float(node.rotation[3]), float(node.rotation[0]),
-                                                     float(node.rotation[1]), float(node.rotation[2]))));
-    if (node.scale.size() == 3)
-        m = glm::scale(m, glm::vec3(float(node.scale[0]), float(node.scale[1]), float(node.scale[2])));
-    return m;
+    const auto vec3 = [](const std::vector<double>& v, float fallback) {
+        return v.size() == 3 ? glm::vec3(float(v[0]), float(v[1]), float(v[2])) : glm::vec3(fallback);
+    };
+    const std::vector<double>& r = node.rotation;
+    // glTF stores x, y, z, w; glm::quat takes w first.
+    const glm::quat rotation = r.size() == 4
+                                   ? glm::normalize(glm::quat(float(r[3]), float(r[0]), float(r[1]), float(r[2])))
+                                   : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+    return trsTransform(vec3(node.translation, 0.0f), rotation, vec3(node.scale, 1.0f));
+}
+
+glm::mat4 trsTransform(const glm::vec3& translation, const glm::quat& rotation, const glm::vec3& scale)
+{
+    return glm::scale(glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation), scale);
 }
 
 NodeWalk walkNodes(const Document& document, Scene& scene, std::vector<std::string>& notes)

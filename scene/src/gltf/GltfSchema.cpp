@@ -176,7 +176,7 @@ void checkAttributeFormat(const JsonFile& file, const Fields& attributes, const 
                                               type, component, normalized ? " (normalized)" : "", semantic));
 }
 
-void checkPrimitive(const JsonFile& file, const Fields& primitive, std::map<int, std::string>& usage)
+void checkPrimitive(const JsonFile& file, const Fields& primitive, AccessorUsage& usage)
 {
     primitive.require("attributes");
     const Fields attributes = *primitive.object("attributes");
@@ -225,9 +225,9 @@ void checkPrimitive(const JsonFile& file, const Fields& primitive, std::map<int,
     }
 }
 
-void checkMeshes(const JsonFile& file)
+AccessorUsage checkMeshes(const JsonFile& file)
 {
-    std::map<int, std::string> usage; // accessor -> what it is used as
+    AccessorUsage usage;
     for (const Fields& mesh : topLevel(file, "meshes")) {
         mesh.require("primitives");
         for (const Fields& primitive : mesh.objects("primitives"))
@@ -235,12 +235,14 @@ void checkMeshes(const JsonFile& file)
         if (mesh.has("weights") && (!mesh.json()["weights"].is_array() || mesh.json()["weights"].empty()))
             mesh.fail("weights", fmt::format("expected an array of numbers, got {}", shortDump(mesh.json()["weights"])));
     }
+    return usage;
 }
 
-void checkNodes(const JsonFile& file, const Fields& root)
+void checkNodes(const JsonFile& file, const Fields& root, AccessorUsage& usage)
 {
     const std::vector<Fields> nodes = topLevel(file, "nodes");
     std::vector<int> parent(nodes.size(), -1);
+    std::uint64_t instances = 0;
     for (std::size_t n = 0; n < nodes.size(); ++n) {
         const Fields& node = nodes[n];
         node.index("camera", "cameras");
@@ -253,8 +255,7 @@ void checkNodes(const JsonFile& file, const Fields& root)
         if (const auto rotation = node.numbers("rotation", 4, -1.0, 1.0)) {
             const double length = std::sqrt((*rotation)[0] * (*rotation)[0] + (*rotation)[1] * (*rotation)[1] +
                                             (*rotation)[2] * (*rotation)[2] + (*rotation)[3] * (*rotation)[3]);
-            // The validator's tolerance for a unit quaternion (gltf-validator, ROTATION_NON_UNIT).
-            if (std::abs(length - 1.0) > 5e-4)
+            if (std::abs(length - 1.0) > kUnitLengthTolerance)
                 node.fail("rotation", fmt::format("expected a unit quaternion, got length {}", length));
         }
         if (node.has("matrix") && (node.has("translation") || node.has("rotation") || node.has("scale")))
@@ -279,6 +280,11 @@ void checkNodes(const JsonFile& file, const Fields& root)
                                                  "got {}",
                                                  lights, shortDump(index)));
         }
+        instances += checkInstancing(file, node, usage);
+        if (instances > kMaxInstances)
+            file.fail(node.pointerOf("extensions") + "/EXT_mesh_gpu_instancing",
+                      fmt::format("the file's instanced nodes reach {} instances here, over the limit of {}", instances,
+                                  kMaxInstances));
     }
     for (std::size_t n = 0; n < nodes.size(); ++n) {
         std::size_t steps = 0;
@@ -341,9 +347,9 @@ void checkSchema(const JsonFile& file)
     checkAccessors(file);
     checkTexturesAndImages(file);
     checkMaterials(file);
-    checkMeshes(file);
+    AccessorUsage usage = checkMeshes(file);
     checkCamerasAndLights(file);
-    checkNodes(file, root);
+    checkNodes(file, root, usage);
 }
 
 } // namespace penumbra::scene::gltf

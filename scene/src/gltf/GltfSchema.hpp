@@ -2,6 +2,7 @@
 
 #include "GltfFields.hpp"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,17 @@ std::size_t componentCount(const std::string& type);
 // pointer of the first offending value.
 void checkSchema(const JsonFile& file);
 
+// What each accessor is used as ("vertex attribute", "indices", "instance attribute"): one accessor serves one use.
+using AccessorUsage = std::map<int, std::string>;
+
 // The parts of checkSchema by topic.
 void checkMaterials(const JsonFile& file);
 void checkTexturesAndImages(const JsonFile& file);
 void checkCamerasAndLights(const JsonFile& file);
+// The node's EXT_mesh_gpu_instancing object, when it has one: a node with a mesh, at least one attribute, each
+// an accessor of the format the extension allows that nothing else uses, all of one count. Returns that count,
+// the node's instances (0 without the extension).
+std::uint64_t checkInstancing(const JsonFile& file, const Fields& node, AccessorUsage& usage);
 
 // The top-level array `name` as objects (none when absent).
 std::vector<Fields> topLevel(const JsonFile& file, std::string_view name);
