@@ -41,8 +41,10 @@ public:
             layout(location = 0) in vec2 uv;
             layout(location = 0) out vec4 result;
             void main() { result = vec4(uv.x, uv.y, 1.0 - uv.x, 1.0); })"});
-        gradient_ = device.createPipeline({.vertex = gradientVertex_.get(), .fragment = gradientFragment_.get(),
-                                           .colorTargets = {{}}, .depthFormat = Format::D32F});
+        gradient_ = device.createPipeline({.vertex = gradientVertex_.get(),
+                                           .fragment = gradientFragment_.get(),
+                                           .colorTargets = {{}},
+                                           .depthFormat = Format::D32F});
 
         trianglesVertex_ = device.createShader({ShaderStage::Vertex, R"(#version 450
             layout(std140, binding = 0) uniform View { mat4 projection; } view;
@@ -57,9 +59,10 @@ public:
         triangles_ = device.createPipeline({
             .vertex = trianglesVertex_.get(),
             .fragment = trianglesFragment_.get(),
-            .vertexLayout = {.buffers = {{.stride = sizeof(Vertex)}},
-                             .attributes = {{.location = 0, .format = VertexFormat::Float3, .offset = 0},
-                                            {.location = 1, .format = VertexFormat::Float4, .offset = offsetof(Vertex, colour)}}},
+            .vertexLayout =
+                {.buffers = {{.stride = sizeof(Vertex)}},
+                 .attributes = {{.location = 0, .format = VertexFormat::Float3, .offset = 0},
+                                {.location = 1, .format = VertexFormat::Float4, .offset = offsetof(Vertex, colour)}}},
             .depth = {.test = true, .write = true, .compare = DepthTest::Nearer},
             .colorTargets = {{}},
             .depthFormat = Format::D32F,

@@ -77,8 +77,9 @@ try {
 
     const shadows::DirectionalShadowPlan& plan = plans.directional;
     GroundUniforms uniforms{};
-    const glm::mat4 projection = device->conventions().perspective(
-        world.camera.fovY, float(frame.width) / float(frame.height), world.camera.nearPlane, world.camera.farPlane);
+    const glm::mat4 projection =
+        device->conventions().perspective(world.camera.fovY, float(frame.width) / float(frame.height),
+                                          world.camera.nearPlane, world.camera.farPlane);
     uniforms.clipToWorld = glm::inverse(projection * world.camera.view());
     for (std::uint32_t c = 0; c < plan.splits.count; ++c) {
         uniforms.worldToAtlas[c] = plan.lights.at(0).cascades.at(c).worldToAtlas;
@@ -88,14 +89,14 @@ try {
     auto uniformBuffer = device->createBuffer({.size = sizeof(uniforms), .usage = rhi::BufferUsage::Uniform});
     uniformBuffer->writeObject(uniforms);
 
-    auto color = device->createTexture({.width = frame.width, .height = frame.height, .usage = rhi::TextureUsage::RenderTarget});
+    auto color =
+        device->createTexture({.width = frame.width, .height = frame.height, .usage = rhi::TextureUsage::RenderTarget});
     const rhi::Attachment attachment{color.get(), 0};
     auto target = device->createFramebuffer({.colors = {&attachment, 1}});
     auto vertex = device->createShader({rhi::ShaderStage::Vertex, fullscreenShader, "fullscreen.vert"});
     auto fragment = device->createShader({rhi::ShaderStage::Fragment, groundShader, "ground.frag"});
     auto pipeline = device->createPipeline({.vertex = vertex.get(), .fragment = fragment.get(), .colorTargets = {{}}});
-    auto sampler =
-        device->createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
+    auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
 
     auto commands = device->createCommandList();
     commands->beginPass({.framebuffer = target.get()});

@@ -28,10 +28,13 @@ rhi::ShaderSource load(std::string_view fileName)
     if (!vertex && !fileName.ends_with(".frag"))
         throw rhi::Error(fmt::format("shader '{}': the extension must be .vert or .frag", fileName));
     rhi::ShaderSource shader{vertex ? rhi::ShaderStage::Vertex : rhi::ShaderStage::Fragment,
-                             std::string(source(fileName)), std::string(fileName), {}};
+                             std::string(source(fileName)),
+                             std::string(fileName),
+                             {}};
     for (std::size_t i = 0; i < detail::embeddedCount; ++i)
         if (detail::embedded[i].first.ends_with(".glsl"))
-            shader.includes.push_back({std::string(detail::embedded[i].first), std::string(detail::embedded[i].second)});
+            shader.includes.push_back(
+                {std::string(detail::embedded[i].first), std::string(detail::embedded[i].second)});
     return shader;
 }
 

@@ -4,8 +4,5 @@
 // frame pointers, so LSan sees one-frame stacks it cannot attribute to a module to suppress.
 // AddressSanitizer and UndefinedBehaviorSanitizer stay on; the CPU-only tests keep leak checking.
 extern "C" const char* __asan_default_options();
-extern "C" const char* __asan_default_options()
-{
-    return "detect_leaks=0";
-}
+extern "C" const char* __asan_default_options() { return "detect_leaks=0"; }
 #endif

@@ -29,7 +29,8 @@ std::optional<std::pair<std::string, scene::ShadowUpdate>> parseLightShadowUpdat
     const std::size_t split = spec.rfind('=');
     if (split == std::string::npos || split == 0)
         return std::nullopt;
-    const std::optional<scene::ShadowUpdate> update = scene::parseShadowUpdate(std::string_view(spec).substr(split + 1));
+    const std::optional<scene::ShadowUpdate> update =
+        scene::parseShadowUpdate(std::string_view(spec).substr(split + 1));
     if (!update)
         return std::nullopt;
     return std::pair{spec.substr(0, split), *update};
@@ -53,7 +54,8 @@ void applyLightShadowUpdate(scene::Scene& scene, const std::string& spec)
         }
     });
     if (!found)
-        throw rhi::Error(fmt::format("--light-static-map '{}': the scene has no light named '{}'", spec, parsed->first));
+        throw rhi::Error(
+            fmt::format("--light-static-map '{}': the scene has no light named '{}'", spec, parsed->first));
 }
 
 void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize,

@@ -83,7 +83,8 @@ scene::Scene namedScene(const std::string& name)
 }
 
 ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configuration, const scene::Scene& scene,
-                                 const render::FrameDesc& frame, bool readAtlases, const shadows::StaticShadowBake* bake)
+                                 const render::FrameDesc& frame, bool readAtlases,
+                                 const shadows::StaticShadowBake* bake)
 {
     render::SceneRenderer renderer(device, scene);
     if (bake)
@@ -96,8 +97,9 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     pictures.notes = renderer.notes();
     if (!scene.lights.empty())
         for (const float depth : kTexelDensityDepths)
-            pictures.texelsPerMetre.push_back(render::directionalTexelsPerMetre(
-                renderer.plan(), 0, scene.camera, float(frame.width) / float(frame.height), depth));
+            pictures.texelsPerMetre.push_back(
+                render::directionalTexelsPerMetre(renderer.plan(), 0, scene.camera,
+                                                  float(frame.width) / float(frame.height), depth));
     pictures.lit = rhi::readTexture(device, renderer.litImage());
     if (frame.cascadeView)
         pictures.cascades = rhi::readTexture(device, renderer.cascadeImage());
@@ -119,8 +121,9 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
         });
     };
     if (has(true))
-        pictures.atlases.push_back(atlasPictures(
-            "static-directional", rhi::readDepth(device, renderer.staticDirectionalAtlas().texture()), conventions));
+        pictures.atlases.push_back(atlasPictures("static-directional",
+                                                 rhi::readDepth(device, renderer.staticDirectionalAtlas().texture()),
+                                                 conventions));
     if (has(false))
         pictures.atlases.push_back(atlasPictures("static-other",
                                                  rhi::readDepth(device, renderer.staticLocalAtlas().texture()),
@@ -137,7 +140,8 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
     auto device = createDevice(desc);
     ShadowPictures pictures = renderShadowScene(*device, configuration, scene, frame, run.readAtlases, run.bake);
     if (const auto messages = device->debugMessages(); !messages.empty())
-        throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
+        throw rhi::Error(
+            fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;
 }
 

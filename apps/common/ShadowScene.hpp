@@ -19,7 +19,7 @@ namespace penumbra::apps {
 // first point light's six cube faces side by side, +X to -Z).
 struct AtlasPictures {
     std::string name;
-    rhi::Image picture;    // render::atlasPicture of depth, in linear light depth
+    rhi::Image picture; // render::atlasPicture of depth, in linear light depth
     rhi::DepthImage depth; // raw window depth as read back
     // render::lightDepthFraction of the window depth, comparable across conventions: orthographic
     // window depth is linear, perspective window depth the same function of view depth in every

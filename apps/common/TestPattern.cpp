@@ -18,15 +18,27 @@ std::vector<PatternVertex> testPattern()
     // Every triangle is counter-clockwise in NDC (y up).
     return {
         // Markers: top-left red, top-right green, bottom-left blue.
-        {{-0.95f, 0.95f, 5.0f}, red}, {{-0.95f, 0.55f, 5.0f}, red}, {{-0.55f, 0.95f, 5.0f}, red},
-        {{0.95f, 0.95f, 5.0f}, green}, {{0.55f, 0.95f, 5.0f}, green}, {{0.95f, 0.55f, 5.0f}, green},
-        {{-0.95f, -0.95f, 5.0f}, blue}, {{-0.55f, -0.95f, 5.0f}, blue}, {{-0.95f, -0.55f, 5.0f}, blue},
+        {{-0.95f, 0.95f, 5.0f}, red},
+        {{-0.95f, 0.55f, 5.0f}, red},
+        {{-0.55f, 0.95f, 5.0f}, red},
+        {{0.95f, 0.95f, 5.0f}, green},
+        {{0.55f, 0.95f, 5.0f}, green},
+        {{0.95f, 0.55f, 5.0f}, green},
+        {{-0.95f, -0.95f, 5.0f}, blue},
+        {{-0.55f, -0.95f, 5.0f}, blue},
+        {{-0.95f, -0.55f, 5.0f}, blue},
         // Two large triangles crossing each other in depth: yellow leans away to the right,
         // cyan away to the left, so the visible edge between them is the line where depths meet.
-        {{-0.6f, -0.5f, 2.0f}, yellow}, {{0.6f, -0.5f, 8.0f}, yellow}, {{0.0f, 0.6f, 5.0f}, yellow},
-        {{-0.6f, -0.3f, 8.0f}, cyan}, {{0.6f, -0.3f, 2.0f}, cyan}, {{0.0f, 0.8f, 5.0f}, cyan},
+        {{-0.6f, -0.5f, 2.0f}, yellow},
+        {{0.6f, -0.5f, 8.0f}, yellow},
+        {{0.0f, 0.6f, 5.0f}, yellow},
+        {{-0.6f, -0.3f, 8.0f}, cyan},
+        {{0.6f, -0.3f, 2.0f}, cyan},
+        {{0.0f, 0.8f, 5.0f}, cyan},
         // A magenta sliver behind everything.
-        {{-0.9f, -0.1f, 9.0f}, magenta}, {{0.9f, -0.1f, 9.0f}, magenta}, {{0.9f, 0.1f, 9.0f}, magenta},
+        {{-0.9f, -0.1f, 9.0f}, magenta},
+        {{0.9f, -0.1f, 9.0f}, magenta},
+        {{0.9f, 0.1f, 9.0f}, magenta},
     };
 }
 
@@ -35,19 +47,25 @@ PatternRenderer::PatternRenderer(rhi::Device& device, const PatternTarget& targe
       projection_(device.conventions().perspective(glm::half_pi<float>(), 1.0f, target.zNear, target.zFar)),
       vertexShader_(device.createShader(shaders::load("pattern.vert", {{"BINDING_PATTERN", kPatternBinding}}))),
       fragmentShader_(device.createShader(shaders::load("pattern.frag"))),
-      color_(device.createTexture({.width = target.width, .height = target.height, .format = rhi::Format::RGBA8,
-                                   .usage = target.sampled ? rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled
-                                                   : rhi::TextureUsage::RenderTarget,
-                                   .debugName = "pattern.color"})),
-      depth_(device.createTexture({.width = target.width, .height = target.height, .format = rhi::Format::D32F,
-                                   .usage = rhi::TextureUsage::RenderTarget, .debugName = "pattern.depth"})),
-      uniforms_(device.createBuffer({.size = sizeof(glm::mat4), .usage = rhi::BufferUsage::Uniform,
-                                     .debugName = "pattern.uniforms"})),
+      color_(
+          device.createTexture({.width = target.width,
+                                .height = target.height,
+                                .format = rhi::Format::RGBA8,
+                                .usage = target.sampled ? rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled
+                                                        : rhi::TextureUsage::RenderTarget,
+                                .debugName = "pattern.color"})),
+      depth_(device.createTexture({.width = target.width,
+                                   .height = target.height,
+                                   .format = rhi::Format::D32F,
+                                   .usage = rhi::TextureUsage::RenderTarget,
+                                   .debugName = "pattern.depth"})),
+      uniforms_(device.createBuffer(
+          {.size = sizeof(glm::mat4), .usage = rhi::BufferUsage::Uniform, .debugName = "pattern.uniforms"})),
       commands_(device.createCommandList())
 {
     const rhi::Attachment colorAttachment{color_.get(), 0};
-    framebuffer_ = device.createFramebuffer(
-        {.colors = {&colorAttachment, 1}, .depth = {depth_.get(), 0}, .debugName = "pattern"});
+    framebuffer_ =
+        device.createFramebuffer({.colors = {&colorAttachment, 1}, .depth = {depth_.get(), 0}, .debugName = "pattern"});
     uniforms_->writeObject(projection_);
 }
 

@@ -25,8 +25,8 @@ void bake(const BakeOptions& options)
 {
     const std::vector<std::string> configurations = expandBackends({options.backend});
     if (configurations.size() != 1)
-        throw rhi::Error(fmt::format("--backend '{}': a bake is made on one configuration (any one loads it)",
-                                     options.backend));
+        throw rhi::Error(
+            fmt::format("--backend '{}': a bake is made on one configuration (any one loads it)", options.backend));
     const LoadedScene loaded = loadScene(options.scene);
     render::FrameDesc frame = frameDesc(options.scene);
     // A bake is the static maps: drawn once, whatever mode the settings keep them in at run time.
@@ -41,11 +41,11 @@ void bake(const BakeOptions& options)
         fmt::print("  note: {}\n", note);
     const shadows::StaticShadowBake bake = renderer.bakeStaticShadows(configurations[0]);
     if (const auto messages = device->debugMessages(); !messages.empty())
-        throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configurations[0], messages.size(),
-                                     messages[0]));
+        throw rhi::Error(
+            fmt::format("{}: {} debug message(s), first: {}", configurations[0], messages.size(), messages[0]));
     if (bake.maps.empty())
-        throw rhi::Error(fmt::format("{}: nothing to bake: no light casts shadows on a static caster",
-                                     options.scene.scene));
+        throw rhi::Error(
+            fmt::format("{}: nothing to bake: no light casts shadows on a static caster", options.scene.scene));
     shadows::writeStaticShadowBake(options.out, bake);
     fmt::print("baked {} light(s), {} static objects, {} caster draws, into {}/manifest.json\n", bake.maps.size(),
                bake.objects.size(), stats.staticCasterDraws, options.out);

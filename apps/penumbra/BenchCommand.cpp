@@ -64,7 +64,8 @@ void runBenchmarks(const BenchOptions& options)
     std::vector<std::unique_ptr<rhi::CommandList>> lists;
     std::vector<std::unique_ptr<RawDraws>> raws;
     std::vector<Case> cases;
-    for (const std::string& configuration : wants(options, "draws") ? options.configurations : std::vector<std::string>{}) {
+    for (const std::string& configuration :
+         wants(options, "draws") ? options.configurations : std::vector<std::string>{}) {
         rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
         desc.validation = false; // timing the driver, not the API's validation layer
         desc.validateUsage = false;
@@ -75,12 +76,16 @@ void runBenchmarks(const BenchOptions& options)
         const auto registerRhi = [&](const std::string& name, rhi::Device& target, std::uint32_t n) {
             const DrawScene& scene = *scenes.emplace_back(std::make_unique<DrawScene>(target, n));
             rhi::CommandList& commands = *lists.emplace_back(target.createCommandList());
-            benchmark::RegisterBenchmark(name.c_str(), [&target, &scene, &commands](benchmark::State& state) {
-                for (auto _ : state) {
-                    scene.recordRhi(commands);
-                    target.submit(commands);
-                }
-            })->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(options.minTime);
+            benchmark::RegisterBenchmark(name.c_str(),
+                                         [&target, &scene, &commands](benchmark::State& state) {
+                                             for (auto _ : state) {
+                                                 scene.recordRhi(commands);
+                                                 target.submit(commands);
+                                             }
+                                         })
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond)
+                ->MinTime(options.minTime);
             return &scene;
         };
         for (std::uint32_t n : options.draws) {
@@ -90,10 +95,14 @@ void runBenchmarks(const BenchOptions& options)
             const DrawScene& scene = *registerRhi(c.rhiName, device, n);
             registerRhi(c.validatedName, validatedDevice, n);
             RawDraws& raw = *raws.emplace_back(createRawDraws(device, scene));
-            benchmark::RegisterBenchmark(c.rawName.c_str(), [&raw](benchmark::State& state) {
-                for (auto _ : state)
-                    raw.frame();
-            })->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(options.minTime);
+            benchmark::RegisterBenchmark(c.rawName.c_str(),
+                                         [&raw](benchmark::State& state) {
+                                             for (auto _ : state)
+                                                 raw.frame();
+                                         })
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond)
+                ->MinTime(options.minTime);
             cases.push_back(c);
         }
     }
@@ -163,18 +172,20 @@ void addBenchCommand(CLI::App& app)
         bench->add_option("-n,--draws", options->draws, "Draws per frame")->check(CLI::Range(1u, 1000000u));
     CLI::Option* minTime = bench->add_option("--min-time", options->minTime, "Minimum seconds per benchmark")
                                ->check(CLI::Range(0.01, 60.0));
-    bench->add_option("--json", options->json,
-                      "Also write the figures to this file: {\"draws\": [{configuration, draws, rhiNsPerDraw, "
-                      "rawNsPerDraw, rhiOverRaw, validatedNsPerDraw, validatedOverRhi}], \"shadows\": [{configuration, scenario, atlasPassMs, "
-                      "otherAtlasPassMs, litPassMs, frameMs, casterDraws, ...}]}; with --scene {\"scene\": "
-                      "[{configuration, frames, frameMs, frameMsMin, frameMsMax, passes: {depth, directionalAtlas, "
-                      "otherAtlas, screenSpaceShadows, lit, resolve, reference}, litOverReference, ...}]}");
+    bench->add_option(
+        "--json", options->json,
+        "Also write the figures to this file: {\"draws\": [{configuration, draws, rhiNsPerDraw, "
+        "rawNsPerDraw, rhiOverRaw, validatedNsPerDraw, validatedOverRhi}], \"shadows\": [{configuration, scenario, atlasPassMs, "
+        "otherAtlasPassMs, litPassMs, frameMs, casterDraws, ...}]}; with --scene {\"scene\": "
+        "[{configuration, frames, frameMs, frameMsMin, frameMsMax, passes: {depth, directionalAtlas, "
+        "otherAtlas, screenSpaceShadows, lit, resolve, reference}, litOverReference, ...}]}");
 
     // Any scene's frames: the options of `render`, each meaningful only with --scene.
     addSceneOptions(*bench, scene->scene);
     CLI::Option* sceneOption = bench->get_option("--scene");
     sceneOption->excludes(suites)->excludes(configurations)->excludes(draws)->excludes(minTime);
-    for (const char* name : {"--camera", "--light", "--ambient", "--settings", "--size", "--prepass", "--msaa", "--shadow-path"})
+    for (const char* name :
+         {"--camera", "--light", "--ambient", "--settings", "--size", "--prepass", "--msaa", "--shadow-path"})
         bench->get_option(name)->needs(sceneOption);
     bench
         ->add_option("-b,--backend", scene->backends,

@@ -17,10 +17,9 @@ constexpr std::uint32_t kObjectBinding = 0; // mesh.vert's Object block
 } // namespace
 
 DrawScene::DrawScene(rhi::Device& device, std::uint32_t count)
-    : count_(count),
-      objectStride_((objectSize + device.capabilities().uniformBufferOffsetAlignment - 1) /
-                    device.capabilities().uniformBufferOffsetAlignment *
-                    device.capabilities().uniformBufferOffsetAlignment),
+    : count_(count), objectStride_((objectSize + device.capabilities().uniformBufferOffsetAlignment - 1) /
+                                   device.capabilities().uniformBufferOffsetAlignment *
+                                   device.capabilities().uniformBufferOffsetAlignment),
       vertexShader_(device.createShader(shaders::load("mesh.vert", {{"BINDING_OBJECT", kObjectBinding}}))),
       fragmentShader_(device.createShader(shaders::load("mesh.frag")))
 {
@@ -35,15 +34,21 @@ DrawScene::DrawScene(rhi::Device& device, std::uint32_t count)
         .depthFormat = rhi::Format::D32F,
         .debugName = "mesh",
     });
-    color_ = device.createTexture({.width = size, .height = size, .format = rhi::Format::RGBA8,
-                                   .usage = rhi::TextureUsage::RenderTarget, .debugName = "bench.color"});
-    depth_ = device.createTexture({.width = size, .height = size, .format = rhi::Format::D32F,
-                                   .usage = rhi::TextureUsage::RenderTarget, .debugName = "bench.depth"});
+    color_ = device.createTexture({.width = size,
+                                   .height = size,
+                                   .format = rhi::Format::RGBA8,
+                                   .usage = rhi::TextureUsage::RenderTarget,
+                                   .debugName = "bench.color"});
+    depth_ = device.createTexture({.width = size,
+                                   .height = size,
+                                   .format = rhi::Format::D32F,
+                                   .usage = rhi::TextureUsage::RenderTarget,
+                                   .debugName = "bench.depth"});
     const rhi::Attachment colorAttachment{color_.get(), 0};
     framebuffer_ = device.createFramebuffer({.colors = {&colorAttachment, 1}, .depth = {depth_.get(), 0}});
 
-    const std::array<glm::vec3, 8> corners = {{{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                                               {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}};
+    const std::array<glm::vec3, 8> corners = {
+        {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}};
     // Counter-clockwise seen from outside the cube.
     const std::array<std::uint16_t, 36> faces = {0, 3, 2, 0, 2, 1, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
                                                  3, 7, 6, 3, 6, 2, 0, 4, 7, 0, 7, 3, 1, 2, 6, 1, 6, 5};
@@ -53,8 +58,8 @@ DrawScene::DrawScene(rhi::Device& device, std::uint32_t count)
     indices_->write(0, std::as_bytes(std::span(faces)));
 
     // A grid of small spinning cubes filling the view, each a few pixels wide.
-    objects_ = device.createBuffer({.size = objectStride_ * count, .usage = rhi::BufferUsage::Uniform,
-                                    .debugName = "objects"});
+    objects_ = device.createBuffer(
+        {.size = objectStride_ * count, .usage = rhi::BufferUsage::Uniform, .debugName = "objects"});
     const glm::mat4 projection = device.conventions().perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f);
     const std::uint32_t side = std::uint32_t(std::ceil(std::sqrt(double(count))));
     std::vector<std::byte> blocks(objectStride_ * count);

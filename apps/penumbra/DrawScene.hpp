@@ -21,7 +21,7 @@ public:
     std::uint32_t indexCount() const { return 36; }
     std::uint64_t objectStride() const { return objectStride_; }
     static constexpr std::uint32_t objectSize = 80; // std140 size of mesh.vert's Object block
-    static constexpr std::uint32_t size = 128;      // target width and height
+    static constexpr std::uint32_t size = 128; // target width and height
 
     const rhi::Pipeline& pipeline() const { return *pipeline_; }
     const rhi::Framebuffer& framebuffer() const { return *framebuffer_; }

@@ -104,7 +104,10 @@ std::optional<LightOption> parseLightOption(const std::string& text)
         const std::optional<float> intensity = intensityOf(f, 2);
         if (!position || !range || !(*range > 0.0f) || !intensity)
             return std::nullopt;
-        return scene::PointLight{.name = "--light point", .intensity = *intensity, .position = *position, .range = *range};
+        return scene::PointLight{.name = "--light point",
+                                 .intensity = *intensity,
+                                 .position = *position,
+                                 .range = *range};
     }
     return std::nullopt;
 }

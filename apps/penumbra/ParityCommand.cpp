@@ -39,7 +39,8 @@ parity::Options parityOptions()
     // drawn in one atlas only; the orthographic directional cascades pancake instead and keep coverage exact.
     options.thresholds["atlas"] = {.maxDifference = 2e-4, .bitExactWhereConventionsAgree = false};
     for (const char* perspective : {"other-atlas", "cube-atlas"})
-        options.thresholds[perspective] = {.maxDifference = 2e-4, .maxCoverageMismatches = 16,
+        options.thresholds[perspective] = {.maxDifference = 2e-4,
+                                           .maxCoverageMismatches = 16,
                                            .bitExactWhereConventionsAgree = false};
     return options;
 }

@@ -30,14 +30,16 @@ rhi::Image renderPattern(const std::string& configuration, std::uint32_t size, b
     renderer.render(pattern::testPattern());
     rhi::Image image = renderer.color();
     if (const auto messages = device->debugMessages(); !messages.empty())
-        throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
+        throw rhi::Error(
+            fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return image;
 }
 
 void addPatternCommand(CLI::App& app)
 {
     auto options = std::make_shared<PatternOptions>();
-    CLI::App* render = app.add_subcommand("pattern", "Render the RHI test pattern through one configuration into a PNG");
+    CLI::App* render =
+        app.add_subcommand("pattern", "Render the RHI test pattern through one configuration into a PNG");
     render->add_option("-c,--configuration", options->configuration, "vulkan, vulkan-reversed, opengl, ...")
         ->check(configurationValidator());
     render->add_option("-o,--out", options->out, "PNG file to write");

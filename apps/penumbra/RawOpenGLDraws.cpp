@@ -12,9 +12,8 @@ public:
     RawOpenGLDraws(rhi::Device& device, const DrawScene& scene)
         : device_(device), scene_(scene), gl_(opengl::glFunctions(device)),
           pipeline_(opengl::pipelineNames(scene.pipeline())),
-          framebuffer_(opengl::framebufferName(scene.framebuffer())),
-          vertices_(opengl::bufferName(scene.vertices())), indices_(opengl::bufferName(scene.indices())),
-          objects_(opengl::bufferName(scene.objects())),
+          framebuffer_(opengl::framebufferName(scene.framebuffer())), vertices_(opengl::bufferName(scene.vertices())),
+          indices_(opengl::bufferName(scene.indices())), objects_(opengl::bufferName(scene.objects())),
           nearerFunc_(device.conventions().reversedZ() ? GL_GREATER : GL_LESS)
     {
     }

@@ -36,14 +36,14 @@ public:
         check(vkCreateFence(d, &fenceInfo, nullptr, &fence_), "vkCreateFence");
 
         const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1};
-        const VkDescriptorPoolCreateInfo descriptorPoolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO, nullptr, 0,
-                                                            1, 1, &size};
+        const VkDescriptorPoolCreateInfo descriptorPoolInfo{
+            VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO, nullptr, 0, 1, 1, &size};
         check(vkCreateDescriptorPool(d, &descriptorPoolInfo, nullptr, &descriptorPool_), "vkCreateDescriptorPool");
         const VkDescriptorSetAllocateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO, nullptr,
                                                   descriptorPool_, 1, &pipeline_.setLayout};
         check(vkAllocateDescriptorSets(d, &setInfo, &set_), "vkAllocateDescriptorSets");
         const VkDescriptorBufferInfo bufferInfo{vulkan::native(scene.objects()), 0, DrawScene::objectSize};
-        const VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET, nullptr, set_, 0, 0, 1,
+        const VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,    nullptr, set_,        0,      0, 1,
                                          VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, nullptr, &bufferInfo, nullptr};
         vkUpdateDescriptorSets(d, 1, &write, 0, nullptr);
     }
@@ -62,9 +62,13 @@ public:
         check(vkBeginCommandBuffer(commandBuffer_, &begin), "vkBeginCommandBuffer");
         std::array<VkClearValue, 2> clears{};
         clears[1].depthStencil = {clearDepth_, 0};
-        const VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO, nullptr, framebuffer_.renderPass,
-                                         framebuffer_.framebuffer, {{0, 0}, {DrawScene::size, DrawScene::size}},
-                                         std::uint32_t(clears.size()), clears.data()};
+        const VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO,
+                                         nullptr,
+                                         framebuffer_.renderPass,
+                                         framebuffer_.framebuffer,
+                                         {{0, 0}, {DrawScene::size, DrawScene::size}},
+                                         std::uint32_t(clears.size()),
+                                         clears.data()};
         vkCmdBeginRenderPass(commandBuffer_, &pass, VK_SUBPASS_CONTENTS_INLINE);
         // Negative height: the same row-0-at-top convention the RHI uses.
         const VkViewport viewport{0, float(DrawScene::size), float(DrawScene::size), -float(DrawScene::size), 0, 1};
@@ -85,8 +89,8 @@ public:
         vkCmdEndRenderPass(commandBuffer_);
         check(vkEndCommandBuffer(commandBuffer_), "vkEndCommandBuffer");
 
-        const VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO, nullptr, 0, nullptr, nullptr, 1, &commandBuffer_, 0,
-                                  nullptr};
+        const VkSubmitInfo submit{
+            VK_STRUCTURE_TYPE_SUBMIT_INFO, nullptr, 0, nullptr, nullptr, 1, &commandBuffer_, 0, nullptr};
         check(vkQueueSubmit(device_.queue, 1, &submit, fence_), "vkQueueSubmit");
         check(vkWaitForFences(device_.device, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
         check(vkResetFences(device_.device, 1, &fence_), "vkResetFences");

@@ -37,7 +37,8 @@ void writeOutputs(const RenderOptions& options, const ShadowPictures& pictures, 
         parity::writePicture(written.back(), pictures.cascades);
     }
     if (!options.atlas.empty()) {
-        const std::string prefix = several ? fmt::format("{}-{}", options.atlas, pictures.configuration) : options.atlas;
+        const std::string prefix =
+            several ? fmt::format("{}-{}", options.atlas, pictures.configuration) : options.atlas;
         for (const AtlasPictures& atlas : pictures.atlases) {
             const std::string stem = fmt::format("{}-{}", prefix, atlas.name);
             parity::writeExr(stem + ".exr", atlas.depth);
@@ -64,10 +65,9 @@ void render(const RenderOptions& options)
     std::vector<ShadowPictures> all;
     for (const std::string& configuration : configurations) {
         stopIfInterrupted();
-        all.push_back(renderShadowScene(configuration, loaded.scene, frame,
-                                        {.validate = options.validate,
-                                         .readAtlases = !options.atlas.empty(),
-                                         .bake = bake ? &*bake : nullptr}));
+        all.push_back(renderShadowScene(
+            configuration, loaded.scene, frame,
+            {.validate = options.validate, .readAtlases = !options.atlas.empty(), .bake = bake ? &*bake : nullptr}));
         printStats(all.back(), loaded.scene);
     }
     stopIfInterrupted();
@@ -96,7 +96,7 @@ void addRenderCommand(CLI::App& app)
         ->check(CLI::Validator(
             [](std::string& path) {
                 return parity::isPicturePath(path) ? std::string()
-                                           : fmt::format("'{}' does not end in .png or .exr", path);
+                                                   : fmt::format("'{}' does not end in .png or .exr", path);
             },
             "FILE"))
         ->capture_default_str();

@@ -29,8 +29,8 @@ glm::vec3 colorOf(const Json& value, const std::string& source, const char* fiel
 render::AmbientLight ambientOf(const Json& object, const std::string& source)
 {
     if (!object.is_object())
-        throw rhi::Error(fmt::format("{}: ambient: {} is not an object, allowed fields color, intensity, ground", source,
-                                     object.dump()));
+        throw rhi::Error(fmt::format("{}: ambient: {} is not an object, allowed fields color, intensity, ground",
+                                     source, object.dump()));
     render::AmbientLight ambient;
     for (const auto& [key, value] : object.items()) {
         if (key == "color") {
@@ -43,7 +43,8 @@ render::AmbientLight ambientOf(const Json& object, const std::string& source)
                                              value.dump(), render::kMaxAmbientIntensity));
             ambient.intensity = value.get<float>();
         } else {
-            throw rhi::Error(fmt::format("{}: ambient.{}: unknown field, allowed color, intensity, ground", source, key));
+            throw rhi::Error(
+                fmt::format("{}: ambient.{}: unknown field, allowed color, intensity, ground", source, key));
         }
     }
     try {
@@ -64,12 +65,10 @@ float anisotropyOf(const Json& value, const std::string& source)
 
 std::uint32_t msaaOf(const Json& value, const std::string& source)
 {
-    const bool allowed = value.is_number_integer() &&
-                         std::find(std::begin(kMsaaCounts), std::end(kMsaaCounts), value.get<std::int64_t>()) !=
-                             std::end(kMsaaCounts);
+    const bool allowed = value.is_number_integer() && std::find(std::begin(kMsaaCounts), std::end(kMsaaCounts),
+                                                                value.get<std::int64_t>()) != std::end(kMsaaCounts);
     if (!allowed)
-        throw rhi::Error(fmt::format("{}: msaa: {} is not a sample count, allowed 1, 2, 4 or 8", source,
-                                     value.dump()));
+        throw rhi::Error(fmt::format("{}: msaa: {} is not a sample count, allowed 1, 2, 4 or 8", source, value.dump()));
     return value.get<std::uint32_t>();
 }
 

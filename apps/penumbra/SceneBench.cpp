@@ -47,8 +47,14 @@ struct ConfigurationResult {
 // Each pass's GPU time of one frame, in kBenchPassNames order; 0 for a pass the frame does not draw.
 std::array<double, kPasses> passTimes(const render::FrameStats& s, double referenceMs)
 {
-    return {s.depthPrepassMs.value_or(0.0),       s.atlasPassMs.value_or(0.0), s.localAtlasPassMs.value_or(0.0),
-            s.screenSpaceShadowsMs.value_or(0.0), s.litPassMs.value_or(0.0),     s.resolvePassMs.value_or(0.0), referenceMs, s.staticAtlasPassMs.value_or(0.0)};
+    return {s.depthPrepassMs.value_or(0.0),
+            s.atlasPassMs.value_or(0.0),
+            s.localAtlasPassMs.value_or(0.0),
+            s.screenSpaceShadowsMs.value_or(0.0),
+            s.litPassMs.value_or(0.0),
+            s.resolvePassMs.value_or(0.0),
+            referenceMs,
+            s.staticAtlasPassMs.value_or(0.0)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -66,8 +72,8 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
 {
     auto device = createDevice(toolDeviceDesc(configuration, options.validate));
     if (!device->capabilities().timestamps)
-        throw rhi::Error(fmt::format("{}: the device has no timestamp queries, so passes cannot be timed",
-                                     configuration));
+        throw rhi::Error(
+            fmt::format("{}: the device has no timestamp queries, so passes cannot be timed", configuration));
     render::SceneRenderer renderer(*device, scene);
     if (bake)
         renderer.useBakedShadows(*bake);
@@ -78,7 +84,8 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         stopIfInterrupted();
         const auto start = std::chrono::steady_clock::now();
         render::FrameStats stats = renderer.render(scene.camera, frame);
-        const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const double wallMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         // After the frame, on its plan and atlas, in a submission of its own: not part of the frame's wall time.
         const double referenceMs = reference.render(scene.camera, frame, renderer);
         showProgress(configuration, i + 1, total);
@@ -91,7 +98,8 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         result.last = std::move(stats);
     }
     if (const auto messages = device->debugMessages(); !messages.empty())
-        throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
+        throw rhi::Error(
+            fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return result;
 }
 
@@ -128,8 +136,7 @@ std::string staticMapsMode(const render::FrameDesc& frame, const SceneBenchOptio
 
 nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& options, const render::FrameDesc& frame)
 {
-    nlohmann::json passes = nlohmann::json::object(), mins = nlohmann::json::object(),
-                   maxs = nlohmann::json::object();
+    nlohmann::json passes = nlohmann::json::object(), mins = nlohmann::json::object(), maxs = nlohmann::json::object();
     for (std::size_t p = 0; p < kPasses; ++p) {
         passes[kBenchPassNames[p]] = r.passes[p].median();
         mins[kBenchPassNames[p]] = r.passes[p].min();
@@ -169,11 +176,13 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
     fmt::print("{:<24} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>11} {:>9}\n", "configuration", "frame ms",
                "depth", "atlas", "local", "ss shadow", "lit", "resolve", "reference", "ours / ref", "frame max");
     for (const ConfigurationResult& r : results)
-        fmt::print("{:<24} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>11.3f} {:>9.2f}\n",
-                   r.configuration, r.frame.median(), r.passes[passIndex("depth")].median(),
-                   r.passes[passIndex("directionalAtlas")].median(), r.passes[passIndex("otherAtlas")].median(),
-                   r.passes[passIndex("screenSpaceShadows")].median(), r.passes[passIndex("lit")].median(), r.passes[passIndex("resolve")].median(),
-                   r.passes[passIndex("reference")].median(), litOverReference(r), r.frame.max());
+        fmt::print(
+            "{:<24} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f} {:>11.3f} {:>9.2f}\n",
+            r.configuration, r.frame.median(), r.passes[passIndex("depth")].median(),
+            r.passes[passIndex("directionalAtlas")].median(), r.passes[passIndex("otherAtlas")].median(),
+            r.passes[passIndex("screenSpaceShadows")].median(), r.passes[passIndex("lit")].median(),
+            r.passes[passIndex("resolve")].median(), r.passes[passIndex("reference")].median(), litOverReference(r),
+            r.frame.max());
     if (results.size() == 2 && results[1].frame.median() > 0.0)
         fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,
                    results[0].frame.median() / results[1].frame.median());

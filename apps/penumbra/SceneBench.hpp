@@ -24,7 +24,7 @@ struct SceneBenchOptions {
 // local atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass; then the
 // static shadow maps drawn in the frame (drawn first, listed last to keep the older names' order).
 inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "otherAtlas", "screenSpaceShadows",
-                                                  "lit", "resolve", "reference", "staticAtlas"};
+                                                  "lit",   "resolve",          "reference",  "staticAtlas"};
 
 // Prints a table and returns {"scene": [one object per configuration: configuration, scene, width, height,
 // frames, warmup, frameMs (median), frameMsMin, frameMsMax, passes {name: median ms}, passesMin, passesMax,

@@ -74,8 +74,9 @@ CLI::Validator shadowPathValidator()
 {
     return CLI::Validator(
         [](std::string& s) {
-            return parseShadowPath(s) ? std::string()
-                                      : fmt::format("'{}' is not a shadow path: {}", s, fmt::join(kShadowPathNames, ", "));
+            return parseShadowPath(s)
+                       ? std::string()
+                       : fmt::format("'{}' is not a shadow path: {}", s, fmt::join(kShadowPathNames, ", "));
         },
         "PATH");
 }
@@ -91,9 +92,9 @@ CLI::Validator filterValidator()
 {
     return CLI::Validator(
         [](std::string& s) {
-            return shadows::filterFromCommandName(s) ? std::string()
-                                                     : fmt::format("'{}' is not one of {}", s,
-                                                                   shadows::filterCommandNames());
+            return shadows::filterFromCommandName(s)
+                       ? std::string()
+                       : fmt::format("'{}' is not one of {}", s, shadows::filterCommandNames());
         },
         "FILTER");
 }
@@ -110,7 +111,8 @@ CLI::Validator projectionValidator()
 
 void addSceneOptions(CLI::App& command, SceneOptions& options)
 {
-    command.add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
+    command
+        .add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
         ->check(CLI::Validator([](std::string& s) { return validateScene(s); }, "SCENE"))
         ->capture_default_str();
     command
@@ -150,8 +152,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                     "Where every light's normal bias goes: receiver (shadow lookups move towards the light, the "
                     "default) or caster (the shadow pass moves casters away from it)")
         ->check(CLI::IsMember({"receiver", "caster"}));
-    command.add_option("--settings", options.settings,
-                       "Shadow settings JSON file, with optional \"ambient\" object and \"anisotropy\" number")
+    command
+        .add_option("--settings", options.settings,
+                    "Shadow settings JSON file, with optional \"ambient\" object and \"anisotropy\" number")
         ->check(CLI::ExistingFile);
     command
         .add_option("--filter", options.filter,
@@ -201,8 +204,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                     "onDemand (kept until asked)")
         ->check(CLI::Validator(
             [](std::string& s) {
-                return shadows::parseStaticShadowUpdate(s) ? std::string()
-                                                           : fmt::format("'{}' is not everyFrame, onChange or onDemand", s);
+                return shadows::parseStaticShadowUpdate(s)
+                           ? std::string()
+                           : fmt::format("'{}' is not everyFrame, onChange or onDemand", s);
             },
             "MODE"));
     command
@@ -212,9 +216,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                                 scene::kShadowUpdateNames))
         ->check(CLI::Validator(
             [](std::string& s) {
-                return isLightShadowUpdate(s) ? std::string()
-                                              : fmt::format("'{}' is not NAME=MODE with MODE one of {}", s,
-                                                            scene::kShadowUpdateNames);
+                return isLightShadowUpdate(s)
+                           ? std::string()
+                           : fmt::format("'{}' is not NAME=MODE with MODE one of {}", s, scene::kShadowUpdateNames);
             },
             "NAME=MODE"));
     command
@@ -227,9 +231,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
             },
             "CASTERS"));
     command
-        .add_option("--baked", options.baked,
-                    "Static shadow maps from this `penumbra bake` folder instead of drawing static casters; a bake that "
-                    "does not match the scene, its lights or settings is refused")
+        .add_option(
+            "--baked", options.baked,
+            "Static shadow maps from this `penumbra bake` folder instead of drawing static casters; a bake that "
+            "does not match the scene, its lights or settings is refused")
         ->check(CLI::ExistingDirectory);
 }
 

@@ -15,7 +15,8 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --msaa, --shadow-path, --filter, --light-size, --projection,
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --msaa, --shadow-path, --filter, --light-size,
+// --projection,
 // --dynamic, --static-maps, --realtime-casters.
 struct SceneOptions {
     std::string scene = "test";
@@ -23,20 +24,20 @@ struct SceneOptions {
     std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
     std::optional<float> anisotropy; // empty: the settings file's, or FrameDesc's default
-    std::string normalBiasSide;      // "receiver" or "caster" for every light; empty: each light's own
+    std::string normalBiasSide; // "receiver" or "caster" for every light; empty: each light's own
     std::string settings;
     std::string size = "1280x720";
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
     std::optional<std::uint32_t> msaa; // render::FrameDesc::msaa; empty: the settings file's, or 1
     std::string shadowPath; // kShadowPathNames (render::FrameDesc::shadowPath); empty: the settings file's, or forward
-    std::string filter;             // shadows::filterFromCommandName; empty: each light's own
+    std::string filter; // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
-    std::string projection;         // shadows::projectionFromName; empty: the settings file's
+    std::string projection; // shadows::projectionFromName; empty: the settings file's
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
-    std::string staticMaps;      // shadows::StaticShadowUpdate by its JSON name; empty: the settings file's
+    std::string staticMaps; // shadows::StaticShadowUpdate by its JSON name; empty: the settings file's
     std::vector<std::string> lightStaticMaps; // NAME=MODE: a light's own static map mode (applyLightShadowUpdate)
     std::string realtimeCasters; // shadows::RealtimeCasters by its JSON name; empty: the settings file's
-    std::string baked;           // a `penumbra bake` folder: static maps from it; empty: none
+    std::string baked; // a `penumbra bake` folder: static maps from it; empty: none
 };
 
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
@@ -63,8 +64,8 @@ struct LoadedScene {
     std::vector<std::string> notes; // from the glTF loader
 };
 
-// The built-in scene or glTF file, with --camera, --light, --normal-bias-side and --dynamic applied. Throws scene::SceneError (a glTF file's
-// errors name it) or rhi::Error.
+// The built-in scene or glTF file, with --camera, --light, --normal-bias-side and --dynamic applied. Throws
+// scene::SceneError (a glTF file's errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 
 // --baked's folder read (shadows::readStaticShadowBake), or nullopt without --baked.

@@ -105,22 +105,27 @@ ShadowBench::ShadowBench(const std::vector<std::string>& configurations, double 
             c->frame = scenario.frame;
             Case& bench = *c;
             const std::string name = fmt::format("shadows/{}/{}", scenario.name, configuration);
-            benchmark::RegisterBenchmark(name.c_str(), [&bench](benchmark::State& state) {
-                for (auto _ : state) {
-                    const auto start = std::chrono::steady_clock::now();
-                    bench.last = bench.renderer->render(bench.scene.camera, bench.frame);
-                    bench.frameMs +=
-                        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-                    bench.atlasMs += bench.last.atlasPassMs.value_or(0.0);
-                    bench.localMs += bench.last.localAtlasPassMs.value_or(0.0);
-                    bench.litMs += bench.last.litPassMs.value_or(0.0);
-                    ++bench.frames;
-                }
-                state.counters["atlas_ms"] = bench.atlasMs / bench.frames;
-                state.counters["other_atlas_ms"] = bench.localMs / bench.frames;
-                state.counters["lit_ms"] = bench.litMs / bench.frames;
-                state.counters["caster_draws"] = bench.last.casterDraws + bench.last.localCasterDraws;
-            })->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(minTime);
+            benchmark::RegisterBenchmark(
+                name.c_str(),
+                [&bench](benchmark::State& state) {
+                    for (auto _ : state) {
+                        const auto start = std::chrono::steady_clock::now();
+                        bench.last = bench.renderer->render(bench.scene.camera, bench.frame);
+                        bench.frameMs +=
+                            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+                        bench.atlasMs += bench.last.atlasPassMs.value_or(0.0);
+                        bench.localMs += bench.last.localAtlasPassMs.value_or(0.0);
+                        bench.litMs += bench.last.litPassMs.value_or(0.0);
+                        ++bench.frames;
+                    }
+                    state.counters["atlas_ms"] = bench.atlasMs / bench.frames;
+                    state.counters["other_atlas_ms"] = bench.localMs / bench.frames;
+                    state.counters["lit_ms"] = bench.litMs / bench.frames;
+                    state.counters["caster_draws"] = bench.last.casterDraws + bench.last.localCasterDraws;
+                })
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond)
+                ->MinTime(minTime);
             cases_.push_back(std::move(c));
         }
     }

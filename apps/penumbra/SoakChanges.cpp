@@ -69,9 +69,8 @@ void moveLight(std::mt19937& random, SoakState& state)
     std::size_t i = std::uniform_int_distribution<std::size_t>(0, lights - 1)(random);
     if (i < scene.lights.size()) {
         // Anywhere in the upper half of the sky.
-        scene.lights[i].direction =
-            glm::normalize(glm::vec3(uniform(random, -1.0f, 1.0f), uniform(random, -1.0f, -0.2f),
-                                     uniform(random, -1.0f, 1.0f)));
+        scene.lights[i].direction = glm::normalize(
+            glm::vec3(uniform(random, -1.0f, 1.0f), uniform(random, -1.0f, -0.2f), uniform(random, -1.0f, 1.0f)));
         return;
     }
     i -= scene.lights.size();
@@ -96,11 +95,26 @@ void removeLight(std::mt19937& random, scene::Scene& scene)
 
 std::string_view soakChangeName(SoakChange change)
 {
-    static constexpr std::array<std::string_view, kSoakChangeCount> names = {
-        "directionalAtlasSize", "localAtlasSize", "directionalAtlasFormat", "localAtlasFormat", "directionalFilter",
-        "localFilter", "lightFilter", "cascadeCount", "cascadeBlend", "pointMode", "cubeMapSize", "softSamples",
-        "anisotropy", "depthPrepass", "addPointLight", "addSpotLight", "moveLight", "removeLight", "resize",
-        "sceneReload"};
+    static constexpr std::array<std::string_view, kSoakChangeCount> names = {"directionalAtlasSize",
+                                                                             "localAtlasSize",
+                                                                             "directionalAtlasFormat",
+                                                                             "localAtlasFormat",
+                                                                             "directionalFilter",
+                                                                             "localFilter",
+                                                                             "lightFilter",
+                                                                             "cascadeCount",
+                                                                             "cascadeBlend",
+                                                                             "pointMode",
+                                                                             "cubeMapSize",
+                                                                             "softSamples",
+                                                                             "anisotropy",
+                                                                             "depthPrepass",
+                                                                             "addPointLight",
+                                                                             "addSpotLight",
+                                                                             "moveLight",
+                                                                             "removeLight",
+                                                                             "resize",
+                                                                             "sceneReload"};
     return names.at(std::size_t(change));
 }
 
@@ -116,24 +130,41 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
 {
     shadows::ShadowSettings& s = state.frame.shadows;
     switch (change) {
-    case SoakChange::DirectionalAtlasSize: s.directional.atlasSize = pick(random, kAtlasSizes); break;
-    case SoakChange::LocalAtlasSize: s.local.atlasSize = pick(random, kAtlasSizes); break;
-    case SoakChange::DirectionalAtlasFormat: s.directional.atlasFormat = pick(random, kDepthFormats); break;
-    case SoakChange::LocalAtlasFormat: s.local.atlasFormat = pick(random, kDepthFormats); break;
-    case SoakChange::DirectionalFilter: s.directional.filter = pick(random, kFilters); break;
-    case SoakChange::LocalFilter: s.local.filter = pick(random, kFilters); break;
-    case SoakChange::LightFilter: setLightFilter(random, state.scene); break;
-    case SoakChange::CascadeCount: s.directional.cascadeCount = uniform(random, 1u, 4u); break;
+    case SoakChange::DirectionalAtlasSize:
+        s.directional.atlasSize = pick(random, kAtlasSizes);
+        break;
+    case SoakChange::LocalAtlasSize:
+        s.local.atlasSize = pick(random, kAtlasSizes);
+        break;
+    case SoakChange::DirectionalAtlasFormat:
+        s.directional.atlasFormat = pick(random, kDepthFormats);
+        break;
+    case SoakChange::LocalAtlasFormat:
+        s.local.atlasFormat = pick(random, kDepthFormats);
+        break;
+    case SoakChange::DirectionalFilter:
+        s.directional.filter = pick(random, kFilters);
+        break;
+    case SoakChange::LocalFilter:
+        s.local.filter = pick(random, kFilters);
+        break;
+    case SoakChange::LightFilter:
+        setLightFilter(random, state.scene);
+        break;
+    case SoakChange::CascadeCount:
+        s.directional.cascadeCount = uniform(random, 1u, 4u);
+        break;
     case SoakChange::CascadeBlend:
-        s.directional.cascadeBlend =
-            pick(random, std::array{shadows::CascadeBlend::Hard, shadows::CascadeBlend::Soft,
-                                    shadows::CascadeBlend::Dither});
+        s.directional.cascadeBlend = pick(random, std::array{shadows::CascadeBlend::Hard, shadows::CascadeBlend::Soft,
+                                                             shadows::CascadeBlend::Dither});
         break;
     case SoakChange::PointMode:
         s.local.pointMode = s.local.pointMode == shadows::PointShadowMode::Atlas ? shadows::PointShadowMode::CubeMap
                                                                                  : shadows::PointShadowMode::Atlas;
         break;
-    case SoakChange::CubeMapSize: s.local.cubeMapSize = pick(random, kCubeSizes); break;
+    case SoakChange::CubeMapSize:
+        s.local.cubeMapSize = pick(random, kCubeSizes);
+        break;
     case SoakChange::SoftSamples:
         s.soft.blockerSamples = pick(random, std::array{16u, 32u, 64u});
         s.soft.filterSamples = pick(random, std::array{16u, 32u, 64u});
@@ -141,7 +172,9 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
     case SoakChange::Anisotropy:
         state.frame.maxAnisotropy = pick(random, std::array{1.0f, 2.0f, 4.0f, 8.0f, 16.0f});
         break;
-    case SoakChange::DepthPrepass: state.frame.depthPrepass = !state.frame.depthPrepass; break;
+    case SoakChange::DepthPrepass:
+        state.frame.depthPrepass = !state.frame.depthPrepass;
+        break;
     case SoakChange::AddPointLight:
         if (localLights(state.scene) < render::maxLitLocalLights)
             state.scene.pointLights.push_back({.name = fmt::format("soak point {}", state.scene.pointLights.size()),
@@ -157,13 +190,18 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
                                               .direction = {0.0f, -1.0f, 0.0f},
                                               .range = sceneRange(state.bounds)});
         break;
-    case SoakChange::MoveLight: moveLight(random, state); break;
-    case SoakChange::RemoveLight: removeLight(random, state.scene); break;
+    case SoakChange::MoveLight:
+        moveLight(random, state);
+        break;
+    case SoakChange::RemoveLight:
+        removeLight(random, state.scene);
+        break;
     case SoakChange::Resize:
         state.frame.width = uniform(random, std::max(16u, state.start.width / 2), state.start.width);
         state.frame.height = uniform(random, std::max(16u, state.start.height / 2), state.start.height);
         break;
-    case SoakChange::SceneReload: break;
+    case SoakChange::SceneReload:
+        break;
     }
 }
 

@@ -99,8 +99,8 @@ Sample warmupPeak(const std::vector<Sample>& samples, std::uint32_t warmup)
 void judge(const std::vector<Sample>& samples, const SoakOptions& options)
 {
     const Sample peak = warmupPeak(samples, options.warmup);
-    const auto afterWarmup = std::find_if(samples.begin(), samples.end(),
-                                          [&](const Sample& s) { return s.frame >= options.warmup; });
+    const auto afterWarmup =
+        std::find_if(samples.begin(), samples.end(), [&](const Sample& s) { return s.frame >= options.warmup; });
     const auto judged = samples.end() - std::max<std::ptrdiff_t>(1, (samples.end() - afterWarmup) / 4);
     Sample floor = *judged;
     for (auto s = judged; s != samples.end(); ++s) {
@@ -132,8 +132,8 @@ void printSample(const char* label, const Sample& s)
 void soak(const SoakOptions& options)
 {
     if (options.warmup >= options.frames)
-        throw rhi::Error(fmt::format("--warmup: {} leaves none of the {} --frames to judge", options.warmup,
-                                     options.frames));
+        throw rhi::Error(
+            fmt::format("--warmup: {} leaves none of the {} --frames to judge", options.warmup, options.frames));
     const LoadedScene loaded = loadScene(options.scene);
     const render::FrameDesc start = frameDesc(options.scene);
     rhi::DeviceDesc desc = toolDeviceDesc(options.backend, true);
@@ -191,9 +191,12 @@ void soak(const SoakOptions& options)
     printSample("warm-up peak", warmupPeak(samples, options.warmup));
     printSample("last checkpoint", samples.back());
     if (!options.json.empty()) {
-        nlohmann::json json = {{"scene", options.scene.scene}, {"configuration", options.backend},
-                               {"frames", options.frames},     {"seed", options.seed},
-                               {"warmup", options.warmup},     {"changes", nlohmann::json::object()},
+        nlohmann::json json = {{"scene", options.scene.scene},
+                               {"configuration", options.backend},
+                               {"frames", options.frames},
+                               {"seed", options.seed},
+                               {"warmup", options.warmup},
+                               {"changes", nlohmann::json::object()},
                                {"checkpoints", nlohmann::json::array()}};
         for (std::size_t c = 0; c < kSoakChangeCount; ++c)
             json["changes"][std::string(soakChangeName(SoakChange(c)))] = applied[c];
@@ -228,24 +231,30 @@ void addSoakCommand(CLI::App& app)
         ->check(CLI::Range(2u, 10'000'000u))
         ->capture_default_str();
     command->add_option("--seed", options->seed, "Seed of the changes")->capture_default_str();
-    command->add_option("--warmup", options->warmup, "Frames before the reference checkpoint (caches fill, the "
-                                                     "allocator settles)")
+    command
+        ->add_option("--warmup", options->warmup,
+                     "Frames before the reference checkpoint (caches fill, the "
+                     "allocator settles)")
         ->capture_default_str();
-    command->add_option("--check-every", options->checkEvery,
-                        "Frames between checkpoints (the starting lights and frame, measured)")
+    command
+        ->add_option("--check-every", options->checkEvery,
+                     "Frames between checkpoints (the starting lights and frame, measured)")
         ->check(CLI::Range(1u, 100'000u))
         ->capture_default_str();
-    command->add_option("--memory-tolerance", options->memoryToleranceMiB,
-                        "MiB of resident memory a checkpoint may hold above the reference one")
+    command
+        ->add_option("--memory-tolerance", options->memoryToleranceMiB,
+                     "MiB of resident memory a checkpoint may hold above the reference one")
         ->check(CLI::Range(0.0, 1e6))
         ->capture_default_str();
-    command->add_option("--api-validation", options->apiValidation,
-                        "on: the Vulkan validation layer and GL debug output (the RHI's own validation is always on); "
-                        "off measures the driver alone, without the layer's own bookkeeping")
+    command
+        ->add_option("--api-validation", options->apiValidation,
+                     "on: the Vulkan validation layer and GL debug output (the RHI's own validation is always on); "
+                     "off measures the driver alone, without the layer's own bookkeeping")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
-    command->add_option("--object-tolerance", options->objectTolerance,
-                        "Live objects of a kind the last checkpoints may hold above the warm-up's peak")
+    command
+        ->add_option("--object-tolerance", options->objectTolerance,
+                     "Live objects of a kind the last checkpoints may hold above the warm-up's peak")
         ->capture_default_str();
     command->add_option("--json", options->json, "Write the checkpoints and the changes applied as JSON");
     command->callback([options] {

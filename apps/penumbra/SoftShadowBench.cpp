@@ -66,13 +66,18 @@ SoftShadowBench::SoftShadowBench(const std::vector<std::string>& configurations,
             c->frame.shadows.soft.filterSamples = variant.filterSamples;
             Case& bench = *c;
             const std::string name = fmt::format("soft/{}/{}", variant.name, configuration);
-            benchmark::RegisterBenchmark(name.c_str(), [&bench](benchmark::State& state) {
-                for (auto _ : state) {
-                    bench.litMs += bench.renderer->render(bench.scene.camera, bench.frame).litPassMs.value_or(0.0);
-                    ++bench.frames;
-                }
-                state.counters["lit_ms"] = bench.meanLitMs();
-            })->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(minTime);
+            benchmark::RegisterBenchmark(
+                name.c_str(),
+                [&bench](benchmark::State& state) {
+                    for (auto _ : state) {
+                        bench.litMs += bench.renderer->render(bench.scene.camera, bench.frame).litPassMs.value_or(0.0);
+                        ++bench.frames;
+                    }
+                    state.counters["lit_ms"] = bench.meanLitMs();
+                })
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond)
+                ->MinTime(minTime);
             cases_.push_back(std::move(c));
         }
     }

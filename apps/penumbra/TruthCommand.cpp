@@ -141,8 +141,8 @@ void truth(const TruthOptions& options)
     for (const std::string& note : renderer.notes())
         fmt::print("  note: {}\n", note);
     if (const auto messages = device->debugMessages(); !messages.empty())
-        throw rhi::Error(fmt::format("{}: {} debug message(s), first: {}", options.backend, messages.size(),
-                                     messages[0]));
+        throw rhi::Error(
+            fmt::format("{}: {} debug message(s), first: {}", options.backend, messages.size(), messages[0]));
 
     const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
     const scene::RayCaster shadowRays(scene);
@@ -159,17 +159,21 @@ void truth(const TruthOptions& options)
                                                                 t.light, progressBar(fmt::format("'{}'", t.name)));
         t.raycast = std::move(trace.visibility);
         t.comparison = scene::compareWithTruth(gbuffer, t.raycast, t.rendered, trace.shadowEdges);
-        t.contactGapTexels = scene::contactGapTexels(
-            t.comparison, gbuffer, shadowRays, render::truthRays(scene, t.light),
-            [&](glm::vec3 position) { return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position); });
+        t.contactGapTexels =
+            scene::contactGapTexels(t.comparison, gbuffer, shadowRays, render::truthRays(scene, t.light),
+                                    [&](glm::vec3 position) {
+                                        return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position);
+                                    });
         nlohmann::json entry = lightReport(scene, t);
         if (wantsSoftTruth(options, scene, plans, t.light)) {
-            const scene::SoftVisibilityMap soft = scene::traceAreaLightVisibility(
-                scene, shadowRays, gbuffer, render::areaLightOf(scene, t.light), scene::kAreaLightRaysPerSide,
-                progressBar(fmt::format("'{}' area light", t.name)));
+            const scene::SoftVisibilityMap soft =
+                scene::traceAreaLightVisibility(scene, shadowRays, gbuffer, render::areaLightOf(scene, t.light),
+                                                scene::kAreaLightRaysPerSide,
+                                                progressBar(fmt::format("'{}' area light", t.name)));
             const scene::SoftTruthFigures figures = scene::compareSoftVisibility(soft, t.rendered);
             entry["sourceSize"] = render::lightSourceSize(scene, t.light);
-            entry["filter"] = shadows::shadowFilters()[std::size_t(render::plannedShadowFilter(plans, t.light))].command;
+            entry["filter"] =
+                shadows::shadowFilters()[std::size_t(render::plannedShadowFilter(plans, t.light))].command;
             entry["penumbraPixels"] = figures.penumbraPixels;
             entry["softCompared"] = figures.compared;
             entry["softMeanAbsError"] = figures.meanAbsError;
@@ -201,9 +205,10 @@ void truth(const TruthOptions& options)
 void addTruthCommand(CLI::App& app)
 {
     auto options = std::make_shared<TruthOptions>();
-    CLI::App* command = app.add_subcommand(
-        "truth", "Compare a scene's shadow maps with a CPU ray cast of the same pixels, per shadowed light: "
-                 "writes raycast.png, shadowmap.png, disagreement.png (acne red, leaks blue) and truth.json");
+    CLI::App* command =
+        app.add_subcommand("truth",
+                           "Compare a scene's shadow maps with a CPU ray cast of the same pixels, per shadowed light: "
+                           "writes raycast.png, shadowmap.png, disagreement.png (acne red, leaks blue) and truth.json");
     command->add_option("-b,--backend", options->backend, "One configuration name (vulkan, opengl-reversed, ...)")
         ->check(configurationValidator())
         ->capture_default_str();

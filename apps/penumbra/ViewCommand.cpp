@@ -36,18 +36,20 @@ void addViewCommand(CLI::App& app)
 {
     auto options = std::make_shared<viewer::ViewerOptions>();
     CLI::App* view = app.add_subcommand(
-        "view", "Open a window on a scene: orbit (left drag), fly (right drag, W A S D Q E), zoom (scroll), settings panel");
+        "view",
+        "Open a window on a scene: orbit (left drag), fly (right drag, W A S D Q E), zoom (scroll), settings panel");
     view->add_option("-b,--backend", options->configuration,
                      "vulkan or opengl, or any configuration name (vulkan-reversed, opengl-noclip, ...)")
         ->check(configurationValidator());
-    view->add_option("--scene", options->scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames));
+    view->add_option("--scene", options->scene,
+                     fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames));
     view->add_option_function<std::string>(
-            "--size",
-            [options](const std::string& text) {
-                if (const std::string error = parseSize(text, *options); !error.empty())
-                    throw CLI::ValidationError("--size", error);
-            },
-            "Window size WIDTHxHEIGHT in pixels (default 1280x720)");
+        "--size",
+        [options](const std::string& text) {
+            if (const std::string error = parseSize(text, *options); !error.empty())
+                throw CLI::ValidationError("--size", error);
+        },
+        "Window size WIDTHxHEIGHT in pixels (default 1280x720)");
     CLI::Option* frames = view->add_option("--frames", options->frames, "Render this many frames, then exit")
                               ->check(CLI::Range(1u, 1000000u));
     view->add_option("--screenshot", options->screenshot, "PNG of the window's last frame, read back from the window")
@@ -66,7 +68,8 @@ void addViewCommand(CLI::App& app)
         ->check(msaaValidator())
         ->capture_default_str();
     view->add_option_function<std::string>(
-            "--shadow-path", [options](const std::string& name) { options->shadowPath = parseShadowPath(name).value(); },
+            "--shadow-path",
+            [options](const std::string& name) { options->shadowPath = parseShadowPath(name).value(); },
             shadowPathHelp())
         ->check(shadowPathValidator());
     addValidateFlag(*view, options->validate);
@@ -82,9 +85,10 @@ void addViewCommand(CLI::App& app)
                      "Every light's source size: degrees of angular diameter (directional), world units of radius "
                      "(spot, point)")
         ->check(CLI::NonNegativeNumber);
-    view->add_option("--baked", options->baked,
-                     "Static shadow maps from this `penumbra bake` folder; the viewer stops with the bake's message when "
-                     "the scene, a light or the static settings no longer match it")
+    view->add_option(
+            "--baked", options->baked,
+            "Static shadow maps from this `penumbra bake` folder; the viewer stops with the bake's message when "
+            "the scene, a light or the static settings no longer match it")
         ->check(CLI::ExistingDirectory);
     view->callback([options] { viewer::runViewer(*options); });
 }

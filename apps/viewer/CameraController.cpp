@@ -14,8 +14,7 @@ constexpr float kMaxPitch = 1.55f;
 
 CameraController::CameraController(const scene::Camera& start, float targetDistance)
     : camera_(start), target_(start.position + start.forward * targetDistance), distance_(targetDistance),
-      yaw_(std::atan2(start.forward.x, -start.forward.z)),
-      pitch_(std::asin(std::clamp(start.forward.y, -1.0f, 1.0f)))
+      yaw_(std::atan2(start.forward.x, -start.forward.z)), pitch_(std::asin(std::clamp(start.forward.y, -1.0f, 1.0f)))
 {
 }
 
@@ -41,8 +40,8 @@ void CameraController::update(const CameraInput& input)
     distance_ *= std::pow(kZoomPerStep, input.zoom);
 
     const glm::vec3 right = glm::normalize(glm::cross(f, glm::vec3(0.0f, 1.0f, 0.0f)));
-    const glm::vec3 step =
-        (right * input.move.x + glm::vec3(0.0f, 1.0f, 0.0f) * input.move.y + f * input.move.z) * flySpeed * input.seconds;
+    const glm::vec3 step = (right * input.move.x + glm::vec3(0.0f, 1.0f, 0.0f) * input.move.y + f * input.move.z) *
+                           flySpeed * input.seconds;
     target_ += step;
     camera_.forward = f;
     camera_.up = {0.0f, 1.0f, 0.0f};

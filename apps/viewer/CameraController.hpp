@@ -10,10 +10,10 @@ namespace penumbra::viewer {
 // One frame of camera input, already freed from the window system.
 struct CameraInput {
     glm::vec2 orbit{0.0f}; // pixels dragged with the left button: turn around the target
-    glm::vec2 look{0.0f};  // pixels dragged with the right button: turn in place (fly)
-    float zoom = 0.0f;     // scroll steps, positive towards the target
-    glm::vec3 move{0.0f};  // fly keys: x right (D - A), y up (E - Q), z forward (W - S)
-    float seconds = 0.0f;  // frame time, scales `move`
+    glm::vec2 look{0.0f}; // pixels dragged with the right button: turn in place (fly)
+    float zoom = 0.0f; // scroll steps, positive towards the target
+    glm::vec3 move{0.0f}; // fly keys: x right (D - A), y up (E - Q), z forward (W - S)
+    float seconds = 0.0f; // frame time, scales `move`
 };
 
 // Orbit and fly camera. It starts as the given camera, bit for bit, so a viewer frame without
@@ -40,7 +40,7 @@ private:
     scene::Camera camera_;
     glm::vec3 target_;
     float distance_;
-    float yaw_;   // around world +y, 0 looking down -z
+    float yaw_; // around world +y, 0 looking down -z
     float pitch_; // above the horizon
 };
 

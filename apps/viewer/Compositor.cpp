@@ -13,8 +13,8 @@ Compositor::Compositor(rhi::Device& device)
     : device_(device), vertex_(device.createShader(shaders::load("fullscreen.vert"))),
       fragment_(device.createShader(shaders::load("picture.frag", {{"BINDING_PICTURE", kPictureBinding}}))),
       // Nearest: at equal sizes every pixel takes its own texel, so the window shows the scene's bytes.
-      sampler_(device.createSampler({.magFilter = rhi::Filter::Nearest,
-                                     .minFilter = rhi::Filter::Nearest, .debugName = "composed picture"})),
+      sampler_(device.createSampler(
+          {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "composed picture"})),
       commands_(device.createCommandList())
 {
     rhi::PipelineDesc desc;

@@ -42,8 +42,8 @@ ImGuiRenderer::ImGuiRenderer(rhi::Device& device, rhi::Format targetFormat)
     : device_(device), vertex_(device.createShader(shaders::load("imgui.vert", {{"BINDING_FRAME", kFrameBinding}}))),
       fragment_(device.createShader(shaders::load("imgui.frag", {{"BINDING_TEXTURE", kTextureBinding}}))),
       pipeline_(device.createPipeline(pipelineDesc(*vertex_, *fragment_, targetFormat))),
-      sampler_(device.createSampler({.magFilter = rhi::Filter::Linear,
-                                     .minFilter = rhi::Filter::Linear, .debugName = "imgui"})),
+      sampler_(device.createSampler(
+          {.magFilter = rhi::Filter::Linear, .minFilter = rhi::Filter::Linear, .debugName = "imgui"})),
       uniforms_(device, "imgui uniforms")
 {
     ImGuiIO& io = ImGui::GetIO();
@@ -55,8 +55,7 @@ ImGuiRenderer::ImGuiRenderer(rhi::Device& device, rhi::Format targetFormat)
                                   .height = std::uint32_t(height),
                                   .format = rhi::Format::RGBA8,
                                   .debugName = "imgui font atlas"});
-    device.writeTexture(*font_, 0, 0,
-                        std::as_bytes(std::span(pixels, std::size_t(width) * std::size_t(height) * 4)));
+    device.writeTexture(*font_, 0, 0, std::as_bytes(std::span(pixels, std::size_t(width) * std::size_t(height) * 4)));
     // ImGui's texture ids are void*; ours point at const RHI textures.
     io.Fonts->SetTexID(const_cast<rhi::Texture*>(font_.get()));
 }
@@ -64,13 +63,13 @@ ImGuiRenderer::ImGuiRenderer(rhi::Device& device, rhi::Format targetFormat)
 void ImGuiRenderer::reserve(std::size_t vertexBytes, std::size_t indexBytes)
 {
     if (!vertices_ || vertices_->desc().size < vertexBytes)
-        vertices_ = device_.createBuffer(
-            {.size = std::max<std::uint64_t>(vertexBytes * 2, 64 * 1024), .usage = rhi::BufferUsage::Vertex,
-             .debugName = "imgui vertices"});
+        vertices_ = device_.createBuffer({.size = std::max<std::uint64_t>(vertexBytes * 2, 64 * 1024),
+                                          .usage = rhi::BufferUsage::Vertex,
+                                          .debugName = "imgui vertices"});
     if (!indices_ || indices_->desc().size < indexBytes)
-        indices_ = device_.createBuffer(
-            {.size = std::max<std::uint64_t>(indexBytes * 2, 64 * 1024), .usage = rhi::BufferUsage::Index,
-             .debugName = "imgui indices"});
+        indices_ = device_.createBuffer({.size = std::max<std::uint64_t>(indexBytes * 2, 64 * 1024),
+                                         .usage = rhi::BufferUsage::Index,
+                                         .debugName = "imgui indices"});
 }
 
 void ImGuiRenderer::record(rhi::CommandList& commands, const ImDrawData& drawData)

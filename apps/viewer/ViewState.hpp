@@ -31,17 +31,17 @@ struct ViewState {
     bool cascadeView = false;
     bool atlasOverlay = false;
     float maxAnisotropy = 8.0f; // render::FrameDesc::maxAnisotropy
-    std::uint32_t msaa = 1;     // render::FrameDesc::msaa
+    std::uint32_t msaa = 1; // render::FrameDesc::msaa
     render::ShadowPath shadowPath = render::ShadowPath::Forward; // render::FrameDesc::shadowPath
     bool redrawStaticMaps = false; // once: SceneRenderer::requestStaticShadowUpdate (the on-demand mode's button)
 };
 
 // What the panel shows besides the state.
 struct PanelStatus {
-    std::string error;               // why the edited state is not applied; empty when it is
-    double frameMs = 0.0;            // wall time of the last frame
-    render::FrameStats stats;        // the last frame's passes
-    std::vector<std::string> notes;  // SceneRenderer::notes()
+    std::string error; // why the edited state is not applied; empty when it is
+    double frameMs = 0.0; // wall time of the last frame
+    render::FrameStats stats; // the last frame's passes
+    std::vector<std::string> notes; // SceneRenderer::notes()
     const rhi::Texture* atlasPicture = nullptr; // shown when atlasOverlay is on
     std::uint32_t msaaCounts = 1; // the sample counts the device offers the lit pass (rhi::Capabilities::sampleCounts)
 };

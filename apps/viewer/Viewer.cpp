@@ -46,7 +46,8 @@ public:
         : options_(options), window_(penumbra::parseConfiguration(options.configuration), options.width, options.height,
                                      fmt::format("Penumbra viewer: {} ({})", options.scene, options.configuration)),
           device_(createDevice(windowDeviceDesc(options.configuration, options.validate, window_.handle()))),
-          swapchain_(device_->createSwapchain()), input_(window_.handle()), scene_(loadViewerScene(options.scene, options.filter, options.lightSize)),
+          swapchain_(device_->createSwapchain()), input_(window_.handle()),
+          scene_(loadViewerScene(options.scene, options.filter, options.lightSize)),
           camera_(scene_.camera, orbitTargetDistance(scene_)), renderer_(*device_, scene_), compositor_(*device_)
     {
         applied_ = viewStateOf(scene_);
@@ -80,15 +81,17 @@ public:
             // The last frame of a screenshot run is read back from the window itself.
             const bool last = options_.frames && frame + 1 == *options_.frames;
             drawFrame(last && !options_.screenshot.empty() ? &windowPicture : nullptr);
-            status_.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            status_.frameMs =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             totalMs += status_.frameMs;
             ++frame;
         }
         if (!options_.screenshot.empty()) {
             if (windowPicture.bytes.empty())
-                throw rhi::Error(fmt::format("--screenshot {}: no frame reached the window (minimised, or closed before "
-                                             "--frames)",
-                                             options_.screenshot));
+                throw rhi::Error(
+                    fmt::format("--screenshot {}: no frame reached the window (minimised, or closed before "
+                                "--frames)",
+                                options_.screenshot));
             parity::writePng(options_.screenshot, windowPicture);
             fmt::print("screenshot: {}\n", options_.screenshot);
         }
@@ -119,8 +122,9 @@ private:
         render(size);
         const rhi::Texture& picture = applied_.cascadeView ? renderer_.cascadeImage() : renderer_.litImage();
         if (imgui_)
-            compositor_.compose(picture, size,
-                                [&](rhi::CommandList& commands) { imguiRenderer_->record(commands, *ImGui::GetDrawData()); });
+            compositor_.compose(picture, size, [&](rhi::CommandList& commands) {
+                imguiRenderer_->record(commands, *ImGui::GetDrawData());
+            });
         else
             compositor_.compose(picture, size);
         if (windowPicture)
@@ -183,7 +187,8 @@ private:
 void runViewer(const ViewerOptions& options)
 {
     if (options.width == 0 || options.height == 0)
-        throw rhi::Error(fmt::format("--size {}x{}: width and height must be at least 1", options.width, options.height));
+        throw rhi::Error(
+            fmt::format("--size {}x{}: width and height must be at least 1", options.width, options.height));
     ViewerApp app(options);
     app.run();
 }

@@ -15,15 +15,15 @@ struct ViewerOptions {
     std::uint32_t width = 1280;
     std::uint32_t height = 720;
     std::optional<std::uint32_t> frames; // render this many frames, then exit; else until closed
-    std::string screenshot;              // PNG of the window's last frame as read back from it, with `frames`
-    bool ui = true;                      // the settings panel
-    bool cascadeView = false;            // start with the panel's toggles on
+    std::string screenshot; // PNG of the window's last frame as read back from it, with `frames`
+    bool ui = true; // the settings panel
+    bool cascadeView = false; // start with the panel's toggles on
     bool atlasOverlay = false;
-    float maxAnisotropy = 8.0f;          // of texture sampling, 1 (off) to 16, as render::FrameDesc takes it
-    std::uint32_t msaa = 1;              // samples per pixel of the lit pass, as render::FrameDesc takes it
+    float maxAnisotropy = 8.0f; // of texture sampling, 1 (off) to 16, as render::FrameDesc takes it
+    std::uint32_t msaa = 1; // samples per pixel of the lit pass, as render::FrameDesc takes it
     render::ShadowPath shadowPath = render::ShadowPath::Forward; // as render::FrameDesc takes it
-    bool validate = false;               // the validation layer / debug output (penumbra view --validate)
-    std::string filter;             // every light's shadow filter (apps::applyLightOverrides); empty: their own
+    bool validate = false; // the validation layer / debug output (penumbra view --validate)
+    std::string filter; // every light's shadow filter (apps::applyLightOverrides); empty: their own
     std::optional<float> lightSize; // every light's source size
     std::optional<shadows::CascadeProjection> projection; // the directional cascades'; nullopt: the settings'
     std::string baked; // a `penumbra bake` folder: static maps from it (static.update onChange); empty: none

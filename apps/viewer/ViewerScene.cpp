@@ -14,7 +14,8 @@ namespace penumbra::viewer {
 scene::Scene loadViewerScene(const std::string& name, const std::string& filter, std::optional<float> lightSize)
 {
     const std::filesystem::path extension = std::filesystem::path(name).extension();
-    scene::Scene scene = extension == ".gltf" || extension == ".glb" ? scene::loadGltf(name).scene : apps::namedScene(name);
+    scene::Scene scene =
+        extension == ".gltf" || extension == ".glb" ? scene::loadGltf(name).scene : apps::namedScene(name);
     apps::applyLightOverrides(scene, filter, lightSize);
     return scene;
 }

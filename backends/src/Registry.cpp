@@ -62,7 +62,8 @@ rhi::DeviceDesc parseConfiguration(std::string_view name)
 std::string configurationName(const rhi::DeviceDesc& desc)
 {
     for (const rhi::NamedConfiguration& c : namedConfigurations())
-        if (c.desc.backend == desc.backend && c.desc.depthRange == desc.depthRange && c.desc.reversedZ == desc.reversedZ)
+        if (c.desc.backend == desc.backend && c.desc.depthRange == desc.depthRange &&
+            c.desc.reversedZ == desc.reversedZ)
             return c.name;
     return fmt::format("{}, depth {}{}", desc.backend,
                        desc.depthRange == rhi::DepthRange::ZeroToOne ? "[0, 1]" : "[-1, 1]",

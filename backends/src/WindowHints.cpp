@@ -4,9 +4,6 @@
 
 namespace penumbra {
 
-void prepareWindowHints(const rhi::DeviceDesc& desc)
-{
-    findBackend(desc.backend).prepareWindowHints(desc);
-}
+void prepareWindowHints(const rhi::DeviceDesc& desc) { findBackend(desc.backend).prepareWindowHints(desc); }
 
 } // namespace penumbra

@@ -26,7 +26,9 @@ std::optional<std::string> incompatibility(const Picture& a, const Picture& b)
 Figures colorFigures(const Picture& a, const Picture& b)
 {
     const ImageDifference d = compareImages(a.color, b.color);
-    return {.maxDifference = double(d.maxAbs), .psnr = d.psnr, .differingPixels = d.differingPixels,
+    return {.maxDifference = double(d.maxAbs),
+            .psnr = d.psnr,
+            .differingPixels = d.differingPixels,
             .pixels = std::size_t(a.width()) * a.height()};
 }
 

@@ -33,7 +33,8 @@ std::string debugMessages(const rhi::Device& device)
     std::string text;
     for (const std::string& m : messages)
         text += "\n  " + m;
-    return messages.empty() ? std::string() : fmt::format("{} validation or debug message(s):{}", messages.size(), text);
+    return messages.empty() ? std::string()
+                            : fmt::format("{} validation or debug message(s):{}", messages.size(), text);
 }
 
 void checkPictures(const std::vector<Picture>& pictures)
@@ -59,7 +60,9 @@ ConfigurationRun renderOne(const RenderFunction& render, const rhi::NamedConfigu
     } catch (const rhi::UnsupportedError& e) {
         return {configuration, ConfigurationRun::Status::Unsupported, e.what(), {}};
     } catch (const std::exception& e) {
-        return {configuration, ConfigurationRun::Status::Failed, fmt::format("cannot create the device: {}", e.what()),
+        return {configuration,
+                ConfigurationRun::Status::Failed,
+                fmt::format("cannot create the device: {}", e.what()),
                 {}};
     }
     try {
@@ -123,8 +126,8 @@ const Picture& ConfigurationRun::picture(std::string_view name) const
             return p;
         names += (names.empty() ? "" : ", ") + p.name;
     }
-    throw rhi::Error(fmt::format("{}: no picture named '{}'; it has: {}", configuration.name, name,
-                                 names.empty() ? "none" : names));
+    throw rhi::Error(
+        fmt::format("{}: no picture named '{}'; it has: {}", configuration.name, name, names.empty() ? "none" : names));
 }
 
 std::vector<ConfigurationRun> renderConfigurations(const RenderFunction& render,
@@ -148,8 +151,8 @@ Result compare(std::vector<ConfigurationRun> runs, const Options& options)
                 if (all[i].name() == options.reference)
                     reference = i;
             if (reference == all.size())
-                throw rhi::Error(fmt::format("parity: the reference configuration '{}' is not among those run",
-                                             options.reference));
+                throw rhi::Error(
+                    fmt::format("parity: the reference configuration '{}' is not among those run", options.reference));
         }
         if (reference < all.size() && rendered(all[reference]))
             for (std::size_t i = 0; i < all.size(); ++i)
@@ -169,11 +172,10 @@ Result run(const RenderFunction& render, const Options& options)
     // A reference that will not be run is refused before anything renders.
     if (options.pairing == Pairing::AgainstReference && !options.reference.empty()) {
         parseConfiguration(options.reference);
-        if (!options.configurations.empty() &&
-            std::find(options.configurations.begin(), options.configurations.end(), options.reference) ==
-                options.configurations.end())
-            throw rhi::Error(fmt::format("parity: the reference configuration '{}' is not among those to run",
-                                         options.reference));
+        if (!options.configurations.empty() && std::find(options.configurations.begin(), options.configurations.end(),
+                                                         options.reference) == options.configurations.end())
+            throw rhi::Error(
+                fmt::format("parity: the reference configuration '{}' is not among those to run", options.reference));
     }
     return compare(renderConfigurations(render, options.configurations, options.validate), options);
 }

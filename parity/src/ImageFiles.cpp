@@ -21,8 +21,8 @@ void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec, 
         throw rhi::Error(fmt::format("cannot write {}: no image writer: {}", path.string(), OIIO::geterror()));
     std::vector<unsigned char> encoded;
     OIIO::Filesystem::IOVecOutput memory(encoded);
-    if (!out->set_ioproxy(&memory) || !out->open(path.string(), spec) || !out->write_image(spec.format, pixels)
-        || !out->close())
+    if (!out->set_ioproxy(&memory) || !out->open(path.string(), spec) || !out->write_image(spec.format, pixels) ||
+        !out->close())
         throw rhi::Error(fmt::format("cannot write {}: {}", path.string(), out->geterror()));
     rhi::writeFileAtomically(path, {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
 }
@@ -32,8 +32,10 @@ void writeImage(const std::filesystem::path& path, const OIIO::ImageSpec& spec, 
 void writePng(const std::filesystem::path& path, const rhi::Image& image)
 {
     if (image.format != rhi::Format::RGBA8)
-        throw rhi::Error(fmt::format("{}: PNG needs RGBA8, the image is {}", path.string(), rhi::formatName(image.format)));
-    writeImage(path, OIIO::ImageSpec(int(image.width), int(image.height), 4, OIIO::TypeDesc::UINT8), image.bytes.data());
+        throw rhi::Error(
+            fmt::format("{}: PNG needs RGBA8, the image is {}", path.string(), rhi::formatName(image.format)));
+    writeImage(path, OIIO::ImageSpec(int(image.width), int(image.height), 4, OIIO::TypeDesc::UINT8),
+               image.bytes.data());
 }
 
 void writeExr(const std::filesystem::path& path, const rhi::DepthImage& depth)
@@ -42,7 +44,6 @@ void writeExr(const std::filesystem::path& path, const rhi::DepthImage& depth)
     spec.channelnames = {"Z"};
     writeImage(path, spec, depth.depth.data());
 }
-
 
 bool isPicturePath(const std::filesystem::path& path)
 {
@@ -56,8 +57,8 @@ void writePicture(const std::filesystem::path& path, const rhi::Image& image)
     if (path.extension() != ".exr")
         throw rhi::Error(fmt::format("{}: pictures are written as .png or .exr", path.string()));
     if (image.format != rhi::Format::RGBA8)
-        throw rhi::Error(fmt::format("{}: needs an RGBA8 picture, the image is {}", path.string(),
-                                     rhi::formatName(image.format)));
+        throw rhi::Error(
+            fmt::format("{}: needs an RGBA8 picture, the image is {}", path.string(), rhi::formatName(image.format)));
     std::vector<float> linear(image.bytes.size());
     for (std::size_t i = 0; i < image.bytes.size(); ++i) {
         const double stored = double(image.bytes[i]) / 255.0;
@@ -66,9 +67,6 @@ void writePicture(const std::filesystem::path& path, const rhi::Image& image)
     writeImage(path, OIIO::ImageSpec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT), linear.data());
 }
 
-void writeTextFile(const std::filesystem::path& path, std::string_view text)
-{
-    rhi::writeFileAtomically(path, text);
-}
+void writeTextFile(const std::filesystem::path& path, std::string_view text) { rhi::writeFileAtomically(path, text); }
 
 } // namespace penumbra::parity

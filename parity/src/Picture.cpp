@@ -14,20 +14,28 @@ Picture colorPicture(std::string name, rhi::Image image)
 
 Picture depthPicture(std::string name, rhi::DepthImage depth)
 {
-    return {.name = std::move(name), .kind = PictureKind::Depth, .depth = std::move(depth),
+    return {.name = std::move(name),
+            .kind = PictureKind::Depth,
+            .depth = std::move(depth),
             .space = DepthSpace::FromFarPlane};
 }
 
 Picture viewDepthPicture(std::string name, rhi::DepthImage depth, const glm::mat4& projection)
 {
-    return {.name = std::move(name), .kind = PictureKind::Depth, .depth = std::move(depth),
-            .space = DepthSpace::LinearView, .projection = projection};
+    return {.name = std::move(name),
+            .kind = PictureKind::Depth,
+            .depth = std::move(depth),
+            .space = DepthSpace::LinearView,
+            .projection = projection};
 }
 
 Picture depthPicture(std::string name, rhi::DepthImage depth, std::vector<float> comparable)
 {
-    return {.name = std::move(name), .kind = PictureKind::Depth, .depth = std::move(depth),
-            .space = DepthSpace::Given, .given = std::move(comparable)};
+    return {.name = std::move(name),
+            .kind = PictureKind::Depth,
+            .depth = std::move(depth),
+            .space = DepthSpace::Given,
+            .given = std::move(comparable)};
 }
 
 Picture floatPicture(std::string name, std::uint32_t width, std::uint32_t height, std::vector<float> values)
@@ -38,9 +46,12 @@ Picture floatPicture(std::string name, std::uint32_t width, std::uint32_t height
 const char* kindName(PictureKind kind)
 {
     switch (kind) {
-    case PictureKind::Color: return "colour";
-    case PictureKind::Depth: return "depth";
-    case PictureKind::Float: return "float";
+    case PictureKind::Color:
+        return "colour";
+    case PictureKind::Depth:
+        return "depth";
+    case PictureKind::Float:
+        return "float";
     }
     return "?";
 }
@@ -50,9 +61,12 @@ namespace {
 const char* spaceName(DepthSpace space)
 {
     switch (space) {
-    case DepthSpace::FromFarPlane: return "window depth from the far plane";
-    case DepthSpace::LinearView: return "linear view depth";
-    case DepthSpace::Given: return "the render function's own values";
+    case DepthSpace::FromFarPlane:
+        return "window depth from the far plane";
+    case DepthSpace::LinearView:
+        return "linear view depth";
+    case DepthSpace::Given:
+        return "the render function's own values";
     }
     return "?";
 }
@@ -71,10 +85,12 @@ std::string describe(const Picture& picture)
 {
     switch (picture.kind) {
     case PictureKind::Color:
-        return fmt::format("{} {}x{}", rhi::formatName(picture.color.format), picture.color.width, picture.color.height);
+        return fmt::format("{} {}x{}", rhi::formatName(picture.color.format), picture.color.width,
+                           picture.color.height);
     case PictureKind::Depth:
         return fmt::format("depth {}x{} ({})", picture.depth.width, picture.depth.height, spaceName(picture.space));
-    case PictureKind::Float: return fmt::format("float {}x{}", picture.depth.width, picture.depth.height);
+    case PictureKind::Float:
+        return fmt::format("float {}x{}", picture.depth.width, picture.depth.height);
     }
     return "?";
 }
@@ -100,8 +116,8 @@ void validate(const Picture& picture)
         return;
     }
     if (picture.depth.depth.size() != texels)
-        throw rhi::Error(fmt::format("picture '{}': {} values for {}", picture.name, picture.depth.depth.size(),
-                                     describe(picture)));
+        throw rhi::Error(
+            fmt::format("picture '{}': {} values for {}", picture.name, picture.depth.depth.size(), describe(picture)));
     if (picture.kind == PictureKind::Depth && picture.space == DepthSpace::Given && picture.given.size() != texels)
         throw rhi::Error(fmt::format("picture '{}': {} comparable values for {}", picture.name, picture.given.size(),
                                      describe(picture)));

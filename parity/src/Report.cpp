@@ -88,7 +88,9 @@ bool writeHeatMap(const std::filesystem::path& folder, const Result& result, con
     if (c.kind == PictureKind::Color) {
         if (!writableColor(pa.color))
             return false;
-        const auto asRgba8 = [](const rhi::Image& i) { return rhi::Image{i.width, i.height, rhi::Format::RGBA8, i.bytes}; };
+        const auto asRgba8 = [](const rhi::Image& i) {
+            return rhi::Image{i.width, i.height, rhi::Format::RGBA8, i.bytes};
+        };
         writePng(path, differenceHeatMap(asRgba8(pa.color), asRgba8(pb.color), kColorHeatScale));
         return true;
     }
@@ -103,9 +105,12 @@ bool writeHeatMap(const std::filesystem::path& folder, const Result& result, con
 const char* statusName(ConfigurationRun::Status status)
 {
     switch (status) {
-    case ConfigurationRun::Status::Rendered: return "rendered";
-    case ConfigurationRun::Status::Unsupported: return "unsupported";
-    case ConfigurationRun::Status::Failed: return "failed";
+    case ConfigurationRun::Status::Rendered:
+        return "rendered";
+    case ConfigurationRun::Status::Unsupported:
+        return "unsupported";
+    case ConfigurationRun::Status::Failed:
+        return "failed";
     }
     return "?";
 }

@@ -11,11 +11,20 @@ std::string escapeHtml(const std::string& text)
     std::string out;
     for (const char c : text) {
         switch (c) {
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '&': out += "&amp;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '&':
+            out += "&amp;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -77,9 +86,10 @@ std::string reportPage(const Result& result, const std::string& title, const std
                                 failureList(c.failures));
             const std::string heatMap = fmt::format("diff/{}-vs-{}-{}.png", a, b, c.picture);
             if (heatMaps.count(heatMap))
-                page += fmt::format("<img src=\"{0}/{1}.png\" alt=\"{0} {1}\"> <img src=\"{2}/{1}.png\" alt=\"{2} {1}\"> "
-                                    "<img src=\"{3}\" alt=\"difference\">\n",
-                                    a, name, b, heatMap);
+                page +=
+                    fmt::format("<img src=\"{0}/{1}.png\" alt=\"{0} {1}\"> <img src=\"{2}/{1}.png\" alt=\"{2} {1}\"> "
+                                "<img src=\"{3}\" alt=\"difference\">\n",
+                                a, name, b, heatMap);
         }
     }
     page += "</body></html>\n";

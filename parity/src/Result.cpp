@@ -51,7 +51,8 @@ std::vector<std::string> Result::figures() const
     std::vector<std::string> lines;
     for (const PairResult& pair : pairs)
         for (const PictureComparison& c : pair.pictures)
-            lines.push_back(fmt::format("{}: {}: {}{}", pairName(pair), c.picture, describe(c), c.pass() ? "" : " FAIL"));
+            lines.push_back(
+                fmt::format("{}: {}: {}{}", pairName(pair), c.picture, describe(c), c.pass() ? "" : " FAIL"));
     return lines;
 }
 
@@ -83,7 +84,8 @@ std::string Result::summary() const
                             std::isinf(worst.psnr) ? "identical" : fmt::format("PSNR >= {:.1f} dB", worst.psnr),
                             worst.differingPixels, worst.pixels);
         if (rawPairs > 0)
-            text += fmt::format(", raw depth bit-identical in {}/{} pairs of equal conventions", rawIdentical, rawPairs);
+            text +=
+                fmt::format(", raw depth bit-identical in {}/{} pairs of equal conventions", rawIdentical, rawPairs);
     }
     return text + (pass() ? "; within the thresholds" : "; BEYOND the thresholds");
 }

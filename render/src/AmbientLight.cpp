@@ -12,8 +12,8 @@ void checkColor(const glm::vec3& c, const char* field)
 {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(c[i]) || c[i] < 0.0f)
-            throw rhi::Error(fmt::format("{}: ({}, {}, {}): each component must be finite and at least 0", field, c.x,
-                                         c.y, c.z));
+            throw rhi::Error(
+                fmt::format("{}: ({}, {}, {}): each component must be finite and at least 0", field, c.x, c.y, c.z));
 }
 
 } // namespace
@@ -24,7 +24,8 @@ void validate(const AmbientLight& ambient)
     if (ambient.ground)
         checkColor(*ambient.ground, "ambient.ground");
     if (!(ambient.intensity >= 0.0f && ambient.intensity <= kMaxAmbientIntensity))
-        throw rhi::Error(fmt::format("ambient.intensity: {} is outside [0, {}]", ambient.intensity, kMaxAmbientIntensity));
+        throw rhi::Error(
+            fmt::format("ambient.intensity: {} is outside [0, {}]", ambient.intensity, kMaxAmbientIntensity));
 }
 
 } // namespace penumbra::render

@@ -13,10 +13,13 @@ namespace {
 shadows::ShadowCasterMode casterMode(scene::CasterMode mode)
 {
     switch (mode) {
-    case scene::CasterMode::Clip: return shadows::ShadowCasterMode::Clip;
-    case scene::CasterMode::Dither: return shadows::ShadowCasterMode::Dither;
+    case scene::CasterMode::Clip:
+        return shadows::ShadowCasterMode::Clip;
+    case scene::CasterMode::Dither:
+        return shadows::ShadowCasterMode::Dither;
     case scene::CasterMode::On:
-    case scene::CasterMode::Off: break;
+    case scene::CasterMode::Off:
+        break;
     }
     return shadows::ShadowCasterMode::Opaque;
 }
@@ -30,10 +33,7 @@ std::unique_ptr<rhi::Buffer> upload(rhi::Device& device, const std::vector<T>& d
     return buffer;
 }
 
-std::string debugName(const scene::TextureImage& image)
-{
-    return "texture '" + image.name + "'";
-}
+std::string debugName(const scene::TextureImage& image) { return "texture '" + image.name + "'"; }
 
 // The texture alpha that the first Clip material reading it as its base colour cuts at (its alphaCutoff over its
 // base colour's alpha, which multiplies the texture's): its mip levels keep level 0's alpha-tested coverage
@@ -53,13 +53,12 @@ std::optional<float> clipCutoffOf(const scene::Scene& scene, std::uint32_t image
 std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image,
                                             std::optional<float> alphaCutoff = std::nullopt)
 {
-    auto texture = device.createTexture({.width = image.width,
-                                         .height = image.height,
-                                         .mipLevels = mipLevelsFor(image),
-                                         .format = image.colorSpace == scene::TextureColorSpace::Srgb
-                                                       ? rhi::Format::RGBA8_SRGB
-                                                       : rhi::Format::RGBA8,
-                                         .debugName = debugName(image)});
+    auto texture = device.createTexture(
+        {.width = image.width,
+         .height = image.height,
+         .mipLevels = mipLevelsFor(image),
+         .format = image.colorSpace == scene::TextureColorSpace::Srgb ? rhi::Format::RGBA8_SRGB : rhi::Format::RGBA8,
+         .debugName = debugName(image)});
     rhi::writeMipChain(device, *texture, 0, std::as_bytes(std::span(image.rgba)), alphaCutoff);
     return texture;
 }
@@ -81,7 +80,10 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
         coverageSamplers_.push_back(
             device.createSampler(samplerDesc(image.sampler, 1.0f, debugName(image) + " (coverage)")));
     }
-    const scene::TextureImage white{.name = "white texel", .width = 1, .height = 1, .rgba = {255, 255, 255, 255},
+    const scene::TextureImage white{.name = "white texel",
+                                    .width = 1,
+                                    .height = 1,
+                                    .rgba = {255, 255, 255, 255},
                                     .sampler = {.mipFilter = scene::TextureMipFilter::None}};
     white_ = uploadTexture(device, white);
     whiteSampler_ = device.createSampler(samplerDesc(white.sampler, 1.0f, debugName(white)));
@@ -121,8 +123,8 @@ void GpuScene::setMaxAnisotropy(float anisotropy)
         return;
     anisotropy_ = anisotropy;
     for (std::size_t i = 0; i < samplers_.size(); ++i)
-        samplers_[i] = device_.createSampler(
-            samplerDesc(scene_.textures[i].sampler, anisotropy_, debugName(scene_.textures[i])));
+        samplers_[i] =
+            device_.createSampler(samplerDesc(scene_.textures[i].sampler, anisotropy_, debugName(scene_.textures[i])));
 }
 
 shadows::UvTransformRows GpuScene::uvTransform(const std::optional<scene::MaterialTexture>& texture)

@@ -53,8 +53,9 @@ std::string litConstants(const LitShaderFeatures& features)
                         static_cast<int>(DirectionalShadowSource::ScreenSpaceEdges),
                         static_cast<int>(features.directionalShadows), maxCollectedDirectionalLights);
     text += fmt::format("#define PENUMBRA_LIT_SAMPLES {}\n", features.samples);
-    text += fmt::format("#define PENUMBRA_BINDING_SCREEN_SPACE_SHADOWS {}\n#define PENUMBRA_BINDING_SCREEN_SPACE_DEPTH {}\n",
-                        kLitScreenSpaceShadowsBinding, kLitScreenSpaceDepthBinding);
+    text += fmt::format(
+        "#define PENUMBRA_BINDING_SCREEN_SPACE_SHADOWS {}\n#define PENUMBRA_BINDING_SCREEN_SPACE_DEPTH {}\n",
+        kLitScreenSpaceShadowsBinding, kLitScreenSpaceDepthBinding);
     return text;
 }
 
@@ -73,28 +74,26 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
     rhi::ShaderSource source = shaders::load(fileName);
     source.includes.push_back({"lit_constants.glsl", litConstants(features)});
     source.includes.push_back({"caster_constants.glsl", shadows::casterConstantsGlsl()});
-    source.includes.push_back({"shadow_constants.glsl",
-                               shadows::filterConstantsGlsl() + shadows::cascadeProjectionConstantsGlsl() +
-                                   shadows::shadowInterfaceGlsl() +
-                                   fmt::format("#define PENUMBRA_BINDING_DIRECTIONAL_SHADOWS {}\n"
-                                               "#define PENUMBRA_BINDING_DIRECTIONAL_ATLAS {}\n"
-                                               "#define PENUMBRA_BINDING_LOCAL_SHADOWS {}\n"
-                                               "#define PENUMBRA_BINDING_LOCAL_ATLAS {}\n"
-                                               "#define PENUMBRA_BINDING_SHADOW_CUBES {}\n"
-                                               "#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
-                                               "#define PENUMBRA_BINDING_POISSON_DISKS {}\n"
-                                               "#define PENUMBRA_BINDING_STATIC_SHADOWS {}\n"
-                                               "#define PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS {}\n"
-                                               "#define PENUMBRA_BINDING_STATIC_LOCAL_ATLAS {}\n"
-                                               "#define PENUMBRA_TENT_FILTERS {}\n"
-                                               "#define PENUMBRA_SOFT_FILTERS {}\n"
-                                               "#define PENUMBRA_SHADOW_CUBES {}\n",
-                                               kLitShadowBinding, kLitAtlasBinding, kLitLocalShadowBinding,
-                                               kLitLocalAtlasBinding, kLitShadowCubesBinding,
-                                               kLitShadowCubeDepthsBinding, kLitPoissonDisksBinding,
-                                               kLitStaticShadowBinding, kLitStaticDirectionalAtlasBinding,
-                                               kLitStaticLocalAtlasBinding, features.tentFilters ? 1 : 0,
-                                               features.softFilters ? 1 : 0, features.shadowCubes ? 1 : 0)});
+    source.includes.push_back(
+        {"shadow_constants.glsl",
+         shadows::filterConstantsGlsl() + shadows::cascadeProjectionConstantsGlsl() + shadows::shadowInterfaceGlsl() +
+             fmt::format("#define PENUMBRA_BINDING_DIRECTIONAL_SHADOWS {}\n"
+                         "#define PENUMBRA_BINDING_DIRECTIONAL_ATLAS {}\n"
+                         "#define PENUMBRA_BINDING_LOCAL_SHADOWS {}\n"
+                         "#define PENUMBRA_BINDING_LOCAL_ATLAS {}\n"
+                         "#define PENUMBRA_BINDING_SHADOW_CUBES {}\n"
+                         "#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
+                         "#define PENUMBRA_BINDING_POISSON_DISKS {}\n"
+                         "#define PENUMBRA_BINDING_STATIC_SHADOWS {}\n"
+                         "#define PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS {}\n"
+                         "#define PENUMBRA_BINDING_STATIC_LOCAL_ATLAS {}\n"
+                         "#define PENUMBRA_TENT_FILTERS {}\n"
+                         "#define PENUMBRA_SOFT_FILTERS {}\n"
+                         "#define PENUMBRA_SHADOW_CUBES {}\n",
+                         kLitShadowBinding, kLitAtlasBinding, kLitLocalShadowBinding, kLitLocalAtlasBinding,
+                         kLitShadowCubesBinding, kLitShadowCubeDepthsBinding, kLitPoissonDisksBinding,
+                         kLitStaticShadowBinding, kLitStaticDirectionalAtlasBinding, kLitStaticLocalAtlasBinding,
+                         features.tentFilters ? 1 : 0, features.softFilters ? 1 : 0, features.shadowCubes ? 1 : 0)});
     return source;
 }
 

@@ -27,7 +27,7 @@ namespace {
 
 constexpr std::uint32_t kStandInAtlasSize = 16; // an atlas without tiles in use
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
-constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f};     // the visibility view where no shadow map decides
+constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f}; // the visibility view where no shadow map decides
 
 shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect)
 {
@@ -83,8 +83,9 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
     std::vector<shadows::SpotShadowInput> inputs;
     for (const scene::SpotLight& l : lights)
         inputs.push_back({l.position, l.direction, l.range, l.outerAngle, l.shadowStrength, l.normalBias,
-                          l.slopeScaleBias, l.shadowNearPlane, lightFilter(l.shadowFilter, "spot light '" + l.name + "'"),
-                          l.sourceRadius, biasSide(l.normalBiasSide), staticUpdate(l.shadowUpdate)});
+                          l.slopeScaleBias, l.shadowNearPlane,
+                          lightFilter(l.shadowFilter, "spot light '" + l.name + "'"), l.sourceRadius,
+                          biasSide(l.normalBiasSide), staticUpdate(l.shadowUpdate)});
     return inputs;
 }
 
@@ -167,11 +168,12 @@ std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans
 {
     std::vector<std::string> notes;
     for (const shadows::ShadowPlanNote& note : plans.directional.report)
-        notes.push_back(note.lightIndex
-                            ? fmt::format("light {} ('{}') {}: {}", *note.lightIndex, scene.lights[*note.lightIndex].name,
-                                          withoutRealtime(plans, shadows::ShadowLightKind::Directional, *note.lightIndex),
-                                          note.reason)
-                            : fmt::format("no shadows: {}", note.reason));
+        notes.push_back(
+            note.lightIndex
+                ? fmt::format("light {} ('{}') {}: {}", *note.lightIndex, scene.lights[*note.lightIndex].name,
+                              withoutRealtime(plans, shadows::ShadowLightKind::Directional, *note.lightIndex),
+                              note.reason)
+                : fmt::format("no shadows: {}", note.reason));
     for (std::size_t i = maxLitDirectionalLights; i < scene.lights.size(); ++i)
         notes.push_back(fmt::format("light {} ('{}') is not drawn: beyond the limit of {} directional lights", i,
                                     scene.lights[i].name, maxLitDirectionalLights));
@@ -195,7 +197,8 @@ std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans
 void checkFrameSize(const FrameDesc& frame)
 {
     if (frame.width == 0 || frame.height == 0)
-        throw rhi::Error(fmt::format("frame size {}x{}: width and height must be at least 1", frame.width, frame.height));
+        throw rhi::Error(
+            fmt::format("frame size {}x{}: width and height must be at least 1", frame.width, frame.height));
 }
 
 // A plan drawn into atlases of other sizes would put its tiles in the wrong texels.
@@ -256,7 +259,8 @@ LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Mater
     LitObjectUniforms u{object.transform,
                         glm::transpose(glm::inverse(object.transform)),
                         material.baseColor,
-                        {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
+                        {material.metallic, material.roughness, material.alphaCutoff,
+                         static_cast<float>(material.caster)},
                         0,
                         0,
                         0,
@@ -357,8 +361,7 @@ std::optional<std::string> uncollectedShadows(const scene::Scene& scene, const s
 
 SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     : device_(device), gpuScene_(device, scene), shadowPass_(device, GpuScene::vertexFormat()),
-      localShadowPass_(device, GpuScene::vertexFormat()),
-      litVertex_(device.createShader(litShader("lit.vert"))),
+      localShadowPass_(device, GpuScene::vertexFormat()), litVertex_(device.createShader(litShader("lit.vert"))),
       litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, 1)),
       depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
       staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
@@ -368,7 +371,8 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
 {
     directionalStaticTiles_ =
         std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "directional atlas, static casters");
-    localStaticTiles_ = std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "local atlas, static casters");
+    localStaticTiles_ =
+        std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "local atlas, static casters");
 }
 
 SceneRenderer::~SceneRenderer() = default;
@@ -404,8 +408,9 @@ shadows::StaticShadowBake SceneRenderer::bakeStaticShadows(const std::string& co
         std::optional<rhi::DepthImage>& depth = isDirectional ? directional : local;
         if (!depth)
             depth = rhi::readDepth(device_, (isDirectional ? staticDirectionalAtlas() : staticLocalAtlas()).texture());
-        shadows::BakedShadowMap baked = shadows::bakeShadowMap(
-            map, isDirectional ? plan.directionalAtlas : plan.localAtlas, *depth, device_.conventions());
+        shadows::BakedShadowMap baked =
+            shadows::bakeShadowMap(map, isDirectional ? plan.directionalAtlas : plan.localAtlas, *depth,
+                                   device_.conventions());
         baked.lightName = lightName(scene, map.kind, map.lightIndex);
         baked.hash = hashes[i];
         bake.maps.push_back(std::move(baked));
@@ -427,8 +432,8 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
     const shadows::LocalShadowSettings& local = frame.shadows.local;
     const std::uint32_t localSize = plans.local.tiles.empty() ? kStandInAtlasSize : local.atlasSize;
     if (!localAtlas_ || localAtlas_->size() != localSize || localAtlas_->format() != local.atlasFormat)
-        localAtlas_ = std::make_unique<shadows::ShadowAtlas>(device_, localSize, local.atlasFormat,
-                                                             "local shadow atlas");
+        localAtlas_ =
+            std::make_unique<shadows::ShadowAtlas>(device_, localSize, local.atlasFormat, "local shadow atlas");
     // Cube-map mode keeps room for every cube it may plan; otherwise one small cube stands in for the binding.
     const bool cubeMode = local.pointMode == shadows::PointShadowMode::CubeMap;
     const std::uint32_t faceSize = cubeMode ? local.cubeMapSize : 16;
@@ -515,8 +520,8 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
     const std::size_t directional = std::min<std::size_t>(scene.lights.size(), maxLitDirectionalLights);
     if (light.kind == scene::LightKind::Directional) {
         if (light.index >= maxLitDirectionalLights)
-            throw rhi::Error(fmt::format("visibility view: directional light {} is not drawn (at most {})",
-                                         light.index, maxLitDirectionalLights));
+            throw rhi::Error(fmt::format("visibility view: directional light {} is not drawn (at most {})", light.index,
+                                         maxLitDirectionalLights));
         return static_cast<int>(light.index);
     }
     const std::size_t local = light.index + (light.kind == scene::LightKind::Point ? scene.spotLights.size() : 0);
@@ -545,10 +550,9 @@ void SceneRenderer::bindShadowMaps(rhi::CommandList& commands, const rhi::Unifor
     commands.bindTexture(kLitStaticLocalAtlasBinding, staticLocal.texture(), staticLocal.sampler());
 }
 
-void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
-                                  LitPipelines& pipelines, const rhi::UniformSlice& frameSlice,
-                                  const LitShaderFeatures& features, const rhi::UniformSlice& shadowUniforms,
-                                  const rhi::UniformSlice& localShadowUniforms,
+void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
+                                  const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
+                                  const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& localShadowUniforms,
                                   const rhi::UniformSlice& staticShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
@@ -655,14 +659,14 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     rhi::CommandList& commands = *commands_;
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
-    const StaticMapDraws staticDraws = staticShadows_->update(commands, frame.shadows, std::move(plans.staticMaps),
-                                                              casters, staticUpdateRequested_);
+    const StaticMapDraws staticDraws =
+        staticShadows_->update(commands, frame.shadows, std::move(plans.staticMaps), casters, staticUpdateRequested_);
     staticUpdateRequested_ = false;
     stats.staticCasterDraws = staticDraws.casterDraws;
     for (const StaticMapUpdate& update : staticDraws.updates)
         stats.staticMapUpdates.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(update.kind),
-                                                     update.lightIndex, lightName(scene, update.kind, update.lightIndex),
-                                                     update.reason));
+                                                     update.lightIndex,
+                                                     lightName(scene, update.kind, update.lightIndex), update.reason));
     const rhi::UniformSlice staticShadowUniforms = uniforms_.push(staticShadows_->plan().uniforms);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 1);
@@ -682,8 +686,8 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
         commands.writeTimestamp(*timestamps_, 3);
     const LitFrameUniforms litFrameUniforms = frameUniforms(camera, frame, LitView::Lit);
     const rhi::UniformSlice litFrame = uniforms_.push(litFrameUniforms);
-    LitShaderFeatures features = frameShaderFeatures(litFrameUniforms, plan_.uniforms, localPlan_.uniforms,
-                                                     staticShadows_->plan().uniforms);
+    LitShaderFeatures features =
+        frameShaderFeatures(litFrameUniforms, plan_.uniforms, localPlan_.uniforms, staticShadows_->plan().uniforms);
     const bool multisampled = frame.msaa > 1;
     std::optional<std::string> uncollected;
     if (frame.shadowPath == ShadowPath::ScreenSpace)
@@ -729,8 +733,8 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
         commands.writeTimestamp(*timestamps_, 7);
     if (frame.cascadeView)
         recordLitPass(commands, *cascadeTarget_, *litPipelines_,
-                      uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)),
-features, shadowUniforms, localShadowUniforms, staticShadowUniforms);
+                      uniforms_.push(frameUniforms(camera, frame, LitView::Cascades)), features, shadowUniforms,
+                      localShadowUniforms, staticShadowUniforms);
     if (frame.visibilityOf) {
         LitFrameUniforms u = frameUniforms(camera, frame, LitView::Visibility);
         u.visibilityLight = visibilityLight;

@@ -49,13 +49,11 @@ float pointTexel(const ShadowPlans& plans, std::uint32_t cubeFaceSize, const sce
     const shadows::CubeFace face = shadows::cubeFace(fromLight);
     const glm::vec3 axis = shadows::cubeFaceAxis(face);
     if (!plans.local.cubes.empty())
-        return perspectiveTexel(plans.local.cubes.at(static_cast<std::size_t>(shadow))
-                                    .faces[static_cast<std::size_t>(face)]
-                                    .projection,
-                                cubeFaceSize, axis, fromLight);
+        return perspectiveTexel(
+            plans.local.cubes.at(static_cast<std::size_t>(shadow)).faces[static_cast<std::size_t>(face)].projection,
+            cubeFaceSize, axis, fromLight);
     const std::size_t tile = static_cast<std::size_t>(shadow) + static_cast<std::size_t>(face);
-    return perspectiveTexel(plans.local.tiles.at(tile).view.projection, plans.local.atlas.tileSize(), axis,
-                            fromLight);
+    return perspectiveTexel(plans.local.tiles.at(tile).view.projection, plans.local.atlas.tileSize(), axis, fromLight);
 }
 
 } // namespace
@@ -119,8 +117,9 @@ float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& s
     }
     case scene::LightKind::Point: {
         const int shadow = plans.local.pointShadows.at(light.index);
-        return shadow < 0 ? 0.0f : pointTexel(plans, settings.local.cubeMapSize, scene.pointLights.at(light.index), shadow,
-                                                     position);
+        return shadow < 0
+                   ? 0.0f
+                   : pointTexel(plans, settings.local.cubeMapSize, scene.pointLights.at(light.index), shadow, position);
     }
     }
     return 0.0f;
@@ -151,8 +150,8 @@ LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaste
                                 const scene::TraceProgress& progress)
 {
     const scene::ShadowRayFrom rays = truthRays(scene, light);
-    const float margin = shadowEdgeMarginTexels(light.kind == scene::LightKind::Directional ? settings.directional.filter
-                                                                                            : settings.local.filter);
+    const float margin = shadowEdgeMarginTexels(
+        light.kind == scene::LightKind::Directional ? settings.directional.filter : settings.local.filter);
     // Half the rows' progress for each of the two traces.
     const auto half = [&](std::uint32_t offset) -> scene::TraceProgress {
         if (!progress)

@@ -9,12 +9,13 @@ namespace penumbra::render {
 shadows::ShadowFilter plannedShadowFilter(const ShadowPlans& plans, const scene::LightRef& light)
 {
     const auto noShadow = [&] {
-        return rhi::Error(fmt::format("{} {} has no shadow map in this frame", scene::lightKindName(light.kind),
-                                      light.index));
+        return rhi::Error(
+            fmt::format("{} {} has no shadow map in this frame", scene::lightKindName(light.kind), light.index));
     };
     switch (light.kind) {
     case scene::LightKind::Directional: {
-        const int slot = light.index < plans.directional.shadowSlots.size() ? plans.directional.shadowSlots[light.index] : -1;
+        const int slot =
+            light.index < plans.directional.shadowSlots.size() ? plans.directional.shadowSlots[light.index] : -1;
         if (slot < 0)
             throw noShadow();
         return plans.directional.lights[std::size_t(slot)].filter;

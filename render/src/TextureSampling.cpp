@@ -15,9 +15,12 @@ rhi::Filter filter(scene::TextureFilter f)
 rhi::MipFilter mipFilter(scene::TextureMipFilter f)
 {
     switch (f) {
-    case scene::TextureMipFilter::None: return rhi::MipFilter::None;
-    case scene::TextureMipFilter::Nearest: return rhi::MipFilter::Nearest;
-    case scene::TextureMipFilter::Linear: return rhi::MipFilter::Linear;
+    case scene::TextureMipFilter::None:
+        return rhi::MipFilter::None;
+    case scene::TextureMipFilter::Nearest:
+        return rhi::MipFilter::Nearest;
+    case scene::TextureMipFilter::Linear:
+        return rhi::MipFilter::Linear;
     }
     return rhi::MipFilter::None;
 }
@@ -25,9 +28,12 @@ rhi::MipFilter mipFilter(scene::TextureMipFilter f)
 rhi::AddressMode address(scene::TextureWrap wrap)
 {
     switch (wrap) {
-    case scene::TextureWrap::Repeat: return rhi::AddressMode::Repeat;
-    case scene::TextureWrap::ClampToEdge: return rhi::AddressMode::ClampToEdge;
-    case scene::TextureWrap::MirroredRepeat: return rhi::AddressMode::MirroredRepeat;
+    case scene::TextureWrap::Repeat:
+        return rhi::AddressMode::Repeat;
+    case scene::TextureWrap::ClampToEdge:
+        return rhi::AddressMode::ClampToEdge;
+    case scene::TextureWrap::MirroredRepeat:
+        return rhi::AddressMode::MirroredRepeat;
     }
     return rhi::AddressMode::Repeat;
 }
@@ -37,8 +43,8 @@ rhi::AddressMode address(scene::TextureWrap wrap)
 AnisotropyChoice chooseAnisotropy(float requested, const rhi::Capabilities& caps)
 {
     if (!(requested >= 1.0f))
-        throw rhi::Error(fmt::format("FrameDesc::maxAnisotropy {} is below 1 (1 turns anisotropic filtering off)",
-                                     requested));
+        throw rhi::Error(
+            fmt::format("FrameDesc::maxAnisotropy {} is below 1 (1 turns anisotropic filtering off)", requested));
     const float limit = caps.maxSamplerAnisotropy;
     if (requested <= limit)
         return {requested, std::nullopt};
@@ -52,8 +58,8 @@ AnisotropyChoice chooseAnisotropy(float requested, const rhi::Capabilities& caps
 
 rhi::SamplerDesc samplerDesc(const scene::TextureSampler& sampler, float anisotropy, const std::string& name)
 {
-    const bool trilinear = sampler.minFilter == scene::TextureFilter::Linear &&
-                           sampler.mipFilter == scene::TextureMipFilter::Linear;
+    const bool trilinear =
+        sampler.minFilter == scene::TextureFilter::Linear && sampler.mipFilter == scene::TextureMipFilter::Linear;
     return {.magFilter = filter(sampler.magFilter),
             .minFilter = filter(sampler.minFilter),
             .mipFilter = mipFilter(sampler.mipFilter),

@@ -97,9 +97,6 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
         fail(path, std::strerror(failure));
 }
 
-const char* temporaryFileInProgress() noexcept
-{
-    return inProgressSet.load() ? inProgress.data() : "";
-}
+const char* temporaryFileInProgress() noexcept { return inProgressSet.load() ? inProgress.data() : ""; }
 
 } // namespace penumbra::rhi

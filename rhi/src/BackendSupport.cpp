@@ -18,15 +18,16 @@ std::vector<ShaderBinding> pipelineBindings(const PipelineDesc& desc)
 {
     std::vector<ShaderBinding> all = desc.vertex->compiled().bindings;
     for (const ShaderBinding& b : desc.fragment->compiled().bindings) {
-        auto same = std::find_if(all.begin(), all.end(), [&](const ShaderBinding& a) { return a.binding == b.binding; });
+        auto same =
+            std::find_if(all.begin(), all.end(), [&](const ShaderBinding& a) { return a.binding == b.binding; });
         if (same == all.end())
             all.push_back(b);
         else if (same->kind != b.kind)
-            throw Error(fmt::format("pipeline '{}': binding {} is '{}' in {} but '{}' in {}", desc.debugName,
-                                    b.binding, same->name, desc.vertex->compiled().name, b.name,
-                                    desc.fragment->compiled().name));
+            throw Error(fmt::format("pipeline '{}': binding {} is '{}' in {} but '{}' in {}", desc.debugName, b.binding,
+                                    same->name, desc.vertex->compiled().name, b.name, desc.fragment->compiled().name));
     }
-    std::sort(all.begin(), all.end(), [](const ShaderBinding& a, const ShaderBinding& b) { return a.binding < b.binding; });
+    std::sort(all.begin(), all.end(),
+              [](const ShaderBinding& a, const ShaderBinding& b) { return a.binding < b.binding; });
     return all;
 }
 
@@ -56,18 +57,30 @@ std::uint64_t levelSize(const TextureDesc& desc, std::uint32_t level)
 std::string_view formatName(Format f)
 {
     switch (f) {
-    case Format::RGBA8: return "RGBA8";
-    case Format::RGBA16F: return "RGBA16F";
-    case Format::RGBA32F: return "RGBA32F";
-    case Format::D16: return "D16";
-    case Format::D24S8: return "D24S8";
-    case Format::D32F: return "D32F";
-    case Format::RGBA8_SRGB: return "RGBA8_SRGB";
-    case Format::R8: return "R8";
-    case Format::RG8: return "RG8";
-    case Format::R16F: return "R16F";
-    case Format::RG16F: return "RG16F";
-    case Format::R32F: return "R32F";
+    case Format::RGBA8:
+        return "RGBA8";
+    case Format::RGBA16F:
+        return "RGBA16F";
+    case Format::RGBA32F:
+        return "RGBA32F";
+    case Format::D16:
+        return "D16";
+    case Format::D24S8:
+        return "D24S8";
+    case Format::D32F:
+        return "D32F";
+    case Format::RGBA8_SRGB:
+        return "RGBA8_SRGB";
+    case Format::R8:
+        return "R8";
+    case Format::RG8:
+        return "RG8";
+    case Format::R16F:
+        return "R16F";
+    case Format::RG16F:
+        return "RG16F";
+    case Format::R32F:
+        return "R32F";
     }
     return "unknown";
 }

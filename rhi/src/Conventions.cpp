@@ -49,9 +49,11 @@ glm::mat4 perspectiveMatrix(float fovY, float aspect, DepthRow row)
     return m;
 }
 
-std::string glslFloat(float v) { return fmt::format("{:.9g}", v).find_first_of(".e") == std::string::npos
-                                     ? fmt::format("{:.9g}.0", v)
-                                     : fmt::format("{:.9g}", v); }
+std::string glslFloat(float v)
+{
+    return fmt::format("{:.9g}", v).find_first_of(".e") == std::string::npos ? fmt::format("{:.9g}.0", v)
+                                                                             : fmt::format("{:.9g}", v);
+}
 
 } // namespace
 
@@ -65,13 +67,20 @@ float Conventions::nearClipValue() const
 CompareOp Conventions::depthCompareOp(DepthTest test) const
 {
     switch (test) {
-    case DepthTest::Always: return CompareOp::Always;
-    case DepthTest::Never: return CompareOp::Never;
-    case DepthTest::Equal: return CompareOp::Equal;
-    case DepthTest::Nearer: return reversedZ_ ? CompareOp::Greater : CompareOp::Less;
-    case DepthTest::NearerOrEqual: return reversedZ_ ? CompareOp::GreaterOrEqual : CompareOp::LessOrEqual;
-    case DepthTest::Farther: return reversedZ_ ? CompareOp::Less : CompareOp::Greater;
-    case DepthTest::FartherOrEqual: return reversedZ_ ? CompareOp::LessOrEqual : CompareOp::GreaterOrEqual;
+    case DepthTest::Always:
+        return CompareOp::Always;
+    case DepthTest::Never:
+        return CompareOp::Never;
+    case DepthTest::Equal:
+        return CompareOp::Equal;
+    case DepthTest::Nearer:
+        return reversedZ_ ? CompareOp::Greater : CompareOp::Less;
+    case DepthTest::NearerOrEqual:
+        return reversedZ_ ? CompareOp::GreaterOrEqual : CompareOp::LessOrEqual;
+    case DepthTest::Farther:
+        return reversedZ_ ? CompareOp::Less : CompareOp::Greater;
+    case DepthTest::FartherOrEqual:
+        return reversedZ_ ? CompareOp::LessOrEqual : CompareOp::GreaterOrEqual;
     }
     return CompareOp::Always;
 }
@@ -121,7 +130,7 @@ float Conventions::viewDepth(const glm::mat4& projection, float windowDepth) con
     const float b = projection[3][2];
     if (projection[2][3] != 0.0f)
         return b / (zNdc + a); // perspective: z_ndc = (a z + b) / -z
-    return (b - zNdc) / a;      // orthographic: z_ndc = a z + b
+    return (b - zNdc) / a; // orthographic: z_ndc = a z + b
 }
 
 float Conventions::windowDepth(const glm::mat4& projection, float viewDepth) const
@@ -157,9 +166,9 @@ std::string Conventions::glslHeader() const
         "// projection's, which the inverse view-projection undoes).\n"
         "vec2 penumbraFragCoordToNdc(vec2 fragCoord, vec2 size) {{ return vec2(2.0, -2.0) * fragCoord / size + vec2(-1.0, 1.0); }}\n"
         "float penumbraWindowDepthToNdc(float depth) {{ return {}; }}\n",
-        reversedZ_ ? 1 : 0, range_ == DepthRange::ZeroToOne ? 1 : 0, glslFloat(nearClipValue()),
-        glslFloat(nearDepth()), glslFloat(farDepth()), matrix, nearerIsGreater ? ">" : "<",
-        reversedZ_ ? "min" : "max", range_ == DepthRange::ZeroToOne ? "depth" : "2.0 * depth - 1.0");
+        reversedZ_ ? 1 : 0, range_ == DepthRange::ZeroToOne ? 1 : 0, glslFloat(nearClipValue()), glslFloat(nearDepth()),
+        glslFloat(farDepth()), matrix, nearerIsGreater ? ">" : "<", reversedZ_ ? "min" : "max",
+        range_ == DepthRange::ZeroToOne ? "depth" : "2.0 * depth - 1.0");
 }
 
 } // namespace penumbra::rhi

@@ -19,12 +19,18 @@ struct FaceAxes {
 FaceAxes faceAxes(CubeFace face)
 {
     switch (face) {
-    case CubeFace::PositiveX: return {{0, 0, -1}, {0, 1, 0}, {-1, 0, 0}};
-    case CubeFace::NegativeX: return {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
-    case CubeFace::PositiveY: return {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}};
-    case CubeFace::NegativeY: return {{1, 0, 0}, {0, 0, 1}, {0, 1, 0}};
-    case CubeFace::PositiveZ: return {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
-    case CubeFace::NegativeZ: return {{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    case CubeFace::PositiveX:
+        return {{0, 0, -1}, {0, 1, 0}, {-1, 0, 0}};
+    case CubeFace::NegativeX:
+        return {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+    case CubeFace::PositiveY:
+        return {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}};
+    case CubeFace::NegativeY:
+        return {{1, 0, 0}, {0, 0, 1}, {0, 1, 0}};
+    case CubeFace::PositiveZ:
+        return {{1, 0, 0}, {0, 1, 0}, {0, 0, -1}};
+    case CubeFace::NegativeZ:
+        return {{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     }
     return {};
 }
@@ -32,9 +38,12 @@ FaceAxes faceAxes(CubeFace face)
 CullMode swapped(CullMode mode)
 {
     switch (mode) {
-    case CullMode::Back: return CullMode::Front;
-    case CullMode::Front: return CullMode::Back;
-    case CullMode::None: return CullMode::None;
+    case CullMode::Back:
+        return CullMode::Front;
+    case CullMode::Front:
+        return CullMode::Back;
+    case CullMode::None:
+        return CullMode::None;
     }
     return mode;
 }
@@ -64,19 +73,13 @@ float cubeFaceViewDepth(const glm::vec3& direction)
     return std::max({std::abs(direction.x), std::abs(direction.y), std::abs(direction.z)});
 }
 
-bool flipsWinding(const glm::mat4& view)
-{
-    return glm::determinant(glm::mat3(view)) < 0.0f;
-}
+bool flipsWinding(const glm::mat4& view) { return glm::determinant(glm::mat3(view)) < 0.0f; }
 
 CullMode viewCullMode(const glm::mat4& view, CullMode worldCull)
 {
     return flipsWinding(view) ? swapped(worldCull) : worldCull;
 }
 
-CullMode cubeFaceCullMode(CullMode worldCull)
-{
-    return swapped(worldCull);
-}
+CullMode cubeFaceCullMode(CullMode worldCull) { return swapped(worldCull); }
 
 } // namespace penumbra::rhi

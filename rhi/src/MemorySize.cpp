@@ -42,8 +42,8 @@ std::string describeAllocation(const BufferDesc& desc)
 void checkFitsInMemory(const Capabilities& caps, const std::string& description, std::uint64_t bytes)
 {
     if (caps.deviceMemoryBytes != 0 && bytes > caps.deviceMemoryBytes)
-        throw Error(fmt::format("{} does not fit in the device's {} of memory", description,
-                                byteSize(caps.deviceMemoryBytes)));
+        throw Error(
+            fmt::format("{} does not fit in the device's {} of memory", description, byteSize(caps.deviceMemoryBytes)));
 }
 
 } // namespace penumbra::rhi

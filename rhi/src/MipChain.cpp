@@ -17,19 +17,26 @@ namespace {
 struct Layout {
     std::uint32_t channels = 0;
     bool floats = false; // 32-bit floats, else 8-bit unsigned normalised
-    bool srgb = false;   // colour channels sRGB-encoded, alpha (channel 3) linear
+    bool srgb = false; // colour channels sRGB-encoded, alpha (channel 3) linear
 };
 
 Layout layoutOf(Format format)
 {
     switch (format) {
-    case Format::RGBA8: return {4, false, false};
-    case Format::RGBA8_SRGB: return {4, false, true};
-    case Format::R8: return {1, false, false};
-    case Format::RG8: return {2, false, false};
-    case Format::R32F: return {1, true, false};
-    case Format::RGBA32F: return {4, true, false};
-    default: break;
+    case Format::RGBA8:
+        return {4, false, false};
+    case Format::RGBA8_SRGB:
+        return {4, false, true};
+    case Format::R8:
+        return {1, false, false};
+    case Format::RG8:
+        return {2, false, false};
+    case Format::R32F:
+        return {1, true, false};
+    case Format::RGBA32F:
+        return {4, true, false};
+    default:
+        break;
     }
     throw Error(fmt::format("generateMipChain: {} is not one of RGBA8, RGBA8_SRGB, R8, RG8, R32F, RGBA32F",
                             formatName(format)));

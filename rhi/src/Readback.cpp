@@ -28,7 +28,8 @@ DepthImage readDepth(Device& device, const Texture& texture, std::uint32_t layer
 {
     const Format format = texture.desc().format;
     if (!isDepthFormat(format))
-        throw Error(fmt::format("readDepth: '{}' is {}, not a depth format", texture.desc().debugName, formatName(format)));
+        throw Error(
+            fmt::format("readDepth: '{}' is {}, not a depth format", texture.desc().debugName, formatName(format)));
     const Image raw = readTexture(device, texture, layer);
     DepthImage out{raw.width, raw.height, std::vector<float>(std::size_t(raw.width) * raw.height)};
     for (std::size_t i = 0; i < out.depth.size(); ++i) {

@@ -20,17 +20,15 @@ void initializeGlslang()
     std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
-EShLanguage glslangStage(ShaderStage stage)
-{
-    return stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
-}
+EShLanguage glslangStage(ShaderStage stage) { return stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment; }
 
 std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spirv, const std::string& name)
 {
     const spirv_cross::Compiler compiler(spirv);
     const spirv_cross::ShaderResources resources = compiler.get_shader_resources();
     if (!resources.push_constant_buffers.empty())
-        throw ShaderCompileError(fmt::format("{}: push constants are not part of the binding model; use a uniform block", name));
+        throw ShaderCompileError(
+            fmt::format("{}: push constants are not part of the binding model; use a uniform block", name));
     if (!resources.storage_buffers.empty() || !resources.storage_images.empty() || !resources.separate_images.empty() ||
         !resources.separate_samplers.empty())
         throw ShaderCompileError(
@@ -87,8 +85,8 @@ private:
 // Everything the SPIR-V depends on, as one string: the stage, the preamble, the name errors cite, every source.
 std::string compileKey(const ShaderSource& source, const std::string& preamble)
 {
-    std::string key = fmt::format("{}\n{}\n{}\n{}\n{}", int(source.stage), preamble.size(), preamble, source.name,
-                                  source.source);
+    std::string key =
+        fmt::format("{}\n{}\n{}\n{}\n{}", int(source.stage), preamble.size(), preamble, source.name, source.source);
     for (const ShaderInclude& include : source.includes)
         key += fmt::format("\n{}\n{}\n{}", include.name, include.source.size(), include.source);
     return key;

@@ -9,7 +9,7 @@ namespace penumbra::scene {
 namespace {
 
 constexpr int kBinCount = 16;
-constexpr std::uint32_t kMinLeafSize = 2;  // smaller ranges become leaves without a cost estimate
+constexpr std::uint32_t kMinLeafSize = 2; // smaller ranges become leaves without a cost estimate
 constexpr std::uint32_t kMaxLeafSize = 16; // larger ranges are split even when SAH calls it a loss
 // Cost of visiting a node relative to one triangle test; Moller-Trumbore and a slab test
 // cost about the same.

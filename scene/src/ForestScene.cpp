@@ -117,8 +117,8 @@ Tree makeTree(std::uint32_t seed)
         const float yaw = glm::two_pi<float>() * (static_cast<float>(b) + random01(s + 1)) / kBranchesPerTree;
         const float lean = glm::radians(40.0f + 30.0f * random01(s + 2));
         const float length = 1.6f + 1.2f * random01(s + 3);
-        const glm::mat4 orientation = glm::rotate(glm::rotate(glm::mat4(1.0f), yaw, {0.0f, 1.0f, 0.0f}), lean,
-                                                  {1.0f, 0.0f, 0.0f});
+        const glm::mat4 orientation =
+            glm::rotate(glm::rotate(glm::mat4(1.0f), yaw, {0.0f, 1.0f, 0.0f}), lean, {1.0f, 0.0f, 0.0f});
         const glm::mat4 base = glm::translate(glm::mat4(1.0f), {0.0f, height, 0.0f}) * orientation;
         append(tree.wood, branch,
                base * glm::translate(glm::mat4(1.0f), {0.0f, 0.5f * length, 0.0f}) *
@@ -127,11 +127,12 @@ Tree makeTree(std::uint32_t seed)
         for (std::uint32_t c = 0; c < kCardsPerBranch; ++c) {
             const std::uint32_t r = s * 977u + c * 7u;
             // A point in an ellipsoid of 1.3 x 0.9 x 1.3 around the tip, a random orientation, a size of 0.8 to 1.2.
-            const glm::vec3 offset{2.0f * random01(r) - 1.0f, 2.0f * random01(r + 1) - 1.0f, 2.0f * random01(r + 2) - 1.0f};
+            const glm::vec3 offset{2.0f * random01(r) - 1.0f, 2.0f * random01(r + 1) - 1.0f,
+                                   2.0f * random01(r + 2) - 1.0f};
             const glm::vec3 position = tip + glm::vec3(1.3f, 0.9f, 1.3f) * offset * std::cbrt(random01(r + 3));
-            const glm::mat4 turn = glm::rotate(
-                glm::rotate(glm::mat4(1.0f), glm::two_pi<float>() * random01(r + 4), {0.0f, 1.0f, 0.0f}),
-                glm::radians(-60.0f + 120.0f * random01(r + 5)), {1.0f, 0.0f, 0.0f});
+            const glm::mat4 turn =
+                glm::rotate(glm::rotate(glm::mat4(1.0f), glm::two_pi<float>() * random01(r + 4), {0.0f, 1.0f, 0.0f}),
+                            glm::radians(-60.0f + 120.0f * random01(r + 5)), {1.0f, 0.0f, 0.0f});
             const float size = kCardSize * (0.8f + 0.4f * random01(r + 6));
             append(tree.leaves, card,
                    glm::translate(glm::mat4(1.0f), position) * turn * glm::scale(glm::mat4(1.0f), glm::vec3(size)));

@@ -43,7 +43,8 @@ Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, 
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     // View-space direction (x, y, -1) taken to world space with the inverse of view().
     const glm::mat3 viewToWorld = glm::inverse(glm::mat3(camera.view()));
-    const glm::vec3 direction = glm::normalize(viewToWorld * glm::vec3(ndcX * tanHalfFov * aspect, ndcY * tanHalfFov, -1.0f));
+    const glm::vec3 direction =
+        glm::normalize(viewToWorld * glm::vec3(ndcX * tanHalfFov * aspect, ndcY * tanHalfFov, -1.0f));
     // Distances along this ray are view depth / cos(angle to the forward axis).
     const float depthPerDistance = glm::dot(direction, glm::normalize(camera.forward));
     const float nearDistance = camera.nearPlane / depthPerDistance;
@@ -129,7 +130,8 @@ LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowR
                     mask.pixels[i] = LightVisibility::Lit;
                 else {
                     mask.pixels[i] = LightVisibility::Shadowed;
-                    const std::optional<Hit> blocker = shadowRays.closestHit(ray.origin, ray.direction, ray.maxDistance);
+                    const std::optional<Hit> blocker =
+                        shadowRays.closestHit(ray.origin, ray.direction, ray.maxDistance);
                     mask.blockers[i] = blocker ? blocker->object : kNoObject;
                 }
             }

@@ -145,7 +145,7 @@ MeshData makePlane(float halfSize, std::uint32_t subdivisions)
         throw std::invalid_argument("makePlane needs at least 1 subdivision");
     MeshData mesh;
     const std::uint32_t row = subdivisions + 1;
-    for (std::uint32_t i = 0; i <= subdivisions; ++i) {     // along x
+    for (std::uint32_t i = 0; i <= subdivisions; ++i) { // along x
         for (std::uint32_t k = 0; k <= subdivisions; ++k) { // along z
             const glm::vec2 uv{static_cast<float>(i) / static_cast<float>(subdivisions),
                                static_cast<float>(k) / static_cast<float>(subdivisions)};

@@ -40,13 +40,15 @@ std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& materi
     if (baseColor && material.caster != CasterMode::On && material.caster != CasterMode::Off)
         texture = scene.textures.at(baseColor->image);
     switch (material.caster) {
-    case CasterMode::Clip: return AlphaTest{material, material.alphaCutoff, std::move(texture)};
+    case CasterMode::Clip:
+        return AlphaTest{material, material.alphaCutoff, std::move(texture)};
     case CasterMode::Dither:
         if (kind == RayKind::Shadow)
             return AlphaTest{material, kDitherShadowThreshold, std::move(texture)};
         return std::nullopt;
     case CasterMode::On:
-    case CasterMode::Off: return std::nullopt;
+    case CasterMode::Off:
+        return std::nullopt;
     }
     return std::nullopt;
 }
@@ -106,8 +108,8 @@ struct RayCaster::Data {
         if (!test)
             return true;
         const std::array<glm::vec2, 3>& uv = uvs[index];
-        const glm::vec2 at = (1.0f - barycentrics.x - barycentrics.y) * uv[0] + barycentrics.x * uv[1] +
-                             barycentrics.y * uv[2];
+        const glm::vec2 at =
+            (1.0f - barycentrics.x - barycentrics.y) * uv[0] + barycentrics.x * uv[1] + barycentrics.y * uv[2];
         return materialAlpha(test->material, at, test->texture ? &*test->texture : nullptr) >= test->threshold;
     }
 
@@ -213,7 +215,8 @@ bool RayCaster::occluded(const glm::vec3& origin, const glm::vec3& direction, fl
     bool found = false;
     data_->traverse(ray, maxDistance, [&](std::uint32_t i, float& limit) {
         const TriangleEdges& t = data_->triangles[i];
-        const std::optional<TriangleHit> hit = detail::intersectEdges(ray.origin, ray.direction, t.v0, t.e1, t.e2, limit);
+        const std::optional<TriangleHit> hit =
+            detail::intersectEdges(ray.origin, ray.direction, t.v0, t.e1, t.e2, limit);
         found = hit && data_->blocks(i, hit->barycentrics);
         return found;
     });
@@ -227,7 +230,8 @@ std::optional<Hit> RayCaster::closestHit(const glm::vec3& origin, const glm::vec
     std::uint32_t bestIndex = 0;
     data_->traverse(ray, maxDistance, [&](std::uint32_t i, float& limit) {
         const TriangleEdges& t = data_->triangles[i];
-        const std::optional<TriangleHit> hit = detail::intersectEdges(ray.origin, ray.direction, t.v0, t.e1, t.e2, limit);
+        const std::optional<TriangleHit> hit =
+            detail::intersectEdges(ray.origin, ray.direction, t.v0, t.e1, t.e2, limit);
         if (hit && data_->blocks(i, hit->barycentrics)) {
             best = hit;
             bestIndex = i;
@@ -239,7 +243,8 @@ std::optional<Hit> RayCaster::closestHit(const glm::vec3& origin, const glm::vec
         return std::nullopt;
     const TriangleEdges& t = data_->triangles[bestIndex];
     const TriangleSource& source = data_->sources[bestIndex];
-    return Hit{best->distance, source.object, source.triangle, best->barycentrics, glm::normalize(glm::cross(t.e1, t.e2))};
+    return Hit{best->distance, source.object, source.triangle, best->barycentrics,
+               glm::normalize(glm::cross(t.e1, t.e2))};
 }
 
 } // namespace penumbra::scene

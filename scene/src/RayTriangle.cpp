@@ -4,8 +4,9 @@
 
 namespace penumbra::scene {
 
-std::optional<TriangleHit> intersectRayTriangle(const glm::vec3& origin, const glm::vec3& direction, const glm::vec3& v0,
-                                                const glm::vec3& v1, const glm::vec3& v2, float maxDistance)
+std::optional<TriangleHit> intersectRayTriangle(const glm::vec3& origin, const glm::vec3& direction,
+                                                const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2,
+                                                float maxDistance)
 {
     return detail::intersectEdges(origin, direction, v0, v1 - v0, v2 - v0, maxDistance);
 }

@@ -62,11 +62,12 @@ bool sameBounds(const Bounds& a, const Bounds& b)
 void validateMesh(const MeshData& mesh, std::size_t index)
 {
     if (mesh.indices.size() % 3 != 0)
-        throw SceneError(fmt::format("mesh {}: {} indices is not a whole number of triangles", index, mesh.indices.size()));
+        throw SceneError(
+            fmt::format("mesh {}: {} indices is not a whole number of triangles", index, mesh.indices.size()));
     for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
         if (mesh.indices[i] >= mesh.vertices.size())
-            throw SceneError(fmt::format("mesh {}: index {} refers to vertex {}, but the mesh has {} vertices", index, i,
-                                         mesh.indices[i], mesh.vertices.size()));
+            throw SceneError(fmt::format("mesh {}: index {} refers to vertex {}, but the mesh has {} vertices", index,
+                                         i, mesh.indices[i], mesh.vertices.size()));
     }
 }
 
@@ -111,8 +112,8 @@ void validateTexture(const TextureImage& texture, std::size_t index)
     const std::size_t expected = std::size_t(texture.width) * texture.height * 4;
     if (texture.width == 0 || texture.height == 0 || texture.rgba.size() != expected)
         throw SceneError(fmt::format("{}: {}x{} texels need {} RGBA8 bytes, it has {}",
-                                     describe("texture", index, texture.name), texture.width, texture.height,
-                                     expected, texture.rgba.size()));
+                                     describe("texture", index, texture.name), texture.width, texture.height, expected,
+                                     texture.rgba.size()));
 }
 
 void validateLight(const DirectionalLight& light, std::size_t index)
@@ -173,8 +174,8 @@ void validateCamera(const Camera& camera)
     if (glm::length(glm::cross(camera.forward, camera.up)) < kUnitTolerance)
         throw SceneError("camera: up is parallel to forward");
     if (!(camera.nearPlane > 0.0f && camera.farPlane > camera.nearPlane))
-        throw SceneError(fmt::format("camera: planes near {} far {} need 0 < near < far", camera.nearPlane,
-                                     camera.farPlane));
+        throw SceneError(
+            fmt::format("camera: planes near {} far {} need 0 < near < far", camera.nearPlane, camera.farPlane));
     if (!(camera.fovY > 0.0f && camera.fovY < 3.14159f))
         throw SceneError(fmt::format("camera: fovY {} radians is outside (0, pi)", camera.fovY));
 }
@@ -204,8 +205,8 @@ std::uint32_t Scene::addMaterial(Material material)
 std::uint32_t Scene::addObject(std::string name, std::uint32_t mesh, std::uint32_t material, const glm::mat4& transform)
 {
     if (mesh >= meshes.size())
-        throw SceneError(fmt::format("addObject '{}': mesh {} does not exist (the scene has {} meshes)", name, mesh,
-                                     meshes.size()));
+        throw SceneError(
+            fmt::format("addObject '{}': mesh {} does not exist (the scene has {} meshes)", name, mesh, meshes.size()));
     const Bounds bounds = meshes[mesh].bounds.transformed(transform);
     objects.push_back({std::move(name), mesh, material, transform, bounds});
     return static_cast<std::uint32_t>(objects.size() - 1);

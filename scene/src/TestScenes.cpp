@@ -30,7 +30,18 @@ constexpr std::uint32_t kCylinderSegments = 48;
 
 enum class Shape { Box, Sphere, Cylinder };
 
-enum class MaterialId : std::uint32_t { Ground, Red, Green, Blue, White, Metal, ClipChecker, DitherGlass, NoReceive, Count };
+enum class MaterialId : std::uint32_t {
+    Ground,
+    Red,
+    Green,
+    Blue,
+    White,
+    Metal,
+    ClipChecker,
+    DitherGlass,
+    NoReceive,
+    Count
+};
 
 // size: box half extents; sphere (radius, -, -); cylinder (radius, half height, -).
 // rotation: degrees about x, y and z, applied z first, then x, then y (Unity's Euler order).
@@ -51,15 +62,30 @@ constexpr glm::vec3 kNoRotation{0.0f};
 // truth says its top would be shadowed and a renderer must leave it lit.
 constexpr std::array kPlacements{
     Placement{"standing cube", Shape::Box, {1.0f, 1.0f, 1.0f}, {-4.0f, 1.0f, 0.0f}, kNoRotation, MaterialId::Red},
-    Placement{"turned cube", Shape::Box, {0.75f, 0.75f, 0.75f}, {3.5f, 0.75f, 4.0f}, {0.0f, 30.0f, 0.0f}, MaterialId::Green},
+    Placement{
+        "turned cube", Shape::Box, {0.75f, 0.75f, 0.75f}, {3.5f, 0.75f, 4.0f}, {0.0f, 30.0f, 0.0f}, MaterialId::Green},
     Placement{"floating cube", Shape::Box, {0.5f, 0.5f, 0.5f}, {0.0f, 3.0f, 2.0f}, kNoRotation, MaterialId::Blue},
-    Placement{"tumbling cube", Shape::Box, {0.6f, 0.6f, 0.6f}, {6.0f, 4.0f, 8.0f}, {35.0f, 0.0f, 20.0f}, MaterialId::White},
-    Placement{"standing sphere", Shape::Sphere, {1.0f, 0.0f, 0.0f}, {1.5f, 1.0f, -3.0f}, kNoRotation, MaterialId::Metal},
-    Placement{"dither sphere", Shape::Sphere, {0.75f, 0.0f, 0.0f}, {-2.5f, 2.5f, 6.0f}, kNoRotation, MaterialId::DitherGlass},
+    Placement{
+        "tumbling cube", Shape::Box, {0.6f, 0.6f, 0.6f}, {6.0f, 4.0f, 8.0f}, {35.0f, 0.0f, 20.0f}, MaterialId::White},
+    Placement{
+        "standing sphere", Shape::Sphere, {1.0f, 0.0f, 0.0f}, {1.5f, 1.0f, -3.0f}, kNoRotation, MaterialId::Metal},
+    Placement{
+        "dither sphere", Shape::Sphere, {0.75f, 0.0f, 0.0f}, {-2.5f, 2.5f, 6.0f}, kNoRotation, MaterialId::DitherGlass},
     Placement{"large sphere", Shape::Sphere, {2.0f, 0.0f, 0.0f}, {-9.0f, 2.0f, 10.0f}, kNoRotation, MaterialId::White},
-    Placement{"standing cylinder", Shape::Cylinder, {0.5f, 1.5f, 0.0f}, {5.0f, 1.5f, -2.0f}, kNoRotation, MaterialId::Blue},
-    Placement{"lying cylinder", Shape::Cylinder, {0.4f, 1.5f, 0.0f}, {-1.0f, 1.8f, 9.0f}, {0.0f, 0.0f, 90.0f}, MaterialId::Red},
-    Placement{"unshadowed pillar", Shape::Cylinder, {0.5f, 1.0f, 0.0f}, {0.63f, 1.0f, 3.09f}, kNoRotation, MaterialId::NoReceive},
+    Placement{
+        "standing cylinder", Shape::Cylinder, {0.5f, 1.5f, 0.0f}, {5.0f, 1.5f, -2.0f}, kNoRotation, MaterialId::Blue},
+    Placement{"lying cylinder",
+              Shape::Cylinder,
+              {0.4f, 1.5f, 0.0f},
+              {-1.0f, 1.8f, 9.0f},
+              {0.0f, 0.0f, 90.0f},
+              MaterialId::Red},
+    Placement{"unshadowed pillar",
+              Shape::Cylinder,
+              {0.5f, 1.0f, 0.0f},
+              {0.63f, 1.0f, 3.09f},
+              kNoRotation,
+              MaterialId::NoReceive},
     Placement{"tall pillar", Shape::Cylinder, {0.3f, 3.0f, 0.0f}, {8.0f, 3.0f, 2.0f}, kNoRotation, MaterialId::Green},
     Placement{"wall", Shape::Box, {4.0f, 1.5f, 0.15f}, {-1.0f, 1.5f, 14.0f}, kNoRotation, MaterialId::White},
     Placement{"clip panel", Shape::Box, {1.5f, 0.05f, 1.5f}, {3.0f, 2.5f, -7.0f}, kNoRotation, MaterialId::ClipChecker},
@@ -70,11 +96,16 @@ constexpr std::array kPlacements{
 Material material(MaterialId id)
 {
     switch (id) {
-    case MaterialId::Ground: return {.name = "ground", .baseColor = {0.6f, 0.6f, 0.6f, 1.0f}, .roughness = 0.9f};
-    case MaterialId::Red: return {.name = "red", .baseColor = {0.8f, 0.15f, 0.1f, 1.0f}};
-    case MaterialId::Green: return {.name = "green", .baseColor = {0.2f, 0.7f, 0.2f, 1.0f}};
-    case MaterialId::Blue: return {.name = "blue", .baseColor = {0.15f, 0.3f, 0.8f, 1.0f}};
-    case MaterialId::White: return {.name = "white", .baseColor = {0.9f, 0.9f, 0.9f, 1.0f}};
+    case MaterialId::Ground:
+        return {.name = "ground", .baseColor = {0.6f, 0.6f, 0.6f, 1.0f}, .roughness = 0.9f};
+    case MaterialId::Red:
+        return {.name = "red", .baseColor = {0.8f, 0.15f, 0.1f, 1.0f}};
+    case MaterialId::Green:
+        return {.name = "green", .baseColor = {0.2f, 0.7f, 0.2f, 1.0f}};
+    case MaterialId::Blue:
+        return {.name = "blue", .baseColor = {0.15f, 0.3f, 0.8f, 1.0f}};
+    case MaterialId::White:
+        return {.name = "white", .baseColor = {0.9f, 0.9f, 0.9f, 1.0f}};
     case MaterialId::Metal:
         return {.name = "metal", .baseColor = {0.9f, 0.8f, 0.5f, 1.0f}, .metallic = 1.0f, .roughness = 0.3f};
     case MaterialId::ClipChecker:
@@ -85,22 +116,26 @@ Material material(MaterialId id)
         return {.name = "dither glass", .baseColor = {0.3f, 0.8f, 0.9f, 0.6f}, .caster = CasterMode::Dither};
     case MaterialId::NoReceive:
         return {.name = "no receive", .baseColor = {0.9f, 0.5f, 0.1f, 1.0f}, .receiveShadows = false};
-    case MaterialId::Count: break;
+    case MaterialId::Count:
+        break;
     }
     return {};
 }
 
-constexpr std::array kLightColors{
-    glm::vec3{1.0f, 0.95f, 0.85f}, glm::vec3{1.0f, 0.35f, 0.3f}, glm::vec3{0.3f, 1.0f, 0.35f}, glm::vec3{0.35f, 0.45f, 1.0f}};
+constexpr std::array kLightColors{glm::vec3{1.0f, 0.95f, 0.85f}, glm::vec3{1.0f, 0.35f, 0.3f},
+                                  glm::vec3{0.3f, 1.0f, 0.35f}, glm::vec3{0.35f, 0.45f, 1.0f}};
 constexpr std::array kLightNames{"key", "red", "green", "blue"};
 constexpr std::array kLightIntensities{1.0f, 0.5f, 0.5f, 0.5f};
 
 MeshData makeMesh(const Placement& placement)
 {
     switch (placement.shape) {
-    case Shape::Box: return makeBox(placement.size);
-    case Shape::Sphere: return makeSphere(placement.size.x, kSphereSegments, kSphereRings);
-    case Shape::Cylinder: return makeCylinder(placement.size.x, placement.size.y, kCylinderSegments);
+    case Shape::Box:
+        return makeBox(placement.size);
+    case Shape::Sphere:
+        return makeSphere(placement.size.x, kSphereSegments, kSphereRings);
+    case Shape::Cylinder:
+        return makeCylinder(placement.size.x, placement.size.y, kCylinderSegments);
     }
     return {};
 }
@@ -138,7 +173,8 @@ Scene makeGeometry()
         scene.addMaterial(material(static_cast<MaterialId>(id)));
     const auto materialIndex = [](MaterialId id) { return static_cast<std::uint32_t>(id); };
 
-    scene.addObject("ground", scene.addMesh(makePlane(kGroundHalfSize)), materialIndex(MaterialId::Ground), glm::mat4(1.0f));
+    scene.addObject("ground", scene.addMesh(makePlane(kGroundHalfSize)), materialIndex(MaterialId::Ground),
+                    glm::mat4(1.0f));
     for (const Placement& placement : kPlacements)
         scene.addObject(placement.name, scene.addMesh(makeMesh(placement)), materialIndex(placement.material),
                         placementTransform(placement));
@@ -197,9 +233,15 @@ Scene makeMixedLightsScene()
         aimedSpot("spot white", {1.0f, 1.0f, 1.0f}, {0.5f, 8.0f, 3.0f}, {0.0f, 0.0f, 2.0f}, 14.0f),
     };
     scene.pointLights = {
-        {.name = "bulb sphere", .color = {1.0f, 0.9f, 0.6f}, .intensity = 8.0f, .position = {3.0f, 2.5f, -4.5f},
+        {.name = "bulb sphere",
+         .color = {1.0f, 0.9f, 0.6f},
+         .intensity = 8.0f,
+         .position = {3.0f, 2.5f, -4.5f},
          .range = 9.0f},
-        {.name = "bulb centre", .color = {0.9f, 0.6f, 1.0f}, .intensity = 8.0f, .position = {-1.5f, 2.5f, 4.5f},
+        {.name = "bulb centre",
+         .color = {0.9f, 0.6f, 1.0f},
+         .intensity = 8.0f,
+         .position = {-1.5f, 2.5f, 4.5f},
          .range = 9.0f},
     };
     return scene;

@@ -15,8 +15,8 @@ Scene makeTownScene()
     const std::uint32_t ball = scene.addMaterial({.name = "ball", .baseColor = {0.85f, 0.25f, 0.2f, 1.0f}});
     scene.addObject("ground", scene.addMesh(makeBox({kTownHalfSize, 0.1f, kTownHalfSize})), ground,
                     glm::translate(glm::mat4(1.0f), {0.0f, -0.1f, 0.0f}));
-    // Buildings 8 to 10 wide on a 25 metre grid, streets of 15 or more between them along x and z; heights vary by a fixed
-    // pattern, so shadows of every length lie on the streets.
+    // Buildings 8 to 10 wide on a 25 metre grid, streets of 15 or more between them along x and z; heights vary by a
+    // fixed pattern, so shadows of every length lie on the streets.
     constexpr int kBlocks = 8;
     constexpr float kPitch = 2.0f * kTownHalfSize / kBlocks;
     for (int row = 0; row < kBlocks; ++row)

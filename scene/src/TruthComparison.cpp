@@ -12,8 +12,7 @@
 namespace penumbra::scene {
 namespace {
 
-bool nearEdge(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth, std::uint32_t x, std::uint32_t y,
-              int margin)
+bool nearEdge(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth, std::uint32_t x, std::uint32_t y, int margin)
 {
     for (int dy = -margin; dy <= margin; ++dy)
         for (int dx = -margin; dx <= margin; ++dx) {
@@ -79,8 +78,8 @@ std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const Cp
                 if (v != LightVisibility::Lit && v != LightVisibility::Shadowed)
                     continue;
                 const float r = radius(gbuffer.samples[i]);
-                edges[i] = r > 0.0f && nearShadowEdge(shadowRays, gbuffer.samples[i], v == LightVisibility::Shadowed,
-                                                      rayFrom, r);
+                edges[i] = r > 0.0f &&
+                           nearShadowEdge(shadowRays, gbuffer.samples[i], v == LightVisibility::Shadowed, rayFrom, r);
             }
         },
         progress);
@@ -95,8 +94,9 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
         rendered.height != truth.height || (!shadowEdges.empty() && shadowEdges.size() != truth.pixels.size()))
         throw std::invalid_argument("compareWithTruth: the G-buffer, the ray-cast visibility and the rendered "
                                     "visibility must have the same size");
-    TruthComparison c{truth.width, truth.height,
-                      std::vector<TruthVerdict>(truth.pixels.size(), TruthVerdict::NotCompared), {}, {}, {}};
+    TruthComparison c{
+        truth.width, truth.height, std::vector<TruthVerdict>(truth.pixels.size(), TruthVerdict::NotCompared),
+        {},          {},           {}};
     for (std::uint32_t y = 0; y < truth.height; ++y)
         for (std::uint32_t x = 0; x < truth.width; ++x) {
             const std::size_t i = std::size_t(y) * truth.width + x;

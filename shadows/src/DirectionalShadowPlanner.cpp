@@ -95,8 +95,8 @@ std::vector<FrustumSlice> cascadeSlices(const ShadowCamera& camera, const Cascad
 // Close fit: one tile half size per cascade, the largest any light's slice bounds need, so that every light's tile
 // of a cascade has the texel size its CascadeData carries. The margin is the widest light's reach past its slice:
 // its filter's normal bias factor in texels for the taps, sqrt 2 times that times its normal bias for the offset.
-std::vector<float> closeFitHalfSizes(const std::vector<FrustumSlice>& slices, std::span<const ShadowedDirectionalLight> lights,
-                                     std::uint32_t tileSize)
+std::vector<float> closeFitHalfSizes(const std::vector<FrustumSlice>& slices,
+                                     std::span<const ShadowedDirectionalLight> lights, std::uint32_t tileSize)
 {
     float margin = 0.0f;
     for (const ShadowedDirectionalLight& light : lights) {
@@ -109,7 +109,8 @@ std::vector<float> closeFitHalfSizes(const std::vector<FrustumSlice>& slices, st
             frustumSliceCorners(slice.camera, slice.nearDistance, slice.farDistance);
         float half = 0.0f;
         for (const ShadowedDirectionalLight& light : lights)
-            half = std::max(half, closeFitHalfSize(lightSpaceBounds(lightBasis(light.direction), corners), tileSize, margin));
+            half = std::max(half,
+                            closeFitHalfSize(lightSpaceBounds(lightBasis(light.direction), corners), tileSize, margin));
         halfSizes.push_back(half);
     }
     return halfSizes;
@@ -186,24 +187,26 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
         for (std::uint32_t c = 0; c < cascadeCount; ++c) {
             DirectionalCascadePlan cascade;
             const FrustumSlice& slice = slices[c];
-            cascade.fit =
-                close ? fitCloseCascade(
-                            lightSpaceBounds(basis, frustumSliceCorners(camera, slice.nearDistance, slice.farDistance)),
-                            halfSizes[c], plan.cullingSpheres[c], basis, plan.atlas.tileSize(), light.nearPlaneOffset,
-                            casterBounds, conventions)
-                      : fitDirectionalCascade(plan.cullingSpheres[c], basis, plan.atlas.tileSize(),
-                                              light.nearPlaneOffset, casterBounds, conventions);
+            cascade.fit = close
+                              ? fitCloseCascade(lightSpaceBounds(basis, frustumSliceCorners(camera, slice.nearDistance,
+                                                                                            slice.farDistance)),
+                                                halfSizes[c], plan.cullingSpheres[c], basis, plan.atlas.tileSize(),
+                                                light.nearPlaneOffset, casterBounds, conventions)
+                              : fitDirectionalCascade(plan.cullingSpheres[c], basis, plan.atlas.tileSize(),
+                                                      light.nearPlaneOffset, casterBounds, conventions);
             cascade.tile = directionalTileIndex(slot, c, cascadeCount);
             cascade.worldToAtlas = worldToAtlas(cascade.fit.viewProjection, cascade.tile, plan.atlas, conventions);
             cascade.viewport = plan.atlas.viewport(cascade.tile);
             if (close)
-                cascade.casters = cullCloseFitShadowCasters(
-                    cascade.fit, casterBounds, c > 0 ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
-                    cullingFactor);
+                cascade.casters =
+                    cullCloseFitShadowCasters(cascade.fit, casterBounds,
+                                              c > 0 ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
+                                              cullingFactor);
             else
-                cascade.casters = cullShadowCasters(
-                    cascade.fit, casterBounds,
-                    c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt, cullingFactor);
+                cascade.casters =
+                    cullShadowCasters(cascade.fit, casterBounds,
+                                      c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt,
+                                      cullingFactor);
             light.cascades.push_back(std::move(cascade));
         }
     }

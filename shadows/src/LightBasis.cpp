@@ -25,6 +25,9 @@ Bounds lightSpaceBounds(const LightBasis& basis, const std::array<glm::vec3, 8>&
     return light;
 }
 
-Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world) { return lightSpaceBounds(basis, world.corners()); }
+Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world)
+{
+    return lightSpaceBounds(basis, world.corners());
+}
 
 } // namespace penumbra::shadows

@@ -73,8 +73,7 @@ glm::vec4 perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSiz
     return {toTexture[2][2], toTexture[3][2], sourceRadius / texelSizeAtUnitDistance(projection, tileSize), nearPlane};
 }
 
-float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, ShadowFilter filter,
-                           float normalBias)
+float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, ShadowFilter filter, float normalBias)
 {
     return normalBias * texelSizeAtUnitDistance(projection, tileSize) * normalBiasFilterFactor(filter) * kSqrt2;
 }

@@ -76,8 +76,9 @@ void reserve(Reservations& r, LocalShadowPlan& plan, LocalLightKind kind, std::u
     }
     const std::uint32_t needed = tilesNeeded(kind, mode);
     if (r.tileCount + needed > maxLocalShadowTiles) {
-        plan.report.push_back({kind, index, fmt::format("needs {} of the local atlas's {} tiles, {} are left", needed,
-                                                        maxLocalShadowTiles, maxLocalShadowTiles - r.tileCount)});
+        plan.report.push_back({kind, index,
+                               fmt::format("needs {} of the local atlas's {} tiles, {} are left", needed,
+                                           maxLocalShadowTiles, maxLocalShadowTiles - r.tileCount)});
         return;
     }
     (kind == LocalLightKind::Spot ? plan.spotTiles : plan.pointShadows)[index] = static_cast<int>(r.tileCount);
@@ -89,8 +90,11 @@ LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, fl
                            const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, range);
-    return {projection, projection * view, slopeScaleBias,
-            cullCastersInFrustum(view, fov, nearPlane, range, casterBounds), {}};
+    return {projection,
+            projection * view,
+            slopeScaleBias,
+            cullCastersInFrustum(view, fov, nearPlane, range, casterBounds),
+            {}};
 }
 
 // The normal offset's reach per unit of distance, `scale`, goes to the lit pass's lookups on the receiver side and
@@ -126,8 +130,8 @@ void addTile(LocalShadowPlan& plan, std::uint32_t tile, LocalShadowView view, fl
     plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});
 }
 
-void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot,
-              std::uint32_t tile, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot, std::uint32_t tile,
+              const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     const float fov = 2.0f * spot.outerAngle;
     const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, local);
@@ -143,8 +147,7 @@ void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const Spo
 }
 
 void planPointTiles(LocalShadowPlan& plan, const LocalShadowSettings& local, const PointShadowInput& point,
-                    std::uint32_t firstTile, const rhi::Conventions& conventions,
-                    std::span<const Bounds> casterBounds)
+                    std::uint32_t firstTile, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     const ShadowFilter filter = point.filter.value_or(local.filter);
     const float fov = pointFaceFieldOfView(plan.atlas.tileSize(), filter, point.normalBias);
@@ -172,17 +175,21 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
     const glm::mat4 toTexture = conventions.clipToTexture() * projection;
     const ShadowFilter filter = point.filter.value_or(local.filter);
     const float bias = localNormalBiasScale(projection, local.cubeMapSize, filter, point.normalBias);
-    plan.uniforms.cubeSoft[plan.cubes.size()] = {
-        static_cast<float>(filter), point.sourceRadius / std::abs(texelSizeAtUnitDistance(projection, local.cubeMapSize)),
-        nearPlane, 0.0f};
+    plan.uniforms.cubeSoft[plan.cubes.size()] = {static_cast<float>(filter),
+                                                 point.sourceRadius /
+                                                     std::abs(texelSizeAtUnitDistance(projection, local.cubeMapSize)),
+                                                 nearPlane, 0.0f};
     ShadowCube cube;
     cube.lightIndex = pointIndex;
     float receiverBias = bias;
     for (const CubeFace face : rhi::allCubeFaces) {
         const glm::mat4 view = rhi::cubeFaceView(face, point.position);
         LocalShadowView& faceView = cube.faces[static_cast<std::size_t>(face)];
-        faceView = {projection, projection * view, point.slopeScaleBias,
-                    cullCastersInFrustum(view, kRightAngle, nearPlane, point.range, casterBounds), {}};
+        faceView = {projection,
+                    projection * view,
+                    point.slopeScaleBias,
+                    cullCastersInFrustum(view, kRightAngle, nearPlane, point.range, casterBounds),
+                    {}};
         receiverBias = sideOfNormalBias(faceView, point.normalBiasSide, bias, point.position);
     }
     plan.uniforms.cubeData[plan.cubes.size()] = {toTexture[2][2], toTexture[3][2], receiverBias,
@@ -236,10 +243,10 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
     Reservations r;
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& spot = spots[i];
-        const bool anyCaster = !cullCastersInFrustum(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
-                                                     localShadowNearPlane(spot.range, spot.nearPlane, local), spot.range,
-                                                     casterBounds)
-                                    .empty();
+        const bool anyCaster =
+            !cullCastersInFrustum(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
+                                  localShadowNearPlane(spot.range, spot.nearPlane, local), spot.range, casterBounds)
+                 .empty();
         reserve(r, plan, LocalLightKind::Spot, i, spot.strength, local.pointMode,
                 shadowsNothing({spot.position, spot.range, anyCaster}, camera, settings.maxDistance));
     }

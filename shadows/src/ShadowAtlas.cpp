@@ -18,8 +18,8 @@ ShadowAtlas::ShadowAtlas(rhi::Device& device, std::uint32_t size, rhi::Format fo
                                      .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
                                      .debugName = debugName});
     framebuffer_ = device.createFramebuffer({.depth = {texture_.get(), 0}, .debugName = debugName});
-    sampler_ = device.createSampler({.magFilter = rhi::Filter::Nearest,
-                                     .minFilter = rhi::Filter::Nearest, .debugName = debugName + " texels"});
+    sampler_ = device.createSampler(
+        {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = debugName + " texels"});
 }
 
 } // namespace penumbra::shadows

@@ -7,14 +7,16 @@
 namespace penumbra::shadows {
 
 ShadowAtlasLayout::ShadowAtlasLayout(std::uint32_t atlasSize, std::uint32_t tileCount)
-    : atlasSize_(atlasSize), tileCount_(tileCount),
-      split_(tileCount <= 1 ? 1 : tileCount <= 4 ? 2 : tileCount <= 16 ? 4 : 8)
+    : atlasSize_(atlasSize), tileCount_(tileCount), split_(tileCount <= 1    ? 1
+                                                           : tileCount <= 4  ? 2
+                                                           : tileCount <= 16 ? 4
+                                                                             : 8)
 {
     if (tileCount > maxAtlasTiles)
         throw rhi::Error(fmt::format("shadow atlas: {} tiles, allowed 0..{}", tileCount, maxAtlasTiles));
     if (atlasSize == 0 || atlasSize % split_ != 0)
-        throw rhi::Error(fmt::format("shadow atlas: size {} cannot be split into {} x {} tiles", atlasSize, split_,
-                                     split_));
+        throw rhi::Error(
+            fmt::format("shadow atlas: size {} cannot be split into {} x {} tiles", atlasSize, split_, split_));
 }
 
 glm::uvec2 ShadowAtlasLayout::tileCoordinates(std::uint32_t tile) const { return {tile % split_, tile / split_}; }

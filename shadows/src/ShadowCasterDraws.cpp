@@ -41,7 +41,8 @@ ShadowCasterUniforms casterUniforms(const ShadowViewDraw& view, const ShadowCast
 
 UvTransformRows uvTransformRows(const glm::mat3& m, std::uint32_t uvSet)
 {
-    return {glm::vec4(m[0][0], m[1][0], m[2][0], static_cast<float>(uvSet)), glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f)};
+    return {glm::vec4(m[0][0], m[1][0], m[2][0], static_cast<float>(uvSet)),
+            glm::vec4(m[0][1], m[1][1], m[2][1], 0.0f)};
 }
 
 rhi::Rect scissorOf(const rhi::Viewport& v)
@@ -51,8 +52,7 @@ rhi::Rect scissorOf(const rhi::Viewport& v)
 }
 
 ShadowCasterDraws::ShadowCasterDraws(rhi::Device& device, const CasterVertexFormat& vertexFormat)
-    : device_(device), vertexFormat_(vertexFormat),
-      vertex_(device.createShader(casterShader("shadow_caster.vert"))),
+    : device_(device), vertexFormat_(vertexFormat), vertex_(device.createShader(casterShader("shadow_caster.vert"))),
       opaqueFragment_(device.createShader(casterShader("shadow_caster_opaque.frag"))),
       alphaFragment_(device.createShader(casterShader("shadow_caster_alpha.frag"))),
       uniforms_(device, "shadow caster draws")

@@ -10,8 +10,8 @@ ShadowCubes::ShadowCubes(rhi::Device& device, std::uint32_t faceSize, std::uint3
     : faceSize_(faceSize), cubeCount_(cubeCount), format_(format)
 {
     if (!rhi::isDepthFormat(format))
-        throw rhi::Error(fmt::format("shadow cube maps: {} is not a depth format; use D16, D24S8 or D32F",
-                                     rhi::formatName(format)));
+        throw rhi::Error(
+            fmt::format("shadow cube maps: {} is not a depth format; use D16, D24S8 or D32F", rhi::formatName(format)));
     texture_ = device.createTexture({.width = faceSize,
                                      .height = faceSize,
                                      .layers = 6 * cubeCount,
@@ -26,8 +26,9 @@ ShadowCubes::ShadowCubes(rhi::Device& device, std::uint32_t faceSize, std::uint3
                                      .minFilter = rhi::Filter::Nearest,
                                      .compare = true,
                                      .debugName = "point shadow cubes"});
-    depthSampler_ = device.createSampler(
-        {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "point shadow cube depths"});
+    depthSampler_ = device.createSampler({.magFilter = rhi::Filter::Nearest,
+                                          .minFilter = rhi::Filter::Nearest,
+                                          .debugName = "point shadow cube depths"});
 }
 
 } // namespace penumbra::shadows

@@ -75,7 +75,10 @@ std::optional<CascadeProjection> projectionFromName(std::string_view name)
 
 std::string_view projectionNames() { return "stable, close"; }
 
-ShadowFilterFamily filterFamily(ShadowFilter filter) { return shadowFilters()[static_cast<std::size_t>(filter)].family; }
+ShadowFilterFamily filterFamily(ShadowFilter filter)
+{
+    return shadowFilters()[static_cast<std::size_t>(filter)].family;
+}
 
 bool isSoftFilter(ShadowFilter filter) { return filterFamily(filter) == ShadowFilterFamily::PoissonDisk; }
 

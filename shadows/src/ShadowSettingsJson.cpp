@@ -50,8 +50,8 @@ constexpr std::array<EnumName<PointShadowMode>, 2> pointModeNames{
     {{PointShadowMode::Atlas, "atlas"}, {PointShadowMode::CubeMap, "cubemap"}}};
 
 constexpr std::array<EnumName<StaticShadowUpdate>, 3> updateNames{{{StaticShadowUpdate::EveryFrame, "everyFrame"},
-                                                                    {StaticShadowUpdate::OnChange, "onChange"},
-                                                                    {StaticShadowUpdate::OnDemand, "onDemand"}}};
+                                                                   {StaticShadowUpdate::OnChange, "onChange"},
+                                                                   {StaticShadowUpdate::OnDemand, "onDemand"}}};
 constexpr std::array<EnumName<RealtimeCasters>, 2> realtimeCasterNames{
     {{RealtimeCasters::All, "all"}, {RealtimeCasters::Dynamic, "dynamic"}}};
 
@@ -121,8 +121,9 @@ public:
     void refuseBothNames(const Json& object, std::string_view name, std::string_view oldName) const
     {
         if (object.contains(name) && object.contains(oldName))
-            throw rhi::Error(fmt::format("{}: {}{} and {}{} are one field (the old and the current name); give only {}{}",
-                                         source_, prefix_, oldName, prefix_, name, prefix_, name));
+            throw rhi::Error(
+                fmt::format("{}: {}{} and {}{} are one field (the old and the current name); give only {}{}", source_,
+                            prefix_, oldName, prefix_, name, prefix_, name));
     }
 
     [[noreturn]] void unknown(const std::string& key, std::string_view known) const
@@ -158,7 +159,7 @@ void readDirectional(const Json& object, std::string_view source, DirectionalSha
             d.atlasFormat = r.enumeration(value, key, formatNames);
         else
             r.unknown(key, "atlasSize, filter, cascadeCount, cascadeRatios, cascadeFade, cascadeBlend, projection, "
-                         "atlasFormat");
+                           "atlasFormat");
     }
 }
 
@@ -241,7 +242,10 @@ std::optional<Enum> valueOf(const std::array<EnumName<Enum>, N>& names, std::str
 
 std::optional<StaticShadowUpdate> parseStaticShadowUpdate(std::string_view name) { return valueOf(updateNames, name); }
 
-std::optional<RealtimeCasters> parseRealtimeCasters(std::string_view name) { return valueOf(realtimeCasterNames, name); }
+std::optional<RealtimeCasters> parseRealtimeCasters(std::string_view name)
+{
+    return valueOf(realtimeCasterNames, name);
+}
 
 ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourceName)
 {

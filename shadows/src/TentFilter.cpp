@@ -66,8 +66,9 @@ ShadowTaps tentFilterTaps(ShadowFilter filter, glm::vec2 uv, glm::vec2 textureSi
     }
     for (int py = 0; py < pairs; ++py)
         for (int px = 0; px < pairs; ++px)
-            taps.taps[static_cast<std::size_t>(taps.count++)] = {
-                glm::vec2(position[0][px], position[1][py]) / textureSize, weight[0][px] * weight[1][py]};
+            taps.taps[static_cast<std::size_t>(taps.count++)] = {glm::vec2(position[0][px], position[1][py]) /
+                                                                     textureSize,
+                                                                 weight[0][px] * weight[1][py]};
     return taps;
 }
 

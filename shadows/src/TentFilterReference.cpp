@@ -11,14 +11,22 @@ namespace {
 bool passes(rhi::CompareOp op, float reference, float stored)
 {
     switch (op) {
-    case rhi::CompareOp::Never: return false;
-    case rhi::CompareOp::Less: return reference < stored;
-    case rhi::CompareOp::LessOrEqual: return reference <= stored;
-    case rhi::CompareOp::Equal: return reference == stored;
-    case rhi::CompareOp::Greater: return reference > stored;
-    case rhi::CompareOp::GreaterOrEqual: return reference >= stored;
-    case rhi::CompareOp::NotEqual: return reference != stored;
-    case rhi::CompareOp::Always: return true;
+    case rhi::CompareOp::Never:
+        return false;
+    case rhi::CompareOp::Less:
+        return reference < stored;
+    case rhi::CompareOp::LessOrEqual:
+        return reference <= stored;
+    case rhi::CompareOp::Equal:
+        return reference == stored;
+    case rhi::CompareOp::Greater:
+        return reference > stored;
+    case rhi::CompareOp::GreaterOrEqual:
+        return reference >= stored;
+    case rhi::CompareOp::NotEqual:
+        return reference != stored;
+    case rhi::CompareOp::Always:
+        return true;
     }
     return false;
 }

@@ -14,7 +14,8 @@ TEST(OpenGLContextTest, OsMesaAndEglContextsAgree)
 {
     const rhi::DeviceDesc desc = penumbra::parseConfiguration("opengl");
     std::vector<rhi::Image> images;
-    for (opengl::ContextProvider provider : {opengl::ContextProvider::EglSurfaceless, opengl::ContextProvider::OSMesa}) {
+    for (opengl::ContextProvider provider :
+         {opengl::ContextProvider::EglSurfaceless, opengl::ContextProvider::OSMesa}) {
         std::unique_ptr<rhi::Device> device;
         try {
             device = opengl::createOpenGLDevice(desc, {.context = provider});

@@ -16,11 +16,13 @@ namespace {
 const rhi::ShaderSource vertexSource{rhi::ShaderStage::Vertex, R"(#version 450
 layout(location = 0) in vec3 position;
 void main() { gl_Position = vec4(position, 1.0); }
-)", "leak.vert"};
+)",
+                                     "leak.vert"};
 const rhi::ShaderSource fragmentSource{rhi::ShaderStage::Fragment, R"(#version 450
 layout(location = 0) out vec4 color;
 void main() { color = vec4(1.0); }
-)", "leak.frag"};
+)",
+                                       "leak.frag"};
 
 // A position-only pipeline whose attribute reads vertex buffer slot 1 of a one-slot layout.
 rhi::PipelineDesc badSlotPipeline(const rhi::Shader& vertex, const rhi::Shader& fragment)

@@ -23,13 +23,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             scene.validate();
         }
         break;
-    case 1: penumbra::apps::parseAmbientOption(text); break;
+    case 1:
+        penumbra::apps::parseAmbientOption(text);
+        break;
     case 2:
         if (const auto parsed = penumbra::apps::parseSize(text);
             parsed && (parsed->width < 1 || parsed->width > penumbra::apps::kMaxSize))
             __builtin_trap();
         break;
-    default: penumbra::apps::parseLookAt(text); break;
+    default:
+        penumbra::apps::parseLookAt(text);
+        break;
     }
     return 0;
 }

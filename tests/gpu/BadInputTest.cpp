@@ -10,7 +10,8 @@ using BadInputTest = GpuTest;
 TEST_F(BadInputTest, GlslErrorNamesFileAndLine)
 {
     try {
-        device->createShader({rhi::ShaderStage::Fragment, "#version 450\n\nvoid main() { missing(); }\n", "broken.frag"});
+        device->createShader(
+            {rhi::ShaderStage::Fragment, "#version 450\n\nvoid main() { missing(); }\n", "broken.frag"});
         FAIL() << "a broken shader was accepted";
     } catch (const rhi::ShaderCompileError& e) {
         EXPECT_NE(std::string(e.what()).find("broken.frag:3"), std::string::npos) << e.what();
@@ -19,9 +20,13 @@ TEST_F(BadInputTest, GlslErrorNamesFileAndLine)
 
 TEST_F(BadInputTest, MismatchedFramebufferSizesAreRefused)
 {
-    auto a = device->createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget, .debugName = "a"});
-    auto b = device->createTexture(
-        {.width = 4, .height = 8, .format = rhi::Format::D32F, .usage = rhi::TextureUsage::RenderTarget, .debugName = "b"});
+    auto a =
+        device->createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget, .debugName = "a"});
+    auto b = device->createTexture({.width = 4,
+                                    .height = 8,
+                                    .format = rhi::Format::D32F,
+                                    .usage = rhi::TextureUsage::RenderTarget,
+                                    .debugName = "b"});
     const rhi::Attachment color{a.get(), 0};
     EXPECT_THROW(device->createFramebuffer({.colors = {&color, 1}, .depth = {b.get(), 0}}), rhi::Error);
 }

@@ -55,7 +55,9 @@ std::optional<Rgba> expectedColor(const glm::vec3& d, float margin)
     const CubeFaceFrame f = cubeFaceFrame(face);
     const glm::vec3 p = d / glm::dot(d, f.axis);
     const float b = glm::dot(p, f.b), c = glm::dot(p, f.c);
-    auto near = [&](float v, glm::vec2 range) { return std::abs(v - range[0]) < margin || std::abs(v - range[1]) < margin; };
+    auto near = [&](float v, glm::vec2 range) {
+        return std::abs(v - range[0]) < margin || std::abs(v - range[1]) < margin;
+    };
     if (near(b, kMarkerB) || near(c, kMarkerC))
         return std::nullopt;
     const bool inside = b > kMarkerB[0] && b < kMarkerB[1] && c > kMarkerC[0] && c < kMarkerC[1];
@@ -66,7 +68,10 @@ class CubeMapTest : public GpuTest {
 protected:
     std::unique_ptr<rhi::Texture> renderMarkerCube()
     {
-        auto cube = device->createTexture({.width = kFaceSize, .height = kFaceSize, .layers = 6, .cube = true,
+        auto cube = device->createTexture({.width = kFaceSize,
+                                           .height = kFaceSize,
+                                           .layers = 6,
+                                           .cube = true,
                                            .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
                                            .debugName = "marker cube"});
         CubeFaceRenderer(*device, rhi::Format::RGBA8, 0.1f, 10.0f).render(*cube, 0, kCentre, markerScene());
@@ -99,8 +104,8 @@ TEST_F(CubeMapTest, FaceReadbacksMatchTheCubeSamplingTable)
 TEST_F(CubeMapTest, SamplingFindsEachMarkerInItsDirection)
 {
     auto cube = renderMarkerCube();
-    auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest,
-                                          .minFilter = rhi::Filter::Nearest, .debugName = "cube"});
+    auto sampler = device->createSampler(
+        {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "cube"});
     // Per face, in face coordinates (b, c): the marker, its mirror images in b and in c, a point the
     // marker transposed would cover, the marker near its corner, and the wall near the face's edge.
     const glm::vec2 probesPerFace[] = {{0.4f, 0.35f}, {-0.4f, 0.35f}, {0.4f, -0.35f},

@@ -40,9 +40,12 @@ bool occluded(const Occluders& o, float b, float c)
 float depthTolerance(rhi::Format format)
 {
     switch (format) {
-    case rhi::Format::D16: return 1.0f / 65535.0f;
-    case rhi::Format::D24S8: return 1.0f / 16777215.0f;
-    default: return 1e-6f;
+    case rhi::Format::D16:
+        return 1.0f / 65535.0f;
+    case rhi::Format::D24S8:
+        return 1.0f / 16777215.0f;
+    default:
+        return 1e-6f;
     }
 }
 
@@ -51,7 +54,10 @@ protected:
     void SetUp() override
     {
         GpuTest::SetUp();
-        map = device->createTexture({.width = kFaceSize, .height = kFaceSize, .layers = 12, .cube = true,
+        map = device->createTexture({.width = kFaceSize,
+                                     .height = kFaceSize,
+                                     .layers = 12,
+                                     .cube = true,
                                      .format = GetParam(),
                                      .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
                                      .debugName = "point shadow cubes"});
@@ -101,8 +107,8 @@ TEST_P(CubeShadowTest, ComparisonLookupsAgreeWithTheReferenceDepths)
             for (bool behind : {true, false})
                 for (float scale : {0.98f, 1.02f}) {
                     const CubeFaceFrame f = cubeFaceFrame(face);
-                    const glm::vec2 bc = cube == 0 ? glm::vec2(behind ? 0.5f : -0.5f, 0.3f)
-                                                   : glm::vec2(0.3f, behind ? 0.5f : -0.5f);
+                    const glm::vec2 bc =
+                        cube == 0 ? glm::vec2(behind ? 0.5f : -0.5f, 0.3f) : glm::vec2(0.3f, behind ? 0.5f : -0.5f);
                     const glm::vec3 d = scale * kOccluders[cube].distance * (f.axis + bc.x * f.b + bc.y * f.c);
                     directions.emplace_back(d, float(cube));
                     references.push_back(device->conventions().windowDepth(projection, rhi::cubeFaceViewDepth(d)));
@@ -112,9 +118,10 @@ TEST_P(CubeShadowTest, ComparisonLookupsAgreeWithTheReferenceDepths)
                                           .minFilter = rhi::Filter::Nearest,
                                           .compare = true,
                                           .debugName = "cube shadow"});
-    const rhi::Image lit = sampleCubeProbes(
-        *device, *map, *sampler, "samplerCubeArrayShadow",
-        "outColor = vec4(texture(cubeTexture, probe.direction[i], probe.reference[i].x));", directions, references);
+    const rhi::Image lit =
+        sampleCubeProbes(*device, *map, *sampler, "samplerCubeArrayShadow",
+                         "outColor = vec4(texture(cubeTexture, probe.direction[i], probe.reference[i].x));", directions,
+                         references);
     for (std::size_t i = 0; i < directions.size(); ++i)
         EXPECT_EQ(pixel(lit, std::uint32_t(i), 0)[0], expectLit[i] ? 255 : 0)
             << "probe " << i << ": cube " << i / 24 << ", face " << i / 4 % 6 << (i % 4 < 2 ? ", behind" : ", beside")

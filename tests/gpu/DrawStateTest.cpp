@@ -20,12 +20,14 @@ protected:
 layout(location = 0) in vec2 corner;
 layout(location = 1) in vec2 instanceOffset;
 void main() { gl_Position = vec4(corner + instanceOffset, 0.5, 1.0); }
-)", "instanced.vert"});
+)",
+                                       "instanced.vert"});
         fragment = device->createShader({rhi::ShaderStage::Fragment, R"(#version 450
 layout(std140, binding = 0) uniform Paint { vec4 color; } paint;
 layout(location = 0) out vec4 outColor;
 void main() { outColor = paint.color; }
-)", "paint.frag"});
+)",
+                                         "paint.frag"});
         stride = device->capabilities().uniformBufferOffsetAlignment;
         paints = device->createBuffer({.size = stride * 8, .usage = rhi::BufferUsage::Uniform});
         target = device->createTexture({.width = kSize, .height = kSize, .usage = rhi::TextureUsage::RenderTarget});
@@ -44,7 +46,8 @@ void main() { outColor = paint.color; }
         return device->createPipeline({
             .vertex = vertex.get(),
             .fragment = fragment.get(),
-            .vertexLayout = {.buffers = {{.stride = sizeof(glm::vec2)}, {.stride = sizeof(glm::vec2), .perInstance = true}},
+            .vertexLayout = {.buffers = {{.stride = sizeof(glm::vec2)},
+                                         {.stride = sizeof(glm::vec2), .perInstance = true}},
                              .attributes = {{.location = 0, .format = rhi::VertexFormat::Float2, .buffer = 0},
                                             {.location = 1, .format = rhi::VertexFormat::Float2, .buffer = 1}}},
             .cull = rhi::CullMode::Back,
@@ -139,8 +142,10 @@ TEST_F(DrawStateTest, ColorWriteMaskKeepsMaskedChannels)
 TEST_F(DrawStateTest, AlphaBlendingMixesWithTheTarget)
 {
     auto p = pipeline({.format = rhi::Format::RGBA8,
-                       .blend = {.enable = true, .srcColor = rhi::BlendFactor::SrcAlpha,
-                                 .dstColor = rhi::BlendFactor::OneMinusSrcAlpha, .srcAlpha = rhi::BlendFactor::One,
+                       .blend = {.enable = true,
+                                 .srcColor = rhi::BlendFactor::SrcAlpha,
+                                 .dstColor = rhi::BlendFactor::OneMinusSrcAlpha,
+                                 .srcAlpha = rhi::BlendFactor::One,
                                  .dstAlpha = rhi::BlendFactor::Zero}});
     setPaint(0, {1, 0, 0, 0.2f}); // 0.2 * 255 = 51 exactly
     commands->beginPass({.framebuffer = framebuffer.get(), .clearColor = glm::vec4(0, 0, 1, 1)});

@@ -36,7 +36,8 @@ glm::vec4 texelColor(const rhi::Image& image, std::uint32_t x, std::uint32_t y)
     return c;
 }
 
-std::unique_ptr<rhi::Framebuffer> colorFramebuffer(rhi::Device& device, const rhi::Texture& texture, std::uint32_t layer)
+std::unique_ptr<rhi::Framebuffer> colorFramebuffer(rhi::Device& device, const rhi::Texture& texture,
+                                                   std::uint32_t layer)
 {
     const rhi::Attachment attachment{&texture, layer};
     return device.createFramebuffer({.colors = {&attachment, 1}});
@@ -73,14 +74,16 @@ void main() {
     const vec2 corners[3] = vec2[](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
     gl_Position = block.projection * vec4(corners[gl_VertexIndex], -3.0, 1.0);
 }
-)", "depth.vert"});
+)",
+                                        "depth.vert"});
     auto fragment = device->createShader({rhi::ShaderStage::Fragment, "#version 450\nvoid main() {}\n", "depth.frag"});
     const glm::mat4 projection = device->conventions().orthographic(-1, 1, -1, 1, 1.0f, 5.0f);
     auto uniforms = device->createBuffer({.size = sizeof(glm::mat4), .usage = rhi::BufferUsage::Uniform});
     uniforms->writeObject(projection);
     for (auto [format, tolerance] : {std::pair{rhi::Format::D16, 2e-5f}, std::pair{rhi::Format::D24S8, 1e-6f},
                                      std::pair{rhi::Format::D32F, 1e-6f}}) {
-        auto pipeline = device->createPipeline({.vertex = vertex.get(), .fragment = fragment.get(),
+        auto pipeline = device->createPipeline({.vertex = vertex.get(),
+                                                .fragment = fragment.get(),
                                                 .depth = {.test = true, .write = true},
                                                 .depthFormat = format});
         auto texture = device->createTexture(
@@ -101,7 +104,10 @@ void main() {
 
 TEST_F(FormatsTest, ArrayLayersAreSeparateTargets)
 {
-    auto array = device->createTexture({.width = 4, .height = 4, .layers = 3, .array = true,
+    auto array = device->createTexture({.width = 4,
+                                        .height = 4,
+                                        .layers = 3,
+                                        .array = true,
                                         .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled});
     const glm::vec4 colors[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
     for (std::uint32_t layer = 0; layer < 3; ++layer)

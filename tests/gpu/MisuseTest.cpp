@@ -57,7 +57,8 @@ struct MisplacedTransformUniforms {
 
 rhi::UniformLayout transformLayout()
 {
-    return {"Transform", sizeof(TransformUniforms),
+    return {"Transform",
+            sizeof(TransformUniforms),
             {PENUMBRA_UNIFORM_MEMBER(TransformUniforms, clip), PENUMBRA_UNIFORM_MEMBER(TransformUniforms, tint)}};
 }
 
@@ -79,21 +80,43 @@ struct Objects {
         indices = device.createBuffer({.size = 6, .usage = rhi::BufferUsage::Index, .debugName = "indices"});
         uniforms = device.createBuffer({.size = 256, .usage = rhi::BufferUsage::Uniform, .debugName = "uniforms"});
         readback = device.createBuffer({.size = 512, .usage = rhi::BufferUsage::Readback, .debugName = "readback"});
-        color = device.createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled, .debugName = "color"});
-        depth = device.createTexture({.width = 8, .height = 8, .format = rhi::Format::D32F, .usage = rhi::TextureUsage::RenderTarget, .debugName = "depth"});
-        image = device.createTexture({.width = 4, .height = 4, .usage = rhi::TextureUsage::Sampled, .debugName = "image"});
-        small = device.createTexture({.width = 4, .height = 4, .usage = rhi::TextureUsage::RenderTarget, .debugName = "small"});
-        sampler = device.createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "nearest"});
+        color = device.createTexture({.width = 8,
+                                      .height = 8,
+                                      .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
+                                      .debugName = "color"});
+        depth = device.createTexture({.width = 8,
+                                      .height = 8,
+                                      .format = rhi::Format::D32F,
+                                      .usage = rhi::TextureUsage::RenderTarget,
+                                      .debugName = "depth"});
+        image =
+            device.createTexture({.width = 4, .height = 4, .usage = rhi::TextureUsage::Sampled, .debugName = "image"});
+        small = device.createTexture(
+            {.width = 4, .height = 4, .usage = rhi::TextureUsage::RenderTarget, .debugName = "small"});
+        sampler = device.createSampler(
+            {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "nearest"});
         vertex = device.createShader({rhi::ShaderStage::Vertex, vertexGlsl, "misuse.vert"});
         fragment = device.createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "misuse.frag"});
         const rhi::Attachment colorAttachment{color.get(), 0};
-        target = device.createFramebuffer({.colors = {&colorAttachment, 1}, .depth = {depth.get(), 0}, .debugName = "target"});
+        target = device.createFramebuffer(
+            {.colors = {&colorAttachment, 1}, .depth = {depth.get(), 0}, .debugName = "target"});
         pipeline = device.createPipeline(pipelineDesc());
         const std::uint32_t samples = multisampleCount(device.capabilities());
-        multisampled = device.createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget, .samples = samples, .debugName = "multisampled"});
-        multisampledDepth = device.createTexture({.width = 8, .height = 8, .format = rhi::Format::D32F, .usage = rhi::TextureUsage::RenderTarget, .samples = samples, .debugName = "multisampled depth"});
+        multisampled = device.createTexture({.width = 8,
+                                             .height = 8,
+                                             .usage = rhi::TextureUsage::RenderTarget,
+                                             .samples = samples,
+                                             .debugName = "multisampled"});
+        multisampledDepth = device.createTexture({.width = 8,
+                                                  .height = 8,
+                                                  .format = rhi::Format::D32F,
+                                                  .usage = rhi::TextureUsage::RenderTarget,
+                                                  .samples = samples,
+                                                  .debugName = "multisampled depth"});
         const rhi::Attachment multisampledAttachment{multisampled.get(), 0};
-        multisampledTarget = device.createFramebuffer({.colors = {&multisampledAttachment, 1}, .depth = {multisampledDepth.get(), 0}, .debugName = "multisampled target"});
+        multisampledTarget = device.createFramebuffer({.colors = {&multisampledAttachment, 1},
+                                                       .depth = {multisampledDepth.get(), 0},
+                                                       .debugName = "multisampled target"});
     }
 
     rhi::PipelineDesc pipelineDesc() const
@@ -153,7 +176,10 @@ auto text(std::string message)
 }
 void nothing(Objects&) {}
 
-rhi::Attachment attach(const std::unique_ptr<rhi::Texture>& texture, std::uint32_t layer = 0) { return {texture.get(), layer}; }
+rhi::Attachment attach(const std::unique_ptr<rhi::Texture>& texture, std::uint32_t layer = 0)
+{
+    return {texture.get(), layer};
+}
 
 const std::vector<Rule>& rules()
 {
@@ -173,10 +199,14 @@ const std::vector<Rule>& rules()
          [](Objects& o) { o.device.createTexture({.width = 8, .height = 8, .mipLevels = 0, .debugName = "bad"}); },
          E::Error, text("texture 'bad': mipLevels 0 is outside 1..4 (the full chain of 8x8)")},
         {"cube textures have 6 layers per cube", nothing,
-         [](Objects& o) { o.device.createTexture({.width = 8, .height = 8, .layers = 4, .cube = true, .debugName = "bad"}); },
+         [](Objects& o) {
+             o.device.createTexture({.width = 8, .height = 8, .layers = 4, .cube = true, .debugName = "bad"});
+         },
          E::Error, text("texture 'bad': a cube texture needs a multiple of 6 layers (one per face), not 4")},
         {"cube faces are square", nothing,
-         [](Objects& o) { o.device.createTexture({.width = 8, .height = 4, .layers = 6, .cube = true, .debugName = "bad"}); },
+         [](Objects& o) {
+             o.device.createTexture({.width = 8, .height = 4, .layers = 6, .cube = true, .debugName = "bad"});
+         },
          E::Error, text("texture 'bad': a cube texture needs square faces, not 8x4")},
         {"sampler LOD clamps are ordered", nothing,
          [](Objects& o) { o.device.createSampler({.minLod = 2.0f, .maxLod = 1.0f, .debugName = "bad"}); }, E::Error,
@@ -262,10 +292,12 @@ const std::vector<Rule>& rules()
              o.device.createPipeline(d);
          },
          E::Error,
-         text("pipeline 'bad': attribute at location 0 reads vertex buffer slot 1, but the layout describes 1 buffer(s)")},
+         text(
+             "pipeline 'bad': attribute at location 0 reads vertex buffer slot 1, but the layout describes 1 buffer(s)")},
         {"both stages give a binding the same kind", nothing,
          [](Objects& o) {
-             auto conflicting = o.device.createShader({rhi::ShaderStage::Fragment, conflictingFragmentGlsl, "conflict.frag"});
+             auto conflicting =
+                 o.device.createShader({rhi::ShaderStage::Fragment, conflictingFragmentGlsl, "conflict.frag"});
              rhi::PipelineDesc d = o.pipelineDesc();
              d.fragment = conflicting.get();
              d.uniformLayouts.clear();
@@ -275,7 +307,8 @@ const std::vector<Rule>& rules()
         {"C++ uniform layouts match the std140 offsets", nothing,
          [](Objects& o) {
              rhi::PipelineDesc d = o.pipelineDesc();
-             d.uniformLayouts = {{"Transform", sizeof(MisplacedTransformUniforms),
+             d.uniformLayouts = {{"Transform",
+                                  sizeof(MisplacedTransformUniforms),
                                   {PENUMBRA_UNIFORM_MEMBER(MisplacedTransformUniforms, clip),
                                    PENUMBRA_UNIFORM_MEMBER(MisplacedTransformUniforms, tint)}}};
              o.device.createPipeline(d);
@@ -286,7 +319,8 @@ const std::vector<Rule>& rules()
         {"C++ uniform layouts have every member of the block", nothing,
          [](Objects& o) {
              rhi::PipelineDesc d = o.pipelineDesc();
-             d.uniformLayouts = {{"Transform", sizeof(TransformUniforms), {PENUMBRA_UNIFORM_MEMBER(TransformUniforms, clip)}}};
+             d.uniformLayouts = {
+                 {"Transform", sizeof(TransformUniforms), {PENUMBRA_UNIFORM_MEMBER(TransformUniforms, clip)}}};
              o.device.createPipeline(d);
          },
          E::Error,
@@ -306,16 +340,24 @@ const std::vector<Rule>& rules()
              o.device.createPipeline(d);
          },
          E::Error,
-         text("pipeline 'bad': the C++ layout of uniform block 'Missing' matches no block of misuse.vert or misuse.frag")},
+         text(
+             "pipeline 'bad': the C++ layout of uniform block 'Missing' matches no block of misuse.vert or misuse.frag")},
         {"timestamp queries count at least one", nothing, [](Objects& o) { o.device.createTimestampQueries(0); },
          E::Error, text("createTimestampQueries: count must be at least 1")},
         // Multisampling.
         {"sample counts are 1, 2, 4 or 8", nothing,
-         [](Objects& o) { o.device.createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget, .samples = 3, .debugName = "bad"}); },
+         [](Objects& o) {
+             o.device.createTexture(
+                 {.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget, .samples = 3, .debugName = "bad"});
+         },
          E::Error, text("texture 'bad': samples 3 is not 1, 2, 4 or 8")},
         {"multisampled textures are render targets only", nothing,
          [](Objects& o) {
-             o.device.createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled, .samples = multisampleCount(o.device.capabilities()), .debugName = "bad"});
+             o.device.createTexture({.width = 8,
+                                     .height = 8,
+                                     .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
+                                     .samples = multisampleCount(o.device.capabilities()),
+                                     .debugName = "bad"});
          },
          E::Error,
          [](const rhi::Capabilities& c) {
@@ -325,7 +367,12 @@ const std::vector<Rule>& rules()
          }},
         {"multisampled textures have one layer and one level", nothing,
          [](Objects& o) {
-             o.device.createTexture({.width = 8, .height = 8, .layers = 2, .usage = rhi::TextureUsage::RenderTarget, .samples = multisampleCount(o.device.capabilities()), .debugName = "bad"});
+             o.device.createTexture({.width = 8,
+                                     .height = 8,
+                                     .layers = 2,
+                                     .usage = rhi::TextureUsage::RenderTarget,
+                                     .samples = multisampleCount(o.device.capabilities()),
+                                     .debugName = "bad"});
          },
          E::Error,
          [](const rhi::Capabilities& c) {
@@ -366,9 +413,8 @@ const std::vector<Rule>& rules()
         {"resolve reads a multisampled texture", nothing,
          [](Objects& o) { o.list->resolveTexture(*o.color, *o.small); }, E::Error,
          text("resolveTexture: source 'color' is not multisampled")},
-        {"resolve reads colour", nothing,
-         [](Objects& o) { o.list->resolveTexture(*o.multisampledDepth, *o.depth); }, E::Error,
-         text("resolveTexture: source 'multisampled depth' is D32F; only colour textures are resolved")},
+        {"resolve reads colour", nothing, [](Objects& o) { o.list->resolveTexture(*o.multisampledDepth, *o.depth); },
+         E::Error, text("resolveTexture: source 'multisampled depth' is D32F; only colour textures are resolved")},
         {"resolve writes a single-sampled texture", nothing,
          [](Objects& o) { o.list->resolveTexture(*o.multisampled, *o.multisampled); }, E::Error,
          [](const rhi::Capabilities& c) {
@@ -470,13 +516,15 @@ const std::vector<Rule>& rules()
         {"uniform blocks are bound at draws", [](Objects& o) { o.bindForDraw("uniform"); },
          [](Objects& o) { o.list->draw(3); }, E::Error,
          text("draw: pipeline 'bad' binding 0 ('Transform') needs a uniform buffer, but nothing is bound")},
-        {"uniform blocks are bound with buffers", [](Objects& o) {
+        {"uniform blocks are bound with buffers",
+         [](Objects& o) {
              o.bindForDraw("uniform");
              o.list->bindTexture(0, *o.image, *o.sampler);
          },
          [](Objects& o) { o.list->draw(3); }, E::Error,
          text("draw: pipeline 'bad' binding 0 ('Transform') needs a uniform buffer, but a texture is bound")},
-        {"bound uniform ranges cover the block", [](Objects& o) {
+        {"bound uniform ranges cover the block",
+         [](Objects& o) {
              o.bindForDraw("uniform");
              o.list->bindUniformBuffer(0, *o.uniforms, 0, 16);
          },
@@ -518,14 +566,15 @@ const std::vector<Rule>& rules()
          },
          E::Error,
          [](const rhi::Capabilities& c) {
-             return fmt::format("bindUniformBuffer: binding 0: {} bytes exceed Capabilities::maxUniformBufferRange ({})",
-                                c.maxUniformBufferRange + 16ull, c.maxUniformBufferRange);
+             return fmt::format(
+                 "bindUniformBuffer: binding 0: {} bytes exceed Capabilities::maxUniformBufferRange ({})",
+                 c.maxUniformBufferRange + 16ull, c.maxUniformBufferRange);
          }},
         {"uniform ranges are inside the buffer", nothing,
          [](Objects& o) { o.list->bindUniformBuffer(0, *o.uniforms, 0, 512); }, E::Error,
          text("bindUniformBuffer: 512 bytes at offset 0 exceed buffer 'uniforms' (256 bytes)")},
-        {"uniform offsets are aligned", nothing,
-         [](Objects& o) { o.list->bindUniformBuffer(0, *o.uniforms, 1, 16); }, E::Error,
+        {"uniform offsets are aligned", nothing, [](Objects& o) { o.list->bindUniformBuffer(0, *o.uniforms, 1, 16); },
+         E::Error,
          [](const rhi::Capabilities& c) {
              return fmt::format("bindUniformBuffer: offset 1 is not a multiple of "
                                 "Capabilities::uniformBufferOffsetAlignment ({})",
@@ -553,11 +602,9 @@ const std::vector<Rule>& rules()
         {"readback offsets are texel-aligned", nothing,
          [](Objects& o) { o.list->copyTextureToBuffer(*o.color, 0, 0, *o.readback, 2); }, E::Error,
          text("copyTextureToBuffer: offset 2 is not a multiple of 4 for RGBA8")},
-        {"readback levels exist", nothing,
-         [](Objects& o) { o.list->copyTextureToBuffer(*o.color, 0, 1, *o.readback); }, E::Error,
-         text("copyTextureToBuffer: mip level 1 of texture 'color' is out of range [0, 0]")},
-        {"timestamp indices exist",
-         nothing,
+        {"readback levels exist", nothing, [](Objects& o) { o.list->copyTextureToBuffer(*o.color, 0, 1, *o.readback); },
+         E::Error, text("copyTextureToBuffer: mip level 1 of texture 'color' is out of range [0, 0]")},
+        {"timestamp indices exist", nothing,
          [](Objects& o) {
              auto queries = o.device.createTimestampQueries(2);
              o.list->writeTimestamp(*queries, 2);
@@ -585,9 +632,10 @@ const std::vector<Rule>& rules()
 
 std::string describe(const std::exception& e)
 {
-    return fmt::format("{} \"{}\"", dynamic_cast<const rhi::UnsupportedError*>(&e) ? "UnsupportedError"
-                                    : dynamic_cast<const rhi::Error*>(&e)           ? "Error"
-                                                                                    : typeid(e).name(),
+    return fmt::format("{} \"{}\"",
+                       dynamic_cast<const rhi::UnsupportedError*>(&e) ? "UnsupportedError"
+                       : dynamic_cast<const rhi::Error*>(&e)          ? "Error"
+                                                                      : typeid(e).name(),
                        e.what());
 }
 

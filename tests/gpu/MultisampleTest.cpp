@@ -29,9 +29,9 @@ void main() { color = vec4(1.0); }
 constexpr glm::vec2 kTriangle[] = {{-0.8f, -0.7f}, {0.75f, -0.2f}, {-0.1f, 0.8f}};
 
 struct Edges {
-    std::size_t white = 0;        // 255 in red
+    std::size_t white = 0; // 255 in red
     std::size_t intermediate = 0; // strictly between black and white
-    std::size_t shades = 0;       // distinct intermediate red values
+    std::size_t shades = 0; // distinct intermediate red values
 };
 
 Edges countEdges(const rhi::Image& image)
@@ -114,7 +114,8 @@ TEST_F(MultisampleTest, CapabilitiesListCountsOfOneTwoFourOrEight)
         EXPECT_EQ((support.sampleCounts & 1u) != 0, support.renderTarget) << rhi::formatName(f);
     }
     EXPECT_NE(multisampleCount(), 0u) << "the device offers no multisampled RGBA8 and D32F targets: "
-                                      << rhi::sampleCountList(device->capabilities().format(rhi::Format::RGBA8).sampleCounts);
+                                      << rhi::sampleCountList(
+                                             device->capabilities().format(rhi::Format::RGBA8).sampleCounts);
 }
 
 // Without multisampling every pixel is black or white (the negative control); with it the edge pixels are grey, in
@@ -151,8 +152,11 @@ TEST_F(MultisampleTest, CountsTheDeviceLacksAreRefusedWithTheOnesItOffers)
     for (std::uint32_t count = 2; count <= 8; count *= 2) {
         if ((color & count) == 0) {
             try {
-                device->createTexture({.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget,
-                                       .samples = count, .debugName = "bad"});
+                device->createTexture({.width = 8,
+                                       .height = 8,
+                                       .usage = rhi::TextureUsage::RenderTarget,
+                                       .samples = count,
+                                       .debugName = "bad"});
                 ADD_FAILURE() << count << " samples were accepted for a texture";
             } catch (const rhi::UnsupportedError& e) {
                 EXPECT_EQ(std::string(e.what()),
@@ -162,7 +166,8 @@ TEST_F(MultisampleTest, CountsTheDeviceLacksAreRefusedWithTheOnesItOffers)
         }
         if ((caps.sampleCounts(targets) & count) == 0) {
             rhi::PipelineDesc desc{.vertex = vertex.get(), .fragment = fragment.get()};
-            desc.vertexLayout = {{{.stride = sizeof(glm::vec2)}}, {{.location = 0, .format = rhi::VertexFormat::Float2}}};
+            desc.vertexLayout = {{{.stride = sizeof(glm::vec2)}},
+                                 {{.location = 0, .format = rhi::VertexFormat::Float2}}};
             desc.colorTargets = {{.format = rhi::Format::RGBA8}};
             desc.depthFormat = rhi::Format::D32F;
             desc.samples = count;

@@ -16,7 +16,9 @@ constexpr std::uint32_t kAtlasSide = 8192;
 // After the refusal the device still creates, clears and reads back an atlas: the next smaller request succeeds.
 void expectUsable(rhi::Device& device)
 {
-    auto atlas = device.createTexture({.width = 256, .height = 256, .format = rhi::Format::D32F,
+    auto atlas = device.createTexture({.width = 256,
+                                       .height = 256,
+                                       .format = rhi::Format::D32F,
                                        .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
                                        .debugName = "atlas after the refusal"});
     auto framebuffer = device.createFramebuffer({.depth = {atlas.get(), 0}});
@@ -38,13 +40,16 @@ TEST_F(OutOfMemoryTest, CubeAtlasesBeyondTheDeviceMemoryAreANamedError)
     const std::uint32_t cubes = std::uint32_t(caps.deviceMemoryBytes / (6 * kFaceBytes)) + 1;
     if (kAtlasSide > caps.maxCubeSize || cubes * 6 > caps.maxTextureLayers)
         GTEST_SKIP() << caps.device << ": " << cubes << " cubes of " << kAtlasSide << "^2 are past its limits";
-    const rhi::TextureDesc huge{.width = kAtlasSide, .height = kAtlasSide, .layers = cubes * 6, .cube = true,
+    const rhi::TextureDesc huge{.width = kAtlasSide,
+                                .height = kAtlasSide,
+                                .layers = cubes * 6,
+                                .cube = true,
                                 .format = rhi::Format::D32F,
                                 .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
                                 .debugName = "point shadow cubes"};
     const std::string message = errorOf([&] { device->createTexture(huge); });
-    EXPECT_NE(message.find(fmt::format("texture 'point shadow cubes' (8192 x 8192, {} layers, D32F, {})",
-                                       cubes * 6, rhi::byteSize(rhi::textureBytes(huge)))),
+    EXPECT_NE(message.find(fmt::format("texture 'point shadow cubes' (8192 x 8192, {} layers, D32F, {})", cubes * 6,
+                                       rhi::byteSize(rhi::textureBytes(huge)))),
               std::string::npos)
         << message;
     EXPECT_NE(message.find(

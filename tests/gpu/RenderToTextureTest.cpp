@@ -21,9 +21,10 @@ layout(std140, binding = 0) uniform Probe { vec2 uv; float useProbe; } probe;
 layout(binding = 1) uniform sampler2D image;
 layout(location = 0) out vec4 outColor;
 void main() { outColor = texture(image, probe.useProbe > 0.5 ? probe.uv : vUv); }
-)", "texture_viewer.frag"});
-        pipeline_ = device.createPipeline({.vertex = vertex_.get(), .fragment = fragment_.get(),
-                                           .colorTargets = {{.format = rhi::Format::RGBA8}}});
+)",
+                                         "texture_viewer.frag"});
+        pipeline_ = device.createPipeline(
+            {.vertex = vertex_.get(), .fragment = fragment_.get(), .colorTargets = {{.format = rhi::Format::RGBA8}}});
         sampler_ = device.createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
         uniforms_ = device.createBuffer({.size = 16, .usage = rhi::BufferUsage::Uniform});
     }

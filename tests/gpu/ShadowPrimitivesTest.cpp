@@ -22,8 +22,10 @@ protected:
 layout(location = 0) in vec3 position;
 layout(std140, binding = 0) uniform Light { mat4 viewProjection; } light;
 void main() { gl_Position = light.viewProjection * vec4(position, 1.0); }
-)", "caster.vert"});
-        casterFragment = device->createShader({rhi::ShaderStage::Fragment, "#version 450\nvoid main() {}\n", "caster.frag"});
+)",
+                                             "caster.vert"});
+        casterFragment =
+            device->createShader({rhi::ShaderStage::Fragment, "#version 450\nvoid main() {}\n", "caster.frag"});
         lightUniforms = device->createBuffer({.size = sizeof(glm::mat4), .usage = rhi::BufferUsage::Uniform});
         lightUniforms->writeObject(lightProjection);
     }
@@ -43,7 +45,9 @@ void main() { gl_Position = light.viewProjection * vec4(position, 1.0); }
 
     std::unique_ptr<rhi::Texture> shadowMap()
     {
-        return device->createTexture({.width = kMapSize, .height = kMapSize, .format = rhi::Format::D32F,
+        return device->createTexture({.width = kMapSize,
+                                      .height = kMapSize,
+                                      .format = rhi::Format::D32F,
                                       .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
                                       .debugName = "shadow map"});
     }
@@ -52,7 +56,8 @@ void main() { gl_Position = light.viewProjection * vec4(position, 1.0); }
     void renderCasters(const rhi::Texture& map, const rhi::Pipeline& pipeline, const std::vector<glm::vec3>& triangles,
                        std::optional<rhi::DepthBias> overrideBias = {})
     {
-        auto vertices = device->createBuffer({.size = triangles.size() * sizeof(glm::vec3), .usage = rhi::BufferUsage::Vertex});
+        auto vertices =
+            device->createBuffer({.size = triangles.size() * sizeof(glm::vec3), .usage = rhi::BufferUsage::Vertex});
         vertices->write(0, std::as_bytes(std::span(triangles)));
         auto framebuffer = device->createFramebuffer({.depth = {&map, 0}, .debugName = "shadow map"});
         auto commands = device->createCommandList();
@@ -69,7 +74,8 @@ void main() { gl_Position = light.viewProjection * vec4(position, 1.0); }
 
     static std::vector<glm::vec3> quad(glm::vec2 min, glm::vec2 max, float zLeft, float zRight)
     {
-        const glm::vec3 a(min.x, min.y, zLeft), b(max.x, min.y, zRight), c(max.x, max.y, zRight), d(min.x, max.y, zLeft);
+        const glm::vec3 a(min.x, min.y, zLeft), b(max.x, min.y, zRight), c(max.x, max.y, zRight),
+            d(min.x, max.y, zLeft);
         return {a, b, c, a, c, d};
     }
 
@@ -95,15 +101,18 @@ void main() {
     vec4 coord = receiver.worldToShadow * vec4(vNdc, -5.0, 1.0);
     outColor = vec4(vec3(texture(shadowMap, coord.xyz / coord.w)), 1.0);
 }
-)", "receiver.frag"});
+)",
+                                          "receiver.frag"});
     auto pipeline = device->createPipeline(
         {.vertex = vertex.get(), .fragment = fragment.get(), .colorTargets = {{.format = rhi::Format::RGBA8}}});
     auto uniforms = device->createBuffer({.size = sizeof(glm::mat4), .usage = rhi::BufferUsage::Uniform});
     uniforms->writeObject(device->conventions().clipToTexture() * lightProjection);
-    auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest,
-                                          .minFilter = rhi::Filter::Nearest, .compare = true, .debugName = "shadow"});
-    auto target = device->createTexture(
-        {.width = kMapSize, .height = kMapSize, .format = rhi::Format::RGBA8, .usage = rhi::TextureUsage::RenderTarget});
+    auto sampler = device->createSampler(
+        {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .compare = true, .debugName = "shadow"});
+    auto target = device->createTexture({.width = kMapSize,
+                                         .height = kMapSize,
+                                         .format = rhi::Format::RGBA8,
+                                         .usage = rhi::TextureUsage::RenderTarget});
     const rhi::Attachment attachment{target.get(), 0};
     auto framebuffer = device->createFramebuffer({.colors = {&attachment, 1}});
     auto commands = device->createCommandList();
@@ -142,9 +151,9 @@ TEST_F(ShadowPrimitivesTest, DepthBiasMovesDepthAwayFromTheLight)
         rhi::DepthBias bias;
         bool throughSetDepthBias;
     };
-    for (const Variant& v : {Variant{"slope (pipeline)", {.slope = 4.0f}, false},
-                             Variant{"slope (setDepthBias)", {.slope = 4.0f}, true},
-                             Variant{"constant (pipeline)", {.constant = 64.0f}, false}}) {
+    for (const Variant& v :
+         {Variant{"slope (pipeline)", {.slope = 4.0f}, false}, Variant{"slope (setDepthBias)", {.slope = 4.0f}, true},
+          Variant{"constant (pipeline)", {.constant = 64.0f}, false}}) {
         auto map = shadowMap();
         auto pipeline = casterPipeline(v.throughSetDepthBias ? rhi::DepthBias{} : v.bias);
         renderCasters(*map, *pipeline, slanted, v.throughSetDepthBias ? std::optional(v.bias) : std::nullopt);

@@ -15,9 +15,9 @@ namespace {
 
 using TextureTest = GpuTest;
 
-constexpr std::array colorFormats{rhi::Format::RGBA8, rhi::Format::RGBA8_SRGB, rhi::Format::R8,    rhi::Format::RG8,
-                                  rhi::Format::R16F,  rhi::Format::RG16F,      rhi::Format::R32F,  rhi::Format::RGBA16F,
-                                  rhi::Format::RGBA32F};
+constexpr std::array colorFormats{rhi::Format::RGBA8, rhi::Format::RGBA8_SRGB, rhi::Format::R8,
+                                  rhi::Format::RG8,   rhi::Format::R16F,       rhi::Format::RG16F,
+                                  rhi::Format::R32F,  rhi::Format::RGBA16F,    rhi::Format::RGBA32F};
 
 // Bytes that differ per texel and level and are finite numbers in every format (float formats get small
 // positive values, so no NaN payload can be rewritten on the way).
@@ -41,7 +41,11 @@ TEST_F(TextureTest, EveryMipLevelOfEveryFormatUploadsAndReadsBack)
 {
     for (rhi::Format format : colorFormats) {
         // 5 x 3: odd sizes, levels 5x3, 2x1, 1x1.
-        auto texture = device->createTexture({.width = 5, .height = 3, .layers = 2, .mipLevels = 3, .format = format,
+        auto texture = device->createTexture({.width = 5,
+                                              .height = 3,
+                                              .layers = 2,
+                                              .mipLevels = 3,
+                                              .format = format,
                                               .debugName = std::string(rhi::formatName(format))});
         for (std::uint32_t layer = 0; layer < 2; ++layer)
             for (std::uint32_t level = 0; level < 3; ++level)
@@ -84,7 +88,9 @@ TEST_F(TextureTest, ReportedFormatSupportHolds)
     const rhi::Capabilities& caps = device->capabilities();
     for (rhi::Format format : colorFormats) {
         const rhi::FormatSupport& support = caps.format(format);
-        const rhi::TextureDesc desc{.width = 4, .height = 4, .format = format,
+        const rhi::TextureDesc desc{.width = 4,
+                                    .height = 4,
+                                    .format = format,
                                     .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget};
         if (support.sampled && support.renderTarget)
             EXPECT_NO_THROW(device->createTexture(desc)) << rhi::formatName(format);
@@ -108,7 +114,9 @@ TEST_F(TextureTest, NewFormatsKeepTheClearValue)
     auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
     for (rhi::Format format : {rhi::Format::R8, rhi::Format::RG8, rhi::Format::R16F, rhi::Format::RG16F,
                                rhi::Format::R32F, rhi::Format::RGBA8_SRGB}) {
-        auto texture = device->createTexture({.width = 4, .height = 4, .format = format,
+        auto texture = device->createTexture({.width = 4,
+                                              .height = 4,
+                                              .format = format,
                                               .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled});
         const rhi::Attachment attachment{texture.get(), 0};
         auto framebuffer = device->createFramebuffer({.colors = {&attachment, 1}});
@@ -197,8 +205,7 @@ TEST_F(TextureTest, MipFiltersAndLodClampsPickTheLevels)
     EXPECT_NEAR(level({.mipFilter = rhi::MipFilter::None}, 4.0f), 0.0f, 1e-4f) << "None reads level 0 only";
     EXPECT_NEAR(level({.mipFilter = rhi::MipFilter::Nearest, .minLod = 3.0f}, 0.0f), 3.0f, 1e-4f) << "minLod";
     EXPECT_NEAR(level({.mipFilter = rhi::MipFilter::Nearest, .maxLod = 1.0f}, 5.0f), 1.0f, 1e-4f) << "maxLod";
-    EXPECT_NEAR(level({.mipFilter = rhi::MipFilter::Linear, .minLod = 1.5f, .maxLod = 1.5f}, 6.0f), 1.5f,
-                1.0f / 256.0f)
+    EXPECT_NEAR(level({.mipFilter = rhi::MipFilter::Linear, .minLod = 1.5f, .maxLod = 1.5f}, 6.0f), 1.5f, 1.0f / 256.0f)
         << "both clamps";
 }
 
@@ -214,13 +221,15 @@ TEST_F(TextureTest, WrapModesAddressTexelsOutsideTheTexture)
     TextureProbe probe(*device);
     struct Case {
         rhi::AddressMode mode;
-        int atMinus;  // texel index sampled at -0.375
-        int atPlus;   // ... at 1.375
+        int atMinus; // texel index sampled at -0.375
+        int atPlus; // ... at 1.375
     };
     for (const Case& c : {Case{rhi::AddressMode::Repeat, 2, 1}, Case{rhi::AddressMode::MirroredRepeat, 1, 2},
                           Case{rhi::AddressMode::ClampToEdge, 0, 3}}) {
-        auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest,
-                                              .addressU = c.mode, .addressV = c.mode});
+        auto sampler = device->createSampler({.magFilter = rhi::Filter::Nearest,
+                                              .minFilter = rhi::Filter::Nearest,
+                                              .addressU = c.mode,
+                                              .addressV = c.mode});
         const auto at = [&](glm::vec2 uv) { return probe.sample(*texture, *sampler, {.origin = uv}).front(); };
         const auto expected = [](int index) { return (10.0f + 10.0f * float(index)) / 255.0f; };
         const glm::vec4 a = at({-0.375f, 1.375f});

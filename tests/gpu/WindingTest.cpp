@@ -8,8 +8,9 @@ using WindingTest = GpuTest;
 
 const glm::vec4 white(1, 1, 1, 1);
 // Counter-clockwise in canonical NDC (y up): right, then up, then back.
-const std::vector<pattern::PatternVertex> counterClockwise = {
-    {{-0.8f, -0.8f, 2.0f}, white}, {{0.8f, -0.8f, 2.0f}, white}, {{0.0f, 0.8f, 2.0f}, white}};
+const std::vector<pattern::PatternVertex> counterClockwise = {{{-0.8f, -0.8f, 2.0f}, white},
+                                                              {{0.8f, -0.8f, 2.0f}, white},
+                                                              {{0.0f, 0.8f, 2.0f}, white}};
 const std::vector<pattern::PatternVertex> clockwise = {counterClockwise[0], counterClockwise[2], counterClockwise[1]};
 
 bool drawn(pattern::PatternRenderer& renderer, const std::vector<pattern::PatternVertex>& triangle, rhi::CullMode cull)

@@ -36,7 +36,8 @@ std::vector<parity::Picture> grey(rhi::Device& device, const rhi::NamedConfigura
 std::vector<parity::Picture> redOnOpenGl(rhi::Device& device, const rhi::NamedConfiguration& configuration)
 {
     const bool red = configuration.name == "opengl";
-    return {parity::colorPicture("colour", cleared(device, red ? glm::vec4(1, 0, 0, 1) : glm::vec4(0.5f, 0.5f, 0.5f, 1)))};
+    return {
+        parity::colorPicture("colour", cleared(device, red ? glm::vec4(1, 0, 0, 1) : glm::vec4(0.5f, 0.5f, 0.5f, 1)))};
 }
 
 TEST(ParityHarness, RunsEveryConfigurationOnAValidatedDevice)
@@ -88,7 +89,8 @@ TEST(ParityHarness, AnUnknownConfigurationIsRefusedBeforeAnythingRenders)
             << e.what();
     }
     EXPECT_FALSE(rendered);
-    EXPECT_THROW(parity::run(grey, {.configurations = {"vulkan"}, .pairing = parity::Pairing::AgainstReference,
+    EXPECT_THROW(parity::run(grey, {.configurations = {"vulkan"},
+                                    .pairing = parity::Pairing::AgainstReference,
                                     .reference = "opengl"}),
                  rhi::Error);
 }

@@ -65,7 +65,8 @@ TEST(ParityTest, ChangedPatternPixelCatchesFault)
     const rhi::Conventions conventions = first.conventions();
     const parity::Picture& pattern = first.picture("pattern");
     parity::Picture changed = pattern;
-    std::byte& green = changed.color.bytes[(std::size_t(changed.width()) * (changed.height() / 2) + changed.width() / 2) * 4 + 1];
+    std::byte& green =
+        changed.color.bytes[(std::size_t(changed.width()) * (changed.height() / 2) + changed.width() / 2) * 4 + 1];
     green = std::byte(std::uint8_t(green) ^ 1u);
     const parity::Thresholds& exact = patternThresholds().thresholds.at("pattern");
     ASSERT_TRUE(parity::comparePictures(pattern, conventions, pattern, conventions, exact).pass());
@@ -91,7 +92,8 @@ TEST(ParityTest, ChangedDepthTexelCatchesFault)
     // The view-depth bound catches it on its own, as it must across conventions, where raw depth is not compared.
     parity::Thresholds viewDepthOnly = bound;
     viewDepthOnly.bitExactWhereConventionsAgree = false;
-    const parity::PictureComparison across = parity::comparePictures(depth, conventions, farther, conventions, viewDepthOnly);
+    const parity::PictureComparison across =
+        parity::comparePictures(depth, conventions, farther, conventions, viewDepthOnly);
     EXPECT_GT(across.figures.maxDifference, bound.maxDifference);
     EXPECT_FALSE(across.pass());
 }
@@ -103,8 +105,8 @@ TEST(ParityTest, ReversedZBeatsTheStandardMappingAtDistance)
         forEachConfiguration([&](rhi::Device& device, const std::string& name) {
             const ZFighting z = countZFighting(device);
             std::cout << fmt::format("[ z-fighting ] {}: {} of {} pixels\n", name, z.fighting, z.pixels);
-            const bool precise = device.conventions().reversedZ() &&
-                                 device.conventions().depthRange() == rhi::DepthRange::ZeroToOne;
+            const bool precise =
+                device.conventions().reversedZ() && device.conventions().depthRange() == rhi::DepthRange::ZeroToOne;
             int& slot = precise ? worstReversed : bestStandard;
             slot = slot < 0 ? z.fighting : (precise ? std::max(slot, z.fighting) : std::min(slot, z.fighting));
         });

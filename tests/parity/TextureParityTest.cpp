@@ -24,8 +24,8 @@ constexpr std::uint32_t kTextureSize = 256; // 9 levels
 
 // Level L's hue; its checker alternates the full colour and 60 % of it, so a pixel shows which levels it
 // was filtered from whatever the blend of cells.
-constexpr std::array<glm::vec3, 9> kLevelHues{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1},
-                                               {1, 1, 1}, {1, 0.5f, 0}, {0.5f, 0, 1}}};
+constexpr std::array<glm::vec3, 9> kLevelHues{
+    {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0.5f, 0}, {0.5f, 0, 1}}};
 
 struct SamplerCase {
     const char* name;
@@ -39,21 +39,34 @@ const std::vector<SamplerCase>& samplerCases()
     using rhi::Filter;
     using rhi::MipFilter;
     static const std::vector<SamplerCase> cases{
-        {"nearest", {.magFilter = Filter::Nearest, .minFilter = Filter::Nearest, .addressU = AddressMode::Repeat,
-                     .addressV = AddressMode::Repeat}},
-        {"nearest-mip-nearest", {.magFilter = Filter::Nearest, .minFilter = Filter::Nearest,
-                                 .mipFilter = MipFilter::Nearest, .addressU = AddressMode::Repeat,
-                                 .addressV = AddressMode::Repeat}},
-        {"bilinear-mip-nearest", {.mipFilter = MipFilter::Nearest, .addressU = AddressMode::Repeat,
-                                  .addressV = AddressMode::Repeat}},
-        {"trilinear", {.mipFilter = MipFilter::Linear, .addressU = AddressMode::Repeat,
-                       .addressV = AddressMode::Repeat}},
-        {"anisotropic", {.mipFilter = MipFilter::Linear, .addressU = AddressMode::Repeat,
-                         .addressV = AddressMode::Repeat}, true},
-        {"lod-clamped", {.mipFilter = MipFilter::Linear, .addressU = AddressMode::Repeat,
-                         .addressV = AddressMode::Repeat, .minLod = 1.0f, .maxLod = 3.0f}},
-        {"mirrored", {.mipFilter = MipFilter::Linear, .addressU = AddressMode::MirroredRepeat,
-                      .addressV = AddressMode::MirroredRepeat}},
+        {"nearest",
+         {.magFilter = Filter::Nearest,
+          .minFilter = Filter::Nearest,
+          .addressU = AddressMode::Repeat,
+          .addressV = AddressMode::Repeat}},
+        {"nearest-mip-nearest",
+         {.magFilter = Filter::Nearest,
+          .minFilter = Filter::Nearest,
+          .mipFilter = MipFilter::Nearest,
+          .addressU = AddressMode::Repeat,
+          .addressV = AddressMode::Repeat}},
+        {"bilinear-mip-nearest",
+         {.mipFilter = MipFilter::Nearest, .addressU = AddressMode::Repeat, .addressV = AddressMode::Repeat}},
+        {"trilinear",
+         {.mipFilter = MipFilter::Linear, .addressU = AddressMode::Repeat, .addressV = AddressMode::Repeat}},
+        {"anisotropic",
+         {.mipFilter = MipFilter::Linear, .addressU = AddressMode::Repeat, .addressV = AddressMode::Repeat},
+         true},
+        {"lod-clamped",
+         {.mipFilter = MipFilter::Linear,
+          .addressU = AddressMode::Repeat,
+          .addressV = AddressMode::Repeat,
+          .minLod = 1.0f,
+          .maxLod = 3.0f}},
+        {"mirrored",
+         {.mipFilter = MipFilter::Linear,
+          .addressU = AddressMode::MirroredRepeat,
+          .addressV = AddressMode::MirroredRepeat}},
         {"clamped", {.mipFilter = MipFilter::Linear}},
     };
     return cases;
@@ -63,8 +76,11 @@ const std::vector<SamplerCase>& samplerCases()
 std::unique_ptr<rhi::Texture> levelCodedChecker(rhi::Device& device)
 {
     const std::uint32_t levels = rhi::fullMipChain(kTextureSize, kTextureSize);
-    auto texture = device.createTexture({.width = kTextureSize, .height = kTextureSize, .mipLevels = levels,
-                                         .format = rhi::Format::RGBA8_SRGB, .debugName = "level-coded checker"});
+    auto texture = device.createTexture({.width = kTextureSize,
+                                         .height = kTextureSize,
+                                         .mipLevels = levels,
+                                         .format = rhi::Format::RGBA8_SRGB,
+                                         .debugName = "level-coded checker"});
     for (std::uint32_t level = 0; level < levels; ++level) {
         const std::uint32_t extent = rhi::mipExtent(kTextureSize, level);
         const std::uint32_t cell = std::max(extent / 4, 1u);
@@ -87,7 +103,8 @@ class GrazingPlane {
 public:
     explicit GrazingPlane(rhi::Device& device) : device_(device)
     {
-        vertex_ = device.createShader({rhi::ShaderStage::Vertex, R"(#version 450
+        vertex_ = device.createShader({rhi::ShaderStage::Vertex,
+                                       R"(#version 450
 #include "transform.glsl"
 layout(std140, binding = 0) uniform View { mat4 viewProjection; } view;
 layout(location = 0) out vec2 vUv;
@@ -97,21 +114,23 @@ void main() {
     vUv = c * vec2(2.0, 8.0);
     gl_Position = transformPoint(view.viewProjection, vec3(mix(-3.0, 3.0, c.x), 0.0, mix(-0.5, -40.5, c.y)));
 }
-)", "grazing_plane.vert", {{"transform.glsl", std::string(shaders::source("transform.glsl"))}}});
+)",
+                                       "grazing_plane.vert",
+                                       {{"transform.glsl", std::string(shaders::source("transform.glsl"))}}});
         fragment_ = device.createShader({rhi::ShaderStage::Fragment, R"(#version 450
 layout(location = 0) in vec2 vUv;
 layout(binding = 1) uniform sampler2D image;
 layout(location = 0) out vec4 outColor;
 void main() { outColor = texture(image, vUv); }
-)", "grazing_plane.frag"});
-        pipeline_ = device.createPipeline({.vertex = vertex_.get(), .fragment = fragment_.get(),
-                                           .colorTargets = {{.format = rhi::Format::RGBA8}}});
+)",
+                                         "grazing_plane.frag"});
+        pipeline_ = device.createPipeline(
+            {.vertex = vertex_.get(), .fragment = fragment_.get(), .colorTargets = {{.format = rhi::Format::RGBA8}}});
         uniforms_ = device.createBuffer({.size = sizeof(glm::mat4), .usage = rhi::BufferUsage::Uniform});
-        const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 0.6f, 0.0f), glm::vec3(0.0f, 0.0f, -12.0f),
-                                           glm::vec3(0.0f, 1.0f, 0.0f));
-        uniforms_->writeObject(device.conventions().perspective(glm::radians(50.0f), float(kWidth) / float(kHeight),
-                                                                0.1f, 100.0f) *
-                               view);
+        const glm::mat4 view =
+            glm::lookAt(glm::vec3(0.0f, 0.6f, 0.0f), glm::vec3(0.0f, 0.0f, -12.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+        uniforms_->writeObject(
+            device.conventions().perspective(glm::radians(50.0f), float(kWidth) / float(kHeight), 0.1f, 100.0f) * view);
         target_ = device.createTexture({.width = kWidth, .height = kHeight, .usage = rhi::TextureUsage::RenderTarget});
         const rhi::Attachment attachment{target_.get(), 0};
         framebuffer_ = device.createFramebuffer({.colors = {&attachment, 1}});
@@ -164,8 +183,8 @@ std::vector<parity::Picture> renderPlanesAndChain(rhi::Device& device, const rhi
         pictures.push_back(parity::colorPicture(c.name, plane.render(*texture, *sampler)));
     }
     const std::vector<std::uint8_t> picture = oddPicture();
-    auto chain = device.createTexture({.width = 37, .height = 23, .mipLevels = rhi::fullMipChain(37, 23),
-                                       .format = rhi::Format::RGBA8_SRGB});
+    auto chain = device.createTexture(
+        {.width = 37, .height = 23, .mipLevels = rhi::fullMipChain(37, 23), .format = rhi::Format::RGBA8_SRGB});
     rhi::writeMipChain(device, *chain, 0, std::as_bytes(std::span(picture)));
     for (std::uint32_t level = 0; level < chain->desc().mipLevels; ++level)
         pictures.push_back(parity::colorPicture(mipName(level), rhi::readTexture(device, *chain, 0, level)));
@@ -238,8 +257,9 @@ TEST(TextureParity, MipLevelsGrowTowardsTheHorizon)
         nearest = nearest < 0 ? level : nearest;
         farthest = level;
     }
-    std::cout << fmt::format("[ texture parity ] levels down the middle column: {} at the near edge, {} at the far one\n",
-                             nearest, farthest);
+    std::cout << fmt::format(
+        "[ texture parity ] levels down the middle column: {} at the near edge, {} at the far one\n", nearest,
+        farthest);
     EXPECT_LE(nearest, 1);
     EXPECT_GE(farthest, 5);
 }
@@ -248,13 +268,16 @@ TEST(TextureParity, MipLevelsGrowTowardsTheHorizon)
 TEST(TextureParity, EverySamplerSettingChangesThePicture)
 {
     const parity::ConfigurationRun& planes = firstRendered();
-    const std::pair<const char*, const char*> pairs[] = {
-        {"nearest", "nearest-mip-nearest"}, {"nearest-mip-nearest", "bilinear-mip-nearest"},
-        {"bilinear-mip-nearest", "trilinear"}, {"trilinear", "anisotropic"}, {"trilinear", "lod-clamped"},
-        {"trilinear", "mirrored"}, {"trilinear", "clamped"}};
+    const std::pair<const char*, const char*> pairs[] = {{"nearest", "nearest-mip-nearest"},
+                                                         {"nearest-mip-nearest", "bilinear-mip-nearest"},
+                                                         {"bilinear-mip-nearest", "trilinear"},
+                                                         {"trilinear", "anisotropic"},
+                                                         {"trilinear", "lod-clamped"},
+                                                         {"trilinear", "mirrored"},
+                                                         {"trilinear", "clamped"}};
     for (const auto& [a, b] : pairs)
-        EXPECT_FALSE(identical(planes.picture(a).color, planes.picture(b).color)) << a << " and " << b
-                                                                                  << " gave the same picture";
+        EXPECT_FALSE(identical(planes.picture(a).color, planes.picture(b).color))
+            << a << " and " << b << " gave the same picture";
 }
 
 // The negative control of the byte comparison: one pixel of a real render one level off in one channel.

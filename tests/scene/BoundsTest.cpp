@@ -43,8 +43,8 @@ TEST(BoundsTest, TransformedIsTheBoxOfTheTransformedCorners)
 {
     const Bounds unit{{-1, -1, -1}, {1, 1, 1}};
     // 45 degrees about y: the x and z extents grow to sqrt(2).
-    const glm::mat4 m = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(10, 0, 0)), glm::radians(45.0f),
-                                    glm::vec3(0, 1, 0));
+    const glm::mat4 m =
+        glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(10, 0, 0)), glm::radians(45.0f), glm::vec3(0, 1, 0));
     const Bounds world = unit.transformed(m);
     EXPECT_NEAR(world.min.x, 10.0f - std::sqrt(2.0f), 1e-5f);
     EXPECT_NEAR(world.max.x, 10.0f + std::sqrt(2.0f), 1e-5f);

@@ -28,7 +28,9 @@ InstanceAttributes threeInstances(Component rotation = Component::Float)
 // The instanced node moves and stretches its instances, its parent moves and turns it.
 nlohmann::json parentNode(int child)
 {
-    return {{"name", "parent"}, {"translation", {1, 2, 3}}, {"rotation", {0, 0, 0.3826834, 0.9238795}},
+    return {{"name", "parent"},
+            {"translation", {1, 2, 3}},
+            {"rotation", {0, 0, 0.3826834, 0.9238795}},
             {"children", {child}}};
 }
 
@@ -123,10 +125,9 @@ TEST_F(GltfLoaderTest, InstancesLoadAsTheObjectsOfANodePerInstance)
     const glm::mat4 parent = glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)) *
                              glm::mat4_cast(glm::angleAxis(glm::radians(45.0f), glm::vec3(0, 0, 1)));
     const glm::mat4 node = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0, 1, 0)), glm::vec3(1, 2, 1));
-    const glm::mat4 instance =
-        glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(3, 0, 0)) *
-                       glm::mat4_cast(glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0))),
-                   glm::vec3(2, 0.5f, 1));
+    const glm::mat4 instance = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(3, 0, 0)) *
+                                              glm::mat4_cast(glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0))),
+                                          glm::vec3(2, 0.5f, 1));
     const glm::mat4 expected = parent * node * instance;
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -136,8 +137,9 @@ TEST_F(GltfLoaderTest, InstancesLoadAsTheObjectsOfANodePerInstance)
 TEST_F(GltfLoaderTest, MissingInstanceAttributesAreTheIdentity)
 {
     const InstanceAttributes all = threeInstances();
-    const std::vector<InstanceAttributes> partial{
-        {.translations = all.translations}, {.rotations = all.rotations}, {.scales = all.scales}};
+    const std::vector<InstanceAttributes> partial{{.translations = all.translations},
+                                                  {.rotations = all.rotations},
+                                                  {.scales = all.scales}};
     for (std::size_t i = 0; i < partial.size(); ++i) {
         SCOPED_TRACE(i);
         expectSameObjects(loadGltf(write(instancedScene(partial[i]), "instanced.gltf")).scene,
@@ -226,13 +228,15 @@ TEST_F(GltfLoaderTest, BadInstanceAttributesAreNamedByTheirPointer)
                                 kExtension));
     EXPECT_CONTAINS(errorWith([](GltfBuilder& b) { b.json()["accessors"][5]["componentType"] = 5122; }),
                     fmt::format("{}/attributes/ROTATION: accessor 5 is VEC4 of component type 5122, which ROTATION may "
-                                "not use", kExtension));
+                                "not use",
+                                kExtension));
     EXPECT_CONTAINS(errorWith([](GltfBuilder& b) {
                         b.json()["accessors"][5]["componentType"] = 5123;
                         b.json()["accessors"][5]["normalized"] = true;
                     }),
                     fmt::format("{}/attributes/ROTATION: accessor 5 is VEC4 of component type 5123 (normalized), which "
-                                "ROTATION may not use", kExtension));
+                                "ROTATION may not use",
+                                kExtension));
     EXPECT_CONTAINS(errorWith([](GltfBuilder& b) {
                         b.json()["accessors"][6]["componentType"] = 5121;
                         b.json()["accessors"][6]["normalized"] = true;
@@ -251,7 +255,9 @@ TEST_F(GltfLoaderTest, BadInstanceAttributesAreNamedByTheirPointer)
     EXPECT_CONTAINS(errorWith([](GltfBuilder& b) { b.json()["nodes"][0].erase("mesh"); }),
                     fmt::format("{}: the node has no mesh to instance", kExtension));
     // The cube's POSITION accessor, a VEC3 of FLOAT, as the only attribute.
-    EXPECT_CONTAINS(errorWith([](GltfBuilder& b) { attributesOf(b) = {{"TRANSLATION", 0}}; }),
+    EXPECT_CONTAINS(errorWith([](GltfBuilder& b) {
+                        attributesOf(b) = {{"TRANSLATION", 0}};
+                    }),
                     fmt::format("{}/attributes/TRANSLATION: accessor 0 is also used as vertex attribute", kExtension));
     // Instance accessors go through the byte range checks of every accessor.
     EXPECT_CONTAINS(errorWith([](GltfBuilder& b) {

@@ -20,8 +20,8 @@ protected:
     void SetUp() override
     {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = std::filesystem::temp_directory_path() /
-                  ("penumbra-gltf-" + std::to_string(::getpid())) / info->name();
+        folder_ =
+            std::filesystem::temp_directory_path() / ("penumbra-gltf-" + std::to_string(::getpid())) / info->name();
         std::filesystem::create_directories(folder_);
     }
     void TearDown() override { std::filesystem::remove_all(folder_.parent_path()); }
@@ -59,7 +59,10 @@ inline GltfBuilder cubeScene(Component indices = Component::UnsignedShort)
     return b;
 }
 
-inline nlohmann::json& primitive(GltfBuilder& b, int mesh = 0) { return b.json()["meshes"][std::size_t(mesh)]["primitives"][0]; }
+inline nlohmann::json& primitive(GltfBuilder& b, int mesh = 0)
+{
+    return b.json()["meshes"][std::size_t(mesh)]["primitives"][0];
+}
 
 inline int attribute(GltfBuilder& b, const char* name) { return primitive(b)["attributes"][name].get<int>(); }
 

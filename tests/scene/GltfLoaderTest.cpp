@@ -21,10 +21,14 @@ TEST_F(GltfLoaderTest, HierarchyMultipliesTransformsInOrder)
 {
     GltfBuilder b;
     const int mesh = testing::addCubeMesh(b, "Cube", -1);
-    const int child = b.add("nodes", {{"name", "child"}, {"mesh", mesh}, {"translation", {1, 0, 0}},
-                                      {"rotation", {0, 0.7071068, 0, 0.7071068}}, {"scale", {2, 1, 1}}});
+    const int child = b.add("nodes", {{"name", "child"},
+                                      {"mesh", mesh},
+                                      {"translation", {1, 0, 0}},
+                                      {"rotation", {0, 0.7071068, 0, 0.7071068}},
+                                      {"scale", {2, 1, 1}}});
     // Column-major: a translation by (0, 10, 0).
-    b.addRoot(b.add("nodes", {{"name", "parent"}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 10, 0, 1}},
+    b.addRoot(b.add("nodes", {{"name", "parent"},
+                              {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 10, 0, 1}},
                               {"children", {child}}}));
     const GltfScene loaded = loadGltf(write(b));
     ASSERT_EQ(loaded.scene.objects.size(), 1u);
@@ -71,19 +75,26 @@ TEST_F(GltfLoaderTest, InterleavedAttributesAndNormalizedTexCoords)
     struct PositionNormal {
         glm::vec3 position, normal;
     };
-    const std::vector<PositionNormal> vertices = {{{0, 0, 0}, {0, 0, 1}}, {{1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 0, 1}}};
+    const std::vector<PositionNormal> vertices = {{{0, 0, 0}, {0, 0, 1}},
+                                                  {{1, 0, 0}, {0, 0, 1}},
+                                                  {{0, 1, 0}, {0, 0, 1}}};
     // Both attributes in one buffer view, 24 bytes a vertex, the normal 12 bytes in.
-    const int position = b.addAccessor({reinterpret_cast<const std::uint8_t*>(vertices.data()), sizeof(PositionNormal) * 3},
-                                       3, "VEC3", Component::Float);
+    const int position =
+        b.addAccessor({reinterpret_cast<const std::uint8_t*>(vertices.data()), sizeof(PositionNormal) * 3}, 3, "VEC3",
+                      Component::Float);
     const auto view = b.json()["accessors"][std::size_t(position)]["bufferView"].get<std::size_t>();
     b.json()["bufferViews"][view]["byteStride"] = sizeof(PositionNormal);
-    const int normal = b.add("accessors", {{"bufferView", view}, {"byteOffset", 12}, {"count", 3}, {"type", "VEC3"},
+    const int normal = b.add("accessors", {{"bufferView", view},
+                                           {"byteOffset", 12},
+                                           {"count", 3},
+                                           {"type", "VEC3"},
                                            {"componentType", int(Component::Float)}});
     const std::vector<std::uint16_t> uvs = {0, 0, 65535, 0, 0, 32768};
     const int uv = b.addAccessor({reinterpret_cast<const std::uint8_t*>(uvs.data()), uvs.size() * 2}, 3, "VEC2",
                                  Component::UnsignedShort, true);
-    const int mesh = b.add("meshes", {{"primitives", {{{"attributes", {{"POSITION", position}, {"NORMAL", normal},
-                                                                          {"TEXCOORD_0", uv}}}}}}});
+    const int mesh =
+        b.add("meshes",
+              {{"primitives", {{{"attributes", {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}}}}}}});
     b.addRoot(b.add("nodes", {{"mesh", mesh}}));
     const GltfScene loaded = loadGltf(write(b));
     const MeshData& read = loaded.scene.meshes.at(0);
@@ -128,7 +139,8 @@ TEST_F(GltfLoaderTest, MirroringNodesGetReversedWindingSoOutsidesStayFrontFacing
         for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
             glm::vec3 world[3];
             for (int k = 0; k < 3; ++k)
-                world[k] = glm::vec3(object.transform * glm::vec4(mesh.vertices[mesh.indices[3 * t + k]].position, 1.0f));
+                world[k] =
+                    glm::vec3(object.transform * glm::vec4(mesh.vertices[mesh.indices[3 * t + k]].position, 1.0f));
             const glm::vec3 face = glm::cross(world[1] - world[0], world[2] - world[0]);
             const glm::vec3 normal = normalMatrix * mesh.vertices[mesh.indices[3 * t]].normal;
             EXPECT_GT(glm::dot(face, normal), 0.0f) << object.name << " triangle " << t;
@@ -139,12 +151,14 @@ TEST_F(GltfLoaderTest, MirroringNodesGetReversedWindingSoOutsidesStayFrontFacing
 TEST_F(GltfLoaderTest, CamerasByOrderAndByName)
 {
     GltfBuilder b = cubeScene();
-    b.add("cameras", {{"name", "first"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.5}, {"zfar", 50}}}});
+    b.add("cameras",
+          {{"name", "first"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.5}, {"zfar", 50}}}});
     b.add("cameras", {{"name", "second"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.2}}}});
     b.addRoot(b.add("nodes", {{"camera", 0}, {"translation", {0, 0, 10}}}));
     // Turned 90 degrees about y: looks down world -x.
-    b.addRoot(b.add("nodes", {{"name", "side"}, {"camera", 1}, {"translation", {10, 0, 0}},
-                              {"rotation", {0, 0.7071068, 0, 0.7071068}}}));
+    b.addRoot(b.add(
+        "nodes",
+        {{"name", "side"}, {"camera", 1}, {"translation", {10, 0, 0}}, {"rotation", {0, 0.7071068, 0, 0.7071068}}}));
     const std::filesystem::path path = write(b);
 
     const Camera first = loadGltf(path).scene.camera;
@@ -192,7 +206,9 @@ TEST_F(GltfLoaderTest, PunctualLightsOfAllThreeKinds)
 TEST_F(GltfLoaderTest, AlphaModesBecomeCasterModes)
 {
     const Scene scene = loadGltf(write(testing::exampleScene())).scene;
-    const auto material = [&](const char* object) { return scene.materialOf(scene.objects.at(*scene.findObject(object))); };
+    const auto material = [&](const char* object) {
+        return scene.materialOf(scene.objects.at(*scene.findObject(object)));
+    };
     EXPECT_EQ(material("standing cube").caster, CasterMode::On);
     EXPECT_EQ(material("floating cube").caster, CasterMode::Clip);
     EXPECT_FLOAT_EQ(material("floating cube").alphaCutoff, 0.4f);
@@ -209,7 +225,8 @@ TEST_F(GltfLoaderTest, BaseColorTextureIsDecodedToRgba8)
     const int image = b.addPngImage(2, 2, texels);
     const int texture = b.add("textures", {{"source", image}});
     primitive(b)["material"] =
-        b.add("materials", {{"name", "textured"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
+        b.add("materials",
+              {{"name", "textured"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
     for (const char* name : {"textured.gltf", "textured.glb"}) {
         const Scene scene = loadGltf(write(b, name)).scene;
         ASSERT_EQ(scene.textures.size(), 1u);
@@ -328,7 +345,8 @@ TEST_F(GltfLoaderTest, ToleratedDeviationsAreNotedOncePerKind)
     const GltfScene loaded = loadGltf(write(b));
     std::size_t mismatches = 0;
     for (const std::string& note : loaded.notes)
-        mismatches += note.find("tolerated: accessor min/max do not match its elements at /accessors/0") != std::string::npos;
+        mismatches +=
+            note.find("tolerated: accessor min/max do not match its elements at /accessors/0") != std::string::npos;
     EXPECT_EQ(mismatches, 1u);
 }
 
@@ -360,12 +378,14 @@ TEST_F(GltfLoaderTest, AHugeTextureIsRefusedBeforeDecoding)
     GltfBuilder b = testing::sampledTexturesScene({nullptr});
     const int image = b.addPngImage(1, 1, texel);
     // The PNG header's IHDR width and height (RFC 2083, section 4.1.1) at bytes 16 to 23, set to 65535 each.
-    const nlohmann::json& view = b.json()["bufferViews"][b.json()["images"][std::size_t(image)]["bufferView"].get<std::size_t>()];
+    const nlohmann::json& view =
+        b.json()["bufferViews"][b.json()["images"][std::size_t(image)]["bufferView"].get<std::size_t>()];
     const std::size_t ihdr = view["byteOffset"].get<std::size_t>() + 16;
     for (std::size_t i = 0; i < 8; ++i)
         b.bin()[ihdr + i] = i % 4 < 2 ? 0x00 : 0xff;
     b.json()["textures"][0]["source"] = image;
-    EXPECT_CONTAINS(errorOf(write(b)), fmt::format("/images/{}: the picture is 65535x65535 texels, over the limits", image));
+    EXPECT_CONTAINS(errorOf(write(b)),
+                    fmt::format("/images/{}: the picture is 65535x65535 texels, over the limits", image));
 }
 
 TEST_F(GltfLoaderTest, TooManyNodesAreRefused)
@@ -416,10 +436,7 @@ TEST_F(GltfLoaderTest, DeepNodeChainsAreRefused)
 
 // Bad files: one GltfError naming the file and what is wrong.
 
-TEST_F(GltfLoaderTest, MissingFile)
-{
-    EXPECT_CONTAINS(errorOf(folder_ / "absent.gltf"), "absent.gltf: no such file");
-}
+TEST_F(GltfLoaderTest, MissingFile) { EXPECT_CONTAINS(errorOf(folder_ / "absent.gltf"), "absent.gltf: no such file"); }
 
 TEST_F(GltfLoaderTest, MissingBuffer)
 {
@@ -456,11 +473,14 @@ TEST_F(GltfLoaderTest, IndexPastTheVertices)
     const std::vector<glm::vec3> positions(24, glm::vec3(0.0f));
     std::vector<std::uint32_t> indices(36, 0u);
     indices[7] = 40;
-    const int mesh = b.add("meshes", {{"name", "Cube"}, {"primitives", {{{"attributes", {{"POSITION", b.addPositions(positions)}}},
-                                                                       {"indices", b.addIndices(indices, Component::UnsignedShort)}}}}});
+    const int mesh = b.add("meshes", {{"name", "Cube"},
+                                      {"primitives",
+                                       {{{"attributes", {{"POSITION", b.addPositions(positions)}}},
+                                         {"indices", b.addIndices(indices, Component::UnsignedShort)}}}}});
     b.addRoot(b.add("nodes", {{"mesh", mesh}}));
-    EXPECT_CONTAINS(errorOf(write(b)),
-                    "scene.gltf: mesh 0 ('Cube') primitive 0: accessor 1 (indices) refers to vertex 40 but POSITION has 24");
+    EXPECT_CONTAINS(
+        errorOf(write(b)),
+        "scene.gltf: mesh 0 ('Cube') primitive 0: accessor 1 (indices) refers to vertex 40 but POSITION has 24");
 }
 
 TEST_F(GltfLoaderTest, AccessorPastTheBufferViewEnd)
@@ -468,14 +488,16 @@ TEST_F(GltfLoaderTest, AccessorPastTheBufferViewEnd)
     GltfBuilder b = cubeScene();
     for (const char* semantic : {"POSITION", "NORMAL", "TEXCOORD_0"})
         b.json()["accessors"][std::size_t(attribute(b, semantic))]["count"] = 25;
-    EXPECT_CONTAINS(errorOf(write(b)), "/accessors/0/count: 25 elements need 300 bytes of buffer view 0, which has 288");
+    EXPECT_CONTAINS(errorOf(write(b)),
+                    "/accessors/0/count: 25 elements need 300 bytes of buffer view 0, which has 288");
 }
 
 TEST_F(GltfLoaderTest, BufferViewPastTheBufferEnd)
 {
     GltfBuilder b = cubeScene();
     b.json()["bufferViews"][0]["byteLength"] = 100000;
-    EXPECT_CONTAINS(errorOf(write(b)), "/bufferViews/0/byteLength: the view ends at byte 100000, past the end of buffer 0");
+    EXPECT_CONTAINS(errorOf(write(b)),
+                    "/bufferViews/0/byteLength: the view ends at byte 100000, past the end of buffer 0");
 }
 
 TEST_F(GltfLoaderTest, AttributeCountsDiffer)
@@ -483,14 +505,16 @@ TEST_F(GltfLoaderTest, AttributeCountsDiffer)
     GltfBuilder b = cubeScene();
     const std::vector<glm::vec2> uvs(3, glm::vec2(0.0f));
     primitive(b)["attributes"]["TEXCOORD_0"] = b.addUvs(uvs);
-    EXPECT_CONTAINS(errorOf(write(b)), "/meshes/0/primitives/0/attributes/TEXCOORD_0: accessor 4 has 3 elements, other attributes 24");
+    EXPECT_CONTAINS(errorOf(write(b)),
+                    "/meshes/0/primitives/0/attributes/TEXCOORD_0: accessor 4 has 3 elements, other attributes 24");
 }
 
 TEST_F(GltfLoaderTest, TruncatedGlb)
 {
     const std::vector<std::uint8_t> bytes = cubeScene().glbBytes();
     const std::filesystem::path path = folder_ / "truncated.glb";
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size() / 2));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size() / 2));
     EXPECT_CONTAINS(errorOf(path), "truncated.glb: GLB: the header says");
 }
 
@@ -498,7 +522,8 @@ TEST_F(GltfLoaderTest, UnsupportedPrimitiveMode)
 {
     GltfBuilder b = cubeScene();
     primitive(b)["mode"] = 1;
-    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: mesh 0 ('Cube') primitive 0: mode LINES is not supported, only TRIANGLES");
+    EXPECT_CONTAINS(errorOf(write(b)),
+                    "scene.gltf: mesh 0 ('Cube') primitive 0: mode LINES is not supported, only TRIANGLES");
 }
 
 TEST_F(GltfLoaderTest, NodeThatIsItsOwnAncestor)
@@ -511,8 +536,11 @@ TEST_F(GltfLoaderTest, NodeThatIsItsOwnAncestor)
 TEST_F(GltfLoaderTest, BadLightValuesAreReportedWithTheFile)
 {
     GltfBuilder b = testing::exampleScene();
-    b.json()["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.6; // beyond the outer angle
-    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /extensions/KHR_lights_punctual/lights/1/spot/innerConeAngle: 0.6 is not below outerConeAngle 0.5");
+    b.json()["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] =
+        0.6; // beyond the outer angle
+    EXPECT_CONTAINS(
+        errorOf(write(b)),
+        "scene.gltf: /extensions/KHR_lights_punctual/lights/1/spot/innerConeAngle: 0.6 is not below outerConeAngle 0.5");
 }
 
 TEST_F(GltfLoaderTest, ALightsExtrasSetItsStaticMapMode)

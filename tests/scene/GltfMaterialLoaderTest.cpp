@@ -41,8 +41,9 @@ TEST_F(GltfLoaderTest, MaterialFactorsTexturesAndExtensionsAreRead)
          {"occlusionTexture", {{"index", texture}, {"strength", 0.3}}},
          {"emissiveTexture", {{"index", texture}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 1}}}}}}},
          {"emissiveFactor", {0.5, 0.25, 1.0}},
-         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}},
-                         {"KHR_materials_unlit", nlohmann::json::object()}}}});
+         {"extensions",
+          {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}},
+           {"KHR_materials_unlit", nlohmann::json::object()}}}});
     b.addRoot(b.add("nodes", {{"mesh", testing::addQuadMesh(b, "quad", material, {.mirroredUv1 = true})}}));
     b.json()["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_unlit"};
     const GltfScene loaded = loadGltf(write(b));
@@ -134,7 +135,8 @@ TEST_F(GltfLoaderTest, ComputedTangentsFollowTheNormalTexturesUvSetAndMirroring)
     GltfBuilder b;
     const int texture = testing::addTextureRow(b, kGrey);
     // TEXCOORD_1 runs u the other way (along -x): the tangent is -x, and the bitangent stays +y, so w = -1.
-    const int material = b.add("materials", {{"name", "uv1"}, {"normalTexture", {{"index", texture}, {"texCoord", 1}}}});
+    const int material =
+        b.add("materials", {{"name", "uv1"}, {"normalTexture", {{"index", texture}, {"texCoord", 1}}}});
     b.addRoot(b.add("nodes", {{"mesh", testing::addQuadMesh(b, "quad", material, {.mirroredUv1 = true})}}));
     const Scene scene = loadGltf(write(b)).scene;
     for (const Vertex& v : scene.meshes.at(0).vertices) {
@@ -182,20 +184,24 @@ TEST_F(GltfLoaderTest, BadMaterialValuesAreNamedWithTheirField)
         copy.addRoot(copy.add("nodes", {{"mesh", testing::addQuadMesh(copy, "quad", 0, {.mirroredUv1 = true})}}));
         return errorOf(write(copy));
     };
-    EXPECT_CONTAINS(errorFor({{"name", "m"}, {"normalTexture", {{"index", texture}, {"texCoord", 2}}}}),
-                    "scene.gltf: /meshes/0/primitives/0/material: material 0 reads TEXCOORD_2, which the primitive lacks");
-    EXPECT_CONTAINS(errorFor({{"pbrMetallicRoughness", {{"metallicFactor", 1.5}}}}),
-                    "scene.gltf: /materials/0/pbrMetallicRoughness/metallicFactor: expected a number in [0, 1], got 1.5");
+    EXPECT_CONTAINS(
+        errorFor({{"name", "m"}, {"normalTexture", {{"index", texture}, {"texCoord", 2}}}}),
+        "scene.gltf: /meshes/0/primitives/0/material: material 0 reads TEXCOORD_2, which the primitive lacks");
+    EXPECT_CONTAINS(
+        errorFor({{"pbrMetallicRoughness", {{"metallicFactor", 1.5}}}}),
+        "scene.gltf: /materials/0/pbrMetallicRoughness/metallicFactor: expected a number in [0, 1], got 1.5");
     EXPECT_CONTAINS(errorFor({{"occlusionTexture", {{"index", texture}, {"strength", -1}}}}),
                     "/materials/0/occlusionTexture/strength: expected a number in [0, 1], got -1");
-    EXPECT_CONTAINS(errorFor({{"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", -2}}}}}}),
-                    "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength: expected a number in [0, inf], got -2");
+    EXPECT_CONTAINS(
+        errorFor({{"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", -2}}}}}}),
+        "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength: expected a number in [0, inf], got -2");
     EXPECT_CONTAINS(
         errorFor({{"emissiveTexture",
                    {{"index", texture}, {"extensions", {{"KHR_texture_transform", {{"offset", {1, 2, 3}}}}}}}}}),
         "/materials/0/emissiveTexture/extensions/KHR_texture_transform/offset: expected an array of 2 numbers, got [1,2,3]");
-    EXPECT_CONTAINS(errorFor({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 7}}}}}}),
-                    "/materials/0/pbrMetallicRoughness/baseColorTexture/index: expected an index of textures (the file has 1), got 7");
+    EXPECT_CONTAINS(
+        errorFor({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 7}}}}}}),
+        "/materials/0/pbrMetallicRoughness/baseColorTexture/index: expected an index of textures (the file has 1), got 7");
 }
 
 } // namespace

@@ -17,8 +17,8 @@ namespace penumbra::scene {
 namespace {
 
 struct Verdict {
-    std::vector<std::string> codes;   // the validator's error codes
-    std::string errors;               // "CODE at /pointer; ..."
+    std::vector<std::string> codes; // the validator's error codes
+    std::string errors; // "CODE at /pointer; ..."
 };
 
 // The validator's errors per file, from one node process for all of them.
@@ -45,7 +45,8 @@ std::map<std::string, Verdict> validate(const std::vector<std::filesystem::path>
         Verdict& verdict = verdicts[line["file"].get<std::string>()];
         for (const nlohmann::json& error : line["errors"]) {
             verdict.codes.push_back(error["code"]);
-            verdict.errors += fmt::format("{} at {}; ", error["code"].get<std::string>(), error["pointer"].get<std::string>());
+            verdict.errors +=
+                fmt::format("{} at {}; ", error["code"].get<std::string>(), error["pointer"].get<std::string>());
         }
     }
     return verdicts;
@@ -54,8 +55,10 @@ std::map<std::string, Verdict> validate(const std::vector<std::filesystem::path>
 // What the validator calls an error but the loader accepts with a note (the README lists them): a note naming the
 // deviation is the loader's answer.
 const std::map<std::string, std::string> kTolerated{
-    {"ACCESSOR_MIN_MISMATCH", "min/max"},      {"ACCESSOR_MAX_MISMATCH", "min/max"},
-    {"ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND", "min/max"}, {"ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND", "min/max"},
+    {"ACCESSOR_MIN_MISMATCH", "min/max"},
+    {"ACCESSOR_MAX_MISMATCH", "min/max"},
+    {"ACCESSOR_ELEMENT_OUT_OF_MIN_BOUND", "min/max"},
+    {"ACCESSOR_ELEMENT_OUT_OF_MAX_BOUND", "min/max"},
     {"ACCESSOR_NON_UNIT", "not unit"},
     {"MESH_PRIMITIVE_POSITION_ACCESSOR_WITHOUT_BOUNDS", "min/max"},
 };
@@ -101,9 +104,10 @@ TEST_F(GltfLoaderTest, MutantsAreJudgedAsTheValidatorJudgesThem)
 {
     constexpr std::size_t kMutants = 150;
     constexpr std::uint32_t kSeed = 15;
-    const std::vector<testing::GltfMutant> mutants = testing::mutateGltf(
-        {cubeScene().embedded(), testing::exampleScene().embedded(), testing::materialsScene().embedded()}, kMutants,
-        kSeed);
+    const std::vector<testing::GltfMutant> mutants =
+        testing::mutateGltf({cubeScene().embedded(), testing::exampleScene().embedded(),
+                             testing::materialsScene().embedded()},
+                            kMutants, kSeed);
     std::vector<std::filesystem::path> files;
     for (std::size_t i = 0; i < mutants.size(); ++i) {
         files.push_back(folder_ / fmt::format("mutant-{:03}.gltf", i));

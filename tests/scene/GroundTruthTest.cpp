@@ -32,9 +32,9 @@ TEST(GroundTruthTest, RowZeroIsTheTopOfThePicture)
                     glm::translate(glm::mat4(1.0f), glm::vec3(0, 2, 0)));
     scene.camera = lookAt({0, 0, 10}, {0, 0, 0}, glm::radians(60.0f));
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 64, 48);
-    EXPECT_TRUE(gbuffer.at(32, 12).hit());   // upper half: the box above the axis
-    EXPECT_FALSE(gbuffer.at(32, 36).hit());  // lower half: nothing
-    EXPECT_FALSE(gbuffer.at(0, 12).hit());   // left of the 6-unit box at this distance
+    EXPECT_TRUE(gbuffer.at(32, 12).hit()); // upper half: the box above the axis
+    EXPECT_FALSE(gbuffer.at(32, 36).hit()); // lower half: nothing
+    EXPECT_FALSE(gbuffer.at(0, 12).hit()); // left of the 6-unit box at this distance
 }
 
 TEST(GroundTruthTest, SamplesProjectBackToTheirPixelCentres)
@@ -44,7 +44,8 @@ TEST(GroundTruthTest, SamplesProjectBackToTheirPixelCentres)
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, width, height);
     const Camera& camera = scene.camera;
     const glm::mat4 viewProjection =
-        glm::perspectiveRH_ZO(camera.fovY, float(width) / float(height), camera.nearPlane, camera.farPlane) * camera.view();
+        glm::perspectiveRH_ZO(camera.fovY, float(width) / float(height), camera.nearPlane, camera.farPlane) *
+        camera.view();
     int checked = 0;
     for (std::uint32_t y = 0; y < height; y += 7) {
         for (std::uint32_t x = 0; x < width; x += 5) {
@@ -68,7 +69,8 @@ TEST(GroundTruthTest, ShadowUnderAFloatingBoxForAVerticalLight)
     Scene scene;
     const std::uint32_t plain = scene.addMaterial({});
     scene.addObject("ground", scene.addMesh(makePlane(20.0f)), plain, glm::mat4(1.0f));
-    scene.addObject("box", scene.addMesh(makeBox({1, 1, 1})), plain, glm::translate(glm::mat4(1.0f), glm::vec3(0, 3, 0)));
+    scene.addObject("box", scene.addMesh(makeBox({1, 1, 1})), plain,
+                    glm::translate(glm::mat4(1.0f), glm::vec3(0, 3, 0)));
     // Seen from a slant, so the ground under the box is partly visible beside it.
     scene.camera = lookAt({0, 12, -12}, {0, 0, 0}, glm::radians(40.0f));
     const DirectionalLight light{.direction = {0, -1, 0}};

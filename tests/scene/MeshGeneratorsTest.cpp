@@ -27,11 +27,19 @@ std::vector<Case> cases()
     const double polygon = 0.5 * segments * std::sin(2.0 * pi / segments);
     return {
         {"box", makeBox({1.0f, 2.0f, 0.5f}), true, 8.0 * 1.0 * 2.0 * 0.5, 1e-6, {{-1, -2, -0.5f}, {1, 2, 0.5f}}},
-        {"sphere", makeSphere(1.5f, segments, 32), true, 4.0 / 3.0 * pi * 1.5 * 1.5 * 1.5, 0.01,
+        {"sphere",
+         makeSphere(1.5f, segments, 32),
+         true,
+         4.0 / 3.0 * pi * 1.5 * 1.5 * 1.5,
+         0.01,
          {{-1.5f, -1.5f, -1.5f}, {1.5f, 1.5f, 1.5f}}},
         // Poles and an equator triangle at theta 0, 120 and 240 degrees.
         {"coarse sphere", makeSphere(1.0f, 3, 2), true, 0.0, 1.0, {{-0.8660254f, -1, -0.5f}, {0.8660254f, 1, 1}}},
-        {"cylinder", makeCylinder(0.5f, 2.0f, segments), true, polygon * 0.25 * 4.0, 1e-5,
+        {"cylinder",
+         makeCylinder(0.5f, 2.0f, segments),
+         true,
+         polygon * 0.25 * 4.0,
+         1e-5,
          {{-0.5f, -2, -0.5f}, {0.5f, 2, 0.5f}}},
         {"plane", makePlane(30.0f), false, 0.0, 0.0, {{-30, 0, -30}, {30, 0, 30}}},
         {"subdivided plane", makePlane(2.0f, 8), false, 0.0, 0.0, {{-2, 0, -2}, {2, 0, 2}}},

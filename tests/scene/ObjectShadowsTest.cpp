@@ -69,7 +69,8 @@ GltfBuilder familyScene(const nlohmann::json& parentExtras, const nlohmann::json
     const int mesh = testing::addCubeMesh(b, "Cube", -1, Component::UnsignedShort);
     const int plain = b.add("nodes", {{"name", "plain child"}, {"mesh", mesh}});
     const int own = b.add("nodes", withExtras({{"name", "own child"}, {"mesh", mesh}}, childExtras));
-    b.addRoot(b.add("nodes", withExtras({{"name", "parent"}, {"mesh", mesh}, {"children", {plain, own}}}, parentExtras)));
+    b.addRoot(
+        b.add("nodes", withExtras({{"name", "parent"}, {"mesh", mesh}, {"children", {plain, own}}}, parentExtras)));
     return b;
 }
 
@@ -77,8 +78,9 @@ const Object& named(const Scene& scene, const char* name) { return scene.objects
 
 TEST_F(GltfLoaderTest, NodeExtrasSetShadowChoicesAndChildrenInheritThem)
 {
-    const GltfScene loaded = loadGltf(write(familyScene({{"penumbra", {{"castShadows", "shadowsOnly"}}}},
-                                                        {{"penumbra", {{"castShadows", "twoSided"}, {"receiveShadows", false}}}})));
+    const GltfScene loaded =
+        loadGltf(write(familyScene({{"penumbra", {{"castShadows", "shadowsOnly"}}}},
+                                   {{"penumbra", {{"castShadows", "twoSided"}, {"receiveShadows", false}}}})));
     EXPECT_EQ(named(loaded.scene, "parent").castShadows, ShadowCasting::ShadowsOnly);
     EXPECT_TRUE(named(loaded.scene, "parent").receiveShadows);
     EXPECT_EQ(named(loaded.scene, "plain child").castShadows, ShadowCasting::ShadowsOnly);

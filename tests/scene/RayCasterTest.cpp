@@ -74,8 +74,8 @@ TEST(RayCasterTest, TriangleIndexAndBarycentricsReferToTheMesh)
     const glm::vec3 p0 = mesh.vertices[mesh.indices[3 * hit->triangle]].position;
     const glm::vec3 p1 = mesh.vertices[mesh.indices[3 * hit->triangle + 1]].position;
     const glm::vec3 p2 = mesh.vertices[mesh.indices[3 * hit->triangle + 2]].position;
-    const glm::vec3 local = (1.0f - hit->barycentrics.x - hit->barycentrics.y) * p0 + hit->barycentrics.x * p1 +
-                            hit->barycentrics.y * p2;
+    const glm::vec3 local =
+        (1.0f - hit->barycentrics.x - hit->barycentrics.y) * p0 + hit->barycentrics.x * p1 + hit->barycentrics.y * p2;
     EXPECT_NEAR(glm::length(local - glm::vec3(0.3f, 0.0f, -0.4f)), 0.0f, 1e-5f);
     EXPECT_NEAR(glm::dot(hit->normal, glm::vec3(0, 1, 0)), 1.0f, 1e-6f);
 }
@@ -98,12 +98,14 @@ std::optional<Hit> bruteForceClosest(const Scene& scene, const glm::vec3& origin
         for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
             glm::vec3 v[3];
             for (int k = 0; k < 3; ++k)
-                v[k] = glm::vec3(object.transform *
-                                 glm::vec4(mesh.vertices[mesh.indices[3 * t + static_cast<std::uint32_t>(k)]].position, 1.0f));
+                v[k] = glm::vec3(
+                    object.transform *
+                    glm::vec4(mesh.vertices[mesh.indices[3 * t + static_cast<std::uint32_t>(k)]].position, 1.0f));
             const auto hit = intersectRayTriangle(origin, direction, v[0], v[1], v[2],
                                                   best ? best->distance : std::numeric_limits<float>::infinity());
             if (hit)
-                best = Hit{hit->distance, o, t, hit->barycentrics, glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]))};
+                best =
+                    Hit{hit->distance, o, t, hit->barycentrics, glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]))};
         }
     }
     return best;

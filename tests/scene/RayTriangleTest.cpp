@@ -13,7 +13,7 @@ TEST(RayTriangleTest, HitFromTheFrontGivesDistanceAndBarycentrics)
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit->distance, 2.0f);
     EXPECT_FLOAT_EQ(hit->barycentrics.x, 0.25f); // weight of v1 = x
-    EXPECT_FLOAT_EQ(hit->barycentrics.y, 0.5f);  // weight of v2 = y
+    EXPECT_FLOAT_EQ(hit->barycentrics.y, 0.5f); // weight of v2 = y
 }
 
 TEST(RayTriangleTest, HitFromBehindCounts)
@@ -36,11 +36,11 @@ TEST(RayTriangleTest, ObliqueRayKnownAnswer)
 TEST(RayTriangleTest, Misses)
 {
     EXPECT_FALSE(intersectRayTriangle({0.6f, 0.6f, 1.0f}, {0, 0, -1}, v0, v1, v2, 10.0f)); // outside the hypotenuse
-    EXPECT_FALSE(intersectRayTriangle({0.2f, 0.2f, 1.0f}, {0, 0, 1}, v0, v1, v2, 10.0f));  // pointing away
-    EXPECT_FALSE(intersectRayTriangle({0.2f, 0.2f, 5.0f}, {0, 0, -1}, v0, v1, v2, 4.0f));  // beyond maxDistance
+    EXPECT_FALSE(intersectRayTriangle({0.2f, 0.2f, 1.0f}, {0, 0, 1}, v0, v1, v2, 10.0f)); // pointing away
+    EXPECT_FALSE(intersectRayTriangle({0.2f, 0.2f, 5.0f}, {0, 0, -1}, v0, v1, v2, 4.0f)); // beyond maxDistance
     EXPECT_FALSE(intersectRayTriangle({-1.0f, 0.2f, 0.0f}, {1, 0, 0}, v0, v1, v2, 10.0f)); // in the plane
     EXPECT_FALSE(intersectRayTriangle({0.2f, 0.2f, 1.0f}, {0, 0, -1}, v0, v1, v1, 10.0f)); // degenerate
-    EXPECT_TRUE(intersectRayTriangle({0.2f, 0.2f, 4.0f}, {0, 0, -1}, v0, v1, v2, 4.0f));   // at maxDistance
+    EXPECT_TRUE(intersectRayTriangle({0.2f, 0.2f, 4.0f}, {0, 0, -1}, v0, v1, v2, 4.0f)); // at maxDistance
 }
 
 } // namespace

@@ -115,9 +115,9 @@ TEST(MaterialTest, ClipAlphaIsACheckerOfBaseAlpha)
 {
     const Material clip{.baseColor = {1, 1, 1, 0.8f}, .caster = CasterMode::Clip};
     const float cell = 1.0f / kClipCheckerCells;
-    EXPECT_EQ(materialAlpha(clip, {0.5f * cell, 0.5f * cell}), 0.8f);  // cell (0, 0): even
-    EXPECT_EQ(materialAlpha(clip, {1.5f * cell, 0.5f * cell}), 0.0f);  // cell (1, 0): odd, a hole
-    EXPECT_EQ(materialAlpha(clip, {1.5f * cell, 1.5f * cell}), 0.8f);  // cell (1, 1): even
+    EXPECT_EQ(materialAlpha(clip, {0.5f * cell, 0.5f * cell}), 0.8f); // cell (0, 0): even
+    EXPECT_EQ(materialAlpha(clip, {1.5f * cell, 0.5f * cell}), 0.0f); // cell (1, 0): odd, a hole
+    EXPECT_EQ(materialAlpha(clip, {1.5f * cell, 1.5f * cell}), 0.8f); // cell (1, 1): even
     const Material dither{.baseColor = {1, 1, 1, 0.3f}, .caster = CasterMode::Dither};
     EXPECT_EQ(materialAlpha(dither, {1.5f * cell, 0.5f * cell}), 0.3f);
     EXPECT_EQ(materialAlpha(Material{}, {0.3f, 0.7f}), 1.0f);
@@ -131,7 +131,7 @@ TEST(MaterialTest, TexturedAlphaIsBilinearAndRepeats)
     EXPECT_FLOAT_EQ(materialAlpha(clip, {0.25f, 0.5f}, &texture), 0.0f);
     EXPECT_FLOAT_EQ(materialAlpha(clip, {0.75f, 0.5f}, &texture), 0.8f);
     EXPECT_FLOAT_EQ(materialAlpha(clip, {0.5f, 0.5f}, &texture), 0.4f);
-    EXPECT_FLOAT_EQ(textureAlpha(texture, {1.0f, 0.5f}), 0.5f);  // between the last texel and the first, repeated
+    EXPECT_FLOAT_EQ(textureAlpha(texture, {1.0f, 0.5f}), 0.5f); // between the last texel and the first, repeated
     EXPECT_FLOAT_EQ(textureAlpha(texture, {-0.25f, 0.5f}), 1.0f); // the right texel, one period to the left
 }
 

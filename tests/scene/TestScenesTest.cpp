@@ -13,10 +13,10 @@
 namespace penumbra::scene {
 namespace {
 
-const std::set<std::string> kStanding{"standing cube", "turned cube", "standing sphere", "large sphere",
-                                      "standing cylinder", "unshadowed pillar", "tall pillar", "wall"};
-const std::set<std::string> kFloating{"floating cube", "tumbling cube", "dither sphere", "lying cylinder",
-                                      "clip panel", "long beam"};
+const std::set<std::string> kStanding{"standing cube",     "turned cube",       "standing sphere", "large sphere",
+                                      "standing cylinder", "unshadowed pillar", "tall pillar",     "wall"};
+const std::set<std::string> kFloating{"floating cube",  "tumbling cube", "dither sphere",
+                                      "lying cylinder", "clip panel",    "long beam"};
 
 const Object& object(const Scene& scene, const std::string& name)
 {

@@ -10,9 +10,10 @@ constexpr std::uint32_t kSize = 16;
 
 // One object everywhere; the ray cast says lit left of column 8, shadowed from it on.
 struct Pictures {
-    CpuGBuffer gbuffer{kSize, kSize, std::vector<GBufferSample>(kSize * kSize)};
-    LightVisibilityMask truth{kSize, kSize, std::vector<LightVisibility>(kSize * kSize)};
-    RenderedVisibility rendered{kSize, kSize, std::vector<float>(kSize * kSize), std::vector<std::uint8_t>(kSize * kSize, 1)};
+    CpuGBuffer gbuffer{kSize, kSize, std::vector<GBufferSample>(kSize* kSize)};
+    LightVisibilityMask truth{kSize, kSize, std::vector<LightVisibility>(kSize* kSize)};
+    RenderedVisibility rendered{kSize, kSize, std::vector<float>(kSize* kSize),
+                                std::vector<std::uint8_t>(kSize* kSize, 1)};
 
     Pictures()
     {
@@ -45,7 +46,7 @@ TEST(TruthComparisonTest, AgreeingPicturesAreRightAwayFromEdges)
 TEST(TruthComparisonTest, WrongPixelsAreAcneAndLeaks)
 {
     Pictures p;
-    p.rendered.lit[p.at(4, 8)] = 0.2f;  // truly lit, rendered dark
+    p.rendered.lit[p.at(4, 8)] = 0.2f; // truly lit, rendered dark
     p.rendered.lit[p.at(11, 8)] = 0.6f; // truly shadowed, rendered lit
     p.rendered.lit[p.at(12, 8)] = 0.5f; // exactly half: lit
     const TruthComparison c = compareWithTruth(p.gbuffer, p.truth, p.rendered);

@@ -91,9 +91,8 @@ TEST(CascadeFit, TheSphereLiesInsideItsTileAndItsCentreInTheMiddle)
     for (int trial = 0; trial < 50; ++trial) {
         const ShadowCamera camera = randomCamera(rng);
         const Sphere sphere = frustumSliceSphere(camera, camera.nearPlane, camera.nearPlane + 30.0f);
-        const DirectionalShadowCascade fit =
-            fitDirectionalCascade(sphere, lightBasis(testing::randomUnit(rng)), layout.tileSize(), 0.5f, {},
-                                  defaultConventions);
+        const DirectionalShadowCascade fit = fitDirectionalCascade(sphere, lightBasis(testing::randomUnit(rng)),
+                                                                   layout.tileSize(), 0.5f, {}, defaultConventions);
         const std::uint32_t tile = static_cast<std::uint32_t>(trial % 16);
         const glm::mat4 m = worldToAtlas(fit.viewProjection, tile, layout, defaultConventions);
         const glm::vec2 low(layout.tileOffset(tile));
@@ -137,7 +136,7 @@ TEST(CascadeFit, NearPlaneIsPulledBackOverCastersInTheFootprintAndByTheOffset)
     EXPECT_NEAR(plain.farDepth, 10.0f, 1e-5f);
 
     const std::vector<Bounds> casters{
-        {{-1.0f, 40.0f, -1.0f}, {1.0f, 50.0f, 1.0f}},   // above the sphere, inside the footprint
+        {{-1.0f, 40.0f, -1.0f}, {1.0f, 50.0f, 1.0f}}, // above the sphere, inside the footprint
         {{100.0f, 90.0f, 0.0f}, {101.0f, 95.0f, 1.0f}}, // higher still, but outside the footprint
     };
     const DirectionalShadowCascade pulled =

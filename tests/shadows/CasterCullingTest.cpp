@@ -22,9 +22,9 @@ protected:
         const Sphere first = empty[0].cullingSphere;
         casters = {
             cube(first.centre + glm::vec3(0, 0, -0.45f * first.radius), 0.5f), // A: deep in cascade 0's sphere
-            cube({500.0f, 0.0f, -20.0f}, 1.0f),                              // B: outside every footprint
-            {{-1.0f, 80.0f, -31.0f}, {1.0f, 90.0f, -29.0f}},                 // C: high above cascade 1 only
-            {{-1.0f, -200.0f, -11.0f}, {1.0f, -190.0f, -9.0f}},              // D: below both far planes
+            cube({500.0f, 0.0f, -20.0f}, 1.0f), // B: outside every footprint
+            {{-1.0f, 80.0f, -31.0f}, {1.0f, 90.0f, -29.0f}}, // C: high above cascade 1 only
+            {{-1.0f, -200.0f, -11.0f}, {1.0f, -190.0f, -9.0f}}, // D: below both far planes
             cube(first.centre + glm::vec3(0, 0, -0.75f * first.radius), 0.5f), // E: across the 0.7 r boundary
         };
         cascades = fit(casters);

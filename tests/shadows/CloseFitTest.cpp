@@ -124,7 +124,8 @@ TEST(CloseFit, SelectedCascadeFiltersStayInsideTheirTile)
                 const CascadeSelection s = selectCascade(p.uniforms, point, d);
                 ASSERT_LT(s.index, 4u);
                 // With a blend, the next cascade is read too wherever the fade has begun.
-                const std::uint32_t last = blend != CascadeBlend::Hard && s.fade < 1.0f && s.index < 3 ? s.index + 1 : s.index;
+                const std::uint32_t last =
+                    blend != CascadeBlend::Hard && s.fade < 1.0f && s.index < 3 ? s.index + 1 : s.index;
                 for (std::uint32_t c = s.index; c <= last; ++c)
                     for (std::uint32_t slot = 0; slot < p.lights.size(); ++slot) {
                         const std::uint32_t tile = p.lights[slot].firstTile + c;
@@ -189,16 +190,15 @@ TEST(CloseFit, CullingBiasSkipsCastersWhollyInsideThePreviousSlice)
     const std::vector<Bounds> casters{{inFirst - 0.2f, inFirst + 0.2f},
                                       {beyond - 0.2f, beyond + 0.2f},
                                       {inFirst + right * 40.0f - 0.2f, inFirst + right * 40.0f + 0.2f}};
-    const DirectionalShadowPlan p = plan(CascadeProjection::Close, camera, {0.0f, -1.0f, 0.01f}, CascadeBlend::Hard,
-                                         casters);
+    const DirectionalShadowPlan p =
+        plan(CascadeProjection::Close, camera, {0.0f, -1.0f, 0.01f}, CascadeBlend::Hard, casters);
     ASSERT_GE(p.splits.farOf(0), 10.0f) << "the first cascade holds the first caster";
     const FrustumSlice first{camera, p.splits.nearOf(0), p.splits.farOf(0)};
     const float factor = cascadeBlendCullingFactor(ShadowSettings{}.directional.cascadeFade);
     EXPECT_TRUE(insideFrustumSlice(casters[0], first, factor));
     EXPECT_FALSE(insideFrustumSlice(casters[1], first, factor));
     EXPECT_FALSE(insideFrustumSlice(casters[2], first, factor));
-    const CasterCullingResult withBias =
-        cullCloseFitShadowCasters(p.lights[0].cascades[1].fit, casters, first, factor);
+    const CasterCullingResult withBias = cullCloseFitShadowCasters(p.lights[0].cascades[1].fit, casters, first, factor);
     const CasterCullingResult without =
         cullCloseFitShadowCasters(p.lights[0].cascades[1].fit, casters, std::nullopt, factor);
     EXPECT_EQ(withBias.culledByBias, without.culledByBias + (without.overlapping > 0 ? 1u : 0u));

@@ -19,8 +19,8 @@ using testing::conventionName;
 glm::vec3 atlasPosition(const LocalShadowPlan& plan, std::uint32_t tile, glm::vec3 world)
 {
     const glm::vec4 p = plan.uniforms.worldToAtlas[tile] * glm::vec4(world, 1.0f);
-    const glm::vec2 uv = glm::vec2(p) / p.w * static_cast<float>(plan.atlas.split()) -
-                         glm::vec2(plan.atlas.tileCoordinates(tile));
+    const glm::vec2 uv =
+        glm::vec2(p) / p.w * static_cast<float>(plan.atlas.split()) - glm::vec2(plan.atlas.tileCoordinates(tile));
     return {uv, p.z / p.w};
 }
 
@@ -80,8 +80,10 @@ TEST(SpotShadow, AxisHitsTheTileCentreAndTheConeEdgeItsBorder)
 {
     for (const rhi::Conventions& conventions : allConventions()) {
         SCOPED_TRACE(conventionName(conventions));
-        const SpotShadowInput spot{.position = {0, 5, 0}, .direction = glm::normalize(glm::vec3(0.3f, -1, 0.2f)),
-                                   .range = 20.0f, .outerAngle = glm::radians(30.0f)};
+        const SpotShadowInput spot{.position = {0, 5, 0},
+                                   .direction = glm::normalize(glm::vec3(0.3f, -1, 0.2f)),
+                                   .range = 20.0f,
+                                   .outerAngle = glm::radians(30.0f)};
         ShadowSettings settings;
         const LocalShadowPlan plan = planLocalShadows(settings, conventions, {}, {&spot, 1}, {}, kEverywhere);
         ASSERT_EQ(plan.tiles.size(), 1u);
@@ -150,7 +152,8 @@ TEST(LocalAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
     const std::vector<SpotShadowInput> spots(5);
     std::vector<PointShadowInput> points(3);
     points[1].strength = 0.0f;
-    const LocalShadowPlan plan = planLocalShadows(ShadowSettings{}, allConventions()[0], {}, spots, points, kEverywhere);
+    const LocalShadowPlan plan =
+        planLocalShadows(ShadowSettings{}, allConventions()[0], {}, spots, points, kEverywhere);
     // 5 spots + 6 (point 0) = 11; point 1 casts nothing; point 2 needs 6 more, 5 are left.
     EXPECT_EQ(plan.atlas.tileCount(), 11u);
     EXPECT_EQ(plan.spotTiles, (std::vector<int>{0, 1, 2, 3, 4}));
@@ -171,12 +174,14 @@ TEST(LocalAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
 
 TEST(LocalAtlas, FrustumCullingKeepsOnlyCastersInTheCone)
 {
-    const SpotShadowInput spot{.position = {0, 10, 0}, .direction = {0, -1, 0}, .range = 15.0f,
+    const SpotShadowInput spot{.position = {0, 10, 0},
+                               .direction = {0, -1, 0},
+                               .range = 15.0f,
                                .outerAngle = glm::radians(20.0f)};
-    const std::vector<Bounds> casters{{{-1, 0, -1}, {1, 1, 1}},      // below the light
-                                      {{20, 0, 20}, {21, 1, 21}},    // far outside the cone
-                                      {{-1, 11, -1}, {1, 12, 1}},    // behind the light
-                                      {{-1, -9, -1}, {1, -8, 1}},    // beyond the range
+    const std::vector<Bounds> casters{{{-1, 0, -1}, {1, 1, 1}}, // below the light
+                                      {{20, 0, 20}, {21, 1, 21}}, // far outside the cone
+                                      {{-1, 11, -1}, {1, 12, 1}}, // behind the light
+                                      {{-1, -9, -1}, {1, -8, 1}}, // beyond the range
                                       {{3, 0, -0.5f}, {5, 1, 0.5f}}}; // reaching into the cone's edge
     const LocalShadowPlan plan = planLocalShadows(ShadowSettings{}, allConventions()[0], {}, {&spot, 1}, {}, casters);
     EXPECT_EQ(plan.tiles[0].view.casters, (std::vector<std::uint32_t>{0, 4}));

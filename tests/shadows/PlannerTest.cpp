@@ -38,8 +38,8 @@ TEST(DirectionalShadowPlanner, ReportsLightsWithoutTilesAndNeverThrows)
 {
     const std::vector<DirectionalShadowLightInput> lights = sixLights();
     const std::vector<Bounds> casters{{{-1, 0, -5}, {1, 2, -3}}};
-    const DirectionalShadowPlan plan = planDirectionalShadows(ShadowSettings{}, conventions, streetCamera(), lights,
-                                                              casters);
+    const DirectionalShadowPlan plan =
+        planDirectionalShadows(ShadowSettings{}, conventions, streetCamera(), lights, casters);
     ASSERT_EQ(plan.lights.size(), 4u);
     EXPECT_EQ(plan.lights[0].lightIndex, 0u);
     EXPECT_EQ(plan.lights[1].lightIndex, 2u);

@@ -97,13 +97,16 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
               "maxDistance: 0 is out of range, allowed > 0.001");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.distanceFade = 1.5f; }),
               "distanceFade: 1.5 is out of range, allowed 0.001..1");
-    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.cascadeRatios = {0.1f, 0.5f, 0.5f}; }),
+    EXPECT_EQ(validationError([](ShadowSettings& s) {
+                  s.directional.cascadeRatios = {0.1f, 0.5f, 0.5f};
+              }),
               "directional.cascadeRatios: [0.1, 0.5, 0.5] is out of range, allowed 3 numbers in 0..1, strictly "
               "increasing");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.cascadeFade = std::nanf(""); }),
               "directional.cascadeFade: nan is out of range, allowed 0.001..1");
-    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.atlasFormat = rhi::Format::RGBA8; }).rfind(
-                  "directional.atlasFormat: ", 0),
+    EXPECT_EQ(validationError([](ShadowSettings& s) {
+                  s.directional.atlasFormat = rhi::Format::RGBA8;
+              }).rfind("directional.atlasFormat: ", 0),
               0u);
 }
 
@@ -138,7 +141,8 @@ TEST(ShadowSettingsJson, OldNamesOfTheLocalFieldsStillLoad)
     expected.local.atlasSize = 1024;
     expected.local.pointMode = PointShadowMode::CubeMap;
     expected.staticMaps.localAtlasSize = 512;
-    const char* current = R"({"local": {"atlasSize": 1024, "pointMode": "cubemap"}, "static": {"localAtlasSize": 512}})";
+    const char* current =
+        R"({"local": {"atlasSize": 1024, "pointMode": "cubemap"}, "static": {"localAtlasSize": 512}})";
     const char* old = R"({"other": {"atlasSize": 1024, "pointMode": "cubemap"}, "static": {"otherAtlasSize": 512}})";
     expectEqual(parseShadowSettings(current, "current.json"), expected);
     expectEqual(parseShadowSettings(old, "old.json"), expected);
@@ -159,8 +163,9 @@ TEST(ShadowSettingsJson, BothNamesOfALocalFieldAreRefused)
 TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
-    EXPECT_EQ(parseError(R"({"maxDistanse": 5})"),
-              "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, local, soft, static");
+    EXPECT_EQ(
+        parseError(R"({"maxDistanse": 5})"),
+        "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, local, soft, static");
     EXPECT_EQ(parseError(R"({"static": {"update": "sometimes"}})"),
               "shadows.json: static.update: unknown value \"sometimes\", allowed everyFrame, onChange, onDemand");
     EXPECT_EQ(parseError(R"({"static": {"directionalAtlasSize": 16384}})"),
@@ -186,8 +191,9 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
               "shadows.json: directional.cascadeCount: expected an integer, got 2.5, allowed 1..4");
     EXPECT_EQ(parseError(R"({"directional": {"cascadeCount": 9}})"),
               "shadows.json: directional.cascadeCount: 9 is out of range, allowed 1..4");
-    EXPECT_EQ(parseError(R"({"directional": {"filter": "pcf4x4"}})"),
-              "shadows.json: directional.filter: unknown value \"pcf4x4\", allowed pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss");
+    EXPECT_EQ(
+        parseError(R"({"directional": {"filter": "pcf4x4"}})"),
+        "shadows.json: directional.filter: unknown value \"pcf4x4\", allowed pcf2x2, pcf3x3, pcf5x5, pcf7x7, poisson, pcss");
     EXPECT_EQ(parseError(R"({"directional": {"cascadeBlend": "Soft"}})"),
               "shadows.json: directional.cascadeBlend: unknown value \"Soft\", allowed hard, soft, dither");
     EXPECT_EQ(parseError(R"({"directional": {"atlasFormat": "rgba8"}})"),

@@ -85,7 +85,7 @@ TEST(PoissonDiskTest, UniformsHoldEveryDiskInOrder)
 {
     const PoissonDiskUniforms u = poissonDiskUniforms();
     EXPECT_EQ(glm::vec2(u.points[0].x, u.points[0].y), poissonDisk(16)[0]);
-    EXPECT_EQ(glm::vec2(u.points[8].x, u.points[8].y), poissonDisk(32)[0]);   // point 16
+    EXPECT_EQ(glm::vec2(u.points[8].x, u.points[8].y), poissonDisk(32)[0]); // point 16
     EXPECT_EQ(glm::vec2(u.points[55].z, u.points[55].w), poissonDisk(64)[63]); // point 111
 }
 
@@ -113,8 +113,7 @@ TEST(ReceiverPlaneTest, RecoversThePlaneGradientFromScreenDerivatives)
     // A plane depth = 0.01 x + 0.002 y seen through an arbitrary screen mapping.
     const glm::vec2 g{0.01f, 0.002f};
     const glm::vec2 dx{1.5f, 0.25f}, dy{-0.5f, 2.0f};
-    const glm::vec2 recovered =
-        receiverPlaneDepthGradient({dx, glm::dot(g, dx)}, {dy, glm::dot(g, dy)});
+    const glm::vec2 recovered = receiverPlaneDepthGradient({dx, glm::dot(g, dx)}, {dy, glm::dot(g, dy)});
     EXPECT_NEAR(recovered.x, g.x, 1e-6f);
     EXPECT_NEAR(recovered.y, g.y, 1e-6f);
     EXPECT_EQ(receiverPlaneDepthGradient({1, 1, 1}, {2, 2, 2}), glm::vec2(0.0f)); // edge-on
@@ -179,12 +178,15 @@ TEST(BlockerSearchTest, AveragesOnlyNearerTexelsAndIgnoresTheSlopedReceiver)
     tile.tileMin = {0, 0};
     tile.tileMax = {255, 255};
     tile.isNearer = [](float a, float b) { return a < b - 1e-6f; };
-    tile.depthAt = [](glm::ivec2 t) { return t.x < 100 ? 0.2f : 0.5f + 0.01f * (static_cast<float>(t.x) + 0.5f - 120.0f); };
+    tile.depthAt = [](glm::ivec2 t) {
+        return t.x < 100 ? 0.2f : 0.5f + 0.01f * (static_cast<float>(t.x) + 0.5f - 120.0f);
+    };
     const glm::vec2 gradient{0.01f, 0.0f};
     // On the receiver far from the blocker: the plane matches every texel, no blocker.
     EXPECT_EQ(searchBlockers(tile, {180.0f, 50.0f}, 0.5f + 0.01f * 60.0f, gradient, 8.0f, 0.3f, 16).blockers, 0u);
     // Without the plane's gradient the sloped receiver shadows itself.
-    EXPECT_GT(searchBlockers(tile, {180.0f, 50.0f}, 0.5f + 0.01f * 60.0f, glm::vec2(0.0f), 8.0f, 0.3f, 16).blockers, 0u);
+    EXPECT_GT(searchBlockers(tile, {180.0f, 50.0f}, 0.5f + 0.01f * 60.0f, glm::vec2(0.0f), 8.0f, 0.3f, 16).blockers,
+              0u);
     // Straddling the blocker's edge: some blockers, all at 0.2.
     const BlockerSearch edge = searchBlockers(tile, {100.0f, 50.0f}, 0.5f - 0.01f * 20.0f, gradient, 8.0f, 0.3f, 32);
     EXPECT_GT(edge.blockers, 4u);
@@ -281,8 +283,10 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
     settings.maxDistance = 40.0f;
     for (const rhi::Conventions& conventions : allConventions()) {
         SCOPED_TRACE(conventionName(conventions));
-        const DirectionalShadowPlan a = planDirectionalShadows(settings, conventions, cameraAt({0, 2, 5}), lights, casters);
-        const DirectionalShadowPlan b = planDirectionalShadows(settings, conventions, cameraAt({0.37f, 2, 4.1f}), lights, casters);
+        const DirectionalShadowPlan a =
+            planDirectionalShadows(settings, conventions, cameraAt({0, 2, 5}), lights, casters);
+        const DirectionalShadowPlan b =
+            planDirectionalShadows(settings, conventions, cameraAt({0.37f, 2, 4.1f}), lights, casters);
         EXPECT_EQ(a.uniforms.lightShadowData[0].w, static_cast<float>(ShadowFilter::PCSS));
         EXPECT_NEAR(a.uniforms.lightSoft[0].x, std::tan(0.0261799f), 1e-6f);
         EXPECT_EQ(a.uniforms.lightSoft[0].y, 1.0f); // PCSS's normal offset is the 2x2's, the atlas's default
@@ -292,7 +296,8 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
             // Depths at the near and the far plane are the light-space depth range apart in world units, measured from
             // the casters' top (the box's corner nearest the light).
             const float nearDepth = conventions.windowDepth(cascade.fit.projection, 0.0f);
-            const float farDepth = conventions.windowDepth(cascade.fit.projection, cascade.fit.farDepth - cascade.fit.nearDepth);
+            const float farDepth =
+                conventions.windowDepth(cascade.fit.projection, cascade.fit.farDepth - cascade.fit.nearDepth);
             const float top = lightSpaceBounds(cascade.fit.basis, casters[0]).min.z;
             EXPECT_NEAR(orthographicDistanceFromNear(nearDepth, row), cascade.fit.nearDepth - top, 1e-3f);
             EXPECT_NEAR(orthographicDistanceFromNear(farDepth, row) - orthographicDistanceFromNear(nearDepth, row),
@@ -313,7 +318,8 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
             const auto fromTop = [&](const DirectionalShadowPlan& plan) {
                 const DirectionalCascadePlan& cascade = plan.lights[0].cascades[c];
                 const glm::vec4 soft = plan.uniforms.tileSoft[cascade.tile];
-                return orthographicDistanceFromNear((cascade.worldToAtlas * glm::vec4(point, 1.0f)).z, {soft.z, soft.w});
+                return orthographicDistanceFromNear((cascade.worldToAtlas * glm::vec4(point, 1.0f)).z,
+                                                    {soft.z, soft.w});
             };
             EXPECT_NEAR(fromTop(a), fromTop(b), 1e-3f) << "cascade " << c;
         }
@@ -333,15 +339,15 @@ TEST(SoftPlannerTest, LocalLightsCarryTheirFilterRadiusAndNearPlane)
     ShadowSettings settings;
     for (const PointShadowMode mode : {PointShadowMode::Atlas, PointShadowMode::CubeMap}) {
         settings.local.pointMode = mode;
-        const LocalShadowPlan plan =
-            planLocalShadows(settings, allConventions()[0], cameraAt({0, 2, 8}), std::span(&spot, 1),
-                             std::span(&point, 1), casters);
+        const LocalShadowPlan plan = planLocalShadows(settings, allConventions()[0], cameraAt({0, 2, 8}),
+                                                      std::span(&spot, 1), std::span(&point, 1), casters);
         const int tile = plan.spotTiles[0];
         ASSERT_GE(tile, 0);
         EXPECT_EQ(plan.uniforms.tileData[tile].y, static_cast<float>(ShadowFilter::PCSS));
         // lightTexels = R x tile size x P[0][0] / 2.
         const float p00 = 1.0f / std::tan(spot.outerAngle);
-        EXPECT_NEAR(plan.uniforms.tileSoft[tile].z, 0.2f * static_cast<float>(plan.atlas.tileSize()) * p00 / 2.0f, 1e-3f);
+        EXPECT_NEAR(plan.uniforms.tileSoft[tile].z, 0.2f * static_cast<float>(plan.atlas.tileSize()) * p00 / 2.0f,
+                    1e-3f);
         EXPECT_NEAR(plan.uniforms.tileSoft[tile].w, 0.01f * spot.range, 1e-6f);
         if (mode == PointShadowMode::CubeMap)
             EXPECT_EQ(plan.uniforms.cubeSoft[0].x, static_cast<float>(ShadowFilter::Poisson));

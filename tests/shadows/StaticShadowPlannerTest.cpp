@@ -39,7 +39,8 @@ TEST(StaticShadowPlanner, DirectionalMapHoldsEveryStaticCasterInsideItsTile)
         const std::vector<DirectionalShadowLightInput> lights{{.direction = {0.3f, -1.0f, 0.2f}},
                                                               {.strength = 0.0f},
                                                               {.direction = {-0.5f, -0.4f, 0.1f}}};
-        const StaticShadowPlan plan = planStaticShadows(cachedSettings(), conventions, lights, {}, {}, {kBounds, kStatic});
+        const StaticShadowPlan plan =
+            planStaticShadows(cachedSettings(), conventions, lights, {}, {}, {kBounds, kStatic});
         ASSERT_EQ(plan.maps.size(), 2u); // the light without strength has none
         EXPECT_EQ(plan.directionalAtlas.tileCount(), 2u);
         EXPECT_EQ(plan.uniforms.directionalLights[1].x, -1.0f);
@@ -73,7 +74,8 @@ TEST(StaticShadowPlanner, SpotAndPointMapsTakeTilesInTheLitPassOrder)
     const std::vector<SpotShadowInput> spots{{.position = {-15, 12, -15}, .range = 30.0f},
                                              {.position = {0, 5, 0}, .strength = 0.0f}};
     const std::vector<PointShadowInput> points{{.position = {20, 25, 20}, .range = 40.0f}};
-    const StaticShadowPlan plan = planStaticShadows(cachedSettings(), conventions, {}, spots, points, {kBounds, kStatic});
+    const StaticShadowPlan plan =
+        planStaticShadows(cachedSettings(), conventions, {}, spots, points, {kBounds, kStatic});
     ASSERT_EQ(plan.maps.size(), 2u);
     EXPECT_EQ(plan.maps[0].kind, ShadowLightKind::Spot);
     EXPECT_EQ(plan.maps[0].tiles.size(), 1u);
@@ -84,7 +86,7 @@ TEST(StaticShadowPlanner, SpotAndPointMapsTakeTilesInTheLitPassOrder)
     EXPECT_EQ(plan.maps[0].tiles[0].casters, std::vector<std::uint32_t>{0});
     EXPECT_EQ(plan.uniforms.localLights[0].x, 0.0f);
     EXPECT_EQ(plan.uniforms.localLights[1].x, -1.0f); // no strength, no map
-    EXPECT_EQ(plan.uniforms.localLights[2].x, 1.0f);  // the point light after both spot lights
+    EXPECT_EQ(plan.uniforms.localLights[2].x, 1.0f); // the point light after both spot lights
     for (const StaticShadowTile& tile : plan.maps[1].tiles)
         for (const std::uint32_t caster : tile.casters)
             EXPECT_NE(caster, 1u);

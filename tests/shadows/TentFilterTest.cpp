@@ -104,9 +104,8 @@ TEST(TentFilter, TapsReproduceTheAnalyticAreaWeightedTent)
                     const double actual = found == kernel.end() ? 0.0 : found->second;
                     const double expected =
                         expectedTexelWeight(filter, x, texel.x) * expectedTexelWeight(filter, y, texel.y);
-                    EXPECT_NEAR(actual, expected, 1e-5)
-                        << "filter " << filterSize(filter) << " texel (" << x << ", " << y << ") centre ("
-                        << texel.x << ", " << texel.y << ")";
+                    EXPECT_NEAR(actual, expected, 1e-5) << "filter " << filterSize(filter) << " texel (" << x << ", "
+                                                        << y << ") centre (" << texel.x << ", " << texel.y << ")";
                 }
             }
         }

@@ -36,7 +36,8 @@ scene::Scene wallScene()
     scene.addObject("ground", scene.addMesh(scene::makePlane(200.0f)), ground, glm::mat4(1.0f));
     scene.addObject("wall", scene.addMesh(scene::makeBox({kWallHalfThickness, 0.5f * kWallHeight, 70.0f})), wall,
                     glm::translate(glm::mat4(1.0f), glm::vec3(kWallX, 0.5f * kWallHeight, 60.0f)));
-    scene.lights.push_back({.name = "sun", .direction = scene::lightDirection(glm::radians(35.0f), glm::radians(90.0f))});
+    scene.lights.push_back(
+        {.name = "sun", .direction = scene::lightDirection(glm::radians(35.0f), glm::radians(90.0f))});
     scene.camera = scene::lookAt({4.0f, 4.0f, -10.0f}, {4.0f, 0.0f, 30.0f}, glm::radians(50.0f));
     return scene;
 }
@@ -52,10 +53,10 @@ std::optional<glm::vec3> groundPoint(const scene::Camera& camera, float px, floa
 
 struct SeamFigures {
     std::size_t samples = 0;
-    std::size_t boundaries = 0;      // neighbouring rows measured in different cascades
-    float worstError = 0.0f;         // texels between the measured and the true edge
-    float worstStep = 0.0f;          // texels (the coarser row's) between the edges of neighbouring rows
-    float worstBoundaryStep = 0.0f;  // the same, where the rows' cascades differ
+    std::size_t boundaries = 0; // neighbouring rows measured in different cascades
+    float worstError = 0.0f; // texels between the measured and the true edge
+    float worstStep = 0.0f; // texels (the coarser row's) between the edges of neighbouring rows
+    float worstBoundaryStep = 0.0f; // the same, where the rows' cascades differ
 };
 
 class CascadeSeamTest : public GpuTest {
@@ -105,7 +106,8 @@ protected:
         }
         const bool close = projection == shadows::CascadeProjection::Close;
         EXPECT_GT(edges.size(), 100u) << "the wall's shadow edge must be in view: "
-                                      << savePicture(lit, std::string(close ? "seam-close-" : "seam-") + configuration());
+                                      << savePicture(lit,
+                                                     std::string(close ? "seam-close-" : "seam-") + configuration());
         // Measured in the texels of the cascade the point selects (shadows::selectCascade, the lit shader's twin),
         // or, blending softly, of the next, coarser one where the two are blended.
         const auto cascadeAt = [&](glm::vec3 p) {
@@ -133,12 +135,12 @@ protected:
                 figures.worstBoundaryStep = std::max(figures.worstBoundaryStep, step);
             }
         }
-        std::printf("[ seams    ] %s %s fit, %s blend, normal bias x%.0f: %zu rows, %zu at cascade boundaries; edge within "
-                    "%.2f texels of the truth; worst step between rows %.2f texels, at cascade boundaries %.2f\n",
-                    configuration().c_str(), close ? "close" : "stable",
-                    blend == shadows::CascadeBlend::Hard ? "hard" : "soft", normalBias,
-                    figures.samples, figures.boundaries, figures.worstError, figures.worstStep,
-                    figures.worstBoundaryStep);
+        std::printf(
+            "[ seams    ] %s %s fit, %s blend, normal bias x%.0f: %zu rows, %zu at cascade boundaries; edge within "
+            "%.2f texels of the truth; worst step between rows %.2f texels, at cascade boundaries %.2f\n",
+            configuration().c_str(), close ? "close" : "stable", blend == shadows::CascadeBlend::Hard ? "hard" : "soft",
+            normalBias, figures.samples, figures.boundaries, figures.worstError, figures.worstStep,
+            figures.worstBoundaryStep);
         return figures;
     }
 };

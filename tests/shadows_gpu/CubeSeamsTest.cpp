@@ -29,7 +29,10 @@
 
 namespace penumbra::shadows {
 // Parameter values in failure messages.
-void PrintTo(PointShadowMode mode, std::ostream* out) { *out << (mode == PointShadowMode::Atlas ? "atlas" : "cubemap"); }
+void PrintTo(PointShadowMode mode, std::ostream* out)
+{
+    *out << (mode == PointShadowMode::Atlas ? "atlas" : "cubemap");
+}
 } // namespace penumbra::shadows
 
 namespace penumbra::testing {
@@ -144,11 +147,12 @@ private:
     {
         const std::uint32_t tile = firstTile() + static_cast<std::uint32_t>(face);
         const float distanceToPlane = glm::dot(position - light_, shadows::cubeFaceAxis(face));
-        const glm::vec3 biased = position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
-                                                                         distanceToPlane * plan_.uniforms.tileData[tile].x);
+        const glm::vec3 biased =
+            position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
+                                                     distanceToPlane * plan_.uniforms.tileData[tile].x);
         const glm::vec4 p = plan_.uniforms.worldToAtlas[tile] * glm::vec4(biased, 1.0f);
-        const glm::vec2 texel = glm::vec2(p) / p.w * float(plan_.atlas.atlasSize()) -
-                                glm::vec2(plan_.atlas.tileOffset(tile));
+        const glm::vec2 texel =
+            glm::vec2(p) / p.w * float(plan_.atlas.atlasSize()) - glm::vec2(plan_.atlas.tileOffset(tile));
         return shadows::filterShadowWithTaps(grids_[static_cast<std::size_t>(face)], kFilter,
                                              texel / float(plan_.atlas.tileSize()), p.z / p.w,
                                              conventions_.shadowCompareOp());
@@ -161,7 +165,7 @@ private:
         const glm::vec4 data = plan_.uniforms.cubeData[0];
         const glm::vec3 axis = shadows::cubeFaceAxis(face);
         const glm::vec3 biased = position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
-                                                                         glm::dot(position - light_, axis) * data.z);
+                                                                          glm::dot(position - light_, axis) * data.z);
         const glm::vec3 d = biased - light_;
         const float major = rhi::cubeFaceViewDepth(d);
         const float reference = (data.x * -major + data.y) / major;
@@ -212,7 +216,7 @@ float seamBound(PointShadowMode mode)
 struct SeamFigures {
     std::size_t probes = 0;
     std::size_t partial = 0; // probes where a face sees a shadow boundary within its filter (value strictly in (0, 1))
-    float largest = 0.0f;    // largest difference between the two faces
+    float largest = 0.0f; // largest difference between the two faces
     std::size_t beyondBound = 0;
 };
 
@@ -236,8 +240,8 @@ protected:
         const PointShadowLookup lookup(*device, renderer, light);
         const float bound = seamBound(mode);
         SeamFigures figures;
-        const std::uint32_t faceSize = mode == PointShadowMode::Atlas ? renderer.localPlan().atlas.tileSize()
-                                                                      : frame.shadows.local.cubeMapSize;
+        const std::uint32_t faceSize =
+            mode == PointShadowMode::Atlas ? renderer.localPlan().atlas.tileSize() : frame.shadows.local.cubeMapSize;
         for (const EdgeProbe& probe : edgeProbes(scene, light, faceSize)) {
             const float a = lookup(probe.faces[0], probe.positions[0], probe.normal);
             const float b = lookup(probe.faces[1], probe.positions[1], probe.normal);
@@ -263,7 +267,8 @@ TEST_P(CubeSeamsTest, FacesAgreeWhereTheyMeet)
     EXPECT_EQ(figures.beyondBound, 0u) << "largest difference " << figures.largest;
 }
 
-INSTANTIATE_TEST_SUITE_P(PointShadowModes, CubeSeamsTest, ::testing::Values(PointShadowMode::Atlas, PointShadowMode::CubeMap),
+INSTANTIATE_TEST_SUITE_P(PointShadowModes, CubeSeamsTest,
+                         ::testing::Values(PointShadowMode::Atlas, PointShadowMode::CubeMap),
                          [](const auto& param) { return param.param == PointShadowMode::Atlas ? "Atlas" : "CubeMap"; });
 
 // Negative controls: faces of exactly 90 degrees (no FOV bias) let the filter and the normal bias run off
@@ -273,8 +278,8 @@ protected:
     PlanFault facesOf(float degrees)
     {
         return [this, degrees](render::ShadowPlans plans, const scene::Scene& scene) {
-            plans.local = withPointFaceFieldOfView(std::move(plans.local), scene, glm::radians(degrees),
-                                                   device->conventions());
+            plans.local =
+                withPointFaceFieldOfView(std::move(plans.local), scene, glm::radians(degrees), device->conventions());
             return plans;
         };
     }

@@ -112,7 +112,10 @@ TEST_F(DepthPrepassTest, GrazingTrianglesLoseNoPixel) { expectSamePicture(grazin
 
 // 4x MSAA, which every configuration here offers (MultisampleTest): each sample's depth from the prepass is the one
 // the lit pass's equal test finds, also where triangles meet at a sample between pixel centres.
-TEST_F(DepthPrepassTest, GrazingTrianglesLoseNoSampleWithMsaa) { expectSamePicture(grazingScene(), "grazing-msaa4", 0, 4); }
+TEST_F(DepthPrepassTest, GrazingTrianglesLoseNoSampleWithMsaa)
+{
+    expectSamePicture(grazingScene(), "grazing-msaa4", 0, 4);
+}
 
 // One pixel of the 57 600 differs on vulkan and opengl (not on the reversed-Z configurations): a depth tie.
 TEST_F(DepthPrepassTest, ForestLeafCardsLoseNoPixel) { expectSamePicture(scene::makeForestScene(), "forest", 2); }

@@ -50,8 +50,10 @@ GltfBuilder quadFile(const nlohmann::json& material, const QuadAttributes& attri
 GltfBuilder casterFile(GltfBuilder b, bool facingDown)
 {
     const int ground = b.add("materials", {{"name", "ground"}, {"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}});
-    b.addRoot(b.add("nodes", {{"name", "ground"}, {"mesh", addCubeMesh(b, "ground", ground)},
-                              {"translation", {0, -0.1, 0}}, {"scale", {6, 0.1, 6}}}));
+    b.addRoot(b.add("nodes", {{"name", "ground"},
+                              {"mesh", addCubeMesh(b, "ground", ground)},
+                              {"translation", {0, -0.1, 0}},
+                              {"scale", {6, 0.1, 6}}}));
     const double half = 0.7071068 * (facingDown ? 1.0 : -1.0); // about x: +z turns to -y (down) or +y (up)
     b.json()["nodes"][0]["translation"] = {0, 1.5, 0};
     b.json()["nodes"][0]["rotation"] = {half, 0, 0, 0.7071068};
@@ -92,10 +94,9 @@ protected:
     // emission) and seen from (0, 0, 3).
     scene::Scene load(const GltfBuilder& b, glm::vec3 direction = {0.0f, 0.0f, -1.0f}, float intensity = 2.0f)
     {
-        const std::filesystem::path path =
-            std::filesystem::temp_directory_path() /
-            ("penumbra-materials-" + configuration() + "-" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".glb");
+        const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                           ("penumbra-materials-" + configuration() + "-" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".glb");
         declaringExtensions(b).writeGlb(path);
         scene::Scene scene = scene::loadGltf(path).scene;
         std::filesystem::remove(path);
@@ -148,7 +149,8 @@ protected:
 TEST_F(GltfMaterialsTest, DoubleSidedQuadSeenFromBehindIsDrawnAndLitWhileASingleSidedOneIsCulled)
 {
     // Turned half round: the camera (and the sun, shining from the camera's side) see the quads' back faces.
-    const nlohmann::json red = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.2, 1.0}}, {"metallicFactor", 0.0}}}};
+    const nlohmann::json red = {
+        {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.2, 0.2, 1.0}}, {"metallicFactor", 0.0}}}};
     nlohmann::json twoSided = red;
     twoSided["doubleSided"] = true;
     const scene::Scene single = load(quadFile(red, {}, 3.14159265f));
@@ -208,9 +210,10 @@ TEST_F(GltfMaterialsTest, MetallicRoughnessTextureMultipliesTheFactors)
     const auto file = [](double metallicFactor) {
         GltfBuilder b;
         const int texture = halves(b, {0, 255, 0, 255}, {0, 255, 255, 255});
-        b.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.9, 0.9, 1.0}},
-                                                       {"metallicFactor", metallicFactor},
-                                                       {"metallicRoughnessTexture", {{"index", texture}}}}}});
+        b.add("materials", {{"pbrMetallicRoughness",
+                             {{"baseColorFactor", {0.9, 0.9, 0.9, 1.0}},
+                              {"metallicFactor", metallicFactor},
+                              {"metallicRoughnessTexture", {{"index", texture}}}}}});
         b.addRoot(b.add("nodes", {{"mesh", addQuadMesh(b, "quad", 0)}}));
         return b;
     };
@@ -220,7 +223,8 @@ TEST_F(GltfMaterialsTest, MetallicRoughnessTextureMultipliesTheFactors)
     const rhi::Image noMetal = render(dielectric);
     const float left = luma(metalRight, textured, kLeft), right = luma(metalRight, textured, kRight);
     std::printf("[ materials ] %s: dielectric half %.1f, metal half %.1f; metallicFactor 0: %.1f, %.1f\n",
-                configuration().c_str(), left, right, luma(noMetal, dielectric, kLeft), luma(noMetal, dielectric, kRight));
+                configuration().c_str(), left, right, luma(noMetal, dielectric, kLeft),
+                luma(noMetal, dielectric, kRight));
     EXPECT_GT(left, 1.5f * right) << "the texture's blue channel does not make the right half metal";
     EXPECT_NEAR(luma(noMetal, dielectric, kLeft), luma(noMetal, dielectric, kRight), 2.0f)
         << "metallicFactor 0 does not scale the texture's metal away";
@@ -291,9 +295,9 @@ TEST_F(GltfMaterialsTest, OcclusionTextureDarkensTheAmbientTermOnly)
     // Left unoccluded (R = 255), right fully occluded (R = 0).
     const auto file = [](double strength) {
         GltfBuilder b;
-        b.add("materials", {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
-                            {"occlusionTexture", {{"index", halves(b, {255, 0, 0, 255}, {0, 0, 0, 255})},
-                                                  {"strength", strength}}}});
+        b.add("materials",
+              {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+               {"occlusionTexture", {{"index", halves(b, {255, 0, 0, 255}, {0, 0, 0, 255})}, {"strength", strength}}}});
         b.addRoot(b.add("nodes", {{"mesh", addQuadMesh(b, "quad", 0)}}));
         return b;
     };
@@ -305,8 +309,9 @@ TEST_F(GltfMaterialsTest, OcclusionTextureDarkensTheAmbientTermOnly)
                      sunlitImage = render(sunlit, ambient);
     const float open = luma(fullImage, full, kLeft), occluded = luma(fullImage, full, kRight),
                 halfOccluded = luma(halfImage, half, kRight);
-    std::printf("[ materials ] %s: ambient only: open %.1f, occluded %.1f, at strength 0.5 %.1f; sunlit occluded %.1f\n",
-                configuration().c_str(), open, occluded, halfOccluded, luma(sunlitImage, sunlit, kRight));
+    std::printf(
+        "[ materials ] %s: ambient only: open %.1f, occluded %.1f, at strength 0.5 %.1f; sunlit occluded %.1f\n",
+        configuration().c_str(), open, occluded, halfOccluded, luma(sunlitImage, sunlit, kRight));
     EXPECT_GT(open, 150.0f);
     EXPECT_LT(occluded, 2.0f) << "occlusion 0 leaves ambient light";
     // Linear 0.4 x 0.5 = 0.2: sRGB 124.
@@ -319,7 +324,9 @@ TEST_F(GltfMaterialsTest, HemisphereAmbientLightsFromTheSkyAboveAndTheGroundBelo
 {
     // No light; quads tilted 60 degrees towards the sky and towards the ground (n.y = +-0.87: 93 % of one colour).
     const nlohmann::json white = {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}}};
-    const render::AmbientLight hemisphere{.color = {1.0f, 0.1f, 0.1f}, .intensity = 0.5f, .ground = glm::vec3(0.1f, 0.1f, 1.0f)};
+    const render::AmbientLight hemisphere{.color = {1.0f, 0.1f, 0.1f},
+                                          .intensity = 0.5f,
+                                          .ground = glm::vec3(0.1f, 0.1f, 1.0f)};
     for (const double sign : {1.0, -1.0}) {
         GltfBuilder b = quadFile(white);
         b.json()["nodes"][0]["rotation"] = {-0.5 * sign, 0.0, 0.0, 0.8660254}; // about x by -+60 degrees
@@ -359,11 +366,15 @@ TEST_F(GltfMaterialsTest, TextureTransformAndTexCoord1MoveTheBaseColourTexture)
         {"plain", nlohmann::json::object(), true, false},
         {"offset", {{"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0.0}}}}}}}, false, true},
         // Half a turn about the uv origin, moved back by (1, 1): u -> 1 - u.
-        {"rotation", {{"extensions", {{"KHR_texture_transform", {{"offset", {1.0, 1.0}}, {"rotation", 3.14159265}}}}}},
-         false, true},
+        {"rotation",
+         {{"extensions", {{"KHR_texture_transform", {{"offset", {1.0, 1.0}}, {"rotation", 3.14159265}}}}}},
+         false,
+         true},
         {"texcoord1", {{"texCoord", 1}}, true, true},
         // The extension's texCoord overrides the textureInfo's.
-        {"texcoord-override", {{"texCoord", 1}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 0}}}}}}, true,
+        {"texcoord-override",
+         {{"texCoord", 1}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 0}}}}}},
+         true,
          false},
     }};
     for (const Case& c : cases) {
@@ -398,8 +409,9 @@ TEST_F(GltfMaterialsTest, UnlitSurfacesShowTheirBaseColourAndCastShadows)
     const scene::Scene caster = casterScene(casterFile(quadFile(unlit), false));
     const rhi::Image shadowed = render(caster);
     const rhi::Image unshadowed = render(withoutCaster(caster, "quad"));
-    std::printf("[ materials ] %s: ground under the unlit quad %.1f, without its shadow %.1f\n", configuration().c_str(),
-                luma(shadowed, caster, kShadowedGround), luma(unshadowed, caster, kShadowedGround));
+    std::printf("[ materials ] %s: ground under the unlit quad %.1f, without its shadow %.1f\n",
+                configuration().c_str(), luma(shadowed, caster, kShadowedGround),
+                luma(unshadowed, caster, kShadowedGround));
     EXPECT_LT(luma(shadowed, caster, kShadowedGround), 0.5f * luma(unshadowed, caster, kShadowedGround))
         << "the unlit quad casts no shadow";
     keep({{"quad", &image}, {"shadow", &shadowed}});
@@ -418,9 +430,13 @@ TEST_F(GltfMaterialsTest, BlendedSurfacesAreDrawnBackToFrontOverTheOpaqueOnes)
     const int green = glass(0.0, 1.0, 0.0), red = glass(1.0, 0.0, 0.0);
     const int white = b.add("materials", {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}}},
                                           {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
-    b.addRoot(b.add("nodes", {{"name", "green"}, {"mesh", addQuadMesh(b, "green", green)}, {"translation", {0, 0, 1.0}},
+    b.addRoot(b.add("nodes", {{"name", "green"},
+                              {"mesh", addQuadMesh(b, "green", green)},
+                              {"translation", {0, 0, 1.0}},
                               {"scale", {0.3, 0.3, 1}}}));
-    b.addRoot(b.add("nodes", {{"name", "red"}, {"mesh", addQuadMesh(b, "red", red)}, {"translation", {0, 0, 0.5}},
+    b.addRoot(b.add("nodes", {{"name", "red"},
+                              {"mesh", addQuadMesh(b, "red", red)},
+                              {"translation", {0, 0, 0.5}},
                               {"scale", {0.6, 0.6, 1}}}));
     b.addRoot(b.add("nodes", {{"name", "white"}, {"mesh", addQuadMesh(b, "white", white)}}));
     const scene::Scene scene = load(b);

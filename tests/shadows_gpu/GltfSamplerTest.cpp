@@ -21,10 +21,10 @@ protected:
     // trilinear); cube 2: LINEAR without mipmaps, REPEAT x MIRRORED_REPEAT.
     scene::Scene load()
     {
-        const GltfBuilder b = sampledTexturesScene(
-            {{{"magFilter", 9728}, {"minFilter", 9986}, {"wrapS", 33648}, {"wrapT", 33071}},
-             nullptr,
-             {{"magFilter", 9729}, {"minFilter", 9729}, {"wrapT", 33648}}});
+        const GltfBuilder b =
+            sampledTexturesScene({{{"magFilter", 9728}, {"minFilter", 9986}, {"wrapS", 33648}, {"wrapT", 33071}},
+                                  nullptr,
+                                  {{"magFilter", 9729}, {"minFilter", 9729}, {"wrapT", 33648}}});
         const std::filesystem::path path =
             std::filesystem::temp_directory_path() / ("penumbra-samplers-" + configuration() + ".glb");
         b.writeGlb(path);

@@ -25,7 +25,8 @@ render::FrameDesc smallFrame()
 
 bool mentions(const std::vector<std::string>& notes, const std::string& text)
 {
-    return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) { return n.find(text) != std::string::npos; });
+    return std::any_of(notes.begin(), notes.end(),
+                       [&](const std::string& n) { return n.find(text) != std::string::npos; });
 }
 
 // Share of pixels whose RGB differs by more than `tolerance` in some channel.
@@ -56,7 +57,8 @@ TEST_F(LightsAndAtlasTest, LightsBeyondTheLimitAndWithoutStrengthAreLitWithoutSh
     const shadows::DirectionalShadowPlan& plan = renderer.plan();
     ASSERT_EQ(plan.lights.size(), 4u) << "four shadow slots, filled by the first lights that can cast";
     EXPECT_EQ(plan.shadowSlots[1], -1);
-    EXPECT_TRUE(mentions(renderer.notes(), "light 1 ('" + scene.lights[1].name + "') has no shadows: shadow strength is 0"));
+    EXPECT_TRUE(
+        mentions(renderer.notes(), "light 1 ('" + scene.lights[1].name + "') has no shadows: shadow strength is 0"));
     EXPECT_TRUE(mentions(renderer.notes(), "beyond the limit of 4 shadowed directional lights"));
     EXPECT_TRUE(mentions(renderer.notes(), "light 9 ('extra 5') is not drawn: beyond the limit of 8"));
 }
@@ -75,7 +77,8 @@ TEST_F(LightsAndAtlasTest, SixteenBitAndTwentyFourBitAtlasesShadowLikeThirtyTwoB
         const double share = differingShare(reference, rhi::readTexture(*device, renderer.litImage()), 8);
         std::printf("[ atlas    ] %s: %.4f%% of pixels differ from D32F by more than 8/255\n",
                     std::string(rhi::formatName(format)).c_str(), 100.0 * share);
-        // Only shadow-edge pixels may move: a 16-bit depth step over a cascade's depth range is far below a texel's bias.
+        // Only shadow-edge pixels may move: a 16-bit depth step over a cascade's depth range is far below a texel's
+        // bias.
         EXPECT_LT(share, 0.005) << rhi::formatName(format);
     }
 }

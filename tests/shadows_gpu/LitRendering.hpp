@@ -34,8 +34,7 @@ inline glm::uvec2 pixelOf(const rhi::Device& device, const scene::Camera& camera
                           std::uint32_t height, glm::vec3 world)
 {
     const glm::mat4 viewProjection =
-        device.conventions().perspective(camera.fovY, float(width) / float(height), camera.nearPlane,
-                                         camera.farPlane) *
+        device.conventions().perspective(camera.fovY, float(width) / float(height), camera.nearPlane, camera.farPlane) *
         camera.view();
     const glm::vec4 clip = viewProjection * glm::vec4(world, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;

@@ -85,19 +85,21 @@ TEST_F(LocalShadowsTest, PointFacesStoreTheLightFacingSideOfACaster)
         const std::uint32_t tile = static_cast<std::uint32_t>(plan.pointShadows[0]) + static_cast<std::uint32_t>(face);
         const shadows::LocalShadowView& view =
             atlasMode ? plan.tiles[tile].view : plan.cubes[0].faces[static_cast<std::size_t>(face)];
-        const rhi::DepthImage depth = atlasMode ? rhi::readDepth(*device, renderer.localAtlas().texture())
-                                                : rhi::readDepth(*device, renderer.shadowCubes().texture(),
-                                                                 rhi::cubeLayer(0, face));
-        const glm::mat4 toTexture = atlasMode ? plan.uniforms.worldToAtlas[tile]
-                                              : device->conventions().clipToTexture() * view.viewProjection;
+        const rhi::DepthImage depth =
+            atlasMode ? rhi::readDepth(*device, renderer.localAtlas().texture())
+                      : rhi::readDepth(*device, renderer.shadowCubes().texture(), rhi::cubeLayer(0, face));
+        const glm::mat4 toTexture =
+            atlasMode ? plan.uniforms.worldToAtlas[tile] : device->conventions().clipToTexture() * view.viewProjection;
         const glm::vec4 p = toTexture * glm::vec4(centre, 1.0f);
         const auto x = static_cast<std::uint32_t>(p.x / p.w * float(depth.width));
         const auto y = static_cast<std::uint32_t>(p.y / p.w * float(depth.height));
         const float stored =
             device->conventions().viewDepth(view.projection, depth.depth[std::size_t(y) * depth.width + x]);
         // Distances along the face axis to the crate's near and far faces.
-        const float nearFace = std::min(glm::dot(crate.worldBounds.min - light, axis), glm::dot(crate.worldBounds.max - light, axis));
-        const float farFace = std::max(glm::dot(crate.worldBounds.min - light, axis), glm::dot(crate.worldBounds.max - light, axis));
+        const float nearFace =
+            std::min(glm::dot(crate.worldBounds.min - light, axis), glm::dot(crate.worldBounds.max - light, axis));
+        const float farFace =
+            std::max(glm::dot(crate.worldBounds.min - light, axis), glm::dot(crate.worldBounds.max - light, axis));
         std::printf("[ faces    ] %s %s: face %u stores %.4f towards the crate; near face %.4f, far face %.4f\n",
                     configuration().c_str(), modeName(mode), static_cast<unsigned>(face), stored, nearFace, farFace);
         EXPECT_NEAR(stored, nearFace, 0.02f) << modeName(mode);
@@ -123,8 +125,9 @@ TEST_F(LocalShadowsTest, LightsBeyondTheTileBudgetAreLitWithoutShadowsAndReporte
     scene.pointLights.push_back({.name = "third bulb", .position = {4.0f, 2.0f, 6.0f}});
     render::SceneRenderer renderer(*device, scene);
     const render::FrameStats stats = renderer.render(scene.camera, frame());
-    const std::string expected = "point light 2 ('third bulb') has no shadows: needs 6 of the local atlas's 16 tiles, 1 "
-                                 "are left";
+    const std::string expected =
+        "point light 2 ('third bulb') has no shadows: needs 6 of the local atlas's 16 tiles, 1 "
+        "are left";
     EXPECT_NE(std::find(stats.notes.begin(), stats.notes.end(), expected), stats.notes.end());
     EXPECT_EQ(renderer.localPlan().pointShadows, (std::vector<int>{3, 9, -1}));
     EXPECT_EQ(renderer.localPlan().atlas.tileCount(), 15u);

@@ -51,7 +51,7 @@ protected:
 };
 
 struct Blends {
-    std::size_t square = 0;       // the square's white
+    std::size_t square = 0; // the square's white
     std::size_t intermediate = 0; // neither white nor the background
 };
 

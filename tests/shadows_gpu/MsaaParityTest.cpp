@@ -31,8 +31,8 @@ const std::vector<parity::ConfigurationRun>& msaaRuns()
 {
     static const std::vector<parity::ConfigurationRun> runs =
         parity::renderConfigurations([](rhi::Device& device, const rhi::NamedConfiguration& configuration) {
-            const apps::ShadowPictures pictures = apps::renderShadowScene(
-                device, configuration.name, apps::namedScene("test"), msaaFrame(), false);
+            const apps::ShadowPictures pictures =
+                apps::renderShadowScene(device, configuration.name, apps::namedScene("test"), msaaFrame(), false);
             testing::savePicture(pictures.lit, "msaa-parity-" + configuration.name);
             return std::vector{parity::colorPicture("lit-msaa4", pictures.lit)};
         });
@@ -43,16 +43,16 @@ bool reversedTwins(const std::string& a, const std::string& b) { return a + "-re
 
 parity::Thresholds msaaThresholds(const std::string& a, const std::string& b)
 {
-    return reversedTwins(a, b) ? parity::identical() : parity::Thresholds{.maxDifference = 1.0, .maxDifferingPixels = 2};
+    return reversedTwins(a, b) ? parity::identical()
+                               : parity::Thresholds{.maxDifference = 1.0, .maxDifferingPixels = 2};
 }
 
 parity::Options msaaParityOptions()
 {
     parity::Options options;
     options.pairThresholds = [](const std::string&, const parity::ConfigurationRun& a,
-                                const parity::ConfigurationRun& b, const parity::Thresholds&) {
-        return msaaThresholds(a.name(), b.name());
-    };
+                                const parity::ConfigurationRun& b,
+                                const parity::Thresholds&) { return msaaThresholds(a.name(), b.name()); };
     return options;
 }
 

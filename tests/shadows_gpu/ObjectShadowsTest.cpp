@@ -50,8 +50,8 @@ protected:
         frame.height = kHeight;
         rhi::Image image = renderLit(*device, scene, frame);
         const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-        pictures_ += savePicture(image, "object-shadows-" + test + "-" + configuration() + "-" +
-                                            std::to_string(++count_)) + " ";
+        pictures_ +=
+            savePicture(image, "object-shadows-" + test + "-" + configuration() + "-" + std::to_string(++count_)) + " ";
         return image;
     }
 

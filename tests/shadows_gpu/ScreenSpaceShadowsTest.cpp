@@ -51,7 +51,8 @@ std::size_t differingPixels(const rhi::Image& a, const rhi::Image& b)
     for (std::size_t i = 0; i + 3 < a.bytes.size(); i += 4) {
         bool differs = false;
         for (std::size_t c = 0; c < 4; ++c)
-            differs = differs || std::abs(std::to_integer<int>(a.bytes[i + c]) - std::to_integer<int>(b.bytes[i + c])) > 1;
+            differs =
+                differs || std::abs(std::to_integer<int>(a.bytes[i + c]) - std::to_integer<int>(b.bytes[i + c])) > 1;
         differing += differs ? 1 : 0;
     }
     return differing;
@@ -70,8 +71,9 @@ rhi::Image shadowPicture(const std::vector<float>& shadows, std::uint32_t width,
 {
     rhi::Image picture{width, height, rhi::Format::RGBA8, std::vector<std::byte>(shadows.size())};
     for (std::size_t i = 0; i < shadows.size(); ++i)
-        picture.bytes[i] = i % 4 == 3 ? std::byte{255}
-                                      : static_cast<std::byte>(std::lround(std::clamp(shadows[i], 0.0f, 1.0f) * 255.0f));
+        picture.bytes[i] = i % 4 == 3
+                               ? std::byte{255}
+                               : static_cast<std::byte>(std::lround(std::clamp(shadows[i], 0.0f, 1.0f) * 255.0f));
     return picture;
 }
 

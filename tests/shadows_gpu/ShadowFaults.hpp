@@ -16,12 +16,13 @@ namespace penumbra::testing {
 // Either fit without its texel snap: every cascade's tile centred on what it is fitted around (the culling sphere,
 // the slice's bounds), wherever that falls between texels, so that the shadow texels move with the camera.
 inline shadows::DirectionalShadowPlan withoutTexelSnap(shadows::DirectionalShadowPlan plan,
-                                                      const rhi::Conventions& conventions)
+                                                       const rhi::Conventions& conventions)
 {
     for (shadows::ShadowedDirectionalLight& light : plan.lights)
         for (shadows::DirectionalCascadePlan& cascade : light.cascades) {
             shadows::DirectionalShadowCascade& fit = cascade.fit;
-            fit.view = glm::translate(glm::mat4(1.0f), glm::vec3(fit.snappedCentre - fit.fittedCentre, 0.0f)) * fit.view;
+            fit.view =
+                glm::translate(glm::mat4(1.0f), glm::vec3(fit.snappedCentre - fit.fittedCentre, 0.0f)) * fit.view;
             fit.viewProjection = fit.projection * fit.view;
             cascade.worldToAtlas = shadows::worldToAtlas(fit.viewProjection, cascade.tile, plan.atlas, conventions);
             plan.uniforms.worldToAtlas[cascade.tile] = cascade.worldToAtlas;
@@ -42,7 +43,8 @@ inline shadows::LocalShadowPlan withPointFaceFieldOfView(shadows::LocalShadowPla
             continue;
         const scene::PointLight& light = scene.pointLights[i];
         const glm::mat4 projection =
-            conventions.perspective(fov, 1.0f, shadows::localShadowNearPlane(light.range, light.shadowNearPlane, settings),
+            conventions.perspective(fov, 1.0f,
+                                    shadows::localShadowNearPlane(light.range, light.shadowNearPlane, settings),
                                     light.range);
         for (const shadows::CubeFace face : rhi::allCubeFaces) {
             const auto f = static_cast<std::uint32_t>(face);

@@ -60,8 +60,9 @@ public:
     rhi::Device& gpu() { return *device; }
 
     // The visibility view of `rendered` (a fault may leave a caster out of it or change its plans).
-    ShadowMask renderMask(const scene::Scene& rendered, const render::FrameDesc& frame,
-                          const PlanFault& fault = [](render::ShadowPlans plans) { return plans; })
+    ShadowMask renderMask(
+        const scene::Scene& rendered, const render::FrameDesc& frame,
+        const PlanFault& fault = [](render::ShadowPlans plans) { return plans; })
     {
         render::SceneRenderer renderer(*device, rendered);
         renderer.render(rendered.camera, frame, fault(renderer.planShadows(rendered.camera, frame)));
@@ -109,8 +110,8 @@ std::vector<std::string> truthFailures(const TruthFigures& f, std::size_t minimu
 {
     std::vector<std::string> failures;
     if (f.shadowed.compared < minimumShadowed)
-        failures.push_back(fmt::format("only {} shadowed pixels to judge, fewer than {}", f.shadowed.compared,
-                                       minimumShadowed));
+        failures.push_back(
+            fmt::format("only {} shadowed pixels to judge, fewer than {}", f.shadowed.compared, minimumShadowed));
     if (f.lit.share() < kClassBound)
         failures.push_back(fmt::format("{:.3f}% of truly lit pixels rendered lit, below {}%", 100.0 * f.lit.share(),
                                        100.0 * kClassBound));
@@ -260,7 +261,8 @@ ContactFigures contactGaps(const scene::Scene& scene, const ShadowMask& mask, co
         for (std::uint32_t x = 0; x < truth.visibility.width; ++x) {
             const scene::GBufferSample& sample = truth.gbuffer.at(x, y);
             if (sample.object != ground || truth.visibility.at(x, y) != scene::LightVisibility::Shadowed ||
-                !mask.visibility.decided[std::size_t(y) * truth.visibility.width + x] || nearLitPixel(truth.visibility, x, y))
+                !mask.visibility.decided[std::size_t(y) * truth.visibility.width + x] ||
+                nearLitPixel(truth.visibility, x, y))
                 continue;
             const float d = footprintDistance(sample.position, footprintMin, footprintMax);
             if (d > texel && d < 4.0f * texel) {
@@ -294,11 +296,11 @@ KeyLightFigures measureKeyLight(ShadowMaskTest& test, const std::string& name, c
                 configuration().c_str(), name.c_str(), k.contact.gaps, k.contact.samples, texel);
     k.failures = truthFailures(k.truth, minimumShadowed, shadowedBound);
     if (k.contact.samples <= 20)
-        k.failures.push_back(fmt::format("only {} contact samples: the cube's contact shadow must be in view",
-                                         k.contact.samples));
+        k.failures.push_back(
+            fmt::format("only {} contact samples: the cube's contact shadow must be in view", k.contact.samples));
     if (k.contact.gaps != 0)
-        k.failures.push_back(fmt::format("{} ground pixels between the cube and its shadow rendered lit",
-                                         k.contact.gaps));
+        k.failures.push_back(
+            fmt::format("{} ground pixels between the cube and its shadow rendered lit", k.contact.gaps));
     return k;
 }
 
@@ -329,8 +331,8 @@ TEST_F(ShadowMaskTest, CasterSideNormalBiasAgreesWithTheRayCast)
         scene::Scene scene = keyLightScene(pitch);
         scene.lights[0].normalBiasSide = scene::NormalBiasSide::Caster;
         const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kWidth, kHeight, kKeyLight));
-        const KeyLightFigures k = measureKeyLight(*this, fmt::format("caster side {:.0f}", pitch), scene, scene, truth,
-                                                  4000, kClassBound);
+        const KeyLightFigures k =
+            measureKeyLight(*this, fmt::format("caster side {:.0f}", pitch), scene, scene, truth, 4000, kClassBound);
         const std::vector<std::string> failures = truthFailures(k.truth, 4000);
         EXPECT_TRUE(failures.empty()) << pitch << " degrees: " << joined(failures);
         EXPECT_LE(k.contact.gaps, k.contact.samples / 10) << pitch << " degrees: the casters shrink off their contacts";
@@ -373,7 +375,8 @@ TEST_F(ShadowMaskTest, MissingCasterCatchesFault)
         }
         const std::uint32_t index = *scene.findObject(caster.name);
         const auto own = k.truth.shadowedBy.find(index);
-        const scene::TruthClassFigures figures = own == k.truth.shadowedBy.end() ? scene::TruthClassFigures{} : own->second;
+        const scene::TruthClassFigures figures =
+            own == k.truth.shadowedBy.end() ? scene::TruthClassFigures{} : own->second;
         std::printf("[ caster   ] %s: %zu compared pixels in its own shadow, %zu reported as leaks; of the %zu it is "
                     "nearest to, %.1f%% right\n",
                     caster.name.c_str(), exclusive, reported, figures.compared, 100.0 * figures.share());
@@ -433,7 +436,8 @@ TEST_F(ShadowMaskTest, MissingPointCasterCatchesFault)
     const scene::Scene room = roomLitFromInside();
     const scene::Scene broken = withoutCaster(room, "crate");
     const render::FrameDesc frame = maskFrame({}, kControlWidth, kControlHeight, kPoint);
-    const TruthFigures f = report(*this, "room without crate", renderMask(broken, frame), traceTruth(gpu(), room, frame));
+    const TruthFigures f =
+        report(*this, "room without crate", renderMask(broken, frame), traceTruth(gpu(), room, frame));
     EXPECT_FALSE(truthFailures(f, 250).empty()) << "the crate's missing shadow went unnoticed";
 }
 
@@ -446,10 +450,9 @@ TEST_F(ShadowMaskTest, NarrowCubeFacesCatchesFault)
     cubeMaps.local.pointMode = shadows::PointShadowMode::CubeMap;
     const render::FrameDesc frame = maskFrame(cubeMaps, kControlWidth, kControlHeight, kPoint);
     const ShadowMask mask = renderMask(room, frame, [&](render::ShadowPlans plans) {
-            plans.local = withPointFaceFieldOfView(std::move(plans.local), room, glm::radians(86.0f),
-                                                   gpu().conventions());
-            return plans;
-        });
+        plans.local = withPointFaceFieldOfView(std::move(plans.local), room, glm::radians(86.0f), gpu().conventions());
+        return plans;
+    });
     const TruthFigures f = report(*this, "room with 86-degree cube faces", mask, traceTruth(gpu(), room, frame));
     EXPECT_FALSE(truthFailures(f, 250).empty()) << "narrowed cube faces went unnoticed";
 }

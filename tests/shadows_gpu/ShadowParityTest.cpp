@@ -39,9 +39,9 @@
 namespace penumbra {
 namespace {
 
+using scene::CasterMode;
 using shadows::CascadeBlend;
 using shadows::ShadowFilter;
-using scene::CasterMode;
 
 constexpr std::uint32_t kWidth = 320;
 constexpr std::uint32_t kHeight = 180;
@@ -172,9 +172,9 @@ std::vector<float> localGradient(const std::vector<float>& lightDepth, std::uint
 
 struct AtlasComparison {
     std::size_t coverageMismatches = 0; // drawn in one, cleared in the other
-    std::size_t beyondBound = 0;        // |difference| > rounding slack + 4 subpixel steps of the local gradient
-    float worstRatio = 0.0f;            // max (|difference| - slack) / (gradient * subpixel step)
-    std::size_t withoutGradient = 0;    // differing texels with no local gradient (checked by the absolute bound)
+    std::size_t beyondBound = 0; // |difference| > rounding slack + 4 subpixel steps of the local gradient
+    float worstRatio = 0.0f; // max (|difference| - slack) / (gradient * subpixel step)
+    std::size_t withoutGradient = 0; // differing texels with no local gradient (checked by the absolute bound)
 };
 
 // Across conventions, texels drawn in one atlas only or beyond the gradient bound. Perspective views
@@ -225,11 +225,11 @@ AtlasComparison compareAtlases(const std::vector<float>& a, const std::vector<fl
     const std::size_t outliers = c.coverageMismatches + c.beyondBound;
     if (outliers <= outliersAllowed(atlas))
         return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure()
-           << c.coverageMismatches << " texels drawn in one atlas and cleared in the other, " << c.beyondBound
-           << " differ by more than " << kRoundingSlack << " + " << kStepsAllowed
-           << " subpixel steps of the local depth gradient (worst ratio " << c.worstRatio << "; bound "
-           << outliersAllowed(atlas) << " together)";
+    return ::testing::AssertionFailure() << c.coverageMismatches
+                                         << " texels drawn in one atlas and cleared in the other, " << c.beyondBound
+                                         << " differ by more than " << kRoundingSlack << " + " << kStepsAllowed
+                                         << " subpixel steps of the local depth gradient (worst ratio " << c.worstRatio
+                                         << "; bound " << outliersAllowed(atlas) << " together)";
 }
 
 // Same depth range and reversal: bit-identical window depth (measured 0 texels of 1M in every variant). Across
@@ -243,9 +243,10 @@ parity::Thresholds atlasThresholds(const std::string& atlas)
             .check = [atlas](const parity::Picture& a, const rhi::Conventions&, const parity::Picture& b,
                              const rhi::Conventions&) -> std::optional<std::string> {
                 const AtlasComparison c = compareAtlases(a.given, b.given, a.width(), a.height());
-                fmt::print("[ gradient ] {}: worst diff / subpixel step {:.2f}, coverage mismatches {}, beyond bound {}, "
-                           "without gradient {}\n",
-                           atlas, c.worstRatio, c.coverageMismatches, c.beyondBound, c.withoutGradient);
+                fmt::print(
+                    "[ gradient ] {}: worst diff / subpixel step {:.2f}, coverage mismatches {}, beyond bound {}, "
+                    "without gradient {}\n",
+                    atlas, c.worstRatio, c.coverageMismatches, c.beyondBound, c.withoutGradient);
                 const ::testing::AssertionResult verdict = withinGradientBound(c, atlas);
                 return verdict ? std::nullopt : std::optional<std::string>(verdict.message());
             }};
@@ -270,7 +271,7 @@ parity::Options shadowParityOptions(std::uint32_t softPixels = 0)
     for (const char* atlas : {"atlas", "other-atlas", "cube-atlas", "static-directional-atlas", "static-other-atlas"})
         options.thresholds[atlas] = atlasThresholds(atlas);
     options.pairThresholds = [softPixels](const std::string& picture, const parity::ConfigurationRun& a,
-                                const parity::ConfigurationRun& b, const parity::Thresholds& perPicture) {
+                                          const parity::ConfigurationRun& b, const parity::Thresholds& perPicture) {
         return picture == "lit" ? litThresholds(a.name(), b.name(), softPixels) : perPicture;
     };
     return options;
@@ -297,7 +298,8 @@ void checkParity(const Variant& variant)
     std::size_t drawn = 0;
     for (const parity::Picture& picture : vulkan.pictures)
         if (picture.kind == parity::PictureKind::Depth)
-            drawn += std::size_t(std::count_if(picture.given.begin(), picture.given.end(), [](float d) { return d > 0.0f; }));
+            drawn += std::size_t(
+                std::count_if(picture.given.begin(), picture.given.end(), [](float d) { return d > 0.0f; }));
     if (variant.casters == CasterMode::Off) {
         EXPECT_LT(drawn, vulkan.picture("atlas").given.size() / 2) << "only the ground should cast";
     }
@@ -326,7 +328,8 @@ TEST(ShadowParity, EveryConfigurationIsRendered)
         else
             reasons += fmt::format("\n  {}: {}", run.name(), run.message);
     }
-    EXPECT_EQ(rendered, testing::compiledConfigurations()) << "configurations this build has that did not render:" << reasons;
+    EXPECT_EQ(rendered, testing::compiledConfigurations())
+        << "configurations this build has that did not render:" << reasons;
 }
 
 TEST(ShadowParity, OneLightOneCascade) { checkParity({.name = "1x1", .scene = "key-light", .cascades = 1}); }
@@ -360,7 +363,10 @@ TEST(ShadowParity, TexturedMaterials) { checkParity({.name = "textured", .textur
 TEST(ShadowParity, MixedLights) { checkParity({.name = "mixed", .scene = "mixed"}); }
 // The static maps of the mixed scene's lights, read back from both static atlases: like the realtime atlases.
 TEST(ShadowParity, StaticMaps) { checkParity({.name = "static", .scene = "mixed", .staticMaps = true}); }
-TEST(ShadowParity, MixedLightsPcf5) { checkParity({.name = "mixed-pcf5", .scene = "mixed", .localFilter = ShadowFilter::PCF5x5}); }
+TEST(ShadowParity, MixedLightsPcf5)
+{
+    checkParity({.name = "mixed-pcf5", .scene = "mixed", .localFilter = ShadowFilter::PCF5x5});
+}
 TEST(ShadowParity, PointLightRoomCubeMaps)
 {
     checkParity({.name = "room-cube", .scene = "room", .pointMode = shadows::PointShadowMode::CubeMap});
@@ -372,7 +378,10 @@ TEST(ShadowParity, GltfMaterials) { checkParity({.name = "gltf-materials", .scen
 // defaults): PCSS's Poisson disks turned by the light-space texel hash give both backends the same pixels.
 TEST(ShadowParity, MixedLightsPcss)
 {
-    checkParity({.name = "mixed-pcss", .scene = "mixed", .filter = ShadowFilter::PCSS, .localFilter = ShadowFilter::PCSS,
+    checkParity({.name = "mixed-pcss",
+                 .scene = "mixed",
+                 .filter = ShadowFilter::PCSS,
+                 .localFilter = ShadowFilter::PCSS,
                  .softPixels = 4});
 }
 TEST(ShadowParity, PointLightRoomCubeMapsPcss)
@@ -383,7 +392,10 @@ TEST(ShadowParity, PointLightRoomCubeMapsPcss)
                  .pointMode = shadows::PointShadowMode::CubeMap,
                  .softPixels = 4});
 }
-TEST(ShadowParity, PointLightRoom) { checkParity({.name = "room", .scene = "room", .localFilter = ShadowFilter::PCF3x3}); }
+TEST(ShadowParity, PointLightRoom)
+{
+    checkParity({.name = "room", .scene = "room", .localFilter = ShadowFilter::PCF3x3});
+}
 
 // The negative controls: a real render of the 1x1 variant on the first compiled configuration, one texel or pixel
 // changed, judged by the thresholds the parity tests above use.
@@ -425,7 +437,8 @@ TEST(ShadowParity, ChangedAtlasTexelCatchesFault)
 
     const parity::Thresholds thresholds = atlasThresholds("atlas");
     EXPECT_TRUE(parity::comparePictures(atlas, conventions, atlas, conventions, thresholds).pass());
-    const parity::PictureComparison broken = parity::comparePictures(atlas, conventions, changed, conventions, thresholds);
+    const parity::PictureComparison broken =
+        parity::comparePictures(atlas, conventions, changed, conventions, thresholds);
     EXPECT_EQ(broken.figures.rawDifferingTexels, 1u);
     EXPECT_FALSE(broken.pass());
 

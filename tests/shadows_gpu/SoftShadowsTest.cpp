@@ -44,13 +44,22 @@ scene::Scene contactScene(LightKind kind, ShadowFilter filter)
     scene.lights.clear();
     const glm::vec3 position{-2.0f, 3.5f, 0.0f};
     if (kind == LightKind::Spot)
-        scene.spotLights.push_back({.name = "spot", .intensity = 20.0f, .position = position,
-                                    .direction = glm::normalize(glm::vec3(1.8f, -3.5f, 0.0f)), .range = 15.0f,
-                                    .innerAngle = 0.7f, .outerAngle = 1.0f, .sourceRadius = 0.15f,
+        scene.spotLights.push_back({.name = "spot",
+                                    .intensity = 20.0f,
+                                    .position = position,
+                                    .direction = glm::normalize(glm::vec3(1.8f, -3.5f, 0.0f)),
+                                    .range = 15.0f,
+                                    .innerAngle = 0.7f,
+                                    .outerAngle = 1.0f,
+                                    .sourceRadius = 0.15f,
                                     .shadowFilter = value});
     else
-        scene.pointLights.push_back({.name = "point", .intensity = 20.0f, .position = position, .range = 15.0f,
-                                     .sourceRadius = 0.15f, .shadowFilter = value});
+        scene.pointLights.push_back({.name = "point",
+                                     .intensity = 20.0f,
+                                     .position = position,
+                                     .range = 15.0f,
+                                     .sourceRadius = 0.15f,
+                                     .shadowFilter = value});
     scene.validate();
     return scene;
 }
@@ -137,7 +146,8 @@ AreaLightFigures checkAgainstTheAreaLight(rhi::Device& device, LightKind kind)
     figures.bestFixed = scene::compareSoftVisibility(figures.truth, rendered(ShadowFilter::PCF7x7, 2.5f)).meanAbsError;
     std::string fixed = fmt::format("pcf7 {:.4f}", figures.bestFixed);
     for (const float radius : {2.0f, 4.0f, 8.0f}) {
-        const double e = scene::compareSoftVisibility(figures.truth, rendered(ShadowFilter::Poisson, radius)).meanAbsError;
+        const double e =
+            scene::compareSoftVisibility(figures.truth, rendered(ShadowFilter::Poisson, radius)).meanAbsError;
         fixed += fmt::format(", poisson r{} {:.4f}", radius, e);
         figures.bestFixed = std::min(figures.bestFixed, e);
     }
@@ -166,9 +176,10 @@ TEST_F(SoftShadowsTest, DirectionalPcssAgainstTheAreaLight)
         const std::uint32_t x = pixelOf(*device, camera, kSize, kSize, {height, 0.0f, 0.0f}).x;
         const int expected = penumbraWidth([&](std::uint32_t px, std::uint32_t py) { return figures.truth.at(px, py); },
                                            x, firstRow, lastRow);
-        const int rendered = penumbraWidth(
-            [&](std::uint32_t px, std::uint32_t py) { return figures.pcssVisibility.lit[std::size_t(py) * kSize + px]; },
-            x, firstRow, lastRow);
+        const int rendered =
+            penumbraWidth([&](std::uint32_t px,
+                              std::uint32_t py) { return figures.pcssVisibility.lit[std::size_t(py) * kSize + px]; },
+                          x, firstRow, lastRow);
         EXPECT_GT(expected, 2) << "at x = " << height;
         EXPECT_NEAR(rendered, expected, 0.25 * expected + 0.5) << "penumbra width in pixels at x = " << height;
         std::printf("x = %.2f: ray-traced %d px, pcss %d px\n", height, expected, rendered);
@@ -196,15 +207,23 @@ double softShare(const scene::RenderedVisibility& v)
 TEST_F(SoftShadowsTest, HardTentPoissonAndPcssLightsShareOneFrame)
 {
     scene::Scene scene = contactScene(LightKind::Directional, ShadowFilter::PCSS);
-    scene.lights.push_back({.name = "hard sun", .intensity = 1.0f,
+    scene.lights.push_back({.name = "hard sun",
+                            .intensity = 1.0f,
                             .direction = glm::normalize(glm::vec3(-1.0f, -1.5f, 0.5f)),
                             .shadowFilter = static_cast<std::int32_t>(ShadowFilter::PCF2x2)});
-    scene.spotLights.push_back({.name = "tent spot", .intensity = 10.0f, .position = {2.0f, 4.0f, 2.0f},
-                                .direction = glm::normalize(glm::vec3(-0.5f, -1.0f, -0.5f)), .range = 12.0f,
-                                .innerAngle = 0.6f, .outerAngle = 0.9f,
+    scene.spotLights.push_back({.name = "tent spot",
+                                .intensity = 10.0f,
+                                .position = {2.0f, 4.0f, 2.0f},
+                                .direction = glm::normalize(glm::vec3(-0.5f, -1.0f, -0.5f)),
+                                .range = 12.0f,
+                                .innerAngle = 0.6f,
+                                .outerAngle = 0.9f,
                                 .shadowFilter = static_cast<std::int32_t>(ShadowFilter::PCF5x5)});
-    scene.pointLights.push_back({.name = "poisson point", .intensity = 10.0f, .position = {-1.0f, 3.0f, -1.5f},
-                                 .range = 12.0f, .sourceRadius = 0.2f,
+    scene.pointLights.push_back({.name = "poisson point",
+                                 .intensity = 10.0f,
+                                 .position = {-1.0f, 3.0f, -1.5f},
+                                 .range = 12.0f,
+                                 .sourceRadius = 0.2f,
                                  .shadowFilter = static_cast<std::int32_t>(ShadowFilter::Poisson)});
     scene.validate();
     render::SceneRenderer renderer(*device, scene);
@@ -238,8 +257,8 @@ TEST_F(SoftShadowsTest, PcssStaysPutUnderSubTexelCameraMoves)
     };
     const rhi::Image still = pictureWithPlansFrom(scene.camera);
     std::vector<scene::Camera> moved;
-    for (const glm::vec3 step : {glm::vec3(0.004f, 0.0f, 0.0f), glm::vec3(0.0f, 0.003f, 0.007f),
-                                 glm::vec3(-0.011f, 0.0f, 0.002f)}) {
+    for (const glm::vec3 step :
+         {glm::vec3(0.004f, 0.0f, 0.0f), glm::vec3(0.0f, 0.003f, 0.007f), glm::vec3(-0.011f, 0.0f, 0.002f)}) {
         scene::Camera camera = scene.camera;
         camera.position += step;
         moved.push_back(camera);
@@ -264,12 +283,14 @@ TEST_F(SoftShadowsTest, CubeMapsAgreeWithAtlasTiles)
     render::FrameDesc frame = softFrame(light);
     render::SceneRenderer renderer(*device, scene);
     renderer.render(scene.camera, frame);
-    const scene::RenderedVisibility atlas = render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
+    const scene::RenderedVisibility atlas =
+        render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
     // Cube faces a little finer than the atlas's six 682-texel tiles (a 2048 atlas split in 3 x 3).
     frame.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
     frame.shadows.local.cubeMapSize = 1024;
     renderer.render(scene.camera, frame);
-    const scene::RenderedVisibility cube = render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
+    const scene::RenderedVisibility cube =
+        render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
     double difference = 0.0;
     std::size_t compared = 0;
     for (std::size_t i = 0; i < atlas.lit.size(); ++i)

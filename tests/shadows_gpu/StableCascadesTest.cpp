@@ -129,7 +129,8 @@ protected:
     }
 
     // Each move's figures, printed.
-    std::vector<ShimmerFigures> measure(Fit fit, shadows::CascadeProjection projection = shadows::CascadeProjection::Stable)
+    std::vector<ShimmerFigures> measure(Fit fit,
+                                        shadows::CascadeProjection projection = shadows::CascadeProjection::Stable)
     {
         const scene::Scene scene = scene::makeSingleLightScene();
         render::SceneRenderer renderer(*device, scene);
@@ -151,7 +152,8 @@ protected:
         for (const Move& move : chosen) {
             scene::Camera moved = c;
             moved.position += move.offset;
-            const glm::mat4 yaw = glm::rotate(glm::mat4(1.0f), glm::radians(move.yawDegrees), glm::vec3(0.0f, 1.0f, 0.0f));
+            const glm::mat4 yaw =
+                glm::rotate(glm::mat4(1.0f), glm::radians(move.yawDegrees), glm::vec3(0.0f, 1.0f, 0.0f));
             moved.forward = glm::vec3(yaw * glm::vec4(c.forward, 0.0f));
             const ShimmerFigures f =
                 compareFrames(before, render(renderer, moved, fit, projection), device->conventions());
@@ -186,8 +188,8 @@ TEST_F(StableCascadesTest, CloseFitShimmersOnlyWhenTheCameraTurns)
 {
     const std::vector<ShimmerFigures> figures = measure(Fit::Snapped, shadows::CascadeProjection::Close);
     ASSERT_EQ(figures.size(), 2u);
-    EXPECT_FALSE(shimmers(figures.front())) << "translation: " << figures.front().changed << " of "
-                                            << figures.front().compared << " ground points changed";
+    EXPECT_FALSE(shimmers(figures.front()))
+        << "translation: " << figures.front().changed << " of " << figures.front().compared << " ground points changed";
     EXPECT_TRUE(shimmers(figures.back())) << "turning resizes the close fit's tiles: only " << figures.back().changed
                                           << " of " << figures.back().compared << " ground points changed";
 }

@@ -154,7 +154,10 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     scene::Scene scene = boxesUnderASpot();
     scene.lights[0].shadowUpdate = scene::ShadowUpdate::OnDemand;
     scene.spotLights[0].shadowUpdate = scene::ShadowUpdate::OnChange;
-    scene.pointLights.push_back({.name = "bulb", .intensity = 10.0f, .position = {3.0f, 2.5f, 1.0f}, .range = 8.0f,
+    scene.pointLights.push_back({.name = "bulb",
+                                 .intensity = 10.0f,
+                                 .position = {3.0f, 2.5f, 1.0f},
+                                 .range = 8.0f,
                                  .shadowUpdate = scene::ShadowUpdate::EveryFrame});
     const scene::Scene first = scene;
     render::FrameDesc frame = staticMapsFrame(shadows::StaticShadowUpdate::EveryFrame);
@@ -182,7 +185,8 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     EXPECT_EQ(updated(), kBothMaps);
     EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point));
     const rhi::Image again = read(renderer);
-    EXPECT_LE(differingShare(mixed, again), 0.001) << picture(mixed, "mixed-modes") << " vs " << picture(again, "on-change");
+    EXPECT_LE(differingShare(mixed, again), 0.001)
+        << picture(mixed, "mixed-modes") << " vs " << picture(again, "on-change");
     // The bulb's six tiles reshape the static local atlas: the lamp's tile moves with them.
     scene.pointLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
     EXPECT_EQ(updated(), (std::vector<std::string>{kLampMap[0], "point light 0 ('bulb')"}));
@@ -240,8 +244,9 @@ TEST_F(StaticShadowsTest, StaticMapsTakeTheLightsSoftFilter)
         std::int32_t* filter;
         ShadowFilter soft;
     };
-    for (const Case& c : {Case{{scene::LightKind::Directional, 0}, &scene.lights[0].shadowFilter, ShadowFilter::PCSS},
-                          Case{{scene::LightKind::Spot, 0}, &scene.spotLights[0].shadowFilter, ShadowFilter::Poisson}}) {
+    for (const Case& c :
+         {Case{{scene::LightKind::Directional, 0}, &scene.lights[0].shadowFilter, ShadowFilter::PCSS},
+          Case{{scene::LightKind::Spot, 0}, &scene.spotLights[0].shadowFilter, ShadowFilter::Poisson}}) {
         *c.filter = static_cast<std::int32_t>(c.soft);
         const rhi::Image realtime = view(c.light, 100.0f, shadows::StaticShadowUpdate::EveryFrame);
         const rhi::Image fromStatic = view(c.light, 0.01f, shadows::StaticShadowUpdate::OnChange);
@@ -256,7 +261,8 @@ TEST_F(StaticShadowsTest, StaticMapsTakeTheLightsSoftFilter)
                     "%.1f, %.1f\n",
                     configuration().c_str(), scene::lightKindName(c.light.kind), name.c_str(), r.penumbra, st.penumbra,
                     h.penumbra, r.shadow, st.shadow, h.shadow);
-        const std::string pictures = picture(realtime, name + "-realtime") + " vs " + picture(fromStatic, name + "-static");
+        const std::string pictures =
+            picture(realtime, name + "-realtime") + " vs " + picture(fromStatic, name + "-static");
         EXPECT_GT(r.penumbra, 20u) << pictures;
         EXPECT_NEAR(st.shadow, r.shadow, 0.1 * r.shadow) << pictures;
         EXPECT_GE(double(st.penumbra), r.penumbra / 1.6) << pictures;
@@ -304,7 +310,8 @@ TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
             worst = std::max(worst, std::abs(m - 0.5 * (a + b)) / std::max(slack, 1e-6));
             const bool inShadow = c == 0 && a - b > 0.05;
             shadowed += inShadow ? 1 : 0;
-            const scene::GBufferSample& sample = gbuffer.at(std::uint32_t(i / 4 % kWidth), std::uint32_t(i / 4 / kWidth));
+            const scene::GBufferSample& sample =
+                gbuffer.at(std::uint32_t(i / 4 % kWidth), std::uint32_t(i / 4 / kWidth));
             shadowedBeyond += inShadow && sample.object != scene::kNoObject &&
                                       sample.viewDepth > frame.shadows.maxDistance * (1.0f - frame.shadows.distanceFade)
                                   ? 1
@@ -363,8 +370,9 @@ TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowA
     EXPECT_GT(cached.decided, std::size_t(kWidth) * kHeight / 10);
     EXPECT_GT(cached.shadowed, cached.decided / 10) << "the buildings' far shadows";
     const scene::RayCaster shadowRays(scene);
-    const render::LightTruthTrace truth = render::traceLightTruth(
-        scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows, sun);
+    const render::LightTruthTrace truth =
+        render::traceLightTruth(scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows,
+                                sun);
     const scene::TruthComparison f =
         scene::compareWithTruth(gbuffer, truth.visibility, render::renderedVisibility(cachedView), truth.shadowEdges);
     std::printf("[ truth    ] %s town with static maps: lit %zu of %zu right, shadowed %zu of %zu right\n",
@@ -430,7 +438,9 @@ TEST_F(StaticShadowsTest, StaleMismatchedAndTruncatedBakesAreRefusedByName)
     ASSERT_EQ(bake.maps.size(), 2u);
     EXPECT_EQ(bake.objects.size(), 4u);
     renderer.useBakedShadows(bake);
-    const auto renderWith = [&](const render::FrameDesc& f) { return errorOf([&] { renderer.render(scene.camera, f); }); };
+    const auto renderWith = [&](const render::FrameDesc& f) {
+        return errorOf([&] { renderer.render(scene.camera, f); });
+    };
     EXPECT_EQ(renderWith(frame), "(no error)");
     render::FrameDesc smaller = frame;
     smaller.shadows.staticMaps.localAtlasSize = 256;

@@ -31,12 +31,18 @@ protected:
         const int image = b.addPngImage(2, 2, rgba);
         const int texture = b.add("textures", {{"source", image}});
         const int ground = b.add("materials", {{"name", "ground"}});
-        const int panel = b.add("materials", {{"name", "panel"}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.5},
+        const int panel = b.add("materials", {{"name", "panel"},
+                                              {"alphaMode", "MASK"},
+                                              {"alphaCutoff", 0.5},
                                               {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
-        b.addRoot(b.add("nodes", {{"name", "ground"}, {"mesh", addCubeMesh(b, "ground", ground)},
-                                  {"translation", {0, -0.1, 0}}, {"scale", {8, 0.1, 8}}}));
-        b.addRoot(b.add("nodes", {{"name", "panel"}, {"mesh", addCubeMesh(b, "panel", panel)},
-                                  {"translation", {0, 2, 0}}, {"scale", {1.5, 0.05, 1.5}}}));
+        b.addRoot(b.add("nodes", {{"name", "ground"},
+                                  {"mesh", addCubeMesh(b, "ground", ground)},
+                                  {"translation", {0, -0.1, 0}},
+                                  {"scale", {8, 0.1, 8}}}));
+        b.addRoot(b.add("nodes", {{"name", "panel"},
+                                  {"mesh", addCubeMesh(b, "panel", panel)},
+                                  {"translation", {0, 2, 0}},
+                                  {"scale", {1.5, 0.05, 1.5}}}));
         const std::filesystem::path path =
             std::filesystem::temp_directory_path() / ("penumbra-textured-" + configuration() + ".glb");
         b.writeGlb(path);

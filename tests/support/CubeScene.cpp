@@ -34,12 +34,18 @@ glm::vec3 cubeTexelDirection(rhi::CubeFace face, std::uint32_t x, std::uint32_t 
     const float sc = 2.0f * (float(x) + 0.5f) / float(size) - 1.0f;
     const float tc = 2.0f * (float(y) + 0.5f) / float(size) - 1.0f;
     switch (face) {
-    case rhi::CubeFace::PositiveX: return {1.0f, -tc, -sc};
-    case rhi::CubeFace::NegativeX: return {-1.0f, -tc, sc};
-    case rhi::CubeFace::PositiveY: return {sc, 1.0f, tc};
-    case rhi::CubeFace::NegativeY: return {sc, -1.0f, -tc};
-    case rhi::CubeFace::PositiveZ: return {sc, -tc, 1.0f};
-    case rhi::CubeFace::NegativeZ: return {-sc, -tc, -1.0f};
+    case rhi::CubeFace::PositiveX:
+        return {1.0f, -tc, -sc};
+    case rhi::CubeFace::NegativeX:
+        return {-1.0f, -tc, sc};
+    case rhi::CubeFace::PositiveY:
+        return {sc, 1.0f, tc};
+    case rhi::CubeFace::NegativeY:
+        return {sc, -1.0f, -tc};
+    case rhi::CubeFace::PositiveZ:
+        return {sc, -tc, 1.0f};
+    case rhi::CubeFace::NegativeZ:
+        return {-sc, -tc, -1.0f};
     }
     return {};
 }
@@ -68,19 +74,23 @@ layout(location = 1) in vec4 color;
 layout(std140, binding = 0) uniform Face { mat4 viewProjection; } face;
 layout(location = 0) out vec4 vColor;
 void main() { vColor = color; gl_Position = face.viewProjection * vec4(position, 1.0); }
-)", "cube_face.vert"});
+)",
+                                   "cube_face.vert"});
     const bool depth = rhi::isDepthFormat(format);
-    fragment_ = device.createShader({rhi::ShaderStage::Fragment, depth ? "#version 450\nvoid main() {}\n" : R"(#version 450
+    fragment_ =
+        device.createShader({rhi::ShaderStage::Fragment, depth ? "#version 450\nvoid main() {}\n" : R"(#version 450
 layout(location = 0) in vec4 vColor;
 layout(location = 0) out vec4 outColor;
 void main() { outColor = vColor; }
-)", "cube_face.frag"});
+)",
+                             "cube_face.frag"});
     rhi::PipelineDesc desc{
         .vertex = vertex_.get(),
         .fragment = fragment_.get(),
         .vertexLayout = {.buffers = {{.stride = sizeof(CubeVertex)}},
                          .attributes = {{.location = 0, .format = rhi::VertexFormat::Float3},
-                                        {.location = 1, .format = rhi::VertexFormat::Float4,
+                                        {.location = 1,
+                                         .format = rhi::VertexFormat::Float4,
                                          .offset = offsetof(CubeVertex, color)}}},
         .cull = rhi::cubeFaceCullMode(rhi::CullMode::Back),
         .debugName = "cube faces",
@@ -133,12 +143,15 @@ rhi::Image sampleCubeProbes(rhi::Device& device, const rhi::Texture& cubeTexture
     auto uniforms = device.createBuffer({.size = block.size() * sizeof(glm::vec4), .usage = rhi::BufferUsage::Uniform});
     uniforms->write(0, std::as_bytes(std::span(block)));
     auto vertex = device.createShader(shaders::load("fullscreen.vert"));
-    auto fragment = device.createShader({rhi::ShaderStage::Fragment, fmt::format(R"(#version 450
+    auto fragment = device.createShader({rhi::ShaderStage::Fragment,
+                                         fmt::format(R"(#version 450
 layout(std140, binding = 0) uniform Probes {{ vec4 direction[{0}]; vec4 reference[{0}]; }} probe;
 layout(binding = 1) uniform {1} cubeTexture;
 layout(location = 0) out vec4 outColor;
 void main() {{ int i = int(gl_FragCoord.x); {2} }}
-)", count, samplerType, fragmentBody), "cube_probes.frag"});
+)",
+                                                     count, samplerType, fragmentBody),
+                                         "cube_probes.frag"});
     auto pipeline = device.createPipeline(
         {.vertex = vertex.get(), .fragment = fragment.get(), .colorTargets = {{.format = rhi::Format::RGBA8}}});
     auto target = device.createTexture(

@@ -68,7 +68,8 @@ std::vector<std::uint8_t> encodePng(std::uint32_t width, std::uint32_t height, s
 } // namespace
 
 GltfBuilder::GltfBuilder()
-    : json_({{"asset", {{"version", "2.0"}, {"generator", "penumbra tests"}}}, {"scene", 0},
+    : json_({{"asset", {{"version", "2.0"}, {"generator", "penumbra tests"}}},
+             {"scene", 0},
              {"scenes", {{{"nodes", nlohmann::json::array()}}}}})
 {
 }
@@ -110,7 +111,9 @@ int GltfBuilder::addView(std::span<const std::uint8_t> bytes)
 int GltfBuilder::addAccessor(std::span<const std::uint8_t> bytes, std::size_t count, const std::string& type,
                              Component component, bool normalized)
 {
-    nlohmann::json accessor = {{"bufferView", addView(bytes)}, {"count", count}, {"type", type},
+    nlohmann::json accessor = {{"bufferView", addView(bytes)},
+                               {"count", count},
+                               {"type", type},
                                {"componentType", int(component)}};
     if (normalized)
         accessor["normalized"] = true;
@@ -223,9 +226,10 @@ GltfBuilder sampledTexturesScene(const std::vector<nlohmann::json>& samplers)
         nlohmann::json texture = {{"source", image}};
         if (!samplers[i].is_null())
             texture["sampler"] = b.add("samplers", samplers[i]);
-        const int material = b.add("materials", {{"name", "material " + std::to_string(i)},
-                                                 {"pbrMetallicRoughness",
-                                                  {{"baseColorTexture", {{"index", b.add("textures", texture)}}}}}});
+        const int material =
+            b.add("materials",
+                  {{"name", "material " + std::to_string(i)},
+                   {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", b.add("textures", texture)}}}}}});
         b.addRoot(b.add("nodes", {{"name", "cube " + std::to_string(i)},
                                   {"mesh", addCubeMesh(b, "cube " + std::to_string(i), material)},
                                   {"translation", {3.0 * double(i), 0, 0}}}));
@@ -323,8 +327,8 @@ int addQuadMesh(GltfBuilder& builder, const std::string& name, int material, con
                 bytes.push_back(0);
             }
             const int accessor = builder.addAccessor(bytes, positions.size(), "VEC3", Component::UnsignedByte, true);
-            builder.json()["bufferViews"][builder.json()["accessors"][std::size_t(accessor)]["bufferView"].get<std::size_t>()]
-                          ["byteStride"] = 4;
+            builder.json()["bufferViews"][builder.json()["accessors"][std::size_t(accessor)]["bufferView"]
+                                              .get<std::size_t>()]["byteStride"] = 4;
             attributeJson["COLOR_0"] = accessor;
         } else {
             const std::array<glm::vec4, 4> colors{*color, *color, *color, *color};
@@ -355,42 +359,74 @@ int addTextureRow(GltfBuilder& builder, std::span<const std::array<std::uint8_t,
 GltfBuilder exampleScene()
 {
     GltfBuilder b;
-    const int ground = b.add("materials", {{"name", "ground"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.75, 1.0}}, {"metallicFactor", 0.0}}}});
-    const int red = b.add("materials", {{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.1, 0.1, 1.0}}, {"metallicFactor", 0.0}}}});
-    const int mask = b.add("materials", {{"name", "mask"}, {"alphaMode", "MASK"}, {"alphaCutoff", 0.4},
-                                         {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.6, 0.1, 1.0}}, {"metallicFactor", 0.0}}}});
-    const int blend = b.add("materials", {{"name", "blend"}, {"alphaMode", "BLEND"},
-                                          {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.8, 0.5}}, {"metallicFactor", 0.0}}}});
+    const int ground =
+        b.add("materials",
+              {{"name", "ground"},
+               {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.75, 1.0}}, {"metallicFactor", 0.0}}}});
+    const int red =
+        b.add("materials",
+              {{"name", "red"},
+               {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.1, 0.1, 1.0}}, {"metallicFactor", 0.0}}}});
+    const int mask =
+        b.add("materials",
+              {{"name", "mask"},
+               {"alphaMode", "MASK"},
+               {"alphaCutoff", 0.4},
+               {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.6, 0.1, 1.0}}, {"metallicFactor", 0.0}}}});
+    const int blend =
+        b.add("materials",
+              {{"name", "blend"},
+               {"alphaMode", "BLEND"},
+               {"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.2, 0.8, 0.5}}, {"metallicFactor", 0.0}}}});
     const int groundMesh = addCubeMesh(b, "ground", ground);
     const int cube = addCubeMesh(b, "cube", red, Component::UnsignedByte);
     const int maskCube = addCubeMesh(b, "mask cube", mask, Component::UnsignedInt);
     const int blendCube = addCubeMesh(b, "blend cube", blend);
-    b.addRoot(b.add("nodes", {{"name", "ground"}, {"mesh", groundMesh}, {"translation", {0, -0.1, 0}}, {"scale", {8, 0.1, 8}}}));
+    b.addRoot(b.add("nodes",
+                    {{"name", "ground"}, {"mesh", groundMesh}, {"translation", {0, -0.1, 0}}, {"scale", {8, 0.1, 8}}}));
     // A parent that moves and turns its children: the cubes' world transforms come from the hierarchy.
     const int standing = b.add("nodes", {{"name", "standing cube"}, {"mesh", cube}, {"translation", {0, 1, 0}}});
-    const int floating = b.add("nodes", {{"name", "floating cube"}, {"mesh", maskCube}, {"translation", {2.5, 2, 0}},
-                                         {"rotation", {0, 0.3826834, 0, 0.9238795}}, {"scale", {0.5, 1.5, 0.5}}});
-    const int glass = b.add("nodes", {{"name", "blend cube"}, {"mesh", blendCube}, {"translation", {-2.5, 0.75, 1}}, {"scale", {0.75, 0.75, 0.75}}});
-    b.addRoot(b.add("nodes", {{"name", "cubes"}, {"translation", {0, 0, -1}}, {"children", {standing, floating, glass}}}));
+    const int floating = b.add("nodes", {{"name", "floating cube"},
+                                         {"mesh", maskCube},
+                                         {"translation", {2.5, 2, 0}},
+                                         {"rotation", {0, 0.3826834, 0, 0.9238795}},
+                                         {"scale", {0.5, 1.5, 0.5}}});
+    const int glass = b.add("nodes", {{"name", "blend cube"},
+                                      {"mesh", blendCube},
+                                      {"translation", {-2.5, 0.75, 1}},
+                                      {"scale", {0.75, 0.75, 0.75}}});
+    b.addRoot(
+        b.add("nodes", {{"name", "cubes"}, {"translation", {0, 0, -1}}, {"children", {standing, floating, glass}}}));
 
     b.json()["extensionsUsed"] = {"KHR_lights_punctual"};
     b.json()["extensions"]["KHR_lights_punctual"]["lights"] = {
         {{"name", "sun"}, {"type", "directional"}, {"intensity", 2.5}},
-        {{"name", "spot"}, {"type", "spot"}, {"intensity", 20.0}, {"range", 12.0}, {"color", {1.0, 0.9, 0.7}},
+        {{"name", "spot"},
+         {"type", "spot"},
+         {"intensity", 20.0},
+         {"range", 12.0},
+         {"color", {1.0, 0.9, 0.7}},
          {"spot", {{"innerConeAngle", 0.3}, {"outerConeAngle", 0.5}}}},
         {{"name", "bulb"}, {"type", "point"}, {"intensity", 5.0}}};
     // The sun 50 degrees below the horizon (rotation about x, then turned about y).
-    b.addRoot(b.add("nodes", {{"name", "sun"}, {"rotation", {-0.4082179, 0.2345697, 0.1093817, 0.8754261}},
+    b.addRoot(b.add("nodes", {{"name", "sun"},
+                              {"rotation", {-0.4082179, 0.2345697, 0.1093817, 0.8754261}},
                               {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}));
-    b.addRoot(b.add("nodes", {{"name", "spot"}, {"translation", {0, 6, 0}}, {"rotation", {-0.7071068, 0, 0, 0.7071068}},
+    b.addRoot(b.add("nodes", {{"name", "spot"},
+                              {"translation", {0, 6, 0}},
+                              {"rotation", {-0.7071068, 0, 0, 0.7071068}},
                               {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}}));
-    b.addRoot(b.add("nodes", {{"name", "bulb"}, {"translation", {-3, 3, 3}},
+    b.addRoot(b.add("nodes", {{"name", "bulb"},
+                              {"translation", {-3, 3, 3}},
                               {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}}));
 
-    b.add("cameras", {{"name", "overview"}, {"type", "perspective"},
+    b.add("cameras", {{"name", "overview"},
+                      {"type", "perspective"},
                       {"perspective", {{"yfov", 0.8}, {"znear", 0.1}, {"zfar", 60.0}}}});
     // At (0, 5, 9), pitched down about 30 degrees towards the cubes.
-    b.addRoot(b.add("nodes", {{"name", "overview camera"}, {"camera", 0}, {"translation", {0, 5, 9}},
+    b.addRoot(b.add("nodes", {{"name", "overview camera"},
+                              {"camera", 0},
+                              {"translation", {0, 5, 9}},
                               {"rotation", {-0.2588190, 0, 0, 0.9659258}}}));
     return b;
 }
@@ -407,46 +443,58 @@ GltfBuilder materialsScene()
         return nlohmann::json{{"baseColorFactor", {r, g, bl, a}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.6}};
     };
     const int ground = b.add("materials", {{"name", "ground"}, {"pbrMetallicRoughness", factors(0.8, 0.8, 0.75)}});
-    const int twoSided = b.add("materials", {{"name", "double-sided"}, {"doubleSided", true},
-                                             {"pbrMetallicRoughness", factors(0.8, 0.2, 0.2)}});
+    const int twoSided =
+        b.add("materials",
+              {{"name", "double-sided"}, {"doubleSided", true}, {"pbrMetallicRoughness", factors(0.8, 0.2, 0.2)}});
     const int white = b.add("materials", {{"name", "white"}, {"pbrMetallicRoughness", factors(1, 1, 1)}});
     nlohmann::json metal = factors(0.9, 0.6, 0.2);
     metal["metallicFactor"] = 1.0;
     metal["roughnessFactor"] = 1.0;
     metal["metallicRoughnessTexture"] = {{"index", addTextureRow(b, metalRough)}};
     const int metallic = b.add("materials", {{"name", "metal-rough"}, {"pbrMetallicRoughness", metal}});
-    const int bumpy = b.add("materials", {{"name", "normal"}, {"pbrMetallicRoughness", factors(0.7, 0.7, 0.9)},
+    const int bumpy = b.add("materials", {{"name", "normal"},
+                                          {"pbrMetallicRoughness", factors(0.7, 0.7, 0.9)},
                                           {"normalTexture", {{"index", addTextureRow(b, tilted)}, {"scale", 1.0}}}});
     const int glowing =
-        b.add("materials", {{"name", "occlusion-emissive"}, {"pbrMetallicRoughness", factors(0.5, 0.5, 0.5)},
+        b.add("materials", {{"name", "occlusion-emissive"},
+                            {"pbrMetallicRoughness", factors(0.5, 0.5, 0.5)},
                             {"occlusionTexture", {{"index", addTextureRow(b, halves)}, {"strength", 1.0}}},
                             {"emissiveTexture", {{"index", addTextureRow(b, halves)}}},
                             {"emissiveFactor", {0.2, 0.6, 1.0}},
                             {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1.5}}}}}});
     nlohmann::json transformed = factors(1, 1, 1);
-    transformed["baseColorTexture"] = {
-        {"index", addTextureRow(b, redGreen)},
-        {"texCoord", 1},
-        {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0.0}}, {"rotation", 0.3}, {"scale", {2.0, 1.0}}}}}}};
+    transformed["baseColorTexture"] = {{"index", addTextureRow(b, redGreen)},
+                                       {"texCoord", 1},
+                                       {"extensions",
+                                        {{"KHR_texture_transform",
+                                          {{"offset", {0.5, 0.0}}, {"rotation", 0.3}, {"scale", {2.0, 1.0}}}}}}};
     const int moved = b.add("materials", {{"name", "transform-texcoord1"}, {"pbrMetallicRoughness", transformed}});
-    const int unlit = b.add("materials", {{"name", "unlit"}, {"pbrMetallicRoughness", factors(0.9, 0.5, 0.1)},
+    const int unlit = b.add("materials", {{"name", "unlit"},
+                                          {"pbrMetallicRoughness", factors(0.9, 0.5, 0.1)},
                                           {"extensions", {{"KHR_materials_unlit", nlohmann::json::object()}}}});
-    const int glassRed = b.add("materials", {{"name", "glass red"}, {"alphaMode", "BLEND"},
-                                             {"pbrMetallicRoughness", factors(0.9, 0.1, 0.1, 0.5)}});
-    const int glassBlue = b.add("materials", {{"name", "glass blue"}, {"alphaMode", "BLEND"}, {"doubleSided", true},
+    const int glassRed =
+        b.add("materials",
+              {{"name", "glass red"}, {"alphaMode", "BLEND"}, {"pbrMetallicRoughness", factors(0.9, 0.1, 0.1, 0.5)}});
+    const int glassBlue = b.add("materials", {{"name", "glass blue"},
+                                              {"alphaMode", "BLEND"},
+                                              {"doubleSided", true},
                                               {"pbrMetallicRoughness", factors(0.1, 0.2, 0.9, 0.5)}});
     b.json()["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_texture_transform", "KHR_materials_unlit"};
 
-    b.addRoot(b.add("nodes", {{"name", "ground"}, {"mesh", addCubeMesh(b, "ground", ground)},
-                              {"translation", {0, -0.1, 0}}, {"scale", {10, 0.1, 6}}}));
+    b.addRoot(b.add("nodes", {{"name", "ground"},
+                              {"mesh", addCubeMesh(b, "ground", ground)},
+                              {"translation", {0, -0.1, 0}},
+                              {"scale", {10, 0.1, 6}}}));
     const auto quad = [&](const std::string& name, int mesh, double x, double y, double z, double yaw = 0.0) {
-        b.addRoot(b.add("nodes", {{"name", name}, {"mesh", mesh}, {"translation", {x, y, z}},
+        b.addRoot(b.add("nodes", {{"name", name},
+                                  {"mesh", mesh},
+                                  {"translation", {x, y, z}},
                                   {"rotation", {0.0, std::sin(0.5 * yaw), 0.0, std::cos(0.5 * yaw)}},
                                   {"scale", {0.8, 0.8, 0.8}}}));
     };
     quad("double-sided", addQuadMesh(b, "double-sided", twoSided), -6, 1, 0, 3.14159265);
-    quad("vertex colours", addQuadMesh(b, "vertex colours", white, {.color = glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)}), -4,
-         1, 0);
+    quad("vertex colours", addQuadMesh(b, "vertex colours", white, {.color = glm::vec4(0.2f, 0.9f, 0.3f, 1.0f)}), -4, 1,
+         0);
     quad("metal-rough", addQuadMesh(b, "metal-rough", metallic), -2, 1, 0);
     quad("normal with tangents", addQuadMesh(b, "normal with tangents", bumpy, {.tangent = glm::vec4(1, 0, 0, 1)}), 0,
          1, 0);
@@ -458,13 +506,18 @@ GltfBuilder materialsScene()
     quad("glass blue", addQuadMesh(b, "glass blue", glassBlue), 3.1, 1.3, 3.0);
 
     b.json()["extensionsUsed"].push_back("KHR_lights_punctual");
-    b.json()["extensions"]["KHR_lights_punctual"]["lights"] = {{{"name", "sun"}, {"type", "directional"}, {"intensity", 2.5}}};
+    b.json()["extensions"]["KHR_lights_punctual"]["lights"] = {
+        {{"name", "sun"}, {"type", "directional"}, {"intensity", 2.5}}};
     // Behind the camera's right shoulder, 40 degrees up: the fronts of the quads and the ground are lit.
-    b.addRoot(b.add("nodes", {{"name", "sun"}, {"rotation", {-0.3265056, 0.2126311, 0.0761205, 0.9178247}},
+    b.addRoot(b.add("nodes", {{"name", "sun"},
+                              {"rotation", {-0.3265056, 0.2126311, 0.0761205, 0.9178247}},
                               {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}));
-    b.add("cameras", {{"name", "materials"}, {"type", "perspective"},
+    b.add("cameras", {{"name", "materials"},
+                      {"type", "perspective"},
                       {"perspective", {{"yfov", 0.7}, {"znear", 0.1}, {"zfar", 60.0}}}});
-    b.addRoot(b.add("nodes", {{"name", "materials camera"}, {"camera", 0}, {"translation", {0, 3, 13}},
+    b.addRoot(b.add("nodes", {{"name", "materials camera"},
+                              {"camera", 0},
+                              {"translation", {0, 3, 13}},
                               {"rotation", {-0.0871557, 0, 0, 0.9961947}}}));
     return b;
 }

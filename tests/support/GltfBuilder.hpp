@@ -16,8 +16,14 @@
 namespace penumbra::testing {
 
 // glTF component types, as the specification numbers them.
-enum class Component : int { Byte = 5120, UnsignedByte = 5121, Short = 5122, UnsignedShort = 5123, UnsignedInt = 5125,
-                             Float = 5126 };
+enum class Component : int {
+    Byte = 5120,
+    UnsignedByte = 5121,
+    Short = 5122,
+    UnsignedShort = 5123,
+    UnsignedInt = 5125,
+    Float = 5126
+};
 
 // Writes small glTF 2.0 files for tests: a JSON document plus one binary buffer that accessors,
 // and images embedded in it, are appended to. Everything is public JSON to edit, so a test can
@@ -30,8 +36,8 @@ public:
     std::vector<std::uint8_t>& bin() { return bin_; }
 
     // Appends the bytes (4-byte aligned) as a buffer view and an accessor over it; returns the accessor.
-    int addAccessor(std::span<const std::uint8_t> bytes, std::size_t count, const std::string& type, Component component,
-                    bool normalized = false);
+    int addAccessor(std::span<const std::uint8_t> bytes, std::size_t count, const std::string& type,
+                    Component component, bool normalized = false);
     int addPositions(std::span<const glm::vec3> values);
     int addNormals(std::span<const glm::vec3> values);
     int addUvs(std::span<const glm::vec2> values);
@@ -77,7 +83,8 @@ int addInstancedNode(GltfBuilder& builder, nlohmann::json node, const InstanceAt
 
 // A cube of half size 1 as one primitive: 24 vertices with flat normals and uvs, 36 indices of
 // the given component type, counter-clockwise seen from outside. Returns the mesh index.
-int addCubeMesh(GltfBuilder& builder, const std::string& name, int material, Component indices = Component::UnsignedShort);
+int addCubeMesh(GltfBuilder& builder, const std::string& name, int material,
+                Component indices = Component::UnsignedShort);
 
 // One cube per entry of `samplers` (node "cube <i>"), its material's base colour texture a 4 x 4 picture
 // sampled by that glTF sampler (a JSON object), or by none for a null entry.
@@ -85,10 +92,10 @@ GltfBuilder sampledTexturesScene(const std::vector<nlohmann::json>& samplers);
 
 // What a quad mesh carries besides POSITION, NORMAL and TEXCOORD_0.
 struct QuadAttributes {
-    std::optional<glm::vec4> color;            // COLOR_0 of every vertex, stored as normalized UNSIGNED_BYTE VEC3
-                                               // when alpha is 1, FLOAT VEC4 otherwise
-    std::optional<glm::vec4> tangent;          // TANGENT of every vertex
-    bool mirroredUv1 = false;                  // TEXCOORD_1 = (1 - u, v) of TEXCOORD_0
+    std::optional<glm::vec4> color; // COLOR_0 of every vertex, stored as normalized UNSIGNED_BYTE VEC3
+                                    // when alpha is 1, FLOAT VEC4 otherwise
+    std::optional<glm::vec4> tangent; // TANGENT of every vertex
+    bool mirroredUv1 = false; // TEXCOORD_1 = (1 - u, v) of TEXCOORD_0
 };
 
 // A 2 x 2 quad in the xy plane facing +z (counter-clockwise seen from +z), u along +x and v along -y (uv (0, 0) at

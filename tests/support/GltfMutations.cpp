@@ -23,8 +23,8 @@ void collectPointers(const Json& value, const Json::json_pointer& at, std::vecto
 // Values of every JSON type, and numbers a loader must bound: negative, fractional, past 2^31.
 Json replacement(std::mt19937& random)
 {
-    const std::array<Json, 12> values{-1, 0, 1, 2.5, 1e9, 2147483648.0, "text", true, nullptr,
-                                      Json::array(), Json::object(), Json::array({1, 2, 3})};
+    const std::array<Json, 12> values{
+        -1, 0, 1, 2.5, 1e9, 2147483648.0, "text", true, nullptr, Json::array(), Json::object(), Json::array({1, 2, 3})};
     return values[std::uniform_int_distribution<std::size_t>(0, values.size() - 1)(random)];
 }
 
@@ -69,7 +69,8 @@ std::vector<GltfMutant> mutateGltf(const std::vector<nlohmann::json>& bases, std
         GltfMutant mutant{bases[i % bases.size()], {}};
         std::vector<Json::json_pointer> pointers;
         collectPointers(mutant.document, Json::json_pointer(), pointers);
-        const Json::json_pointer at = pointers[std::uniform_int_distribution<std::size_t>(0, pointers.size() - 1)(random)];
+        const Json::json_pointer at =
+            pointers[std::uniform_int_distribution<std::size_t>(0, pointers.size() - 1)(random)];
         Json& value = mutant.document[at];
         std::string change;
         switch (std::uniform_int_distribution<int>(0, 2)(random)) {
@@ -84,7 +85,9 @@ std::vector<GltfMutant> mutateGltf(const std::vector<nlohmann::json>& bases, std
                 break;
             }
             [[fallthrough]];
-        default: change = tweak(value, random); break;
+        default:
+            change = tweak(value, random);
+            break;
         }
         mutant.change = at.to_string() + ": " + change;
         mutants.push_back(std::move(mutant));

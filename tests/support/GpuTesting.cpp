@@ -35,8 +35,8 @@ void expectNoDebugMessages(rhi::Device& device)
         ADD_FAILURE() << penumbra::configurationName(device.desc()) << " debug message: " << message;
 }
 
-std::vector<SkippedConfiguration> forEachConfiguration(
-    const std::function<void(rhi::Device& device, const std::string& configuration)>& use)
+std::vector<SkippedConfiguration>
+forEachConfiguration(const std::function<void(rhi::Device& device, const std::string& configuration)>& use)
 {
     std::vector<SkippedConfiguration> skipped;
     for (const std::string& name : compiledConfigurations()) {

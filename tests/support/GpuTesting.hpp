@@ -41,8 +41,8 @@ void expectNoDebugMessages(rhi::Device& device);
 
 // Calls `use` with a validated device of each compiled configuration in turn, then fails the test for any debug
 // message it recorded; returns the configurations whose device the driver refused (rhi::UnsupportedError).
-std::vector<SkippedConfiguration> forEachConfiguration(
-    const std::function<void(rhi::Device& device, const std::string& configuration)>& use);
+std::vector<SkippedConfiguration>
+forEachConfiguration(const std::function<void(rhi::Device& device, const std::string& configuration)>& use);
 
 class GpuTest : public ::testing::Test {
 protected:

@@ -42,8 +42,8 @@ Luminance measure(const std::string& argument)
         const std::string geometry = argument.substr(at + 1);
         int end = 0;
         if (std::sscanf(geometry.c_str(), "%dx%d+%d+%d%n", &r.width, &r.height, &r.x, &r.y, &end) != 4 ||
-            std::size_t(end) != geometry.size() || r.width <= 0 ||
-            r.height <= 0 || r.x < 0 || r.y < 0 || r.x + r.width > spec.width || r.y + r.height > spec.height)
+            std::size_t(end) != geometry.size() || r.width <= 0 || r.height <= 0 || r.x < 0 || r.y < 0 ||
+            r.x + r.width > spec.width || r.y + r.height > spec.height)
             throw std::runtime_error(argument + ": region is not WxH+X+Y inside " + std::to_string(spec.width) + "x" +
                                      std::to_string(spec.height));
     }

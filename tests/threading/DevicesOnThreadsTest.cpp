@@ -22,8 +22,8 @@ namespace {
 struct ThreadResult {
     std::string configuration;
     std::optional<rhi::Image> lit;
-    std::string failure;       // an error, or debug messages
-    bool unsupported = false;  // the driver refused the configuration
+    std::string failure; // an error, or debug messages
+    bool unsupported = false; // the driver refused the configuration
 };
 
 // The mixed scene (sun, spot and point shadows) on a validated device made, used and destroyed here.

@@ -70,8 +70,8 @@ TEST(AtomicFile, FolderThatCannotBeMadeIsANamedError)
     const fs::path folder = scratch("not-a-folder");
     writeFileAtomically(folder / "file", "a file, not a folder");
     EXPECT_EQ(failureOf(folder / "file" / "sub" / "out.png"),
-              "cannot write " + (folder / "file" / "sub" / "out.png").string() + ": cannot create the folder "
-                  + (folder / "file" / "sub").string() + ": Not a directory");
+              "cannot write " + (folder / "file" / "sub" / "out.png").string() + ": cannot create the folder " +
+                  (folder / "file" / "sub").string() + ": Not a directory");
     EXPECT_EQ(entries(folder), 1u);
 }
 

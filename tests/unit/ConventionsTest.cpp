@@ -114,7 +114,8 @@ INSTANTIATE_TEST_SUITE_P(, ConventionsTest,
                                            Case{DepthRange::MinusOneToOne, false},
                                            Case{DepthRange::MinusOneToOne, true}),
                          [](const ::testing::TestParamInfo<Case>& param) {
-                             return std::string(param.param.range == DepthRange::ZeroToOne ? "ZeroToOne" : "MinusOneToOne") +
+                             return std::string(param.param.range == DepthRange::ZeroToOne ? "ZeroToOne"
+                                                                                           : "MinusOneToOne") +
                                     (param.param.reversed ? "Reversed" : "");
                          });
 

@@ -40,8 +40,10 @@ Lookup sampleCube(const glm::vec3& d)
     return {face, {0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f)}};
 }
 
-const Conventions conventionsToTest[] = {{DepthRange::ZeroToOne, false}, {DepthRange::ZeroToOne, true},
-                                         {DepthRange::MinusOneToOne, false}, {DepthRange::MinusOneToOne, true}};
+const Conventions conventionsToTest[] = {{DepthRange::ZeroToOne, false},
+                                         {DepthRange::ZeroToOne, true},
+                                         {DepthRange::MinusOneToOne, false},
+                                         {DepthRange::MinusOneToOne, true}};
 
 TEST(CubeMapTest, FaceViewsPutEveryPointWhereCubeSamplingLooksForIt)
 {
@@ -53,8 +55,7 @@ TEST(CubeMapTest, FaceViewsPutEveryPointWhereCubeSamplingLooksForIt)
                 for (float z : {-1.1f, -0.5f, 0.6f, 1.2f}) {
                     const glm::vec3 d(x, y, z);
                     const Lookup expected = sampleCube(d);
-                    const glm::vec4 clip =
-                        projection * cubeFaceView(expected.face, light) * glm::vec4(light + d, 1.0f);
+                    const glm::vec4 clip = projection * cubeFaceView(expected.face, light) * glm::vec4(light + d, 1.0f);
                     ASSERT_GT(clip.w, 0.0f);
                     const glm::vec4 uv = conventions.clipToTexture() * (clip / clip.w);
                     EXPECT_NEAR(uv.x, expected.st.x, 1e-5f) << x << ' ' << y << ' ' << z;

@@ -20,7 +20,8 @@ namespace {
 
 rhi::Image grey(std::uint8_t value, std::uint32_t width = 4, std::uint32_t height = 2)
 {
-    return {width, height, rhi::Format::RGBA8, std::vector<std::byte>(std::size_t(width) * height * 4, std::byte{value})};
+    return {width, height, rhi::Format::RGBA8,
+            std::vector<std::byte>(std::size_t(width) * height * 4, std::byte{value})};
 }
 
 // A configuration's desc as its name says, whichever backends this build has: the comparisons need only the
@@ -62,8 +63,8 @@ TEST(ParityHarnessTest, DeliberatelyDifferentPicturesFailNamingThePair)
 {
     rhi::Image changed = grey(100);
     changed.bytes[5] = std::byte{140}; // one pixel, one channel, 40 steps
-    const Result result = compare({made("vulkan", {colorPicture("colour", grey(100))}),
-                                   made("opengl", {colorPicture("colour", changed)})});
+    const Result result = compare(
+        {made("vulkan", {colorPicture("colour", grey(100))}), made("opengl", {colorPicture("colour", changed)})});
     EXPECT_FALSE(result.pass());
     const PictureComparison& c = result.pairs.at(0).pictures.at(0);
     EXPECT_EQ(c.figures.maxDifference, 40.0);
@@ -75,8 +76,8 @@ TEST(ParityHarnessTest, DeliberatelyDifferentPicturesFailNamingThePair)
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / fmt::format("penumbra-parity-report-{}", ::getpid());
     writeReport(folder, result, "made-up <pictures>");
-    for (const char* file : {"index.html", "parity.json", "vulkan/colour.png", "opengl/colour.png",
-                             "diff/vulkan-vs-opengl-colour.png"})
+    for (const char* file :
+         {"index.html", "parity.json", "vulkan/colour.png", "opengl/colour.png", "diff/vulkan-vs-opengl-colour.png"})
         EXPECT_TRUE(std::filesystem::exists(folder / file)) << file;
     const nlohmann::json json = nlohmann::json::parse(std::ifstream(folder / "parity.json"));
     EXPECT_EQ(json["pass"], false);
@@ -106,11 +107,11 @@ TEST(ParityHarnessTest, EachThresholdLoosensOnItsOwn)
     const PictureComparison psnr = comparePictures(a, conventions, b, conventions, {.maxDifference = 2, .minPsnr = 60});
     ASSERT_EQ(psnr.failures.size(), 1u);
     EXPECT_NE(psnr.failures[0].find("PSNR 56.2 dB < 60 dB"), std::string::npos) << psnr.failures[0];
-    const PictureComparison own = comparePictures(
-        a, conventions, a, conventions,
-        {.check = [](const Picture&, const rhi::Conventions&, const Picture&, const rhi::Conventions&) {
-             return std::optional<std::string>("the test's own reason");
-         }});
+    const PictureComparison own =
+        comparePictures(a, conventions, a, conventions,
+                        {.check = [](const Picture&, const rhi::Conventions&, const Picture&, const rhi::Conventions&) {
+                            return std::optional<std::string>("the test's own reason");
+                        }});
     ASSERT_EQ(own.failures.size(), 1u);
     EXPECT_EQ(own.failures[0], "the test's own reason");
 }
@@ -119,8 +120,9 @@ TEST(ParityHarnessTest, MismatchedSizesAndFormatsAreReportedNotCompared)
 {
     rhi::Image srgb = grey(100);
     srgb.format = rhi::Format::RGBA8_SRGB;
-    const Result result = compare({made("vulkan", {colorPicture("colour", grey(100)), colorPicture("encoded", grey(9))}),
-                                   made("opengl", {colorPicture("colour", grey(100, 2, 2)), colorPicture("encoded", srgb)})});
+    const Result result =
+        compare({made("vulkan", {colorPicture("colour", grey(100)), colorPicture("encoded", grey(9))}),
+                 made("opengl", {colorPicture("colour", grey(100, 2, 2)), colorPicture("encoded", srgb)})});
     EXPECT_FALSE(result.pass());
     const std::string failures = joined(result.failures());
     EXPECT_NE(failures.find("vulkan vs opengl: colour: sizes differ: RGBA8 4x2 and RGBA8 2x2"), std::string::npos)
@@ -140,8 +142,13 @@ TEST(ParityHarnessTest, APictureOnlyOneConfigurationRenderedFails)
 
 TEST(ParityHarnessTest, AFailedConfigurationIsReportedAndTheOthersCompared)
 {
-    const ConfigurationRun failed{named("opengl"), ConfigurationRun::Status::Failed, "the render function threw: no", {}};
-    const ConfigurationRun unsupported{named("opengl-noclip"), ConfigurationRun::Status::Unsupported, "no clip control",
+    const ConfigurationRun failed{named("opengl"),
+                                  ConfigurationRun::Status::Failed,
+                                  "the render function threw: no",
+                                  {}};
+    const ConfigurationRun unsupported{named("opengl-noclip"),
+                                       ConfigurationRun::Status::Unsupported,
+                                       "no clip control",
                                        {}};
     const Result result = compare({made("vulkan", {colorPicture("colour", grey(1))}), failed, unsupported,
                                    made("vulkan-reversed", {colorPicture("colour", grey(1))})});
@@ -202,9 +209,9 @@ TEST(ParityHarnessTest, LinearViewDepthAgreesAcrossDepthRanges)
                                                 {.maxDifference = 1e-3});
     EXPECT_TRUE(c.pass()) << joined(c.failures);
     EXPECT_LT(c.figures.maxDifference, 1e-3);
-    EXPECT_FALSE(comparePictures(at(zeroToOne, 7.0f), zeroToOne, at(minusOneToOne, 7.1f), minusOneToOne,
-                                 {.maxDifference = 1e-3})
-                     .pass());
+    EXPECT_FALSE(
+        comparePictures(at(zeroToOne, 7.0f), zeroToOne, at(minusOneToOne, 7.1f), minusOneToOne, {.maxDifference = 1e-3})
+            .pass());
 }
 
 TEST(ParityHarnessTest, BadPicturesAreRefusedByName)
@@ -227,7 +234,7 @@ TEST(ParityHarnessTest, BadPicturesAreRefusedByName)
 TEST(ParityHarnessTest, HeatMapsAreBlackWhereEqualAndSaturateAtFullScale)
 {
     rhi::Image a = grey(10), b = grey(10);
-    b.bytes[4] = std::byte{11};  // pixel 1: one step
+    b.bytes[4] = std::byte{11}; // pixel 1: one step
     b.bytes[8] = std::byte{200}; // pixel 2: far beyond full scale
     const rhi::Image map = differenceHeatMap(a, b, 8);
     EXPECT_EQ(map.bytes[0], std::byte{0});

@@ -17,7 +17,9 @@ layout(std140, binding = 0) uniform Light { mat4 viewProjection; vec4 color; } l
 layout(binding = 3) uniform sampler2DShadow shadowMap;
 layout(location = 0) out vec4 outColor;
 void main() { outColor = light.color * texture(shadowMap, vec3(0.5, 0.5, PENUMBRA_FAR_DEPTH)); }
-)", "light.frag"}, header);
+)",
+                                                 "light.frag"},
+                                                header);
     EXPECT_FALSE(shader.spirv.empty());
     ASSERT_EQ(shader.bindings.size(), 2u);
     EXPECT_EQ(shader.bindings[0].binding, 0u);
@@ -36,14 +38,18 @@ TEST(ShaderCompilerTest, ReflectsStd140MemberOffsetsAndSizes)
 layout(std140, binding = 0) uniform Layout { vec3 direction; float range; float weights[3]; ivec4 config; } l;
 layout(location = 0) out vec4 outColor;
 void main() { outColor = vec4(l.direction, l.range + l.weights[1] + float(l.config.x)); }
-)", "layout.frag"}, header);
+)",
+                                                 "layout.frag"},
+                                                header);
     ASSERT_EQ(shader.bindings.size(), 1u);
     const ShaderBinding& block = shader.bindings[0];
     EXPECT_EQ(block.name, "Layout");
     EXPECT_EQ(block.size, 80u);
     ASSERT_EQ(block.members.size(), 4u);
-    const std::vector<std::tuple<std::string, std::uint32_t, std::uint32_t>> expected{
-        {"direction", 0, 12}, {"range", 12, 4}, {"weights", 16, 48}, {"config", 64, 16}};
+    const std::vector<std::tuple<std::string, std::uint32_t, std::uint32_t>> expected{{"direction", 0, 12},
+                                                                                      {"range", 12, 4},
+                                                                                      {"weights", 16, 48},
+                                                                                      {"config", 64, 16}};
     for (std::size_t i = 0; i < expected.size(); ++i) {
         EXPECT_EQ(block.members[i].name, std::get<0>(expected[i]));
         EXPECT_EQ(block.members[i].offset, std::get<1>(expected[i])) << block.members[i].name;
@@ -62,14 +68,15 @@ void main() {
 )";
     for (DepthRange range : {DepthRange::ZeroToOne, DepthRange::MinusOneToOne})
         for (bool reversed : {false, true})
-            EXPECT_NO_THROW(compileShader({ShaderStage::Vertex, source, "header.vert"},
-                                          Conventions(range, reversed).glslHeader()));
+            EXPECT_NO_THROW(
+                compileShader({ShaderStage::Vertex, source, "header.vert"}, Conventions(range, reversed).glslHeader()));
 }
 
 TEST(ShaderCompilerTest, ErrorsCiteFileAndLine)
 {
     try {
-        compileShader({ShaderStage::Fragment, "#version 450\nvoid main()\n{\n    undeclaredThing = 1.0;\n}\n", "broken.frag"},
+        compileShader({ShaderStage::Fragment, "#version 450\nvoid main()\n{\n    undeclaredThing = 1.0;\n}\n",
+                       "broken.frag"},
                       header);
         FAIL() << "a broken shader compiled";
     } catch (const ShaderCompileError& e) {
@@ -80,9 +87,11 @@ TEST(ShaderCompilerTest, ErrorsCiteFileAndLine)
 
 TEST(ShaderCompilerTest, IncludesResolveAndTheirErrorsCiteTheIncludedFile)
 {
-    ShaderSource source{ShaderStage::Fragment, "#version 450\n#include \"colour.glsl\"\nlayout(location = 0) out vec4 outColor;\n"
-                                               "void main() { outColor = colour(); }\n",
-                        "includer.frag", {{"colour.glsl", "vec4 colour() { return vec4(1.0); }\n"}}};
+    ShaderSource source{ShaderStage::Fragment,
+                        "#version 450\n#include \"colour.glsl\"\nlayout(location = 0) out vec4 outColor;\n"
+                        "void main() { outColor = colour(); }\n",
+                        "includer.frag",
+                        {{"colour.glsl", "vec4 colour() { return vec4(1.0); }\n"}}};
     EXPECT_NO_THROW(compileShader(source, header));
 
     source.includes[0].source = "vec4 colour()\n{\n    return missingThing;\n}\n";
@@ -103,7 +112,9 @@ TEST(ShaderCompilerTest, PushConstantsAreRefusedWithTheReason)
         compileShader({ShaderStage::Vertex, R"(#version 450
 layout(push_constant) uniform Push { mat4 m; } push;
 void main() { gl_Position = push.m[0]; }
-)", "push.vert"}, header);
+)",
+                       "push.vert"},
+                      header);
         FAIL() << "push constants accepted";
     } catch (const ShaderCompileError& e) {
         EXPECT_NE(std::string(e.what()).find("push.vert"), std::string::npos) << e.what();
@@ -117,7 +128,10 @@ TEST(ShaderCompilerTest, BindingsNeedExplicitNumbers)
 layout(std140) uniform Block { vec4 v; } block;
 layout(location = 0) out vec4 o;
 void main() { o = block.v; }
-)", "nobinding.frag"}, header), ShaderCompileError);
+)",
+                                "nobinding.frag"},
+                               header),
+                 ShaderCompileError);
 }
 
 } // namespace

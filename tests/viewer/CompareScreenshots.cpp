@@ -47,8 +47,8 @@ int comparePanel(const std::string& withoutUi, const std::string& withUi, std::u
     for (std::uint32_t y = 0; y < a.height; ++y)
         for (std::uint32_t x = panelRight; x < a.width; ++x)
             outside += std::memcmp(a.texel(x, y), b.texel(x, y), 4) != 0;
-    fmt::print("panel: {} vs {}: {} pixels differ, {} of them right of x = {}\n", withoutUi, withUi,
-               d.differingPixels, outside, panelRight);
+    fmt::print("panel: {} vs {}: {} pixels differ, {} of them right of x = {}\n", withoutUi, withUi, d.differingPixels,
+               outside, panelRight);
     return d.differingPixels > 0 && outside == 0 ? 0 : 1;
 }
 

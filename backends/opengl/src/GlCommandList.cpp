@@ -62,8 +62,7 @@ public:
         cache_.polygonOffset(s.bias);
         for (GLuint i = 0; i < s.targets.size(); ++i) {
             const GlBlendTarget& t = s.targets[i];
-            cache_.blend(i, t.enable, t.srcColor, t.dstColor, t.colorEquation, t.srcAlpha, t.dstAlpha,
-                         t.alphaEquation);
+            cache_.blend(i, t.enable, t.srcColor, t.dstColor, t.colorEquation, t.srcAlpha, t.dstAlpha, t.alphaEquation);
         }
         applyWriteMasks(s);
     }
@@ -227,7 +226,10 @@ void GlCommandList::apiBeginPass(const rhi::PassDesc& pass)
 
 void GlCommandList::apiEndPass() { commands_.push_back(command::EndPass{}); }
 
-void GlCommandList::apiSetViewport(const rhi::Viewport& viewport) { commands_.push_back(command::SetViewport{viewport}); }
+void GlCommandList::apiSetViewport(const rhi::Viewport& viewport)
+{
+    commands_.push_back(command::SetViewport{viewport});
+}
 
 void GlCommandList::apiSetScissor(const rhi::Rect& scissor) { commands_.push_back(command::SetScissor{scissor}); }
 
@@ -249,17 +251,16 @@ void GlCommandList::apiBindVertexBuffer(std::uint32_t slot, const rhi::Buffer& b
 
 void GlCommandList::apiBindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset)
 {
-    commands_.push_back(command::BindIndexBuffer{glObject<const GlBuffer>(buffer, "index buffer").name(),
-                                                 GLenum(type == rhi::IndexType::UInt16 ? GL_UNSIGNED_SHORT
-                                                                                       : GL_UNSIGNED_INT),
-                                                 offset});
+    commands_.push_back(
+        command::BindIndexBuffer{glObject<const GlBuffer>(buffer, "index buffer").name(),
+                                 GLenum(type == rhi::IndexType::UInt16 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT), offset});
 }
 
 void GlCommandList::apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
-                                      std::uint64_t size)
+                                         std::uint64_t size)
 {
-    commands_.push_back(command::BindUniformBuffer{
-        binding, glObject<const GlBuffer>(buffer, "uniform buffer").name(), offset, size});
+    commands_.push_back(
+        command::BindUniformBuffer{binding, glObject<const GlBuffer>(buffer, "uniform buffer").name(), offset, size});
 }
 
 void GlCommandList::apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler)
@@ -269,33 +270,33 @@ void GlCommandList::apiBindTexture(std::uint32_t binding, const rhi::Texture& te
 }
 
 void GlCommandList::apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
-                         std::uint32_t firstInstance)
+                            std::uint32_t firstInstance)
 {
     commands_.push_back(command::Draw{vertexCount, instanceCount, firstVertex, firstInstance});
 }
 
 void GlCommandList::apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
-                                std::int32_t vertexOffset, std::uint32_t firstInstance)
+                                   std::int32_t vertexOffset, std::uint32_t firstInstance)
 {
     commands_.push_back(command::DrawIndexed{indexCount, instanceCount, firstIndex, vertexOffset, firstInstance});
 }
 
 void GlCommandList::apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst,
-                               std::uint64_t dstOffset, std::uint64_t size)
+                                  std::uint64_t dstOffset, std::uint64_t size)
 {
     commands_.push_back(command::CopyBuffer{glObject<const GlBuffer>(src, "copy source").name(), srcOffset,
                                             glObject<GlBuffer>(dst, "copy destination").name(), dstOffset, size});
 }
 
 void GlCommandList::apiCopyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
-                                std::uint32_t dstLayer)
+                                   std::uint32_t dstLayer)
 {
     commands_.push_back(command::CopyTexture{&glObject<const GlTexture>(src, "copy source"), srcLayer,
                                              &glObject<GlTexture>(dst, "copy destination"), dstLayer});
 }
 
 void GlCommandList::apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level,
-                                        rhi::Buffer& dst, std::uint64_t dstOffset)
+                                           rhi::Buffer& dst, std::uint64_t dstOffset)
 {
     commands_.push_back(command::CopyTextureToBuffer{&glObject<const GlTexture>(src, "copy source"), layer, level,
                                                      &glObject<GlBuffer>(dst, "copy destination"), dstOffset});

@@ -119,7 +119,6 @@ public:
     void replay(const GlReplayContext& replay);
 
 private:
-
     void apiBeginPass(const rhi::PassDesc& pass) override;
     void apiEndPass() override;
     void apiSetViewport(const rhi::Viewport& viewport) override;
@@ -129,18 +128,18 @@ private:
     void apiBindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset) override;
     void apiBindIndexBuffer(const rhi::Buffer& buffer, rhi::IndexType type, std::uint64_t offset) override;
     void apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
-                           std::uint64_t size) override;
+                              std::uint64_t size) override;
     void apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler) override;
     void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
-              std::uint32_t firstInstance) override;
+                 std::uint32_t firstInstance) override;
     void apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
-                     std::int32_t vertexOffset, std::uint32_t firstInstance) override;
+                        std::int32_t vertexOffset, std::uint32_t firstInstance) override;
     void apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst, std::uint64_t dstOffset,
-                    std::uint64_t size) override;
+                       std::uint64_t size) override;
     void apiCopyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
-                     std::uint32_t dstLayer) override;
+                        std::uint32_t dstLayer) override;
     void apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level, rhi::Buffer& dst,
-                             std::uint64_t dstOffset) override;
+                                std::uint64_t dstOffset) override;
     void apiResolveTexture(const rhi::Texture& src, rhi::Texture& dst) override;
     void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
 

@@ -45,8 +45,8 @@ void GlContext::initialize()
         throw rhi::Error(fmt::format("OpenGL: a 4.5 core context is required, the driver gave {}.{}", major, minor));
     gl_.GetIntegerv = getIntegerv;
     gl_.GetStringi = getStringi;
-    const bool clamp = version_ >= 46 || hasExtension("GL_ARB_polygon_offset_clamp") ||
-                       hasExtension("GL_EXT_polygon_offset_clamp");
+    const bool clamp =
+        version_ >= 46 || hasExtension("GL_ARB_polygon_offset_clamp") || hasExtension("GL_EXT_polygon_offset_clamp");
     gl_ = loadGlFunctions(*context_, clamp);
 }
 

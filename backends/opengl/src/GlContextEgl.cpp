@@ -14,17 +14,28 @@ namespace {
 std::string eglErrorName(EGLint error)
 {
     switch (error) {
-    case EGL_SUCCESS: return "EGL_SUCCESS";
-    case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
-    case EGL_BAD_ACCESS: return "EGL_BAD_ACCESS";
-    case EGL_BAD_ALLOC: return "EGL_BAD_ALLOC";
-    case EGL_BAD_ATTRIBUTE: return "EGL_BAD_ATTRIBUTE";
-    case EGL_BAD_CONFIG: return "EGL_BAD_CONFIG";
-    case EGL_BAD_CONTEXT: return "EGL_BAD_CONTEXT";
-    case EGL_BAD_DISPLAY: return "EGL_BAD_DISPLAY";
-    case EGL_BAD_MATCH: return "EGL_BAD_MATCH";
-    case EGL_BAD_PARAMETER: return "EGL_BAD_PARAMETER";
-    default: return fmt::format("EGL error 0x{:x}", error);
+    case EGL_SUCCESS:
+        return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED:
+        return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS:
+        return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC:
+        return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE:
+        return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG:
+        return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT:
+        return "EGL_BAD_CONTEXT";
+    case EGL_BAD_DISPLAY:
+        return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH:
+        return "EGL_BAD_MATCH";
+    case EGL_BAD_PARAMETER:
+        return "EGL_BAD_PARAMETER";
+    default:
+        return fmt::format("EGL error 0x{:x}", error);
     }
 }
 
@@ -52,8 +63,8 @@ public:
         if (display_ == EGL_NO_DISPLAY)
             throw rhi::Error(fmt::format("EGL: no surfaceless display ({})", eglErrorName(eglGetError())));
         if (!eglInitialize(display_, nullptr, nullptr))
-            throw rhi::Error(fmt::format("EGL: cannot initialise the surfaceless display ({})",
-                                         eglErrorName(eglGetError())));
+            throw rhi::Error(
+                fmt::format("EGL: cannot initialise the surfaceless display ({})", eglErrorName(eglGetError())));
     }
     ~EglDisplay() { eglTerminate(display_); }
     EglDisplay(const EglDisplay&) = delete;
@@ -97,10 +108,14 @@ public:
                 throw rhi::Error("EGL: the surfaceless display has no desktop OpenGL config");
         }
         const EGLint contextAttributes[] = {
-            EGL_CONTEXT_MAJOR_VERSION, 4,
-            EGL_CONTEXT_MINOR_VERSION, 5,
-            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-            EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE,
+            EGL_CONTEXT_MAJOR_VERSION,
+            4,
+            EGL_CONTEXT_MINOR_VERSION,
+            5,
+            EGL_CONTEXT_OPENGL_PROFILE_MASK,
+            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+            EGL_CONTEXT_OPENGL_DEBUG,
+            debug ? EGL_TRUE : EGL_FALSE,
             EGL_NONE,
         };
         context_ = eglCreateContext(dpy, config, EGL_NO_CONTEXT, contextAttributes);

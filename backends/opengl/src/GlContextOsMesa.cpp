@@ -15,11 +15,16 @@ public:
     explicit OsMesaContext(bool /*debug*/)
     {
         const int attributes[] = {
-            OSMESA_FORMAT, OSMESA_RGBA,
-            OSMESA_DEPTH_BITS, 0,
-            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-            OSMESA_CONTEXT_MAJOR_VERSION, 4,
-            OSMESA_CONTEXT_MINOR_VERSION, 5,
+            OSMESA_FORMAT,
+            OSMESA_RGBA,
+            OSMESA_DEPTH_BITS,
+            0,
+            OSMESA_PROFILE,
+            OSMESA_CORE_PROFILE,
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            4,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            5,
             0,
         };
         context_ = OSMesaCreateContextAttribs(attributes, nullptr);
@@ -46,9 +51,6 @@ private:
 
 } // namespace
 
-std::unique_ptr<PlatformContext> createOsMesaContext(bool debug)
-{
-    return std::make_unique<OsMesaContext>(debug);
-}
+std::unique_ptr<PlatformContext> createOsMesaContext(bool debug) { return std::make_unique<OsMesaContext>(debug); }
 
 } // namespace penumbra::opengl

@@ -8,37 +8,56 @@ namespace {
 const char* sourceName(GLenum source)
 {
     switch (source) {
-    case GL_DEBUG_SOURCE_API: return "api";
-    case GL_DEBUG_SOURCE_WINDOW_SYSTEM: return "window-system";
-    case GL_DEBUG_SOURCE_SHADER_COMPILER: return "shader-compiler";
-    case GL_DEBUG_SOURCE_THIRD_PARTY: return "third-party";
-    case GL_DEBUG_SOURCE_APPLICATION: return "application";
-    default: return "other";
+    case GL_DEBUG_SOURCE_API:
+        return "api";
+    case GL_DEBUG_SOURCE_WINDOW_SYSTEM:
+        return "window-system";
+    case GL_DEBUG_SOURCE_SHADER_COMPILER:
+        return "shader-compiler";
+    case GL_DEBUG_SOURCE_THIRD_PARTY:
+        return "third-party";
+    case GL_DEBUG_SOURCE_APPLICATION:
+        return "application";
+    default:
+        return "other";
     }
 }
 
 const char* typeName(GLenum type)
 {
     switch (type) {
-    case GL_DEBUG_TYPE_ERROR: return "error";
-    case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR: return "deprecated";
-    case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR: return "undefined-behaviour";
-    case GL_DEBUG_TYPE_PORTABILITY: return "portability";
-    case GL_DEBUG_TYPE_PERFORMANCE: return "performance";
-    case GL_DEBUG_TYPE_MARKER: return "marker";
-    case GL_DEBUG_TYPE_PUSH_GROUP: return "push-group";
-    case GL_DEBUG_TYPE_POP_GROUP: return "pop-group";
-    default: return "other";
+    case GL_DEBUG_TYPE_ERROR:
+        return "error";
+    case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR:
+        return "deprecated";
+    case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR:
+        return "undefined-behaviour";
+    case GL_DEBUG_TYPE_PORTABILITY:
+        return "portability";
+    case GL_DEBUG_TYPE_PERFORMANCE:
+        return "performance";
+    case GL_DEBUG_TYPE_MARKER:
+        return "marker";
+    case GL_DEBUG_TYPE_PUSH_GROUP:
+        return "push-group";
+    case GL_DEBUG_TYPE_POP_GROUP:
+        return "pop-group";
+    default:
+        return "other";
     }
 }
 
 const char* severityName(GLenum severity)
 {
     switch (severity) {
-    case GL_DEBUG_SEVERITY_HIGH: return "high";
-    case GL_DEBUG_SEVERITY_MEDIUM: return "medium";
-    case GL_DEBUG_SEVERITY_LOW: return "low";
-    default: return "notification";
+    case GL_DEBUG_SEVERITY_HIGH:
+        return "high";
+    case GL_DEBUG_SEVERITY_MEDIUM:
+        return "medium";
+    case GL_DEBUG_SEVERITY_LOW:
+        return "low";
+    default:
+        return "notification";
     }
 }
 
@@ -54,14 +73,14 @@ bool indicatesProblem(GLenum type, GLenum severity)
 }
 
 void APIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
-                              const GLchar* message, const void* userParam)
+                            const GLchar* message, const void* userParam)
 {
     if (!indicatesProblem(type, severity))
         return;
     auto* log = static_cast<rhi::DebugMessageLog*>(const_cast<void*>(userParam));
     const std::string text = length >= 0 ? std::string(message, std::size_t(length)) : std::string(message);
-    log->record(fmt::format("GL {} {} ({}, id {}): {}", severityName(severity), typeName(type), sourceName(source),
-                            id, text));
+    log->record(
+        fmt::format("GL {} {} ({}, id {}): {}", severityName(severity), typeName(type), sourceName(source), id, text));
 }
 
 } // namespace

@@ -38,9 +38,7 @@ std::unique_ptr<rhi::Device> createOpenGLDevice(const rhi::DeviceDesc& desc, con
 }
 
 GlDevice::GlDevice(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& options)
-    : ValidatingDevice(desc.validateUsage),
-      desc_(desc),
-      context_(std::make_shared<GlContext>(desc, options)),
+    : ValidatingDevice(desc.validateUsage), desc_(desc), context_(std::make_shared<GlContext>(desc, options)),
       orientation_(desc.depthRange == rhi::DepthRange::ZeroToOne),
       conventions_(orientation_.conventions(desc.reversedZ))
 {
@@ -203,11 +201,11 @@ void GlDevice::applySubmitDefaults()
     const GlFunctions& gl = context_->gl();
     cache_->invalidate();
     gl.Enable(GL_POLYGON_OFFSET_FILL); // the bias is always set, zero when unused
-    gl.Enable(GL_PROGRAM_POINT_SIZE);  // points take gl_PointSize, as in Vulkan
-    gl.Disable(GL_DITHER);             // Vulkan does not dither; keep RGBA8 results identical
+    gl.Enable(GL_PROGRAM_POINT_SIZE); // points take gl_PointSize, as in Vulkan
+    gl.Disable(GL_DITHER); // Vulkan does not dither; keep RGBA8 results identical
     gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // Vulkan filters across cube faces always
-    gl.Enable(GL_FRAMEBUFFER_SRGB);          // Vulkan encodes writes to sRGB attachments always
-    gl.Enable(GL_MULTISAMPLE);               // multisampled framebuffers rasterize per sample, as in Vulkan
+    gl.Enable(GL_FRAMEBUFFER_SRGB); // Vulkan encodes writes to sRGB attachments always
+    gl.Enable(GL_MULTISAMPLE); // multisampled framebuffers rasterize per sample, as in Vulkan
     gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
     cache_->frontFace(orientation_.frontFace());

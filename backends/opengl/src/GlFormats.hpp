@@ -13,7 +13,7 @@ struct GlTextureFormat {
     GLenum internalFormat;
     GLenum pixelFormat; // for uploads and readbacks
     GLenum pixelType;
-    GLenum attachment;  // framebuffer attachment point for depth formats; GL_NONE for colour
+    GLenum attachment; // framebuffer attachment point for depth formats; GL_NONE for colour
 };
 
 GlTextureFormat glTextureFormat(rhi::Format format);

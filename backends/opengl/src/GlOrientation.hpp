@@ -38,10 +38,7 @@ public:
     // Window rectangles: y already counts rows from memory row 0 (the top) in both modes,
     // because neither mode moves the window origin away from the attachment's first row.
     std::array<float, 4> viewport(const rhi::Viewport& v) const { return {v.x, v.y, v.width, v.height}; }
-    std::array<GLint, 4> scissor(const rhi::Rect& r) const
-    {
-        return {r.x, r.y, GLint(r.width), GLint(r.height)};
-    }
+    std::array<GLint, 4> scissor(const rhi::Rect& r) const { return {r.x, r.y, GLint(r.width), GLint(r.height)}; }
 
 private:
     bool clipControl_;

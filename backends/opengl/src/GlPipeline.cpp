@@ -25,7 +25,8 @@ std::string crossCompile(const rhi::CompiledShader& compiled, const GlOrientatio
         compiler.set_common_options(options);
         return compiler.compile();
     } catch (const spirv_cross::CompilerError& e) {
-        throw rhi::Error(fmt::format("{}: SPIRV-Cross cannot translate the SPIR-V to GLSL: {}", compiled.name, e.what()));
+        throw rhi::Error(
+            fmt::format("{}: SPIRV-Cross cannot translate the SPIR-V to GLSL: {}", compiled.name, e.what()));
     }
 }
 
@@ -61,11 +62,15 @@ GlFixedState fixedState(const rhi::PipelineDesc& desc, const rhi::Conventions& c
     for (const rhi::ColorTarget& c : desc.colorTargets) {
         const rhi::BlendState& b = c.blend;
         auto bit = [&](rhi::ColorMask m) -> GLboolean { return rhi::hasFlag(c.writeMask, m) ? GL_TRUE : GL_FALSE; };
-        s.targets.push_back({b.enable, glBlendFactor(b.srcColor), glBlendFactor(b.dstColor),
-                             glBlendEquation(b.colorOp), glBlendFactor(b.srcAlpha), glBlendFactor(b.dstAlpha),
-                             glBlendEquation(b.alphaOp),
-                             {bit(rhi::ColorMask::R), bit(rhi::ColorMask::G), bit(rhi::ColorMask::B),
-                              bit(rhi::ColorMask::A)}});
+        s.targets.push_back(
+            {b.enable,
+             glBlendFactor(b.srcColor),
+             glBlendFactor(b.dstColor),
+             glBlendEquation(b.colorOp),
+             glBlendFactor(b.srcAlpha),
+             glBlendFactor(b.dstAlpha),
+             glBlendEquation(b.alphaOp),
+             {bit(rhi::ColorMask::R), bit(rhi::ColorMask::G), bit(rhi::ColorMask::B), bit(rhi::ColorMask::A)}});
     }
     return s;
 }
@@ -77,8 +82,8 @@ GlShader::GlShader(GlContextPtr context, rhi::CompiledShader compiled, const GlO
 {
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
-    name_ = GlShaderName(
-        *context_, gl.CreateShader(compiled_.stage == rhi::ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER));
+    name_ = GlShaderName(*context_, gl.CreateShader(compiled_.stage == rhi::ShaderStage::Vertex ? GL_VERTEX_SHADER
+                                                                                                : GL_FRAGMENT_SHADER));
     const GLuint shader = name_.get();
     const char* text = glsl_.c_str();
     gl.ShaderSource(shader, 1, &text, nullptr);
@@ -137,7 +142,8 @@ void GlPipeline::buildVertexArray()
         // VAO from reading a slot without a stride (and what PipelineLeakTest breaks creation with).
         if (a.buffer >= layout.buffers.size())
             throw rhi::Error(fmt::format("pipeline '{}': attribute {} reads vertex buffer slot {}, which the layout "
-                                         "does not declare", desc_.debugName, a.location, a.buffer));
+                                         "does not declare",
+                                         desc_.debugName, a.location, a.buffer));
         const GlVertexFormat f = glVertexFormat(a.format);
         gl.EnableVertexArrayAttrib(vertexArray, a.location);
         gl.VertexArrayAttribFormat(vertexArray, a.location, f.size, f.type, f.normalized, a.offset);

@@ -102,7 +102,8 @@ GlTexture::GlTexture(GlContextPtr context, const rhi::TextureDesc& desc) : conte
     gl.TextureParameteri(name_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TextureParameteri(name_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     if (desc.format == rhi::Format::D24S8)
-        gl.TextureParameteri(name_.get(), GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT); // sample depth, not stencil
+        gl.TextureParameteri(name_.get(), GL_DEPTH_STENCIL_TEXTURE_MODE,
+                             GL_DEPTH_COMPONENT); // sample depth, not stencil
     label(gl, GL_TEXTURE, name_.get(), desc.debugName);
 }
 

@@ -6,11 +6,16 @@ namespace {
 constexpr GLenum capEnum(GlStateCache::Cap cap)
 {
     switch (cap) {
-    case GlStateCache::Cap::DepthTest: return GL_DEPTH_TEST;
-    case GlStateCache::Cap::DepthClamp: return GL_DEPTH_CLAMP;
-    case GlStateCache::Cap::CullFace: return GL_CULL_FACE;
-    case GlStateCache::Cap::ScissorTest: return GL_SCISSOR_TEST;
-    case GlStateCache::Cap::Count: break;
+    case GlStateCache::Cap::DepthTest:
+        return GL_DEPTH_TEST;
+    case GlStateCache::Cap::DepthClamp:
+        return GL_DEPTH_CLAMP;
+    case GlStateCache::Cap::CullFace:
+        return GL_CULL_FACE;
+    case GlStateCache::Cap::ScissorTest:
+        return GL_SCISSOR_TEST;
+    case GlStateCache::Cap::Count:
+        break;
     }
     return GL_NONE;
 }

@@ -91,10 +91,7 @@ void VulkanCommandList::apiBeginPass(const rhi::PassDesc& pass)
     apiSetScissor({0, 0, framebuffer.width(), framebuffer.height()});
 }
 
-void VulkanCommandList::apiEndPass()
-{
-    vkCmdEndRenderPass(commands_);
-}
+void VulkanCommandList::apiEndPass() { vkCmdEndRenderPass(commands_); }
 
 void VulkanCommandList::apiSetViewport(const rhi::Viewport& v)
 {
@@ -143,7 +140,7 @@ void VulkanCommandList::apiBindIndexBuffer(const rhi::Buffer& buffer, rhi::Index
 }
 
 void VulkanCommandList::apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
-                                          std::uint64_t size)
+                                             std::uint64_t size)
 {
     const auto& vk = vulkanObject<const VulkanBuffer>(buffer, "bindUniformBuffer: the buffer");
     // Dynamic offsets are 32-bit (VkCmdBindDescriptorSets' pDynamicOffsets).
@@ -161,14 +158,14 @@ void VulkanCommandList::apiBindTexture(std::uint32_t binding, const rhi::Texture
 }
 
 void VulkanCommandList::apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
-                             std::uint32_t firstInstance)
+                                std::uint32_t firstInstance)
 {
     descriptors_.flush(commands_);
     vkCmdDraw(commands_, vertexCount, instanceCount, firstVertex, firstInstance);
 }
 
 void VulkanCommandList::apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
-                                    std::int32_t vertexOffset, std::uint32_t firstInstance)
+                                       std::int32_t vertexOffset, std::uint32_t firstInstance)
 {
     descriptors_.flush(commands_);
     vkCmdDrawIndexed(commands_, indexCount, instanceCount, firstIndex, vertexOffset, firstInstance);

@@ -16,7 +16,8 @@
 namespace penumbra::vulkan {
 
 Context::Context(const rhi::DeviceDesc& d)
-    : desc(d), conventions(rhi::DepthRange::ZeroToOne, d.reversedZ), instance(d.validation, log, d.window.glfwWindow ? windowInstanceExtensions() : std::vector<const char*>{})
+    : desc(d), conventions(rhi::DepthRange::ZeroToOne, d.reversedZ),
+      instance(d.validation, log, d.window.glfwWindow ? windowInstanceExtensions() : std::vector<const char*>{})
 {
     const PhysicalDeviceChoice choice = choosePhysicalDevice(instance.handle());
     physicalDevice = choice.device;
@@ -51,8 +52,8 @@ void Context::fillCapabilities()
     vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, families.data());
 
     const std::uint32_t v = properties.apiVersion;
-    capabilities.api = fmt::format("Vulkan {}.{}.{}", VK_API_VERSION_MAJOR(v), VK_API_VERSION_MINOR(v),
-                                   VK_API_VERSION_PATCH(v));
+    capabilities.api =
+        fmt::format("Vulkan {}.{}.{}", VK_API_VERSION_MAJOR(v), VK_API_VERSION_MINOR(v), VK_API_VERSION_PATCH(v));
     capabilities.device = properties.deviceName;
     capabilities.depthClamp = features.depthClamp;
     capabilities.depthBiasClamp = features.depthBiasClamp;
@@ -81,7 +82,7 @@ rhi::FormatSupport Context::formatSupport(rhi::Format format) const
     // Every texture is uploaded and copied, so each use needs the transfer features as well.
     const VkFormatFeatureFlags transfer = VK_FORMAT_FEATURE_TRANSFER_SRC_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
     const VkFormatFeatureFlags attachment = rhi::isDepthFormat(format) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT
-                                                                      : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
+                                                                       : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
     rhi::FormatSupport support{.sampled = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | transfer),
                                .linearFilter = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT),
                                .renderTarget = all(attachment | transfer)};
@@ -96,16 +97,16 @@ rhi::FormatSupport Context::formatSupport(rhi::Format format) const
 std::uint32_t Context::renderTargetSampleCounts(rhi::Format format) const
 {
     const bool depth = rhi::isDepthFormat(format);
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                    (depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
-                                           : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
+    const VkImageUsageFlags usage =
+        VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+        (depth ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT);
     VkImageFormatProperties image{};
     if (vkGetPhysicalDeviceImageFormatProperties(physicalDevice, toVkFormat(format), VK_IMAGE_TYPE_2D,
                                                  VK_IMAGE_TILING_OPTIMAL, usage, 0, &image) != VK_SUCCESS)
         return VK_SAMPLE_COUNT_1_BIT;
     const VkPhysicalDeviceLimits& limits = properties.limits;
-    const VkSampleCountFlags framebuffer = depth ? limits.framebufferDepthSampleCounts
-                                                 : limits.framebufferColorSampleCounts;
+    const VkSampleCountFlags framebuffer =
+        depth ? limits.framebufferDepthSampleCounts : limits.framebufferColorSampleCounts;
     const VkSampleCountFlags upToEight =
         VK_SAMPLE_COUNT_1_BIT | VK_SAMPLE_COUNT_2_BIT | VK_SAMPLE_COUNT_4_BIT | VK_SAMPLE_COUNT_8_BIT;
     return std::uint32_t(image.sampleCounts & framebuffer & upToEight) | VK_SAMPLE_COUNT_1_BIT;
@@ -247,8 +248,8 @@ void fullBarrier(VkCommandBuffer commandBuffer)
     barrier.srcAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
     barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_HOST_READ_BIT;
     vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr,
-                         0, nullptr);
+                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                         nullptr);
 }
 
 } // namespace penumbra::vulkan

@@ -40,7 +40,8 @@ public:
     LayoutCache& layouts() { return *layouts_; }
 
     // A memory type allowed by typeBits with `wanted` properties, else one with `required`.
-    std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted, VkMemoryPropertyFlags required) const;
+    std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags wanted,
+                             VkMemoryPropertyFlags required) const;
     VkFormatFeatureFlags formatFeatures(VkFormat format) const;
     // Gives a handle its debugName, so validation messages say which object they mean.
     template <typename Handle>

@@ -13,7 +13,7 @@
 
 namespace penumbra::vulkan {
 void VulkanCommandList::apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcOffset, rhi::Buffer& dst,
-                                   std::uint64_t dstOffset, std::uint64_t size)
+                                      std::uint64_t dstOffset, std::uint64_t size)
 {
     const auto& from = vulkanObject<const VulkanBuffer>(src, "copyBuffer: the source");
     const auto& to = vulkanObject<const VulkanBuffer>(dst, "copyBuffer: the destination");
@@ -26,7 +26,7 @@ void VulkanCommandList::apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcO
 }
 
 void VulkanCommandList::apiCopyTexture(const rhi::Texture& src, std::uint32_t srcLayer, rhi::Texture& dst,
-                                    std::uint32_t dstLayer)
+                                       std::uint32_t dstLayer)
 {
     const auto& from = vulkanObject<const VulkanTexture>(src, "copyTexture: the source");
     const auto& to = vulkanObject<const VulkanTexture>(dst, "copyTexture: the destination");
@@ -47,7 +47,7 @@ void VulkanCommandList::apiCopyTexture(const rhi::Texture& src, std::uint32_t sr
 }
 
 void VulkanCommandList::apiCopyTextureToBuffer(const rhi::Texture& src, std::uint32_t layer, std::uint32_t level,
-                                            rhi::Buffer& dst, std::uint64_t dstOffset)
+                                               rhi::Buffer& dst, std::uint64_t dstOffset)
 {
     const auto& from = vulkanObject<const VulkanTexture>(src, "copyTextureToBuffer: the source");
     const auto& to = vulkanObject<const VulkanBuffer>(dst, "copyTextureToBuffer: the destination");

@@ -72,8 +72,7 @@ void DescriptorBinder::setPipeline(const VulkanPipeline& pipeline)
     }
 }
 
-void DescriptorBinder::setUniformBuffer(std::uint32_t binding, VkBuffer buffer, std::uint32_t offset,
-                                        VkDeviceSize size)
+void DescriptorBinder::setUniformBuffer(std::uint32_t binding, VkBuffer buffer, std::uint32_t offset, VkDeviceSize size)
 {
     Bound& b = slot(binding);
     if (!b.isBuffer || b.buffer != buffer || b.size != size) {

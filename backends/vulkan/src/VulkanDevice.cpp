@@ -66,10 +66,7 @@ std::unique_ptr<rhi::CommandList> VulkanDevice::createCommandList()
     return std::make_unique<VulkanCommandList>(*this, context_);
 }
 
-std::unique_ptr<rhi::Swapchain> VulkanDevice::createSwapchain()
-{
-    return std::make_unique<VulkanSwapchain>(context_);
-}
+std::unique_ptr<rhi::Swapchain> VulkanDevice::createSwapchain() { return std::make_unique<VulkanSwapchain>(context_); }
 
 void VulkanDevice::apiSubmit(rhi::CommandList& commands)
 {

@@ -7,18 +7,30 @@ namespace penumbra::vulkan {
 VkFormat toVkFormat(rhi::Format format)
 {
     switch (format) {
-    case rhi::Format::RGBA8: return VK_FORMAT_R8G8B8A8_UNORM;
-    case rhi::Format::RGBA16F: return VK_FORMAT_R16G16B16A16_SFLOAT;
-    case rhi::Format::RGBA32F: return VK_FORMAT_R32G32B32A32_SFLOAT;
-    case rhi::Format::D16: return VK_FORMAT_D16_UNORM;
-    case rhi::Format::D24S8: return VK_FORMAT_D24_UNORM_S8_UINT;
-    case rhi::Format::D32F: return VK_FORMAT_D32_SFLOAT;
-    case rhi::Format::RGBA8_SRGB: return VK_FORMAT_R8G8B8A8_SRGB;
-    case rhi::Format::R8: return VK_FORMAT_R8_UNORM;
-    case rhi::Format::RG8: return VK_FORMAT_R8G8_UNORM;
-    case rhi::Format::R16F: return VK_FORMAT_R16_SFLOAT;
-    case rhi::Format::RG16F: return VK_FORMAT_R16G16_SFLOAT;
-    case rhi::Format::R32F: return VK_FORMAT_R32_SFLOAT;
+    case rhi::Format::RGBA8:
+        return VK_FORMAT_R8G8B8A8_UNORM;
+    case rhi::Format::RGBA16F:
+        return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case rhi::Format::RGBA32F:
+        return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case rhi::Format::D16:
+        return VK_FORMAT_D16_UNORM;
+    case rhi::Format::D24S8:
+        return VK_FORMAT_D24_UNORM_S8_UINT;
+    case rhi::Format::D32F:
+        return VK_FORMAT_D32_SFLOAT;
+    case rhi::Format::RGBA8_SRGB:
+        return VK_FORMAT_R8G8B8A8_SRGB;
+    case rhi::Format::R8:
+        return VK_FORMAT_R8_UNORM;
+    case rhi::Format::RG8:
+        return VK_FORMAT_R8G8_UNORM;
+    case rhi::Format::R16F:
+        return VK_FORMAT_R16_SFLOAT;
+    case rhi::Format::RG16F:
+        return VK_FORMAT_R16G16_SFLOAT;
+    case rhi::Format::R32F:
+        return VK_FORMAT_R32_SFLOAT;
     }
     throw rhi::Error("Vulkan: unknown texture format");
 }
@@ -38,11 +50,16 @@ VkImageAspectFlags dataAspect(rhi::Format format)
 VkFormat toVkFormat(rhi::VertexFormat format)
 {
     switch (format) {
-    case rhi::VertexFormat::Float: return VK_FORMAT_R32_SFLOAT;
-    case rhi::VertexFormat::Float2: return VK_FORMAT_R32G32_SFLOAT;
-    case rhi::VertexFormat::Float3: return VK_FORMAT_R32G32B32_SFLOAT;
-    case rhi::VertexFormat::Float4: return VK_FORMAT_R32G32B32A32_SFLOAT;
-    case rhi::VertexFormat::UByte4Norm: return VK_FORMAT_R8G8B8A8_UNORM;
+    case rhi::VertexFormat::Float:
+        return VK_FORMAT_R32_SFLOAT;
+    case rhi::VertexFormat::Float2:
+        return VK_FORMAT_R32G32_SFLOAT;
+    case rhi::VertexFormat::Float3:
+        return VK_FORMAT_R32G32B32_SFLOAT;
+    case rhi::VertexFormat::Float4:
+        return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case rhi::VertexFormat::UByte4Norm:
+        return VK_FORMAT_R8G8B8A8_UNORM;
     }
     throw rhi::Error("Vulkan: unknown vertex format");
 }
@@ -50,10 +67,14 @@ VkFormat toVkFormat(rhi::VertexFormat format)
 VkPrimitiveTopology toVkTopology(rhi::PrimitiveTopology topology)
 {
     switch (topology) {
-    case rhi::PrimitiveTopology::TriangleList: return VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    case rhi::PrimitiveTopology::TriangleStrip: return VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-    case rhi::PrimitiveTopology::LineList: return VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
-    case rhi::PrimitiveTopology::PointList: return VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    case rhi::PrimitiveTopology::TriangleList:
+        return VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    case rhi::PrimitiveTopology::TriangleStrip:
+        return VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+    case rhi::PrimitiveTopology::LineList:
+        return VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
+    case rhi::PrimitiveTopology::PointList:
+        return VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
     }
     throw rhi::Error("Vulkan: unknown primitive topology");
 }
@@ -61,9 +82,12 @@ VkPrimitiveTopology toVkTopology(rhi::PrimitiveTopology topology)
 VkCullModeFlags toVkCullMode(rhi::CullMode cull)
 {
     switch (cull) {
-    case rhi::CullMode::None: return VK_CULL_MODE_NONE;
-    case rhi::CullMode::Back: return VK_CULL_MODE_BACK_BIT;
-    case rhi::CullMode::Front: return VK_CULL_MODE_FRONT_BIT;
+    case rhi::CullMode::None:
+        return VK_CULL_MODE_NONE;
+    case rhi::CullMode::Back:
+        return VK_CULL_MODE_BACK_BIT;
+    case rhi::CullMode::Front:
+        return VK_CULL_MODE_FRONT_BIT;
     }
     throw rhi::Error("Vulkan: unknown cull mode");
 }
@@ -71,14 +95,22 @@ VkCullModeFlags toVkCullMode(rhi::CullMode cull)
 VkCompareOp toVkCompareOp(rhi::CompareOp op)
 {
     switch (op) {
-    case rhi::CompareOp::Never: return VK_COMPARE_OP_NEVER;
-    case rhi::CompareOp::Less: return VK_COMPARE_OP_LESS;
-    case rhi::CompareOp::LessOrEqual: return VK_COMPARE_OP_LESS_OR_EQUAL;
-    case rhi::CompareOp::Equal: return VK_COMPARE_OP_EQUAL;
-    case rhi::CompareOp::Greater: return VK_COMPARE_OP_GREATER;
-    case rhi::CompareOp::GreaterOrEqual: return VK_COMPARE_OP_GREATER_OR_EQUAL;
-    case rhi::CompareOp::NotEqual: return VK_COMPARE_OP_NOT_EQUAL;
-    case rhi::CompareOp::Always: return VK_COMPARE_OP_ALWAYS;
+    case rhi::CompareOp::Never:
+        return VK_COMPARE_OP_NEVER;
+    case rhi::CompareOp::Less:
+        return VK_COMPARE_OP_LESS;
+    case rhi::CompareOp::LessOrEqual:
+        return VK_COMPARE_OP_LESS_OR_EQUAL;
+    case rhi::CompareOp::Equal:
+        return VK_COMPARE_OP_EQUAL;
+    case rhi::CompareOp::Greater:
+        return VK_COMPARE_OP_GREATER;
+    case rhi::CompareOp::GreaterOrEqual:
+        return VK_COMPARE_OP_GREATER_OR_EQUAL;
+    case rhi::CompareOp::NotEqual:
+        return VK_COMPARE_OP_NOT_EQUAL;
+    case rhi::CompareOp::Always:
+        return VK_COMPARE_OP_ALWAYS;
     }
     throw rhi::Error("Vulkan: unknown compare op");
 }
@@ -86,16 +118,26 @@ VkCompareOp toVkCompareOp(rhi::CompareOp op)
 VkBlendFactor toVkBlendFactor(rhi::BlendFactor factor)
 {
     switch (factor) {
-    case rhi::BlendFactor::Zero: return VK_BLEND_FACTOR_ZERO;
-    case rhi::BlendFactor::One: return VK_BLEND_FACTOR_ONE;
-    case rhi::BlendFactor::SrcColor: return VK_BLEND_FACTOR_SRC_COLOR;
-    case rhi::BlendFactor::OneMinusSrcColor: return VK_BLEND_FACTOR_ONE_MINUS_SRC_COLOR;
-    case rhi::BlendFactor::SrcAlpha: return VK_BLEND_FACTOR_SRC_ALPHA;
-    case rhi::BlendFactor::OneMinusSrcAlpha: return VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-    case rhi::BlendFactor::DstColor: return VK_BLEND_FACTOR_DST_COLOR;
-    case rhi::BlendFactor::OneMinusDstColor: return VK_BLEND_FACTOR_ONE_MINUS_DST_COLOR;
-    case rhi::BlendFactor::DstAlpha: return VK_BLEND_FACTOR_DST_ALPHA;
-    case rhi::BlendFactor::OneMinusDstAlpha: return VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA;
+    case rhi::BlendFactor::Zero:
+        return VK_BLEND_FACTOR_ZERO;
+    case rhi::BlendFactor::One:
+        return VK_BLEND_FACTOR_ONE;
+    case rhi::BlendFactor::SrcColor:
+        return VK_BLEND_FACTOR_SRC_COLOR;
+    case rhi::BlendFactor::OneMinusSrcColor:
+        return VK_BLEND_FACTOR_ONE_MINUS_SRC_COLOR;
+    case rhi::BlendFactor::SrcAlpha:
+        return VK_BLEND_FACTOR_SRC_ALPHA;
+    case rhi::BlendFactor::OneMinusSrcAlpha:
+        return VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+    case rhi::BlendFactor::DstColor:
+        return VK_BLEND_FACTOR_DST_COLOR;
+    case rhi::BlendFactor::OneMinusDstColor:
+        return VK_BLEND_FACTOR_ONE_MINUS_DST_COLOR;
+    case rhi::BlendFactor::DstAlpha:
+        return VK_BLEND_FACTOR_DST_ALPHA;
+    case rhi::BlendFactor::OneMinusDstAlpha:
+        return VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA;
     }
     throw rhi::Error("Vulkan: unknown blend factor");
 }
@@ -103,11 +145,16 @@ VkBlendFactor toVkBlendFactor(rhi::BlendFactor factor)
 VkBlendOp toVkBlendOp(rhi::BlendOp op)
 {
     switch (op) {
-    case rhi::BlendOp::Add: return VK_BLEND_OP_ADD;
-    case rhi::BlendOp::Subtract: return VK_BLEND_OP_SUBTRACT;
-    case rhi::BlendOp::ReverseSubtract: return VK_BLEND_OP_REVERSE_SUBTRACT;
-    case rhi::BlendOp::Min: return VK_BLEND_OP_MIN;
-    case rhi::BlendOp::Max: return VK_BLEND_OP_MAX;
+    case rhi::BlendOp::Add:
+        return VK_BLEND_OP_ADD;
+    case rhi::BlendOp::Subtract:
+        return VK_BLEND_OP_SUBTRACT;
+    case rhi::BlendOp::ReverseSubtract:
+        return VK_BLEND_OP_REVERSE_SUBTRACT;
+    case rhi::BlendOp::Min:
+        return VK_BLEND_OP_MIN;
+    case rhi::BlendOp::Max:
+        return VK_BLEND_OP_MAX;
     }
     throw rhi::Error("Vulkan: unknown blend op");
 }
@@ -118,10 +165,7 @@ VkColorComponentFlags toVkColorMask(rhi::ColorMask mask)
     return static_cast<VkColorComponentFlags>(mask);
 }
 
-VkFilter toVkFilter(rhi::Filter filter)
-{
-    return filter == rhi::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-}
+VkFilter toVkFilter(rhi::Filter filter) { return filter == rhi::Filter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST; }
 
 // MipFilter::None is the nearest mode with the LOD range rhi::samplerLodRange gives it.
 VkSamplerMipmapMode toVkMipmapMode(rhi::MipFilter filter)
@@ -132,9 +176,12 @@ VkSamplerMipmapMode toVkMipmapMode(rhi::MipFilter filter)
 VkSamplerAddressMode toVkAddressMode(rhi::AddressMode mode)
 {
     switch (mode) {
-    case rhi::AddressMode::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    case rhi::AddressMode::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    case rhi::AddressMode::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    case rhi::AddressMode::ClampToEdge:
+        return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    case rhi::AddressMode::Repeat:
+        return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    case rhi::AddressMode::MirroredRepeat:
+        return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
     }
     throw rhi::Error("Vulkan: unknown address mode");
 }

@@ -97,7 +97,8 @@ using UniqueDevice = Root<VkDevice, vkDestroyDevice>;
 class UniqueMessenger {
 public:
     UniqueMessenger() = default;
-    UniqueMessenger(VkInstance instance, VkDebugUtilsMessengerEXT messenger, PFN_vkDestroyDebugUtilsMessengerEXT destroy)
+    UniqueMessenger(VkInstance instance, VkDebugUtilsMessengerEXT messenger,
+                    PFN_vkDestroyDebugUtilsMessengerEXT destroy)
         : instance_(instance), messenger_(messenger), destroy_(destroy)
     {
     }

@@ -25,14 +25,16 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(VkDebugUtilsMessageSeverityFlagBit
                                               VkDebugUtilsMessageTypeFlagsEXT,
                                               const VkDebugUtilsMessengerCallbackDataEXT* data, void* user)
 {
-    static_cast<rhi::DebugMessageLog*>(user)->record(fmt::format("vulkan {}: {}", severityName(severity), data->pMessage));
+    static_cast<rhi::DebugMessageLog*>(user)->record(
+        fmt::format("vulkan {}: {}", severityName(severity), data->pMessage));
     return VK_FALSE;
 }
 
 VkDebugUtilsMessengerCreateInfoEXT messengerInfo(rhi::DebugMessageLog& log)
 {
     VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    info.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
     info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                        VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     info.pfnUserCallback = onDebugMessage;
@@ -46,7 +48,8 @@ bool hasLayer(const char* name)
     vkEnumerateInstanceLayerProperties(&count, nullptr);
     std::vector<VkLayerProperties> layers(count);
     vkEnumerateInstanceLayerProperties(&count, layers.data());
-    return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+    return std::any_of(layers.begin(), layers.end(),
+                       [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
 std::uint32_t loaderVersion()
@@ -80,8 +83,8 @@ Instance::Instance(bool validation, rhi::DebugMessageLog& log, std::vector<const
 {
     const std::uint32_t loader = loaderVersion();
     if (loader < VK_API_VERSION_1_1)
-        throw rhi::Error(fmt::format("Vulkan: the loader offers Vulkan {}; Penumbra needs 1.1 or newer",
-                                     versionString(loader)));
+        throw rhi::Error(
+            fmt::format("Vulkan: the loader offers Vulkan {}; Penumbra needs 1.1 or newer", versionString(loader)));
     apiVersion_ = std::min(loader, VK_API_VERSION_1_3);
 
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -146,7 +149,8 @@ PhysicalDeviceChoice choosePhysicalDevice(VkInstance instance)
         if (!family || props.apiVersion < VK_API_VERSION_1_1)
             continue;
         const PhysicalDeviceChoice choice{device, *family};
-        if (wanted ? std::strstr(props.deviceName, wanted) != nullptr : std::strstr(props.deviceName, "llvmpipe") != nullptr)
+        if (wanted ? std::strstr(props.deviceName, wanted) != nullptr
+                   : std::strstr(props.deviceName, "llvmpipe") != nullptr)
             return choice;
         if (!first)
             first = choice;

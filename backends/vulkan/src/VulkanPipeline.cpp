@@ -43,8 +43,8 @@ RenderPassKey compatibleRenderPass(const rhi::PipelineDesc& desc)
     for (const rhi::ColorTarget& c : desc.colorTargets)
         key.colors.push_back({toVkFormat(c.format), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false, samples});
     if (desc.depthFormat)
-        key.depth = AttachmentKey{toVkFormat(*desc.depthFormat), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, false,
-                                  samples};
+        key.depth = AttachmentKey{toVkFormat(*desc.depthFormat), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                                  false, samples};
     return key;
 }
 
@@ -103,7 +103,8 @@ LayoutCache::Entry LayoutCache::create(const std::vector<rhi::ShaderBinding>& bi
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layoutInfo.setLayoutCount = 1;
     layoutInfo.pSetLayouts = result.setLayout.address();
-    result.layout = createOwned<UniquePipelineLayout>(device_, vkCreatePipelineLayout, layoutInfo, "vkCreatePipelineLayout");
+    result.layout =
+        createOwned<UniquePipelineLayout>(device_, vkCreatePipelineLayout, layoutInfo, "vkCreatePipelineLayout");
     return result;
 }
 

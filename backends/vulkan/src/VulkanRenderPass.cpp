@@ -47,8 +47,7 @@ AttachmentKey attachmentKey(const rhi::Attachment& attachment)
     if (!texture)
         throw rhi::Error(fmt::format("framebuffer: texture '{}' was not created by a Vulkan device",
                                      attachment.texture->desc().debugName));
-    return {texture->format(), texture->restingLayout(), false,
-            VkSampleCountFlagBits(texture->desc().samples)};
+    return {texture->format(), texture->restingLayout(), false, VkSampleCountFlagBits(texture->desc().samples)};
 }
 
 } // namespace
@@ -116,7 +115,8 @@ VulkanFramebuffer::VulkanFramebuffer(std::shared_ptr<Context> context, const rhi
 
     std::vector<VkImageView> views;
     for (const rhi::Attachment& a : attachments)
-        views.push_back(views_.emplace_back(static_cast<const VulkanTexture*>(a.texture)->createAttachmentView(a.layer)).get());
+        views.push_back(
+            views_.emplace_back(static_cast<const VulkanTexture*>(a.texture)->createAttachmentView(a.layer)).get());
     VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     info.renderPass = renderPass(false, false);
     info.attachmentCount = std::uint32_t(views.size());

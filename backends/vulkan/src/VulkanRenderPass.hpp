@@ -17,7 +17,7 @@ namespace penumbra::vulkan {
 struct AttachmentKey {
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkImageLayout restingLayout = VK_IMAGE_LAYOUT_UNDEFINED; // initial (when loading) and final layout
-    bool load = false;                                        // keep contents instead of clearing
+    bool load = false; // keep contents instead of clearing
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 };
 

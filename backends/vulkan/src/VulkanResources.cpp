@@ -28,10 +28,7 @@ VkBufferUsageFlags bufferUsage(rhi::BufferUsage usage)
 }
 
 // An empty buffer (a scene with nothing to draw) is valid in the RHI; Vulkan needs at least a byte.
-VkDeviceSize allocationSize(const rhi::BufferDesc& desc)
-{
-    return std::max<VkDeviceSize>(desc.size, 1);
-}
+VkDeviceSize allocationSize(const rhi::BufferDesc& desc) { return std::max<VkDeviceSize>(desc.size, 1); }
 
 VkImageLayout attachmentLayout(rhi::Format format)
 {
@@ -82,7 +79,8 @@ MappedBuffer::MappedBuffer(std::shared_ptr<Context> context, VkDeviceSize size, 
     vkGetBufferMemoryRequirements(device, buffer_.get(), &requirements);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = requirements.size;
-    const VkMemoryPropertyFlags hostVisible = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    const VkMemoryPropertyFlags hostVisible =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     alloc.memoryTypeIndex = context_->memoryType(requirements.memoryTypeBits, hostVisible, hostVisible);
     memory_ = createOwned<UniqueMemory>(device, vkAllocateMemory, alloc, "vkAllocateMemory");
     check(vkBindBufferMemory(device, buffer_.get(), memory_.get(), 0), "vkBindBufferMemory");
@@ -195,8 +193,8 @@ void VulkanTexture::upload(std::uint32_t layer, std::uint32_t level, std::span<c
         VkBufferImageCopy region{};
         region.imageSubresource = {dataAspect(desc_.format), level, layer, 1};
         region.imageExtent = {rhi::mipExtent(desc_.width, level), rhi::mipExtent(desc_.height, level), 1};
-        vkCmdCopyBufferToImage(commandBuffer, staging.handle(), image_.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                               1, &region);
+        vkCmdCopyBufferToImage(commandBuffer, staging.handle(), image_.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                               &region);
         transition(commandBuffer, layer, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, restingLayout_);
     });
 }
@@ -239,10 +237,10 @@ std::vector<double> VulkanTimestampQueries::readNanoseconds() const
 {
     // Pairs of (value, availability); no WAIT flag, so a query never written cannot hang us.
     std::vector<std::uint64_t> results(std::size_t(count_) * 2);
-    const VkResult result = vkGetQueryPoolResults(context_->device, pool_.get(), 0, count_,
-                                                  results.size() * sizeof(std::uint64_t), results.data(),
-                                                  2 * sizeof(std::uint64_t),
-                                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+    const VkResult result =
+        vkGetQueryPoolResults(context_->device, pool_.get(), 0, count_, results.size() * sizeof(std::uint64_t),
+                              results.data(), 2 * sizeof(std::uint64_t),
+                              VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
     if (result != VK_NOT_READY)
         check(result, "vkGetQueryPoolResults");
     const double period = context_->properties.limits.timestampPeriod;

@@ -35,7 +35,6 @@ public:
     VkBuffer handle() const { return buffer_.handle(); }
 
 private:
-
     rhi::BufferDesc desc_;
     MappedBuffer buffer_;
 };

@@ -20,7 +20,8 @@ namespace {
 VkSurfaceFormatKHR chooseFormat(VkPhysicalDevice device, VkSurfaceKHR surface)
 {
     std::uint32_t count = 0;
-    check(vkGetPhysicalDeviceSurfaceFormatsKHR(device, surface, &count, nullptr), "vkGetPhysicalDeviceSurfaceFormatsKHR");
+    check(vkGetPhysicalDeviceSurfaceFormatsKHR(device, surface, &count, nullptr),
+          "vkGetPhysicalDeviceSurfaceFormatsKHR");
     std::vector<VkSurfaceFormatKHR> formats(count);
     check(vkGetPhysicalDeviceSurfaceFormatsKHR(device, surface, &count, formats.data()),
           "vkGetPhysicalDeviceSurfaceFormatsKHR");
@@ -124,8 +125,8 @@ bool VulkanSwapchain::rebuild()
 
     VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
     info.surface = surface_.get();
-    info.minImageCount = caps.maxImageCount == 0 ? caps.minImageCount + 1
-                                                  : std::min(caps.minImageCount + 1, caps.maxImageCount);
+    info.minImageCount =
+        caps.maxImageCount == 0 ? caps.minImageCount + 1 : std::min(caps.minImageCount + 1, caps.maxImageCount);
     info.imageFormat = format.format;
     info.imageColorSpace = format.colorSpace;
     info.imageExtent = extent_;
@@ -137,13 +138,15 @@ bool VulkanSwapchain::rebuild()
     info.presentMode = VK_PRESENT_MODE_FIFO_KHR; // the one mode every driver offers
     info.clipped = VK_TRUE;
     info.oldSwapchain = swapchain_.get();
-    UniqueSwapchain created = createOwned<UniqueSwapchain>(context_->device, vkCreateSwapchainKHR, info, "vkCreateSwapchainKHR");
+    UniqueSwapchain created =
+        createOwned<UniqueSwapchain>(context_->device, vkCreateSwapchainKHR, info, "vkCreateSwapchainKHR");
     destroySwapchain();
     swapchain_ = std::move(created);
     std::uint32_t count = 0;
     check(vkGetSwapchainImagesKHR(context_->device, swapchain_.get(), &count, nullptr), "vkGetSwapchainImagesKHR");
     images_.resize(count);
-    check(vkGetSwapchainImagesKHR(context_->device, swapchain_.get(), &count, images_.data()), "vkGetSwapchainImagesKHR");
+    check(vkGetSwapchainImagesKHR(context_->device, swapchain_.get(), &count, images_.data()),
+          "vkGetSwapchainImagesKHR");
     return true;
 }
 
@@ -178,7 +181,8 @@ void VulkanSwapchain::show(const rhi::Texture& image, rhi::Image* window)
         readback.emplace(context_, readbackSize, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     context_->runOnce([&](VkCommandBuffer commandBuffer) {
         source.transition(commandBuffer, 0, source.restingLayout(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-        transitionSwapchainImage(commandBuffer, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+        transitionSwapchainImage(commandBuffer, target, VK_IMAGE_LAYOUT_UNDEFINED,
+                                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         // Both images keep row 0 at the top (the RHI's layout, and what a swapchain shows first), so
         // the blit copies rows straight; it converts RGBA to the window's BGRA and scales if needed.
         VkImageBlit region{};

@@ -17,7 +17,8 @@ std::uint32_t pipelineIndex(bool doubleSided, bool clip) { return (doubleSided ?
 rhi::ShaderSource receiverFragment(bool clip)
 {
     rhi::ShaderSource source = litShader("receiver_prepass.frag");
-    source.includes.push_back({"receiver_prepass_variant.glsl", fmt::format("#define PENUMBRA_RECEIVER_CLIP {}\n", clip ? 1 : 0)});
+    source.includes.push_back(
+        {"receiver_prepass_variant.glsl", fmt::format("#define PENUMBRA_RECEIVER_CLIP {}\n", clip ? 1 : 0)});
     return source;
 }
 
@@ -27,8 +28,8 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::ui
     : samples_(samples), receivers_(receivers),
       vertex_(device.createShader(litShader(receivers ? "receiver_prepass.vert" : "depth_prepass.vert"))),
       // Depth only, no discard: early depth testing stays on.
-      opaqueFragment_(device.createShader(receivers ? receiverFragment(false)
-                                                    : shaders::load("shadow_caster_opaque.frag"))),
+      opaqueFragment_(
+          device.createShader(receivers ? receiverFragment(false) : shaders::load("shadow_caster_opaque.frag"))),
       clipFragment_(device.createShader(receivers ? receiverFragment(true) : litShader("depth_prepass_clip.frag")))
 {
     rhi::PipelineDesc desc;
@@ -47,8 +48,8 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::ui
         for (const bool doubleSided : {false, true}) {
             desc.fragment = clip ? clipFragment_.get() : opaqueFragment_.get();
             desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-            desc.debugName = fmt::format("depth prepass ({}{}, {}{})", receivers ? "receivers, " : "", clip ? "clip" : "opaque",
-                                         doubleSided ? "double-sided" : "culled",
+            desc.debugName = fmt::format("depth prepass ({}{}, {}{})", receivers ? "receivers, " : "",
+                                         clip ? "clip" : "opaque", doubleSided ? "double-sided" : "culled",
                                          samples > 1 ? fmt::format(", {}x MSAA", samples) : std::string());
             pipelines_[pipelineIndex(doubleSided, clip)] = device.createPipeline(desc);
         }

@@ -71,14 +71,21 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
     } else {
         desc.depth = {.test = true, .write = !blend, .compare = rhi::DepthTest::Nearer};
         if (blend)
-            target.blend = {true, rhi::BlendFactor::SrcAlpha, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add,
-                            rhi::BlendFactor::One, rhi::BlendFactor::OneMinusSrcAlpha, rhi::BlendOp::Add};
+            target.blend = {true,
+                            rhi::BlendFactor::SrcAlpha,
+                            rhi::BlendFactor::OneMinusSrcAlpha,
+                            rhi::BlendOp::Add,
+                            rhi::BlendFactor::One,
+                            rhi::BlendFactor::OneMinusSrcAlpha,
+                            rhi::BlendOp::Add};
     }
     desc.colorTargets = {target};
-    desc.debugName = fmt::format("lit ({}, {}{}, features {:#x})",
-                                 features.depthPrepassed ? "after the depth prepass" : blend ? "blended" : "opaque",
-                                 doubleSided ? "double-sided" : "culled", samplesSuffix(samples_),
-                                 featureKey(features));
+    desc.debugName =
+        fmt::format("lit ({}, {}{}, features {:#x})",
+                    features.depthPrepassed ? "after the depth prepass"
+                    : blend                 ? "blended"
+                                            : "opaque",
+                    doubleSided ? "double-sided" : "culled", samplesSuffix(samples_), featureKey(features));
     pipeline = device_.createPipeline(desc);
     return *pipeline;
 }

@@ -31,7 +31,7 @@ private:
     rhi::Device& device_;
     const rhi::Shader& vertex_;
     std::uint32_t samples_;
-    std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Shader>> fragments_;   // by featureKey
+    std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Shader>> fragments_; // by featureKey
     std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Pipeline>> pipelines_; // by featureKey, sides, blend
 };
 

@@ -16,7 +16,8 @@ namespace {
 
 rhi::UniformLayout collectionLayout()
 {
-    return {"Collection", sizeof(ScreenSpaceShadowUniforms),
+    return {"Collection",
+            sizeof(ScreenSpaceShadowUniforms),
             {
                 PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, clipToWorld),
                 PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, cameraPosition),

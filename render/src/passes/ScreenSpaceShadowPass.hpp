@@ -67,7 +67,7 @@ private:
     rhi::Device& device_;
     std::unique_ptr<rhi::Shader> vertex_;
     std::unique_ptr<rhi::Sampler> sampler_;
-    std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Shader>> fragments_;   // by shadowFeatureKey
+    std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Shader>> fragments_; // by shadowFeatureKey
     std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Pipeline>> pipelines_; // by shadowFeatureKey
     const rhi::Texture* depth_ = nullptr;
     std::unique_ptr<rhi::Texture> positionDx_, positionDy_, shadows_;

@@ -60,7 +60,8 @@ bool sameTiles(const shadows::StaticShadowMap& a, const shadows::StaticShadowMap
     for (std::size_t i = 0; i < a.tiles.size(); ++i) {
         const rhi::Viewport& x = a.tiles[i].viewport;
         const rhi::Viewport& y = b.tiles[i].viewport;
-        if (a.tiles[i].tile != b.tiles[i].tile || x.x != y.x || x.y != y.y || x.width != y.width || x.height != y.height)
+        if (a.tiles[i].tile != b.tiles[i].tile || x.x != y.x || x.y != y.y || x.width != y.width ||
+            x.height != y.height)
             return false;
     }
     return true;
@@ -157,7 +158,8 @@ void StaticShadowCache::keepDrawn(shadows::StaticShadowMap& map, shadows::Static
         const std::uint32_t tile = map.tiles.front().tile;
         uniforms.directionalWorldToMap[tile] = was.directionalWorldToMap[tile];
         uniforms.directionalBounds[tile] = was.directionalBounds[tile];
-        if (map.litIndex < shadows::maxStaticMapDirectionalLights && old.litIndex < shadows::maxStaticMapDirectionalLights)
+        if (map.litIndex < shadows::maxStaticMapDirectionalLights &&
+            old.litIndex < shadows::maxStaticMapDirectionalLights)
             uniforms.directionalLights[map.litIndex] =
                 glm::vec4(was.directionalLights[old.litIndex].x, uniforms.directionalLights[map.litIndex].y,
                           was.directionalLights[old.litIndex].z, was.directionalLights[old.litIndex].w);

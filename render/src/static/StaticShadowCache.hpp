@@ -60,7 +60,7 @@ public:
 
 private:
     struct Key {
-        std::uint64_t view = 0;    // tiles, viewports, matrices, biases
+        std::uint64_t view = 0; // tiles, viewports, matrices, biases
         std::uint64_t casters = 0; // the static casters drawn and what they are
     };
     using LightId = std::pair<shadows::ShadowLightKind, std::uint32_t>;

@@ -4,8 +4,7 @@
 
 namespace penumbra::render {
 
-StaticTileCache::StaticTileCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat,
-                                 std::string name)
+StaticTileCache::StaticTileCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat, std::string name)
     : device_(device), name_(std::move(name)), pass_(device, vertexFormat)
 {
 }

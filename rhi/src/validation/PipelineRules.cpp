@@ -57,7 +57,8 @@ void checkPipeline(const Capabilities& caps, const PipelineDesc& desc)
 {
     if (!desc.vertex || !desc.fragment)
         throw Error(fmt::format("pipeline '{}' needs a vertex and a fragment shader", desc.debugName));
-    if (desc.vertex->compiled().stage != ShaderStage::Vertex || desc.fragment->compiled().stage != ShaderStage::Fragment)
+    if (desc.vertex->compiled().stage != ShaderStage::Vertex ||
+        desc.fragment->compiled().stage != ShaderStage::Fragment)
         throw Error(fmt::format("pipeline '{}': shader stages are swapped", desc.debugName));
     if (desc.depthFormat && !isDepthFormat(*desc.depthFormat))
         throw Error(fmt::format("pipeline '{}': depthFormat {} is not a depth format", desc.debugName,
@@ -90,11 +91,11 @@ void checkPipeline(const Capabilities& caps, const PipelineDesc& desc)
                                            desc.samples));
     }
     if (desc.depth.clamp && !caps.depthClamp)
-        throw UnsupportedError(fmt::format("pipeline '{}': depth clamp is not supported by {}", desc.debugName,
-                                           caps.device));
+        throw UnsupportedError(
+            fmt::format("pipeline '{}': depth clamp is not supported by {}", desc.debugName, caps.device));
     if (desc.depth.bias.clamp != 0.0f && !caps.depthBiasClamp)
-        throw UnsupportedError(fmt::format("pipeline '{}': depth bias clamp is not supported by {}", desc.debugName,
-                                           caps.device));
+        throw UnsupportedError(
+            fmt::format("pipeline '{}': depth bias clamp is not supported by {}", desc.debugName, caps.device));
     pipelineBindings(desc);
     checkUniformLayouts(desc);
 }

@@ -20,10 +20,9 @@ bool filtersLinearly(const SamplerDesc& desc)
 void checkMultisampledTexture(const Capabilities& caps, const TextureDesc& desc)
 {
     if (desc.samples > 1 && (caps.format(desc.format).sampleCounts & desc.samples) == 0)
-        throw UnsupportedError(fmt::format("texture '{}': {} offers {} samples for {} render targets, not {}",
-                                           desc.debugName, caps.device,
-                                           sampleCountList(caps.format(desc.format).sampleCounts),
-                                           formatName(desc.format), desc.samples));
+        throw UnsupportedError(
+            fmt::format("texture '{}': {} offers {} samples for {} render targets, not {}", desc.debugName, caps.device,
+                        sampleCountList(caps.format(desc.format).sampleCounts), formatName(desc.format), desc.samples));
     if (desc.usage != TextureUsage::RenderTarget)
         throw Error(fmt::format("texture '{}': a multisampled texture ({} samples) is a RenderTarget and not Sampled "
                                 "(resolveTexture makes a texture to sample)",
@@ -67,15 +66,15 @@ void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc)
                                 caps.maxTextureLayers));
     const std::uint32_t fullChain = fullMipChain(desc.width, desc.height);
     if (desc.mipLevels == 0 || desc.mipLevels > fullChain)
-        throw Error(fmt::format("texture '{}': mipLevels {} is outside 1..{} (the full chain of {}x{})",
-                                desc.debugName, desc.mipLevels, fullChain, desc.width, desc.height));
+        throw Error(fmt::format("texture '{}': mipLevels {} is outside 1..{} (the full chain of {}x{})", desc.debugName,
+                                desc.mipLevels, fullChain, desc.width, desc.height));
     const FormatSupport& support = caps.format(desc.format);
     if (hasFlag(desc.usage, TextureUsage::Sampled) && !support.sampled)
-        throw UnsupportedError(fmt::format("texture '{}': {} cannot sample {}", desc.debugName, caps.device,
-                                           formatName(desc.format)));
+        throw UnsupportedError(
+            fmt::format("texture '{}': {} cannot sample {}", desc.debugName, caps.device, formatName(desc.format)));
     if (hasFlag(desc.usage, TextureUsage::RenderTarget) && !support.renderTarget)
-        throw UnsupportedError(fmt::format("texture '{}': {} cannot render to {}", desc.debugName, caps.device,
-                                           formatName(desc.format)));
+        throw UnsupportedError(
+            fmt::format("texture '{}': {} cannot render to {}", desc.debugName, caps.device, formatName(desc.format)));
     if (desc.samples != 1 && desc.samples != 2 && desc.samples != 4 && desc.samples != 8)
         throw Error(fmt::format("texture '{}': samples {} is not 1, 2, 4 or 8", desc.debugName, desc.samples));
     if (desc.samples > 1)
@@ -113,8 +112,8 @@ void checkSubresource(std::string_view what, const TextureDesc& desc, std::uint3
         throw Error(fmt::format("{}: layer {} of texture '{}' is out of range [0, {}]", what, layer, desc.debugName,
                                 desc.layers - 1));
     if (level >= desc.mipLevels)
-        throw Error(fmt::format("{}: mip level {} of texture '{}' is out of range [0, {}]", what, level,
-                                desc.debugName, desc.mipLevels - 1));
+        throw Error(fmt::format("{}: mip level {} of texture '{}' is out of range [0, {}]", what, level, desc.debugName,
+                                desc.mipLevels - 1));
 }
 
 void checkTextureUpload(const TextureDesc& desc, std::uint32_t layer, std::uint32_t level, std::uint64_t size)
@@ -149,8 +148,8 @@ void checkTextureCopy(const Texture& src, std::uint32_t srcLayer, const Texture&
     checkSubresource("copyTexture destination", b, dstLayer, 0);
     if (a.width != b.width || a.height != b.height || a.format != b.format || a.mipLevels != b.mipLevels)
         throw Error(fmt::format("copyTexture: '{}' is {}x{} {} with {} levels but '{}' is {}x{} {} with {} levels",
-                                a.debugName, a.width, a.height, formatName(a.format), a.mipLevels, b.debugName,
-                                b.width, b.height, formatName(b.format), b.mipLevels));
+                                a.debugName, a.width, a.height, formatName(a.format), a.mipLevels, b.debugName, b.width,
+                                b.height, formatName(b.format), b.mipLevels));
     if (&src == &dst && srcLayer == dstLayer)
         throw Error(fmt::format("copyTexture: layer {} of '{}' onto itself", srcLayer, a.debugName));
 }
@@ -199,15 +198,14 @@ void checkTextureResolve(const Texture& src, const Texture& dst)
         throw Error(fmt::format("resolveTexture: source '{}' is {}; only colour textures are resolved", a.debugName,
                                 formatName(a.format)));
     if (b.samples != 1)
-        throw Error(fmt::format("resolveTexture: destination '{}' is multisampled ({} samples)", b.debugName,
-                                b.samples));
+        throw Error(
+            fmt::format("resolveTexture: destination '{}' is multisampled ({} samples)", b.debugName, b.samples));
     if (!hasFlag(b.usage, TextureUsage::RenderTarget) || b.layers != 1)
-        throw Error(fmt::format("resolveTexture: destination '{}' must be a RenderTarget texture of one layer",
-                                b.debugName));
+        throw Error(
+            fmt::format("resolveTexture: destination '{}' must be a RenderTarget texture of one layer", b.debugName));
     if (a.width != b.width || a.height != b.height || a.format != b.format)
-        throw Error(fmt::format("resolveTexture: '{}' is {}x{} {} but '{}' is {}x{} {}", a.debugName, a.width,
-                                a.height, formatName(a.format), b.debugName, b.width, b.height,
-                                formatName(b.format)));
+        throw Error(fmt::format("resolveTexture: '{}' is {}x{} {} but '{}' is {}x{} {}", a.debugName, a.width, a.height,
+                                formatName(a.format), b.debugName, b.width, b.height, formatName(b.format)));
 }
 
 void checkBufferRange(std::string_view what, const BufferDesc& buffer, std::uint64_t offset, std::uint64_t size)

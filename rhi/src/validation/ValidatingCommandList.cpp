@@ -254,9 +254,8 @@ void ValidatingCommandList::draw(std::uint32_t vertexCount, std::uint32_t instan
     apiDraw(vertexCount, instanceCount, firstVertex, firstInstance);
 }
 
-void ValidatingCommandList::drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount,
-                                        std::uint32_t firstIndex, std::int32_t vertexOffset,
-                                        std::uint32_t firstInstance)
+void ValidatingCommandList::drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
+                                        std::int32_t vertexOffset, std::uint32_t firstInstance)
 {
     if (validate_) {
         checkDraw("drawIndexed");
@@ -266,8 +265,8 @@ void ValidatingCommandList::drawIndexed(std::uint32_t indexCount, std::uint32_t 
     apiDrawIndexed(indexCount, instanceCount, firstIndex, vertexOffset, firstInstance);
 }
 
-void ValidatingCommandList::copyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst,
-                                       std::uint64_t dstOffset, std::uint64_t size)
+void ValidatingCommandList::copyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,
+                                       std::uint64_t size)
 {
     if (validate_) {
         requireOutsidePass("copyBuffer");

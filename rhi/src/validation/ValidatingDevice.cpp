@@ -12,10 +12,7 @@ ValidatingDevice::ValidatingDevice(bool validate) : validate_(validate), lifetim
 {
 }
 
-ValidatingDevice::~ValidatingDevice()
-{
-    lifetime_->alive.store(false, std::memory_order_release);
-}
+ValidatingDevice::~ValidatingDevice() { lifetime_->alive.store(false, std::memory_order_release); }
 
 // Out of memory is checked with validation off too: it is the machine's limit, not a misuse of the API.
 std::unique_ptr<Buffer> ValidatingDevice::createBuffer(const BufferDesc& desc)

@@ -14,13 +14,20 @@ namespace {
 std::string typeName(int type)
 {
     switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    case TINYGLTF_TYPE_SCALAR:
+        return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+        return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+        return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+        return "VEC4";
+    case TINYGLTF_TYPE_MAT2:
+        return "MAT2";
+    case TINYGLTF_TYPE_MAT3:
+        return "MAT3";
+    case TINYGLTF_TYPE_MAT4:
+        return "MAT4";
     }
     return fmt::format("type {}", type);
 }
@@ -28,14 +35,22 @@ std::string typeName(int type)
 std::string componentName(int componentType)
 {
     switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_INT: return "INT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
-    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return "DOUBLE";
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_INT:
+        return "INT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return "FLOAT";
+    case TINYGLTF_COMPONENT_TYPE_DOUBLE:
+        return "DOUBLE";
     }
     return fmt::format("component type {}", componentType);
 }
@@ -72,13 +87,14 @@ ElementView viewOf(const Document& document, int index, std::string_view owner, 
     if (accessor.bufferView < 0 || accessor.count == 0)
         return view;
 
-    const tinygltf::BufferView& bufferView =
-        document.at(model.bufferViews, accessor.bufferView, "buffer view", what);
+    const tinygltf::BufferView& bufferView = document.at(model.bufferViews, accessor.bufferView, "buffer view", what);
     const std::string viewName = fmt::format("buffer view {}", accessor.bufferView);
     const tinygltf::Buffer& buffer = document.at(model.buffers, bufferView.buffer, "buffer", viewName);
-    if (bufferView.byteOffset > buffer.data.size() || bufferView.byteLength > buffer.data.size() - bufferView.byteOffset)
+    if (bufferView.byteOffset > buffer.data.size() ||
+        bufferView.byteLength > buffer.data.size() - bufferView.byteOffset)
         document.fail(fmt::format("{} ends at byte {}, past the end of buffer {} ({} bytes)", viewName,
-                                  bufferView.byteOffset + bufferView.byteLength, bufferView.buffer, buffer.data.size()));
+                                  bufferView.byteOffset + bufferView.byteLength, bufferView.buffer,
+                                  buffer.data.size()));
     if (bufferView.byteStride != 0) {
         if (bufferView.byteStride < elementSize)
             document.fail(fmt::format("{}: byteStride {} of {} is smaller than one {} of {} ({} bytes)", what,
@@ -107,11 +123,16 @@ T load(const unsigned char* at)
 float component(const unsigned char* at, int componentType)
 {
     switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return float(load<std::uint8_t>(at)) / 255.0f;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return float(load<std::uint16_t>(at)) / 65535.0f;
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return std::max(float(load<std::int8_t>(at)) / 127.0f, -1.0f);
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return std::max(float(load<std::int16_t>(at)) / 32767.0f, -1.0f);
-    default: return load<float>(at);
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return float(load<std::uint8_t>(at)) / 255.0f;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return float(load<std::uint16_t>(at)) / 65535.0f;
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return std::max(float(load<std::int8_t>(at)) / 127.0f, -1.0f);
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return std::max(float(load<std::int16_t>(at)) / 32767.0f, -1.0f);
+    default:
+        return load<float>(at);
     }
 }
 
@@ -119,11 +140,16 @@ float component(const unsigned char* at, int componentType)
 double normalizedScale(int componentType)
 {
     switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1.0 / 255.0;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 1.0 / 65535.0;
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return 1.0 / 127.0;
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return 1.0 / 32767.0;
-    default: return 1.0;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return 1.0 / 255.0;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return 1.0 / 65535.0;
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return 1.0 / 127.0;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return 1.0 / 32767.0;
+    default:
+        return 1.0;
     }
 }
 
@@ -251,7 +277,8 @@ std::vector<glm::vec4> readColors(const Document& document, int accessor, std::s
 
 std::vector<std::uint32_t> readIndices(const Document& document, int accessor, std::string_view owner)
 {
-    constexpr std::array<int, 3> indexTypes{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+    constexpr std::array<int, 3> indexTypes{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
                                             TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT};
     const ElementView view = viewOf(document, accessor, owner, "indices", TINYGLTF_TYPE_SCALAR, indexTypes);
     std::vector<std::uint32_t> indices(view.count, 0u);
@@ -260,9 +287,15 @@ std::vector<std::uint32_t> readIndices(const Document& document, int accessor, s
     for (std::size_t i = 0; i < view.count; ++i) {
         const unsigned char* at = view.data + i * view.stride;
         switch (view.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: indices[i] = load<std::uint8_t>(at); break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: indices[i] = load<std::uint16_t>(at); break;
-        default: indices[i] = load<std::uint32_t>(at); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            indices[i] = load<std::uint8_t>(at);
+            break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            indices[i] = load<std::uint16_t>(at);
+            break;
+        default:
+            indices[i] = load<std::uint32_t>(at);
+            break;
         }
     }
     // glTF 2.0, section 3.7.2.1: the largest value of the index type is the primitive restart value, never an index.

@@ -16,9 +16,9 @@ std::vector<std::string> Deviations::notes() const
 {
     std::vector<std::string> out;
     for (const auto& [kind, where] : kinds_)
-        out.push_back(where.second > 1 ? fmt::format("tolerated: {} at {} (and {} more)", kind, where.first,
-                                                     where.second - 1)
-                                       : fmt::format("tolerated: {} at {}", kind, where.first));
+        out.push_back(where.second > 1
+                          ? fmt::format("tolerated: {} at {} (and {} more)", kind, where.first, where.second - 1)
+                          : fmt::format("tolerated: {} at {}", kind, where.first));
     return out;
 }
 

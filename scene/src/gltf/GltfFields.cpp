@@ -124,8 +124,8 @@ std::vector<int> Fields::indices(std::string_view key, std::string_view array, s
     if (!value)
         return {};
     if (!value->is_array() || value->size() < minItems)
-        fail(key, fmt::format("expected an array of at least {} indices of {}, got {}", minItems, array,
-                              shortDump(*value)));
+        fail(key,
+             fmt::format("expected an array of at least {} indices of {}, got {}", minItems, array, shortDump(*value)));
     const std::size_t size = file_.count(array);
     std::vector<int> out;
     std::set<int> seen;
@@ -209,8 +209,7 @@ std::optional<std::string> Fields::oneOf(std::string_view key, std::initializer_
     const Json* value = member(key);
     if (!value)
         return std::nullopt;
-    if (!value->is_string() ||
-        std::find(allowed.begin(), allowed.end(), value->get<std::string>()) == allowed.end())
+    if (!value->is_string() || std::find(allowed.begin(), allowed.end(), value->get<std::string>()) == allowed.end())
         fail(key, fmt::format("expected one of {}, got {}", joined(allowed), shortDump(*value)));
     return value->get<std::string>();
 }

@@ -112,12 +112,13 @@ std::string trimmed(std::string text)
 
 } // namespace
 
-Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes,
-                      const std::filesystem::path& folder, std::vector<std::string>& notes)
+Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes, const std::filesystem::path& folder,
+                      std::vector<std::string>& notes)
 {
     const bool glb = isGlb(bytes);
-    const Json root = parseJson(name, glb ? glbJson(name, bytes)
-                                          : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    const Json root =
+        parseJson(name, glb ? glbJson(name, bytes)
+                            : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
     Deviations deviations;
     const JsonFile file{name, root, deviations};
     checkObjectCounts(file);
@@ -129,11 +130,10 @@ Document readDocument(const std::string& name, std::span<const std::uint8_t> byt
     tinygltf::Model model;
     std::string error, warning;
     const std::string base = folder.string();
-    const bool ok = glb ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
-                                                      unsigned(bytes.size()), base)
-                        : loader.LoadASCIIFromString(&model, &error, &warning,
-                                                     reinterpret_cast<const char*>(bytes.data()),
-                                                     unsigned(bytes.size()), base);
+    const bool ok =
+        glb ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), base)
+            : loader.LoadASCIIFromString(&model, &error, &warning, reinterpret_cast<const char*>(bytes.data()),
+                                         unsigned(bytes.size()), base);
     if (!imageFailure.empty())
         throw GltfError(fmt::format("{}: {}", name, imageFailure));
     if (!ok)

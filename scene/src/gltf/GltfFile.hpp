@@ -17,7 +17,7 @@ namespace penumbra::scene::gltf {
 Document readDocument(const std::filesystem::path& path, std::vector<std::string>& notes);
 
 // The same for a file's bytes, with external buffers and images looked up in `folder`.
-Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes,
-                      const std::filesystem::path& folder, std::vector<std::string>& notes);
+Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes, const std::filesystem::path& folder,
+                      std::vector<std::string>& notes);
 
 } // namespace penumbra::scene::gltf

@@ -73,28 +73,28 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
     if (const std::optional<Dimensions> header = headerDimensions(bytes);
         header && (header->width > kMaxImageSide || header->height > kMaxImageSide ||
                    std::uint64_t(header->width) * header->height > kMaxImageTexels))
-        return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", header->width,
-                           header->height, kMaxImageSide, kMaxImageTexels);
+        return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", header->width, header->height,
+                           kMaxImageSide, kMaxImageTexels);
     const int size = int(bytes.size());
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels))
         return fmt::format("has an unreadable header: {}", stbi_failure_reason());
     if (width <= 0 || height <= 0 || std::uint32_t(width) > kMaxImageSide || std::uint32_t(height) > kMaxImageSide ||
         std::uint64_t(width) * std::uint64_t(height) > kMaxImageTexels)
-        return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", width, height,
-                           kMaxImageSide, kMaxImageTexels);
+        return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", width, height, kMaxImageSide,
+                           kMaxImageTexels);
     const bool wide = stbi_is_16_bit_from_memory(bytes.data(), size) != 0;
     int decodedWidth = 0, decodedHeight = 0, decodedChannels = 0;
     std::unique_ptr<void, StbFree> pixels(
-        wide ? static_cast<void*>(stbi_load_16_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight,
-                                                           &decodedChannels, 0))
-             : static_cast<void*>(stbi_load_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight,
-                                                        &decodedChannels, 0)));
+        wide ? static_cast<void*>(
+                   stbi_load_16_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &decodedChannels, 0))
+             : static_cast<void*>(
+                   stbi_load_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &decodedChannels, 0)));
     if (!pixels)
         return fmt::format("does not decode: {}", stbi_failure_reason());
     if (decodedWidth != width || decodedHeight != height || decodedChannels < 1 || decodedChannels > 4)
-        return fmt::format("decoded to {}x{} texels of {} channels, its header says {}x{}", decodedWidth,
-                           decodedHeight, decodedChannels, width, height);
+        return fmt::format("decoded to {}x{} texels of {} channels, its header says {}x{}", decodedWidth, decodedHeight,
+                           decodedChannels, width, height);
     const std::size_t length =
         std::size_t(width) * std::size_t(height) * std::size_t(decodedChannels) * (wide ? 2u : 1u);
     image.width = width;

@@ -16,9 +16,12 @@ namespace {
 double quantizationStep(int componentType)
 {
     switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return 1.0 / 127.0;
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return 1.0 / 32767.0;
-    default: return 0.0;
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return 1.0 / 127.0;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return 1.0 / 32767.0;
+    default:
+        return 0.0;
     }
 }
 

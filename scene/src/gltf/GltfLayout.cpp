@@ -69,7 +69,8 @@ void checkVertexAlignment(const JsonFile& file)
                              componentCount(accessor["type"].get<std::string>());
         const std::string at = fmt::format("/accessors/{}", a);
         if ((unsignedOf(view, "byteOffset") + unsignedOf(accessor, "byteOffset")) % 4 != 0)
-            file.fail(at + "/byteOffset", "a vertex attribute starts at a byte of its buffer that is not a multiple of 4");
+            file.fail(at + "/byteOffset",
+                      "a vertex attribute starts at a byte of its buffer that is not a multiple of 4");
         if (!view.contains("byteStride") && element % 4 != 0)
             file.fail(at, fmt::format("vertex attribute elements of {} bytes need a byteStride in buffer view {}",
                                       element, viewIndex));

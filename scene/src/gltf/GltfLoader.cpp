@@ -69,27 +69,37 @@ void addLight(const Document& document, const gltf::LightInstance& instance, Sce
     const auto intensity = float(light.intensity);
     const float range = light.range > 0.0 ? float(light.range) : defaultRange(intensity);
     if (light.type == "directional") {
-        scene.lights.push_back({.name = light.name, .color = color, .intensity = intensity,
+        scene.lights.push_back({.name = light.name,
+                                .color = color,
+                                .intensity = intensity,
                                 .direction = forward(instance.world),
                                 .angularDiameter = sourceSize(document, light, owner, kDefaultAngularDiameter),
                                 .shadowUpdate = shadowUpdate(document, light, owner)});
     } else if (light.type == "spot") {
         auto outer = float(light.spot.outerConeAngle);
         if (outer > kMaxSpotOuterAngle) {
-            notes.push_back(fmt::format("{}: outer cone angle {} narrowed to {} radians", owner, outer, kMaxSpotOuterAngle));
+            notes.push_back(
+                fmt::format("{}: outer cone angle {} narrowed to {} radians", owner, outer, kMaxSpotOuterAngle));
             outer = kMaxSpotOuterAngle;
         }
-        scene.spotLights.push_back({.name = light.name, .color = color, .intensity = intensity,
-                                    .position = origin(instance.world), .direction = forward(instance.world),
-                                    .range = range, .innerAngle = float(light.spot.innerConeAngle),
+        scene.spotLights.push_back({.name = light.name,
+                                    .color = color,
+                                    .intensity = intensity,
+                                    .position = origin(instance.world),
+                                    .direction = forward(instance.world),
+                                    .range = range,
+                                    .innerAngle = float(light.spot.innerConeAngle),
                                     .outerAngle = outer,
                                     .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius),
                                     .shadowUpdate = shadowUpdate(document, light, owner)});
     } else if (light.type == "point") {
-        scene.pointLights.push_back({.name = light.name, .color = color, .intensity = intensity,
-                                     .position = origin(instance.world), .range = range,
+        scene.pointLights.push_back({.name = light.name,
+                                     .color = color,
+                                     .intensity = intensity,
+                                     .position = origin(instance.world),
+                                     .range = range,
                                      .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius),
-                                    .shadowUpdate = shadowUpdate(document, light, owner)});
+                                     .shadowUpdate = shadowUpdate(document, light, owner)});
     } else {
         document.fail(fmt::format("{}: type '{}' is not directional, spot or point", owner, light.type));
     }

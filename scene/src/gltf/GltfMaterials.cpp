@@ -106,8 +106,8 @@ void readTextureTransform(const Document& document, const tinygltf::ExtensionMap
     if (value.Has("rotation"))
         texture.transform.rotation = float(number(document, value.Get("rotation"), field + ".rotation"));
     if (value.Has("texCoord"))
-        texture.texCoord = supportedSet(document, number(document, value.Get("texCoord"), field + ".texCoord"),
-                                        field + ".texCoord");
+        texture.texCoord =
+            supportedSet(document, number(document, value.Get("texCoord"), field + ".texCoord"), field + ".texCoord");
 }
 
 const tinygltf::Value* extension(const tinygltf::Material& material, const std::string& name)
@@ -128,8 +128,8 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
         const std::string owner = describe("material", index, gltf.name);
         const tinygltf::PbrMetallicRoughness& pbr = gltf.pbrMetallicRoughness;
         if (pbr.baseColorFactor.size() != 4)
-            document_.fail(fmt::format("{}: baseColorFactor has {} values, expected 4", owner,
-                                       pbr.baseColorFactor.size()));
+            document_.fail(
+                fmt::format("{}: baseColorFactor has {} values, expected 4", owner, pbr.baseColorFactor.size()));
         const auto unit = [&](double value, const std::string& field) {
             return inRange(document_, value, 0.0, 1.0, fmt::format("{}: {}", owner, field));
         };
@@ -144,7 +144,8 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
         material.doubleSided = gltf.doubleSided;
         material.unlit = extension(gltf, "KHR_materials_unlit") != nullptr;
         if (gltf.emissiveFactor.size() != 3)
-            document_.fail(fmt::format("{}: emissiveFactor has {} values, expected 3", owner, gltf.emissiveFactor.size()));
+            document_.fail(
+                fmt::format("{}: emissiveFactor has {} values, expected 3", owner, gltf.emissiveFactor.size()));
         float emissiveStrength = 1.0f;
         if (const tinygltf::Value* strength = extension(gltf, "KHR_materials_emissive_strength");
             strength && strength->Has("emissiveStrength")) {
@@ -159,8 +160,8 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
 
         // Base colour and emissive textures hold sRGB-encoded colour, the others linear data (glTF 2.0, section
         // 3.9); one glTF texture read both ways becomes two images.
-        const auto read = [&](TextureSlot slot, int textureIndex, int texCoord, const tinygltf::ExtensionMap& extensions,
-                              const char* field) {
+        const auto read = [&](TextureSlot slot, int textureIndex, int texCoord,
+                              const tinygltf::ExtensionMap& extensions, const char* field) {
             if (textureIndex < 0)
                 return;
             const std::string where = fmt::format("{}: {}", owner, field);

@@ -16,12 +16,18 @@ constexpr int kTriangles = TINYGLTF_MODE_TRIANGLES;
 std::string modeName(int mode)
 {
     switch (mode) {
-    case TINYGLTF_MODE_POINTS: return "POINTS";
-    case TINYGLTF_MODE_LINE: return "LINES";
-    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
-    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+    case TINYGLTF_MODE_POINTS:
+        return "POINTS";
+    case TINYGLTF_MODE_LINE:
+        return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP:
+        return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP:
+        return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+        return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+        return "TRIANGLE_FAN";
     }
     return fmt::format("{}", mode);
 }
@@ -58,7 +64,8 @@ MeshData readPrimitive(const Document& document, int meshIndex, int primitiveInd
 {
     const tinygltf::Mesh& gltfMesh = document.model().meshes[std::size_t(meshIndex)];
     const tinygltf::Primitive& primitive = gltfMesh.primitives[std::size_t(primitiveIndex)];
-    const std::string owner = fmt::format("{} primitive {}", describe("mesh", meshIndex, gltfMesh.name), primitiveIndex);
+    const std::string owner =
+        fmt::format("{} primitive {}", describe("mesh", meshIndex, gltfMesh.name), primitiveIndex);
     if (primitive.mode != -1 && primitive.mode != kTriangles)
         document.fail(fmt::format("{}: mode {} is not supported, only TRIANGLES", owner, modeName(primitive.mode)));
     const int positionAccessor = attribute(primitive, "POSITION");
@@ -88,8 +95,7 @@ MeshData readPrimitive(const Document& document, int meshIndex, int primitiveInd
             store(vertices[i], values[i]);
         return true;
     };
-    const bool hasNormals =
-        readAttribute("NORMAL", readVec3, [](Vertex& v, const glm::vec3& n) { v.normal = n; });
+    const bool hasNormals = readAttribute("NORMAL", readVec3, [](Vertex& v, const glm::vec3& n) { v.normal = n; });
     readAttribute("TEXCOORD_0", readTexCoords, [](Vertex& v, const glm::vec2& uv) { v.uv = uv; });
     readAttribute("TEXCOORD_1", readTexCoords, [](Vertex& v, const glm::vec2& uv) { v.uv1 = uv; });
     readAttribute("COLOR_0", readColors, [](Vertex& v, const glm::vec4& c) { v.color = c; });

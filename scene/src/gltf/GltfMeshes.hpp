@@ -16,8 +16,7 @@ namespace penumbra::scene::gltf {
 // Also reads TEXCOORD_1, COLOR_0 (multiplying the base colour) and TANGENT; a primitive whose material
 // has a normal texture read through uv set `normalTexCoord` and that has no TANGENT gets computed
 // tangents (computeTangents).
-MeshData readPrimitive(const Document& document, int mesh, int primitive,
-                       std::optional<std::uint32_t> normalTexCoord);
+MeshData readPrimitive(const Document& document, int mesh, int primitive, std::optional<std::uint32_t> normalTexCoord);
 
 // The same triangles with the opposite winding, for objects whose transform mirrors.
 MeshData reversedWinding(MeshData mesh);

@@ -17,8 +17,8 @@ NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node
         const std::optional<ShadowCasting> cast =
             value.IsString() ? parseShadowCasting(value.Get<std::string>()) : std::nullopt;
         if (!cast)
-            document.fail(fmt::format("{}/castShadows: expected one of \"on\", \"off\", \"twoSided\", \"shadowsOnly\"",
-                                      pointer));
+            document.fail(
+                fmt::format("{}/castShadows: expected one of \"on\", \"off\", \"twoSided\", \"shadowsOnly\"", pointer));
         shadows.cast = *cast;
     }
     if (ours.Has("receiveShadows")) {
@@ -29,7 +29,8 @@ NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node
     }
     if (ours.Has("mobility")) {
         const tinygltf::Value& value = ours.Get("mobility");
-        const std::optional<Mobility> mobility = value.IsString() ? parseMobility(value.Get<std::string>()) : std::nullopt;
+        const std::optional<Mobility> mobility =
+            value.IsString() ? parseMobility(value.Get<std::string>()) : std::nullopt;
         if (!mobility)
             document.fail(fmt::format("{}/mobility: expected \"static\" or \"dynamic\"", pointer));
         shadows.mobility = *mobility;

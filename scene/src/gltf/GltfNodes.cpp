@@ -25,8 +25,8 @@ constexpr float kSingularDeterminant = 1e-12f;
 class Walker {
 public:
     Walker(const Document& document, Scene& scene, std::vector<std::string>& notes)
-        : document_(document), model_(document.model()), scene_(scene), notes_(notes), materials_(document, scene, notes),
-          onPath_(model_.nodes.size(), false)
+        : document_(document), model_(document.model()), scene_(scene), notes_(notes),
+          materials_(document, scene, notes), onPath_(model_.nodes.size(), false)
     {
     }
 
@@ -106,19 +106,22 @@ private:
                                                  describe("mesh", meshIndex, mesh.name), p));
                 continue;
             }
-            const std::uint32_t material = materials_.material(
-                mesh.primitives[p].material, fmt::format("{} primitive {}", describe("mesh", meshIndex, mesh.name), p));
+            const std::uint32_t material =
+                materials_.material(mesh.primitives[p].material,
+                                    fmt::format("{} primitive {}", describe("mesh", meshIndex, mesh.name), p));
             const auto key = std::make_tuple(meshIndex, int(p), mirrored);
             auto found = meshes_.find(key);
             if (found == meshes_.end()) {
                 const std::optional<MaterialTexture>& normal = scene_.materials[material].texture(TextureSlot::Normal);
                 MeshData data = readPrimitive(document_, meshIndex, int(p),
                                               normal ? std::optional(normal->texCoord) : std::nullopt);
-                found = meshes_.emplace(key, scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data)))
-                            .first;
+                found =
+                    meshes_.emplace(key, scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data)))
+                        .first;
             }
-            Object& object = scene_.objects[scene_.addObject(
-                mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), found->second, material, world)];
+            Object& object =
+                scene_.objects[scene_.addObject(mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p),
+                                                found->second, material, world)];
             object.castShadows = shadows.cast;
             object.receiveShadows = shadows.receive;
             object.mobility = shadows.mobility;
@@ -133,8 +136,8 @@ private:
     MaterialTable materials_;
     std::vector<bool> onPath_;
     std::map<std::tuple<int, int, bool>, std::uint32_t> meshes_; // (mesh, primitive, mirrored) -> scene mesh
-    std::set<std::pair<int, int>> positionless_;                 // (mesh, primitive) noted as skipped
-    std::set<std::string> ignoredAttributes_;                    // instance attributes noted as ignored
+    std::set<std::pair<int, int>> positionless_; // (mesh, primitive) noted as skipped
+    std::set<std::string> ignoredAttributes_; // instance attributes noted as ignored
     NodeWalk walk_;
 };
 

@@ -19,8 +19,10 @@ TextureFilter magFilter(const Document& document, int code, const std::string& o
 {
     switch (code) {
     case kUndefined:
-    case kLinear: return TextureFilter::Linear;
-    case kNearest: return TextureFilter::Nearest;
+    case kLinear:
+        return TextureFilter::Linear;
+    case kNearest:
+        return TextureFilter::Nearest;
     }
     document.fail(fmt::format("{}: magFilter {} is not NEAREST (9728) or LINEAR (9729)", owner, code));
 }
@@ -55,9 +57,12 @@ void setMinFilter(const Document& document, int code, const std::string& owner, 
 TextureWrap wrap(const Document& document, int code, const char* field, const std::string& owner)
 {
     switch (code) {
-    case kRepeat: return TextureWrap::Repeat;
-    case kClampToEdge: return TextureWrap::ClampToEdge;
-    case kMirroredRepeat: return TextureWrap::MirroredRepeat;
+    case kRepeat:
+        return TextureWrap::Repeat;
+    case kClampToEdge:
+        return TextureWrap::ClampToEdge;
+    case kMirroredRepeat:
+        return TextureWrap::MirroredRepeat;
     }
     document.fail(fmt::format("{}: {} {} is not CLAMP_TO_EDGE (33071), MIRRORED_REPEAT (33648) or REPEAT (10497)",
                               owner, field, code));

@@ -112,7 +112,8 @@ void checkAccessors(const JsonFile& file)
         const std::int64_t component =
             *accessor.oneOf("componentType", {kByte, kUnsignedByte, kShort, kUnsignedShort, kUnsignedInt, kFloat});
         if (accessor.boolean("normalized").value_or(false) && (component == kFloat || component == kUnsignedInt))
-            accessor.fail("normalized", "only BYTE, UNSIGNED_BYTE, SHORT and UNSIGNED_SHORT components may be normalized");
+            accessor.fail("normalized",
+                          "only BYTE, UNSIGNED_BYTE, SHORT and UNSIGNED_SHORT components may be normalized");
         if (const auto count = accessor.integer("count", 1, kMaxInteger); std::uint64_t(*count) > kMaxAccessorElements)
             accessor.fail("count", fmt::format("{} elements, over the limit of {}", *count, kMaxAccessorElements));
         const std::string type = *accessor.oneOf("type", {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"});
@@ -167,10 +168,10 @@ void checkAttributeFormat(const JsonFile& file, const Fields& attributes, const 
     const std::int64_t component = accessor["componentType"];
     const bool normalized = accessor.value("normalized", false);
     const AttributeFormat format = *attributeFormat(semantic);
-    const bool ok = std::find(format.types.begin(), format.types.end(), type) != format.types.end() &&
-                    std::find(format.components.begin(), format.components.end(), component) !=
-                        format.components.end() &&
-                    (component == kFloat || normalized || semantic.rfind("JOINTS_", 0) == 0);
+    const bool ok =
+        std::find(format.types.begin(), format.types.end(), type) != format.types.end() &&
+        std::find(format.components.begin(), format.components.end(), component) != format.components.end() &&
+        (component == kFloat || normalized || semantic.rfind("JOINTS_", 0) == 0);
     if (!ok)
         attributes.fail(semantic, fmt::format("accessor {} is {} of component type {}{}, which {} may not use", index,
                                               type, component, normalized ? " (normalized)" : "", semantic));
@@ -189,10 +190,11 @@ void checkPrimitive(const JsonFile& file, const Fields& primitive, AccessorUsage
             checkAttributeFormat(file, attributes, semantic, index);
         const std::int64_t elements = accessorJson(file, index)["count"];
         if (count && *count != elements)
-            attributes.fail(semantic, fmt::format("accessor {} has {} elements, other attributes {}", index, elements,
-                                                  *count));
+            attributes.fail(semantic,
+                            fmt::format("accessor {} has {} elements, other attributes {}", index, elements, *count));
         count = elements;
-        if (const auto [used, fresh] = usage.emplace(index, "vertex attribute"); !fresh && used->second != "vertex attribute")
+        if (const auto [used, fresh] = usage.emplace(index, "vertex attribute");
+            !fresh && used->second != "vertex attribute")
             attributes.fail(semantic, fmt::format("accessor {} is also used as {}", index, used->second));
     }
     if (attributes.json().empty())
@@ -221,7 +223,8 @@ void checkPrimitive(const JsonFile& file, const Fields& primitive, AccessorUsage
     if (primitive.has("targets")) {
         const Json& targets = primitive.json()["targets"];
         if (!targets.is_array() || targets.empty())
-            primitive.fail("targets", fmt::format("expected an array of at least 1 object, got {}", shortDump(targets)));
+            primitive.fail("targets",
+                           fmt::format("expected an array of at least 1 object, got {}", shortDump(targets)));
     }
 }
 
@@ -233,7 +236,8 @@ AccessorUsage checkMeshes(const JsonFile& file)
         for (const Fields& primitive : mesh.objects("primitives"))
             checkPrimitive(file, primitive, usage);
         if (mesh.has("weights") && (!mesh.json()["weights"].is_array() || mesh.json()["weights"].empty()))
-            mesh.fail("weights", fmt::format("expected an array of numbers, got {}", shortDump(mesh.json()["weights"])));
+            mesh.fail("weights",
+                      fmt::format("expected an array of numbers, got {}", shortDump(mesh.json()["weights"])));
     }
     return usage;
 }
@@ -264,18 +268,20 @@ void checkNodes(const JsonFile& file, const Fields& root, AccessorUsage& usage)
             node.fail("weights", "a node with weights needs a mesh");
         for (const int child : node.indices("children", "nodes")) {
             if (parent[std::size_t(child)] >= 0)
-                node.fail("children", fmt::format("node {} is already a child of node {}", child,
-                                                  parent[std::size_t(child)]));
+                node.fail("children",
+                          fmt::format("node {} is already a child of node {}", child, parent[std::size_t(child)]));
             parent[std::size_t(child)] = int(n);
         }
         if (const auto light = node.extension("KHR_lights_punctual")) {
             light->require("light");
-            const std::size_t lights = file.root.contains("extensions") && file.root["extensions"].is_object() &&
-                                               file.root["extensions"].contains("KHR_lights_punctual")
-                                           ? file.root["extensions"]["KHR_lights_punctual"].value("lights", Json::array()).size()
-                                           : 0;
+            const std::size_t lights =
+                file.root.contains("extensions") && file.root["extensions"].is_object() &&
+                        file.root["extensions"].contains("KHR_lights_punctual")
+                    ? file.root["extensions"]["KHR_lights_punctual"].value("lights", Json::array()).size()
+                    : 0;
             const Json& index = light->json()["light"];
-            if (!index.is_number_integer() || index.get<std::int64_t>() < 0 || std::size_t(index.get<std::int64_t>()) >= lights)
+            if (!index.is_number_integer() || index.get<std::int64_t>() < 0 ||
+                std::size_t(index.get<std::int64_t>()) >= lights)
                 light->fail("light", fmt::format("expected an index of KHR_lights_punctual lights (the file has {}), "
                                                  "got {}",
                                                  lights, shortDump(index)));
@@ -292,15 +298,15 @@ void checkNodes(const JsonFile& file, const Fields& root, AccessorUsage& usage)
             if (++steps > nodes.size())
                 file.fail(fmt::format("/nodes/{}", n), "the node is its own ancestor");
             if (steps >= kMaxNodeDepth)
-                file.fail(fmt::format("/nodes/{}", n), fmt::format("the node is {} levels deep, over the limit of {}",
-                                                                   steps + 1, kMaxNodeDepth));
+                file.fail(fmt::format("/nodes/{}", n),
+                          fmt::format("the node is {} levels deep, over the limit of {}", steps + 1, kMaxNodeDepth));
         }
     }
     for (const Fields& scene : topLevel(file, "scenes"))
         for (const int node : scene.indices("nodes", "nodes"))
             if (parent[std::size_t(node)] >= 0)
-                scene.fail("nodes", fmt::format("node {} is a child of node {}, not a root", node,
-                                                parent[std::size_t(node)]));
+                scene.fail("nodes",
+                           fmt::format("node {} is a child of node {}, not a root", node, parent[std::size_t(node)]));
     if (root.has("scene") && !root.has("scenes"))
         root.fail("scene", "the file has no scenes");
     root.index("scene", "scenes");
@@ -312,10 +318,13 @@ std::int64_t componentSize(std::int64_t componentType)
 {
     switch (componentType) {
     case kByte:
-    case kUnsignedByte: return 1;
+    case kUnsignedByte:
+        return 1;
     case kShort:
-    case kUnsignedShort: return 2;
-    default: return 4;
+    case kUnsignedShort:
+        return 2;
+    default:
+        return 4;
     }
 }
 

@@ -33,10 +33,10 @@ void checkFormat(const JsonFile& file, const Fields& attributes, const std::stri
     const std::string type = accessor["type"];
     const std::int64_t component = accessor["componentType"];
     const bool normalized = accessor.value("normalized", false);
-    const bool ok = type == format->type &&
-                    std::find(format->components.begin(), format->components.end(), component) !=
-                        format->components.end() &&
-                    (component == kFloat || normalized);
+    const bool ok =
+        type == format->type &&
+        std::find(format->components.begin(), format->components.end(), component) != format->components.end() &&
+        (component == kFloat || normalized);
     if (!ok)
         attributes.fail(name, fmt::format("accessor {} is {} of component type {}{}, which {} may not use", index, type,
                                           component, normalized ? " (normalized)" : "", name));
@@ -67,8 +67,8 @@ std::uint64_t checkInstancing(const JsonFile& file, const Fields& node, Accessor
         // The extension: "All attribute accessors in a given node must have the same count."
         const std::int64_t elements = file.root["accessors"][std::size_t(index)]["count"];
         if (count && *count != elements)
-            attributes.fail(name, fmt::format("accessor {} has {} elements, other attributes {}", index, elements,
-                                              *count));
+            attributes.fail(name,
+                            fmt::format("accessor {} has {} elements, other attributes {}", index, elements, *count));
         count = elements;
         if (const auto [used, fresh] = usage.emplace(index, "instance attribute");
             !fresh && used->second != "instance attribute")

@@ -7,9 +7,9 @@
 namespace penumbra::scene::gltf {
 namespace {
 
-constexpr std::array<std::string_view, 5> kSupportedExtensions{
-    "EXT_mesh_gpu_instancing", "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_unlit",
-    "KHR_texture_transform"};
+constexpr std::array<std::string_view, 5> kSupportedExtensions{"EXT_mesh_gpu_instancing", "KHR_lights_punctual",
+                                                               "KHR_materials_emissive_strength", "KHR_materials_unlit",
+                                                               "KHR_texture_transform"};
 
 bool supported(const std::string& extension)
 {

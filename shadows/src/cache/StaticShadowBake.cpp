@@ -172,7 +172,8 @@ BakedShadowMap bakeShadowMap(const StaticShadowMap& map, const ShadowAtlasLayout
         const glm::uvec2 offset = atlas.tileOffset(tile.tile);
         for (std::uint32_t y = 0; y < size; ++y)
             for (std::uint32_t x = 0; x < size; ++x)
-                baked.depth.push_back(linearShadowDepth(depth.at(offset.x + x, offset.y + y), tile.projection, conventions));
+                baked.depth.push_back(
+                    linearShadowDepth(depth.at(offset.x + x, offset.y + y), tile.projection, conventions));
     }
     return baked;
 }

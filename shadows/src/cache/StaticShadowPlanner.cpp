@@ -52,15 +52,15 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
             staticUpdateOf(lights[i].staticUpdate, settings) == StaticShadowUpdate::EveryFrame)
             continue;
         if (selected.size() == maxStaticDirectionalMaps) {
-            plan.report.push_back({ShadowLightKind::Directional, i,
-                                   fmt::format("no static map: all {} static directional maps are taken",
-                                               maxStaticDirectionalMaps)});
+            plan.report.push_back(
+                {ShadowLightKind::Directional, i,
+                 fmt::format("no static map: all {} static directional maps are taken", maxStaticDirectionalMaps)});
             continue;
         }
         selected.push_back(i);
     }
-    plan.directionalAtlas = ShadowAtlasLayout(settings.staticMaps.directionalAtlasSize,
-                                              static_cast<std::uint32_t>(selected.size()));
+    plan.directionalAtlas =
+        ShadowAtlasLayout(settings.staticMaps.directionalAtlasSize, static_cast<std::uint32_t>(selected.size()));
     if (selected.empty())
         return;
     const Sphere sphere = boundingSphere(casters);
@@ -97,9 +97,12 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
             plan.uniforms.directionalLights[index] = {static_cast<float>(tile), light.strength,
                                                       casterSide ? 0.0f : reach, static_cast<float>(filter)};
         const ShadowFrustum frustum{fit.view, false, fit.halfSize, 0.0f, fit.farDepth - fit.nearDepth};
-        plan.maps.push_back({ShadowLightKind::Directional, index,
+        plan.maps.push_back({ShadowLightKind::Directional,
+                             index,
                              {{{tile, plan.directionalAtlas.viewport(tile), view, all}, fit.projection, frustum}},
-                             fit.texelSize, staticUpdateOf(light.staticUpdate, settings), index});
+                             fit.texelSize,
+                             staticUpdateOf(light.staticUpdate, settings),
+                             index});
     }
 }
 
@@ -121,7 +124,8 @@ struct LocalLightInput {
     float sourceRadius; // soft filters
 };
 
-std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points)
+std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots,
+                                         std::span<const PointShadowInput> points)
 {
     std::vector<LocalLightInput> inputs;
     for (std::uint32_t i = 0; i < spots.size(); ++i) {

@@ -13,7 +13,8 @@ glm::vec2 lightTexelAnchor(const DirectionalShadowCascade& fit, const glm::mat4&
     const auto atlasY = [&](glm::vec3 p) { return (worldToAtlas * glm::vec4(p, 1.0f)).y; };
     const float signX = atlasX(origin + fit.basis.right) > atlasX(origin) ? 1.0f : -1.0f;
     const float signY = atlasY(origin + fit.basis.up) > atlasY(origin) ? 1.0f : -1.0f;
-    return {std::round(signX * fit.snappedCentre.x / fit.texelSize), std::round(signY * fit.snappedCentre.y / fit.texelSize)};
+    return {std::round(signX * fit.snappedCentre.x / fit.texelSize),
+            std::round(signY * fit.snappedCentre.y / fit.texelSize)};
 }
 
 float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBounds, float fallback)

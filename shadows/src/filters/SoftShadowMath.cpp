@@ -51,7 +51,10 @@ SoftShadowUniforms softShadowUniforms(const SoftShadowSettings& soft)
 
 float tanHalfAngularDiameter(float degrees) { return std::tan(0.5f * degrees * 0.0174532925f); }
 
-PenumbraLimits penumbraLimits(const SoftShadowSettings& soft) { return {soft.minPenumbraTexels, soft.maxPenumbraTexels}; }
+PenumbraLimits penumbraLimits(const SoftShadowSettings& soft)
+{
+    return {soft.minPenumbraTexels, soft.maxPenumbraTexels};
+}
 
 float directionalPenumbraTexels(float receiverToBlocker, float tanHalfAngle, float texelWorld, float scale,
                                 PenumbraLimits limits)
@@ -70,7 +73,8 @@ float directionalSearchTexels(float receiverFromNear, float tanHalfAngle, float 
 float perspectivePenumbraTexels(float receiverDistance, float blockerDistance, float lightTexels, float scale,
                                 PenumbraLimits limits)
 {
-    const float w = lightTexels * std::max(receiverDistance - blockerDistance, 0.0f) / (blockerDistance * receiverDistance);
+    const float w =
+        lightTexels * std::max(receiverDistance - blockerDistance, 0.0f) / (blockerDistance * receiverDistance);
     return std::clamp(scale * w, limits.minTexels, limits.maxTexels);
 }
 
@@ -95,8 +99,8 @@ std::vector<glm::vec2> poissonTaps(glm::vec2 centre, float radius, float angle, 
     return taps;
 }
 
-BlockerSearch searchBlockers(const DepthTileView& tile, glm::vec2 centre, float depth, glm::vec2 gradient,
-                             float radius, float angle, std::uint32_t count)
+BlockerSearch searchBlockers(const DepthTileView& tile, glm::vec2 centre, float depth, glm::vec2 gradient, float radius,
+                             float angle, std::uint32_t count)
 {
     BlockerSearch result;
     float sum = 0.0f;

@@ -32,8 +32,8 @@ struct Thresholds {
     // comparable values are judged.
     bool bitExactWhereConventionsAgree = true;
     // A judgement of one's own beyond these figures: the reason the pair fails, or nothing.
-    std::function<std::optional<std::string>(const Picture& a, const rhi::Conventions& conventionsA,
-                                             const Picture& b, const rhi::Conventions& conventionsB)>
+    std::function<std::optional<std::string>(const Picture& a, const rhi::Conventions& conventionsA, const Picture& b,
+                                             const rhi::Conventions& conventionsB)>
         check;
 };
 
@@ -46,7 +46,7 @@ struct Figures {
     double psnr = std::numeric_limits<double>::infinity(); // dB; infinite when identical
     std::size_t differingPixels = 0; // depth: differing texels drawn in both, plus coverage mismatches
     std::size_t pixels = 0;
-    std::size_t coverageMismatches = 0;           // depth only
+    std::size_t coverageMismatches = 0; // depth only
     std::optional<std::size_t> rawDifferingTexels; // depth where the conventions agree
 };
 

@@ -37,7 +37,7 @@ struct ConfigurationRun {
     enum class Status {
         Rendered,
         Unsupported, // the driver refused the device (rhi::UnsupportedError): reported, not a failure
-        Failed,      // the device, the render function or validation failed: a failure
+        Failed, // the device, the render function or validation failed: a failure
     };
     rhi::NamedConfiguration configuration;
     Status status = Status::Rendered;
@@ -45,16 +45,13 @@ struct ConfigurationRun {
     std::vector<Picture> pictures;
 
     const std::string& name() const { return configuration.name; }
-    rhi::Conventions conventions() const
-    {
-        return {configuration.desc.depthRange, configuration.desc.reversedZ};
-    }
+    rhi::Conventions conventions() const { return {configuration.desc.depthRange, configuration.desc.reversedZ}; }
     // The picture called `name`; throws rhi::Error naming the pictures there are.
     const Picture& picture(std::string_view name) const;
 };
 
 enum class Pairing {
-    EveryPair,        // every configuration against every other
+    EveryPair, // every configuration against every other
     AgainstReference, // every configuration against Options::reference
 };
 

@@ -39,11 +39,11 @@ enum class DepthSpace {
 struct Picture {
     std::string name;
     PictureKind kind = PictureKind::Color;
-    rhi::Image color;           // Color
-    rhi::DepthImage depth;      // Depth: raw window depth; Float: the width, height and values
+    rhi::Image color; // Color
+    rhi::DepthImage depth; // Depth: raw window depth; Float: the width, height and values
     DepthSpace space = DepthSpace::FromFarPlane;
     glm::mat4 projection{1.0f}; // Depth in LinearView
-    std::vector<float> given;   // Depth in Given
+    std::vector<float> given; // Depth in Given
 
     std::uint32_t width() const { return kind == PictureKind::Color ? color.width : depth.width; }
     std::uint32_t height() const { return kind == PictureKind::Color ? color.height : depth.height; }

@@ -77,7 +77,7 @@ private:
     std::vector<Mesh> meshes_;
     rhi::Device& device_;
     std::vector<std::unique_ptr<rhi::Texture>> textures_;
-    std::vector<std::unique_ptr<rhi::Sampler>> samplers_;         // one per texture
+    std::vector<std::unique_ptr<rhi::Sampler>> samplers_; // one per texture
     std::vector<std::unique_ptr<rhi::Sampler>> coverageSamplers_; // one per texture, without anisotropy
     float anisotropy_ = 1.0f;
     std::unique_ptr<rhi::Texture> white_;

@@ -37,13 +37,13 @@ struct LitFrameUniforms {
     std::array<glm::vec4, maxLitDirectionalLights> lightDirection{}; // w = shadow slot or -1
     glm::vec4 ambient{0.0f};
     std::int32_t directionalLightCount = 0;
-    std::int32_t litView = 0;         // LitView
+    std::int32_t litView = 0; // LitView
     std::int32_t localLightCount = 0;
     std::int32_t visibilityLight = 0; // LitView::Visibility's light: directional lights first, then spot and point
-    std::array<glm::vec4, maxLitLocalLights> localPosition{};  // xyz, w = 1 / range^2
-    std::array<glm::vec4, maxLitLocalLights> localColor{};     // rgb x intensity, w = scene::LightKind
-    std::array<glm::vec4, maxLitLocalLights> localAxis{};      // spot cone axis
-    std::array<glm::vec4, maxLitLocalLights> localShadow{};    // cone scale, offset, first tile or -1, strength
+    std::array<glm::vec4, maxLitLocalLights> localPosition{}; // xyz, w = 1 / range^2
+    std::array<glm::vec4, maxLitLocalLights> localColor{}; // rgb x intensity, w = scene::LightKind
+    std::array<glm::vec4, maxLitLocalLights> localAxis{}; // spot cone axis
+    std::array<glm::vec4, maxLitLocalLights> localShadow{}; // cone scale, offset, first tile or -1, strength
     glm::vec4 ambientGround{0.0f}; // linear rgb from below (the hemisphere's ground; = ambient without one)
 };
 static_assert(offsetof(LitFrameUniforms, lightColor) == 96);
@@ -55,13 +55,13 @@ struct LitObjectUniforms {
     glm::mat4 model{1.0f};
     glm::mat4 normalMatrix{1.0f};
     glm::vec4 baseColor{1.0f};
-    glm::vec4 surface{0.0f};  // metallic, roughness, alpha cutoff, caster mode (material.glsl)
+    glm::vec4 surface{0.0f}; // metallic, roughness, alpha cutoff, caster mode (material.glsl)
     std::int32_t receivesShadows = 0;
     std::int32_t materialMaps = 0; // textures present, bit per scene::TextureSlot
     std::int32_t unlit = 0;
     std::int32_t blended = 0;
     glm::vec4 emissive{0.0f}; // linear rgb, w = occlusion strength
-    glm::vec4 normal{0.0f};   // normal texture scale, sign of det(model) (a mirroring transform flips bitangents)
+    glm::vec4 normal{0.0f}; // normal texture scale, sign of det(model) (a mirroring transform flips bitangents)
     // Per scene::TextureSlot, rows 0 and 1 of its uv transform, row 0's w its uv set (shadows::uvTransformRows).
     std::array<glm::vec4, 2 * scene::kTextureSlots> uvTransforms{};
 };
@@ -70,7 +70,8 @@ static_assert(sizeof(LitObjectUniforms) == 368);
 // The two structs as PipelineDesc::uniformLayouts of lit.glsl's blocks Frame and Object.
 inline rhi::UniformLayout litFrameLayout()
 {
-    return {"Frame", sizeof(LitFrameUniforms),
+    return {"Frame",
+            sizeof(LitFrameUniforms),
             {
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, viewProjection),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraPosition),
@@ -92,7 +93,8 @@ inline rhi::UniformLayout litFrameLayout()
 
 inline rhi::UniformLayout litObjectLayout()
 {
-    return {"Object", sizeof(LitObjectUniforms),
+    return {"Object",
+            sizeof(LitObjectUniforms),
             {
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, model),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, normalMatrix),
@@ -153,11 +155,11 @@ struct LitShaderFeatures {
     // The material maps lit.frag may read (bit per scene::TextureSlot, as LitObjectUniforms::flags.y); a map
     // outside it reads as the white texel that stands in for an absent map.
     std::uint32_t materialMaps = (1u << scene::kTextureSlots) - 1;
-    bool localLights = true;   // spot and point lights
+    bool localLights = true; // spot and point lights
     bool staticShadows = true; // static shadow maps (shadows::StaticShadowUniforms)
-    bool tentFilters = true;   // PCF 3x3, 5x5, 7x7 (PCF 2x2 is always compiled in)
-    bool softFilters = true;   // Poisson and PCSS
-    bool shadowCubes = true;   // point lights' shadows in cube maps (shadows::PointShadowMode::CubeMap)
+    bool tentFilters = true; // PCF 3x3, 5x5, 7x7 (PCF 2x2 is always compiled in)
+    bool softFilters = true; // Poisson and PCSS
+    bool shadowCubes = true; // point lights' shadows in cube maps (shadows::PointShadowMode::CubeMap)
     DirectionalShadowSource directionalShadows = DirectionalShadowSource::Forward;
     // The lit pass's samples per pixel (FrameDesc::msaa; LitPipelines sets it): ScreenSpaceEdges tells a fragment
     // that covers its whole pixel by it.
@@ -172,8 +174,8 @@ std::uint32_t litMaterialMaps(const scene::Material& material);
 // The lit pass shader `fileName` ("lit.vert", "lit.frag") with the includes "lit_constants.glsl" that lit.glsl reads
 // (the material texture bindings and TextureSlot numbers above as GLSL macros, so the numbers are written once,
 // here, and `features` as PENUMBRA_DEPTH_PREPASSED, PENUMBRA_LIT_VIEW, PENUMBRA_LIT_MAPS, PENUMBRA_LOCAL_LIGHTS,
-// PENUMBRA_STATIC_SHADOWS and PENUMBRA_SCREEN_SPACE_SHADOWS) and "shadow_constants.glsl" (the filters, with PENUMBRA_TENT_FILTERS,
-// PENUMBRA_SOFT_FILTERS and PENUMBRA_SHADOW_CUBES).
+// PENUMBRA_STATIC_SHADOWS and PENUMBRA_SCREEN_SPACE_SHADOWS) and "shadow_constants.glsl" (the filters, with
+// PENUMBRA_TENT_FILTERS, PENUMBRA_SOFT_FILTERS and PENUMBRA_SHADOW_CUBES).
 rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& features = {});
 
 } // namespace penumbra::render

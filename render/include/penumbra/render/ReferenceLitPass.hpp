@@ -16,7 +16,7 @@ inline constexpr std::uint32_t kReferenceSplitsBinding = 4;
 // The reference block of shaders/reference_lit.frag, std140.
 struct ReferenceSplitUniforms {
     std::int32_t cascadeCount = 0;
-    std::int32_t firstTile = -1;            // the first directional light's first atlas tile (-1: no shadows)
+    std::int32_t firstTile = -1; // the first directional light's first atlas tile (-1: no shadows)
     alignas(16) glm::vec4 farDepths{0.0f}; // view depth where cascade i ends (std140 aligns a vec4 to 16 bytes)
 };
 static_assert(sizeof(ReferenceSplitUniforms) == 32);

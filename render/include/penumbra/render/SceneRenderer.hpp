@@ -67,16 +67,16 @@ struct FrameDesc {
 };
 
 struct FrameStats {
-    std::uint32_t casterDraws = 0;                  // issued into the directional atlas
+    std::uint32_t casterDraws = 0; // issued into the directional atlas
     std::uint32_t casterDrawsWithoutCullingBias = 0; // casters overlapping each cascade's light box
-    std::uint32_t localCasterDraws = 0;             // issued into the spot and point shadows
-    std::optional<double> depthPrepassMs;           // GPU time, where the device has timestamps (and a prepass ran)
-    std::optional<double> atlasPassMs;              // GPU time, where the device has timestamps
+    std::uint32_t localCasterDraws = 0; // issued into the spot and point shadows
+    std::optional<double> depthPrepassMs; // GPU time, where the device has timestamps (and a prepass ran)
+    std::optional<double> atlasPassMs; // GPU time, where the device has timestamps
     std::optional<double> localAtlasPassMs;
     std::optional<double> screenSpaceShadowsMs; // the screen-space shadow collection (ShadowPath::ScreenSpace)
     std::optional<double> litPassMs;
     std::optional<double> resolvePassMs; // the multisampled lit image into litImage(), where FrameDesc::msaa > 1
-    std::optional<double> staticAtlasPassMs;        // the static maps drawn this frame, where the device has timestamps
+    std::optional<double> staticAtlasPassMs; // the static maps drawn this frame, where the device has timestamps
     // Static shadow maps (ShadowSettings::staticMaps): the static caster draws this frame (into the static maps and,
     // with RealtimeCasters::Dynamic, into the realtime tiles' cached static depth), and which static maps were drawn
     // and why ("spot light 0 ('lamp'): a static caster in its view changed").
@@ -97,8 +97,8 @@ struct ShadowPlans {
 };
 
 // Draws a scene with cascaded directional shadows and spot and point shadows: plan (CPU) -> caster
-// passes into the directional and the local atlas -> lit pass (and optionally the cascade view). One submission per frame; the results stay readable
-// until the next render().
+// passes into the directional and the local atlas -> lit pass (and optionally the cascade view). One submission per
+// frame; the results stay readable until the next render().
 class SceneRenderer {
 public:
     // The scene must outlive the renderer; it is validated and its meshes uploaded here.
@@ -112,7 +112,8 @@ public:
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame);
     // Throws rhi::Error for settings or ambient light out of range (naming the field; maxAnisotropy below 1 too), a
     // zero-sized frame, plans whose atlases do not match the frame's settings, a visibility view of a light the lit
-    // pass does not draw, or ShadowPath::ScreenSpace without the depth prepass; rhi::UnsupportedError for an msaa count the device does not offer.
+    // pass does not draw, or ShadowPath::ScreenSpace without the depth prepass; rhi::UnsupportedError for an msaa count
+    // the device does not offer.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
     const rhi::Texture& litImage() const { return *lit_; }
@@ -204,7 +205,7 @@ private:
     // FrameDesc::msaa > 1: the lit pass's multisampled colour and depth, resolved into lit_.
     std::unique_ptr<rhi::Texture> multisampledColor_;
     std::unique_ptr<rhi::Texture> multisampledDepth_;
-    std::unique_ptr<rhi::Framebuffer> litTarget_;     // lit_ and depth_, or the multisampled pair
+    std::unique_ptr<rhi::Framebuffer> litTarget_; // lit_ and depth_, or the multisampled pair
     std::unique_ptr<rhi::Framebuffer> prepassTarget_; // litTarget_'s depth alone
     std::unique_ptr<rhi::Framebuffer> cascadeTarget_;
     std::unique_ptr<rhi::Texture> visibility_;

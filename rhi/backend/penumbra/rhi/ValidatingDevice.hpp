@@ -70,8 +70,7 @@ public:
     void bindPipeline(const Pipeline& pipeline) final;
     void bindVertexBuffer(std::uint32_t slot, const Buffer& buffer, std::uint64_t offset) final;
     void bindIndexBuffer(const Buffer& buffer, IndexType type, std::uint64_t offset) final;
-    void bindUniformBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
-                           std::uint64_t size) final;
+    void bindUniformBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset, std::uint64_t size) final;
     void bindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) final;
     void draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
               std::uint32_t firstInstance) final;
@@ -108,8 +107,7 @@ protected:
                                 std::int32_t vertexOffset, std::uint32_t firstInstance) = 0;
     virtual void apiCopyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,
                                std::uint64_t size) = 0;
-    virtual void apiCopyTexture(const Texture& src, std::uint32_t srcLayer, Texture& dst,
-                                std::uint32_t dstLayer) = 0;
+    virtual void apiCopyTexture(const Texture& src, std::uint32_t srcLayer, Texture& dst, std::uint32_t dstLayer) = 0;
     virtual void apiCopyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
                                         std::uint64_t dstOffset) = 0;
     virtual void apiResolveTexture(const Texture& src, Texture& dst) = 0;

@@ -1,7 +1,8 @@
 #pragma once
 
 // For backends: the rules of the validation layer that a backend's own objects apply (Buffer::write and read
-// are calls on the buffer, not on the device) and rhi's own helpers (readTexture). Everything else is checked by ValidatingDevice.hpp's classes.
+// are calls on the buffer, not on the device) and rhi's own helpers (readTexture). Everything else is checked by
+// ValidatingDevice.hpp's classes.
 
 #include "penumbra/rhi/Resources.hpp"
 

@@ -20,7 +20,7 @@ namespace penumbra::rhi {
 
 // What the driver offers for one format, as it reports it.
 struct FormatSupport {
-    bool sampled = false;      // created with TextureUsage::Sampled (and, like every texture, uploaded and copied)
+    bool sampled = false; // created with TextureUsage::Sampled (and, like every texture, uploaded and copied)
     bool linearFilter = false; // sampled with a linear mag, min or mip filter
     bool renderTarget = false; // a colour or depth attachment, by format
     // Sample counts of a render target of this format (TextureDesc::samples), one bit each with the count's value
@@ -35,7 +35,7 @@ std::string sampleCountList(std::uint32_t sampleCounts);
 
 // What the driver really offers; nothing here is faked or emulated.
 struct Capabilities {
-    std::string api;    // "Vulkan 1.3.230", "OpenGL 4.5 (Core Profile) Mesa 22.3.6"
+    std::string api; // "Vulkan 1.3.230", "OpenGL 4.5 (Core Profile) Mesa 22.3.6"
     std::string device; // "llvmpipe (LLVM 15.0.6, 256 bits)"
     bool depthClamp = false;
     bool depthBiasClamp = false;

@@ -6,7 +6,10 @@ namespace penumbra::rhi {
 
 // Opt-in bitwise operators for flag enums: declare `constexpr bool enableFlags(E) { return true; }`.
 template <typename E>
-concept FlagEnum = std::is_enum_v<E> && requires(E e) { enableFlags(e); };
+concept FlagEnum = std::is_enum_v<E> && requires(E e)
+{
+    enableFlags(e);
+};
 
 template <FlagEnum E>
 constexpr E operator|(E a, E b)

@@ -60,7 +60,15 @@ enum class ColorMask : std::uint8_t { None = 0, R = 1, G = 2, B = 4, A = 8, All 
 constexpr bool enableFlags(ColorMask) { return true; }
 
 enum class BlendFactor : std::uint8_t {
-    Zero, One, SrcColor, OneMinusSrcColor, SrcAlpha, OneMinusSrcAlpha, DstColor, OneMinusDstColor, DstAlpha,
+    Zero,
+    One,
+    SrcColor,
+    OneMinusSrcColor,
+    SrcAlpha,
+    OneMinusSrcAlpha,
+    DstColor,
+    OneMinusDstColor,
+    DstAlpha,
     OneMinusDstAlpha,
 };
 enum class BlendOp : std::uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
@@ -82,8 +90,8 @@ struct ColorTarget {
 };
 
 // A pipeline renders into framebuffers whose attachment formats match colorTargets and depthFormat and whose
-// sample count is `samples` (checked at each draw). A depth-only pass has no colour targets; at most 8 colour targets. Every attribute
-// reads a vertex buffer slot the layout describes, and every draw needs those slots bound.
+// sample count is `samples` (checked at each draw). A depth-only pass has no colour targets; at most 8 colour targets.
+// Every attribute reads a vertex buffer slot the layout describes, and every draw needs those slots bound.
 // uniformLayouts describe the C++ structs uploaded into uniform blocks: at creation each is compared with the
 // std140 layout the shaders' reflection gives the block of that name (size, member names, offsets, sizes).
 struct PipelineDesc {

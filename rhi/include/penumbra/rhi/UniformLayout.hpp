@@ -29,4 +29,7 @@ struct UniformLayout {
 
 // A UniformMember for `member` of `Struct`, by offsetof and sizeof (Struct must be standard-layout).
 #define PENUMBRA_UNIFORM_MEMBER(Struct, member)                                                                        \
-    ::penumbra::rhi::UniformMember { #member, std::uint32_t(offsetof(Struct, member)), std::uint32_t(sizeof(Struct::member)) }
+    ::penumbra::rhi::UniformMember                                                                                     \
+    {                                                                                                                  \
+#member, std::uint32_t(offsetof(Struct, member)), std::uint32_t(sizeof(Struct::member))                        \
+    }

@@ -56,8 +56,8 @@ inline constexpr int kPenumbraMargin = 2;
 
 struct SoftTruthFigures {
     std::size_t penumbraPixels = 0; // truly in the penumbra (and decided by the renderer)
-    std::size_t compared = 0;       // in or near it, valid in the truth and decided by the renderer
-    double meanAbsError = 0.0;      // mean |rendered - truth| over `compared`
+    std::size_t compared = 0; // in or near it, valid in the truth and decided by the renderer
+    double meanAbsError = 0.0; // mean |rendered - truth| over `compared`
     double maxAbsError = 0.0;
 };
 

@@ -11,8 +11,8 @@ namespace penumbra::scene {
 struct Camera {
     glm::vec3 position{0.0f};
     glm::vec3 forward{0.0f, 0.0f, -1.0f}; // unit
-    glm::vec3 up{0.0f, 1.0f, 0.0f};       // need not be orthogonal to forward, must not be parallel
-    float fovY = 1.0471976f;              // vertical field of view, radians (60 degrees)
+    glm::vec3 up{0.0f, 1.0f, 0.0f}; // need not be orthogonal to forward, must not be parallel
+    float fovY = 1.0471976f; // vertical field of view, radians (60 degrees)
     float nearPlane = 0.1f;
     float farPlane = 200.0f;
 

@@ -21,7 +21,7 @@ namespace penumbra::scene {
 struct Vertex {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f, 1.0f, 0.0f};
-    glm::vec2 uv{0.0f};  // TEXCOORD_0; v = 0 is the top row of a texture, as in the RHI
+    glm::vec2 uv{0.0f}; // TEXCOORD_0; v = 0 is the top row of a texture, as in the RHI
     glm::vec2 uv1{0.0f}; // TEXCOORD_1
     // xyz along +u of the normal texture's uv set, w = +1 or -1: bitangent = w * cross(normal, xyz)
     // (glTF 2.0 section 3.7.2.1, TANGENT). Only read for materials with a normal texture.

@@ -34,9 +34,9 @@ struct GltfScene {
 
 // Loads a glTF 2.0 file (.gltf with external or data-URI buffers, or .glb) into a validated Scene:
 // - every primitive of mode TRIANGLES becomes a mesh (POSITION, NORMAL, TEXCOORD_0 and _1, COLOR_0,
-//   TANGENT, computed for normal textures without it; indices of 8, 16 or 32 bits or none). Missing normals are computed flat, as glTF requires. Primitives are
-//   shared between the nodes that use them; a node with a mirroring transform gets a copy with
-//   reversed winding (see Object).
+//   TANGENT, computed for normal textures without it; indices of 8, 16 or 32 bits or none). Missing normals are
+//   computed flat, as glTF requires. Primitives are shared between the nodes that use them; a node with a mirroring
+//   transform gets a copy with reversed winding (see Object).
 // - the default scene's node hierarchy (matrix or translation/rotation/scale); nodes with a
 //   singular transform (scale 0) are skipped.
 // - materials (Material): factors and the five textures (decoded into Scene::textures, each image

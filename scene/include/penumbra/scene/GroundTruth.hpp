@@ -38,8 +38,8 @@ Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, 
 
 struct GBufferSample {
     std::uint32_t object = kNoObject; // kNoObject: background
-    std::uint32_t triangle = 0;       // within the object's mesh
-    glm::vec3 position{0.0f};         // world
+    std::uint32_t triangle = 0; // within the object's mesh
+    glm::vec3 position{0.0f}; // world
     // Unit world normals turned towards the camera: back faces (seen through Clip holes)
     // report the side that was seen. `normal` is the flat triangle normal; `shadingNormal`
     // interpolates the mesh's vertex normals as the lit pass does.
@@ -70,10 +70,10 @@ CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const C
                         std::uint32_t height, const TraceProgress& progress = {});
 
 enum class LightVisibility : std::uint8_t {
-    Background,   // no surface
-    Lit,          // faces the light and nothing blocks it
-    Shadowed,     // faces the light, something blocks it
-    FacingAway,   // the light arrives from behind the surface (dot(normal, -direction) <= 0): unlit, shadow or not
+    Background, // no surface
+    Lit, // faces the light and nothing blocks it
+    Shadowed, // faces the light, something blocks it
+    FacingAway, // the light arrives from behind the surface (dot(normal, -direction) <= 0): unlit, shadow or not
     NotReceiving, // the material has receiveShadows = false: drawn lit whatever blocks it
 };
 
@@ -95,7 +95,7 @@ inline constexpr float kShadowRayOffset = 1e-3f;
 struct ShadowRay {
     glm::vec3 origin;
     glm::vec3 direction; // unit, towards the light
-    float maxDistance;   // to the light; infinite for a directional light
+    float maxDistance; // to the light; infinite for a directional light
 };
 using ShadowRayFrom = std::function<ShadowRay(glm::vec3 origin)>;
 ShadowRayFrom raysTowards(const DirectionalLight& light);

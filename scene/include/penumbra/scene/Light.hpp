@@ -40,10 +40,10 @@ struct DirectionalLight {
     glm::vec3 color{1.0f}; // linear RGB
     float intensity = 1.0f;
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit, from the light INTO the scene; surfaces are lit from -direction
-    float shadowStrength = 1.0f;            // 0: shadows ignored, 1: fully dark
-    float slopeScaleBias = 1.0f;            // the RHI's depth-bias slope factor for this light's casters
-    float normalBias = 1.0f;                // receiver offset along its normal, in units of the cascade's filter-sized texel diagonal
-    float nearPlaneOffset = 0.2f;           // pulls the shadow projection's near plane back, in world units
+    float shadowStrength = 1.0f; // 0: shadows ignored, 1: fully dark
+    float slopeScaleBias = 1.0f; // the RHI's depth-bias slope factor for this light's casters
+    float normalBias = 1.0f; // receiver offset along its normal, in units of the cascade's filter-sized texel diagonal
+    float nearPlaneOffset = 0.2f; // pulls the shadow projection's near plane back, in world units
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     float angularDiameter = kDefaultAngularDiameter; // source size, degrees, 0..kMaxAngularDiameter (soft shadows)
     std::int32_t shadowFilter = kAtlasShadowFilter;
@@ -58,10 +58,10 @@ struct SpotLight {
     float intensity = 1.0f;
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit, the cone's axis pointing away from the light
-    float range = 10.0f;                    // > 0, world units
-    float innerAngle = 0.4f;                // half-angle of full intensity, radians, 0 <= inner < outer
-    float outerAngle = 0.6f;                // half-angle where the light ends, radians, < pi/2
-    float shadowStrength = 1.0f;            // 0: shadows ignored, 1: fully dark
+    float range = 10.0f; // > 0, world units
+    float innerAngle = 0.4f; // half-angle of full intensity, radians, 0 <= inner < outer
+    float outerAngle = 0.6f; // half-angle where the light ends, radians, < pi/2
+    float shadowStrength = 1.0f; // 0: shadows ignored, 1: fully dark
     float slopeScaleBias = 1.0f;
     float normalBias = 1.0f; // receiver offset in filter-sized texel diagonals at the receiver's distance
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' local.nearPlane x range

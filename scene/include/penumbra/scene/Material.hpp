@@ -17,10 +17,10 @@ namespace penumbra::scene {
 // How a material's surface enters the shadow maps: the shadow modes of Catlike Coding's "Directional Shadows"
 // tutorial, section "Transparency".
 enum class CasterMode : std::uint8_t {
-    On,     // solid caster
-    Clip,   // alpha-tested: texels with materialAlpha < alphaCutoff cast nothing
+    On, // solid caster
+    Clip, // alpha-tested: texels with materialAlpha < alphaCutoff cast nothing
     Dither, // alpha as coverage: a caster texel survives where alpha >= a screen-space dither value
-    Off,    // casts no shadow (still drawn and still receives)
+    Off, // casts no shadow (still drawn and still receives)
 };
 
 // KHR_texture_transform: uv' = translation(offset) * rotation(rotation) * scale(scale) * uv, applied to
@@ -66,7 +66,7 @@ struct Material {
     bool blend = false;
     // Linear RGB added after lighting: emissiveFactor x KHR_materials_emissive_strength.
     glm::vec3 emissive{0.0f};
-    float normalScale = 1.0f;       // normalTexture.scale
+    float normalScale = 1.0f; // normalTexture.scale
     float occlusionStrength = 1.0f; // occlusionTexture.strength, in [0, 1]
 
     // Images of Scene::textures, indexed by TextureSlot:

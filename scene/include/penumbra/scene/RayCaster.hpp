@@ -27,11 +27,11 @@ enum class RayKind : std::uint8_t { Shadow, Camera };
 inline constexpr float kDitherShadowThreshold = 0.5f;
 
 struct Hit {
-    float distance;            // world units along the (normalised) direction
-    std::uint32_t object;      // index into Scene::objects
-    std::uint32_t triangle;    // triangle index within the object's mesh (indices[3 * triangle ...])
-    glm::vec2 barycentrics;    // weights of the triangle's 2nd and 3rd vertex; the 1st gets 1 - x - y
-    glm::vec3 normal;          // unit world normal of the triangle's front (CCW) side, whichever side was hit
+    float distance; // world units along the (normalised) direction
+    std::uint32_t object; // index into Scene::objects
+    std::uint32_t triangle; // triangle index within the object's mesh (indices[3 * triangle ...])
+    glm::vec2 barycentrics; // weights of the triangle's 2nd and 3rd vertex; the 1st gets 1 - x - y
+    glm::vec3 normal; // unit world normal of the triangle's front (CCW) side, whichever side was hit
 };
 
 // Ground-truth visibility on the CPU: world-space triangles of a scene in a BVH (binned

@@ -17,7 +17,8 @@ struct TriangleHit {
 // Moller-Trumbore, two-sided (a shadow ray is blocked by either side of a surface).
 // Hits with 0 < distance <= maxDistance count; distance is in units of |direction|.
 // Edge-on rays and degenerate triangles miss.
-std::optional<TriangleHit> intersectRayTriangle(const glm::vec3& origin, const glm::vec3& direction, const glm::vec3& v0,
-                                                const glm::vec3& v1, const glm::vec3& v2, float maxDistance);
+std::optional<TriangleHit> intersectRayTriangle(const glm::vec3& origin, const glm::vec3& direction,
+                                                const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2,
+                                                float maxDistance);
 
 } // namespace penumbra::scene

@@ -30,9 +30,9 @@ public:
 // Rendering.ShadowCastingMode (Scripting API), which real-time scenes rely on for proxies and for
 // hiding shadow-only geometry.
 enum class ShadowCasting : std::uint8_t {
-    On,          // casts as its material says, culled as the material says (doubleSided casts both faces)
-    Off,         // drawn, casts nothing
-    TwoSided,    // casts with both faces whatever its material's culling
+    On, // casts as its material says, culled as the material says (doubleSided casts both faces)
+    Off, // drawn, casts nothing
+    TwoSided, // casts with both faces whatever its material's culling
     ShadowsOnly, // not drawn, casts as On
 };
 
@@ -86,7 +86,10 @@ struct Scene {
     const Material& materialOf(const Object& object) const { return materials.at(object.material); }
     const MeshData& meshOf(const Object& object) const { return meshes.at(object.mesh); }
     // Shadow maps darken the object: both it and its material receive shadows.
-    bool receivesShadows(const Object& object) const { return object.receiveShadows && materialOf(object).receiveShadows; }
+    bool receivesShadows(const Object& object) const
+    {
+        return object.receiveShadows && materialOf(object).receiveShadows;
+    }
     // The object enters shadow maps: neither it nor its material is set not to cast.
     bool castsShadows(const Object& object) const
     {

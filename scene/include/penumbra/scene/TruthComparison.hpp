@@ -29,8 +29,8 @@ inline constexpr float kShadowedBelow = 0.5f;
 // What the comparison concluded at a pixel.
 enum class TruthVerdict : std::uint8_t {
     NotCompared, // background, facing away from the light, not receiving
-    Undecided,   // truly lit or shadowed, but the shadow map has no say there
-    NearEdge,    // within kTruthEdgeMargin of a change of class or object, or near a shadow edge in the light's view
+    Undecided, // truly lit or shadowed, but the shadow map has no say there
+    NearEdge, // within kTruthEdgeMargin of a change of class or object, or near a shadow edge in the light's view
     LitRight,
     ShadowedRight,
     Acne, // truly lit, rendered in shadow
@@ -62,10 +62,7 @@ struct TruthComparison {
     std::size_t acne() const { return lit.compared - lit.right; }
     std::size_t leaks() const { return shadowed.compared - shadowed.right; }
     // Of all compared pixels, the share rendered right.
-    double agreement() const
-    {
-        return compared() == 0 ? 0.0 : double(lit.right + shadowed.right) / double(compared());
-    }
+    double agreement() const { return compared() == 0 ? 0.0 : double(lit.right + shadowed.right) / double(compared()); }
     TruthVerdict at(std::uint32_t x, std::uint32_t y) const { return verdicts[std::size_t(y) * width + x]; }
 };
 
@@ -94,7 +91,7 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
 // a contact. 0 without leaks near a contact.
 inline constexpr float kContactTexels = 8.0f;
 float contactGapTexels(const TruthComparison& comparison, const CpuGBuffer& gbuffer, const RayCaster& shadowRays,
-                       const ShadowRayFrom& rayFrom,
-                       const std::function<float(glm::vec3)>& texelSize, float contactTexels = kContactTexels);
+                       const ShadowRayFrom& rayFrom, const std::function<float(glm::vec3)>& texelSize,
+                       float contactTexels = kContactTexels);
 
 } // namespace penumbra::scene

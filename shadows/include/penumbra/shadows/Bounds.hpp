@@ -12,8 +12,14 @@ struct Bounds {
 
     std::array<glm::vec3, 8> corners() const
     {
-        return {{{min.x, min.y, min.z}, {max.x, min.y, min.z}, {min.x, max.y, min.z}, {max.x, max.y, min.z},
-                 {min.x, min.y, max.z}, {max.x, min.y, max.z}, {min.x, max.y, max.z}, {max.x, max.y, max.z}}};
+        return {{{min.x, min.y, min.z},
+                 {max.x, min.y, min.z},
+                 {min.x, max.y, min.z},
+                 {max.x, max.y, min.z},
+                 {min.x, min.y, max.z},
+                 {max.x, min.y, max.z},
+                 {min.x, max.y, max.z},
+                 {max.x, max.y, max.z}}};
     }
 };
 

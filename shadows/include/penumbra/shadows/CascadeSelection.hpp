@@ -17,8 +17,8 @@ namespace penumbra::shadows {
 //   section 1.7).
 struct CascadeSelection {
     std::uint32_t index = 0; // the cascade count when no cascade holds the point
-    float fade = 1.0f;       // 1 inside, falling to 0 at the region's outer edge: the blend weight of `index`
-    float margin = 0.0f;     // world distance from the point to that edge (radius or depth)
+    float fade = 1.0f; // 1 inside, falling to 0 at the region's outer edge: the blend weight of `index`
+    float margin = 0.0f; // world distance from the point to that edge (radius or depth)
 };
 
 CascadeSelection selectCascade(const DirectionalShadowUniforms& uniforms, glm::vec3 position, float viewDepth);

@@ -13,8 +13,8 @@ namespace penumbra::shadows {
 
 struct CasterCullingResult {
     std::vector<std::uint32_t> casters; // indices into the caster list to draw into the cascade
-    std::uint32_t overlapping = 0;      // casters in the cascade's light box: the draws without culling bias
-    std::uint32_t culledByBias = 0;     // of those, skipped by the culling bias
+    std::uint32_t overlapping = 0; // casters in the cascade's light box: the draws without culling bias
+    std::uint32_t culledByBias = 0; // of those, skipped by the culling bias
 };
 
 // The document's shadowCascadeBlendCullingFactor, max(0, 0.8 - cascadeFade): lowered by the fade

@@ -28,11 +28,11 @@ struct DirectionalShadowCascade {
     // larger side of the slice's light-space bounds plus the filter margin (close fit), plus the largest snapping
     // displacement, so the snapped square still holds the whole sphere or slice.
     float halfSize = 0.0f;
-    float texelSize = 0.0f;      // world size of one tile texel, 2 halfSize / tileSize
-    glm::vec2 fittedCentre{0.0f};  // light-space x, y of what the tile is fitted around, before the snap
+    float texelSize = 0.0f; // world size of one tile texel, 2 halfSize / tileSize
+    glm::vec2 fittedCentre{0.0f}; // light-space x, y of what the tile is fitted around, before the snap
     glm::vec2 snappedCentre{0.0f}; // light-space x, y of the tile's centre: whole texels
-    float nearDepth = 0.0f;      // light-space depth (along the direction) of the near plane
-    float farDepth = 0.0f;       // of the far plane: the sphere's far side
+    float nearDepth = 0.0f; // light-space depth (along the direction) of the near plane
+    float farDepth = 0.0f; // of the far plane: the sphere's far side
     LightBasis basis;
 };
 

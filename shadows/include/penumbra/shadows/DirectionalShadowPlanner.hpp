@@ -23,13 +23,13 @@ namespace penumbra::shadows {
 
 struct DirectionalShadowLightInput {
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // from the light into the scene
-    float strength = 1.0f;                  // 0 turns the light's shadows off
-    float nearPlaneOffset = 0.0f;           // world units the shadow near plane is pulled back (pancaking)
-    float normalBias = 1.0f;                // multiple of the cascade's normal bias
-    float slopeScaleBias = 0.0f;            // rasterizer slope-scaled depth bias of the shadow pass
+    float strength = 1.0f; // 0 turns the light's shadows off
+    float nearPlaneOffset = 0.0f; // world units the shadow near plane is pulled back (pancaking)
+    float normalBias = 1.0f; // multiple of the cascade's normal bias
+    float slopeScaleBias = 0.0f; // rasterizer slope-scaled depth bias of the shadow pass
     bool castsShadows = true;
-    std::optional<ShadowFilter> filter;     // nullopt: the atlas's (DirectionalShadowSettings::filter)
-    float angularDiameter = 0.0f;           // degrees: the source size of Poisson and PCSS filters
+    std::optional<ShadowFilter> filter; // nullopt: the atlas's (DirectionalShadowSettings::filter)
+    float angularDiameter = 0.0f; // degrees: the source size of Poisson and PCSS filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
@@ -56,7 +56,6 @@ struct ShadowedDirectionalLight {
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // into the scene
 };
 
-
 // Why a light (or, without a light index, the whole plan) gets no shadow tiles.
 struct ShadowPlanNote {
     std::optional<std::uint32_t> lightIndex;
@@ -66,10 +65,10 @@ struct ShadowPlanNote {
 struct DirectionalShadowPlan {
     ShadowAtlasLayout atlas{256, 0};
     CascadeSplits splits;
-    std::vector<Sphere> cullingSpheres;     // per cascade, shared by every light
-    std::vector<CascadeData> cascadeData;   // per cascade, shared by every light
+    std::vector<Sphere> cullingSpheres; // per cascade, shared by every light
+    std::vector<CascadeData> cascadeData; // per cascade, shared by every light
     std::vector<ShadowedDirectionalLight> lights; // at most 4: the shadow slots
-    std::vector<int> shadowSlots;           // per input light: its slot in `lights`, or -1
+    std::vector<int> shadowSlots; // per input light: its slot in `lights`, or -1
     std::vector<ShadowPlanNote> report;
     DirectionalShadowUniforms uniforms;
 };

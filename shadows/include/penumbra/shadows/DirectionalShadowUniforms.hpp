@@ -49,7 +49,8 @@ struct DirectionalShadowUniforms {
     std::int32_t cascadeBlend = 0;
     std::int32_t shadowedLightCount = 0;
     std::int32_t cascadeProjection = 0;
-    alignas(16) std::array<glm::vec4, maxShadowedDirectionalLights> lightShadowData{}; // std140: vec4 arrays align to 16
+    alignas(
+        16) std::array<glm::vec4, maxShadowedDirectionalLights> lightShadowData{}; // std140: vec4 arrays align to 16
     std::array<glm::vec4, maxShadowedDirectionalLights * maxCascades> tileSoft{};
     std::array<glm::vec4, maxShadowedDirectionalLights> lightSoft{};
     SoftShadowUniforms soft;
@@ -70,22 +71,23 @@ static_assert(sizeof(DirectionalShadowUniforms) == 1632);
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout directionalShadowLayout()
 {
-    rhi::UniformLayout layout{"DirectionalShadows", sizeof(DirectionalShadowUniforms),
+    rhi::UniformLayout layout{"DirectionalShadows",
+                              sizeof(DirectionalShadowUniforms),
                               {
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, worldToAtlas),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cullingSpheres),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeData),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, distanceFade),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, atlasSize),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeCount),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, defaultFilter),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeBlend),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, shadowedLightCount),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeProjection),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightShadowData),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, tileSoft),
-                PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightSoft),
-            }};
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, worldToAtlas),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cullingSpheres),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeData),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, distanceFade),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, atlasSize),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeCount),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, defaultFilter),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeBlend),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, shadowedLightCount),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, cascadeProjection),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightShadowData),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, tileSoft),
+                                  PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, lightSoft),
+                              }};
     for (rhi::UniformMember& member : softShadowMembers(std::uint32_t(offsetof(DirectionalShadowUniforms, soft))))
         layout.members.push_back(std::move(member));
     return layout;

@@ -25,6 +25,7 @@ float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBoun
 // The projection's texture-space depth row (t22, t32'): depth = t22 * viewZ + t32, with t32' = t32 + t22 (near -
 // casterTop), so that orthographicDistanceFromNear(depth, row) is the distance past the casters' top (the blocker
 // search's receiver depth), and differences of two depths stay world distances.
-glm::vec2 directionalDepthRow(const DirectionalShadowCascade& fit, float casterTop, const rhi::Conventions& conventions);
+glm::vec2 directionalDepthRow(const DirectionalShadowCascade& fit, float casterTop,
+                              const rhi::Conventions& conventions);
 
 } // namespace penumbra::shadows

@@ -47,8 +47,7 @@ glm::vec4 perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSiz
 
 // Normal bias per unit distance from the light plane: texel size x filter size x sqrt 2 (a texel's
 // diagonal is the worst case), times the light's normal bias.
-float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, ShadowFilter filter,
-                           float normalBias);
+float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, ShadowFilter filter, float normalBias);
 
 // Field of view of a point light's face tiles, widened so that normal bias and filter taps near a
 // face edge stay inside the tile: tan(fov / 2) = 1 + bias + filter size at distance 1.

@@ -28,7 +28,7 @@ struct SpotShadowInput {
     float slopeScaleBias = 0.0f;
     float nearPlane = 0.0f; // world units; 0: LocalShadowSettings::nearPlane x range
     std::optional<ShadowFilter> filter; // nullopt: the atlas's (LocalShadowSettings::filter)
-    float sourceRadius = 0.0f;          // world units: the source size of Poisson and PCSS filters
+    float sourceRadius = 0.0f; // world units: the source size of Poisson and PCSS filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
@@ -54,7 +54,7 @@ struct LocalShadowView {
     glm::mat4 viewProjection{1.0f};
     float slopeScaleBias = 0.0f;
     std::vector<std::uint32_t> casters; // indices into the caster bounds, the views' frustum culled
-    CasterNormalOffset normalOffset;    // the caster-side normal bias; none on the receiver side
+    CasterNormalOffset normalOffset; // the caster-side normal bias; none on the receiver side
 };
 
 struct LocalAtlasTile {
@@ -78,9 +78,9 @@ struct LocalShadowNote {
 struct LocalShadowPlan {
     ShadowAtlasLayout atlas{256, 0};
     std::vector<LocalAtlasTile> tiles; // in tile order
-    std::vector<ShadowCube> cubes;     // CubeMap mode only
-    std::vector<int> spotTiles;        // per spot light: its tile, or -1 without shadows
-    std::vector<int> pointShadows;     // per point light: first of its six tiles (Atlas mode) or its cube, or -1
+    std::vector<ShadowCube> cubes; // CubeMap mode only
+    std::vector<int> spotTiles; // per spot light: its tile, or -1 without shadows
+    std::vector<int> pointShadows; // per point light: first of its six tiles (Atlas mode) or its cube, or -1
     std::vector<LocalShadowNote> report;
     LocalShadowUniforms uniforms;
 };

@@ -57,18 +57,19 @@ static_assert(sizeof(LocalShadowUniforms) == 1984);
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout localShadowLayout()
 {
-    rhi::UniformLayout layout{"LocalShadows", sizeof(LocalShadowUniforms),
+    rhi::UniformLayout layout{"LocalShadows",
+                              sizeof(LocalShadowUniforms),
                               {
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, worldToAtlas),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, tileBounds),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, tileData),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, cubeData),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, atlasSize),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, defaultFilter),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, pointMode),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, tileSoft),
-                PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, cubeSoft),
-            }};
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, worldToAtlas),
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, tileBounds),
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, tileData),
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, cubeData),
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, atlasSize),
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, defaultFilter),
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, pointMode),
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, tileSoft),
+                                  PENUMBRA_UNIFORM_MEMBER(LocalShadowUniforms, cubeSoft),
+                              }};
     for (rhi::UniformMember& member : softShadowMembers(std::uint32_t(offsetof(LocalShadowUniforms, soft))))
         layout.members.push_back(std::move(member));
     return layout;

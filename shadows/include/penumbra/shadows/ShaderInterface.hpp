@@ -6,7 +6,7 @@
 namespace penumbra::shadows {
 
 // Bindings of the shadow caster pass (shaders/shadow_caster.glsl, shadow_caster_alpha.frag).
-inline constexpr std::uint32_t kCasterDrawBinding = 0;      // ShadowCasterUniforms
+inline constexpr std::uint32_t kCasterDrawBinding = 0; // ShadowCasterUniforms
 inline constexpr std::uint32_t kCasterBaseColorBinding = 1; // the alpha of Clip and Dither casters
 
 // The GLSL include "shadow_interface.glsl" of every shader with shadow blocks: their array sizes and the enum values

@@ -13,7 +13,7 @@ namespace penumbra::shadows {
 // How a caster's surface enters the atlas; casters that cast nothing are simply not listed.
 enum class ShadowCasterMode : std::uint8_t {
     Opaque, // every texel
-    Clip,   // texels whose alpha (with the clip checker, material.glsl) is below alphaCutoff are dropped
+    Clip, // texels whose alpha (with the clip checker, material.glsl) is below alphaCutoff are dropped
     Dither, // a texel is kept where alpha reaches the interleaved-gradient dither (alpha as coverage)
 };
 

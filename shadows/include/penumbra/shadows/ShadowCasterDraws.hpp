@@ -35,7 +35,8 @@ static_assert(sizeof(ShadowCasterUniforms) == 336);
 // The struct as the PipelineDesc::uniformLayouts entry of shadow_caster.glsl's block ShadowCasterDraw.
 inline rhi::UniformLayout shadowCasterLayout()
 {
-    return {"ShadowCasterDraw", sizeof(ShadowCasterUniforms),
+    return {"ShadowCasterDraw",
+            sizeof(ShadowCasterUniforms),
             {
                 PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, worldToClip),
                 PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, material),

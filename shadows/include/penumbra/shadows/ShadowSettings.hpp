@@ -82,20 +82,20 @@ inline constexpr std::uint32_t kPoissonSampleCounts[] = {16, 32, 64};
 // clamp. Shared by every light whose filter is Poisson or PCSS.
 struct SoftShadowSettings {
     float blockerSearchScale = 1.0f; // 0.1..10, scales w_search
-    float penumbraScale = 1.0f;      // 0.1..10, scales w_penumbra
+    float penumbraScale = 1.0f; // 0.1..10, scales w_penumbra
     std::uint32_t blockerSamples = 16; // 16, 32 or 64
-    std::uint32_t filterSamples = 16;  // 16, 32 or 64
-    float minPenumbraTexels = 1.0f;  // 0..64, the filter radius never goes below this
+    std::uint32_t filterSamples = 16; // 16, 32 or 64
+    float minPenumbraTexels = 1.0f; // 0..64, the filter radius never goes below this
     float maxPenumbraTexels = 24.0f; // minPenumbraTexels..64, nor above this (nor the blocker search)
     float poissonRadiusTexels = 2.5f; // 0.5..64, the fixed-radius Poisson filter's radius
 };
 
 struct DirectionalShadowSettings {
-    std::uint32_t atlasSize = 1024;            // texels per side, a power of two in 256..8192
+    std::uint32_t atlasSize = 1024; // texels per side, a power of two in 256..8192
     ShadowFilter filter = ShadowFilter::PCF2x2;
-    std::uint32_t cascadeCount = 4;            // 1..4
+    std::uint32_t cascadeCount = 4; // 1..4
     glm::vec3 cascadeRatios{0.1f, 0.25f, 0.5f}; // ends of cascades 1..3 as fractions of the shadow distance
-    float cascadeFade = 0.1f;                  // 0.001..1, fraction of the last cascade's radius that fades
+    float cascadeFade = 0.1f; // 0.001..1, fraction of the last cascade's radius that fades
     CascadeBlend cascadeBlend = CascadeBlend::Hard;
     CascadeProjection projection = CascadeProjection::Stable;
     rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
@@ -103,7 +103,8 @@ struct DirectionalShadowSettings {
 
 // Where point lights keep their six faces.
 enum class PointShadowMode {
-    Atlas,   // six tiles of the local atlas, the face picked in the lit shader (Catlike Coding's "Point and Spot Shadows")
+    Atlas, // six tiles of the local atlas, the face picked in the lit shader (Catlike Coding's "Point and Spot
+           // Shadows")
     CubeMap, // a depth cube map per light, sampled with hardware cube lookups
 };
 
@@ -124,13 +125,13 @@ struct LocalShadowSettings {
 // modes "Every Frame", "On Enable" and "On Demand"; Godot's shadow atlas re-renders a light only when it changes).
 enum class StaticShadowUpdate {
     EveryFrame, // no static maps: every caster is drawn into the realtime atlases every frame, as before
-    OnChange,   // drawn once, then again only when a static caster, the light or its settings change
-    OnDemand,   // drawn once, then again only when the application asks (SceneRenderer::requestStaticShadowUpdate)
+    OnChange, // drawn once, then again only when a static caster, the light or its settings change
+    OnDemand, // drawn once, then again only when the application asks (SceneRenderer::requestStaticShadowUpdate)
 };
 
 // Which casters the realtime atlases draw while static maps exist.
 enum class RealtimeCasters {
-    All,     // every caster; the static map adds the shadow beyond the shadow distance and for lights without tiles
+    All, // every caster; the static map adds the shadow beyond the shadow distance and for lights without tiles
     Dynamic, // dynamic casters only; the static casters' shadow comes from the static map (Unity's Shadowmask mode)
 };
 
@@ -148,7 +149,7 @@ struct StaticShadowSettings {
 
 struct ShadowSettings {
     float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001; applies to every light
-    float distanceFade = 0.1f;  // 0.001..1, fraction of maxDistance over which shadows fade out
+    float distanceFade = 0.1f; // 0.001..1, fraction of maxDistance over which shadows fade out
     DirectionalShadowSettings directional;
     LocalShadowSettings local;
     SoftShadowSettings soft;

@@ -71,8 +71,8 @@ std::vector<glm::vec2> poissonTaps(glm::vec2 centre, float radius, float angle, 
 
 // A tile of depths and the convention's order: what the blocker search reads.
 struct DepthTileView {
-    std::function<float(glm::ivec2)> depthAt;    // the stored depth of a texel inside the tile
-    std::function<bool(float, float)> isNearer;  // a nearer to the light than b
+    std::function<float(glm::ivec2)> depthAt; // the stored depth of a texel inside the tile
+    std::function<bool(float, float)> isNearer; // a nearer to the light than b
     glm::ivec2 tileMin{0};
     glm::ivec2 tileMax{0};
 };
@@ -85,7 +85,7 @@ struct BlockerSearch {
 // The blocker search at texel-space position `centre`, receiver depth `depth` and receiver-plane gradient
 // `gradient`: every tap's texel (clamped into the tile) whose depth is nearer than the receiver plane at that
 // texel's centre is a blocker.
-BlockerSearch searchBlockers(const DepthTileView& tile, glm::vec2 centre, float depth, glm::vec2 gradient,
-                             float radius, float angle, std::uint32_t count);
+BlockerSearch searchBlockers(const DepthTileView& tile, glm::vec2 centre, float depth, glm::vec2 gradient, float radius,
+                             float angle, std::uint32_t count);
 
 } // namespace penumbra::shadows

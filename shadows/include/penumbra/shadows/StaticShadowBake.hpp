@@ -19,12 +19,12 @@ struct BakedShadowMap {
     std::string lightName;
     std::uint32_t size = 0;
     std::vector<ShadowFrustum> frusta; // per tile, as planned when baked
-    std::uint64_t hash = 0;            // of the light's views and the static casters in them (render::staticMapHash)
-    std::vector<float> depth;          // size x size x frusta.size()
+    std::uint64_t hash = 0; // of the light's views and the static casters in them (render::staticMapHash)
+    std::vector<float> depth; // size x size x frusta.size()
 };
 
 struct StaticShadowBake {
-    std::string configuration;        // where it was baked (any configuration loads it)
+    std::string configuration; // where it was baked (any configuration loads it)
     std::vector<std::string> objects; // the static casters' objects
     std::vector<BakedShadowMap> maps;
 };

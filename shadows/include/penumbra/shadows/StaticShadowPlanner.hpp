@@ -20,9 +20,9 @@ enum class ShadowLightKind : std::uint8_t { Directional, Spot, Point };
 
 // A shadow view as no convention sees it: the light's view and its frustum, what a bake records and checks.
 struct ShadowFrustum {
-    glm::mat4 view{1.0f};   // world -> light view, looking down -z
+    glm::mat4 view{1.0f}; // world -> light view, looking down -z
     bool perspective = false;
-    float extent = 0.0f;    // half the side of the orthographic square, or the perspective field of view (radians)
+    float extent = 0.0f; // half the side of the orthographic square, or the perspective field of view (radians)
     float nearPlane = 0.0f; // view depths along -z
     float farPlane = 0.0f;
 };
@@ -66,8 +66,8 @@ struct StaticShadowPlan {
 
 // The casters whose depth the static maps hold: indices into the planner's caster bounds.
 struct StaticCasters {
-    std::span<const Bounds> bounds;          // every caster's
-    std::span<const std::uint32_t> indices;  // the static ones, ascending
+    std::span<const Bounds> bounds; // every caster's
+    std::span<const std::uint32_t> indices; // the static ones, ascending
 };
 
 // The update mode of a light: its own, or the settings'.

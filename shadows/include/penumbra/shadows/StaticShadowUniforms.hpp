@@ -31,7 +31,8 @@ inline constexpr std::uint32_t maxStaticMapLocalLights = 16;
 //       vec4 localLights[16];          // per spot light, then point light: first tile or -1, shadow strength, 0, 0
 //       vec4 atlasSizes;               // directional atlas size, local atlas size, 0, 0
 //       vec4 directionalSoft[4];       // per directional tile, for the Poisson and PCSS filters: the light texel
-//                                      // anchor (x, y) and the depth row (z, w), as DirectionalShadowUniforms::tileSoft
+//                                      // anchor (x, y) and the depth row (z, w), as
+//                                      DirectionalShadowUniforms::tileSoft
 //       vec4 directionalSource[4];     // per directional tile: tan of half the light's angular diameter, the world
 //                                      // size of a texel, 0, 0
 //       vec4 localSoft[64];            // per spot and point tile: the depth row (t22, t32), the light's radius in
@@ -68,7 +69,8 @@ static_assert(sizeof(StaticShadowUniforms) == 8016);
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout staticShadowLayout()
 {
-    return {"StaticShadows", sizeof(StaticShadowUniforms),
+    return {"StaticShadows",
+            sizeof(StaticShadowUniforms),
             {
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalWorldToMap),
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalBounds),

@@ -51,5 +51,5 @@ struct ExpectParityAt {
 // PENUMBRA_EXPECT_PARITY(render) or PENUMBRA_EXPECT_PARITY(render, options), with a RenderFunction or
 // the runs of one, options a parity::Options or a braced list of its fields
 // ({.configurations = {"vulkan", "opengl"}}); returns the parity::Result.
-#define PENUMBRA_EXPECT_PARITY(render, ...)                                                                           \
+#define PENUMBRA_EXPECT_PARITY(render, ...)                                                                            \
     ::penumbra::parity::testing::ExpectParityAt{__FILE__, __LINE__}((render)__VA_OPT__(, ) __VA_ARGS__)
