@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize tsan fuzz docs clean
+.PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize tsan fuzz docs format tidy clean
 
 all: build
 
@@ -84,6 +84,15 @@ docs: deps
 	@mkdir -p $(BUILD)/docs
 	@PENUMBRA_DOCS_OUTPUT=$(BUILD)/docs doxygen docs/Doxyfile
 	@echo "docs: $(BUILD)/docs/html/index.html"
+
+# Formats every C++ source as .clang-format says (`make test` fails on any it would change).
+format: deps
+	@./scripts/check-format.sh --fix
+
+# clang-tidy's small .clang-tidy set over the library and the tools, from the build's compile_commands.json.
+tidy: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON --log-level=WARNING
+	@run-clang-tidy -quiet -p $(BUILD) '/(rhi|backends|shadows|scene|render|parity|apps)/'
 
 clean:
 	@rm -rf $(BUILD) build-sanitize build-fuzz out

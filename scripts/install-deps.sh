@@ -9,7 +9,7 @@ packages=(
   glslang-dev glslang-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev openimageio-tools
   libstb-dev libfmt-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
-  libimgui-dev xvfb xauth doxygen
+  libimgui-dev xvfb xauth doxygen clang-format clang-tidy
 )
 
 # The Khronos glTF Validator, the loader tests' oracle (tests/scene/GltfValidatorTest.cpp), from npm.
