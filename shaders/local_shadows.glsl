@@ -173,9 +173,12 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
         if (wide.y == 0.0)
             return 1.0;
         // As averageBlocker: the nearest blocker's cone searched again for the average.
-        const vec3 near = cubeSearchBlockers(
-            r, min(perspectiveSearchTexels(receiver, wide.z, cubeSoft.y, c), search), c.blockerSamples, receiver);
-        radius = perspectivePenumbraTexels(receiver, near.y > 0.0 ? near.x : wide.x, cubeSoft.y, c);
+        const float refined = min(perspectiveSearchTexels(receiver, wide.z, cubeSoft.y, c), search);
+        const vec3 near = cubeSearchBlockers(r, refined, c.blockerSamples, receiver);
+        const vec2 blockers = near.y > 0.0 ? near.xy : wide.xy;
+        radius = perspectivePenumbraTexels(receiver, blockers.x, cubeSoft.y, c);
+        if (inUmbra(blockers, c.blockerSamples, radius, refined))
+            return 0.0;
     }
     return cubePoissonFilter(r, radius, c.filterSamples);
 }
