@@ -128,21 +128,24 @@ vec3 cubeTap(CubeReceiver r, int index, float radius)
     return r.d + o.x * r.u + o.y * r.v;
 }
 
-// (average major-axis distance of the blockers, their count).
-vec2 cubeSearchBlockers(CubeReceiver r, float radius, int count)
+// (average major-axis distance of the blockers, their count, the nearest blocker's distance).
+vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
 {
     const int first = count - 16;
     float sum = 0.0;
     float blockers = 0.0;
+    float nearest = receiver;
     for (int i = 0; i < count; ++i) {
         const vec3 tap = cubeTap(r, first + i, radius);
         const float stored = texture(pointShadowCubeDepths, vec4(tap, float(r.cube))).r;
         if (penumbraIsNearer(stored, cubePlaneDepth(r, tap))) {
-            sum += perspectiveDistance(stored, r.data.xy);
+            const float distance = perspectiveDistance(stored, r.data.xy);
+            sum += distance;
             blockers += 1.0;
+            nearest = min(nearest, distance);
         }
     }
-    return vec2(blockers > 0.0 ? sum / blockers : 0.0, blockers);
+    return vec3(blockers > 0.0 ? sum / blockers : 0.0, blockers, nearest);
 }
 
 float cubePoissonFilter(CubeReceiver r, float radius, int count)
@@ -165,11 +168,17 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
     if (filterIndex == PENUMBRA_FILTER_PCSS) {
         const vec3 a = abs(r.d);
         const float receiver = max(max(a.x, a.y), a.z);
-        const vec2 blockers =
-            cubeSearchBlockers(r, perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c), c.blockerSamples);
-        if (blockers.y == 0.0)
+        const float search = perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c);
+        const vec3 wide = cubeSearchBlockers(r, search, c.blockerSamples, receiver);
+        if (wide.y == 0.0)
             return 1.0;
+        // As averageBlocker: the nearest blocker's cone searched again for the average.
+        const float refined = min(perspectiveSearchTexels(receiver, wide.z, cubeSoft.y, c), search);
+        const vec3 near = cubeSearchBlockers(r, refined, c.blockerSamples, receiver);
+        const vec2 blockers = near.y > 0.0 ? near.xy : wide.xy;
         radius = perspectivePenumbraTexels(receiver, blockers.x, cubeSoft.y, c);
+        if (inUmbra(blockers, c.blockerSamples, radius, refined))
+            return 0.0;
     }
     return cubePoissonFilter(r, radius, c.filterSamples);
 }

@@ -92,22 +92,45 @@ vec2 diskTap(SoftTile t, int index, float radius) { return t.centre + radius * (
 // The receiver plane's depth at the centre of `texel`.
 float planeDepth(SoftTile t, ivec2 texel) { return t.depth + dot(t.gradient, vec2(texel) + 0.5 - t.centre); }
 
-// (average depth of the blockers, their count) among `count` taps within `radius` texels: a tap's texel, clamped
-// into the tile, is a blocker when its depth is nearer to the light than the receiver plane there.
-vec2 searchBlockers(sampler2D atlas, SoftTile t, float radius, int count)
+// (average depth of the blockers, their count, the nearest blocker's depth) among `count` taps within `radius`
+// texels: a tap's texel, clamped into the tile, is a blocker when its depth is nearer to the light than the receiver
+// plane there. penumbra::shadows::searchBlockers.
+vec3 searchBlockers(sampler2D atlas, SoftTile t, float radius, int count)
 {
     const int first = count - 16;
     float sum = 0.0;
     float blockers = 0.0;
+    float nearest = t.depth;
     for (int i = 0; i < count; ++i) {
         const ivec2 texel = clamp(ivec2(floor(diskTap(t, first + i, radius))), t.tileMin, t.tileMax);
         const float stored = texelFetch(atlas, texel, 0).r;
         if (penumbraIsNearer(stored, planeDepth(t, texel))) {
             sum += stored;
             blockers += 1.0;
+            nearest = penumbraIsNearer(stored, nearest) ? stored : nearest;
         }
     }
-    return vec2(blockers > 0.0 ? sum / blockers : 0.0, blockers);
+    return vec3(blockers > 0.0 ? sum / blockers : 0.0, blockers, nearest);
+}
+
+// The blocker search in two steps. The first searches as far as the nearest caster of the whole light could reach
+// (the search radius, clamped to maxPenumbraTexels), which is mostly far wider than any blocker near the receiver
+// needs, and by that clamp a different region of the world in each cascade; it finds the nearest blocker. The second
+// searches only the disk that blocker can shadow the receiver from (its light cone, `refined` texels) and averages
+// the blockers there, so the average, and the penumbra, depend on the blockers near the receiver, not on the clamp.
+// Returns (average blocker depth, blockers found); none found: fully lit.
+vec2 averageBlocker(sampler2D atlas, SoftTile t, vec3 wide, float refined, int count)
+{
+    const vec3 near = searchBlockers(atlas, t, refined, count);
+    return near.y > 0.0 ? near.xy : wide.xy;
+}
+
+// Every tap of the refined search found a blocker and the penumbra fits inside it: the receiver is in the umbra,
+// fully shadowed without filtering (the blocker search's early out of NVIDIA 2008, "Integrating Realistic Soft
+// Shadows into Your Game Engine"), which spares the umbra the filter's taps.
+bool inUmbra(vec2 blockers, int count, float radius, float refined)
+{
+    return blockers.y == float(count) && radius <= refined;
 }
 
 float comparePlane(sampler2D atlas, SoftTile t, ivec2 texel)
@@ -165,12 +188,19 @@ float directionalSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftCo
     if (filterIndex == PENUMBRA_FILTER_PCSS) {
         const float receiver = max((depthRow.y - t.depth) / depthRow.x, 0.0);
         const float search = clamp(c.searchScale * receiver * tanHalfAngle / texelWorld, 1.0, max(c.maxTexels, 1.0));
-        const vec2 blockers = searchBlockers(atlas, t, search, c.blockerSamples);
-        if (blockers.y == 0.0)
+        const vec3 wide = searchBlockers(atlas, t, search, c.blockerSamples);
+        if (wide.y == 0.0)
             return 1.0;
+        const float nearest = (depthRow.y - wide.z) / depthRow.x;
+        const float refined = min(clamp(c.searchScale * max(receiver - nearest, 0.0) * tanHalfAngle / texelWorld, 1.0,
+                                        max(c.maxTexels, 1.0)),
+                                  search);
+        const vec2 blockers = averageBlocker(atlas, t, wide, refined, c.blockerSamples);
         const float blocker = (depthRow.y - blockers.x) / depthRow.x;
         radius = clamp(c.penumbraScale * max(receiver - blocker, 0.0) * tanHalfAngle / texelWorld, c.minTexels,
                        c.maxTexels);
+        if (inUmbra(blockers, c.blockerSamples, radius, refined))
+            return 0.0;
     }
     return poissonFilter(atlas, t, radius, c.filterSamples);
 }
@@ -198,11 +228,17 @@ float perspectiveSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftCo
     float radius = c.poissonRadius;
     if (filterIndex == PENUMBRA_FILTER_PCSS) {
         const float receiver = perspectiveDistance(t.depth, tileSoft.xy);
-        const vec2 blockers =
-            searchBlockers(atlas, t, perspectiveSearchTexels(receiver, tileSoft.w, tileSoft.z, c), c.blockerSamples);
-        if (blockers.y == 0.0)
+        const float search = perspectiveSearchTexels(receiver, tileSoft.w, tileSoft.z, c);
+        const vec3 wide = searchBlockers(atlas, t, search, c.blockerSamples);
+        if (wide.y == 0.0)
             return 1.0;
+        // The nearest blocker's cone: the search formula with that blocker in place of the near plane.
+        const float refined =
+            min(perspectiveSearchTexels(receiver, perspectiveDistance(wide.z, tileSoft.xy), tileSoft.z, c), search);
+        const vec2 blockers = averageBlocker(atlas, t, wide, refined, c.blockerSamples);
         radius = perspectivePenumbraTexels(receiver, perspectiveDistance(blockers.x, tileSoft.xy), tileSoft.z, c);
+        if (inUmbra(blockers, c.blockerSamples, radius, refined))
+            return 0.0;
     }
     return poissonFilter(atlas, t, radius, c.filterSamples);
 }

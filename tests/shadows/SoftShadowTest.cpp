@@ -194,6 +194,25 @@ TEST(BlockerSearchTest, AveragesOnlyNearerTexelsAndIgnoresTheSlopedReceiver)
     EXPECT_FLOAT_EQ(edge.averageDepth, 0.2f);
 }
 
+// The refined search's input: two blockers, the nearer at 0.1 on x < 90, the farther at 0.3 on 90 <= x < 110; a
+// search over both reports the nearer as the nearest and averages the two, one over the farther alone finds 0.3.
+TEST(BlockerSearchTest, ReportsTheNearestBlocker)
+{
+    DepthTileView tile;
+    tile.tileMin = {0, 0};
+    tile.tileMax = {255, 255};
+    tile.isNearer = [](float a, float b) { return a < b - 1e-6f; };
+    tile.depthAt = [](glm::ivec2 t) { return t.x < 90 ? 0.1f : t.x < 110 ? 0.3f : 0.8f; };
+    const BlockerSearch both = searchBlockers(tile, {100.0f, 50.0f}, 0.8f, glm::vec2(0.0f), 16.0f, 0.3f, 32);
+    EXPECT_FLOAT_EQ(both.nearestDepth, 0.1f);
+    EXPECT_GT(both.averageDepth, 0.1f);
+    EXPECT_LT(both.averageDepth, 0.3f);
+    const BlockerSearch farther = searchBlockers(tile, {104.0f, 50.0f}, 0.8f, glm::vec2(0.0f), 4.0f, 0.3f, 16);
+    EXPECT_FLOAT_EQ(farther.nearestDepth, 0.3f);
+    EXPECT_FLOAT_EQ(farther.averageDepth, 0.3f);
+    EXPECT_FLOAT_EQ(searchBlockers(tile, {200.0f, 50.0f}, 0.8f, glm::vec2(0.0f), 8.0f, 0.3f, 16).nearestDepth, 0.8f);
+}
+
 TEST(SoftSettingsTest, ValidatesEveryControl)
 {
     ShadowSettings s;

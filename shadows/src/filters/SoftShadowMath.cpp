@@ -103,6 +103,7 @@ BlockerSearch searchBlockers(const DepthTileView& tile, glm::vec2 centre, float 
                              float angle, std::uint32_t count)
 {
     BlockerSearch result;
+    result.nearestDepth = depth;
     float sum = 0.0f;
     for (const glm::vec2& tap : poissonTaps(centre, radius, angle, count)) {
         const glm::ivec2 texel = clampTapTexel(tap, tile.tileMin, tile.tileMax);
@@ -111,6 +112,7 @@ BlockerSearch searchBlockers(const DepthTileView& tile, glm::vec2 centre, float 
         if (tile.isNearer(stored, plane)) {
             sum += stored;
             ++result.blockers;
+            result.nearestDepth = tile.isNearer(stored, result.nearestDepth) ? stored : result.nearestDepth;
         }
     }
     if (result.blockers > 0)

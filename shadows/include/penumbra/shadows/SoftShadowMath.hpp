@@ -80,6 +80,7 @@ struct DepthTileView {
 struct BlockerSearch {
     float averageDepth = 0.0f; // of the blockers found, shadow-map depth
     std::uint32_t blockers = 0;
+    float nearestDepth = 0.0f; // the blocker nearest to the light; the receiver's depth without blockers
 };
 
 // The blocker search at texel-space position `centre`, receiver depth `depth` and receiver-plane gradient
