@@ -321,6 +321,25 @@ TEST_F(ShadowMaskTest, LowSunAgreesWithTheRayCast)
     EXPECT_TRUE(k.failures.empty()) << joined(k.failures);
 }
 
+// The forest (terrain, trunks, double-sided alpha-tested leaf cards) with every filter of the sun's atlas against the
+// ray cast, which honours the leaves' alpha: the class bounds and at most 1 acne pixel in 1000 truly lit ones, on
+// both faces of the cards alike, with default settings. Most of the forest is shadow edge: at 480 x 270 about 2 000
+// truly shadowed pixels lie away from edges (the wider tents' edge margins leave fewer). Measured (vulkan): lit
+// 100% with every filter, shadowed 99.75% (hard) to 100%, no acne.
+TEST_F(ShadowMaskTest, ForestAgreesWithTheRayCastWithEveryFilter)
+{
+    const scene::Scene scene = scene::makeForestScene();
+    for (const shadows::ShadowFilterInfo& filter : shadows::shadowFilters()) {
+        shadows::ShadowSettings settings;
+        settings.directional.filter = filter.filter;
+        const render::FrameDesc frame = maskFrame(settings, 480, 270, kKeyLight);
+        const std::string name = fmt::format("forest {}", filter.command);
+        const TruthFigures f = report(*this, name, renderMask(scene, frame), traceTruth(gpu(), scene, frame));
+        const std::vector<std::string> failures = truthFailures(f, 1000);
+        EXPECT_TRUE(failures.empty()) << name << ": " << joined(failures);
+    }
+}
+
 // The caster-side normal bias (the shadow pass moves casters away from the light; the lit pass looks up where the
 // surface is) against the same ray cast, high and low sun: the same class bounds. Its cost is at contacts: the cube
 // shrinks away from the ground, measured 5 of 139 contact samples lit at 50 degrees (0 of 89 at 20), which the
