@@ -69,7 +69,7 @@ sanitize:
 tsan: deps
 	@cmake -S . -B build-tsan -DPENUMBRA_WERROR=ON -DPENUMBRA_TSAN=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo --log-level=WARNING
 	@cmake --build build-tsan -j $(JOBS) --target penumbra_threading_tests
-	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" setarch $$(uname -m) -R \
+	@TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$(CURDIR)/tests/threading/tsan.supp" setarch $$(uname -m) -R \
 		ctest --test-dir build-tsan -R '^threading\.' --output-on-failure
 
 # libFuzzer targets (tests/fuzz) with clang, ASan and UBSan in build-fuzz/, each run FUZZ_SECONDS (default 180) one
