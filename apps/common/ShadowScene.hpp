@@ -15,8 +15,9 @@
 namespace penumbra::apps {
 
 // One shadow atlas as read back, by the name files and reports use: "directional" (the cascades
-// of the directional lights), "other" (spot and point lights) and, in cube-map mode, "cube" (the
-// first point light's six cube faces side by side, +X to -Z).
+// of the directional lights), "other" (the local lights' atlas: spot and point lights, under the name published
+// before they were called local) and, in cube-map mode, "cube" (the first point light's six cube faces side by
+// side, +X to -Z).
 struct AtlasPictures {
     std::string name;
     rhi::Image picture; // render::atlasPicture of depth, in linear light depth
