@@ -252,7 +252,7 @@ ShadowSettings parseShadowSettings(std::string_view json, std::string_view sourc
     Json root;
     try {
         root = Json::parse(json);
-    } catch (const Json::parse_error& e) {
+    } catch (const Json::exception& e) { // parse_error, and out_of_range for a number beyond double (1e382)
         throw rhi::Error(fmt::format("{}: not valid JSON: {}", sourceName, e.what()));
     }
     ShadowSettings settings;

@@ -185,6 +185,11 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
               "shadows.json: directional.projection: unknown value \"tight\", allowed stable, close");
     EXPECT_EQ(parseError(R"({"directional": {"projection": 1}})"),
               "shadows.json: directional.projection: unknown value 1, allowed stable, close");
+    // Found by the shadow_settings fuzz target: nlohmann reports a number beyond double as out_of_range, not as a
+    // parse error; it is bad JSON like any other (tests/fuzz/regressions/shadow_settings/).
+    const std::string overflow = parseError(R"({"maxDistance": 1e382})");
+    EXPECT_EQ(overflow.rfind("shadows.json: not valid JSON: ", 0), 0u) << overflow;
+    EXPECT_NE(overflow.find("number overflow"), std::string::npos) << overflow;
     EXPECT_EQ(parseError(R"({"maxDistance": "far"})"),
               "shadows.json: maxDistance: expected a number, got \"far\", allowed > 0.001");
     EXPECT_EQ(parseError(R"({"directional": {"cascadeCount": 2.5}})"),

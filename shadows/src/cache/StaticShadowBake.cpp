@@ -235,7 +235,7 @@ StaticShadowBake readStaticShadowBake(const std::filesystem::path& directory)
     Json root;
     try {
         root = Json::parse(text.str());
-    } catch (const Json::parse_error& e) {
+    } catch (const Json::exception& e) { // parse_error, and out_of_range for a number beyond double (1e382)
         throw rhi::Error(fmt::format("{}: not valid JSON (truncated?): {}", path.string(), e.what()));
     }
     const ManifestReader r(path);
