@@ -58,6 +58,10 @@ std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spi
     return bindings;
 }
 
+// Includes nest at most this deep. glslang has no limit of its own: a file that includes itself recursed until
+// memory ran out (found by the shader fuzz target).
+constexpr std::size_t kMaxIncludeDepth = 32;
+
 // Resolves `#include "name"` against the source's include list; unknown names fail with the list.
 class IncludeList : public glslang::TShader::Includer {
 public:
@@ -68,8 +72,14 @@ public:
         return includeSystem(headerName, includerName, depth);
     }
 
-    IncludeResult* includeSystem(const char* headerName, const char*, size_t) override
+    IncludeResult* includeSystem(const char* headerName, const char*, size_t depth) override
     {
+        if (depth > kMaxIncludeDepth) {
+            // A failed include is an empty name with the error message as its text (glslang's ShaderLang.h).
+            error_ = fmt::format("\"{}\" nested deeper than {} includes (does an include include itself?)", headerName,
+                                 kMaxIncludeDepth);
+            return new IncludeResult("", error_.data(), error_.size(), nullptr);
+        }
         for (const ShaderInclude& include : includes_)
             if (include.name == headerName)
                 return new IncludeResult(include.name, include.source.data(), include.source.size(), nullptr);
@@ -80,6 +90,7 @@ public:
 
 private:
     const std::vector<ShaderInclude>& includes_;
+    std::string error_;
 };
 
 // Everything the SPIR-V depends on, as one string: the stage, the preamble, the name errors cite, every source.

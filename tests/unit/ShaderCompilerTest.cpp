@@ -106,6 +106,23 @@ TEST(ShaderCompilerTest, IncludesResolveAndTheirErrorsCiteTheIncludedFile)
     EXPECT_THROW(compileShader(source, header), ShaderCompileError);
 }
 
+// Found by the shader fuzz target: an include that includes itself recursed in glslang until memory ran out.
+TEST(ShaderCompilerTest, AnIncludeThatIncludesItselfIsRefused)
+{
+    const ShaderSource source{ShaderStage::Fragment,
+                              "#version 450\n#include \"loop.glsl\"\nlayout(location = 0) out vec4 outColor;\n"
+                              "void main() { outColor = vec4(1.0); }\n",
+                              "looping.frag",
+                              {{"loop.glsl", "#include \"loop.glsl\"\n"}}};
+    try {
+        compileShader(source, header);
+        FAIL() << "a self-including shader compiled";
+    } catch (const ShaderCompileError& e) {
+        EXPECT_NE(std::string(e.what()).find("\"loop.glsl\" nested deeper than 32 includes"), std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(ShaderCompilerTest, PushConstantsAreRefusedWithTheReason)
 {
     try {
