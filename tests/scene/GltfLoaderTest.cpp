@@ -467,6 +467,16 @@ TEST_F(GltfLoaderTest, WrongComponentType)
                                        "UNSIGNED_SHORT or UNSIGNED_INT");
 }
 
+// Found by the gltf fuzz target: a component type beyond int64 was converted to int64 before it was compared
+// (undefined behaviour); it is refused as any other value that is not a component type.
+TEST_F(GltfLoaderTest, ComponentTypeBeyondInt64IsRefused)
+{
+    GltfBuilder b = cubeScene();
+    b.json()["accessors"][0]["componentType"] = 8.88889e35;
+    EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /accessors/0/componentType: expected one of 5120, 5121, 5122, "
+                                       "5123, 5125, 5126, got 8.88889e+35");
+}
+
 TEST_F(GltfLoaderTest, IndexPastTheVertices)
 {
     GltfBuilder b;

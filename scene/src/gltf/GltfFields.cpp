@@ -99,7 +99,8 @@ std::optional<std::int64_t> Fields::integer(std::string_view key, std::int64_t l
     if (!value)
         return std::nullopt;
     const std::optional<double> number = wholeNumber(*value);
-    if (!number || *number < double(low) || *number > double(high))
+    // 2^63, the double nearest INT64_MAX, is not an int64: converting it would be undefined.
+    if (!number || *number < double(low) || *number > double(high) || *number >= 0x1p63)
         fail(key, high == std::numeric_limits<std::int64_t>::max()
                       ? fmt::format("expected an integer of at least {}, got {}", low, shortDump(*value))
                       : fmt::format("expected an integer in [{}, {}], got {}", low, high, shortDump(*value)));
@@ -198,10 +199,14 @@ std::optional<std::int64_t> Fields::oneOf(std::string_view key, std::initializer
     const Json* value = member(key);
     if (!value)
         return std::nullopt;
+    // Compared as doubles: a number beyond int64 (8.9e35, found by the gltf fuzz target) is no allowed value, and
+    // converting it to int64 first would be undefined.
     const std::optional<double> number = wholeNumber(*value);
-    if (!number || std::find(allowed.begin(), allowed.end(), std::int64_t(*number)) == allowed.end())
+    const auto match = std::find_if(allowed.begin(), allowed.end(),
+                                    [&](std::int64_t candidate) { return number && double(candidate) == *number; });
+    if (match == allowed.end())
         fail(key, fmt::format("expected one of {}, got {}", fmt::join(allowed, ", "), shortDump(*value)));
-    return std::int64_t(*number);
+    return *match;
 }
 
 std::optional<std::string> Fields::oneOf(std::string_view key, std::initializer_list<std::string_view> allowed) const
