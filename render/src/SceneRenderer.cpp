@@ -256,28 +256,24 @@ static_assert(static_cast<int>(scene::CasterMode::Clip) == static_cast<int>(shad
 
 LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
 {
-    LitObjectUniforms u{object.transform,
-                        glm::transpose(glm::inverse(object.transform)),
-                        material.baseColor,
-                        {material.metallic, material.roughness, material.alphaCutoff,
-                         static_cast<float>(material.caster)},
-                        0,
-                        0,
-                        0,
-                        0,
-                        glm::vec4(material.emissive, material.occlusionStrength),
-                        {material.normalScale, glm::determinant(glm::mat3(object.transform)) < 0.0f ? -1.0f : 1.0f,
-                         0.0f, 0.0f},
-                        {}};
+    LitObjectUniforms u{
+        .model = object.transform,
+        .normalMatrix = glm::transpose(glm::inverse(object.transform)),
+        .baseColor = material.baseColor,
+        .surface = {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
+        .receivesShadows = object.receiveShadows && material.receiveShadows ? 1 : 0,
+        .materialMaps = static_cast<int>(litMaterialMaps(material)),
+        .unlit = material.unlit ? 1 : 0,
+        .blended = material.blend ? 1 : 0,
+        .emissive = glm::vec4(material.emissive, material.occlusionStrength),
+        .normal = {material.normalScale, glm::determinant(glm::mat3(object.transform)) < 0.0f ? -1.0f : 1.0f, 0.0f,
+                   0.0f},
+    };
     for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
         const shadows::UvTransformRows rows = GpuScene::uvTransform(material.textures[slot]);
         u.uvTransforms[2 * slot] = rows[0];
         u.uvTransforms[2 * slot + 1] = rows[1];
     }
-    u.receivesShadows = object.receiveShadows && material.receiveShadows ? 1 : 0;
-    u.materialMaps = static_cast<int>(litMaterialMaps(material));
-    u.unlit = material.unlit ? 1 : 0;
-    u.blended = material.blend ? 1 : 0;
     return u;
 }
 

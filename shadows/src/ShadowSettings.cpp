@@ -33,6 +33,15 @@ constexpr bool listedInOrder()
 }
 static_assert(listedInOrder());
 
+// One kind of the filters' names (JSON or command line), comma separated, in the table's order.
+std::string filterNameList(std::string_view ShadowFilterInfo::*name)
+{
+    std::string text;
+    for (const ShadowFilterInfo& entry : kFilters)
+        text += fmt::format("{}{}", text.empty() ? "" : ", ", entry.*name);
+    return text;
+}
+
 } // namespace
 
 const std::array<ShadowFilterInfo, kShadowFilterCount>& shadowFilters() { return kFilters; }
@@ -47,12 +56,7 @@ std::optional<ShadowFilter> filterFromCommandName(std::string_view name)
 
 std::string_view filterCommandNames()
 {
-    static const std::string names = [] {
-        std::string text;
-        for (const ShadowFilterInfo& entry : shadowFilters())
-            text += fmt::format("{}{}", text.empty() ? "" : ", ", entry.command);
-        return text;
-    }();
+    static const std::string names = filterNameList(&ShadowFilterInfo::command);
     return names;
 }
 
@@ -118,12 +122,7 @@ SettingsProblem outOfRange(std::string field, std::string value)
 
 std::string_view allowedValues(std::string_view field)
 {
-    static const std::string filterNames = [] {
-        std::string text;
-        for (const ShadowFilterInfo& entry : shadowFilters())
-            text += fmt::format("{}{}", text.empty() ? "" : ", ", entry.json);
-        return text;
-    }();
+    static const std::string filterNames = filterNameList(&ShadowFilterInfo::json);
     if (field == "directional.filter" || field == "local.filter")
         return filterNames;
     static constexpr std::array<std::pair<std::string_view, std::string_view>, 25> table{{

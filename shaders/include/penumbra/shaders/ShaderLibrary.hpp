@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <string>
 #include <string_view>
 
 namespace penumbra::shaders {
@@ -19,6 +20,9 @@ struct ShaderConstant {
     std::string_view name;
     std::int64_t value;
 };
+
+// One `#define PENUMBRA_<name> value` line per constant.
+std::string defineLines(std::initializer_list<ShaderConstant> constants);
 
 // load(fileName) with the include "constants.glsl" of `constants`, which the file includes.
 rhi::ShaderSource load(std::string_view fileName, std::initializer_list<ShaderConstant> constants);
