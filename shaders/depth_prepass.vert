@@ -1,6 +1,7 @@
 #version 450
 // The depth prepass (penumbra::render::DepthPrepass): the lit pass's clip position, and what its alpha test reads.
 
+#include "instance.glsl"
 #include "lit.glsl"
 #include "transform.glsl"
 
@@ -13,11 +14,10 @@ layout(location = 2) out vec2 vUv;
 layout(location = 3) out vec2 vUv1;
 layout(location = 5) out vec4 vColor;
 
-
 void main()
 {
     vUv = inUv;
     vUv1 = inUv1;
     vColor = inColor;
-    gl_Position = cameraClipPosition(frame.viewProjection, object.model, inPosition);
+    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel, inPosition);
 }

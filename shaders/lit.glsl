@@ -20,9 +20,8 @@ layout(std140, binding = PENUMBRA_BINDING_FRAME) uniform Frame {
     vec4 ambientGround;  // linear rgb from below (= ambient without a hemisphere)
 } frame;
 
+// What the instances of one draw share (their transforms are per instance, instance.glsl).
 layout(std140, binding = PENUMBRA_BINDING_OBJECT) uniform Object {
-    mat4 model;
-    mat4 normalMatrix;       // inverse transpose of the model matrix
     vec4 baseColor;          // linear rgb, alpha
     vec4 surface;            // metallic, roughness, alpha cutoff, caster mode (material.glsl)
     int receivesShadows;
@@ -30,7 +29,7 @@ layout(std140, binding = PENUMBRA_BINDING_OBJECT) uniform Object {
     int unlit;
     int blended;
     vec4 emissive;           // linear rgb, w = occlusion strength
-    vec4 normal;             // normal texture scale, sign of det(model)
+    vec4 normal;             // normal texture scale
     vec4 uvTransforms[2 * PENUMBRA_TEXTURE_SLOTS]; // per PENUMBRA_TEXTURE_*: its uv transform rows (material.glsl, transformedUv)
 } object;
 

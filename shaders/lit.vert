@@ -1,5 +1,6 @@
 #version 450
 
+#include "instance.glsl"
 #include "lit.glsl"
 #include "transform.glsl"
 
@@ -17,17 +18,16 @@ layout(location = 3) out vec2 vUv1;
 layout(location = 4) out vec4 vTangent;
 layout(location = 5) out vec4 vColor;
 
-
 void main()
 {
-    const vec3 world = transformPoint(object.model, inPosition).xyz;
+    const vec3 world = transformPoint(instanceModel, inPosition).xyz;
     vPosition = world;
-    vNormal = mat3(object.normalMatrix) * inNormal;
+    vNormal = instanceNormalMatrix() * inNormal;
     vUv = inUv;
     vUv1 = inUv1;
     // Tangents follow the surface (the model matrix); a mirroring one reverses cross(normal, tangent), so the
     // handedness takes its sign.
-    vTangent = vec4(mat3(object.model) * inTangent.xyz, inTangent.w * object.normal.y);
+    vTangent = vec4(mat3(instanceModel) * inTangent.xyz, inTangent.w * instanceHandedness());
     vColor = inColor;
-    gl_Position = cameraClipPosition(frame.viewProjection, object.model, inPosition);
+    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel, inPosition);
 }

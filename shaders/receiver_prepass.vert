@@ -2,6 +2,7 @@
 // The depth prepass of the screen-space shadow path (penumbra::render::DepthPrepass with receivers): the lit pass's
 // clip position and world position (lit.vert), and what its alpha test reads.
 
+#include "instance.glsl"
 #include "lit.glsl"
 #include "transform.glsl"
 
@@ -17,9 +18,9 @@ layout(location = 5) out vec4 vColor;
 
 void main()
 {
-    vPosition = transformPoint(object.model, inPosition).xyz;
+    vPosition = transformPoint(instanceModel, inPosition).xyz;
     vUv = inUv;
     vUv1 = inUv1;
     vColor = inColor;
-    gl_Position = cameraClipPosition(frame.viewProjection, object.model, inPosition);
+    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel, inPosition);
 }

@@ -1,6 +1,7 @@
 #version 450
 // The reference lit pass's vertices (penumbra::render::ReferenceLitPass): world position, normal and uv.
 
+#include "instance.glsl"
 #include "lit.glsl"
 #include "transform.glsl"
 
@@ -14,9 +15,9 @@ layout(location = 2) out vec2 vUv;
 
 void main()
 {
-    const vec3 world = transformPoint(object.model, inPosition).xyz;
+    const vec3 world = transformPoint(instanceModel, inPosition).xyz;
     vPosition = world;
-    vNormal = mat3(object.normalMatrix) * inNormal;
+    vNormal = instanceNormalMatrix() * inNormal;
     vUv = inUv;
     gl_Position = transformPoint(frame.viewProjection, world);
 }

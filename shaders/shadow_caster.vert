@@ -3,6 +3,7 @@
 // caster-side normal bias mode the vertices move against their light-facing normal by the offset receivers would
 // take (Unity's UnityClipSpaceShadowCasterPos; Catlike Coding, "Rendering 7: Shadows", section 2.1, Bias).
 
+#include "instance.glsl"
 #include "material.glsl"
 #include "normal_offset.glsl"
 #include "shadow_caster.glsl"
@@ -21,10 +22,9 @@ layout(location = 0) out vec2 vUv;
 // caster draw.
 vec4 casterClip()
 {
-    const vec4 plain = transformPoint(draw.worldToClip, inPosition);
-    const vec3 world = transformPoint(draw.model, inPosition).xyz;
-    const vec3 normal = normalize(vec3(dot(draw.normalRows[0].xyz, inNormal), dot(draw.normalRows[1].xyz, inNormal),
-                                       dot(draw.normalRows[2].xyz, inNormal)));
+    const vec3 world = transformPoint(instanceModel, inPosition).xyz;
+    const vec4 plain = transformPoint(draw.viewProjection, world);
+    const vec3 normal = normalize(instanceNormalMatrix() * inNormal);
     const bool positional = draw.light.w > 0.5;
     const vec3 towardsLight = mix(-draw.light.xyz, draw.light.xyz - world, bvec3(positional));
     const float distance = length(towardsLight);

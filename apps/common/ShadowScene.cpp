@@ -59,13 +59,15 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 7> kNamedScenes{{{"test", scene::makeShadowTestScene},
+constexpr std::array<NamedScene, 9> kNamedScenes{{{"test", scene::makeShadowTestScene},
                                                   {"key-light", scene::makeSingleLightScene},
                                                   {"mixed", scene::makeMixedLightsScene},
                                                   {"room", scene::makePointLightRoomScene},
                                                   {"forest", scene::makeForestScene},
                                                   {"contact", scene::makeContactScene},
-                                                  {"town", scene::makeTownScene}}};
+                                                  {"town", scene::makeTownScene},
+                                                  {"cubes", [] { return scene::makeCubeGridScene(10'000); }},
+                                                  {"cubes-100k", [] { return scene::makeCubeGridScene(100'000); }}}};
 
 } // namespace
 

@@ -53,11 +53,11 @@ inline constexpr std::array<float, 5> kTexelDensityDepths{3.0f, 8.0f, 15.0f, 35.
 // The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
 // (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and
 // "room" (scene::makePointLightRoomScene), "forest" (scene::makeForestScene), "contact" (scene::makeContactScene)
-// and "town" (scene::makeTownScene). Unknown names throw rhi::Error
-// listing these.
+// "town" (scene::makeTownScene), "cubes" and "cubes-100k" (scene::makeCubeGridScene of 10 000 and 100 000 cubes).
+// Unknown names throw rhi::Error listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
-inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact, town";
+inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact, town, cubes, cubes-100k";
 
 // How renderShadowScene runs: with the validation layer / debug output (the library's default, and the tests'),
 // and whether it reads the atlases back (AtlasPictures; a 4096^2 atlas is 64 MiB to copy).

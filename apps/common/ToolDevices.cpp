@@ -23,6 +23,14 @@ rhi::DeviceDesc toolDeviceDesc(const std::string& configuration)
     return desc;
 }
 
+rhi::DeviceDesc toolDeviceDesc(const std::string& configuration, bool validate)
+{
+    rhi::DeviceDesc desc = toolDeviceDesc(configuration);
+    desc.validation = validate;
+    desc.validateUsage = desc.validateUsage || validate;
+    return desc;
+}
+
 std::unique_ptr<rhi::Device> createToolDevice(const std::string& configuration)
 {
     return penumbra::createDevice(toolDeviceDesc(configuration));

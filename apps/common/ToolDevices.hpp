@@ -15,6 +15,8 @@ bool toolUsageValidation();
 
 // The configuration's description with the tools' validateUsage.
 rhi::DeviceDesc toolDeviceDesc(const std::string& configuration);
+// The same with the Vulkan validation layer and GL debug output as `validate` (the tools' --validate) says.
+rhi::DeviceDesc toolDeviceDesc(const std::string& configuration, bool validate);
 std::unique_ptr<rhi::Device> createToolDevice(const std::string& configuration);
 
 } // namespace penumbra::apps

@@ -58,14 +58,6 @@ void addValidateFlag(CLI::App& command, bool& validate)
         ->envname("PENUMBRA_VALIDATE");
 }
 
-rhi::DeviceDesc toolDeviceDesc(const std::string& configuration, bool validate)
-{
-    rhi::DeviceDesc desc = toolDeviceDesc(configuration);
-    desc.validation = validate;
-    desc.validateUsage = desc.validateUsage || validate;
-    return desc;
-}
-
 std::vector<std::string> expandBackends(const std::vector<std::string>& backends)
 {
     std::vector<std::string> configurations;

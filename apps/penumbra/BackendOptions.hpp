@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ToolDevices.hpp"
+
 #include "penumbra/rhi/Configuration.hpp"
 
 #include <CLI/CLI.hpp>
@@ -21,8 +23,5 @@ std::vector<std::string> expandBackends(const std::vector<std::string>& backends
 // because they slow every call; PENUMBRA_VALIDATE=1 in the environment turns them on too, which is how the test
 // suite keeps every run of the tools validating.
 void addValidateFlag(CLI::App& command, bool& validate);
-
-// The named configuration's device, with the validation layer and debug output as `validate` says.
-rhi::DeviceDesc toolDeviceDesc(const std::string& configuration, bool validate);
 
 } // namespace penumbra::apps

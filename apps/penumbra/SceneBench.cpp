@@ -40,6 +40,8 @@ struct Series {
 struct ConfigurationResult {
     std::string configuration;
     Series frame;
+    Series planning; // CPU: render::FrameStats::planningMs
+    Series recording; // CPU: render::FrameStats::recordingMs
     std::array<Series, kPasses> passes;
     render::FrameStats last;
 };
@@ -78,7 +80,7 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
     if (bake)
         renderer.useBakedShadows(*bake);
     render::ReferenceLitPass reference(*device, renderer.gpuScene());
-    ConfigurationResult result{configuration, {}, {}, {}};
+    ConfigurationResult result{configuration, {}, {}, {}, {}, {}};
     const std::uint32_t total = options.warmup + options.frames;
     for (std::uint32_t i = 0; i < total; ++i) {
         stopIfInterrupted();
@@ -92,6 +94,8 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         if (i < options.warmup)
             continue;
         result.frame.ms.push_back(wallMs);
+        result.planning.ms.push_back(stats.planningMs);
+        result.recording.ms.push_back(stats.recordingMs);
         const std::array<double, kPasses> times = passTimes(stats, referenceMs);
         for (std::size_t p = 0; p < kPasses; ++p)
             result.passes[p].ms.push_back(times[p]);
@@ -160,6 +164,10 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"passesMin", mins},
             {"passesMax", maxs},
             {"litOverReference", litOverReference(r)},
+            {"instancing", frame.instancedDraws},
+            {"cpuMs", {{"planning", r.planning.median()}, {"recording", r.recording.median()}}},
+            {"cpuMsMax", {{"planning", r.planning.max()}, {"recording", r.recording.max()}}},
+            {"draws", {{"depth", r.last.depthPrepassDraws}, {"lit", r.last.litDraws}}},
             {"casterDraws", r.last.casterDraws + r.last.localCasterDraws},
             {"staticCasterDraws", r.last.staticCasterDraws},
             {"staticMaps", staticMapsMode(frame, options)}};
@@ -169,10 +177,11 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
                 const render::FrameDesc& frame)
 {
     fmt::print("\n{} at {}x{}, {} cascades in a {}^2 atlas, depth prepass {}, msaa {}, {} shadows; {} frames after {} "
-               "warm-up (medians; GPU timestamps per pass, wall time per frame)\n",
+               "warm-up, instancing {} (medians; GPU timestamps per pass, wall time per frame)\n",
                options.scene.scene, frame.width, frame.height, frame.shadows.directional.cascadeCount,
                frame.shadows.directional.atlasSize, frame.depthPrepass ? "on" : "off", frame.msaa,
-               kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)], options.frames, options.warmup);
+               kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)], options.frames, options.warmup,
+               frame.instancedDraws ? "on" : "off");
     fmt::print("{:<24} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>11} {:>9}\n", "configuration", "frame ms",
                "depth", "atlas", "local", "ss shadow", "lit", "resolve", "reference", "ours / ref", "frame max");
     for (const ConfigurationResult& r : results)
@@ -183,6 +192,12 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
             r.passes[passIndex("screenSpaceShadows")].median(), r.passes[passIndex("lit")].median(),
             r.passes[passIndex("resolve")].median(), r.passes[passIndex("reference")].median(), litOverReference(r),
             r.frame.max());
+    fmt::print("{:<24} {:>12} {:>13} {:>11} {:>10} {:>12}\n", "configuration", "planning ms", "recording ms",
+               "depth draws", "lit draws", "caster draws");
+    for (const ConfigurationResult& r : results)
+        fmt::print("{:<24} {:>12.2f} {:>13.2f} {:>11} {:>10} {:>12}\n", r.configuration, r.planning.median(),
+                   r.recording.median(), r.last.depthPrepassDraws, r.last.litDraws,
+                   r.last.casterDraws + r.last.localCasterDraws);
     if (results.size() == 2 && results[1].frame.median() > 0.0)
         fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,
                    results[0].frame.median() / results[1].frame.median());

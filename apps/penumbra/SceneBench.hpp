@@ -28,7 +28,8 @@ inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "
 
 // Prints a table and returns {"scene": [one object per configuration: configuration, scene, width, height,
 // frames, warmup, frameMs (median), frameMsMin, frameMsMax, passes {name: median ms}, passesMin, passesMax,
-// litOverReference, casterDraws]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that
+// litOverReference, instancing, cpuMs {planning, recording} (medians), cpuMsMax, draws {depth, lit},
+// casterDraws]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that
 // is missing or, with validate, reports a message.
 nlohmann::json runSceneBench(const SceneBenchOptions& options);
 

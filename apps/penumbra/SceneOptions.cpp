@@ -190,6 +190,12 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
     command
+        .add_option("--instancing", options.instancing,
+                    "on: objects that share a mesh and material are drawn as the instances of one draw in every pass; "
+                    "off: a draw per object (the same picture)")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
+    command
         .add_option("--msaa", options.msaa,
                     "Samples per pixel of the lit pass: 1 (off), 2, 4 or 8, as the device offers them; default 1")
         ->check(msaaValidator());
@@ -312,6 +318,7 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     frame.width = size->width;
     frame.height = size->height;
     frame.depthPrepass = options.prepass == "on";
+    frame.instancedDraws = options.instancing == "on";
     if (!options.settings.empty()) {
         RenderSettings settings = loadRenderSettings(options.settings);
         frame.shadows = settings.shadows;

@@ -15,9 +15,8 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --msaa, --shadow-path, --filter, --light-size,
-// --projection,
-// --dynamic, --static-maps, --realtime-casters.
+// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
+// --light-size, --projection, --dynamic, --static-maps, --realtime-casters.
 struct SceneOptions {
     std::string scene = "test";
     std::string camera; // empty: the scene's own
@@ -28,6 +27,7 @@ struct SceneOptions {
     std::string settings;
     std::string size = "1280x720";
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
+    std::string instancing = "on"; // render::FrameDesc::instancedDraws
     std::optional<std::uint32_t> msaa; // render::FrameDesc::msaa; empty: the settings file's, or 1
     std::string shadowPath; // kShadowPathNames (render::FrameDesc::shadowPath); empty: the settings file's, or forward
     std::string filter; // shadows::filterFromCommandName; empty: each light's own

@@ -5,6 +5,7 @@
 #include "penumbra/rhi/MipChain.hpp"
 
 #include <cstddef>
+#include <map>
 
 namespace penumbra::render {
 namespace {
@@ -87,6 +88,16 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
                                     .sampler = {.mipFilter = scene::TextureMipFilter::None}};
     white_ = uploadTexture(device, white);
     whiteSampler_ = device.createSampler(samplerDesc(white.sampler, 1.0f, debugName(white)));
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> groups;
+    for (const scene::Object& object : scene.objects)
+        meshMaterialGroups_.push_back(
+            groups.try_emplace({object.mesh, object.material}, static_cast<std::uint32_t>(groups.size()))
+                .first->second);
+}
+
+std::uint32_t GpuScene::litDrawGroup(std::uint32_t object) const
+{
+    return meshMaterialGroups_.at(object) * 2 + (scene_.receivesShadows(scene_.objects[object]) ? 1 : 0);
 }
 
 const rhi::Texture& GpuScene::texture(std::optional<std::uint32_t> index) const
@@ -136,16 +147,18 @@ shadows::UvTransformRows GpuScene::uvTransform(const std::optional<scene::Materi
 std::vector<shadows::ShadowCaster> GpuScene::casters() const
 {
     std::vector<shadows::ShadowCaster> casters;
-    for (const scene::Object& object : scene_.objects) {
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+        const scene::Object& object = scene_.objects[i];
         const scene::Material& material = scene_.materialOf(object);
         const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
+        const bool doubleSided = material.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided;
         if (scene_.castsShadows(object))
             casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
                                static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
                                casterMode(material.caster), material.baseColor.a, material.alphaCutoff,
                                &baseColorMap(material), &coverageSampler(material), baseColor.has_value(),
-                               uvTransform(baseColor),
-                               material.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided});
+                               uvTransform(baseColor), doubleSided,
+                               meshMaterialGroups_[i] * 2 + (doubleSided ? 1 : 0)});
     }
     return casters;
 }
@@ -181,17 +194,20 @@ shadows::CasterVertexFormat GpuScene::vertexFormat()
 rhi::VertexLayout GpuScene::vertexLayout()
 {
     const auto offset = [](std::size_t bytes) { return static_cast<std::uint32_t>(bytes); };
-    return {{{sizeof(scene::Vertex), false}},
-            {{0, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, position)), 0},
-             {1, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, normal)), 0},
-             {2, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv)), 0},
-             {3, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv1)), 0},
-             {4, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, tangent)), 0},
-             {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
+    rhi::VertexLayout layout{{{sizeof(scene::Vertex), false}},
+                             {{0, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, position)), 0},
+                              {1, rhi::VertexFormat::Float3, offset(offsetof(scene::Vertex, normal)), 0},
+                              {2, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv)), 0},
+                              {3, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv1)), 0},
+                              {4, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, tangent)), 0},
+                              {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
+    shadows::addInstanceAttributes(layout, kInstanceSlot);
+    return layout;
 }
 
 void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
-                            std::uint32_t coverageBinding) const
+                            std::uint32_t coverageBinding, const rhi::BufferSlice& instances,
+                            std::uint32_t instanceCount) const
 {
     const scene::Material& material = scene_.materialOf(object);
     for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
@@ -200,8 +216,9 @@ void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& obj
     }
     commands.bindTexture(coverageBinding, baseColorMap(material), coverageSampler(material));
     commands.bindVertexBuffer(0, vertices(object.mesh));
+    commands.bindVertexBuffer(kInstanceSlot, *instances.buffer, instances.offset);
     commands.bindIndexBuffer(indices(object.mesh), rhi::IndexType::UInt32);
-    commands.drawIndexed(static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()));
+    commands.drawIndexed(static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), instanceCount);
 }
 
 } // namespace penumbra::render

@@ -74,6 +74,7 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
     rhi::ShaderSource source = shaders::load(fileName);
     source.includes.push_back({"lit_constants.glsl", litConstants(features)});
     source.includes.push_back({"caster_constants.glsl", shadows::casterConstantsGlsl()});
+    source.includes.push_back({"instance_constants.glsl", shadows::instanceConstantsGlsl()});
     source.includes.push_back(
         {"shadow_constants.glsl",
          shadows::filterConstantsGlsl() + shadows::cascadeProjectionConstantsGlsl() + shadows::shadowInterfaceGlsl() +

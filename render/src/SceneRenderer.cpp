@@ -2,6 +2,7 @@
 
 #include "TextureSampling.hpp"
 #include "passes/DepthPrepass.hpp"
+#include "passes/LitDraws.hpp"
 #include "passes/LitPipelines.hpp"
 #include "passes/ScreenSpaceShadowPass.hpp"
 #include "static/StaticMapHashes.hpp"
@@ -17,10 +18,10 @@
 #include "penumbra/shadows/StaticShadowUniforms.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
-#include <glm/matrix.hpp>
 
 namespace penumbra::render {
 namespace {
@@ -28,6 +29,11 @@ namespace {
 constexpr std::uint32_t kStandInAtlasSize = 16; // an atlas without tiles in use
 constexpr glm::vec4 kBackground{0.2f, 0.22f, 0.26f, 1.0f}; // sRGB-encoded, as the lit shader writes
 constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f}; // the visibility view where no shadow map decides
+
+double millisecondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect)
 {
@@ -250,52 +256,6 @@ SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_
     return split;
 }
 
-// The lit shaders compare the material's caster mode against the caster pass's PENUMBRA_CASTER_* (material.glsl).
-static_assert(static_cast<int>(scene::CasterMode::Clip) == static_cast<int>(shadows::ShadowCasterMode::Clip) &&
-              static_cast<int>(scene::CasterMode::Dither) == static_cast<int>(shadows::ShadowCasterMode::Dither));
-
-LitObjectUniforms objectUniforms(const scene::Object& object, const scene::Material& material)
-{
-    LitObjectUniforms u{
-        .model = object.transform,
-        .normalMatrix = glm::transpose(glm::inverse(object.transform)),
-        .baseColor = material.baseColor,
-        .surface = {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
-        .receivesShadows = object.receiveShadows && material.receiveShadows ? 1 : 0,
-        .materialMaps = static_cast<int>(litMaterialMaps(material)),
-        .unlit = material.unlit ? 1 : 0,
-        .blended = material.blend ? 1 : 0,
-        .emissive = glm::vec4(material.emissive, material.occlusionStrength),
-        .normal = {material.normalScale, glm::determinant(glm::mat3(object.transform)) < 0.0f ? -1.0f : 1.0f, 0.0f,
-                   0.0f},
-    };
-    for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
-        const shadows::UvTransformRows rows = GpuScene::uvTransform(material.textures[slot]);
-        u.uvTransforms[2 * slot] = rows[0];
-        u.uvTransforms[2 * slot + 1] = rows[1];
-    }
-    return u;
-}
-
-// Opaque and masked objects in scene order, then blended ones from the farthest to the nearest (their world
-// bounds' centres from the camera), so each blends over what lies behind it (glTF 2.0 section 3.9.4, BLEND).
-// Shadows-only objects are not drawn.
-std::vector<std::uint32_t> drawOrder(const scene::Scene& scene, const glm::vec3& camera)
-{
-    std::vector<std::uint32_t> order, blended;
-    for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
-        if (scene.objects[i].castShadows != scene::ShadowCasting::ShadowsOnly)
-            (scene.materialOf(scene.objects[i]).blend ? blended : order).push_back(i);
-    const auto distance2 = [&](std::uint32_t i) {
-        const glm::vec3 d = scene.objects[i].worldBounds.center() - camera;
-        return glm::dot(d, d);
-    };
-    std::stable_sort(blended.begin(), blended.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return distance2(a) > distance2(b); });
-    order.insert(order.end(), blended.begin(), blended.end());
-    return order;
-}
-
 std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& frame, const std::string& name)
 {
     return device.createTexture({.width = frame.width,
@@ -363,7 +323,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
       commands_(device.createCommandList()),
       timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(8) : nullptr),
-      uniforms_(device, "lit pass uniforms")
+      uniforms_(device, "lit pass uniforms"), instances_(device, "lit pass instances")
 {
     directionalStaticTiles_ =
         std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "directional atlas, static casters");
@@ -546,10 +506,11 @@ void SceneRenderer::bindShadowMaps(rhi::CommandList& commands, const rhi::Unifor
     commands.bindTexture(kLitStaticLocalAtlasBinding, staticLocal.texture(), staticLocal.sampler());
 }
 
-void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
-                                  const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
-                                  const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& localShadowUniforms,
-                                  const rhi::UniformSlice& staticShadowUniforms)
+std::uint32_t SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target,
+                                           LitPipelines& pipelines, const rhi::UniformSlice& frameSlice,
+                                           const LitShaderFeatures& features, const rhi::UniformSlice& shadowUniforms,
+                                           const rhi::UniformSlice& localShadowUniforms,
+                                           const rhi::UniformSlice& staticShadowUniforms)
 {
     const scene::Scene& scene = gpuScene_.scene();
     const bool visibility = features.view == LitView::Visibility;
@@ -561,8 +522,8 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
     const rhi::UniformSlice poissonDisks = uniforms_.push(shadows::poissonDiskUniforms());
     const DirectionalShadowSource directionalShadows = features.directionalShadows;
     const rhi::Pipeline* bound = nullptr;
-    for (const std::uint32_t index : drawOrder_) {
-        const scene::Object& object = scene.objects[index];
+    for (const LitDraw& draw : litDraws_) {
+        const scene::Object& object = scene.objects[draw.object];
         const scene::Material& material = scene.materialOf(object);
         const bool blend = material.blend && !visibility;
         LitShaderFeatures objectFeatures = features;
@@ -580,10 +541,12 @@ void SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi::Framebu
                 commands.bindTexture(kLitScreenSpaceDepthBinding, screenSpace_->depth(), screenSpace_->sampler());
             bound = pipeline;
         }
-        rhi::bindUniform(commands, kLitObjectBinding, objectSlices_[index]);
-        gpuScene_.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding);
+        rhi::bindUniform(commands, kLitObjectBinding, draw.uniforms);
+        gpuScene_.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding, draw.instances,
+                               draw.instanceCount);
     }
     commands.endPass();
+    return static_cast<std::uint32_t>(litDraws_.size());
 }
 
 ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameDesc& frame) const
@@ -606,11 +569,17 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
 
 FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame)
 {
-    return render(camera, frame, planShadows(camera, frame));
+    const auto start = std::chrono::steady_clock::now();
+    ShadowPlans plans = planShadows(camera, frame);
+    const double planningMs = millisecondsSince(start);
+    FrameStats stats = render(camera, frame, std::move(plans));
+    stats.planningMs = planningMs;
+    return stats;
 }
 
 FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans)
 {
+    const auto start = std::chrono::steady_clock::now();
     shadows::validate(frame.shadows);
     validate(frame.ambient);
     checkPlansFitFrame(plans, frame.shadows);
@@ -644,14 +613,15 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
             stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;
 
     uniforms_.reset();
+    instances_.reset();
     const scene::Scene& scene = gpuScene_.scene();
-    drawOrder_ = drawOrder(scene, camera.position);
-    objectSlices_.clear();
-    for (const scene::Object& object : scene.objects)
-        objectSlices_.push_back(uniforms_.push(objectUniforms(object, scene.materialOf(object))));
+    litDraws_ = litDraws(gpuScene_, camera.position, frame.instancedDraws, uniforms_, instances_);
     const rhi::UniformSlice shadowUniforms = uniforms_.push(plan_.uniforms);
     const rhi::UniformSlice localShadowUniforms = uniforms_.push(localPlan_.uniforms);
-    const std::vector<shadows::ShadowCaster> casters = gpuScene_.casters();
+    std::vector<shadows::ShadowCaster> casters = gpuScene_.casters();
+    if (!frame.instancedDraws)
+        for (shadows::ShadowCaster& caster : casters)
+            caster.drawGroup = shadows::kNoDrawGroup;
     rhi::CommandList& commands = *commands_;
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
@@ -696,10 +666,10 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     // Single-sampled, the receiver prepass is the depth prepass; with MSAA it adds the one-sample depth the
     // collection reads.
     if (frame.depthPrepass && (multisampled || !screenSpace))
-        depthPrepass_->record(commands, *prepassTarget_, gpuScene_, drawOrder_, litFrame, objectSlices_);
+        stats.depthPrepassDraws += depthPrepass_->record(commands, *prepassTarget_, gpuScene_, litDraws_, litFrame);
     if (screenSpace)
-        receiverPrepass_->record(commands, screenSpace_->receiverTarget(), gpuScene_, drawOrder_, litFrame,
-                                 objectSlices_);
+        stats.depthPrepassDraws +=
+            receiverPrepass_->record(commands, screenSpace_->receiverTarget(), gpuScene_, litDraws_, litFrame);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 4);
     if (screenSpace) {
@@ -714,8 +684,8 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 5);
     features.depthPrepassed = frame.depthPrepass;
-    recordLitPass(commands, *litTarget_, multisampled ? *multisampledLitPipelines_ : *litPipelines_, litFrame, features,
-                  shadowUniforms, localShadowUniforms, staticShadowUniforms);
+    stats.litDraws = recordLitPass(commands, *litTarget_, multisampled ? *multisampledLitPipelines_ : *litPipelines_,
+                                   litFrame, features, shadowUniforms, localShadowUniforms, staticShadowUniforms);
     // The debug views draw single-sampled without the prepass, with forward shadows: they clear the single-sampled
     // depth.
     features.depthPrepassed = false;
@@ -739,6 +709,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
                       LitShaderFeatures{.view = LitView::Visibility}, shadowUniforms, localShadowUniforms,
                       staticShadowUniforms);
     }
+    stats.recordingMs = millisecondsSince(start);
     device_.submit(commands);
     if (timestamps_) {
         const std::vector<double> ns = device_.readTimestamps(*timestamps_);

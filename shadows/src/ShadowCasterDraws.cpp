@@ -3,41 +3,60 @@
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/InstanceTransform.hpp"
 #include "penumbra/shadows/ShaderInterface.hpp"
 
 #include <fmt/format.h>
-#include <glm/gtc/matrix_access.hpp>
-#include <glm/matrix.hpp>
+#include <vector>
 
 namespace penumbra::shadows {
 namespace {
+
+constexpr std::uint32_t kInstanceSlot = 1; // the vertex buffer slot of the instance transforms
 
 rhi::ShaderSource casterShader(std::string_view fileName)
 {
     rhi::ShaderSource source = shaders::load(fileName);
     source.includes.push_back({"caster_constants.glsl", casterConstantsGlsl()});
+    source.includes.push_back({"instance_constants.glsl", instanceConstantsGlsl()});
     return source;
 }
 
 ShadowCasterUniforms casterUniforms(const ShadowViewDraw& view, const ShadowCaster& caster, float pancakeInShader)
 {
-    ShadowCasterUniforms u{view.viewProjection * caster.model,
+    ShadowCasterUniforms u{view.viewProjection,
                            {caster.alpha, caster.alphaCutoff, static_cast<float>(caster.mode), pancakeInShader},
                            {view.ditherOrigin, caster.textured ? 1.0f : 0.0f, 0.0f},
                            caster.baseColorUv};
     if (view.normalOffset.reach > 0.0f) {
-        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(caster.model)));
-        u.model = caster.model;
-        for (int row = 0; row < 3; ++row)
-            u.normalRows[std::size_t(row)] = glm::vec4(glm::row(normalMatrix, row), 0.0f);
-        u.viewProjection = view.viewProjection;
         u.light = view.normalOffset.light;
         u.reach = {view.normalOffset.reach, 0.0f, 0.0f, 0.0f};
     }
     return u;
 }
 
+// The instances of one batch. Only the caster-side normal offset reads the normal matrix (the shader selects the
+// plain position otherwise), so it is inverted only then.
+std::vector<InstanceTransform> batchInstances(std::span<const std::uint32_t> batch,
+                                              std::span<const ShadowCaster> casters, bool normalOffset)
+{
+    std::vector<InstanceTransform> instances;
+    instances.reserve(batch.size());
+    for (const std::uint32_t index : batch)
+        instances.push_back(normalOffset ? instanceTransform(casters[index].model)
+                                         : InstanceTransform{casters[index].model});
+    return instances;
+}
+
 } // namespace
+
+bool drawAlike(const ShadowCaster& a, const ShadowCaster& b)
+{
+    return a.vertices == b.vertices && a.indices == b.indices && a.indexCount == b.indexCount && a.mode == b.mode &&
+           a.alpha == b.alpha && a.alphaCutoff == b.alphaCutoff && a.baseColorMap == b.baseColorMap &&
+           a.baseColorSampler == b.baseColorSampler && a.textured == b.textured && a.baseColorUv == b.baseColorUv &&
+           a.doubleSided == b.doubleSided;
+}
 
 UvTransformRows uvTransformRows(const glm::mat3& m, std::uint32_t uvSet)
 {
@@ -55,7 +74,7 @@ ShadowCasterDraws::ShadowCasterDraws(rhi::Device& device, const CasterVertexForm
     : device_(device), vertexFormat_(vertexFormat), vertex_(device.createShader(casterShader("shadow_caster.vert"))),
       opaqueFragment_(device.createShader(casterShader("shadow_caster_opaque.frag"))),
       alphaFragment_(device.createShader(casterShader("shadow_caster_alpha.frag"))),
-      uniforms_(device, "shadow caster draws")
+      uniforms_(device, "shadow caster draws"), instances_(device, "shadow caster instances")
 {
 }
 
@@ -72,6 +91,7 @@ const ShadowCasterDraws::Pipelines& ShadowCasterDraws::pipelines(rhi::Format dep
                           {1, rhi::VertexFormat::Float3, vertexFormat_.normalOffset, 0},
                           {2, rhi::VertexFormat::Float2, vertexFormat_.uvOffset, 0},
                           {3, rhi::VertexFormat::Float2, vertexFormat_.uv1Offset, 0}}};
+    addInstanceAttributes(desc.vertexLayout, kInstanceSlot);
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer, .clamp = clamp};
     desc.depthFormat = depthFormat;
     desc.uniformLayouts = {shadowCasterLayout()};
@@ -98,12 +118,24 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
     const float pancakeInShader = view.pancake && !depthClamp ? 1.0f : 0.0f;
     const Pipelines& pipelines = this->pipelines(depthFormat, depthClamp, view.mirrored);
     const rhi::DepthBias bias{0.0f, view.slopeScaleBias, 0.0f};
-    const rhi::Pipeline* bound = nullptr;
-    for (const std::uint32_t index : indices) {
+    for (const std::uint32_t index : indices)
         if (index >= casters.size())
             throw rhi::Error(
                 fmt::format("shadow plan names caster {}, but {} casters were given", index, casters.size()));
+    // Depth-only draws: the nearest caster wins in any order, so every caster of a group joins one draw.
+    const InstanceBatches batches =
+        batchByGroup(indices, [&](std::uint32_t index) { return casters[index].drawGroup; });
+    const rhi::Pipeline* bound = nullptr;
+    for (const InstanceBatches::Batch& batchRange : batches.batches) {
+        const auto batch = std::span(batches.items).subspan(batchRange.first, batchRange.count);
+        const std::uint32_t index = batch.front();
         const ShadowCaster& caster = casters[index];
+        for (const std::uint32_t other : batch.subspan(1))
+            if (!drawAlike(caster, casters[other]))
+                throw rhi::Error(
+                    fmt::format("shadow casters {} and {} share draw group {}, but draw differently (mesh, "
+                                "material or sides)",
+                                index, other, caster.drawGroup));
         const auto& variants = caster.mode == ShadowCasterMode::Opaque ? pipelines.opaque : pipelines.alphaTested;
         const rhi::Pipeline* pipeline = variants[caster.doubleSided].get();
         if (pipeline != bound) {
@@ -119,11 +151,14 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
                                              index));
             commands.bindTexture(kCasterBaseColorBinding, *caster.baseColorMap, *caster.baseColorSampler);
         }
+        const std::vector<InstanceTransform> instances = batchInstances(batch, casters, view.normalOffset.reach > 0.0f);
+        const rhi::BufferSlice instanceSlice = instances_.push(std::as_bytes(std::span(instances)));
         commands.bindVertexBuffer(0, *caster.vertices);
+        commands.bindVertexBuffer(kInstanceSlot, *instanceSlice.buffer, instanceSlice.offset);
         commands.bindIndexBuffer(*caster.indices, rhi::IndexType::UInt32);
-        commands.drawIndexed(caster.indexCount);
+        commands.drawIndexed(caster.indexCount, batchRange.count);
     }
-    return static_cast<std::uint32_t>(indices.size());
+    return static_cast<std::uint32_t>(batches.batches.size());
 }
 
 } // namespace penumbra::shadows

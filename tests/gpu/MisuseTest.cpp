@@ -539,6 +539,20 @@ const std::vector<Rule>& rules()
         {"indexed draws need an index buffer", [](Objects& o) { o.bindForDraw(); },
          [](Objects& o) { o.list->drawIndexed(3); }, E::Error,
          text("drawIndexed: no index buffer is bound; call bindIndexBuffer() first")},
+        {"per-instance vertex buffers hold every instance drawn",
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.vertexLayout.buffers[0].perInstance = true;
+             o.localPipeline = o.device.createPipeline(d);
+             o.beginPass();
+             o.list->bindPipeline(*o.localPipeline);
+             o.list->bindVertexBuffer(0, *o.vertices);
+             o.list->bindUniformBuffer(0, *o.uniforms, 0, sizeof(TransformUniforms));
+             o.list->bindTexture(1, *o.image, *o.sampler);
+         },
+         [](Objects& o) { o.list->draw(3, 4); }, E::Error,
+         text("draw: pipeline 'bad' reads instances 0 to 3 from vertex buffer slot 0 (48 bytes), but 36 bytes are "
+              "bound there")},
         // Usages and ranges at bind time.
         {"vertex buffer slots are 0..15", nothing, [](Objects& o) { o.list->bindVertexBuffer(16, *o.vertices); },
          E::Error, text("bindVertexBuffer: slot 16 is outside 0..15")},

@@ -9,7 +9,7 @@
 namespace penumbra::render {
 namespace {
 
-constexpr std::uint32_t kLocations[] = {0, 2, 3, 5}; // the vertex attributes depth_prepass.vert reads
+constexpr std::uint32_t kLocations[] = {0, 2, 3, 5}; // the mesh attributes depth_prepass.vert reads
 
 std::uint32_t pipelineIndex(bool doubleSided, bool clip) { return (doubleSided ? 1u : 0u) + (clip ? 2u : 0u); }
 
@@ -37,7 +37,8 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::ui
     // Only the attributes depth_prepass.vert reads: the validation layer reports attributes a shader does not consume.
     desc.vertexLayout = GpuScene::vertexLayout();
     std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
-        return std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
+        return a.buffer != GpuScene::kInstanceSlot &&
+               std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
     });
     desc.depthFormat = depthFormat;
     desc.samples = samples;
@@ -55,18 +56,18 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::ui
         }
 }
 
-void DepthPrepass::record(rhi::CommandList& commands, const rhi::Framebuffer& target, const GpuScene& gpuScene,
-                          std::span<const std::uint32_t> order, const rhi::UniformSlice& frame,
-                          std::span<const rhi::UniformSlice> objects) const
+std::uint32_t DepthPrepass::record(rhi::CommandList& commands, const rhi::Framebuffer& target, const GpuScene& gpuScene,
+                                   std::span<const LitDraw> draws, const rhi::UniformSlice& frame) const
 {
     const scene::Scene& scene = gpuScene.scene();
     commands.beginPass({.framebuffer = &target, .clearColor = std::nullopt, .clearDepth = true});
     const rhi::Pipeline* bound = nullptr;
-    for (const std::uint32_t index : order) {
-        const scene::Object& object = scene.objects[index];
-        const scene::Material& material = scene.materialOf(object);
-        if (material.blend)
+    std::uint32_t issued = 0;
+    for (const LitDraw& draw : draws) {
+        if (draw.blended)
             continue;
+        const scene::Object& object = scene.objects[draw.object];
+        const scene::Material& material = scene.materialOf(object);
         const bool clip = material.caster == scene::CasterMode::Clip;
         const rhi::Pipeline* pipeline = pipelines_[pipelineIndex(material.doubleSided, clip)].get();
         if (pipeline != bound) {
@@ -74,11 +75,14 @@ void DepthPrepass::record(rhi::CommandList& commands, const rhi::Framebuffer& ta
             rhi::bindUniform(commands, kLitFrameBinding, frame);
             bound = pipeline;
         }
-        rhi::bindUniform(commands, kLitObjectBinding, objects[index]);
+        rhi::bindUniform(commands, kLitObjectBinding, draw.uniforms);
         // lit.glsl declares every material map; the RHI asks for all of them bound.
-        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding);
+        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding, draw.instances,
+                              draw.instanceCount);
+        ++issued;
     }
     commands.endPass();
+    return issued;
 }
 
 } // namespace penumbra::render

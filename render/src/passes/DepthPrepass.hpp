@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LitDraws.hpp"
+
 #include "penumbra/render/GpuScene.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
@@ -28,11 +30,10 @@ public:
     std::uint32_t samples() const { return samples_; }
     bool receivers() const { return receivers_; }
 
-    // Clears `target` (depth only) and draws `order`'s objects that are not blended; `frame` is the lit pass's
-    // Frame block and objects[i] object i's Object block (shaders/lit.glsl).
-    void record(rhi::CommandList& commands, const rhi::Framebuffer& target, const GpuScene& scene,
-                std::span<const std::uint32_t> order, const rhi::UniformSlice& frame,
-                std::span<const rhi::UniformSlice> objects) const;
+    // Clears `target` (depth only) and records the draws that are not blended; `frame` is the lit pass's Frame
+    // block (shaders/lit.glsl). Returns the draws issued.
+    std::uint32_t record(rhi::CommandList& commands, const rhi::Framebuffer& target, const GpuScene& scene,
+                         std::span<const LitDraw> draws, const rhi::UniformSlice& frame) const;
 
 private:
     std::uint32_t samples_;

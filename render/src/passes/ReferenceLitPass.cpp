@@ -1,17 +1,18 @@
 #include "penumbra/render/ReferenceLitPass.hpp"
 
 #include "penumbra/render/LitUniforms.hpp"
+#include "penumbra/shadows/InstanceTransform.hpp"
 #include "penumbra/shadows/PoissonDisk.hpp"
 
 #include <algorithm>
 
 #include <fmt/format.h>
-#include <glm/matrix.hpp>
+#include <glm/geometric.hpp>
 
 namespace penumbra::render {
 namespace {
 
-constexpr std::uint32_t kLocations[] = {0, 1, 2}; // the vertex attributes reference_lit.vert reads
+constexpr std::uint32_t kLocations[] = {0, 1, 2}; // the mesh attributes reference_lit.vert reads
 
 constexpr rhi::Format kColorFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
@@ -60,7 +61,7 @@ ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const GpuScene& scene)
     : device_(device), scene_(scene), vertex_(device.createShader(referenceShader("reference_lit.vert"))),
       fragment_(device.createShader(referenceShader("reference_lit.frag"))), commands_(device.createCommandList()),
       timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(2) : nullptr),
-      uniforms_(device, "reference lit pass uniforms")
+      uniforms_(device, "reference lit pass uniforms"), instances_(device, "reference lit pass instances")
 {
     rhi::PipelineDesc desc;
     desc.vertex = vertex_.get();
@@ -68,7 +69,8 @@ ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const GpuScene& scene)
     // Only the attributes reference_lit.vert reads: the validation layer reports attributes a shader does not consume.
     desc.vertexLayout = GpuScene::vertexLayout();
     std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
-        return std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
+        return a.buffer != GpuScene::kInstanceSlot &&
+               std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
     });
     desc.depthFormat = kDepthFormat;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
@@ -99,6 +101,7 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
     }
     const scene::Scene& scene = scene_.scene();
     uniforms_.reset();
+    instances_.reset();
     const rhi::UniformSlice frameSlice = uniforms_.push(frameUniforms(camera, frame, scene, device_.conventions()));
     const rhi::UniformSlice shadowSlice = uniforms_.push(renderer.plan().uniforms);
     const rhi::UniformSlice splitSlice = uniforms_.push(splitUniforms(renderer.plan()));
@@ -123,12 +126,11 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
             commands.bindTexture(kLitAtlasBinding, renderer.atlas().texture(), renderer.atlas().sampler());
             bound = pipeline;
         }
-        LitObjectUniforms u;
-        u.model = object.transform;
-        u.normalMatrix = glm::transpose(glm::inverse(object.transform));
-        u.baseColor = material.baseColor;
-        rhi::bindUniform(commands, kLitObjectBinding, uniforms_.push(u));
-        scene_.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding);
+        // A draw per object, as the public samples draw.
+        rhi::bindUniform(commands, kLitObjectBinding,
+                         uniforms_.push(LitObjectUniforms{.baseColor = material.baseColor}));
+        scene_.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding,
+                            instances_.push(shadows::instanceTransform(object.transform)), 1);
     }
     commands.endPass();
     if (timestamps_)

@@ -53,6 +53,29 @@ void compareBlock(const PipelineDesc& desc, const UniformLayout& layout, const S
 
 } // namespace
 
+void checkInstanceRange(std::string_view what, const PipelineDesc& desc, std::span<const std::uint64_t> boundBytes,
+                        std::uint32_t instanceCount, std::uint32_t firstInstance)
+{
+    if (instanceCount == 0)
+        return;
+    const VertexLayout& layout = desc.vertexLayout;
+    for (std::uint32_t slot = 0; slot < layout.buffers.size(); ++slot) {
+        if (!layout.buffers[slot].perInstance)
+            continue;
+        std::uint64_t attributeEnd = 0;
+        for (const VertexAttribute& a : layout.attributes)
+            if (a.buffer == slot)
+                attributeEnd = std::max<std::uint64_t>(attributeEnd, a.offset + vertexFormatSize(a.format));
+        const std::uint64_t needed =
+            std::uint64_t(firstInstance + instanceCount - 1) * layout.buffers[slot].stride + attributeEnd;
+        if (attributeEnd > 0 && needed > boundBytes[slot])
+            throw Error(fmt::format("{}: pipeline '{}' reads instances {} to {} from vertex buffer slot {} ({} bytes), "
+                                    "but {} bytes are bound there",
+                                    what, desc.debugName, firstInstance, firstInstance + instanceCount - 1, slot,
+                                    needed, boundBytes[slot]));
+    }
+}
+
 void checkPipeline(const Capabilities& caps, const PipelineDesc& desc)
 {
     if (!desc.vertex || !desc.fragment)

@@ -7,9 +7,15 @@
 #include "penumbra/rhi/ValidationRules.hpp"
 
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace penumbra::rhi {
+
+// A draw of instanceCount instances from firstInstance: every per-instance vertex buffer of the pipeline holds its
+// last instance's attributes. boundBytes[slot]: the bytes bound at the slot (the buffer's size past the offset).
+void checkInstanceRange(std::string_view what, const PipelineDesc& desc, std::span<const std::uint64_t> boundBytes,
+                        std::uint32_t instanceCount, std::uint32_t firstInstance);
 
 // The buffer must have been created with `usage` (named `usageName` in the message).
 void checkBufferUsage(std::string_view what, const BufferDesc& buffer, BufferUsage usage, std::string_view usageName);

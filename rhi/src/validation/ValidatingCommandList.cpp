@@ -151,6 +151,7 @@ void ValidatingCommandList::bindVertexBuffer(std::uint32_t slot, const Buffer& b
         checkBufferUsage("bindVertexBuffer", buffer.desc(), BufferUsage::Vertex, "Vertex");
         checkBufferRange("bindVertexBuffer", buffer.desc(), offset, 0);
         vertexSlots_ |= 1u << slot;
+        vertexBytes_[slot] = buffer.desc().size - offset;
         drawChecked_ = false;
     }
     apiBindVertexBuffer(slot, buffer, offset);
@@ -249,8 +250,10 @@ void ValidatingCommandList::checkDraw(std::string_view what)
 void ValidatingCommandList::draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
                                  std::uint32_t firstInstance)
 {
-    if (validate_)
+    if (validate_) {
         checkDraw("draw");
+        checkInstanceRange("draw", pipeline_->desc(), vertexBytes_, instanceCount, firstInstance);
+    }
     apiDraw(vertexCount, instanceCount, firstVertex, firstInstance);
 }
 
@@ -259,6 +262,7 @@ void ValidatingCommandList::drawIndexed(std::uint32_t indexCount, std::uint32_t 
 {
     if (validate_) {
         checkDraw("drawIndexed");
+        checkInstanceRange("drawIndexed", pipeline_->desc(), vertexBytes_, instanceCount, firstInstance);
         if (!indexBuffer_)
             throw Error("drawIndexed: no index buffer is bound; call bindIndexBuffer() first");
     }

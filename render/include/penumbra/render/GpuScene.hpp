@@ -2,7 +2,9 @@
 
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/scene/Scene.hpp"
+#include "penumbra/rhi/UniformArena.hpp"
 #include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/InstanceTransform.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
 #include <cstdint>
@@ -58,13 +60,21 @@ public:
 
     static shadows::CasterVertexFormat vertexFormat();
     // scene::Vertex's six attributes at locations 0 to 5 (position, normal, uv, uv1, tangent, colour), as the
-    // lit shaders read them; a pass whose shader reads fewer removes the others.
+    // lit shaders read them, and the instance transforms (shadows::addInstanceAttributes) from vertex buffer slot
+    // kInstanceSlot; a pass whose shader reads fewer removes the others.
     static rhi::VertexLayout vertexLayout();
+    static constexpr std::uint32_t kInstanceSlot = 1;
+
+    // Objects of one lit draw group share mesh, material and whether they receive shadows: instances of one draw in
+    // the lit pass and the depth prepass. Casters' draw groups (ShadowCaster::drawGroup) are made alike.
+    std::uint32_t litDrawGroup(std::uint32_t object) const;
 
     // Binds the material's maps (material textures, or the white texel) at firstMapBinding + scene::TextureSlot and
-    // the base colour map with coverageSampler() at coverageBinding, then the object's mesh, and draws it.
+    // the base colour map with coverageSampler() at coverageBinding, then the object's mesh and `instances`
+    // (shadows::InstanceTransform each), and draws instanceCount instances of the mesh.
     void drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
-                      std::uint32_t coverageBinding) const;
+                      std::uint32_t coverageBinding, const rhi::BufferSlice& instances,
+                      std::uint32_t instanceCount) const;
     // The uv transform rows of a material texture (identity on TEXCOORD_0 without one).
     static shadows::UvTransformRows uvTransform(const std::optional<scene::MaterialTexture>& texture);
 
@@ -75,6 +85,8 @@ private:
     };
     const scene::Scene& scene_;
     std::vector<Mesh> meshes_;
+    // Per object: the objects of one mesh and material share a number (an object's mesh and material never change).
+    std::vector<std::uint32_t> meshMaterialGroups_;
     rhi::Device& device_;
     std::vector<std::unique_ptr<rhi::Texture>> textures_;
     std::vector<std::unique_ptr<rhi::Sampler>> samplers_; // one per texture

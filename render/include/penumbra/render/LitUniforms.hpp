@@ -51,9 +51,8 @@ static_assert(offsetof(LitFrameUniforms, ambient) == 352);
 static_assert(offsetof(LitFrameUniforms, localPosition) == 384);
 static_assert(sizeof(LitFrameUniforms) == 1424);
 
+// What the instances of one lit draw share; their transforms are per instance (shadows::InstanceTransform).
 struct LitObjectUniforms {
-    glm::mat4 model{1.0f};
-    glm::mat4 normalMatrix{1.0f};
     glm::vec4 baseColor{1.0f};
     glm::vec4 surface{0.0f}; // metallic, roughness, alpha cutoff, caster mode (material.glsl)
     std::int32_t receivesShadows = 0;
@@ -61,11 +60,11 @@ struct LitObjectUniforms {
     std::int32_t unlit = 0;
     std::int32_t blended = 0;
     glm::vec4 emissive{0.0f}; // linear rgb, w = occlusion strength
-    glm::vec4 normal{0.0f}; // normal texture scale, sign of det(model) (a mirroring transform flips bitangents)
+    glm::vec4 normal{0.0f}; // normal texture scale
     // Per scene::TextureSlot, rows 0 and 1 of its uv transform, row 0's w its uv set (shadows::uvTransformRows).
     std::array<glm::vec4, 2 * scene::kTextureSlots> uvTransforms{};
 };
-static_assert(sizeof(LitObjectUniforms) == 368);
+static_assert(sizeof(LitObjectUniforms) == 240);
 
 // The two structs as PipelineDesc::uniformLayouts of lit.glsl's blocks Frame and Object.
 inline rhi::UniformLayout litFrameLayout()
@@ -96,8 +95,6 @@ inline rhi::UniformLayout litObjectLayout()
     return {"Object",
             sizeof(LitObjectUniforms),
             {
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, model),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, normalMatrix),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, baseColor),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, surface),
                 PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, receivesShadows),
@@ -152,7 +149,7 @@ enum class DirectionalShadowSource : std::uint8_t { Forward = 0, ScreenSpace = 1
 struct LitShaderFeatures {
     bool depthPrepassed = false; // after a depth prepass: an equal depth test instead of lit.frag's alpha discard
     LitView view = LitView::Lit;
-    // The material maps lit.frag may read (bit per scene::TextureSlot, as LitObjectUniforms::flags.y); a map
+    // The material maps lit.frag may read (bit per scene::TextureSlot, as LitObjectUniforms::materialMaps); a map
     // outside it reads as the white texel that stands in for an absent map.
     std::uint32_t materialMaps = (1u << scene::kTextureSlots) - 1;
     bool localLights = true; // spot and point lights
@@ -168,7 +165,7 @@ struct LitShaderFeatures {
     bool operator==(const LitShaderFeatures&) const = default;
 };
 
-// The material maps a material has, bit per scene::TextureSlot (LitObjectUniforms::flags.y).
+// The material maps a material has, bit per scene::TextureSlot (LitObjectUniforms::materialMaps).
 std::uint32_t litMaterialMaps(const scene::Material& material);
 
 // The lit pass shader `fileName` ("lit.vert", "lit.frag") with the includes "lit_constants.glsl" that lit.glsl reads

@@ -44,6 +44,7 @@ private:
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<rhi::TimestampQueries> timestamps_;
     rhi::UniformArena uniforms_;
+    rhi::VertexArena instances_;
     std::unique_ptr<rhi::Texture> color_, depth_;
     std::unique_ptr<rhi::Framebuffer> target_;
 };

@@ -28,6 +28,7 @@ class DepthPrepass;
 class LitPipelines;
 class ScreenSpaceShadowPass;
 class StaticShadowCache;
+struct LitDraw;
 class StaticTileCache;
 
 // Where the lit pass's directional shadows are evaluated. Forward: in the lit pass, per fragment. ScreenSpace: after
@@ -64,9 +65,19 @@ struct FrameDesc {
     // collection is single-sampled, per pixel; fragments on geometry edges (not covering all their samples, or not
     // the collected surface) evaluate their shadows forward instead of taking the surface behind's.
     ShadowPath shadowPath = ShadowPath::Forward;
+    // Objects that share a mesh and material are drawn as the instances of one draw in the depth prepass, the lit
+    // pass and the shadow passes (each view's culled casters of one draw group), so that draws grow with distinct
+    // meshes, not objects. False: a draw per object, the same pictures.
+    bool instancedDraws = true;
 };
 
 struct FrameStats {
+    // CPU time: the shadow planning of render(camera, frame) (0 where the caller planned), and recording the frame's
+    // commands (render()'s work up to the submission, which then runs them).
+    double planningMs = 0.0;
+    double recordingMs = 0.0;
+    std::uint32_t depthPrepassDraws = 0; // issued by the depth prepass (the receiver prepass of ScreenSpace too)
+    std::uint32_t litDraws = 0; // issued by the lit pass (without the cascade and visibility views)
     std::uint32_t casterDraws = 0; // issued into the directional atlas
     std::uint32_t casterDrawsWithoutCullingBias = 0; // casters overlapping each cascade's light box
     std::uint32_t localCasterDraws = 0; // issued into the spot and point shadows
@@ -157,18 +168,18 @@ private:
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
     int litLightIndex(const scene::LightRef& light) const;
-    // After the depth prepass (features.depthPrepassed) the opaque objects are drawn with an equal depth test into
-    // the prepass's depth; otherwise the target's depth is cleared. Each object takes `features` with its material's
-    // maps.
     // The lit pass's shadow bindings (atlases, cubes, their blocks, the Poisson disks, static maps), which the
     // screen-space collection shares.
     void bindShadowMaps(rhi::CommandList& commands, const rhi::UniformSlice& shadowUniforms,
                         const rhi::UniformSlice& localShadowUniforms, const rhi::UniformSlice& staticShadowUniforms,
                         const rhi::UniformSlice& poissonDisks) const;
-    void recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
-                       const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
-                       const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& localShadowUniforms,
-                       const rhi::UniformSlice& staticShadowUniforms);
+    // After the depth prepass (features.depthPrepassed) the opaque objects are drawn with an equal depth test into
+    // the prepass's depth; otherwise the target's depth is cleared. Each draw takes `features` with its material's
+    // maps. Returns the draws issued.
+    std::uint32_t recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
+                                const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
+                                const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& localShadowUniforms,
+                                const rhi::UniformSlice& staticShadowUniforms);
 
     rhi::Device& device_;
     GpuScene gpuScene_;
@@ -189,12 +200,12 @@ private:
     std::unique_ptr<StaticTileCache> directionalStaticTiles_;
     std::unique_ptr<StaticTileCache> localStaticTiles_;
     bool staticUpdateRequested_ = false;
-    // Per object, this frame's Object block (shaders/lit.glsl), shared by the prepass and every lit view.
-    std::vector<rhi::UniformSlice> objectSlices_;
-    std::vector<std::uint32_t> drawOrder_; // this frame's (SceneRenderer.cpp, drawOrder)
+    // This frame's draws (passes/LitDraws.hpp), shared by the prepass and every lit view.
+    std::vector<LitDraw> litDraws_;
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<rhi::TimestampQueries> timestamps_;
     rhi::UniformArena uniforms_;
+    rhi::VertexArena instances_; // the lit draws' instance transforms
 
     std::unique_ptr<shadows::ShadowAtlas> atlas_;
     std::unique_ptr<shadows::ShadowAtlas> localAtlas_;

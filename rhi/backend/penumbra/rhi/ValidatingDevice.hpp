@@ -13,6 +13,7 @@
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Device.hpp"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string_view>
@@ -137,6 +138,7 @@ private:
     const Pipeline* pipeline_ = nullptr;
     std::vector<Bound> bound_;
     std::uint32_t vertexSlots_ = 0; // bit per bound slot
+    std::array<std::uint64_t, maxVertexBuffers> vertexBytes_{}; // per slot, the bound buffer's bytes past the offset
     bool indexBuffer_ = false;
     bool drawChecked_ = false; // nothing a draw depends on changed since the last checked draw
 };

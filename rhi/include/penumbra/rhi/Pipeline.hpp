@@ -16,6 +16,23 @@ namespace penumbra::rhi {
 
 enum class VertexFormat : std::uint8_t { Float, Float2, Float3, Float4, UByte4Norm };
 
+// Bytes of one attribute of the format.
+constexpr std::uint32_t vertexFormatSize(VertexFormat format)
+{
+    switch (format) {
+    case VertexFormat::Float:
+    case VertexFormat::UByte4Norm:
+        return 4;
+    case VertexFormat::Float2:
+        return 8;
+    case VertexFormat::Float3:
+        return 12;
+    case VertexFormat::Float4:
+        break;
+    }
+    return 16;
+}
+
 struct VertexAttribute {
     std::uint32_t location = 0;
     VertexFormat format = VertexFormat::Float3;

@@ -13,26 +13,27 @@ namespace penumbra::rhi {
 class CommandList;
 class Device;
 
-// A range of a uniform buffer, aligned for bindUniformBuffer.
-struct UniformSlice {
+// A range of an arena's buffer.
+struct BufferSlice {
     const Buffer* buffer = nullptr;
     std::uint64_t offset = 0;
     std::uint64_t size = 0;
 };
+// A range of a uniform buffer, aligned for bindUniformBuffer.
+using UniformSlice = BufferSlice;
 
-// Uniform data of one submission (per-draw matrices, per-frame blocks) packed into one buffer,
-// each slice aligned to Capabilities::uniformBufferOffsetAlignment. The buffer grows by
-// doubling; a full buffer is kept alive until reset(), since recorded draws still name it.
-// Call reset() only after the lists that bound earlier slices were submitted.
-class UniformArena {
+// Data of one submission packed into buffers of one usage, each slice aligned to `alignment`. The buffer grows by
+// doubling; a full buffer is kept alive until reset(), since recorded draws still name it. Call reset() only after
+// the lists that bound earlier slices were submitted.
+class BufferArena {
 public:
-    UniformArena(Device& device, std::string debugName);
+    BufferArena(Device& device, std::string debugName, BufferUsage usage, std::uint64_t alignment);
 
     void reset();
-    UniformSlice push(std::span<const std::byte> data);
+    BufferSlice push(std::span<const std::byte> data);
 
     template <typename T>
-    UniformSlice push(const T& value)
+    BufferSlice push(const T& value)
     {
         return push(std::as_bytes(std::span(&value, 1)));
     }
@@ -40,10 +41,24 @@ public:
 private:
     Device& device_;
     std::string debugName_;
+    BufferUsage usage_;
     std::uint64_t alignment_;
     std::unique_ptr<Buffer> current_;
     std::vector<std::unique_ptr<Buffer>> retired_;
     std::uint64_t used_ = 0;
+};
+
+// Uniform data of one submission (per-draw matrices, per-frame blocks), each slice aligned to
+// Capabilities::uniformBufferOffsetAlignment.
+class UniformArena : public BufferArena {
+public:
+    UniformArena(Device& device, std::string debugName);
+};
+
+// Per-instance vertex data of one submission (instance transforms), bound with bindVertexBuffer at a slice's offset.
+class VertexArena : public BufferArena {
+public:
+    VertexArena(Device& device, std::string debugName);
 };
 
 void bindUniform(CommandList& commands, std::uint32_t binding, const UniformSlice& slice);

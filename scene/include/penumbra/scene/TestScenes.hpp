@@ -52,4 +52,10 @@ inline constexpr float kTownHalfSize = 100.0f;
 inline constexpr glm::vec3 kTownBallStart{0.0f, 1.0f, 75.0f};
 Scene makeTownScene();
 
+// Many objects of one mesh, for instanced drawing: `count` unit cubes ("cube 1".."cube <count>", one mesh and one
+// material) standing on a ground ("ground") in a square grid, kCubeGridPitch apart, filled row by row; one sun; the
+// camera low over the grid's edge looking across it.
+inline constexpr float kCubeGridPitch = 3.0f;
+Scene makeCubeGridScene(std::uint32_t count);
+
 } // namespace penumbra::scene

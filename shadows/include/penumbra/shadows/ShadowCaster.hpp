@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/Resources.hpp"
+#include "penumbra/shadows/InstanceBatches.hpp"
 
 #include <array>
 #include <cstdint>
@@ -50,6 +51,12 @@ struct ShadowCaster {
     // Drawn without culling, so both faces cast (glTF doubleSided); single-sided casters cast their
     // light-facing side.
     bool doubleSided = false;
+    // Casters of one draw group share everything above but `model` and are drawn as the instances of one draw
+    // (ShadowCasterDraws refuses a group whose casters differ); kNoDrawGroup draws the caster alone.
+    std::uint32_t drawGroup = kNoDrawGroup;
 };
+
+// Whether two casters draw alike but for their model matrices: what casters of one draw group must.
+bool drawAlike(const ShadowCaster& a, const ShadowCaster& b);
 
 } // namespace penumbra::shadows

@@ -17,20 +17,17 @@
 
 namespace penumbra::shadows {
 
-// The per-draw block of shadow_caster.glsl.
+// The per-draw block of shadow_caster.glsl; the casters' model matrices are per instance (InstanceTransform).
 struct ShadowCasterUniforms {
-    glm::mat4 worldToClip{1.0f};
+    glm::mat4 viewProjection{1.0f};
     glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
     glm::vec4 sampling{0.0f}; // dither origin, 1 when the alpha comes from the base colour texture, 0
     UvTransformRows baseColorUv{}; // ShadowCaster::baseColorUv
     // The caster-side normal offset, read where reach.x > 0 (shadow_caster.vert).
-    glm::mat4 model{1.0f};
-    std::array<glm::vec4, 3> normalRows{}; // the inverse transpose of the model matrix, as rows
-    glm::mat4 viewProjection{1.0f};
     glm::vec4 light{0.0f};
     glm::vec4 reach{0.0f};
 };
-static_assert(sizeof(ShadowCasterUniforms) == 336);
+static_assert(sizeof(ShadowCasterUniforms) == 160);
 
 // The struct as the PipelineDesc::uniformLayouts entry of shadow_caster.glsl's block ShadowCasterDraw.
 inline rhi::UniformLayout shadowCasterLayout()
@@ -38,13 +35,10 @@ inline rhi::UniformLayout shadowCasterLayout()
     return {"ShadowCasterDraw",
             sizeof(ShadowCasterUniforms),
             {
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, worldToClip),
+                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, viewProjection),
                 PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, material),
                 PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, sampling),
                 PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, baseColorUv),
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, model),
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, normalRows),
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, viewProjection),
                 PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, light),
                 PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, reach),
             }};
@@ -76,11 +70,16 @@ class ShadowCasterDraws {
 public:
     ShadowCasterDraws(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
-    // Forget the previous record's uniforms; call once per command list, before the first draw.
-    void reset() { uniforms_.reset(); }
+    // Forget the previous record's uniforms and instances; call once per command list, before the first draw.
+    void reset()
+    {
+        uniforms_.reset();
+        instances_.reset();
+    }
 
-    // Draws casters[indices] with the view; returns the draws issued. Throws rhi::Error for an index
-    // past the caster list.
+    // Draws casters[indices] with the view, the casters of each draw group (ShadowCaster::drawGroup) as the
+    // instances of one draw; returns the draws issued. Throws rhi::Error for an index past the caster list and for a
+    // draw group whose casters do not draw alike.
     std::uint32_t draw(rhi::CommandList& commands, rhi::Format depthFormat, const ShadowViewDraw& view,
                        std::span<const std::uint32_t> indices, std::span<const ShadowCaster> casters);
 
@@ -99,6 +98,7 @@ private:
     std::unique_ptr<rhi::Shader> alphaFragment_;
     std::map<std::tuple<rhi::Format, bool, bool>, Pipelines> pipelines_;
     rhi::UniformArena uniforms_;
+    rhi::VertexArena instances_;
 };
 
 // Scissor rectangle of a whole-texel viewport.

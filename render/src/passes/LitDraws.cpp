@@ -1,0 +1,74 @@
+#include "LitDraws.hpp"
+
+#include "penumbra/render/LitUniforms.hpp"
+#include "penumbra/shadows/InstanceBatches.hpp"
+#include "penumbra/shadows/InstanceTransform.hpp"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+namespace penumbra::render {
+namespace {
+
+// The lit shaders compare the material's caster mode against the caster pass's PENUMBRA_CASTER_* (material.glsl).
+static_assert(static_cast<int>(scene::CasterMode::Clip) == static_cast<int>(shadows::ShadowCasterMode::Clip) &&
+              static_cast<int>(scene::CasterMode::Dither) == static_cast<int>(shadows::ShadowCasterMode::Dither));
+
+LitObjectUniforms objectUniforms(const scene::Scene& scene, const scene::Object& object)
+{
+    const scene::Material& material = scene.materialOf(object);
+    LitObjectUniforms u{
+        .baseColor = material.baseColor,
+        .surface = {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
+        .receivesShadows = scene.receivesShadows(object) ? 1 : 0,
+        .materialMaps = static_cast<int>(litMaterialMaps(material)),
+        .unlit = material.unlit ? 1 : 0,
+        .blended = material.blend ? 1 : 0,
+        .emissive = glm::vec4(material.emissive, material.occlusionStrength),
+        .normal = {material.normalScale, 0.0f, 0.0f, 0.0f},
+    };
+    for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
+        const shadows::UvTransformRows rows = GpuScene::uvTransform(material.textures[slot]);
+        u.uvTransforms[2 * slot] = rows[0];
+        u.uvTransforms[2 * slot + 1] = rows[1];
+    }
+    return u;
+}
+
+} // namespace
+
+std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera, bool instanced,
+                              rhi::UniformArena& uniforms, rhi::VertexArena& instances)
+{
+    const scene::Scene& scene = gpuScene.scene();
+    std::vector<std::uint32_t> opaque, blended;
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].castShadows != scene::ShadowCasting::ShadowsOnly)
+            (scene.materialOf(scene.objects[i]).blend ? blended : opaque).push_back(i);
+    const auto distance2 = [&](std::uint32_t i) {
+        const glm::vec3 d = scene.objects[i].worldBounds.center() - camera;
+        return glm::dot(d, d);
+    };
+    std::stable_sort(blended.begin(), blended.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return distance2(a) > distance2(b); });
+    const auto group = [&](std::uint32_t object) {
+        return instanced ? gpuScene.litDrawGroup(object) : shadows::kNoDrawGroup;
+    };
+    std::vector<LitDraw> draws;
+    std::vector<shadows::InstanceTransform> transforms;
+    for (const bool blending : {false, true}) {
+        const shadows::InstanceBatches batches =
+            blending ? shadows::batchRuns(std::span(blended), group) : shadows::batchByGroup(std::span(opaque), group);
+        for (const shadows::InstanceBatches::Batch& batch : batches.batches) {
+            transforms.clear();
+            for (std::uint32_t i = batch.first; i < batch.first + batch.count; ++i)
+                transforms.push_back(shadows::instanceTransform(scene.objects[batches.items[i]].transform));
+            const std::uint32_t object = batches.items[batch.first];
+            draws.push_back({object, batch.count, blending, uniforms.push(objectUniforms(scene, scene.objects[object])),
+                             instances.push(std::as_bytes(std::span(transforms)))});
+        }
+    }
+    return draws;
+}
+
+} // namespace penumbra::render
