@@ -172,10 +172,11 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
         const vec3 wide = cubeSearchBlockers(r, search, c.blockerSamples, receiver);
         if (wide.y == 0.0)
             return 1.0;
-        // As averageBlocker: the nearest blocker's cone searched again for the average.
+        // As refinedBlockers: the nearest blocker's cone searched again for the average; none there, fully lit.
         const float refined = min(perspectiveSearchTexels(receiver, wide.z, cubeSoft.y, c), search);
-        const vec3 near = cubeSearchBlockers(r, refined, c.blockerSamples, receiver);
-        const vec2 blockers = near.y > 0.0 ? near.xy : wide.xy;
+        const vec2 blockers = cubeSearchBlockers(r, refined, c.blockerSamples, receiver).xy;
+        if (blockers.y == 0.0)
+            return 1.0;
         radius = perspectivePenumbraTexels(receiver, blockers.x, cubeSoft.y, c);
         if (inUmbra(blockers, c.blockerSamples, radius, refined))
             return 0.0;

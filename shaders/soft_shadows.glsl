@@ -118,11 +118,12 @@ vec3 searchBlockers(sampler2D atlas, SoftTile t, float radius, int count)
 // needs, and by that clamp a different region of the world in each cascade; it finds the nearest blocker. The second
 // searches only the disk that blocker can shadow the receiver from (its light cone, `refined` texels) and averages
 // the blockers there, so the average, and the penumbra, depend on the blockers near the receiver, not on the clamp.
-// Returns (average blocker depth, blockers found); none found: fully lit.
-vec2 averageBlocker(sampler2D atlas, SoftTile t, vec3 wide, float refined, int count)
+// A blocker farther from the light has a narrower cone, inside the nearest one's, so a second search that finds no
+// blocker finds none that can shadow the receiver: fully lit, without filtering, as a first search that finds none.
+// Returns (average blocker depth, blockers found).
+vec2 refinedBlockers(sampler2D atlas, SoftTile t, float refined, int count)
 {
-    const vec3 near = searchBlockers(atlas, t, refined, count);
-    return near.y > 0.0 ? near.xy : wide.xy;
+    return searchBlockers(atlas, t, refined, count).xy;
 }
 
 // Every tap of the refined search found a blocker and the penumbra fits inside it: the receiver is in the umbra,
@@ -195,7 +196,9 @@ float directionalSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftCo
         const float refined = min(clamp(c.searchScale * max(receiver - nearest, 0.0) * tanHalfAngle / texelWorld, 1.0,
                                         max(c.maxTexels, 1.0)),
                                   search);
-        const vec2 blockers = averageBlocker(atlas, t, wide, refined, c.blockerSamples);
+        const vec2 blockers = refinedBlockers(atlas, t, refined, c.blockerSamples);
+        if (blockers.y == 0.0)
+            return 1.0;
         const float blocker = (depthRow.y - blockers.x) / depthRow.x;
         radius = clamp(c.penumbraScale * max(receiver - blocker, 0.0) * tanHalfAngle / texelWorld, c.minTexels,
                        c.maxTexels);
@@ -235,7 +238,9 @@ float perspectiveSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftCo
         // The nearest blocker's cone: the search formula with that blocker in place of the near plane.
         const float refined =
             min(perspectiveSearchTexels(receiver, perspectiveDistance(wide.z, tileSoft.xy), tileSoft.z, c), search);
-        const vec2 blockers = averageBlocker(atlas, t, wide, refined, c.blockerSamples);
+        const vec2 blockers = refinedBlockers(atlas, t, refined, c.blockerSamples);
+        if (blockers.y == 0.0)
+            return 1.0;
         radius = perspectivePenumbraTexels(receiver, perspectiveDistance(blockers.x, tileSoft.xy), tileSoft.z, c);
         if (inUmbra(blockers, c.blockerSamples, radius, refined))
             return 0.0;

@@ -255,13 +255,16 @@ parity::Thresholds atlasThresholds(const std::string& atlas)
 bool reversedTwins(const std::string& a, const std::string& b) { return a + "-reversed" == b || b + "-reversed" == a; }
 
 // Lit images. A configuration against its twin of the same backend with the other depth mapping: byte-identical
-// (measured). Otherwise at most 1 of the 57 600 pixels (a shadow edge) and PSNR >= 60 dB.
+// (measured). Otherwise at most 1 of the 57 600 pixels (a shadow edge) and PSNR >= 60 dB. With soft shadows the
+// twins may differ in `softPixels` pixels by up to 2: a depth comparison that flips between the mappings moves a
+// Poisson tap, or turns a refined blocker search that finds one blocker into one that finds none, whose pixel is then
+// fully lit instead of filtered to nearly lit (measured: 1 pixel by 2 of 255 in mixed-pcss).
 parity::Thresholds litThresholds(const std::string& a, const std::string& b, std::uint32_t softPixels = 0)
 {
     if (reversedTwins(a, b) && softPixels == 0)
         return parity::identical();
     if (reversedTwins(a, b))
-        return {.maxDifference = 1.0, .maxDifferingPixels = softPixels};
+        return {.maxDifference = 2.0, .maxDifferingPixels = softPixels};
     return {.maxDifference = parity::kAnyDifference, .minPsnr = 60.0, .maxDifferingPixels = 1 + softPixels};
 }
 
