@@ -148,5 +148,21 @@ TEST(CascadeFit, NearPlaneIsPulledBackOverCastersInTheFootprintAndByTheOffset)
     EXPECT_NEAR(top.z, 2.0f / 62.0f, 1e-5f);
 }
 
+// The centre-and-extent transform of a box gives the box of its eight transformed corners.
+TEST(CascadeFit, LightSpaceBoundsOfABoxAreThoseOfItsCorners)
+{
+    const Bounds box{{-3.0f, 0.5f, 2.0f}, {1.0f, 4.0f, 2.5f}};
+    for (const glm::vec3 direction :
+         {glm::vec3(0.3f, -1.0f, 0.4f), glm::vec3(-0.7f, -0.2f, 0.1f), glm::vec3(0, -1, 0)}) {
+        const LightBasis basis = lightBasis(direction);
+        const Bounds fast = lightSpaceBounds(basis, box);
+        const Bounds corners = lightSpaceBounds(basis, box.corners());
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_NEAR(fast.min[axis], corners.min[axis], 1e-5f) << axis;
+            EXPECT_NEAR(fast.max[axis], corners.max[axis], 1e-5f) << axis;
+        }
+    }
+}
+
 } // namespace
 } // namespace penumbra::shadows
