@@ -201,7 +201,7 @@ rhi::VertexLayout GpuScene::vertexLayout()
                               {3, rhi::VertexFormat::Float2, offset(offsetof(scene::Vertex, uv1)), 0},
                               {4, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, tangent)), 0},
                               {5, rhi::VertexFormat::Float4, offset(offsetof(scene::Vertex, color)), 0}}};
-    shadows::addInstanceAttributes(layout, kInstanceSlot);
+    shadows::addInstanceAttributes(layout, shadows::kInstanceSlot);
     return layout;
 }
 
@@ -216,7 +216,7 @@ void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& obj
     }
     commands.bindTexture(coverageBinding, baseColorMap(material), coverageSampler(material));
     commands.bindVertexBuffer(0, vertices(object.mesh));
-    commands.bindVertexBuffer(kInstanceSlot, *instances.buffer, instances.offset);
+    commands.bindVertexBuffer(shadows::kInstanceSlot, *instances.buffer, instances.offset);
     commands.bindIndexBuffer(indices(object.mesh), rhi::IndexType::UInt32);
     commands.drawIndexed(static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), instanceCount);
 }

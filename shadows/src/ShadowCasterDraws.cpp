@@ -12,8 +12,6 @@
 namespace penumbra::shadows {
 namespace {
 
-constexpr std::uint32_t kInstanceSlot = 1; // the vertex buffer slot of the instance transforms
-
 rhi::ShaderSource casterShader(std::string_view fileName)
 {
     rhi::ShaderSource source = shaders::load(fileName);

@@ -37,7 +37,7 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::ui
     // Only the attributes depth_prepass.vert reads: the validation layer reports attributes a shader does not consume.
     desc.vertexLayout = GpuScene::vertexLayout();
     std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
-        return a.buffer != GpuScene::kInstanceSlot &&
+        return a.buffer != shadows::kInstanceSlot &&
                std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
     });
     desc.depthFormat = depthFormat;

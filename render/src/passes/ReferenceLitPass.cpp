@@ -69,7 +69,7 @@ ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const GpuScene& scene)
     // Only the attributes reference_lit.vert reads: the validation layer reports attributes a shader does not consume.
     desc.vertexLayout = GpuScene::vertexLayout();
     std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
-        return a.buffer != GpuScene::kInstanceSlot &&
+        return a.buffer != shadows::kInstanceSlot &&
                std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
     });
     desc.depthFormat = kDepthFormat;

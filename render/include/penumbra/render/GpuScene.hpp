@@ -61,9 +61,8 @@ public:
     static shadows::CasterVertexFormat vertexFormat();
     // scene::Vertex's six attributes at locations 0 to 5 (position, normal, uv, uv1, tangent, colour), as the
     // lit shaders read them, and the instance transforms (shadows::addInstanceAttributes) from vertex buffer slot
-    // kInstanceSlot; a pass whose shader reads fewer removes the others.
+    // shadows::kInstanceSlot; a pass whose shader reads fewer removes the others.
     static rhi::VertexLayout vertexLayout();
-    static constexpr std::uint32_t kInstanceSlot = 1;
 
     // Objects of one lit draw group share mesh, material and whether they receive shadows: instances of one draw in
     // the lit pass and the depth prepass. Casters' draw groups (ShadowCaster::drawGroup) are made alike.

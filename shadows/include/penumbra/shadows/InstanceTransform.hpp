@@ -26,6 +26,9 @@ InstanceTransform instanceTransform(const glm::mat4& model);
 // After every mesh attribute (scene vertices use locations 0 to 5).
 inline constexpr std::uint32_t kInstanceFirstLocation = 6;
 
+// The vertex buffer slot of the instance transforms in every such pass (the mesh's vertices take slot 0).
+inline constexpr std::uint32_t kInstanceSlot = 1;
+
 // Appends the per-instance buffer (InstanceTransform, advancing once per instance) at `slot` and its seven Float4
 // attributes from kInstanceFirstLocation to `layout`.
 void addInstanceAttributes(rhi::VertexLayout& layout, std::uint32_t slot);
