@@ -1,5 +1,7 @@
 #include "penumbra/shadows/InstanceTransform.hpp"
 
+#include <algorithm>
+#include <cstddef>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 

@@ -64,10 +64,10 @@ std::uint32_t DepthPrepass::record(rhi::CommandList& commands, const rhi::Frameb
     const rhi::Pipeline* bound = nullptr;
     std::uint32_t issued = 0;
     for (const LitDraw& draw : draws) {
-        if (draw.blended)
-            continue;
         const scene::Object& object = scene.objects[draw.object];
         const scene::Material& material = scene.materialOf(object);
+        if (material.blend)
+            continue;
         const bool clip = material.caster == scene::CasterMode::Clip;
         const rhi::Pipeline* pipeline = pipelines_[pipelineIndex(material.doubleSided, clip)].get();
         if (pipeline != bound) {

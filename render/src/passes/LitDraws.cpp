@@ -64,7 +64,7 @@ std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera,
             for (std::uint32_t i = batch.first; i < batch.first + batch.count; ++i)
                 transforms.push_back(shadows::instanceTransform(scene.objects[batches.items[i]].transform));
             const std::uint32_t object = batches.items[batch.first];
-            draws.push_back({object, batch.count, blending, uniforms.push(objectUniforms(scene, scene.objects[object])),
+            draws.push_back({object, batch.count, uniforms.push(objectUniforms(scene, scene.objects[object])),
                              instances.push(std::as_bytes(std::span(transforms)))});
         }
     }

@@ -13,7 +13,6 @@ namespace penumbra::render {
 struct LitDraw {
     std::uint32_t object = 0; // the first instance's object, whose mesh and material every instance shares
     std::uint32_t instanceCount = 0;
-    bool blended = false; // its material blends (drawn after the opaque draws, back to front)
     rhi::UniformSlice uniforms; // LitObjectUniforms (shaders/lit.glsl, Object)
     rhi::BufferSlice instances; // a shadows::InstanceTransform per instance
 };
