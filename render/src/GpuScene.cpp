@@ -10,7 +10,7 @@
 namespace penumbra::render {
 namespace {
 
-// How a caster's texels enter the atlas; only asked of objects that cast (Scene::castsShadows).
+// How a caster's texels enter the atlas (Off: Opaque, for materials whose objects are never listed as casters).
 shadows::ShadowCasterMode casterMode(scene::CasterMode mode)
 {
     switch (mode) {
@@ -144,23 +144,41 @@ shadows::UvTransformRows GpuScene::uvTransform(const std::optional<scene::Materi
                    : shadows::uvTransformRows(glm::mat3(1.0f), 0);
 }
 
-std::vector<shadows::ShadowCaster> GpuScene::casters() const
+shadows::ShadowCaster GpuScene::materialCaster(const scene::Material& material) const
 {
-    std::vector<shadows::ShadowCaster> casters;
+    const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
+    shadows::ShadowCaster caster;
+    caster.mode = casterMode(material.caster);
+    caster.alpha = material.baseColor.a;
+    caster.alphaCutoff = material.alphaCutoff;
+    caster.baseColorMap = &baseColorMap(material);
+    caster.baseColorSampler = &coverageSampler(material);
+    caster.textured = baseColor.has_value();
+    caster.baseColorUv = uvTransform(baseColor);
+    caster.doubleSided = material.doubleSided;
+    return caster;
+}
+
+void GpuScene::casters(std::vector<shadows::ShadowCaster>& casters) const
+{
+    // What a caster takes from its material, worked out once per material: a scene may hold 10^5 objects.
+    std::vector<shadows::ShadowCaster> byMaterial;
+    byMaterial.reserve(scene_.materials.size());
+    for (const scene::Material& material : scene_.materials)
+        byMaterial.push_back(materialCaster(material));
+    casters.clear();
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
         const scene::Object& object = scene_.objects[i];
-        const scene::Material& material = scene_.materialOf(object);
-        const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
-        const bool doubleSided = material.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided;
-        if (scene_.castsShadows(object))
-            casters.push_back({meshes_[object.mesh].vertices.get(), meshes_[object.mesh].indices.get(),
-                               static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), object.transform,
-                               casterMode(material.caster), material.baseColor.a, material.alphaCutoff,
-                               &baseColorMap(material), &coverageSampler(material), baseColor.has_value(),
-                               uvTransform(baseColor), doubleSided,
-                               meshMaterialGroups_[i] * 2 + (doubleSided ? 1 : 0)});
+        if (!scene_.castsShadows(object))
+            continue;
+        shadows::ShadowCaster& caster = casters.emplace_back(byMaterial.at(object.material));
+        caster.vertices = meshes_[object.mesh].vertices.get();
+        caster.indices = meshes_[object.mesh].indices.get();
+        caster.indexCount = static_cast<std::uint32_t>(scene_.meshOf(object).indices.size());
+        caster.model = object.transform;
+        caster.doubleSided = caster.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided;
+        caster.drawGroup = meshMaterialGroups_[i] * 2 + (caster.doubleSided ? 1 : 0);
     }
-    return casters;
 }
 
 std::vector<shadows::Bounds> GpuScene::casterBounds() const

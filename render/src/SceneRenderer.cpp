@@ -35,6 +35,8 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+float aspectOf(const FrameDesc& frame) { return static_cast<float>(frame.width) / static_cast<float>(frame.height); }
+
 shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect)
 {
     const glm::vec3 up = glm::normalize(glm::cross(camera.right(), camera.forward));
@@ -443,7 +445,7 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
 
 LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const
 {
-    const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
+    const float aspect = aspectOf(frame);
     const rhi::Conventions& conventions = device_.conventions();
     LitFrameUniforms u;
     u.viewProjection = conventions.perspective(camera.fovY, aspect, camera.nearPlane, camera.farPlane) * camera.view();
@@ -552,7 +554,7 @@ std::uint32_t SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi
 ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameDesc& frame) const
 {
     checkFrameSize(frame);
-    const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
+    const float aspect = aspectOf(frame);
     const scene::Scene& scene = gpuScene_.scene();
     const std::vector<shadows::Bounds> bounds = gpuScene_.casterBounds();
     const std::vector<shadows::DirectionalShadowLightInput> lights = shadowLights(scene.lights);
@@ -615,12 +617,14 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     uniforms_.reset();
     instances_.reset();
     const scene::Scene& scene = gpuScene_.scene();
-    litDraws_ = litDraws(gpuScene_, camera.position, frame.instancedDraws, uniforms_, instances_);
+    litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
+                         uniforms_, instances_);
     const rhi::UniformSlice shadowUniforms = uniforms_.push(plan_.uniforms);
     const rhi::UniformSlice localShadowUniforms = uniforms_.push(localPlan_.uniforms);
-    std::vector<shadows::ShadowCaster> casters = gpuScene_.casters();
+    gpuScene_.casters(casters_);
+    const std::vector<shadows::ShadowCaster>& casters = casters_;
     if (!frame.instancedDraws)
-        for (shadows::ShadowCaster& caster : casters)
+        for (shadows::ShadowCaster& caster : casters_)
             caster.drawGroup = shadows::kNoDrawGroup;
     rhi::CommandList& commands = *commands_;
     if (timestamps_)

@@ -25,16 +25,15 @@ bool insideSphere(const Bounds& box, glm::vec3 centre, float radius)
 
 // The culling loop of either fit: `heldByPrevious` says whether the previous cascade already holds a caster's shadow.
 template <typename HeldByPrevious>
-CasterCullingResult cullCasters(const DirectionalShadowCascade& cascade, std::span<const Bounds> casterBounds,
+CasterCullingResult cullCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                 HeldByPrevious heldByPrevious)
 {
     CasterCullingResult result;
-    for (std::uint32_t i = 0; i < casterBounds.size(); ++i) {
-        const Bounds& caster = casterBounds[i];
-        if (!overlapsCascade(lightSpaceBounds(cascade.basis, caster), cascade))
+    for (std::uint32_t i = 0; i < casters.light.size(); ++i) {
+        if (!overlapsCascade(casters.light[i], cascade))
             continue;
         ++result.overlapping;
-        if (heldByPrevious(caster)) {
+        if (heldByPrevious(casters.world[i])) {
             ++result.culledByBias;
             continue;
         }
@@ -47,10 +46,10 @@ CasterCullingResult cullCasters(const DirectionalShadowCascade& cascade, std::sp
 
 float cascadeBlendCullingFactor(float cascadeFade) { return std::max(0.0f, 0.8f - cascadeFade); }
 
-CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, std::span<const Bounds> casterBounds,
+CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                       const std::optional<Sphere>& previousCullingSphere, float cullingFactor)
 {
-    return cullCasters(cascade, casterBounds, [&](const Bounds& caster) {
+    return cullCasters(cascade, casters, [&](const Bounds& caster) {
         return previousCullingSphere &&
                insideSphere(caster, previousCullingSphere->centre, previousCullingSphere->radius * cullingFactor);
     });
@@ -73,11 +72,10 @@ bool insideFrustumSlice(const Bounds& box, const FrustumSlice& slice, float dept
     return true;
 }
 
-CasterCullingResult cullCloseFitShadowCasters(const DirectionalShadowCascade& cascade,
-                                              std::span<const Bounds> casterBounds,
+CasterCullingResult cullCloseFitShadowCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                               const std::optional<FrustumSlice>& previousSlice, float cullingFactor)
 {
-    return cullCasters(cascade, casterBounds, [&](const Bounds& caster) {
+    return cullCasters(cascade, casters, [&](const Bounds& caster) {
         return previousSlice && insideFrustumSlice(caster, *previousSlice, cullingFactor);
     });
 }

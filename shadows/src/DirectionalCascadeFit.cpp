@@ -33,11 +33,10 @@ glm::mat4 lightView(const LightBasis& b, glm::vec2 snapped, float nearDepth)
 // back over every caster box whose light-space footprint overlaps the square, then by nearPlaneOffset; the far plane
 // at maxDepth.
 void placeDepthPlanes(DirectionalShadowCascade& c, float minDepth, float maxDepth, float nearPlaneOffset,
-                      std::span<const Bounds> casterBounds, const rhi::Conventions& conventions)
+                      const LightSpaceCasters& casters, const rhi::Conventions& conventions)
 {
     c.nearDepth = minDepth;
-    for (const Bounds& caster : casterBounds) {
-        const Bounds light = lightSpaceBounds(c.basis, caster);
+    for (const Bounds& light : casters.light) {
         if (overlapsSquare(light, c.snappedCentre, c.halfSize))
             c.nearDepth = std::min(c.nearDepth, light.min.z);
     }
@@ -54,21 +53,21 @@ glm::vec2 snapToTexels(glm::vec2 centre, float texelSize) { return glm::round(ce
 
 } // namespace
 
-DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightBasis& basis, std::uint32_t tileSize,
-                                               float nearPlaneOffset, std::span<const Bounds> casterBounds,
+DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightSpaceCasters& casters,
+                                               std::uint32_t tileSize, float nearPlaneOffset,
                                                const rhi::Conventions& conventions)
 {
     DirectionalShadowCascade c;
-    c.basis = basis;
+    c.basis = casters.basis;
     c.cullingSphere = sphere;
     const float tile = static_cast<float>(tileSize);
     // h = r + (sqrt 2 / 2) texel with texel = 2h / tile: the snap moves the centre at most half a texel diagonal.
     c.halfSize = sphere.radius / (1.0f - std::sqrt(2.0f) / tile);
     c.texelSize = 2.0f * c.halfSize / tile;
-    const glm::vec3 centre = basis.toLight(sphere.centre);
+    const glm::vec3 centre = c.basis.toLight(sphere.centre);
     c.fittedCentre = glm::vec2(centre);
     c.snappedCentre = snapToTexels(c.fittedCentre, c.texelSize);
-    placeDepthPlanes(c, centre.z - sphere.radius, centre.z + sphere.radius, nearPlaneOffset, casterBounds, conventions);
+    placeDepthPlanes(c, centre.z - sphere.radius, centre.z + sphere.radius, nearPlaneOffset, casters, conventions);
     return c;
 }
 
@@ -87,17 +86,17 @@ float closeFitHalfSize(const Bounds& sliceBounds, std::uint32_t tileSize, float 
 }
 
 DirectionalShadowCascade fitCloseCascade(const Bounds& sliceBounds, float halfSize, const Sphere& sphere,
-                                         const LightBasis& basis, std::uint32_t tileSize, float nearPlaneOffset,
-                                         std::span<const Bounds> casterBounds, const rhi::Conventions& conventions)
+                                         const LightSpaceCasters& casters, std::uint32_t tileSize,
+                                         float nearPlaneOffset, const rhi::Conventions& conventions)
 {
     DirectionalShadowCascade c;
-    c.basis = basis;
+    c.basis = casters.basis;
     c.cullingSphere = sphere;
     c.halfSize = halfSize;
     c.texelSize = 2.0f * c.halfSize / static_cast<float>(tileSize);
     c.fittedCentre = 0.5f * glm::vec2(sliceBounds.min + sliceBounds.max);
     c.snappedCentre = snapToTexels(c.fittedCentre, c.texelSize);
-    placeDepthPlanes(c, sliceBounds.min.z, sliceBounds.max.z, nearPlaneOffset, casterBounds, conventions);
+    placeDepthPlanes(c, sliceBounds.min.z, sliceBounds.max.z, nearPlaneOffset, casters, conventions);
     return c;
 }
 
@@ -106,11 +105,11 @@ std::vector<DirectionalShadowCascade> computeDirectionalShadowMatricesAndCulling
     glm::vec3 lightDirection, std::uint32_t tileSize, float nearPlaneOffset, std::span<const Bounds> casterBounds,
     const rhi::Conventions& conventions)
 {
-    const LightBasis basis = lightBasis(lightDirection);
+    const LightSpaceCasters casters = lightSpaceCasters(lightBasis(lightDirection), casterBounds);
     std::vector<DirectionalShadowCascade> cascades;
     for (std::uint32_t i = firstCascade; i < firstCascade + count; ++i) {
         const Sphere sphere = frustumSliceSphere(camera, splits.nearOf(i), splits.farOf(i));
-        cascades.push_back(fitDirectionalCascade(sphere, basis, tileSize, nearPlaneOffset, casterBounds, conventions));
+        cascades.push_back(fitDirectionalCascade(sphere, casters, tileSize, nearPlaneOffset, conventions));
     }
     return cascades;
 }

@@ -30,8 +30,8 @@ std::optional<std::string> exclusion(const DirectionalShadowLightInput& light, s
     return std::nullopt;
 }
 
-void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings, const rhi::Conventions& conventions,
-                      std::span<const Bounds> casterBounds)
+// The soft shadows' blocks but for the tiles' (tileSoftData).
+void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
 {
     DirectionalShadowUniforms& u = plan.uniforms;
     u.soft = softShadowUniforms(settings.soft);
@@ -40,12 +40,16 @@ void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& setting
         const ShadowedDirectionalLight& light = plan.lights[slot];
         u.lightSoft[slot] = {tanHalfAngularDiameter(light.angularDiameter),
                              normalBiasFilterFactor(light.filter) / atlasFactor, 0.0f, 0.0f};
-        for (const DirectionalCascadePlan& cascade : light.cascades) {
-            const float top = casterTopDepth(cascade.fit.basis, casterBounds, cascade.fit.nearDepth);
-            u.tileSoft[cascade.tile] = glm::vec4(lightTexelAnchor(cascade.fit, cascade.worldToAtlas),
-                                                 directionalDepthRow(cascade.fit, top, conventions));
-        }
     }
+}
+
+// A cascade tile's DirectionalShadowUniforms::tileSoft.
+glm::vec4 tileSoftData(const DirectionalCascadePlan& cascade, const LightSpaceCasters& casters,
+                       const rhi::Conventions& conventions)
+{
+    const float top = casterTopDepth(casters, cascade.fit.nearDepth);
+    return glm::vec4(lightTexelAnchor(cascade.fit, cascade.worldToAtlas),
+                     directionalDepthRow(cascade.fit, top, conventions));
 }
 
 void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
@@ -183,30 +187,31 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
     for (std::uint32_t slot = 0; slot < plan.lights.size(); ++slot) {
         ShadowedDirectionalLight& light = plan.lights[slot];
-        const LightBasis basis = lightBasis(light.direction);
+        const LightSpaceCasters casters = lightSpaceCasters(lightBasis(light.direction), casterBounds);
         for (std::uint32_t c = 0; c < cascadeCount; ++c) {
             DirectionalCascadePlan cascade;
             const FrustumSlice& slice = slices[c];
-            cascade.fit = close
-                              ? fitCloseCascade(lightSpaceBounds(basis, frustumSliceCorners(camera, slice.nearDistance,
+            cascade.fit =
+                close ? fitCloseCascade(lightSpaceBounds(casters.basis, frustumSliceCorners(camera, slice.nearDistance,
                                                                                             slice.farDistance)),
-                                                halfSizes[c], plan.cullingSpheres[c], basis, plan.atlas.tileSize(),
-                                                light.nearPlaneOffset, casterBounds, conventions)
-                              : fitDirectionalCascade(plan.cullingSpheres[c], basis, plan.atlas.tileSize(),
-                                                      light.nearPlaneOffset, casterBounds, conventions);
+                                        halfSizes[c], plan.cullingSpheres[c], casters, plan.atlas.tileSize(),
+                                        light.nearPlaneOffset, conventions)
+                      : fitDirectionalCascade(plan.cullingSpheres[c], casters, plan.atlas.tileSize(),
+                                              light.nearPlaneOffset, conventions);
             cascade.tile = directionalTileIndex(slot, c, cascadeCount);
             cascade.worldToAtlas = worldToAtlas(cascade.fit.viewProjection, cascade.tile, plan.atlas, conventions);
             cascade.viewport = plan.atlas.viewport(cascade.tile);
             if (close)
                 cascade.casters =
-                    cullCloseFitShadowCasters(cascade.fit, casterBounds,
+                    cullCloseFitShadowCasters(cascade.fit, casters,
                                               c > 0 ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
                                               cullingFactor);
             else
                 cascade.casters =
-                    cullShadowCasters(cascade.fit, casterBounds,
+                    cullShadowCasters(cascade.fit, casters,
                                       c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt,
                                       cullingFactor);
+            plan.uniforms.tileSoft[cascade.tile] = tileSoftData(cascade, casters, conventions);
             light.cascades.push_back(std::move(cascade));
         }
     }
@@ -217,7 +222,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
             plan.cascadeData.push_back(cascadeData(plan.cullingSpheres[c], plan.lights[0].cascades[c].fit.texelSize,
                                                    directional.filter, plan.splits.farOf(c)));
     fillUniforms(plan, settings);
-    fillSoftUniforms(plan, settings, conventions, casterBounds);
+    fillSoftUniforms(plan, settings);
     return plan;
 }
 

@@ -38,4 +38,13 @@ Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world)
     return {centre - reach, centre + reach};
 }
 
+LightSpaceCasters lightSpaceCasters(const LightBasis& basis, std::span<const Bounds> world)
+{
+    LightSpaceCasters casters{basis, world, {}};
+    casters.light.reserve(world.size());
+    for (const Bounds& box : world)
+        casters.light.push_back(lightSpaceBounds(basis, box));
+    return casters;
+}
+
 } // namespace penumbra::shadows

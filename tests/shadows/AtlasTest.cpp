@@ -59,8 +59,8 @@ TEST(WorldToAtlas, AgreesAcrossConventionsAndWithTheRasterizer)
     std::optional<glm::vec2> firstUv;
     for (const rhi::Conventions& conventions : testing::allConventions()) {
         SCOPED_TRACE(testing::conventionName(conventions));
-        const DirectionalShadowCascade fit =
-            fitDirectionalCascade(sphere, lightBasis(light), layout.tileSize(), 0.0f, {}, conventions);
+        const DirectionalShadowCascade fit = fitDirectionalCascade(sphere, lightSpaceCasters(lightBasis(light), {}),
+                                                                   layout.tileSize(), 0.0f, conventions);
         const glm::mat4 m = worldToAtlas(fit.viewProjection, tile, layout, conventions);
         const glm::vec4 r = m * glm::vec4(receiver, 1.0f);
         const glm::vec4 o = m * glm::vec4(occluder, 1.0f);

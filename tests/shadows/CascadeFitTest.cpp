@@ -39,13 +39,16 @@ TEST(CascadeFit, SphereRadiusAndTexelSizeDoNotChangeWhenTheCameraRotates)
     ShadowCamera camera = randomCamera(rng);
     const Sphere reference = frustumSliceSphere(camera, 5.0f, 20.0f);
     const float referenceTexel =
-        fitDirectionalCascade(reference, lightBasis({0.3f, -1.0f, 0.2f}), 512, 0.0f, {}, defaultConventions).texelSize;
+        fitDirectionalCascade(reference, lightSpaceCasters(lightBasis({0.3f, -1.0f, 0.2f}), {}), 512, 0.0f,
+                              defaultConventions)
+            .texelSize;
     for (int trial = 0; trial < 100; ++trial) {
         testing::randomOrientation(rng, camera.forward, camera.up);
         const Sphere rotated = frustumSliceSphere(camera, 5.0f, 20.0f);
         EXPECT_EQ(rotated.radius, reference.radius);
         const DirectionalShadowCascade fit =
-            fitDirectionalCascade(rotated, lightBasis({0.3f, -1.0f, 0.2f}), 512, 0.0f, {}, defaultConventions);
+            fitDirectionalCascade(rotated, lightSpaceCasters(lightBasis({0.3f, -1.0f, 0.2f}), {}), 512, 0.0f,
+                                  defaultConventions);
         EXPECT_EQ(fit.texelSize, referenceTexel);
     }
 }
@@ -64,8 +67,8 @@ TEST(CascadeFit, TranslatingTheCameraMovesShadowTexelsByWholeTexelsOnly)
         const glm::vec3 point = camera.position + camera.forward * 6.0f + glm::vec3(0.3f, 0.1f, -0.2f);
         auto atlasTexel = [&](const ShadowCamera& c) {
             const Sphere sphere = frustumSliceSphere(c, c.nearPlane, 12.0f);
-            const DirectionalShadowCascade fit =
-                fitDirectionalCascade(sphere, lightBasis(light), layout.tileSize(), 0.0f, {}, conventions);
+            const DirectionalShadowCascade fit = fitDirectionalCascade(sphere, lightSpaceCasters(lightBasis(light), {}),
+                                                                       layout.tileSize(), 0.0f, conventions);
             const glm::vec4 p = worldToAtlas(fit.viewProjection, 1, layout, conventions) * glm::vec4(point, 1.0f);
             return std::pair{glm::vec2(p) * static_cast<float>(layout.atlasSize()), fit.texelSize};
         };
@@ -91,8 +94,9 @@ TEST(CascadeFit, TheSphereLiesInsideItsTileAndItsCentreInTheMiddle)
     for (int trial = 0; trial < 50; ++trial) {
         const ShadowCamera camera = randomCamera(rng);
         const Sphere sphere = frustumSliceSphere(camera, camera.nearPlane, camera.nearPlane + 30.0f);
-        const DirectionalShadowCascade fit = fitDirectionalCascade(sphere, lightBasis(testing::randomUnit(rng)),
-                                                                   layout.tileSize(), 0.5f, {}, defaultConventions);
+        const DirectionalShadowCascade fit =
+            fitDirectionalCascade(sphere, lightSpaceCasters(lightBasis(testing::randomUnit(rng)), {}),
+                                  layout.tileSize(), 0.5f, defaultConventions);
         const std::uint32_t tile = static_cast<std::uint32_t>(trial % 16);
         const glm::mat4 m = worldToAtlas(fit.viewProjection, tile, layout, defaultConventions);
         const glm::vec2 low(layout.tileOffset(tile));
@@ -117,7 +121,8 @@ TEST(CascadeFit, TheLightViewLooksAlongTheLightDirection)
 {
     const glm::vec3 direction = glm::normalize(glm::vec3(1.0f, -2.0f, 0.5f));
     const DirectionalShadowCascade fit =
-        fitDirectionalCascade({{1, 2, 3}, 4.0f}, lightBasis(direction), 256, 0.0f, {}, defaultConventions);
+        fitDirectionalCascade({{1, 2, 3}, 4.0f}, lightSpaceCasters(lightBasis(direction), {}), 256, 0.0f,
+                              defaultConventions);
     const glm::vec4 a = fit.view * glm::vec4(5, 6, 7, 1);
     const glm::vec4 b = fit.view * glm::vec4(glm::vec3(5, 6, 7) + direction, 1);
     EXPECT_NEAR(b.x - a.x, 0.0f, 1e-5f);
@@ -131,7 +136,8 @@ TEST(CascadeFit, NearPlaneIsPulledBackOverCastersInTheFootprintAndByTheOffset)
     // Light straight down: light depth is -y.
     const LightBasis basis = lightBasis({0.0f, -1.0f, 0.0f});
     const Sphere sphere{{0.0f, 0.0f, 0.0f}, 10.0f};
-    const DirectionalShadowCascade plain = fitDirectionalCascade(sphere, basis, 512, 0.0f, {}, defaultConventions);
+    const DirectionalShadowCascade plain =
+        fitDirectionalCascade(sphere, lightSpaceCasters(basis, {}), 512, 0.0f, defaultConventions);
     EXPECT_NEAR(plain.nearDepth, -10.0f, 1e-5f);
     EXPECT_NEAR(plain.farDepth, 10.0f, 1e-5f);
 
@@ -140,7 +146,7 @@ TEST(CascadeFit, NearPlaneIsPulledBackOverCastersInTheFootprintAndByTheOffset)
         {{100.0f, 90.0f, 0.0f}, {101.0f, 95.0f, 1.0f}}, // higher still, but outside the footprint
     };
     const DirectionalShadowCascade pulled =
-        fitDirectionalCascade(sphere, basis, 512, 2.0f, casters, defaultConventions);
+        fitDirectionalCascade(sphere, lightSpaceCasters(basis, casters), 512, 2.0f, defaultConventions);
     EXPECT_NEAR(pulled.nearDepth, -52.0f, 1e-4f);
     EXPECT_NEAR(pulled.farDepth, 10.0f, 1e-5f);
     // The caster's top is 2 units behind the near plane: window depth in range, not clipped.

@@ -39,12 +39,14 @@ protected:
 
 TEST_F(CasterCullingTest, CastersInTheCascadeBoxIncludingAnyDistanceTowardTheLight)
 {
-    const CasterCullingResult first = cullShadowCasters(cascades[0], casters, std::nullopt, 0.7f);
+    const CasterCullingResult first =
+        cullShadowCasters(cascades[0], lightSpaceCasters(cascades[0].basis, casters), std::nullopt, 0.7f);
     EXPECT_EQ(first.casters, (std::vector<std::uint32_t>{0, 4}));
     EXPECT_EQ(first.overlapping, 2u);
     EXPECT_EQ(first.culledByBias, 0u);
 
-    const CasterCullingResult unbiased = cullShadowCasters(cascades[1], casters, cascades[0].cullingSphere, 0.0f);
+    const CasterCullingResult unbiased =
+        cullShadowCasters(cascades[1], lightSpaceCasters(cascades[1].basis, casters), cascades[0].cullingSphere, 0.0f);
     EXPECT_EQ(unbiased.casters, (std::vector<std::uint32_t>{0, 2, 4}));
     EXPECT_EQ(unbiased.overlapping, 3u);
     EXPECT_EQ(unbiased.culledByBias, 0u);
@@ -55,12 +57,14 @@ TEST_F(CasterCullingTest, CullingBiasSkipsCastersWhollyInsideThePreviousSphere)
     const float factor = cascadeBlendCullingFactor(0.1f);
     EXPECT_FLOAT_EQ(factor, 0.7f);
     EXPECT_EQ(cascadeBlendCullingFactor(0.9f), 0.0f);
-    const CasterCullingResult biased = cullShadowCasters(cascades[1], casters, cascades[0].cullingSphere, factor);
+    const CasterCullingResult biased = cullShadowCasters(cascades[1], lightSpaceCasters(cascades[1].basis, casters),
+                                                         cascades[0].cullingSphere, factor);
     EXPECT_EQ(biased.casters, (std::vector<std::uint32_t>{2, 4}));
     EXPECT_EQ(biased.overlapping, 3u);
     EXPECT_EQ(biased.culledByBias, 1u);
     // Draws with and without the culling bias, over both cascades.
-    const CasterCullingResult first = cullShadowCasters(cascades[0], casters, std::nullopt, factor);
+    const CasterCullingResult first =
+        cullShadowCasters(cascades[0], lightSpaceCasters(cascades[0].basis, casters), std::nullopt, factor);
     EXPECT_EQ(first.casters.size() + biased.casters.size(), 4u);
     EXPECT_EQ(first.overlapping + biased.overlapping, 5u);
 }

@@ -198,9 +198,12 @@ TEST(CloseFit, CullingBiasSkipsCastersWhollyInsideThePreviousSlice)
     EXPECT_TRUE(insideFrustumSlice(casters[0], first, factor));
     EXPECT_FALSE(insideFrustumSlice(casters[1], first, factor));
     EXPECT_FALSE(insideFrustumSlice(casters[2], first, factor));
-    const CasterCullingResult withBias = cullCloseFitShadowCasters(p.lights[0].cascades[1].fit, casters, first, factor);
+    const CasterCullingResult withBias =
+        cullCloseFitShadowCasters(p.lights[0].cascades[1].fit,
+                                  lightSpaceCasters(p.lights[0].cascades[1].fit.basis, casters), first, factor);
     const CasterCullingResult without =
-        cullCloseFitShadowCasters(p.lights[0].cascades[1].fit, casters, std::nullopt, factor);
+        cullCloseFitShadowCasters(p.lights[0].cascades[1].fit,
+                                  lightSpaceCasters(p.lights[0].cascades[1].fit.basis, casters), std::nullopt, factor);
     EXPECT_EQ(withBias.culledByBias, without.culledByBias + (without.overlapping > 0 ? 1u : 0u));
     for (const std::uint32_t i : withBias.casters)
         EXPECT_NE(i, 0u) << "the caster inside the first slice is skipped";

@@ -98,7 +98,9 @@ protected:
         // Ground, cubes, cards, panes: one draw each; the panes are one run, nearest last.
         EXPECT_EQ(instanced.stats.litDraws, 4u) << name;
         EXPECT_EQ(instanced.stats.depthPrepassDraws, 3u) << name; // blended panes are not in the prepass
-        EXPECT_EQ(perObject.stats.litDraws, 1 + kCubes + kCards + kPanes) << name;
+        // A draw per object in view (the grid reaches out of it: ViewCullingTest), against the four groups' draws.
+        EXPECT_GT(perObject.stats.litDraws, 50 * instanced.stats.litDraws) << name;
+        EXPECT_LT(perObject.stats.litDraws, 1 + kCubes + kCards + kPanes) << name;
         // Every shadow view draws each of the four meshes at most once.
         const std::uint32_t cascades = 4, localViews = 1 + 6;
         EXPECT_LE(instanced.stats.casterDraws, 4 * cascades) << name;

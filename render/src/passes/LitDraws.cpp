@@ -37,14 +37,16 @@ LitObjectUniforms objectUniforms(const scene::Scene& scene, const scene::Object&
 
 } // namespace
 
-std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera, bool instanced,
-                              rhi::UniformArena& uniforms, rhi::VertexArena& instances)
+std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera, const scene::ViewFrustum& frustum,
+                              bool instanced, rhi::UniformArena& uniforms, rhi::VertexArena& instances)
 {
     const scene::Scene& scene = gpuScene.scene();
     std::vector<std::uint32_t> opaque, blended;
-    for (std::uint32_t i = 0; i < scene.objects.size(); ++i)
-        if (scene.objects[i].castShadows != scene::ShadowCasting::ShadowsOnly)
-            (scene.materialOf(scene.objects[i]).blend ? blended : opaque).push_back(i);
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+        const scene::Object& object = scene.objects[i];
+        if (object.castShadows != scene::ShadowCasting::ShadowsOnly && frustum.mayShow(object.worldBounds))
+            (scene.materialOf(object).blend ? blended : opaque).push_back(i);
+    }
     const auto distance2 = [&](std::uint32_t i) {
         const glm::vec3 d = scene.objects[i].worldBounds.center() - camera;
         return glm::dot(d, d);

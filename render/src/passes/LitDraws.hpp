@@ -2,6 +2,7 @@
 
 #include "penumbra/render/GpuScene.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/scene/ViewFrustum.hpp"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -21,8 +22,9 @@ struct LitDraw {
 // objects of each lit draw group (GpuScene::litDrawGroup) as one draw in the order of its first object (order does
 // not change depth-tested opaque surfaces); then blended ones from the farthest to the nearest (their world bounds'
 // centres from the camera), so each blends over what lies behind it (glTF 2.0 section 3.9.4, BLEND), consecutive
-// ones of one group as one draw. Shadows-only objects are not drawn. Without `instanced`, a draw per object.
-std::vector<LitDraw> litDraws(const GpuScene& scene, const glm::vec3& camera, bool instanced,
-                              rhi::UniformArena& uniforms, rhi::VertexArena& instances);
+// ones of one group as one draw. Shadows-only objects are not drawn, nor objects whose world bounds lie outside the
+// view (`frustum`), which could draw no fragment. Without `instanced`, a draw per object.
+std::vector<LitDraw> litDraws(const GpuScene& scene, const glm::vec3& camera, const scene::ViewFrustum& frustum,
+                              bool instanced, rhi::UniformArena& uniforms, rhi::VertexArena& instances);
 
 } // namespace penumbra::render

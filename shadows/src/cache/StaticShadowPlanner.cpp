@@ -72,9 +72,9 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         const std::uint32_t index = selected[tile];
         const DirectionalShadowLightInput& light = lights[index];
         const ShadowFilter filter = light.filter.value_or(settings.directional.filter);
-        const DirectionalShadowCascade fit =
-            fitDirectionalCascade(sphere, lightBasis(light.direction), plan.directionalAtlas.tileSize(),
-                                  light.nearPlaneOffset, staticBounds, conventions);
+        const LightSpaceCasters lightSpace = lightSpaceCasters(lightBasis(light.direction), staticBounds);
+        const DirectionalShadowCascade fit = fitDirectionalCascade(sphere, lightSpace, plan.directionalAtlas.tileSize(),
+                                                                   light.nearPlaneOffset, conventions);
         // The realtime cascades' normal offset: the filter-sized texel diagonal times the light's normal bias.
         const float reach = light.normalBias * fit.texelSize * normalBiasFilterFactor(filter) * kSqrt2;
         const bool casterSide = light.normalBiasSide == NormalBiasSide::Caster;
@@ -87,7 +87,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         plan.uniforms.directionalWorldToMap[tile] =
             worldToAtlas(fit.viewProjection, tile, plan.directionalAtlas, conventions);
         plan.uniforms.directionalBounds[tile] = plan.directionalAtlas.tileTexelBounds(tile);
-        const float top = casterTopDepth(fit.basis, staticBounds, fit.nearDepth);
+        const float top = casterTopDepth(lightSpace, fit.nearDepth);
         plan.uniforms.directionalSoft[tile] =
             glm::vec4(lightTexelAnchor(fit, plan.uniforms.directionalWorldToMap[tile]),
                       directionalDepthRow(fit, top, conventions));

@@ -17,13 +17,13 @@ glm::vec2 lightTexelAnchor(const DirectionalShadowCascade& fit, const glm::mat4&
             std::round(signY * fit.snappedCentre.y / fit.texelSize)};
 }
 
-float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBounds, float fallback)
+float casterTopDepth(const LightSpaceCasters& casters, float fallback)
 {
-    if (casterBounds.empty())
+    if (casters.light.empty())
         return fallback;
     float top = std::numeric_limits<float>::max();
-    for (const Bounds& caster : casterBounds)
-        top = std::min(top, lightSpaceBounds(basis, caster).min.z);
+    for (const Bounds& caster : casters.light)
+        top = std::min(top, caster.min.z);
     return top;
 }
 

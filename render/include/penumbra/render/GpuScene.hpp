@@ -52,8 +52,9 @@ public:
     void setMaxAnisotropy(float anisotropy);
 
     // Objects whose material casts shadows, with their world bounds; object transforms are read
-    // from the scene on every call, so moved objects (with updated worldBounds) are seen.
-    std::vector<shadows::ShadowCaster> casters() const;
+    // from the scene on every call, so moved objects (with updated worldBounds) are seen. `casters` is cleared and
+    // filled, so that a caller keeps its storage from frame to frame.
+    void casters(std::vector<shadows::ShadowCaster>& casters) const;
     std::vector<shadows::Bounds> casterBounds() const;
     // Indices into casters() of the casters whose objects are static (scene::Mobility), ascending.
     std::vector<std::uint32_t> staticCasters() const;
@@ -78,6 +79,9 @@ public:
     static shadows::UvTransformRows uvTransform(const std::optional<scene::MaterialTexture>& texture);
 
 private:
+    // A caster of the material, without mesh, transform and draw group.
+    shadows::ShadowCaster materialCaster(const scene::Material& material) const;
+
     struct Mesh {
         std::unique_ptr<rhi::Buffer> vertices;
         std::unique_ptr<rhi::Buffer> indices;

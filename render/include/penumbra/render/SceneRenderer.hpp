@@ -202,6 +202,8 @@ private:
     bool staticUpdateRequested_ = false;
     // This frame's draws (passes/LitDraws.hpp), shared by the prepass and every lit view.
     std::vector<LitDraw> litDraws_;
+    // This frame's shadow casters (GpuScene::casters), kept so that their storage is reused.
+    std::vector<shadows::ShadowCaster> casters_;
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<rhi::TimestampQueries> timestamps_;
     rhi::UniformArena uniforms_;

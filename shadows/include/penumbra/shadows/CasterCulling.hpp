@@ -21,11 +21,11 @@ struct CasterCullingResult {
 // band and a margin so that casters in a blend region are never culled.
 float cascadeBlendCullingFactor(float cascadeFade);
 
-// Casters whose light-space box meets the cascade's: the tile's square in x, y and depth up to the
-// far plane (no near limit: casters in front of the near plane still cast, pancaked). With a
-// previous cascade, a caster wholly inside that cascade's culling sphere scaled by cullingFactor is
-// skipped (culling bias): the previous, sharper cascade already holds its shadow.
-CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, std::span<const Bounds> casterBounds,
+// Casters whose light-space box (in the cascade's basis, which must be the casters') meets the cascade's: the
+// tile's square in x, y and depth up to the far plane (no near limit: casters in front of the near plane still
+// cast, pancaked). With a previous cascade, a caster whose world box lies wholly inside that cascade's culling
+// sphere scaled by cullingFactor is skipped (culling bias): the previous, sharper cascade already holds its shadow.
+CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                       const std::optional<Sphere>& previousCullingSphere, float cullingFactor);
 
 // A close-fit cascade's region: the camera frustum between two view depths.
@@ -41,8 +41,7 @@ bool insideFrustumSlice(const Bounds& box, const FrustumSlice& slice, float dept
 
 // The close fit's rule, the same with the previous cascade's frustum slice for its sphere: a caster wholly inside
 // that slice, its depth range scaled by cullingFactor from its near end, is skipped.
-CasterCullingResult cullCloseFitShadowCasters(const DirectionalShadowCascade& cascade,
-                                              std::span<const Bounds> casterBounds,
+CasterCullingResult cullCloseFitShadowCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                               const std::optional<FrustumSlice>& previousSlice, float cullingFactor);
 
 } // namespace penumbra::shadows

@@ -43,8 +43,9 @@ struct DirectionalShadowCascade {
 // - near plane pulled back over every caster box whose light-space footprint overlaps the square,
 //   then by nearPlaneOffset; far plane at the sphere's far side;
 // - projection from conventions.orthographic, so every depth range and reversed-Z works.
-DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightBasis& basis, std::uint32_t tileSize,
-                                               float nearPlaneOffset, std::span<const Bounds> casterBounds,
+// The light's basis is the casters' (casters.basis).
+DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightSpaceCasters& casters,
+                                               std::uint32_t tileSize, float nearPlaneOffset,
                                                const rhi::Conventions& conventions);
 
 // The half size of a close-fit tile around `sliceBounds` (lightSpaceBounds of a frustum slice's corners: x, y the
@@ -61,8 +62,8 @@ float closeFitHalfSize(const Bounds& sliceBounds, std::uint32_t tileSize, float 
 // whole texels; turning the camera resizes the tile, and texels swim); near and far planes as the stable fit's,
 // around the slice's depth range. `sphere` is kept as the cascade's cullingSphere.
 DirectionalShadowCascade fitCloseCascade(const Bounds& sliceBounds, float halfSize, const Sphere& sphere,
-                                         const LightBasis& basis, std::uint32_t tileSize, float nearPlaneOffset,
-                                         std::span<const Bounds> casterBounds, const rhi::Conventions& conventions);
+                                         const LightSpaceCasters& casters, std::uint32_t tileSize,
+                                         float nearPlaneOffset, const rhi::Conventions& conventions);
 
 // The engine function written out: cascades [firstCascade, firstCascade + count) of one light.
 std::vector<DirectionalShadowCascade> computeDirectionalShadowMatricesAndCullingPrimitives(

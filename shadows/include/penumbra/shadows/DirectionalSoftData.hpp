@@ -20,7 +20,7 @@ glm::vec2 lightTexelAnchor(const DirectionalShadowCascade& fit, const glm::mat4&
 
 // The light-space depth nearest the light of any caster: no blocker lies nearer. Unlike the near plane, which follows
 // the cascade's sphere, it does not move with the camera, so neither does the blocker search sized from it.
-float casterTopDepth(const LightBasis& basis, std::span<const Bounds> casterBounds, float fallback);
+float casterTopDepth(const LightSpaceCasters& casters, float fallback);
 
 // The projection's texture-space depth row (t22, t32'): depth = t22 * viewZ + t32, with t32' = t32 + t22 (near -
 // casterTop), so that orthographicDistanceFromNear(depth, row) is the distance past the casters' top (the blocker

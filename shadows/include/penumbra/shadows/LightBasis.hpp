@@ -3,6 +3,8 @@
 #include "penumbra/shadows/Bounds.hpp"
 
 #include <array>
+#include <span>
+#include <vector>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -27,5 +29,16 @@ LightBasis lightBasis(glm::vec3 direction);
 Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world);
 // Around 8 world points (a frustum slice's corners: the close fit's bounds).
 Bounds lightSpaceBounds(const LightBasis& basis, const std::array<glm::vec3, 8>& corners);
+
+// Casters' world boxes and their light-space boxes (lightSpaceBounds) in one light's basis: transformed once per
+// light, then read by every cascade's fit, culling and soft-shadow data, which matters at 10^5 casters.
+struct LightSpaceCasters {
+    LightBasis basis;
+    std::span<const Bounds> world; // caster i's world box
+    std::vector<Bounds> light; // caster i's light-space box
+};
+
+// `world` must outlive the result, which refers to it.
+LightSpaceCasters lightSpaceCasters(const LightBasis& basis, std::span<const Bounds> world);
 
 } // namespace penumbra::shadows
