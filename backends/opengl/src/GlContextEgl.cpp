@@ -107,6 +107,10 @@ public:
             if (!eglChooseConfig(dpy, configAttributes, &config, 1, &found) || found == 0)
                 throw rhi::Error("EGL: the surfaceless display has no desktop OpenGL config");
         }
+        // Lose the context on a GPU reset, so that glGetGraphicsResetStatus reports it (GlDevice::apiSubmit), where
+        // the display offers robust contexts (EGL_EXT_create_context_robustness; for desktop OpenGL the attribute is
+        // EGL 1.5's, EGL specification section 3.7.1.5); the last two entries end the list otherwise.
+        const bool resets = hasWord(extensions, "EGL_EXT_create_context_robustness");
         const EGLint contextAttributes[] = {
             EGL_CONTEXT_MAJOR_VERSION,
             4,
@@ -116,6 +120,8 @@ public:
             EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
             EGL_CONTEXT_OPENGL_DEBUG,
             debug ? EGL_TRUE : EGL_FALSE,
+            resets ? EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY : EGL_NONE,
+            EGL_LOSE_CONTEXT_ON_RESET,
             EGL_NONE,
         };
         context_ = eglCreateContext(dpy, config, EGL_NO_CONTEXT, contextAttributes);

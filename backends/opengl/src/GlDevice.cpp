@@ -15,6 +15,21 @@
 namespace penumbra::opengl {
 namespace {
 
+// glGetGraphicsResetStatus's answers (OpenGL 4.5 core specification, section 2.3.2, "Graphics Reset Recovery").
+const char* resetStatusName(GLenum status)
+{
+    switch (status) {
+    case GL_GUILTY_CONTEXT_RESET:
+        return "GL_GUILTY_CONTEXT_RESET";
+    case GL_INNOCENT_CONTEXT_RESET:
+        return "GL_INNOCENT_CONTEXT_RESET";
+    case GL_UNKNOWN_CONTEXT_RESET:
+        return "GL_UNKNOWN_CONTEXT_RESET";
+    default:
+        return "an unknown reset status";
+    }
+}
+
 GLint integer(const GlFunctions& gl, GLenum name)
 {
     GLint value = 0;
@@ -76,6 +91,7 @@ rhi::Capabilities GlDevice::queryCapabilities() const
     if (context_->version() >= 46 || context_->hasExtension("GL_ARB_texture_filter_anisotropic") ||
         context_->hasExtension("GL_EXT_texture_filter_anisotropic"))
         gl.GetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &caps.maxSamplerAnisotropy);
+    caps.deviceLossReported = integer(gl, GL_RESET_NOTIFICATION_STRATEGY) == GL_LOSE_CONTEXT_ON_RESET;
     for (rhi::Format f : rhi::allFormats)
         caps.formats[std::size_t(f)] = formatSupport(f);
     // GL has no query of a device's memory; Mesa's software renderers keep every texture in system memory.
@@ -214,11 +230,20 @@ void GlDevice::applySubmitDefaults()
 void GlDevice::apiSubmit(rhi::CommandList& commands)
 {
     auto& list = glObject<GlCommandList>(commands, "submitted command list");
+    if (lost_)
+        throw rhi::DeviceLostError(*lost_);
     context_->makeCurrent();
     applySubmitDefaults();
     list.replay({context_->gl(), *cache_, orientation_, conventions_.clearDepth(), ++submitCount_, resolveRead_.get(),
                  resolveDraw_.get()});
     context_->gl().Finish();
+    // A lost context answers every call with nothing, so the loss is asked for after each submission. It is reported
+    // only by a context made with the lose-context-on-reset strategy (Capabilities::deviceLossReported).
+    if (const GLenum status = context_->gl().GetGraphicsResetStatus(); status != GL_NO_ERROR) {
+        lost_ = fmt::format("OpenGL context lost during submission {}: {}: the device is lost; make a new one",
+                            submitCount_, resetStatusName(status));
+        throw rhi::DeviceLostError(*lost_);
+    }
     if (desc_.throwOnDebugMessage)
         context_->debugLog().raiseUnreported("OpenGL debug output");
 }

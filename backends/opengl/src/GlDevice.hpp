@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace penumbra::opengl {
 
@@ -57,6 +58,7 @@ private:
     // resolveTexture's read and draw framebuffers, the source and destination attached for each blit.
     GlFramebufferName resolveRead_, resolveDraw_;
     std::uint64_t submitCount_ = 0;
+    std::optional<std::string> lost_; // the message of the reset that lost the context
 };
 
 } // namespace penumbra::opengl

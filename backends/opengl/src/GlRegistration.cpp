@@ -17,6 +17,9 @@ void prepareOpenGLWindowHints(const rhi::DeviceDesc& desc)
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, desc.validation ? GLFW_TRUE : GLFW_FALSE);
+    // Where the platform offers it (GLX/EGL robustness extensions; GLFW ignores the hint otherwise), a GPU reset
+    // loses the context and glGetGraphicsResetStatus reports it (Capabilities::deviceLossReported).
+    glfwWindowHint(GLFW_CONTEXT_ROBUSTNESS, GLFW_LOSE_CONTEXT_ON_RESET);
     // The RHI renders into its own framebuffers; the window only receives finished pictures.
     glfwWindowHint(GLFW_DEPTH_BITS, 0);
     glfwWindowHint(GLFW_STENCIL_BITS, 0);

@@ -50,6 +50,9 @@ std::string resultName(VkResult result)
 
 void check(VkResult result, std::string_view call)
 {
+    if (result == VK_ERROR_DEVICE_LOST)
+        throw rhi::DeviceLostError(
+            fmt::format("{} failed: {}: the device is lost; make a new one", call, resultName(result)));
     if (result != VK_SUCCESS)
         throw rhi::Error(fmt::format("{} failed: {}", call, resultName(result)));
 }

@@ -65,6 +65,7 @@ void Context::fillCapabilities()
     capabilities.cubeArrays = features.imageCubeArray;
     capabilities.maxCubeSize = limits.maxImageDimensionCube;
     capabilities.maxSamplerAnisotropy = features.samplerAnisotropy ? limits.maxSamplerAnisotropy : 1.0f;
+    capabilities.deviceLossReported = true;
     VkPhysicalDeviceMemoryProperties memory;
     vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memory);
     for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)
@@ -214,9 +215,21 @@ void Context::submitAndWait(std::span<const VkCommandBuffer> commandBuffers, VkF
     submit.commandBufferCount = std::uint32_t(commandBuffers.size());
     submit.pCommandBuffers = commandBuffers.data();
     std::lock_guard lock(queueMutex_);
-    check(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
-    check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    throwIfLost();
+    try {
+        check(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
+        check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    } catch (const rhi::DeviceLostError& e) {
+        lost_ = e.what();
+        throw;
+    }
     check(vkResetFences(device, 1, &fence), "vkResetFences");
+}
+
+void Context::throwIfLost() const
+{
+    if (lost_)
+        throw rhi::DeviceLostError(*lost_);
 }
 
 void Context::runOnce(const std::function<void(VkCommandBuffer)>& record)

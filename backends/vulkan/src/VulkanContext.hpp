@@ -8,7 +8,9 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
+#include <string>
 #include <vulkan/vulkan.h>
 
 namespace penumbra::vulkan {
@@ -51,8 +53,11 @@ public:
             nameObject(type, reinterpret_cast<std::uint64_t>(handle), name);
     }
 
-    // Submits command buffers in order, signals `fence` and waits for it.
+    // Submits command buffers in order, signals `fence` and waits for it. Once the device is lost (a DeviceLostError
+    // from here), every later submission raises that error again before the API is called.
     void submitAndWait(std::span<const VkCommandBuffer> commandBuffers, VkFence fence);
+    // Raises the loss that submitAndWait met, if any: what a command list checks before it ends its recording.
+    void throwIfLost() const;
     // Records with `record` into a one-shot command buffer, submits and waits (uploads, layout setup).
     void runOnce(const std::function<void(VkCommandBuffer)>& record);
 
@@ -66,6 +71,7 @@ private:
 
     PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
     std::mutex queueMutex_;
+    std::optional<std::string> lost_; // the loss submitAndWait met
     std::mutex oneShotMutex_;
     // What the validation layer says while the device is destroyed (its object tracker names every
     // object still alive then) reaches no rhi::Device any more: this writes it to standard error.

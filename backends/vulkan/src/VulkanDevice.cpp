@@ -70,7 +70,9 @@ std::unique_ptr<rhi::Swapchain> VulkanDevice::createSwapchain() { return std::ma
 
 void VulkanDevice::apiSubmit(rhi::CommandList& commands)
 {
-    vulkanObject<VulkanCommandList>(commands, "submit: the command list").submit();
+    auto& list = vulkanObject<VulkanCommandList>(commands, "submit: the command list");
+    context_->throwIfLost(); // before the list ends its recording, so that it stays as it was
+    list.submit();
     if (context_->desc.throwOnDebugMessage)
         context_->log.raiseUnreported("Vulkan validation");
 }

@@ -55,6 +55,10 @@ struct Capabilities {
     // renderers, which keep textures in system memory, the machine's physical memory); 0 where the API does not
     // say. A buffer or texture larger than this is refused before the API is asked (Device::createTexture).
     std::uint64_t deviceMemoryBytes = 0;
+    // Whether a lost device is reported (rhi::DeviceLostError from submit): always on Vulkan (VK_ERROR_DEVICE_LOST);
+    // on OpenGL where the context was made with the lose-context-on-reset strategy (EGL_EXT_create_context_robustness,
+    // GLFW's GLFW_LOSE_CONTEXT_ON_RESET), without which a reset leaves the context's behaviour undefined.
+    bool deviceLossReported = false;
     // Indexed by Format. Linear filtering of depth formats is hardware 2x2 PCF with a comparison sampler;
     // lavapipe offers it for none (conventions note, section 4).
     std::array<FormatSupport, formatCount> formats{};

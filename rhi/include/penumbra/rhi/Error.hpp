@@ -18,6 +18,13 @@ public:
     using Error::Error;
 };
 
+// The device was lost (a GPU hang or reset, a driver failure) while it worked: what() names the API's code. Every
+// object of the device is then unusable but for its destruction; make a new device to go on.
+class DeviceLostError : public Error {
+public:
+    using Error::Error;
+};
+
 // The driver does not offer what was asked (a missing extension, a format feature).
 class UnsupportedError : public Error {
 public:

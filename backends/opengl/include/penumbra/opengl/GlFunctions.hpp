@@ -68,6 +68,7 @@ namespace penumbra::opengl {
     X(Finish, FINISH)                                                                                                  \
     X(FrontFace, FRONTFACE)                                                                                            \
     X(GetError, GETERROR)                                                                                              \
+    X(GetGraphicsResetStatus, GETGRAPHICSRESETSTATUS)                                                                  \
     X(GetFloatv, GETFLOATV)                                                                                            \
     X(GetIntegerv, GETINTEGERV)                                                                                        \
     X(GetInternalformativ, GETINTERNALFORMATIV)                                                                        \
