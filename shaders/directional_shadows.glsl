@@ -18,6 +18,7 @@ layout(std140, binding = PENUMBRA_BINDING_DIRECTIONAL_SHADOWS) uniform Direction
     vec4 lightSoft[PENUMBRA_MAX_SHADOWED_DIRECTIONAL_LIGHTS];
     vec4 softScales;
     vec4 softCounts;
+    vec4 tileBounds[PENUMBRA_MAX_DIRECTIONAL_TILES];
 } shadows;
 
 // Read with texelFetch (shadow_filter.glsl).
@@ -96,10 +97,8 @@ float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize
 // The directional atlas's tile `tile` filtered at atlas position (u, v, depth) by light `slot`'s filter.
 float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slot)
 {
-    const int split = int(shadows.atlasSize.x * shadows.atlasSize.w + 0.5);
-    const int tileSize = int(shadows.atlasSize.z);
-    const ivec2 tileMin = ivec2(tile % split, tile / split) * tileSize;
-    return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, tileMin, tileMin + tileSize - 1,
+    const vec4 bounds = shadows.tileBounds[tile];
+    return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, ivec2(bounds.xy), ivec2(bounds.zw),
                                  int(shadows.lightShadowData[slot].w), mat3(shadows.worldToAtlas[tile]),
                                  shadows.tileSoft[tile], shadows.lightSoft[slot].x, shadows.cascadeData[cascade].z);
 }

@@ -74,8 +74,10 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
         const float receiverBias = light.normalBiasSide == NormalBiasSide::Receiver ? light.normalBias : 0.0f;
         u.lightShadowData[slot] = {light.strength, receiverBias, static_cast<float>(light.firstTile),
                                    static_cast<float>(light.filter)};
-        for (const DirectionalCascadePlan& cascade : light.cascades)
+        for (const DirectionalCascadePlan& cascade : light.cascades) {
             u.worldToAtlas[cascade.tile] = cascade.worldToAtlas;
+            u.tileBounds[cascade.tile] = plan.atlas.tileTexelBounds(cascade.tile);
+        }
     }
 }
 

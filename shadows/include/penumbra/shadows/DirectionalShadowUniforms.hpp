@@ -37,6 +37,9 @@ inline constexpr std::uint32_t maxCascades = 4;
 //                                   // light's filter over the atlas's, 0, 0
 //       vec4 softScales;            // SoftShadowUniforms
 //       vec4 softCounts;
+//       vec4 tileBounds[16];        // per tile: its first and last texel's x, y in the atlas (ShadowAtlasLayout::
+//                                   // tileTexelBounds), which the filters clamp their taps to: given, not worked
+//                                   // out per pixel with an integer division (llvmpipe has no vector one)
 //   };
 struct DirectionalShadowUniforms {
     std::array<glm::mat4, maxShadowedDirectionalLights * maxCascades> worldToAtlas{};
@@ -54,6 +57,7 @@ struct DirectionalShadowUniforms {
     std::array<glm::vec4, maxShadowedDirectionalLights * maxCascades> tileSoft{};
     std::array<glm::vec4, maxShadowedDirectionalLights> lightSoft{};
     SoftShadowUniforms soft;
+    std::array<glm::vec4, maxShadowedDirectionalLights * maxCascades> tileBounds{};
 };
 
 static_assert(sizeof(glm::mat4) == 64 && sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16);
@@ -66,7 +70,8 @@ static_assert(offsetof(DirectionalShadowUniforms, cascadeCount) == 1184);
 static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1216);
 static_assert(offsetof(DirectionalShadowUniforms, tileSoft) == 1280);
 static_assert(offsetof(DirectionalShadowUniforms, soft) == 1600);
-static_assert(sizeof(DirectionalShadowUniforms) == 1632);
+static_assert(offsetof(DirectionalShadowUniforms, tileBounds) == 1632);
+static_assert(sizeof(DirectionalShadowUniforms) == 1888);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout directionalShadowLayout()
@@ -90,6 +95,7 @@ inline rhi::UniformLayout directionalShadowLayout()
                               }};
     for (rhi::UniformMember& member : softShadowMembers(std::uint32_t(offsetof(DirectionalShadowUniforms, soft))))
         layout.members.push_back(std::move(member));
+    layout.members.push_back(PENUMBRA_UNIFORM_MEMBER(DirectionalShadowUniforms, tileBounds));
     return layout;
 }
 
