@@ -39,8 +39,8 @@ class Builder {
 
     accessor(values, type, componentType, extra = {}) {
         const size = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4 }[type];
-        const Array = { [FLOAT]: Float32Array, [UNSIGNED_BYTE]: Uint8Array, [UNSIGNED_SHORT]: Uint16Array }[componentType];
-        return this.add("accessors", { bufferView: this.view(Array.from(values)), count: values.length / size, type,
+        const Typed = { [FLOAT]: Float32Array, [UNSIGNED_BYTE]: Uint8Array, [UNSIGNED_SHORT]: Uint16Array }[componentType];
+        return this.add("accessors", { bufferView: this.view(Typed.from(values)), count: values.length / size, type,
                                        componentType, ...extra });
     }
 
