@@ -6,7 +6,8 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize tsan fuzz docs format tidy clean
+.PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize tsan fuzz docs format tidy \
+	sample-viewer-compare clean
 
 all: build
 
@@ -78,6 +79,15 @@ tsan: deps
 FUZZ_SECONDS ?= 180
 fuzz: deps
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) JOBS=$(JOBS) ./scripts/fuzz.sh $(FUZZ_TARGETS)
+
+# The lit pictures of the glTF material scenes (tests/support's materials scene and scripts/sample-viewer/scenes.mjs's
+# feature scenes) against the Khronos glTF Sample Viewer's, both backends, punctual light only:
+# out/sample-viewer/results.{json,md} and <scene>/side-by-side.png. Installs chromium and the viewer's npm packages
+# on demand (scripts/sample-viewer/compare.sh), not in `make deps`.
+sample-viewer-compare: build
+	@$(BUILD)/tests/penumbra_write_example_gltf materials out/sample-viewer/input/materials.glb
+	@./scripts/sample-viewer/compare.sh --penumbra $(PENUMBRA) --out out/sample-viewer --scenes \
+		out/sample-viewer/input/materials.glb
 
 # The API reference of the public headers with Doxygen, warnings as errors: $(BUILD)/docs/html/index.html.
 docs: deps

@@ -1,0 +1,75 @@
+// Renders the glTF file named in the page's query (model=URL, width, height, camera=glTF camera index,
+// clear=r,g,b in 0-1) once with the Sample Viewer's engine and leaves the pixels in window.result:
+// { width, height, rgba (base64, rows bottom-up as gl.readPixels returns them) } or { error }.
+// Set-up, read from the engine's source (dist/gltf-viewer.module.js, GltfState.renderingParameters):
+// - useIBL false: no image-based light (the USE_IBL define is not set, u_EnvIntensity is 0), an empty stand-in
+//   environment (noEnvironment below), renderEnvironmentMap false;
+// - usePunctual true, useDirectionalLightsWithDisabledIBL false: the file's KHR_lights_punctual lights only,
+//   no generated key and fill lights;
+// - toneMap NONE, exposure 1: the shader's toneMap() is then linearTosRGB(colour) = pow(colour, 1 / 2.2),
+//   clamped by the 8-bit canvas; there is no exact sRGB curve or linear option for the canvas pass;
+// - antialias false: one sample per pixel like penumbra render's default --msaa 1.
+import { GltfState, GltfView } from "./node_modules/@khronosgroup/gltf-viewer/dist/gltf-viewer.module.js";
+
+const params = new URLSearchParams(location.search);
+const width = Number(params.get("width"));
+const height = Number(params.get("height"));
+const camera = Number(params.get("camera") ?? "0");
+const clear = (params.get("clear") ?? "0,0,0").split(",").map(Number);
+
+// The engine binds an environment's textures for every draw, IBL on or off (gltfRenderer.applyEnvironmentMap reads
+// state.environment unguarded). Loading a real one runs its GGX/Lambertian/Charlie filtering on the CPU
+// (SwiftShader) for minutes, so this stands in: no textures, so WebGl.setTexture finds none and binds nothing;
+// with USE_IBL undefined the shader samples none of them anyway.
+const noEnvironment = {
+    textures: [], images: [], samplers: [], mipCount: 1, iblIntensityScale: 0,
+    diffuseEnvMap: { index: 0 }, specularEnvMap: { index: 0 }, sheenEnvMap: { index: 0 },
+    lut: { index: 0 }, sheenLUT: { index: 0 }, sheenELUT: { index: 0 },
+};
+
+async function render() {
+    const canvas = document.getElementById("canvas");
+    canvas.width = width;
+    canvas.height = height;
+    const gl = canvas.getContext("webgl2", { antialias: false, alpha: false, preserveDrawingBuffer: true });
+    if (!gl)
+        throw new Error("no WebGL2 context");
+    const view = new GltfView(gl);
+    const state = view.createState();
+    const loader = view.createResourceLoader(undefined, undefined, "./node_modules/@khronosgroup/gltf-viewer/dist/libs/");
+    // By URL, so that a .gltf file's external buffers and images resolve beside it.
+    state.gltf = await loader.loadGltf(params.get("model"));
+    state.environment = noEnvironment;
+    state.sceneIndex = state.gltf.scene ?? 0;
+    state.cameraIndex = state.gltf.cameras.length > 0 ? camera : undefined;
+    Object.assign(state.renderingParameters, {
+        useIBL: false,
+        usePunctual: true,
+        useDirectionalLightsWithDisabledIBL: false,
+        renderEnvironmentMap: false,
+        toneMap: GltfState.ToneMaps.NONE,
+        exposure: 1.0,
+        // Passed to gl.clearColor as it is (GltfRenderer.clearFrame), so in 0-1 despite the doc comment.
+        clearColor: [...clear, 1],
+    });
+    // Textures finish uploading after loadGltf resolves: the frame is drawn until two in a row agree.
+    const pixels = new Uint8Array(width * height * 4);
+    const previous = new Uint8Array(width * height * 4);
+    for (let frame = 0; frame < 20; ++frame) {
+        view.renderFrame(state, width, height);
+        gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+        if (frame > 0 && pixels.every((value, i) => value === previous[i]))
+            break;
+        previous.set(pixels);
+        await new Promise((resolve) => setTimeout(resolve, 100));
+    }
+    let binary = "";
+    for (let i = 0; i < pixels.length; i += 0x8000)
+        binary += String.fromCharCode(...pixels.subarray(i, i + 0x8000));
+    const info = gl.getExtension("WEBGL_debug_renderer_info");
+    return { width, height, rgba: btoa(binary),
+             renderer: info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER) };
+}
+
+render().then((result) => { window.result = result; },
+              (error) => { window.result = { error: String(error && error.stack || error) }; });
