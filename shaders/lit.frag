@@ -27,7 +27,9 @@ layout(location = 0) out vec4 outColor;
 const float PI = 3.14159265;
 
 // Karis 2013, "Real Shading in Unreal Engine 4": GGX distribution, height-correlated Smith
-// visibility (Heitz 2014) and Schlick's Fresnel.
+// visibility (Heitz 2014) and Schlick's Fresnel. The dielectric's diffuse takes the light its specular layer does not
+// reflect (glTF 2.0 specification, Appendix B.3.5: the dielectric is mix(diffuse, specular, F) with f0 = 0.04); Schlick
+// is linear in f0, so one Fresnel of the mixed f0 gives both layers' specular.
 vec3 brdf(vec3 n, vec3 v, vec3 l, vec3 base, float metallic, float roughness)
 {
     const vec3 h = normalize(v + l);
@@ -39,9 +41,10 @@ vec3 brdf(vec3 n, vec3 v, vec3 l, vec3 base, float metallic, float roughness)
     const float d = nh * nh * (a2 - 1.0) + 1.0;
     const float distribution = a2 / (PI * d * d);
     const float visibility = 0.5 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - a2) + a2));
+    const float schlick = pow(1.0 - max(dot(v, h), 0.0), 5.0);
     const vec3 f0 = mix(vec3(0.04), base, metallic);
-    const vec3 fresnel = f0 + (1.0 - f0) * pow(1.0 - max(dot(v, h), 0.0), 5.0);
-    const vec3 diffuse = (1.0 - metallic) * base / PI;
+    const vec3 fresnel = f0 + (1.0 - f0) * schlick;
+    const vec3 diffuse = (1.0 - metallic) * (1.0 - (0.04 + 0.96 * schlick)) * base / PI;
     return diffuse + distribution * visibility * fresnel;
 }
 
