@@ -134,21 +134,22 @@ bool inUmbra(vec2 blockers, int count, float radius, float refined)
     return blockers.y == float(count) && radius <= refined;
 }
 
-float comparePlane(sampler2D atlas, SoftTile t, ivec2 texel)
-{
-    const ivec2 clamped = clamp(texel, t.tileMin, t.tileMax);
-    return penumbraIsNearer(texelFetch(atlas, clamped, 0).r, planeDepth(t, clamped)) ? 0.0 : 1.0;
-}
-
-// A bilinear comparison tap at texel-space `position` against the receiver plane (bilinearCompare's weights).
+// A bilinear comparison tap at texel-space `position` against the receiver plane, over texels tileMin..tileMax only
+// (bilinearCompare's corner clamp and textureGather order): each of the four texels against the plane at its centre.
 float bilinearComparePlane(sampler2D atlas, SoftTile t, vec2 position)
 {
-    const vec2 corner = position - 0.5;
+    const vec2 corner = clamp(position, vec2(t.tileMin) + 0.5, vec2(t.tileMax) + 0.5) - 0.5;
     const vec2 base = floor(corner);
     const vec2 f = corner - base;
-    const ivec2 b = ivec2(base);
-    const float top = mix(comparePlane(atlas, t, b), comparePlane(atlas, t, b + ivec2(1, 0)), f.x);
-    const float bottom = mix(comparePlane(atlas, t, b + ivec2(0, 1)), comparePlane(atlas, t, b + ivec2(1, 1)), f.x);
+    const vec4 depths = textureGather(atlas, (base + 1.0) / vec2(textureSize(atlas, 0)), 0);
+    const float plane00 = t.depth + dot(t.gradient, base + 0.5 - t.centre);
+    const vec4 planes = plane00 + vec4(t.gradient.y, t.gradient.x + t.gradient.y, t.gradient.x, 0.0);
+    const vec4 lit = vec4(penumbraIsNearer(depths.x, planes.x) ? 0.0 : 1.0,
+                          penumbraIsNearer(depths.y, planes.y) ? 0.0 : 1.0,
+                          penumbraIsNearer(depths.z, planes.z) ? 0.0 : 1.0,
+                          penumbraIsNearer(depths.w, planes.w) ? 0.0 : 1.0);
+    const float top = mix(lit.w, lit.z, f.x);
+    const float bottom = mix(lit.x, lit.y, f.x);
     return mix(top, bottom, f.y);
 }
 
