@@ -14,6 +14,7 @@ import fs from "node:fs";
 import path from "node:path";
 import { execFileSync } from "node:child_process";
 import { PNG } from "pngjs";
+import { encodeGlb, readGltf } from "./glb.mjs";
 import { renderWithSampleViewer } from "./render-viewer.mjs";
 import { writeScenes } from "./scenes.mjs";
 
@@ -44,38 +45,6 @@ function parseArguments(argv) {
     return options;
 }
 
-// The JSON chunk and binary chunk of a .glb (glTF 2.0 section 4.4), or a .gltf's JSON.
-function readGltf(file) {
-    const bytes = fs.readFileSync(file);
-    if (bytes.readUInt32LE(0) !== 0x46546c67)
-        return { json: JSON.parse(bytes.toString("utf8")), bin: null };
-    const jsonLength = bytes.readUInt32LE(12);
-    const json = JSON.parse(bytes.subarray(20, 20 + jsonLength).toString("utf8"));
-    const binStart = 20 + jsonLength;
-    const bin = binStart < bytes.length ? bytes.subarray(binStart + 8, binStart + 8 + bytes.readUInt32LE(binStart)) : null;
-    return { json, bin };
-}
-
-function writeGlb(file, json, bin) {
-    let text = Buffer.from(JSON.stringify(json));
-    text = Buffer.concat([text, Buffer.alloc((4 - (text.length % 4)) % 4, 0x20)]);
-    const chunks = [[0x4e4f534a, text]];
-    if (bin)
-        chunks.push([0x004e4942, Buffer.concat([bin, Buffer.alloc((4 - (bin.length % 4)) % 4)])]);
-    const parts = [Buffer.alloc(12)];
-    for (const [type, data] of chunks) {
-        const head = Buffer.alloc(8);
-        head.writeUInt32LE(data.length, 0);
-        head.writeUInt32LE(type, 4);
-        parts.push(head, data);
-    }
-    const out = Buffer.concat(parts);
-    out.writeUInt32LE(0x46546c67, 0);
-    out.writeUInt32LE(2, 4);
-    out.writeUInt32LE(out.length, 8);
-    fs.writeFileSync(file, out);
-}
-
 // The file both renderers draw: the original, with castShadows "off" on every scene root when shadows are off
 // (the setting is inherited by children). External buffers and images are copied beside it.
 function prepare(file, dir, shadows) {
@@ -90,7 +59,7 @@ function prepare(file, dir, shadows) {
             fs.copyFileSync(path.resolve(path.dirname(file), decodeURIComponent(resource.uri)),
                             path.join(dir, decodeURIComponent(resource.uri)));
     const out = path.join(dir, "scene.glb");
-    writeGlb(out, json, bin);
+    fs.writeFileSync(out, encodeGlb(json, bin));
     return { file: out, json, bin };
 }
 

@@ -6,6 +6,7 @@ import fs from "node:fs";
 import path from "node:path";
 import { fileURLToPath } from "node:url";
 import { PNG } from "pngjs";
+import { encodeGlb } from "./glb.mjs";
 
 // glTF 2.0 section 5.1.3 (accessor.componentType) and section 5.26 (sampler filters and wraps).
 const FLOAT = 5126, UNSIGNED_BYTE = 5121, UNSIGNED_SHORT = 5123;
@@ -83,21 +84,7 @@ class Builder {
 
     glb() {
         this.json.buffers = [{ byteLength: this.length }];
-        let text = Buffer.from(JSON.stringify(this.json));
-        text = Buffer.concat([text, Buffer.alloc((4 - (text.length % 4)) % 4, 0x20)]);
-        let bin = Buffer.concat(this.chunks);
-        bin = Buffer.concat([bin, Buffer.alloc((4 - (bin.length % 4)) % 4)]);
-        const header = Buffer.alloc(12);
-        header.writeUInt32LE(0x46546c67, 0);
-        header.writeUInt32LE(2, 4);
-        header.writeUInt32LE(12 + 8 + text.length + 8 + bin.length, 8);
-        const chunk = (type, data) => {
-            const head = Buffer.alloc(8);
-            head.writeUInt32LE(data.length, 0);
-            head.writeUInt32LE(type, 4);
-            return Buffer.concat([head, data]);
-        };
-        return Buffer.concat([header, chunk(0x4e4f534a, text), chunk(0x004e4942, bin)]);
+        return encodeGlb(this.json, Buffer.concat(this.chunks));
     }
 }
 
