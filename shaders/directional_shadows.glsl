@@ -7,7 +7,7 @@ layout(std140, binding = PENUMBRA_BINDING_DIRECTIONAL_SHADOWS) uniform Direction
     vec4 cullingSpheres[PENUMBRA_MAX_CASCADES];
     vec4 cascadeData[PENUMBRA_MAX_CASCADES];
     vec4 distanceFade;
-    vec4 atlasSize;
+    float atlasSize;
     int cascadeCount;
     int defaultFilter;
     int cascadeBlend;
@@ -98,7 +98,7 @@ float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize
 float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slot)
 {
     const vec4 bounds = shadows.tileBounds[tile];
-    return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize.x, ivec2(bounds.xy), ivec2(bounds.zw),
+    return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize, ivec2(bounds.xy), ivec2(bounds.zw),
                                  int(shadows.lightShadowData[slot].w), mat3(shadows.worldToAtlas[tile]),
                                  shadows.tileSoft[tile], shadows.lightSoft[slot].x, shadows.cascadeData[cascade].z);
 }

@@ -7,7 +7,7 @@ layout(std140, binding = PENUMBRA_BINDING_LOCAL_SHADOWS) uniform LocalShadows {
     vec4 tileBounds[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
     vec4 tileData[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
     vec4 cubeData[PENUMBRA_MAX_SHADOW_CUBES];
-    vec4 atlasSize;
+    float atlasSize;
     int defaultFilter;
     int pointMode;
     vec4 tileSoft[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
@@ -95,7 +95,7 @@ float localAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
     const int tile = local.tile;
     const mat4 m = localShadows.worldToAtlas[tile];
     const vec4 p = localShadowPosition(m, localShadows.tileData[tile].x, local.plane, fromLight, position, normal);
-    return filterLocalTile(localShadowAtlas, localShadows.atlasSize.x, m, p, localShadows.tileBounds[tile],
+    return filterLocalTile(localShadowAtlas, localShadows.atlasSize, m, p, localShadows.tileBounds[tile],
                            int(localShadows.tileData[tile].y), localShadows.tileSoft[tile]);
 }
 

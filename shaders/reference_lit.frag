@@ -37,7 +37,7 @@ void main()
     float shadow = 1.0;
     if (reference.firstTile >= 0 && count > 0 && viewDepth < reference.farDepths[count - 1]) {
         const vec3 p = transformPoint(shadows.worldToAtlas[reference.firstTile + cascade], vPosition).xyz;
-        shadow = compareTexel(shadowAtlas, ivec2(p.xy * shadows.atlasSize.x), p.z);
+        shadow = compareTexel(shadowAtlas, ivec2(p.xy * shadows.atlasSize), p.z);
     }
     const vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);
     const float nl = max(dot(n, -frame.lightDirection[0].xyz), 0.0);

@@ -52,14 +52,18 @@ async function render() {
         // Passed to gl.clearColor as it is (GltfRenderer.clearFrame), so in 0-1 despite the doc comment.
         clearColor: [...clear, 1],
     });
-    // Textures finish uploading after loadGltf resolves: the frame is drawn until two in a row agree.
+    // Textures finish uploading after loadGltf resolves: the frame is drawn until two in a row agree. A picture that
+    // never settles is not a reference: it fails rather than handing on whichever frame came last.
+    const maxFrames = 20;
     const pixels = new Uint8Array(width * height * 4);
     const previous = new Uint8Array(width * height * 4);
-    for (let frame = 0; frame < 20; ++frame) {
+    for (let frame = 0; ; ++frame) {
         view.renderFrame(state, width, height);
         gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
         if (frame > 0 && pixels.every((value, i) => value === previous[i]))
             break;
+        if (frame + 1 === maxFrames)
+            throw new Error(`no two frames in a row agreed in ${maxFrames} frames drawn 100 ms apart`);
         previous.set(pixels);
         await new Promise((resolve) => setTimeout(resolve, 100));
     }

@@ -55,9 +55,7 @@ glm::vec4 tileSoftData(const DirectionalCascadePlan& cascade, const LightSpaceCa
 void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
 {
     DirectionalShadowUniforms& u = plan.uniforms;
-    const auto atlasSize = static_cast<float>(plan.atlas.atlasSize());
-    const auto tileSize = static_cast<float>(plan.atlas.tileSize());
-    u.atlasSize = {atlasSize, 1.0f / atlasSize, tileSize, 1.0f / tileSize};
+    u.atlasSize = static_cast<float>(plan.atlas.atlasSize());
     u.distanceFade = shadowDistanceFade(settings);
     u.cascadeCount = static_cast<int>(plan.splits.count);
     u.defaultFilter = static_cast<int>(settings.directional.filter);

@@ -269,8 +269,7 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
     for (const std::uint32_t pointIndex : r.cubes)
         planCube(plan, local, points[pointIndex], pointIndex, conventions, casterBounds);
 
-    const auto atlasSize = static_cast<float>(local.atlasSize);
-    plan.uniforms.atlasSize = {atlasSize, 1.0f / atlasSize, 0.0f, 0.0f};
+    plan.uniforms.atlasSize = static_cast<float>(local.atlasSize);
     plan.uniforms.defaultFilter = static_cast<int>(local.filter);
     plan.uniforms.pointMode = static_cast<int>(local.pointMode);
     plan.uniforms.soft = softShadowUniforms(settings.soft);

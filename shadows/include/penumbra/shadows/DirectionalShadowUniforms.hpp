@@ -23,7 +23,7 @@ inline constexpr std::uint32_t maxCascades = 4;
 //                                   // z = world size of a texel, w = view depth where the cascade ends (close fit)
 //       vec4 distanceFade;          // 1 / maxDistance, 1 / distanceFade, 1 / (1 - (1 - cascadeFade)^2),
 //                                   // 1 / cascadeFade
-//       vec4 atlasSize;             // size, 1 / size, tile size, 1 / tile size (texels)
+//       float atlasSize;            // texels on a side
 //       int cascadeCount;
 //       int defaultFilter;          // ShadowFilter of a light without its own
 //       int cascadeBlend;           // CascadeBlend (PENUMBRA_BLEND_*)
@@ -46,7 +46,7 @@ struct DirectionalShadowUniforms {
     std::array<glm::vec4, maxCascades> cullingSpheres{};
     std::array<glm::vec4, maxCascades> cascadeData{};
     glm::vec4 distanceFade{0.0f};
-    glm::vec4 atlasSize{0.0f};
+    float atlasSize = 0.0f;
     std::int32_t cascadeCount = 0;
     std::int32_t defaultFilter = 0;
     std::int32_t cascadeBlend = 0;
@@ -66,12 +66,12 @@ static_assert(offsetof(DirectionalShadowUniforms, cullingSpheres) == 1024);
 static_assert(offsetof(DirectionalShadowUniforms, cascadeData) == 1088);
 static_assert(offsetof(DirectionalShadowUniforms, distanceFade) == 1152);
 static_assert(offsetof(DirectionalShadowUniforms, atlasSize) == 1168);
-static_assert(offsetof(DirectionalShadowUniforms, cascadeCount) == 1184);
-static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1216);
-static_assert(offsetof(DirectionalShadowUniforms, tileSoft) == 1280);
-static_assert(offsetof(DirectionalShadowUniforms, soft) == 1600);
-static_assert(offsetof(DirectionalShadowUniforms, tileBounds) == 1632);
-static_assert(sizeof(DirectionalShadowUniforms) == 1888);
+static_assert(offsetof(DirectionalShadowUniforms, cascadeCount) == 1172);
+static_assert(offsetof(DirectionalShadowUniforms, lightShadowData) == 1200);
+static_assert(offsetof(DirectionalShadowUniforms, tileSoft) == 1264);
+static_assert(offsetof(DirectionalShadowUniforms, soft) == 1584);
+static_assert(offsetof(DirectionalShadowUniforms, tileBounds) == 1616);
+static_assert(sizeof(DirectionalShadowUniforms) == 1872);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout directionalShadowLayout()

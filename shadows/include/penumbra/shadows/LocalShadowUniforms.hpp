@@ -23,7 +23,7 @@ inline constexpr std::uint32_t maxShadowCubes = 4;
 //                              // filter (ShadowFilter)
 //       vec4 cubeData[4];      // per cube: x, y: window depth = (x * -z + y) / z at major-axis distance z,
 //                              // z = normal bias per unit distance, w = 1 / face size (texels)
-//       vec4 atlasSize;        // size, 1 / size, 0, 0
+//       float atlasSize;       // texels on a side
 //       int defaultFilter;     // ShadowFilter of a light without its own
 //       int pointMode;         // PointShadowMode (PENUMBRA_POINT_*)
 //       vec4 tileSoft[16];     // per tile: (t22, t32) the depth row (perspectiveDistance), the light's radius in
@@ -37,7 +37,7 @@ struct LocalShadowUniforms {
     std::array<glm::vec4, maxLocalShadowTiles> tileBounds{};
     std::array<glm::vec4, maxLocalShadowTiles> tileData{};
     std::array<glm::vec4, maxShadowCubes> cubeData{};
-    glm::vec4 atlasSize{0.0f};
+    float atlasSize = 0.0f;
     std::int32_t defaultFilter = 0;
     std::int32_t pointMode = 0;
     alignas(16) std::array<glm::vec4, maxLocalShadowTiles> tileSoft{}; // std140: vec4 arrays align to 16
@@ -49,10 +49,10 @@ static_assert(offsetof(LocalShadowUniforms, tileBounds) == 1024);
 static_assert(offsetof(LocalShadowUniforms, tileData) == 1280);
 static_assert(offsetof(LocalShadowUniforms, cubeData) == 1536);
 static_assert(offsetof(LocalShadowUniforms, atlasSize) == 1600);
-static_assert(offsetof(LocalShadowUniforms, defaultFilter) == 1616);
-static_assert(offsetof(LocalShadowUniforms, tileSoft) == 1632);
-static_assert(offsetof(LocalShadowUniforms, soft) == 1952);
-static_assert(sizeof(LocalShadowUniforms) == 1984);
+static_assert(offsetof(LocalShadowUniforms, defaultFilter) == 1604);
+static_assert(offsetof(LocalShadowUniforms, tileSoft) == 1616);
+static_assert(offsetof(LocalShadowUniforms, soft) == 1936);
+static_assert(sizeof(LocalShadowUniforms) == 1968);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout localShadowLayout()
