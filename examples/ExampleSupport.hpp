@@ -3,9 +3,7 @@
 // What every example shares: --backend B (any configuration name, default vulkan) and writing
 // the picture as a PNG into the current folder.
 
-#include <penumbra/rhi/Image.hpp>
-
-#include <OpenImageIO/imageio.h>
+#include <penumbra/rhi/ImageFiles.hpp>
 
 #include <stdexcept>
 #include <string>
@@ -31,10 +29,7 @@ inline std::string backendArgument(int argc, char** argv, std::string* file = nu
 // An RGBA8 read-back (row 0 at the top, as every Penumbra readback) as a PNG.
 inline void writePng(const std::string& path, const penumbra::rhi::Image& image)
 {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out || !out->open(path, OIIO::ImageSpec(int(image.width), int(image.height), 4, OIIO::TypeDesc::UINT8)) ||
-        !out->write_image(OIIO::TypeDesc::UINT8, image.bytes.data()) || !out->close())
-        throw std::runtime_error("cannot write " + path);
+    penumbra::rhi::writePngFile(path, image);
 }
 
 } // namespace examples

@@ -2,13 +2,13 @@
 # expect-success.sh <expectation>... -- <command...>
 # Passes when the command exits 0 and every expectation holds afterwards:
 #   FILE          FILE exists (it is removed before the command runs, so an old one does not count)
-#   FILE=WxH      FILE is an EXR of W x H texels with one 32-bit float channel (iinfo from openimageio-tools)
+#   FILE=WxH      FILE is an EXR of W x H texels with one 32-bit float channel
 #   FILE~REGEX    FILE exists and has a line matching REGEX
 #   OUTPUT~REGEX  the command's output (stdout and stderr) has a line matching REGEX
 #   "FILE spread MIN", "FILE@WxH+X+Y darker|brighter OTHER@WxH+X+Y MARGIN"
 #                 what FILE shows: its luminance varies, or a region of it is darker or brighter than a
-#                 region of OTHER (which may be FILE itself); $PENUMBRA_IMAGE_CHECK (tests/support/ImageCheck.cpp)
-#                 measures them. FILE is removed before the command runs, OTHER is not.
+#                 region of OTHER (which may be FILE itself). FILE is removed before the command runs, OTHER is not.
+# $PENUMBRA_IMAGE_CHECK (tests/support/ImageCheck.cpp) reads and measures the pictures and EXR files.
 # The exit status decides alone: CTest's PASS_REGULAR_EXPRESSION would ignore it.
 set -u
 expectations=()
@@ -36,10 +36,7 @@ for e in "${expectations[@]}"; do
     *~*)
       grep -Eq -- "${e#*~}" "$file" || { echo "FAIL: no line of $file matches '${e#*~}'"; exit 1; } ;;
     *=*)
-      size=${e#*=}
-      info=$(iinfo -v "$file" 2>&1)
-      grep -Eq -- "^$file : +${size%x*} x +${size#*x}, 1 channel, float openexr" <<<"$info" \
-        || { echo "FAIL: $file is not one float channel of $size: $info"; exit 1; } ;;
+      "$PENUMBRA_IMAGE_CHECK" "$file" depth "${e#*=}" || { echo "FAIL: $file is not one float channel of ${e#*=}"; exit 1; } ;;
     *)
       if [ "$word" != "$e" ]; then
         # shellcheck disable=SC2086 # the expectation's words are the checker's arguments

@@ -1,15 +1,14 @@
 #include "GltfBuilder.hpp"
 
-#include <OpenImageIO/imageio.h>
+#include "penumbra/rhi/ImageFiles.hpp"
+
 #include <glm/common.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace penumbra::testing {
 namespace {
@@ -52,17 +51,11 @@ void appendU32(std::vector<std::uint8_t>& out, std::uint32_t value)
 
 std::vector<std::uint8_t> encodePng(std::uint32_t width, std::uint32_t height, std::span<const std::uint8_t> rgba)
 {
-    const std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("penumbra-gltf-builder-" + std::to_string(::getpid()) + ".png");
-    auto out = OIIO::ImageOutput::create(path.string());
-    const OIIO::ImageSpec spec(int(width), int(height), 4, OIIO::TypeDesc::UINT8);
-    if (!out || !out->open(path.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgba.data()) ||
-        !out->close())
-        throw std::runtime_error("cannot encode a PNG");
-    std::ifstream in(path, std::ios::binary);
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    std::filesystem::remove(path);
-    return bytes;
+    penumbra::rhi::Image image{width, height, penumbra::rhi::Format::RGBA8, {}};
+    const auto* first = reinterpret_cast<const std::byte*>(rgba.data());
+    image.bytes.assign(first, first + rgba.size());
+    const std::string png = penumbra::rhi::encodePng(image);
+    return {png.begin(), png.end()};
 }
 
 } // namespace

@@ -6,8 +6,8 @@
 #include "penumbra/parity/ImageDifference.hpp"
 
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/ImageFiles.hpp"
 
-#include <OpenImageIO/imageio.h>
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -16,19 +16,7 @@
 
 namespace {
 
-penumbra::rhi::Image readPng(const std::string& path)
-{
-    auto in = OIIO::ImageInput::open(path);
-    if (!in)
-        throw penumbra::rhi::Error(fmt::format("{}: cannot read: {}", path, OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    penumbra::rhi::Image image{std::uint32_t(spec.width), std::uint32_t(spec.height), penumbra::rhi::Format::RGBA8, {}};
-    image.bytes.resize(std::size_t(spec.width) * spec.height * 4, std::byte{255});
-    // Channels beyond the file's stay 255 (alpha of an RGB file).
-    if (!in->read_image(0, 0, 0, std::min(spec.nchannels, 4), OIIO::TypeDesc::UINT8, image.bytes.data(), 4))
-        throw penumbra::rhi::Error(fmt::format("{}: cannot read: {}", path, in->geterror()));
-    return image;
-}
+using penumbra::rhi::readPng;
 
 int compareScene(const std::string& reference, const std::string& view, double minPsnr)
 {

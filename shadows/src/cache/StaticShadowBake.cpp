@@ -2,9 +2,8 @@
 
 #include "penumbra/rhi/AtomicFile.hpp"
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/ImageFiles.hpp"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <cerrno>
 #include <cstring>
 #include <fmt/format.h>
@@ -20,37 +19,18 @@ using Json = nlohmann::json;
 constexpr std::string_view kFormat = "penumbra static shadow bake";
 constexpr int kVersion = 1;
 
-// Written under a per-process name and renamed into place, so no reader sees half a file.
-// Encoded in memory, then written whole by rhi::writeFileAtomically (a temporary file renamed into place).
 void writeDepthFile(const std::filesystem::path& path, const BakedShadowMap& map)
 {
-    const auto height = static_cast<int>(map.size * map.frusta.size());
-    OIIO::ImageSpec spec(static_cast<int>(map.size), height, 1, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"Z"};
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out)
-        throw rhi::Error(fmt::format("cannot write {}: no image writer: {}", path.string(), OIIO::geterror()));
-    std::vector<unsigned char> encoded;
-    OIIO::Filesystem::IOVecOutput memory(encoded);
-    if (!out->set_ioproxy(&memory) || !out->open(path.string(), spec) ||
-        !out->write_image(OIIO::TypeDesc::FLOAT, map.depth.data()) || !out->close())
-        throw rhi::Error(fmt::format("cannot write {}: {}", path.string(), out->geterror()));
-    rhi::writeFileAtomically(path, {reinterpret_cast<const char*>(encoded.data()), encoded.size()});
+    rhi::writeExrFile(path, {map.size, map.size * std::uint32_t(map.frusta.size()), {"Z"}, map.depth});
 }
 
 std::vector<float> readDepthFile(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height)
 {
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in)
-        throw rhi::Error(fmt::format("{}: cannot read the baked depth: {}", path.string(), OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width != static_cast<int>(width) || spec.height != static_cast<int>(height) || spec.nchannels != 1)
+    rhi::FloatImage depth = rhi::readExr(path);
+    if (depth.width != width || depth.height != height || depth.channels.size() != 1)
         throw rhi::Error(fmt::format("{}: {}x{} with {} channels, the manifest gives {}x{} with 1", path.string(),
-                                     spec.width, spec.height, spec.nchannels, width, height));
-    std::vector<float> depth(std::size_t(width) * height);
-    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, depth.data()))
-        throw rhi::Error(fmt::format("{}: cannot read the baked depth: {}", path.string(), in->geterror()));
-    return depth;
+                                     depth.width, depth.height, depth.channels.size(), width, height));
+    return std::move(depth.values);
 }
 
 Json frustumJson(const ShadowFrustum& f)
