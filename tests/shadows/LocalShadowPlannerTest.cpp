@@ -189,7 +189,7 @@ TEST(LocalAtlas, FrustumCullingKeepsOnlyCastersInTheCone)
 
 TEST(LocalAtlas, NearPlaneIsTheLightsOwnOrTheSettingsFractionOfItsRange)
 {
-    const rhi::Conventions& conventions = allConventions()[0];
+    const rhi::Conventions conventions = allConventions()[0];
     ShadowSettings settings;
     settings.local.nearPlane = 0.05f;
     const std::vector<SpotShadowInput> spots{{.position = {0, 5, 0}, .range = 20.0f},

@@ -64,13 +64,15 @@ GlBuffer::~GlBuffer()
 void GlBuffer::write(std::uint64_t offset, std::span<const std::byte> data)
 {
     rhi::checkBufferRange("Buffer::write", desc_, offset, data.size());
-    std::memcpy(mapped_ + offset, data.data(), data.size());
+    if (!data.empty()) // an empty buffer maps to no memory, and memcpy takes no null pointer even for 0 bytes
+        std::memcpy(mapped_ + offset, data.data(), data.size());
 }
 
 void GlBuffer::read(std::uint64_t offset, std::span<std::byte> data) const
 {
     rhi::checkBufferRange("Buffer::read", desc_, offset, data.size());
-    std::memcpy(data.data(), mapped_ + offset, data.size());
+    if (!data.empty())
+        std::memcpy(data.data(), mapped_ + offset, data.size());
 }
 
 GlTexture::GlTexture(GlContextPtr context, const rhi::TextureDesc& desc) : context_(std::move(context)), desc_(desc)
