@@ -3,7 +3,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers
   libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   glslang-dev glslang-tools spirv-cross libspirv-cross-c-shared-dev
