@@ -4,6 +4,8 @@ if(PENUMBRA_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
                       -fno-sanitize=vptr) # Debian's glslang has no RTTI for the vptr check
   add_link_options(-fsanitize=address,undefined)
+  # A sanitized static library needs the sanitizer runtime in whatever links it, the installed package's users too.
+  set(PENUMBRA_CONSUMER_LINK_OPTIONS -fsanitize=address,undefined)
 endif()
 if(PENUMBRA_TSAN)
   if(PENUMBRA_SANITIZE)
@@ -11,6 +13,7 @@ if(PENUMBRA_TSAN)
   endif()
   add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
   add_link_options(-fsanitize=thread)
+  set(PENUMBRA_CONSUMER_LINK_OPTIONS -fsanitize=thread)
 endif()
 # libFuzzer build (clang only, `make fuzz`): every library instrumented for coverage and sanitized; the fuzz
 # targets in tests/fuzz link libFuzzer's main.
@@ -44,6 +47,7 @@ function(penumbra_library name)
   add_library(penumbra_${name} ${ARG_SOURCES})
   add_library(penumbra::${name} ALIAS penumbra_${name})
   set_target_properties(penumbra_${name} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME penumbra_${name})
+  target_link_options(penumbra_${name} INTERFACE ${PENUMBRA_CONSUMER_LINK_OPTIONS})
   target_include_directories(penumbra_${name} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
                                                      $<INSTALL_INTERFACE:include>)
   penumbra_warnings(penumbra_${name})
