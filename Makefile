@@ -3,7 +3,9 @@
 #   make test   installs what is missing, builds, runs every test, then the sanitized share of them (sanitize-ci)
 BUILD ?= build
 JOBS ?= $(shell nproc)
-CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON
+# Line tables only (-g1) in the default RelWithDebInfo build: backtraces keep files and lines, and the build takes 347 s
+# instead of 434 s on 2 cores (one run each, 2026-12-04); pass CMAKE_FLAGS to get full debug information.
+CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
 PENUMBRA = $(BUILD)/bin/penumbra
 
 .PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize sanitize-ci tsan fuzz docs \
