@@ -1,6 +1,8 @@
 #include "penumbra/rhi/AtomicFile.hpp"
 #include "penumbra/rhi/Error.hpp"
 
+#include "ScratchFolder.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -11,13 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 using penumbra::rhi::writeFileAtomically;
 
-fs::path scratch(const char* name)
-{
-    const fs::path folder = fs::temp_directory_path() / "penumbra-atomic-file-tests" / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
-}
+fs::path scratch(const char* name) { return penumbra::testing::scratchFolder("atomic-file-tests", name); }
 
 std::string contents(const fs::path& path)
 {

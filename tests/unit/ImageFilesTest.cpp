@@ -1,6 +1,8 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/ImageFiles.hpp"
 
+#include "ScratchFolder.hpp"
+
 #include <filesystem>
 #include <gtest/gtest.h>
 
@@ -9,13 +11,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace rhi = penumbra::rhi;
 
-fs::path scratch(const char* name)
-{
-    const fs::path folder = fs::temp_directory_path() / "penumbra-image-files-tests" / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
-}
+fs::path scratch(const char* name) { return penumbra::testing::scratchFolder("image-files-tests", name); }
 
 // A picture whose every byte differs from its neighbours', so a swapped channel or flipped row shows.
 rhi::Image gradient(std::uint32_t width, std::uint32_t height)

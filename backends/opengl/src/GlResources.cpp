@@ -8,7 +8,6 @@
 
 #include <algorithm>
 
-#include <cstring>
 #include <fmt/format.h>
 
 namespace penumbra::opengl {
@@ -63,16 +62,12 @@ GlBuffer::~GlBuffer()
 
 void GlBuffer::write(std::uint64_t offset, std::span<const std::byte> data)
 {
-    rhi::checkBufferRange("Buffer::write", desc_, offset, data.size());
-    if (!data.empty()) // an empty buffer maps to no memory, and memcpy takes no null pointer even for 0 bytes
-        std::memcpy(mapped_ + offset, data.data(), data.size());
+    rhi::writeMappedBuffer(desc_, mapped_, offset, data);
 }
 
 void GlBuffer::read(std::uint64_t offset, std::span<std::byte> data) const
 {
-    rhi::checkBufferRange("Buffer::read", desc_, offset, data.size());
-    if (!data.empty())
-        std::memcpy(data.data(), mapped_ + offset, data.size());
+    rhi::readMappedBuffer(desc_, mapped_, offset, data);
 }
 
 GlTexture::GlTexture(GlContextPtr context, const rhi::TextureDesc& desc) : context_(std::move(context)), desc_(desc)

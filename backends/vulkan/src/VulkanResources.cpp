@@ -97,16 +97,12 @@ VulkanBuffer::VulkanBuffer(std::shared_ptr<Context> context, const rhi::BufferDe
 
 void VulkanBuffer::write(std::uint64_t offset, std::span<const std::byte> data)
 {
-    rhi::checkBufferRange("Buffer::write", desc_, offset, data.size());
-    if (!data.empty()) // an empty buffer maps to no memory, and memcpy takes no null pointer even for 0 bytes
-        std::memcpy(buffer_.data() + offset, data.data(), data.size());
+    rhi::writeMappedBuffer(desc_, buffer_.data(), offset, data);
 }
 
 void VulkanBuffer::read(std::uint64_t offset, std::span<std::byte> data) const
 {
-    rhi::checkBufferRange("Buffer::read", desc_, offset, data.size());
-    if (!data.empty())
-        std::memcpy(data.data(), buffer_.data() + offset, data.size());
+    rhi::readMappedBuffer(desc_, buffer_.data(), offset, data);
 }
 
 VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::TextureDesc& desc)

@@ -5,6 +5,7 @@
 #include "penumbra/rhi/BackendSupport.hpp"
 #include "penumbra/rhi/Error.hpp"
 
+#include <cstring>
 #include <fmt/format.h>
 
 namespace penumbra::rhi {
@@ -213,6 +214,22 @@ void checkBufferRange(std::string_view what, const BufferDesc& buffer, std::uint
     if (offset > buffer.size || size > buffer.size - offset)
         throw Error(fmt::format("{}: {} bytes at offset {} exceed buffer '{}' ({} bytes)", what, size, offset,
                                 buffer.debugName, buffer.size));
+}
+
+void writeMappedBuffer(const BufferDesc& buffer, std::byte* mapped, std::uint64_t offset,
+                       std::span<const std::byte> data)
+{
+    checkBufferRange("Buffer::write", buffer, offset, data.size());
+    if (!data.empty())
+        std::memcpy(mapped + offset, data.data(), data.size());
+}
+
+void readMappedBuffer(const BufferDesc& buffer, const std::byte* mapped, std::uint64_t offset,
+                      std::span<std::byte> data)
+{
+    checkBufferRange("Buffer::read", buffer, offset, data.size());
+    if (!data.empty())
+        std::memcpy(data.data(), mapped + offset, data.size());
 }
 
 void checkBufferUsage(std::string_view what, const BufferDesc& buffer, BufferUsage usage, std::string_view usageName)
