@@ -31,7 +31,7 @@ glm::mat4 lightView(const LightBasis& b, glm::vec2 snapped, float nearDepth)
 
 // Depth planes and matrices of a fit whose square (halfSize, snappedCentre) is set: the near plane at minDepth pulled
 // back over every caster box whose light-space footprint overlaps the square, then by nearPlaneOffset; the far plane
-// at maxDepth.
+// at maxDepth; both then moved outwards onto a grid.
 void placeDepthPlanes(DirectionalShadowCascade& c, float minDepth, float maxDepth, float nearPlaneOffset,
                       const LightSpaceCasters& casters, const rhi::Conventions& conventions)
 {
@@ -40,8 +40,11 @@ void placeDepthPlanes(DirectionalShadowCascade& c, float minDepth, float maxDept
         if (overlapsSquare(light, c.snappedCentre, c.halfSize))
             c.nearDepth = std::min(c.nearDepth, light.min.z);
     }
-    c.nearDepth -= nearPlaneOffset;
-    c.farDepth = maxDepth;
+    // Both planes on a grid of a power of two of at least 16 texels, so that a camera move inside one grid step leaves
+    // every depth the tile holds and every receiver's depth the same to the bit, as the snap leaves the texels.
+    const float quantum = std::exp2(std::ceil(std::log2(16.0f * c.texelSize)));
+    c.nearDepth = std::floor((c.nearDepth - nearPlaneOffset) / quantum) * quantum;
+    c.farDepth = std::ceil(maxDepth / quantum) * quantum;
 
     c.view = lightView(c.basis, c.snappedCentre, c.nearDepth);
     c.projection =

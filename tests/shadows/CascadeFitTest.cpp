@@ -154,6 +154,29 @@ TEST(CascadeFit, NearPlaneIsPulledBackOverCastersInTheFootprintAndByTheOffset)
     EXPECT_NEAR(top.z, 2.0f / 62.0f, 1e-5f);
 }
 
+// The far plane follows the sphere, so without a grid every camera move would change every depth the tile holds by a
+// rounding, and the soft filters' texel-rounded taps with them.
+TEST(CascadeFit, DepthPlanesStayPutAsTheCameraMovesWithinAGridStep)
+{
+    const LightBasis basis = lightBasis(glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f)));
+    const auto fitAt = [&](glm::vec3 centre) {
+        return fitDirectionalCascade({centre, 10.3f}, lightSpaceCasters(basis, {}), 2048, 0.0f, defaultConventions);
+    };
+    const DirectionalShadowCascade still = fitAt({1.4f, 2.0f, 0.0f});
+    const float grid = std::exp2(std::ceil(std::log2(16.0f * still.texelSize)));
+    EXPECT_EQ(std::fmod(still.nearDepth, grid), 0.0f);
+    EXPECT_EQ(std::fmod(still.farDepth, grid), 0.0f);
+    const float centreDepth = basis.toLight({1.4f, 2.0f, 0.0f}).z;
+    EXPECT_LE(still.nearDepth, centreDepth - 10.3f);
+    EXPECT_GE(still.farDepth, centreDepth + 10.3f);
+    EXPECT_LT(still.farDepth - still.nearDepth, 2.0f * 10.3f + 2.0f * grid);
+    for (const glm::vec3 step : {glm::vec3(0.004f, 0.0f, 0.0f), glm::vec3(0.0f, 0.003f, 0.007f)}) {
+        const DirectionalShadowCascade moved = fitAt(glm::vec3(1.4f, 2.0f, 0.0f) + step);
+        EXPECT_EQ(moved.nearDepth, still.nearDepth);
+        EXPECT_EQ(moved.farDepth, still.farDepth);
+    }
+}
+
 // The centre-and-extent transform of a box gives the box of its eight transformed corners.
 TEST(CascadeFit, LightSpaceBoundsOfABoxAreThoseOfItsCorners)
 {

@@ -201,5 +201,36 @@ TEST_F(StableCascadesTest, MissingTexelSnapCatchesFault)
                                  << " ground points changed";
 }
 
+// A move that keeps a tile's snap keeps its depth planes too (they lie on a grid of at least 16 texels), so the tile
+// holds the same depths to the bit: without the grid the far plane follows the camera and every depth changes by a
+// rounding, which the soft filters' texel-rounded blocker searches can turn into changed pixels.
+TEST_F(StableCascadesTest, TilesWhoseSnapStaysHoldTheSameDepthsToTheBit)
+{
+    const scene::Scene scene = scene::makeSingleLightScene();
+    render::SceneRenderer renderer(*device, scene);
+    const ShadowFrame before = render(renderer, scene.camera, Fit::Snapped, shadows::CascadeProjection::Stable);
+    std::size_t tilesCompared = 0;
+    for (const float quarterTexels : {1.0f, 2.0f, 3.0f}) {
+        scene::Camera moved = scene.camera;
+        moved.position +=
+            scene.camera.right() * quarterTexels * 0.25f * before.plan.lights.at(0).cascades.at(0).fit.texelSize;
+        const ShadowFrame after = render(renderer, moved, Fit::Snapped, shadows::CascadeProjection::Stable);
+        for (std::size_t c = 0; c < before.plan.lights.at(0).cascades.size(); ++c) {
+            const shadows::DirectionalCascadePlan& a = before.plan.lights[0].cascades[c];
+            const shadows::DirectionalCascadePlan& b = after.plan.lights[0].cascades[c];
+            if (a.fit.snappedCentre != b.fit.snappedCentre)
+                continue;
+            ++tilesCompared;
+            std::size_t changed = 0;
+            const glm::uvec2 origin = before.plan.atlas.tileOffset(a.tile);
+            for (std::uint32_t y = origin.y; y < origin.y + before.plan.atlas.tileSize(); ++y)
+                for (std::uint32_t x = origin.x; x < origin.x + before.plan.atlas.tileSize(); ++x)
+                    changed += before.atlas.at(x, y) != after.atlas.at(x, y);
+            EXPECT_EQ(changed, 0u) << "cascade " << c << " after " << quarterTexels << " quarter texels";
+        }
+    }
+    EXPECT_GT(tilesCompared, 0u) << "no move kept a tile's snap";
+}
+
 } // namespace
 } // namespace penumbra::testing

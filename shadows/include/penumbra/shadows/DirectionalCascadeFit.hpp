@@ -41,7 +41,8 @@ struct DirectionalShadowCascade {
 // - the square's centre snapped to whole texels in light space, so camera translation moves
 //   shadow texels by whole texels only;
 // - near plane pulled back over every caster box whose light-space footprint overlaps the square,
-//   then by nearPlaneOffset; far plane at the sphere's far side;
+//   then by nearPlaneOffset; far plane at the sphere's far side; both moved outwards onto a grid (a power of two of
+//   at least 16 texels), so camera moves within a grid step leave the depths alone;
 // - projection from conventions.orthographic, so every depth range and reversed-Z works.
 // The light's basis is the casters' (casters.basis).
 DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightSpaceCasters& casters,
