@@ -31,7 +31,7 @@ glm::mat4 lightView(const LightBasis& b, glm::vec2 snapped, float nearDepth)
 
 // Depth planes and matrices of a fit whose square (halfSize, snappedCentre) is set: the near plane at minDepth pulled
 // back over every caster box whose light-space footprint overlaps the square, then by nearPlaneOffset; the far plane
-// at maxDepth; both then moved outwards onto a grid.
+// at maxDepth; both then moved outwards onto depthPlaneGrid.
 void placeDepthPlanes(DirectionalShadowCascade& c, float minDepth, float maxDepth, float nearPlaneOffset,
                       const LightSpaceCasters& casters, const rhi::Conventions& conventions)
 {
@@ -40,11 +40,9 @@ void placeDepthPlanes(DirectionalShadowCascade& c, float minDepth, float maxDept
         if (overlapsSquare(light, c.snappedCentre, c.halfSize))
             c.nearDepth = std::min(c.nearDepth, light.min.z);
     }
-    // Both planes on a grid of a power of two of at least 16 texels, so that a camera move inside one grid step leaves
-    // every depth the tile holds and every receiver's depth the same to the bit, as the snap leaves the texels.
-    const float quantum = std::exp2(std::ceil(std::log2(16.0f * c.texelSize)));
-    c.nearDepth = std::floor((c.nearDepth - nearPlaneOffset) / quantum) * quantum;
-    c.farDepth = std::ceil(maxDepth / quantum) * quantum;
+    const float grid = depthPlaneGrid(c.texelSize);
+    c.nearDepth = std::floor((c.nearDepth - nearPlaneOffset) / grid) * grid;
+    c.farDepth = std::ceil(maxDepth / grid) * grid;
 
     c.view = lightView(c.basis, c.snappedCentre, c.nearDepth);
     c.projection =
@@ -55,6 +53,8 @@ void placeDepthPlanes(DirectionalShadowCascade& c, float minDepth, float maxDept
 glm::vec2 snapToTexels(glm::vec2 centre, float texelSize) { return glm::round(centre / texelSize) * texelSize; }
 
 } // namespace
+
+float depthPlaneGrid(float texelSize) { return std::exp2(std::ceil(std::log2(16.0f * texelSize))); }
 
 DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightSpaceCasters& casters,
                                                std::uint32_t tileSize, float nearPlaneOffset,

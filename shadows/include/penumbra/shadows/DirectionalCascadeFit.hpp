@@ -36,13 +36,16 @@ struct DirectionalShadowCascade {
     LightBasis basis;
 };
 
+// The step of the grid the cascades' near and far planes lie on: the power of two of at least 16 texels, so that a
+// camera move inside one step leaves every depth a tile holds the same to the bit, as the snap leaves its texels.
+float depthPlaneGrid(float texelSize);
+
 // Fits one cascade's light projection around `sphere` (stable fit):
 // - light view along basis.direction; orthographic square of half size r / (1 - sqrt 2 / tileSize);
 // - the square's centre snapped to whole texels in light space, so camera translation moves
 //   shadow texels by whole texels only;
 // - near plane pulled back over every caster box whose light-space footprint overlaps the square,
-//   then by nearPlaneOffset; far plane at the sphere's far side; both moved outwards onto a grid (a power of two of
-//   at least 16 texels), so camera moves within a grid step leave the depths alone;
+//   then by nearPlaneOffset; far plane at the sphere's far side; both moved outwards onto depthPlaneGrid;
 // - projection from conventions.orthographic, so every depth range and reversed-Z works.
 // The light's basis is the casters' (casters.basis).
 DirectionalShadowCascade fitDirectionalCascade(const Sphere& sphere, const LightSpaceCasters& casters,
