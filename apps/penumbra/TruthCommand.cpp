@@ -157,13 +157,12 @@ void truth(const TruthOptions& options)
     for (LightTruth& t : truths) {
         render::LightTruthTrace trace = render::traceLightTruth(scene, shadowRays, gbuffer, plans, frame.shadows,
                                                                 t.light, progressBar(fmt::format("'{}'", t.name)));
+        t.comparison = render::compareLightTruth(trace, shadowRays, gbuffer, t.rendered);
         t.raycast = std::move(trace.visibility);
-        t.comparison = scene::compareWithTruth(gbuffer, t.raycast, t.rendered, trace.shadowEdges);
         t.contactGapTexels =
-            scene::contactGapTexels(t.comparison, gbuffer, shadowRays, render::truthRays(scene, t.light),
-                                    [&](glm::vec3 position) {
-                                        return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position);
-                                    });
+            scene::contactGapTexels(t.comparison, gbuffer, shadowRays, trace.rays, [&](glm::vec3 position) {
+                return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position);
+            });
         nlohmann::json entry = lightReport(scene, t);
         if (wantsSoftTruth(options, scene, plans, t.light)) {
             const scene::SoftVisibilityMap soft =

@@ -1,5 +1,7 @@
 #include "penumbra/render/ShadowTruth.hpp"
 
+#include "penumbra/shadows/NormalOffset.hpp"
+
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
@@ -144,28 +146,50 @@ float shadowEdgeMarginTexels(shadows::ShadowFilter filter)
     return reach * (1.0f + std::sqrt(2.0f)) + 0.5f;
 }
 
+float lookupFootprintTexels(shadows::ShadowFilter filter) { return shadows::normalBiasFilterFactor(filter) + 0.5f; }
+
 LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
                                 const scene::CpuGBuffer& gbuffer, const ShadowPlans& plans,
                                 const shadows::ShadowSettings& settings, const scene::LightRef& light,
                                 const scene::TraceProgress& progress)
 {
     const scene::ShadowRayFrom rays = truthRays(scene, light);
-    const float margin = shadowEdgeMarginTexels(
-        light.kind == scene::LightKind::Directional ? settings.directional.filter : settings.local.filter);
+    const shadows::ShadowFilter filter =
+        light.kind == scene::LightKind::Directional ? settings.directional.filter : settings.local.filter;
+    const float margin = shadowEdgeMarginTexels(filter);
+    // The default normal offset's reach: the filter's reach k in texel diagonals (shadows::cascadeData).
+    const float reach = shadows::normalBiasFilterFactor(filter) * std::sqrt(2.0f);
     // Half the rows' progress for each of the two traces.
     const auto half = [&](std::uint32_t offset) -> scene::TraceProgress {
         if (!progress)
             return {};
         return [&, offset](std::uint32_t done, std::uint32_t rows) { progress(offset + done, 2 * rows); };
     };
-    LightTruthTrace t{scene::traceVisibility(scene, shadowRays, gbuffer, rays, scene::kShadowRayOffset, half(0)), {}};
-    t.shadowEdges = scene::traceShadowEdges(
-        shadowRays, gbuffer, t.visibility, rays,
-        [&](const scene::GBufferSample& sample) {
-            return margin * shadowTexelSize(plans, settings, scene, light, sample.position);
-        },
-        half(gbuffer.height));
+    LightTruthTrace t{scene::traceVisibility(scene, shadowRays, gbuffer, rays, scene::kShadowRayOffset, half(0)),
+                      {},
+                      std::vector<scene::LookupFootprint>(gbuffer.samples.size()),
+                      rays};
+    std::vector<float> edgeRadii(gbuffer.samples.size(), 0.0f);
+    for (std::size_t i = 0; i < gbuffer.samples.size(); ++i) {
+        const scene::GBufferSample& sample = gbuffer.samples[i];
+        if (sample.object == scene::kNoObject)
+            continue;
+        const float texel = shadowTexelSize(plans, settings, scene, light, sample.position);
+        edgeRadii[i] = margin * texel;
+        const glm::vec3 towardsLight = rays(sample.position).direction;
+        t.footprints[i] = {sample.position + shadows::receiverNormalOffset(sample.normal, towardsLight, reach * texel),
+                           lookupFootprintTexels(filter) * texel};
+    }
+    t.shadowEdges = scene::traceShadowEdges(shadowRays, gbuffer, t.visibility, rays, edgeRadii, half(gbuffer.height));
     return t;
+}
+
+scene::TruthComparison compareLightTruth(const LightTruthTrace& trace, const scene::RayCaster& shadowRays,
+                                         const scene::CpuGBuffer& gbuffer, const scene::RenderedVisibility& rendered)
+{
+    scene::TruthComparison c = scene::compareWithTruth(gbuffer, trace.visibility, rendered, trace.shadowEdges);
+    scene::confirmDisagreements(c, shadowRays, gbuffer, trace.visibility, trace.rays, trace.footprints);
+    return c;
 }
 
 std::string lightLabel(const scene::Scene& scene, const scene::LightRef& light)

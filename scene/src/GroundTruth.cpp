@@ -1,5 +1,6 @@
 #include "penumbra/scene/GroundTruth.hpp"
 
+#include "MeshSurfaces.hpp"
 #include "ParallelRows.hpp"
 
 #include <glm/geometric.hpp>
@@ -59,6 +60,10 @@ CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const C
         throw std::invalid_argument("traceGBuffer needs a RayCaster built with RayKind::Camera");
     CpuGBuffer gbuffer{width, height, std::vector<GBufferSample>(std::size_t(width) * height)};
     const glm::vec3 forward = glm::normalize(camera.forward);
+    std::vector<std::vector<std::uint32_t>> surfaces;
+    surfaces.reserve(scene.meshes.size());
+    for (const MeshData& mesh : scene.meshes)
+        surfaces.push_back(meshSurfaces(mesh));
     forEachRow(
         height,
         [&](std::uint32_t y) {
@@ -71,6 +76,7 @@ CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const C
                 GBufferSample& sample = gbuffer.samples[std::size_t(y) * width + x];
                 sample.object = hit->object;
                 sample.triangle = hit->triangle;
+                sample.surface = surfaces[scene.objects[hit->object].mesh][hit->triangle];
                 sample.position = ray.origin + hit->distance * ray.direction;
                 sample.frontFacing = glm::dot(hit->normal, ray.direction) < 0.0f;
                 const float towardsCamera = sample.frontFacing ? 1.0f : -1.0f;

@@ -19,7 +19,9 @@ bool nearEdge(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth, std::
             const int nx = int(x) + dx, ny = int(y) + dy;
             if (nx < 0 || ny < 0 || nx >= int(truth.width) || ny >= int(truth.height))
                 return true;
-            if (truth.at(nx, ny) != truth.at(x, y) || gbuffer.at(nx, ny).object != gbuffer.at(x, y).object)
+            const GBufferSample& here = gbuffer.at(x, y);
+            const GBufferSample& there = gbuffer.at(nx, ny);
+            if (truth.at(nx, ny) != truth.at(x, y) || there.object != here.object || there.surface != here.surface)
                 return true;
         }
     return false;
@@ -62,13 +64,42 @@ bool nearShadowEdge(const RayCaster& shadowRays, const GBufferSample& sample, bo
     return false;
 }
 
+// Whether the ray-cast visibility differs from `shadowed` anywhere in `footprint` of `sample`'s lookup: at its centre
+// and on kFootprintRings rings filling it (ring j at radius * j / kFootprintRings, of 8 j points), across the light's
+// rays. A point below the receiver's plane (lifted as nearShadowEdge lifts) moves along its ray onto it, so that
+// the receiver does not shadow itself.
+bool footprintHasEdge(const RayCaster& shadowRays, const GBufferSample& sample, bool shadowed,
+                      const ShadowRayFrom& rayFrom, const LookupFootprint& footprint)
+{
+    const glm::vec3 towardsLight = rayFrom(shadowRayOrigin(sample)).direction;
+    const float facing = glm::dot(towardsLight, sample.normal);
+    if (facing < kGrazing)
+        return true;
+    const std::array<glm::vec3, 2> across = acrossRay(towardsLight);
+    for (int ring = 0; ring <= kFootprintRings; ++ring)
+        for (int k = 0; k < std::max(8 * ring, 1); ++k) {
+            const float angle = 0.25f * 3.14159265f * static_cast<float>(k) / static_cast<float>(std::max(ring, 1));
+            const float distance = footprint.radius * static_cast<float>(ring) / static_cast<float>(kFootprintRings);
+            glm::vec3 point = footprint.centre + distance * (std::cos(angle) * across[0] + std::sin(angle) * across[1]);
+            const float lift = kShadowRayOffset + kCreaseLift * glm::length(point - sample.position);
+            const float height = glm::dot(point - sample.position, sample.normal);
+            if (height < lift)
+                point += towardsLight * ((lift - height) / facing);
+            const ShadowRay ray = rayFrom(point);
+            if (shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance) != shadowed)
+                return true;
+        }
+    return false;
+}
+
 } // namespace
 
 std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                            const LightVisibilityMask& truth, const ShadowRayFrom& rayFrom,
-                                           const std::function<float(const GBufferSample&)>& radius,
-                                           const TraceProgress& progress)
+                                           const std::vector<float>& radii, const TraceProgress& progress)
 {
+    if (radii.size() != gbuffer.samples.size())
+        throw std::invalid_argument("traceShadowEdges: one radius per G-buffer sample");
     std::vector<std::uint8_t> edges(gbuffer.samples.size(), 0);
     forEachRow(
         gbuffer.height,
@@ -77,7 +108,7 @@ std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const Cp
                 const LightVisibility v = truth.pixels[i];
                 if (v != LightVisibility::Lit && v != LightVisibility::Shadowed)
                     continue;
-                const float r = radius(gbuffer.samples[i]);
+                const float r = radii[i];
                 edges[i] = r > 0.0f &&
                            nearShadowEdge(shadowRays, gbuffer.samples[i], v == LightVisibility::Shadowed, rayFrom, r);
             }
@@ -126,6 +157,27 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
             }
         }
     return c;
+}
+
+void confirmDisagreements(TruthComparison& comparison, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                          const LightVisibilityMask& truth, const ShadowRayFrom& rayFrom,
+                          const std::vector<LookupFootprint>& footprints)
+{
+    if (footprints.size() != comparison.verdicts.size() || gbuffer.samples.size() != comparison.verdicts.size())
+        throw std::invalid_argument("confirmDisagreements: one lookup footprint and one G-buffer sample per pixel");
+    for (std::size_t i = 0; i < comparison.verdicts.size(); ++i) {
+        TruthVerdict& verdict = comparison.verdicts[i];
+        const bool leak = verdict == TruthVerdict::Leak;
+        if ((!leak && verdict != TruthVerdict::Acne) || footprints[i].radius <= 0.0f ||
+            !footprintHasEdge(shadowRays, gbuffer.samples[i], leak, rayFrom, footprints[i]))
+            continue;
+        verdict = TruthVerdict::NearEdge;
+        TruthClassFigures& figures = leak ? comparison.shadowed : comparison.lit;
+        --figures.compared;
+        ++figures.nearEdges;
+        if (leak && !truth.blockers.empty() && truth.blockers[i] != kNoObject)
+            --comparison.shadowedBy[truth.blockers[i]].compared;
+    }
 }
 
 float contactGapTexels(const TruthComparison& comparison, const CpuGBuffer& gbuffer, const RayCaster& shadowRays,

@@ -37,6 +37,40 @@ TEST(GroundTruthTest, RowZeroIsTheTopOfThePicture)
     EXPECT_FALSE(gbuffer.at(0, 12).hit()); // left of the 6-unit box at this distance
 }
 
+// One mesh of a box (its faces keep their own vertices) and a card apart from it: the box's faces are one surface,
+// the card another, as the leaf cards of one tree are.
+TEST(GroundTruthTest, SamplesTellTheConnectedPiecesOfAMeshApart)
+{
+    MeshData mesh = makeBox({1, 1, 1});
+    const MeshData card = makePlane(1.0f);
+    const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
+    for (Vertex v : card.vertices) {
+        v.position = glm::vec3(v.position.z, v.position.x, 0.0f) + glm::vec3(3.0f, 0.0f, 0.0f);
+        v.normal = {0.0f, 0.0f, 1.0f};
+        mesh.vertices.push_back(v);
+    }
+    for (const std::uint32_t index : card.indices)
+        mesh.indices.push_back(first + index);
+    updateBounds(mesh);
+    Scene scene;
+    scene.addObject("box and card", scene.addMesh(std::move(mesh)), scene.addMaterial({}), glm::mat4(1.0f));
+    scene.camera = lookAt({4.0f, 4.0f, 10.0f}, {1.5f, 0.0f, 0.0f}, glm::radians(50.0f));
+    const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 96, 64);
+    std::map<std::uint32_t, std::map<int, std::size_t>> facesBySurface; // surface -> face normal axis -> samples
+    for (const GBufferSample& sample : gbuffer.samples)
+        if (sample.hit()) {
+            const glm::vec3 n = glm::abs(sample.normal);
+            const int axis = n.x > 0.9f ? 0 : n.y > 0.9f ? 1 : 2;
+            ++facesBySurface[sample.surface][sample.position.x > 2.0f ? 3 : axis];
+        }
+    ASSERT_EQ(facesBySurface.size(), 2u);
+    const std::map<int, std::size_t>& box = facesBySurface.begin()->second;
+    const std::map<int, std::size_t>& other = std::next(facesBySurface.begin())->second;
+    EXPECT_EQ(box.size(), 3u) << "three faces of the box in view, one surface";
+    EXPECT_EQ(other.size(), 1u);
+    EXPECT_EQ(other.begin()->first, 3) << "the card alone";
+}
+
 TEST(GroundTruthTest, SamplesProjectBackToTheirPixelCentres)
 {
     const Scene scene = makeSingleLightScene();

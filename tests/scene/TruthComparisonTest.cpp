@@ -1,6 +1,10 @@
-// scene::compareWithTruth on hand-made pictures: verdicts, per-class figures, the edge margin.
+// scene::compareWithTruth on hand-made pictures: verdicts, per-class figures, the edge margin; and
+// scene::confirmDisagreements on a ray-cast scene.
 #include "penumbra/scene/TruthComparison.hpp"
 
+#include "penumbra/scene/MeshGenerators.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 namespace penumbra::scene {
@@ -74,6 +78,71 @@ TEST(TruthComparisonTest, PicturesOfDifferentSizesAreRefused)
     Pictures p;
     p.rendered.width = 8;
     EXPECT_THROW(compareWithTruth(p.gbuffer, p.truth, p.rendered), std::invalid_argument);
+}
+
+// Ground seen from above, lit by a sun 45 degrees up towards -z, with a square slab of side 1.5 at x = -3 and one of
+// side 4 at x = +3 floating 4 units over it, so that their shadows fall 4 units off them; the renderer's answer is
+// lit everywhere, so every compared shadowed pixel is a leak.
+struct SlabScene {
+    static constexpr std::uint32_t kPixels = 128;
+    Scene scene;
+    CpuGBuffer gbuffer;
+    LightVisibilityMask truth;
+    RenderedVisibility rendered;
+
+    SlabScene()
+    {
+        const std::uint32_t material = scene.addMaterial({});
+        scene.addObject("ground", scene.addMesh(makePlane(10.0f)), material, glm::mat4(1.0f));
+        for (const auto& [x, side] : {std::pair{-3.0f, 1.5f}, std::pair{3.0f, 4.0f}})
+            scene.addObject("slab", scene.addMesh(makeBox({0.5f * side, 0.05f, 0.5f * side})), material,
+                            glm::translate(glm::mat4(1.0f), glm::vec3(x, 4.0f, 0.0f)));
+        scene.lights.push_back({.direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f))});
+        scene.camera = lookAt({0.0f, 14.0f, 4.0f}, {0.0f, 0.0f, 4.0f}, glm::radians(60.0f), {0.0f, 0.0f, -1.0f});
+        gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, kPixels, kPixels);
+        truth = traceLightVisibility(scene, RayCaster(scene), gbuffer, scene.lights[0]);
+        rendered = {kPixels, kPixels, std::vector<float>(kPixels * kPixels, 1.0f),
+                    std::vector<std::uint8_t>(kPixels * kPixels, 1)};
+    }
+
+    // Leak pixels under the slab centred at x.
+    std::size_t leaksUnder(const TruthComparison& c, float x) const
+    {
+        std::size_t leaks = 0;
+        for (std::size_t i = 0; i < c.verdicts.size(); ++i)
+            leaks += c.verdicts[i] == TruthVerdict::Leak && std::abs(gbuffer.samples[i].position.x - x) < 2.5f;
+        return leaks;
+    }
+};
+
+// A shadow smaller than the lookup's footprint is beyond the map's resolution: its leaks become edges. The large
+// slab's shadow, uniform across the footprint, keeps its leaks, and the figures follow the verdicts.
+TEST(TruthComparisonTest, DisagreementsWithinAFootprintOfAnEdgeAreEdges)
+{
+    const SlabScene s;
+    TruthComparison c = compareWithTruth(s.gbuffer, s.truth, s.rendered);
+    const std::size_t smallLeaks = s.leaksUnder(c, -3.0f), largeLeaks = s.leaksUnder(c, 3.0f);
+    ASSERT_GT(smallLeaks, 0u) << "the small slab's shadow must hold compared pixels";
+    ASSERT_GT(largeLeaks, 100u);
+    const std::size_t compared = c.shadowed.compared;
+    std::vector<LookupFootprint> footprints(s.gbuffer.samples.size());
+    for (std::size_t i = 0; i < footprints.size(); ++i)
+        footprints[i] = {s.gbuffer.samples[i].position, 1.0f};
+    confirmDisagreements(c, RayCaster(s.scene), s.gbuffer, s.truth, raysTowards(s.scene.lights[0]), footprints);
+    EXPECT_EQ(s.leaksUnder(c, -3.0f), 0u);
+    const std::size_t kept = s.leaksUnder(c, 3.0f);
+    EXPECT_GT(kept, 0u) << "the large shadow's middle is uniform over a footprint";
+    EXPECT_LT(kept, largeLeaks) << "its rim is within a footprint of its edge";
+    EXPECT_EQ(c.shadowed.compared, compared - (smallLeaks + largeLeaks - kept));
+    EXPECT_EQ(c.leaks(), kept);
+}
+
+TEST(TruthComparisonTest, ConfirmingNeedsAFootprintPerPixel)
+{
+    const SlabScene s;
+    TruthComparison c = compareWithTruth(s.gbuffer, s.truth, s.rendered);
+    EXPECT_THROW(confirmDisagreements(c, RayCaster(s.scene), s.gbuffer, s.truth, raysTowards(s.scene.lights[0]), {}),
+                 std::invalid_argument);
 }
 
 } // namespace

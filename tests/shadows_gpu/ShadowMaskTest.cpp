@@ -157,30 +157,28 @@ scene::Scene oneLocalLight(bool spot, std::size_t index)
     return withSolidCasters(std::move(scene));
 }
 
-// The ray-cast reference of a scene from its camera: what each pixel shows, whether it sees the light, and
-// where its shadow edges are at the resolution of the scene's own shadow plans.
+// The ray-cast reference of a scene from its camera: what each pixel shows, whether it sees the light, where its
+// shadow edges are at the resolution of the scene's own shadow plans, and the rays that confirm disagreements.
 struct Truth {
     scene::CpuGBuffer gbuffer;
-    scene::LightVisibilityMask visibility;
-    std::vector<std::uint8_t> shadowEdges;
+    render::LightTruthTrace trace;
+    scene::RayCaster shadowRays;
 };
 
 Truth traceTruth(rhi::Device& device, const scene::Scene& scene, const render::FrameDesc& frame)
 {
     const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::RayCaster shadowRays(scene);
+    scene::RayCaster shadowRays(scene);
     const render::ShadowPlans plans = render::SceneRenderer(device, scene).planShadows(scene.camera, frame);
-    Truth t{scene::traceGBuffer(scene, cameraRays, scene.camera, frame.width, frame.height), {}, {}};
+    scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, frame.width, frame.height);
     render::LightTruthTrace trace =
-        render::traceLightTruth(scene, shadowRays, t.gbuffer, plans, frame.shadows, *frame.visibilityOf);
-    t.visibility = std::move(trace.visibility);
-    t.shadowEdges = std::move(trace.shadowEdges);
-    return t;
+        render::traceLightTruth(scene, shadowRays, gbuffer, plans, frame.shadows, *frame.visibilityOf);
+    return Truth{std::move(gbuffer), std::move(trace), std::move(shadowRays)};
 }
 
 TruthFigures report(ShadowMaskTest& test, const std::string& name, const ShadowMask& mask, const Truth& truth)
 {
-    const TruthFigures f = scene::compareWithTruth(truth.gbuffer, truth.visibility, mask.visibility, truth.shadowEdges);
+    const TruthFigures f = render::compareLightTruth(truth.trace, truth.shadowRays, truth.gbuffer, mask.visibility);
     std::printf("[ truth    ] %s %s: %s\n", configuration().c_str(), name.c_str(), describe(f).c_str());
     test.RecordProperty(name + ".litAgreement", std::to_string(f.lit.share()));
     test.RecordProperty(name + ".shadowedAgreement", std::to_string(f.shadowed.share()));
@@ -257,12 +255,12 @@ ContactFigures contactGaps(const scene::Scene& scene, const ShadowMask& mask, co
     const glm::vec2 footprintMin{cube.worldBounds.min.x, cube.worldBounds.min.z};
     const glm::vec2 footprintMax{cube.worldBounds.max.x, cube.worldBounds.max.z};
     ContactFigures c;
-    for (std::uint32_t y = 0; y < truth.visibility.height; ++y)
-        for (std::uint32_t x = 0; x < truth.visibility.width; ++x) {
+    for (std::uint32_t y = 0; y < truth.trace.visibility.height; ++y)
+        for (std::uint32_t x = 0; x < truth.trace.visibility.width; ++x) {
             const scene::GBufferSample& sample = truth.gbuffer.at(x, y);
-            if (sample.object != ground || truth.visibility.at(x, y) != scene::LightVisibility::Shadowed ||
-                !mask.visibility.decided[std::size_t(y) * truth.visibility.width + x] ||
-                nearLitPixel(truth.visibility, x, y))
+            if (sample.object != ground || truth.trace.visibility.at(x, y) != scene::LightVisibility::Shadowed ||
+                !mask.visibility.decided[std::size_t(y) * truth.trace.visibility.width + x] ||
+                nearLitPixel(truth.trace.visibility, x, y))
                 continue;
             const float d = footprintDistance(sample.position, footprintMin, footprintMax);
             if (d > texel && d < 4.0f * texel) {
@@ -384,10 +382,11 @@ TEST_F(ShadowMaskTest, MissingCasterCatchesFault)
         const KeyLightFigures k =
             measureKeyLight(*this, "without " + caster.name, broken, scene, truth, 1000, kClassBound);
         std::size_t exclusive = 0, reported = 0;
-        for (std::size_t i = 0; i < brokenTruth.visibility.pixels.size(); ++i) {
+        for (std::size_t i = 0; i < brokenTruth.trace.visibility.pixels.size(); ++i) {
             const scene::TruthVerdict v = k.truth.verdicts[i];
             if ((v == scene::TruthVerdict::ShadowedRight || v == scene::TruthVerdict::Leak) &&
-                brokenTruth.visibility.pixels[i] == scene::LightVisibility::Lit && !brokenTruth.shadowEdges[i]) {
+                brokenTruth.trace.visibility.pixels[i] == scene::LightVisibility::Lit &&
+                !brokenTruth.trace.shadowEdges[i]) {
                 ++exclusive;
                 reported += v == scene::TruthVerdict::Leak;
             }

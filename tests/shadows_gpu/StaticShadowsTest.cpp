@@ -374,7 +374,7 @@ TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowA
         render::traceLightTruth(scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows,
                                 sun);
     const scene::TruthComparison f =
-        scene::compareWithTruth(gbuffer, truth.visibility, render::renderedVisibility(cachedView), truth.shadowEdges);
+        render::compareLightTruth(truth, shadowRays, gbuffer, render::renderedVisibility(cachedView));
     std::printf("[ truth    ] %s town with static maps: lit %zu of %zu right, shadowed %zu of %zu right\n",
                 configuration().c_str(), f.lit.right, f.lit.compared, f.shadowed.right, f.shadowed.compared);
     EXPECT_GE(f.lit.share(), 0.99);

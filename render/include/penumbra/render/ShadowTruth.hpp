@@ -35,16 +35,29 @@ scene::ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef&
 // k sqrt 2, and half a texel of rasterisation. Taken at the default normal bias, so that a larger one shows.
 float shadowEdgeMarginTexels(shadows::ShadowFilter filter);
 
+// How far across the light's rays a correct lookup of `filter` reads around its point, in texels: the filter's reach
+// k (as in shadowEdgeMarginTexels) and half a texel of rasterisation.
+float lookupFootprintTexels(shadows::ShadowFilter filter);
+
 // The ray cast of `light` for every sample of `gbuffer`, and its shadow edges at the resolution `plans` give the
-// light (scene::traceShadowEdges with shadowEdgeMarginTexels texels).
+// light (scene::traceShadowEdges with shadowEdgeMarginTexels texels), and what compareLightTruth confirms
+// disagreements with: the rays and each pixel's lookup footprint (lookupFootprintTexels, around the receiver moved
+// by the default normal offset; radius 0 where the light has no shadow map).
 struct LightTruthTrace {
     scene::LightVisibilityMask visibility;
     std::vector<std::uint8_t> shadowEdges;
+    std::vector<scene::LookupFootprint> footprints;
+    scene::ShadowRayFrom rays;
 };
 LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
                                 const scene::CpuGBuffer& gbuffer, const ShadowPlans& plans,
                                 const shadows::ShadowSettings& settings, const scene::LightRef& light,
                                 const scene::TraceProgress& progress = {});
+
+// A rendered visibility against the trace: scene::compareWithTruth, its disagreements confirmed
+// (scene::confirmDisagreements) with the rays of `shadowRays`, the caster the trace was cast with.
+scene::TruthComparison compareLightTruth(const LightTruthTrace& trace, const scene::RayCaster& shadowRays,
+                                         const scene::CpuGBuffer& gbuffer, const scene::RenderedVisibility& rendered);
 
 // The light's name, or "<kind> <index>" when it has none.
 std::string lightLabel(const scene::Scene& scene, const scene::LightRef& light);

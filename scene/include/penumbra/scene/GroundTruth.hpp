@@ -39,6 +39,9 @@ Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, 
 struct GBufferSample {
     std::uint32_t object = kNoObject; // kNoObject: background
     std::uint32_t triangle = 0; // within the object's mesh
+    // The connected piece of the object's mesh the triangle belongs to (triangles joined by shared vertex positions):
+    // a leaf card of a tree, not the tree.
+    std::uint32_t surface = 0;
     glm::vec3 position{0.0f}; // world
     // Unit world normals turned towards the camera: back faces (seen through Clip holes)
     // report the side that was seen. `normal` is the flat triangle normal; `shadingNormal`

@@ -2,6 +2,8 @@
 
 #include "penumbra/scene/GroundTruth.hpp"
 
+#include <glm/vec3.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -20,8 +22,10 @@ struct RenderedVisibility {
     std::vector<std::uint8_t> decided;
 };
 
-// Pixels this close (in pixels, on either axis) to a change of ground-truth class or of object are shadow or
-// silhouette edges, where one pixel's answer depends on the sub-pixel position of an edge.
+// Pixels this close (in pixels, on either axis) to a change of ground-truth class or of surface are shadow or
+// silhouette edges, where one pixel's answer depends on the sub-pixel position of an edge. A neighbour is on
+// another surface when it belongs to another object or to another connected piece of the same object's mesh
+// (GBufferSample::surface): a leaf card seen in front of another of the same tree.
 inline constexpr int kTruthEdgeMargin = 2;
 // A pixel is rendered in shadow when less than half of the light gets through.
 inline constexpr float kShadowedBelow = 0.5f;
@@ -30,7 +34,7 @@ inline constexpr float kShadowedBelow = 0.5f;
 enum class TruthVerdict : std::uint8_t {
     NotCompared, // background, facing away from the light, not receiving
     Undecided, // truly lit or shadowed, but the shadow map has no say there
-    NearEdge, // within kTruthEdgeMargin of a change of class or object, or near a shadow edge in the light's view
+    NearEdge, // within kTruthEdgeMargin of a change of class or surface, or near a shadow edge in the light's view
     LitRight,
     ShadowedRight,
     Acne, // truly lit, rendered in shadow
@@ -70,20 +74,42 @@ struct TruthComparison {
 // and whose normal offset moves the lookup by up to b texels may place an edge anywhere within (f + b + 1/2) s of
 // the exact one, however many pixels that covers on screen (many, where light grazes a receiver). A sample is
 // near a shadow edge when its ray-cast visibility differs at one of 8 points around it on its tangent plane
-// whose projections across the light's rays lie radius(sample) (world units) from its own, in the directions
+// whose projections across the light's rays lie radii[sample] (world units, 0: none) from its own, in the directions
 // of a square's sides and diagonals (lifted off the plane by a tenth of their distance along it, over creases of
 // up to 5 degrees). A sample whose tangent plane is within 3 degrees of the light's rays is
-// near an edge. Returns 1 for those samples; 0 elsewhere and for samples neither truly lit nor shadowed.
+// near an edge. Returns 1 for those samples; 0 elsewhere and for samples neither truly lit nor shadowed. Throws
+// std::invalid_argument unless there is one radius per sample.
 std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                            const LightVisibilityMask& truth, const ShadowRayFrom& rayFrom,
-                                           const std::function<float(const GBufferSample&)>& radius,
-                                           const TraceProgress& progress = {});
+                                           const std::vector<float>& radii, const TraceProgress& progress = {});
 
 // `shadowEdges` (traceShadowEdges, or empty for none) adds its samples to the edges left out. Throws
 // std::invalid_argument when the pictures differ in size.
 TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth,
                                  const RenderedVisibility& rendered, const std::vector<std::uint8_t>& shadowEdges = {},
                                  int edgeMargin = kTruthEdgeMargin);
+
+// Where a correct shadow map's lookup for one pixel reads: the lookup point (world, the receiver moved by the
+// normal offset) and the radius across the light's rays (world units) that its filter and rasterisation reach;
+// radius 0 for none.
+struct LookupFootprint {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+// Disagreements (acne, leaks) confirmed against the footprint of the correct lookup. The ring of traceShadowEdges
+// misses features smaller than the gaps between its 8 points (a hole between leaves a texel wide, a leaf's tip),
+// which a shadow map resolves only to its texel: an acne or leak pixel whose ray-cast visibility differs anywhere in
+// footprints[pixel] (its centre and kFootprintRings rings filling it) is a resolution limit, not a fault, and becomes
+// NearEdge, leaving the compared figures of its class. A fault that moves the lookup (a larger normal bias) or drops
+// a caster leaves the correct footprint uniform and stays counted. The footprint is traced only where the verdict is
+// wrong (the ring's 8 rays per pixel are the price of every pixel), so right pixels near such small features stay
+// compared: the agreement shares can count a few more right pixels than a dense test everywhere, never more wrong
+// ones. Throws std::invalid_argument unless there are one footprint and one G-buffer sample per verdict.
+inline constexpr int kFootprintRings = 4;
+void confirmDisagreements(TruthComparison& comparison, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                          const LightVisibilityMask& truth, const ShadowRayFrom& rayFrom,
+                          const std::vector<LookupFootprint>& footprints);
 
 // Peter-panning: the largest distance along the light from a leak pixel to the surface that truly shadows it,
 // in shadow-map texels at that pixel (`texelSize(position)`, world units). Leaks farther than

@@ -1,0 +1,15 @@
+#pragma once
+
+#include "penumbra/scene/Geometry.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace penumbra::scene {
+
+// The connected surfaces of a mesh: per triangle, the index of its piece, triangles joined where they share a vertex
+// position (exactly, so that a cube whose faces keep their own vertices is one piece and a leaf card, whose
+// corners touch no other card, is its own). Pieces are numbered from 0 in order of their first triangle.
+std::vector<std::uint32_t> meshSurfaces(const MeshData& mesh);
+
+} // namespace penumbra::scene
