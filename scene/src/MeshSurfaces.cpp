@@ -37,9 +37,10 @@ std::vector<std::uint32_t> meshSurfaces(const MeshData& mesh)
     std::map<std::array<std::uint32_t, 3>, std::uint32_t> firstAt;
     for (std::uint32_t v = 0; v < mesh.vertices.size(); ++v) {
         const glm::vec3 p = mesh.vertices[v].position;
-        const auto [it, inserted] = firstAt.try_emplace(
-            {std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y), std::bit_cast<std::uint32_t>(p.z)},
-            v);
+        const auto [it, inserted] =
+            firstAt.try_emplace({std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y),
+                                 std::bit_cast<std::uint32_t>(p.z)},
+                                v);
         if (!inserted)
             join(parent, it->second, v);
     }
