@@ -14,7 +14,11 @@ void main()
 {
     const int mode = int(draw.material.z);
     const bool textured = draw.sampling.z > 0.5;
-    const float alpha = materialAlpha(draw.material.x, mode, vUv, textured, texture(baseColorMap, vUv).a);
+    // Level 0: a texel's depth is the caster's at the texel's centre, so its coverage is too. A mip level averages
+    // alpha over the texel's footprint and moves the cut-out edge by up to a texel (leaf cards grew and shrank
+    // against the ray cast by a texel); the shadow map is point-sampled either way.
+    const float alpha =
+        materialAlpha(draw.material.x, mode, vUv, textured, textureLod(baseColorMap, vUv, 0.0).a);
     const float threshold = mix(draw.material.y, interleavedGradientNoise(gl_FragCoord.xy + draw.sampling.xy),
                                 mode == PENUMBRA_CASTER_DITHER);
     if (alpha < threshold)

@@ -38,7 +38,7 @@ std::string debugName(const scene::TextureImage& image) { return "texture '" + i
 
 // The texture alpha that the first Clip material reading it as its base colour cuts at (its alphaCutoff over its
 // base colour's alpha, which multiplies the texture's): its mip levels keep level 0's alpha-tested coverage
-// (rhi::generateMipChain), so leaves do not thin out, lit or in shadow, as they recede.
+// (rhi::generateMipChain), so leaves do not thin out as they recede (the caster pass reads level 0).
 std::optional<float> clipCutoffOf(const scene::Scene& scene, std::uint32_t image)
 {
     for (const scene::Material& material : scene.materials) {
