@@ -1,10 +1,9 @@
 #include "penumbra/render/ShadowTruth.hpp"
 
-#include "penumbra/shadows/NormalOffset.hpp"
-
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
+#include "penumbra/shadows/NormalOffset.hpp"
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -157,8 +156,6 @@ LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaste
     const shadows::ShadowFilter filter =
         light.kind == scene::LightKind::Directional ? settings.directional.filter : settings.local.filter;
     const float margin = shadowEdgeMarginTexels(filter);
-    // The default normal offset's reach: the filter's reach k in texel diagonals (shadows::cascadeData).
-    const float reach = shadows::normalBiasFilterFactor(filter) * std::sqrt(2.0f);
     // Half the rows' progress for each of the two traces.
     const auto half = [&](std::uint32_t offset) -> scene::TraceProgress {
         if (!progress)
@@ -177,7 +174,9 @@ LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaste
         const float texel = shadowTexelSize(plans, settings, scene, light, sample.position);
         edgeRadii[i] = margin * texel;
         const glm::vec3 towardsLight = rays(sample.position).direction;
-        t.footprints[i] = {sample.position + shadows::receiverNormalOffset(sample.normal, towardsLight, reach * texel),
+        t.footprints[i] = {sample.position +
+                               shadows::receiverNormalOffset(sample.normal, towardsLight,
+                                                             shadows::normalOffsetReach(1.0f, texel, filter)),
                            lookupFootprintTexels(filter) * texel};
     }
     t.shadowEdges = scene::traceShadowEdges(shadowRays, gbuffer, t.visibility, rays, edgeRadii, half(gbuffer.height));

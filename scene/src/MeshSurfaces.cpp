@@ -48,12 +48,9 @@ std::vector<std::uint32_t> meshSurfaces(const MeshData& mesh)
         join(parent, mesh.indices[t], mesh.indices[t + 1]);
         join(parent, mesh.indices[t], mesh.indices[t + 2]);
     }
-    std::map<std::uint32_t, std::uint32_t> pieceOf;
     std::vector<std::uint32_t> surfaces(mesh.triangleCount());
-    for (std::uint32_t t = 0; t < surfaces.size(); ++t) {
-        const std::uint32_t r = root(parent, mesh.indices[3 * std::size_t(t)]);
-        surfaces[t] = pieceOf.try_emplace(r, static_cast<std::uint32_t>(pieceOf.size())).first->second;
-    }
+    for (std::uint32_t t = 0; t < surfaces.size(); ++t)
+        surfaces[t] = root(parent, mesh.indices[3 * std::size_t(t)]);
     return surfaces;
 }
 

@@ -1,5 +1,7 @@
 #include "penumbra/shadows/LocalLightProjection.hpp"
 
+#include "penumbra/shadows/NormalOffset.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -75,7 +77,7 @@ glm::vec4 perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSiz
 
 float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, ShadowFilter filter, float normalBias)
 {
-    return normalBias * texelSizeAtUnitDistance(projection, tileSize) * normalBiasFilterFactor(filter) * kSqrt2;
+    return normalOffsetReach(normalBias, texelSizeAtUnitDistance(projection, tileSize), filter);
 }
 
 float pointFaceFieldOfView(std::uint32_t tileSize, ShadowFilter filter, float normalBias)

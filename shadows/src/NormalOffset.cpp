@@ -14,4 +14,9 @@ glm::vec3 receiverNormalOffset(glm::vec3 geometricNormal, glm::vec3 towardsLight
     return n * (reach * std::sqrt(std::max(1.0f - cosine * cosine, 0.0f)));
 }
 
+float normalOffsetReach(float normalBias, float texelSize, ShadowFilter filter)
+{
+    return normalBias * texelSize * normalBiasFilterFactor(filter) * 1.41421356f;
+}
+
 } // namespace penumbra::shadows

@@ -6,6 +6,7 @@
 #include "penumbra/shadows/DirectionalSoftData.hpp"
 #include "penumbra/shadows/LightBasis.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
+#include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <algorithm>
@@ -16,8 +17,6 @@
 
 namespace penumbra::shadows {
 namespace {
-
-constexpr float kSqrt2 = 1.41421356f;
 
 // The sphere around the union of the static casters' boxes.
 Sphere boundingSphere(const StaticCasters& casters)
@@ -76,7 +75,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         const DirectionalShadowCascade fit = fitDirectionalCascade(sphere, lightSpace, plan.directionalAtlas.tileSize(),
                                                                    light.nearPlaneOffset, conventions);
         // The realtime cascades' normal offset: the filter-sized texel diagonal times the light's normal bias.
-        const float reach = light.normalBias * fit.texelSize * normalBiasFilterFactor(filter) * kSqrt2;
+        const float reach = normalOffsetReach(light.normalBias, fit.texelSize, filter);
         const bool casterSide = light.normalBiasSide == NormalBiasSide::Caster;
         ShadowViewDraw view{.viewProjection = fit.viewProjection,
                             .slopeScaleBias = light.slopeScaleBias,

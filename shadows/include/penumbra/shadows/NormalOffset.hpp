@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/shadows/ShadowSettings.hpp"
+
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -27,5 +29,9 @@ struct CasterNormalOffset {
 // reach * tan(theta) in light depth across a lookup that reaches `reach` world units around the receiver; moved d
 // along its normal the receiver is d / cos(theta) in front of the plane, so d = reach * sin(theta) clears it.
 glm::vec3 receiverNormalOffset(glm::vec3 geometricNormal, glm::vec3 towardsLight, float reach);
+
+// The normal offset's reach (world units) for a map of `texelSize` and `filter`: normalBias filter-sized texel
+// diagonals (the filter's reach k texels times sqrt 2, the worst case across a texel).
+float normalOffsetReach(float normalBias, float texelSize, ShadowFilter filter);
 
 } // namespace penumbra::shadows
