@@ -98,6 +98,9 @@ nlohmann::json lightReport(const scene::Scene& scene, const LightTruth& t)
             {"shadowedNearEdges", c.shadowed.nearEdges},
             {"litUndecided", c.lit.undecided},
             {"shadowedUndecided", c.shadowed.undecided},
+            {"ditheredCompared", c.dithered.compared},
+            {"ditheredExpectedLit", c.dithered.expectedLit()},
+            {"ditheredRenderedLit", c.dithered.renderedLit()},
             {"casters", casterReport(scene, c)}};
 }
 
@@ -195,6 +198,10 @@ void truth(const TruthOptions& options)
                    t.name, scene::lightKindName(t.light.kind), t.light.index, percent(c.agreement()), c.compared(),
                    percent(c.lit.share()), c.lit.compared, percent(c.shadowed.share()), c.shadowed.compared, c.acne(),
                    c.leaks(), t.contactGapTexels);
+        if (c.dithered.compared > 0)
+            fmt::print("  behind dithered casters only: {} pixels, {:.3f} of the light expected on average, {:.3f} "
+                       "rendered\n",
+                       c.dithered.compared, c.dithered.expectedLit(), c.dithered.renderedLit());
     }
     fmt::print("  wrote {}\n", (out / "truth.json").string());
 }

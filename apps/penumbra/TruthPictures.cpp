@@ -22,6 +22,7 @@ constexpr Rgb kAcneAndLeak{220, 40, 220};
 constexpr Rgb kNearEdge{70, 58, 30}; // dark amber: left out, neither right nor wrong
 constexpr Rgb kLitRight{180, 180, 180};
 constexpr Rgb kShadowedRight{90, 90, 90};
+constexpr Rgb kDithered{60, 130, 110}; // teal: behind dithered casters only, compared on average
 
 Rgb grey(float visibility)
 {
@@ -67,10 +68,19 @@ rhi::Image meanVisibilityPicture(std::span<const LightTruth> lights, VisibilityO
 rhi::Image raycastPicture(std::span<const LightTruth> lights)
 {
     return meanVisibilityPicture(lights, [](const LightTruth& t, std::size_t i) -> std::optional<float> {
-        const scene::LightVisibility v = t.raycast.pixels[i];
-        if (v != scene::LightVisibility::Lit && v != scene::LightVisibility::Shadowed)
+        switch (t.raycast.pixels[i]) {
+        case scene::LightVisibility::Lit:
+            return 1.0f;
+        case scene::LightVisibility::Shadowed:
+            return 0.0f;
+        case scene::LightVisibility::Dithered:
+            return 1.0f - t.raycast.ditherCoverage[i];
+        case scene::LightVisibility::Background:
+        case scene::LightVisibility::FacingAway:
+        case scene::LightVisibility::NotReceiving:
             return std::nullopt;
-        return v == scene::LightVisibility::Lit ? 1.0f : 0.0f;
+        }
+        return std::nullopt;
     });
 }
 
@@ -85,7 +95,7 @@ rhi::Image disagreementPicture(std::span<const LightTruth> lights)
 {
     const scene::TruthComparison& first = lights.front().comparison;
     return picture(first.width, first.height, [&](std::size_t i) {
-        bool acne = false, leak = false, edge = false, lit = false, shadowed = false;
+        bool acne = false, leak = false, edge = false, lit = false, shadowed = false, dithered = false;
         for (const LightTruth& t : lights) {
             const scene::TruthVerdict v = t.comparison.verdicts[i];
             acne |= v == scene::TruthVerdict::Acne;
@@ -93,6 +103,7 @@ rhi::Image disagreementPicture(std::span<const LightTruth> lights)
             edge |= v == scene::TruthVerdict::NearEdge;
             lit |= v == scene::TruthVerdict::LitRight;
             shadowed |= v == scene::TruthVerdict::ShadowedRight;
+            dithered |= v == scene::TruthVerdict::Dithered;
         }
         if (acne || leak)
             return acne && leak ? kAcneAndLeak : acne ? kAcne : kLeak;
@@ -100,6 +111,8 @@ rhi::Image disagreementPicture(std::span<const LightTruth> lights)
             return kNearEdge;
         if (lit || shadowed)
             return lit ? kLitRight : kShadowedRight;
+        if (dithered)
+            return kDithered;
         return isSurface(lights.front(), i) ? kNoLight : kBackground;
     });
 }

@@ -107,6 +107,13 @@ ShadowRayFrom raysTowards(glm::vec3 lightPosition)
     };
 }
 
+LightVisibility visibilityOf(const Occlusion& occlusion)
+{
+    if (occlusion.solid)
+        return LightVisibility::Shadowed;
+    return occlusion.ditherCoverage > 0.0f ? LightVisibility::Dithered : LightVisibility::Lit;
+}
+
 glm::vec3 shadowRayOrigin(const GBufferSample& sample, float normalOffset)
 {
     return sample.position + normalOffset * sample.normal;
@@ -119,7 +126,8 @@ LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowR
         throw std::invalid_argument("traceVisibility needs a RayCaster built with RayKind::Shadow");
     LightVisibilityMask mask{gbuffer.width, gbuffer.height,
                              std::vector<LightVisibility>(gbuffer.samples.size(), LightVisibility::Background),
-                             std::vector<std::uint32_t>(gbuffer.samples.size(), kNoObject)};
+                             std::vector<std::uint32_t>(gbuffer.samples.size(), kNoObject),
+                             std::vector<float>(gbuffer.samples.size(), 0.0f)};
     forEachRow(
         gbuffer.height,
         [&](std::uint32_t y) {
@@ -132,9 +140,11 @@ LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowR
                     mask.pixels[i] = LightVisibility::NotReceiving;
                 else if (glm::dot(sample.normal, ray.direction) <= 0.0f)
                     mask.pixels[i] = LightVisibility::FacingAway;
-                else if (!shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance))
-                    mask.pixels[i] = LightVisibility::Lit;
-                else {
+                else if (const Occlusion occlusion = shadowRays.occlusion(ray.origin, ray.direction, ray.maxDistance);
+                         !occlusion.solid) {
+                    mask.pixels[i] = visibilityOf(occlusion);
+                    mask.ditherCoverage[i] = occlusion.ditherCoverage;
+                } else {
                     mask.pixels[i] = LightVisibility::Shadowed;
                     const std::optional<Hit> blocker =
                         shadowRays.closestHit(ray.origin, ray.direction, ray.maxDistance);

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -31,6 +32,7 @@ struct AlphaTest {
     Material material;
     float threshold;
     std::optional<TextureImage> texture;
+    bool dithered; // a dithered caster seen by shadow rays: occlusion() reports its alpha apart
 };
 
 std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& material, RayKind kind)
@@ -41,10 +43,10 @@ std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& materi
         texture = scene.textures.at(baseColor->image);
     switch (material.caster) {
     case CasterMode::Clip:
-        return AlphaTest{material, material.alphaCutoff, std::move(texture)};
+        return AlphaTest{material, material.alphaCutoff, std::move(texture), false};
     case CasterMode::Dither:
         if (kind == RayKind::Shadow)
-            return AlphaTest{material, kDitherShadowThreshold, std::move(texture)};
+            return AlphaTest{material, kDitherShadowThreshold, std::move(texture), true};
         return std::nullopt;
     case CasterMode::On:
     case CasterMode::Off:
@@ -56,6 +58,18 @@ std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& materi
 bool isSeen(const Scene& scene, const Object& object, RayKind kind)
 {
     return kind == RayKind::Camera ? object.castShadows != ShadowCasting::ShadowsOnly : scene.castsShadows(object);
+}
+
+// The side of an object's triangles that the passes draw, as the sign that dot(front normal, ray direction)
+// must have (0: both sides). The lit pass culls back faces of single-sided materials; the shadow pass draws
+// the light-facing side of single-sided casters, and a shadow ray travels towards the light, so it meets
+// that side from behind.
+float drawnSide(const Scene& scene, const Object& object, RayKind kind)
+{
+    const bool doubleSided = scene.materialOf(object).doubleSided;
+    if (kind == RayKind::Camera)
+        return doubleSided ? 0.0f : -1.0f;
+    return doubleSided || object.castShadows == ShadowCasting::TwoSided ? 0.0f : 1.0f;
 }
 
 struct PreparedRay {
@@ -101,16 +115,30 @@ struct RayCaster::Data {
     std::vector<std::array<glm::vec2, 3>> uvs;
     // Per scene object.
     std::vector<std::optional<AlphaTest>> alphaTests;
+    std::vector<float> drawnSides;
 
-    bool blocks(std::uint32_t index, glm::vec2 barycentrics) const
+    bool drawnSideFaces(std::uint32_t index, const PreparedRay& ray) const
     {
-        const std::optional<AlphaTest>& test = alphaTests[sources[index].object];
-        if (!test)
-            return true;
+        const TriangleEdges& t = triangles[index];
+        return drawnSides[sources[index].object] * glm::dot(glm::cross(t.e1, t.e2), ray.direction) >= 0.0f;
+    }
+
+    // The alpha of an alpha-tested triangle at a hit.
+    float alpha(const AlphaTest& test, std::uint32_t index, glm::vec2 barycentrics) const
+    {
         const std::array<glm::vec2, 3>& uv = uvs[index];
         const glm::vec2 at =
             (1.0f - barycentrics.x - barycentrics.y) * uv[0] + barycentrics.x * uv[1] + barycentrics.y * uv[2];
-        return materialAlpha(test->material, at, test->texture ? &*test->texture : nullptr) >= test->threshold;
+        return materialAlpha(test.material, at, test.texture ? &*test.texture : nullptr);
+    }
+
+    // Whether a hit on triangle `index` stops the ray: the drawn side, and not in a hole.
+    bool blocks(std::uint32_t index, const PreparedRay& ray, glm::vec2 barycentrics) const
+    {
+        if (!drawnSideFaces(index, ray))
+            return false;
+        const std::optional<AlphaTest>& test = alphaTests[sources[index].object];
+        return !test || alpha(*test, index, barycentrics) >= test->threshold;
     }
 
     // Visits the triangles of every leaf the ray reaches within maxDistance, nearer boxes
@@ -168,6 +196,7 @@ RayCaster::RayCaster(const Scene& scene, RayKind kind) : data_(std::make_unique<
         const Object& object = scene.objects[objectIndex];
         const Material& material = scene.materialOf(object);
         data_->alphaTests.push_back(alphaTestFor(scene, material, kind));
+        data_->drawnSides.push_back(drawnSide(scene, object, kind));
         if (!isSeen(scene, object, kind))
             continue;
         const MeshData& mesh = scene.meshOf(object);
@@ -217,10 +246,32 @@ bool RayCaster::occluded(const glm::vec3& origin, const glm::vec3& direction, fl
         const TriangleEdges& t = data_->triangles[i];
         const std::optional<TriangleHit> hit =
             detail::intersectEdges(ray.origin, ray.direction, t.v0, t.e1, t.e2, limit);
-        found = hit && data_->blocks(i, hit->barycentrics);
+        found = hit && data_->blocks(i, ray, hit->barycentrics);
         return found;
     });
     return found;
+}
+
+Occlusion RayCaster::occlusion(const glm::vec3& origin, const glm::vec3& direction, float maxDistance) const
+{
+    const PreparedRay ray = prepare(origin, direction);
+    Occlusion result;
+    data_->traverse(ray, maxDistance, [&](std::uint32_t i, float& limit) {
+        const TriangleEdges& t = data_->triangles[i];
+        const std::optional<TriangleHit> hit =
+            detail::intersectEdges(ray.origin, ray.direction, t.v0, t.e1, t.e2, limit);
+        if (!hit)
+            return false;
+        const std::optional<AlphaTest>& test = data_->alphaTests[data_->sources[i].object];
+        if (!test || !test->dithered) {
+            result.solid = data_->blocks(i, ray, hit->barycentrics);
+            return result.solid;
+        }
+        if (data_->drawnSideFaces(i, ray))
+            result.ditherCoverage = std::max(result.ditherCoverage, data_->alpha(*test, i, hit->barycentrics));
+        return false;
+    });
+    return result;
 }
 
 std::optional<Hit> RayCaster::closestHit(const glm::vec3& origin, const glm::vec3& direction, float maxDistance) const
@@ -232,7 +283,7 @@ std::optional<Hit> RayCaster::closestHit(const glm::vec3& origin, const glm::vec
         const TriangleEdges& t = data_->triangles[i];
         const std::optional<TriangleHit> hit =
             detail::intersectEdges(ray.origin, ray.direction, t.v0, t.e1, t.e2, limit);
-        if (hit && data_->blocks(i, hit->barycentrics)) {
+        if (hit && data_->blocks(i, ray, hit->barycentrics)) {
             best = hit;
             bestIndex = i;
             limit = hit->distance;

@@ -41,7 +41,13 @@ constexpr float kCreaseLift = 0.1f;
 // sin(3 degrees): below it a tangent-plane step that moves radius across the rays runs 19 radii along the surface.
 constexpr float kGrazing = 0.052f;
 
-bool nearShadowEdge(const RayCaster& shadowRays, const GBufferSample& sample, bool shadowed,
+// Whether a shadow ray's class differs from `expected`.
+bool differs(const RayCaster& shadowRays, const ShadowRay& ray, LightVisibility expected)
+{
+    return visibilityOf(shadowRays.occlusion(ray.origin, ray.direction, ray.maxDistance)) != expected;
+}
+
+bool nearShadowEdge(const RayCaster& shadowRays, const GBufferSample& sample, LightVisibility expected,
                     const ShadowRayFrom& rayFrom, float radius)
 {
     const glm::vec3 towardsLight = rayFrom(shadowRayOrigin(sample)).direction;
@@ -57,8 +63,7 @@ bool nearShadowEdge(const RayCaster& shadowRays, const GBufferSample& sample, bo
         // (a heightfield's creases) instead of testing the receiver's own underside.
         const glm::vec3 step = a - towardsLight * (glm::dot(a, sample.normal) / facing);
         const float lift = kShadowRayOffset + kCreaseLift * glm::length(step);
-        const ShadowRay ray = rayFrom(sample.position + step + lift * sample.normal);
-        if (shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance) != shadowed)
+        if (differs(shadowRays, rayFrom(sample.position + step + lift * sample.normal), expected))
             return true;
     }
     return false;
@@ -68,7 +73,7 @@ bool nearShadowEdge(const RayCaster& shadowRays, const GBufferSample& sample, bo
 // and on kFootprintRings rings filling it (ring j at radius * j / kFootprintRings, of 8 j points), across the light's
 // rays. A point below the receiver's plane (lifted as nearShadowEdge lifts) moves along its ray onto it, so that
 // the receiver does not shadow itself.
-bool footprintHasEdge(const RayCaster& shadowRays, const GBufferSample& sample, bool shadowed,
+bool footprintHasEdge(const RayCaster& shadowRays, const GBufferSample& sample, LightVisibility expected,
                       const ShadowRayFrom& rayFrom, const LookupFootprint& footprint)
 {
     const glm::vec3 towardsLight = rayFrom(shadowRayOrigin(sample)).direction;
@@ -76,6 +81,7 @@ bool footprintHasEdge(const RayCaster& shadowRays, const GBufferSample& sample, 
     if (facing < kGrazing)
         return true;
     const std::array<glm::vec3, 2> across = acrossRay(towardsLight);
+    std::vector<glm::vec3> points;
     for (int ring = 0; ring <= kFootprintRings; ++ring)
         for (int k = 0; k < std::max(8 * ring, 1); ++k) {
             const float angle = 0.25f * 3.14159265f * static_cast<float>(k) / static_cast<float>(std::max(ring, 1));
@@ -85,11 +91,10 @@ bool footprintHasEdge(const RayCaster& shadowRays, const GBufferSample& sample, 
             const float height = glm::dot(point - sample.position, sample.normal);
             if (height < lift)
                 point += towardsLight * ((lift - height) / facing);
-            const ShadowRay ray = rayFrom(point);
-            if (shadowRays.occluded(ray.origin, ray.direction, ray.maxDistance) != shadowed)
-                return true;
+            points.push_back(point);
         }
-    return false;
+    return std::any_of(points.begin(), points.end(),
+                       [&](const glm::vec3& point) { return differs(shadowRays, rayFrom(point), expected); });
 }
 
 } // namespace
@@ -109,8 +114,7 @@ std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const Cp
                 if (v != LightVisibility::Lit && v != LightVisibility::Shadowed)
                     continue;
                 const float r = radii[i];
-                edges[i] = r > 0.0f &&
-                           nearShadowEdge(shadowRays, gbuffer.samples[i], v == LightVisibility::Shadowed, rayFrom, r);
+                edges[i] = r > 0.0f && nearShadowEdge(shadowRays, gbuffer.samples[i], v, rayFrom, r);
             }
         },
         progress);
@@ -127,11 +131,19 @@ TruthComparison compareWithTruth(const CpuGBuffer& gbuffer, const LightVisibilit
                                     "visibility must have the same size");
     TruthComparison c{
         truth.width, truth.height, std::vector<TruthVerdict>(truth.pixels.size(), TruthVerdict::NotCompared),
-        {},          {},           {}};
+        {},          {},           {},
+        {}};
     for (std::uint32_t y = 0; y < truth.height; ++y)
         for (std::uint32_t x = 0; x < truth.width; ++x) {
             const std::size_t i = std::size_t(y) * truth.width + x;
             const LightVisibility expected = truth.pixels[i];
+            if (expected == LightVisibility::Dithered && rendered.decided[i] &&
+                !nearEdge(gbuffer, truth, x, y, edgeMargin)) {
+                ++c.dithered.compared;
+                c.dithered.expectedLitSum += 1.0 - double(truth.ditherCoverage.at(i));
+                c.dithered.renderedLitSum += double(rendered.lit[i]);
+                c.verdicts[i] = TruthVerdict::Dithered;
+            }
             if (expected != LightVisibility::Lit && expected != LightVisibility::Shadowed)
                 continue;
             const bool shadowedTruly = expected == LightVisibility::Shadowed;
@@ -169,7 +181,8 @@ void confirmDisagreements(TruthComparison& comparison, const RayCaster& shadowRa
         TruthVerdict& verdict = comparison.verdicts[i];
         const bool leak = verdict == TruthVerdict::Leak;
         if ((!leak && verdict != TruthVerdict::Acne) || footprints[i].radius <= 0.0f ||
-            !footprintHasEdge(shadowRays, gbuffer.samples[i], leak, rayFrom, footprints[i]))
+            !footprintHasEdge(shadowRays, gbuffer.samples[i], leak ? LightVisibility::Shadowed : LightVisibility::Lit,
+                              rayFrom, footprints[i]))
             continue;
         verdict = TruthVerdict::NearEdge;
         TruthClassFigures& figures = leak ? comparison.shadowed : comparison.lit;

@@ -16,7 +16,8 @@ namespace {
 
 glm::mat4 at(const glm::vec3& position) { return glm::translate(glm::mat4(1.0f), position); }
 
-Scene singleMeshScene(MeshData mesh, const glm::mat4& transform, Material material = {})
+// Double-sided by default: seen from either side by both kinds of ray.
+Scene singleMeshScene(MeshData mesh, const glm::mat4& transform, Material material = {.doubleSided = true})
 {
     Scene scene;
     scene.addObject("only", scene.addMesh(std::move(mesh)), scene.addMaterial(std::move(material)), transform);
@@ -80,12 +81,14 @@ TEST(RayCasterTest, TriangleIndexAndBarycentricsReferToTheMesh)
     EXPECT_NEAR(glm::dot(hit->normal, glm::vec3(0, 1, 0)), 1.0f, 1e-6f);
 }
 
-// The test scene with every material made a solid caster, so brute force needs no alpha.
+// The test scene with every material made a solid double-sided caster, so brute force needs no alpha nor culling.
 Scene solidTestScene()
 {
     Scene scene = makeShadowTestScene();
-    for (Material& material : scene.materials)
+    for (Material& material : scene.materials) {
         material.caster = CasterMode::On;
+        material.doubleSided = true;
+    }
     return scene;
 }
 
@@ -188,6 +191,49 @@ TEST(RayCasterTest, DitherCastersThresholdAlphaAtOneHalfForShadowsOnly)
     EXPECT_TRUE(RayCaster(panelScene(CasterMode::Dither, 0.6f)).occluded(below, {0, 1, 0}));
     EXPECT_FALSE(RayCaster(panelScene(CasterMode::Dither, 0.4f)).occluded(below, {0, 1, 0}));
     EXPECT_TRUE(RayCaster(panelScene(CasterMode::Dither, 0.4f), RayKind::Camera).occluded(below, {0, 1, 0}));
+}
+
+TEST(RayCasterTest, DitheredCastersAreReportedApartWithTheirLargestAlpha)
+{
+    const glm::vec3 below{-0.6f, 0, -1.2f};
+    const Occlusion dithered = RayCaster(panelScene(CasterMode::Dither, 0.3f)).occlusion(below, {0, 1, 0});
+    EXPECT_FALSE(dithered.solid);
+    EXPECT_FLOAT_EQ(dithered.ditherCoverage, 0.3f);
+    Scene layered = panelScene(CasterMode::Dither, 0.3f);
+    layered.addObject("upper panel", layered.addMesh(makeBox({1.5f, 0.05f, 1.5f})),
+                      layered.addMaterial({.baseColor = {1, 1, 1, 0.7f}, .caster = CasterMode::Dither}), at({0, 4, 0}));
+    EXPECT_FLOAT_EQ(RayCaster(layered).occlusion(below, {0, 1, 0}).ditherCoverage, 0.7f);
+    layered.addObject("roof", layered.addMesh(makeBox({1.5f, 0.05f, 1.5f})), layered.addMaterial({}), at({0, 6, 0}));
+    EXPECT_TRUE(RayCaster(layered).occlusion(below, {0, 1, 0}).solid);
+    const Occlusion open = RayCaster(layered).occlusion({10, 0, 0}, {0, 1, 0});
+    EXPECT_FALSE(open.solid);
+    EXPECT_EQ(open.ditherCoverage, 0.0f);
+}
+
+// The passes' culling: the lit pass draws the front of single-sided materials, the shadow pass the light-facing
+// side of single-sided casters (a shadow ray leaves through it), both sides of double-sided materials and of
+// two-sided casters.
+TEST(RayCasterTest, SingleSidedSurfacesAreSeenFromTheSideThePassesDraw)
+{
+    const glm::vec3 above{0.3f, 5, -0.4f}, below{0.3f, -5, -0.4f};
+    const glm::vec3 up{0, 1, 0}, down{0, -1, 0};
+    Scene scene = singleMeshScene(makePlane(1.0f), glm::mat4(1.0f), {}); // faces +y
+    EXPECT_TRUE(RayCaster(scene, RayKind::Camera).occluded(above, down));
+    EXPECT_FALSE(RayCaster(scene, RayKind::Camera).occluded(below, up));
+    EXPECT_TRUE(RayCaster(scene).occluded(below, up)); // light above: the front faces it
+    EXPECT_FALSE(RayCaster(scene).occluded(above, down)); // light below: the front faces away
+    scene.objects[0].castShadows = ShadowCasting::TwoSided;
+    EXPECT_TRUE(RayCaster(scene).occluded(above, down));
+    EXPECT_FALSE(RayCaster(scene, RayKind::Camera).occluded(below, up));
+    scene.materials[0].doubleSided = true;
+    scene.objects[0].castShadows = ShadowCasting::On;
+    EXPECT_TRUE(RayCaster(scene).occluded(above, down));
+    EXPECT_TRUE(RayCaster(scene, RayKind::Camera).occluded(below, up));
+    // A closed single-sided mesh blocks from every side.
+    const RayCaster box(singleMeshScene(makeBox({1, 1, 1}), glm::mat4(1.0f), {}));
+    EXPECT_TRUE(box.occluded(below, up));
+    EXPECT_TRUE(box.occluded(above, down));
+    EXPECT_FLOAT_EQ(box.closestHit(below, up)->distance, 6.0f); // through the culled bottom, to the top
 }
 
 TEST(RayCasterTest, OffCastersAreOnlySeenByTheCamera)

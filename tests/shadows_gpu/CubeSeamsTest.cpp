@@ -25,6 +25,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <ostream>
+#include <set>
 #include <vector>
 
 namespace penumbra::shadows {
@@ -52,27 +53,42 @@ struct EdgeProbe {
     CubeFace faces[2];
 };
 
-// Every surface facing the light along a ray, nearest first.
+// Every receiving surface facing the light along a ray, nearest first, outside the room's closed objects: `rays`
+// sees both sides, the ray enters an object through a face towards the light and leaves it through one facing away,
+// and a surface it meets inside another object (the floor under a wall) is buried, no receiver.
 std::vector<scene::Hit> receiversAlong(const scene::Scene& scene, const scene::RayCaster& rays, glm::vec3 light,
                                        glm::vec3 direction)
 {
     std::vector<scene::Hit> hits;
+    std::set<std::uint32_t> inside;
     float travelled = 0.0f;
     while (const auto hit = rays.closestHit(light + direction * travelled, direction)) {
         scene::Hit h = *hit;
         h.distance += travelled;
         travelled = h.distance + 1e-3f;
-        if (glm::dot(h.normal, direction) < 0.0f && scene.materialOf(scene.objects[h.object]).receiveShadows)
+        if (glm::dot(h.normal, direction) >= 0.0f) {
+            inside.erase(h.object);
+            continue;
+        }
+        if (inside.empty() && scene.materialOf(scene.objects[h.object]).receiveShadows)
             hits.push_back(h);
+        inside.insert(h.object);
     }
     return hits;
+}
+
+scene::Scene seenFromBothSides(scene::Scene scene)
+{
+    for (scene::Material& material : scene.materials)
+        material.doubleSided = true;
+    return scene;
 }
 
 // Along each of the twelve edges (two axes of equal magnitude), rays nudged a quarter texel (of a face
 // `faceSize` texels wide) into either face; receivers paired where both rays meet the same surface.
 std::vector<EdgeProbe> edgeProbes(const scene::Scene& scene, glm::vec3 light, std::uint32_t faceSize)
 {
-    const scene::RayCaster rays(scene, scene::RayKind::Camera);
+    const scene::RayCaster rays(seenFromBothSides(scene), scene::RayKind::Camera);
     // tan of the angle to the edge is 1 - 2 nudge: 2 nudge / (2 / faceSize) texels from it.
     const float nudge = 0.25f / float(faceSize);
     std::vector<EdgeProbe> probes;

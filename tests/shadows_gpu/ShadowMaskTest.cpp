@@ -11,6 +11,7 @@
 #include "penumbra/scene/TruthComparison.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -99,9 +100,16 @@ std::string describe(const scene::TruthClassFigures& c)
 
 std::string describe(const TruthFigures& f)
 {
-    return fmt::format("lit {}; shadowed {}; acne {}, leaks {}", describe(f.lit), describe(f.shadowed), f.acne(),
-                       f.leaks());
+    return fmt::format("lit {}; shadowed {}; acne {}, leaks {}; behind dithered casters {}, {:.3f} lit on average "
+                       "({:.3f} expected)",
+                       describe(f.lit), describe(f.shadowed), f.acne(), f.leaks(), f.dithered.compared,
+                       f.dithered.renderedLit(), f.dithered.expectedLit());
 }
+
+// A dithered shadow's mean light, judged where this many pixels average out the stipple, within this much of the
+// expected mean.
+constexpr std::size_t kDitheredMinimum = 100;
+constexpr double kDitheredMeanBound = 0.05;
 
 // What the ground truth claims, as failures; the tests assert there are none, the negative controls that
 // there are some. Acne: at most 1 of 1000 lit pixels shadowed away from edges.
@@ -120,6 +128,10 @@ std::vector<std::string> truthFailures(const TruthFigures& f, std::size_t minimu
                                        100.0 * f.shadowed.share(), 100.0 * shadowedBound));
     if (f.acne() > f.lit.compared / 1000)
         failures.push_back(fmt::format("acne: {} truly lit pixels rendered dark", f.acne()));
+    if (f.dithered.compared >= kDitheredMinimum &&
+        std::abs(f.dithered.renderedLit() - f.dithered.expectedLit()) > kDitheredMeanBound)
+        failures.push_back(fmt::format("behind dithered casters {:.3f} of the light on average, {:.3f} expected",
+                                       f.dithered.renderedLit(), f.dithered.expectedLit()));
     return failures;
 }
 
@@ -131,16 +143,7 @@ std::string joined(const std::vector<std::string>& lines)
     return out;
 }
 
-// The dithered caster made solid, as the ray cast counts it (its shadow is a stipple of about 60%).
-scene::Scene withSolidCasters(scene::Scene scene)
-{
-    for (scene::Material& material : scene.materials)
-        if (material.caster == scene::CasterMode::Dither)
-            material.caster = scene::CasterMode::On;
-    return scene;
-}
-
-// The mixed scene with one spot or point light kept, brightened to decide most of what it reaches, solid casters.
+// The mixed scene with one spot or point light kept, brightened to decide most of what it reaches.
 scene::Scene oneLocalLight(bool spot, std::size_t index)
 {
     scene::Scene scene = scene::makeMixedLightsScene();
@@ -154,7 +157,7 @@ scene::Scene oneLocalLight(bool spot, std::size_t index)
         scene.pointLights[0].intensity *= 6.0f;
         scene.spotLights.clear();
     }
-    return withSolidCasters(std::move(scene));
+    return scene;
 }
 
 // The ray-cast reference of a scene from its camera: what each pixel shows, whether it sees the light, where its
@@ -228,10 +231,10 @@ TEST_F(ShadowMaskTest, PointShadowsAgreeWithTheRayCast)
     checkPositionalLight(*this, room, "room-cube-map", kPoint, cubeMaps);
 }
 
-// The key light's scene with solid casters, the sun `pitchDegrees` above the horizon (the scene's own: 50).
+// The key light's scene, the sun `pitchDegrees` above the horizon (the scene's own: 50).
 scene::Scene keyLightScene(float pitchDegrees = 50.0f)
 {
-    scene::Scene scene = withSolidCasters(scene::makeSingleLightScene());
+    scene::Scene scene = scene::makeSingleLightScene();
     scene.lights[0].direction = scene::lightDirection(glm::radians(pitchDegrees), glm::radians(30.0f));
     return scene;
 }

@@ -43,7 +43,7 @@ struct GBufferSample {
     // a leaf card of a tree, not the tree.
     std::uint32_t surface = 0;
     glm::vec3 position{0.0f}; // world
-    // Unit world normals turned towards the camera: back faces (seen through Clip holes)
+    // Unit world normals turned towards the camera: back faces (of double-sided materials)
     // report the side that was seen. `normal` is the flat triangle normal; `shadingNormal`
     // interpolates the mesh's vertex normals as the lit pass does.
     glm::vec3 normal{0.0f};
@@ -76,6 +76,9 @@ enum class LightVisibility : std::uint8_t {
     Background, // no surface
     Lit, // faces the light and nothing blocks it
     Shadowed, // faces the light, something blocks it
+    // Faces the light, only dithered casters block it: their shadow is a stipple whose share of lit texels is
+    // 1 - ditherCoverage, so a pixel's answer depends on the dither, not on the shadow's place; compare on average.
+    Dithered,
     FacingAway, // the light arrives from behind the surface (dot(normal, -direction) <= 0): unlit, shadow or not
     NotReceiving, // the material has receiveShadows = false: drawn lit whatever blocks it
 };
@@ -86,6 +89,8 @@ struct LightVisibilityMask {
     std::vector<LightVisibility> pixels; // row-major, row 0 at the top
     // Where Shadowed: the object the shadow ray meets first (the caster nearest the receiver); kNoObject elsewhere.
     std::vector<std::uint32_t> blockers;
+    // Where Dithered: Occlusion::ditherCoverage of its shadow ray; 0 elsewhere.
+    std::vector<float> ditherCoverage;
 
     LightVisibility at(std::uint32_t x, std::uint32_t y) const { return pixels[std::size_t(y) * width + x]; }
 };
@@ -103,6 +108,9 @@ struct ShadowRay {
 using ShadowRayFrom = std::function<ShadowRay(glm::vec3 origin)>;
 ShadowRayFrom raysTowards(const DirectionalLight& light);
 ShadowRayFrom raysTowards(glm::vec3 lightPosition);
+
+// A shadow ray's class: Shadowed behind a solid blocker, else Dithered behind dithered ones, else Lit.
+LightVisibility visibilityOf(const Occlusion& occlusion);
 
 // Where a sample's shadow ray leaves: position + normal * normalOffset.
 glm::vec3 shadowRayOrigin(const GBufferSample& sample, float normalOffset = kShadowRayOffset);

@@ -22,6 +22,10 @@ namespace penumbra::scene {
 // statistically, not per pixel. Camera is what the lit pass draws: Clip materials are
 // clipped there too, Dither ones are drawn solid. Per object, Object::castShadows Off removes the
 // object from Shadow rays and ShadowsOnly from Camera rays.
+// Faces are culled as the passes cull them: Camera rays see only the front (CCW) side of
+// single-sided materials, Shadow rays only the light-facing side of single-sided casters (the
+// side a ray towards the light leaves through); doubleSided materials, and for Shadow rays
+// ShadowCasting::TwoSided objects, are seen from both sides.
 enum class RayKind : std::uint8_t { Shadow, Camera };
 
 inline constexpr float kDitherShadowThreshold = 0.5f;
@@ -36,8 +40,19 @@ struct Hit {
 
 // Ground-truth visibility on the CPU: world-space triangles of a scene in a BVH (binned
 // SAH). The caster copies what it needs; the scene may change or go away afterwards.
-// Rays are two-sided, directions need not be unit (they are normalised), and hits count at
+// Shadow rays must travel towards the light (the culling above assumes it); directions
+// need not be unit (they are normalised), and hits count at
 // 0 < distance <= maxDistance, so rays leaving a surface must start slightly off it.
+// What a shadow ray meets on its way to the light. A dithered caster's shadow map keeps a texel
+// where its alpha reaches the texel's dither threshold, one threshold per texel for every layer,
+// so the light it lets through is 1 - the largest alpha among the dithered surfaces crossed.
+struct Occlusion {
+    bool solid = false; // blocked by a surface that is not dithered
+    // The largest alpha of the dithered surfaces crossed, 0 for none; where solid, only of those
+    // met before the solid blocker was found.
+    float ditherCoverage = 0.0f;
+};
+
 class RayCaster {
 public:
     explicit RayCaster(const Scene& scene, RayKind kind = RayKind::Shadow);
@@ -51,6 +66,9 @@ public:
     // Any hit; stops at the first one.
     bool occluded(const glm::vec3& origin, const glm::vec3& direction,
                   float maxDistance = std::numeric_limits<float>::infinity()) const;
+    // Solid blockers and dithered ones apart, with the dithered ones' alpha instead of its threshold.
+    Occlusion occlusion(const glm::vec3& origin, const glm::vec3& direction,
+                        float maxDistance = std::numeric_limits<float>::infinity()) const;
     std::optional<Hit> closestHit(const glm::vec3& origin, const glm::vec3& direction,
                                   float maxDistance = std::numeric_limits<float>::infinity()) const;
 

@@ -14,7 +14,7 @@ struct TriangleHit {
     glm::vec2 barycentrics;
 };
 
-// Moller-Trumbore, two-sided (a shadow ray is blocked by either side of a surface).
+// Moller-Trumbore, two-sided: either side is hit (RayCaster decides which sides count).
 // Hits with 0 < distance <= maxDistance count; distance is in units of |direction|.
 // Edge-on rays and degenerate triangles miss.
 std::optional<TriangleHit> intersectRayTriangle(const glm::vec3& origin, const glm::vec3& direction,

@@ -39,6 +39,7 @@ enum class TruthVerdict : std::uint8_t {
     ShadowedRight,
     Acne, // truly lit, rendered in shadow
     Leak, // truly shadowed, rendered lit
+    Dithered, // truly behind dithered casters only, away from edges: compared on average (TruthComparison::dithered)
 };
 
 // The pixels of one ground-truth class: compared ones, and those left out (and why).
@@ -51,6 +52,17 @@ struct TruthClassFigures {
     double share() const { return compared == 0 ? 0.0 : double(right) / double(compared); }
 };
 
+// The pixels behind dithered casters only, away from edges and where the shadow map decides: the light a correct
+// map lets through them on average (1 - LightVisibilityMask::ditherCoverage) and the light it did.
+struct DitheredFigures {
+    std::size_t compared = 0;
+    double expectedLitSum = 0.0;
+    double renderedLitSum = 0.0;
+
+    double expectedLit() const { return compared == 0 ? 0.0 : expectedLitSum / double(compared); }
+    double renderedLit() const { return compared == 0 ? 0.0 : renderedLitSum / double(compared); }
+};
+
 // Figures per class, so that a picture of mostly lit pixels cannot hide a missing shadow.
 struct TruthComparison {
     std::uint32_t width = 0;
@@ -61,6 +73,7 @@ struct TruthComparison {
     // The shadowed class by the caster nearest each receiver (LightVisibilityMask::blockers): a missing or
     // misplaced caster shows in its own figures however small its shadow is beside the others.
     std::map<std::uint32_t, TruthClassFigures> shadowedBy;
+    DitheredFigures dithered;
 
     std::size_t compared() const { return lit.compared + shadowed.compared; }
     std::size_t acne() const { return lit.compared - lit.right; }
@@ -77,7 +90,8 @@ struct TruthComparison {
 // whose projections across the light's rays lie radii[sample] (world units, 0: none) from its own, in the directions
 // of a square's sides and diagonals (lifted off the plane by a tenth of their distance along it, over creases of
 // up to 5 degrees). A sample whose tangent plane is within 3 degrees of the light's rays is
-// near an edge. Returns 1 for those samples; 0 elsewhere and for samples neither truly lit nor shadowed. Throws
+// near an edge. The points' visibility is a class (visibilityOf), so that a dithered shadow's outline is an edge too.
+// Returns 1 for those samples; 0 elsewhere and for samples neither truly lit nor shadowed. Throws
 // std::invalid_argument unless there is one radius per sample.
 std::vector<std::uint8_t> traceShadowEdges(const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                            const LightVisibilityMask& truth, const ShadowRayFrom& rayFrom,
