@@ -1,5 +1,6 @@
 #include "penumbra/render/ShadowTruth.hpp"
 
+#include "penumbra/render/SoftShadowTruth.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
@@ -153,8 +154,8 @@ LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaste
                                 const scene::TraceProgress& progress)
 {
     const scene::ShadowRayFrom rays = truthRays(scene, light);
-    const shadows::ShadowFilter filter =
-        light.kind == scene::LightKind::Directional ? settings.directional.filter : settings.local.filter;
+    // The light's own filter (its shadowFilter, else the atlas's): its reach sets the lit pass's normal offset.
+    const shadows::ShadowFilter filter = plannedShadowFilter(plans, light);
     const float margin = shadowEdgeMarginTexels(filter);
     // Half the rows' progress for each of the two traces.
     const auto half = [&](std::uint32_t offset) -> scene::TraceProgress {
