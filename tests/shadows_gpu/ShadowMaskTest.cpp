@@ -341,6 +341,20 @@ TEST_F(ShadowMaskTest, ForestAgreesWithTheRayCastWithEveryFilter)
     }
 }
 
+// A light's own filter, wider than the atlas's, sets its lookup's reach and so the ground truth's edge margin: the
+// contact scene's sun with PCF 7x7 under the default atlas filter (judged with the atlas's margin: 95 leaks along the
+// slab's shadow at 1280 x 720). Its casters are thin for a 7x7 tent's margin of about 9 texels, so about 350
+// shadowed pixels are left to judge.
+TEST_F(ShadowMaskTest, ALightsOwnFilterIsJudgedWithItsReach)
+{
+    scene::Scene scene = scene::makeContactScene();
+    scene.lights[0].shadowFilter = static_cast<std::int32_t>(shadows::ShadowFilter::PCF7x7);
+    const render::FrameDesc frame = maskFrame({}, 1280, 720, kKeyLight);
+    const TruthFigures f = report(*this, "contact pcf7", renderMask(scene, frame), traceTruth(gpu(), scene, frame));
+    const std::vector<std::string> failures = truthFailures(f, 300);
+    EXPECT_TRUE(failures.empty()) << joined(failures);
+}
+
 // The caster-side normal bias (the shadow pass moves casters away from the light; the lit pass looks up where the
 // surface is) against the same ray cast, high and low sun: the same class bounds. Its cost is at contacts: the cube
 // shrinks away from the ground, measured 5 of 139 contact samples lit at 50 degrees (0 of 89 at 20), which the
