@@ -62,13 +62,11 @@ inline scene::Scene withoutShadows(scene::Scene scene)
     return scene;
 }
 
-// The same scene with object `name` casting no shadow (its material copied, so objects sharing it still cast).
+// The same scene with object `name` casting no shadow and drawn as before (Object::castShadows off: a material
+// whose caster mode is off would also lose its alpha-tested holes).
 inline scene::Scene withoutCaster(scene::Scene scene, const std::string& name)
 {
-    scene::Object& object = scene.objects.at(scene.findObject(name).value());
-    scene::Material material = scene.materialOf(object);
-    material.caster = scene::CasterMode::Off;
-    object.material = scene.addMaterial(std::move(material));
+    scene.objects.at(scene.findObject(name).value()).castShadows = scene::ShadowCasting::Off;
     return scene;
 }
 
