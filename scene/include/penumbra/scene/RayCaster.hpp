@@ -18,8 +18,8 @@ namespace penumbra::scene {
 //   Camera         solid            holes: alpha < alphaCutoff   solid                       solid
 // alpha = materialAlpha(material, uv at the hit, its base colour texture). Shadow is the ground truth for shadow maps:
 // a dithered caster's expected coverage is its alpha, which a binary answer cannot give, so
-// the ground truth thresholds it at kDitherShadowThreshold; compare dithered shadows
-// statistically, not per pixel. Camera is what the lit pass draws: Clip materials are
+// occluded() and closestHit() threshold it at kDitherShadowThreshold and occlusion() reports it
+// apart, with its alpha. Camera is what the lit pass draws: Clip materials are
 // clipped there too, Dither ones are drawn solid. Per object, Object::castShadows Off removes the
 // object from Shadow rays and ShadowsOnly from Camera rays.
 // Faces are culled as the passes cull them: Camera rays see only the front (CCW) side of
@@ -38,11 +38,6 @@ struct Hit {
     glm::vec3 normal; // unit world normal of the triangle's front (CCW) side, whichever side was hit
 };
 
-// Ground-truth visibility on the CPU: world-space triangles of a scene in a BVH (binned
-// SAH). The caster copies what it needs; the scene may change or go away afterwards.
-// Shadow rays must travel towards the light (the culling above assumes it); directions
-// need not be unit (they are normalised), and hits count at
-// 0 < distance <= maxDistance, so rays leaving a surface must start slightly off it.
 // What a shadow ray meets on its way to the light. A dithered caster's shadow map keeps a texel
 // where its alpha reaches the texel's dither threshold, one threshold per texel for every layer,
 // so the light it lets through is 1 - the largest alpha among the dithered surfaces crossed.
@@ -53,6 +48,11 @@ struct Occlusion {
     float ditherCoverage = 0.0f;
 };
 
+// Ground-truth visibility on the CPU: world-space triangles of a scene in a BVH (binned
+// SAH). The caster copies what it needs; the scene may change or go away afterwards.
+// Shadow rays must travel towards the light (the culling above assumes it); directions
+// need not be unit (they are normalised), and hits count at
+// 0 < distance <= maxDistance, so rays leaving a surface must start slightly off it.
 class RayCaster {
 public:
     explicit RayCaster(const Scene& scene, RayKind kind = RayKind::Shadow);
