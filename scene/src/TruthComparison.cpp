@@ -81,6 +81,8 @@ bool footprintHasEdge(const RayCaster& shadowRays, const GBufferSample& sample, 
     if (facing < kGrazing)
         return true;
     const std::array<glm::vec3, 2> across = acrossRay(towardsLight);
+    // The points first, then the rays: GCC 12 -O2 stops with an internal error (compute_live_loop_exits) on an
+    // early return from the nested loops.
     std::vector<glm::vec3> points;
     for (int ring = 0; ring <= kFootprintRings; ++ring)
         for (int k = 0; k < std::max(8 * ring, 1); ++k) {

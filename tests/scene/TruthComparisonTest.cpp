@@ -73,6 +73,29 @@ TEST(TruthComparisonTest, PixelsTheShadowMapDoesNotDecideAreLeftOut)
     EXPECT_EQ(c.at(4, 5), TruthVerdict::NearEdge);
 }
 
+// Behind dithered casters only, a pixel's answer is the dither's: those pixels are judged by their mean, apart
+// from the lit and shadowed classes, and their border is an edge like any change of class.
+TEST(TruthComparisonTest, DitheredPixelsAreJudgedOnAverage)
+{
+    Pictures p;
+    p.truth.ditherCoverage.assign(kSize * kSize, 0.0f);
+    for (std::uint32_t y = 0; y < kSize; ++y)
+        for (std::uint32_t x = 8; x < kSize; ++x) {
+            p.truth.pixels[p.at(x, y)] = LightVisibility::Dithered;
+            p.truth.ditherCoverage[p.at(x, y)] = 0.6f;
+            p.rendered.lit[p.at(x, y)] = (x + y) % 2 == 0 ? 1.0f : 0.0f; // a stipple, half lit
+        }
+    const TruthComparison c = compareWithTruth(p.gbuffer, p.truth, p.rendered);
+    EXPECT_EQ(c.shadowed.compared, 0u);
+    EXPECT_EQ(c.leaks(), 0u);
+    EXPECT_EQ(c.dithered.compared, std::size_t(12 * 4));
+    EXPECT_NEAR(c.dithered.expectedLit(), 0.4, 1e-6);
+    EXPECT_DOUBLE_EQ(c.dithered.renderedLit(), 0.5);
+    EXPECT_EQ(c.at(11, 8), TruthVerdict::Dithered);
+    EXPECT_EQ(c.at(8, 8), TruthVerdict::NotCompared); // within the margin of the lit side
+    EXPECT_EQ(c.at(7, 8), TruthVerdict::NearEdge);
+}
+
 TEST(TruthComparisonTest, PicturesOfDifferentSizesAreRefused)
 {
     Pictures p;
