@@ -87,6 +87,7 @@ TEST(TruthComparisonTest, DitheredPixelsAreJudgedOnAverage)
         }
     const TruthComparison c = compareWithTruth(p.gbuffer, p.truth, p.rendered);
     EXPECT_EQ(c.shadowed.compared, 0u);
+    EXPECT_EQ(c.shadowed.share(), 1.0); // an empty class: none wrong
     EXPECT_EQ(c.leaks(), 0u);
     EXPECT_EQ(c.dithered.compared, std::size_t(12 * 4));
     EXPECT_NEAR(c.dithered.expectedLit(), 0.4, 1e-6);

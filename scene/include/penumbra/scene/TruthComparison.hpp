@@ -49,7 +49,8 @@ struct TruthClassFigures {
     std::size_t nearEdges = 0;
     std::size_t undecided = 0;
 
-    double share() const { return compared == 0 ? 0.0 : double(right) / double(compared); }
+    // 1 for an empty class: none of its pixels is wrong (`compared` says there were none).
+    double share() const { return compared == 0 ? 1.0 : double(right) / double(compared); }
 };
 
 // The pixels behind dithered casters only, away from edges and where the shadow map decides: the light a correct
@@ -78,8 +79,8 @@ struct TruthComparison {
     std::size_t compared() const { return lit.compared + shadowed.compared; }
     std::size_t acne() const { return lit.compared - lit.right; }
     std::size_t leaks() const { return shadowed.compared - shadowed.right; }
-    // Of all compared pixels, the share rendered right.
-    double agreement() const { return compared() == 0 ? 0.0 : double(lit.right + shadowed.right) / double(compared()); }
+    // Of all compared pixels, the share rendered right (1 when none was compared, as share()).
+    double agreement() const { return compared() == 0 ? 1.0 : double(lit.right + shadowed.right) / double(compared()); }
     TruthVerdict at(std::uint32_t x, std::uint32_t y) const { return verdicts[std::size_t(y) * width + x]; }
 };
 
