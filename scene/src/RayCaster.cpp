@@ -32,7 +32,6 @@ struct AlphaTest {
     Material material;
     float threshold;
     std::optional<TextureImage> texture;
-    bool dithered; // a dithered caster seen by shadow rays: occlusion() reports its alpha apart
 };
 
 std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& material, RayKind kind)
@@ -43,10 +42,10 @@ std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& materi
         texture = scene.textures.at(baseColor->image);
     switch (material.caster) {
     case CasterMode::Clip:
-        return AlphaTest{material, material.alphaCutoff, std::move(texture), false};
+        return AlphaTest{material, material.alphaCutoff, std::move(texture)};
     case CasterMode::Dither:
         if (kind == RayKind::Shadow)
-            return AlphaTest{material, kDitherShadowThreshold, std::move(texture), true};
+            return AlphaTest{material, kDitherShadowThreshold, std::move(texture)};
         return std::nullopt;
     case CasterMode::On:
     case CasterMode::Off:
@@ -263,7 +262,8 @@ Occlusion RayCaster::occlusion(const glm::vec3& origin, const glm::vec3& directi
         if (!hit)
             return false;
         const std::optional<AlphaTest>& test = data_->alphaTests[data_->sources[i].object];
-        if (!test || !test->dithered) {
+        // Only shadow rays alpha-test dithered casters; occlusion() reports their alpha apart.
+        if (!test || test->material.caster != CasterMode::Dither) {
             result.solid = data_->blocks(i, ray, hit->barycentrics);
             return result.solid;
         }
