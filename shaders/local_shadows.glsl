@@ -128,7 +128,8 @@ vec3 cubeTap(CubeReceiver r, int index, float radius)
     return r.d + o.x * r.u + o.y * r.v;
 }
 
-// (average major-axis distance of the blockers, their count, the nearest blocker's distance).
+// (average major-axis distance of the blockers, their count, the nearest blocker's distance); as searchBlockers,
+// the receiver's own direction is read where no tap found a blocker.
 vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
 {
     const int first = count - 16;
@@ -143,6 +144,13 @@ vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
             sum += distance;
             blockers += 1.0;
             nearest = min(nearest, distance);
+        }
+    }
+    if (blockers == 0.0) {
+        const float stored = texture(pointShadowCubeDepths, vec4(r.d, float(r.cube))).r;
+        if (penumbraIsNearer(stored, cubePlaneDepth(r, r.d))) {
+            const float distance = perspectiveDistance(stored, r.data.xy);
+            return vec3(distance, 1.0, distance);
         }
     }
     return vec3(blockers > 0.0 ? sum / blockers : 0.0, blockers, nearest);

@@ -94,7 +94,10 @@ float planeDepth(SoftTile t, ivec2 texel) { return t.depth + dot(t.gradient, vec
 
 // (average depth of the blockers, their count, the nearest blocker's depth) among `count` taps within `radius`
 // texels: a tap's texel, clamped into the tile, is a blocker when its depth is nearer to the light than the receiver
-// plane there. penumbra::shadows::searchBlockers.
+// plane there. Taps spread over a wide search can all step over a caster thinner than their spacing that covers the
+// receiver's own texel; where they find none, that texel is read too, and found a blocker it is the one blocker
+// (a search that calls such a receiver lit leaves lit holes in the shadows of wires and slats).
+// penumbra::shadows::searchBlockers.
 vec3 searchBlockers(sampler2D atlas, SoftTile t, float radius, int count)
 {
     const int first = count - 16;
@@ -109,6 +112,12 @@ vec3 searchBlockers(sampler2D atlas, SoftTile t, float radius, int count)
             blockers += 1.0;
             nearest = penumbraIsNearer(stored, nearest) ? stored : nearest;
         }
+    }
+    if (blockers == 0.0) {
+        const ivec2 texel = clamp(ivec2(floor(t.centre)), t.tileMin, t.tileMax);
+        const float stored = texelFetch(atlas, texel, 0).r;
+        if (penumbraIsNearer(stored, planeDepth(t, texel)))
+            return vec3(stored, 1.0, stored);
     }
     return vec3(blockers > 0.0 ? sum / blockers : 0.0, blockers, nearest);
 }

@@ -213,6 +213,27 @@ TEST(BlockerSearchTest, ReportsTheNearestBlocker)
     EXPECT_FLOAT_EQ(searchBlockers(tile, {200.0f, 50.0f}, 0.8f, glm::vec2(0.0f), 8.0f, 0.3f, 16).nearestDepth, 0.8f);
 }
 
+// A wire one texel wide right over the receiver, searched over 24 texels: the 16 taps, about 10 texels apart,
+// step over it, and the receiver's own texel finds it.
+TEST(BlockerSearchTest, FindsACasterThinnerThanTheTapsSpacingOverTheReceiver)
+{
+    DepthTileView tile;
+    tile.tileMin = {0, 0};
+    tile.tileMax = {255, 255};
+    tile.isNearer = [](float a, float b) { return a < b - 1e-6f; };
+    tile.depthAt = [](glm::ivec2 t) { return t.x == 100 ? 0.3f : 0.8f; };
+    const glm::vec2 centre{100.5f, 50.5f};
+    for (const glm::vec2& tap : poissonTaps(centre, 24.0f, 0.3f, 16))
+        ASSERT_NE(clampTapTexel(tap, tile.tileMin, tile.tileMax).x, 100) << "a tap reads the wire";
+    const BlockerSearch wire = searchBlockers(tile, centre, 0.8f, glm::vec2(0.0f), 24.0f, 0.3f, 16);
+    EXPECT_EQ(wire.blockers, 1u);
+    EXPECT_FLOAT_EQ(wire.averageDepth, 0.3f);
+    EXPECT_FLOAT_EQ(wire.nearestDepth, 0.3f);
+    // Beside the wire nothing is found.
+    EXPECT_EQ(searchBlockers(tile, centre + glm::vec2(2.0f, 0.0f), 0.8f, glm::vec2(0.0f), 24.0f, 0.3f, 16).blockers,
+              0u);
+}
+
 TEST(SoftSettingsTest, ValidatesEveryControl)
 {
     ShadowSettings s;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <optional>
 
 namespace penumbra::shadows {
 
@@ -105,16 +106,22 @@ BlockerSearch searchBlockers(const DepthTileView& tile, glm::vec2 centre, float 
     BlockerSearch result;
     result.nearestDepth = depth;
     float sum = 0.0f;
-    for (const glm::vec2& tap : poissonTaps(centre, radius, angle, count)) {
-        const glm::ivec2 texel = clampTapTexel(tap, tile.tileMin, tile.tileMax);
-        const float plane = depth + glm::dot(gradient, glm::vec2(texel) + 0.5f - centre);
+    const auto blockerAt = [&](glm::vec2 position) -> std::optional<float> {
+        const glm::ivec2 texel = clampTapTexel(position, tile.tileMin, tile.tileMax);
         const float stored = tile.depthAt(texel);
-        if (tile.isNearer(stored, plane)) {
-            sum += stored;
+        if (tile.isNearer(stored, depth + glm::dot(gradient, glm::vec2(texel) + 0.5f - centre)))
+            return stored;
+        return std::nullopt;
+    };
+    for (const glm::vec2& tap : poissonTaps(centre, radius, angle, count))
+        if (const std::optional<float> stored = blockerAt(tap)) {
+            sum += *stored;
             ++result.blockers;
-            result.nearestDepth = tile.isNearer(stored, result.nearestDepth) ? stored : result.nearestDepth;
+            result.nearestDepth = tile.isNearer(*stored, result.nearestDepth) ? *stored : result.nearestDepth;
         }
-    }
+    if (result.blockers == 0)
+        if (const std::optional<float> stored = blockerAt(centre))
+            return {.averageDepth = *stored, .blockers = 1, .nearestDepth = *stored};
     if (result.blockers > 0)
         result.averageDepth = sum / static_cast<float>(result.blockers);
     return result;

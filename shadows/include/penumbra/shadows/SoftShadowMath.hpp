@@ -85,7 +85,8 @@ struct BlockerSearch {
 
 // The blocker search at texel-space position `centre`, receiver depth `depth` and receiver-plane gradient
 // `gradient`: every tap's texel (clamped into the tile) whose depth is nearer than the receiver plane at that
-// texel's centre is a blocker.
+// texel's centre is a blocker. Where no tap finds one, the receiver's own texel is read: a blocker there (a caster
+// thinner than the taps' spacing) is the search's one blocker.
 BlockerSearch searchBlockers(const DepthTileView& tile, glm::vec2 centre, float depth, glm::vec2 gradient, float radius,
                              float angle, std::uint32_t count);
 
