@@ -27,11 +27,14 @@ using scene::LightRef;
 using shadows::ShadowFilter;
 
 constexpr std::uint32_t kSize = 160;
-// PCSS's mean absolute error against the area light over the best fixed filter's, at most (see
-// checkAgainstTheAreaLight): the 0.5 for spot and point lights; 0.6 for the sun, measured 0.52 on every
-// configuration at 16 + 16 samples, where the 16 filter taps' noise and the fence's stacked slats (one depth layer
-// holds the slat nearest the light, not the one that casts the umbra) make up most of what is left.
-double pcssOverBestFixed(LightKind kind) { return kind == LightKind::Directional ? 0.6 : 0.5; }
+// PCSS's mean absolute error against the area light over the best fixed filter's at the same sample count, at most
+// (see checkAgainstTheAreaLight): the 0.5, except for the sun at 16 + 16 samples: 0.6 there, measured 0.52
+// on every configuration, where the 16 filter taps' noise and the fence's stacked slats (one depth layer holds the
+// slat nearest the light, not the one that casts the umbra) make up most of what is left; at 32 + 32 it is 0.42.
+double pcssOverBestFixed(LightKind kind, std::uint32_t samples)
+{
+    return kind == LightKind::Directional && samples < 32 ? 0.6 : 0.5;
+}
 
 // The contact scene lit by one light of `kind`: its sun, or a spot or point light of radius 0.15 up and to the
 // left of the pole, so every shadow still runs along +x from the pole's foot.
@@ -66,7 +69,8 @@ scene::Scene contactScene(LightKind kind, ShadowFilter filter)
     return scene;
 }
 
-render::FrameDesc softFrame(LightRef light)
+// `samples`: the soft filters' blocker and filter sample counts.
+render::FrameDesc softFrame(LightRef light, std::uint32_t samples = 16)
 {
     render::FrameDesc frame;
     frame.width = kSize;
@@ -76,6 +80,8 @@ render::FrameDesc softFrame(LightRef light)
     frame.shadows.directional.atlasSize = 2048;
     frame.shadows.local.atlasSize = 2048;
     frame.visibilityOf = light;
+    frame.shadows.soft.blockerSamples = samples;
+    frame.shadows.soft.filterSamples = samples;
     return frame;
 }
 
@@ -177,14 +183,14 @@ struct AreaLightFigures {
     scene::RenderedVisibility pcssVisibility;
 };
 
-AreaLightFigures checkAgainstTheAreaLight(rhi::Device& device, LightKind kind)
+AreaLightFigures checkAgainstTheAreaLight(rhi::Device& device, LightKind kind, std::uint32_t samples = 16)
 {
     scene::Scene scene = contactScene(kind, ShadowFilter::PCSS);
     const LightRef light{kind, 0};
     render::SceneRenderer renderer(device, scene);
     const auto rendered = [&](ShadowFilter filter, float poissonRadius) {
         setFilter(scene, kind, filter);
-        render::FrameDesc frame = softFrame(light);
+        render::FrameDesc frame = softFrame(light, samples);
         frame.shadows.soft.poissonRadiusTexels = poissonRadius;
         renderer.render(scene.camera, frame);
         return render::renderedVisibility(rhi::readTexture(device, renderer.visibilityImage()));
@@ -203,10 +209,12 @@ AreaLightFigures checkAgainstTheAreaLight(rhi::Device& device, LightKind kind)
     figures.bestFixed = std::min(figures.bestFixed, poisson.error);
     EXPECT_GT(pcss.penumbraPixels, 200u);
     // Measured 0.52 (directional), 0.39 (spot), 0.33 (point) on vulkan and opengl at 16 + 16 samples, against the
-    // Poisson disk at radii 8.38, 9.09 to 9.28 and 4.37 texels.
-    EXPECT_LE(figures.pcss, pcssOverBestFixed(kind) * figures.bestFixed) << "pcss " << figures.pcss << "; " << fixed;
-    std::printf("%s: %zu penumbra pixels, pcss %.4f (%.2f of the best fixed filter); %s\n", scene::lightKindName(kind),
-                pcss.penumbraPixels, figures.pcss, figures.pcss / figures.bestFixed, fixed.c_str());
+    // Poisson disk at radii 8.38, 9.09 to 9.28 and 4.37 texels; the sun at 32 + 32: 0.42, against 8.54 texels.
+    EXPECT_LE(figures.pcss, pcssOverBestFixed(kind, samples) * figures.bestFixed)
+        << "pcss " << figures.pcss << "; " << fixed;
+    std::printf("%s, %u + %u samples: %zu penumbra pixels, pcss %.4f (%.2f of the best fixed filter); %s\n",
+                scene::lightKindName(kind), samples, samples, pcss.penumbraPixels, figures.pcss,
+                figures.pcss / figures.bestFixed, fixed.c_str());
     for (const float x : {0.14f, 0.2f, 0.3f}) {
         const glm::uvec2 p = pixelOf(device, scene.camera, kSize, kSize, {x, 0.0f, 0.0f});
         EXPECT_LT(figures.truth.at(p.x, p.y), 0.05f) << "x = " << x;
@@ -238,6 +246,12 @@ TEST_F(SoftShadowsTest, DirectionalPcssAgainstTheAreaLight)
     }
     EXPECT_LT(widths[0], widths[1]);
     EXPECT_LT(widths[1], widths[2]);
+}
+
+// With 32 blocker and 32 filter samples (and the fixed filters at 32) the sun's PCSS holds the 0.5 too.
+TEST_F(SoftShadowsTest, DirectionalPcssAt32SamplesAgainstTheAreaLight)
+{
+    checkAgainstTheAreaLight(*device, LightKind::Directional, 32);
 }
 
 TEST_F(SoftShadowsTest, SpotPcssAgainstTheAreaLight) { checkAgainstTheAreaLight(*device, LightKind::Spot); }
