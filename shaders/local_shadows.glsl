@@ -176,17 +176,19 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
     if (filterIndex == PENUMBRA_FILTER_PCSS) {
         const vec3 a = abs(r.d);
         const float receiver = max(max(a.x, a.y), a.z);
-        const float search = perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c);
-        const vec3 wide = cubeSearchBlockers(r, search, c.blockerSamples, receiver);
-        if (wide.y == 0.0)
-            return 1.0;
-        // As refinedBlockers: the nearest blocker's cone searched again for the average; none there, fully lit.
-        const float refined = min(perspectiveSearchTexels(receiver, wide.z, cubeSoft.y, c), search);
-        const vec2 blockers = cubeSearchBlockers(r, refined, c.blockerSamples, receiver).xy;
-        if (blockers.y == 0.0)
-            return 1.0;
-        radius = perspectivePenumbraTexels(receiver, blockers.x, cubeSoft.y, c);
-        if (inUmbra(blockers, c.blockerSamples, radius, refined))
+        // The two steps of the blocker search (soft_shadows.glsl, PCSS_SEARCH_STEPS): the nearest blocker's cone
+        // searched again for the average; none there, fully lit.
+        float within = perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c);
+        vec3 found = vec3(0.0);
+        for (int searchStep = 0; searchStep < PCSS_SEARCH_STEPS; ++searchStep) {
+            found = cubeSearchBlockers(r, within, c.blockerSamples, receiver);
+            if (found.y == 0.0)
+                return 1.0;
+            if (searchStep == 0)
+                within = min(perspectiveSearchTexels(receiver, found.z, cubeSoft.y, c), within);
+        }
+        radius = perspectivePenumbraTexels(receiver, found.x, cubeSoft.y, c);
+        if (inUmbra(found.xy, c.blockerSamples, radius, within))
             return 0.0;
     }
     return cubePoissonFilter(r, radius, c.filterSamples);
