@@ -122,22 +122,19 @@ float cubePlaneDepth(CubeReceiver r, vec3 tap)
     return (r.data.x * -major + r.data.y) / major;
 }
 
-vec3 cubeTap(CubeReceiver r, int index, float radius)
-{
-    const vec2 o = radius * (r.rotation * poissonPoint(index));
-    return r.d + o.x * r.u + o.y * r.v;
-}
+// The tap at disk offset `o` (texels of the face at the receiver).
+vec3 cubeTap(CubeReceiver r, vec2 o) { return r.d + o.x * r.u + o.y * r.v; }
 
 // (average major-axis distance of the blockers, their count, the nearest blocker's distance); as searchBlockers,
 // the receiver's own direction is read where no tap found a blocker.
 vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
 {
-    const int first = count - 16;
     float sum = 0.0;
     float blockers = 0.0;
     float nearest = receiver;
+    DiskWalk disk = diskWalk(vec2(0.0), r.rotation, radius, count);
     for (int i = 0; i < count; ++i) {
-        const vec3 tap = cubeTap(r, first + i, radius);
+        const vec3 tap = cubeTap(r, nextDiskPoint(disk, i));
         const float stored = texture(pointShadowCubeDepths, vec4(tap, float(r.cube))).r;
         if (penumbraIsNearer(stored, cubePlaneDepth(r, tap))) {
             const float distance = perspectiveDistance(stored, r.data.xy);
@@ -158,10 +155,10 @@ vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
 
 float cubePoissonFilter(CubeReceiver r, float radius, int count)
 {
-    const int first = count - 16;
     float lit = 0.0;
+    DiskWalk disk = diskWalk(vec2(0.0), r.rotation, radius, count);
     for (int i = 0; i < count; ++i) {
-        const vec3 tap = cubeTap(r, first + i, radius);
+        const vec3 tap = cubeTap(r, nextDiskPoint(disk, i));
         lit += penumbraIsNearer(texture(pointShadowCubeDepths, vec4(tap, float(r.cube))).r, cubePlaneDepth(r, tap))
                    ? 0.0
                    : 1.0;

@@ -2,22 +2,34 @@
 // shadows (Fernando 2005, "Percentage-Closer Soft Shadows"; NVIDIA 2008, "Integrating Realistic Soft Shadows into
 // Your Game Engine"): a blocker search, the average blocker depth, the penumbra from the receiver and blocker depths,
 // then the Poisson disk over that penumbra. The same math as penumbra::shadows::SoftShadowMath; the disks are
-// the PoissonDisks block.
+// penumbra::shadows::poissonDisk's golden-angle spirals, walked tap by tap (DiskWalk).
 //
 // Every tap compares against the receiver's plane at the texel it reads, not the receiver's own depth (Isidoro 2006,
 // "Receiver Plane Depth Bias", GDC): a wide kernel over a sloped receiver then does not shadow the receiver itself.
 // The disk turns by a hash of the receiver's texel in the light's own grid, so a static scene's shadows stay put
 // while the camera moves, and both backends give the same pixels.
 
-// penumbra::shadows::PoissonDiskUniforms: the disks of 16, 32 and 64 points, disk n from point n - 16, two a vec4.
-layout(std140, binding = PENUMBRA_BINDING_POISSON_DISKS) uniform PoissonDisks {
-    vec4 points[PENUMBRA_POISSON_DISK_POINTS / 2];
-} poissonDisks;
+// The disk of `count` points turned by `rotation`, scaled by `radius` and centred on `centre`, walked point by
+// point: point k at radius sqrt((k + 0.5) / count) along a direction the golden angle past point k - 1's, less the
+// spiral's mean (penumbra::shadows::poissonDisk). A tap costs no uniform read and no sine (PoissonDisk.hpp).
+struct DiskWalk {
+    vec2 origin; // centre less the turned, scaled spiral mean
+    vec2 direction; // of the next point, turned
+    float radius;
+    float count;
+};
 
-vec2 poissonPoint(int index)
+DiskWalk diskWalk(vec2 centre, mat2 rotation, float radius, int count)
 {
-    const vec4 pair = poissonDisks.points[index >> 1];
-    return (index & 1) == 0 ? pair.xy : pair.zw;
+    return DiskWalk(centre - radius * (rotation * penumbraSpiralMean(count)), rotation[0], radius, float(count));
+}
+
+// Point k of the walk; turns the walk on to point k + 1.
+vec2 nextDiskPoint(inout DiskWalk w, int k)
+{
+    const vec2 point = w.origin + w.radius * sqrt((float(k) + 0.5) / w.count) * w.direction;
+    w.direction = mat2(PENUMBRA_GOLDEN_TURN, vec2(-PENUMBRA_GOLDEN_TURN.y, PENUMBRA_GOLDEN_TURN.x)) * w.direction;
+    return point;
 }
 
 // The receiver's screen-space position derivatives, set once by main() in uniform control flow
@@ -87,8 +99,6 @@ SoftTile softTile(vec3 p, vec3 dpdx, vec3 dpdy, float atlasSize, ivec2 tileMin, 
     return t;
 }
 
-vec2 diskTap(SoftTile t, int index, float radius) { return t.centre + radius * (t.rotation * poissonPoint(index)); }
-
 // The receiver plane's depth at the centre of `texel`.
 float planeDepth(SoftTile t, ivec2 texel) { return t.depth + dot(t.gradient, vec2(texel) + 0.5 - t.centre); }
 
@@ -100,12 +110,12 @@ float planeDepth(SoftTile t, ivec2 texel) { return t.depth + dot(t.gradient, vec
 // penumbra::shadows::searchBlockers.
 vec3 searchBlockers(sampler2D atlas, SoftTile t, float radius, int count)
 {
-    const int first = count - 16;
     float sum = 0.0;
     float blockers = 0.0;
     float nearest = t.depth;
+    DiskWalk disk = diskWalk(t.centre, t.rotation, radius, count);
     for (int i = 0; i < count; ++i) {
-        const ivec2 texel = clamp(ivec2(floor(diskTap(t, first + i, radius))), t.tileMin, t.tileMax);
+        const ivec2 texel = clamp(ivec2(floor(nextDiskPoint(disk, i))), t.tileMin, t.tileMax);
         const float stored = texelFetch(atlas, texel, 0).r;
         if (penumbraIsNearer(stored, planeDepth(t, texel))) {
             sum += stored;
@@ -164,10 +174,10 @@ float bilinearComparePlane(sampler2D atlas, SoftTile t, vec2 position)
 // The Poisson disk of `count` bilinear taps over `radius` texels: 1 = lit.
 float poissonFilter(sampler2D atlas, SoftTile t, float radius, int count)
 {
-    const int first = count - 16;
     float lit = 0.0;
+    DiskWalk disk = diskWalk(t.centre, t.rotation, radius, count);
     for (int i = 0; i < count; ++i)
-        lit += bilinearComparePlane(atlas, t, diskTap(t, first + i, radius));
+        lit += bilinearComparePlane(atlas, t, nextDiskPoint(disk, i));
     return lit / float(count);
 }
 

@@ -84,7 +84,6 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
                          "#define PENUMBRA_BINDING_LOCAL_ATLAS {}\n"
                          "#define PENUMBRA_BINDING_SHADOW_CUBES {}\n"
                          "#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
-                         "#define PENUMBRA_BINDING_POISSON_DISKS {}\n"
                          "#define PENUMBRA_BINDING_STATIC_SHADOWS {}\n"
                          "#define PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS {}\n"
                          "#define PENUMBRA_BINDING_STATIC_LOCAL_ATLAS {}\n"
@@ -92,9 +91,9 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
                          "#define PENUMBRA_SOFT_FILTERS {}\n"
                          "#define PENUMBRA_SHADOW_CUBES {}\n",
                          kLitShadowBinding, kLitAtlasBinding, kLitLocalShadowBinding, kLitLocalAtlasBinding,
-                         kLitShadowCubesBinding, kLitShadowCubeDepthsBinding, kLitPoissonDisksBinding,
-                         kLitStaticShadowBinding, kLitStaticDirectionalAtlasBinding, kLitStaticLocalAtlasBinding,
-                         features.tentFilters ? 1 : 0, features.softFilters ? 1 : 0, features.shadowCubes ? 1 : 0)});
+                         kLitShadowCubesBinding, kLitShadowCubeDepthsBinding, kLitStaticShadowBinding,
+                         kLitStaticDirectionalAtlasBinding, kLitStaticLocalAtlasBinding, features.tentFilters ? 1 : 0,
+                         features.softFilters ? 1 : 0, features.shadowCubes ? 1 : 0)});
     return source;
 }
 

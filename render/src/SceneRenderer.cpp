@@ -13,7 +13,6 @@
 #include "penumbra/shaders/ShaderLibrary.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 #include "penumbra/shadows/LocalShadowUniforms.hpp"
-#include "penumbra/shadows/PoissonDisk.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 #include "penumbra/shadows/StaticShadowUniforms.hpp"
 
@@ -491,8 +490,7 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 
 void SceneRenderer::bindShadowMaps(rhi::CommandList& commands, const rhi::UniformSlice& shadowUniforms,
                                    const rhi::UniformSlice& localShadowUniforms,
-                                   const rhi::UniformSlice& staticShadowUniforms,
-                                   const rhi::UniformSlice& poissonDisks) const
+                                   const rhi::UniformSlice& staticShadowUniforms) const
 {
     rhi::bindUniform(commands, kLitShadowBinding, shadowUniforms);
     commands.bindTexture(kLitAtlasBinding, atlas_->texture(), atlas_->sampler());
@@ -500,7 +498,6 @@ void SceneRenderer::bindShadowMaps(rhi::CommandList& commands, const rhi::Unifor
     commands.bindTexture(kLitLocalAtlasBinding, localAtlas_->texture(), localAtlas_->sampler());
     commands.bindTexture(kLitShadowCubesBinding, shadowCubes_->texture(), shadowCubes_->sampler());
     commands.bindTexture(kLitShadowCubeDepthsBinding, shadowCubes_->texture(), shadowCubes_->depthSampler());
-    rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonDisks);
     rhi::bindUniform(commands, kLitStaticShadowBinding, staticShadowUniforms);
     const shadows::ShadowAtlas& staticDirectional = staticShadows_->directionalAtlas();
     const shadows::ShadowAtlas& staticLocal = staticShadows_->localAtlas();
@@ -521,7 +518,6 @@ std::uint32_t SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi
     // channel keeps saying whether a shadow map decides the pixel.
     commands.beginPass(
         {.framebuffer = &target, .clearColor = visibility ? kUndecided : kBackground, .clearDepth = !prepassed});
-    const rhi::UniformSlice poissonDisks = uniforms_.push(shadows::poissonDiskUniforms());
     const DirectionalShadowSource directionalShadows = features.directionalShadows;
     const rhi::Pipeline* bound = nullptr;
     for (const LitDraw& draw : litDraws_) {
@@ -535,7 +531,7 @@ std::uint32_t SceneRenderer::recordLitPass(rhi::CommandList& commands, const rhi
             // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
             commands.bindPipeline(*pipeline);
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
-            bindShadowMaps(commands, shadowUniforms, localShadowUniforms, staticShadowUniforms, poissonDisks);
+            bindShadowMaps(commands, shadowUniforms, localShadowUniforms, staticShadowUniforms);
             if (directionalShadows != DirectionalShadowSource::Forward)
                 commands.bindTexture(kLitScreenSpaceShadowsBinding, screenSpace_->shadows(), screenSpace_->sampler());
             // Only where the lit pass does not draw into it: multisampled, the single-sampled depth is no attachment.
@@ -679,8 +675,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     if (screenSpace) {
         screenSpace_->begin(commands, features,
                             uniforms_.push(screenSpaceShadowUniforms(litFrameUniforms, frame.width, frame.height)));
-        bindShadowMaps(commands, shadowUniforms, localShadowUniforms, staticShadowUniforms,
-                       uniforms_.push(shadows::poissonDiskUniforms()));
+        bindShadowMaps(commands, shadowUniforms, localShadowUniforms, staticShadowUniforms);
         screenSpace_->draw(commands);
         features.directionalShadows =
             multisampled ? DirectionalShadowSource::ScreenSpaceEdges : DirectionalShadowSource::ScreenSpace;

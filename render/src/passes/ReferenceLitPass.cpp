@@ -2,7 +2,6 @@
 
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/shadows/InstanceTransform.hpp"
-#include "penumbra/shadows/PoissonDisk.hpp"
 
 #include <algorithm>
 
@@ -105,8 +104,6 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
     const rhi::UniformSlice frameSlice = uniforms_.push(frameUniforms(camera, frame, scene, device_.conventions()));
     const rhi::UniformSlice shadowSlice = uniforms_.push(renderer.plan().uniforms);
     const rhi::UniformSlice splitSlice = uniforms_.push(splitUniforms(renderer.plan()));
-    // The shared shadow code declares the soft filters' disks; the reference's one lookup never reads them.
-    const rhi::UniformSlice poissonSlice = uniforms_.push(shadows::poissonDiskUniforms());
     rhi::CommandList& commands = *commands_;
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
@@ -122,7 +119,6 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
             rhi::bindUniform(commands, kLitShadowBinding, shadowSlice);
             rhi::bindUniform(commands, kReferenceSplitsBinding, splitSlice);
-            rhi::bindUniform(commands, kLitPoissonDisksBinding, poissonSlice);
             commands.bindTexture(kLitAtlasBinding, renderer.atlas().texture(), renderer.atlas().sampler());
             bound = pipeline;
         }

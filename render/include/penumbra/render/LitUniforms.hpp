@@ -117,8 +117,7 @@ inline constexpr std::uint32_t kLitLocalAtlasBinding = 5;
 inline constexpr std::uint32_t kLitShadowCubesBinding = 6;
 // The same cube array read raw (no comparison): the soft filters' blocker search.
 inline constexpr std::uint32_t kLitShadowCubeDepthsBinding = 7;
-inline constexpr std::uint32_t kLitPoissonDisksBinding = 8; // shadows::PoissonDiskUniforms
-inline constexpr std::uint32_t kLitMaterialMapBinding = 9;
+inline constexpr std::uint32_t kLitMaterialMapBinding = 8;
 // After the material maps: the static shadow maps (shadows::StaticShadowUniforms and its two atlases).
 inline constexpr std::uint32_t kLitStaticShadowBinding = kLitMaterialMapBinding + scene::kTextureSlots;
 inline constexpr std::uint32_t kLitStaticDirectionalAtlasBinding = kLitStaticShadowBinding + 1;

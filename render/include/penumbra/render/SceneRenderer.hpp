@@ -168,11 +168,11 @@ private:
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
     int litLightIndex(const scene::LightRef& light) const;
-    // The lit pass's shadow bindings (atlases, cubes, their blocks, the Poisson disks, static maps), which the
-    // screen-space collection shares.
+    // The lit pass's shadow bindings (atlases, cubes, their blocks, static maps), which the screen-space collection
+    // shares.
     void bindShadowMaps(rhi::CommandList& commands, const rhi::UniformSlice& shadowUniforms,
-                        const rhi::UniformSlice& localShadowUniforms, const rhi::UniformSlice& staticShadowUniforms,
-                        const rhi::UniformSlice& poissonDisks) const;
+                        const rhi::UniformSlice& localShadowUniforms,
+                        const rhi::UniformSlice& staticShadowUniforms) const;
     // After the depth prepass (features.depthPrepassed) the opaque objects are drawn with an equal depth test into
     // the prepass's depth; otherwise the target's depth is cleared. Each draw takes `features` with its material's
     // maps. Returns the draws issued.

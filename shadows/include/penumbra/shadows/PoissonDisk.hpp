@@ -1,29 +1,26 @@
 #pragma once
 
-#include <array>
 #include <cstdint>
-#include <glm/vec4.hpp>
 #include <glm/vec2.hpp>
 #include <span>
 
 namespace penumbra::shadows {
 
-// A Poisson disk of `count` points (16, 32 or 64: kPoissonSampleCounts) in the unit disk, built by Mitchell's
-// best-candidate algorithm (Mitchell 1991, "Spectrally Optimal Sampling for Distribution Ray Tracing") from a fixed
-// seed, so the same points every run and on every backend (the lit shader gets them as constants), then centred and
-// given the radii of equal-area rings, so that a filter over them blurs as the uniform disk of its radius. Throws
-// rhi::Error for another count.
+// The sample disks of the Poisson-disk filters (16, 32 or 64 points: kPoissonSampleCounts): Vogel's golden-angle
+// spiral (Vogel 1979, "A better way to construct the sunflower head"). Point k of n lies at radius sqrt((k + 0.5) / n),
+// the radii of n rings of equal area, so a filter over the disk blurs as the uniform disk of its radius, and at
+// angle k times the golden angle, so neighbours keep 1.55 / sqrt(n) apart (0.81 of the densest packing): a Poisson
+// disk without a random seed. The spiral's mean lies off the centre (0.03 of the radius for 16 points); the disk is
+// moved by minus it, as a turning disk whose mean lies off the centre shifts every estimate by that much.
+// The shaders walk the spiral instead of reading a table: each tap turns the last one's direction by the golden
+// angle (soft_shadows.glsl, DiskWalk), so a tap costs neither a uniform read nor a sine, which on Mesa's llvmpipe
+// cost as much as its texture read.
+inline constexpr float kGoldenAngle = 2.39996323f; // pi (3 - sqrt 5)
+
+// The centred disk of `count` points. Throws rhi::Error for a count not in kPoissonSampleCounts.
 std::span<const glm::vec2> poissonDisk(std::uint32_t count);
 
-// The disks of 16, 32 and 64 points one after the other (disk n starts at n - 16), two points a vec4, as the lit
-// shader's uniform block PoissonDisks reads them (std140). A uniform block rather than a constant array: the drivers'
-// compilers turn a dynamically indexed constant array into long chains of selects.
-inline constexpr std::uint32_t kPoissonDiskPoints = 16 + 32 + 64;
-struct PoissonDiskUniforms {
-    std::array<glm::vec4, kPoissonDiskPoints / 2> points{};
-};
-static_assert(sizeof(PoissonDiskUniforms) == 896);
-
-PoissonDiskUniforms poissonDiskUniforms();
+// The mean of the spiral's `count` points before centring: what the shaders' walk subtracts.
+glm::vec2 spiralMean(std::uint32_t count);
 
 } // namespace penumbra::shadows
