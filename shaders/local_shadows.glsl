@@ -184,7 +184,8 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
             if (searchStep == 0)
                 within = min(perspectiveSearchTexels(receiver, found.z, cubeSoft.y, c), within);
         }
-        radius = perspectivePenumbraTexels(receiver, found.x, cubeSoft.y, c);
+        radius = diskRadius(perspectivePenumbraTexels(receiver, found.x, cubeSoft.y, c), PENUMBRA_NEAREST_TAP_VARIANCE,
+                            c);
         if (inUmbra(found.xy, c.blockerSamples, radius, within))
             return 0.0;
     }

@@ -197,6 +197,13 @@ SoftControls softControls(vec4 scales, vec4 counts)
     return SoftControls(scales.x, scales.y, scales.z, scales.w, int(counts.x), int(counts.y), counts.z);
 }
 
+// The radius of the disk of taps, each blurring by `tapVariance` itself, that blurs as the uniform disk of radius
+// `penumbra` texels, clamped: penumbra::shadows::diskRadius.
+float diskRadius(float penumbra, float tapVariance, SoftControls c)
+{
+    return clamp(sqrt(max(penumbra * penumbra - 4.0 * tapVariance, 0.0)), c.minTexels, c.maxTexels);
+}
+
 // Directional lights (penumbra::shadows::directionalSearchTexels, directionalPenumbraTexels): distances past the
 // nearest caster from the depth row (so the search does not follow the camera-fitted near plane), the penumbra from
 // the angular size in world units over the cascade's texel size. Each loop appears once: the shader compilers inline
@@ -222,8 +229,8 @@ float directionalSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftCo
             }
         }
         const float blocker = (depthRow.y - found.x) / depthRow.x;
-        radius = clamp(c.penumbraScale * max(receiver - blocker, 0.0) * tanHalfAngle / texelWorld, c.minTexels,
-                       c.maxTexels);
+        radius = diskRadius(c.penumbraScale * max(receiver - blocker, 0.0) * tanHalfAngle / texelWorld,
+                            PENUMBRA_BILINEAR_TAP_VARIANCE, c);
         if (inUmbra(found.xy, c.blockerSamples, radius, within))
             return 0.0;
     }
@@ -243,8 +250,7 @@ float perspectiveSearchTexels(float receiver, float nearPlane, float lightTexels
 
 float perspectivePenumbraTexels(float receiver, float blocker, float lightTexels, SoftControls c)
 {
-    return clamp(c.penumbraScale * lightTexels * max(receiver - blocker, 0.0) / (blocker * receiver), c.minTexels,
-                 c.maxTexels);
+    return c.penumbraScale * lightTexels * max(receiver - blocker, 0.0) / (blocker * receiver);
 }
 
 // tileSoft = (t22, t32, lightTexels, near plane).
@@ -265,7 +271,9 @@ float perspectiveSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftCo
                     perspectiveSearchTexels(receiver, perspectiveDistance(found.z, tileSoft.xy), tileSoft.z, c),
                     within);
         }
-        radius = perspectivePenumbraTexels(receiver, perspectiveDistance(found.x, tileSoft.xy), tileSoft.z, c);
+        const float blocker = perspectiveDistance(found.x, tileSoft.xy);
+        radius = diskRadius(perspectivePenumbraTexels(receiver, blocker, tileSoft.z, c), PENUMBRA_BILINEAR_TAP_VARIANCE,
+                            c);
         if (inUmbra(found.xy, c.blockerSamples, radius, within))
             return 0.0;
     }

@@ -138,27 +138,45 @@ TEST(ReceiverPlaneTest, RecoversThePlaneGradientFromScreenDerivatives)
 
 TEST(PenumbraTest, DirectionalPenumbraIsTheSameInWorldUnitsInEveryCascade)
 {
-    const PenumbraLimits wide{0.0f, 64.0f};
     const float tanHalf = tanHalfAngularDiameter(2.0f);
     // One blocker 3 world units above its receiver, seen by cascades of texel size 0.02 and 0.08: 4x fewer texels
     // in the coarse cascade, the same world radius.
-    const float fine = directionalPenumbraTexels(3.0f, tanHalf, 0.02f, 1.0f, wide);
-    const float coarse = directionalPenumbraTexels(3.0f, tanHalf, 0.08f, 1.0f, wide);
+    const float fine = directionalPenumbraTexels(3.0f, tanHalf, 0.02f, 1.0f);
+    const float coarse = directionalPenumbraTexels(3.0f, tanHalf, 0.08f, 1.0f);
     EXPECT_NEAR(fine * 0.02f, coarse * 0.08f, 1e-5f);
     EXPECT_NEAR(fine * 0.02f, 3.0f * std::tan(0.0174533f), 1e-5f);
-    // Contact hardening: twice the distance, twice the penumbra; clamped at the limits.
-    EXPECT_NEAR(directionalPenumbraTexels(6.0f, tanHalf, 0.02f, 1.0f, wide), 2.0f * fine, 1e-4f);
-    EXPECT_EQ(directionalPenumbraTexels(0.0f, tanHalf, 0.02f, 1.0f, {1.0f, 24.0f}), 1.0f);
-    EXPECT_EQ(directionalPenumbraTexels(100.0f, tanHalf, 0.02f, 1.0f, {1.0f, 24.0f}), 24.0f);
+    // Contact hardening: twice the distance, twice the penumbra.
+    EXPECT_NEAR(directionalPenumbraTexels(6.0f, tanHalf, 0.02f, 1.0f), 2.0f * fine, 1e-4f);
+    EXPECT_EQ(directionalPenumbraTexels(0.0f, tanHalf, 0.02f, 1.0f), 0.0f);
     EXPECT_EQ(directionalSearchTexels(0.0f, tanHalf, 0.02f, 1.0f, {0.0f, 24.0f}), 1.0f);
+}
+
+// The disk of radius r blurs by r^2 / 4 per axis, a bilinear tap by 1 / 6 more: the disk whose blur with its taps'
+// is the penumbra's disk, measured on the taps themselves.
+TEST(PenumbraTest, DiskRadiusLeavesRoomForTheTapsOwnBlur)
+{
+    const PenumbraLimits wide{0.0f, 64.0f};
+    for (const float penumbra : {2.0f, 5.0f, 12.0f}) {
+        const float r = diskRadius(penumbra, kBilinearTapVariance, wide);
+        float variance = 0.0f;
+        for (const glm::vec2& p : poissonDisk(64))
+            variance += r * r * p.x * p.x / 64.0f;
+        EXPECT_NEAR(variance + kBilinearTapVariance, penumbra * penumbra / 4.0f, 0.02f * penumbra * penumbra)
+            << penumbra;
+    }
+    EXPECT_NEAR(diskRadius(3.0f, kNearestTapVariance, wide), std::sqrt(9.0f - 1.0f / 3.0f), 1e-5f);
+    // Where the taps alone blur as much, no disk; then the limits.
+    EXPECT_EQ(diskRadius(0.5f, kBilinearTapVariance, wide), 0.0f);
+    EXPECT_EQ(diskRadius(0.5f, kBilinearTapVariance, {1.0f, 24.0f}), 1.0f);
+    EXPECT_EQ(diskRadius(100.0f, kBilinearTapVariance, {1.0f, 24.0f}), 24.0f);
 }
 
 TEST(PenumbraTest, PerspectiveFormsFollowFernando)
 {
     const PenumbraLimits wide{0.0f, 1000.0f};
     // w_penumbra = R (zR - zB) / zB at the receiver, in texels of size zR / f: lightTexels (zR - zB) / (zB zR).
-    EXPECT_NEAR(perspectivePenumbraTexels(4.0f, 2.0f, 100.0f, 1.0f, wide), 100.0f * 2.0f / 8.0f, 1e-4f);
-    EXPECT_EQ(perspectivePenumbraTexels(4.0f, 4.0f, 100.0f, 1.0f, {1.0f, 24.0f}), 1.0f);
+    EXPECT_NEAR(perspectivePenumbraTexels(4.0f, 2.0f, 100.0f, 1.0f), 100.0f * 2.0f / 8.0f, 1e-4f);
+    EXPECT_EQ(perspectivePenumbraTexels(4.0f, 4.0f, 100.0f, 1.0f), 0.0f);
     // w_search = R (zR - n) / zR at the near plane, in its texels (n / f).
     EXPECT_NEAR(perspectiveSearchTexels(4.0f, 0.5f, 10.0f, 1.0f, wide), 10.0f * 3.5f / 2.0f, 1e-4f);
     EXPECT_NEAR(perspectiveSearchTexels(4.0f, 0.5f, 10.0f, 2.0f, wide), 35.0f, 1e-4f);

@@ -2,6 +2,7 @@
 
 #include "penumbra/shadows/PoissonDisk.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/SoftShadowMath.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -26,6 +27,8 @@ std::string filterConstantsGlsl()
         return f.family == ShadowFilterFamily::PoissonDisk;
     });
     text += fmt::format("#define PENUMBRA_FILTER_FIRST_POISSON_DISK {}\n", static_cast<int>(firstDisk->filter));
+    text += fmt::format("#define PENUMBRA_BILINEAR_TAP_VARIANCE {:.9g}\n", kBilinearTapVariance);
+    text += fmt::format("#define PENUMBRA_NEAREST_TAP_VARIANCE {:.9g}\n", kNearestTapVariance);
     text += fmt::format("const vec2 PENUMBRA_GOLDEN_TURN = vec2({:.9g}, {:.9g});\n", std::cos(kGoldenAngle),
                         std::sin(kGoldenAngle));
     // The spiral means as one function of the disk's count (the settings' count is a uniform).

@@ -57,11 +57,9 @@ PenumbraLimits penumbraLimits(const SoftShadowSettings& soft)
     return {soft.minPenumbraTexels, soft.maxPenumbraTexels};
 }
 
-float directionalPenumbraTexels(float receiverToBlocker, float tanHalfAngle, float texelWorld, float scale,
-                                PenumbraLimits limits)
+float directionalPenumbraTexels(float receiverToBlocker, float tanHalfAngle, float texelWorld, float scale)
 {
-    return std::clamp(scale * std::max(receiverToBlocker, 0.0f) * tanHalfAngle / texelWorld, limits.minTexels,
-                      limits.maxTexels);
+    return scale * std::max(receiverToBlocker, 0.0f) * tanHalfAngle / texelWorld;
 }
 
 float directionalSearchTexels(float receiverFromNear, float tanHalfAngle, float texelWorld, float scale,
@@ -71,12 +69,16 @@ float directionalSearchTexels(float receiverFromNear, float tanHalfAngle, float 
                       std::max(limits.maxTexels, 1.0f));
 }
 
-float perspectivePenumbraTexels(float receiverDistance, float blockerDistance, float lightTexels, float scale,
-                                PenumbraLimits limits)
+float perspectivePenumbraTexels(float receiverDistance, float blockerDistance, float lightTexels, float scale)
 {
-    const float w =
-        lightTexels * std::max(receiverDistance - blockerDistance, 0.0f) / (blockerDistance * receiverDistance);
-    return std::clamp(scale * w, limits.minTexels, limits.maxTexels);
+    return scale * lightTexels * std::max(receiverDistance - blockerDistance, 0.0f) /
+           (blockerDistance * receiverDistance);
+}
+
+float diskRadius(float penumbra, float tapVariance, PenumbraLimits limits)
+{
+    return std::clamp(std::sqrt(std::max(penumbra * penumbra - 4.0f * tapVariance, 0.0f)), limits.minTexels,
+                      limits.maxTexels);
 }
 
 float perspectiveSearchTexels(float receiverDistance, float nearPlane, float lightTexels, float scale,

@@ -41,9 +41,8 @@ PenumbraLimits penumbraLimits(const SoftShadowSettings& soft);
 // Directional light of angular diameter 2 atan(tanHalfAngle): its light reaches a receiver from a cone, so a
 // blocker `receiverToBlocker` world units nearer the light blurs its edge over a radius of
 // receiverToBlocker x tanHalfAngle world units, the same in every cascade. In texels of size `texelWorld`,
-// x scale, clamped to the limits.
-float directionalPenumbraTexels(float receiverToBlocker, float tanHalfAngle, float texelWorld, float scale,
-                                PenumbraLimits limits);
+// x scale (the filter's radius: diskRadius).
+float directionalPenumbraTexels(float receiverToBlocker, float tanHalfAngle, float texelWorld, float scale);
 
 // The blocker search radius: the cone from the receiver to the light where it leaves the shadow map's near plane
 // (w_search of Fernando 2005 with the nearest blocker at the near plane), in texels, clamped to at least one texel
@@ -53,9 +52,19 @@ float directionalSearchTexels(float receiverFromNear, float tanHalfAngle, float 
 
 // Spot and point lights of radius R: lightTexels = R x f, f = tile size x P[0][0] / 2 the texels per unit of lateral
 // size at unit distance. Penumbra radius R (zR - zB) / zB at the receiver, in its texels (zR / f world units):
-// Fernando 2005's w_penumbra, x scale, clamped.
-float perspectivePenumbraTexels(float receiverDistance, float blockerDistance, float lightTexels, float scale,
-                                PenumbraLimits limits);
+// Fernando 2005's w_penumbra, x scale.
+float perspectivePenumbraTexels(float receiverDistance, float blockerDistance, float lightTexels, float scale);
+
+// Variance per axis, in texels^2, of one filter tap's own footprint: a bilinear comparison tap blurs by the tent of
+// one texel, a nearest one (the cube maps' raw taps) by the box of one texel.
+inline constexpr float kBilinearTapVariance = 1.0f / 6.0f;
+inline constexpr float kNearestTapVariance = 1.0f / 12.0f;
+
+// The radius of the disk of taps that blurs as the uniform disk of radius `penumbra` texels: a disk of radius r has
+// the variance r^2 / 4 per axis and the variances of convolved kernels add, so r^2 = penumbra^2 - 4 tapVariance
+// (0 where the taps alone blur as much). Without it every penumbra came out wider by the taps' own blur, near
+// contact most. Clamped to the limits.
+float diskRadius(float penumbra, float tapVariance, PenumbraLimits limits);
 
 // w_search: the receiver-to-light cone's radius at the near plane, R (zR - n) / zR, in texels of that plane (n / f),
 // x scale, clamped to at least one texel and at most the limit.
