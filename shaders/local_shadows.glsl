@@ -125,6 +125,12 @@ float cubePlaneDepth(CubeReceiver r, vec3 tap)
 // The tap at disk offset `o` (texels of the face at the receiver).
 vec3 cubeTap(CubeReceiver r, vec2 o) { return r.d + o.x * r.u + o.y * r.v; }
 
+// (stored depth, receiver plane's depth) along `tap`: a blocker where the stored depth is the nearer to the light.
+vec2 cubeDepthAndPlane(CubeReceiver r, vec3 tap)
+{
+    return vec2(texture(pointShadowCubeDepths, vec4(tap, float(r.cube))).r, cubePlaneDepth(r, tap));
+}
+
 // (average major-axis distance of the blockers, their count, the nearest blocker's distance); as searchBlockers,
 // the receiver's own direction is read where no tap found a blocker.
 vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
@@ -134,19 +140,18 @@ vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
     float nearest = receiver;
     DiskWalk disk = diskWalk(vec2(0.0), r.rotation, radius, count);
     for (int i = 0; i < count; ++i) {
-        const vec3 tap = cubeTap(r, nextDiskPoint(disk, i));
-        const float stored = texture(pointShadowCubeDepths, vec4(tap, float(r.cube))).r;
-        if (penumbraIsNearer(stored, cubePlaneDepth(r, tap))) {
-            const float distance = perspectiveDistance(stored, r.data.xy);
+        const vec2 tap = cubeDepthAndPlane(r, cubeTap(r, nextDiskPoint(disk, i)));
+        if (penumbraIsNearer(tap.x, tap.y)) {
+            const float distance = perspectiveDistance(tap.x, r.data.xy);
             sum += distance;
             blockers += 1.0;
             nearest = min(nearest, distance);
         }
     }
     if (blockers == 0.0) {
-        const float stored = texture(pointShadowCubeDepths, vec4(r.d, float(r.cube))).r;
-        if (penumbraIsNearer(stored, cubePlaneDepth(r, r.d))) {
-            const float distance = perspectiveDistance(stored, r.data.xy);
+        const vec2 own = cubeDepthAndPlane(r, r.d);
+        if (penumbraIsNearer(own.x, own.y)) {
+            const float distance = perspectiveDistance(own.x, r.data.xy);
             return vec3(distance, 1.0, distance);
         }
     }

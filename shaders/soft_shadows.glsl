@@ -102,6 +102,14 @@ SoftTile softTile(vec3 p, vec3 dpdx, vec3 dpdy, float atlasSize, ivec2 tileMin, 
 // The receiver plane's depth at the centre of `texel`.
 float planeDepth(SoftTile t, ivec2 texel) { return t.depth + dot(t.gradient, vec2(texel) + 0.5 - t.centre); }
 
+// (stored depth, receiver plane's depth) at the texel under texel-space `position`, clamped into the tile: a blocker
+// where the stored depth is the nearer to the light.
+vec2 depthAndPlaneAt(sampler2D atlas, SoftTile t, vec2 position)
+{
+    const ivec2 texel = clamp(ivec2(floor(position)), t.tileMin, t.tileMax);
+    return vec2(texelFetch(atlas, texel, 0).r, planeDepth(t, texel));
+}
+
 // (average depth of the blockers, their count, the nearest blocker's depth) among `count` taps within `radius`
 // texels: a tap's texel, clamped into the tile, is a blocker when its depth is nearer to the light than the receiver
 // plane there. Taps spread over a wide search can all step over a caster thinner than their spacing that covers the
@@ -115,19 +123,17 @@ vec3 searchBlockers(sampler2D atlas, SoftTile t, float radius, int count)
     float nearest = t.depth;
     DiskWalk disk = diskWalk(t.centre, t.rotation, radius, count);
     for (int i = 0; i < count; ++i) {
-        const ivec2 texel = clamp(ivec2(floor(nextDiskPoint(disk, i))), t.tileMin, t.tileMax);
-        const float stored = texelFetch(atlas, texel, 0).r;
-        if (penumbraIsNearer(stored, planeDepth(t, texel))) {
-            sum += stored;
+        const vec2 tap = depthAndPlaneAt(atlas, t, nextDiskPoint(disk, i));
+        if (penumbraIsNearer(tap.x, tap.y)) {
+            sum += tap.x;
             blockers += 1.0;
-            nearest = penumbraIsNearer(stored, nearest) ? stored : nearest;
+            nearest = penumbraIsNearer(tap.x, nearest) ? tap.x : nearest;
         }
     }
     if (blockers == 0.0) {
-        const ivec2 texel = clamp(ivec2(floor(t.centre)), t.tileMin, t.tileMax);
-        const float stored = texelFetch(atlas, texel, 0).r;
-        if (penumbraIsNearer(stored, planeDepth(t, texel)))
-            return vec3(stored, 1.0, stored);
+        const vec2 own = depthAndPlaneAt(atlas, t, t.centre);
+        if (penumbraIsNearer(own.x, own.y))
+            return vec3(own.x, 1.0, own.x);
     }
     return vec3(blockers > 0.0 ? sum / blockers : 0.0, blockers, nearest);
 }

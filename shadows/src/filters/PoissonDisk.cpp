@@ -3,7 +3,6 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
-#include <array>
 #include <cmath>
 #include <fmt/format.h>
 #include <vector>
@@ -47,9 +46,12 @@ Disk centredDisk(std::uint32_t count)
 
 const Disk& diskOf(std::uint32_t count)
 {
-    static const std::array<Disk, std::size(kPoissonSampleCounts)> disks{centredDisk(kPoissonSampleCounts[0]),
-                                                                         centredDisk(kPoissonSampleCounts[1]),
-                                                                         centredDisk(kPoissonSampleCounts[2])};
+    static const std::vector<Disk> disks = [] {
+        std::vector<Disk> offered;
+        for (const std::uint32_t offeredCount : kPoissonSampleCounts)
+            offered.push_back(centredDisk(offeredCount));
+        return offered;
+    }();
     for (const Disk& disk : disks)
         if (disk.count == count)
             return disk;
