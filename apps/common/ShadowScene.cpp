@@ -97,6 +97,7 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     pictures.reversedZ = device.conventions().reversedZ();
     pictures.stats = renderer.render(scene.camera, frame);
     pictures.notes = renderer.notes();
+    pictures.frameGraph = renderer.frameGraphDot();
     if (!scene.lights.empty())
         for (const float depth : kTexelDensityDepths)
             pictures.texelsPerMetre.push_back(

@@ -38,6 +38,7 @@ struct ShadowPictures {
     rhi::Image cascades; // empty unless the frame asked for the cascade view
     std::vector<AtlasPictures> atlases;
     render::FrameStats stats;
+    std::string frameGraph; // the frame's graph as Graphviz dot (SceneRenderer::frameGraphDot)
     std::vector<std::string> notes;
     // render::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
     std::vector<float> texelsPerMetre;

@@ -2,6 +2,7 @@
 #include "Commands.hpp"
 #include "Interrupt.hpp"
 #include "penumbra/parity/ImageFiles.hpp"
+#include "penumbra/rhi/AtomicFile.hpp"
 #include "SceneOptions.hpp"
 
 #include <filesystem>
@@ -17,6 +18,7 @@ struct RenderOptions {
     std::string out = "out/render/lit.png";
     std::string atlas; // file prefix; empty: no atlas files
     std::vector<std::string> debug;
+    std::string graph; // .dot file; empty: none
     bool validate = false;
 };
 
@@ -45,6 +47,10 @@ void writeOutputs(const RenderOptions& options, const ShadowPictures& pictures, 
             parity::writePng(stem + ".png", atlas.picture);
             written.insert(written.end(), {stem + ".exr", stem + ".png"});
         }
+    }
+    if (!options.graph.empty()) {
+        written.push_back(several ? withSuffix(options.graph, pictures.configuration).string() : options.graph);
+        rhi::writeFileAtomically(written.back(), pictures.frameGraph);
     }
     for (const std::string& file : written)
         fmt::print("  wrote {}\n", file);
@@ -106,6 +112,10 @@ void addRenderCommand(CLI::App& app)
                         "PREFIX-<configuration>-<atlas>");
     command->add_option("--debug", options->debug, "cascades: also write X-cascades.png, tinted by cascade")
         ->check(CLI::IsMember({"cascades"}));
+    command->add_option("--graph", options->graph,
+                        "Write the frame's graph as Graphviz dot to FILE (passes in running order, the textures each "
+                        "reads and writes, culled passes and passes off this frame marked); with several "
+                        "configurations FILE-<configuration>.dot");
     addValidateFlag(*command, options->validate);
     command->callback([options] {
         installInterruptHandler();

@@ -1,5 +1,7 @@
 #include "SceneBench.hpp"
 
+#include "penumbra/render/FrameResources.hpp"
+
 #include "BackendOptions.hpp"
 #include "Interrupt.hpp"
 #include "RenderSettings.hpp"
@@ -46,17 +48,20 @@ struct ConfigurationResult {
     render::FrameStats last;
 };
 
-// Each pass's GPU time of one frame, in kBenchPassNames order; 0 for a pass the frame does not draw.
+// Each pass's GPU time of one frame, in kBenchPassNames order; 0 for a pass the frame does not draw. An atlas's
+// time includes the copy of its cached static tiles.
 std::array<double, kPasses> passTimes(const render::FrameStats& s, double referenceMs)
 {
-    return {s.depthPrepassMs.value_or(0.0),
-            s.atlasPassMs.value_or(0.0),
-            s.localAtlasPassMs.value_or(0.0),
-            s.screenSpaceShadowsMs.value_or(0.0),
-            s.litPassMs.value_or(0.0),
-            s.resolvePassMs.value_or(0.0),
+    namespace frame = render::frame;
+    const auto ms = [&](std::string_view pass) { return s.passMs(pass).value_or(0.0); };
+    return {ms(frame::kDepthPrepass) + ms(frame::kReceiverPrepass),
+            ms(frame::kDirectionalStaticTilesPass) + ms(frame::kDirectionalAtlasPass),
+            ms(frame::kLocalStaticTilesPass) + ms(frame::kLocalAtlasPass),
+            ms(frame::kScreenSpaceShadowsPass),
+            ms(frame::kLitPass),
+            ms(frame::kResolvePass),
             referenceMs,
-            s.staticAtlasPassMs.value_or(0.0)};
+            ms(frame::kStaticMapsPass)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.

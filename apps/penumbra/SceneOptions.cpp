@@ -355,13 +355,9 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
                s.casterDrawsWithoutCullingBias);
     if (s.localCasterDraws != 0)
         fmt::print(", {} into spot and point shadows", s.localCasterDraws);
-    if (s.atlasPassMs && s.localAtlasPassMs && s.litPassMs)
-        fmt::print("; atlas pass {:.2f} ms, local atlas pass {:.2f} ms, lit pass {:.2f} ms", *s.atlasPassMs,
-                   *s.localAtlasPassMs, *s.litPassMs);
-    if (s.screenSpaceShadowsMs)
-        fmt::print(", screen-space shadows {:.2f} ms", *s.screenSpaceShadowsMs);
-    if (s.resolvePassMs)
-        fmt::print(", MSAA resolve {:.2f} ms", *s.resolvePassMs);
+    for (std::size_t i = 0; i < s.passes.size(); ++i)
+        if (s.passes[i].gpuMs)
+            fmt::print("{} {} {:.2f} ms", i == 0 ? "; GPU:" : ",", s.passes[i].name, *s.passes[i].gpuMs);
     fmt::print("\n");
     if (!pictures.texelsPerMetre.empty()) {
         fmt::print("  directional shadow texels per metre at view depth");

@@ -3,6 +3,7 @@
 #include "ToolDevices.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/render/FrameResources.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
@@ -113,9 +114,9 @@ ShadowBench::ShadowBench(const std::vector<std::string>& configurations, double 
                         bench.last = bench.renderer->render(bench.scene.camera, bench.frame);
                         bench.frameMs +=
                             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-                        bench.atlasMs += bench.last.atlasPassMs.value_or(0.0);
-                        bench.localMs += bench.last.localAtlasPassMs.value_or(0.0);
-                        bench.litMs += bench.last.litPassMs.value_or(0.0);
+                        bench.atlasMs += bench.last.passMs(render::frame::kDirectionalAtlasPass).value_or(0.0);
+                        bench.localMs += bench.last.passMs(render::frame::kLocalAtlasPass).value_or(0.0);
+                        bench.litMs += bench.last.passMs(render::frame::kLitPass).value_or(0.0);
                         ++bench.frames;
                     }
                     state.counters["atlas_ms"] = bench.atlasMs / bench.frames;

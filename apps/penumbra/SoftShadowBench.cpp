@@ -1,6 +1,7 @@
 #include "SoftShadowBench.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
+#include "penumbra/render/FrameResources.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
@@ -74,16 +75,17 @@ SoftShadowBench::SoftShadowBench(const std::vector<std::string>& configurations,
             if (c->configuration == configuration)
                 round.push_back(c.get());
         const std::string name = fmt::format("soft/{}", configuration);
-        benchmark::RegisterBenchmark(
-            name.c_str(),
-            [round](benchmark::State& state) {
-                for (auto _ : state)
-                    for (Case* bench : round) {
-                        bench->litMs +=
-                            bench->renderer->render(bench->scene.camera, bench->frame).litPassMs.value_or(0.0);
-                        ++bench->frames;
-                    }
-            })
+        benchmark::RegisterBenchmark(name.c_str(),
+                                     [round](benchmark::State& state) {
+                                         for (auto _ : state)
+                                             for (Case* bench : round) {
+                                                 bench->litMs +=
+                                                     bench->renderer->render(bench->scene.camera, bench->frame)
+                                                         .passMs(render::frame::kLitPass)
+                                                         .value_or(0.0);
+                                                 ++bench->frames;
+                                             }
+                                     })
             ->UseRealTime()
             ->Unit(benchmark::kMillisecond)
             ->MinTime(minTime);

@@ -279,13 +279,12 @@ bool shadowPathChoice(render::ShadowPath& path)
 void statusLines(const PanelStatus& status)
 {
     ImGui::Text("frame %.1f ms", status.frameMs);
-    if (status.stats.atlasPassMs && status.stats.localAtlasPassMs && status.stats.litPassMs)
-        ImGui::Text("atlas pass %.2f ms, local atlas %.2f ms, lit pass %.2f ms", *status.stats.atlasPassMs,
-                    *status.stats.localAtlasPassMs, *status.stats.litPassMs);
-    if (status.stats.screenSpaceShadowsMs)
-        ImGui::Text("screen-space shadows %.2f ms", *status.stats.screenSpaceShadowsMs);
-    if (status.stats.resolvePassMs)
-        ImGui::Text("MSAA resolve %.2f ms", *status.stats.resolvePassMs);
+    // The frame graph's passes as they ran, with their GPU times.
+    for (const render::PassTiming& pass : status.stats.passes)
+        if (pass.gpuMs)
+            ImGui::Text("%s %.2f ms", pass.name.c_str(), *pass.gpuMs);
+        else
+            ImGui::Text("%s", pass.name.c_str());
     ImGui::Text("caster draws %u, spot and point %u", status.stats.casterDraws, status.stats.localCasterDraws);
     for (const std::string& note : status.notes)
         ImGui::TextWrapped("%s", note.c_str());

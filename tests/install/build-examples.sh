@@ -17,7 +17,8 @@ cmake -S "$source/examples" -B "$work/from-build-folder" -DCMAKE_PREFIX_PATH="$b
 for configuration in "$@"; do
   mkdir -p "$work/run/$configuration"
   cd "$work/run/$configuration"
-  for pair in triangle:triangle.png shadowed_scene:scene.png cascade_view:cascades.png custom_pass:custom_pass.png; do
+  for pair in triangle:triangle.png shadowed_scene:scene.png cascade_view:cascades.png custom_pass:custom_pass.png \
+              fog_pass:fog_pass.png; do
     program=${pair%%:*} picture=${pair#*:}
     "$work/build/$program" --backend "$configuration"
     "$check" "$picture" spread 0.05 >/dev/null || { echo "$configuration: $program wrote a flat $picture"; exit 1; }
@@ -27,3 +28,4 @@ done
 mkdir -p "$work/run/parity"
 cd "$work/run/parity"
 "$work/build/custom_pass_parity_test"
+"$work/build/fog_pass_parity_test"

@@ -51,6 +51,9 @@ public:
     // The receiver prepass's framebuffer: the two derivative targets and prepare()'s depth.
     const rhi::Framebuffer& receiverTarget() const { return *receiverTarget_; }
     const rhi::Texture& shadows() const { return *shadows_; }
+    // The receiver prepass's world position derivatives (receiverTarget()'s colours).
+    const rhi::Texture& positionDx() const { return *positionDx_; }
+    const rhi::Texture& positionDy() const { return *positionDy_; }
     const rhi::Texture& depth() const { return *depth_; }
     // Nearest, clamped: what the lit pass reads shadows() and depth() with (texelFetch).
     const rhi::Sampler& sampler() const { return *sampler_; }

@@ -177,9 +177,8 @@ void StaticShadowCache::keepDrawn(shadows::StaticShadowMap& map, shadows::Static
     map.update = update;
 }
 
-StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shadows::ShadowSettings& settings,
-                                         shadows::StaticShadowPlan plan, std::span<const shadows::ShadowCaster> casters,
-                                         bool requested)
+StaticMapDraws StaticShadowCache::prepare(const shadows::ShadowSettings& settings, shadows::StaticShadowPlan plan,
+                                          std::span<const shadows::ShadowCaster> casters, bool requested)
 {
     const auto sizeOf = [](const shadows::ShadowAtlasLayout& layout) {
         return layout.tileCount() > 0 ? layout.atlasSize() : kStandInAtlasSize;
@@ -190,8 +189,9 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
                                        "static local shadow atlas");
     StaticMapDraws draws;
     std::map<LightId, Key> keys;
-    std::vector<const shadows::StaticShadowMap*> directionalMaps, localMaps;
-    for (shadows::StaticShadowMap& map : plan.maps) {
+    std::vector<std::size_t> directionalMaps, localMaps; // indices into plan.maps
+    for (std::size_t i = 0; i < plan.maps.size(); ++i) {
+        shadows::StaticShadowMap& map = plan.maps[i];
         const bool directional = isDirectional(map);
         const bool atlasNew = directional ? directionalNew : localNew;
         const LightId id{map.kind, map.lightIndex};
@@ -219,42 +219,63 @@ StaticMapDraws StaticShadowCache::update(rhi::CommandList& commands, const shado
             reason = "a static caster in its view changed";
         if (reason) {
             draws.updates.push_back({map.kind, map.lightIndex, reason});
-            (directional ? directionalMaps : localMaps).push_back(&map);
+            (directional ? directionalMaps : localMaps).push_back(i);
         }
         keys.emplace(id, key);
     }
+    drawn_ = std::move(keys);
+    plan_ = std::move(plan);
+    const auto mapsAt = [&](const std::vector<std::size_t>& indices) {
+        std::vector<const shadows::StaticShadowMap*> maps;
+        for (std::size_t i : indices)
+            maps.push_back(&plan_.maps[i]);
+        return maps;
+    };
+    pendingDirectional_.clear();
+    pendingLocal_.clear();
+    directionalNew_ = false;
+    localNew_ = false;
     if (bake_) {
         // A restore rewrites the whole atlas, so every map of its kind is restored with the one that changed.
         for (StaticMapUpdate& u : draws.updates)
             u.reason = "restored from the bake";
         const auto all = [&](bool directional) {
             std::vector<const shadows::StaticShadowMap*> maps;
-            for (const shadows::StaticShadowMap& map : plan.maps)
+            for (const shadows::StaticShadowMap& map : plan_.maps)
                 if (isDirectional(map) == directional)
                     maps.push_back(&map);
             return maps;
         };
         if (!directionalMaps.empty())
-            restore(*directionalAtlas_, plan.directionalAtlas, all(true));
+            restore(*directionalAtlas_, plan_.directionalAtlas, all(true));
         if (!localMaps.empty())
-            restore(*localAtlas_, plan.localAtlas, all(false));
-    } else {
-        pass_.begin();
-        const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
-            std::vector<const shadows::ShadowTileDraw*> tiles;
-            for (const shadows::StaticShadowMap* map : maps)
-                for (const shadows::StaticShadowTile& tile : map->tiles)
-                    tiles.push_back(&tile);
-            return tiles;
-        };
-        if (!directionalMaps.empty() || directionalNew)
-            draws.casterDraws +=
-                pass_.record(commands, *directionalAtlas_, tilesOf(directionalMaps), casters, directionalNew);
-        if (!localMaps.empty() || localNew)
-            draws.casterDraws += pass_.record(commands, *localAtlas_, tilesOf(localMaps), casters, localNew);
+            restore(*localAtlas_, plan_.localAtlas, all(false));
+        return draws;
     }
-    drawn_ = std::move(keys);
-    plan_ = std::move(plan);
+    pendingDirectional_ = mapsAt(directionalMaps);
+    pendingLocal_ = mapsAt(localMaps);
+    directionalNew_ = directionalNew;
+    localNew_ = localNew;
+    return draws;
+}
+
+std::uint32_t StaticShadowCache::record(rhi::CommandList& commands, std::span<const shadows::ShadowCaster> casters)
+{
+    const auto tilesOf = [](const std::vector<const shadows::StaticShadowMap*>& maps) {
+        std::vector<const shadows::ShadowTileDraw*> tiles;
+        for (const shadows::StaticShadowMap* map : maps)
+            for (const shadows::StaticShadowTile& tile : map->tiles)
+                tiles.push_back(&tile);
+        return tiles;
+    };
+    if (!drawsPending())
+        return 0;
+    pass_.begin();
+    std::uint32_t draws = 0;
+    if (!pendingDirectional_.empty() || directionalNew_)
+        draws += pass_.record(commands, *directionalAtlas_, tilesOf(pendingDirectional_), casters, directionalNew_);
+    if (!pendingLocal_.empty() || localNew_)
+        draws += pass_.record(commands, *localAtlas_, tilesOf(pendingLocal_), casters, localNew_);
     return draws;
 }
 

@@ -37,13 +37,20 @@ class StaticShadowCache {
 public:
     StaticShadowCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat);
 
-    // Takes this frame's plan and records the draws of the maps it needs; returns those maps. A map in OnChange
-    // mode is drawn when its key changed; one in OnDemand mode (StaticShadowMap::update, the light's own or the
-    // settings'), unless `requested`, keeps the tiles and uniforms it was drawn with while its atlas and its tiles
-    // stay, whatever else changed. `requested` draws every map. Without maps the atlases are small stand-ins.
-    StaticMapDraws update(rhi::CommandList& commands, const shadows::ShadowSettings& settings,
-                          shadows::StaticShadowPlan plan, std::span<const shadows::ShadowCaster> casters,
-                          bool requested);
+    // Takes this frame's plan and chooses the maps it needs drawn, which record() then draws; returns those maps
+    // (their caster draws are record()'s). A map in OnChange mode is drawn when its key changed; one in OnDemand mode
+    // (StaticShadowMap::update, the light's own or the settings'), unless `requested`, keeps the tiles and uniforms it
+    // was drawn with while its atlas and its tiles stay, whatever else changed. `requested` draws every map. Without
+    // maps the atlases are small stand-ins. With a bake, the chosen maps' atlases are restored (uploaded) here.
+    StaticMapDraws prepare(const shadows::ShadowSettings& settings, shadows::StaticShadowPlan plan,
+                           std::span<const shadows::ShadowCaster> casters, bool requested);
+    // Records the draws prepare() chose (none with a bake); returns the caster draws. `casters` are prepare()'s.
+    std::uint32_t record(rhi::CommandList& commands, std::span<const shadows::ShadowCaster> casters);
+    // Whether record() has anything to draw or clear.
+    bool drawsPending() const
+    {
+        return !pendingDirectional_.empty() || !pendingLocal_.empty() || directionalNew_ || localNew_;
+    }
 
     // From now on the maps come from `bake`: update() restores them into the atlases instead of drawing casters.
     void useBake(shadows::StaticShadowBake bake);
@@ -76,6 +83,10 @@ private:
     shadows::StaticShadowPlan plan_;
     std::map<LightId, Key> drawn_;
     std::optional<shadows::StaticShadowBake> bake_;
+    // What prepare() left record() to draw: maps of plan_, and whether each atlas is new (then cleared whole).
+    std::vector<const shadows::StaticShadowMap*> pendingDirectional_, pendingLocal_;
+    bool directionalNew_ = false;
+    bool localNew_ = false;
 
     const shadows::BakedShadowMap* bakedMap(const shadows::StaticShadowMap& map) const;
     // The light's map as last drawn (in plan_), or nullptr.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/render/AmbientLight.hpp"
+#include "penumbra/render/FramePass.hpp"
 #include "penumbra/render/GpuScene.hpp"
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/rhi/Device.hpp"
@@ -20,16 +21,19 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace penumbra::render {
 
 class DepthPrepass;
+class FrameGraph;
 class LitPipelines;
 class ScreenSpaceShadowPass;
 class StaticShadowCache;
-struct LitDraw;
 class StaticTileCache;
+struct FrameState;
+struct LitDraw;
 
 // Where the lit pass's directional shadows are evaluated. Forward: in the lit pass, per fragment. ScreenSpace: after
 // the depth prepass, one full-screen pass collects the cascaded shadows of directional lights 0 to
@@ -81,13 +85,9 @@ struct FrameStats {
     std::uint32_t casterDraws = 0; // issued into the directional atlas
     std::uint32_t casterDrawsWithoutCullingBias = 0; // casters overlapping each cascade's light box
     std::uint32_t localCasterDraws = 0; // issued into the spot and point shadows
-    std::optional<double> depthPrepassMs; // GPU time, where the device has timestamps (and a prepass ran)
-    std::optional<double> atlasPassMs; // GPU time, where the device has timestamps
-    std::optional<double> localAtlasPassMs;
-    std::optional<double> screenSpaceShadowsMs; // the screen-space shadow collection (ShadowPath::ScreenSpace)
-    std::optional<double> litPassMs;
-    std::optional<double> resolvePassMs; // the multisampled lit image into litImage(), where FrameDesc::msaa > 1
-    std::optional<double> staticAtlasPassMs; // the static maps drawn this frame, where the device has timestamps
+    // The passes that ran, in order, each with its GPU time where the device has timestamps (FrameResources.hpp
+    // names the built-in ones).
+    std::vector<PassTiming> passes;
     // Static shadow maps (ShadowSettings::staticMaps): the static caster draws this frame (into the static maps and,
     // with RealtimeCasters::Dynamic, into the realtime tiles' cached static depth), and which static maps were drawn
     // and why ("spot light 0 ('lamp'): a static caster in its view changed").
@@ -96,6 +96,9 @@ struct FrameStats {
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
     // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
+
+    // The GPU time of the pass of that name; nullopt where it did not run or the device has no timestamps.
+    std::optional<double> passMs(std::string_view pass) const;
 };
 
 // The CPU half of a frame (scene -> shadow planning) that render() draws. An application may edit the plans
@@ -164,22 +167,34 @@ public:
     // differs).
     void useBakedShadows(shadows::StaticShadowBake bake);
 
+    // The frame is a graph of passes (FramePass.hpp; FrameResources.hpp names the built-in passes and textures). An
+    // application's pass runs before or after the built-in pass it names, every frame from the next render() on, and
+    // reads and writes the frame's textures by name; several placed alike run in the order added. Throws rhi::Error
+    // for a placement naming no built-in pass. The renderer keeps the pass.
+    void addPass(std::shared_ptr<FramePass> pass, PassPlacement placement);
+    // A texture of the application's that its passes use by `name`, one of the frame's outputs: the passes that lead
+    // to it are never culled. It must outlive the renderer's frames.
+    void addTexture(std::string name, const rhi::Texture& texture);
+    // The last frame's graph as Graphviz dot: its passes in order (culled ones and ones off that frame marked) and the
+    // textures each reads and writes.
+    std::string frameGraphDot() const;
+
 private:
+    struct UserPass {
+        std::shared_ptr<FramePass> pass;
+        PassPlacement placement;
+    };
+    struct UserTexture {
+        std::string name;
+        const rhi::Texture& texture;
+    };
+
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
+    FrameStats prepareFrame(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans& plans);
+    void buildGraph(const FrameDesc& frame);
+    void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
     int litLightIndex(const scene::LightRef& light) const;
-    // The lit pass's shadow bindings (atlases, cubes, their blocks, static maps), which the screen-space collection
-    // shares.
-    void bindShadowMaps(rhi::CommandList& commands, const rhi::UniformSlice& shadowUniforms,
-                        const rhi::UniformSlice& localShadowUniforms,
-                        const rhi::UniformSlice& staticShadowUniforms) const;
-    // After the depth prepass (features.depthPrepassed) the opaque objects are drawn with an equal depth test into
-    // the prepass's depth; otherwise the target's depth is cleared. Each draw takes `features` with its material's
-    // maps. Returns the draws issued.
-    std::uint32_t recordLitPass(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
-                                const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
-                                const rhi::UniformSlice& shadowUniforms, const rhi::UniformSlice& localShadowUniforms,
-                                const rhi::UniformSlice& staticShadowUniforms);
 
     rhi::Device& device_;
     GpuScene gpuScene_;
@@ -205,7 +220,11 @@ private:
     // This frame's shadow casters (GpuScene::casters), kept so that their storage is reused.
     std::vector<shadows::ShadowCaster> casters_;
     std::unique_ptr<rhi::CommandList> commands_;
-    std::unique_ptr<rhi::TimestampQueries> timestamps_;
+    std::unique_ptr<FrameGraph> graph_;
+    std::unique_ptr<FrameState> state_; // what this frame's passes draw
+    std::vector<std::unique_ptr<FramePass>> framePasses_; // this frame's built-in passes
+    std::vector<UserPass> userPasses_;
+    std::vector<UserTexture> userTextures_;
     rhi::UniformArena uniforms_;
     rhi::VertexArena instances_; // the lit draws' instance transforms
 
@@ -215,14 +234,7 @@ private:
     std::unique_ptr<rhi::Texture> lit_;
     std::unique_ptr<rhi::Texture> cascades_;
     std::unique_ptr<rhi::Texture> depth_;
-    // FrameDesc::msaa > 1: the lit pass's multisampled colour and depth, resolved into lit_.
-    std::unique_ptr<rhi::Texture> multisampledColor_;
-    std::unique_ptr<rhi::Texture> multisampledDepth_;
-    std::unique_ptr<rhi::Framebuffer> litTarget_; // lit_ and depth_, or the multisampled pair
-    std::unique_ptr<rhi::Framebuffer> prepassTarget_; // litTarget_'s depth alone
-    std::unique_ptr<rhi::Framebuffer> cascadeTarget_;
     std::unique_ptr<rhi::Texture> visibility_;
-    std::unique_ptr<rhi::Framebuffer> visibilityTarget_;
 
     shadows::DirectionalShadowPlan plan_;
     shadows::LocalShadowPlan localPlan_;

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <string_view>
+
+// The names of the frame's built-in passes and textures, as SceneRenderer's graph knows them: what a user's pass
+// reads or writes (FramePassBuilder) and where it is placed (PassPlacement). `penumbra render --graph` draws them.
+namespace penumbra::render::frame {
+
+// Passes, in the order they run.
+inline constexpr std::string_view kStaticMapsPass = "static maps";
+inline constexpr std::string_view kDirectionalStaticTilesPass = "directional static tiles";
+inline constexpr std::string_view kDirectionalAtlasPass = "directional atlas";
+inline constexpr std::string_view kLocalStaticTilesPass = "local static tiles";
+inline constexpr std::string_view kLocalAtlasPass = "local atlas";
+inline constexpr std::string_view kDepthPrepass = "depth prepass";
+inline constexpr std::string_view kReceiverPrepass = "receiver prepass";
+inline constexpr std::string_view kScreenSpaceShadowsPass = "screen-space shadows";
+inline constexpr std::string_view kLitPass = "lit";
+inline constexpr std::string_view kResolvePass = "msaa resolve";
+inline constexpr std::string_view kCascadeViewPass = "cascade view";
+inline constexpr std::string_view kVisibilityViewPass = "visibility view";
+
+// Textures. The lit image, the atlases and the views are the frame's outputs (SceneRenderer's accessors read them).
+inline constexpr std::string_view kLitImage = "lit image"; // RGBA8 sRGB-encoded, single-sampled
+inline constexpr std::string_view kLitDepth = "lit depth"; // single-sampled, sampled: the prepass's depth
+inline constexpr std::string_view kMultisampledColor = "lit image (multisampled)"; // FrameDesc::msaa > 1
+inline constexpr std::string_view kMultisampledDepth = "lit depth (multisampled)"; // FrameDesc::msaa > 1
+inline constexpr std::string_view kDirectionalAtlas = "directional atlas";
+inline constexpr std::string_view kLocalAtlas = "local atlas";
+inline constexpr std::string_view kShadowCubes = "shadow cubes";
+inline constexpr std::string_view kStaticDirectionalAtlas = "static directional atlas";
+inline constexpr std::string_view kStaticLocalAtlas = "static local atlas";
+// The screen-space path's receiver prepass: the world position's screen derivatives.
+inline constexpr std::string_view kReceiverPositionDx = "receiver position dx";
+inline constexpr std::string_view kReceiverPositionDy = "receiver position dy";
+inline constexpr std::string_view kScreenSpaceShadows = "screen-space shadows";
+inline constexpr std::string_view kCascadeView = "cascade view";
+inline constexpr std::string_view kVisibilityView = "visibility view";
+
+} // namespace penumbra::render::frame

@@ -1,0 +1,94 @@
+#include "FrameNotes.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace penumbra::render {
+namespace {
+
+const char* kindName(shadows::LocalLightKind kind)
+{
+    return kind == shadows::LocalLightKind::Spot ? "spot light" : "point light";
+}
+
+const std::string& localLightName(const scene::Scene& scene, shadows::LocalLightKind kind, std::uint32_t index)
+{
+    return kind == shadows::LocalLightKind::Spot ? scene.spotLights[index].name : scene.pointLights[index].name;
+}
+
+bool hasStaticMap(const shadows::StaticShadowPlan& plan, shadows::ShadowLightKind kind, std::uint32_t index)
+{
+    return std::any_of(plan.maps.begin(), plan.maps.end(), [&](const shadows::StaticShadowMap& map) {
+        return map.kind == kind && map.lightIndex == index;
+    });
+}
+
+shadows::ShadowLightKind shadowLightKind(shadows::LocalLightKind kind)
+{
+    return kind == shadows::LocalLightKind::Spot ? shadows::ShadowLightKind::Spot : shadows::ShadowLightKind::Point;
+}
+
+// What a light without realtime shadows has: nothing, or its static map alone.
+const char* withoutRealtime(const ShadowPlans& plans, shadows::ShadowLightKind kind, std::uint32_t index)
+{
+    return hasStaticMap(plans.staticMaps, kind, index) ? "has static shadows only" : "has no shadows";
+}
+
+} // namespace
+
+const std::string& lightName(const scene::Scene& scene, shadows::ShadowLightKind kind, std::uint32_t index)
+{
+    switch (kind) {
+    case shadows::ShadowLightKind::Spot:
+        return scene.spotLights[index].name;
+    case shadows::ShadowLightKind::Point:
+        return scene.pointLights[index].name;
+    case shadows::ShadowLightKind::Directional:
+        break;
+    }
+    return scene.lights[index].name;
+}
+
+std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans& plans)
+{
+    std::vector<std::string> notes;
+    for (const shadows::ShadowPlanNote& note : plans.directional.report)
+        notes.push_back(
+            note.lightIndex
+                ? fmt::format("light {} ('{}') {}: {}", *note.lightIndex, scene.lights[*note.lightIndex].name,
+                              withoutRealtime(plans, shadows::ShadowLightKind::Directional, *note.lightIndex),
+                              note.reason)
+                : fmt::format("no shadows: {}", note.reason));
+    for (std::size_t i = maxLitDirectionalLights; i < scene.lights.size(); ++i)
+        notes.push_back(fmt::format("light {} ('{}') is not drawn: beyond the limit of {} directional lights", i,
+                                    scene.lights[i].name, maxLitDirectionalLights));
+    for (const shadows::LocalShadowNote& note : plans.local.report)
+        notes.push_back(fmt::format("{} {} ('{}') {}: {}", kindName(note.kind), note.lightIndex,
+                                    localLightName(scene, note.kind, note.lightIndex),
+                                    withoutRealtime(plans, shadowLightKind(note.kind), note.lightIndex), note.reason));
+    for (const shadows::StaticShadowNote& note : plans.staticMaps.report)
+        notes.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(note.kind), note.lightIndex,
+                                    lightName(scene, note.kind, note.lightIndex), note.reason));
+    const std::size_t spots = scene.spotLights.size();
+    for (std::size_t i = maxLitLocalLights; i < spots + scene.pointLights.size(); ++i) {
+        const auto kind = i < spots ? shadows::LocalLightKind::Spot : shadows::LocalLightKind::Point;
+        const auto index = static_cast<std::uint32_t>(i < spots ? i : i - spots);
+        notes.push_back(fmt::format("{} {} ('{}') is not drawn: beyond the limit of {} spot and point lights",
+                                    kindName(kind), index, localLightName(scene, kind, index), maxLitLocalLights));
+    }
+    return notes;
+}
+
+std::optional<std::string> uncollectedShadows(const scene::Scene& scene, const shadows::DirectionalShadowPlan& plan,
+                                              const shadows::StaticShadowUniforms& staticMaps)
+{
+    const std::size_t count = std::min<std::size_t>(plan.shadowSlots.size(), maxLitDirectionalLights);
+    for (std::size_t i = maxCollectedDirectionalLights; i < count; ++i)
+        if (plan.shadowSlots[i] >= 0 || staticMaps.directionalLights[i].x >= 0.0f)
+            return fmt::format("screen-space shadows: directional light {} ('{}') has shadows, but the screen-space "
+                               "shadow texture holds lights 0 to {}; the frame is drawn with forward shadows",
+                               i, scene.lights[i].name, maxCollectedDirectionalLights - 1);
+    return std::nullopt;
+}
+
+} // namespace penumbra::render

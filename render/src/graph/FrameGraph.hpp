@@ -1,0 +1,92 @@
+#pragma once
+
+#include "penumbra/render/FramePass.hpp"
+#include "penumbra/rhi/Device.hpp"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace penumbra::render {
+
+// A frame's passes and textures (Filament's FrameGraph; O'Donnell, "FrameGraph: Extensible Rendering Architecture in
+// Frostbite", GDC 2017). Each frame: reset(), import and create textures, add passes in running order, compile()
+// (setup, checks, culling, transient textures), execute() into a command list; after its submission, timings().
+// Textures made for the frame live in the graph's pool across frames, so a frame like the last makes none.
+class FrameGraph {
+public:
+    explicit FrameGraph(rhi::Device& device);
+    ~FrameGraph();
+    FrameGraph(const FrameGraph&) = delete;
+    FrameGraph& operator=(const FrameGraph&) = delete;
+
+    void reset();
+    // A texture made outside the graph. The frame exists to write its outputs: a pass none of whose writes leads to
+    // an output (or to a pass that keep()s) is culled.
+    void importTexture(std::string_view name, const rhi::Texture& texture, bool output = false);
+    // A texture the graph makes for the passes between the first and the last that use it; textures of one
+    // description whose spans do not overlap share one (TransientSlots.hpp).
+    void createTexture(std::string_view name, const rhi::TextureDesc& desc);
+    // In running order; the pass must outlive execute(). Throws rhi::Error for a second pass of one name.
+    void addPass(FramePass& pass);
+
+    // Runs every pass's setup (which throws rhi::Error for a texture the frame does not have), then throws rhi::Error
+    // for a pass that reads a made texture before any pass writes it; culls, and makes the transient textures.
+    void compile();
+    // Records the passes that run, each between timestamps where the device has them.
+    void execute(rhi::CommandList& commands);
+    // After the submission of execute()'s commands: every pass that ran, in order.
+    std::vector<PassTiming> timings();
+    // The compiled frame as Graphviz dot: passes in order (culled ones dashed, ones off this frame dotted), textures
+    // (outputs double-bordered, transient ones filled), an edge per declared use.
+    std::string dot() const;
+
+    // Framebuffers reference their textures: call when an imported texture is made anew.
+    void dropFramebuffers() { framebuffers_.clear(); }
+
+private:
+    friend class FramePassBuilder;
+    friend class FramePassContext;
+
+    struct Use {
+        std::size_t resource;
+        ResourceUse use;
+    };
+    struct Pass {
+        FramePass* pass;
+        std::string name;
+        bool runs = false; // setup() said so
+        bool culled = false;
+        std::vector<Use> uses;
+        bool kept = false;
+    };
+    struct Resource {
+        std::string name;
+        const rhi::Texture* texture = nullptr; // imported, or the pool's once compiled
+        std::optional<rhi::TextureDesc> transient;
+        bool output = false;
+    };
+
+    std::size_t resourceIndex(std::string_view name) const;
+    void declare(std::size_t pass, std::string_view resource, ResourceUse use);
+    void checkOrder() const;
+    void cull();
+    void makeTransients();
+    const rhi::Texture& declaredTexture(std::size_t pass, std::string_view resource) const;
+    const rhi::Framebuffer& framebuffer(std::size_t pass, std::initializer_list<std::string_view> colors,
+                                        std::string_view depth);
+
+    rhi::Device& device_;
+    std::vector<Pass> passes_;
+    std::vector<Resource> resources_;
+    // The pool: per texture description (TextureKey), its slots' textures.
+    std::map<std::string, std::vector<std::unique_ptr<rhi::Texture>>> pool_;
+    std::map<std::vector<const rhi::Texture*>, std::unique_ptr<rhi::Framebuffer>> framebuffers_;
+    std::unique_ptr<rhi::TimestampQueries> timestamps_;
+    std::vector<std::size_t> timed_; // the passes execute() recorded, in order
+};
+
+} // namespace penumbra::render

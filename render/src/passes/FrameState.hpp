@@ -1,0 +1,61 @@
+#pragma once
+
+#include "LitDraws.hpp"
+
+#include "penumbra/render/FramePass.hpp"
+#include "penumbra/render/LitUniforms.hpp"
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/shadows/ShadowCaster.hpp"
+
+#include <span>
+#include <vector>
+
+namespace penumbra::render {
+
+class StaticShadowCache;
+
+// The lit pass's shadow bindings (atlases, cubes, their blocks, static maps), which the screen-space collection and
+// the debug views share.
+struct ShadowMapBindings {
+    shadows::ShadowAtlas* directional = nullptr;
+    shadows::ShadowAtlas* local = nullptr;
+    const shadows::ShadowCubes* cubes = nullptr;
+    const StaticShadowCache* staticMaps = nullptr;
+    rhi::UniformSlice directionalUniforms;
+    rhi::UniformSlice localUniforms;
+    rhi::UniformSlice staticUniforms;
+
+    void bind(rhi::CommandList& commands) const;
+};
+
+// Declares the reads of every texture ShadowMapBindings binds.
+void readShadowMaps(FramePassBuilder& builder);
+
+// RealtimeCasters::Dynamic: the tiles' static casters, which the realtime atlases take from StaticTileCache, and
+// the tiles without them, which the passes draw over it.
+struct SplitTiles {
+    std::vector<shadows::ShadowTileDraw> directional;
+    std::vector<shadows::ShadowTileDraw> local;
+};
+
+// What SceneRenderer planned for this frame and its built-in passes draw: set before the graph compiles, read by the
+// passes' setup and execute, which add their counts to `stats`.
+struct FrameState {
+    const FrameDesc* desc = nullptr;
+    FrameStats* stats = nullptr;
+    std::span<const shadows::ShadowCaster> casters;
+    std::span<const LitDraw> litDraws;
+    ShadowMapBindings shadowMaps;
+    SplitTiles staticTiles; // empty unless the realtime atlases draw dynamic casters only
+    bool screenSpace = false; // directional shadows collected in screen space
+    bool multisampled = false;
+    rhi::UniformArena* uniforms = nullptr; // this frame's blocks
+    LitFrameUniforms litFrameUniforms; // the lit view's Frame block
+    rhi::UniformSlice litFrame; // litFrameUniforms, pushed
+    LitFrameUniforms cascadeFrameUniforms; // the cascade view's
+    LitFrameUniforms visibilityFrameUniforms; // the visibility view's
+    // The features the frame's lights and shadow maps need (frameShaderFeatures): forward shadows, no prepass.
+    LitShaderFeatures features;
+};
+
+} // namespace penumbra::render

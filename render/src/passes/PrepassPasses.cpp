@@ -1,0 +1,71 @@
+#include "PrepassPasses.hpp"
+
+#include "DepthPrepass.hpp"
+#include "ScreenSpaceShadowPass.hpp"
+
+#include "penumbra/render/FrameResources.hpp"
+
+namespace penumbra::render {
+
+std::string DepthPrepassPass::name() const { return std::string(frame::kDepthPrepass); }
+
+bool DepthPrepassPass::setup(FramePassBuilder& builder)
+{
+    // Single-sampled, the screen-space path's receiver prepass is the depth prepass.
+    if (!state_.desc->depthPrepass || (state_.screenSpace && !state_.multisampled))
+        return false;
+    builder.write(state_.multisampled ? frame::kMultisampledDepth : frame::kLitDepth);
+    return true;
+}
+
+void DepthPrepassPass::execute(const FramePassContext& context)
+{
+    const rhi::Framebuffer& target =
+        context.framebuffer({}, state_.multisampled ? frame::kMultisampledDepth : frame::kLitDepth);
+    state_.stats->depthPrepassDraws +=
+        prepass_.record(context.commands(), target, scene_, state_.litDraws, state_.litFrame);
+}
+
+std::string ReceiverPrepassPass::name() const { return std::string(frame::kReceiverPrepass); }
+
+bool ReceiverPrepassPass::setup(FramePassBuilder& builder)
+{
+    if (!state_.screenSpace)
+        return false;
+    builder.write(frame::kLitDepth);
+    builder.write(frame::kReceiverPositionDx);
+    builder.write(frame::kReceiverPositionDy);
+    return true;
+}
+
+void ReceiverPrepassPass::execute(const FramePassContext& context)
+{
+    state_.stats->depthPrepassDraws += prepass_.record(context.commands(), collection_.receiverTarget(), scene_,
+                                                       state_.litDraws, state_.litFrame);
+}
+
+std::string ScreenSpaceShadowsPass::name() const { return std::string(frame::kScreenSpaceShadowsPass); }
+
+bool ScreenSpaceShadowsPass::setup(FramePassBuilder& builder)
+{
+    if (!state_.screenSpace)
+        return false;
+    builder.read(frame::kLitDepth);
+    builder.read(frame::kReceiverPositionDx);
+    builder.read(frame::kReceiverPositionDy);
+    readShadowMaps(builder);
+    builder.write(frame::kScreenSpaceShadows);
+    return true;
+}
+
+void ScreenSpaceShadowsPass::execute(const FramePassContext& context)
+{
+    rhi::CommandList& commands = context.commands();
+    const FrameDesc& desc = *state_.desc;
+    collection_.begin(commands, state_.features,
+                      state_.uniforms->push(screenSpaceShadowUniforms(state_.litFrameUniforms, desc.width, desc.height)));
+    state_.shadowMaps.bind(commands);
+    collection_.draw(commands);
+}
+
+} // namespace penumbra::render

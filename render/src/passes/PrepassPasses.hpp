@@ -1,0 +1,67 @@
+#pragma once
+
+#include "FrameState.hpp"
+
+#include "penumbra/render/FramePass.hpp"
+
+namespace penumbra::render {
+
+class DepthPrepass;
+class GpuScene;
+class ScreenSpaceShadowPass;
+
+// The lit pass's depth first (DepthPrepass): into the multisampled depth with MSAA, else into the lit depth; the
+// screen-space path without MSAA takes the receiver prepass instead.
+class DepthPrepassPass final : public FramePass {
+public:
+    DepthPrepassPass(const FrameState& state, const DepthPrepass& prepass, const GpuScene& scene)
+        : state_(state), prepass_(prepass), scene_(scene)
+    {
+    }
+    std::string name() const override;
+    bool setup(FramePassBuilder& builder) override;
+    void execute(const FramePassContext& context) override;
+
+private:
+    const FrameState& state_;
+    const DepthPrepass& prepass_;
+    const GpuScene& scene_;
+};
+
+// The screen-space path's single-sampled prepass with receivers: the lit depth and the world position's screen
+// derivatives that the collection reads.
+class ReceiverPrepassPass final : public FramePass {
+public:
+    ReceiverPrepassPass(const FrameState& state, const DepthPrepass& prepass, const ScreenSpaceShadowPass& collection,
+                        const GpuScene& scene)
+        : state_(state), prepass_(prepass), collection_(collection), scene_(scene)
+    {
+    }
+    std::string name() const override;
+    bool setup(FramePassBuilder& builder) override;
+    void execute(const FramePassContext& context) override;
+
+private:
+    const FrameState& state_;
+    const DepthPrepass& prepass_;
+    const ScreenSpaceShadowPass& collection_;
+    const GpuScene& scene_;
+};
+
+// The screen-space collection of the directional lights' shadows (ScreenSpaceShadowPass).
+class ScreenSpaceShadowsPass final : public FramePass {
+public:
+    ScreenSpaceShadowsPass(const FrameState& state, ScreenSpaceShadowPass& collection)
+        : state_(state), collection_(collection)
+    {
+    }
+    std::string name() const override;
+    bool setup(FramePassBuilder& builder) override;
+    void execute(const FramePassContext& context) override;
+
+private:
+    const FrameState& state_;
+    ScreenSpaceShadowPass& collection_;
+};
+
+} // namespace penumbra::render

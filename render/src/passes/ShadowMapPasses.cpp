@@ -1,0 +1,86 @@
+#include "ShadowMapPasses.hpp"
+
+#include "../static/StaticShadowCache.hpp"
+#include "../static/StaticTileCache.hpp"
+
+#include "penumbra/render/FrameResources.hpp"
+
+namespace penumbra::render {
+
+std::string StaticMapsPass::name() const { return std::string(frame::kStaticMapsPass); }
+
+bool StaticMapsPass::setup(FramePassBuilder& builder)
+{
+    if (!cache_.drawsPending())
+        return false;
+    // The cache clears a static atlas made anew and draws the chosen tiles over the rest: both atlases are read too.
+    builder.write(frame::kStaticDirectionalAtlas, ResourceUse::DrawOver);
+    builder.write(frame::kStaticLocalAtlas, ResourceUse::DrawOver);
+    return true;
+}
+
+void StaticMapsPass::execute(const FramePassContext& context)
+{
+    state_.stats->staticCasterDraws += cache_.record(context.commands(), state_.casters);
+}
+
+std::string StaticTilesPass::name() const
+{
+    return std::string(atlas_ == Atlas::Directional ? frame::kDirectionalStaticTilesPass
+                                                    : frame::kLocalStaticTilesPass);
+}
+
+const std::vector<shadows::ShadowTileDraw>& StaticTilesPass::tiles() const
+{
+    return atlas_ == Atlas::Directional ? state_.staticTiles.directional : state_.staticTiles.local;
+}
+
+bool StaticTilesPass::setup(FramePassBuilder& builder)
+{
+    if (tiles().empty())
+        return false;
+    builder.write(atlas_ == Atlas::Directional ? frame::kDirectionalAtlas : frame::kLocalAtlas,
+                  ResourceUse::TransferDestination);
+    return true;
+}
+
+void StaticTilesPass::execute(const FramePassContext& context)
+{
+    shadows::ShadowAtlas& atlas =
+        atlas_ == Atlas::Directional ? *state_.shadowMaps.directional : *state_.shadowMaps.local;
+    state_.stats->staticCasterDraws += cache_.update(context.commands(), atlas, tiles(), state_.casters);
+}
+
+std::string DirectionalAtlasPass::name() const { return std::string(frame::kDirectionalAtlasPass); }
+
+bool DirectionalAtlasPass::setup(FramePassBuilder& builder)
+{
+    builder.write(frame::kDirectionalAtlas,
+                  state_.staticTiles.directional.empty() ? ResourceUse::RenderTarget : ResourceUse::DrawOver);
+    return true;
+}
+
+void DirectionalAtlasPass::execute(const FramePassContext& context)
+{
+    state_.stats->casterDraws = pass_.record(context.commands(), *state_.shadowMaps.directional, plan_,
+                                             state_.casters, state_.staticTiles.directional.empty());
+}
+
+std::string LocalAtlasPass::name() const { return std::string(frame::kLocalAtlasPass); }
+
+bool LocalAtlasPass::setup(FramePassBuilder& builder)
+{
+    builder.write(frame::kLocalAtlas,
+                  state_.staticTiles.local.empty() ? ResourceUse::RenderTarget : ResourceUse::DrawOver);
+    builder.write(frame::kShadowCubes);
+    return true;
+}
+
+void LocalAtlasPass::execute(const FramePassContext& context)
+{
+    state_.stats->localCasterDraws = pass_.record(context.commands(), *state_.shadowMaps.local,
+                                                  *state_.shadowMaps.cubes, plan_, state_.casters,
+                                                  state_.staticTiles.local.empty());
+}
+
+} // namespace penumbra::render

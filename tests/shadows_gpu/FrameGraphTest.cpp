@@ -1,0 +1,211 @@
+// The frame as a graph of passes: which built-in passes run for a frame, that the debug views are culled unless
+// asked for, an application's pass placed after the lit pass reading the lit image, and the errors of a pass that
+// names a texture or a pass the frame does not have, or touches a texture it did not declare.
+#include "GpuTesting.hpp"
+#include "LitRendering.hpp"
+
+#include "penumbra/render/FrameResources.hpp"
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/TestScenes.hpp"
+
+#include "graph/TransientSlots.hpp"
+
+#include <gtest/gtest.h>
+
+namespace penumbra::testing {
+namespace {
+
+namespace frame = render::frame;
+
+constexpr std::uint32_t kWidth = 160;
+constexpr std::uint32_t kHeight = 90;
+
+std::vector<std::string> passNames(const render::FrameStats& stats)
+{
+    std::vector<std::string> names;
+    for (const render::PassTiming& pass : stats.passes)
+        names.push_back(pass.name);
+    return names;
+}
+
+// An application's pass: the lit image at half brightness into a texture of its own.
+class HalfBrightPass final : public render::FramePass {
+public:
+    HalfBrightPass(rhi::Device& device, std::string output, std::string read = std::string(frame::kLitImage))
+        : output_(std::move(output)), read_(std::move(read))
+    {
+        vertex_ = device.createShader({rhi::ShaderStage::Vertex, R"(#version 450
+            const vec2 corners[3] = vec2[](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
+            void main() { gl_Position = vec4(corners[gl_VertexIndex], 0.0, 1.0); })"});
+        fragment_ = device.createShader({rhi::ShaderStage::Fragment, R"(#version 450
+            layout(binding = 0) uniform sampler2D lit;
+            layout(location = 0) out vec4 result;
+            void main() { result = vec4(texelFetch(lit, ivec2(gl_FragCoord.xy), 0).rgb * 0.5, 1.0); })"});
+        pipeline_ = device.createPipeline(
+            {.vertex = vertex_.get(), .fragment = fragment_.get(), .colorTargets = {{.format = render::kLitColorFormat}}});
+        sampler_ = device.createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
+    }
+
+    std::string name() const override { return "half bright"; }
+    bool setup(render::FramePassBuilder& builder) override
+    {
+        builder.read(read_);
+        builder.write(output_);
+        return true;
+    }
+    void execute(const render::FramePassContext& context) override
+    {
+        rhi::CommandList& commands = context.commands();
+        commands.beginPass({.framebuffer = &context.framebuffer({output_})});
+        commands.bindPipeline(*pipeline_);
+        commands.bindTexture(0, context.texture(frame::kLitImage), *sampler_);
+        commands.draw(3);
+        commands.endPass();
+    }
+
+private:
+    std::string output_, read_;
+    std::unique_ptr<rhi::Shader> vertex_, fragment_;
+    std::unique_ptr<rhi::Pipeline> pipeline_;
+    std::unique_ptr<rhi::Sampler> sampler_;
+};
+
+std::unique_ptr<rhi::Texture> colorTexture(rhi::Device& device)
+{
+    return device.createTexture({.width = kWidth,
+                                 .height = kHeight,
+                                 .format = render::kLitColorFormat,
+                                 .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget});
+}
+
+class FrameGraphTest : public GpuTest {};
+
+TEST_F(FrameGraphTest, ForwardFrameRunsTheAtlasesThePrepassAndTheLitPass)
+{
+    const scene::Scene scene = scene::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+    EXPECT_EQ(passNames(stats), (std::vector<std::string>{"directional atlas", "local atlas", "depth prepass", "lit"}));
+    // The debug views are in the graph, culled: nothing reads what they write.
+    const std::string dot = renderer.frameGraphDot();
+    EXPECT_NE(dot.find("cascade view\\n(culled"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("msaa resolve\\n(off this frame)"), std::string::npos) << dot;
+}
+
+TEST_F(FrameGraphTest, MultisampledScreenSpaceFrameResolvesAndCollects)
+{
+    const scene::Scene scene = scene::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    render::FrameDesc desc = litFrame(kWidth, kHeight, true, 4);
+    desc.shadowPath = render::ShadowPath::ScreenSpace;
+    desc.cascadeView = true;
+    const render::FrameStats stats = renderer.render(scene.camera, desc);
+    EXPECT_EQ(passNames(stats),
+              (std::vector<std::string>{"directional atlas", "local atlas", "depth prepass", "receiver prepass",
+                                        "screen-space shadows", "lit", "msaa resolve", "cascade view"}));
+    if (device->capabilities().timestamps) {
+        for (const render::PassTiming& pass : stats.passes)
+            EXPECT_TRUE(pass.gpuMs.has_value()) << pass.name;
+    }
+}
+
+TEST_F(FrameGraphTest, ApplicationPassAfterTheLitPassReadsTheLitImage)
+{
+    const scene::Scene scene = scene::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    const std::unique_ptr<rhi::Texture> output = colorTexture(*device);
+    renderer.addTexture("half bright image", *output);
+    renderer.addPass(std::make_shared<HalfBrightPass>(*device, "half bright image"),
+                     render::PassPlacement::after(std::string(frame::kLitPass)));
+    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+    ASSERT_EQ(passNames(stats).back(), "half bright");
+    const rhi::Image lit = rhi::readTexture(*device, renderer.litImage());
+    const rhi::Image half = rhi::readTexture(*device, *output);
+    ASSERT_EQ(lit.bytes.size(), half.bytes.size());
+    std::size_t wrong = 0;
+    for (std::size_t i = 0; i < lit.bytes.size(); ++i) {
+        const int expected = i % 4 == 3 ? 255 : int(lit.bytes[i]) / 2;
+        wrong += std::abs(int(half.bytes[i]) - expected) > 1 ? 1 : 0;
+    }
+    EXPECT_EQ(wrong, 0u);
+}
+
+// A pass whose writes lead to no output is culled: the cascade view's image is no output of a frame without the view.
+TEST_F(FrameGraphTest, ApplicationPassWhoseWritesNobodyReadsIsCulled)
+{
+    const scene::Scene scene = scene::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    renderer.addPass(std::make_shared<HalfBrightPass>(*device, std::string(frame::kCascadeView)),
+                     render::PassPlacement::before(std::string(frame::kCascadeViewPass)));
+    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+    const std::vector<std::string> names = passNames(stats);
+    EXPECT_EQ(std::find(names.begin(), names.end(), "half bright"), names.end());
+    EXPECT_NE(renderer.frameGraphDot().find("half bright\\n(culled"), std::string::npos);
+}
+
+TEST_F(FrameGraphTest, PlacementNamingNoPassIsRefused)
+{
+    const scene::Scene scene = scene::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    try {
+        renderer.addPass(std::make_shared<HalfBrightPass>(*device, "out"), render::PassPlacement::after("fog"));
+        FAIL() << "no error";
+    } catch (const rhi::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("placed after 'fog', which is not a pass of the frame ('static maps'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST_F(FrameGraphTest, UnknownTextureIsRefusedNamingThePass)
+{
+    const scene::Scene scene = scene::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    renderer.addPass(std::make_shared<HalfBrightPass>(*device, "nowhere"),
+                     render::PassPlacement::after(std::string(frame::kLitPass)));
+    try {
+        renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+        FAIL() << "no error";
+    } catch (const rhi::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("pass 'half bright' uses texture 'nowhere', which the frame does not have"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// The pass declares the lit depth but binds the lit image.
+TEST_F(FrameGraphTest, UndeclaredTextureIsRefused)
+{
+    const scene::Scene scene = scene::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    const std::unique_ptr<rhi::Texture> output = colorTexture(*device);
+    renderer.addTexture("half bright image", *output);
+    renderer.addPass(std::make_shared<HalfBrightPass>(*device, "half bright image", std::string(frame::kLitDepth)),
+                     render::PassPlacement::after(std::string(frame::kLitPass)));
+    try {
+        renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+        FAIL() << "no error";
+    } catch (const rhi::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("pass 'half bright' did not declare texture 'lit image'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// Transient textures of one kind share a slot where their passes do not overlap, and keep their slots from frame to
+// frame.
+TEST(TransientSlots, TexturesShareWhereLifetimesDoNotOverlap)
+{
+    const std::vector<render::TransientLifetime> lifetimes{
+        {.kind = 0, .firstPass = 0, .lastPass = 1}, // slot 0
+        {.kind = 0, .firstPass = 1, .lastPass = 3}, // overlaps the first at pass 1: slot 1
+        {.kind = 0, .firstPass = 2, .lastPass = 2}, // after the first: slot 0 again
+        {.kind = 1, .firstPass = 0, .lastPass = 0}, // another kind: its own slot 0
+        {.kind = 0, .firstPass = 4, .lastPass = 5}, // after all: slot 0
+    };
+    EXPECT_EQ(render::assignTransientSlots(lifetimes), (std::vector<std::uint32_t>{0, 1, 0, 0, 0}));
+}
+
+} // namespace
+} // namespace penumbra::testing
