@@ -146,6 +146,21 @@ struct Objects {
             list->bindTexture(1, *image, *sampler);
     }
 
+    // A pass with a pipeline that reads vertex buffer slot 0 per instance (three instances fit `vertices`), all it
+    // reads bound, and `indices`.
+    void bindForInstancedDraw()
+    {
+        rhi::PipelineDesc d = pipelineDesc();
+        d.vertexLayout.buffers[0].perInstance = true;
+        localPipeline = device.createPipeline(d);
+        beginPass();
+        list->bindPipeline(*localPipeline);
+        list->bindVertexBuffer(0, *vertices);
+        list->bindIndexBuffer(*indices, rhi::IndexType::UInt16);
+        list->bindUniformBuffer(0, *uniforms, 0, sizeof(TransformUniforms));
+        list->bindTexture(1, *image, *sampler);
+    }
+
     rhi::Device& device;
     std::unique_ptr<rhi::Buffer> vertices, indices, uniforms, readback;
     std::unique_ptr<rhi::Texture> color, depth, image, small;
@@ -539,20 +554,14 @@ const std::vector<Rule>& rules()
         {"indexed draws need an index buffer", [](Objects& o) { o.bindForDraw(); },
          [](Objects& o) { o.list->drawIndexed(3); }, E::Error,
          text("drawIndexed: no index buffer is bound; call bindIndexBuffer() first")},
-        {"per-instance vertex buffers hold every instance drawn",
-         [](Objects& o) {
-             rhi::PipelineDesc d = o.pipelineDesc();
-             d.vertexLayout.buffers[0].perInstance = true;
-             o.localPipeline = o.device.createPipeline(d);
-             o.beginPass();
-             o.list->bindPipeline(*o.localPipeline);
-             o.list->bindVertexBuffer(0, *o.vertices);
-             o.list->bindUniformBuffer(0, *o.uniforms, 0, sizeof(TransformUniforms));
-             o.list->bindTexture(1, *o.image, *o.sampler);
-         },
+        {"per-instance vertex buffers hold every instance drawn", [](Objects& o) { o.bindForInstancedDraw(); },
          [](Objects& o) { o.list->draw(3, 4); }, E::Error,
          text("draw: pipeline 'bad' reads instances 0 to 3 from vertex buffer slot 0 (48 bytes), but 36 bytes are "
               "bound there")},
+        {"per-instance vertex buffers hold every instance drawn: indexed draws, from firstInstance",
+         [](Objects& o) { o.bindForInstancedDraw(); }, [](Objects& o) { o.list->drawIndexed(3, 2, 0, 0, 2); }, E::Error,
+         text("drawIndexed: pipeline 'bad' reads instances 2 to 3 from vertex buffer slot 0 (48 bytes), but 36 bytes "
+              "are bound there")},
         // Usages and ranges at bind time.
         {"vertex buffer slots are 0..15", nothing, [](Objects& o) { o.list->bindVertexBuffer(16, *o.vertices); },
          E::Error, text("bindVertexBuffer: slot 16 is outside 0..15")},
@@ -664,6 +673,20 @@ TEST_F(MisuseTest, TheFixturesDrawBreaksNoRule)
     o.uniforms->writeObject(TransformUniforms{});
     o.bindForDraw();
     o.list->draw(3);
+    o.list->endPass();
+    EXPECT_NO_THROW(device->submit(*o.list));
+}
+
+// The positive control of the instance-range rows: the instances that fit the per-instance buffer, and no more, are
+// drawn by either draw without an error.
+TEST_F(MisuseTest, InstancesThatFitTheirBufferBreakNoRule)
+{
+    Objects o(*device);
+    o.uniforms->writeObject(TransformUniforms{});
+    o.indices->writeObject(std::array<std::uint16_t, 3>{0, 1, 2});
+    o.bindForInstancedDraw();
+    EXPECT_NO_THROW(o.list->draw(3, 3));
+    EXPECT_NO_THROW(o.list->drawIndexed(3, 2, 0, 0, 1));
     o.list->endPass();
     EXPECT_NO_THROW(device->submit(*o.list));
 }
