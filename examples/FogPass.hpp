@@ -108,8 +108,8 @@ struct FoggedScene {
         renderer = std::make_unique<render::SceneRenderer>(device, scene);
         renderer->addTexture(FogPass::kOutput, *fogged);
         const scene::Camera& camera = scene.camera;
-        const glm::mat4 projection = device.conventions().perspective(
-            camera.fovY, float(width) / float(height), camera.nearPlane, camera.farPlane);
+        const glm::mat4 projection = device.conventions().perspective(camera.fovY, float(width) / float(height),
+                                                                      camera.nearPlane, camera.farPlane);
         renderer->addPass(std::make_shared<FogPass>(device, projection, width, height),
                           render::PassPlacement::after(std::string(render::frame::kLitPass)));
     }

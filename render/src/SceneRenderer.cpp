@@ -329,22 +329,25 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     if (!frame.instancedDraws)
         for (shadows::ShadowCaster& caster : casters_)
             caster.drawGroup = shadows::kNoDrawGroup;
-    const StaticMapDraws staticDraws =
-        staticShadows_->prepare(frame.shadows, std::move(plans.staticMaps), casters_, staticUpdateRequested_);
-    staticUpdateRequested_ = false;
-    for (const StaticMapUpdate& update : staticDraws.updates)
-        stats.staticMapUpdates.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(update.kind),
-                                                     update.lightIndex,
-                                                     lightName(scene, update.kind, update.lightIndex), update.reason));
+    stats.staticMapUpdates = prepareStaticMaps(frame, std::move(plans.staticMaps));
     const shadows::StaticShadowUniforms& staticUniforms = staticShadows_->plan().uniforms;
-    if (frame.shadowPath == ShadowPath::ScreenSpace)
-        if (std::optional<std::string> uncollected = uncollectedShadows(scene, plan_, staticUniforms))
-            notes_.push_back(std::move(*uncollected));
+    const std::optional<std::string> uncollected =
+        frame.shadowPath == ShadowPath::ScreenSpace ? uncollectedShadows(scene, plan_, staticUniforms) : std::nullopt;
+    if (uncollected)
+        notes_.push_back(*uncollected);
     stats.notes = notes_;
-    state.screenSpace =
-        frame.shadowPath == ShadowPath::ScreenSpace && !uncollectedShadows(scene, plan_, staticUniforms).has_value();
+    state.screenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !uncollected;
     state.casters = casters_;
     state.litDraws = litDraws_;
+    fillFrameBlocks(camera, frame);
+    return stats;
+}
+
+// The blocks the frame's passes bind (FrameState): the shadow maps', the lit view's and the debug views'.
+void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame)
+{
+    FrameState& state = *state_;
+    const shadows::StaticShadowUniforms& staticUniforms = staticShadows_->plan().uniforms;
     state.shadowMaps = {atlas_.get(),
                         localAtlas_.get(),
                         shadowCubes_.get(),
@@ -359,7 +362,19 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     if (frame.visibilityOf)
         state.visibilityFrameUniforms.visibilityLight = litLightIndex(*frame.visibilityOf);
     state.features = frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_.uniforms, staticUniforms);
-    return stats;
+}
+
+// The static maps to draw this frame (StaticShadowCache::prepare), named with why.
+std::vector<std::string> SceneRenderer::prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan)
+{
+    const StaticMapDraws draws =
+        staticShadows_->prepare(frame.shadows, std::move(plan), casters_, staticUpdateRequested_);
+    staticUpdateRequested_ = false;
+    std::vector<std::string> updates;
+    for (const StaticMapUpdate& update : draws.updates)
+        updates.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(update.kind), update.lightIndex,
+                                      lightName(gpuScene_.scene(), update.kind, update.lightIndex), update.reason));
+    return updates;
 }
 
 // This frame's textures and passes: the built-in ones in running order, each application pass beside the one it
@@ -430,21 +445,9 @@ void SceneRenderer::addPass(std::shared_ptr<FramePass> pass, PassPlacement place
 {
     if (!pass)
         throw rhi::Error("SceneRenderer::addPass: no pass");
-    const std::array builtIn{frame::kStaticMapsPass,
-                             frame::kDirectionalStaticTilesPass,
-                             frame::kDirectionalAtlasPass,
-                             frame::kLocalStaticTilesPass,
-                             frame::kLocalAtlasPass,
-                             frame::kDepthPrepass,
-                             frame::kReceiverPrepass,
-                             frame::kScreenSpaceShadowsPass,
-                             frame::kLitPass,
-                             frame::kResolvePass,
-                             frame::kCascadeViewPass,
-                             frame::kVisibilityViewPass};
-    if (std::find(builtIn.begin(), builtIn.end(), placement.pass) == builtIn.end()) {
+    if (std::find(frame::kPasses.begin(), frame::kPasses.end(), placement.pass) == frame::kPasses.end()) {
         std::string names;
-        for (std::string_view name : builtIn)
+        for (std::string_view name : frame::kPasses)
             names += fmt::format("{}'{}'", names.empty() ? "" : ", ", name);
         throw rhi::Error(fmt::format("SceneRenderer::addPass: pass '{}' is placed {} '{}', which is not a pass of the "
                                      "frame ({})",

@@ -514,6 +514,11 @@ const std::vector<Rule>& rules()
         {"submitted lists are outside passes", [](Objects& o) { o.beginPass(); },
          [](Objects& o) { o.device.submit(*o.list); }, E::Error,
          text("submit: the command list is inside a pass; call endPass() first")},
+        {"popLabel closes an open label", nothing, [](Objects& o) { o.list->popLabel(); }, E::Error,
+         text("popLabel: no label is open")},
+        {"submitted lists have closed their labels", [](Objects& o) { o.list->pushLabel("shadows"); },
+         [](Objects& o) { o.device.submit(*o.list); }, E::Error,
+         text("submit: label 'shadows' is still open; call popLabel() first")},
         // Pipelines against the pass and what is bound, checked at each draw.
         {"pipelines draw into framebuffers of their formats",
          [](Objects& o) {

@@ -9,9 +9,12 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
+#include "graph/FrameGraph.hpp"
 #include "graph/TransientSlots.hpp"
 
+#include <functional>
 #include <gtest/gtest.h>
+#include <map>
 
 namespace penumbra::testing {
 namespace {
@@ -42,8 +45,9 @@ public:
             layout(binding = 0) uniform sampler2D lit;
             layout(location = 0) out vec4 result;
             void main() { result = vec4(texelFetch(lit, ivec2(gl_FragCoord.xy), 0).rgb * 0.5, 1.0); })"});
-        pipeline_ = device.createPipeline(
-            {.vertex = vertex_.get(), .fragment = fragment_.get(), .colorTargets = {{.format = render::kLitColorFormat}}});
+        pipeline_ = device.createPipeline({.vertex = vertex_.get(),
+                                           .fragment = fragment_.get(),
+                                           .colorTargets = {{.format = render::kLitColorFormat}}});
         sampler_ = device.createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
     }
 
@@ -79,7 +83,22 @@ std::unique_ptr<rhi::Texture> colorTexture(rhi::Device& device)
                                  .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget});
 }
 
-class FrameGraphTest : public GpuTest {};
+class FrameGraphTest : public GpuTest {
+protected:
+    void SetUp() override
+    {
+        GpuTest::SetUp();
+        if (device)
+            commands = device->createCommandList();
+    }
+    void TearDown() override
+    {
+        commands.reset();
+        GpuTest::TearDown();
+    }
+
+    std::unique_ptr<rhi::CommandList> commands;
+};
 
 TEST_F(FrameGraphTest, ForwardFrameRunsTheAtlasesThePrepassAndTheLitPass)
 {
@@ -168,7 +187,8 @@ TEST_F(FrameGraphTest, UnknownTextureIsRefusedNamingThePass)
         renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
         FAIL() << "no error";
     } catch (const rhi::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("pass 'half bright' uses texture 'nowhere', which the frame does not have"),
+        EXPECT_NE(std::string(e.what()).find(
+                      "pass 'half bright' uses texture 'nowhere', which the frame does not have"),
                   std::string::npos)
             << e.what();
     }
@@ -190,6 +210,97 @@ TEST_F(FrameGraphTest, UndeclaredTextureIsRefused)
         EXPECT_NE(std::string(e.what()).find("pass 'half bright' did not declare texture 'lit image'"),
                   std::string::npos)
             << e.what();
+    }
+}
+
+// A pass of setup and execute functions, for the graph's own tests.
+class FunctionPass final : public render::FramePass {
+public:
+    FunctionPass(std::string name, std::function<void(render::FramePassBuilder&)> setup,
+                 std::function<void(const render::FramePassContext&)> execute = {})
+        : name_(std::move(name)), setup_(std::move(setup)), execute_(std::move(execute))
+    {
+    }
+    std::string name() const override { return name_; }
+    bool setup(render::FramePassBuilder& builder) override
+    {
+        setup_(builder);
+        return true;
+    }
+    void execute(const render::FramePassContext& context) override
+    {
+        if (execute_)
+            execute_(context);
+    }
+
+private:
+    std::string name_;
+    std::function<void(render::FramePassBuilder&)> setup_;
+    std::function<void(const render::FramePassContext&)> execute_;
+};
+
+const rhi::TextureDesc kTransient{.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget};
+
+// Two textures of one description used one after the other are one texture; one used alongside is another.
+TEST_F(FrameGraphTest, TransientTexturesShareWhereTheirPassesDoNotOverlap)
+{
+    render::FrameGraph graph(*device);
+    const std::unique_ptr<rhi::Texture> output = colorTexture(*device);
+    std::map<std::string, const rhi::Texture*> seen;
+    const auto remember = [&](const char* name) {
+        return [&seen, name](const render::FramePassContext& c) { seen[name] = &c.texture(name); };
+    };
+    FunctionPass first(
+        "first", [](render::FramePassBuilder& b) { b.write("a"); }, remember("a"));
+    FunctionPass second(
+        "second",
+        [](render::FramePassBuilder& b) {
+            b.read("a");
+            b.write("b");
+        },
+        remember("b"));
+    FunctionPass third(
+        "third",
+        [](render::FramePassBuilder& b) {
+            b.read("b");
+            b.write("c");
+        },
+        remember("c"));
+    FunctionPass last("last", [](render::FramePassBuilder& b) {
+        b.read("c");
+        b.write("out");
+    });
+    graph.importTexture("out", *output, true);
+    for (const char* name : {"a", "b", "c"})
+        graph.createTexture(name, kTransient);
+    for (render::FramePass* pass : std::initializer_list<render::FramePass*>{&first, &second, &third, &last})
+        graph.addPass(*pass);
+    graph.compile();
+    graph.execute(*commands);
+    device->submit(*commands);
+    EXPECT_EQ(seen["a"], seen["c"]); // a's last use (second) is before c's first (third)
+    EXPECT_NE(seen["a"], seen["b"]);
+    EXPECT_NE(seen["b"], seen["c"]);
+}
+
+TEST_F(FrameGraphTest, ReadBeforeAnyWriteIsRefused)
+{
+    render::FrameGraph graph(*device);
+    const std::unique_ptr<rhi::Texture> output = colorTexture(*device);
+    FunctionPass early("early", [](render::FramePassBuilder& b) {
+        b.read("made");
+        b.write("out");
+    });
+    FunctionPass late("late", [](render::FramePassBuilder& b) { b.write("made"); });
+    graph.importTexture("out", *output, true);
+    graph.createTexture("made", kTransient);
+    graph.addPass(early);
+    graph.addPass(late);
+    try {
+        graph.compile();
+        FAIL() << "no error";
+    } catch (const rhi::Error& e) {
+        EXPECT_STREQ(e.what(), "frame graph: pass 'early' reads 'made' before any pass writes it");
     }
 }
 

@@ -163,6 +163,11 @@ public:
     }
 
     void operator()(const command::WriteTimestamp& c) { c.queries->write(c.index); }
+    void operator()(const command::PushLabel& c)
+    {
+        gl_.PushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, c.name.c_str());
+    }
+    void operator()(const command::PopLabel&) { gl_.PopDebugGroup(); }
 
 private:
     void applyWriteMasks(const GlFixedState& s)
@@ -312,6 +317,10 @@ void GlCommandList::apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint3
 {
     commands_.push_back(command::WriteTimestamp{&glObject<GlTimestampQueries>(queries, "timestamp queries"), index});
 }
+
+void GlCommandList::apiPushLabel(std::string_view name) { commands_.push_back(command::PushLabel{std::string(name)}); }
+
+void GlCommandList::apiPopLabel() { commands_.push_back(command::PopLabel{}); }
 
 void GlCommandList::replay(const GlReplayContext& context)
 {

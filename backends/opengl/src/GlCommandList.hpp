@@ -89,10 +89,14 @@ struct WriteTimestamp {
     GlTimestampQueries* queries;
     std::uint32_t index;
 };
+struct PushLabel {
+    std::string name;
+};
+struct PopLabel {};
 
 using Any = std::variant<BeginPass, EndPass, SetViewport, SetScissor, SetDepthBias, BindPipeline, BindVertexBuffer,
                          BindIndexBuffer, BindUniformBuffer, BindTexture, Draw, DrawIndexed, CopyBuffer, CopyTexture,
-                         CopyTextureToBuffer, ResolveTexture, WriteTimestamp>;
+                         CopyTextureToBuffer, ResolveTexture, WriteTimestamp, PushLabel, PopLabel>;
 } // namespace command
 
 // What replaying needs from the device.
@@ -142,6 +146,8 @@ private:
                                 std::uint64_t dstOffset) override;
     void apiResolveTexture(const rhi::Texture& src, rhi::Texture& dst) override;
     void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
+    void apiPushLabel(std::string_view name) override;
+    void apiPopLabel() override;
 
     const rhi::Device& device_;
     const GlContext& context_;

@@ -184,4 +184,20 @@ void VulkanCommandList::apiWriteTimestamp(rhi::TimestampQueries& queries, std::u
     vkCmdWriteTimestamp(commands_, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, vk.handle(), index);
 }
 
+void VulkanCommandList::apiPushLabel(std::string_view name)
+{
+    if (!context_->beginLabel)
+        return;
+    const std::string text(name);
+    VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+    label.pLabelName = text.c_str();
+    context_->beginLabel(commands_, &label);
+}
+
+void VulkanCommandList::apiPopLabel()
+{
+    if (context_->endLabel)
+        context_->endLabel(commands_);
+}
+
 } // namespace penumbra::vulkan

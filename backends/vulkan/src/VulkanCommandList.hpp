@@ -46,6 +46,8 @@ private:
                                 std::uint64_t dstOffset) override;
     void apiResolveTexture(const rhi::Texture& src, rhi::Texture& dst) override;
     void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
+    void apiPushLabel(std::string_view name) override;
+    void apiPopLabel() override;
 
     void begin();
     void beginPrologue();

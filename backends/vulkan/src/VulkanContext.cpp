@@ -167,9 +167,14 @@ void Context::createDevice()
     check(vkCreateDevice(physicalDevice, &info, nullptr, &device), "vkCreateDevice");
     ownedDevice_ = UniqueDevice(device);
     vkGetDeviceQueue(device, queueFamily, 0, &queue);
-    if (desc.validation)
+    if (desc.validation) {
         setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
             vkGetDeviceProcAddr(device, "vkSetDebugUtilsObjectNameEXT"));
+        beginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+            vkGetDeviceProcAddr(device, "vkCmdBeginDebugUtilsLabelEXT"));
+        endLabel =
+            reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(vkGetDeviceProcAddr(device, "vkCmdEndDebugUtilsLabelEXT"));
+    }
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;

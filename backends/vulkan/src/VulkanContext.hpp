@@ -70,6 +70,13 @@ private:
     std::uint32_t renderTargetSampleCounts(rhi::Format format) const;
 
     PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
+
+public:
+    // VK_EXT_debug_utils's command labels, where the instance has the extension (with validation); else null.
+    PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT endLabel = nullptr;
+
+private:
     std::mutex queueMutex_;
     std::optional<std::string> lost_; // the loss submitAndWait met
     std::mutex oneShotMutex_;

@@ -272,7 +272,9 @@ void FrameGraph::execute(rhi::CommandList& commands)
         commands.writeTimestamp(*timestamps_, 0);
     for (std::size_t i = 0; i < timed_.size(); ++i) {
         const FramePassContext context(*this, timed_[i], commands);
+        commands.pushLabel(passes_[timed_[i]].name);
         passes_[timed_[i]].pass->execute(context);
+        commands.popLabel();
         if (timestamps_)
             commands.writeTimestamp(*timestamps_, static_cast<std::uint32_t>(i + 1));
     }

@@ -36,7 +36,7 @@ public:
     // Runs every pass's setup (which throws rhi::Error for a texture the frame does not have), then throws rhi::Error
     // for a pass that reads a made texture before any pass writes it; culls, and makes the transient textures.
     void compile();
-    // Records the passes that run, each between timestamps where the device has them.
+    // Records the passes that run, each in a debug label of its name and between timestamps where the device has them.
     void execute(rhi::CommandList& commands);
     // After the submission of execute()'s commands: every pass that ran, in order.
     std::vector<PassTiming> timings();

@@ -51,11 +51,11 @@ std::string FrameGraph::dot() const
         for (const Use& use : pass.uses) {
             const std::string edgeStyle = pass.culled ? ", style=dashed, color=gray50" : "";
             if (readsResource(use.use))
-                out += fmt::format("  r{} -> p{} [label={}{}];\n", use.resource, p,
-                                   quoted(resourceUseName(use.use)), edgeStyle);
+                out += fmt::format("  r{} -> p{} [label={}{}];\n", use.resource, p, quoted(resourceUseName(use.use)),
+                                   edgeStyle);
             if (writesResource(use.use))
-                out += fmt::format("  p{} -> r{} [label={}{}];\n", p, use.resource,
-                                   quoted(resourceUseName(use.use)), edgeStyle);
+                out += fmt::format("  p{} -> r{} [label={}{}];\n", p, use.resource, quoted(resourceUseName(use.use)),
+                                   edgeStyle);
         }
     }
     // The running order as invisible edges, so the passes line up left to right.

@@ -10,9 +10,8 @@ std::vector<std::uint32_t> assignTransientSlots(const std::vector<TransientLifet
 {
     std::vector<std::size_t> order(lifetimes.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return lifetimes[a].firstPass < lifetimes[b].firstPass;
-    });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return lifetimes[a].firstPass < lifetimes[b].firstPass; });
     // Per kind, the last pass of each slot's current texture.
     std::map<std::size_t, std::vector<std::size_t>> slotsEnd;
     std::vector<std::uint32_t> slots(lifetimes.size(), 0);

@@ -17,8 +17,7 @@ constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f}; // the visibility view w
 // `features` with its material's maps. Returns the draws issued.
 std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
                              const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
-                             const FrameState& state, const GpuScene& gpuScene,
-                             const ScreenSpaceShadowPass* collection)
+                             const FrameState& state, const GpuScene& gpuScene, const ScreenSpaceShadowPass* collection)
 {
     const scene::Scene& scene = gpuScene.scene();
     const bool visibility = features.view == LitView::Visibility;
@@ -88,11 +87,11 @@ bool LitPass::setup(FramePassBuilder& builder)
 
 void LitPass::execute(const FramePassContext& context)
 {
-    const rhi::Framebuffer& target =
-        state_.multisampled ? context.framebuffer({frame::kMultisampledColor}, frame::kMultisampledDepth)
-                            : context.framebuffer({frame::kLitImage}, frame::kLitDepth);
-    state_.stats->litDraws = recordLitDraws(context.commands(), target, pipelines_, state_.litFrame, features(),
-                                            state_, scene_, collection_);
+    const rhi::Framebuffer& target = state_.multisampled
+                                         ? context.framebuffer({frame::kMultisampledColor}, frame::kMultisampledDepth)
+                                         : context.framebuffer({frame::kLitImage}, frame::kLitDepth);
+    state_.stats->litDraws = recordLitDraws(context.commands(), target, pipelines_, state_.litFrame, features(), state_,
+                                            scene_, collection_);
 }
 
 std::string ResolvePass::name() const { return std::string(frame::kResolvePass); }

@@ -40,8 +40,8 @@ bool ReceiverPrepassPass::setup(FramePassBuilder& builder)
 
 void ReceiverPrepassPass::execute(const FramePassContext& context)
 {
-    state_.stats->depthPrepassDraws += prepass_.record(context.commands(), collection_.receiverTarget(), scene_,
-                                                       state_.litDraws, state_.litFrame);
+    state_.stats->depthPrepassDraws +=
+        prepass_.record(context.commands(), collection_.receiverTarget(), scene_, state_.litDraws, state_.litFrame);
 }
 
 std::string ScreenSpaceShadowsPass::name() const { return std::string(frame::kScreenSpaceShadowsPass); }
@@ -63,7 +63,8 @@ void ScreenSpaceShadowsPass::execute(const FramePassContext& context)
     rhi::CommandList& commands = context.commands();
     const FrameDesc& desc = *state_.desc;
     collection_.begin(commands, state_.features,
-                      state_.uniforms->push(screenSpaceShadowUniforms(state_.litFrameUniforms, desc.width, desc.height)));
+                      state_.uniforms->push(
+                          screenSpaceShadowUniforms(state_.litFrameUniforms, desc.width, desc.height)));
     state_.shadowMaps.bind(commands);
     collection_.draw(commands);
 }

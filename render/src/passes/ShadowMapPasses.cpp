@@ -62,8 +62,8 @@ bool DirectionalAtlasPass::setup(FramePassBuilder& builder)
 
 void DirectionalAtlasPass::execute(const FramePassContext& context)
 {
-    state_.stats->casterDraws = pass_.record(context.commands(), *state_.shadowMaps.directional, plan_,
-                                             state_.casters, state_.staticTiles.directional.empty());
+    state_.stats->casterDraws = pass_.record(context.commands(), *state_.shadowMaps.directional, plan_, state_.casters,
+                                             state_.staticTiles.directional.empty());
 }
 
 std::string LocalAtlasPass::name() const { return std::string(frame::kLocalAtlasPass); }
@@ -78,9 +78,9 @@ bool LocalAtlasPass::setup(FramePassBuilder& builder)
 
 void LocalAtlasPass::execute(const FramePassContext& context)
 {
-    state_.stats->localCasterDraws = pass_.record(context.commands(), *state_.shadowMaps.local,
-                                                  *state_.shadowMaps.cubes, plan_, state_.casters,
-                                                  state_.staticTiles.local.empty());
+    state_.stats->localCasterDraws =
+        pass_.record(context.commands(), *state_.shadowMaps.local, *state_.shadowMaps.cubes, plan_, state_.casters,
+                     state_.staticTiles.local.empty());
 }
 
 } // namespace penumbra::render

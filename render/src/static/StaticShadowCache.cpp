@@ -32,6 +32,15 @@ std::uint64_t casterKey(const shadows::StaticShadowMap& map, std::span<const sha
 
 bool isDirectional(const shadows::StaticShadowMap& map) { return map.kind == shadows::ShadowLightKind::Directional; }
 
+std::vector<const shadows::StaticShadowMap*> mapsAt(const shadows::StaticShadowPlan& plan,
+                                                    const std::vector<std::size_t>& indices)
+{
+    std::vector<const shadows::StaticShadowMap*> maps;
+    for (std::size_t i : indices)
+        maps.push_back(&plan.maps[i]);
+    return maps;
+}
+
 // Window depths as writeTexture takes them for a depth format (rhi::Device::writeTexture).
 std::vector<std::byte> depthTexels(const std::vector<float>& depth, rhi::Format format)
 {
@@ -204,19 +213,7 @@ StaticMapDraws StaticShadowCache::prepare(const shadows::ShadowSettings& setting
             continue;
         }
         const Key key{viewKey(map, directional ? *directionalAtlas_ : *localAtlas_), casterKey(map, casters)};
-        const char* reason = nullptr;
-        if (old == drawn_.end())
-            reason = "first drawn";
-        else if (atlasNew)
-            reason = "its static atlas was created anew";
-        else if (requested)
-            reason = "asked for";
-        else if (map.update == shadows::StaticShadowUpdate::OnDemand)
-            reason = "its tiles moved in the static atlas";
-        else if (old->second.view != key.view)
-            reason = "its view changed (the light, its shadow settings or the static casters' bounds)";
-        else if (old->second.casters != key.casters)
-            reason = "a static caster in its view changed";
+        const char* reason = redrawReason(map, old == drawn_.end() ? nullptr : &old->second, key, atlasNew, requested);
         if (reason) {
             draws.updates.push_back({map.kind, map.lightIndex, reason});
             (directional ? directionalMaps : localMaps).push_back(i);
@@ -225,12 +222,6 @@ StaticMapDraws StaticShadowCache::prepare(const shadows::ShadowSettings& setting
     }
     drawn_ = std::move(keys);
     plan_ = std::move(plan);
-    const auto mapsAt = [&](const std::vector<std::size_t>& indices) {
-        std::vector<const shadows::StaticShadowMap*> maps;
-        for (std::size_t i : indices)
-            maps.push_back(&plan_.maps[i]);
-        return maps;
-    };
     pendingDirectional_.clear();
     pendingLocal_.clear();
     directionalNew_ = false;
@@ -239,24 +230,44 @@ StaticMapDraws StaticShadowCache::prepare(const shadows::ShadowSettings& setting
         // A restore rewrites the whole atlas, so every map of its kind is restored with the one that changed.
         for (StaticMapUpdate& u : draws.updates)
             u.reason = "restored from the bake";
-        const auto all = [&](bool directional) {
-            std::vector<const shadows::StaticShadowMap*> maps;
-            for (const shadows::StaticShadowMap& map : plan_.maps)
-                if (isDirectional(map) == directional)
-                    maps.push_back(&map);
-            return maps;
-        };
         if (!directionalMaps.empty())
-            restore(*directionalAtlas_, plan_.directionalAtlas, all(true));
+            restore(*directionalAtlas_, plan_.directionalAtlas, mapsOfKind(true));
         if (!localMaps.empty())
-            restore(*localAtlas_, plan_.localAtlas, all(false));
+            restore(*localAtlas_, plan_.localAtlas, mapsOfKind(false));
         return draws;
     }
-    pendingDirectional_ = mapsAt(directionalMaps);
-    pendingLocal_ = mapsAt(localMaps);
+    pendingDirectional_ = mapsAt(plan_, directionalMaps);
+    pendingLocal_ = mapsAt(plan_, localMaps);
     directionalNew_ = directionalNew;
     localNew_ = localNew;
     return draws;
+}
+
+const char* StaticShadowCache::redrawReason(const shadows::StaticShadowMap& map, const Key* drawn, const Key& key,
+                                            bool atlasNew, bool requested)
+{
+    if (!drawn)
+        return "first drawn";
+    if (atlasNew)
+        return "its static atlas was created anew";
+    if (requested)
+        return "asked for";
+    if (map.update == shadows::StaticShadowUpdate::OnDemand)
+        return "its tiles moved in the static atlas";
+    if (drawn->view != key.view)
+        return "its view changed (the light, its shadow settings or the static casters' bounds)";
+    if (drawn->casters != key.casters)
+        return "a static caster in its view changed";
+    return nullptr;
+}
+
+std::vector<const shadows::StaticShadowMap*> StaticShadowCache::mapsOfKind(bool directional) const
+{
+    std::vector<const shadows::StaticShadowMap*> maps;
+    for (const shadows::StaticShadowMap& map : plan_.maps)
+        if (isDirectional(map) == directional)
+            maps.push_back(&map);
+    return maps;
 }
 
 std::uint32_t StaticShadowCache::record(rhi::CommandList& commands, std::span<const shadows::ShadowCaster> casters)

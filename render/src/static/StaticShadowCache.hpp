@@ -89,6 +89,11 @@ private:
     bool localNew_ = false;
 
     const shadows::BakedShadowMap* bakedMap(const shadows::StaticShadowMap& map) const;
+    // Why a map is drawn again this frame (`drawn`: its key as last drawn, or nullptr), or nullptr.
+    static const char* redrawReason(const shadows::StaticShadowMap& map, const Key* drawn, const Key& key,
+                                    bool atlasNew, bool requested);
+    // The maps of plan_ in the directional atlas, or in the local one.
+    std::vector<const shadows::StaticShadowMap*> mapsOfKind(bool directional) const;
     // The light's map as last drawn (in plan_), or nullptr.
     const shadows::StaticShadowMap* drawnMap(const shadows::StaticShadowMap& map) const;
     // Replaces `map` and its entries of `uniforms` with the map as last drawn (strength stays `uniforms`').

@@ -78,6 +78,7 @@ void ValidatingCommandList::forgetRecording()
     vertexSlots_ = 0;
     indexBuffer_ = false;
     drawChecked_ = false;
+    labels_.clear();
 }
 
 void ValidatingCommandList::beginPass(const PassDesc& pass)
@@ -317,6 +318,26 @@ void ValidatingCommandList::writeTimestamp(TimestampQueries& queries, std::uint3
             throw Error(fmt::format("writeTimestamp: index {} is out of range [0, {}]", index, queries.count() - 1));
     }
     apiWriteTimestamp(queries, index);
+}
+
+void ValidatingCommandList::pushLabel(std::string_view name)
+{
+    if (validate_) {
+        requireDevice("pushLabel");
+        labels_.emplace_back(name);
+    }
+    apiPushLabel(name);
+}
+
+void ValidatingCommandList::popLabel()
+{
+    if (validate_) {
+        requireDevice("popLabel");
+        if (labels_.empty())
+            throw Error("popLabel: no label is open");
+        labels_.pop_back();
+    }
+    apiPopLabel();
 }
 
 } // namespace penumbra::rhi

@@ -6,6 +6,8 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/MemorySize.hpp"
 
+#include <fmt/format.h>
+
 namespace penumbra::rhi {
 
 ValidatingDevice::ValidatingDevice(bool validate) : validate_(validate), lifetime_(std::make_shared<DeviceLifetime>())
@@ -74,6 +76,8 @@ void ValidatingDevice::submit(CommandList& commands)
     auto& list = static_cast<ValidatingCommandList&>(commands);
     if (list.inPass_)
         throw Error("submit: the command list is inside a pass; call endPass() first");
+    if (!list.labels_.empty())
+        throw Error(fmt::format("submit: label '{}' is still open; call popLabel() first", list.labels_.back()));
     // A submit empties the list, also when it fails: recording starts from nothing either way.
     struct ForgetOnExit {
         ValidatingCommandList& list;

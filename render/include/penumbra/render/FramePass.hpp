@@ -13,8 +13,8 @@ namespace penumbra::render {
 
 class FrameGraph;
 
-// How a pass uses one of the frame's textures. The first three read, the last three write (DrawOver reads too); the graph orders and culls
-// passes by them (and, as the RHI learns explicit barriers, derives those from them).
+// How a pass uses one of the frame's textures. The first three read, the last three write (DrawOver reads too); the
+// graph orders and culls passes by them (and, as the RHI learns explicit barriers, derives those from them).
 enum class ResourceUse : std::uint8_t {
     Sampled, // read by shaders
     AttachmentRead, // a depth attachment tested but not written (an equal test against the prepass's depth)
@@ -30,8 +30,7 @@ constexpr bool readsResource(ResourceUse use)
 }
 constexpr bool writesResource(ResourceUse use)
 {
-    return use == ResourceUse::RenderTarget || use == ResourceUse::TransferDestination ||
-           use == ResourceUse::DrawOver;
+    return use == ResourceUse::RenderTarget || use == ResourceUse::TransferDestination || use == ResourceUse::DrawOver;
 }
 const char* resourceUseName(ResourceUse use);
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <string_view>
 
 // The names of the frame's built-in passes and textures, as SceneRenderer's graph knows them: what a user's pass
@@ -19,6 +20,18 @@ inline constexpr std::string_view kLitPass = "lit";
 inline constexpr std::string_view kResolvePass = "msaa resolve";
 inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
+inline constexpr std::array kPasses{kStaticMapsPass,
+                                    kDirectionalStaticTilesPass,
+                                    kDirectionalAtlasPass,
+                                    kLocalStaticTilesPass,
+                                    kLocalAtlasPass,
+                                    kDepthPrepass,
+                                    kReceiverPrepass,
+                                    kScreenSpaceShadowsPass,
+                                    kLitPass,
+                                    kResolvePass,
+                                    kCascadeViewPass,
+                                    kVisibilityViewPass};
 
 // Textures. The lit image, the atlases and the views are the frame's outputs (SceneRenderer's accessors read them).
 inline constexpr std::string_view kLitImage = "lit image"; // RGBA8 sRGB-encoded, single-sampled

@@ -191,6 +191,8 @@ private:
 
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
     FrameStats prepareFrame(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans& plans);
+    std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
+    void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
     void buildGraph(const FrameDesc& frame);
     void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;

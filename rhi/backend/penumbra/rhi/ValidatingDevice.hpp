@@ -84,6 +84,8 @@ public:
                              std::uint64_t dstOffset) final;
     void resolveTexture(const Texture& src, Texture& dst) final;
     void writeTimestamp(TimestampQueries& queries, std::uint32_t index) final;
+    void pushLabel(std::string_view name) final;
+    void popLabel() final;
 
     // Vertex buffer slots bindVertexBuffer takes: 0..maxVertexBuffers - 1.
     static constexpr std::uint32_t maxVertexBuffers = 16;
@@ -113,6 +115,8 @@ protected:
                                         std::uint64_t dstOffset) = 0;
     virtual void apiResolveTexture(const Texture& src, Texture& dst) = 0;
     virtual void apiWriteTimestamp(TimestampQueries& queries, std::uint32_t index) = 0;
+    virtual void apiPushLabel(std::string_view name) = 0;
+    virtual void apiPopLabel() = 0;
 
 private:
     friend class ValidatingDevice;
@@ -138,6 +142,7 @@ private:
     const Pipeline* pipeline_ = nullptr;
     std::vector<Bound> bound_;
     std::uint32_t vertexSlots_ = 0; // bit per bound slot
+    std::vector<std::string> labels_; // open, outermost first
     std::array<std::uint64_t, maxVertexBuffers> vertexBytes_{}; // per slot, the bound buffer's bytes past the offset
     bool indexBuffer_ = false;
     bool drawChecked_ = false; // nothing a draw depends on changed since the last checked draw

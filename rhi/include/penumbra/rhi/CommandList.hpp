@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <glm/vec4.hpp>
 #include <optional>
+#include <string_view>
 
 namespace penumbra::rhi {
 
@@ -86,6 +87,13 @@ public:
 
     // Device::readTimestamps gives the values after submit.
     virtual void writeTimestamp(TimestampQueries& queries, std::uint32_t index) = 0;
+
+    // A named group of the commands up to the matching popLabel, as graphics debuggers and validation messages show
+    // it (Vulkan VK_EXT_debug_utils labels where the instance has the extension, Vulkan 1.3 section 50.2; GL 4.5
+    // debug groups, section 20.6); groups nest, inside and outside passes. A list is submitted with every group it
+    // opened closed.
+    virtual void pushLabel(std::string_view name) = 0;
+    virtual void popLabel() = 0;
 };
 
 } // namespace penumbra::rhi

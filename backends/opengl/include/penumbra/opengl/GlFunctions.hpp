@@ -96,8 +96,10 @@ namespace penumbra::opengl {
     X(ObjectLabel, OBJECTLABEL)                                                                                        \
     X(PixelStorei, PIXELSTOREI)                                                                                        \
     X(PolygonOffset, POLYGONOFFSET)                                                                                    \
+    X(PopDebugGroup, POPDEBUGGROUP)                                                                                    \
     X(ProvokingVertex, PROVOKINGVERTEX)                                                                                \
     X(ProgramUniform1i, PROGRAMUNIFORM1I)                                                                              \
+    X(PushDebugGroup, PUSHDEBUGGROUP)                                                                                  \
     X(QueryCounter, QUERYCOUNTER)                                                                                      \
     X(ReadPixels, READPIXELS)                                                                                          \
     X(SamplerParameterf, SAMPLERPARAMETERF)                                                                            \
