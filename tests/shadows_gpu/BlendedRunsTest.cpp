@@ -65,15 +65,20 @@ scene::Scene alternatingPanes(float blueBoundsTowardsCamera = 0.0f)
 
 class BlendedRunsTest : public GpuTest {
 protected:
-    Drawn draw(const scene::Scene& scene, bool instanced)
+    Drawn draw(render::SceneRenderer& renderer, const scene::Scene& scene, bool instanced)
     {
         render::FrameDesc frame = litFrame(kWidth, kHeight, true, 1);
         frame.instancedDraws = instanced;
-        render::SceneRenderer renderer(*device, scene);
         Drawn drawn;
         drawn.stats = renderer.render(scene.camera, frame);
         drawn.lit = rhi::readTexture(*device, renderer.litImage());
         return drawn;
+    }
+
+    Drawn draw(const scene::Scene& scene, bool instanced)
+    {
+        render::SceneRenderer renderer(*device, scene);
+        return draw(renderer, scene, instanced);
     }
 };
 
@@ -85,8 +90,9 @@ std::size_t differingPixels(const rhi::Image& a, const rhi::Image& b)
 TEST_F(BlendedRunsTest, AlternatingMaterialsBlendInBackToFrontRuns)
 {
     const scene::Scene scene = alternatingPanes();
-    const Drawn perObject = draw(scene, false);
-    const Drawn instanced = draw(scene, true);
+    render::SceneRenderer renderer(*device, scene);
+    const Drawn perObject = draw(renderer, scene, false);
+    const Drawn instanced = draw(renderer, scene, true);
     EXPECT_TRUE(perObject.lit.bytes == instanced.lit.bytes)
         << savePicture(perObject.lit, "blended-runs-per-object-" + configuration()) << " vs "
         << savePicture(instanced.lit, "blended-runs-instanced-" + configuration());

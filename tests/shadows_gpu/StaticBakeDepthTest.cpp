@@ -127,11 +127,11 @@ protected:
                 rhi::readDepth(*device, renderer.staticLocalAtlas().texture())};
     }
 
-    // Restores `bake` into a renderer of the scene and checks its static atlases and picture against `live`.
-    void expectRestores(const scene::Scene& scene, const shadows::StaticShadowBake& bake, const StaticAtlases& live,
-                        const rhi::Image& liveLit, const std::string& name)
+    // Restores `bake` into the renderer that drew `live` and checks its static atlases and picture against it.
+    void expectRestores(render::SceneRenderer& renderer, const scene::Scene& scene,
+                        const shadows::StaticShadowBake& bake, const StaticAtlases& live, const rhi::Image& liveLit,
+                        const std::string& name)
     {
-        render::SceneRenderer renderer(*device, scene);
         renderer.useBakedShadows(bake);
         renderer.render(scene.camera, staticMapsFrame());
         const StaticAtlases restored = read(renderer);
@@ -154,7 +154,7 @@ TEST_F(StaticBakeDepthTest, ABakeHoldsLightSpaceDepthAndRestoresUnderEveryConven
     renderer.render(scene.camera, staticMapsFrame());
     const StaticAtlases live = read(renderer);
     const rhi::Image liveLit = rhi::readTexture(*device, renderer.litImage());
-    const shadows::StaticShadowPlan& plan = renderer.staticPlan();
+    const shadows::StaticShadowPlan plan = renderer.staticPlan();
     const shadows::StaticShadowBake bake = renderer.bakeStaticShadows(configuration());
     ASSERT_EQ(bake.maps.size(), 2u);
     const rhi::Conventions& conventions = device->conventions();
@@ -163,7 +163,7 @@ TEST_F(StaticBakeDepthTest, ABakeHoldsLightSpaceDepthAndRestoresUnderEveryConven
                                         conventions),
                   0u)
             << bake.maps[m].lightName;
-    expectRestores(scene, bake, live, liveLit, "own");
+    expectRestores(renderer, scene, bake, live, liveLit, "own");
 
     for (const rhi::DepthRange range : {rhi::DepthRange::ZeroToOne, rhi::DepthRange::MinusOneToOne})
         for (const bool reversed : {false, true}) {
@@ -181,7 +181,7 @@ TEST_F(StaticBakeDepthTest, ABakeHoldsLightSpaceDepthAndRestoresUnderEveryConven
                           0u)
                     << "baked " << name << ": " << bake.maps[m].lightName;
             }
-            expectRestores(scene, otherBake, live, liveLit, name);
+            expectRestores(renderer, scene, otherBake, live, liveLit, name);
         }
 }
 
