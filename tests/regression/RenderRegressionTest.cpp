@@ -1,13 +1,15 @@
 // The render regression test: every built-in scene and the main frame variants (forward and screen-space shadows,
 // MSAA 4, no depth prepass, a draw per object, the cascade and visibility views, point cube maps, soft filters,
-// static maps on change with dynamic realtime casters over two frames) drawn small on this configuration, each output
-// (the lit image, the atlases, the debug views) hashed and compared with the table committed in frame_hashes/: the
-// pictures and atlases must stay byte-identical while the renderer's code is restructured. The table holds what one
-// driver drew; on another (another Mesa, a real GPU) the test skips, naming both. PENUMBRA_UPDATE_FRAME_HASHES=1
-// writes the table of this configuration afresh instead of comparing.
+// static maps on change with dynamic realtime casters, over two frames and restored from a bake, the reference lit
+// pass) drawn small on this configuration, each output (the lit image, the atlases, the debug views) hashed and
+// compared with the table committed in frame_hashes/: the pictures and atlases must stay byte-identical while the
+// renderer's code is restructured. The table holds what one driver drew; on another (another Mesa, a real GPU) the
+// test skips, naming both. PENUMBRA_UPDATE_FRAME_HASHES=1 writes the table of this configuration afresh instead of
+// comparing.
 #include "FrameHashTable.hpp"
 #include "GpuTesting.hpp"
 
+#include "penumbra/render/ReferenceLitPass.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/TestScenes.hpp"
@@ -41,6 +43,7 @@ struct SceneFrames {
     std::string name;
     std::function<scene::Scene()> make;
     std::vector<Variant> variants; // besides "forward", the default frame
+    bool referencePass = false; // the forward frame also hashes render::ReferenceLitPass's picture (penumbra bench)
 };
 
 const scene::LightRef kSpot{scene::LightKind::Spot, 0};
@@ -50,6 +53,16 @@ void soft(render::FrameDesc& frame)
 {
     frame.shadows.directional.filter = shadows::ShadowFilter::PCSS;
     frame.shadows.local.filter = shadows::ShadowFilter::Poisson;
+}
+
+// Static maps kept on change, the realtime atlases drawing the dynamic casters alone over the static depth cached per
+// tile.
+void staticMapsWithDynamicCasters(render::FrameDesc& frame)
+{
+    frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+    frame.shadows.staticMaps.realtimeCasters = shadows::RealtimeCasters::Dynamic;
+    frame.shadows.staticMaps.directionalAtlasSize = 1024;
+    frame.shadows.staticMaps.localAtlasSize = 512;
 }
 
 const std::vector<SceneFrames>& sceneFrames()
@@ -68,7 +81,8 @@ const std::vector<SceneFrames>& sceneFrames()
                f.cascadeView = true;
                f.visibilityOf = kSpot;
            }},
-          {"soft", soft}}},
+          {"soft", soft},
+          {"static-dynamic", staticMapsWithDynamicCasters}}},
         {"point-light-room",
          scene::makePointLightRoomScene,
          {{"cube-maps",
@@ -76,7 +90,7 @@ const std::vector<SceneFrames>& sceneFrames()
                f.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
                f.visibilityOf = kPoint;
            }}}},
-        {"forest", scene::makeForestScene, {}},
+        {"forest", scene::makeForestScene, {}, true},
         {"contact", scene::makeContactScene, {}},
         {"town", scene::makeTownScene, {}},
         {"cube-grid", [] { return scene::makeCubeGridScene(kGridCubes); }, {}},
@@ -132,24 +146,12 @@ FrameHashes outputsOf(rhi::Device& device, const render::SceneRenderer& renderer
     return h;
 }
 
-FrameHashes renderFrame(rhi::Device& device, const scene::Scene& scene, const render::FrameDesc& frame)
-{
-    render::SceneRenderer renderer(device, scene);
-    renderer.render(scene.camera, frame);
-    return outputsOf(device, renderer, frame);
-}
-
 // The town with static maps kept on change and the realtime atlases drawing the dynamic ball alone, over two frames:
-// the second after the ball moves, its static depth from the tile caches.
+// the second after the ball moves, its static depth from the tile caches; then the static maps baked and restored.
 void addStaticFrames(rhi::Device& device, FrameTable& table)
 {
     scene::Scene town = scene::makeTownScene();
-    const render::FrameDesc frame = smallFrame([](render::FrameDesc& f) {
-        f.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
-        f.shadows.staticMaps.realtimeCasters = shadows::RealtimeCasters::Dynamic;
-        f.shadows.staticMaps.directionalAtlasSize = 1024;
-        f.shadows.staticMaps.localAtlasSize = 512;
-    });
+    const render::FrameDesc frame = smallFrame(staticMapsWithDynamicCasters);
     render::SceneRenderer renderer(device, town);
     renderer.render(town.camera, frame);
     table["town/static-dynamic"] = outputsOf(device, renderer, frame);
@@ -158,16 +160,31 @@ void addStaticFrames(rhi::Device& device, FrameTable& table)
     ball.worldBounds = town.meshOf(ball).bounds.transformed(ball.transform);
     renderer.render(town.camera, frame);
     table["town/static-dynamic-ball-moved"] = outputsOf(device, renderer, frame);
+    renderer.useBakedShadows(renderer.bakeStaticShadows(configuration()));
+    renderer.render(town.camera, frame);
+    table["town/static-baked"] = outputsOf(device, renderer, frame);
 }
 
+// One renderer per scene draws its frames in turn (a renderer per frame gives the same table: no frame depends on
+// what the renderer drew before, which a restructuring must keep too), so that each shader is compiled once.
 FrameTable renderEveryFrame(rhi::Device& device)
 {
     FrameTable table;
     for (const SceneFrames& s : sceneFrames()) {
         const scene::Scene scene = s.make();
-        table[s.name + "/forward"] = renderFrame(device, scene, smallFrame({}));
+        render::SceneRenderer renderer(device, scene);
+        const auto draw = [&](const std::string& variant, const render::FrameDesc& frame) {
+            renderer.render(scene.camera, frame);
+            table[s.name + "/" + variant] = outputsOf(device, renderer, frame);
+        };
+        draw("forward", smallFrame({}));
+        if (s.referencePass) {
+            render::ReferenceLitPass reference(device, renderer.gpuScene());
+            reference.render(scene.camera, smallFrame({}), renderer);
+            table[s.name + "/forward"]["referenceLit"] = hashOf(rhi::readTexture(device, reference.image()));
+        }
         for (const Variant& v : s.variants)
-            table[s.name + "/" + v.name] = renderFrame(device, scene, smallFrame(v.change));
+            draw(v.name, smallFrame(v.change));
     }
     addStaticFrames(device, table);
     return table;
