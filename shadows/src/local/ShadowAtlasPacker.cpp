@@ -8,6 +8,8 @@
 #include <bit>
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
+#include <string>
 #include <unordered_map>
 
 namespace penumbra::shadows {
@@ -130,6 +132,76 @@ std::vector<std::size_t> placementOrder(std::span<const ShadowTileRequest> reque
     return order;
 }
 
+using Block = QuadtreeAllocator::Block;
+
+// Each light's tiles this frame (kept ones filled in before placeTiles) and last frame's (nullptr for a new light).
+struct Tiles {
+    std::vector<std::vector<Block>> blocks;
+    std::vector<const std::vector<Block>*> previous;
+    bool repacked;
+};
+
+// Places the tiles that lights do not keep: a light that shrinks takes the top-left quadrant of each old tile (its
+// texels stay where they were), the rest go largest first into the smallest free blocks that hold them; where none
+// is left, every tile is placed afresh, largest first, which fits whenever the area does.
+void placeTiles(QuadtreeAllocator& allocator, std::span<const ShadowTileRequest> requests,
+                const std::vector<std::uint32_t>& sizes, Tiles& tiles)
+{
+    for (std::size_t i = 0; i < sizes.size(); ++i)
+        if (tiles.previous[i] && tiles.blocks[i].empty() && sizes[i] != 0 &&
+            sizes[i] < allocator.blockSize(tiles.previous[i]->front()))
+            for (const Block& old : *tiles.previous[i])
+                if (const Block b = allocator.blockAt(allocator.offset(old), sizes[i]);
+                    tiles.blocks[i].size() < requests[i].tileCount && allocator.allocateAt(b))
+                    tiles.blocks[i].push_back(b);
+    const std::vector<std::size_t> order = placementOrder(requests, sizes);
+    for (const std::size_t i : order)
+        while (tiles.blocks[i].size() < requests[i].tileCount && !tiles.repacked) {
+            const std::optional<Block> b = allocator.allocate(sizes[i]);
+            if (b)
+                tiles.blocks[i].push_back(*b);
+            else
+                tiles.repacked = true;
+        }
+    if (!tiles.repacked)
+        return;
+    allocator.clear();
+    for (const std::size_t i : order) {
+        tiles.blocks[i].clear();
+        for (std::uint32_t t = 0; t < requests[i].tileCount; ++t)
+            tiles.blocks[i].push_back(allocator.allocate(sizes[i]).value());
+    }
+}
+
+// Why a light got less than it wanted, or nullopt.
+std::optional<std::string> note(const ShadowTileRequest& request, std::uint32_t wanted, std::uint32_t size,
+                                std::uint64_t wantedArea, const ShadowAtlasPackerSettings& s)
+{
+    if (size == 0)
+        return fmt::format("no shadow: the {0} x {0} local atlas has no room for its {1} tile(s) of the floor size "
+                           "{2} x {2} with every light of higher priority at that size",
+                           s.atlasSize, request.tileCount, s.floorSize);
+    if (size < wanted)
+        return fmt::format("shadow tile {0} x {0} instead of {1} x {1}: the tiles asked for need {2:.0f}% of the "
+                           "{3} x {3} local atlas; lights of lower priority are lowered first",
+                           size, wanted, 100.0 * double(wantedArea) / double(area(s.atlasSize, 1)), s.atlasSize);
+    return std::nullopt;
+}
+
+void measureFreeSpace(const QuadtreeAllocator& allocator, std::uint32_t atlasSize, ShadowAtlasPack& result)
+{
+    const std::vector<std::set<std::uint32_t>>& free = allocator.freeBlocks();
+    for (std::uint32_t level = 0; level < free.size(); ++level) {
+        const std::uint32_t size = atlasSize >> level;
+        result.freeTexels += area(size, static_cast<std::uint32_t>(free[level].size()));
+        if (result.largestFreeTile == 0 && !free[level].empty())
+            result.largestFreeTile = size;
+    }
+    if (result.freeTexels != 0)
+        result.fragmentation =
+            static_cast<float>(1.0 - double(area(result.largestFreeTile, 1)) / double(result.freeTexels));
+}
+
 } // namespace
 
 ShadowAtlasPacker::ShadowAtlasPacker(const ShadowAtlasPackerSettings& settings) : settings_(settings)
@@ -155,95 +227,52 @@ ShadowAtlasPack ShadowAtlasPacker::pack(std::span<const ShadowTileRequest> reque
     std::unordered_map<std::uint32_t, std::size_t> requestOf;
     for (std::size_t i = 0; i < n; ++i)
         requestOf.emplace(requests[i].lightId, i);
+    std::vector<std::uint32_t> wanted(n);
     std::vector<const Placed*> previous(n, nullptr);
     for (const Placed& p : placed_)
         if (const auto found = requestOf.find(p.lightId); found != requestOf.end())
             previous[found->second] = &p;
-
-    std::vector<std::uint32_t> wanted(n);
     for (std::size_t i = 0; i < n; ++i)
         wanted[i] = wantedSize(requests[i], settings_, previous[i] ? previous[i]->wantedSize : 0);
     std::vector<std::uint32_t> sizes = wanted;
     fitArea(requests, sizes, settings_);
 
-    // Keep the tiles of lights whose size stays; free the others.
-    std::vector<std::vector<QuadtreeAllocator::Block>> blocks(n);
+    // Keep the tiles of lights whose size stays; free the others, then place those anew.
+    Tiles tiles{std::vector<std::vector<Block>>(n), std::vector<const std::vector<Block>*>(n, nullptr), false};
     for (const Placed& p : placed_) {
         const auto found = requestOf.find(p.lightId);
-        if (found != requestOf.end() && sizes[found->second] == p.size)
-            blocks[found->second] = p.blocks;
+        if (found != requestOf.end() && sizes[found->second] == p.size &&
+            p.blocks.size() == requests[found->second].tileCount)
+            tiles.blocks[found->second] = p.blocks;
         else
-            for (const QuadtreeAllocator::Block& b : p.blocks)
+            for (const Block& b : p.blocks)
                 allocator_->release(b);
     }
-    std::vector<bool> moved(n, true);
     for (std::size_t i = 0; i < n; ++i)
-        moved[i] = blocks[i].empty();
-    // A light that shrinks takes the top-left quadrant of each old tile: its texels stay where they were.
-    for (std::size_t i = 0; i < n; ++i)
-        if (previous[i] && sizes[i] != 0 && sizes[i] < previous[i]->size)
-            for (const QuadtreeAllocator::Block& old : previous[i]->blocks)
-                if (const QuadtreeAllocator::Block b = allocator_->blockAt(allocator_->offset(old), sizes[i]);
-                    allocator_->allocateAt(b))
-                    blocks[i].push_back(b);
-    // The rest, largest first, into the smallest free blocks that hold them.
-    ShadowAtlasPack result;
-    for (const std::size_t i : placementOrder(requests, sizes)) {
-        while (blocks[i].size() < requests[i].tileCount && !result.repacked) {
-            const std::optional<QuadtreeAllocator::Block> b = allocator_->allocate(sizes[i]);
-            if (b)
-                blocks[i].push_back(*b);
-            else
-                result.repacked = true;
-        }
-    }
-    if (result.repacked) {
-        allocator_->clear();
-        for (const std::size_t i : placementOrder(requests, sizes)) {
-            blocks[i].clear();
-            for (std::uint32_t t = 0; t < requests[i].tileCount; ++t)
-                blocks[i].push_back(allocator_->allocate(sizes[i]).value());
-            moved[i] = !previous[i] || previous[i]->blocks != blocks[i];
-        }
-    }
+        tiles.previous[i] = previous[i] ? &previous[i]->blocks : nullptr;
+    placeTiles(*allocator_, requests, sizes, tiles);
 
+    ShadowAtlasPack result;
+    result.repacked = tiles.repacked;
     std::uint64_t wantedArea = 0;
     for (std::size_t i = 0; i < n; ++i)
         wantedArea += area(wanted[i], requests[i].tileCount);
-    placed_.clear();
+    std::vector<bool> moved(n);
+    for (std::size_t i = 0; i < n; ++i)
+        moved[i] = sizes[i] == 0 || !tiles.previous[i] || *tiles.previous[i] != tiles.blocks[i];
+    placed_.clear(); // last frame's tiles, which tiles.previous points into, are done with
     for (std::size_t i = 0; i < n; ++i) {
-        PackedLight light{requests[i].lightId, wanted[i], sizes[i], {}, sizes[i] == 0 || moved[i]};
-        for (const QuadtreeAllocator::Block& b : blocks[i])
+        PackedLight light{requests[i].lightId, wanted[i], sizes[i], {}, moved[i]};
+        for (const Block& b : tiles.blocks[i])
             light.offsets.push_back(allocator_->offset(b));
         result.usedTexels += area(sizes[i], requests[i].tileCount);
-        if (sizes[i] == 0)
-            result.notes.push_back(
-                {light.lightId,
-                 fmt::format("no shadow: the {0} x {0} local atlas has no room for its {1} tile(s) of the floor size "
-                             "{2} x {2} with every light of higher priority at that size",
-                             settings_.atlasSize, requests[i].tileCount, settings_.floorSize)});
-        else if (sizes[i] < wanted[i])
-            result.notes.push_back(
-                {light.lightId,
-                 fmt::format("shadow tile {0} x {0} instead of {1} x {1}: the tiles asked for need "
-                             "{2:.0f}% of the {3} x {3} local atlas; lights of lower priority are "
-                             "lowered first",
-                             sizes[i], wanted[i], 100.0 * double(wantedArea) / double(area(settings_.atlasSize, 1)),
-                             settings_.atlasSize)});
+        if (std::optional<std::string> reason = note(requests[i], wanted[i], sizes[i], wantedArea, settings_))
+            result.notes.push_back({light.lightId, std::move(*reason)});
         if (sizes[i] != 0)
-            placed_.push_back({light.lightId, wanted[i], sizes[i], std::move(blocks[i])});
+            placed_.push_back({light.lightId, wanted[i], sizes[i], std::move(tiles.blocks[i])});
         result.lights.push_back(std::move(light));
     }
-    const std::vector<std::set<std::uint32_t>>& free = allocator_->freeBlocks();
-    for (std::uint32_t level = 0; level < free.size(); ++level) {
-        const std::uint32_t size = settings_.atlasSize >> level;
-        result.freeTexels += area(size, static_cast<std::uint32_t>(free[level].size()));
-        if (result.largestFreeTile == 0 && !free[level].empty())
-            result.largestFreeTile = size;
-    }
-    if (result.freeTexels != 0)
-        result.fragmentation =
-            static_cast<float>(1.0 - double(area(result.largestFreeTile, 1)) / double(result.freeTexels));
+    measureFreeSpace(*allocator_, settings_.atlasSize, result);
     return result;
 }
 
