@@ -46,7 +46,8 @@ struct PackedLight {
     std::uint32_t wantedSize = 0; // the request clamped, rounded and held by the hysteresis
     std::uint32_t size = 0; // the size given, <= wantedSize; 0: no tile, the light casts no shadow this frame
     std::vector<glm::uvec2> offsets; // top-left texel of each tile (rows from the top, as rhi::Viewport); none if 0
-    bool moved = true; // the tiles differ from last frame's (always so for a new light): cached maps are stale
+    bool moved = true; // the tiles differ from last frame's, or there are none (always so for a new light): cached maps
+                       // are stale
 };
 
 // A light that lost resolution or its shadow, and why.
@@ -80,8 +81,8 @@ public:
     const ShadowAtlasPackerSettings& settings() const { return settings_; }
 
     // Places this frame's tiles, keeping last frame's where it can. Throws rhi::Error for a request with a repeated
-    // lightId, a size that is not a positive finite number, a tileCount of 0 or one whose floor tiles alone exceed the
-    // atlas; nothing changes then.
+    // lightId, a size that is not a positive finite number, a priority that is not finite or a tileCount of 0;
+    // nothing changes then.
     ShadowAtlasPack pack(std::span<const ShadowTileRequest> requests);
     // Forgets every tile: the next pack places all lights afresh.
     void clear();
