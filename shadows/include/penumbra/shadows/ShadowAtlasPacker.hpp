@@ -46,8 +46,8 @@ struct PackedLight {
     std::uint32_t wantedSize = 0; // the request clamped, rounded and held by the hysteresis
     std::uint32_t size = 0; // the size given, <= wantedSize; 0: no tile, the light casts no shadow this frame
     std::vector<glm::uvec2> offsets; // top-left texel of each tile (rows from the top, as rhi::Viewport); none if 0
-    bool moved = true; // the tiles differ from last frame's, or there are none (always so for a new light): cached maps
-                       // are stale
+    // The tiles differ from last frame's, or there are none (always so for a new light): cached maps are stale.
+    bool moved = true;
 };
 
 // A light that lost resolution or its shadow, and why.
