@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace penumbra::shadows {
@@ -161,6 +162,17 @@ inline bool hasStaticMaps(const ShadowSettings& settings)
 {
     return settings.staticMaps.update != StaticShadowUpdate::EveryFrame;
 }
+
+// One field of the settings' JSON: its path ("directional.cascadeCount"; the "static" object is
+// ShadowSettings::staticMaps), the values it allows as the validation messages state them, and what it does in a
+// line. shadowSettingsFields() lists every field in toJson's order; `penumbra settings --markdown` prints the
+// settings reference (docs/settings.md) from it.
+struct ShadowSettingsField {
+    std::string_view path;
+    std::string_view allowed;
+    std::string_view summary;
+};
+std::span<const ShadowSettingsField> shadowSettingsFields();
 
 // Throws rhi::Error "<field>: <value> is out of range, allowed <range>" for the first field out of range
 // (field paths as in JSON: "directional.cascadeCount").
