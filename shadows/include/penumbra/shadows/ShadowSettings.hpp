@@ -91,6 +91,7 @@ struct SoftShadowSettings {
     float poissonRadiusTexels = 2.5f; // 0.5..64, the fixed-radius Poisson filter's radius
 };
 
+// The directional lights' atlas, filter and cascades.
 struct DirectionalShadowSettings {
     std::uint32_t atlasSize = 1024; // texels per side, a power of two in 256..8192
     ShadowFilter filter = ShadowFilter::PCF2x2;
@@ -148,6 +149,7 @@ struct StaticShadowSettings {
     std::uint32_t localAtlasSize = 2048;
 };
 
+// Every shadow setting of a frame; docs/settings.md lists each field with its default and range.
 struct ShadowSettings {
     float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001; applies to every light
     float distanceFade = 0.1f; // 0.001..1, fraction of maxDistance over which shadows fade out
