@@ -112,7 +112,9 @@ sample-viewer-compare: build
 	@./scripts/sample-viewer/compare.sh --penumbra $(PENUMBRA) --out out/sample-viewer --scenes \
 		out/sample-viewer/input/materials.glb
 
-# The API reference of the public headers with Doxygen, warnings as errors: $(BUILD)/docs/html/index.html.
+# The API reference of the public headers and the guide (README.md, docs/) with Doxygen, warnings as errors:
+# $(BUILD)/docs/html/index.html. The guide's generated regions (each command's --help, the settings reference) are
+# rewritten from the built tool by scripts/docs/generate.sh; ctest's docs.* tests check the guide.
 docs: deps
 	@mkdir -p $(BUILD)/docs
 	@PENUMBRA_DOCS_OUTPUT=$(BUILD)/docs doxygen docs/Doxyfile

@@ -17,6 +17,7 @@ void addBenchCommand(CLI::App& app);
 void addTruthCommand(CLI::App& app);
 void addBakeCommand(CLI::App& app);
 void addSoakCommand(CLI::App& app);
+void addSettingsCommand(CLI::App& app);
 
 // The RHI test pattern through one configuration, size x size pixels, with the validation layer / debug output
 // when `validate` is set.

@@ -39,6 +39,7 @@ int main(int argc, char** argv)
     penumbra::apps::addBakeCommand(app);
     penumbra::apps::addSoakCommand(app);
     penumbra::apps::addViewCommand(app);
+    penumbra::apps::addSettingsCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

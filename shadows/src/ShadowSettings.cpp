@@ -46,6 +46,47 @@ std::string filterNameList(std::string_view ShadowFilterInfo::*name)
 
 const std::array<ShadowFilterInfo, kShadowFilterCount>& shadowFilters() { return kFilters; }
 
+std::span<const ShadowSettingsField> shadowSettingsFields()
+{
+    static const std::string filterNames = filterNameList(&ShadowFilterInfo::json);
+    static const std::array<ShadowSettingsField, 27> fields{{
+        {"maxDistance", "> 0.001", "view depth beyond which nothing is shadowed, for every light"},
+        {"distanceFade", "0.001..1", "fraction of maxDistance over which shadows fade out"},
+        {"directional.atlasSize", "powers of two 256..8192", "texels per side of the directional atlas"},
+        {"directional.filter", filterNames, "the directional lights' filter, unless a light sets its own"},
+        {"directional.cascadeCount", "1..4", "cascades per directional light"},
+        {"directional.cascadeRatios", "3 numbers in 0..1, strictly increasing",
+         "ends of cascades 1..3 as fractions of maxDistance"},
+        {"directional.cascadeFade", "0.001..1", "fraction of the last cascade over which it fades"},
+        {"directional.cascadeBlend", "hard, soft, dither", "how the lit pass moves from one cascade to the next"},
+        {"directional.projection", "stable, close",
+         "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices"},
+        {"directional.atlasFormat", "d16, d24s8, d32f", "depth format of the directional atlas"},
+        {"local.atlasSize", "powers of two 256..8192", "texels per side of the spot and point lights' atlas"},
+        {"local.filter", filterNames, "the spot and point lights' filter, unless a light sets its own"},
+        {"local.atlasFormat", "d16, d24s8, d32f", "depth format of the local atlas"},
+        {"local.pointMode", "atlas, cubemap", "point lights in six atlas tiles or in a depth cube map each"},
+        {"local.cubeMapSize", "powers of two 64..4096", "texels per face side in cubemap mode"},
+        {"local.nearPlane", "0.0001..0.5",
+         "shadow near plane as a fraction of the light's range, for lights without one"},
+        {"soft.blockerSearchScale", "0.1..10", "scales PCSS's blocker search region (NVIDIA's w_search)"},
+        {"soft.penumbraScale", "0.1..10", "scales PCSS's penumbra estimate (NVIDIA's w_penumbra)"},
+        {"soft.blockerSamples", "16, 32, 64", "Poisson disk taps of each blocker search"},
+        {"soft.filterSamples", "16, 32, 64", "Poisson disk taps of the soft filters"},
+        {"soft.minPenumbraTexels", "0..64", "smallest filter radius of PCSS, in texels"},
+        {"soft.maxPenumbraTexels", "minPenumbraTexels..64",
+         "largest filter radius and blocker search of PCSS, in texels"},
+        {"soft.poissonRadiusTexels", "0.5..64", "the fixed poisson filter's radius, in texels"},
+        {"static.update", "everyFrame, onChange, onDemand", "when static shadow maps are drawn; everyFrame keeps none"},
+        {"static.realtimeCasters", "all, dynamic", "which casters the realtime atlases draw while static maps exist"},
+        {"static.directionalAtlasSize", "powers of two 256..8192",
+         "texels per side of the directional lights' static atlas"},
+        {"static.localAtlasSize", "powers of two 256..8192",
+         "texels per side of the spot and point lights' static atlas"},
+    }};
+    return fields;
+}
+
 std::optional<ShadowFilter> filterFromCommandName(std::string_view name)
 {
     for (const ShadowFilterInfo& entry : shadowFilters())
@@ -122,39 +163,9 @@ SettingsProblem outOfRange(std::string field, std::string value)
 
 std::string_view allowedValues(std::string_view field)
 {
-    static const std::string filterNames = filterNameList(&ShadowFilterInfo::json);
-    if (field == "directional.filter" || field == "local.filter")
-        return filterNames;
-    static constexpr std::array<std::pair<std::string_view, std::string_view>, 25> table{{
-        {"maxDistance", "> 0.001"},
-        {"distanceFade", "0.001..1"},
-        {"directional.atlasSize", "powers of two 256..8192"},
-        {"directional.cascadeCount", "1..4"},
-        {"directional.cascadeRatios", "3 numbers in 0..1, strictly increasing"},
-        {"directional.cascadeFade", "0.001..1"},
-        {"directional.cascadeBlend", "hard, soft, dither"},
-        {"directional.projection", "stable, close"},
-        {"directional.atlasFormat", "d16, d24s8, d32f"},
-        {"local.atlasSize", "powers of two 256..8192"},
-        {"local.atlasFormat", "d16, d24s8, d32f"},
-        {"local.pointMode", "atlas, cubemap"},
-        {"local.cubeMapSize", "powers of two 64..4096"},
-        {"local.nearPlane", "0.0001..0.5"},
-        {"soft.blockerSearchScale", "0.1..10"},
-        {"soft.penumbraScale", "0.1..10"},
-        {"soft.blockerSamples", "16, 32, 64"},
-        {"soft.filterSamples", "16, 32, 64"},
-        {"soft.minPenumbraTexels", "0..64"},
-        {"soft.maxPenumbraTexels", "minPenumbraTexels..64"},
-        {"soft.poissonRadiusTexels", "0.5..64"},
-        {"static.update", "everyFrame, onChange, onDemand"},
-        {"static.realtimeCasters", "all, dynamic"},
-        {"static.directionalAtlasSize", "powers of two 256..8192"},
-        {"static.localAtlasSize", "powers of two 256..8192"},
-    }};
-    for (const auto& [name, allowed] : table)
-        if (name == field)
-            return allowed;
+    for (const ShadowSettingsField& entry : shadowSettingsFields())
+        if (entry.path == field)
+            return entry.allowed;
     return "";
 }
 

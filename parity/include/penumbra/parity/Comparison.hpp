@@ -60,6 +60,7 @@ struct PictureComparison {
     // ("sizes differ: RGBA8 64x64 and RGBA8 32x32"); empty when the pair passes.
     std::vector<std::string> failures;
 
+    // Whether the picture met every threshold.
     bool pass() const { return failures.empty(); }
 };
 

@@ -34,6 +34,7 @@ using RenderFunction =
 
 // One configuration's run.
 struct ConfigurationRun {
+    // Whether the configuration rendered, was skipped by the driver, or failed.
     enum class Status {
         Rendered,
         Unsupported, // the driver refused the device (rhi::UnsupportedError): reported, not a failure
@@ -44,17 +45,21 @@ struct ConfigurationRun {
     std::string message; // why it is unsupported or failed
     std::vector<Picture> pictures;
 
+    // The configuration's name ("vulkan", ...).
     const std::string& name() const { return configuration.name; }
+    // The configuration's depth conventions, for comparing depth across configurations.
     rhi::Conventions conventions() const { return {configuration.desc.depthRange, configuration.desc.reversedZ}; }
     // The picture called `name`; throws rhi::Error naming the pictures there are.
     const Picture& picture(std::string_view name) const;
 };
 
+// Which configurations are compared: every pair, or each with Options::reference.
 enum class Pairing {
     EveryPair, // every configuration against every other
     AgainstReference, // every configuration against Options::reference
 };
 
+// How parity::run renders and compares: configurations, thresholds per picture and per pair, pairing.
 struct Options {
     // The configurations by name ("vulkan", "opengl-noclip-reversed"); empty: every one this build
     // registered (penumbra::namedConfigurations()). An unknown name throws before anything renders.
@@ -78,11 +83,13 @@ struct PairResult {
     std::size_t a = 0, b = 0;
     std::vector<PictureComparison> pictures;
 
+    // Whether every picture of the pair met its thresholds.
     bool pass() const;
     // The comparison of one picture, or nullptr.
     const PictureComparison* find(std::string_view picture) const;
 };
 
+// Every configuration's run and every pair's comparison; failures(), figures() and summary() report them.
 struct Result {
     std::vector<ConfigurationRun> configurations;
     std::vector<PairResult> pairs; // between the rendered configurations
@@ -98,6 +105,7 @@ struct Result {
     std::string summary() const;
     // "vulkan vs opengl" for a pair.
     std::string pairName(const PairResult& pair) const;
+    // The run of the configuration called `name`.
     const ConfigurationRun& configuration(std::string_view name) const;
     // The pair of two configurations by name (either order), or nullptr.
     const PairResult* pair(std::string_view a, std::string_view b) const;

@@ -24,6 +24,7 @@ struct FloatDifference {
     std::size_t differingPixels = 0;
     double psnr = 0.0; // dB; infinite when identical
 };
+// Largest difference, differing values and PSNR (peak 1) of two equally long float arrays.
 FloatDifference compareFloats(std::span<const float> a, std::span<const float> b);
 
 } // namespace penumbra::parity

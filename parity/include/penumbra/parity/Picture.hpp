@@ -36,6 +36,7 @@ enum class DepthSpace {
     Given,
 };
 
+// One named picture a render function returns: colour, depth (in one of the depth spaces) or floats.
 struct Picture {
     std::string name;
     PictureKind kind = PictureKind::Color;
@@ -45,10 +46,13 @@ struct Picture {
     glm::mat4 projection{1.0f}; // Depth in LinearView
     std::vector<float> given; // Depth in Given
 
+    // Width in texels.
     std::uint32_t width() const { return kind == PictureKind::Color ? color.width : depth.width; }
+    // Height in texels.
     std::uint32_t height() const { return kind == PictureKind::Color ? color.height : depth.height; }
 };
 
+// A colour picture, compared per byte of every channel.
 Picture colorPicture(std::string name, rhi::Image image);
 // Depth compared from the far plane (DepthSpace::FromFarPlane).
 Picture depthPicture(std::string name, rhi::DepthImage depth);
@@ -56,6 +60,7 @@ Picture depthPicture(std::string name, rhi::DepthImage depth);
 Picture viewDepthPicture(std::string name, rhi::DepthImage depth, const glm::mat4& projection);
 // Depth compared in values of the caller's own, `comparable[i]` for texel i (DepthSpace::Given).
 Picture depthPicture(std::string name, rhi::DepthImage depth, std::vector<float> comparable);
+// Values compared as they are (PSNR with peak 1), width x height of them, row 0 at the top.
 Picture floatPicture(std::string name, std::uint32_t width, std::uint32_t height, std::vector<float> values);
 
 // "colour", "depth" or "float".
@@ -73,6 +78,7 @@ struct ComparableValues {
     std::vector<float> values;
     std::vector<bool> drawn;
 };
+// The values a picture is compared by, in a space shared by every configuration, and which texels were drawn.
 ComparableValues comparableValues(const Picture& picture, const rhi::Conventions& conventions);
 
 } // namespace penumbra::parity

@@ -14,7 +14,9 @@ struct AmbientLight {
     float intensity = 0.03f;
     std::optional<glm::vec3> ground; // linear RGB from below; none: `color` from every side
 
+    // Linear radiance from above (from every side without `ground`).
     glm::vec3 sky() const { return color * intensity; }
+    // Linear radiance from below.
     glm::vec3 below() const { return ground.value_or(color) * intensity; }
 };
 

@@ -24,21 +24,28 @@ public:
     // (rhi::writeMipChain) where their samplers read mip levels. Samplers start without anisotropic filtering.
     GpuScene(rhi::Device& device, const scene::Scene& scene);
 
+    // The scene this was uploaded from.
     const scene::Scene& scene() const { return scene_; }
+    // The vertex buffer of a mesh (an index into Scene::meshes).
     const rhi::Buffer& vertices(std::uint32_t mesh) const { return *meshes_.at(mesh).vertices; }
+    // The index buffer of a mesh (32-bit indices).
     const rhi::Buffer& indices(std::uint32_t mesh) const { return *meshes_.at(mesh).indices; }
     // Scene::textures[*index] and the sampler its file asks for; a white texel (sampled as 1 in every
     // channel) and a bilinear sampler for nullopt.
     const rhi::Texture& texture(std::optional<std::uint32_t> index) const;
+    // The sampler of a scene texture, or a bilinear sampler for nullopt.
     const rhi::Sampler& sampler(std::optional<std::uint32_t> index) const;
     // The material's texture in `slot` and the sampler of its glTF texture, or the white texel and its
     // sampler for a material without one.
     const rhi::Texture& map(const scene::Material& material, scene::TextureSlot slot) const;
+    // The sampler of a material's texture in `slot`, or a bilinear one where it has none.
     const rhi::Sampler& mapSampler(const scene::Material& material, scene::TextureSlot slot) const;
+    // The base colour texture of a material (white without one).
     const rhi::Texture& baseColorMap(const scene::Material& material) const
     {
         return map(material, scene::TextureSlot::BaseColor);
     }
+    // The sampler of a material's base colour texture.
     const rhi::Sampler& baseColorSampler(const scene::Material& material) const
     {
         return mapSampler(material, scene::TextureSlot::BaseColor);
@@ -55,10 +62,12 @@ public:
     // from the scene on every call, so moved objects (with updated worldBounds) are seen. `casters` is cleared and
     // filled, so that a caller keeps its storage from frame to frame.
     void casters(std::vector<shadows::ShadowCaster>& casters) const;
+    // Every shadow caster's world bounds, in caster order.
     std::vector<shadows::Bounds> casterBounds() const;
     // Indices into casters() of the casters whose objects are static (scene::Mobility), ascending.
     std::vector<std::uint32_t> staticCasters() const;
 
+    // The vertex layout the caster passes read from the scene's vertex buffers.
     static shadows::CasterVertexFormat vertexFormat();
     // scene::Vertex's six attributes at locations 0 to 5 (position, normal, uv, uv1, tangent, colour), as the
     // lit shaders read them, and the instance transforms (shadows::addInstanceAttributes) from vertex buffer slot

@@ -161,6 +161,7 @@ struct LitShaderFeatures {
     // that covers its whole pixel by it.
     std::uint32_t samples = 1;
 
+    // Equal features compile to the same lit shader variant.
     bool operator==(const LitShaderFeatures&) const = default;
 };
 

@@ -28,12 +28,14 @@ static_assert(sizeof(ReferenceSplitUniforms) == 32);
 // atlas, Lambert n.l of the first directional light plus ambient; forward, no prepass, into targets of its own.
 class ReferenceLitPass {
 public:
+    // Builds the pass's pipeline for the scene's meshes on `device`.
     ReferenceLitPass(rhi::Device& device, const GpuScene& scene);
 
     // Draws the camera's view with the renderer's last plan and atlas (after SceneRenderer::render) in one
     // submission; returns its GPU time in milliseconds (0 on a device without timestamps).
     double render(const scene::Camera& camera, const FrameDesc& frame, const SceneRenderer& renderer);
 
+    // The picture the last render() drew.
     const rhi::Texture& image() const { return *color_; }
 
 private:

@@ -27,6 +27,7 @@ struct Viewport {
     float height = 0.0f;
 };
 
+// A scissor rectangle in pixels, rows counted from the top.
 struct Rect {
     std::int32_t x = 0;
     std::int32_t y = 0;
@@ -34,6 +35,7 @@ struct Rect {
     std::uint32_t height = 0;
 };
 
+// What CommandList::beginPass draws into and clears.
 struct PassDesc {
     const Framebuffer* framebuffer = nullptr;
     // Clear colour for every colour attachment; nullopt keeps their contents.
@@ -51,23 +53,32 @@ public:
 
     // A pass sets viewport and scissor to the whole framebuffer.
     virtual void beginPass(const PassDesc& pass) = 0;
+    // Ends the pass; copies, resolves and submits happen outside passes.
     virtual void endPass() = 0;
 
+    // The viewport of the next draws, rows counted from the top.
     virtual void setViewport(const Viewport& viewport) = 0;
+    // The scissor of the next draws, rows counted from the top.
     virtual void setScissor(const Rect& scissor) = 0;
     // Binding a pipeline sets its DepthState::bias; this overrides it until the next bindPipeline.
     virtual void setDepthBias(const DepthBias& bias) = 0;
 
+    // Draws use this pipeline; its formats must match the pass's framebuffer.
     virtual void bindPipeline(const Pipeline& pipeline) = 0;
+    // The vertex buffer of a slot of the pipeline's VertexLayout.
     virtual void bindVertexBuffer(std::uint32_t slot, const Buffer& buffer, std::uint64_t offset = 0) = 0;
+    // The index buffer of drawIndexed.
     virtual void bindIndexBuffer(const Buffer& buffer, IndexType type, std::uint64_t offset = 0) = 0;
     // offset must be a multiple of Capabilities::uniformBufferOffsetAlignment.
     virtual void bindUniformBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
                                    std::uint64_t size) = 0;
+    // A texture and its sampler at a combined-sampler binding number.
     virtual void bindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) = 0;
 
+    // Draws vertices in order, inside a pass.
     virtual void draw(std::uint32_t vertexCount, std::uint32_t instanceCount = 1, std::uint32_t firstVertex = 0,
                       std::uint32_t firstInstance = 0) = 0;
+    // Draws through the bound index buffer, inside a pass.
     virtual void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount = 1, std::uint32_t firstIndex = 0,
                              std::int32_t vertexOffset = 0, std::uint32_t firstInstance = 0) = 0;
 
@@ -76,7 +87,9 @@ public:
     // row 0 (the top) first, depth only for D24S8.
     virtual void copyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,
                             std::uint64_t size) = 0;
+    // Copies one whole layer, every mip level, between textures of equal size, format and level count.
     virtual void copyTexture(const Texture& src, std::uint32_t srcLayer, Texture& dst, std::uint32_t dstLayer) = 0;
+    // Copies one level of one layer into a buffer in tightly packed rows, row 0 (the top) first.
     virtual void copyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
                                      std::uint64_t dstOffset = 0) = 0;
 

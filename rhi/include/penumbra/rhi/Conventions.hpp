@@ -28,20 +28,26 @@ enum class DepthTest { Always, Never, Nearer, NearerOrEqual, Farther, FartherOrE
 // clip-to-texture matrix of shadow lookups) asks this object.
 class Conventions {
 public:
+    // The conventions of a depth range and a depth direction.
     Conventions(DepthRange range, bool reversedZ) : range_(range), reversedZ_(reversedZ) {}
 
+    // Clip-space depth range: [0, 1] or [-1, 1].
     DepthRange depthRange() const { return range_; }
+    // Whether the near plane maps to depth 1 and the far plane to 0.
     bool reversedZ() const { return reversedZ_; }
 
     // Window depth of the near and far planes; the depth clear value is farDepth().
     float nearDepth() const { return reversedZ_ ? 1.0f : 0.0f; }
+    // Window depth of the far plane.
     float farDepth() const { return reversedZ_ ? 0.0f : 1.0f; }
+    // The value depth attachments are cleared to: the far plane.
     float clearDepth() const { return farDepth(); }
 
     // NDC z of the near plane: 0, or -1 for [-1, 1], 1 reversed (Unity's UNITY_NEAR_CLIP_VALUE, which
     // Catlike Coding's "Directional Shadows" tutorial clamps to for shadow pancaking).
     float nearClipValue() const;
 
+    // The compare op that makes `test` (nearer, nearer or equal, ...) true under these conventions.
     CompareOp depthCompareOp(DepthTest test) const;
     // A shadow lookup is lit where the receiver is nearer to the light than or as near as the stored depth.
     CompareOp shadowCompareOp() const { return depthCompareOp(DepthTest::NearerOrEqual); }
@@ -56,6 +62,7 @@ public:
     glm::mat4 perspective(float fovY, float aspect, float zNear, float zFar) const;
     // Infinite far plane; with reversed-Z this is the precision-friendly z_ndc = near / view depth.
     glm::mat4 perspectiveInfinite(float fovY, float aspect, float zNear) const;
+    // An orthographic projection to this depth range and direction (view space right-handed, looking down -z).
     glm::mat4 orthographic(float left, float right, float bottom, float top, float zNear, float zFar) const;
 
     // Positive view depth (distance along -z) of a window depth written through `projection`

@@ -63,7 +63,9 @@ struct Capabilities {
     // lavapipe offers it for none (conventions note, section 4).
     std::array<FormatSupport, formatCount> formats{};
 
+    // What the driver offers for one format.
     const FormatSupport& format(Format f) const { return formats[static_cast<std::size_t>(f)]; }
+    // Whether the driver can filter the format linearly (lavapipe: no depth format).
     bool supportsLinearFilter(Format f) const { return format(f).linearFilter; }
     // The sample counts offered for every one of `targets` (their sampleCounts masks intersected): what a
     // framebuffer of those formats can use.
@@ -78,26 +80,35 @@ class Device : private LiveObject<ObjectKind::Device> {
 public:
     virtual ~Device() = default;
 
+    // The description the device was created with.
     virtual const DeviceDesc& desc() const = 0;
+    // The depth range and reversed-Z of this device as numbers: projections, clear depth, compare ops.
     virtual const Conventions& conventions() const = 0;
+    // What the driver offers: formats, sample counts, limits, memory.
     virtual const Capabilities& capabilities() const = 0;
 
     // Out of memory is an Error naming the resource (its debugName) and its size: a request larger than
     // Capabilities::deviceMemoryBytes before the API is asked, an allocation the driver refuses after. Nothing is
     // created then and the device stays usable.
     virtual std::unique_ptr<Buffer> createBuffer(const BufferDesc& desc) = 0;
+    // A texture as described; the validation layer names the field of a description it refuses.
     virtual std::unique_ptr<Texture> createTexture(const TextureDesc& desc) = 0;
     // Uploads one whole mip level of one layer: tightly packed rows of mipExtent(width, level) texels, row 0
     // (the top of the picture) first, texels laid out as copyTextureToBuffer gives them (D24S8: 32-bit words,
     // depth in the low 24 bits).
     virtual void writeTexture(Texture& texture, std::uint32_t layer, std::uint32_t level,
                               std::span<const std::byte> data) = 0;
+    // A sampler as described; anisotropy above Capabilities::maxSamplerAnisotropy is refused.
     virtual std::unique_ptr<Sampler> createSampler(const SamplerDesc& desc) = 0;
     // Compiles with glslang (errors name the source and line) and creates the backend's module.
     virtual std::unique_ptr<Shader> createShader(const ShaderSource& source) = 0;
+    // Links the shaders and fixed state; bindings and uniform layouts are checked against reflection.
     virtual std::unique_ptr<Pipeline> createPipeline(const PipelineDesc& desc) = 0;
+    // Colour and depth attachments of one size and sample count, for CommandList::beginPass.
     virtual std::unique_ptr<Framebuffer> createFramebuffer(const FramebufferDesc& desc) = 0;
+    // `count` GPU timestamps for CommandList::writeTimestamp, read with readTimestamps.
     virtual std::unique_ptr<TimestampQueries> createTimestampQueries(std::uint32_t count) = 0;
+    // An empty command list of this device.
     virtual std::unique_ptr<CommandList> createCommandList() = 0;
     // The swapchain of DeviceDesc::window; throws Error when the device was created without one,
     // or when the driver cannot present to it. At most one per device.
@@ -111,6 +122,7 @@ public:
 
     // Every validation-layer or debug-output message since creation or the last clear.
     virtual std::vector<std::string> debugMessages() const = 0;
+    // Forgets the messages debugMessages() returned.
     virtual void clearDebugMessages() = 0;
 };
 

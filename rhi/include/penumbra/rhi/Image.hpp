@@ -18,6 +18,7 @@ struct Image {
     Format format = Format::RGBA8;
     std::vector<std::byte> bytes;
 
+    // The bytes of texel (x, y), row 0 at the top.
     const std::byte* texel(std::uint32_t x, std::uint32_t y) const
     {
         return bytes.data() + (std::size_t(y) * width + x) * texelSize(format);
@@ -30,6 +31,7 @@ struct DepthImage {
     std::uint32_t height = 0;
     std::vector<float> depth;
 
+    // Depth of texel (x, y), row 0 at the top.
     float at(std::uint32_t x, std::uint32_t y) const { return depth[std::size_t(y) * width + x]; }
 };
 

@@ -22,7 +22,9 @@ struct FloatImage {
     std::vector<std::string> channels; // names, e.g. {"R", "G", "B", "A"} or {"Z"}
     std::vector<float> values; // width * height * channels.size()
 
+    // The index of the channel called `name` ("R", "Z", ...), or nullopt.
     std::optional<std::size_t> channelIndex(std::string_view name) const;
+    // The value of one channel of texel (x, y), row 0 at the top.
     float at(std::uint32_t x, std::uint32_t y, std::size_t channel) const
     {
         return values[(std::size_t(y) * width + x) * channels.size() + channel];

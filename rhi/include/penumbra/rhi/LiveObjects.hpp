@@ -40,7 +40,9 @@ template <ObjectKind Kind>
 class LiveObject {
 protected:
     LiveObject() noexcept { detail::countLiveObject(Kind, +1); }
+    // A copy is one more live object of its kind.
     LiveObject(const LiveObject&) noexcept { detail::countLiveObject(Kind, +1); }
+    // Assignment changes no count.
     LiveObject& operator=(const LiveObject&) noexcept = default;
     ~LiveObject() { detail::countLiveObject(Kind, -1); }
 };

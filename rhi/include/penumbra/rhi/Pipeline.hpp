@@ -33,6 +33,7 @@ constexpr std::uint32_t vertexFormatSize(VertexFormat format)
     return 16;
 }
 
+// One vertex attribute: its shader location, format and byte offset in its buffer's vertex.
 struct VertexAttribute {
     std::uint32_t location = 0;
     VertexFormat format = VertexFormat::Float3;
@@ -40,11 +41,13 @@ struct VertexAttribute {
     std::uint32_t buffer = 0; // vertex buffer slot
 };
 
+// One vertex buffer slot: its stride and whether it advances per vertex or per instance.
 struct VertexBufferLayout {
     std::uint32_t stride = 0;
     bool perInstance = false;
 };
 
+// The vertex buffers a pipeline reads and their attributes.
 struct VertexLayout {
     std::vector<VertexBufferLayout> buffers;
     std::vector<VertexAttribute> attributes;
@@ -64,6 +67,7 @@ struct DepthBias {
     float clamp = 0.0f;
 };
 
+// Depth test, write, bias and clamp of a pipeline.
 struct DepthState {
     bool test = false;
     bool write = false;
@@ -90,6 +94,7 @@ enum class BlendFactor : std::uint8_t {
 };
 enum class BlendOp : std::uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
 
+// How a colour target blends the fragment with what it holds.
 struct BlendState {
     bool enable = false;
     BlendFactor srcColor = BlendFactor::One;
@@ -100,6 +105,7 @@ struct BlendState {
     BlendOp alphaOp = BlendOp::Add;
 };
 
+// One colour attachment of a pipeline: its format, blending and write mask.
 struct ColorTarget {
     Format format = Format::RGBA8;
     ColorMask writeMask = ColorMask::All;
@@ -128,9 +134,11 @@ struct PipelineDesc {
     std::string debugName;
 };
 
+// Shaders and fixed state, drawn with inside a pass whose framebuffer matches its formats.
 class Pipeline : private LiveObject<ObjectKind::Pipeline> {
 public:
     virtual ~Pipeline() = default;
+    // The description the pipeline was created with.
     virtual const PipelineDesc& desc() const = 0;
     // Every binding both stages declare, sorted by number: what a draw needs bound (uniform blocks with at
     // least their reflected size, textures with a sampler).

@@ -41,11 +41,15 @@ struct BufferDesc {
 class Buffer : private LiveObject<ObjectKind::Buffer> {
 public:
     virtual ~Buffer() = default;
+    // The description the buffer was created with.
     virtual const BufferDesc& desc() const = 0;
+    // Copies bytes into the buffer at `offset`; seen by every draw of the next submission.
     virtual void write(std::uint64_t offset, std::span<const std::byte> data) = 0;
+    // Copies bytes out of the buffer at `offset` (after a submission: what the GPU wrote).
     virtual void read(std::uint64_t offset, std::span<std::byte> data) const = 0;
 
     template <typename T>
+    // Writes one trivially copyable value at `offset`.
     void writeObject(const T& value, std::uint64_t offset = 0)
     {
         write(offset, std::as_bytes(std::span(&value, 1)));
@@ -96,9 +100,11 @@ struct TextureDesc {
     std::string debugName;
 };
 
+// A texture of the device that created it (TextureDesc says its size, format, layers, levels, samples).
 class Texture : private LiveObject<ObjectKind::Texture> {
 public:
     virtual ~Texture() = default;
+    // The description the texture was created with.
     virtual const TextureDesc& desc() const = 0;
 };
 
@@ -128,9 +134,11 @@ struct SamplerDesc {
     std::string debugName;
 };
 
+// How a texture is filtered and addressed when read (SamplerDesc).
 class Sampler : private LiveObject<ObjectKind::Sampler> {
 public:
     virtual ~Sampler() = default;
+    // The description the sampler was created with.
     virtual const SamplerDesc& desc() const = 0;
 };
 
@@ -154,22 +162,29 @@ struct AttachmentFormats {
     std::optional<Format> depth;
     std::uint32_t samples = 1;
 
+    // Equal formats, in order, and sample count.
     bool operator==(const AttachmentFormats&) const = default;
 };
 
 AttachmentFormats attachmentFormats(const FramebufferDesc& desc);
 
+// The attachments a pass draws into (FramebufferDesc).
 class Framebuffer : private LiveObject<ObjectKind::Framebuffer> {
 public:
     virtual ~Framebuffer() = default;
+    // Width of every attachment, in pixels.
     virtual std::uint32_t width() const = 0;
+    // Height of every attachment, in pixels.
     virtual std::uint32_t height() const = 0;
+    // The attachments' formats and sample count, which a pipeline drawing here must match.
     virtual const AttachmentFormats& formats() const = 0;
 };
 
+// GPU timestamps written by CommandList::writeTimestamp and read by Device::readTimestamps.
 class TimestampQueries : private LiveObject<ObjectKind::TimestampQueries> {
 public:
     virtual ~TimestampQueries() = default;
+    // How many timestamps the set holds.
     virtual std::uint32_t count() const = 0;
 };
 

@@ -31,6 +31,7 @@ struct ShaderSource {
 
 enum class BindingKind : std::uint8_t { UniformBuffer, SampledTexture };
 
+// One binding a shader declares, as reflection finds it: number, kind, name, size of a uniform block.
 struct ShaderBinding {
     std::uint32_t binding = 0;
     BindingKind kind = BindingKind::UniformBuffer;
@@ -48,9 +49,11 @@ struct CompiledShader {
     std::vector<ShaderBinding> bindings;
 };
 
+// A compiled shader stage of one device, for PipelineDesc.
 class Shader : private LiveObject<ObjectKind::Shader> {
 public:
     virtual ~Shader() = default;
+    // The SPIR-V and reflection the shader was created from.
     virtual const CompiledShader& compiled() const = 0;
 };
 

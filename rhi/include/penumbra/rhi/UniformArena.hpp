@@ -27,12 +27,16 @@ using UniformSlice = BufferSlice;
 // the lists that bound earlier slices were submitted.
 class BufferArena {
 public:
+    // An arena of `usage` buffers on `device` whose slices start at multiples of `alignment`.
     BufferArena(Device& device, std::string debugName, BufferUsage usage, std::uint64_t alignment);
 
+    // Forgets every slice: the next push starts at the beginning (after a submission).
     void reset();
+    // Copies `data` into the arena and returns where it went.
     BufferSlice push(std::span<const std::byte> data);
 
     template <typename T>
+    // Copies one trivially copyable value into the arena.
     BufferSlice push(const T& value)
     {
         return push(std::as_bytes(std::span(&value, 1)));
@@ -52,12 +56,14 @@ private:
 // Capabilities::uniformBufferOffsetAlignment.
 class UniformArena : public BufferArena {
 public:
+    // An arena of uniform buffers aligned to the device's uniform offset alignment.
     UniformArena(Device& device, std::string debugName);
 };
 
 // Per-instance vertex data of one submission (instance transforms), bound with bindVertexBuffer at a slice's offset.
 class VertexArena : public BufferArena {
 public:
+    // An arena of vertex buffers, for per-instance data.
     VertexArena(Device& device, std::string debugName);
 };
 

@@ -19,6 +19,7 @@ struct WindowDesc {
     GLFWwindow* glfwWindow = nullptr;
 };
 
+// A size in pixels.
 struct Extent {
     std::uint32_t width = 0;
     std::uint32_t height = 0;

@@ -40,6 +40,7 @@ struct SoftVisibilityMap {
     std::vector<float> lit;
     std::vector<std::uint8_t> valid;
 
+    // Visibility of pixel (x, y), row 0 at the top.
     float at(std::uint32_t x, std::uint32_t y) const { return lit[std::size_t(y) * width + x]; }
 };
 
@@ -54,6 +55,7 @@ SoftVisibilityMap traceAreaLightVisibility(const Scene& scene, const RayCaster& 
 inline constexpr float kPenumbraEpsilon = 0.02f;
 inline constexpr int kPenumbraMargin = 2;
 
+// How far a rendered soft shadow is from the ray-traced area light's, over the true penumbra.
 struct SoftTruthFigures {
     std::size_t penumbraPixels = 0; // truly in the penumbra (and decided by the renderer)
     std::size_t compared = 0; // in or near it, valid in the truth and decided by the renderer

@@ -36,13 +36,20 @@ struct Bounds {
     glm::vec3 min{std::numeric_limits<float>::max()};
     glm::vec3 max{-std::numeric_limits<float>::max()};
 
+    // Whether nothing was added yet.
     bool empty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
+    // The middle of the box.
     glm::vec3 center() const { return 0.5f * (min + max); }
+    // Extent along each axis.
     glm::vec3 size() const { return max - min; }
 
+    // Grows the box to hold `point`.
     void extend(const glm::vec3& point);
+    // Grows the box to hold `other`.
     void extend(const Bounds& other);
+    // The smallest box holding both.
     Bounds merged(const Bounds& other) const;
+    // Whether `point` lies in the box grown by `tolerance` on every side.
     bool contains(const glm::vec3& point, float tolerance = 0.0f) const;
 
     // Corner i has x from max when bit 0 of i is set, y from bit 1, z from bit 2.
@@ -57,6 +64,7 @@ struct MeshData {
     std::vector<std::uint32_t> indices;
     Bounds bounds;
 
+    // Triangles of the mesh (indices / 3).
     std::uint32_t triangleCount() const { return static_cast<std::uint32_t>(indices.size() / 3); }
 };
 

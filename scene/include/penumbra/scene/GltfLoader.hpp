@@ -19,12 +19,14 @@ public:
     using SceneError::SceneError;
 };
 
+// Choices of loadGltf.
 struct GltfOptions {
     // The camera to use: a glTF camera's name, or the name of a node that carries one. Without
     // it the first perspective camera met walking the scene's nodes is used.
     std::optional<std::string> camera;
 };
 
+// A loaded glTF file: the scene and the loader's notes.
 struct GltfScene {
     Scene scene;
     // What was substituted or left out: defaults added, extensions and features ignored,

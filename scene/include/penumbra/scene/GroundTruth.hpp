@@ -36,6 +36,7 @@ struct Ray {
 // (x + 0.5, y + 0.5)).
 Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, float px, float py);
 
+// What the CPU ray caster sees at one pixel: object, triangle, position, normals, uv, depth.
 struct GBufferSample {
     std::uint32_t object = kNoObject; // kNoObject: background
     std::uint32_t triangle = 0; // within the object's mesh
@@ -52,14 +53,17 @@ struct GBufferSample {
     float viewDepth = 0.0f; // distance along the camera's forward axis
     bool frontFacing = true;
 
+    // Whether the pixel's ray met an object.
     bool hit() const { return object != kNoObject; }
 };
 
+// The CPU ray caster's picture of a camera view, one sample per pixel.
 struct CpuGBuffer {
     std::uint32_t width = 0;
     std::uint32_t height = 0;
     std::vector<GBufferSample> samples; // row-major, row 0 at the top
 
+    // The sample of pixel (x, y), row 0 at the top.
     const GBufferSample& at(std::uint32_t x, std::uint32_t y) const { return samples[std::size_t(y) * width + x]; }
 };
 
@@ -83,6 +87,7 @@ enum class LightVisibility : std::uint8_t {
     NotReceiving, // the material has receiveShadows = false: drawn lit whatever blocks it
 };
 
+// Per pixel of a G-buffer, whether a light reaches it, by a shadow ray each.
 struct LightVisibilityMask {
     std::uint32_t width = 0;
     std::uint32_t height = 0;
@@ -92,6 +97,7 @@ struct LightVisibilityMask {
     // Where Dithered: Occlusion::ditherCoverage of its shadow ray; 0 elsewhere.
     std::vector<float> ditherCoverage;
 
+    // The visibility of pixel (x, y), row 0 at the top.
     LightVisibility at(std::uint32_t x, std::uint32_t y) const { return pixels[std::size_t(y) * width + x]; }
 };
 

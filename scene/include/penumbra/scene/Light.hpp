@@ -35,6 +35,7 @@ inline constexpr float kDefaultSourceRadius = 0.05f;
 // Largest angular diameter a directional light may have, degrees (a soft-shadow filter's reach ends far earlier).
 inline constexpr float kMaxAngularDiameter = 30.0f;
 
+// A light infinitely far away (a sun): its direction, colour, intensity and shadow options.
 struct DirectionalLight {
     std::string name;
     glm::vec3 color{1.0f}; // linear RGB
@@ -90,6 +91,7 @@ struct PointLight {
 
 // A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.
 enum class LightKind : std::uint8_t { Directional, Spot, Point };
+// Names one light of a scene: its kind and its index in that kind's list.
 struct LightRef {
     LightKind kind = LightKind::Directional;
     std::uint32_t index = 0;

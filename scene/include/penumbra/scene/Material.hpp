@@ -48,6 +48,7 @@ struct MaterialTexture {
 enum class TextureSlot : std::uint32_t { BaseColor, MetallicRoughness, Normal, Occlusion, Emissive };
 inline constexpr std::uint32_t kTextureSlots = 5;
 
+// A glTF 2.0 metallic-roughness material: factors, textures, alpha mode, sidedness.
 struct Material {
     std::string name;
     glm::vec4 baseColor{1.0f}; // linear RGB; a is the alpha of Clip and Dither casters
@@ -78,7 +79,9 @@ struct Material {
     // - Emissive: sRGB-encoded RGB, multiplying emissive.
     std::array<std::optional<MaterialTexture>, kTextureSlots> textures{};
 
+    // The texture in `slot`, if any.
     std::optional<MaterialTexture>& texture(TextureSlot slot) { return textures[std::size_t(slot)]; }
+    // The texture in `slot`, if any.
     const std::optional<MaterialTexture>& texture(TextureSlot slot) const { return textures[std::size_t(slot)]; }
 };
 

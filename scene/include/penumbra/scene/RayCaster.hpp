@@ -30,6 +30,7 @@ enum class RayKind : std::uint8_t { Shadow, Camera };
 
 inline constexpr float kDitherShadowThreshold = 0.5f;
 
+// Where a ray met a triangle.
 struct Hit {
     float distance; // world units along the (normalised) direction
     std::uint32_t object; // index into Scene::objects
@@ -55,12 +56,17 @@ struct Occlusion {
 // 0 < distance <= maxDistance, so rays leaving a surface must start slightly off it.
 class RayCaster {
 public:
+    // Builds the BVH over every object of `scene` that rays of `kind` can meet.
     explicit RayCaster(const Scene& scene, RayKind kind = RayKind::Shadow);
     ~RayCaster();
+    // Moves the BVH.
     RayCaster(RayCaster&&) noexcept;
+    // Moves the BVH.
     RayCaster& operator=(RayCaster&&) noexcept;
 
+    // Which rays the caster traces (shadow or camera), which decides culling and what is skipped.
     RayKind kind() const;
+    // Triangles in the BVH.
     std::uint32_t triangleCount() const;
 
     // Any hit; stops at the first one.
@@ -69,6 +75,7 @@ public:
     // Solid blockers and dithered ones apart, with the dithered ones' alpha instead of its threshold.
     Occlusion occlusion(const glm::vec3& origin, const glm::vec3& direction,
                         float maxDistance = std::numeric_limits<float>::infinity()) const;
+    // The nearest triangle along the ray within maxDistance, or nullopt.
     std::optional<Hit> closestHit(const glm::vec3& origin, const glm::vec3& direction,
                                   float maxDistance = std::numeric_limits<float>::infinity()) const;
 

@@ -66,6 +66,7 @@ struct Object {
     Mobility mobility = Mobility::Static;
 };
 
+// Everything a frame draws: meshes, materials, textures, objects, lights and a camera.
 struct Scene {
     std::vector<MeshData> meshes;
     std::vector<Material> materials;
@@ -76,14 +77,18 @@ struct Scene {
     std::vector<TextureImage> textures; // referred to by Material::textures
     Camera camera;
 
+    // Adds a mesh and returns its index.
     std::uint32_t addMesh(MeshData mesh);
+    // Adds a material and returns its index.
     std::uint32_t addMaterial(Material material);
     // Appends an object with its world bounds computed; the mesh must already be added.
     std::uint32_t addObject(std::string name, std::uint32_t mesh, std::uint32_t material, const glm::mat4& transform);
 
     // Index of the first object called `name`.
     std::optional<std::uint32_t> findObject(std::string_view name) const;
+    // The material an object is drawn with.
     const Material& materialOf(const Object& object) const { return materials.at(object.material); }
+    // The mesh an object draws.
     const MeshData& meshOf(const Object& object) const { return meshes.at(object.mesh); }
     // Shadow maps darken the object: both it and its material receive shadows.
     bool receivesShadows(const Object& object) const

@@ -60,7 +60,9 @@ struct DitheredFigures {
     double expectedLitSum = 0.0;
     double renderedLitSum = 0.0;
 
+    // Mean expected visibility over the compared pixels behind dithered casters.
     double expectedLit() const { return compared == 0 ? 0.0 : expectedLitSum / double(compared); }
+    // Mean rendered visibility over the same pixels.
     double renderedLit() const { return compared == 0 ? 0.0 : renderedLitSum / double(compared); }
 };
 
@@ -76,11 +78,15 @@ struct TruthComparison {
     std::map<std::uint32_t, TruthClassFigures> shadowedBy;
     DitheredFigures dithered;
 
+    // Pixels judged, lit and shadowed.
     std::size_t compared() const { return lit.compared + shadowed.compared; }
+    // Truly lit pixels rendered dark.
     std::size_t acne() const { return lit.compared - lit.right; }
+    // Truly shadowed pixels rendered lit.
     std::size_t leaks() const { return shadowed.compared - shadowed.right; }
     // Of all compared pixels, the share rendered right (1 when none was compared, as share()).
     double agreement() const { return compared() == 0 ? 1.0 : double(lit.right + shadowed.right) / double(compared()); }
+    // The verdict of pixel (x, y), row 0 at the top.
     TruthVerdict at(std::uint32_t x, std::uint32_t y) const { return verdicts[std::size_t(y) * width + x]; }
 };
 

@@ -12,6 +12,7 @@ namespace penumbra::scene {
 // on the inner side where dot(normal, p) + offset >= 0.
 class ViewFrustum {
 public:
+    // The six planes of `camera`'s view at `aspect` (width / height).
     ViewFrustum(const Camera& camera, float aspect);
 
     // False only where the box lies wholly outside one plane, so no fragment of what it bounds can be drawn; boxes

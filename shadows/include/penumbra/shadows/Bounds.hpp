@@ -10,6 +10,7 @@ struct Bounds {
     glm::vec3 min{0.0f};
     glm::vec3 max{0.0f};
 
+    // The box's eight corners.
     std::array<glm::vec3, 8> corners() const
     {
         return {{{min.x, min.y, min.z},

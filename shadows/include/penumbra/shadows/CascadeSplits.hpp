@@ -11,7 +11,9 @@ struct CascadeSplits {
     std::array<float, 5> distances{};
     std::uint32_t count = 0;
 
+    // View distance where cascade `cascade` starts.
     float nearOf(std::uint32_t cascade) const { return distances[cascade]; }
+    // View distance where cascade `cascade` ends.
     float farOf(std::uint32_t cascade) const { return distances[cascade + 1]; }
 };
 

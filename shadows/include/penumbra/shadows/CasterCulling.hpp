@@ -11,6 +11,7 @@
 
 namespace penumbra::shadows {
 
+// The casters drawn into one cascade, and how many the culling bias left out.
 struct CasterCullingResult {
     std::vector<std::uint32_t> casters; // indices into the caster list to draw into the cascade
     std::uint32_t overlapping = 0; // casters in the cascade's light box: the draws without culling bias

@@ -22,6 +22,7 @@ glm::vec2 ditherOrigin(const DirectionalShadowCascade& cascade, const ShadowAtla
 // (depth clamp where the device has it, else the shader clamp onto the convention's near value).
 class DirectionalShadowPass {
 public:
+    // Builds the caster pipelines for vertices of `vertexFormat`.
     DirectionalShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the

@@ -21,6 +21,7 @@
 
 namespace penumbra::shadows {
 
+// One directional light as the planner needs it: direction, strength, biases, filter, source size.
 struct DirectionalShadowLightInput {
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // from the light into the scene
     float strength = 1.0f; // 0 turns the light's shadows off
@@ -34,6 +35,7 @@ struct DirectionalShadowLightInput {
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
 
+// One cascade of one light: its fit, its atlas tile, matrix and viewport, its casters.
 struct DirectionalCascadePlan {
     DirectionalShadowCascade fit;
     std::uint32_t tile = 0;
@@ -42,6 +44,7 @@ struct DirectionalCascadePlan {
     CasterCullingResult casters;
 };
 
+// A directional light that got shadow tiles, with everything resolved from its input and the settings.
 struct ShadowedDirectionalLight {
     std::uint32_t lightIndex = 0; // into the planner's input lights
     float strength = 1.0f;
@@ -62,6 +65,7 @@ struct ShadowPlanNote {
     std::string reason;
 };
 
+// The directional shadows of a frame: atlas layout, cascades, lights, notes and the lit shader's uniforms.
 struct DirectionalShadowPlan {
     ShadowAtlasLayout atlas{256, 0};
     CascadeSplits splits;

@@ -7,6 +7,7 @@
 
 namespace penumbra::shadows {
 
+// A sphere: centre and radius.
 struct Sphere {
     glm::vec3 centre{0.0f};
     float radius = 0.0f;

@@ -14,9 +14,11 @@ inline constexpr std::uint32_t kNoDrawGroup = std::numeric_limits<std::uint32_t>
 // Items to draw, reordered so that each batch (items of one draw group) is a contiguous range of `items`:
 // one instanced draw each.
 struct InstanceBatches {
+    // A run of items drawn as the instances of one draw.
     struct Batch {
         std::uint32_t first = 0; // into items
         std::uint32_t count = 0;
+        // Equal runs.
         bool operator==(const Batch&) const = default;
     };
     std::vector<std::uint32_t> items;

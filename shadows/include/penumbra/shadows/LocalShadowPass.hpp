@@ -18,6 +18,7 @@ namespace penumbra::shadows {
 // layer, culling through the mirrored face views. Perspective views, so nothing is pancaked.
 class LocalShadowPass {
 public:
+    // Builds the caster pipelines for vertices of `vertexFormat`.
     LocalShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the

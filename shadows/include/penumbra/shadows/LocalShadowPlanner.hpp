@@ -18,6 +18,7 @@
 
 namespace penumbra::shadows {
 
+// One spot light as the planner needs it: position, direction, cone, range, biases, filter.
 struct SpotShadowInput {
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit cone axis, away from the light
@@ -33,6 +34,7 @@ struct SpotShadowInput {
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
 
+// One point light as the planner needs it: position, range, biases, filter.
 struct PointShadowInput {
     glm::vec3 position{0.0f};
     float range = 10.0f;
@@ -57,6 +59,7 @@ struct LocalShadowView {
     CasterNormalOffset normalOffset; // the caster-side normal bias; none on the receiver side
 };
 
+// One tile of the local atlas: its view and viewport.
 struct LocalAtlasTile {
     LocalShadowView view;
     std::uint32_t tile = 0;
@@ -69,12 +72,14 @@ struct ShadowCube {
     std::array<LocalShadowView, cubeFaceCount> faces;
 };
 
+// Why a spot or point light gets no shadow.
 struct LocalShadowNote {
     LocalLightKind kind = LocalLightKind::Spot;
     std::uint32_t lightIndex = 0;
     std::string reason;
 };
 
+// The spot and point shadows of a frame: tiles or cubes per light, notes and the lit shader's uniforms.
 struct LocalShadowPlan {
     ShadowAtlasLayout atlas{256, 0};
     std::vector<LocalAtlasTile> tiles; // in tile order

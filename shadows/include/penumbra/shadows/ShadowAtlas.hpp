@@ -14,11 +14,17 @@ public:
     // Throws rhi::Error for a format that is not D16, D24S8 or D32F.
     ShadowAtlas(rhi::Device& device, std::uint32_t size, rhi::Format format, const std::string& debugName);
 
+    // Texels per side.
     std::uint32_t size() const { return size_; }
+    // The depth format.
     rhi::Format format() const { return format_; }
+    // The depth texture.
     const rhi::Texture& texture() const { return *texture_; }
-    rhi::Texture& texture() { return *texture_; } // to upload a baked map into
+    // The depth texture, to upload a baked map into.
+    rhi::Texture& texture() { return *texture_; }
+    // The framebuffer the caster passes draw into.
     const rhi::Framebuffer& framebuffer() const { return *framebuffer_; }
+    // The sampler the lit pass reads the atlas with.
     const rhi::Sampler& sampler() const { return *sampler_; }
 
 private:

@@ -25,10 +25,14 @@ public:
     // Throws rhi::Error when tileCount > maxAtlasTiles or atlasSize is not a multiple of a power-of-two split.
     ShadowAtlasLayout(std::uint32_t atlasSize, std::uint32_t tileCount, AtlasSplits splits = AtlasSplits::PowersOfTwo);
 
+    // Texels per side of the atlas.
     std::uint32_t atlasSize() const { return atlasSize_; }
+    // Tiles in use.
     std::uint32_t tileCount() const { return tileCount_; }
+    // Tiles per side: 1, 2, 3, 4 or 8.
     std::uint32_t split() const { return split_; }
-    std::uint32_t tileSize() const { return atlasSize_ / split_; } // rounded down for a split of 3
+    // Texels per side of a tile, rounded down for a split of 3.
+    std::uint32_t tileSize() const { return atlasSize_ / split_; }
 
     // Column and row of a tile, in tiles.
     glm::uvec2 tileCoordinates(std::uint32_t tile) const;
@@ -36,6 +40,7 @@ public:
     glm::uvec2 tileOffset(std::uint32_t tile) const;
     // First and last texel of a tile (x, y, x, y): the texels its filter taps may read.
     glm::vec4 tileTexelBounds(std::uint32_t tile) const;
+    // The viewport of a tile, rows counted from the top.
     rhi::Viewport viewport(std::uint32_t tile) const;
     // Maps a tile's texture coordinates (u, v in [0, 1], depth) to the atlas's; depth passes through.
     glm::mat4 tileToAtlas(std::uint32_t tile) const;

@@ -68,6 +68,7 @@ struct ShadowTileDraw {
 // The shadow caster shaders and pipelines every shadow pass shares, and its per-draw uniforms.
 class ShadowCasterDraws {
 public:
+    // Builds the caster pipelines for vertices of `vertexFormat`.
     ShadowCasterDraws(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
     // Forget the previous record's uniforms and instances; call once per command list, before the first draw.

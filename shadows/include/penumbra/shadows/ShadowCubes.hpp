@@ -17,11 +17,17 @@ public:
     // Throws rhi::Error for a format that is not a depth format or a device without cube arrays.
     ShadowCubes(rhi::Device& device, std::uint32_t faceSize, std::uint32_t cubeCount, rhi::Format format);
 
+    // Texels per face side.
     std::uint32_t faceSize() const { return faceSize_; }
+    // Cubes in the array.
     std::uint32_t cubeCount() const { return cubeCount_; }
+    // The depth format.
     rhi::Format format() const { return format_; }
+    // The depth cube-map array.
     const rhi::Texture& texture() const { return *texture_; }
+    // The framebuffer of one layer (6 x cube + face).
     const rhi::Framebuffer& framebuffer(std::uint32_t layer) const { return *framebuffers_.at(layer); }
+    // The comparison sampler the lit pass reads the cubes with.
     const rhi::Sampler& sampler() const { return *sampler_; }
     // Nearest, no comparison: the stored depths themselves (samplerCubeArray), for blocker searches.
     const rhi::Sampler& depthSampler() const { return *depthSampler_; }

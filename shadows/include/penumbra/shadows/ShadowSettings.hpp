@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace penumbra::shadows {
@@ -90,6 +91,7 @@ struct SoftShadowSettings {
     float poissonRadiusTexels = 2.5f; // 0.5..64, the fixed-radius Poisson filter's radius
 };
 
+// The directional lights' atlas, filter and cascades.
 struct DirectionalShadowSettings {
     std::uint32_t atlasSize = 1024; // texels per side, a power of two in 256..8192
     ShadowFilter filter = ShadowFilter::PCF2x2;
@@ -147,6 +149,7 @@ struct StaticShadowSettings {
     std::uint32_t localAtlasSize = 2048;
 };
 
+// Every shadow setting of a frame; docs/settings.md lists each field with its default and range.
 struct ShadowSettings {
     float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001; applies to every light
     float distanceFade = 0.1f; // 0.001..1, fraction of maxDistance over which shadows fade out
@@ -161,6 +164,17 @@ inline bool hasStaticMaps(const ShadowSettings& settings)
 {
     return settings.staticMaps.update != StaticShadowUpdate::EveryFrame;
 }
+
+// One field of the settings' JSON: its path ("directional.cascadeCount"; the "static" object is
+// ShadowSettings::staticMaps), the values it allows as the validation messages state them, and what it does in a
+// line. shadowSettingsFields() lists every field in toJson's order; `penumbra settings --markdown` prints the
+// settings reference (docs/settings.md) from it.
+struct ShadowSettingsField {
+    std::string_view path;
+    std::string_view allowed;
+    std::string_view summary;
+};
+std::span<const ShadowSettingsField> shadowSettingsFields();
 
 // Throws rhi::Error "<field>: <value> is out of range, allowed <range>" for the first field out of range
 // (field paths as in JSON: "directional.cascadeCount").

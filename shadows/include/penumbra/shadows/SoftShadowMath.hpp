@@ -31,6 +31,7 @@ float orthographicDistanceFromNear(float depth, glm::vec2 depthRow);
 // View distance from a perspective light of a shadow-map depth (depth = (t22 * -z + t32) / z).
 float perspectiveDistance(float depth, glm::vec2 depthRow);
 
+// The clamp of a soft filter's radius, in texels.
 struct PenumbraLimits {
     float minTexels = 1.0f;
     float maxTexels = 24.0f;
@@ -86,6 +87,7 @@ struct DepthTileView {
     glm::ivec2 tileMax{0};
 };
 
+// What a blocker search found: the blockers' mean depth, their count and the nearest.
 struct BlockerSearch {
     float averageDepth = 0.0f; // of the blockers found, shadow-map depth
     std::uint32_t blockers = 0;

@@ -23,6 +23,7 @@ struct BakedShadowMap {
     std::vector<float> depth; // size x size x frusta.size()
 };
 
+// A bake: where it was made, the static objects, and every light's map.
 struct StaticShadowBake {
     std::string configuration; // where it was baked (any configuration loads it)
     std::vector<std::string> objects; // the static casters' objects

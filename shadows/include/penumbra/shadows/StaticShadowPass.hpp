@@ -17,6 +17,7 @@ namespace penumbra::shadows {
 // passes draw them. Static shadow maps and the cached static depth of realtime tiles are drawn so.
 class StaticShadowPass {
 public:
+    // Builds the caster pipelines for vertices of `vertexFormat`.
     StaticShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat);
 
     // Starts a command list's recordings: the caster uniforms of the last submitted one may be reused.

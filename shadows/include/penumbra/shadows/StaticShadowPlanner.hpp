@@ -56,6 +56,7 @@ struct StaticShadowNote {
     std::string reason;
 };
 
+// The static maps of a frame: both static atlases' layouts, each light's map, notes and uniforms.
 struct StaticShadowPlan {
     ShadowAtlasLayout directionalAtlas{256, 0};
     ShadowAtlasLayout localAtlas{256, 0};

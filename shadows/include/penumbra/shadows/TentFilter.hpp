@@ -26,10 +26,12 @@ struct ShadowTap {
     float weight = 0.0f;
 };
 
+// The bilinear taps of a tent filter.
 struct ShadowTaps {
     std::array<ShadowTap, 16> taps{};
     int count = 0;
 
+    // The taps in use.
     std::span<const ShadowTap> view() const { return {taps.data(), static_cast<std::size_t>(count)}; }
 };
 

@@ -126,6 +126,7 @@ namespace penumbra::opengl {
     X(Viewport, VIEWPORT)                                                                                              \
     X(ViewportIndexedf, VIEWPORTINDEXEDF)
 
+// The GL 4.5 entry points the backend calls, loaded once per context.
 struct GlFunctions {
 #define PENUMBRA_GL_MEMBER(name, upper) PFNGL##upper##PROC name = nullptr;
     PENUMBRA_GL_FUNCTIONS(PENUMBRA_GL_MEMBER)

@@ -16,17 +16,23 @@ const GlFunctions& glFunctions(const rhi::Device& device);
 // Makes the device's context current on the calling thread (a no-op when it already is).
 void makeCurrent(const rhi::Device& device);
 
+// The GL names of a pipeline: its program and its vertex array.
 struct PipelineNames {
     GLuint program = 0;
     GLuint vertexArray = 0;
 };
 
+// The GL buffer name behind an RHI buffer of an OpenGL device.
 GLuint bufferName(const rhi::Buffer& buffer);
+// The GL texture name behind an RHI texture of an OpenGL device.
 GLuint textureName(const rhi::Texture& texture);
 // GL_TEXTURE_2D or GL_TEXTURE_2D_ARRAY.
 GLenum textureTarget(const rhi::Texture& texture);
+// The GL sampler name behind an RHI sampler of an OpenGL device.
 GLuint samplerName(const rhi::Sampler& sampler);
+// The GL framebuffer name behind an RHI framebuffer of an OpenGL device.
 GLuint framebufferName(const rhi::Framebuffer& framebuffer);
+// The GL program and vertex array behind an RHI pipeline of an OpenGL device.
 PipelineNames pipelineNames(const rhi::Pipeline& pipeline);
 
 } // namespace penumbra::opengl

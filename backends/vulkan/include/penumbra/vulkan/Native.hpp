@@ -15,6 +15,7 @@
 
 namespace penumbra::vulkan {
 
+// The Vulkan handles behind a device: instance, physical device, device, queue.
 struct NativeDevice {
     VkInstance instance = VK_NULL_HANDLE;
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
@@ -23,6 +24,7 @@ struct NativeDevice {
     std::uint32_t queueFamilyIndex = 0;
 };
 
+// The Vulkan handles behind a pipeline.
 struct NativePipeline {
     VkPipeline pipeline = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
@@ -31,12 +33,14 @@ struct NativePipeline {
     VkRenderPass renderPass = VK_NULL_HANDLE; // the compatible render pass it was created with
 };
 
+// The Vulkan handles behind a framebuffer.
 struct NativeFramebuffer {
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
     // Clears colour and depth, like beginPass with a default PassDesc; ends in the resting layouts.
     VkRenderPass renderPass = VK_NULL_HANDLE;
 };
 
+// The Vulkan handles behind a texture.
 struct NativeTexture {
     VkImage image = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE; // the sampled view: all layers, depth aspect only
@@ -44,11 +48,17 @@ struct NativeTexture {
     VkImageLayout restingLayout = VK_IMAGE_LAYOUT_UNDEFINED;
 };
 
+// The native handles of a Vulkan device, for calls the RHI does not offer (tests, interop).
 NativeDevice native(const rhi::Device& device);
+// The VkBuffer behind an RHI buffer of a Vulkan device.
 VkBuffer native(const rhi::Buffer& buffer);
+// The Vulkan handles behind an RHI pipeline of a Vulkan device.
 NativePipeline native(const rhi::Pipeline& pipeline);
+// The Vulkan handles behind an RHI framebuffer of a Vulkan device.
 NativeFramebuffer native(const rhi::Framebuffer& framebuffer);
+// The Vulkan handles behind an RHI texture of a Vulkan device.
 NativeTexture native(const rhi::Texture& texture);
+// The VkSampler behind an RHI sampler of a Vulkan device.
 VkSampler native(const rhi::Sampler& sampler);
 // The command buffer a list is recording into (valid until its next submit).
 VkCommandBuffer native(const rhi::CommandList& commands);

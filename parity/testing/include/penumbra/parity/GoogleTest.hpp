@@ -36,10 +36,12 @@ struct ExpectParityAt {
     const char* file;
     int line;
 
+    // Renders through every configuration and adds a GoogleTest failure per failed configuration or pair.
     Result operator()(const RenderFunction& render, const Options& options = {}) const
     {
         return expectParity(render, options, file, line);
     }
+    // Compares runs rendered once (parity::renderConfigurations) and adds the failures.
     Result operator()(std::vector<ConfigurationRun> runs, const Options& options = {}) const
     {
         return expectParity(std::move(runs), options, file, line);
