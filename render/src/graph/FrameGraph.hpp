@@ -41,7 +41,8 @@ public:
     // After the submission of execute()'s commands: every pass that ran, in order.
     std::vector<PassTiming> timings();
     // The compiled frame as Graphviz dot: passes in order (culled ones dashed, ones off this frame dotted), textures
-    // (outputs double-bordered, transient ones filled), an edge per declared use.
+    // (outputs double-bordered, transient ones filled), an arrow per declared use (uses other than sampled and
+    // render target named).
     std::string dot() const;
 
     // Framebuffers reference their textures: call when an imported texture is made anew.

@@ -1,6 +1,8 @@
 #include "FrameGraph.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <vector>
 
 namespace penumbra::render {
 namespace {
@@ -25,7 +27,8 @@ std::string quoted(const std::string& text)
 
 std::string FrameGraph::dot() const
 {
-    std::string out = "digraph frame {\n  rankdir=LR;\n  node [fontname=\"Helvetica\", fontsize=11];\n";
+    std::string out =
+        "digraph frame {\n  rankdir=LR;\n  node [fontname=\"Helvetica\", fontsize=11];\n  edge [fontname=\"Helvetica\", fontsize=9];\n";
     for (std::size_t r = 0; r < resources_.size(); ++r) {
         const Resource& resource = resources_[r];
         std::string style = resource.transient ? ", style=filled, fillcolor=\"#dde8f5\"" : "";
@@ -49,13 +52,17 @@ std::string FrameGraph::dot() const
         }
         out += fmt::format("  p{} [shape=box, label={}{}];\n", p, quoted(label), style);
         for (const Use& use : pass.uses) {
-            const std::string edgeStyle = pass.culled ? ", style=dashed, color=gray50" : "";
+            // The arrow's direction says read or write; only the other uses are named.
+            std::vector<std::string> attributes;
+            if (pass.culled)
+                attributes = {"style=dashed", "color=gray50"};
+            if (use.use != ResourceUse::Sampled && use.use != ResourceUse::RenderTarget)
+                attributes.push_back("label=" + quoted(resourceUseName(use.use)));
+            const std::string list = fmt::format("{}", fmt::join(attributes, ", "));
             if (readsResource(use.use))
-                out += fmt::format("  r{} -> p{} [label={}{}];\n", use.resource, p, quoted(resourceUseName(use.use)),
-                                   edgeStyle);
+                out += fmt::format("  r{} -> p{} [{}];\n", use.resource, p, list);
             if (writesResource(use.use))
-                out += fmt::format("  p{} -> r{} [label={}{}];\n", p, use.resource, quoted(resourceUseName(use.use)),
-                                   edgeStyle);
+                out += fmt::format("  p{} -> r{} [{}];\n", p, use.resource, list);
         }
     }
     // The running order as invisible edges, so the passes line up left to right.
