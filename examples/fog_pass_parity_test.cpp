@@ -11,7 +11,9 @@ using namespace penumbra;
 
 std::vector<parity::Picture> renderFog(rhi::Device& device, const rhi::NamedConfiguration&)
 {
-    constexpr std::uint32_t width = 192, height = 108;
+    // At 192 x 108 the test scene's lit picture itself differs along one row between opengl (clip control) and the
+    // other configurations (an edge through pixel centres, a rasterization tie); at 160 x 90 it does not.
+    constexpr std::uint32_t width = 160, height = 90;
     examples::FoggedScene fogged(device, scene::makeShadowTestScene(), width, height);
     fogged.renderer->render(fogged.scene.camera, render::FrameDesc{.width = width, .height = height});
     return {parity::colorPicture("fogged", rhi::readTexture(device, *fogged.fogged))};

@@ -53,9 +53,16 @@ std::vector<shadows::DirectionalShadowLightInput> shadowLights(const std::vector
 {
     std::vector<shadows::DirectionalShadowLightInput> inputs;
     for (const scene::DirectionalLight& light : lights)
-        inputs.push_back({light.direction, light.shadowStrength, light.nearPlaneOffset, light.normalBias,
-                          light.slopeScaleBias, true, lightFilter(light.shadowFilter, "light '" + light.name + "'"),
-                          light.angularDiameter, biasSide(light.normalBiasSide), staticUpdate(light.shadowUpdate)});
+        inputs.push_back({.direction = light.direction,
+                          .strength = light.shadowStrength,
+                          .nearPlaneOffset = light.nearPlaneOffset,
+                          .normalBias = light.normalBias,
+                          .slopeScaleBias = light.slopeScaleBias,
+                          .castsShadows = true,
+                          .filter = lightFilter(light.shadowFilter, "light '" + light.name + "'"),
+                          .angularDiameter = light.angularDiameter,
+                          .normalBiasSide = biasSide(light.normalBiasSide),
+                          .staticUpdate = staticUpdate(light.shadowUpdate)});
     return inputs;
 }
 
@@ -63,10 +70,18 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
 {
     std::vector<shadows::SpotShadowInput> inputs;
     for (const scene::SpotLight& l : lights)
-        inputs.push_back({l.position, l.direction, l.range, l.outerAngle, l.shadowStrength, l.normalBias,
-                          l.slopeScaleBias, l.shadowNearPlane,
-                          lightFilter(l.shadowFilter, "spot light '" + l.name + "'"), l.sourceRadius,
-                          biasSide(l.normalBiasSide), staticUpdate(l.shadowUpdate)});
+        inputs.push_back({.position = l.position,
+                          .direction = l.direction,
+                          .range = l.range,
+                          .outerAngle = l.outerAngle,
+                          .strength = l.shadowStrength,
+                          .normalBias = l.normalBias,
+                          .slopeScaleBias = l.slopeScaleBias,
+                          .nearPlane = l.shadowNearPlane,
+                          .filter = lightFilter(l.shadowFilter, "spot light '" + l.name + "'"),
+                          .sourceRadius = l.sourceRadius,
+                          .normalBiasSide = biasSide(l.normalBiasSide),
+                          .staticUpdate = staticUpdate(l.shadowUpdate)});
     return inputs;
 }
 
@@ -74,9 +89,16 @@ std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene
 {
     std::vector<shadows::PointShadowInput> inputs;
     for (const scene::PointLight& l : lights)
-        inputs.push_back({l.position, l.range, l.shadowStrength, l.normalBias, l.slopeScaleBias, l.shadowNearPlane,
-                          lightFilter(l.shadowFilter, "point light '" + l.name + "'"), l.sourceRadius,
-                          biasSide(l.normalBiasSide), staticUpdate(l.shadowUpdate)});
+        inputs.push_back({.position = l.position,
+                          .range = l.range,
+                          .strength = l.shadowStrength,
+                          .normalBias = l.normalBias,
+                          .slopeScaleBias = l.slopeScaleBias,
+                          .nearPlane = l.shadowNearPlane,
+                          .filter = lightFilter(l.shadowFilter, "point light '" + l.name + "'"),
+                          .sourceRadius = l.sourceRadius,
+                          .normalBiasSide = biasSide(l.normalBiasSide),
+                          .staticUpdate = staticUpdate(l.shadowUpdate)});
     return inputs;
 }
 
