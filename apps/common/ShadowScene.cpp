@@ -59,15 +59,16 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 9> kNamedScenes{{{"test", scene::makeShadowTestScene},
-                                                  {"key-light", scene::makeSingleLightScene},
-                                                  {"mixed", scene::makeMixedLightsScene},
-                                                  {"room", scene::makePointLightRoomScene},
-                                                  {"forest", scene::makeForestScene},
-                                                  {"contact", scene::makeContactScene},
-                                                  {"town", scene::makeTownScene},
-                                                  {"cubes", [] { return scene::makeCubeGridScene(10'000); }},
-                                                  {"cubes-100k", [] { return scene::makeCubeGridScene(100'000); }}}};
+constexpr std::array<NamedScene, 10> kNamedScenes{{{"test", scene::makeShadowTestScene},
+                                                   {"key-light", scene::makeSingleLightScene},
+                                                   {"mixed", scene::makeMixedLightsScene},
+                                                   {"room", scene::makePointLightRoomScene},
+                                                   {"forest", scene::makeForestScene},
+                                                   {"contact", scene::makeContactScene},
+                                                   {"town", scene::makeTownScene},
+                                                   {"street", scene::makeStreetScene},
+                                                   {"cubes", [] { return scene::makeCubeGridScene(10'000); }},
+                                                   {"cubes-100k", [] { return scene::makeCubeGridScene(100'000); }}}};
 
 } // namespace
 

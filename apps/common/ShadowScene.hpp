@@ -58,7 +58,8 @@ inline constexpr std::array<float, 5> kTexelDensityDepths{3.0f, 8.0f, 15.0f, 35.
 // Unknown names throw rhi::Error listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
-inline constexpr const char* kSceneNames = "test, key-light, mixed, room, forest, contact, town, cubes, cubes-100k";
+inline constexpr const char* kSceneNames =
+    "test, key-light, mixed, room, forest, contact, town, street, cubes, cubes-100k";
 
 // How renderShadowScene runs: with the validation layer / debug output (the library's default, and the tests'),
 // and whether it reads the atlases back (AtlasPictures; a 4096^2 atlas is 64 MiB to copy).

@@ -184,8 +184,8 @@ void addBenchCommand(CLI::App& app)
     addSceneOptions(*bench, scene->scene);
     CLI::Option* sceneOption = bench->get_option("--scene");
     sceneOption->excludes(suites)->excludes(configurations)->excludes(draws)->excludes(minTime);
-    for (const char* name : {"--camera", "--light", "--ambient", "--settings", "--size", "--prepass", "--instancing",
-                             "--msaa", "--shadow-path"})
+    for (const char* name : {"--lights", "--camera", "--light", "--ambient", "--settings", "--size", "--prepass",
+                             "--instancing", "--msaa", "--shadow-path"})
         bench->get_option(name)->needs(sceneOption);
     bench
         ->add_option("-b,--backend", scene->backends,

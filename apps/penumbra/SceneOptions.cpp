@@ -7,6 +7,7 @@
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/scene/LocalLights.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include <charconv>
@@ -115,6 +116,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         .add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
         ->check(CLI::Validator([](std::string& s) { return validateScene(s); }, "SCENE"))
         ->capture_default_str();
+    command.add_option("--lights", options.localLights,
+                       "Keep the scene's first N local lights (its spot lights, then its point lights) and remove the "
+                       "rest; lights added with --light stay");
     command
         .add_option("--camera", options.camera,
                     "A glTF camera (by camera or node name), or a position and a target as px,py,pz:tx,ty,tz "
@@ -286,6 +290,8 @@ LoadedScene loadScene(const SceneOptions& options)
                                          options.camera, options.scene));
         loaded.scene = namedScene(options.scene);
     }
+    if (options.localLights)
+        scene::keepFirstLocalLights(loaded.scene, *options.localLights);
     for (const std::string& light : options.lights)
         addLight(loaded.scene, parseLightOption(light).value());
     if (!options.lights.empty())

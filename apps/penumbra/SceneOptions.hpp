@@ -14,11 +14,13 @@
 
 namespace penumbra::apps {
 
-// What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --camera, --light, --ambient,
+// What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --lights, --camera, --light,
+// --ambient,
 // --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
 // --light-size, --projection, --dynamic, --static-maps, --realtime-casters.
 struct SceneOptions {
     std::string scene = "test";
+    std::optional<std::uint32_t> localLights; // --lights N: the scene's first N local lights (keepFirstLocalLights)
     std::string camera; // empty: the scene's own
     std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default

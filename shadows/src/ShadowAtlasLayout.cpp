@@ -6,15 +6,28 @@
 
 namespace penumbra::shadows {
 
-ShadowAtlasLayout::ShadowAtlasLayout(std::uint32_t atlasSize, std::uint32_t tileCount)
-    : atlasSize_(atlasSize), tileCount_(tileCount), split_(tileCount <= 1    ? 1
-                                                           : tileCount <= 4  ? 2
-                                                           : tileCount <= 16 ? 4
-                                                                             : 8)
+namespace {
+
+std::uint32_t splitFor(std::uint32_t tileCount, AtlasSplits splits)
+{
+    if (tileCount <= 1)
+        return 1;
+    if (tileCount <= 4)
+        return 2;
+    if (tileCount <= 9 && splits == AtlasSplits::WithThree)
+        return 3;
+    return tileCount <= 16 ? 4 : 8;
+}
+
+} // namespace
+
+ShadowAtlasLayout::ShadowAtlasLayout(std::uint32_t atlasSize, std::uint32_t tileCount, AtlasSplits splits)
+    : atlasSize_(atlasSize), tileCount_(tileCount), split_(splitFor(tileCount, splits))
 {
     if (tileCount > maxAtlasTiles)
         throw rhi::Error(fmt::format("shadow atlas: {} tiles, allowed 0..{}", tileCount, maxAtlasTiles));
-    if (atlasSize == 0 || atlasSize % split_ != 0)
+    // A split of 3 rounds the tile size down (the documents' choice); a power of two must divide the size exactly.
+    if (atlasSize < split_ || (split_ != 3 && atlasSize % split_ != 0))
         throw rhi::Error(
             fmt::format("shadow atlas: size {} cannot be split into {} x {} tiles", atlasSize, split_, split_));
 }
@@ -38,14 +51,14 @@ rhi::Viewport ShadowAtlasLayout::viewport(std::uint32_t tile) const
 
 glm::mat4 ShadowAtlasLayout::tileToAtlas(std::uint32_t tile) const
 {
-    // atlas uv = (tile coordinates + tile uv) / split.
-    const float scale = 1.0f / static_cast<float>(split_);
-    const glm::uvec2 coordinates = tileCoordinates(tile);
+    // atlas uv = (tile offset + tile uv x tile size) / atlas size: 1 / split where the split divides the size.
+    const auto atlas = static_cast<float>(atlasSize_);
+    const glm::uvec2 offset = tileOffset(tile);
     glm::mat4 m(1.0f);
-    m[0][0] = scale;
-    m[1][1] = scale;
-    m[3][0] = static_cast<float>(coordinates.x) * scale;
-    m[3][1] = static_cast<float>(coordinates.y) * scale;
+    m[0][0] = static_cast<float>(tileSize()) / atlas;
+    m[1][1] = m[0][0];
+    m[3][0] = static_cast<float>(offset.x) / atlas;
+    m[3][1] = static_cast<float>(offset.y) / atlas;
     return m;
 }
 

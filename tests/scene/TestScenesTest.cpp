@@ -1,3 +1,4 @@
+#include "penumbra/scene/LocalLights.hpp"
 #include "penumbra/scene/RayCaster.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
@@ -204,6 +205,60 @@ TEST(ForestSceneTest, IsTheSameEveryTimeAndTheCameraStandsAboveTheGround)
     const std::optional<Hit> below = rays.closestHit(a.camera.position, {0.0f, -1.0f, 0.0f});
     ASSERT_TRUE(below) << "terrain under the camera";
     EXPECT_NEAR(below->distance, 1.7f, 0.01f);
+}
+
+} // namespace
+} // namespace penumbra::scene
+
+namespace penumbra::scene {
+namespace {
+
+TEST(StreetSceneTest, HasTheLampsShopWindowsMoonAndCars)
+{
+    const Scene street = makeStreetScene();
+    EXPECT_NO_THROW(street.validate());
+    ASSERT_EQ(street.spotLights.size(), kStreetLamps);
+    ASSERT_EQ(street.pointLights.size(), kStreetShopWindows);
+    ASSERT_EQ(street.lights.size(), 1u);
+    EXPECT_EQ(street.lights[0].name, "moon");
+    EXPECT_LT(street.lights[0].intensity, 0.2f);
+    for (const SpotLight& lamp : street.spotLights)
+        EXPECT_EQ(lamp.direction, glm::vec3(0.0f, -1.0f, 0.0f)) << lamp.name;
+    for (std::uint32_t i = 1; i <= kStreetCars; ++i) {
+        EXPECT_TRUE(street.findObject("car " + std::to_string(i) + "/0")) << i;
+        EXPECT_TRUE(street.findObject("car " + std::to_string(i) + "/1")) << i;
+    }
+    // A few hundred metres long, and cheap: a handful of meshes shared by every object.
+    const Bounds bounds = street.worldBounds();
+    EXPECT_GT(bounds.max.z - bounds.min.z, 300.0f);
+    EXPECT_LE(street.meshes.size(), 4u);
+}
+
+TEST(StreetSceneTest, LocalLightsRunFromTheCameraOutwards)
+{
+    const Scene street = makeStreetScene();
+    const auto distance = [&](glm::vec3 p) { return glm::length(p - street.camera.position); };
+    for (std::size_t i = 4; i < street.spotLights.size(); i += 4)
+        EXPECT_GT(distance(street.spotLights[i].position), distance(street.spotLights[i - 4].position)) << i;
+    for (std::size_t i = 2; i < street.pointLights.size(); i += 2)
+        EXPECT_GT(distance(street.pointLights[i].position), distance(street.pointLights[i - 2].position)) << i;
+}
+
+TEST(LocalLightsTest, KeepFirstLocalLightsTakesSpotLightsThenPointLights)
+{
+    const Scene street = makeStreetScene();
+    EXPECT_EQ(localLightCount(street), kStreetLamps + kStreetShopWindows);
+    for (const std::uint32_t n : {0u, 16u, 256u, 300u, 320u, 1000u}) {
+        Scene kept = street;
+        keepFirstLocalLights(kept, n);
+        EXPECT_EQ(localLightCount(kept), std::min(n, kStreetLamps + kStreetShopWindows)) << n;
+        ASSERT_EQ(kept.spotLights.size(), std::min(n, kStreetLamps)) << n;
+        for (std::size_t i = 0; i < kept.spotLights.size(); ++i)
+            EXPECT_EQ(kept.spotLights[i].name, street.spotLights[i].name);
+        for (std::size_t i = 0; i < kept.pointLights.size(); ++i)
+            EXPECT_EQ(kept.pointLights[i].name, street.pointLights[i].name);
+        EXPECT_EQ(kept.lights.size(), 1u);
+    }
 }
 
 } // namespace

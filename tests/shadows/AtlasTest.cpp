@@ -24,6 +24,28 @@ TEST(ShadowAtlasLayout, SplitFollowsTheTileCount)
     EXPECT_EQ(ShadowAtlasLayout(1024, 17).split(), 8u);
 }
 
+TEST(ShadowAtlasLayout, WithThreeCutsFiveToNineTilesThreeByThree)
+{
+    for (std::uint32_t tiles = 0; tiles <= 64; ++tiles) {
+        const ShadowAtlasLayout powers(2048, tiles);
+        const ShadowAtlasLayout three(2048, tiles, AtlasSplits::WithThree);
+        EXPECT_EQ(three.split(), tiles >= 5 && tiles <= 9 ? 3u : powers.split()) << tiles;
+    }
+    // 2048 / 3 rounds down to 682: the last two texel columns and rows belong to no tile.
+    const ShadowAtlasLayout layout(2048, 7, AtlasSplits::WithThree);
+    EXPECT_EQ(layout.tileSize(), 682u);
+    EXPECT_EQ(layout.tileOffset(5), glm::uvec2(1364, 682));
+    EXPECT_EQ(layout.tileTexelBounds(8), glm::vec4(1364, 1364, 2045, 2045));
+    // Tile uv (0, 0) and (1, 1) land on the tile's first texel's corner and its last texel's far corner.
+    const glm::vec4 topLeft = layout.tileToAtlas(5) * glm::vec4(0.0f, 0.0f, 0.3f, 1.0f);
+    const glm::vec4 bottomRight = layout.tileToAtlas(5) * glm::vec4(1.0f, 1.0f, 0.3f, 1.0f);
+    EXPECT_FLOAT_EQ(topLeft.x * 2048.0f, 1364.0f);
+    EXPECT_FLOAT_EQ(topLeft.y * 2048.0f, 682.0f);
+    EXPECT_FLOAT_EQ(bottomRight.x * 2048.0f, 2046.0f);
+    EXPECT_FLOAT_EQ(bottomRight.y * 2048.0f, 1364.0f);
+    EXPECT_THROW(ShadowAtlasLayout(2, 9, AtlasSplits::WithThree), rhi::Error);
+}
+
 TEST(ShadowAtlasLayout, TilesRunAlongRowsCountedFromTheTop)
 {
     const ShadowAtlasLayout layout(1024, 16);

@@ -58,4 +58,17 @@ Scene makeTownScene();
 inline constexpr float kCubeGridPitch = 3.0f;
 Scene makeCubeGridScene(std::uint32_t count);
 
+// A street at night for many lights: 384 m of street along z (x in [-6, 6] road, pavements to |x| = 12) between
+// two rows of 20 buildings; 48 trees and 128 lamp posts on the pavements, 40 parked cars. Local lights (kStreetLamps
+// spot lights pointing straight down, then kStreetShopWindows point lights in front of the shop fronts) are ordered
+// from the camera's end of the street outwards, so the first N of them (keepFirstLocalLights) light the nearest part.
+// One dim moon. Geometry is simple boxes, cylinders and spheres, one mesh per shape scaled per object, so objects of a
+// shape share a mesh and a material (instanced draws). Objects: "ground", "pavement -x", "pavement +x",
+// "building N" (1..40), "tree N/0" trunk and "tree N/1" crown (1..48), "post N" (1..128), "car N/0" body and
+// "car N/1" cabin (1..40): `--dynamic "car N"` moves a whole car.
+inline constexpr std::uint32_t kStreetLamps = 256;
+inline constexpr std::uint32_t kStreetShopWindows = 64;
+inline constexpr std::uint32_t kStreetCars = 40;
+Scene makeStreetScene();
+
 } // namespace penumbra::scene

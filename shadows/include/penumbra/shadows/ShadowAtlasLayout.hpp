@@ -10,19 +10,25 @@ namespace penumbra::shadows {
 
 inline constexpr std::uint32_t maxAtlasTiles = 64;
 
-// A square atlas cut into split x split square tiles: split = 1 for one tile, 2 for up to 4,
-// 4 for up to 16, 8 for up to 64. Tile i sits at column i % split, row i / split, rows counted from the TOP as
-// rhi::Viewport and texture v do. Used by the directional atlas (lights x cascades), the local atlas (up to 16
-// tiles of spot and point lights) and the static local atlas (up to 64).
+// How many tiles a side an atlas of n tiles is cut into. PowersOfTwo: 1 for one tile, 2 for up to 4, 4 for up to
+// 16, 8 for up to 64. WithThree also cuts 3 x 3 for 5 to 9 tiles (the design documents' "Dynamic Tiling": Catlike
+// Coding, "Spotlight Shadows", so that at least half of the atlas is in use): each tile gets 16/9 of the texels of a
+// 4 x 4 cut, and the atlasSize % 3 texels at the right and bottom edges belong to no tile.
+enum class AtlasSplits : std::uint8_t { PowersOfTwo, WithThree };
+
+// A square atlas cut into split x split square tiles of atlasSize / split texels (rounded down). Tile i sits at
+// column i % split, row i / split, rows counted from the TOP as rhi::Viewport and texture v do. Used by the
+// directional atlas (lights x cascades), the local atlas (up to 16 tiles of spot and point lights) and the static
+// local atlas (up to 64).
 class ShadowAtlasLayout {
 public:
-    // Throws rhi::Error when tileCount > maxAtlasTiles or atlasSize is not a multiple of the split.
-    ShadowAtlasLayout(std::uint32_t atlasSize, std::uint32_t tileCount);
+    // Throws rhi::Error when tileCount > maxAtlasTiles or atlasSize is not a multiple of a power-of-two split.
+    ShadowAtlasLayout(std::uint32_t atlasSize, std::uint32_t tileCount, AtlasSplits splits = AtlasSplits::PowersOfTwo);
 
     std::uint32_t atlasSize() const { return atlasSize_; }
     std::uint32_t tileCount() const { return tileCount_; }
     std::uint32_t split() const { return split_; }
-    std::uint32_t tileSize() const { return atlasSize_ / split_; }
+    std::uint32_t tileSize() const { return atlasSize_ / split_; } // rounded down for a split of 3
 
     // Column and row of a tile, in tiles.
     glm::uvec2 tileCoordinates(std::uint32_t tile) const;
