@@ -1,5 +1,6 @@
 #include "LitPasses.hpp"
 
+#include "../LocalLightTextures.hpp"
 #include "LitPipelines.hpp"
 #include "ScreenSpaceShadowPass.hpp"
 
@@ -17,8 +18,7 @@ constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f}; // the visibility view w
 // `features` with its material's maps. Returns the draws issued.
 std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
                              const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
-                             const FrameState& state, const GpuScene& gpuScene,
-                             const ScreenSpaceShadowPass* collection)
+                             const FrameState& state, const GpuScene& gpuScene, const ScreenSpaceShadowPass* collection)
 {
     const scene::Scene& scene = gpuScene.scene();
     const bool visibility = features.view == LitView::Visibility;
@@ -40,6 +40,7 @@ std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer&
             commands.bindPipeline(*pipeline);
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
             state.shadowMaps.bind(commands);
+            state.localLights->bind(commands);
             if (features.directionalShadows != DirectionalShadowSource::Forward)
                 commands.bindTexture(kLitScreenSpaceShadowsBinding, collection->shadows(), collection->sampler());
             // Only where the lit pass does not draw into it: multisampled, the single-sampled depth is no attachment.
@@ -73,6 +74,7 @@ bool LitPass::setup(FramePassBuilder& builder)
 {
     const LitShaderFeatures f = features();
     readShadowMaps(builder);
+    readLocalLights(builder);
     if (f.directionalShadows != DirectionalShadowSource::Forward)
         builder.read(frame::kScreenSpaceShadows);
     if (f.directionalShadows == DirectionalShadowSource::ScreenSpaceEdges)
@@ -88,11 +90,11 @@ bool LitPass::setup(FramePassBuilder& builder)
 
 void LitPass::execute(const FramePassContext& context)
 {
-    const rhi::Framebuffer& target =
-        state_.multisampled ? context.framebuffer({frame::kMultisampledColor}, frame::kMultisampledDepth)
-                            : context.framebuffer({frame::kLitImage}, frame::kLitDepth);
-    state_.stats->litDraws = recordLitDraws(context.commands(), target, pipelines_, state_.litFrame, features(),
-                                            state_, scene_, collection_);
+    const rhi::Framebuffer& target = state_.multisampled
+                                         ? context.framebuffer({frame::kMultisampledColor}, frame::kMultisampledDepth)
+                                         : context.framebuffer({frame::kLitImage}, frame::kLitDepth);
+    state_.stats->litDraws = recordLitDraws(context.commands(), target, pipelines_, state_.litFrame, features(), state_,
+                                            scene_, collection_);
 }
 
 std::string ResolvePass::name() const { return std::string(frame::kResolvePass); }
@@ -119,6 +121,7 @@ std::string LitViewPass::name() const
 bool LitViewPass::setup(FramePassBuilder& builder)
 {
     readShadowMaps(builder);
+    readLocalLights(builder);
     builder.write(frame::kLitDepth);
     builder.write(view_ == LitView::Cascades ? frame::kCascadeView : frame::kVisibilityView);
     return true;
