@@ -61,11 +61,11 @@ std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows
     }
     for (std::size_t i = 0; i < scene.pointLights.size(); ++i) {
         const scene::PointLight& l = scene.pointLights[i];
-        texels.insert(texels.end(),
-                      {glm::vec4(l.position, 1.0f / (l.range * l.range)),
-                       glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Point)), glm::vec4(0.0f),
-                       {0.0f, 0.0f, static_cast<float>(plan.pointShadows[i]), l.shadowStrength},
-                       staticMap(scene.spotLights.size() + i)});
+        texels.insert(texels.end(), {glm::vec4(l.position, 1.0f / (l.range * l.range)),
+                                     glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Point)),
+                                     glm::vec4(0.0f),
+                                     {0.0f, 0.0f, static_cast<float>(plan.pointShadows[i]), l.shadowStrength},
+                                     staticMap(scene.spotLights.size() + i)});
     }
     return texels;
 }
@@ -94,9 +94,9 @@ void setClusterView(LitFrameUniforms& u, const shadows::ShadowCamera& camera, co
 }
 
 LocalLightTextures::LocalLightTextures(rhi::Device& device)
-    : device_(device), sampler_(device.createSampler({.magFilter = rhi::Filter::Nearest,
-                                                      .minFilter = rhi::Filter::Nearest,
-                                                      .debugName = "local light data"}))
+    : device_(device),
+      sampler_(device.createSampler(
+          {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "local light data"}))
 {
 }
 
@@ -105,8 +105,8 @@ void LocalLightTextures::update(const std::vector<glm::vec4>& lightTexels, const
     upload(device_, lights_, kLocalLightFormat, "local lights", std::as_bytes(std::span(lightTexels)));
     std::vector<glm::vec4> ranges(clusters.ranges.size());
     for (std::size_t c = 0; c < ranges.size(); ++c)
-        ranges[c] = {static_cast<float>(clusters.ranges[c].offset), static_cast<float>(clusters.ranges[c].count),
-                     0.0f, 0.0f};
+        ranges[c] = {static_cast<float>(clusters.ranges[c].offset), static_cast<float>(clusters.ranges[c].count), 0.0f,
+                     0.0f};
     upload(device_, clusters_, kLightClusterFormat, "light clusters", std::as_bytes(std::span(ranges)));
     std::vector<float> indices(clusters.lightIndices.begin(), clusters.lightIndices.end());
     upload(device_, indices_, kLightIndexFormat, "light indices", std::as_bytes(std::span(indices)));

@@ -23,7 +23,8 @@ std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows
 std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene);
 
 // The cluster fields of the lit pass's Frame block: the camera's view frame and the slices of `grid`.
-void setClusterView(LitFrameUniforms& u, const shadows::ShadowCamera& camera, const shadows::LightClusterUniforms& grid);
+void setClusterView(LitFrameUniforms& u, const shadows::ShadowCamera& camera,
+                    const shadows::LightClusterUniforms& grid);
 
 // The lit pass's local light, cluster and light index textures (LitUniforms.hpp's layout), uploaded every frame and
 // grown by powers of two of rows as the frame needs.
