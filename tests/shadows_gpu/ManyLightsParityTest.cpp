@@ -1,7 +1,7 @@
 // Backend parity of a picture of many lights (issue 40): ManyLightsScene's 300 spot and point lights through every
 // configuration, the lit pictures compared by the parity harness. Each light's cluster list is built on the CPU from
-// the same camera whatever the backend; measured, the pictures are byte-identical in every pair of configurations (a flat
-// ground seen from above has no edge where the rasterisers could differ), and the test holds them to that.
+// the same camera whatever the backend; measured, the pictures are byte-identical in every pair of configurations (a
+// flat ground seen from above has no edge where the rasterisers could differ), and the test holds them to that.
 #include "GpuTesting.hpp"
 #include "ManyLightsScene.hpp"
 #include "ShadowScene.hpp"
@@ -28,8 +28,9 @@ const std::vector<parity::ConfigurationRun>& manyLightsRuns()
 {
     static const std::vector<parity::ConfigurationRun> runs =
         parity::renderConfigurations([](rhi::Device& device, const rhi::NamedConfiguration& configuration) {
-            const apps::ShadowPictures pictures = apps::renderShadowScene(
-                device, configuration.name, testing::manyLightsScene().scene, manyLightsFrame(), false);
+            const apps::ShadowPictures pictures =
+                apps::renderShadowScene(device, configuration.name, testing::manyLightsScene().scene, manyLightsFrame(),
+                                        false);
             testing::savePicture(pictures.lit, "many-lights-parity-" + configuration.name);
             return std::vector{parity::colorPicture("lit-many-lights", pictures.lit)};
         });
@@ -44,7 +45,10 @@ parity::Options manyLightsParityOptions()
     return options;
 }
 
-TEST(ManyLightsParity, LitPicturesAgreeEverywhere) { PENUMBRA_EXPECT_PARITY(manyLightsRuns(), manyLightsParityOptions()); }
+TEST(ManyLightsParity, LitPicturesAgreeEverywhere)
+{
+    PENUMBRA_EXPECT_PARITY(manyLightsRuns(), manyLightsParityOptions());
+}
 
 // The negative control: the same frame with only the first 16 local lights (the old limit), against the first
 // configuration's picture, is caught by the thresholds.

@@ -57,7 +57,7 @@ protected:
     {
         std::vector<std::uint32_t> missing;
         for (std::uint32_t i = 0; i < lights; ++i) {
-            const glm::uvec2 p = pixelOf(*device, many.scene.camera, kWidth, kHeight, many.groundPoints[i]);
+            const glm::uvec2 p = pixelOf(*device, many.scene.camera, lit.width, lit.height, many.groundPoints[i]);
             if (luminance(lit, p.x, p.y) < luminance(dark, p.x, p.y) + kPoolMargin)
                 missing.push_back(i);
         }
@@ -116,6 +116,23 @@ TEST_F(ManyLightsTest, EveryLightsPoolIsLitAndEachRemovedLightTakesItsPoolAway)
                 EXPECT_EQ(all, without) << "light " << i << " changed where another light was removed; " << saved;
         }
     }
+}
+
+// The floor: 1 024 local lights in one frame, each pool lit.
+TEST_F(ManyLightsTest, ThousandAndTwentyFourLightsAreAllDrawn)
+{
+    const ManyLightsScene many = manyLightsScene(32, 32);
+    const auto lights = static_cast<std::uint32_t>(many.groundPoints.size());
+    ASSERT_EQ(lights, 1024u);
+    render::FrameDesc frame = frameOf(kVariants.front());
+    frame.width = 480;
+    frame.height = 480;
+    const rhi::Image lit = renderLit(*device, many.scene, frame);
+    scene::Scene none = many.scene;
+    none.spotLights.clear();
+    none.pointLights.clear();
+    const std::string saved = savePicture(lit, "many-lights-1024");
+    EXPECT_EQ(missingPools(many, lit, renderLit(*device, none, frame), lights), std::vector<std::uint32_t>{}) << saved;
 }
 
 // The limit back: only the first 16 local lights drawn (the scene cut to them) leaves every other pool dark, which
