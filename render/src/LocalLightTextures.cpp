@@ -9,9 +9,6 @@
 namespace penumbra::render {
 namespace {
 
-// Widest spot cone shadows::buildLightClusters takes as a cone: a wider one is listed by its range sphere.
-constexpr float kWidestClusterCone = 1.5f;
-
 std::uint32_t rowsFor(std::size_t texels)
 {
     const auto rows = static_cast<std::uint32_t>((texels + kLitDataTextureWidth - 1) / kLitDataTextureWidth);
@@ -74,11 +71,10 @@ std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene)
 {
     std::vector<shadows::ClusterLight> lights;
     lights.reserve(scene.spotLights.size() + scene.pointLights.size());
-    for (const scene::SpotLight& l : scene.spotLights) {
-        const bool cone = l.outerAngle > 0.0f && l.outerAngle < kWidestClusterCone;
-        lights.push_back({cone ? shadows::ClusterLightKind::Spot : shadows::ClusterLightKind::Point, l.position,
-                          l.range, glm::normalize(l.direction), l.outerAngle});
-    }
+    // The scene keeps spot cones within (0, pi / 2), as the clusters need them.
+    for (const scene::SpotLight& l : scene.spotLights)
+        lights.push_back(
+            {shadows::ClusterLightKind::Spot, l.position, l.range, glm::normalize(l.direction), l.outerAngle});
     for (const scene::PointLight& l : scene.pointLights)
         lights.push_back({shadows::ClusterLightKind::Point, l.position, l.range});
     return lights;

@@ -135,6 +135,28 @@ TEST_F(ManyLightsTest, ThousandAndTwentyFourLightsAreAllDrawn)
     EXPECT_EQ(missingPools(many, lit, renderLit(*device, none, frame), lights), std::vector<std::uint32_t>{}) << saved;
 }
 
+// A spot cone of almost a half-space (outer angle 1.55 rad, just below the pi / 2 the scene allows) is listed in
+// every cluster it reaches: a ground point 68 degrees off its axis is lit.
+TEST_F(ManyLightsTest, WideSpotConeLightsItsWholeReach)
+{
+    ManyLightsScene many = manyLightsScene(2, 1);
+    scene::SpotLight& wide = many.scene.spotLights.at(0);
+    wide.outerAngle = 1.55f;
+    wide.innerAngle = 1.4f;
+    wide.range = 4.0f;
+    wide.intensity = 40.0f; // 2.7 m away and 68 degrees off the ground normal: little light arrives
+    many.scene.pointLights.clear();
+    const glm::vec3 offAxis = wide.position + glm::vec3(2.5f, -1.0f, 0.0f);
+    const render::FrameDesc frame = frameOf(kVariants.front());
+    const rhi::Image lit = renderLit(*device, many.scene, frame);
+    scene::Scene none = many.scene;
+    none.spotLights.clear();
+    const rhi::Image dark = renderLit(*device, none, frame);
+    const glm::uvec2 p = pixelOf(*device, many.scene.camera, kWidth, kHeight, offAxis);
+    EXPECT_GT(luminance(lit, p.x, p.y), luminance(dark, p.x, p.y) + kPoolMargin)
+        << savePicture(lit, "many-lights-wide");
+}
+
 // The limit back: only the first 16 local lights drawn (the scene cut to them) leaves every other pool dark, which
 // the check above reports light by light.
 TEST_F(ManyLightsTest, OnlyTheFirstSixteenLightsCatchesFault)
