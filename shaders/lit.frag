@@ -1,6 +1,7 @@
 #version 450
 // Lambert diffuse plus GGX specular for up to 8 directional lights (4 with shadows), each attenuated by its
-// cascaded shadow, and up to 16 spot and point lights with their atlas shadows; clip materials are cut
+// cascaded shadow, and every spot and point light whose cluster list holds the fragment's cluster, with their atlas
+// shadows; clip materials are cut
 // with the same alpha as their shadows. glTF 2.0 metallic-roughness materials (section 3.9): factors times
 // textures, vertex colours, normal, occlusion and emissive textures, KHR_materials_unlit.
 
@@ -11,6 +12,7 @@
 #include "local_shadows.glsl"
 #include "static_shadows.glsl"
 #include "lit.glsl"
+#include "local_lights.glsl"
 #include "directional_light_shadow.glsl"
 #include "material.glsl"
 #include "collected_shadows.glsl"
@@ -80,8 +82,13 @@ vec3 frontNormal()
 const vec3 cascadeColors[5] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.25, 0.4, 1.0),
                                      vec3(1.0, 1.0, 0.25), vec3(0.5, 0.5, 0.5));
 
-// Spot or point light i at the fragment: direction towards it and the light that arrives before N.L.
+// Spot or point light i at the fragment: its texels (PENUMBRA_LOCAL_*), direction towards it and the light that
+// arrives before N.L.
 struct LocalLight {
+    vec4 position;
+    vec4 color;
+    vec3 axis;
+    vec4 shadow;
     vec3 l;
     float falloff;
     bool isPoint;
@@ -89,17 +96,21 @@ struct LocalLight {
 
 LocalLight localLight(int i)
 {
-    const vec4 light = frame.localPosition[i];
+    LocalLight result;
+    result.position = localLightTexel(i, PENUMBRA_LOCAL_POSITION);
+    result.color = localLightTexel(i, PENUMBRA_LOCAL_COLOR);
+    result.axis = localLightTexel(i, PENUMBRA_LOCAL_AXIS).xyz;
+    result.shadow = localLightTexel(i, PENUMBRA_LOCAL_SHADOW);
+    const vec4 light = result.position;
     const vec3 toLight = light.xyz - vPosition;
     const float d2 = max(dot(toLight, toLight), 1e-5);
-    LocalLight result;
     result.l = toLight * inversesqrt(d2);
-    result.isPoint = int(frame.localColor[i].w) == PENUMBRA_LIGHT_POINT;
+    result.isPoint = int(result.color.w) == PENUMBRA_LIGHT_POINT;
     // Smooth range window over inverse-square falloff (Karis 2013, "Real Shading in Unreal Engine 4", section
     // "Lights"), then the spot cone's smooth step between outer and inner angle.
     const float window = clamp(1.0 - d2 * light.w * d2 * light.w, 0.0, 1.0);
-    const vec4 shadow = frame.localShadow[i];
-    const float cone = result.isPoint ? 1.0 : clamp(dot(frame.localAxis[i].xyz, -result.l) * shadow.x + shadow.y, 0.0, 1.0);
+    const vec4 shadow = result.shadow;
+    const float cone = result.isPoint ? 1.0 : clamp(dot(result.axis, -result.l) * shadow.x + shadow.y, 0.0, 1.0);
     result.falloff = window * window / d2 * cone * cone;
     return result;
 }
@@ -125,14 +136,14 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
     }
     const int i = index - frame.directionalLightCount;
     const LocalLight light = localLight(i);
-    const vec4 shadow = frame.localShadow[i];
-    const vec4 map = staticShadows.localLights[i];
+    const vec4 shadow = light.shadow;
+    const vec4 map = localLightTexel(i, PENUMBRA_LOCAL_STATIC_MAP);
     const bool realtime = shadow.z >= 0.0 && globalStrength > 0.0;
     const bool fromStatic = map.x >= 0.0;
     if (!receives || dot(n, light.l) <= 0.0 || light.falloff <= 0.0 || !(realtime || fromStatic))
         return vec4(1.0, 1.0, 1.0, 0.0);
-    const vec3 lightPosition = frame.localPosition[i].xyz;
-    const vec3 axis = frame.localAxis[i].xyz;
+    const vec3 lightPosition = light.position.xyz;
+    const vec3 axis = light.axis;
     const float visibility =
         realtime ? localShadowVisibility(int(shadow.z), light.isPoint, lightPosition, axis, vPosition, geometric) : 1.0;
     return vec4(vec3(fromStatic ? min(visibility, staticLocalVisibility(int(map.x), light.isPoint, lightPosition, axis,
@@ -215,24 +226,27 @@ void main()
         color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
     }
 #if PENUMBRA_LOCAL_LIGHTS
-    for (int i = 0; i < frame.localLightCount; ++i) {
+    // The cluster's lights in ascending index, as a loop over every light would add them: a light left out of the
+    // list reaches no point of the cluster, so it would add nothing.
+    const ivec2 list = clusterLightList(vPosition);
+    for (int entry = list.x; entry < list.x + list.y; ++entry) {
+        const int i = clusterLight(entry);
         const LocalLight light = localLight(i);
         const float nl = dot(n, light.l);
         if (nl <= 0.0 || light.falloff <= 0.0)
             continue;
         const bool receives = object.receivesShadows != 0;
 #if PENUMBRA_STATIC_SHADOWS
-        const float attenuation = localAttenuation(i, frame.localShadow[i].zw, receives, light.isPoint,
-                                                   frame.localPosition[i].xyz, frame.localAxis[i].xyz, vPosition,
+        const float attenuation = localAttenuation(localLightTexel(i, PENUMBRA_LOCAL_STATIC_MAP), light.shadow.zw,
+                                                   receives, light.isPoint, light.position.xyz, light.axis, vPosition,
                                                    geometric, globalStrength);
 #else
         const float attenuation =
-            receives ? localShadowAttenuation(frame.localShadow[i].zw, light.isPoint, frame.localPosition[i].xyz,
-                                              frame.localAxis[i].xyz, vPosition, geometric, globalStrength)
+            receives ? localShadowAttenuation(light.shadow.zw, light.isPoint, light.position.xyz, light.axis,
+                                              vPosition, geometric, globalStrength)
                      : 1.0;
 #endif
-        color += brdf(n, v, light.l, base, metallic, roughness) * frame.localColor[i].rgb * nl * light.falloff *
-                 attenuation;
+        color += brdf(n, v, light.l, base, metallic, roughness) * light.color.rgb * nl * light.falloff * attenuation;
     }
 #endif
     // Emissive textures are RGBA8_SRGB too: already linear when sampled.

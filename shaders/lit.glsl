@@ -13,10 +13,9 @@ layout(std140, binding = PENUMBRA_BINDING_FRAME) uniform Frame {
     int litView;         // penumbra::render::LitView (PENUMBRA_VIEW_*)
     int localLightCount;
     int visibilityLight; // the visibility view's light (directional lights first, then spot and point lights)
-    vec4 localPosition[PENUMBRA_MAX_LIT_LOCAL_LIGHTS]; // xyz, w = 1 / range^2
-    vec4 localColor[PENUMBRA_MAX_LIT_LOCAL_LIGHTS];    // linear rgb x intensity, w = PENUMBRA_LIGHT_SPOT or _POINT
-    vec4 localAxis[PENUMBRA_MAX_LIT_LOCAL_LIGHTS];     // spot cone axis (unit, away from the light)
-    vec4 localShadow[PENUMBRA_MAX_LIT_LOCAL_LIGHTS];   // spot angle scale and offset, first shadow tile or -1, strength
+    vec4 cameraRight;    // xyz the view's x axis, w = tan of the half field of view along it (local_lights.glsl)
+    vec4 cameraUp;       // xyz the view's y axis, w = tan of the half field of view along it
+    vec4 clusterSlices;  // near plane, far plane, slice scale, slice bias (penumbra::shadows::LightClusterUniforms)
     vec4 ambientGround;  // linear rgb from below (= ambient without a hemisphere)
 } frame;
 

@@ -11,7 +11,6 @@ layout(std140, binding = PENUMBRA_BINDING_STATIC_SHADOWS) uniform StaticShadows 
     mat4 localWorldToMap[PENUMBRA_MAX_STATIC_LOCAL_TILES];
     vec4 localBounds[PENUMBRA_MAX_STATIC_LOCAL_TILES];
     vec4 localData[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-    vec4 localLights[PENUMBRA_MAX_STATIC_MAP_LOCAL_LIGHTS];
     vec4 atlasSizes;
     vec4 directionalSoft[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
     vec4 directionalSource[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
@@ -66,12 +65,11 @@ float directionalAttenuation(int light, int slot, bool receives, CascadeSelectio
     return mix(1.0, min(realtime, staticDirectionalVisibility(map, position, normal, towardsLight)), map.y);
 }
 
-// Spot or point light `light` (the lit pass's local index; `shadow` its first realtime tile or cube, or -1, and its
-// strength) at a receiver, 1 = lit. `strength` is the global one (distance fade).
-float localAttenuation(int light, vec2 shadow, bool receives, bool isPoint, vec3 lightPosition, vec3 axis,
+// A spot or point light (`map` its static map's first tile or -1 and strength, `shadow` its first realtime tile or
+// cube, or -1, and its strength) at a receiver, 1 = lit. `strength` is the global one (distance fade).
+float localAttenuation(vec4 map, vec2 shadow, bool receives, bool isPoint, vec3 lightPosition, vec3 axis,
                        vec3 position, vec3 normal, float strength)
 {
-    const vec4 map = staticShadows.localLights[light];
     if (!receives)
         return 1.0;
     if (map.x < 0.0)

@@ -176,14 +176,14 @@ void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state)
         state.frame.depthPrepass = !state.frame.depthPrepass;
         break;
     case SoakChange::AddPointLight:
-        if (localLights(state.scene) < render::maxLitLocalLights)
+        if (localLights(state.scene) < kMaxSoakLocalLights)
             state.scene.pointLights.push_back({.name = fmt::format("soak point {}", state.scene.pointLights.size()),
                                                .color = {1.0f, 0.9f, 0.7f},
                                                .position = pointIn(random, state.bounds),
                                                .range = sceneRange(state.bounds)});
         break;
     case SoakChange::AddSpotLight:
-        if (localLights(state.scene) < render::maxLitLocalLights)
+        if (localLights(state.scene) < kMaxSoakLocalLights)
             state.scene.spotLights.push_back({.name = fmt::format("soak spot {}", state.scene.spotLights.size()),
                                               .color = {0.7f, 0.9f, 1.0f},
                                               .position = pointIn(random, state.bounds),

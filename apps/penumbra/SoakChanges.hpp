@@ -4,6 +4,7 @@
 #include "penumbra/scene/Scene.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <random>
 #include <string_view>
@@ -50,7 +51,8 @@ struct SoakState {
 
 // Applies `change` (everything but SceneReload, which rebuilds the renderer and is the caller's) with values
 // drawn from `random`, always valid ones: the settings' ranges (shadows::validate) and at most
-// render::maxLitLocalLights spot and point lights.
+// kMaxSoakLocalLights spot and point lights.
+inline constexpr std::size_t kMaxSoakLocalLights = 16; // a soak's frames stay quick on a software renderer
 void applySoakChange(SoakChange change, std::mt19937& random, SoakState& state);
 
 } // namespace penumbra::apps

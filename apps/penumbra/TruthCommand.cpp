@@ -38,11 +38,10 @@ std::vector<scene::LightRef> shadowedLights(const render::ShadowPlans& plans, co
     for (std::uint32_t i = 0; i < directional; ++i)
         if (plans.directional.shadowSlots[i] >= 0)
             lights.push_back({scene::LightKind::Directional, i});
-    std::size_t local = 0;
-    for (std::uint32_t i = 0; i < scene.spotLights.size() && local < render::maxLitLocalLights; ++i, ++local)
+    for (std::uint32_t i = 0; i < scene.spotLights.size(); ++i)
         if (plans.local.spotTiles[i] >= 0)
             lights.push_back({scene::LightKind::Spot, i});
-    for (std::uint32_t i = 0; i < scene.pointLights.size() && local < render::maxLitLocalLights; ++i, ++local)
+    for (std::uint32_t i = 0; i < scene.pointLights.size(); ++i)
         if (plans.local.pointShadows[i] >= 0)
             lights.push_back({scene::LightKind::Point, i});
     return lights;

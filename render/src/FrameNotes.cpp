@@ -69,13 +69,6 @@ std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans
     for (const shadows::StaticShadowNote& note : plans.staticMaps.report)
         notes.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(note.kind), note.lightIndex,
                                     lightName(scene, note.kind, note.lightIndex), note.reason));
-    const std::size_t spots = scene.spotLights.size();
-    for (std::size_t i = maxLitLocalLights; i < spots + scene.pointLights.size(); ++i) {
-        const auto kind = i < spots ? shadows::LocalLightKind::Spot : shadows::LocalLightKind::Point;
-        const auto index = static_cast<std::uint32_t>(i < spots ? i : i - spots);
-        notes.push_back(fmt::format("{} {} ('{}') is not drawn: beyond the limit of {} spot and point lights",
-                                    kindName(kind), index, localLightName(scene, kind, index), maxLitLocalLights));
-    }
     return notes;
 }
 

@@ -35,8 +35,23 @@ std::string litConstants(const LitShaderFeatures& features)
     text += fmt::format("#define PENUMBRA_BINDING_COVERAGE_MAP {}\n", kLitCoverageMapBinding);
     text += fmt::format("#define PENUMBRA_BINDING_FRAME {}\n#define PENUMBRA_BINDING_OBJECT {}\n", kLitFrameBinding,
                         kLitObjectBinding);
-    text += fmt::format("#define PENUMBRA_MAX_LIT_DIRECTIONAL_LIGHTS {}\n#define PENUMBRA_MAX_LIT_LOCAL_LIGHTS {}\n",
-                        maxLitDirectionalLights, maxLitLocalLights);
+    text += fmt::format("#define PENUMBRA_MAX_LIT_DIRECTIONAL_LIGHTS {}\n", maxLitDirectionalLights);
+    text += fmt::format("#define PENUMBRA_LIT_DATA_WIDTH_LOG2 {}\n#define PENUMBRA_LIT_DATA_WIDTH {}\n",
+                        kLitDataTextureWidthLog2, kLitDataTextureWidth);
+    text += fmt::format("#define PENUMBRA_CLUSTER_TILES_X {}\n#define PENUMBRA_CLUSTER_TILES_Y {}\n"
+                        "#define PENUMBRA_CLUSTER_SLICES {}\n",
+                        kLitClusterGrid.tilesX, kLitClusterGrid.tilesY, kLitClusterGrid.slices);
+    text += fmt::format("#define PENUMBRA_LOCAL_LIGHT_TEXELS {}\n#define PENUMBRA_LOCAL_POSITION {}\n"
+                        "#define PENUMBRA_LOCAL_COLOR {}\n#define PENUMBRA_LOCAL_AXIS {}\n"
+                        "#define PENUMBRA_LOCAL_SHADOW {}\n#define PENUMBRA_LOCAL_STATIC_MAP {}\n",
+                        kLocalLightTexels, static_cast<std::uint32_t>(LocalLightTexel::Position),
+                        static_cast<std::uint32_t>(LocalLightTexel::Color),
+                        static_cast<std::uint32_t>(LocalLightTexel::Axis),
+                        static_cast<std::uint32_t>(LocalLightTexel::Shadow),
+                        static_cast<std::uint32_t>(LocalLightTexel::StaticMap));
+    text += fmt::format("#define PENUMBRA_BINDING_LOCAL_LIGHTS {}\n#define PENUMBRA_BINDING_LIGHT_CLUSTERS {}\n"
+                        "#define PENUMBRA_BINDING_LIGHT_INDICES {}\n",
+                        kLitLocalLightsBinding, kLitLightClustersBinding, kLitLightIndicesBinding);
     text += fmt::format("#define PENUMBRA_LIGHT_SPOT {}\n#define PENUMBRA_LIGHT_POINT {}\n",
                         static_cast<int>(scene::LightKind::Spot), static_cast<int>(scene::LightKind::Point));
     text += fmt::format("#define PENUMBRA_DEPTH_PREPASSED {}\n", features.depthPrepassed ? 1 : 0);

@@ -2,6 +2,7 @@
 
 #include "FrameChecks.hpp"
 #include "FrameNotes.hpp"
+#include "LocalLightTextures.hpp"
 #include "ShadowInputs.hpp"
 #include "TextureSampling.hpp"
 #include "graph/FrameGraph.hpp"
@@ -42,29 +43,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 }
 
 float aspectOf(const FrameDesc& frame) { return static_cast<float>(frame.width) / static_cast<float>(frame.height); }
-
-// The lit pass's local lights: spot lights, then point lights, up to maxLitLocalLights.
-void fillLocalLights(LitFrameUniforms& u, const scene::Scene& scene, const shadows::LocalShadowPlan& plan)
-{
-    std::uint32_t count = 0;
-    for (std::size_t i = 0; i < scene.spotLights.size() && count < maxLitLocalLights; ++i, ++count) {
-        const scene::SpotLight& l = scene.spotLights[i];
-        // Smooth step of the cone: saturate(cos(angle) * a + b), 0 at the outer, 1 at the inner angle.
-        const float cosOuter = std::cos(l.outerAngle);
-        const float scale = 1.0f / std::max(std::cos(l.innerAngle) - cosOuter, 1e-3f);
-        u.localPosition[count] = glm::vec4(l.position, 1.0f / (l.range * l.range));
-        u.localColor[count] = glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Spot));
-        u.localAxis[count] = glm::vec4(l.direction, 0.0f);
-        u.localShadow[count] = {scale, -cosOuter * scale, static_cast<float>(plan.spotTiles[i]), l.shadowStrength};
-    }
-    for (std::size_t i = 0; i < scene.pointLights.size() && count < maxLitLocalLights; ++i, ++count) {
-        const scene::PointLight& l = scene.pointLights[i];
-        u.localPosition[count] = glm::vec4(l.position, 1.0f / (l.range * l.range));
-        u.localColor[count] = glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Point));
-        u.localShadow[count] = {0.0f, 0.0f, static_cast<float>(plan.pointShadows[i]), l.shadowStrength};
-    }
-    u.localLightCount = static_cast<int>(count);
-}
 
 bool isStatic(const std::vector<std::uint32_t>& staticCasters, std::uint32_t caster)
 {
@@ -117,6 +95,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, 1)),
       depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
       staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
+      localLights_(std::make_unique<LocalLightTextures>(device)),
       directionalStaticTiles_(
           std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "directional atlas, static casters")),
       localStaticTiles_(
@@ -218,7 +197,8 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         screenSpace_->prepare(*depth_);
 }
 
-LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const
+LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view,
+                                              const shadows::LightClusterUniforms& clusters) const
 {
     const float aspect = aspectOf(frame);
     const rhi::Conventions& conventions = device_.conventions();
@@ -236,11 +216,13 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);
     u.directionalLightCount = static_cast<int>(count);
     u.litView = static_cast<int>(view);
-    fillLocalLights(u, gpuScene_.scene(), localPlan_);
+    const scene::Scene& scene = gpuScene_.scene();
+    u.localLightCount = static_cast<int>(scene.spotLights.size() + scene.pointLights.size());
+    setClusterView(u, shadowCamera(camera, aspect), clusters);
     return u;
 }
 
-// The lit pass's order: directional lights, then spot lights, then point lights (fillLocalLights).
+// The lit pass's order: directional lights, then spot lights, then point lights (localLightTexels).
 int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 {
     const scene::Scene& scene = gpuScene_.scene();
@@ -258,9 +240,6 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
         return static_cast<int>(light.index);
     }
     const std::size_t local = light.index + (light.kind == scene::LightKind::Point ? scene.spotLights.size() : 0);
-    if (local >= maxLitLocalLights)
-        throw rhi::Error(fmt::format("visibility view: {} {} is not drawn (at most {} spot and point lights)", kind,
-                                     light.index, maxLitLocalLights));
     return static_cast<int>(directional + local);
 }
 
@@ -355,13 +334,19 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
                         uniforms_.push(plan_.uniforms),
                         uniforms_.push(localPlan_.uniforms),
                         uniforms_.push(staticUniforms)};
-    state.litFrameUniforms = frameUniforms(camera, frame, LitView::Lit);
+    // Every spot and point light, listed in the clusters of the camera's view it may reach.
+    const shadows::LightClusters clusters =
+        shadows::buildLightClusters(shadowCamera(camera, aspectOf(frame)), clusterLights(scene), kLitClusterGrid);
+    localLights_->update(localLightTexels(scene, localPlan_, staticShadows_->plan()), clusters);
+    state.localLights = localLights_.get();
+    state.litFrameUniforms = frameUniforms(camera, frame, LitView::Lit, clusters.grid);
     state.litFrame = uniforms_.push(state.litFrameUniforms);
-    state.cascadeFrameUniforms = frameUniforms(camera, frame, LitView::Cascades);
-    state.visibilityFrameUniforms = frameUniforms(camera, frame, LitView::Visibility);
+    state.cascadeFrameUniforms = frameUniforms(camera, frame, LitView::Cascades, clusters.grid);
+    state.visibilityFrameUniforms = frameUniforms(camera, frame, LitView::Visibility, clusters.grid);
     if (frame.visibilityOf)
         state.visibilityFrameUniforms.visibilityLight = litLightIndex(*frame.visibilityOf);
-    state.features = frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_.uniforms, staticUniforms);
+    state.features =
+        frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_.uniforms, staticShadows_->plan());
 }
 
 // The static maps to draw this frame (StaticShadowCache::prepare), named with why.
@@ -390,6 +375,9 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     graph.importTexture(frame::kShadowCubes, shadowCubes_->texture(), true);
     graph.importTexture(frame::kStaticDirectionalAtlas, staticShadows_->directionalAtlas().texture(), true);
     graph.importTexture(frame::kStaticLocalAtlas, staticShadows_->localAtlas().texture(), true);
+    graph.importTexture(frame::kLocalLights, localLights_->lights());
+    graph.importTexture(frame::kLightClusters, localLights_->clusters());
+    graph.importTexture(frame::kLightIndices, localLights_->indices());
     graph.importTexture(frame::kCascadeView, *cascades_, frame.cascadeView);
     graph.importTexture(frame::kVisibilityView, *visibility_, frame.visibilityOf.has_value());
     if (screenSpace_) {

@@ -28,7 +28,6 @@ std::string shadowInterfaceGlsl()
                {"MAX_STATIC_DIRECTIONAL_MAPS", maxStaticDirectionalMaps},
                {"MAX_STATIC_LOCAL_TILES", maxStaticLocalTiles},
                {"MAX_STATIC_MAP_DIRECTIONAL_LIGHTS", maxStaticMapDirectionalLights},
-               {"MAX_STATIC_MAP_LOCAL_LIGHTS", maxStaticMapLocalLights},
                {"BLEND_HARD", valueOf(CascadeBlend::Hard)},
                {"BLEND_SOFT", valueOf(CascadeBlend::Soft)},
                {"BLEND_DITHER", valueOf(CascadeBlend::Dither)},

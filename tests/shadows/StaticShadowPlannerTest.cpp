@@ -84,9 +84,10 @@ TEST(StaticShadowPlanner, SpotAndPointMapsTakeTilesInTheLitPassOrder)
     EXPECT_EQ(plan.localAtlas.tileCount(), 7u);
     // The spot light sees the first box below it, never the dynamic one's index.
     EXPECT_EQ(plan.maps[0].tiles[0].casters, std::vector<std::uint32_t>{0});
-    EXPECT_EQ(plan.uniforms.localLights[0].x, 0.0f);
-    EXPECT_EQ(plan.uniforms.localLights[1].x, -1.0f); // no strength, no map
-    EXPECT_EQ(plan.uniforms.localLights[2].x, 1.0f); // the point light after both spot lights
+    ASSERT_EQ(plan.localLightMaps.size(), 3u);
+    EXPECT_EQ(plan.localLightMaps[0].x, 0.0f);
+    EXPECT_EQ(plan.localLightMaps[1].x, -1.0f); // no strength, no map
+    EXPECT_EQ(plan.localLightMaps[2].x, 1.0f); // the point light after both spot lights
     for (const StaticShadowTile& tile : plan.maps[1].tiles)
         for (const std::uint32_t caster : tile.casters)
             EXPECT_NE(caster, 1u);

@@ -28,4 +28,10 @@ void readShadowMaps(FramePassBuilder& builder)
         builder.read(map);
 }
 
+void readLocalLights(FramePassBuilder& builder)
+{
+    for (std::string_view texture : {frame::kLocalLights, frame::kLightClusters, frame::kLightIndices})
+        builder.read(texture);
+}
+
 } // namespace penumbra::render

@@ -12,6 +12,7 @@
 
 namespace penumbra::render {
 
+class LocalLightTextures;
 class StaticShadowCache;
 
 // The lit pass's shadow bindings (atlases, cubes, their blocks, static maps), which the screen-space collection and
@@ -30,6 +31,8 @@ struct ShadowMapBindings {
 
 // Declares the reads of every texture ShadowMapBindings binds.
 void readShadowMaps(FramePassBuilder& builder);
+// Declares the reads of the local light textures (LocalLightTextures).
+void readLocalLights(FramePassBuilder& builder);
 
 // RealtimeCasters::Dynamic: the tiles' static casters, which the realtime atlases take from StaticTileCache, and
 // the tiles without them, which the passes draw over it.
@@ -46,6 +49,7 @@ struct FrameState {
     std::span<const shadows::ShadowCaster> casters;
     std::span<const LitDraw> litDraws;
     ShadowMapBindings shadowMaps;
+    const LocalLightTextures* localLights = nullptr; // the lit pass's and its views' spot and point lights
     SplitTiles staticTiles; // empty unless the realtime atlases draw dynamic casters only
     bool screenSpace = false; // directional shadows collected in screen space
     bool multisampled = false;

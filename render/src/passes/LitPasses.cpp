@@ -1,5 +1,6 @@
 #include "LitPasses.hpp"
 
+#include "../LocalLightTextures.hpp"
 #include "LitPipelines.hpp"
 #include "ScreenSpaceShadowPass.hpp"
 
@@ -39,6 +40,7 @@ std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer&
             commands.bindPipeline(*pipeline);
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
             state.shadowMaps.bind(commands);
+            state.localLights->bind(commands);
             if (features.directionalShadows != DirectionalShadowSource::Forward)
                 commands.bindTexture(kLitScreenSpaceShadowsBinding, collection->shadows(), collection->sampler());
             // Only where the lit pass does not draw into it: multisampled, the single-sampled depth is no attachment.
@@ -72,6 +74,7 @@ bool LitPass::setup(FramePassBuilder& builder)
 {
     const LitShaderFeatures f = features();
     readShadowMaps(builder);
+    readLocalLights(builder);
     if (f.directionalShadows != DirectionalShadowSource::Forward)
         builder.read(frame::kScreenSpaceShadows);
     if (f.directionalShadows == DirectionalShadowSource::ScreenSpaceEdges)
@@ -118,6 +121,7 @@ std::string LitViewPass::name() const
 bool LitViewPass::setup(FramePassBuilder& builder)
 {
     readShadowMaps(builder);
+    readLocalLights(builder);
     builder.write(frame::kLitDepth);
     builder.write(view_ == LitView::Cascades ? frame::kCascadeView : frame::kVisibilityView);
     return true;

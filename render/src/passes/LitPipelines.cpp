@@ -93,8 +93,9 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
 LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
                                       const shadows::DirectionalShadowUniforms& directional,
                                       const shadows::LocalShadowUniforms& local,
-                                      const shadows::StaticShadowUniforms& staticMaps)
+                                      const shadows::StaticShadowPlan& staticPlan)
 {
+    const shadows::StaticShadowUniforms& staticMaps = staticPlan.uniforms;
     std::vector<int> filters{directional.defaultFilter, local.defaultFilter};
     for (const glm::vec4& light : directional.lightShadowData)
         filters.push_back(static_cast<int>(light.w));
@@ -107,7 +108,7 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
         staticShadows = staticShadows || light.x >= 0.0f;
         filters.push_back(static_cast<int>(light.w));
     }
-    for (const glm::vec4& light : staticMaps.localLights)
+    for (const glm::vec4& light : staticPlan.localLightMaps)
         staticShadows = staticShadows || light.x >= 0.0f;
     for (const glm::vec4& tile : staticMaps.localData)
         filters.push_back(static_cast<int>(tile.y));

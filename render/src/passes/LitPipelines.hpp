@@ -4,7 +4,7 @@
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 #include "penumbra/shadows/LocalShadowUniforms.hpp"
-#include "penumbra/shadows/StaticShadowUniforms.hpp"
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -40,6 +40,6 @@ private:
 LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
                                       const shadows::DirectionalShadowUniforms& directional,
                                       const shadows::LocalShadowUniforms& local,
-                                      const shadows::StaticShadowUniforms& staticMaps);
+                                      const shadows::StaticShadowPlan& staticPlan);
 
 } // namespace penumbra::render

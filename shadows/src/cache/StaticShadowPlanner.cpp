@@ -192,8 +192,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
         const float bias = localNormalBiasScale(projection, tileSize, filter, light->normalBias);
         const bool casterSide = light->normalBiasSide == NormalBiasSide::Caster;
         const std::uint32_t litIndex = light->index + (light->kind == ShadowLightKind::Point ? spots.size() : 0);
-        if (litIndex < maxStaticMapLocalLights)
-            plan.uniforms.localLights[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
+        plan.localLightMaps[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
         StaticShadowMap map{light->kind, light->index, {}, 0.0f, staticUpdateOf(light->staticUpdate, settings),
                             litIndex};
         for (const glm::mat4& view : views.views) {
@@ -261,6 +260,7 @@ StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Co
 {
     validate(settings);
     StaticShadowPlan plan;
+    plan.localLightMaps.assign(spots.size() + points.size(), glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f));
     if (casters.indices.empty())
         return plan;
     planDirectional(plan, settings, conventions, lights, casters);

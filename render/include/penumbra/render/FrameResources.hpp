@@ -43,6 +43,10 @@ inline constexpr std::string_view kLocalAtlas = "local atlas";
 inline constexpr std::string_view kShadowCubes = "shadow cubes";
 inline constexpr std::string_view kStaticDirectionalAtlas = "static directional atlas";
 inline constexpr std::string_view kStaticLocalAtlas = "static local atlas";
+// Every spot and point light and their clustered lists (LitUniforms.hpp's data textures), written on the CPU.
+inline constexpr std::string_view kLocalLights = "local lights";
+inline constexpr std::string_view kLightClusters = "light clusters";
+inline constexpr std::string_view kLightIndices = "light indices";
 // The screen-space path's receiver prepass: the world position's screen derivatives.
 inline constexpr std::string_view kReceiverPositionDx = "receiver position dx";
 inline constexpr std::string_view kReceiverPositionDy = "receiver position dy";

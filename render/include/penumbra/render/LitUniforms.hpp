@@ -4,6 +4,7 @@
 #include "penumbra/rhi/Shader.hpp"
 #include "penumbra/rhi/UniformLayout.hpp"
 #include "penumbra/scene/Material.hpp"
+#include "penumbra/shadows/LightClusters.hpp"
 
 #include <array>
 #include <cstddef>
@@ -15,7 +16,6 @@
 namespace penumbra::render {
 
 inline constexpr std::uint32_t maxLitDirectionalLights = 8;
-inline constexpr std::uint32_t maxLitLocalLights = 16; // spot and point lights together
 // The screen-space shadow texture's channels: directional lights 0 to 3 (FrameDesc::shadowPath).
 inline constexpr std::uint32_t maxCollectedDirectionalLights = 4;
 
@@ -40,16 +40,40 @@ struct LitFrameUniforms {
     std::int32_t litView = 0; // LitView
     std::int32_t localLightCount = 0;
     std::int32_t visibilityLight = 0; // LitView::Visibility's light: directional lights first, then spot and point
-    std::array<glm::vec4, maxLitLocalLights> localPosition{}; // xyz, w = 1 / range^2
-    std::array<glm::vec4, maxLitLocalLights> localColor{}; // rgb x intensity, w = scene::LightKind
-    std::array<glm::vec4, maxLitLocalLights> localAxis{}; // spot cone axis
-    std::array<glm::vec4, maxLitLocalLights> localShadow{}; // cone scale, offset, first tile or -1, strength
+    // The camera's view frame as shadows::buildLightClusters cuts it into clusters: its x and y axes (unit, world
+    // space) with w = the tangent of the half field of view along that axis; slices = near plane, far plane,
+    // LightClusterUniforms::sliceScale and sliceBias.
+    glm::vec4 cameraRight{0.0f};
+    glm::vec4 cameraUp{0.0f};
+    glm::vec4 clusterSlices{0.0f};
     glm::vec4 ambientGround{0.0f}; // linear rgb from below (the hemisphere's ground; = ambient without one)
 };
 static_assert(offsetof(LitFrameUniforms, lightColor) == 96);
 static_assert(offsetof(LitFrameUniforms, ambient) == 352);
-static_assert(offsetof(LitFrameUniforms, localPosition) == 384);
-static_assert(sizeof(LitFrameUniforms) == 1424);
+static_assert(offsetof(LitFrameUniforms, cameraRight) == 384);
+static_assert(sizeof(LitFrameUniforms) == 448);
+
+// The lit pass's spot and point lights (spot lights, then point lights: the lit pass's local index) and their
+// clustered lists (shadows::buildLightClusters with kLitClusterGrid), in data textures that lit.frag reads with
+// texelFetch: the RHI has no storage buffers yet. Each texture is kLitDataTextureWidth texels wide with as many rows
+// as the frame needs, rounded up to a power of two; texel t of a texture lies at column t % width, row t / width.
+inline constexpr std::uint32_t kLitDataTextureWidthLog2 = 10;
+inline constexpr std::uint32_t kLitDataTextureWidth = 1u << kLitDataTextureWidthLog2;
+inline constexpr shadows::LightClusterGridDesc kLitClusterGrid{};
+// Local light i takes texels i * kLocalLightTexels + LocalLightTexel of the local light texture.
+enum class LocalLightTexel : std::uint32_t {
+    Position = 0, // xyz, w = 1 / range^2
+    Color = 1, // linear rgb x intensity, w = scene::LightKind
+    Axis = 2, // spot cone axis (unit, away from the light)
+    Shadow = 3, // spot cone scale and offset (saturate(cos * scale + offset)), first shadow tile or -1, strength
+    StaticMap = 4, // first tile of its static map or -1, the map's strength (shadows::StaticShadowPlan::localLightMaps)
+};
+inline constexpr std::uint32_t kLocalLightTexels = 5;
+inline constexpr rhi::Format kLocalLightFormat = rhi::Format::RGBA32F;
+// Texel c of the cluster texture is cluster c's list: x = its first entry in the index texture, y = its length.
+inline constexpr rhi::Format kLightClusterFormat = rhi::Format::RGBA32F;
+// The clusters' lists one after another, a local light index per texel (exact in a float up to 2^24).
+inline constexpr rhi::Format kLightIndexFormat = rhi::Format::R32F;
 
 // What the instances of one lit draw share; their transforms are per instance (shadows::InstanceTransform).
 struct LitObjectUniforms {
@@ -82,10 +106,9 @@ inline rhi::UniformLayout litFrameLayout()
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, litView),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localLightCount),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, visibilityLight),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localPosition),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localColor),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localAxis),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localShadow),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraRight),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraUp),
+                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, clusterSlices),
                 PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, ambientGround),
             }};
 }
@@ -128,6 +151,10 @@ inline constexpr std::uint32_t kLitCoverageMapBinding = kLitStaticShadowBinding 
 // depth it was collected from.
 inline constexpr std::uint32_t kLitScreenSpaceShadowsBinding = kLitCoverageMapBinding + 1;
 inline constexpr std::uint32_t kLitScreenSpaceDepthBinding = kLitCoverageMapBinding + 2;
+// The local light, cluster and light index textures (kLocalLightFormat and after).
+inline constexpr std::uint32_t kLitLocalLightsBinding = kLitScreenSpaceDepthBinding + 1;
+inline constexpr std::uint32_t kLitLightClustersBinding = kLitScreenSpaceDepthBinding + 2;
+inline constexpr std::uint32_t kLitLightIndicesBinding = kLitScreenSpaceDepthBinding + 3;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {

@@ -29,6 +29,7 @@ namespace penumbra::render {
 class DepthPrepass;
 class FrameGraph;
 class LitPipelines;
+class LocalLightTextures;
 class ScreenSpaceShadowPass;
 class StaticShadowCache;
 class StaticTileCache;
@@ -146,7 +147,7 @@ public:
     const shadows::LocalShadowPlan& localPlan() const { return localPlan_; }
     // Point shadow cube maps (PointShadowMode::CubeMap; one unused cube otherwise).
     const shadows::ShadowCubes& shadowCubes() const { return *shadowCubes_; }
-    // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights, maxLitLocalLights), and
+    // Why lights are drawn without shadows, or not at all (beyond maxLitDirectionalLights), and
     // why textures get less anisotropy than FrameDesc::maxAnisotropy.
     const std::vector<std::string>& notes() const { return notes_; }
 
@@ -195,7 +196,8 @@ private:
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
     void buildGraph(const FrameDesc& frame);
     void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
-    LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view) const;
+    LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view,
+                                   const shadows::LightClusterUniforms& clusters) const;
     int litLightIndex(const scene::LightRef& light) const;
 
     rhi::Device& device_;
@@ -213,6 +215,7 @@ private:
     std::unique_ptr<DepthPrepass> receiverPrepass_;
     std::unique_ptr<ScreenSpaceShadowPass> screenSpace_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
+    std::unique_ptr<LocalLightTextures> localLights_; // every spot and point light and their cluster lists
     // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.
     std::unique_ptr<StaticTileCache> directionalStaticTiles_;
     std::unique_ptr<StaticTileCache> localStaticTiles_;

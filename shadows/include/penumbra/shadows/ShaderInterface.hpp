@@ -14,7 +14,7 @@ inline constexpr std::uint32_t kCasterBaseColorBinding = 1; // the alpha of Clip
 //   PENUMBRA_MAX_SHADOWED_DIRECTIONAL_LIGHTS, PENUMBRA_MAX_CASCADES, PENUMBRA_MAX_DIRECTIONAL_TILES,
 //   PENUMBRA_MAX_LOCAL_SHADOW_TILES, PENUMBRA_MAX_SHADOW_CUBES       (DirectionalShadowUniforms, LocalShadowUniforms)
 //   PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS, PENUMBRA_MAX_STATIC_LOCAL_TILES,
-//   PENUMBRA_MAX_STATIC_MAP_DIRECTIONAL_LIGHTS, PENUMBRA_MAX_STATIC_MAP_LOCAL_LIGHTS (StaticShadowUniforms)
+//   PENUMBRA_MAX_STATIC_MAP_DIRECTIONAL_LIGHTS (StaticShadowUniforms)
 //   PENUMBRA_BLEND_HARD, _SOFT, _DITHER                              (CascadeBlend)
 //   PENUMBRA_POINT_ATLAS, PENUMBRA_POINT_CUBE_MAP                    (PointShadowMode)
 std::string shadowInterfaceGlsl();

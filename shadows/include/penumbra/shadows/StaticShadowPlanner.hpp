@@ -46,7 +46,7 @@ struct StaticShadowMap {
     std::vector<StaticShadowTile> tiles;
     float texelSize = 0.0f; // directional maps: the world size of a texel
     StaticShadowUpdate update = StaticShadowUpdate::OnChange; // the light's own mode, or the settings'
-    std::uint32_t litIndex = 0; // its entry in the uniforms' directionalLights or localLights
+    std::uint32_t litIndex = 0; // its entry in the uniforms' directionalLights or the plan's localLightMaps
 };
 
 // Why a light gets no static map.
@@ -63,6 +63,9 @@ struct StaticShadowPlan {
     std::vector<StaticShadowMap> maps; // directional lights first, then spot, then point lights
     std::vector<StaticShadowNote> report;
     StaticShadowUniforms uniforms;
+    // Per spot light, then point light (the lit pass's local index): first tile of its static map or -1, shadow
+    // strength, 0, 0. The lit shader reads it from the local light texture (render::LocalLightTexel::StaticMap).
+    std::vector<glm::vec4> localLightMaps;
 };
 
 // The casters whose depth the static maps hold: indices into the planner's caster bounds.

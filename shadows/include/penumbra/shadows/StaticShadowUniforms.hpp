@@ -14,10 +14,9 @@ inline constexpr std::uint32_t maxStaticDirectionalMaps = 4;
 // Tiles of the static local atlas: more than the realtime atlas's 16, so lights that get no realtime tile keep their
 // static shadows (up to ten point lights).
 inline constexpr std::uint32_t maxStaticLocalTiles = 64;
-// Per light of the lit pass (render::maxLitDirectionalLights, render::maxLitLocalLights): the lights the lit shader
-// can look a static map up for.
+// Per directional light of the lit pass (render::maxLitDirectionalLights): the lights the lit shader can look a static
+// map up for. Spot and point lights find theirs in StaticShadowPlan::localLightMaps, whatever their number.
 inline constexpr std::uint32_t maxStaticMapDirectionalLights = 8;
-inline constexpr std::uint32_t maxStaticMapLocalLights = 16;
 
 // The lit shader's static shadow block, std140, uploaded as is. GLSL (shaders/static_shadows.glsl):
 //   layout(std140) uniform StaticShadows {
@@ -28,7 +27,6 @@ inline constexpr std::uint32_t maxStaticMapLocalLights = 16;
 //       mat4 localWorldToMap[64];      // per spot and point tile: world -> (u, v, depth) x w (divide by w)
 //       vec4 localBounds[64];          // per tile: first and last texel
 //       vec4 localData[64];            // per tile: normal bias per unit distance from the light plane, filter, 0, 0
-//       vec4 localLights[16];          // per spot light, then point light: first tile or -1, shadow strength, 0, 0
 //       vec4 atlasSizes;               // directional atlas size, local atlas size, 0, 0
 //       vec4 directionalSoft[4];       // per directional tile, for the Poisson and PCSS filters: the light texel
 //                                      // anchor (x, y) and the depth row (z, w), as
@@ -45,26 +43,21 @@ struct StaticShadowUniforms {
     std::array<glm::mat4, maxStaticLocalTiles> localWorldToMap{};
     std::array<glm::vec4, maxStaticLocalTiles> localBounds{};
     std::array<glm::vec4, maxStaticLocalTiles> localData{};
-    std::array<glm::vec4, maxStaticMapLocalLights> localLights{};
     glm::vec4 atlasSizes{0.0f};
     std::array<glm::vec4, maxStaticDirectionalMaps> directionalSoft{};
     std::array<glm::vec4, maxStaticDirectionalMaps> directionalSource{};
     std::array<glm::vec4, maxStaticLocalTiles> localSoft{};
 
     // No light has a static map.
-    StaticShadowUniforms()
-    {
-        directionalLights.fill(glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f));
-        localLights.fill(glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f));
-    }
+    StaticShadowUniforms() { directionalLights.fill(glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f)); }
 };
 
 static_assert(offsetof(StaticShadowUniforms, directionalBounds) == 256);
 static_assert(offsetof(StaticShadowUniforms, localWorldToMap) == 448);
 static_assert(offsetof(StaticShadowUniforms, localBounds) == 4544);
-static_assert(offsetof(StaticShadowUniforms, localLights) == 6592);
-static_assert(offsetof(StaticShadowUniforms, directionalSoft) == 6864);
-static_assert(sizeof(StaticShadowUniforms) == 8016);
+static_assert(offsetof(StaticShadowUniforms, atlasSizes) == 6592);
+static_assert(offsetof(StaticShadowUniforms, directionalSoft) == 6608);
+static_assert(sizeof(StaticShadowUniforms) == 7760);
 
 // The struct as the PipelineDesc::uniformLayouts entry of the block above.
 inline rhi::UniformLayout staticShadowLayout()
@@ -78,7 +71,6 @@ inline rhi::UniformLayout staticShadowLayout()
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localWorldToMap),
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localBounds),
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localData),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localLights),
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, atlasSizes),
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalSoft),
                 PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalSource),

@@ -1,0 +1,118 @@
+#include "LocalLightTextures.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <glm/geometric.hpp>
+
+namespace penumbra::render {
+namespace {
+
+std::uint32_t rowsFor(std::size_t texels)
+{
+    const auto rows = static_cast<std::uint32_t>((texels + kLitDataTextureWidth - 1) / kLitDataTextureWidth);
+    return std::bit_ceil(std::max(rows, 1u));
+}
+
+// `texture` with room for `texels` texels of `format`, made anew (twice as many rows, or more) when too small; then
+// `data` uploaded into its first texels, the rest zero.
+void upload(rhi::Device& device, std::unique_ptr<rhi::Texture>& texture, rhi::Format format, const char* name,
+            std::span<const std::byte> data)
+{
+    const std::size_t texelBytes = rhi::texelSize(format);
+    const std::uint32_t rows = rowsFor(data.size() / texelBytes);
+    if (!texture || texture->desc().height < rows)
+        texture = device.createTexture({.width = kLitDataTextureWidth,
+                                        .height = rows,
+                                        .format = format,
+                                        .usage = rhi::TextureUsage::Sampled,
+                                        .debugName = name});
+    std::vector<std::byte> level(std::size_t(kLitDataTextureWidth) * texture->desc().height * texelBytes);
+    std::memcpy(level.data(), data.data(), data.size());
+    device.writeTexture(*texture, 0, 0, level);
+}
+
+} // namespace
+
+std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
+                                        const shadows::StaticShadowPlan& staticPlan)
+{
+    std::vector<glm::vec4> texels;
+    texels.reserve((scene.spotLights.size() + scene.pointLights.size()) * kLocalLightTexels);
+    const auto staticMap = [&](std::size_t light) {
+        return light < staticPlan.localLightMaps.size() ? staticPlan.localLightMaps[light]
+                                                        : glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);
+    };
+    for (std::size_t i = 0; i < scene.spotLights.size(); ++i) {
+        const scene::SpotLight& l = scene.spotLights[i];
+        // Smooth step of the cone: saturate(cos(angle) * a + b), 0 at the outer, 1 at the inner angle.
+        const float cosOuter = std::cos(l.outerAngle);
+        const float scale = 1.0f / std::max(std::cos(l.innerAngle) - cosOuter, 1e-3f);
+        texels.insert(texels.end(),
+                      {glm::vec4(l.position, 1.0f / (l.range * l.range)),
+                       glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Spot)),
+                       glm::vec4(l.direction, 0.0f),
+                       {scale, -cosOuter * scale, static_cast<float>(plan.spotTiles[i]), l.shadowStrength},
+                       staticMap(i)});
+    }
+    for (std::size_t i = 0; i < scene.pointLights.size(); ++i) {
+        const scene::PointLight& l = scene.pointLights[i];
+        texels.insert(texels.end(), {glm::vec4(l.position, 1.0f / (l.range * l.range)),
+                                     glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Point)),
+                                     glm::vec4(0.0f),
+                                     {0.0f, 0.0f, static_cast<float>(plan.pointShadows[i]), l.shadowStrength},
+                                     staticMap(scene.spotLights.size() + i)});
+    }
+    return texels;
+}
+
+std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene)
+{
+    std::vector<shadows::ClusterLight> lights;
+    lights.reserve(scene.spotLights.size() + scene.pointLights.size());
+    // The scene keeps spot cones within (0, pi / 2), as the clusters need them.
+    for (const scene::SpotLight& l : scene.spotLights)
+        lights.push_back(
+            {shadows::ClusterLightKind::Spot, l.position, l.range, glm::normalize(l.direction), l.outerAngle});
+    for (const scene::PointLight& l : scene.pointLights)
+        lights.push_back({shadows::ClusterLightKind::Point, l.position, l.range});
+    return lights;
+}
+
+void setClusterView(LitFrameUniforms& u, const shadows::ShadowCamera& camera, const shadows::LightClusterUniforms& grid)
+{
+    // As buildLightClusters' view frame.
+    const float tanHalf = std::tan(0.5f * camera.fovY);
+    u.cameraRight = glm::vec4(glm::normalize(glm::cross(camera.forward, camera.up)), camera.aspect * tanHalf);
+    u.cameraUp = glm::vec4(camera.up, tanHalf);
+    u.clusterSlices = {grid.nearPlane, grid.farPlane, grid.sliceScale, grid.sliceBias};
+}
+
+LocalLightTextures::LocalLightTextures(rhi::Device& device)
+    : device_(device),
+      sampler_(device.createSampler(
+          {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "local light data"}))
+{
+}
+
+void LocalLightTextures::update(const std::vector<glm::vec4>& lightTexels, const shadows::LightClusters& clusters)
+{
+    upload(device_, lights_, kLocalLightFormat, "local lights", std::as_bytes(std::span(lightTexels)));
+    std::vector<glm::vec4> ranges(clusters.ranges.size());
+    for (std::size_t c = 0; c < ranges.size(); ++c)
+        ranges[c] = {static_cast<float>(clusters.ranges[c].offset), static_cast<float>(clusters.ranges[c].count), 0.0f,
+                     0.0f};
+    upload(device_, clusters_, kLightClusterFormat, "light clusters", std::as_bytes(std::span(ranges)));
+    std::vector<float> indices(clusters.lightIndices.begin(), clusters.lightIndices.end());
+    upload(device_, indices_, kLightIndexFormat, "light indices", std::as_bytes(std::span(indices)));
+}
+
+void LocalLightTextures::bind(rhi::CommandList& commands) const
+{
+    commands.bindTexture(kLitLocalLightsBinding, *lights_, *sampler_);
+    commands.bindTexture(kLitLightClustersBinding, *clusters_, *sampler_);
+    commands.bindTexture(kLitLightIndicesBinding, *indices_, *sampler_);
+}
+
+} // namespace penumbra::render

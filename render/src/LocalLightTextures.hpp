@@ -1,0 +1,51 @@
+#pragma once
+
+#include "penumbra/render/LitUniforms.hpp"
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/scene/Scene.hpp"
+#include "penumbra/shadows/LightClusters.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
+#include "penumbra/shadows/ShadowCamera.hpp"
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
+
+#include <glm/vec4.hpp>
+#include <memory>
+#include <vector>
+
+namespace penumbra::render {
+
+// Every spot and point light of the scene in the lit pass's order (spot lights, then point lights), kLocalLightTexels
+// texels each (LocalLightTexel): where it is, its colour, cone and shadows.
+std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
+                                        const shadows::StaticShadowPlan& staticPlan);
+
+// The reach of every spot and point light, in the same order, as shadows::buildLightClusters takes it.
+std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene);
+
+// The cluster fields of the lit pass's Frame block: the camera's view frame and the slices of `grid`.
+void setClusterView(LitFrameUniforms& u, const shadows::ShadowCamera& camera,
+                    const shadows::LightClusterUniforms& grid);
+
+// The lit pass's local light, cluster and light index textures (LitUniforms.hpp's layout), uploaded every frame and
+// grown by powers of two of rows as the frame needs.
+class LocalLightTextures {
+public:
+    explicit LocalLightTextures(rhi::Device& device);
+
+    void update(const std::vector<glm::vec4>& lightTexels, const shadows::LightClusters& clusters);
+
+    const rhi::Texture& lights() const { return *lights_; }
+    const rhi::Texture& clusters() const { return *clusters_; }
+    const rhi::Texture& indices() const { return *indices_; }
+    // At kLitLocalLightsBinding, kLitLightClustersBinding and kLitLightIndicesBinding.
+    void bind(rhi::CommandList& commands) const;
+
+private:
+    rhi::Device& device_;
+    std::unique_ptr<rhi::Sampler> sampler_; // nearest: texelFetch ignores it, the binding needs one
+    std::unique_ptr<rhi::Texture> lights_;
+    std::unique_ptr<rhi::Texture> clusters_;
+    std::unique_ptr<rhi::Texture> indices_;
+};
+
+} // namespace penumbra::render
