@@ -127,7 +127,7 @@ format: deps
 # clang-tidy's small .clang-tidy set over the library and the tools, from the build's compile_commands.json.
 tidy: deps
 	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON --log-level=WARNING
-	@run-clang-tidy -quiet -p $(BUILD) '/(rhi|backends|shadows|scene|render|parity|apps)/'
+	@run-clang-tidy -quiet -p $(BUILD) '/(rhi|imageio|backends|shadows|scene|render|parity|apps)/'
 
 clean:
 	@rm -rf $(BUILD) build-sanitize build-sanitize-ci build-tsan build-fuzz out

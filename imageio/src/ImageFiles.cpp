@@ -1,4 +1,4 @@
-#include "penumbra/rhi/ImageFiles.hpp"
+#include "penumbra/imageio/ImageFiles.hpp"
 
 #include "penumbra/rhi/AtomicFile.hpp"
 #include "penumbra/rhi/Error.hpp"
@@ -17,7 +17,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
-namespace penumbra::rhi {
+namespace penumbra::imageio {
 namespace {
 
 // The bytes of an EXR being encoded; OpenEXR seeks back to patch the line offset table, hence the position.
@@ -62,10 +62,10 @@ void writeEncoded(const std::filesystem::path& path, Encode encode)
     std::string encoded;
     try {
         encoded = encode();
-    } catch (const Error& e) {
-        throw Error(fmt::format("cannot write {}: {}", path.string(), e.what()));
+    } catch (const rhi::Error& e) {
+        throw rhi::Error(fmt::format("cannot write {}: {}", path.string(), e.what()));
     }
-    writeFileAtomically(path, encoded);
+    rhi::writeFileAtomically(path, encoded);
 }
 
 } // namespace
@@ -78,34 +78,34 @@ std::optional<std::size_t> FloatImage::channelIndex(std::string_view name) const
     return std::size_t(found - channels.begin());
 }
 
-std::string encodePng(const Image& image)
+std::string encodePng(const rhi::Image& image)
 {
-    if (image.format != Format::RGBA8)
-        throw Error(fmt::format("PNG needs RGBA8, the image is {}", formatName(image.format)));
+    if (image.format != rhi::Format::RGBA8)
+        throw rhi::Error(fmt::format("PNG needs RGBA8, the image is {}", rhi::formatName(image.format)));
     std::string bytes;
     const auto append = [](void* context, void* data, int size) {
         static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
     };
     if (!stbi_write_png_to_func(append, &bytes, int(image.width), int(image.height), 4, image.bytes.data(),
                                 int(image.width * 4)))
-        throw Error(fmt::format("cannot encode a {}x{} PNG", image.width, image.height));
+        throw rhi::Error(fmt::format("cannot encode a {}x{} PNG", image.width, image.height));
     return bytes;
 }
 
-Image readPng(const std::filesystem::path& path)
+rhi::Image readPng(const std::filesystem::path& path)
 {
     int width = 0, height = 0, channels = 0;
     const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load(path.c_str(), &width, &height, &channels, 4),
                                                            stbi_image_free);
     if (!pixels)
-        throw Error(fmt::format("{}: cannot read the PNG: {}", path.string(), stbi_failure_reason()));
-    Image image{std::uint32_t(width), std::uint32_t(height), Format::RGBA8, {}};
+        throw rhi::Error(fmt::format("{}: cannot read the PNG: {}", path.string(), stbi_failure_reason()));
+    rhi::Image image{std::uint32_t(width), std::uint32_t(height), rhi::Format::RGBA8, {}};
     const auto* first = reinterpret_cast<const std::byte*>(pixels.get());
     image.bytes.assign(first, first + std::size_t(width) * std::size_t(height) * 4);
     return image;
 }
 
-void writePngFile(const std::filesystem::path& path, const Image& image)
+void writePngFile(const std::filesystem::path& path, const rhi::Image& image)
 {
     writeEncoded(path, [&] { return encodePng(image); });
 }
@@ -113,9 +113,10 @@ void writePngFile(const std::filesystem::path& path, const Image& image)
 std::string encodeExr(const FloatImage& image)
 {
     if (image.values.size() != std::size_t(image.width) * image.height * image.channels.size())
-        throw Error(fmt::format("an EXR of {}x{} with {} channels needs {} values, has {}", image.width, image.height,
-                                image.channels.size(), std::size_t(image.width) * image.height * image.channels.size(),
-                                image.values.size()));
+        throw rhi::Error(fmt::format("an EXR of {}x{} with {} channels needs {} values, has {}", image.width,
+                                     image.height, image.channels.size(),
+                                     std::size_t(image.width) * image.height * image.channels.size(),
+                                     image.values.size()));
     try {
         Imf::Header header(int(image.width), int(image.height));
         header.compression() = Imf::ZIP_COMPRESSION;
@@ -128,7 +129,7 @@ std::string encodeExr(const FloatImage& image)
         file.writePixels(int(image.height));
         return memory.take();
     } catch (const std::exception& e) {
-        throw Error(fmt::format("cannot encode a {}x{} EXR: {}", image.width, image.height, e.what()));
+        throw rhi::Error(fmt::format("cannot encode a {}x{} EXR: {}", image.width, image.height, e.what()));
     }
 }
 
@@ -143,18 +144,18 @@ FloatImage readExr(const std::filesystem::path& path)
         const Imf::ChannelList& channels = file.header().channels();
         for (auto channel = channels.begin(); channel != channels.end(); ++channel) {
             if (channel.channel().type != Imf::FLOAT)
-                throw Error(fmt::format("{}: channel '{}' is not 32-bit float; Penumbra reads float EXR only",
-                                        path.string(), channel.name()));
+                throw rhi::Error(fmt::format("{}: channel '{}' is not 32-bit float; Penumbra reads float EXR only",
+                                             path.string(), channel.name()));
             image.channels.emplace_back(channel.name());
         }
         image.values.resize(std::size_t(image.width) * image.height * image.channels.size());
         file.setFrameBuffer(frameBuffer(image, image.values.data(), window.min.x, window.min.y));
         file.readPixels(window.min.y, window.max.y);
         return image;
-    } catch (const Error&) {
+    } catch (const rhi::Error&) {
         throw;
     } catch (const std::exception& e) {
-        throw Error(fmt::format("{}: cannot read the EXR: {}", path.string(), e.what()));
+        throw rhi::Error(fmt::format("{}: cannot read the EXR: {}", path.string(), e.what()));
     }
 }
 
@@ -163,4 +164,4 @@ void writeExrFile(const std::filesystem::path& path, const FloatImage& image)
     writeEncoded(path, [&] { return encodeExr(image); });
 }
 
-} // namespace penumbra::rhi
+} // namespace penumbra::imageio

@@ -9,11 +9,11 @@
 #include <string_view>
 #include <vector>
 
-namespace penumbra::rhi {
+namespace penumbra::imageio {
 
-// PNG (stb_image_write, stb_image) and OpenEXR (the OpenEXR library) files of pictures and depth. Encoding goes to
-// memory; the write* functions then write the file whole with writeFileAtomically, so no reader sees half a file.
-// Failures throw rhi::Error naming the path.
+// PNG (stb_image_write, stb_image) and OpenEXR (the OpenEXR library) files of pictures and depth, kept out of the RHI
+// so that it links no codec. Encoding goes to memory; the write* functions then write the file whole with
+// rhi::writeFileAtomically, so no reader sees half a file. Failures throw rhi::Error naming the path.
 
 // 32-bit float channels, interleaved, row 0 at the top (OpenEXR's increasing-Y scanline order).
 struct FloatImage {
@@ -32,11 +32,11 @@ struct FloatImage {
 };
 
 // An RGBA8 picture as PNG bytes (zlib level 8 of stb_image_write, the same bytes on every run); other formats throw.
-std::string encodePng(const Image& image);
+std::string encodePng(const rhi::Image& image);
 // Any 8- or 16-bit PNG as RGBA8: grey replicated to RGB, alpha 255 where the file has none (stb_image's conversion).
-Image readPng(const std::filesystem::path& path);
+rhi::Image readPng(const std::filesystem::path& path);
 // encodePng written to `path`; throws "cannot write <path>: <reason>".
-void writePngFile(const std::filesystem::path& path, const Image& image);
+void writePngFile(const std::filesystem::path& path, const rhi::Image& image);
 
 // One-part scanline OpenEXR with ZIP compression, every channel 32-bit float, in `image.channels`' names.
 std::string encodeExr(const FloatImage& image);
@@ -46,4 +46,4 @@ FloatImage readExr(const std::filesystem::path& path);
 // encodeExr written to `path`; throws "cannot write <path>: <reason>".
 void writeExrFile(const std::filesystem::path& path, const FloatImage& image);
 
-} // namespace penumbra::rhi
+} // namespace penumbra::imageio
