@@ -80,7 +80,7 @@ sanitize: deps
 SANITIZE_CI_TARGETS = penumbra_unit_tests penumbra_shadow_unit_tests penumbra_scene_tests penumbra_gpu_tests \
 	penumbra_replay_gltf penumbra_replay_shadow_settings penumbra_replay_image penumbra_replay_shader \
 	penumbra_replay_command_line
-SANITIZE_CI_TESTS = ^(unit|shadows|scene|fuzz)\.|^(vulkan|opengl)\.
+SANITIZE_CI_TESTS = ^(unit|shadows|scene|gltf|fuzz)\.|^(vulkan|opengl)\.
 sanitize-ci: deps
 	@cmake -S . -B build-sanitize-ci $(call GENERATOR,build-sanitize-ci) -DPENUMBRA_WERROR=ON -DPENUMBRA_SANITIZE=ON \
 		-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O0 -g1" --log-level=WARNING

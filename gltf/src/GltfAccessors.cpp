@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 std::string typeName(int type)
@@ -317,4 +317,4 @@ std::size_t accessorCount(const Document& document, int accessor, std::string_vi
     return document.at(document.model().accessors, accessor, "accessor", owner).count;
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

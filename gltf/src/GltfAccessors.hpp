@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // Typed reads of accessors, checked against the glTF rules they rely on: the accessor, its
 // buffer view and buffer exist, the type and component type suit the use, every element lies
@@ -44,4 +44,4 @@ std::vector<std::uint32_t> readIndices(const Document& document, int accessor, s
 // The element count an accessor declares, after checking that it exists.
 std::size_t accessorCount(const Document& document, int accessor, std::string_view owner);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 void Deviations::add(std::string_view kind, const std::string& pointer)
 {
@@ -22,4 +22,4 @@ std::vector<std::string> Deviations::notes() const
     return out;
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // What the Khronos glTF Validator reports as an error but the loader accepts, because what is drawn
 // does not depend on it (the README lists them): accessor min/max that do not match the elements (or
@@ -31,4 +31,4 @@ inline constexpr std::string_view kNonUnit = "normals or tangents not unit lengt
 // ROTATION_NON_UNIT): |length - 1| above it is not unit length.
 inline constexpr double kUnitLengthTolerance = 5e-4;
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -2,7 +2,7 @@
 
 #include "GltfDeviations.hpp"
 
-#include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/gltf/GltfLoader.hpp"
 
 #include <fmt/format.h>
 #include <tiny_gltf.h>
@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // A parsed glTF model and the path its errors name.
 class Document {
@@ -45,4 +45,4 @@ private:
 // "mesh 2 ('Cube')", or "mesh 2" when unnamed.
 std::string describe(std::string_view kind, int index, const std::string& name);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

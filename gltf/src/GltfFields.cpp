@@ -1,6 +1,6 @@
 #include "GltfFields.hpp"
 
-#include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/gltf/GltfLoader.hpp"
 
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <set>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 // RFC 6901, section 3: '~' and '/' in a key are written "~0" and "~1".
@@ -248,4 +248,4 @@ std::optional<Fields> Fields::extension(std::string_view name) const
     return Fields(file_, (*extensions)[std::string(name)], pointerOf("extensions") + "/" + escaped(name));
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 using Json = nlohmann::json;
 
@@ -78,4 +78,4 @@ private:
     std::string pointer_;
 };
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

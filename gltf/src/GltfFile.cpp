@@ -10,7 +10,7 @@
 #include <cstring>
 #include <fstream>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 // glTF 2.0, section 4.4.3 and 4.4.3.2: the GLB header's magic "glTF" and the chunk types.
@@ -167,4 +167,4 @@ Document readDocument(const std::filesystem::path& path, std::vector<std::string
     return readDocument(name, bytes, path.parent_path(), notes);
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // Reads a .gltf (JSON) or .glb (binary container, glTF 2.0 section 4.4) file, told apart by content,
 // and checks it as the Khronos glTF Validator does (checkSchema, then the byte ranges of buffers,
@@ -20,4 +20,4 @@ Document readDocument(const std::filesystem::path& path, std::vector<std::string
 Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes, const std::filesystem::path& folder,
                       std::vector<std::string>& notes);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

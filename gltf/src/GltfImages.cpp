@@ -10,7 +10,7 @@
 #include <memory>
 #include <optional>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 // The signatures of PNG (RFC 2083, section 3.1) and JPEG (ITU T.81, annex B: an SOI marker and the
@@ -121,4 +121,4 @@ bool loadImageData(tinygltf::Image* image, int index, std::string* error, std::s
     return false;
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

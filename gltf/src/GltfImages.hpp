@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // The largest picture a glTF image may decode to, checked from its header before any pixel is
 // decoded: 16384 texels a side (the largest 2D texture Vulkan and OpenGL implementations commonly
@@ -25,4 +25,4 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
 bool loadImageData(tinygltf::Image* image, int index, std::string* error, std::string* warning, int requestedWidth,
                    int requestedHeight, const unsigned char* bytes, int size, void* user);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

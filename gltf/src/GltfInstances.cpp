@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 // How far a quantized quaternion's length may be from 1 by rounding alone: each of its four components is off by
@@ -76,4 +76,4 @@ std::optional<Instances> readInstances(const Document& document, const tinygltf:
     return instances;
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // A node's EXT_mesh_gpu_instancing instances.
 struct Instances {
@@ -25,4 +25,4 @@ struct Instances {
 // integer type) is refused; the others are normalized, as node rotations are.
 std::optional<Instances> readInstances(const Document& document, const tinygltf::Node& node, int index);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

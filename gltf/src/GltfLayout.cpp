@@ -8,7 +8,7 @@
 #include <map>
 #include <set>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 std::uint64_t unsignedOf(const Json& object, const char* key, std::uint64_t fallback = 0)
@@ -120,4 +120,4 @@ void checkLayout(const JsonFile& file, const tinygltf::Model& model)
     checkVertexAlignment(file);
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

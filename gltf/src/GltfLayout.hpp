@@ -4,7 +4,7 @@
 
 #include <tiny_gltf.h>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // Checks the byte ranges of a file whose JSON passed checkSchema, now that its buffers are read: each
 // buffer holds the bytes it declares, each buffer view lies inside its buffer, each accessor's
@@ -13,4 +13,4 @@ namespace penumbra::scene::gltf {
 // the JSON pointer of the offending value.
 void checkLayout(const JsonFile& file, const tinygltf::Model& model);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -2,7 +2,7 @@
 
 #include <cstdint>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // What a glTF file may ask for, refused with a named error before anything is allocated for it (the
 // limits of pictures are in GltfImages.hpp). Far above what a scene rendered here needs; they keep a
@@ -17,4 +17,4 @@ inline constexpr std::uint64_t kMaxNodeDepth = 1000; // nodes from a root to its
 inline constexpr std::uint64_t kMaxInstances = kMaxObjects;
 inline constexpr int kMaxJsonDepth = 128; // nested JSON objects and arrays
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -1,4 +1,4 @@
-#include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/gltf/GltfLoader.hpp"
 
 #include "GltfDocument.hpp"
 #include "GltfFile.hpp"
@@ -13,10 +13,8 @@
 #include <algorithm>
 #include <cmath>
 
-namespace penumbra::scene {
+namespace penumbra::gltf {
 namespace {
-
-using gltf::Document;
 
 // glTF allows an outer cone angle of exactly pi/2; a spot shadow's perspective projection does not.
 constexpr float kMaxSpotOuterAngle = 1.5707963f - 1e-3f;
@@ -44,23 +42,23 @@ float sourceSize(const Document& document, const tinygltf::Light& light, const s
 
 // The light's static shadow map mode from its `extras` {"shadowUpdate": "onDemand"} (scene::ShadowUpdate's names),
 // the shadow settings' without one.
-ShadowUpdate shadowUpdate(const Document& document, const tinygltf::Light& light, const std::string& owner)
+scene::ShadowUpdate shadowUpdate(const Document& document, const tinygltf::Light& light, const std::string& owner)
 {
     if (!light.extras.IsObject() || !light.extras.Has("shadowUpdate"))
-        return ShadowUpdate::Settings;
+        return scene::ShadowUpdate::Settings;
     const tinygltf::Value& value = light.extras.Get("shadowUpdate");
-    const std::optional<ShadowUpdate> update =
-        value.IsString() ? parseShadowUpdate(value.Get<std::string>()) : std::nullopt;
+    const std::optional<scene::ShadowUpdate> update =
+        value.IsString() ? scene::parseShadowUpdate(value.Get<std::string>()) : std::nullopt;
     if (!update)
-        document.fail(fmt::format("{}: extras.shadowUpdate is not one of {}", owner, kShadowUpdateNames));
+        document.fail(fmt::format("{}: extras.shadowUpdate is not one of {}", owner, scene::kShadowUpdateNames));
     return *update;
 }
 
-void addLight(const Document& document, const gltf::LightInstance& instance, Scene& scene,
+void addLight(const Document& document, const LightInstance& instance, scene::Scene& world,
               std::vector<std::string>& notes)
 {
     const tinygltf::Light& light = document.model().lights[std::size_t(instance.light)];
-    const std::string owner = gltf::describe("light", instance.light, light.name);
+    const std::string owner = describe("light", instance.light, light.name);
     glm::vec3 color(1.0f);
     if (light.color.size() == 3)
         color = glm::vec3(float(light.color[0]), float(light.color[1]), float(light.color[2]));
@@ -69,11 +67,11 @@ void addLight(const Document& document, const gltf::LightInstance& instance, Sce
     const auto intensity = float(light.intensity);
     const float range = light.range > 0.0 ? float(light.range) : defaultRange(intensity);
     if (light.type == "directional") {
-        scene.lights.push_back({.name = light.name,
+        world.lights.push_back({.name = light.name,
                                 .color = color,
                                 .intensity = intensity,
                                 .direction = forward(instance.world),
-                                .angularDiameter = sourceSize(document, light, owner, kDefaultAngularDiameter),
+                                .angularDiameter = sourceSize(document, light, owner, scene::kDefaultAngularDiameter),
                                 .shadowUpdate = shadowUpdate(document, light, owner)});
     } else if (light.type == "spot") {
         auto outer = float(light.spot.outerConeAngle);
@@ -82,7 +80,7 @@ void addLight(const Document& document, const gltf::LightInstance& instance, Sce
                 fmt::format("{}: outer cone angle {} narrowed to {} radians", owner, outer, kMaxSpotOuterAngle));
             outer = kMaxSpotOuterAngle;
         }
-        scene.spotLights.push_back({.name = light.name,
+        world.spotLights.push_back({.name = light.name,
                                     .color = color,
                                     .intensity = intensity,
                                     .position = origin(instance.world),
@@ -90,31 +88,31 @@ void addLight(const Document& document, const gltf::LightInstance& instance, Sce
                                     .range = range,
                                     .innerAngle = float(light.spot.innerConeAngle),
                                     .outerAngle = outer,
-                                    .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius),
+                                    .sourceRadius = sourceSize(document, light, owner, scene::kDefaultSourceRadius),
                                     .shadowUpdate = shadowUpdate(document, light, owner)});
     } else if (light.type == "point") {
-        scene.pointLights.push_back({.name = light.name,
+        world.pointLights.push_back({.name = light.name,
                                      .color = color,
                                      .intensity = intensity,
                                      .position = origin(instance.world),
                                      .range = range,
-                                     .sourceRadius = sourceSize(document, light, owner, kDefaultSourceRadius),
+                                     .sourceRadius = sourceSize(document, light, owner, scene::kDefaultSourceRadius),
                                      .shadowUpdate = shadowUpdate(document, light, owner)});
     } else {
         document.fail(fmt::format("{}: type '{}' is not directional, spot or point", owner, light.type));
     }
 }
 
-bool isNamed(const Document& document, const gltf::CameraInstance& instance, const std::string& name)
+bool isNamed(const Document& document, const CameraInstance& instance, const std::string& name)
 {
     return document.model().cameras[std::size_t(instance.camera)].name == name ||
            document.model().nodes[std::size_t(instance.node)].name == name;
 }
 
-std::string cameraNames(const Document& document, const std::vector<gltf::CameraInstance>& cameras)
+std::string cameraNames(const Document& document, const std::vector<CameraInstance>& cameras)
 {
     std::string names;
-    for (const gltf::CameraInstance& instance : cameras) {
+    for (const CameraInstance& instance : cameras) {
         const std::string& name = document.model().cameras[std::size_t(instance.camera)].name;
         names += fmt::format("{}'{}'", names.empty() ? "" : ", ",
                              name.empty() ? document.model().nodes[std::size_t(instance.node)].name : name);
@@ -122,18 +120,18 @@ std::string cameraNames(const Document& document, const std::vector<gltf::Camera
     return names.empty() ? "none" : names;
 }
 
-Camera toCamera(const Document& document, const gltf::CameraInstance& instance, const Bounds& bounds)
+scene::Camera toCamera(const Document& document, const CameraInstance& instance, const scene::Bounds& bounds)
 {
     const tinygltf::Camera& gltfCamera = document.model().cameras[std::size_t(instance.camera)];
-    const std::string owner = gltf::describe("camera", instance.camera, gltfCamera.name);
+    const std::string owner = describe("camera", instance.camera, gltfCamera.name);
     if (gltfCamera.type != "perspective")
         document.fail(fmt::format("{}: type '{}' is not supported, only perspective", owner, gltfCamera.type));
     const glm::mat3 rotation(instance.world);
-    Camera camera{.position = origin(instance.world),
-                  .forward = forward(instance.world),
-                  .up = glm::normalize(rotation * glm::vec3(0.0f, 1.0f, 0.0f)),
-                  .fovY = float(gltfCamera.perspective.yfov),
-                  .nearPlane = float(gltfCamera.perspective.znear)};
+    scene::Camera camera{.position = origin(instance.world),
+                         .forward = forward(instance.world),
+                         .up = glm::normalize(rotation * glm::vec3(0.0f, 1.0f, 0.0f)),
+                         .fovY = float(gltfCamera.perspective.yfov),
+                         .nearPlane = float(gltfCamera.perspective.znear)};
     if (gltfCamera.perspective.zfar > 0.0) {
         camera.farPlane = float(gltfCamera.perspective.zfar);
     } else {
@@ -146,22 +144,22 @@ Camera toCamera(const Document& document, const gltf::CameraInstance& instance, 
     return camera;
 }
 
-Camera chooseCamera(const Document& document, const std::vector<gltf::CameraInstance>& cameras,
-                    const GltfOptions& options, const Bounds& bounds, std::vector<std::string>& notes)
+scene::Camera chooseCamera(const Document& document, const std::vector<CameraInstance>& cameras,
+                           const GltfOptions& options, const scene::Bounds& bounds, std::vector<std::string>& notes)
 {
     if (options.camera) {
-        for (const gltf::CameraInstance& instance : cameras)
+        for (const CameraInstance& instance : cameras)
             if (isNamed(document, instance, *options.camera))
                 return toCamera(document, instance, bounds);
         document.fail(fmt::format("no camera named '{}'; the scene's cameras: {}", *options.camera,
                                   cameraNames(document, cameras)));
     }
-    for (const gltf::CameraInstance& instance : cameras)
+    for (const CameraInstance& instance : cameras)
         if (document.model().cameras[std::size_t(instance.camera)].type == "perspective")
             return toCamera(document, instance, bounds);
     notes.push_back(cameras.empty() ? "no camera: framing the scene's bounds"
                                     : "no perspective camera: framing the scene's bounds");
-    return framingCamera(bounds);
+    return scene::framingCamera(bounds);
 }
 
 } // namespace
@@ -172,24 +170,24 @@ GltfScene toScene(const Document& document, std::vector<std::string> readNotes, 
 {
     GltfScene result;
     result.notes = std::move(readNotes);
-    Scene& scene = result.scene;
+    scene::Scene& world = result.scene;
     std::vector<std::string>& notes = result.notes;
-    gltf::checkSupport(document, notes);
-    const gltf::NodeWalk walk = gltf::walkNodes(document, scene, notes);
-    for (const gltf::LightInstance& light : walk.lights)
-        addLight(document, light, scene, notes);
-    if (scene.lights.empty() && scene.spotLights.empty() && scene.pointLights.empty()) {
-        scene.lights.push_back(defaultSun());
+    checkSupport(document, notes);
+    const NodeWalk walk = walkNodes(document, world, notes);
+    for (const LightInstance& light : walk.lights)
+        addLight(document, light, world, notes);
+    if (world.lights.empty() && world.spotLights.empty() && world.pointLights.empty()) {
+        world.lights.push_back(scene::defaultSun());
         notes.push_back("no lights: added a default sun");
     }
-    scene.camera = chooseCamera(document, walk.cameras, options, scene.worldBounds(), notes);
+    world.camera = chooseCamera(document, walk.cameras, options, world.worldBounds(), notes);
     for (std::string& note : document.deviations().notes())
         notes.push_back(std::move(note));
     try {
-        scene.validate();
+        world.validate();
     } catch (const GltfError&) {
         throw;
-    } catch (const SceneError& error) {
+    } catch (const scene::SceneError& error) {
         document.fail(error.what());
     }
     return result;
@@ -200,7 +198,7 @@ GltfScene toScene(const Document& document, std::vector<std::string> readNotes, 
 GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options)
 {
     std::vector<std::string> notes;
-    const Document document = gltf::readDocument(path, notes);
+    const Document document = readDocument(path, notes);
     return toScene(document, std::move(notes), options);
 }
 
@@ -208,8 +206,8 @@ GltfScene loadGltf(std::span<const std::uint8_t> bytes, const std::string& name,
                    const GltfOptions& options)
 {
     std::vector<std::string> notes;
-    const Document document = gltf::readDocument(name, bytes, folder, notes);
+    const Document document = readDocument(name, bytes, folder, notes);
     return toScene(document, std::move(notes), options);
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::gltf

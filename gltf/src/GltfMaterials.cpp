@@ -6,22 +6,22 @@
 #include <cstring>
 #include <limits>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
-CasterMode casterMode(const Document& document, const tinygltf::Material& material, const std::string& owner)
+scene::CasterMode casterMode(const Document& document, const tinygltf::Material& material, const std::string& owner)
 {
     if (material.alphaMode == "OPAQUE")
-        return CasterMode::On;
+        return scene::CasterMode::On;
     if (material.alphaMode == "MASK")
-        return CasterMode::Clip;
+        return scene::CasterMode::Clip;
     if (material.alphaMode == "BLEND")
-        return CasterMode::Dither;
+        return scene::CasterMode::Dither;
     document.fail(fmt::format("{}: alphaMode '{}' is not OPAQUE, MASK or BLEND", owner, material.alphaMode));
 }
 
 // tinygltf decodes images with 1 to 4 channels of 8 or 16 bits; the scene keeps RGBA8.
-TextureImage toRgba8(const Document& document, const tinygltf::Image& image, const std::string& owner)
+scene::TextureImage toRgba8(const Document& document, const tinygltf::Image& image, const std::string& owner)
 {
     if (image.width <= 0 || image.height <= 0 || image.component < 1 || image.component > 4 ||
         (image.bits != 8 && image.bits != 16))
@@ -34,8 +34,8 @@ TextureImage toRgba8(const Document& document, const tinygltf::Image& image, con
     if (image.image.size() != texels * channels * bytesPerChannel)
         document.fail(fmt::format("{}: {} bytes of pixels for {}x{} texels", owner, image.image.size(), image.width,
                                   image.height));
-    TextureImage texture{image.name, std::uint32_t(image.width), std::uint32_t(image.height),
-                         std::vector<std::uint8_t>(texels * 4, 255)};
+    scene::TextureImage texture{image.name, std::uint32_t(image.width), std::uint32_t(image.height),
+                                std::vector<std::uint8_t>(texels * 4, 255)};
     for (std::size_t t = 0; t < texels; ++t) {
         for (std::size_t c = 0; c < 4; ++c) {
             // Grey (and grey-alpha) pictures spread their first channel over RGB.
@@ -73,9 +73,9 @@ float inRange(const Document& document, double value, double low, double high, c
 // the primitive has.
 std::uint32_t supportedSet(const Document& document, double set, const std::string& field)
 {
-    if (set > kTexCoordSets - 1)
+    if (set > scene::kTexCoordSets - 1)
         document.fail(fmt::format("{} {}: texture coordinate sets past TEXCOORD_{} are not supported", field, set,
-                                  kTexCoordSets - 1));
+                                  scene::kTexCoordSets - 1));
     return std::uint32_t(set);
 }
 
@@ -93,8 +93,8 @@ glm::vec2 vec2Field(const Document& document, const tinygltf::Value& object, con
 
 // KHR_texture_transform on a textureInfo: offset, rotation, scale, and a texCoord that overrides the
 // textureInfo's.
-void readTextureTransform(const Document& document, const tinygltf::ExtensionMap& extensions, MaterialTexture& texture,
-                          const std::string& owner)
+void readTextureTransform(const Document& document, const tinygltf::ExtensionMap& extensions,
+                          scene::MaterialTexture& texture, const std::string& owner)
 {
     const auto found = extensions.find("KHR_texture_transform");
     if (found == extensions.end())
@@ -122,7 +122,7 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
 {
     if (const auto found = materials_.find(index); found != materials_.end())
         return found->second;
-    Material material{.name = "glTF default", .baseColor = glm::vec4(1.0f), .metallic = 1.0f, .roughness = 1.0f};
+    scene::Material material{.name = "glTF default", .baseColor = glm::vec4(1.0f), .metallic = 1.0f, .roughness = 1.0f};
     if (index >= 0) {
         const tinygltf::Material& gltf = document_.at(document_.model().materials, index, "material", primitive);
         const std::string owner = describe("material", index, gltf.name);
@@ -160,7 +160,7 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
 
         // Base colour and emissive textures hold sRGB-encoded colour, the others linear data (glTF 2.0, section
         // 3.9); one glTF texture read both ways becomes two images.
-        const auto read = [&](TextureSlot slot, int textureIndex, int texCoord,
+        const auto read = [&](scene::TextureSlot slot, int textureIndex, int texCoord,
                               const tinygltf::ExtensionMap& extensions, const char* field) {
             if (textureIndex < 0)
                 return;
@@ -170,23 +170,25 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
                 notes_.push_back(fmt::format("{}: texture {} has no source image: left out", where, textureIndex));
                 return;
             }
-            const TextureColorSpace colorSpace = slot == TextureSlot::BaseColor || slot == TextureSlot::Emissive
-                                                     ? TextureColorSpace::Srgb
-                                                     : TextureColorSpace::Linear;
-            MaterialTexture texture{.image = this->texture(textureIndex, where, colorSpace),
-                                    .texCoord = supportedSet(document_, texCoord, where + ".texCoord")};
+            const scene::TextureColorSpace colorSpace =
+                slot == scene::TextureSlot::BaseColor || slot == scene::TextureSlot::Emissive
+                    ? scene::TextureColorSpace::Srgb
+                    : scene::TextureColorSpace::Linear;
+            scene::MaterialTexture texture{.image = this->texture(textureIndex, where, colorSpace),
+                                           .texCoord = supportedSet(document_, texCoord, where + ".texCoord")};
             readTextureTransform(document_, extensions, texture, where);
             material.texture(slot) = texture;
         };
-        read(TextureSlot::BaseColor, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+        read(scene::TextureSlot::BaseColor, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
              pbr.baseColorTexture.extensions, "pbrMetallicRoughness.baseColorTexture");
-        read(TextureSlot::MetallicRoughness, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-             pbr.metallicRoughnessTexture.extensions, "pbrMetallicRoughness.metallicRoughnessTexture");
-        read(TextureSlot::Normal, gltf.normalTexture.index, gltf.normalTexture.texCoord, gltf.normalTexture.extensions,
-             "normalTexture");
-        read(TextureSlot::Occlusion, gltf.occlusionTexture.index, gltf.occlusionTexture.texCoord,
+        read(scene::TextureSlot::MetallicRoughness, pbr.metallicRoughnessTexture.index,
+             pbr.metallicRoughnessTexture.texCoord, pbr.metallicRoughnessTexture.extensions,
+             "pbrMetallicRoughness.metallicRoughnessTexture");
+        read(scene::TextureSlot::Normal, gltf.normalTexture.index, gltf.normalTexture.texCoord,
+             gltf.normalTexture.extensions, "normalTexture");
+        read(scene::TextureSlot::Occlusion, gltf.occlusionTexture.index, gltf.occlusionTexture.texCoord,
              gltf.occlusionTexture.extensions, "occlusionTexture");
-        read(TextureSlot::Emissive, gltf.emissiveTexture.index, gltf.emissiveTexture.texCoord,
+        read(scene::TextureSlot::Emissive, gltf.emissiveTexture.index, gltf.emissiveTexture.texCoord,
              gltf.emissiveTexture.extensions, "emissiveTexture");
     }
     const std::uint32_t sceneIndex = scene_.addMaterial(std::move(material));
@@ -194,7 +196,7 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
     return sceneIndex;
 }
 
-std::uint32_t MaterialTable::texture(int textureIndex, const std::string& owner, TextureColorSpace colorSpace)
+std::uint32_t MaterialTable::texture(int textureIndex, const std::string& owner, scene::TextureColorSpace colorSpace)
 {
     if (const auto found = textures_.find({textureIndex, colorSpace}); found != textures_.end())
         return found->second;
@@ -203,7 +205,7 @@ std::uint32_t MaterialTable::texture(int textureIndex, const std::string& owner,
     const std::string textureName = describe("texture", textureIndex, texture.name);
     const int imageIndex = texture.source;
     const tinygltf::Image& image = document_.at(model.images, imageIndex, "image", textureName);
-    TextureImage decoded = toRgba8(document_, image, describe("image", imageIndex, image.name));
+    scene::TextureImage decoded = toRgba8(document_, image, describe("image", imageIndex, image.name));
     decoded.colorSpace = colorSpace;
     decoded.sampler = textureSampler(document_, texture.sampler, textureName);
     scene_.textures.push_back(std::move(decoded));
@@ -212,4 +214,4 @@ std::uint32_t MaterialTable::texture(int textureIndex, const std::string& owner,
     return sceneIndex;
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -9,13 +9,13 @@
 #include <vector>
 #include <utility>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // Converts glTF materials into Scene::materials on first use, and the textures they use into
 // Scene::textures (RGBA8 with the texture's sampler), each once per colour space however many materials share it.
 class MaterialTable {
 public:
-    MaterialTable(const Document& document, Scene& scene, std::vector<std::string>& notes)
+    MaterialTable(const Document& document, scene::Scene& scene, std::vector<std::string>& notes)
         : document_(document), scene_(scene), notes_(notes)
     {
     }
@@ -25,13 +25,13 @@ public:
     std::uint32_t material(int index, const std::string& owner);
 
 private:
-    std::uint32_t texture(int textureIndex, const std::string& owner, TextureColorSpace colorSpace);
+    std::uint32_t texture(int textureIndex, const std::string& owner, scene::TextureColorSpace colorSpace);
 
     const Document& document_;
-    Scene& scene_;
+    scene::Scene& scene_;
     std::vector<std::string>& notes_;
     std::map<int, std::uint32_t> materials_;
-    std::map<std::pair<int, TextureColorSpace>, std::uint32_t> textures_; // by glTF texture
+    std::map<std::pair<int, scene::TextureColorSpace>, std::uint32_t> textures_; // by glTF texture
 };
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

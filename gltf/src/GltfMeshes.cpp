@@ -8,7 +8,7 @@
 #include <numeric>
 #include <utility>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 constexpr int kTriangles = TINYGLTF_MODE_TRIANGLES;
@@ -40,12 +40,12 @@ int attribute(const tinygltf::Primitive& primitive, const std::string& name)
 
 // Flat shading: every triangle gets its own vertices carrying its face normal. Degenerate
 // triangles cover no pixel; they get +y so that no normal is NaN.
-MeshData flatShaded(const std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& indices)
+scene::MeshData flatShaded(const std::vector<scene::Vertex>& vertices, const std::vector<std::uint32_t>& indices)
 {
-    MeshData mesh;
+    scene::MeshData mesh;
     mesh.vertices.reserve(indices.size());
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-        Vertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
+        scene::Vertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
         const glm::vec3 cross = glm::cross(b.position - a.position, c.position - a.position);
         const float length = glm::length(cross);
         const glm::vec3 normal = length > 0.0f ? cross / length : glm::vec3(0.0f, 1.0f, 0.0f);
@@ -59,8 +59,8 @@ MeshData flatShaded(const std::vector<Vertex>& vertices, const std::vector<std::
 
 } // namespace
 
-MeshData readPrimitive(const Document& document, int meshIndex, int primitiveIndex,
-                       std::optional<std::uint32_t> normalTexCoord)
+scene::MeshData readPrimitive(const Document& document, int meshIndex, int primitiveIndex,
+                              std::optional<std::uint32_t> normalTexCoord)
 {
     const tinygltf::Mesh& gltfMesh = document.model().meshes[std::size_t(meshIndex)];
     const tinygltf::Primitive& primitive = gltfMesh.primitives[std::size_t(primitiveIndex)];
@@ -75,7 +75,7 @@ MeshData readPrimitive(const Document& document, int meshIndex, int primitiveInd
     const std::vector<glm::vec3> positions = readVec3(document, positionAccessor, owner, "POSITION");
     if (positions.empty())
         document.fail(fmt::format("{}: accessor {} (POSITION) has no vertices", owner, positionAccessor));
-    std::vector<Vertex> vertices(positions.size());
+    std::vector<scene::Vertex> vertices(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i)
         vertices[i].position = positions[i];
 
@@ -95,13 +95,14 @@ MeshData readPrimitive(const Document& document, int meshIndex, int primitiveInd
             store(vertices[i], values[i]);
         return true;
     };
-    const bool hasNormals = readAttribute("NORMAL", readVec3, [](Vertex& v, const glm::vec3& n) { v.normal = n; });
-    readAttribute("TEXCOORD_0", readTexCoords, [](Vertex& v, const glm::vec2& uv) { v.uv = uv; });
-    readAttribute("TEXCOORD_1", readTexCoords, [](Vertex& v, const glm::vec2& uv) { v.uv1 = uv; });
-    readAttribute("COLOR_0", readColors, [](Vertex& v, const glm::vec4& c) { v.color = c; });
+    const bool hasNormals =
+        readAttribute("NORMAL", readVec3, [](scene::Vertex& v, const glm::vec3& n) { v.normal = n; });
+    readAttribute("TEXCOORD_0", readTexCoords, [](scene::Vertex& v, const glm::vec2& uv) { v.uv = uv; });
+    readAttribute("TEXCOORD_1", readTexCoords, [](scene::Vertex& v, const glm::vec2& uv) { v.uv1 = uv; });
+    readAttribute("COLOR_0", readColors, [](scene::Vertex& v, const glm::vec4& c) { v.color = c; });
     // glTF 2.0 section 3.7.2.1: TANGENT is only used together with NORMAL; flat normals need their own.
     const bool hasTangents =
-        hasNormals && readAttribute("TANGENT", readVec4, [](Vertex& v, const glm::vec4& t) { v.tangent = t; });
+        hasNormals && readAttribute("TANGENT", readVec4, [](scene::Vertex& v, const glm::vec4& t) { v.tangent = t; });
 
     std::vector<std::uint32_t> indices;
     if (primitive.indices >= 0) {
@@ -118,7 +119,7 @@ MeshData readPrimitive(const Document& document, int meshIndex, int primitiveInd
         document.fail(fmt::format("{}: {} {} do not make whole triangles", owner, indices.size(),
                                   primitive.indices >= 0 ? "indices" : "vertices"));
 
-    MeshData mesh;
+    scene::MeshData mesh;
     if (hasNormals) {
         mesh.vertices = std::move(vertices);
         mesh.indices = std::move(indices);
@@ -131,11 +132,11 @@ MeshData readPrimitive(const Document& document, int meshIndex, int primitiveInd
     return mesh;
 }
 
-MeshData reversedWinding(MeshData mesh)
+scene::MeshData reversedWinding(scene::MeshData mesh)
 {
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
         std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
     return mesh;
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

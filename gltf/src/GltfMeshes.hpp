@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <optional>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // One TRIANGLES primitive as an indexed triangle list with bounds. Without NORMAL the triangles
 // get flat normals (each its own three vertices), as glTF requires; without indices the vertices
@@ -16,9 +16,10 @@ namespace penumbra::scene::gltf {
 // Also reads TEXCOORD_1, COLOR_0 (multiplying the base colour) and TANGENT; a primitive whose material
 // has a normal texture read through uv set `normalTexCoord` and that has no TANGENT gets computed
 // tangents (computeTangents).
-MeshData readPrimitive(const Document& document, int mesh, int primitive, std::optional<std::uint32_t> normalTexCoord);
+scene::MeshData readPrimitive(const Document& document, int mesh, int primitive,
+                              std::optional<std::uint32_t> normalTexCoord);
 
 // The same triangles with the opposite winding, for objects whose transform mirrors.
-MeshData reversedWinding(MeshData mesh);
+scene::MeshData reversedWinding(scene::MeshData mesh);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

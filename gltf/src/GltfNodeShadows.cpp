@@ -1,6 +1,6 @@
 #include "GltfNodeShadows.hpp"
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node, int index,
                             const NodeShadows& inherited)
@@ -14,8 +14,8 @@ NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node
         document.fail(fmt::format("{}: expected an object with castShadows, receiveShadows and mobility", pointer));
     if (ours.Has("castShadows")) {
         const tinygltf::Value& value = ours.Get("castShadows");
-        const std::optional<ShadowCasting> cast =
-            value.IsString() ? parseShadowCasting(value.Get<std::string>()) : std::nullopt;
+        const std::optional<scene::ShadowCasting> cast =
+            value.IsString() ? scene::parseShadowCasting(value.Get<std::string>()) : std::nullopt;
         if (!cast)
             document.fail(
                 fmt::format("{}/castShadows: expected one of \"on\", \"off\", \"twoSided\", \"shadowsOnly\"", pointer));
@@ -29,8 +29,8 @@ NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node
     }
     if (ours.Has("mobility")) {
         const tinygltf::Value& value = ours.Get("mobility");
-        const std::optional<Mobility> mobility =
-            value.IsString() ? parseMobility(value.Get<std::string>()) : std::nullopt;
+        const std::optional<scene::Mobility> mobility =
+            value.IsString() ? scene::parseMobility(value.Get<std::string>()) : std::nullopt;
         if (!mobility)
             document.fail(fmt::format("{}/mobility: expected \"static\" or \"dynamic\"", pointer));
         shadows.mobility = *mobility;
@@ -38,4 +38,4 @@ NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node
     return shadows;
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

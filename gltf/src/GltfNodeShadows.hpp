@@ -4,13 +4,13 @@
 
 #include "penumbra/scene/Scene.hpp"
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // An object's shadow choices as a node and its ancestors set them.
 struct NodeShadows {
-    ShadowCasting cast = ShadowCasting::On;
+    scene::ShadowCasting cast = scene::ShadowCasting::On;
     bool receive = true;
-    Mobility mobility = Mobility::Static;
+    scene::Mobility mobility = scene::Mobility::Static;
 };
 
 // The node's `extras.penumbra` {"castShadows": "on" | "off" | "twoSided" | "shadowsOnly",
@@ -21,4 +21,4 @@ struct NodeShadows {
 NodeShadows readNodeShadows(const Document& document, const tinygltf::Node& node, int index,
                             const NodeShadows& inherited);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

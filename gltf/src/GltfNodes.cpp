@@ -15,7 +15,7 @@
 #include <set>
 #include <tuple>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 // Below this |determinant| a node is treated as scaled to nothing: its normal matrix (the
@@ -24,7 +24,7 @@ constexpr float kSingularDeterminant = 1e-12f;
 
 class Walker {
 public:
-    Walker(const Document& document, Scene& scene, std::vector<std::string>& notes)
+    Walker(const Document& document, scene::Scene& scene, std::vector<std::string>& notes)
         : document_(document), model_(document.model()), scene_(scene), notes_(notes),
           materials_(document, scene, notes), onPath_(model_.nodes.size(), false)
     {
@@ -112,14 +112,15 @@ private:
             const auto key = std::make_tuple(meshIndex, int(p), mirrored);
             auto found = meshes_.find(key);
             if (found == meshes_.end()) {
-                const std::optional<MaterialTexture>& normal = scene_.materials[material].texture(TextureSlot::Normal);
-                MeshData data = readPrimitive(document_, meshIndex, int(p),
-                                              normal ? std::optional(normal->texCoord) : std::nullopt);
+                const std::optional<scene::MaterialTexture>& normal =
+                    scene_.materials[material].texture(scene::TextureSlot::Normal);
+                scene::MeshData data = readPrimitive(document_, meshIndex, int(p),
+                                                     normal ? std::optional(normal->texCoord) : std::nullopt);
                 found =
                     meshes_.emplace(key, scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data)))
                         .first;
             }
-            Object& object =
+            scene::Object& object =
                 scene_.objects[scene_.addObject(mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p),
                                                 found->second, material, world)];
             object.castShadows = shadows.cast;
@@ -131,7 +132,7 @@ private:
 
     const Document& document_;
     const tinygltf::Model& model_;
-    Scene& scene_;
+    scene::Scene& scene_;
     std::vector<std::string>& notes_;
     MaterialTable materials_;
     std::vector<bool> onPath_;
@@ -188,7 +189,7 @@ glm::mat4 trsTransform(const glm::vec3& translation, const glm::quat& rotation, 
     return glm::scale(glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation), scale);
 }
 
-NodeWalk walkNodes(const Document& document, Scene& scene, std::vector<std::string>& notes)
+NodeWalk walkNodes(const Document& document, scene::Scene& scene, std::vector<std::string>& notes)
 {
     Walker walker(document, scene, notes);
     for (const int root : rootNodes(document, notes))
@@ -196,4 +197,4 @@ NodeWalk walkNodes(const Document& document, Scene& scene, std::vector<std::stri
     return walker.result();
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // A camera node met while walking the scene, with its world transform.
 struct CameraInstance {
@@ -35,7 +35,7 @@ struct NodeWalk {
 // they are first used), one per instance of an EXT_mesh_gpu_instancing node, and collects camera and
 // light nodes. Throws GltfError for a node index out of range, a node that is its own ancestor, or a
 // bad mesh or instance; notes skipped nodes and instances and ignored instance attributes.
-NodeWalk walkNodes(const Document& document, Scene& scene, std::vector<std::string>& notes);
+NodeWalk walkNodes(const Document& document, scene::Scene& scene, std::vector<std::string>& notes);
 
 // The node's local transform: its matrix, or translation * rotation * scale.
 glm::mat4 localTransform(const tinygltf::Node& node);
@@ -43,4 +43,4 @@ glm::mat4 localTransform(const tinygltf::Node& node);
 // translation * rotation * scale, the order of glTF 2.0 section 3.5.3; `rotation` is a unit quaternion.
 glm::mat4 trsTransform(const glm::vec3& translation, const glm::quat& rotation, const glm::vec3& scale);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

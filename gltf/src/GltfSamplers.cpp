@@ -1,6 +1,6 @@
 #include "GltfSamplers.hpp"
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 // The codes of glTF 2.0, section 5.26 (sampler.magFilter, minFilter, wrapS, wrapT), which are OpenGL's.
@@ -15,33 +15,34 @@ constexpr int kMirroredRepeat = 33648;
 constexpr int kRepeat = 10497;
 constexpr int kUndefined = -1; // tinygltf's value for a filter the file leaves out
 
-TextureFilter magFilter(const Document& document, int code, const std::string& owner)
+scene::TextureFilter magFilter(const Document& document, int code, const std::string& owner)
 {
     switch (code) {
     case kUndefined:
     case kLinear:
-        return TextureFilter::Linear;
+        return scene::TextureFilter::Linear;
     case kNearest:
-        return TextureFilter::Nearest;
+        return scene::TextureFilter::Nearest;
     }
     document.fail(fmt::format("{}: magFilter {} is not NEAREST (9728) or LINEAR (9729)", owner, code));
 }
 
-void setMinFilter(const Document& document, int code, const std::string& owner, TextureSampler& sampler)
+void setMinFilter(const Document& document, int code, const std::string& owner, scene::TextureSampler& sampler)
 {
     struct Choice {
         int code;
-        TextureFilter filter;
-        TextureMipFilter mip;
+        scene::TextureFilter filter;
+        scene::TextureMipFilter mip;
     };
     // An undefined filter is the auto filtering the specification leaves to the renderer: trilinear.
-    constexpr Choice choices[] = {{kUndefined, TextureFilter::Linear, TextureMipFilter::Linear},
-                                  {kNearest, TextureFilter::Nearest, TextureMipFilter::None},
-                                  {kLinear, TextureFilter::Linear, TextureMipFilter::None},
-                                  {kNearestMipmapNearest, TextureFilter::Nearest, TextureMipFilter::Nearest},
-                                  {kLinearMipmapNearest, TextureFilter::Linear, TextureMipFilter::Nearest},
-                                  {kNearestMipmapLinear, TextureFilter::Nearest, TextureMipFilter::Linear},
-                                  {kLinearMipmapLinear, TextureFilter::Linear, TextureMipFilter::Linear}};
+    constexpr Choice choices[] = {
+        {kUndefined, scene::TextureFilter::Linear, scene::TextureMipFilter::Linear},
+        {kNearest, scene::TextureFilter::Nearest, scene::TextureMipFilter::None},
+        {kLinear, scene::TextureFilter::Linear, scene::TextureMipFilter::None},
+        {kNearestMipmapNearest, scene::TextureFilter::Nearest, scene::TextureMipFilter::Nearest},
+        {kLinearMipmapNearest, scene::TextureFilter::Linear, scene::TextureMipFilter::Nearest},
+        {kNearestMipmapLinear, scene::TextureFilter::Nearest, scene::TextureMipFilter::Linear},
+        {kLinearMipmapLinear, scene::TextureFilter::Linear, scene::TextureMipFilter::Linear}};
     for (const Choice& c : choices) {
         if (c.code == code) {
             sampler.minFilter = c.filter;
@@ -54,15 +55,15 @@ void setMinFilter(const Document& document, int code, const std::string& owner, 
                               owner, code));
 }
 
-TextureWrap wrap(const Document& document, int code, const char* field, const std::string& owner)
+scene::TextureWrap wrap(const Document& document, int code, const char* field, const std::string& owner)
 {
     switch (code) {
     case kRepeat:
-        return TextureWrap::Repeat;
+        return scene::TextureWrap::Repeat;
     case kClampToEdge:
-        return TextureWrap::ClampToEdge;
+        return scene::TextureWrap::ClampToEdge;
     case kMirroredRepeat:
-        return TextureWrap::MirroredRepeat;
+        return scene::TextureWrap::MirroredRepeat;
     }
     document.fail(fmt::format("{}: {} {} is not CLAMP_TO_EDGE (33071), MIRRORED_REPEAT (33648) or REPEAT (10497)",
                               owner, field, code));
@@ -70,13 +71,13 @@ TextureWrap wrap(const Document& document, int code, const char* field, const st
 
 } // namespace
 
-TextureSampler textureSampler(const Document& document, int index, const std::string& owner)
+scene::TextureSampler textureSampler(const Document& document, int index, const std::string& owner)
 {
     if (index < 0)
         return {};
     const tinygltf::Sampler& gltf = document.at(document.model().samplers, index, "sampler", owner);
     const std::string name = describe("sampler", index, gltf.name);
-    TextureSampler sampler;
+    scene::TextureSampler sampler;
     sampler.magFilter = magFilter(document, gltf.magFilter, name);
     setMinFilter(document, gltf.minFilter, name, sampler);
     sampler.wrapS = wrap(document, gltf.wrapS, "wrapS", name);
@@ -84,4 +85,4 @@ TextureSampler textureSampler(const Document& document, int index, const std::st
     return sampler;
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

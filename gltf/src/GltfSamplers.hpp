@@ -4,10 +4,10 @@
 
 #include "penumbra/scene/TextureImage.hpp"
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // glTF sampler `index` (-1: none, glTF's repeat and auto filtering) as a TextureSampler; a filter or wrap code
 // the specification does not list fails naming the sampler, the field and the value.
-TextureSampler textureSampler(const Document& document, int index, const std::string& owner);
+scene::TextureSampler textureSampler(const Document& document, int index, const std::string& owner);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

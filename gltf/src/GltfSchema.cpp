@@ -11,7 +11,7 @@
 #include <regex>
 #include <set>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 constexpr std::int64_t kMaxInteger = std::numeric_limits<std::int64_t>::max();
@@ -361,4 +361,4 @@ void checkSchema(const JsonFile& file)
     checkNodes(file, root, usage);
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

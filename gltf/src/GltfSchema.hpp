@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // The glTF component types (glTF 2.0, section 5.1.3, accessor.componentType).
 inline constexpr std::int64_t kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123,
@@ -38,4 +38,4 @@ std::uint64_t checkInstancing(const JsonFile& file, const Fields& node, Accessor
 // The top-level array `name` as objects (none when absent).
 std::vector<Fields> topLevel(const JsonFile& file, std::string_view name);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

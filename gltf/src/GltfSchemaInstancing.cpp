@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <optional>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 struct InstanceFormat {
@@ -77,4 +77,4 @@ std::uint64_t checkInstancing(const JsonFile& file, const Fields& node, Accessor
     return std::uint64_t(*count);
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

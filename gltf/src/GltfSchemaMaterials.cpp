@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 constexpr std::int64_t kMaxInteger = std::numeric_limits<std::int64_t>::max();
@@ -148,4 +148,4 @@ void checkCamerasAndLights(const JsonFile& file)
     }
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

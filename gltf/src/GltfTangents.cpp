@@ -5,13 +5,13 @@
 #include <cmath>
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 // Below this |du1 dv2 - du2 dv1| a triangle's uvs span no area: it gives no tangent direction.
 constexpr float kDegenerateUvArea = 1e-12f;
 
-glm::vec2 uvOf(const Vertex& vertex, std::uint32_t texCoord) { return texCoord == 0 ? vertex.uv : vertex.uv1; }
+glm::vec2 uvOf(const scene::Vertex& vertex, std::uint32_t texCoord) { return texCoord == 0 ? vertex.uv : vertex.uv1; }
 
 // Any unit vector perpendicular to n, for vertices whose triangles have no uv area.
 glm::vec3 perpendicular(const glm::vec3& n)
@@ -22,13 +22,13 @@ glm::vec3 perpendicular(const glm::vec3& n)
 
 } // namespace
 
-void computeTangents(MeshData& mesh, std::uint32_t texCoord)
+void computeTangents(scene::MeshData& mesh, std::uint32_t texCoord)
 {
     std::vector<glm::vec3> tangents(mesh.vertices.size(), glm::vec3(0.0f));
     std::vector<glm::vec3> bitangents(mesh.vertices.size(), glm::vec3(0.0f));
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
-        const Vertex &a = mesh.vertices[i0], &b = mesh.vertices[i1], &c = mesh.vertices[i2];
+        const scene::Vertex &a = mesh.vertices[i0], &b = mesh.vertices[i1], &c = mesh.vertices[i2];
         const glm::vec3 e1 = b.position - a.position, e2 = c.position - a.position;
         const glm::vec2 d1 = uvOf(b, texCoord) - uvOf(a, texCoord), d2 = uvOf(c, texCoord) - uvOf(a, texCoord);
         const float det = d1.x * d2.y - d2.x * d1.y;
@@ -47,7 +47,7 @@ void computeTangents(MeshData& mesh, std::uint32_t texCoord)
         }
     }
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-        Vertex& vertex = mesh.vertices[i];
+        scene::Vertex& vertex = mesh.vertices[i];
         const glm::vec3 n = glm::normalize(vertex.normal);
         const glm::vec3 projected = tangents[i] - n * glm::dot(n, tangents[i]);
         const float length = glm::length(projected);
@@ -57,4 +57,4 @@ void computeTangents(MeshData& mesh, std::uint32_t texCoord)
     }
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // Fills every vertex's tangent from the triangles' uv set `texCoord` (0 or 1), for primitives with a
 // normal texture but no TANGENT. glTF 2.0 section 3.7.2.1 recommends MikkTSpace; Debian 12 packages
@@ -14,6 +14,6 @@ namespace penumbra::scene::gltf {
 // bitangent. It differs from MikkTSpace where MikkTSpace splits vertices: at uv mirroring seams and
 // where triangles sharing a vertex disagree in handedness (here they average), and it weights by
 // area rather than by angle, so a baked normal map matches it only on smooth, unmirrored charts.
-void computeTangents(MeshData& mesh, std::uint32_t texCoord);
+void computeTangents(scene::MeshData& mesh, std::uint32_t texCoord);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -4,7 +4,7 @@
 #include <array>
 #include <string_view>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 namespace {
 
 constexpr std::array<std::string_view, 5> kSupportedExtensions{"EXT_mesh_gpu_instancing", "KHR_lights_punctual",
@@ -40,4 +40,4 @@ void checkSupport(const Document& document, std::vector<std::string>& notes)
         notes.push_back(fmt::format("animations are not supported: {} animation(s) ignored", model.animations.size()));
 }
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-namespace penumbra::scene::gltf {
+namespace penumbra::gltf {
 
 // Fails for an extension in extensionsRequired that the loader does not implement; adds one note per
 // file for each feature it leaves out (skins, morph targets, animations, extensions outside the
 // supported list), so nothing is dropped silently.
 void checkSupport(const Document& document, std::vector<std::string>& notes);
 
-} // namespace penumbra::scene::gltf
+} // namespace penumbra::gltf

@@ -9,14 +9,14 @@
 #include <string>
 #include <vector>
 
-namespace penumbra::scene {
+namespace penumbra::gltf {
 
 // A glTF file that cannot be read, or that refers to something it does not hold. what() starts
 // with the file's path and names the element, e.g. "scene.gltf: mesh 2 ('Cube') primitive 0:
 // accessor 5 (indices) refers to vertex 40 but POSITION has 24".
-class GltfError : public SceneError {
+class GltfError : public scene::SceneError {
 public:
-    using SceneError::SceneError;
+    using scene::SceneError::SceneError;
 };
 
 // Choices of loadGltf.
@@ -28,7 +28,7 @@ struct GltfOptions {
 
 // A loaded glTF file: the scene and the loader's notes.
 struct GltfScene {
-    Scene scene;
+    penumbra::scene::Scene scene;
     // What was substituted or left out: defaults added, extensions and features ignored,
     // tinygltf's warnings. Nothing here changes whether the scene renders.
     std::vector<std::string> notes;
@@ -58,7 +58,7 @@ struct GltfScene {
 // - no light: defaultSun(); no camera: framingCamera() of the scene's bounds.
 // Before anything is read the file is checked as the Khronos glTF Validator checks it: the type, range and
 // enum value of every property read, required properties, every index, the node hierarchy, the byte ranges
-// of buffers, views and accessors, and the limits of src/gltf/GltfLimits.hpp and GltfImages.hpp (file,
+// of buffers, views and accessors, and the limits of gltf/src/GltfLimits.hpp and GltfImages.hpp (file,
 // buffer and accessor sizes, object counts, node depth, picture sizes). A bad file's error names the JSON
 // pointer of the offending value: "scene.gltf: /nodes/17/scale: expected an array of 3 numbers, got -1".
 // A primitive without POSITION is skipped with a note; the deviations the validator reports but
@@ -73,4 +73,4 @@ GltfScene loadGltf(std::span<const std::uint8_t> bytes, const std::string& name,
 
 inline constexpr float kDefaultRangePerSqrtIntensity = 16.0f;
 
-} // namespace penumbra::scene
+} // namespace penumbra::gltf
