@@ -80,7 +80,7 @@ sanitize: deps
 SANITIZE_CI_TARGETS = penumbra_unit_tests penumbra_shadow_unit_tests penumbra_scene_tests penumbra_gpu_tests \
 	penumbra_replay_gltf penumbra_replay_shadow_settings penumbra_replay_image penumbra_replay_shader \
 	penumbra_replay_command_line
-SANITIZE_CI_TESTS = ^(unit|shadows|scene|fuzz)\.|^(vulkan|opengl)\.
+SANITIZE_CI_TESTS = ^(unit|shadows|scene|gltf|fuzz)\.|^(vulkan|opengl)\.
 sanitize-ci: deps
 	@cmake -S . -B build-sanitize-ci $(call GENERATOR,build-sanitize-ci) -DPENUMBRA_WERROR=ON -DPENUMBRA_SANITIZE=ON \
 		-DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O0 -g1" --log-level=WARNING
@@ -127,7 +127,7 @@ format: deps
 # clang-tidy's small .clang-tidy set over the library and the tools, from the build's compile_commands.json.
 tidy: deps
 	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DCMAKE_EXPORT_COMPILE_COMMANDS=ON --log-level=WARNING
-	@run-clang-tidy -quiet -p $(BUILD) '/(rhi|backends|shadows|scene|render|parity|apps)/'
+	@run-clang-tidy -quiet -p $(BUILD) '/(rhi|imageio|backends|shadows|scene|render|parity|apps)/'
 
 clean:
 	@rm -rf $(BUILD) build-sanitize build-sanitize-ci build-tsan build-fuzz out

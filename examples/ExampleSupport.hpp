@@ -3,7 +3,7 @@
 // What every example shares: --backend B (any configuration name, default vulkan) and writing
 // the picture as a PNG into the current folder.
 
-#include <penumbra/rhi/ImageFiles.hpp>
+#include <penumbra/imageio/ImageFiles.hpp>
 
 #include <stdexcept>
 #include <string>
@@ -29,7 +29,7 @@ inline std::string backendArgument(int argc, char** argv, std::string* file = nu
 // An RGBA8 read-back (row 0 at the top, as every Penumbra readback) as a PNG.
 inline void writePng(const std::string& path, const penumbra::rhi::Image& image)
 {
-    penumbra::rhi::writePngFile(path, image);
+    penumbra::imageio::writePngFile(path, image);
 }
 
 } // namespace examples

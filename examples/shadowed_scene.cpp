@@ -3,8 +3,8 @@
 #include "ExampleSupport.hpp"
 
 #include <penumbra/backends/CreateDevice.hpp>
+#include <penumbra/gltf/GltfLoader.hpp>
 #include <penumbra/render/SceneRenderer.hpp>
-#include <penumbra/scene/GltfLoader.hpp>
 #include <penumbra/scene/TestScenes.hpp>
 
 #include <iostream>
@@ -17,7 +17,7 @@ scene::Scene loadScene(const std::string& file)
 {
     if (file.empty())
         return scene::makeShadowTestScene();
-    scene::GltfScene loaded = scene::loadGltf(file);
+    gltf::GltfScene loaded = gltf::loadGltf(file);
     for (const std::string& note : loaded.notes)
         std::cout << file << ": " << note << '\n';
     return std::move(loaded.scene);

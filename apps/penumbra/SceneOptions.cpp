@@ -5,8 +5,8 @@
 #include "LightOverrides.hpp"
 #include "RenderSettings.hpp"
 
+#include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/scene/GltfLoader.hpp"
 #include "penumbra/scene/LocalLights.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
@@ -277,10 +277,10 @@ LoadedScene loadScene(const SceneOptions& options)
     LoadedScene loaded;
     const std::optional<LookAt> lookAt = parseLookAt(options.camera);
     if (isGltfPath(options.scene)) {
-        scene::GltfOptions gltf;
+        gltf::GltfOptions gltfOptions;
         if (!options.camera.empty() && !lookAt)
-            gltf.camera = options.camera;
-        scene::GltfScene file = scene::loadGltf(options.scene, gltf);
+            gltfOptions.camera = options.camera;
+        gltf::GltfScene file = gltf::loadGltf(options.scene, gltfOptions);
         loaded.scene = std::move(file.scene);
         loaded.notes = std::move(file.notes);
     } else {

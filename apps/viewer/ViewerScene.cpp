@@ -3,7 +3,7 @@
 #include "LightOverrides.hpp"
 #include "ShadowScene.hpp"
 
-#include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/gltf/GltfLoader.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -15,7 +15,7 @@ scene::Scene loadViewerScene(const std::string& name, const std::string& filter,
 {
     const std::filesystem::path extension = std::filesystem::path(name).extension();
     scene::Scene scene =
-        extension == ".gltf" || extension == ".glb" ? scene::loadGltf(name).scene : apps::namedScene(name);
+        extension == ".gltf" || extension == ".glb" ? gltf::loadGltf(name).scene : apps::namedScene(name);
     apps::applyLightOverrides(scene, filter, lightSize);
     return scene;
 }

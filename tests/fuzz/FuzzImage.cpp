@@ -7,7 +7,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     tinygltf::Image image;
-    if (penumbra::scene::gltf::decodeImage({data, size}, image).empty() &&
+    if (penumbra::gltf::decodeImage({data, size}, image).empty() &&
         image.image.size() != std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.component) *
                                   std::size_t(image.bits / 8))
         __builtin_trap();

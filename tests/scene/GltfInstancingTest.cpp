@@ -113,8 +113,8 @@ TEST_F(GltfLoaderTest, InstancesLoadAsTheObjectsOfANodePerInstance)
 {
     GltfBuilder instanced = instancedScene(threeInstances());
     ASSERT_EQ(instanced.json()["extensionsRequired"], nlohmann::json::array({"EXT_mesh_gpu_instancing"}));
-    const GltfScene loaded = loadGltf(write(instanced, "instanced.gltf"));
-    expectSameObjects(loaded.scene, loadGltf(write(plainScene(threeInstances()), "plain.gltf")).scene, 1e-5f);
+    const gltf::GltfScene loaded = gltf::loadGltf(write(instanced, "instanced.gltf"));
+    expectSameObjects(loaded.scene, gltf::loadGltf(write(plainScene(threeInstances()), "plain.gltf")).scene, 1e-5f);
     ASSERT_EQ(loaded.scene.objects.size(), 3u);
     EXPECT_EQ(loaded.scene.objects[2].name, "trees/instance 2");
     // One mesh for the two unmirrored instances, a copy with reversed winding for the mirrored one.
@@ -142,20 +142,20 @@ TEST_F(GltfLoaderTest, MissingInstanceAttributesAreTheIdentity)
                                                   {.scales = all.scales}};
     for (std::size_t i = 0; i < partial.size(); ++i) {
         SCOPED_TRACE(i);
-        expectSameObjects(loadGltf(write(instancedScene(partial[i]), "instanced.gltf")).scene,
-                          loadGltf(write(plainScene(partial[i]), "plain.gltf")).scene, 1e-5f);
+        expectSameObjects(gltf::loadGltf(write(instancedScene(partial[i]), "instanced.gltf")).scene,
+                          gltf::loadGltf(write(plainScene(partial[i]), "plain.gltf")).scene, 1e-5f);
     }
 }
 
 TEST_F(GltfLoaderTest, NormalizedByteAndShortRotationsAreDecoded)
 {
-    const Scene exact = loadGltf(write(instancedScene(threeInstances()), "float.gltf")).scene;
+    const Scene exact = gltf::loadGltf(write(instancedScene(threeInstances()), "float.gltf")).scene;
     // Rounding each component to a step of the integer type (1/32767, 1/127) turns an instance by up to about a step;
     // times the scales (up to 2 by the instance and 2 by the node) the transforms differ by a few steps (here at
     // most 4.2e-5 for SHORT, 1.8e-3 for BYTE).
-    expectSameObjects(loadGltf(write(instancedScene(threeInstances(Component::Short)), "short.gltf")).scene, exact,
-                      1e-4f);
-    expectSameObjects(loadGltf(write(instancedScene(threeInstances(Component::Byte)), "byte.gltf")).scene, exact,
+    expectSameObjects(gltf::loadGltf(write(instancedScene(threeInstances(Component::Short)), "short.gltf")).scene,
+                      exact, 1e-4f);
+    expectSameObjects(gltf::loadGltf(write(instancedScene(threeInstances(Component::Byte)), "byte.gltf")).scene, exact,
                       5e-3f);
 }
 
@@ -168,7 +168,7 @@ TEST_F(GltfLoaderTest, InstancesInheritTheNodesShadowExtras)
     nlohmann::json parent = parentNode(testing::addInstancedNode(b, trees, threeInstances()));
     parent["extras"]["penumbra"] = {{"castShadows", "shadowsOnly"}, {"receiveShadows", false}};
     b.addRoot(b.add("nodes", parent));
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     ASSERT_EQ(loaded.scene.objects.size(), 3u);
     for (const Object& object : loaded.scene.objects) {
         EXPECT_EQ(object.castShadows, ShadowCasting::ShadowsOnly) << object.name;
@@ -181,7 +181,7 @@ TEST_F(GltfLoaderTest, InstancesOfAMeshOfTwoPrimitivesAreNamedByInstanceAndPrimi
 {
     GltfBuilder b = instancedScene(threeInstances());
     b.json()["meshes"][0]["primitives"].push_back(b.json()["meshes"][0]["primitives"][0]);
-    const Scene scene = loadGltf(write(b)).scene;
+    const Scene scene = gltf::loadGltf(write(b)).scene;
     ASSERT_EQ(scene.objects.size(), 6u);
     EXPECT_EQ(scene.objects[0].name, "trees/instance 0/0");
     EXPECT_EQ(scene.objects[3].name, "trees/instance 1/1");
@@ -196,7 +196,7 @@ TEST_F(GltfLoaderTest, InstancesScaledToNothingAndApplicationAttributesAreNoted)
     b.json()["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"]["_ID"] =
         b.addAccessor({reinterpret_cast<const std::uint8_t*>(ids.data()), ids.size() * sizeof(float)}, ids.size(),
                       "SCALAR", Component::Float);
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     ASSERT_EQ(loaded.scene.objects.size(), 2u);
     EXPECT_EQ(loaded.scene.objects[1].name, "trees/instance 2");
     const std::string notes = joined(loaded.notes);
@@ -295,7 +295,7 @@ TEST_F(GltfLoaderTest, TooManyInstancesInAllAreRefused)
     EXPECT_CONTAINS(errorOf(write(b)), "scene.gltf: /nodes/2/extensions/EXT_mesh_gpu_instancing: the file's instanced "
                                        "nodes reach 120000 instances here, over the limit of 100000");
     b.json()["accessors"][4]["count"] = 50000;
-    EXPECT_EQ(loadGltf(write(b)).scene.objects.size(), 100000u);
+    EXPECT_EQ(gltf::loadGltf(write(b)).scene.objects.size(), 100000u);
 }
 
 } // namespace

@@ -2,7 +2,7 @@
 // The glTF loader tests' fixture: files written per test into a folder of their own, and their errors.
 #include "GltfBuilder.hpp"
 
-#include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/gltf/GltfLoader.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,11 +37,11 @@ protected:
     }
 
     // The GltfError's message for loading `path`, or "" when it loads.
-    static std::string errorOf(const std::filesystem::path& path, const GltfOptions& options = {})
+    static std::string errorOf(const std::filesystem::path& path, const gltf::GltfOptions& options = {})
     {
         try {
-            loadGltf(path, options);
-        } catch (const GltfError& error) {
+            gltf::loadGltf(path, options);
+        } catch (const gltf::GltfError& error) {
             return error.what();
         }
         return {};

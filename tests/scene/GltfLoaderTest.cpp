@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "penumbra/scene/GltfLoader.hpp"
+#include "penumbra/gltf/GltfLoader.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -30,7 +30,7 @@ TEST_F(GltfLoaderTest, HierarchyMultipliesTransformsInOrder)
     b.addRoot(b.add("nodes", {{"name", "parent"},
                               {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 10, 0, 1}},
                               {"children", {child}}}));
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     ASSERT_EQ(loaded.scene.objects.size(), 1u);
     const Object& object = loaded.scene.objects[0];
     EXPECT_EQ(object.name, "child");
@@ -48,9 +48,9 @@ TEST_F(GltfLoaderTest, HierarchyMultipliesTransformsInOrder)
 
 TEST_F(GltfLoaderTest, EveryIndexSizeAndNoIndicesGiveTheSameTriangles)
 {
-    const GltfScene reference = loadGltf(write(cubeScene(Component::UnsignedInt), "u32.gltf"));
+    const gltf::GltfScene reference = gltf::loadGltf(write(cubeScene(Component::UnsignedInt), "u32.gltf"));
     for (const Component component : {Component::UnsignedByte, Component::UnsignedShort}) {
-        const GltfScene loaded = loadGltf(write(cubeScene(component), "small.gltf"));
+        const gltf::GltfScene loaded = gltf::loadGltf(write(cubeScene(component), "small.gltf"));
         EXPECT_EQ(loaded.scene.meshes[0].indices, reference.scene.meshes[0].indices);
     }
     // Without indices: the indexed triangles' vertices written out three by three.
@@ -62,7 +62,7 @@ TEST_F(GltfLoaderTest, EveryIndexSizeAndNoIndicesGiveTheSameTriangles)
         normals.push_back(indexed.vertices[i].normal);
     }
     primitive(b) = {{"attributes", {{"POSITION", b.addPositions(positions)}, {"NORMAL", b.addNormals(normals)}}}};
-    const GltfScene loaded = loadGltf(write(b, "none.gltf"));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b, "none.gltf"));
     const MeshData& unindexed = loaded.scene.meshes[0];
     ASSERT_EQ(unindexed.indices.size(), 36u);
     for (std::size_t i = 0; i < 36; ++i)
@@ -96,7 +96,7 @@ TEST_F(GltfLoaderTest, InterleavedAttributesAndNormalizedTexCoords)
         b.add("meshes",
               {{"primitives", {{{"attributes", {{"POSITION", position}, {"NORMAL", normal}, {"TEXCOORD_0", uv}}}}}}});
     b.addRoot(b.add("nodes", {{"mesh", mesh}}));
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     const MeshData& read = loaded.scene.meshes.at(0);
     ASSERT_EQ(read.vertices.size(), 3u);
     EXPECT_EQ(read.indices, (std::vector<std::uint32_t>{0, 1, 2}));
@@ -112,7 +112,7 @@ TEST_F(GltfLoaderTest, MissingNormalsAreComputedFlat)
 {
     GltfBuilder b = cubeScene();
     primitive(b)["attributes"].erase("NORMAL");
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     const MeshData& mesh = loaded.scene.meshes[0];
     ASSERT_EQ(mesh.vertices.size(), 36u);
     for (std::size_t t = 0; t < 12; ++t) {
@@ -130,7 +130,7 @@ TEST_F(GltfLoaderTest, MirroringNodesGetReversedWindingSoOutsidesStayFrontFacing
     GltfBuilder b = cubeScene();
     b.json()["nodes"][0]["scale"] = {-1, 1, 1};
     b.addRoot(b.add("nodes", {{"name", "plain"}, {"mesh", 0}, {"translation", {5, 0, 0}}}));
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     ASSERT_EQ(loaded.scene.objects.size(), 2u);
     EXPECT_NE(loaded.scene.objects[0].mesh, loaded.scene.objects[1].mesh) << "the mirrored node needs its own copy";
     for (const Object& object : loaded.scene.objects) {
@@ -161,14 +161,14 @@ TEST_F(GltfLoaderTest, CamerasByOrderAndByName)
         {{"name", "side"}, {"camera", 1}, {"translation", {10, 0, 0}}, {"rotation", {0, 0.7071068, 0, 0.7071068}}}));
     const std::filesystem::path path = write(b);
 
-    const Camera first = loadGltf(path).scene.camera;
+    const Camera first = gltf::loadGltf(path).scene.camera;
     EXPECT_FLOAT_EQ(first.fovY, 0.5f);
     EXPECT_EQ(first.position, glm::vec3(0, 0, 10));
     EXPECT_NEAR(glm::dot(first.forward, glm::vec3(0, 0, -1)), 1.0f, 1e-6f);
     EXPECT_FLOAT_EQ(first.farPlane, 50.0f);
 
     for (const char* name : {"second", "side"}) {
-        const Camera second = loadGltf(path, {.camera = name}).scene.camera;
+        const Camera second = gltf::loadGltf(path, {.camera = name}).scene.camera;
         EXPECT_FLOAT_EQ(second.fovY, 0.9f);
         EXPECT_NEAR(glm::dot(second.forward, glm::vec3(-1, 0, 0)), 1.0f, 1e-6f);
         EXPECT_NEAR(glm::dot(second.up, glm::vec3(0, 1, 0)), 1.0f, 1e-6f);
@@ -182,7 +182,7 @@ TEST_F(GltfLoaderTest, CamerasByOrderAndByName)
 
 TEST_F(GltfLoaderTest, PunctualLightsOfAllThreeKinds)
 {
-    const GltfScene loaded = loadGltf(write(testing::exampleScene()));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(testing::exampleScene()));
     const Scene& scene = loaded.scene;
     ASSERT_EQ(scene.lights.size(), 1u);
     ASSERT_EQ(scene.spotLights.size(), 1u);
@@ -199,13 +199,13 @@ TEST_F(GltfLoaderTest, PunctualLightsOfAllThreeKinds)
     EXPECT_EQ(spot.color, glm::vec3(1.0f, 0.9f, 0.7f));
     const PointLight& point = scene.pointLights[0];
     EXPECT_EQ(point.position, glm::vec3(-3, 3, 3));
-    EXPECT_FLOAT_EQ(point.range, kDefaultRangePerSqrtIntensity * std::sqrt(5.0f)); // no range in the file
+    EXPECT_FLOAT_EQ(point.range, gltf::kDefaultRangePerSqrtIntensity * std::sqrt(5.0f)); // no range in the file
     EXPECT_EQ(scene.camera.position, glm::vec3(0, 5, 9));
 }
 
 TEST_F(GltfLoaderTest, AlphaModesBecomeCasterModes)
 {
-    const Scene scene = loadGltf(write(testing::exampleScene())).scene;
+    const Scene scene = gltf::loadGltf(write(testing::exampleScene())).scene;
     const auto material = [&](const char* object) {
         return scene.materialOf(scene.objects.at(*scene.findObject(object)));
     };
@@ -228,7 +228,7 @@ TEST_F(GltfLoaderTest, BaseColorTextureIsDecodedToRgba8)
         b.add("materials",
               {{"name", "textured"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
     for (const char* name : {"textured.gltf", "textured.glb"}) {
-        const Scene scene = loadGltf(write(b, name)).scene;
+        const Scene scene = gltf::loadGltf(write(b, name)).scene;
         ASSERT_EQ(scene.textures.size(), 1u);
         EXPECT_EQ(scene.textures[0].width, 2u);
         EXPECT_EQ(scene.textures[0].height, 2u);
@@ -243,12 +243,13 @@ TEST_F(GltfLoaderTest, BaseColorTextureIsDecodedToRgba8)
 // glTF samplers (section 5.26) map onto TextureSampler field by field; base colour textures are sRGB.
 TEST_F(GltfLoaderTest, SamplersReachTheSceneTextures)
 {
-    const Scene scene = loadGltf(write(testing::sampledTexturesScene(
-                                     {{{"magFilter", 9728}, {"minFilter", 9986}, {"wrapS", 33648}, {"wrapT", 33071}},
-                                      nullptr,
-                                      {{"minFilter", 9729}, {"wrapT", 33648}},
-                                      {{"magFilter", 9729}, {"minFilter", 9985}, {"wrapS", 33071}}})))
-                            .scene;
+    const Scene scene =
+        gltf::loadGltf(write(testing::sampledTexturesScene(
+                           {{{"magFilter", 9728}, {"minFilter", 9986}, {"wrapS", 33648}, {"wrapT", 33071}},
+                            nullptr,
+                            {{"minFilter", 9729}, {"wrapT", 33648}},
+                            {{"magFilter", 9729}, {"minFilter", 9985}, {"wrapS", 33071}}})))
+            .scene;
     ASSERT_EQ(scene.textures.size(), 4u) << "one scene texture per glTF texture";
     const auto sampler = [&](int cube) {
         const Material& m = scene.materialOf(scene.objects.at(*scene.findObject("cube " + std::to_string(cube))));
@@ -290,7 +291,7 @@ TEST_F(GltfLoaderTest, UnknownSamplerCodesAreRefused)
 
 TEST_F(GltfLoaderTest, DefaultsForASceneWithoutLightsOrCamera)
 {
-    const GltfScene loaded = loadGltf(write(cubeScene()));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(cubeScene()));
     ASSERT_EQ(loaded.scene.lights.size(), 1u);
     EXPECT_EQ(loaded.scene.lights[0].name, "default sun");
     EXPECT_LT(loaded.scene.lights[0].direction.y, 0.0f);
@@ -312,10 +313,10 @@ TEST_F(GltfLoaderTest, DefaultsForASceneWithoutLightsOrCamera)
 TEST_F(GltfLoaderTest, GlbAndExternalBufferLoadLikeDataUris)
 {
     const GltfBuilder b = testing::exampleScene();
-    const Scene inline_ = loadGltf(write(b)).scene;
+    const Scene inline_ = gltf::loadGltf(write(b)).scene;
     b.writeGltf(folder_ / "external.gltf", true);
     for (const std::filesystem::path& path : {write(b, "scene.glb"), folder_ / "external.gltf"}) {
-        const Scene other = loadGltf(path).scene;
+        const Scene other = gltf::loadGltf(path).scene;
         ASSERT_EQ(other.meshes.size(), inline_.meshes.size()) << path;
         for (std::size_t m = 0; m < other.meshes.size(); ++m)
             EXPECT_EQ(other.meshes[m].indices, inline_.meshes[m].indices);
@@ -329,7 +330,7 @@ TEST_F(GltfLoaderTest, APrimitiveWithoutPositionIsSkippedWithANote)
     nlohmann::json positionless = primitive(b);
     positionless["attributes"].erase("POSITION");
     b.json()["meshes"][0]["primitives"].push_back(positionless);
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     EXPECT_EQ(loaded.scene.objects.size(), 1u);
     std::string notes;
     for (const std::string& note : loaded.notes)
@@ -342,7 +343,7 @@ TEST_F(GltfLoaderTest, ToleratedDeviationsAreNotedOncePerKind)
     GltfBuilder b = cubeScene();
     b.json()["accessors"][std::size_t(attribute(b, "POSITION"))]["max"] = {2.0, 2.0, 2.0};
     b.json()["accessors"][std::size_t(attribute(b, "POSITION"))]["min"] = {-2.0, -2.0, -2.0};
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     std::size_t mismatches = 0;
     for (const std::string& note : loaded.notes)
         mismatches +=
@@ -409,7 +410,7 @@ TEST_F(GltfLoaderTest, AsManyNodesAsTheLimitLoad)
         nodes.push_back({{"mesh", 0}, {"translation", {i % 100, 0, i / 100}}});
         roots.push_back(i);
     }
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     EXPECT_EQ(loaded.scene.objects.size(), 100000u);
     EXPECT_EQ(loaded.scene.meshes.size(), 1u);
 }
@@ -559,7 +560,7 @@ TEST_F(GltfLoaderTest, ALightsExtrasSetItsStaticMapMode)
     auto& lights = b.json()["extensions"]["KHR_lights_punctual"]["lights"];
     lights[0]["extras"]["shadowUpdate"] = "onDemand";
     lights[2]["extras"]["shadowUpdate"] = "everyFrame";
-    const Scene scene = loadGltf(write(b)).scene;
+    const Scene scene = gltf::loadGltf(write(b)).scene;
     EXPECT_EQ(scene.lights[0].shadowUpdate, ShadowUpdate::OnDemand);
     EXPECT_EQ(scene.spotLights[0].shadowUpdate, ShadowUpdate::Settings);
     EXPECT_EQ(scene.pointLights[0].shadowUpdate, ShadowUpdate::EveryFrame);

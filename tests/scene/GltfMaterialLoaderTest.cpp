@@ -46,7 +46,7 @@ TEST_F(GltfLoaderTest, MaterialFactorsTexturesAndExtensionsAreRead)
            {"KHR_materials_unlit", nlohmann::json::object()}}}});
     b.addRoot(b.add("nodes", {{"mesh", testing::addQuadMesh(b, "quad", material, {.mirroredUv1 = true})}}));
     b.json()["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_unlit"};
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     for (const std::string& note : loaded.notes)
         EXPECT_EQ(note.find("extension"), std::string::npos) << "a supported extension is noted: " << note;
     const Material& m = loaded.scene.materials.at(loaded.scene.objects[0].material);
@@ -97,17 +97,17 @@ TEST_F(GltfLoaderTest, TextureTransformMatrixRotatesAsTheSampleModelsDo)
 TEST_F(GltfLoaderTest, VertexColoursOfEveryStorageAreRead)
 {
     const GltfBuilder bytes = quadScene({{"name", "rgb"}}, {.color = glm::vec4(0.2f, 0.6f, 1.0f, 1.0f)});
-    const MeshData rgb = loadGltf(write(bytes, "rgb.gltf")).scene.meshes.at(0);
+    const MeshData rgb = gltf::loadGltf(write(bytes, "rgb.gltf")).scene.meshes.at(0);
     for (const Vertex& v : rgb.vertices) {
         EXPECT_NEAR(v.color.r, 51.0f / 255.0f, 1e-6f);
         EXPECT_NEAR(v.color.g, 153.0f / 255.0f, 1e-6f);
         EXPECT_EQ(v.color.a, 1.0f) << "VEC3 colours are opaque";
     }
     const GltfBuilder floats = quadScene({{"name", "rgba"}}, {.color = glm::vec4(0.2f, 0.6f, 1.0f, 0.5f)});
-    EXPECT_EQ(loadGltf(write(floats, "rgba.gltf")).scene.meshes.at(0).vertices[2].color,
+    EXPECT_EQ(gltf::loadGltf(write(floats, "rgba.gltf")).scene.meshes.at(0).vertices[2].color,
               glm::vec4(0.2f, 0.6f, 1.0f, 0.5f));
     const GltfBuilder none = quadScene({{"name", "plain"}});
-    EXPECT_EQ(loadGltf(write(none, "none.gltf")).scene.meshes.at(0).vertices[0].color, glm::vec4(1.0f));
+    EXPECT_EQ(gltf::loadGltf(write(none, "none.gltf")).scene.meshes.at(0).vertices[0].color, glm::vec4(1.0f));
 }
 
 TEST_F(GltfLoaderTest, TangentsAreReadOrComputedForNormalTextures)
@@ -120,7 +120,7 @@ TEST_F(GltfLoaderTest, TangentsAreReadOrComputedForNormalTextures)
     const int computed = testing::addQuadMesh(b, "computed", 0);
     b.addRoot(b.add("nodes", {{"mesh", withTangents}}));
     b.addRoot(b.add("nodes", {{"mesh", computed}}));
-    const Scene scene = loadGltf(write(b)).scene;
+    const Scene scene = gltf::loadGltf(write(b)).scene;
     EXPECT_EQ(scene.meshes.at(0).vertices[0].tangent, glm::vec4(0.0f, 1.0f, 0.0f, -1.0f)) << "TANGENT as written";
     // u runs along +x and v down the image along -y: the tangent is +x, and the bitangent cross(n, t) = +y points up
     // the image, as a normal texture's +Y does, so w = +1.
@@ -138,7 +138,7 @@ TEST_F(GltfLoaderTest, ComputedTangentsFollowTheNormalTexturesUvSetAndMirroring)
     const int material =
         b.add("materials", {{"name", "uv1"}, {"normalTexture", {{"index", texture}, {"texCoord", 1}}}});
     b.addRoot(b.add("nodes", {{"mesh", testing::addQuadMesh(b, "quad", material, {.mirroredUv1 = true})}}));
-    const Scene scene = loadGltf(write(b)).scene;
+    const Scene scene = gltf::loadGltf(write(b)).scene;
     for (const Vertex& v : scene.meshes.at(0).vertices) {
         EXPECT_NEAR(glm::distance(glm::vec3(v.tangent), glm::vec3(-1.0f, 0.0f, 0.0f)), 0.0f, 1e-6f);
         EXPECT_EQ(v.tangent.w, -1.0f);
@@ -148,7 +148,7 @@ TEST_F(GltfLoaderTest, ComputedTangentsFollowTheNormalTexturesUvSetAndMirroring)
 TEST_F(GltfLoaderTest, BlendMaterialsAreBlendedAndDitherCast)
 {
     const GltfBuilder b = quadScene({{"name", "glass"}, {"alphaMode", "BLEND"}});
-    const Material m = loadGltf(write(b)).scene.materials.at(0);
+    const Material m = gltf::loadGltf(write(b)).scene.materials.at(0);
     EXPECT_TRUE(m.blend);
     EXPECT_EQ(m.caster, CasterMode::Dither);
     EXPECT_FALSE(m.doubleSided);
@@ -162,7 +162,7 @@ TEST_F(GltfLoaderTest, UnsupportedFeaturesAreNamedOncePerFile)
     b.json()["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", 0}}};
     b.json()["nodes"][0]["skin"] = 0;
     b.addRoot(b.add("nodes", {{"name", "second"}, {"mesh", 0}, {"skin", 1}}));
-    const GltfScene loaded = loadGltf(write(b));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     std::string all;
     for (const std::string& note : loaded.notes)
         all += note + "\n";

@@ -96,7 +96,7 @@ TEST_F(GltfLoaderTest, TheRepositorysScenesAreValid)
     ASSERT_EQ(verdicts.size(), files.size()) << "is the glTF Validator installed (scripts/install-deps.sh)?";
     for (const std::filesystem::path& file : files) {
         EXPECT_EQ(verdicts.at(file.string()).errors, "") << file;
-        EXPECT_NO_THROW(loadGltf(file)) << file;
+        EXPECT_NO_THROW(gltf::loadGltf(file)) << file;
     }
 }
 
@@ -122,9 +122,9 @@ TEST_F(GltfLoaderTest, MutantsAreJudgedAsTheValidatorJudgesThem)
         std::string refusal;
         std::vector<std::string> notes;
         try {
-            notes = loadGltf(files[i]).notes;
+            notes = gltf::loadGltf(files[i]).notes;
             ++loaded;
-        } catch (const GltfError& error) {
+        } catch (const gltf::GltfError& error) {
             refusal = error.what();
         }
         const std::string context =

@@ -78,9 +78,9 @@ const Object& named(const Scene& scene, const char* name) { return scene.objects
 
 TEST_F(GltfLoaderTest, NodeExtrasSetShadowChoicesAndChildrenInheritThem)
 {
-    const GltfScene loaded =
-        loadGltf(write(familyScene({{"penumbra", {{"castShadows", "shadowsOnly"}}}},
-                                   {{"penumbra", {{"castShadows", "twoSided"}, {"receiveShadows", false}}}})));
+    const gltf::GltfScene loaded =
+        gltf::loadGltf(write(familyScene({{"penumbra", {{"castShadows", "shadowsOnly"}}}},
+                                         {{"penumbra", {{"castShadows", "twoSided"}, {"receiveShadows", false}}}})));
     EXPECT_EQ(named(loaded.scene, "parent").castShadows, ShadowCasting::ShadowsOnly);
     EXPECT_TRUE(named(loaded.scene, "parent").receiveShadows);
     EXPECT_EQ(named(loaded.scene, "plain child").castShadows, ShadowCasting::ShadowsOnly);
@@ -90,7 +90,7 @@ TEST_F(GltfLoaderTest, NodeExtrasSetShadowChoicesAndChildrenInheritThem)
 
 TEST_F(GltfLoaderTest, OtherToolsExtrasAreLeftAlone)
 {
-    const GltfScene loaded = loadGltf(write(familyScene({{"blenderProperty", 3}}, nullptr)));
+    const gltf::GltfScene loaded = gltf::loadGltf(write(familyScene({{"blenderProperty", 3}}, nullptr)));
     for (const Object& object : loaded.scene.objects) {
         EXPECT_EQ(object.castShadows, ShadowCasting::On);
         EXPECT_TRUE(object.receiveShadows);

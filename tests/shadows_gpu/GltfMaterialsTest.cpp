@@ -4,8 +4,8 @@
 #include "GpuTesting.hpp"
 #include "LitRendering.hpp"
 
+#include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/scene/GltfLoader.hpp"
 
 #include <array>
 #include <cmath>
@@ -98,7 +98,7 @@ protected:
                                            ("penumbra-materials-" + configuration() + "-" +
                                             ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".glb");
         declaringExtensions(b).writeGlb(path);
-        scene::Scene scene = scene::loadGltf(path).scene;
+        scene::Scene scene = gltf::loadGltf(path).scene;
         std::filesystem::remove(path);
         scene.lights = {{.name = "sun", .intensity = intensity, .direction = glm::normalize(direction)}};
         scene.camera = scene::lookAt({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 0.9f);

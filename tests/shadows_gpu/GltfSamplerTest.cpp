@@ -3,9 +3,9 @@
 #include "GltfBuilder.hpp"
 #include "GpuTesting.hpp"
 
+#include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/scene/GltfLoader.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -28,7 +28,7 @@ protected:
         const std::filesystem::path path =
             std::filesystem::temp_directory_path() / ("penumbra-samplers-" + configuration() + ".glb");
         b.writeGlb(path);
-        scene::Scene scene = scene::loadGltf(path).scene;
+        scene::Scene scene = gltf::loadGltf(path).scene;
         std::filesystem::remove(path);
         return scene;
     }

@@ -14,12 +14,12 @@
 #include "GpuTesting.hpp"
 #include "ShadowScene.hpp"
 
+#include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/parity/GoogleTest.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
 #include "penumbra/rhi/Configuration.hpp"
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/scene/GltfLoader.hpp"
 #include "penumbra/scene/Scene.hpp"
 
 #include <fmt/format.h>
@@ -92,7 +92,7 @@ scene::Scene gltfMaterialsScene()
     const std::filesystem::path path =
         std::filesystem::temp_directory_path() / fmt::format("penumbra-parity-materials-{}.glb", ::getpid());
     testing::materialsScene().writeGlb(path);
-    scene::Scene scene = scene::loadGltf(path).scene;
+    scene::Scene scene = gltf::loadGltf(path).scene;
     std::filesystem::remove(path);
     return scene;
 }

@@ -4,8 +4,8 @@
 #include "GpuTesting.hpp"
 #include "LitRendering.hpp"
 
+#include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/scene/GltfLoader.hpp"
 
 #include <array>
 #include <cstdio>
@@ -46,7 +46,7 @@ protected:
         const std::filesystem::path path =
             std::filesystem::temp_directory_path() / ("penumbra-textured-" + configuration() + ".glb");
         b.writeGlb(path);
-        scene::Scene scene = scene::loadGltf(path).scene;
+        scene::Scene scene = gltf::loadGltf(path).scene;
         std::filesystem::remove(path);
         scene.lights = {{.name = "sun", .intensity = 2.0f, .direction = glm::normalize(glm::vec3(0.5f, -1.0f, 0.0f))}};
         scene.camera = scene::lookAt({0.0f, 6.0f, 8.0f}, {0.0f, 0.0f, 0.0f}, 1.0f);

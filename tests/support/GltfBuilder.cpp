@@ -1,6 +1,6 @@
 #include "GltfBuilder.hpp"
 
-#include "penumbra/rhi/ImageFiles.hpp"
+#include "penumbra/imageio/ImageFiles.hpp"
 
 #include <glm/common.hpp>
 
@@ -54,7 +54,7 @@ std::vector<std::uint8_t> encodePng(std::uint32_t width, std::uint32_t height, s
     penumbra::rhi::Image image{width, height, penumbra::rhi::Format::RGBA8, {}};
     const auto* first = reinterpret_cast<const std::byte*>(rgba.data());
     image.bytes.assign(first, first + rgba.size());
-    const std::string png = penumbra::rhi::encodePng(image);
+    const std::string png = penumbra::imageio::encodePng(image);
     return {png.begin(), png.end()};
 }
 

@@ -6,7 +6,7 @@
 // Luminance is Rec. 709 luma of the stored values (PNG bytes / 255, EXR's R, G, B as they are); REGION is
 // WxH+X+Y in pixels from the top-left corner, the geometry syntax of ImageMagick and oiiotool.
 // Prints the measured figures either way; exits 0 when the expectation holds, 1 when not, 2 on bad usage.
-#include "penumbra/rhi/ImageFiles.hpp"
+#include "penumbra/imageio/ImageFiles.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -32,7 +32,7 @@ LumaImage readLuma(const std::string& file)
 {
     LumaImage image;
     if (file.ends_with(".exr")) {
-        const penumbra::rhi::FloatImage exr = penumbra::rhi::readExr(file);
+        const penumbra::imageio::FloatImage exr = penumbra::imageio::readExr(file);
         const auto r = exr.channelIndex("R"), g = exr.channelIndex("G"), b = exr.channelIndex("B");
         if (!r || !g || !b)
             throw std::runtime_error(file + ": needs R, G and B channels, has " + std::to_string(exr.channels.size()) +
@@ -43,7 +43,7 @@ LumaImage readLuma(const std::string& file)
                 image.luma.push_back(0.2126 * exr.at(x, y, *r) + 0.7152 * exr.at(x, y, *g) + 0.0722 * exr.at(x, y, *b));
         return image;
     }
-    const penumbra::rhi::Image png = penumbra::rhi::readPng(file);
+    const penumbra::rhi::Image png = penumbra::imageio::readPng(file);
     image = {int(png.width), int(png.height), {}};
     for (std::size_t i = 0; i < png.bytes.size(); i += 4)
         image.luma.push_back(
@@ -104,7 +104,7 @@ bool check(const std::vector<std::string>& args)
         return args[1] == "darker" ? a.mean < b.mean - margin : a.mean > b.mean + margin;
     }
     if (args.size() == 3 && args[1] == "depth") {
-        const penumbra::rhi::FloatImage depth = penumbra::rhi::readExr(args[0]);
+        const penumbra::imageio::FloatImage depth = penumbra::imageio::readExr(args[0]);
         const std::string found = fmt::format("{}x{}", depth.width, depth.height);
         std::printf("%s: %s with %zu float channel(s) (need %s with 1)\n", args[0].c_str(), found.c_str(),
                     depth.channels.size(), args[2].c_str());

@@ -1,5 +1,5 @@
+#include "penumbra/imageio/ImageFiles.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/rhi/ImageFiles.hpp"
 
 #include "ScratchFolder.hpp"
 
@@ -9,6 +9,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+namespace imageio = penumbra::imageio;
 namespace rhi = penumbra::rhi;
 
 fs::path scratch(const char* name) { return penumbra::testing::scratchFolder("image-files-tests", name); }
@@ -38,8 +39,8 @@ TEST(ImageFiles, PngKeepsEveryByteAndRowOrder)
 {
     const fs::path file = scratch("png") / "gradient.png";
     const rhi::Image image = gradient(13, 5);
-    rhi::writePngFile(file, image);
-    const rhi::Image read = rhi::readPng(file);
+    imageio::writePngFile(file, image);
+    const rhi::Image read = imageio::readPng(file);
     EXPECT_EQ(read.width, 13u);
     EXPECT_EQ(read.height, 5u);
     EXPECT_EQ(read.bytes, image.bytes);
@@ -47,15 +48,15 @@ TEST(ImageFiles, PngKeepsEveryByteAndRowOrder)
 
 TEST(ImageFiles, PngEncodingIsTheSameBytesEveryTime)
 {
-    EXPECT_EQ(rhi::encodePng(gradient(9, 4)), rhi::encodePng(gradient(9, 4)));
+    EXPECT_EQ(imageio::encodePng(gradient(9, 4)), imageio::encodePng(gradient(9, 4)));
 }
 
 TEST(ImageFiles, ExrKeepsFloatValuesAndChannelNames)
 {
     const fs::path file = scratch("exr") / "depth.exr";
-    rhi::FloatImage depth{3, 2, {"Z"}, {0.0f, 0.25f, 1.0f, 1e-7f, 0.999999f, 0.5f}};
-    rhi::writeExrFile(file, depth);
-    const rhi::FloatImage read = rhi::readExr(file);
+    imageio::FloatImage depth{3, 2, {"Z"}, {0.0f, 0.25f, 1.0f, 1e-7f, 0.999999f, 0.5f}};
+    imageio::writeExrFile(file, depth);
+    const imageio::FloatImage read = imageio::readExr(file);
     EXPECT_EQ(read.width, 3u);
     EXPECT_EQ(read.height, 2u);
     EXPECT_EQ(read.channels, depth.channels);
@@ -66,9 +67,9 @@ TEST(ImageFiles, ExrKeepsFloatValuesAndChannelNames)
 TEST(ImageFiles, ExrChannelsAreFoundByName)
 {
     const fs::path file = scratch("rgba") / "picture.exr";
-    rhi::FloatImage picture{1, 1, {"R", "G", "B", "A"}, {0.1f, 0.2f, 0.3f, 1.0f}};
-    rhi::writeExrFile(file, picture);
-    const rhi::FloatImage read = rhi::readExr(file);
+    imageio::FloatImage picture{1, 1, {"R", "G", "B", "A"}, {0.1f, 0.2f, 0.3f, 1.0f}};
+    imageio::writeExrFile(file, picture);
+    const imageio::FloatImage read = imageio::readExr(file);
     ASSERT_TRUE(read.channelIndex("G"));
     EXPECT_EQ(read.at(0, 0, *read.channelIndex("G")), 0.2f);
     EXPECT_EQ(read.at(0, 0, *read.channelIndex("A")), 1.0f);
@@ -79,12 +80,12 @@ TEST(ImageFiles, BadInputIsANamedError)
 {
     const fs::path folder = scratch("bad");
     rhi::Image grey{2, 2, rhi::Format::R8, std::vector<std::byte>(4)};
-    expectFailure([&] { rhi::encodePng(grey); }, "PNG needs RGBA8");
-    expectFailure([&] { rhi::encodeExr({2, 2, {"Z"}, {1.0f}}); }, "needs 4 values, has 1");
-    expectFailure([&] { rhi::readPng(folder / "missing.png"); }, "missing.png: cannot read");
-    rhi::writePngFile(folder / "not-an.exr", gradient(2, 2));
-    expectFailure([&] { rhi::readExr(folder / "not-an.exr"); }, "not-an.exr: cannot read");
-    expectFailure([&] { rhi::writePngFile(folder / "grey.png", grey); },
+    expectFailure([&] { imageio::encodePng(grey); }, "PNG needs RGBA8");
+    expectFailure([&] { imageio::encodeExr({2, 2, {"Z"}, {1.0f}}); }, "needs 4 values, has 1");
+    expectFailure([&] { imageio::readPng(folder / "missing.png"); }, "missing.png: cannot read");
+    imageio::writePngFile(folder / "not-an.exr", gradient(2, 2));
+    expectFailure([&] { imageio::readExr(folder / "not-an.exr"); }, "not-an.exr: cannot read");
+    expectFailure([&] { imageio::writePngFile(folder / "grey.png", grey); },
                   "cannot write " + (folder / "grey.png").string());
     EXPECT_FALSE(fs::exists(folder / "grey.png"));
 }

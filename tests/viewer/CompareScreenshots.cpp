@@ -3,10 +3,10 @@
 //   panel <without-ui.png> <with-ui.png> <panel right edge x>: the pictures differ, and only left
 //   of the edge (where the panel is drawn).
 // Prints max difference, PSNR and differing pixels; exits 1 on failure, naming both files.
+#include "penumbra/imageio/ImageFiles.hpp"
 #include "penumbra/parity/ImageDifference.hpp"
 
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/rhi/ImageFiles.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -16,7 +16,7 @@
 
 namespace {
 
-using penumbra::rhi::readPng;
+using penumbra::imageio::readPng;
 
 int compareScene(const std::string& reference, const std::string& view, double minPsnr)
 {

@@ -1,8 +1,8 @@
 #include "penumbra/shadows/StaticShadowBake.hpp"
 
+#include "penumbra/imageio/ImageFiles.hpp"
 #include "penumbra/rhi/AtomicFile.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/rhi/ImageFiles.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -21,12 +21,12 @@ constexpr int kVersion = 1;
 
 void writeDepthFile(const std::filesystem::path& path, const BakedShadowMap& map)
 {
-    rhi::writeExrFile(path, {map.size, map.size * std::uint32_t(map.frusta.size()), {"Z"}, map.depth});
+    imageio::writeExrFile(path, {map.size, map.size * std::uint32_t(map.frusta.size()), {"Z"}, map.depth});
 }
 
 std::vector<float> readDepthFile(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height)
 {
-    rhi::FloatImage depth = rhi::readExr(path);
+    imageio::FloatImage depth = imageio::readExr(path);
     if (depth.width != width || depth.height != height || depth.channels.size() != 1)
         throw rhi::Error(fmt::format("{}: {}x{} with {} channels, the manifest gives {}x{} with 1", path.string(),
                                      depth.width, depth.height, depth.channels.size(), width, height));

@@ -7,7 +7,7 @@
 
 namespace penumbra::parity {
 
-// Writes through rhi/ImageFiles.hpp, hence rhi::writeFileAtomically (parent folders created, a
+// Writes through imageio/ImageFiles.hpp, hence rhi::writeFileAtomically (parent folders created, a
 // temporary file renamed into place); a failure throws rhi::Error "cannot write <path>: <reason>".
 void writePng(const std::filesystem::path& path, const rhi::Image& image);
 // The raw depth values as one 32-bit float channel, exactly as read back.

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "GltfDeviations.hpp"
+
+#include "penumbra/gltf/GltfLoader.hpp"
+
+#include <fmt/format.h>
+#include <tiny_gltf.h>
+
+#include <string>
+#include <string_view>
+
+namespace penumbra::gltf {
+
+// A parsed glTF model and the path its errors name.
+class Document {
+public:
+    Document(std::string path, tinygltf::Model model, Deviations deviations = {})
+        : path_(std::move(path)), model_(std::move(model)), deviations_(std::move(deviations))
+    {
+    }
+
+    const tinygltf::Model& model() const { return model_; }
+    // Reading accessors finds deviations too; they are the loader's bookkeeping, not the document's state.
+    Deviations& deviations() const { return deviations_; }
+
+    // Throws GltfError "<path>: <what>".
+    [[noreturn]] void fail(std::string_view what) const { throw GltfError(fmt::format("{}: {}", path_, what)); }
+
+    // model().<items>[index], or fail() naming `owner`, the kind and how many there are.
+    template <typename T>
+    const T& at(const std::vector<T>& items, int index, std::string_view kind, std::string_view owner) const
+    {
+        if (index < 0 || static_cast<std::size_t>(index) >= items.size())
+            fail(fmt::format("{}: {} {} does not exist (the file has {})", owner, kind, index, items.size()));
+        return items[static_cast<std::size_t>(index)];
+    }
+
+private:
+    std::string path_;
+    tinygltf::Model model_;
+    mutable Deviations deviations_;
+};
+
+// "mesh 2 ('Cube')", or "mesh 2" when unnamed.
+std::string describe(std::string_view kind, int index, const std::string& name);
+
+} // namespace penumbra::gltf

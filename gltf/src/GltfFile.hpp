@@ -1,0 +1,23 @@
+#pragma once
+
+#include "GltfDocument.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace penumbra::gltf {
+
+// Reads a .gltf (JSON) or .glb (binary container, glTF 2.0 section 4.4) file, told apart by content,
+// and checks it as the Khronos glTF Validator does (checkSchema, then the byte ranges of buffers,
+// buffer views and accessors once the buffers are read) within the limits of GltfLimits.hpp. Throws
+// GltfError "<path>: <JSON pointer>: <what>"; tinygltf's warnings become notes.
+Document readDocument(const std::filesystem::path& path, std::vector<std::string>& notes);
+
+// The same for a file's bytes, with external buffers and images looked up in `folder`.
+Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes, const std::filesystem::path& folder,
+                      std::vector<std::string>& notes);
+
+} // namespace penumbra::gltf

@@ -1,0 +1,124 @@
+#include "GltfImages.hpp"
+
+#include <fmt/format.h>
+#include <stb/stb_image.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <optional>
+
+namespace penumbra::gltf {
+namespace {
+
+// The signatures of PNG (RFC 2083, section 3.1) and JPEG (ITU T.81, annex B: an SOI marker and the
+// next marker's first byte).
+constexpr std::array<std::uint8_t, 8> kPng{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+constexpr std::array<std::uint8_t, 3> kJpeg{0xff, 0xd8, 0xff};
+
+template <std::size_t N>
+bool startsWith(std::span<const std::uint8_t> bytes, const std::array<std::uint8_t, N>& signature)
+{
+    return bytes.size() >= N && std::equal(signature.begin(), signature.end(), bytes.begin());
+}
+
+std::uint32_t bigEndian(std::span<const std::uint8_t> bytes, std::size_t at, std::size_t size)
+{
+    std::uint32_t value = 0;
+    for (std::size_t i = 0; i < size; ++i)
+        value = value << 8 | bytes[at + i];
+    return value;
+}
+
+struct Dimensions {
+    std::uint32_t width = 0, height = 0;
+};
+
+// The picture's size from its header, before any decoder sees it: PNG's IHDR chunk, first after the signature
+// (RFC 2083, section 4.1.1); JPEG's first start-of-frame marker SOF0 to SOF15 but DHT, JPG and DAC (ITU T.81,
+// B.2.2). Nothing for a header cut short.
+std::optional<Dimensions> headerDimensions(std::span<const std::uint8_t> bytes)
+{
+    if (startsWith(bytes, kPng))
+        return bytes.size() >= 24 ? std::optional(Dimensions{bigEndian(bytes, 16, 4), bigEndian(bytes, 20, 4)})
+                                  : std::nullopt;
+    for (std::size_t at = 2; at + 4 <= bytes.size();) {
+        if (bytes[at] != 0xff)
+            return std::nullopt;
+        const std::uint8_t marker = bytes[at + 1];
+        const std::uint32_t length = bigEndian(bytes, at + 2, 2);
+        if (marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc)
+            return at + 9 <= bytes.size()
+                       ? std::optional(Dimensions{bigEndian(bytes, at + 7, 2), bigEndian(bytes, at + 5, 2)})
+                       : std::nullopt;
+        at += 2 + length;
+    }
+    return std::nullopt;
+}
+
+struct StbFree {
+    void operator()(void* pixels) const { stbi_image_free(pixels); }
+};
+
+} // namespace
+
+std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& image)
+{
+    if (!startsWith(bytes, kPng) && !startsWith(bytes, kJpeg))
+        return "is neither a PNG nor a JPEG picture";
+    if (bytes.size() > std::size_t(std::numeric_limits<int>::max()))
+        return fmt::format("has {} bytes, more than a picture may have", bytes.size());
+    if (const std::optional<Dimensions> header = headerDimensions(bytes);
+        header && (header->width > kMaxImageSide || header->height > kMaxImageSide ||
+                   std::uint64_t(header->width) * header->height > kMaxImageTexels))
+        return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", header->width, header->height,
+                           kMaxImageSide, kMaxImageTexels);
+    const int size = int(bytes.size());
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels))
+        return fmt::format("has an unreadable header: {}", stbi_failure_reason());
+    if (width <= 0 || height <= 0 || std::uint32_t(width) > kMaxImageSide || std::uint32_t(height) > kMaxImageSide ||
+        std::uint64_t(width) * std::uint64_t(height) > kMaxImageTexels)
+        return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", width, height, kMaxImageSide,
+                           kMaxImageTexels);
+    const bool wide = stbi_is_16_bit_from_memory(bytes.data(), size) != 0;
+    int decodedWidth = 0, decodedHeight = 0, decodedChannels = 0;
+    std::unique_ptr<void, StbFree> pixels(
+        wide ? static_cast<void*>(
+                   stbi_load_16_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &decodedChannels, 0))
+             : static_cast<void*>(
+                   stbi_load_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &decodedChannels, 0)));
+    if (!pixels)
+        return fmt::format("does not decode: {}", stbi_failure_reason());
+    if (decodedWidth != width || decodedHeight != height || decodedChannels < 1 || decodedChannels > 4)
+        return fmt::format("decoded to {}x{} texels of {} channels, its header says {}x{}", decodedWidth, decodedHeight,
+                           decodedChannels, width, height);
+    const std::size_t length =
+        std::size_t(width) * std::size_t(height) * std::size_t(decodedChannels) * (wide ? 2u : 1u);
+    image.width = width;
+    image.height = height;
+    image.component = decodedChannels;
+    image.bits = wide ? 16 : 8;
+    image.pixel_type = wide ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    const auto* begin = static_cast<const unsigned char*>(pixels.get());
+    image.image.assign(begin, begin + length);
+    return {};
+}
+
+bool loadImageData(tinygltf::Image* image, int index, std::string* error, std::string*, int, int,
+                   const unsigned char* bytes, int size, void* user)
+{
+    const std::string why = decodeImage({bytes, size > 0 ? std::size_t(size) : 0u}, *image);
+    if (why.empty())
+        return true;
+    const std::string failure = fmt::format("/images/{}: the picture {}", index, why);
+    if (user)
+        *static_cast<std::string*>(user) = failure;
+    if (error)
+        *error += failure;
+    return false;
+}
+
+} // namespace penumbra::gltf

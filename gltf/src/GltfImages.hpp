@@ -1,0 +1,28 @@
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace penumbra::gltf {
+
+// The largest picture a glTF image may decode to, checked from its header before any pixel is
+// decoded: 16384 texels a side (the largest 2D texture Vulkan and OpenGL implementations commonly
+// allow) and 2^26 texels in all (256 MiB as RGBA8).
+inline constexpr std::uint32_t kMaxImageSide = 16384;
+inline constexpr std::uint64_t kMaxImageTexels = std::uint64_t(1) << 26;
+
+// Decodes a PNG or JPEG image (glTF 2.0, section 3.8.1: the two image formats core glTF allows) into
+// `image` (width, height, component, bits, pixels as stored: 1 to 4 channels of 8 or 16 bits).
+// Returns what is wrong, or "" on success: an unknown or truncated format, a picture over the limits,
+// pixel data that does not decode.
+std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& image);
+
+// tinygltf's image-loading callback (TinyGLTF::SetImageLoader) over decodeImage; a failure is also
+// written to `user`, a std::string, as "/images/<index>: the picture <what is wrong>".
+bool loadImageData(tinygltf::Image* image, int index, std::string* error, std::string* warning, int requestedWidth,
+                   int requestedHeight, const unsigned char* bytes, int size, void* user);
+
+} // namespace penumbra::gltf

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "GltfDocument.hpp"
+
+#include "penumbra/scene/Scene.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+#include <utility>
+
+namespace penumbra::gltf {
+
+// Converts glTF materials into Scene::materials on first use, and the textures they use into
+// Scene::textures (RGBA8 with the texture's sampler), each once per colour space however many materials share it.
+class MaterialTable {
+public:
+    MaterialTable(const Document& document, scene::Scene& scene, std::vector<std::string>& notes)
+        : document_(document), scene_(scene), notes_(notes)
+    {
+    }
+
+    // The scene material for glTF material `index`, which `owner` (a primitive) refers to; -1 is
+    // glTF's default material (white, metallic 1, roughness 1, opaque).
+    std::uint32_t material(int index, const std::string& owner);
+
+private:
+    std::uint32_t texture(int textureIndex, const std::string& owner, scene::TextureColorSpace colorSpace);
+
+    const Document& document_;
+    scene::Scene& scene_;
+    std::vector<std::string>& notes_;
+    std::map<int, std::uint32_t> materials_;
+    std::map<std::pair<int, scene::TextureColorSpace>, std::uint32_t> textures_; // by glTF texture
+};
+
+} // namespace penumbra::gltf
