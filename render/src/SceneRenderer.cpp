@@ -336,8 +336,9 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
                         uniforms_.push(staticUniforms)};
     // Every spot and point light, listed in the clusters of the camera's view it may reach.
     const shadows::LightClusters clusters =
-        shadows::buildLightClusters(shadowCamera(camera, aspectOf(frame)), clusterLights(scene), kLitClusterGrid);
-    localLights_->update(localLightTexels(scene, localPlan_, staticShadows_->plan()), clusters);
+        shadows::buildLightClusters(shadowCamera(camera, aspectOf(frame)), clusterLights(gpuScene_.scene()),
+                                    kLitClusterGrid);
+    localLights_->update(localLightTexels(gpuScene_.scene(), localPlan_, staticShadows_->plan()), clusters);
     state.localLights = localLights_.get();
     state.litFrameUniforms = frameUniforms(camera, frame, LitView::Lit, clusters.grid);
     state.litFrame = uniforms_.push(state.litFrameUniforms);
