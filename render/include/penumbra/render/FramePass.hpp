@@ -38,8 +38,9 @@ const char* resourceUseName(ResourceUse use);
 // (FrameResources.hpp names the built-in ones). A pass may touch only what it declared.
 class FramePassBuilder {
 public:
-    // Throws rhi::Error for a name the frame does not know (listing those it does).
+    // The pass reads `resource`; throws rhi::Error for a name the frame does not know (listing those it does).
     void read(std::string_view resource, ResourceUse use = ResourceUse::Sampled);
+    // The pass writes `resource`; throws as read() does.
     void write(std::string_view resource, ResourceUse use = ResourceUse::RenderTarget);
     // The pass has effects outside the frame's textures (a readback, a counter): the graph never culls it.
     void keep();
@@ -55,6 +56,7 @@ private:
 // What a pass records with in FramePass::execute.
 class FramePassContext {
 public:
+    // The frame's command list, inside the pass's label.
     rhi::CommandList& commands() const { return commands_; }
     // A texture the pass declared; throws rhi::Error for one it did not.
     const rhi::Texture& texture(std::string_view resource) const;
@@ -84,6 +86,7 @@ public:
     virtual std::string name() const = 0;
     // Returns false where the pass does not run this frame (it then declares nothing).
     virtual bool setup(FramePassBuilder& builder) = 0;
+    // Records the pass's commands; called only where setup() said it runs and the graph did not cull it.
     virtual void execute(const FramePassContext& context) = 0;
 };
 
@@ -95,11 +98,14 @@ struct PassTiming {
 
 // Where a user's pass goes among the frame's passes: before or after the named one.
 struct PassPlacement {
+    // Which side of the named pass.
     enum class Side : std::uint8_t { Before, After };
     Side side = Side::After;
     std::string pass;
 
+    // Just before the named pass.
     static PassPlacement before(std::string pass) { return {Side::Before, std::move(pass)}; }
+    // Just after the named pass.
     static PassPlacement after(std::string pass) { return {Side::After, std::move(pass)}; }
 };
 

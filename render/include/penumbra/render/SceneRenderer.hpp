@@ -42,6 +42,7 @@ struct LitDraw;
 // which the lit pass reads at its pixel; the same picture as Forward. Spot and point shadows stay forward.
 enum class ShadowPath : std::uint8_t { Forward, ScreenSpace };
 
+// What one frame of SceneRenderer::render draws: its size, shadow settings, lighting and the passes' options.
 struct FrameDesc {
     std::uint32_t width = 1280;
     std::uint32_t height = 720;
@@ -76,6 +77,7 @@ struct FrameDesc {
     bool instancedDraws = true;
 };
 
+// What a frame drew and what it cost: CPU and GPU times, draws, static map updates and notes.
 struct FrameStats {
     // CPU time: the shadow planning of render(camera, frame) (0 where the caller planned), and recording the frame's
     // commands (render()'s work up to the submission, which then runs them).
@@ -131,19 +133,24 @@ public:
     // the device does not offer.
     FrameStats render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
 
+    // The last frame's lit picture (kLitColorFormat, single-sampled).
     const rhi::Texture& litImage() const { return *lit_; }
     // The scene's buffers, textures and samplers as the last frame drew them.
     const GpuScene& gpuScene() const { return gpuScene_; }
+    // The last FrameDesc::cascadeView frame's picture tinted by cascade.
     const rhi::Texture& cascadeImage() const { return *cascades_; }
+    // The last FrameDesc::visibilityOf frame's raw shadow-map visibility of that light.
     const rhi::Texture& visibilityImage() const { return *visibility_; }
     // The last ShadowPath::ScreenSpace frame's screen-space shadow texture: RGBA32F, channel i directional light i's
     // attenuation at the pixel's surface (1 = lit; 1 where nothing is drawn). Throws rhi::Error before such a frame.
     const rhi::Texture& screenSpaceShadowImage() const;
     // 16 texels wide where the last frame used no tile of it (no shadowed directional light).
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
+    // The directional plan the last frame drew.
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
     // Spot and point shadows: tiles of this atlas (16 texels wide where the last frame used none).
     const shadows::ShadowAtlas& localAtlas() const { return *localAtlas_; }
+    // The spot and point plan the last frame drew.
     const shadows::LocalShadowPlan& localPlan() const { return localPlan_; }
     // Point shadow cube maps (PointShadowMode::CubeMap; one unused cube otherwise).
     const shadows::ShadowCubes& shadowCubes() const { return *shadowCubes_; }
@@ -154,7 +161,9 @@ public:
     // Static shadow maps (ShadowSettings::staticMaps): the atlases as last drawn (16 texels wide without maps), and
     // the plan they were drawn from.
     const shadows::ShadowAtlas& staticDirectionalAtlas() const;
+    // The static spot and point maps' atlas.
     const shadows::ShadowAtlas& staticLocalAtlas() const;
+    // The plan the static maps were drawn from.
     const shadows::StaticShadowPlan& staticPlan() const;
     // In StaticShadowUpdate::OnDemand mode, the next render() draws every static map again from its plan; other modes
     // ignore it.

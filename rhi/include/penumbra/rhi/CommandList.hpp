@@ -106,6 +106,7 @@ public:
     // debug groups, section 20.6); groups nest, inside and outside passes. A list is submitted with every group it
     // opened closed.
     virtual void pushLabel(std::string_view name) = 0;
+    // Closes the innermost open label.
     virtual void popLabel() = 0;
 };
 

@@ -82,12 +82,14 @@ struct ClusterLight {
     float outerAngle = 0.6f; // spot: half-angle, radians, below pi / 2
 };
 
+// The froxel grid's resolution: screen tiles across and down, depth slices.
 struct LightClusterGridDesc {
     std::uint32_t tilesX = kDefaultClusterTilesX;
     std::uint32_t tilesY = kDefaultClusterTilesY;
     std::uint32_t slices = kDefaultClusterSlices;
 };
 
+// A view's clusters and the lights each may reach, flat for a GPU buffer or texture.
 struct LightClusters {
     LightClusterUniforms grid;
     std::vector<LightClusterRange> ranges; // per cluster, in cluster order

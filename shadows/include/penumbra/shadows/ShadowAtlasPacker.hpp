@@ -34,6 +34,7 @@ struct ShadowAtlasPackerSettings {
     float hysteresis = 0.25f; // octaves, 0..0.5: how far past the rounding boundary a request moves a tile's size
 };
 
+// One light's request for shadow tiles this frame.
 struct ShadowTileRequest {
     std::uint32_t lightId = 0; // the same light from frame to frame has the same id; unique within a frame
     float size = 0.0f; // texels on a side the light asks for (localShadowRequest), any positive value
@@ -41,8 +42,9 @@ struct ShadowTileRequest {
     std::uint32_t tileCount = 1; // tiles of one size: 1 for a spot light, 6 for a point light's cube faces
 };
 
+// Where the packer put one light's tiles, and at which size.
 struct PackedLight {
-    std::uint32_t lightId = 0;
+    std::uint32_t lightId = 0; // ShadowTileRequest::lightId
     std::uint32_t wantedSize = 0; // the request clamped, rounded and held by the hysteresis
     std::uint32_t size = 0; // the size given, <= wantedSize; 0: no tile, the light casts no shadow this frame
     std::vector<glm::uvec2> offsets; // top-left texel of each tile (rows from the top, as rhi::Viewport); none if 0
@@ -56,6 +58,7 @@ struct ShadowAtlasPackNote {
     std::string reason;
 };
 
+// One frame's packing: every light's tiles, the notes, and how full and fragmented the atlas is.
 struct ShadowAtlasPack {
     std::vector<PackedLight> lights; // in request order
     std::vector<ShadowAtlasPackNote> notes; // in request order
@@ -70,14 +73,19 @@ struct ShadowAtlasPack {
 
 class QuadtreeAllocator;
 
+// Places the local lights' shadow tiles in the atlas frame after frame, keeping each where it was while its request
+// stays within the hysteresis band.
 class ShadowAtlasPacker {
 public:
     // Throws rhi::Error naming the setting and its allowed range.
     explicit ShadowAtlasPacker(const ShadowAtlasPackerSettings& settings);
     ~ShadowAtlasPacker();
+    // Moves the packer with the tiles it keeps.
     ShadowAtlasPacker(ShadowAtlasPacker&&) noexcept;
+    // Moves the packer with the tiles it keeps.
     ShadowAtlasPacker& operator=(ShadowAtlasPacker&&) noexcept;
 
+    // The settings it was made with.
     const ShadowAtlasPackerSettings& settings() const { return settings_; }
 
     // Places this frame's tiles, keeping last frame's where it can. Throws rhi::Error for a request with a repeated

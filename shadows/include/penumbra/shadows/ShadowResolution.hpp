@@ -17,6 +17,7 @@ struct ShadowResolutionLimits {
     float defaultSize = 512.0f; // what a light without its own resolution asks for when it fills the screen
 };
 
+// What decides a spot or point light's shadow resolution: where it is, how far it reaches, how bright it is.
 struct LocalLightImportance {
     glm::vec3 position{0.0f};
     float range = 10.0f; // > 0: the sphere the light reaches (a spot light's cone lies within it)
@@ -24,6 +25,7 @@ struct LocalLightImportance {
     std::optional<float> shadowResolution; // the light's own setting (texels); nullopt: the default
 };
 
+// The shadow tile size a light asks for, and its priority when space runs out.
 struct ShadowResolutionRequest {
     float size = 0.0f; // texels on a side, floorSize..maxSize
     float priority = 0.0f; // 0..1: screen importance, for the packer's degradation order
