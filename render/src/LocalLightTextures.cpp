@@ -15,25 +15,30 @@ std::uint32_t rowsFor(std::size_t texels)
     return std::bit_ceil(std::max(rows, 1u));
 }
 
-// `texture` with room for `texels` texels of `format`, made anew (twice as many rows, or more) when too small; then
-// `data` uploaded into its first texels, the rest zero.
-void upload(rhi::Device& device, std::unique_ptr<rhi::Texture>& texture, rhi::Format format, const char* name,
-            std::span<const std::byte> data)
+} // namespace
+
+// The texture with room for `data`, made anew (twice as many rows, or more) when too small; `data` uploaded into its
+// first texels, the rest zero, unless that is what it holds: an upload waits for the device (Device::writeTexture).
+void LocalLightTextures::upload(DataTexture& target, rhi::Format format, const char* name,
+                                std::span<const std::byte> data)
 {
     const std::size_t texelBytes = rhi::texelSize(format);
     const std::uint32_t rows = rowsFor(data.size() / texelBytes);
-    if (!texture || texture->desc().height < rows)
-        texture = device.createTexture({.width = kLitDataTextureWidth,
-                                        .height = rows,
-                                        .format = format,
-                                        .usage = rhi::TextureUsage::Sampled,
-                                        .debugName = name});
-    std::vector<std::byte> level(std::size_t(kLitDataTextureWidth) * texture->desc().height * texelBytes);
+    if (!target.texture || target.texture->desc().height < rows) {
+        target.texture = device_.createTexture({.width = kLitDataTextureWidth,
+                                                .height = rows,
+                                                .format = format,
+                                                .usage = rhi::TextureUsage::Sampled,
+                                                .debugName = name});
+        target.uploaded.clear();
+    }
+    std::vector<std::byte> level(std::size_t(kLitDataTextureWidth) * target.texture->desc().height * texelBytes);
     std::memcpy(level.data(), data.data(), data.size());
-    device.writeTexture(*texture, 0, 0, level);
+    if (level == target.uploaded)
+        return;
+    device_.writeTexture(*target.texture, 0, 0, level);
+    target.uploaded = std::move(level);
 }
-
-} // namespace
 
 std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
                                         const shadows::StaticShadowPlan& staticPlan)
@@ -98,21 +103,21 @@ LocalLightTextures::LocalLightTextures(rhi::Device& device)
 
 void LocalLightTextures::update(const std::vector<glm::vec4>& lightTexels, const shadows::LightClusters& clusters)
 {
-    upload(device_, lights_, kLocalLightFormat, "local lights", std::as_bytes(std::span(lightTexels)));
+    upload(lights_, kLocalLightFormat, "local lights", std::as_bytes(std::span(lightTexels)));
     std::vector<glm::vec4> ranges(clusters.ranges.size());
     for (std::size_t c = 0; c < ranges.size(); ++c)
         ranges[c] = {static_cast<float>(clusters.ranges[c].offset), static_cast<float>(clusters.ranges[c].count), 0.0f,
                      0.0f};
-    upload(device_, clusters_, kLightClusterFormat, "light clusters", std::as_bytes(std::span(ranges)));
+    upload(clusters_, kLightClusterFormat, "light clusters", std::as_bytes(std::span(ranges)));
     std::vector<float> indices(clusters.lightIndices.begin(), clusters.lightIndices.end());
-    upload(device_, indices_, kLightIndexFormat, "light indices", std::as_bytes(std::span(indices)));
+    upload(indices_, kLightIndexFormat, "light indices", std::as_bytes(std::span(indices)));
 }
 
 void LocalLightTextures::bind(rhi::CommandList& commands) const
 {
-    commands.bindTexture(kLitLocalLightsBinding, *lights_, *sampler_);
-    commands.bindTexture(kLitLightClustersBinding, *clusters_, *sampler_);
-    commands.bindTexture(kLitLightIndicesBinding, *indices_, *sampler_);
+    commands.bindTexture(kLitLocalLightsBinding, lights(), *sampler_);
+    commands.bindTexture(kLitLightClustersBinding, clusters(), *sampler_);
+    commands.bindTexture(kLitLightIndicesBinding, indices(), *sampler_);
 }
 
 } // namespace penumbra::render

@@ -8,8 +8,10 @@
 #include "penumbra/shadows/ShadowCamera.hpp"
 #include "penumbra/shadows/StaticShadowPlanner.hpp"
 
+#include <cstddef>
 #include <glm/vec4.hpp>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace penumbra::render {
@@ -26,26 +28,33 @@ std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene);
 void setClusterView(LitFrameUniforms& u, const shadows::ShadowCamera& camera,
                     const shadows::LightClusterUniforms& grid);
 
-// The lit pass's local light, cluster and light index textures (LitUniforms.hpp's layout), uploaded every frame and
-// grown by powers of two of rows as the frame needs.
+// The lit pass's local light, cluster and light index textures (LitUniforms.hpp's layout), uploaded when their
+// contents change (a still camera and still lights upload nothing) and grown by powers of two of rows as the frame
+// needs.
 class LocalLightTextures {
 public:
     explicit LocalLightTextures(rhi::Device& device);
 
     void update(const std::vector<glm::vec4>& lightTexels, const shadows::LightClusters& clusters);
 
-    const rhi::Texture& lights() const { return *lights_; }
-    const rhi::Texture& clusters() const { return *clusters_; }
-    const rhi::Texture& indices() const { return *indices_; }
+    const rhi::Texture& lights() const { return *lights_.texture; }
+    const rhi::Texture& clusters() const { return *clusters_.texture; }
+    const rhi::Texture& indices() const { return *indices_.texture; }
     // At kLitLocalLightsBinding, kLitLightClustersBinding and kLitLightIndicesBinding.
     void bind(rhi::CommandList& commands) const;
 
 private:
     rhi::Device& device_;
     std::unique_ptr<rhi::Sampler> sampler_; // nearest: texelFetch ignores it, the binding needs one
-    std::unique_ptr<rhi::Texture> lights_;
-    std::unique_ptr<rhi::Texture> clusters_;
-    std::unique_ptr<rhi::Texture> indices_;
+    // A data texture and the bytes last uploaded into it.
+    struct DataTexture {
+        std::unique_ptr<rhi::Texture> texture;
+        std::vector<std::byte> uploaded;
+    };
+    void upload(DataTexture& target, rhi::Format format, const char* name, std::span<const std::byte> data);
+    DataTexture lights_;
+    DataTexture clusters_;
+    DataTexture indices_;
 };
 
 } // namespace penumbra::render
