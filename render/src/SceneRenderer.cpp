@@ -197,7 +197,7 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         screenSpace_->prepare(*depth_);
 }
 
-LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view,
+LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const FrameDesc& frame,
                                               const shadows::LightClusterUniforms& clusters) const
 {
     const float aspect = aspectOf(frame);
@@ -215,7 +215,7 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     u.ambient = glm::vec4(frame.ambient.sky(), 0.0f);
     u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);
     u.directionalLightCount = static_cast<int>(count);
-    u.litView = static_cast<int>(view);
+    u.litView = static_cast<int>(LitView::Lit);
     const scene::Scene& scene = gpuScene_.scene();
     u.localLightCount = static_cast<int>(scene.spotLights.size() + scene.pointLights.size());
     setClusterView(u, shadowCamera(camera, aspect), clusters);
@@ -340,12 +340,10 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
                                     kLitClusterGrid);
     localLights_->update(localLightTexels(gpuScene_.scene(), localPlan_, staticShadows_->plan()), clusters);
     state.localLights = localLights_.get();
-    state.litFrameUniforms = frameUniforms(camera, frame, LitView::Lit, clusters.grid);
+    state.litFrameUniforms = frameUniforms(camera, frame, clusters.grid);
     state.litFrame = uniforms_.push(state.litFrameUniforms);
-    state.cascadeFrameUniforms = frameUniforms(camera, frame, LitView::Cascades, clusters.grid);
-    state.visibilityFrameUniforms = frameUniforms(camera, frame, LitView::Visibility, clusters.grid);
     if (frame.visibilityOf)
-        state.visibilityFrameUniforms.visibilityLight = litLightIndex(*frame.visibilityOf);
+        state.visibilityLight = litLightIndex(*frame.visibilityOf);
     state.features =
         frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_.uniforms, staticShadows_->plan());
 }

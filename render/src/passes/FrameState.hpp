@@ -56,8 +56,7 @@ struct FrameState {
     rhi::UniformArena* uniforms = nullptr; // this frame's blocks
     LitFrameUniforms litFrameUniforms; // the lit view's Frame block
     rhi::UniformSlice litFrame; // litFrameUniforms, pushed
-    LitFrameUniforms cascadeFrameUniforms; // the cascade view's
-    LitFrameUniforms visibilityFrameUniforms; // the visibility view's
+    int visibilityLight = -1; // the visibility view's light, in the lit pass's order (FrameDesc::visibilityOf)
     // The features the frame's lights and shadow maps need (frameShaderFeatures): forward shadows, no prepass.
     LitShaderFeatures features;
 };

@@ -139,8 +139,12 @@ void LitViewPass::execute(const FramePassContext& context)
         features = state_.features;
         features.view = LitView::Cascades;
     }
-    const rhi::UniformSlice frameSlice =
-        state_.uniforms->push(cascades ? state_.cascadeFrameUniforms : state_.visibilityFrameUniforms);
+    // The lit view's block, but for the view it draws.
+    LitFrameUniforms frameBlock = state_.litFrameUniforms;
+    frameBlock.litView = static_cast<int>(view_);
+    if (!cascades)
+        frameBlock.visibilityLight = state_.visibilityLight;
+    const rhi::UniformSlice frameSlice = state_.uniforms->push(frameBlock);
     recordLitDraws(context.commands(), target, pipelines_, frameSlice, features, state_, scene_, nullptr);
 }
 

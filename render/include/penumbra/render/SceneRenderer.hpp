@@ -205,7 +205,8 @@ private:
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
     void buildGraph(const FrameDesc& frame);
     void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
-    LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame, LitView view,
+    // The lit view's Frame block (the debug views change its view).
+    LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame,
                                    const shadows::LightClusterUniforms& clusters) const;
     int litLightIndex(const scene::LightRef& light) const;
 
