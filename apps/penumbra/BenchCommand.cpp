@@ -184,6 +184,14 @@ void addBenchCommand(CLI::App& app)
     addSceneOptions(*bench, scene->scene);
     CLI::Option* sceneOption = bench->get_option("--scene");
     sceneOption->excludes(suites)->excludes(configurations)->excludes(draws)->excludes(minTime);
+    // bench takes several light counts in one run: its own --lights replaces the scene options' single count.
+    bench->remove_option(bench->get_option("--lights"));
+    bench
+        ->add_option("--lights", scene->lightCounts,
+                     "With --scene: keep the scene's first N local lights (its spot lights, then its point lights); "
+                     "several counts, comma-separated, measure each in turn")
+        ->check(CLI::Range(0u, 1000000u))
+        ->delimiter(',');
     for (const char* name : {"--lights", "--camera", "--light", "--ambient", "--settings", "--size", "--prepass",
                              "--instancing", "--msaa", "--shadow-path"})
         bench->get_option(name)->needs(sceneOption);

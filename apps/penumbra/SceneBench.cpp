@@ -22,21 +22,21 @@ namespace {
 
 constexpr std::size_t kPasses = std::size(kBenchPassNames);
 
-// One series of per-frame figures in milliseconds.
+// One series of per-frame figures: milliseconds, or counts.
 struct Series {
-    std::vector<double> ms;
+    std::vector<double> values;
 
     double median() const
     {
-        if (ms.empty())
+        if (values.empty())
             return 0.0;
-        std::vector<double> sorted = ms;
+        std::vector<double> sorted = values;
         std::sort(sorted.begin(), sorted.end());
         const std::size_t n = sorted.size();
         return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
     }
-    double min() const { return ms.empty() ? 0.0 : *std::min_element(ms.begin(), ms.end()); }
-    double max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
+    double min() const { return values.empty() ? 0.0 : *std::min_element(values.begin(), values.end()); }
+    double max() const { return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end()); }
 };
 
 struct ConfigurationResult {
@@ -44,6 +44,8 @@ struct ConfigurationResult {
     Series frame;
     Series planning; // CPU: render::FrameStats::planningMs
     Series recording; // CPU: render::FrameStats::recordingMs
+    Series cpuFrame; // planning + recording
+    Series localTilesDrawn, localTilesCached;
     std::array<Series, kPasses> passes;
     render::FrameStats last;
 };
@@ -98,12 +100,15 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         showProgress(configuration, i + 1, total);
         if (i < options.warmup)
             continue;
-        result.frame.ms.push_back(wallMs);
-        result.planning.ms.push_back(stats.planningMs);
-        result.recording.ms.push_back(stats.recordingMs);
+        result.frame.values.push_back(wallMs);
+        result.planning.values.push_back(stats.planningMs);
+        result.recording.values.push_back(stats.recordingMs);
+        result.cpuFrame.values.push_back(stats.planningMs + stats.recordingMs);
+        result.localTilesDrawn.values.push_back(stats.localTilesDrawn);
+        result.localTilesCached.values.push_back(stats.localTilesCached);
         const std::array<double, kPasses> times = passTimes(stats, referenceMs);
         for (std::size_t p = 0; p < kPasses; ++p)
-            result.passes[p].ms.push_back(times[p]);
+            result.passes[p].values.push_back(times[p]);
         result.last = std::move(stats);
     }
     if (const auto messages = device->debugMessages(); !messages.empty())
@@ -143,6 +148,12 @@ std::string staticMapsMode(const render::FrameDesc& frame, const SceneBenchOptio
     return "everyFrame";
 }
 
+// --lights N, or null: the scene's own local lights.
+nlohmann::json lightsOf(const SceneBenchOptions& options)
+{
+    return options.scene.localLights ? nlohmann::json(*options.scene.localLights) : nlohmann::json();
+}
+
 nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& options, const render::FrameDesc& frame)
 {
     nlohmann::json passes = nlohmann::json::object(), mins = nlohmann::json::object(), maxs = nlohmann::json::object();
@@ -153,6 +164,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
     }
     return {{"configuration", r.configuration},
             {"scene", options.scene.scene},
+            {"lights", lightsOf(options)},
             {"width", frame.width},
             {"height", frame.height},
             {"frames", options.frames},
@@ -175,7 +187,12 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"draws", {{"depth", r.last.depthPrepassDraws}, {"lit", r.last.litDraws}}},
             {"casterDraws", r.last.casterDraws + r.last.localCasterDraws},
             {"staticCasterDraws", r.last.staticCasterDraws},
-            {"staticMaps", staticMapsMode(frame, options)}};
+            {"staticMaps", staticMapsMode(frame, options)},
+            {"cpuFrameMs", r.cpuFrame.median()},
+            {"shadowedLights", r.last.shadowedLights},
+            {"lightsWithoutShadow", r.last.lightsWithoutShadow},
+            {"localTilesDrawn", r.localTilesDrawn.median()},
+            {"localTilesCached", r.localTilesCached.median()}};
 }
 
 void printTable(const std::vector<ConfigurationResult>& results, const SceneBenchOptions& options,
@@ -203,14 +220,19 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
         fmt::print("{:<24} {:>12.2f} {:>13.2f} {:>11} {:>10} {:>12}\n", r.configuration, r.planning.median(),
                    r.recording.median(), r.last.depthPrepassDraws, r.last.litDraws,
                    r.last.casterDraws + r.last.localCasterDraws);
+    fmt::print("{:<24} {:>8} {:>9} {:>15} {:>12} {:>12} {:>13}\n", "configuration", "shadowed", "unshadowed",
+               "local tiles drawn", "tiles cached", "cpu frame ms", "local atlas ms");
+    for (const ConfigurationResult& r : results)
+        fmt::print("{:<24} {:>8} {:>9} {:>15.1f} {:>12.1f} {:>12.2f} {:>13.2f}\n", r.configuration,
+                   r.last.shadowedLights, r.last.lightsWithoutShadow, r.localTilesDrawn.median(),
+                   r.localTilesCached.median(), r.cpuFrame.median(), r.passes[passIndex("otherAtlas")].median());
     if (results.size() == 2 && results[1].frame.median() > 0.0)
         fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,
                    results[0].frame.median() / results[1].frame.median());
 }
 
-} // namespace
-
-nlohmann::json runSceneBench(const SceneBenchOptions& options)
+// One light count (or the scene's own lights): every configuration, a table and a JSON row each.
+void benchLights(const SceneBenchOptions& options, nlohmann::json& rows)
 {
     const std::vector<std::string> configurations = expandBackends(options.backends);
     const LoadedScene loaded = loadScene(options.scene);
@@ -224,9 +246,22 @@ nlohmann::json runSceneBench(const SceneBenchOptions& options)
     printTable(results, options, frame);
     for (const std::string& note : results.front().last.notes)
         fmt::print("  note: {}\n", note);
-    nlohmann::json rows = nlohmann::json::array();
     for (const ConfigurationResult& r : results)
         rows.push_back(toJson(r, options, frame));
+}
+
+} // namespace
+
+nlohmann::json runSceneBench(const SceneBenchOptions& options)
+{
+    nlohmann::json rows = nlohmann::json::array();
+    if (options.lightCounts.empty())
+        benchLights(options, rows);
+    for (const std::uint32_t lights : options.lightCounts) {
+        SceneBenchOptions one = options;
+        one.scene.localLights = lights;
+        benchLights(one, rows);
+    }
     return {{"scene", rows}};
 }
 

@@ -18,6 +18,8 @@ struct SceneBenchOptions {
     std::uint32_t frames = 20;
     std::uint32_t warmup = 3;
     bool validate = false;
+    // --lights N,M,...: the run repeated for each count of the scene's first local lights (SceneOptions::localLights).
+    std::vector<std::uint32_t> lightCounts;
 };
 
 // The pass names of the JSON's "passes" objects, in frame order: the depth prepass, the directional and the
@@ -26,10 +28,12 @@ struct SceneBenchOptions {
 inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "otherAtlas", "screenSpaceShadows",
                                                   "lit",   "resolve",          "reference",  "staticAtlas"};
 
-// Prints a table and returns {"scene": [one object per configuration: configuration, scene, width, height,
+// Prints a table per light count and returns {"scene": [one object per light count and configuration: configuration,
+// scene, lights (the --lights count or null), width, height,
 // frames, warmup, frameMs (median), frameMsMin, frameMsMax, passes {name: median ms}, passesMin, passesMax,
 // litOverReference, instancing, cpuMs {planning, recording} (medians), cpuMsMax, draws {depth, lit},
-// casterDraws]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that
+// casterDraws, cpuFrameMs (planning + recording, median), shadowedLights, lightsWithoutShadow, localTilesDrawn and
+// localTilesCached (medians)]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that
 // is missing or, with validate, reports a message.
 nlohmann::json runSceneBench(const SceneBenchOptions& options);
 

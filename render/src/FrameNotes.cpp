@@ -49,6 +49,29 @@ const std::string& lightName(const scene::Scene& scene, shadows::ShadowLightKind
     return scene.lights[index].name;
 }
 
+std::string localShadowUpdate(const scene::Scene& scene, shadows::LocalLightKind kind, std::uint32_t index,
+                              std::string_view reason)
+{
+    return fmt::format("{} {} ('{}'): {}", kindName(kind), index, localLightName(scene, kind, index), reason);
+}
+
+ShadowedLightCounts shadowedLightCounts(const scene::Scene& scene, const ShadowPlans& plans)
+{
+    ShadowedLightCounts counts;
+    const auto count = [&](bool realtime, shadows::ShadowLightKind kind, std::uint32_t index) {
+        ++(realtime || hasStaticMap(plans.staticMaps, kind, index) ? counts.shadowed : counts.withoutShadow);
+    };
+    const std::vector<int>& slots = plans.directional.shadowSlots;
+    for (std::uint32_t i = 0; i < scene.lights.size(); ++i)
+        count(i < slots.size() && slots[i] >= 0, shadows::ShadowLightKind::Directional, i);
+    for (std::uint32_t i = 0; i < scene.spotLights.size(); ++i)
+        count(i < plans.local.spotTiles.size() && plans.local.spotTiles[i] >= 0, shadows::ShadowLightKind::Spot, i);
+    for (std::uint32_t i = 0; i < scene.pointLights.size(); ++i)
+        count(i < plans.local.pointShadows.size() && plans.local.pointShadows[i] >= 0, shadows::ShadowLightKind::Point,
+              i);
+    return counts;
+}
+
 std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans& plans)
 {
     std::vector<std::string> notes;

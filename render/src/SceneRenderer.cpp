@@ -5,6 +5,7 @@
 #include "LocalLightTextures.hpp"
 #include "ShadowInputs.hpp"
 #include "TextureSampling.hpp"
+#include "cache/LocalTileCache.hpp"
 #include "graph/FrameGraph.hpp"
 #include "passes/FrameState.hpp"
 #include "passes/DepthPrepass.hpp"
@@ -91,7 +92,9 @@ rhi::TextureDesc depthTargetDesc(const FrameDesc& frame, std::uint32_t samples)
 
 SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
     : device_(device), gpuScene_(device, scene), shadowPass_(device, GpuScene::vertexFormat()),
-      localShadowPass_(device, GpuScene::vertexFormat()), litVertex_(device.createShader(litShader("lit.vert"))),
+      localShadowPass_(device, GpuScene::vertexFormat()),
+      localTiles_(std::make_unique<LocalTileCache>(device, GpuScene::vertexFormat())),
+      litVertex_(device.createShader(litShader("lit.vert"))),
       litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, 1)),
       depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
       staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
@@ -162,9 +165,11 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
                                                         "directional shadow atlas");
     const shadows::LocalShadowSettings& local = frame.shadows.local;
     const std::uint32_t localSize = plans.local.tiles.empty() ? kStandInAtlasSize : local.atlasSize;
-    if (!localAtlas_ || localAtlas_->size() != localSize || localAtlas_->format() != local.atlasFormat)
+    if (!localAtlas_ || localAtlas_->size() != localSize || localAtlas_->format() != local.atlasFormat) {
         localAtlas_ =
             std::make_unique<shadows::ShadowAtlas>(device_, localSize, local.atlasFormat, "local shadow atlas");
+        localTiles_->invalidate();
+    }
     // Cube-map mode keeps room for every cube it may plan; otherwise one small cube stands in for the binding.
     const bool cubeMode = local.pointMode == shadows::PointShadowMode::CubeMap;
     const std::uint32_t faceSize = cubeMode ? local.cubeMapSize : 16;
@@ -277,6 +282,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
 {
     const scene::Scene& scene = gpuScene_.scene();
     notes_ = frameNotes(scene, plans);
+    const ShadowedLightCounts lightCounts = shadowedLightCounts(scene, plans);
     const AnisotropyChoice anisotropy = chooseAnisotropy(frame.maxAnisotropy, device_.capabilities());
     gpuScene_.setMaxAnisotropy(anisotropy.value);
     if (anisotropy.note && !scene.textures.empty())
@@ -295,7 +301,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
         state.staticTiles = splitStaticCasters(plans, gpuScene_.staticCasters());
     plan_ = std::move(plans.directional);
     localPlan_ = std::move(plans.local);
-    FrameStats stats;
+    FrameStats stats{.shadowedLights = lightCounts.shadowed, .lightsWithoutShadow = lightCounts.withoutShadow};
     for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
         for (const shadows::DirectionalCascadePlan& cascade : light.cascades)
             stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;
@@ -403,7 +409,7 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     add(std::make_unique<StaticTilesPass>(state, *directionalStaticTiles_, StaticTilesPass::Atlas::Directional));
     add(std::make_unique<DirectionalAtlasPass>(state, shadowPass_, plan_));
     add(std::make_unique<StaticTilesPass>(state, *localStaticTiles_, StaticTilesPass::Atlas::Local));
-    add(std::make_unique<LocalAtlasPass>(state, localShadowPass_, localPlan_));
+    add(std::make_unique<LocalAtlasPass>(state, localShadowPass_, *localTiles_, localPlan_, gpuScene_.scene()));
     add(std::make_unique<DepthPrepassPass>(state, *depthPrepass_, gpuScene_));
     if (screenSpace_) {
         add(std::make_unique<ReceiverPrepassPass>(state, *receiverPrepass_, *screenSpace_, gpuScene_));

@@ -5,6 +5,15 @@
 #include <fmt/format.h>
 
 namespace penumbra::shadows {
+namespace {
+
+void checkCubeCount(const ShadowCubes& cubes, const LocalShadowPlan& plan)
+{
+    if (cubes.cubeCount() < plan.cubes.size())
+        throw rhi::Error(fmt::format("{} shadow cube maps, the plan needs {}", cubes.cubeCount(), plan.cubes.size()));
+}
+
+} // namespace
 
 LocalShadowPass::LocalShadowPass(rhi::Device& device, const CasterVertexFormat& vertexFormat)
     : draws_(device, vertexFormat)
@@ -30,8 +39,7 @@ std::uint32_t LocalShadowPass::record(rhi::CommandList& commands, const ShadowAt
                                       const LocalShadowPlan& plan, std::span<const ShadowCaster> casters,
                                       bool clearAtlas)
 {
-    if (cubes.cubeCount() < plan.cubes.size())
-        throw rhi::Error(fmt::format("{} shadow cube maps, the plan needs {}", cubes.cubeCount(), plan.cubes.size()));
+    checkCubeCount(cubes, plan);
     if (!plan.tiles.empty() && atlas.size() != plan.atlas.atlasSize())
         throw rhi::Error(fmt::format("local shadow atlas is {} texels wide, the plan was made for {}", atlas.size(),
                                      plan.atlas.atlasSize()));
@@ -44,6 +52,21 @@ std::uint32_t LocalShadowPass::record(rhi::CommandList& commands, const ShadowAt
         draws += draws_.draw(commands, atlas.format(), tile.view, tile.casters, casters);
     }
     commands.endPass();
+    return draws + drawCubes(commands, cubes, plan, casters);
+}
+
+std::uint32_t LocalShadowPass::recordCubes(rhi::CommandList& commands, const ShadowCubes& cubes,
+                                           const LocalShadowPlan& plan, std::span<const ShadowCaster> casters)
+{
+    checkCubeCount(cubes, plan);
+    draws_.reset();
+    return drawCubes(commands, cubes, plan, casters);
+}
+
+std::uint32_t LocalShadowPass::drawCubes(rhi::CommandList& commands, const ShadowCubes& cubes,
+                                         const LocalShadowPlan& plan, std::span<const ShadowCaster> casters)
+{
+    std::uint32_t draws = 0;
     const auto size = static_cast<float>(cubes.faceSize());
     for (std::uint32_t cube = 0; cube < plan.cubes.size(); ++cube)
         for (const CubeFace face : rhi::allCubeFaces) {

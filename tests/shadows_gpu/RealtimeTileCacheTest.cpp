@@ -31,13 +31,6 @@ render::FrameDesc dynamicCastersFrame()
     return frame;
 }
 
-void moveObject(scene::Scene& scene, const std::string& name, glm::vec3 offset)
-{
-    scene::Object& object = scene.objects.at(scene.findObject(name).value());
-    object.transform = glm::translate(glm::mat4(1.0f), offset) * object.transform;
-    object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
-}
-
 // boxesUnderASpot with a dynamic ball, so that the realtime atlases draw a caster of their own over the cached
 // static depth.
 scene::Scene boxesAndABall()

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <string>
 
 // What the static shadow tests (StaticShadowsTest, StaticShadowParityTest) share: small frames and static atlases,
 // a small scene of boxes under a sun and a spot light, and the picture comparison of the bound.
@@ -49,6 +50,14 @@ inline scene::Scene boxesUnderASpot()
                      .outerAngle = 0.5f}};
     s.camera = scene::lookAt({0.0f, 8.0f, 10.0f}, {0.0f, 0.0f, 0.0f}, 0.9f);
     return s;
+}
+
+// Moves an object by `offset` in world space, its bounds with it.
+inline void moveObject(scene::Scene& scene, const std::string& name, glm::vec3 offset)
+{
+    scene::Object& object = scene.objects.at(scene.findObject(name).value());
+    object.transform = glm::translate(glm::mat4(1.0f), offset) * object.transform;
+    object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
 }
 
 // Pixels whose channels differ by more than 1 step, out of all.

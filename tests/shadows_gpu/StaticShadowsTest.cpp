@@ -28,13 +28,6 @@ using shadows::ShadowFilter;
 constexpr std::uint32_t kWidth = kStaticWidth;
 constexpr std::uint32_t kHeight = kStaticHeight;
 
-void moveObject(scene::Scene& scene, const std::string& name, glm::vec3 offset)
-{
-    scene::Object& object = scene.objects.at(scene.findObject(name).value());
-    object.transform = glm::translate(glm::mat4(1.0f), offset) * object.transform;
-    object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
-}
-
 // The static map updates of boxesUnderASpot(), by light.
 const std::vector<std::string> kSunMap{"directional light 0 ('sun')"};
 const std::vector<std::string> kLampMap{"spot light 0 ('lamp')"};

@@ -1,5 +1,7 @@
 #include "ShadowMapPasses.hpp"
 
+#include "../FrameNotes.hpp"
+#include "../cache/LocalTileCache.hpp"
 #include "../static/StaticShadowCache.hpp"
 #include "../static/StaticTileCache.hpp"
 
@@ -70,17 +72,31 @@ std::string LocalAtlasPass::name() const { return std::string(frame::kLocalAtlas
 
 bool LocalAtlasPass::setup(FramePassBuilder& builder)
 {
-    builder.write(frame::kLocalAtlas,
-                  state_.staticTiles.local.empty() ? ResourceUse::RenderTarget : ResourceUse::DrawOver);
+    // Tiles kept from earlier frames, or the static casters' depth that StaticTilesPass copied in: drawn over.
+    builder.write(frame::kLocalAtlas, ResourceUse::DrawOver);
     builder.write(frame::kShadowCubes);
     return true;
 }
 
 void LocalAtlasPass::execute(const FramePassContext& context)
 {
-    state_.stats->localCasterDraws =
-        pass_.record(context.commands(), *state_.shadowMaps.local, *state_.shadowMaps.cubes, plan_, state_.casters,
-                     state_.staticTiles.local.empty());
+    FrameStats& stats = *state_.stats;
+    const std::uint32_t tiles = static_cast<std::uint32_t>(plan_.tiles.size());
+    if (!state_.staticTiles.local.empty()) {
+        // Every tile starts from its static casters' depth this frame: nothing of the last frame's atlas is kept.
+        cache_.invalidate();
+        stats.localCasterDraws = pass_.record(context.commands(), *state_.shadowMaps.local, *state_.shadowMaps.cubes,
+                                              plan_, state_.casters, false);
+        stats.localTilesDrawn = tiles;
+        return;
+    }
+    const LocalTileDraws drawn = cache_.record(context.commands(), *state_.shadowMaps.local, plan_, state_.casters);
+    stats.localCasterDraws =
+        drawn.casterDraws + pass_.recordCubes(context.commands(), *state_.shadowMaps.cubes, plan_, state_.casters);
+    stats.localTilesDrawn = drawn.tilesDrawn;
+    stats.localTilesCached = drawn.tilesCached;
+    for (const LocalShadowRedraw& redraw : drawn.redraws)
+        stats.localShadowUpdates.push_back(localShadowUpdate(scene_, redraw.kind, redraw.lightIndex, redraw.reason));
 }
 
 } // namespace penumbra::render

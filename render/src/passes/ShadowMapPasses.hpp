@@ -8,6 +8,7 @@
 
 namespace penumbra::render {
 
+class LocalTileCache;
 class StaticShadowCache;
 class StaticTileCache;
 
@@ -66,8 +67,9 @@ private:
 // Spot and point casters into the local atlas and the shadow cube maps.
 class LocalAtlasPass final : public FramePass {
 public:
-    LocalAtlasPass(const FrameState& state, shadows::LocalShadowPass& pass, const shadows::LocalShadowPlan& plan)
-        : state_(state), pass_(pass), plan_(plan)
+    LocalAtlasPass(const FrameState& state, shadows::LocalShadowPass& pass, LocalTileCache& cache,
+                   const shadows::LocalShadowPlan& plan, const scene::Scene& scene)
+        : state_(state), pass_(pass), cache_(cache), plan_(plan), scene_(scene)
     {
     }
     std::string name() const override;
@@ -77,7 +79,9 @@ public:
 private:
     const FrameState& state_;
     shadows::LocalShadowPass& pass_;
+    LocalTileCache& cache_;
     const shadows::LocalShadowPlan& plan_;
+    const scene::Scene& scene_;
 };
 
 } // namespace penumbra::render

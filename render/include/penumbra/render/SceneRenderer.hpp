@@ -30,6 +30,7 @@ class DepthPrepass;
 class FrameGraph;
 class LitPipelines;
 class LocalLightTextures;
+class LocalTileCache;
 class ScreenSpaceShadowPass;
 class StaticShadowCache;
 class StaticTileCache;
@@ -96,6 +97,15 @@ struct FrameStats {
     // and why ("spot light 0 ('lamp'): a static caster in its view changed").
     std::uint32_t staticCasterDraws = 0;
     std::vector<std::string> staticMapUpdates;
+    // Spot and point shadows are cached per light: the local atlas's tiles drawn this frame and those kept from an
+    // earlier one (the cube faces of PointShadowMode::CubeMap are drawn every frame and not counted), and the lights
+    // drawn again and why ("spot light 3 ('lamp'): a caster in its view changed").
+    std::uint32_t localTilesDrawn = 0;
+    std::uint32_t localTilesCached = 0;
+    std::vector<std::string> localShadowUpdates;
+    // The scene's lights (directional, spot and point) drawn with a shadow, realtime or static, and without one.
+    std::uint32_t shadowedLights = 0;
+    std::uint32_t lightsWithoutShadow = 0;
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
     // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
@@ -214,6 +224,7 @@ private:
     GpuScene gpuScene_;
     shadows::DirectionalShadowPass shadowPass_;
     shadows::LocalShadowPass localShadowPass_;
+    std::unique_ptr<LocalTileCache> localTiles_;
     std::unique_ptr<rhi::Shader> litVertex_;
     // Single-sampled: the lit pass without MSAA and the debug views. Multisampled: the lit pass with FrameDesc::msaa
     // samples, made when a frame first asks for that count.

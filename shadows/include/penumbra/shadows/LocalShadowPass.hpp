@@ -27,11 +27,18 @@ public:
     // `clearAtlas` false draws over what the atlas holds (cached static depth); cubes are always cleared.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
                          const LocalShadowPlan& plan, std::span<const ShadowCaster> casters, bool clearAtlas = true);
+    // Records the cube-map half of record() alone (each face cleared and drawn): for an atlas whose tiles are drawn
+    // elsewhere (render's per-light tile cache). `cubes` must hold at least plan.cubes.size() cubes.
+    std::uint32_t recordCubes(rhi::CommandList& commands, const ShadowCubes& cubes, const LocalShadowPlan& plan,
+                              std::span<const ShadowCaster> casters);
 
     // Every atlas tile of the plan as the pass draws it (not the cube faces).
     static std::vector<ShadowTileDraw> tileDraws(const LocalShadowPlan& plan);
 
 private:
+    std::uint32_t drawCubes(rhi::CommandList& commands, const ShadowCubes& cubes, const LocalShadowPlan& plan,
+                            std::span<const ShadowCaster> casters);
+
     ShadowCasterDraws draws_;
 };
 

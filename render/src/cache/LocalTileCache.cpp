@@ -1,0 +1,79 @@
+#include "LocalTileCache.hpp"
+
+#include "../static/TileKeys.hpp"
+
+#include "penumbra/shadows/LocalShadowPass.hpp"
+
+#include <optional>
+
+namespace penumbra::render {
+namespace {
+
+// The light each tile of the plan belongs to: a spot light's tile, a point light's six (Atlas mode).
+std::map<std::uint32_t, LocalShadowRedraw> tileLights(const shadows::LocalShadowPlan& plan)
+{
+    std::map<std::uint32_t, LocalShadowRedraw> lights;
+    for (std::uint32_t i = 0; i < plan.spotTiles.size(); ++i)
+        if (plan.spotTiles[i] >= 0)
+            lights[static_cast<std::uint32_t>(plan.spotTiles[i])] = {shadows::LocalLightKind::Spot, i, {}};
+    if (plan.cubes.empty())
+        for (std::uint32_t i = 0; i < plan.pointShadows.size(); ++i)
+            for (std::uint32_t face = 0; plan.pointShadows[i] >= 0 && face < shadows::cubeFaceCount; ++face)
+                lights[static_cast<std::uint32_t>(plan.pointShadows[i]) + face] = {shadows::LocalLightKind::Point,
+                                                                                   i,
+                                                                                   {}};
+    return lights;
+}
+
+} // namespace
+
+LocalTileCache::LocalTileCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat)
+    : pass_(device, vertexFormat)
+{
+}
+
+LocalTileDraws LocalTileCache::record(rhi::CommandList& commands, const shadows::ShadowAtlas& atlas,
+                                      const shadows::LocalShadowPlan& plan,
+                                      std::span<const shadows::ShadowCaster> casters)
+{
+    const std::vector<shadows::ShadowTileDraw> tiles = shadows::LocalShadowPass::tileDraws(plan);
+    const std::map<std::uint32_t, LocalShadowRedraw> lights = tileLights(plan);
+    std::map<std::uint32_t, Key> keys;
+    std::vector<const shadows::ShadowTileDraw*> changed;
+    LocalTileDraws result;
+    std::optional<LocalShadowRedraw> lastRedraw;
+    for (const shadows::ShadowTileDraw& tile : tiles) {
+        ContentHash view, drawn;
+        addTileView(view, tile);
+        addTileCasters(drawn, tile, casters);
+        const Key key{view.value(), drawn.value()};
+        keys[tile.tile] = key;
+        const auto old = keys_.find(tile.tile);
+        const char* reason = !valid_ || old == keys_.end()        ? "its tile is new"
+                             : old->second.view != key.view       ? "its view changed"
+                             : old->second.casters != key.casters ? "a caster in its view changed"
+                                                                  : nullptr;
+        if (!reason) {
+            ++result.tilesCached;
+            continue;
+        }
+        changed.push_back(&tile);
+        // A point light's six tiles report once, for the first that changed.
+        LocalShadowRedraw light = lights.at(tile.tile);
+        if (lastRedraw && lastRedraw->kind == light.kind && lastRedraw->lightIndex == light.lightIndex)
+            continue;
+        light.reason = reason;
+        lastRedraw = light;
+        result.redraws.push_back(std::move(light));
+    }
+    result.tilesDrawn = static_cast<std::uint32_t>(changed.size());
+    if (!changed.empty() || !valid_) {
+        pass_.begin();
+        result.casterDraws = pass_.record(commands, atlas, changed, casters, !valid_);
+    }
+    keys_ = std::move(keys);
+    valid_ = true;
+    return result;
+}
+
+} // namespace penumbra::render
