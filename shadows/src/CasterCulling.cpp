@@ -55,6 +55,22 @@ CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, c
     });
 }
 
+bool castersInReach(const LightSpaceCasters& casters, std::span<const Sphere> cullingSpheres)
+{
+    // A stable fit's square is the sphere's, snapped by under a texel; a close fit's lies inside the sphere.
+    constexpr float kSnapMargin = 1.05f;
+    for (const Sphere& sphere : cullingSpheres) {
+        const glm::vec3 centre = casters.basis.toLight(sphere.centre);
+        const float reach = sphere.radius * kSnapMargin;
+        for (const Bounds& caster : casters.light)
+            if (caster.min.x <= centre.x + reach && caster.max.x >= centre.x - reach &&
+                caster.min.y <= centre.y + reach && caster.max.y >= centre.y - reach &&
+                caster.min.z <= centre.z + reach)
+                return true;
+    }
+    return false;
+}
+
 bool insideFrustumSlice(const Bounds& box, const FrustumSlice& slice, float depthFactor)
 {
     const ShadowCamera& camera = slice.camera;

@@ -147,27 +147,36 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
                                                          "near plane {}",
                                                          settings.maxDistance, camera.nearPlane)});
 
+    const std::vector<FrustumSlice> slices = cascadeSlices(camera, plan.splits, directional);
+    std::vector<Sphere> cullingSpheres;
+    for (const FrustumSlice& slice : slices)
+        cullingSpheres.push_back(frustumSliceSphere(camera, slice.nearDistance, slice.farDistance));
     std::vector<std::uint32_t> selected;
+    std::vector<LightSpaceCasters> selectedCasters;
     for (std::uint32_t i = 0; i < lights.size(); ++i) {
         std::optional<std::string> reason = exclusion(lights[i], selected.size());
         if (!reason && !distanceReachesPastNear)
             reason = "no shadow distance in front of the camera";
+        std::optional<LightSpaceCasters> casters;
+        if (!reason) {
+            casters = lightSpaceCasters(lightBasis(lights[i].direction), casterBounds);
+            if (!castersInReach(*casters, cullingSpheres))
+                reason = "no caster in its cascades' reach";
+        }
         if (reason) {
             plan.report.push_back({i, std::move(*reason)});
             continue;
         }
         plan.shadowSlots[i] = static_cast<int>(selected.size());
         selected.push_back(i);
+        selectedCasters.push_back(std::move(*casters));
     }
 
     const std::uint32_t cascadeCount = directional.cascadeCount;
     const bool close = directional.projection == CascadeProjection::Close;
     plan.atlas = ShadowAtlasLayout(directional.atlasSize, static_cast<std::uint32_t>(selected.size()) * cascadeCount);
-    const std::vector<FrustumSlice> slices = cascadeSlices(camera, plan.splits, directional);
-    if (!selected.empty()) {
-        for (const FrustumSlice& slice : slices)
-            plan.cullingSpheres.push_back(frustumSliceSphere(camera, slice.nearDistance, slice.farDistance));
-    }
+    if (!selected.empty())
+        plan.cullingSpheres = cullingSpheres;
     for (std::uint32_t slot = 0; slot < selected.size(); ++slot) {
         const DirectionalShadowLightInput& input = lights[selected[slot]];
         plan.lights.push_back({selected[slot],
@@ -187,7 +196,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
     for (std::uint32_t slot = 0; slot < plan.lights.size(); ++slot) {
         ShadowedDirectionalLight& light = plan.lights[slot];
-        const LightSpaceCasters casters = lightSpaceCasters(lightBasis(light.direction), casterBounds);
+        const LightSpaceCasters& casters = selectedCasters[slot];
         for (std::uint32_t c = 0; c < cascadeCount; ++c) {
             DirectionalCascadePlan cascade;
             const FrustumSlice& slice = slices[c];

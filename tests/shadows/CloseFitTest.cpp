@@ -34,7 +34,10 @@ DirectionalShadowPlan plan(CascadeProjection projection, const ShadowCamera& cam
     settings.directional.projection = projection;
     settings.directional.cascadeBlend = blend;
     const std::vector<DirectionalShadowLightInput> lights{{glm::normalize(light)}};
-    return planDirectionalShadows(settings, conventions, camera, lights, casters);
+    // Without casters of the test's own, one where the camera stands: the light then has a caster in reach.
+    const std::vector<Bounds> atCamera{{camera.position - 1.0f, camera.position + 1.0f}};
+    return planDirectionalShadows(settings, conventions, camera, lights,
+                                  casters.empty() ? std::span<const Bounds>(atCamera) : casters);
 }
 
 TEST(CloseFit, TilesAreTighterThanTheStableFitsForTheSameView)
@@ -112,7 +115,8 @@ TEST(CloseFit, SelectedCascadeFiltersStayInsideTheirTile)
             const ShadowCamera camera = testing::randomCamera(rng);
             const std::vector<DirectionalShadowLightInput> lights{{testing::randomUnit(rng)},
                                                                   {testing::randomUnit(rng)}};
-            const DirectionalShadowPlan p = planDirectionalShadows(settings, conventions, camera, lights, {});
+            const std::vector<Bounds> casters{{camera.position - 1.0f, camera.position + 1.0f}};
+            const DirectionalShadowPlan p = planDirectionalShadows(settings, conventions, camera, lights, casters);
             const glm::vec3 right = glm::cross(camera.forward, camera.up);
             const float tanY = std::tan(0.5f * camera.fovY);
             const float size = static_cast<float>(p.atlas.atlasSize());

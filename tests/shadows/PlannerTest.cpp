@@ -53,7 +53,8 @@ TEST(DirectionalShadowPlanner, ReportsLightsWithoutTilesAndNeverThrows)
     EXPECT_EQ(plan.report[1].reason, "casts no shadows");
 
     std::vector<DirectionalShadowLightInput> five(5);
-    const DirectionalShadowPlan full = planDirectionalShadows(ShadowSettings{}, conventions, streetCamera(), five, {});
+    const DirectionalShadowPlan full =
+        planDirectionalShadows(ShadowSettings{}, conventions, streetCamera(), five, casters);
     EXPECT_EQ(full.lights.size(), 4u);
     ASSERT_EQ(full.report.size(), 1u);
     EXPECT_EQ(full.report[0].lightIndex, 4u);
@@ -68,7 +69,8 @@ TEST(DirectionalShadowPlanner, TilesViewportsAndUniformsAgree)
     settings.directional.filter = ShadowFilter::PCF5x5;
     settings.directional.cascadeBlend = CascadeBlend::Soft;
     const std::vector<DirectionalShadowLightInput> lights = sixLights();
-    const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, {});
+    const std::vector<Bounds> casters{{{-1, 0, -5}, {1, 2, -3}}};
+    const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, casters);
     const DirectionalShadowUniforms& u = plan.uniforms;
     EXPECT_EQ(u.cascadeCount, 4);
     EXPECT_EQ(u.defaultFilter, 2);
@@ -110,7 +112,9 @@ TEST(DirectionalShadowPlanner, SelectedCascadeFiltersStayInsideTheirTile)
         settings.directional.filter = filter;
         const ShadowCamera camera = testing::randomCamera(rng);
         const std::vector<DirectionalShadowLightInput> lights{{testing::randomUnit(rng)}, {testing::randomUnit(rng)}};
-        const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, camera, lights, {});
+        // A caster where the camera stands: in every light's first cascade, so both lights take tiles.
+        const std::vector<Bounds> casters{{camera.position - 1.0f, camera.position + 1.0f}};
+        const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, camera, lights, casters);
         const glm::vec3 right = glm::cross(camera.forward, camera.up);
         const float tanY = std::tan(0.5f * camera.fovY);
         const float size = static_cast<float>(plan.atlas.atlasSize());
@@ -172,12 +176,34 @@ TEST(DirectionalShadowPlanner, OneLightOneCascadeUsesTheWholeAtlas)
     ShadowSettings settings;
     settings.directional.cascadeCount = 1;
     const std::vector<DirectionalShadowLightInput> lights(1);
-    const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, {});
+    const std::vector<Bounds> casters{{{-1, 0, -5}, {1, 2, -3}}};
+    const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, casters);
     EXPECT_EQ(plan.atlas.split(), 1u);
     ASSERT_EQ(plan.lights.size(), 1u);
     const rhi::Viewport v = plan.lights[0].cascades[0].viewport;
     EXPECT_EQ(v.width, 1024.0f);
     EXPECT_EQ(v.x, 0.0f);
+}
+
+// Only casters that can shadow what the cascades cover earn a light its tiles: one high above the view toward the
+// light does, one far beside the view or wholly below it (past the cascades' far end along the light) does not.
+TEST(DirectionalShadowPlanner, ALightWithNoCasterInReachTakesNoTile)
+{
+    std::vector<DirectionalShadowLightInput> lights(1);
+    lights[0].direction = {0.0f, -1.0f, 0.0f};
+    const auto plan = [&](const Bounds& caster) {
+        return planDirectionalShadows(ShadowSettings{}, conventions, streetCamera(), lights,
+                                      std::vector<Bounds>{caster});
+    };
+    EXPECT_EQ(plan({{-1, 50, -10}, {1, 52, -8}}).lights.size(), 1u) << "above the view, toward the light";
+    EXPECT_EQ(plan({{-1, 0, -5}, {1, 2, -3}}).lights.size(), 1u) << "in the view";
+    const DirectionalShadowPlan beside = plan({{900, 0, 0}, {902, 2, 2}});
+    EXPECT_TRUE(beside.lights.empty());
+    EXPECT_EQ(beside.shadowSlots, std::vector<int>{-1});
+    ASSERT_EQ(beside.report.size(), 1u);
+    EXPECT_EQ(beside.report[0].reason, "no caster in its cascades' reach");
+    EXPECT_EQ(beside.uniforms.shadowedLightCount, 0);
+    EXPECT_TRUE(plan({{-1, -900, -10}, {1, -898, -8}}).lights.empty()) << "below every cascade";
 }
 
 } // namespace

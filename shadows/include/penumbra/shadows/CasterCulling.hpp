@@ -29,6 +29,12 @@ float cascadeBlendCullingFactor(float cascadeFade);
 CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                       const std::optional<Sphere>& previousCullingSphere, float cullingFactor);
 
+// Whether any caster may cast into a cascade around one of `cullingSpheres`: its light-space box meets the sphere's
+// square (with a margin for the fit's texel snapping) in x and y and begins before the sphere's far end along the
+// light. Every cascade's light box lies within that reach, so a light for which this is false draws nothing into its
+// tiles and needs none.
+bool castersInReach(const LightSpaceCasters& casters, std::span<const Sphere> cullingSpheres);
+
 // A close-fit cascade's region: the camera frustum between two view depths.
 struct FrustumSlice {
     ShadowCamera camera;

@@ -82,9 +82,9 @@ struct DirectionalShadowPlan {
 CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const ShadowedDirectionalLight& light,
                                       std::uint32_t cascade);
 
-// Plans a frame's directional shadows: the first 4 lights that cast shadows with strength > 0 get
-// cascadeCount tiles each; every other light is listed in the report with the reason (never an
-// exception). Throws rhi::Error only for settings that fail validate().
+// Plans a frame's directional shadows: the first 4 lights that cast shadows with strength > 0 and have a caster in
+// their cascades' reach (castersInReach) get cascadeCount tiles each; every other light is listed in the report with
+// the reason (never an exception). Throws rhi::Error only for settings that fail validate().
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
