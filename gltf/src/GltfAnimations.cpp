@@ -85,8 +85,7 @@ public:
 private:
     scene::Keyframes readSampler(int index, scene::AnimatedPath path, std::size_t width)
     {
-        const tinygltf::AnimationSampler& sampler =
-            document_.at(animation_.samplers, index, "sampler", owner_);
+        const tinygltf::AnimationSampler& sampler = document_.at(animation_.samplers, index, "sampler", owner_);
         const std::string where = fmt::format("{} sampler {}", owner_, index);
         scene::Keyframes keys;
         keys.width = std::uint32_t(width);
@@ -113,8 +112,8 @@ private:
                                : readComponents(document_, sampler.output, where, "output", type, kFloatOnly);
         const std::size_t expected = keys.times.size() * width * (cubic ? 3 : 1);
         if (keys.values.size() != expected)
-            document_.fail(fmt::format("{}: accessor {} (output) has {} components, expected {} ({} keys x {}{})", where,
-                                       sampler.output, keys.values.size(), expected, keys.times.size(), width,
+            document_.fail(fmt::format("{}: accessor {} (output) has {} components, expected {} ({} keys x {}{})",
+                                       where, sampler.output, keys.values.size(), expected, keys.times.size(), width,
                                        cubic ? " x 3 for CUBICSPLINE's tangents" : ""));
         return keys;
     }

@@ -16,8 +16,7 @@ namespace penumbra::gltf {
 namespace {
 
 constexpr std::array<int, 1> kFloat{TINYGLTF_COMPONENT_TYPE_FLOAT};
-constexpr std::array<int, 2> kJointTypes{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+constexpr std::array<int, 2> kJointTypes{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
 constexpr std::array<int, 3> kWeightTypes{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
 // An inverse bind matrix's last row must be (0, 0, 0, 1) to this tolerance (gltf-validator ACCESSOR_INVALID_IBM).
@@ -57,13 +56,14 @@ std::vector<scene::RigNode> readNodes(const Document& document, std::vector<std:
         const tinygltf::Node& node = model.nodes[std::size_t(index)];
         scene::RigNode out;
         out.name = node.name;
-        out.parent = parent[std::size_t(index)] < 0 ? -1 : std::int32_t(rigNode[std::size_t(parent[std::size_t(index)])]);
+        out.parent =
+            parent[std::size_t(index)] < 0 ? -1 : std::int32_t(rigNode[std::size_t(parent[std::size_t(index)])]);
         if (node.matrix.size() == 16) {
             out.matrix = localTransform(node);
         } else {
             if (node.translation.size() == 3)
-                out.translation = glm::vec3(float(node.translation[0]), float(node.translation[1]),
-                                            float(node.translation[2]));
+                out.translation =
+                    glm::vec3(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]));
             if (node.rotation.size() == 4)
                 out.rotation = glm::normalize(glm::quat(float(node.rotation[3]), float(node.rotation[0]),
                                                         float(node.rotation[1]), float(node.rotation[2])));
@@ -188,8 +188,8 @@ private:
                 readComponents(document_, jointAccessor, owner, jointName, TINYGLTF_TYPE_VEC4, kJointTypes);
             const std::vector<float> w =
                 readComponents(document_, weightAccessor, owner, weightName, TINYGLTF_TYPE_VEC4, kWeightTypes);
-            for (const auto& [accessor, name, count] :
-                 {std::tuple(jointAccessor, jointName, j.size() / 4), std::tuple(weightAccessor, weightName, w.size() / 4)})
+            for (const auto& [accessor, name, count] : {std::tuple(jointAccessor, jointName, j.size() / 4),
+                                                        std::tuple(weightAccessor, weightName, w.size() / 4)})
                 if (count != vertices)
                     document_.fail(fmt::format("{}: accessor {} ({}) has {} elements but POSITION has {}", owner,
                                                accessor, name, count, vertices));
@@ -224,8 +224,8 @@ private:
     // by more than the validator's rounding tolerance are exporter errors that would pull the vertex towards the
     // skeleton's origin; like three.js's GLTFLoader (normalizeSkinWeights, three.js issue 15319) they are divided by
     // their sum, with a note naming the accessor. A vertex of weights summing to 0 belongs to no joint: refused.
-    void normalizeWeights(const tinygltf::Primitive& primitive, const std::string& owner, const std::vector<float>& sums,
-                          std::uint32_t sets, std::vector<glm::vec4>& weights)
+    void normalizeWeights(const tinygltf::Primitive& primitive, const std::string& owner,
+                          const std::vector<float>& sums, std::uint32_t sets, std::vector<glm::vec4>& weights)
     {
         const int accessor = attribute(primitive.attributes, "WEIGHTS_0");
         for (std::size_t v = 0; v < sums.size(); ++v) {
@@ -247,14 +247,14 @@ private:
     {
         scene::MorphTarget out;
         for (const auto& [semantic, accessor] : target) {
-            std::vector<glm::vec3>* into = semantic == "POSITION" ? &out.positions
+            std::vector<glm::vec3>* into = semantic == "POSITION"  ? &out.positions
                                            : semantic == "NORMAL"  ? &out.normals
                                            : semantic == "TANGENT" ? &out.tangents
                                                                    : nullptr;
             if (!into) {
                 if (ignoredTargets_.insert(semantic).second)
-                    notes_.push_back(fmt::format("{}: morph target attribute {} is not supported: ignored", owner,
-                                                 semantic));
+                    notes_.push_back(
+                        fmt::format("{}: morph target attribute {} is not supported: ignored", owner, semantic));
                 continue;
             }
             if (semantic == "NORMAL" && flatNormals)

@@ -43,8 +43,8 @@ void checkAnimations(const JsonFile& file)
             requireFloat(file, sampler, "input", input, "SCALAR");
             // gltf-validator ANIMATION_SAMPLER_INPUT_ACCESSOR_WITHOUT_BOUNDS: input accessors declare min and max.
             if (!accessorJson(file, input).contains("min") || !accessorJson(file, input).contains("max"))
-                sampler.fail("input", fmt::format("accessor {} has no min and max, which animation inputs must have",
-                                                  input));
+                sampler.fail("input",
+                             fmt::format("accessor {} has no min and max, which animation inputs must have", input));
         }
         for (const Fields& channel : animation.objects("channels")) {
             channel.require("sampler");
@@ -68,14 +68,14 @@ void checkTargetCounts(const JsonFile& file)
         for (const Fields& primitive : mesh.objects("primitives")) {
             const std::size_t here = primitive.has("targets") ? primitive.json()["targets"].size() : 0;
             if (count && *count != here)
-                primitive.fail("targets", fmt::format("{} morph targets, other primitives of the mesh have {}", here,
-                                                      *count));
+                primitive.fail("targets",
+                               fmt::format("{} morph targets, other primitives of the mesh have {}", here, *count));
             count = here;
         }
         targets.push_back(count.value_or(0));
         if (mesh.has("weights") && mesh.json()["weights"].size() != targets.back())
-            mesh.fail("weights", fmt::format("{} weights for {} morph targets", mesh.json()["weights"].size(),
-                                             targets.back()));
+            mesh.fail("weights",
+                      fmt::format("{} weights for {} morph targets", mesh.json()["weights"].size(), targets.back()));
     }
     for (const Fields& node : topLevel(file, "nodes")) {
         const auto mesh = node.index("mesh", "meshes");

@@ -52,10 +52,10 @@ std::vector<glm::mat4> worldTransforms(const Rig& rig, const NodePose& pose)
     for (std::size_t n = 0; n < rig.nodes.size(); ++n) {
         const RigNode& node = rig.nodes[n];
         const glm::mat4 local =
-            node.matrix ? *node.matrix
-                        : glm::scale(glm::translate(glm::mat4(1.0f), pose.translations[n]) *
-                                         glm::mat4_cast(pose.rotations[n]),
-                                     pose.scales[n]);
+            node.matrix
+                ? *node.matrix
+                : glm::scale(glm::translate(glm::mat4(1.0f), pose.translations[n]) * glm::mat4_cast(pose.rotations[n]),
+                             pose.scales[n]);
         world[n] = node.parent >= 0 ? world[std::size_t(node.parent)] * local : local;
     }
     return world;

@@ -70,8 +70,8 @@ Vertex skinVertex(const Vertex& vertex, const glm::mat4& skin)
     out.position = glm::vec3(skin * glm::vec4(vertex.position, 1.0f));
     const glm::mat3 linear(skin);
     out.normal = normalizedOr(glm::transpose(glm::inverse(linear)) * vertex.normal, vertex.normal);
-    out.tangent = glm::vec4(normalizedOr(linear * glm::vec3(vertex.tangent), glm::vec3(vertex.tangent)),
-                            vertex.tangent.w);
+    out.tangent =
+        glm::vec4(normalizedOr(linear * glm::vec3(vertex.tangent), glm::vec3(vertex.tangent)), vertex.tangent.w);
     return out;
 }
 
@@ -89,7 +89,8 @@ std::vector<Vertex> deformVertices(const Deformer& deformer, std::span<const flo
         } else {
             const Vertex& rest = deformer.rest[v];
             vertex.normal = normalizedOr(vertex.normal, rest.normal);
-            vertex.tangent = glm::vec4(normalizedOr(glm::vec3(vertex.tangent), glm::vec3(rest.tangent)), rest.tangent.w);
+            vertex.tangent =
+                glm::vec4(normalizedOr(glm::vec3(vertex.tangent), glm::vec3(rest.tangent)), rest.tangent.w);
         }
         out[v] = vertex;
     }
