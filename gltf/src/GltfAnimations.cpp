@@ -3,6 +3,7 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace penumbra::gltf {
@@ -14,15 +15,17 @@ constexpr std::array<int, 5> kFloatOrNormalized{TINYGLTF_COMPONENT_TYPE_FLOAT, T
                                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
                                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
 
-scene::AnimatedPath pathOf(const std::string& path)
+std::optional<scene::AnimatedPath> pathOf(const std::string& path)
 {
+    if (path == "translation")
+        return scene::AnimatedPath::Translation;
     if (path == "rotation")
         return scene::AnimatedPath::Rotation;
     if (path == "scale")
         return scene::AnimatedPath::Scale;
     if (path == "weights")
         return scene::AnimatedPath::Weights;
-    return scene::AnimatedPath::Translation;
+    return std::nullopt;
 }
 
 scene::Interpolation interpolationOf(const std::string& interpolation)
@@ -42,7 +45,7 @@ public:
     {
     }
 
-    scene::Animation read(const std::vector<std::uint32_t>& rigNode)
+    scene::Animation read(const std::vector<std::uint32_t>& rigNode, std::vector<std::string>& notes)
     {
         const tinygltf::Model& model = document_.model();
         scene::Animation out;
@@ -54,6 +57,12 @@ public:
             const std::string where = fmt::format("{} channel {}", owner_, c);
             if (channel.target_node < 0)
                 continue;
+            const std::optional<scene::AnimatedPath> animated = pathOf(channel.target_path);
+            if (!animated) {
+                notes.push_back(fmt::format("{}: path '{}' is not supported: ignored", where, channel.target_path));
+                continue;
+            }
+            const scene::AnimatedPath path = *animated;
             const tinygltf::Node& node = document_.at(model.nodes, channel.target_node, "node", where);
             if (!targets.insert({channel.target_node, channel.target_path}).second)
                 document_.fail(fmt::format("{}: node {} {} is already the target of another channel", where,
@@ -63,7 +72,6 @@ public:
                 document_.fail(fmt::format("{}: node {} has a matrix, and animated nodes may only have translation, "
                                            "rotation and scale",
                                            where, channel.target_node));
-            const scene::AnimatedPath path = pathOf(channel.target_path);
             std::size_t width = path == scene::AnimatedPath::Rotation ? 4 : 3;
             if (path == scene::AnimatedPath::Weights) {
                 width = node.mesh < 0 ? 0 : targetCount(model.meshes[std::size_t(node.mesh)]);
@@ -125,11 +133,12 @@ private:
 
 } // namespace
 
-std::vector<scene::Animation> readAnimations(const Document& document, const std::vector<std::uint32_t>& rigNode)
+std::vector<scene::Animation> readAnimations(const Document& document, const std::vector<std::uint32_t>& rigNode,
+                                             std::vector<std::string>& notes)
 {
     std::vector<scene::Animation> animations;
     for (std::size_t a = 0; a < document.model().animations.size(); ++a)
-        animations.push_back(AnimationReader(document, int(a)).read(rigNode));
+        animations.push_back(AnimationReader(document, int(a)).read(rigNode, notes));
     return animations;
 }
 

@@ -222,23 +222,25 @@ private:
 
     // glTF 2.0 section 3.7.3.3: a vertex's weights sum to 1 (exactly 255 or 65535 for normalized integers). Sums off
     // by more than the validator's rounding tolerance are exporter errors that would pull the vertex towards the
-    // skeleton's origin; like three.js's GLTFLoader (normalizeSkinWeights, three.js issue 15319) they are divided by
-    // their sum, with a note naming the accessor. A vertex of weights summing to 0 belongs to no joint: refused.
+    // skeleton's origin; like three.js's GLTFLoader (SkinnedMesh.normalizeSkinWeights, three.js issue 15319) they are
+    // divided by their sum, and a vertex whose weights are all 0 (the validator accepts an accessor of zeros) follows
+    // its first joint alone, with a note naming the accessor.
     void normalizeWeights(const tinygltf::Primitive& primitive, const std::string& owner,
                           const std::vector<float>& sums, std::uint32_t sets, std::vector<glm::vec4>& weights)
     {
         const int accessor = attribute(primitive.attributes, "WEIGHTS_0");
         for (std::size_t v = 0; v < sums.size(); ++v) {
-            if (sums[v] <= 0.0f)
-                document_.fail(fmt::format("{}: accessor {} (WEIGHTS_0) element {}: the weights sum to 0, the vertex "
-                                           "belongs to no joint",
-                                           owner, accessor, v));
             if (std::abs(sums[v] - 1.0f) > kWeightSumTolerance && notedWeights_.insert(accessor).second)
                 notes_.push_back(fmt::format("{}: accessor {} (WEIGHTS_0) element {}: weights sum to {}, not 1: "
-                                             "normalized (and every other such vertex of the primitive)",
-                                             owner, accessor, v, sums[v]));
-            for (std::uint32_t s = 0; s < sets; ++s)
-                weights[v * sets + s] /= sums[v];
+                                             "normalized (and every other such vertex of the primitive){}",
+                                             owner, accessor, v, sums[v],
+                                             sums[v] > 0.0f ? "" : "; a vertex of no weight follows its first joint"));
+            if (sums[v] > 0.0f) {
+                for (std::uint32_t s = 0; s < sets; ++s)
+                    weights[v * sets + s] /= sums[v];
+            } else {
+                weights[v * sets] = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+            }
         }
     }
 
@@ -339,7 +341,7 @@ void readRig(const Document& document, const NodeWalk& walk, scene::Scene& scene
         deformer.node = rigIndex;
         rig.deformers.push_back(std::move(deformer));
     }
-    rig.animations = readAnimations(document, rigNode);
+    rig.animations = readAnimations(document, rigNode, notes);
     markDynamic(scene);
     scene::poseScene(scene, std::nullopt, 0.0f);
 }

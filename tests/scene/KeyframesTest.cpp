@@ -81,7 +81,8 @@ TEST(KeyframesTest, WorldTransformsComposeParentsFirst)
     Rig rig;
     rig.nodes.push_back({.name = "root", .parent = -1, .translation = glm::vec3(1.0f, 0.0f, 0.0f)});
     rig.nodes.push_back({.name = "child", .parent = 0, .translation = glm::vec3(0.0f, 2.0f, 0.0f)});
-    rig.animations.push_back({"move", {{{0.0f, 1.0f}, {0, 0, 0, 0, 0, 4}, 3, Interpolation::Linear}}, {{1, AnimatedPath::Translation, 0}}});
+    rig.animations.push_back(
+        {"move", {{{0.0f, 1.0f}, {0, 0, 0, 0, 0, 4}, 3, Interpolation::Linear}}, {{1, AnimatedPath::Translation, 0}}});
     NodePose pose = restPose(rig);
     applyAnimation(rig.animations[0], 0.5f, pose);
     const std::vector<glm::mat4> world = worldTransforms(rig, pose);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace penumbra::testing {
@@ -40,8 +41,7 @@ std::vector<std::uint16_t> barIndices(const std::vector<glm::vec3>& positions)
         for (std::uint16_t i = 0; i < 4; ++i) {
             const auto j = std::uint16_t((i + 1) % 4);
             const std::uint16_t a = std::uint16_t(ring * 4 + i), b = std::uint16_t(ring * 4 + j);
-            const glm::vec3 outward =
-                glm::vec3(kCorners[i].x + kCorners[j].x, 0.0f, kCorners[i].y + kCorners[j].y);
+            const glm::vec3 outward = glm::vec3(kCorners[i].x + kCorners[j].x, 0.0f, kCorners[i].y + kCorners[j].y);
             triangle(a, b, std::uint16_t(b + 4), outward);
             triangle(a, std::uint16_t(b + 4), std::uint16_t(a + 4), outward);
         }
@@ -69,8 +69,9 @@ void addLightAndCamera(GltfBuilder& b, const glm::vec3& cameraPosition)
                               {"rotation", {-0.6427876, 0, 0, 0.7660444}},
                               {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}));
     b.add("cameras", {{"name", "side"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}}}});
-    b.addRoot(b.add("nodes", {{"name", "side"}, {"camera", 0}, {"translation", {cameraPosition.x, cameraPosition.y,
-                                                                                  cameraPosition.z}}}));
+    b.addRoot(b.add("nodes", {{"name", "side"},
+                              {"camera", 0},
+                              {"translation", {cameraPosition.x, cameraPosition.y, cameraPosition.z}}}));
 }
 
 } // namespace
@@ -78,7 +79,7 @@ void addLightAndCamera(GltfBuilder& b, const glm::vec3& cameraPosition)
 int addFloatAccessor(GltfBuilder& builder, std::span<const float> values, const std::string& type)
 {
     const std::size_t n = components(type);
-    std::vector<float> lo(n, values[0]), hi(n, values[0]);
+    std::vector<float> lo(n, std::numeric_limits<float>::max()), hi(n, -std::numeric_limits<float>::max());
     for (std::size_t i = 0; i < values.size(); ++i) {
         lo[i % n] = std::min(lo[i % n], values[i]);
         hi[i % n] = std::max(hi[i % n], values[i]);
@@ -114,8 +115,8 @@ GltfBuilder twoBoneBendScene(BendWeights weights)
     const int joint = b.addAccessor(joints, positions.size(), "VEC4", Component::UnsignedByte);
     int weight = 0;
     if (weights == BendWeights::Float) {
-        weight = b.addAccessor(bytesOf(std::span<const float>(floatWeights)), positions.size(), "VEC4",
-                               Component::Float);
+        weight =
+            b.addAccessor(bytesOf(std::span<const float>(floatWeights)), positions.size(), "VEC4", Component::Float);
     } else {
         const float total = weights == BendWeights::UnsignedByte ? 255.0f : 200.0f;
         std::vector<std::uint8_t> bytes;
@@ -124,18 +125,20 @@ GltfBuilder twoBoneBendScene(BendWeights weights)
         weight = b.addAccessor(bytes, positions.size(), "VEC4", Component::UnsignedByte, true);
     }
     const int material =
-        b.add("materials", {{"name", "bar"},
-                            {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.3, 0.1, 1.0}}, {"metallicFactor", 0}}}});
-    const int mesh = b.add(
-        "meshes", {{"name", "bar"},
-                   {"primitives",
-                    {{{"attributes", {{"POSITION", position}, {"NORMAL", normal}, {"JOINTS_0", joint}, {"WEIGHTS_0", weight}}},
-                      {"indices", index},
-                      {"material", material}}}}});
+        b.add("materials",
+              {{"name", "bar"},
+               {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.3, 0.1, 1.0}}, {"metallicFactor", 0}}}});
+    const int mesh =
+        b.add("meshes", {{"name", "bar"},
+                         {"primitives",
+                          {{{"attributes",
+                             {{"POSITION", position}, {"NORMAL", normal}, {"JOINTS_0", joint}, {"WEIGHTS_0", weight}}},
+                            {"indices", index},
+                            {"material", material}}}}});
     const int elbow = b.add("nodes", {{"name", "elbow"}, {"translation", {0, 1, 0}}});
     const int root = b.add("nodes", {{"name", "root"}, {"children", {elbow}}});
     b.addRoot(root);
-    const std::array<float, 32> inverseBind{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+    const std::array<float, 32> inverseBind{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0,  0, 1,
                                             1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1};
     b.add("skins", {{"name", "arm"},
                     {"joints", {root, elbow}},
