@@ -76,6 +76,22 @@ TEST(KeyframesTest, SkinningBlendsJointMatricesAndTurnsNormals)
     EXPECT_GT(skinned.normal.y, skinned.normal.x);
 }
 
+// Section 3.7.2.2: each target adds its offsets times its weight to position, normal and tangent xyz; w stays.
+TEST(KeyframesTest, MorphTargetsAddWeightedOffsetsToEveryAttribute)
+{
+    Vertex rest;
+    rest.tangent = glm::vec4(1.0f, 0.0f, 0.0f, -1.0f);
+    const std::vector<MorphTarget> targets{
+        {{glm::vec3(0.0f, 2.0f, 0.0f)}, {glm::vec3(1.0f, 0.0f, 0.0f)}, {}},
+        {{}, {}, {glm::vec3(0.0f, 0.0f, 4.0f)}},
+    };
+    const std::vector<float> weights{0.5f, 0.25f};
+    const Vertex morphed = morphVertex(rest, targets, weights, 0);
+    EXPECT_EQ(morphed.position, glm::vec3(0.0f, 1.0f, 0.0f));
+    EXPECT_EQ(morphed.normal, glm::vec3(0.5f, 1.0f, 0.0f));
+    EXPECT_EQ(morphed.tangent, glm::vec4(1.0f, 0.0f, 1.0f, -1.0f));
+}
+
 TEST(KeyframesTest, WorldTransformsComposeParentsFirst)
 {
     Rig rig;
