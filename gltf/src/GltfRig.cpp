@@ -312,6 +312,22 @@ void markDynamic(scene::Scene& scene)
     }
 }
 
+// Posing moves objects only: an animated light or camera stays where the rest pose puts it.
+void noteStillLightsAndCameras(const Document& document, const NodeWalk& walk, const scene::Rig& rig,
+                               const std::vector<std::uint32_t>& rigNode, std::vector<std::string>& notes)
+{
+    const std::vector<bool> animated = animatedNodes(rig);
+    const auto note = [&](int node, const char* what) {
+        if (animated[rigNode[std::size_t(node)]])
+            notes.push_back(fmt::format("{}: the {} is animated, which is not supported: it stays in its rest pose",
+                                        describe("node", node, document.model().nodes[std::size_t(node)].name), what));
+    };
+    for (const LightInstance& light : walk.lights)
+        note(light.node, "light");
+    for (const CameraInstance& camera : walk.cameras)
+        note(camera.node, "camera");
+}
+
 } // namespace
 
 std::size_t targetCount(const tinygltf::Mesh& mesh)
@@ -343,6 +359,7 @@ void readRig(const Document& document, const NodeWalk& walk, scene::Scene& scene
     }
     rig.animations = readAnimations(document, rigNode, notes);
     markDynamic(scene);
+    noteStillLightsAndCameras(document, walk, rig, rigNode, notes);
     scene::poseScene(scene, std::nullopt, 0.0f);
 }
 

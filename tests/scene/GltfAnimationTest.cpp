@@ -141,6 +141,25 @@ TEST_F(GltfAnimationTest, StepAndCubicSplineChannelsMoveTheirNodes)
     EXPECT_NEAR(scene.objects[*scene.findObject("step")].worldBounds.max.x, 1.0f, kTolerance);
 }
 
+TEST_F(GltfAnimationTest, AnAnimatedCameraIsNotedAsStayingInItsRestPose)
+{
+    GltfBuilder b = testing::twoBoneBendScene();
+    nlohmann::json& j = b.json();
+    // The camera node "side" (the last root) carried by the elbow.
+    const int camera = j["scenes"][0]["nodes"].back();
+    j["scenes"][0]["nodes"].erase(j["scenes"][0]["nodes"].size() - 1);
+    for (nlohmann::json& node : j["nodes"])
+        if (node.value("name", "") == "elbow")
+            node["children"] = {camera};
+    const gltf::GltfScene loaded = gltf::loadGltf(write(b));
+    EXPECT_NE(std::find(loaded.notes.begin(), loaded.notes.end(),
+                        fmt::format("node {} ('side'): the camera is animated, which is not supported: it stays in "
+                                    "its rest pose",
+                                    camera)),
+              loaded.notes.end())
+        << ::testing::PrintToString(loaded.notes);
+}
+
 TEST_F(GltfAnimationTest, BadSkinsAndAnimationsAreRefusedNamingTheAccessor)
 {
     const auto refused = [&](const std::function<void(nlohmann::json&)>& edit, const std::string& expected) {
