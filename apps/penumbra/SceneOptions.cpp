@@ -8,6 +8,7 @@
 #include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/LocalLights.hpp"
+#include "penumbra/scene/Posing.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include <charconv>
@@ -113,6 +114,13 @@ CLI::Validator projectionValidator()
 
 void addSceneOptions(CLI::App& command, SceneOptions& options)
 {
+    command
+        .add_option("--time", options.time,
+                    "Pose a glTF file's skins, morph targets and nodes at this many seconds into --animation (keys "
+                    "clamped at both ends; skinned and morphed on the CPU)")
+        ->check(CLI::Range(0.0f, 1.0e6f));
+    command.add_option("--animation", options.animation,
+                       "The glTF animation --time plays, by name or index (default: the first)");
     command
         .add_option("--scene", options.scene, fmt::format("A built-in scene ({}) or a .gltf or .glb file", kSceneNames))
         ->check(CLI::Validator([](std::string& s) { return validateScene(s); }, "SCENE"))
@@ -271,6 +279,19 @@ void makeDynamic(scene::Scene& scene, const std::string& name)
         throw rhi::Error(fmt::format("--dynamic '{}': the scene has no object of that name", name));
 }
 
+// --time and --animation: the scene posed by scene::poseScene.
+void poseAt(scene::Scene& scene, const SceneOptions& options)
+{
+    if (scene.rig.animations.empty())
+        throw rhi::Error(fmt::format("--time/--animation: the scene '{}' has no animations", options.scene));
+    try {
+        scene::poseScene(scene, scene::findAnimation(scene.rig, options.animation.empty() ? "0" : options.animation),
+                         options.time.value_or(0.0f));
+    } catch (const scene::SceneError& error) {
+        throw rhi::Error(fmt::format("--animation '{}': {}", options.animation, error.what()));
+    }
+}
+
 } // namespace
 
 LoadedScene loadScene(const SceneOptions& options)
@@ -291,6 +312,8 @@ LoadedScene loadScene(const SceneOptions& options)
                                          options.camera, options.scene));
         loaded.scene = namedScene(options.scene);
     }
+    if (options.time || !options.animation.empty())
+        poseAt(loaded.scene, options);
     if (options.localLights)
         scene::keepFirstLocalLights(loaded.scene, *options.localLights);
     for (const std::string& light : options.lights)

@@ -17,7 +17,7 @@ namespace penumbra::apps {
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --lights, --camera, --light,
 // --ambient,
 // --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
-// --light-size, --projection, --dynamic, --static-maps, --realtime-casters.
+// --light-size, --projection, --dynamic, --static-maps, --realtime-casters, --time, --animation.
 struct SceneOptions {
     std::string scene = "test";
     std::optional<std::uint32_t> localLights; // --lights N: the scene's first N local lights (keepFirstLocalLights)
@@ -40,6 +40,8 @@ struct SceneOptions {
     std::vector<std::string> lightStaticMaps; // NAME=MODE: a light's own static map mode (applyLightShadowUpdate)
     std::string realtimeCasters; // shadows::RealtimeCasters by its JSON name; empty: the settings file's
     std::string baked; // a `penumbra bake` folder: static maps from it; empty: none
+    std::optional<float> time; // seconds into the animation (scene::poseScene); empty: the rest pose
+    std::string animation; // a glTF animation's name or index; empty: the first, when --time is given
 };
 
 // --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
@@ -66,8 +68,8 @@ struct LoadedScene {
     std::vector<std::string> notes; // from the glTF loader
 };
 
-// The built-in scene or glTF file, with --camera, --light, --normal-bias-side and --dynamic applied. Throws
-// scene::SceneError (a glTF file's errors name it) or rhi::Error.
+// The built-in scene or glTF file posed at --time in --animation, with --camera, --light, --normal-bias-side and
+// --dynamic applied. Throws scene::SceneError (a glTF file's errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 
 // --baked's folder read (shadows::readStaticShadowBake), or nullopt without --baked.

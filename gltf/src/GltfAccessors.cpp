@@ -312,6 +312,37 @@ std::vector<std::uint32_t> readIndices(const Document& document, int accessor, s
     return indices;
 }
 
+std::vector<float> readComponents(const Document& document, int accessor, std::string_view owner,
+                                  std::string_view semantic, int type, std::span<const int> componentTypes)
+{
+    const ElementView view = viewOf(document, accessor, owner, semantic, type, componentTypes);
+    const auto components = static_cast<std::size_t>(tinygltf::GetNumComponentsInType(type));
+    std::vector<float> values(view.count * components, 0.0f);
+    if (!view.data)
+        return values;
+    const bool normalized = document.model().accessors[std::size_t(accessor)].normalized;
+    const auto componentSize = static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(view.componentType));
+    std::vector<std::vector<double>> perComponent(components);
+    for (std::size_t i = 0; i < view.count; ++i)
+        for (std::size_t c = 0; c < components; ++c) {
+            const unsigned char* at = view.data + i * view.stride + c * componentSize;
+            float value = 0.0f;
+            if (normalized || view.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT)
+                value = component(at, view.componentType);
+            else if (view.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE)
+                value = float(load<std::uint8_t>(at));
+            else
+                value = float(load<std::uint16_t>(at));
+            if (!std::isfinite(value))
+                document.fail(
+                    fmt::format("{}: accessor {} ({}) element {} is not finite", owner, accessor, semantic, i));
+            values[i * components + c] = value;
+            perComponent[c].push_back(value);
+        }
+    checkBounds(document, accessor, perComponent, normalized ? normalizedScale(view.componentType) : 1.0);
+    return values;
+}
+
 std::size_t accessorCount(const Document& document, int accessor, std::string_view owner)
 {
     return document.at(document.model().accessors, accessor, "accessor", owner).count;

@@ -7,6 +7,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -40,6 +41,11 @@ std::vector<glm::vec4> readColors(const Document& document, int accessor, std::s
 
 // SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT (indices).
 std::vector<std::uint32_t> readIndices(const Document& document, int accessor, std::string_view owner);
+
+// Elements of `type` (TINYGLTF_TYPE_*) and one of `componentTypes`, their components one after another as floats:
+// components of a normalized accessor mapped as glTF 2.0 section 3.11 says, other integers as they are (JOINTS_n).
+std::vector<float> readComponents(const Document& document, int accessor, std::string_view owner,
+                                  std::string_view semantic, int type, std::span<const int> componentTypes);
 
 // The element count an accessor declares, after checking that it exists.
 std::size_t accessorCount(const Document& document, int accessor, std::string_view owner);

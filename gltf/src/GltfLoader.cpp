@@ -3,6 +3,7 @@
 #include "GltfDocument.hpp"
 #include "GltfFile.hpp"
 #include "GltfNodes.hpp"
+#include "GltfRig.hpp"
 #include "GltfUnsupported.hpp"
 
 #include "penumbra/scene/SceneDefaults.hpp"
@@ -174,6 +175,7 @@ GltfScene toScene(const Document& document, std::vector<std::string> readNotes, 
     std::vector<std::string>& notes = result.notes;
     checkSupport(document, notes);
     const NodeWalk walk = walkNodes(document, world, notes);
+    readRig(document, walk, world, notes);
     for (const LightInstance& light : walk.lights)
         addLight(document, light, world, notes);
     if (world.lights.empty() && world.spotLights.empty() && world.pointLights.empty()) {

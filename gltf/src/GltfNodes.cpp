@@ -68,8 +68,10 @@ private:
         const tinygltf::Mesh& mesh = document_.at(model_.meshes, node.mesh, "mesh", name);
         const std::string base = node.name.empty() ? (mesh.name.empty() ? name : mesh.name) : node.name;
         const std::optional<Instances> instances = readInstances(document_, node, index);
+        // glTF 2.0 section 3.7.3.1: a skinned mesh is placed by its joints, not by its node.
+        const glm::mat4 placed = node.skin >= 0 ? glm::mat4(1.0f) : world;
         if (!instances) {
-            if (!addPrimitives(node.mesh, mesh, base, world, shadows))
+            if (!addPrimitives(index, node.mesh, mesh, base, placed, glm::mat4(1.0f), shadows))
                 notes_.push_back(fmt::format("{}: skipped, its transform scales it to nothing", name));
             return;
         }
@@ -81,8 +83,8 @@ private:
         // The extension's implementation note: "the non-instanced version of the mesh should not be rendered".
         std::size_t skipped = 0;
         for (std::size_t i = 0; i < instances->transforms.size(); ++i)
-            skipped += !addPrimitives(node.mesh, mesh, fmt::format("{}/instance {}", base, i),
-                                      world * instances->transforms[i], shadows);
+            skipped += !addPrimitives(index, node.mesh, mesh, fmt::format("{}/instance {}", base, i),
+                                      placed * instances->transforms[i], instances->transforms[i], shadows);
         if (skipped > 0)
             notes_.push_back(fmt::format("{}: {} of {} instances skipped, their transforms scale them to nothing", name,
                                          skipped, instances->transforms.size()));
@@ -90,9 +92,10 @@ private:
 
     // An object per primitive of mesh `meshIndex` at `world`, named `base` (`base/<primitive>` for a mesh of more
     // than one); false, adding nothing, for a transform that scales the mesh to nothing.
-    bool addPrimitives(int meshIndex, const tinygltf::Mesh& mesh, const std::string& base, const glm::mat4& world,
-                       const NodeShadows& shadows)
+    bool addPrimitives(int nodeIndex, int meshIndex, const tinygltf::Mesh& mesh, const std::string& base,
+                       const glm::mat4& world, const glm::mat4& instance, const NodeShadows& shadows)
     {
+        const bool skinned = model_.nodes[std::size_t(nodeIndex)].skin >= 0;
         const float determinant = glm::determinant(glm::mat3(world));
         if (std::abs(determinant) < kSingularDeterminant)
             return false;
@@ -110,19 +113,24 @@ private:
                 materials_.material(mesh.primitives[p].material,
                                     fmt::format("{} primitive {}", describe("mesh", meshIndex, mesh.name), p));
             const auto key = std::make_tuple(meshIndex, int(p), mirrored);
-            auto found = meshes_.find(key);
-            if (found == meshes_.end()) {
+            // A deformed mesh changes per pose, so it is never shared.
+            const bool deformed = skinned || !mesh.primitives[p].targets.empty();
+            const auto found = meshes_.find(key);
+            std::uint32_t sceneMesh = found == meshes_.end() ? 0 : found->second;
+            if (found == meshes_.end() || deformed) {
                 const std::optional<scene::MaterialTexture>& normal =
                     scene_.materials[material].texture(scene::TextureSlot::Normal);
                 scene::MeshData data = readPrimitive(document_, meshIndex, int(p),
                                                      normal ? std::optional(normal->texCoord) : std::nullopt);
-                found =
-                    meshes_.emplace(key, scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data)))
-                        .first;
+                sceneMesh = scene_.addMesh(mirrored ? reversedWinding(std::move(data)) : std::move(data));
+                if (!deformed)
+                    meshes_.emplace(key, sceneMesh);
             }
-            scene::Object& object =
-                scene_.objects[scene_.addObject(mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p),
-                                                found->second, material, world)];
+            const std::uint32_t objectIndex =
+                scene_.addObject(mesh.primitives.size() == 1 ? base : fmt::format("{}/{}", base, p), sceneMesh,
+                                 material, world);
+            walk_.objects.push_back({objectIndex, nodeIndex, meshIndex, int(p), instance});
+            scene::Object& object = scene_.objects[objectIndex];
             object.castShadows = shadows.cast;
             object.receiveShadows = shadows.receive;
             object.mobility = shadows.mobility;

@@ -359,6 +359,7 @@ void checkSchema(const JsonFile& file)
     AccessorUsage usage = checkMeshes(file);
     checkCamerasAndLights(file);
     checkNodes(file, root, usage);
+    checkSkinsAndAnimations(file);
 }
 
 } // namespace penumbra::gltf

@@ -30,6 +30,8 @@ using AccessorUsage = std::map<int, std::string>;
 void checkMaterials(const JsonFile& file);
 void checkTexturesAndImages(const JsonFile& file);
 void checkCamerasAndLights(const JsonFile& file);
+// Skins, animations and morph target counts: required properties, indices, enums, accessor formats.
+void checkSkinsAndAnimations(const JsonFile& file);
 // The node's EXT_mesh_gpu_instancing object, when it has one: a node with a mesh, at least one attribute, each
 // an accessor of the format the extension allows that nothing else uses, all of one count. Returns that count,
 // the node's instances (0 without the extension).

@@ -27,17 +27,6 @@ void checkSupport(const Document& document, std::vector<std::string>& notes)
     for (const std::string& extension : model.extensionsUsed)
         if (!supported(extension))
             notes.push_back(fmt::format("extension {} is not supported: ignored", extension));
-    if (!model.skins.empty())
-        notes.push_back(fmt::format("skins are not supported: {} skin(s) ignored, meshes drawn in their bind pose",
-                                    model.skins.size()));
-    const auto morphed = std::count_if(model.meshes.begin(), model.meshes.end(), [](const tinygltf::Mesh& mesh) {
-        return std::any_of(mesh.primitives.begin(), mesh.primitives.end(),
-                           [](const tinygltf::Primitive& p) { return !p.targets.empty(); });
-    });
-    if (morphed > 0)
-        notes.push_back(fmt::format("morph targets are not supported: {} mesh(es) drawn without them", morphed));
-    if (!model.animations.empty())
-        notes.push_back(fmt::format("animations are not supported: {} animation(s) ignored", model.animations.size()));
 }
 
 } // namespace penumbra::gltf

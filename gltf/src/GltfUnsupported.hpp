@@ -8,8 +8,7 @@
 namespace penumbra::gltf {
 
 // Fails for an extension in extensionsRequired that the loader does not implement; adds one note per
-// file for each feature it leaves out (skins, morph targets, animations, extensions outside the
-// supported list), so nothing is dropped silently.
+// file for each extension outside the supported list it leaves out, so nothing is dropped silently.
 void checkSupport(const Document& document, std::vector<std::string>& notes);
 
 } // namespace penumbra::gltf

@@ -1,5 +1,7 @@
 // Writes the command-line tests' glTF scene (testing::exampleScene), or with `materials` the material features'
-// scene (testing::materialsScene): write-example-gltf [materials] <file.gltf|file.glb>.
+// scene (testing::materialsScene), or with `bend` the animation tests' two-bone bend (testing::twoBoneBendScene):
+// write-example-gltf [materials|bend] <file.gltf|file.glb>.
+#include "GltfAnimationScenes.hpp"
 #include "GltfBuilder.hpp"
 
 #include <cstdio>
@@ -8,16 +10,17 @@
 
 int main(int argc, char** argv)
 {
-    const bool materials = argc == 3 && std::string_view(argv[1]) == "materials";
-    if (argc != 2 && !materials) {
-        std::fprintf(stderr, "usage: %s [materials] <file.gltf|file.glb>\n", argv[0]);
+    const std::string_view kind = argc == 3 ? std::string_view(argv[1]) : "";
+    if (argc != 2 && kind != "materials" && kind != "bend") {
+        std::fprintf(stderr, "usage: %s [materials|bend] <file.gltf|file.glb>\n", argv[0]);
         return 2;
     }
     try {
         const std::filesystem::path path = argv[argc - 1];
         std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
-        const penumbra::testing::GltfBuilder scene =
-            materials ? penumbra::testing::materialsScene() : penumbra::testing::exampleScene();
+        const penumbra::testing::GltfBuilder scene = kind == "materials" ? penumbra::testing::materialsScene()
+                                                     : kind == "bend"    ? penumbra::testing::twoBoneBendScene()
+                                                                         : penumbra::testing::exampleScene();
         if (path.extension() == ".glb")
             scene.writeGlb(path);
         else

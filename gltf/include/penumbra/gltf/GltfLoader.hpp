@@ -48,7 +48,9 @@ struct GltfScene {
 // - per node, extras {"penumbra": {"castShadows": "on" | "off" | "twoSided" | "shadowsOnly",
 //   "receiveShadows": bool}} set Object::castShadows and receiveShadows of its primitives; children
 //   inherit what they do not set.
-// - what is left out (skins, morph targets, animations, other extensions) is noted once per file.
+// - skins (JOINTS_n, WEIGHTS_n), morph targets (POSITION, NORMAL, TANGENT) and animations go into Scene::rig; the
+//   scene is posed at rest (scene::poseScene with no animation), scene::poseScene poses it at another time.
+// - what is left out (other extensions) is noted once per file.
 // - KHR_lights_punctual: directional -> Scene::lights, spot -> spotLights (cone angles are
 //   half-angles in both), point -> pointLights; lights shine along their node's -z. A light
 //   without range gets kDefaultRangePerSqrtIntensity * sqrt(intensity) (at least 1): the distance

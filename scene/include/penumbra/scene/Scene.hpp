@@ -4,6 +4,7 @@
 #include "penumbra/scene/Geometry.hpp"
 #include "penumbra/scene/Light.hpp"
 #include "penumbra/scene/Material.hpp"
+#include "penumbra/scene/Rig.hpp"
 #include "penumbra/scene/TextureImage.hpp"
 
 #include <glm/mat4x4.hpp>
@@ -76,6 +77,8 @@ struct Scene {
     std::vector<PointLight> pointLights;
     std::vector<TextureImage> textures; // referred to by Material::textures
     Camera camera;
+    // A glTF file's nodes, skins, morph targets and animations, to pose the objects at another time (Posing.hpp).
+    Rig rig;
 
     // Adds a mesh and returns its index.
     std::uint32_t addMesh(MeshData mesh);
