@@ -8,6 +8,7 @@
 #include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/LocalLights.hpp"
+#include "penumbra/scene/SceneDefaults.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include <charconv>
@@ -126,12 +127,20 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         ->check(CLI::Validator([](std::string& s) { return validateCamera(s); }, "CAMERA"));
     command
         .add_option("--light", options.lights,
-                    fmt::format("Add a light (repeatable): {}; e.g. point:0,3,0:12:5", kLightSyntax))
+                    fmt::format("Add a light (repeatable): {}; e.g. point:0,3,0:12:5. The first one replaces "
+                                "the default sun of a glTF file without lights (see --default-lights)",
+                                kLightSyntax))
         ->check(CLI::Validator(
             [](std::string& s) {
                 return parseLightOption(s) ? std::string() : fmt::format("'{}' is not {}", s, kLightSyntax);
             },
             "LIGHT"));
+    command
+        .add_option("--default-lights", options.defaultLights,
+                    "The default sun of a glTF file without lights (45 degrees up over the camera's left shoulder, "
+                    "with shadows): auto (added unless --light adds one), on (kept beside --light), off (never)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
     command
         .add_option("--ambient", options.ambient,
                     fmt::format("Ambient light: {} (linear; the third field makes a sky/ground hemisphere), e.g. "
@@ -272,17 +281,41 @@ void makeDynamic(scene::Scene& scene, const std::string& name)
 
 } // namespace
 
+namespace {
+
+// --camera px,py,pz:tx,ty,tz: the scene camera moved there, keeping its field of view and planes.
+void placeCamera(scene::Camera& camera, const LookAt& lookAt)
+{
+    // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
+    const float vertical = std::abs(glm::normalize(lookAt.target - lookAt.position).y);
+    const glm::vec3 up = vertical > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const scene::Camera placed = scene::lookAt(lookAt.position, lookAt.target, camera.fovY, up);
+    camera.position = placed.position;
+    camera.forward = placed.forward;
+    camera.up = placed.up;
+}
+
+float aspectOf(const std::string& size)
+{
+    const std::optional<Size> parsed = parseSize(size);
+    return parsed ? float(parsed->width) / float(parsed->height) : 1.0f;
+}
+
+} // namespace
+
 LoadedScene loadScene(const SceneOptions& options)
 {
     LoadedScene loaded;
     const std::optional<LookAt> lookAt = parseLookAt(options.camera);
+    bool defaultLights = false;
     if (isGltfPath(options.scene)) {
-        gltf::GltfOptions gltfOptions;
+        gltf::GltfOptions gltfOptions{.aspect = aspectOf(options.size)};
         if (!options.camera.empty() && !lookAt)
             gltfOptions.camera = options.camera;
         gltf::GltfScene file = gltf::loadGltf(options.scene, gltfOptions);
         loaded.scene = std::move(file.scene);
         loaded.notes = std::move(file.notes);
+        defaultLights = file.defaultLights;
     } else {
         if (!options.camera.empty() && !lookAt)
             throw rhi::Error(fmt::format("--camera '{}': the built-in scene '{}' has no named cameras; give a position "
@@ -290,28 +323,29 @@ LoadedScene loadScene(const SceneOptions& options)
                                          options.camera, options.scene));
         loaded.scene = namedScene(options.scene);
     }
+    if (lookAt)
+        placeCamera(loaded.scene.camera, *lookAt);
+    if (defaultLights) {
+        // The loader's sun faces the file's camera; the one used may be --camera's.
+        loaded.scene.lights.clear();
+        const bool keep = options.defaultLights == "on" || (options.defaultLights == "auto" && options.lights.empty());
+        if (keep)
+            loaded.scene.lights.push_back(scene::defaultSun(loaded.scene.camera));
+        else
+            loaded.notes.push_back(options.defaultLights == "off" ? "--default-lights off: the default sun left out"
+                                                                  : "--light replaces the default sun "
+                                                                    "(--default-lights on keeps it)");
+    }
     if (options.localLights)
         scene::keepFirstLocalLights(loaded.scene, *options.localLights);
     for (const std::string& light : options.lights)
         addLight(loaded.scene, parseLightOption(light).value());
-    if (!options.lights.empty())
-        loaded.scene.validate();
+    loaded.scene.validate();
     applyLightOverrides(loaded.scene, options.filter, options.lightSize, options.normalBiasSide);
     for (const std::string& spec : options.lightStaticMaps)
         applyLightShadowUpdate(loaded.scene, spec);
     for (const std::string& name : options.dynamicObjects)
         makeDynamic(loaded.scene, name);
-    if (lookAt) {
-        scene::Camera& camera = loaded.scene.camera;
-        // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
-        const float vertical = std::abs(glm::normalize(lookAt->target - lookAt->position).y);
-        const glm::vec3 up = vertical > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-        const scene::Camera placed = scene::lookAt(lookAt->position, lookAt->target, camera.fovY, up);
-        camera.position = placed.position;
-        camera.forward = placed.forward;
-        camera.up = placed.up;
-        loaded.scene.validate();
-    }
     return loaded;
 }
 

@@ -15,7 +15,7 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --lights, --camera, --light,
-// --ambient,
+// --default-lights, --ambient,
 // --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
 // --light-size, --projection, --dynamic, --static-maps, --realtime-casters.
 struct SceneOptions {
@@ -23,6 +23,8 @@ struct SceneOptions {
     std::optional<std::uint32_t> localLights; // --lights N: the scene's first N local lights (keepFirstLocalLights)
     std::string camera; // empty: the scene's own
     std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
+    // A glTF file without lights gets a default sun: "auto" without --light, "on" with --light too, "off" never.
+    std::string defaultLights = "auto";
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
     std::optional<float> anisotropy; // empty: the settings file's, or FrameDesc's default
     std::string normalBiasSide; // "receiver" or "caster" for every light; empty: each light's own
@@ -66,7 +68,8 @@ struct LoadedScene {
     std::vector<std::string> notes; // from the glTF loader
 };
 
-// The built-in scene or glTF file, with --camera, --light, --normal-bias-side and --dynamic applied. Throws
+// The built-in scene or glTF file, with --camera, --light (and the default sun of a glTF file without lights, placed
+// for the camera used), --normal-bias-side and --dynamic applied. Throws
 // scene::SceneError (a glTF file's errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 

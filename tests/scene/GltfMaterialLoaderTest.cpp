@@ -169,8 +169,8 @@ TEST_F(GltfLoaderTest, UnsupportedFeaturesAreNamedOncePerFile)
     EXPECT_EQ(all, "extension KHR_materials_clearcoat is not supported: ignored\n"
                    "skins are not supported: 2 skin(s) ignored, meshes drawn in their bind pose\n"
                    "morph targets are not supported: 1 mesh(es) drawn without them\n"
-                   "no lights: added a default sun\n"
-                   "no camera: framing the scene's bounds\n");
+                   "no camera: framing the scene's bounds\n"
+                   "no lights: added a default sun with shadows, 45 degrees up over the camera's left shoulder\n");
 }
 
 TEST_F(GltfLoaderTest, BadMaterialValuesAreNamedWithTheirField)

@@ -24,6 +24,9 @@ struct GltfOptions {
     // The camera to use: a glTF camera's name, or the name of a node that carries one. Without
     // it the first perspective camera met walking the scene's nodes is used.
     std::optional<std::string> camera;
+    // The frame's width / height, for the framing camera of a file without one: it fits the scene's bounding sphere
+    // to the narrower field of view.
+    float aspect = 1.0f;
 };
 
 // A loaded glTF file: the scene and the loader's notes.
@@ -32,6 +35,8 @@ struct GltfScene {
     // What was substituted or left out: defaults added, extensions and features ignored,
     // tinygltf's warnings. Nothing here changes whether the scene renders.
     std::vector<std::string> notes;
+    // The file has no lights and scene.lights holds the default sun alone: a light the user adds replaces it.
+    bool defaultLights = false;
 };
 
 // Loads a glTF 2.0 file (.gltf with external or data-URI buffers, or .glb) into a validated Scene:
@@ -55,7 +60,7 @@ struct GltfScene {
 //   where intensity / d^2 falls to 1/256, an 8-bit step of a unit-intensity surface.
 // - cameras: perspective, looking along the node's -z with +y up; aspectRatio is ignored (the
 //   frame decides it); an infinite far plane ends beyond the scene's bounds.
-// - no light: defaultSun(); no camera: framingCamera() of the scene's bounds.
+// - no camera: framingCamera() of the scene's bounds; then, with no light, scene::defaultSun() of that camera.
 // Before anything is read the file is checked as the Khronos glTF Validator checks it: the type, range and
 // enum value of every property read, required properties, every index, the node hierarchy, the byte ranges
 // of buffers, views and accessors, and the limits of gltf/src/GltfLimits.hpp and GltfImages.hpp (file,
