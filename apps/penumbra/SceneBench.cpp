@@ -214,7 +214,7 @@ nlohmann::json runSceneBench(const SceneBenchOptions& options)
 {
     const std::vector<std::string> configurations = expandBackends(options.backends);
     const LoadedScene loaded = loadScene(options.scene);
-    const render::FrameDesc frame = frameDesc(options.scene);
+    const render::FrameDesc frame = frameDesc(options.scene, loaded.scene);
     const std::optional<shadows::StaticShadowBake> bake = loadBake(options.scene);
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);

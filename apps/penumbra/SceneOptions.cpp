@@ -4,6 +4,7 @@
 #include "LightOption.hpp"
 #include "LightOverrides.hpp"
 #include "RenderSettings.hpp"
+#include "SceneShadowDefaults.hpp"
 
 #include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/rhi/Error.hpp"
@@ -132,7 +133,8 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                                 kLightSyntax))
         ->check(CLI::Validator(
             [](std::string& s) {
-                return parseLightOption(s) ? std::string() : fmt::format("'{}' is not {}", s, kLightSyntax);
+                std::string error;
+                return parseLightOption(s, &error) ? std::string() : error;
             },
             "LIGHT"));
     command
@@ -140,6 +142,12 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                     "The default sun of a glTF file without lights (45 degrees up over the camera's left shoulder, "
                     "with shadows): auto (added unless --light adds one), on (kept beside --light), off (never)")
         ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
+    command
+        .add_option("--missing-textures", options.missingTextures,
+                    "A glTF texture whose image file cannot be read: fail (stop, naming the image, its URI and the "
+                    "path tried) or stand-in (draw the material with its factors alone, noted)")
+        ->check(CLI::IsMember({"fail", "stand-in"}))
         ->capture_default_str();
     command
         .add_option("--ambient", options.ambient,
@@ -169,6 +177,16 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         .add_option("--settings", options.settings,
                     "Shadow settings JSON file, with optional \"ambient\" object and \"anisotropy\" number")
         ->check(CLI::ExistingFile);
+    command
+        .add_option("--shadow-defaults", options.shadowDefaults,
+                    fmt::format("Shadow settings without --settings: scene (the shadow distance reaches the scene's "
+                                "farthest point seen from the camera; a directional atlas of {0}x{0}, {1}x{1} for spot "
+                                "and point lights) or documents (the design documents' values: {2:g} m, atlases of "
+                                "{3}x{3})",
+                                kSceneAtlasSize, kSceneLocalAtlasSize, shadows::ShadowSettings{}.maxDistance,
+                                shadows::DirectionalShadowSettings{}.atlasSize))
+        ->check(CLI::IsMember({"scene", "documents"}))
+        ->capture_default_str();
     command
         .add_option("--filter", options.filter,
                     fmt::format("Every light's shadow filter, over the settings' and the lights' own: {}",
@@ -252,8 +270,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
     command
         .add_option(
             "--baked", options.baked,
-            "Static shadow maps from this `penumbra bake` folder instead of drawing static casters; a bake that "
-            "does not match the scene, its lights or settings is refused")
+            "Static shadow maps from this `penumbra bake` folder instead of drawing static casters into them; implies "
+            "--realtime-casters dynamic (the realtime atlases take static casters' depth from a cache drawn when a "
+            "tile's view changes, not every frame; `all` is refused). A bake that does not match the scene, its lights "
+            "or settings is refused")
         ->check(CLI::ExistingDirectory);
 }
 
@@ -309,10 +329,19 @@ LoadedScene loadScene(const SceneOptions& options)
     const std::optional<LookAt> lookAt = parseLookAt(options.camera);
     bool defaultLights = false;
     if (isGltfPath(options.scene)) {
-        gltf::GltfOptions gltfOptions{.aspect = aspectOf(options.size)};
+        gltf::GltfOptions gltfOptions{.aspect = aspectOf(options.size),
+                                      .missingTextures = options.missingTextures == "stand-in"
+                                                             ? gltf::MissingTextures::StandIn
+                                                             : gltf::MissingTextures::Fail};
         if (!options.camera.empty() && !lookAt)
             gltfOptions.camera = options.camera;
-        gltf::GltfScene file = gltf::loadGltf(options.scene, gltfOptions);
+        gltf::GltfScene file;
+        try {
+            file = gltf::loadGltf(options.scene, gltfOptions);
+        } catch (const gltf::GltfMissingImageError& error) {
+            throw gltf::GltfError(
+                fmt::format("{}; --missing-textures stand-in draws the model without it", error.what()));
+        }
         loaded.scene = std::move(file.scene);
         loaded.notes = std::move(file.notes);
         defaultLights = file.defaultLights;
@@ -349,7 +378,23 @@ LoadedScene loadScene(const SceneOptions& options)
     return loaded;
 }
 
-render::FrameDesc frameDesc(const SceneOptions& options)
+void applyBake(const SceneOptions& options, shadows::ShadowSettings& shadows)
+{
+    if (options.baked.empty())
+        return;
+    if (options.realtimeCasters == "all")
+        throw rhi::Error(fmt::format("--baked {} with --realtime-casters all: the bake holds the static casters' "
+                                     "shadows, and `all` would draw those casters into the realtime atlases every "
+                                     "frame again; leave --realtime-casters out (--baked implies dynamic)",
+                                     options.baked));
+    // A bake is static maps, kept as loaded; the realtime atlases take the static casters' depth from the tiles'
+    // cache (drawn when a tile's view changes) rather than drawing them every frame.
+    if (!shadows::hasStaticMaps(shadows))
+        shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+    shadows.staticMaps.realtimeCasters = shadows::RealtimeCasters::Dynamic;
+}
+
+render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& scene)
 {
     const std::optional<Size> size = parseSize(options.size);
     if (!size)
@@ -359,6 +404,8 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     frame.height = size->height;
     frame.depthPrepass = options.prepass == "on";
     frame.instancedDraws = options.instancing == "on";
+    if (options.settings.empty() && options.shadowDefaults == "scene")
+        frame.shadows = sceneShadowSettings(scene);
     if (!options.settings.empty()) {
         RenderSettings settings = loadRenderSettings(options.settings);
         frame.shadows = settings.shadows;
@@ -379,9 +426,7 @@ render::FrameDesc frameDesc(const SceneOptions& options)
         frame.shadows.staticMaps.update = shadows::parseStaticShadowUpdate(options.staticMaps).value();
     if (!options.realtimeCasters.empty())
         frame.shadows.staticMaps.realtimeCasters = shadows::parseRealtimeCasters(options.realtimeCasters).value();
-    // A bake is static maps: kept as loaded.
-    if (!options.baked.empty() && !shadows::hasStaticMaps(frame.shadows))
-        frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+    applyBake(options, frame.shadows);
     return frame;
 }
 

@@ -59,6 +59,8 @@ public:
         if (!options.baked.empty()) {
             renderer_.useBakedShadows(shadows::readStaticShadowBake(options.baked));
             applied_.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+            // The bake's casters are not drawn into the realtime atlases every frame (as `render --baked`).
+            applied_.shadows.staticMaps.realtimeCasters = shadows::RealtimeCasters::Dynamic;
         }
         applied_.msaa = options.msaa;
         applied_.shadowPath = options.shadowPath;

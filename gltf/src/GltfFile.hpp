@@ -14,10 +14,13 @@ namespace penumbra::gltf {
 // and checks it as the Khronos glTF Validator does (checkSchema, then the byte ranges of buffers,
 // buffer views and accessors once the buffers are read) within the limits of GltfLimits.hpp. Throws
 // GltfError "<path>: <JSON pointer>: <what>"; tinygltf's warnings become notes.
-Document readDocument(const std::filesystem::path& path, std::vector<std::string>& notes);
+// An image file that cannot be read is left empty and listed (Document::missingImage), for the material that uses it
+// to refuse or stand in for as `missingTextures` says.
+Document readDocument(const std::filesystem::path& path, std::vector<std::string>& notes,
+                      MissingTextures missingTextures = MissingTextures::Fail);
 
 // The same for a file's bytes, with external buffers and images looked up in `folder`.
 Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes, const std::filesystem::path& folder,
-                      std::vector<std::string>& notes);
+                      std::vector<std::string>& notes, MissingTextures missingTextures = MissingTextures::Fail);
 
 } // namespace penumbra::gltf

@@ -19,6 +19,18 @@ public:
     using scene::SceneError::SceneError;
 };
 
+// An image file that a texture uses and that cannot be read: what() names the image, its URI and the path tried.
+class GltfMissingImageError : public GltfError {
+public:
+    using GltfError::GltfError;
+};
+
+// What loadGltf does with a texture whose image file cannot be read.
+enum class MissingTextures {
+    Fail, // throw GltfMissingImageError
+    StandIn, // draw the material without the texture, with a note: its factors alone (no emissive light)
+};
+
 // Choices of loadGltf.
 struct GltfOptions {
     // The camera to use: a glTF camera's name, or the name of a node that carries one. Without
@@ -27,6 +39,7 @@ struct GltfOptions {
     // The frame's width / height, for the framing camera of a file without one: it fits the scene's bounding sphere
     // to the narrower field of view.
     float aspect = 1.0f;
+    MissingTextures missingTextures = MissingTextures::Fail;
 };
 
 // A loaded glTF file: the scene and the loader's notes.
