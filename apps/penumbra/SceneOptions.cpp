@@ -13,6 +13,7 @@
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -315,6 +316,37 @@ void placeCamera(scene::Camera& camera, const LookAt& lookAt)
     camera.up = placed.up;
 }
 
+// Progress on stderr while a glTF file loads, once it has taken over a second (a dozen 2048 x 2048 textures take
+// several): the images decoded so far, at most every half second, and the time the load took.
+class LoadProgress {
+public:
+    explicit LoadProgress(std::string file) : file_(std::move(file)) {}
+    ~LoadProgress()
+    {
+        if (const double seconds = elapsed(); seconds > kQuietSeconds)
+            fmt::print(stderr, "loaded {} in {:.1f} s\n", file_, seconds);
+    }
+    LoadProgress(const LoadProgress&) = delete;
+    LoadProgress& operator=(const LoadProgress&) = delete;
+
+    void images(std::size_t done, std::size_t total)
+    {
+        const double seconds = elapsed();
+        if (seconds <= kQuietSeconds || (seconds - lastLine_ < kEverySeconds && done < total))
+            return;
+        lastLine_ = seconds;
+        fmt::print(stderr, "loading {}: {} of {} images decoded, {:.1f} s\n", file_, done, total, seconds);
+    }
+
+private:
+    static constexpr double kQuietSeconds = 1.0, kEverySeconds = 0.5;
+    double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+    std::string file_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    double lastLine_ = 0.0;
+};
+
 float aspectOf(const std::string& size)
 {
     const std::optional<Size> parsed = parseSize(size);
@@ -335,6 +367,8 @@ LoadedScene loadScene(const SceneOptions& options)
                                                              : gltf::MissingTextures::Fail};
         if (!options.camera.empty() && !lookAt)
             gltfOptions.camera = options.camera;
+        LoadProgress progress(options.scene);
+        gltfOptions.imageProgress = [&progress](std::size_t done, std::size_t total) { progress.images(done, total); };
         gltf::GltfScene file;
         try {
             file = gltf::loadGltf(options.scene, gltfOptions);

@@ -212,7 +212,8 @@ std::string trimmed(std::string text)
 } // namespace
 
 Document readDocument(const std::string& name, std::span<const std::uint8_t> bytes, const std::filesystem::path& folder,
-                      std::vector<std::string>& notes, MissingTextures missingTextures)
+                      std::vector<std::string>& notes, MissingTextures missingTextures,
+                      const std::function<void(std::size_t, std::size_t)>& progress)
 {
     const bool glb = isGlb(bytes);
     const Json root =
@@ -225,7 +226,7 @@ Document readDocument(const std::string& name, std::span<const std::uint8_t> byt
 
     tinygltf::TinyGLTF loader;
     std::string imageFailure;
-    loader.SetImageLoader(loadImageData, &imageFailure);
+    loader.SetImageLoader(stashImageData, &imageFailure);
     tinygltf::Model model;
     std::string error, warning;
     const std::string base = folder.string();
@@ -238,6 +239,8 @@ Document readDocument(const std::string& name, std::span<const std::uint8_t> byt
     if (!ok)
         throw GltfError(fmt::format("{}: cannot read: {}", name, trimmed(error.empty() ? warning : error)));
     checkLayout(file, model);
+    if (const std::string failure = decodeStashedImages(model, progress); !failure.empty())
+        throw GltfError(fmt::format("{}: {}", name, failure));
     std::map<int, std::filesystem::path> missing = missingImages(model, folder);
     std::size_t start = 0;
     while (start < warning.size()) {
@@ -251,7 +254,7 @@ Document readDocument(const std::string& name, std::span<const std::uint8_t> byt
 }
 
 Document readDocument(const std::filesystem::path& path, std::vector<std::string>& notes,
-                      MissingTextures missingTextures)
+                      MissingTextures missingTextures, const std::function<void(std::size_t, std::size_t)>& progress)
 {
     const std::string name = path.string();
     std::error_code error;
@@ -266,7 +269,7 @@ Document readDocument(const std::filesystem::path& path, std::vector<std::string
     std::vector<std::uint8_t> bytes(size);
     if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
         throw GltfError(fmt::format("{}: cannot read the file", name));
-    return readDocument(name, bytes, path.parent_path(), notes, missingTextures);
+    return readDocument(name, bytes, path.parent_path(), notes, missingTextures, progress);
 }
 
 } // namespace penumbra::gltf

@@ -202,7 +202,7 @@ GltfScene toScene(const Document& document, std::vector<std::string> readNotes, 
 GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options)
 {
     std::vector<std::string> notes;
-    const Document document = readDocument(path, notes, options.missingTextures);
+    const Document document = readDocument(path, notes, options.missingTextures, options.imageProgress);
     return toScene(document, std::move(notes), options);
 }
 
@@ -210,7 +210,7 @@ GltfScene loadGltf(std::span<const std::uint8_t> bytes, const std::string& name,
                    const GltfOptions& options)
 {
     std::vector<std::string> notes;
-    const Document document = readDocument(name, bytes, folder, notes, options.missingTextures);
+    const Document document = readDocument(name, bytes, folder, notes, options.missingTextures, options.imageProgress);
     return toScene(document, std::move(notes), options);
 }
 

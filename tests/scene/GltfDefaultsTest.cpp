@@ -59,8 +59,8 @@ GltfBuilder triangleScene(float far, float scale = 1.0f)
 {
     GltfBuilder b;
     const std::array<glm::vec3, 3> positions{{{0, 0, 0}, {1, 0, 0}, {0, far, 0}}};
-    const int mesh =
-        b.add("meshes", {{"name", "spike"}, {"primitives", {{{"attributes", {{"POSITION", b.addPositions(positions)}}}}}}});
+    const int mesh = b.add("meshes", {{"name", "spike"},
+                                      {"primitives", {{{"attributes", {{"POSITION", b.addPositions(positions)}}}}}}});
     b.addRoot(b.add("nodes", {{"name", "spike"}, {"mesh", mesh}, {"scale", {scale, scale, scale}}}));
     return b;
 }

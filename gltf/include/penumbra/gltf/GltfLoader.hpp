@@ -3,6 +3,7 @@
 #include "penumbra/scene/Scene.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -40,6 +41,9 @@ struct GltfOptions {
     // to the narrower field of view.
     float aspect = 1.0f;
     MissingTextures missingTextures = MissingTextures::Fail;
+    // Called after each image is decoded (images decode in parallel, one per hardware thread; this is called on one
+    // thread at a time) with the images done and in all: for a progress line while a large file loads.
+    std::function<void(std::size_t done, std::size_t total)> imageProgress;
 };
 
 // A loaded glTF file: the scene and the loader's notes.
