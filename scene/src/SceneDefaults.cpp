@@ -34,16 +34,21 @@ DirectionalLight defaultSun(const Camera& camera)
     return {.name = "default sun", .direction = -glm::normalize(towardsSun)};
 }
 
+float framingDistance(float radius, float fovY, float aspect)
+{
+    // The narrower half field of view, as a tangent: a frame's half width is aspect x its half height.
+    const float halfSlope = std::tan(0.5f * fovY) * std::min(1.0f, aspect);
+    // A sphere of radius r at distance d has an outline at angle asin(r / d) from its centre: put that outline at
+    // the slope halfSlope / margin, so d = r / sin(atan(halfSlope / margin)).
+    return radius / std::sin(std::atan(halfSlope / kFramingMargin));
+}
+
 Camera framingCamera(const Bounds& bounds, float fovY, float aspect)
 {
     const Bounds box = bounds.empty() ? Bounds{glm::vec3(-1.0f), glm::vec3(1.0f)} : bounds;
     const glm::vec3 center = box.center();
     const float radius = std::max(0.5f * glm::length(box.size()), 1e-3f);
-    // The narrower half field of view, as a tangent: a frame's half width is aspect x its half height.
-    const float halfSlope = std::tan(0.5f * fovY) * std::min(1.0f, aspect);
-    // A sphere of radius r at distance d has an outline at angle asin(r / d) from its centre: put that outline at
-    // the slope halfSlope / margin, so d = r / sin(atan(halfSlope / margin)).
-    const float distance = radius / std::sin(std::atan(halfSlope / kFramingMargin));
+    const float distance = framingDistance(radius, fovY, aspect);
     const glm::vec3 back = glm::normalize(kViewpoint);
     Camera camera = lookAt(center + back * distance, center, fovY);
     // Near half-way to the bounding sphere (but not at zero, for depth precision), far just behind it.

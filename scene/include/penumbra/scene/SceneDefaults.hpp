@@ -17,6 +17,10 @@ inline constexpr float kDefaultSunAzimuthDegrees = 30.0f; // towards the camera'
 // picture's up as its forward direction on the ground.
 DirectionalLight defaultSun(const Camera& camera);
 
+// The distance from which a sphere of `radius` fills 1 / 1.1 of the narrower field of view of a frame of `aspect`
+// (width / height) and vertical field of view `fovY`.
+float framingDistance(float radius, float fovY, float aspect);
+
 // A camera looking at the bounds' centre from above and in front (+z, +x), at the distance where the bounding
 // sphere of the box fills 1 / 1.1 of the narrower field of view: the vertical one for frames at least as wide as
 // they are high (`aspect` = width / height >= 1), the horizontal one for taller frames. Near and far planes around
