@@ -36,6 +36,28 @@ std::optional<std::pair<std::string, scene::ShadowUpdate>> parseLightShadowUpdat
     return std::pair{spec.substr(0, split), *update};
 }
 
+// --light-size against each light's allowed range, so the error names the flag as typed rather than the light's
+// field that scene::Scene::validate would name.
+void checkLightSize(const scene::Scene& scene, float size)
+{
+    if (!(size >= 0.0f))
+        throw rhi::Error(fmt::format("--light-size {}: a source size is at least 0", size));
+    if (!scene.lights.empty() && size > scene::kMaxAngularDiameter)
+        throw rhi::Error(fmt::format("--light-size {}: directional lights take 0 to {} degrees of angular diameter "
+                                     "(light '{}')",
+                                     size, scene::kMaxAngularDiameter, scene.lights.front().name));
+    const auto checkLocal = [size](const auto& light, const char* kind) {
+        if (size > light.range)
+            throw rhi::Error(fmt::format("--light-size {}: spot and point lights take a radius of 0 to their range "
+                                         "in world units ({} light '{}' has range {})",
+                                         size, kind, light.name, light.range));
+    };
+    for (const scene::SpotLight& light : scene.spotLights)
+        checkLocal(light, "spot");
+    for (const scene::PointLight& light : scene.pointLights)
+        checkLocal(light, "point");
+}
+
 } // namespace
 
 bool isLightShadowUpdate(const std::string& spec) { return parseLightShadowUpdate(spec).has_value(); }
@@ -74,6 +96,7 @@ void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::op
         forEveryLight(scene, [side = *side](auto& light) { light.normalBiasSide = side; });
     }
     if (lightSize) {
+        checkLightSize(scene, *lightSize);
         for (scene::DirectionalLight& light : scene.lights)
             light.angularDiameter = *lightSize;
         for (scene::SpotLight& light : scene.spotLights)

@@ -28,7 +28,7 @@ void bake(const BakeOptions& options)
         throw rhi::Error(
             fmt::format("--backend '{}': a bake is made on one configuration (any one loads it)", options.backend));
     const LoadedScene loaded = loadScene(options.scene);
-    render::FrameDesc frame = frameDesc(options.scene);
+    render::FrameDesc frame = frameDesc(options.scene, loaded.scene);
     // A bake is the static maps: drawn once, whatever mode the settings keep them in at run time.
     frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
     auto device = createDevice(toolDeviceDesc(configurations[0], options.validate));

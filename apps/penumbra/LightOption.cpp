@@ -62,18 +62,49 @@ std::optional<glm::vec3> directionOf(const std::vector<float>& field)
     return std::isfinite(length) && length > 0.0f ? std::optional<glm::vec3>(*d / length) : std::nullopt;
 }
 
-} // namespace
-
-std::optional<LightOption> parseLightOption(const std::string& text)
+// What is wrong with the fields of a light of `kind` whose syntax is right, or "": the value and its allowed range.
+std::string rangeError(const std::string& kind, const std::vector<std::vector<float>>& f)
 {
-    const std::size_t colon = text.find(':');
-    if (colon == std::string::npos)
-        return std::nullopt;
-    const std::string kind = text.substr(0, colon);
-    const std::optional<std::vector<std::vector<float>>> fields = numberFields(text.substr(colon + 1));
-    if (!fields || fields->empty())
-        return std::nullopt;
-    const auto& f = *fields;
+    const auto checkDirection = [](const std::vector<float>& field) {
+        return vec3Of(field) && !directionOf(field) ? fmt::format("the direction {},{},{} has no length (give dx,dy,dz "
+                                                                  "not all 0)",
+                                                                  field[0], field[1], field[2])
+                                                    : std::string();
+    };
+    const auto checkRange = [](float range) {
+        return range > 0.0f ? std::string() : fmt::format("the range {} is not above 0", range);
+    };
+    const auto checkIntensity = [](const std::vector<std::vector<float>>& fields, std::size_t index) {
+        return fields.size() == index + 1 && fields[index].size() == 1 && fields[index][0] < 0.0f
+                   ? fmt::format("the intensity {} is below 0", fields[index][0])
+                   : std::string();
+    };
+    std::string error;
+    if (kind == "sun") {
+        error = checkDirection(f[0]);
+        return error.empty() ? checkIntensity(f, 1) : error;
+    }
+    if (kind == "spot" && f.size() >= 4) {
+        if (error = checkDirection(f[1]); !error.empty())
+            return error;
+        if (f[2].size() == 1 && !(error = checkRange(f[2][0])).empty())
+            return error;
+        if (f[3].size() == 1 && !(f[3][0] > 0.0f && f[3][0] < kMaxSpotOuterDegrees))
+            return fmt::format("the outer cone angle {} degrees is outside (0, {}) (a spot shadow's perspective "
+                               "projection needs a cone narrower than a half space)",
+                               f[3][0], kMaxSpotOuterDegrees);
+        return checkIntensity(f, 4);
+    }
+    if (kind == "point" && f.size() >= 2) {
+        if (f[1].size() == 1 && !(error = checkRange(f[1][0])).empty())
+            return error;
+        return checkIntensity(f, 2);
+    }
+    return {};
+}
+
+std::optional<LightOption> parseFields(const std::string& kind, const std::vector<std::vector<float>>& f)
+{
     if (kind == "sun") {
         const std::optional<glm::vec3> direction = directionOf(f[0]);
         const std::optional<float> intensity = intensityOf(f, 1);
@@ -87,8 +118,8 @@ std::optional<LightOption> parseLightOption(const std::string& text)
         const std::optional<float> range = scalarOf(f[2]);
         const std::optional<float> outer = scalarOf(f[3]);
         const std::optional<float> intensity = intensityOf(f, 4);
-        if (!position || !direction || !range || !(*range > 0.0f) || !outer || !(*outer > 0.0f && *outer < 90.0f) ||
-            !intensity)
+        if (!position || !direction || !range || !(*range > 0.0f) || !outer ||
+            !(*outer > 0.0f && *outer < kMaxSpotOuterDegrees) || !intensity)
             return std::nullopt;
         return scene::SpotLight{.name = "--light spot",
                                 .intensity = *intensity,
@@ -110,6 +141,23 @@ std::optional<LightOption> parseLightOption(const std::string& text)
                                  .range = *range};
     }
     return std::nullopt;
+}
+
+} // namespace
+
+std::optional<LightOption> parseLightOption(const std::string& text, std::string* error)
+{
+    const std::size_t colon = text.find(':');
+    const std::string kind = colon == std::string::npos ? std::string() : text.substr(0, colon);
+    const std::optional<std::vector<std::vector<float>>> fields =
+        kind.empty() ? std::nullopt : numberFields(text.substr(colon + 1));
+    std::optional<LightOption> light =
+        fields && !fields->empty() ? parseFields(kind, *fields) : std::optional<LightOption>();
+    if (!light && error) {
+        const std::string why = fields && !fields->empty() ? rangeError(kind, *fields) : std::string();
+        *error = why.empty() ? fmt::format("'{}' is not {}", text, kLightSyntax) : fmt::format("'{}': {}", text, why);
+    }
+    return light;
 }
 
 void addLight(scene::Scene& scene, const LightOption& light)

@@ -18,9 +18,14 @@ using LightOption = std::variant<scene::DirectionalLight, scene::SpotLight, scen
 inline constexpr const char* kLightSyntax = "sun:dx,dy,dz[:intensity], spot:px,py,pz:dx,dy,dz:range:outerDegrees"
                                             "[:intensity] or point:px,py,pz:range[:intensity]";
 
-// nullopt for text that does not follow the syntax or has a zero direction, a range <= 0, an
-// outer angle outside (0, 90) degrees or a negative intensity.
-std::optional<LightOption> parseLightOption(const std::string& text);
+// A spot light's outer cone angle is below this many degrees: its shadow's perspective projection needs a cone
+// narrower than a half space.
+inline constexpr float kMaxSpotOuterDegrees = 90.0f;
+
+// nullopt for text that does not follow the syntax or has a zero direction, a range <= 0, an outer angle outside
+// (0, kMaxSpotOuterDegrees) or a negative intensity; then `error`, if given, says which: the value and its allowed
+// range ("'spot:0,5,0:0,-1,0:10:120': the outer cone angle 120 degrees is outside (0, 90) ..."), or the syntax.
+std::optional<LightOption> parseLightOption(const std::string& text, std::string* error = nullptr);
 
 void addLight(scene::Scene& scene, const LightOption& light);
 

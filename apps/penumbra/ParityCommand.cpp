@@ -48,7 +48,7 @@ parity::Options parityOptions()
 void runParity(const ParityOptions& options)
 {
     const LoadedScene loaded = loadScene(options.scene);
-    render::FrameDesc frame = frameDesc(options.scene);
+    render::FrameDesc frame = frameDesc(options.scene, loaded.scene);
     frame.cascadeView = true;
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);

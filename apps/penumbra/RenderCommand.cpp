@@ -61,7 +61,7 @@ void render(const RenderOptions& options)
     const std::vector<std::string> configurations = expandBackends(options.backends);
     // Everything that can be refused is checked before the first device starts.
     const LoadedScene loaded = loadScene(options.scene);
-    render::FrameDesc frame = frameDesc(options.scene);
+    render::FrameDesc frame = frameDesc(options.scene, loaded.scene);
     frame.cascadeView = !options.debug.empty();
     const std::optional<shadows::StaticShadowBake> bake = loadBake(options.scene);
     for (const std::string& note : loaded.notes)

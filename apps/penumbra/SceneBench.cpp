@@ -236,7 +236,7 @@ void benchLights(const SceneBenchOptions& options, nlohmann::json& rows)
 {
     const std::vector<std::string> configurations = expandBackends(options.backends);
     const LoadedScene loaded = loadScene(options.scene);
-    const render::FrameDesc frame = frameDesc(options.scene);
+    const render::FrameDesc frame = frameDesc(options.scene, loaded.scene);
     const std::optional<shadows::StaticShadowBake> bake = loadBake(options.scene);
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);

@@ -4,14 +4,17 @@
 #include "LightOption.hpp"
 #include "LightOverrides.hpp"
 #include "RenderSettings.hpp"
+#include "SceneShadowDefaults.hpp"
 
 #include "penumbra/gltf/GltfLoader.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/LocalLights.hpp"
 #include "penumbra/scene/Posing.hpp"
+#include "penumbra/scene/SceneDefaults.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -135,12 +138,27 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         ->check(CLI::Validator([](std::string& s) { return validateCamera(s); }, "CAMERA"));
     command
         .add_option("--light", options.lights,
-                    fmt::format("Add a light (repeatable): {}; e.g. point:0,3,0:12:5", kLightSyntax))
+                    fmt::format("Add a light (repeatable): {}; e.g. point:0,3,0:12:5. The first one replaces "
+                                "the default sun of a glTF file without lights (see --default-lights)",
+                                kLightSyntax))
         ->check(CLI::Validator(
             [](std::string& s) {
-                return parseLightOption(s) ? std::string() : fmt::format("'{}' is not {}", s, kLightSyntax);
+                std::string error;
+                return parseLightOption(s, &error) ? std::string() : error;
             },
             "LIGHT"));
+    command
+        .add_option("--default-lights", options.defaultLights,
+                    "The default sun of a glTF file without lights (45 degrees up over the camera's left shoulder, "
+                    "with shadows): auto (added unless --light adds one), on (kept beside --light), off (never)")
+        ->check(CLI::IsMember({"auto", "on", "off"}))
+        ->capture_default_str();
+    command
+        .add_option("--missing-textures", options.missingTextures,
+                    "A glTF texture whose image file cannot be read: fail (stop, naming the image, its URI and the "
+                    "path tried) or stand-in (draw the material with its factors alone, noted)")
+        ->check(CLI::IsMember({"fail", "stand-in"}))
+        ->capture_default_str();
     command
         .add_option("--ambient", options.ambient,
                     fmt::format("Ambient light: {} (linear; the third field makes a sky/ground hemisphere), e.g. "
@@ -169,6 +187,16 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         .add_option("--settings", options.settings,
                     "Shadow settings JSON file, with optional \"ambient\" object and \"anisotropy\" number")
         ->check(CLI::ExistingFile);
+    command
+        .add_option("--shadow-defaults", options.shadowDefaults,
+                    fmt::format("Shadow settings without --settings: scene (the shadow distance reaches the scene's "
+                                "farthest point seen from the camera; a directional atlas of {0}x{0}, {1}x{1} for spot "
+                                "and point lights) or documents (the design documents' values: {2:g} m, atlases of "
+                                "{3}x{3})",
+                                kSceneAtlasSize, kSceneLocalAtlasSize, shadows::ShadowSettings{}.maxDistance,
+                                shadows::DirectionalShadowSettings{}.atlasSize))
+        ->check(CLI::IsMember({"scene", "documents"}))
+        ->capture_default_str();
     command
         .add_option("--filter", options.filter,
                     fmt::format("Every light's shadow filter, over the settings' and the lights' own: {}",
@@ -252,8 +280,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
     command
         .add_option(
             "--baked", options.baked,
-            "Static shadow maps from this `penumbra bake` folder instead of drawing static casters; a bake that "
-            "does not match the scene, its lights or settings is refused")
+            "Static shadow maps from this `penumbra bake` folder instead of drawing static casters into them; implies "
+            "--realtime-casters dynamic (the realtime atlases take static casters' depth from a cache drawn when a "
+            "tile's view changes, not every frame; `all` is refused). A bake that does not match the scene, its lights "
+            "or settings is refused")
         ->check(CLI::ExistingDirectory);
 }
 
@@ -294,17 +324,83 @@ void poseAt(scene::Scene& scene, const SceneOptions& options)
 
 } // namespace
 
+namespace {
+
+// --camera px,py,pz:tx,ty,tz: the scene camera moved there, keeping its field of view and planes.
+void placeCamera(scene::Camera& camera, const LookAt& lookAt)
+{
+    // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
+    const float vertical = std::abs(glm::normalize(lookAt.target - lookAt.position).y);
+    const glm::vec3 up = vertical > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const scene::Camera placed = scene::lookAt(lookAt.position, lookAt.target, camera.fovY, up);
+    camera.position = placed.position;
+    camera.forward = placed.forward;
+    camera.up = placed.up;
+}
+
+// Progress on stderr while a glTF file loads, once it has taken over a second (a dozen 2048 x 2048 textures take
+// several): the images decoded so far, at most every half second, and the time the load took.
+class LoadProgress {
+public:
+    explicit LoadProgress(std::string file) : file_(std::move(file)) {}
+    ~LoadProgress()
+    {
+        if (const double seconds = elapsed(); seconds > kQuietSeconds)
+            fmt::print(stderr, "loaded {} in {:.1f} s\n", file_, seconds);
+    }
+    LoadProgress(const LoadProgress&) = delete;
+    LoadProgress& operator=(const LoadProgress&) = delete;
+
+    void images(std::size_t done, std::size_t total)
+    {
+        const double seconds = elapsed();
+        if (seconds <= kQuietSeconds || (seconds - lastLine_ < kEverySeconds && done < total))
+            return;
+        lastLine_ = seconds;
+        fmt::print(stderr, "loading {}: {} of {} images decoded, {:.1f} s\n", file_, done, total, seconds);
+    }
+
+private:
+    static constexpr double kQuietSeconds = 1.0, kEverySeconds = 0.5;
+    double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+    std::string file_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    double lastLine_ = 0.0;
+};
+
+float aspectOf(const std::string& size)
+{
+    const std::optional<Size> parsed = parseSize(size);
+    return parsed ? float(parsed->width) / float(parsed->height) : 1.0f;
+}
+
+} // namespace
+
 LoadedScene loadScene(const SceneOptions& options)
 {
     LoadedScene loaded;
     const std::optional<LookAt> lookAt = parseLookAt(options.camera);
+    bool defaultLights = false;
     if (isGltfPath(options.scene)) {
-        gltf::GltfOptions gltfOptions;
+        gltf::GltfOptions gltfOptions{.aspect = aspectOf(options.size),
+                                      .missingTextures = options.missingTextures == "stand-in"
+                                                             ? gltf::MissingTextures::StandIn
+                                                             : gltf::MissingTextures::Fail};
         if (!options.camera.empty() && !lookAt)
             gltfOptions.camera = options.camera;
-        gltf::GltfScene file = gltf::loadGltf(options.scene, gltfOptions);
+        LoadProgress progress(options.scene);
+        gltfOptions.imageProgress = [&progress](std::size_t done, std::size_t total) { progress.images(done, total); };
+        gltf::GltfScene file;
+        try {
+            file = gltf::loadGltf(options.scene, gltfOptions);
+        } catch (const gltf::GltfMissingImageError& error) {
+            throw gltf::GltfError(
+                fmt::format("{}; --missing-textures stand-in draws the model without it", error.what()));
+        }
         loaded.scene = std::move(file.scene);
         loaded.notes = std::move(file.notes);
+        defaultLights = file.defaultLights;
     } else {
         if (!options.camera.empty() && !lookAt)
             throw rhi::Error(fmt::format("--camera '{}': the built-in scene '{}' has no named cameras; give a position "
@@ -314,32 +410,49 @@ LoadedScene loadScene(const SceneOptions& options)
     }
     if (options.time || !options.animation.empty())
         poseAt(loaded.scene, options);
+    if (lookAt)
+        placeCamera(loaded.scene.camera, *lookAt);
+    if (defaultLights) {
+        // The loader's sun faces the file's camera; the one used may be --camera's.
+        loaded.scene.lights.clear();
+        const bool keep = options.defaultLights == "on" || (options.defaultLights == "auto" && options.lights.empty());
+        if (keep)
+            loaded.scene.lights.push_back(scene::defaultSun(loaded.scene.camera));
+        else
+            loaded.notes.push_back(options.defaultLights == "off" ? "--default-lights off: the default sun left out"
+                                                                  : "--light replaces the default sun "
+                                                                    "(--default-lights on keeps it)");
+    }
     if (options.localLights)
         scene::keepFirstLocalLights(loaded.scene, *options.localLights);
     for (const std::string& light : options.lights)
         addLight(loaded.scene, parseLightOption(light).value());
-    if (!options.lights.empty())
-        loaded.scene.validate();
+    loaded.scene.validate();
     applyLightOverrides(loaded.scene, options.filter, options.lightSize, options.normalBiasSide);
     for (const std::string& spec : options.lightStaticMaps)
         applyLightShadowUpdate(loaded.scene, spec);
     for (const std::string& name : options.dynamicObjects)
         makeDynamic(loaded.scene, name);
-    if (lookAt) {
-        scene::Camera& camera = loaded.scene.camera;
-        // Straight up or down, +y cannot be the up vector; -z then puts +z at the bottom of the picture.
-        const float vertical = std::abs(glm::normalize(lookAt->target - lookAt->position).y);
-        const glm::vec3 up = vertical > 0.999f ? glm::vec3(0.0f, 0.0f, -1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-        const scene::Camera placed = scene::lookAt(lookAt->position, lookAt->target, camera.fovY, up);
-        camera.position = placed.position;
-        camera.forward = placed.forward;
-        camera.up = placed.up;
-        loaded.scene.validate();
-    }
     return loaded;
 }
 
-render::FrameDesc frameDesc(const SceneOptions& options)
+void applyBake(const SceneOptions& options, shadows::ShadowSettings& shadows)
+{
+    if (options.baked.empty())
+        return;
+    if (options.realtimeCasters == "all")
+        throw rhi::Error(fmt::format("--baked {} with --realtime-casters all: the bake holds the static casters' "
+                                     "shadows, and `all` would draw those casters into the realtime atlases every "
+                                     "frame again; leave --realtime-casters out (--baked implies dynamic)",
+                                     options.baked));
+    // A bake is static maps, kept as loaded; the realtime atlases take the static casters' depth from the tiles'
+    // cache (drawn when a tile's view changes) rather than drawing them every frame.
+    if (!shadows::hasStaticMaps(shadows))
+        shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+    shadows.staticMaps.realtimeCasters = shadows::RealtimeCasters::Dynamic;
+}
+
+render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& scene)
 {
     const std::optional<Size> size = parseSize(options.size);
     if (!size)
@@ -349,6 +462,8 @@ render::FrameDesc frameDesc(const SceneOptions& options)
     frame.height = size->height;
     frame.depthPrepass = options.prepass == "on";
     frame.instancedDraws = options.instancing == "on";
+    if (options.settings.empty() && options.shadowDefaults == "scene")
+        frame.shadows = sceneShadowSettings(scene);
     if (!options.settings.empty()) {
         RenderSettings settings = loadRenderSettings(options.settings);
         frame.shadows = settings.shadows;
@@ -369,9 +484,7 @@ render::FrameDesc frameDesc(const SceneOptions& options)
         frame.shadows.staticMaps.update = shadows::parseStaticShadowUpdate(options.staticMaps).value();
     if (!options.realtimeCasters.empty())
         frame.shadows.staticMaps.realtimeCasters = shadows::parseRealtimeCasters(options.realtimeCasters).value();
-    // A bake is static maps: kept as loaded.
-    if (!options.baked.empty() && !shadows::hasStaticMaps(frame.shadows))
-        frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+    applyBake(options, frame.shadows);
     return frame;
 }
 

@@ -15,7 +15,7 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --lights, --camera, --light,
-// --ambient,
+// --default-lights, --missing-textures, --ambient,
 // --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
 // --light-size, --projection, --dynamic, --static-maps, --realtime-casters, --time, --animation.
 struct SceneOptions {
@@ -23,10 +23,16 @@ struct SceneOptions {
     std::optional<std::uint32_t> localLights; // --lights N: the scene's first N local lights (keepFirstLocalLights)
     std::string camera; // empty: the scene's own
     std::vector<std::string> lights; // LightOption syntax, added to the scene's lights
+    // A glTF file without lights gets a default sun: "auto" without --light, "on" with --light too, "off" never.
+    std::string defaultLights = "auto";
+    std::string missingTextures = "fail"; // a glTF texture whose image cannot be read: "fail" or "stand-in"
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
     std::optional<float> anisotropy; // empty: the settings file's, or FrameDesc's default
     std::string normalBiasSide; // "receiver" or "caster" for every light; empty: each light's own
     std::string settings;
+    // Without --settings: "scene" fits the shadow distance to the scene and takes kSceneAtlasSize atlases
+    // (sceneShadowSettings), "documents" keeps shadows::ShadowSettings{} (the design documents' values).
+    std::string shadowDefaults = "scene";
     std::string size = "1280x720";
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
     std::string instancing = "on"; // render::FrameDesc::instancedDraws
@@ -68,17 +74,24 @@ struct LoadedScene {
     std::vector<std::string> notes; // from the glTF loader
 };
 
-// The built-in scene or glTF file posed at --time in --animation, with --camera, --light, --normal-bias-side and
-// --dynamic applied. Throws scene::SceneError (a glTF file's errors name it) or rhi::Error.
+// The built-in scene or glTF file posed at --time in --animation, with --camera, --light (and the default sun of a
+// glTF file without lights, placed for the camera used), --normal-bias-side and --dynamic applied. Throws
+// scene::SceneError (a glTF file's errors name it) or rhi::Error.
 LoadedScene loadScene(const SceneOptions& options);
 
 // --baked's folder read (shadows::readStaticShadowBake), or nullopt without --baked.
 std::optional<shadows::StaticShadowBake> loadBake(const SceneOptions& options);
 
+// --baked's shadow settings: static maps kept (onChange unless the settings keep them otherwise) and
+// RealtimeCasters::Dynamic, so the bake's casters are not drawn into the realtime atlases every frame; throws
+// rhi::Error for --realtime-casters all with --baked.
+void applyBake(const SceneOptions& options, shadows::ShadowSettings& shadows);
+
 // Size, shadow settings, ambient light, anisotropy, MSAA and shadow path of the frame (--ambient, --anisotropy, --msaa
 // and --shadow-path over the settings file's "ambient", "anisotropy", "msaa" and "shadowPath"); throws
 // rhi::Error naming the settings file and field.
-render::FrameDesc frameDesc(const SceneOptions& options);
+// Without a settings file the shadows follow --shadow-defaults: sceneShadowSettings(scene) or the documents'.
+render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& scene);
 
 // One line per rendered configuration: size, lights, caster draws and the GPU time of each pass;
 // then the renderer's notes.

@@ -135,7 +135,7 @@ void soak(const SoakOptions& options)
         throw rhi::Error(
             fmt::format("--warmup: {} leaves none of the {} --frames to judge", options.warmup, options.frames));
     const LoadedScene loaded = loadScene(options.scene);
-    const render::FrameDesc start = frameDesc(options.scene);
+    const render::FrameDesc start = frameDesc(options.scene, loaded.scene);
     rhi::DeviceDesc desc = toolDeviceDesc(options.backend, true);
     desc.validation = options.apiValidation == "on";
     auto device = createDevice(desc);

@@ -116,7 +116,7 @@ void truth(const TruthOptions& options)
 {
     const LoadedScene loaded = loadScene(options.scene);
     const scene::Scene& scene = loaded.scene;
-    render::FrameDesc frame = frameDesc(options.scene);
+    render::FrameDesc frame = frameDesc(options.scene, loaded.scene);
     if (std::filesystem::exists(options.out) && !std::filesystem::is_directory(options.out))
         throw rhi::Error(fmt::format("--out: '{}' exists and is not a folder", options.out));
     for (const std::string& note : loaded.notes)

@@ -37,7 +37,8 @@ void addViewCommand(CLI::App& app)
     auto options = std::make_shared<viewer::ViewerOptions>();
     CLI::App* view = app.add_subcommand(
         "view",
-        "Open a window on a scene: orbit (left drag), fly (right drag, W A S D Q E), zoom (scroll), settings panel");
+        "Open a window on a scene: orbit (left drag), fly (right drag, W A S D Q E; + and - change the speed), zoom "
+        "(scroll), F frames the scene, R resets the camera, Tab hides the settings panel");
     view->add_option("-b,--backend", options->configuration,
                      "vulkan or opengl, or any configuration name (vulkan-reversed, opengl-noclip, ...)")
         ->check(configurationValidator());

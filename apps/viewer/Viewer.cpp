@@ -5,6 +5,7 @@
 #include "GlfwSession.hpp"
 #include "ImGuiRenderer.hpp"
 #include "ImGuiSession.hpp"
+#include "SceneShadowDefaults.hpp"
 #include "penumbra/parity/ImageFiles.hpp"
 #include "ViewState.hpp"
 #include "ViewerScene.hpp"
@@ -19,12 +20,16 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 #include <imgui.h>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace penumbra::viewer {
 namespace {
@@ -46,11 +51,22 @@ public:
         : options_(options), window_(penumbra::parseConfiguration(options.configuration), options.width, options.height,
                                      fmt::format("Penumbra viewer: {} ({})", options.scene, options.configuration)),
           device_(createDevice(windowDeviceDesc(options.configuration, options.validate, window_.handle()))),
-          swapchain_(device_->createSwapchain()), input_(window_.handle()),
-          scene_(loadViewerScene(options.scene, options.filter, options.lightSize)),
+          swapchain_(device_->createSwapchain()), input_(window_.handle()), scene_([&] {
+              ViewerScene loaded = loadViewerScene(options.scene, options.filter, options.lightSize);
+              loaderNotes_ = std::move(loaded.notes);
+              return std::move(loaded.scene);
+          }()),
           camera_(scene_.camera, orbitTargetDistance(scene_)), renderer_(*device_, scene_), compositor_(*device_)
     {
         applied_ = viewStateOf(scene_);
+        // The shadows `penumbra render` gives the scene without --settings: distance and atlases fitted to it.
+        applied_.shadows = apps::sceneShadowSettings(scene_);
+        const scene::Bounds bounds = scene_.worldBounds();
+        if (!bounds.empty()) {
+            sceneCenter_ = bounds.center();
+            sceneRadius_ = std::max(0.5f * glm::length(bounds.size()), 1e-3f);
+        }
+        camera_.flySpeed = CameraController::flySpeedFor(sceneRadius_);
         applied_.cascadeView = options.cascadeView;
         applied_.atlasOverlay = options.atlasOverlay;
         applied_.maxAnisotropy = options.maxAnisotropy;
@@ -59,6 +75,8 @@ public:
         if (!options.baked.empty()) {
             renderer_.useBakedShadows(shadows::readStaticShadowBake(options.baked));
             applied_.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
+            // The bake's casters are not drawn into the realtime atlases every frame (as `render --baked`).
+            applied_.shadows.staticMaps.realtimeCasters = shadows::RealtimeCasters::Dynamic;
         }
         applied_.msaa = options.msaa;
         applied_.shadowPath = options.shadowPath;
@@ -110,10 +128,13 @@ private:
         const rhi::Extent size = swapchain_->drawableSize();
         const CameraInput input = input_.poll(imgui_ && imgui_->wantsMouse(), imgui_ && imgui_->wantsKeyboard(),
                                               float(status_.frameMs * 1e-3));
-        camera_.update(input);
+        camera_.update(input, sceneCenter_, sceneRadius_,
+                       size.height > 0 ? float(size.width) / float(size.height) : 1.0f);
+        if (input_.togglePanel())
+            panelShown_ = !panelShown_;
         if (imgui_) {
             imgui_->newFrame();
-            if (drawSettingsPanel(edited_, status_, scene_))
+            if (panelShown_ && drawSettingsPanel(edited_, status_, scene_))
                 status_.error = applyViewState(edited_, applied_, scene_);
             ImGui::Render();
         }
@@ -147,7 +168,12 @@ private:
             renderer_.requestStaticShadowUpdate();
         applied_.redrawStaticMaps = edited_.redrawStaticMaps = false;
         status_.stats = renderer_.render(camera_.camera(), frame);
-        status_.notes = renderer_.notes();
+        status_.notes = loaderNotes_;
+        status_.notes.push_back(fmt::format("fly speed {:.3g} units/s (+ and - change it); F frames the scene, R "
+                                            "resets the camera, Tab hides this panel",
+                                            camera_.flySpeed));
+        const std::vector<std::string>& rendererNotes = renderer_.notes();
+        status_.notes.insert(status_.notes.end(), rendererNotes.begin(), rendererNotes.end());
         status_.atlasPicture = nullptr;
         if (applied_.atlasOverlay)
             updateAtlasPicture();
@@ -170,7 +196,11 @@ private:
     std::unique_ptr<rhi::Device> device_;
     std::unique_ptr<rhi::Swapchain> swapchain_;
     WindowInput input_;
+    std::vector<std::string> loaderNotes_;
     scene::Scene scene_;
+    glm::vec3 sceneCenter_{0.0f}; // the scene's bounding sphere, which F frames and the fly speed follows
+    float sceneRadius_ = 1.0f;
+    bool panelShown_ = true;
     CameraController camera_;
     render::SceneRenderer renderer_;
     Compositor compositor_;

@@ -11,13 +11,19 @@
 
 namespace penumbra::viewer {
 
-scene::Scene loadViewerScene(const std::string& name, const std::string& filter, std::optional<float> lightSize)
+ViewerScene loadViewerScene(const std::string& name, const std::string& filter, std::optional<float> lightSize)
 {
     const std::filesystem::path extension = std::filesystem::path(name).extension();
-    scene::Scene scene =
-        extension == ".gltf" || extension == ".glb" ? gltf::loadGltf(name).scene : apps::namedScene(name);
-    apps::applyLightOverrides(scene, filter, lightSize);
-    return scene;
+    ViewerScene loaded;
+    if (extension == ".gltf" || extension == ".glb") {
+        gltf::GltfScene file = gltf::loadGltf(name);
+        loaded.scene = std::move(file.scene);
+        loaded.notes = std::move(file.notes);
+    } else {
+        loaded.scene = apps::namedScene(name);
+    }
+    apps::applyLightOverrides(loaded.scene, filter, lightSize);
+    return loaded;
 }
 
 float orbitTargetDistance(const scene::Scene& scene)

@@ -3,6 +3,8 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <utility>
+
 namespace penumbra::viewer {
 
 WindowInput::WindowInput(GLFWwindow* window) : window_(window)
@@ -15,6 +17,13 @@ WindowInput::WindowInput(GLFWwindow* window) : window_(window)
 void WindowInput::onScroll(GLFWwindow* window, double, double y)
 {
     static_cast<WindowInput*>(glfwGetWindowUserPointer(window))->scroll_ += float(y);
+}
+
+bool WindowInput::pressed(int key)
+{
+    const bool down = glfwGetKey(window_, key) == GLFW_PRESS;
+    const bool was = std::exchange(down_[key], down);
+    return down && !was;
 }
 
 CameraInput WindowInput::poll(bool uiWantsMouse, bool uiWantsKeyboard, float seconds)
@@ -40,7 +49,14 @@ CameraInput WindowInput::poll(bool uiWantsMouse, bool uiWantsKeyboard, float sec
         const auto key = [&](int k) { return glfwGetKey(window_, k) == GLFW_PRESS ? 1.0f : 0.0f; };
         input.move = {key(GLFW_KEY_D) - key(GLFW_KEY_A), key(GLFW_KEY_E) - key(GLFW_KEY_Q),
                       key(GLFW_KEY_W) - key(GLFW_KEY_S)};
+        const bool faster = pressed(GLFW_KEY_EQUAL) | pressed(GLFW_KEY_KP_ADD);
+        const bool slower = pressed(GLFW_KEY_MINUS) | pressed(GLFW_KEY_KP_SUBTRACT);
+        input.speedSteps = int(faster) - int(slower);
+        input.frame = pressed(GLFW_KEY_F);
+        input.reset = pressed(GLFW_KEY_R);
     }
+    // Tab also reaches the viewer while the panel has the keyboard, so the panel can always be hidden.
+    togglePanel_ = pressed(GLFW_KEY_TAB);
     return input;
 }
 

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <tiny_gltf.h>
 
+#include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 
@@ -15,12 +17,24 @@ namespace penumbra::gltf {
 // A parsed glTF model and the path its errors name.
 class Document {
 public:
-    Document(std::string path, tinygltf::Model model, Deviations deviations = {})
-        : path_(std::move(path)), model_(std::move(model)), deviations_(std::move(deviations))
+    Document(std::string path, tinygltf::Model model, Deviations deviations = {},
+             std::map<int, std::filesystem::path> missingImages = {},
+             MissingTextures missingTextures = MissingTextures::Fail)
+        : path_(std::move(path)), model_(std::move(model)), deviations_(std::move(deviations)),
+          missingImages_(std::move(missingImages)), missingTextures_(missingTextures)
     {
     }
 
     const tinygltf::Model& model() const { return model_; }
+    // The file's path as errors name it.
+    const std::string& path() const { return path_; }
+    // The path tried for image `index` when its file could not be read, or nullptr.
+    const std::filesystem::path* missingImage(int index) const
+    {
+        const auto found = missingImages_.find(index);
+        return found == missingImages_.end() ? nullptr : &found->second;
+    }
+    MissingTextures missingTextures() const { return missingTextures_; }
     // Reading accessors finds deviations too; they are the loader's bookkeeping, not the document's state.
     Deviations& deviations() const { return deviations_; }
 
@@ -40,6 +54,8 @@ private:
     std::string path_;
     tinygltf::Model model_;
     mutable Deviations deviations_;
+    std::map<int, std::filesystem::path> missingImages_;
+    MissingTextures missingTextures_;
 };
 
 // "mesh 2 ('Cube')", or "mesh 2" when unnamed.

@@ -5,10 +5,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <thread>
+#include <vector>
 
 namespace penumbra::gltf {
 namespace {
@@ -107,18 +111,68 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
     return {};
 }
 
-bool loadImageData(tinygltf::Image* image, int index, std::string* error, std::string*, int, int,
-                   const unsigned char* bytes, int size, void* user)
+bool stashImageData(tinygltf::Image* image, int index, std::string* error, std::string*, int, int,
+                    const unsigned char* bytes, int size, void* user)
 {
-    const std::string why = decodeImage({bytes, size > 0 ? std::size_t(size) : 0u}, *image);
-    if (why.empty())
+    const std::span<const std::uint8_t> encoded(bytes, size > 0 ? std::size_t(size) : 0u);
+    const std::optional<Dimensions> header = headerDimensions(encoded);
+    std::string why;
+    if (!startsWith(encoded, kPng) && !startsWith(encoded, kJpeg))
+        why = "is neither a PNG nor a JPEG picture";
+    else if (header && (header->width > kMaxImageSide || header->height > kMaxImageSide ||
+                        std::uint64_t(header->width) * header->height > kMaxImageTexels))
+        why = fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", header->width, header->height,
+                          kMaxImageSide, kMaxImageTexels);
+    if (why.empty()) {
+        image->image.assign(encoded.begin(), encoded.end());
+        image->as_is = true;
         return true;
+    }
     const std::string failure = fmt::format("/images/{}: the picture {}", index, why);
     if (user)
         *static_cast<std::string*>(user) = failure;
     if (error)
         *error += failure;
     return false;
+}
+
+std::string decodeStashedImages(tinygltf::Model& model, const std::function<void(std::size_t, std::size_t)>& progress)
+{
+    std::vector<std::size_t> stashed;
+    for (std::size_t i = 0; i < model.images.size(); ++i)
+        if (model.images[i].as_is)
+            stashed.push_back(i);
+    std::vector<std::string> failures(stashed.size());
+    std::atomic<std::size_t> next{0}, done{0};
+    std::mutex reporting;
+    const auto work = [&] {
+        for (std::size_t k = next++; k < stashed.size(); k = next++) {
+            tinygltf::Image& image = model.images[stashed[k]];
+            const std::vector<unsigned char> encoded = std::move(image.image);
+            image.image.clear();
+            image.as_is = false;
+            failures[k] = decodeImage(encoded, image);
+            const std::size_t finished = ++done;
+            if (progress) {
+                const std::lock_guard lock(reporting);
+                progress(finished, stashed.size());
+            }
+        }
+    };
+    // Each picture decodes on its own (stb_image keeps its failure reason per thread), so the pictures do not depend
+    // on the thread count.
+    const std::size_t helpers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()) - 1,
+                                                      stashed.size() > 0 ? stashed.size() - 1 : 0);
+    {
+        std::vector<std::jthread> threads;
+        for (std::size_t i = 0; i < helpers; ++i)
+            threads.emplace_back(work);
+        work();
+    }
+    for (std::size_t k = 0; k < stashed.size(); ++k)
+        if (!failures[k].empty())
+            return fmt::format("/images/{}: the picture {}", stashed[k], failures[k]);
+    return {};
 }
 
 } // namespace penumbra::gltf

@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 
@@ -20,9 +21,15 @@ inline constexpr std::uint64_t kMaxImageTexels = std::uint64_t(1) << 26;
 // pixel data that does not decode.
 std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& image);
 
-// tinygltf's image-loading callback (TinyGLTF::SetImageLoader) over decodeImage; a failure is also
-// written to `user`, a std::string, as "/images/<index>: the picture <what is wrong>".
-bool loadImageData(tinygltf::Image* image, int index, std::string* error, std::string* warning, int requestedWidth,
-                   int requestedHeight, const unsigned char* bytes, int size, void* user);
+// tinygltf's image-loading callback (TinyGLTF::SetImageLoader): checks the format and the header's size, and keeps
+// the encoded bytes in image.image with image.as_is set, for decodeStashedImages to decode them all at once. A failure
+// is also written to `user`, a std::string, as "/images/<index>: the picture <what is wrong>".
+bool stashImageData(tinygltf::Image* image, int index, std::string* error, std::string* warning, int requestedWidth,
+                    int requestedHeight, const unsigned char* bytes, int size, void* user);
+
+// Decodes every image that stashImageData kept (decodeImage), one per hardware thread at a time; progress(done, total)
+// after each, on one thread at a time. Returns the first failure by image index, "/images/<index>: the picture <what
+// is wrong>", or "".
+std::string decodeStashedImages(tinygltf::Model& model, const std::function<void(std::size_t, std::size_t)>& progress);
 
 } // namespace penumbra::gltf

@@ -16,5 +16,9 @@ inline constexpr std::uint64_t kMaxNodeDepth = 1000; // nodes from a root to its
 // bounded like the nodes that would otherwise carry them.
 inline constexpr std::uint64_t kMaxInstances = kMaxObjects;
 inline constexpr int kMaxJsonDepth = 128; // nested JSON objects and arrays
+// The largest position coordinate, in an accessor and in world space: squares and products of two (lengths, matrix
+// products, the bounds' diagonal) stay finite in float (3.4e38) with room to spare, and a valid file whose bytes
+// make some vertices enormous is refused by accessor and element instead of failing inside the renderer.
+inline constexpr float kMaxCoordinate = 1e16f;
 
 } // namespace penumbra::gltf

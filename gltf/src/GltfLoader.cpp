@@ -160,7 +160,7 @@ scene::Camera chooseCamera(const Document& document, const std::vector<CameraIns
             return toCamera(document, instance, bounds);
     notes.push_back(cameras.empty() ? "no camera: framing the scene's bounds"
                                     : "no perspective camera: framing the scene's bounds");
-    return scene::framingCamera(bounds);
+    return scene::framingCamera(bounds, scene::Camera{}.fovY, options.aspect);
 }
 
 } // namespace
@@ -178,11 +178,15 @@ GltfScene toScene(const Document& document, std::vector<std::string> readNotes, 
     readRig(document, walk, world, notes);
     for (const LightInstance& light : walk.lights)
         addLight(document, light, world, notes);
-    if (world.lights.empty() && world.spotLights.empty() && world.pointLights.empty()) {
-        world.lights.push_back(scene::defaultSun());
-        notes.push_back("no lights: added a default sun");
-    }
     world.camera = chooseCamera(document, walk.cameras, options, world.worldBounds(), notes);
+    if (world.lights.empty() && world.spotLights.empty() && world.pointLights.empty()) {
+        world.lights.push_back(scene::defaultSun(world.camera));
+        result.defaultLights = true;
+        notes.push_back(
+            fmt::format("no lights: added a default sun with shadows, {:g} degrees up over the camera's left "
+                        "shoulder",
+                        scene::kDefaultSunElevationDegrees));
+    }
     for (std::string& note : document.deviations().notes())
         notes.push_back(std::move(note));
     try {
@@ -200,7 +204,7 @@ GltfScene toScene(const Document& document, std::vector<std::string> readNotes, 
 GltfScene loadGltf(const std::filesystem::path& path, const GltfOptions& options)
 {
     std::vector<std::string> notes;
-    const Document document = readDocument(path, notes);
+    const Document document = readDocument(path, notes, options.missingTextures, options.imageProgress);
     return toScene(document, std::move(notes), options);
 }
 
@@ -208,7 +212,7 @@ GltfScene loadGltf(std::span<const std::uint8_t> bytes, const std::string& name,
                    const GltfOptions& options)
 {
     std::vector<std::string> notes;
-    const Document document = readDocument(name, bytes, folder, notes);
+    const Document document = readDocument(name, bytes, folder, notes, options.missingTextures, options.imageProgress);
     return toScene(document, std::move(notes), options);
 }
 

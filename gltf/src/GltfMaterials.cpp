@@ -170,6 +170,10 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
                 notes_.push_back(fmt::format("{}: texture {} has no source image: left out", where, textureIndex));
                 return;
             }
+            if (const std::filesystem::path* tried = missingImage(textureIndex, where)) {
+                standIn(slot, material, where, *tried);
+                return;
+            }
             const scene::TextureColorSpace colorSpace =
                 slot == scene::TextureSlot::BaseColor || slot == scene::TextureSlot::Emissive
                     ? scene::TextureColorSpace::Srgb
@@ -194,6 +198,31 @@ std::uint32_t MaterialTable::material(int index, const std::string& primitive)
     const std::uint32_t sceneIndex = scene_.addMaterial(std::move(material));
     materials_.emplace(index, sceneIndex);
     return sceneIndex;
+}
+
+const std::filesystem::path* MaterialTable::missingImage(int textureIndex, const std::string& owner) const
+{
+    const tinygltf::Model& model = document_.model();
+    const tinygltf::Texture& texture = document_.at(model.textures, textureIndex, "texture", owner);
+    const std::filesystem::path* tried = document_.missingImage(texture.source);
+    if (tried && document_.missingTextures() == MissingTextures::Fail) {
+        const tinygltf::Image& image = model.images[std::size_t(texture.source)];
+        throw GltfMissingImageError(fmt::format("{}: {}: {} '{}' cannot be read (tried {})", document_.path(), owner,
+                                                describe("image", texture.source, image.name), image.uri,
+                                                tried->string()));
+    }
+    return tried;
+}
+
+void MaterialTable::standIn(scene::TextureSlot slot, scene::Material& material, const std::string& owner,
+                            const std::filesystem::path& tried)
+{
+    // Without the texture the material's factors apply alone (glTF 2.0, section 3.9: a texture multiplies its
+    // factor): a flat colour, flat normal, no occlusion. An emissive texture masks where the factor glows; without
+    // it nothing glows.
+    if (slot == scene::TextureSlot::Emissive)
+        material.emissive = glm::vec3(0.0f);
+    notes_.push_back(fmt::format("{}: image {} cannot be read: drawn with a flat stand-in", owner, tried.string()));
 }
 
 std::uint32_t MaterialTable::texture(int textureIndex, const std::string& owner, scene::TextureColorSpace colorSpace)

@@ -4,6 +4,7 @@
 
 #include "penumbra/scene/Scene.hpp"
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,6 +26,12 @@ public:
     std::uint32_t material(int index, const std::string& owner);
 
 private:
+    // The path tried for the image of glTF texture `textureIndex` when it cannot be read, or nullptr; throws
+    // GltfMissingImageError when the document does not stand in for missing images.
+    const std::filesystem::path* missingImage(int textureIndex, const std::string& owner) const;
+    // A material's texture in `slot` whose image at `tried` cannot be read: left out, with a note.
+    void standIn(scene::TextureSlot slot, scene::Material& material, const std::string& owner,
+                 const std::filesystem::path& tried);
     std::uint32_t texture(int textureIndex, const std::string& owner, scene::TextureColorSpace colorSpace);
 
     const Document& document_;

@@ -1,9 +1,12 @@
 #include "GltfMeshes.hpp"
 
 #include "GltfAccessors.hpp"
+#include "GltfLimits.hpp"
 #include "GltfTangents.hpp"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <numeric>
 #include <utility>
@@ -75,6 +78,13 @@ scene::MeshData readPrimitive(const Document& document, int meshIndex, int primi
     const std::vector<glm::vec3> positions = readVec3(document, positionAccessor, owner, "POSITION");
     if (positions.empty())
         document.fail(fmt::format("{}: accessor {} (POSITION) has no vertices", owner, positionAccessor));
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        if (glm::any(glm::greaterThan(glm::abs(positions[i]), glm::vec3(kMaxCoordinate))))
+            document.fail(
+                fmt::format("{}: accessor {} (POSITION) element {} is ({:g}, {:g}, {:g}), over the limit of {:g} "
+                            "for a coordinate",
+                            owner, positionAccessor, i, positions[i].x, positions[i].y, positions[i].z,
+                            kMaxCoordinate));
     std::vector<scene::Vertex> vertices(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i)
         vertices[i].position = positions[i];

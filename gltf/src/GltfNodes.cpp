@@ -1,6 +1,7 @@
 #include "GltfNodes.hpp"
 
 #include "GltfInstances.hpp"
+#include "GltfLimits.hpp"
 #include "GltfMaterials.hpp"
 #include "GltfMeshes.hpp"
 #include "GltfNodeShadows.hpp"
@@ -8,7 +9,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/common.hpp>
 #include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <cmath>
 #include <map>
@@ -131,11 +134,25 @@ private:
                                  material, world);
             walk_.objects.push_back({objectIndex, nodeIndex, meshIndex, int(p), instance});
             scene::Object& object = scene_.objects[objectIndex];
+            checkWorldBounds(object, meshIndex, mesh, p);
             object.castShadows = shadows.cast;
             object.receiveShadows = shadows.receive;
             object.mobility = shadows.mobility;
         }
         return true;
+    }
+
+    // A node's transform may carry positions within kMaxCoordinate beyond it (or to infinity).
+    void checkWorldBounds(const scene::Object& object, int meshIndex, const tinygltf::Mesh& mesh, std::size_t p) const
+    {
+        const glm::vec3 farthest = glm::max(glm::abs(object.worldBounds.min), glm::abs(object.worldBounds.max));
+        if (glm::all(glm::lessThanEqual(farthest, glm::vec3(kMaxCoordinate))))
+            return;
+        document_.fail(fmt::format("{} primitive {}: accessor {} (POSITION) under the transform of object '{}' "
+                                   "reaches ({:g}, {:g}, {:g}) in world space, over the limit of {:g} for a coordinate",
+                                   describe("mesh", meshIndex, mesh.name), p,
+                                   mesh.primitives[p].attributes.at("POSITION"), object.name, farthest.x, farthest.y,
+                                   farthest.z, kMaxCoordinate));
     }
 
     const Document& document_;

@@ -4,8 +4,12 @@
 
 #include "penumbra/rhi/MipChain.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <exception>
 #include <map>
+#include <thread>
+#include <vector>
 
 namespace penumbra::render {
 namespace {
@@ -51,17 +55,57 @@ std::optional<float> clipCutoffOf(const scene::Scene& scene, std::uint32_t image
     return std::nullopt;
 }
 
-std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image,
-                                            std::optional<float> alphaCutoff = std::nullopt)
+rhi::TextureDesc textureDesc(const scene::TextureImage& image)
 {
-    auto texture = device.createTexture(
-        {.width = image.width,
-         .height = image.height,
-         .mipLevels = mipLevelsFor(image),
-         .format = image.colorSpace == scene::TextureColorSpace::Srgb ? rhi::Format::RGBA8_SRGB : rhi::Format::RGBA8,
-         .debugName = debugName(image)});
-    rhi::writeMipChain(device, *texture, 0, std::as_bytes(std::span(image.rgba)), alphaCutoff);
+    return {.width = image.width,
+            .height = image.height,
+            .mipLevels = mipLevelsFor(image),
+            .format = image.colorSpace == scene::TextureColorSpace::Srgb ? rhi::Format::RGBA8_SRGB : rhi::Format::RGBA8,
+            .debugName = debugName(image)};
+}
+
+using MipChain = std::vector<std::vector<std::byte>>;
+
+MipChain mipChainOf(const scene::TextureImage& image, std::optional<float> alphaCutoff)
+{
+    const rhi::TextureDesc desc = textureDesc(image);
+    return rhi::generateMipChain(desc.format, desc.width, desc.height, desc.mipLevels,
+                                 std::as_bytes(std::span(image.rgba)), alphaCutoff);
+}
+
+std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image,
+                                            const MipChain& chain)
+{
+    auto texture = device.createTexture(textureDesc(image));
+    for (std::uint32_t level = 0; level < chain.size(); ++level)
+        device.writeTexture(*texture, 0, level, chain[level]);
     return texture;
+}
+
+// The mip chains of scene.textures[first, first + count), each generated on a thread of its own: with a dozen
+// 2048 x 2048 textures, filtering them one after another took seconds of a load (the device uploads stay in order, on
+// the calling thread).
+std::vector<MipChain> mipChainsOf(const scene::Scene& scene, std::size_t first, std::size_t count)
+{
+    std::vector<MipChain> chains(count);
+    std::vector<std::exception_ptr> failures(count);
+    const auto generate = [&](std::size_t k) {
+        try {
+            chains[k] = mipChainOf(scene.textures[first + k], clipCutoffOf(scene, std::uint32_t(first + k)));
+        } catch (...) {
+            failures[k] = std::current_exception();
+        }
+    };
+    {
+        std::vector<std::jthread> threads;
+        for (std::size_t k = 1; k < count; ++k)
+            threads.emplace_back(generate, k);
+        generate(0);
+    }
+    for (const std::exception_ptr& failure : failures)
+        if (failure)
+            std::rethrow_exception(failure);
+    return chains;
 }
 
 } // namespace
@@ -75,18 +119,24 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
         meshes_.push_back({upload(device, mesh.vertices, rhi::BufferUsage::Vertex, name + " vertices"),
                            upload(device, mesh.indices, rhi::BufferUsage::Index, name + " indices")});
     }
-    for (const scene::TextureImage& image : scene.textures) {
-        textures_.push_back(uploadTexture(device, image, clipCutoffOf(scene, std::uint32_t(textures_.size()))));
-        samplers_.push_back(device.createSampler(samplerDesc(image.sampler, anisotropy_, debugName(image))));
-        coverageSamplers_.push_back(
-            device.createSampler(samplerDesc(image.sampler, 1.0f, debugName(image) + " (coverage)")));
+    // As many textures at a time as there are hardware threads, so no more than that many chains are held at once.
+    const std::size_t batch = std::max(1u, std::thread::hardware_concurrency());
+    for (std::size_t first = 0; first < scene.textures.size(); first += batch) {
+        const std::vector<MipChain> chains = mipChainsOf(scene, first, std::min(batch, scene.textures.size() - first));
+        for (std::size_t k = 0; k < chains.size(); ++k) {
+            const scene::TextureImage& image = scene.textures[first + k];
+            textures_.push_back(uploadTexture(device, image, chains[k]));
+            samplers_.push_back(device.createSampler(samplerDesc(image.sampler, anisotropy_, debugName(image))));
+            coverageSamplers_.push_back(
+                device.createSampler(samplerDesc(image.sampler, 1.0f, debugName(image) + " (coverage)")));
+        }
     }
     const scene::TextureImage white{.name = "white texel",
                                     .width = 1,
                                     .height = 1,
                                     .rgba = {255, 255, 255, 255},
                                     .sampler = {.mipFilter = scene::TextureMipFilter::None}};
-    white_ = uploadTexture(device, white);
+    white_ = uploadTexture(device, white, mipChainOf(white, std::nullopt));
     whiteSampler_ = device.createSampler(samplerDesc(white.sampler, 1.0f, debugName(white)));
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> groups;
     for (const scene::Object& object : scene.objects)

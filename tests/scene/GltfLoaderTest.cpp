@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include "penumbra/gltf/GltfLoader.hpp"
+#include "penumbra/scene/SceneDefaults.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -292,22 +294,40 @@ TEST_F(GltfLoaderTest, UnknownSamplerCodesAreRefused)
 TEST_F(GltfLoaderTest, DefaultsForASceneWithoutLightsOrCamera)
 {
     const gltf::GltfScene loaded = gltf::loadGltf(write(cubeScene()));
+    EXPECT_TRUE(loaded.defaultLights);
     ASSERT_EQ(loaded.scene.lights.size(), 1u);
-    EXPECT_EQ(loaded.scene.lights[0].name, "default sun");
-    EXPECT_LT(loaded.scene.lights[0].direction.y, 0.0f);
+    const DirectionalLight& sun = loaded.scene.lights[0];
     const Camera& camera = loaded.scene.camera;
-    // The framing camera sees every corner of the cube in front of it, between its planes, and the cube fills most of
-    // the frame: its widest corner reaches 1 / 1.1 of the half field of view.
-    float widest = 0.0f;
-    for (const glm::vec3& corner : loaded.scene.worldBounds().corners()) {
+    EXPECT_EQ(sun.name, "default sun");
+    // From above, from behind the camera (it lights what the camera sees) and from its left.
+    EXPECT_NEAR(sun.direction.y, -std::sin(glm::radians(kDefaultSunElevationDegrees)), 1e-5f);
+    EXPECT_GT(glm::dot(sun.direction, camera.forward), 0.3f);
+    EXPECT_GT(glm::dot(sun.direction, camera.right()), 0.2f);
+    // The framing camera sees every corner of the cube in front of it, between its planes; the cube's bounding
+    // sphere fills most of the frame: its outline reaches 1 / 1.1 of the half field of view.
+    const Bounds bounds = loaded.scene.worldBounds();
+    for (const glm::vec3& corner : bounds.corners()) {
         const glm::vec3 view = glm::vec3(camera.view() * glm::vec4(corner, 1.0f));
         EXPECT_GT(-view.z, camera.nearPlane);
         EXPECT_LT(-view.z, camera.farPlane);
         EXPECT_LT(std::abs(view.y / view.z), std::tan(0.5f * camera.fovY));
-        widest = std::max({widest, std::abs(view.x / view.z), std::abs(view.y / view.z)});
     }
-    EXPECT_NEAR(widest / std::tan(0.5f * camera.fovY), 1.0f / 1.1f, 1e-3f);
+    const float distance = glm::length(bounds.center() - camera.position);
+    const float outline = std::asin(0.5f * glm::length(bounds.size()) / distance);
+    EXPECT_NEAR(std::tan(outline) / std::tan(0.5f * camera.fovY), 1.0f / 1.1f, 1e-3f);
     EXPECT_EQ(loaded.notes.size(), 2u);
+}
+
+TEST_F(GltfLoaderTest, FramingFitsTheNarrowerFieldOfViewOfATallFrame)
+{
+    const gltf::GltfScene wide = gltf::loadGltf(write(cubeScene()), {.aspect = 2.0f});
+    const gltf::GltfScene tall = gltf::loadGltf(write(cubeScene()), {.aspect = 0.5f});
+    const Bounds bounds = wide.scene.worldBounds();
+    const float wideDistance = glm::length(bounds.center() - wide.scene.camera.position);
+    const float tallDistance = glm::length(bounds.center() - tall.scene.camera.position);
+    // The horizontal half field of view of the tall frame has half the vertical one's tangent.
+    const float radius = 0.5f * glm::length(bounds.size());
+    EXPECT_NEAR(std::tan(std::asin(radius / tallDistance)) / std::tan(std::asin(radius / wideDistance)), 0.5f, 1e-3f);
 }
 
 TEST_F(GltfLoaderTest, GlbAndExternalBufferLoadLikeDataUris)

@@ -163,8 +163,8 @@ TEST_F(GltfLoaderTest, UnsupportedFeaturesAreNamedOncePerFile)
     for (const std::string& note : loaded.notes)
         all += note + "\n";
     EXPECT_EQ(all, "extension KHR_materials_clearcoat is not supported: ignored\n"
-                   "no lights: added a default sun\n"
-                   "no camera: framing the scene's bounds\n");
+                   "no camera: framing the scene's bounds\n"
+                   "no lights: added a default sun with shadows, 45 degrees up over the camera's left shoulder\n");
 }
 
 TEST_F(GltfLoaderTest, BadMaterialValuesAreNamedWithTheirField)

@@ -2,6 +2,7 @@
 
 #include "penumbra/imageio/ImageFiles.hpp"
 
+#include <fmt/format.h>
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -512,6 +513,130 @@ GltfBuilder materialsScene()
                               {"camera", 0},
                               {"translation", {0, 3, 13}},
                               {"rotation", {-0.0871557, 0, 0, 0.9961947}}}));
+    return b;
+}
+
+int addSphereMesh(GltfBuilder& builder, const std::string& name, int material, int segments, int rings)
+{
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint32_t> indices;
+    const float pi = 3.14159265f;
+    for (int r = 0; r <= rings; ++r) {
+        const float polar = pi * float(r) / float(rings);
+        for (int s = 0; s <= segments; ++s) {
+            const float around = 2.0f * pi * float(s) / float(segments);
+            positions.emplace_back(std::sin(polar) * std::sin(around), std::cos(polar),
+                                   std::sin(polar) * std::cos(around));
+            uvs.emplace_back(float(s) / float(segments), float(r) / float(rings));
+        }
+    }
+    const auto vertex = [segments](int r, int s) { return std::uint32_t(r * (segments + 1) + s); };
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            // Seen from outside, +polar is down and +around is to the right: (r, s), (r + 1, s), (r + 1, s + 1) is
+            // counter-clockwise.
+            if (r > 0)
+                indices.insert(indices.end(), {vertex(r, s), vertex(r + 1, s), vertex(r, s + 1)});
+            if (r + 1 < rings)
+                indices.insert(indices.end(), {vertex(r, s + 1), vertex(r + 1, s), vertex(r + 1, s + 1)});
+        }
+    nlohmann::json primitive = {{"attributes",
+                                 {{"POSITION", builder.addPositions(positions)},
+                                  {"NORMAL", builder.addNormals(positions)},
+                                  {"TEXCOORD_0", builder.addUvs(uvs)}}},
+                                {"indices", builder.addIndices(indices, Component::UnsignedShort)}};
+    if (material >= 0)
+        primitive["material"] = material;
+    return builder.add("meshes", {{"name", name}, {"primitives", {primitive}}});
+}
+
+GltfBuilder metallicSpheresScene()
+{
+    GltfBuilder b;
+    const int ground =
+        b.add("materials",
+              {{"name", "ground"},
+               {"pbrMetallicRoughness",
+                {{"baseColorFactor", {0.6, 0.6, 0.6, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}}});
+    b.addRoot(b.add("nodes", {{"name", "ground"},
+                              {"mesh", addCubeMesh(b, "ground", ground)},
+                              {"translation", {0, -0.5, 0}},
+                              {"scale", {3.2, 0.05, 2.4}}}));
+    struct Row {
+        const char* name;
+        std::array<double, 3> color;
+        double metallic;
+    };
+    const std::array<Row, 4> rows{{{"gold", {1.0, 0.77, 0.34}, 1.0},
+                                   {"silver", {0.97, 0.96, 0.91}, 1.0},
+                                   {"copper", {0.96, 0.64, 0.54}, 1.0},
+                                   {"white", {0.9, 0.9, 0.9}, 0.0}}};
+    constexpr int kColumns = 5;
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        for (int c = 0; c < kColumns; ++c) {
+            const double roughness = 0.1 + 0.2 * c;
+            const std::string name = fmt::format("{} {:.1f}", rows[r].name, roughness);
+            const int material =
+                b.add("materials", {{"name", name},
+                                    {"pbrMetallicRoughness",
+                                     {{"baseColorFactor", {rows[r].color[0], rows[r].color[1], rows[r].color[2], 1.0}},
+                                      {"metallicFactor", rows[r].metallic},
+                                      {"roughnessFactor", roughness}}}});
+            b.addRoot(b.add("nodes", {{"name", name},
+                                      {"mesh", addSphereMesh(b, name, material)},
+                                      {"translation", {1.2 * (c - 2), 0.0, 1.2 * (double(r) - 1.5)}},
+                                      {"scale", {0.45, 0.45, 0.45}}}));
+        }
+    return b;
+}
+
+GltfBuilder missingImageScene()
+{
+    GltfBuilder b;
+    const int image = b.add("images", {{"uri", "textures/albedo.png"}});
+    const int texture = b.add("textures", {{"source", image}});
+    const int material = b.add("materials", {{"name", "painted"},
+                                             {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
+    b.addRoot(b.add("nodes", {{"name", "cube"}, {"mesh", addCubeMesh(b, "cube", material)}}));
+    return b;
+}
+
+std::string truncatedGltf(const GltfBuilder& builder, double keep)
+{
+    const std::string text = builder.embedded().dump(1);
+    const std::size_t uri = text.find("data:application/octet-stream;base64,");
+    const std::size_t end = text.find('"', uri);
+    return text.substr(0, uri + std::size_t(keep * double(end - uri)));
+}
+
+GltfBuilder largeTexturesScene(int count, std::uint32_t side)
+{
+    GltfBuilder b;
+    std::uint32_t state = 12345;
+    // Numerical Recipes' linear congruential generator (section 7.1): deterministic noise without <random>.
+    const auto next = [&state] { return state = state * 1664525u + 1013904223u; };
+    const auto picture = [&](std::uint8_t blue) {
+        std::vector<std::uint8_t> rgba(std::size_t(side) * side * 4);
+        for (std::size_t i = 0; i < rgba.size(); i += 4) {
+            const std::uint32_t noise = next() >> 24;
+            const std::uint32_t x = std::uint32_t(i / 4) % side;
+            rgba[i] = std::uint8_t((x * 255 / side + noise) / 2);
+            rgba[i + 1] = std::uint8_t(noise);
+            rgba[i + 2] = blue;
+            rgba[i + 3] = 255;
+        }
+        return b.add("textures", {{"source", b.addPngImage(side, side, rgba)}});
+    };
+    for (int i = 0; i < count; ++i) {
+        const int material =
+            b.add("materials", {{"name", fmt::format("textured {}", i)},
+                                {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", picture(0)}}}}},
+                                {"normalTexture", {{"index", picture(255)}}}});
+        b.addRoot(b.add("nodes", {{"name", fmt::format("cube {}", i)},
+                                  {"mesh", addCubeMesh(b, fmt::format("cube {}", i), material)},
+                                  {"translation", {2.5 * i, 1.0, 0.0}}}));
+    }
     return b;
 }
 

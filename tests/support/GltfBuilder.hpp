@@ -116,4 +116,25 @@ GltfBuilder exampleScene();
 // blended ones; a sun and a camera named "materials".
 GltfBuilder materialsScene();
 
+// A UV sphere of radius 1 as one primitive (`segments` around, `rings` from pole to pole) with smooth normals and
+// uvs, counter-clockwise seen from outside. Returns the mesh index.
+int addSphereMesh(GltfBuilder& builder, const std::string& name, int material, int segments = 32, int rings = 16);
+
+// Rows of spheres on a ground slab, no lights and no camera (the loader's defaults light and frame it): gold,
+// silver and copper metals (metallic 1) and a white dielectric, roughness 0.1 to 0.9 along each row. The scene the
+// default lighting is judged on: metals show what the lighting reflects.
+GltfBuilder metallicSpheresScene();
+
+// A cube whose base colour texture names an image file that does not exist ("textures/albedo.png", beside the
+// .gltf), no lights and no camera.
+GltfBuilder missingImageScene();
+
+// The builder's document with its buffer inline as a base64 data URI, cut `keep` of the way into that URI, as a
+// download that stopped early leaves it.
+std::string truncatedGltf(const GltfBuilder& builder, double keep = 0.5);
+
+// `count` cubes in a row, each with its own base colour and normal textures: PNGs of `side` x `side` texels of
+// patterned noise (hard to compress, like photographed textures). For measuring how long images take to load.
+GltfBuilder largeTexturesScene(int count, std::uint32_t side);
+
 } // namespace penumbra::testing

@@ -1,27 +1,58 @@
-// Writes the command-line tests' glTF scene (testing::exampleScene), or with `materials` the material features'
-// scene (testing::materialsScene), or with `bend` the animation tests' two-bone bend (testing::twoBoneBendScene):
-// write-example-gltf [materials|bend] <file.gltf|file.glb>.
+// Writes the command-line tests' glTF scenes: write-example-gltf [KIND] <file.gltf|file.glb>, KIND one of
+//   (none)          testing::exampleScene
+//   materials       testing::materialsScene
+//   bend            testing::twoBoneBendScene (a skin and an animation)
+//   spheres         testing::metallicSpheresScene (no lights, no camera: the loader's defaults)
+//   missing-image   testing::missingImageScene (its image file is not written)
+//   truncated       testing::exampleScene cut half-way into its inline buffer (.gltf only)
+//   large-textures  testing::largeTexturesScene(6, 2048): 12 PNGs of 2048 x 2048 texels, to time loading
 #include "GltfAnimationScenes.hpp"
 #include "GltfBuilder.hpp"
 
 #include <cstdio>
 #include <exception>
+#include <fstream>
 #include <string_view>
+
+namespace {
+
+using penumbra::testing::GltfBuilder;
+
+GltfBuilder sceneOf(std::string_view kind)
+{
+    if (kind == "materials")
+        return penumbra::testing::materialsScene();
+    if (kind == "bend")
+        return penumbra::testing::twoBoneBendScene();
+    if (kind == "spheres")
+        return penumbra::testing::metallicSpheresScene();
+    if (kind == "missing-image")
+        return penumbra::testing::missingImageScene();
+    if (kind == "large-textures")
+        return penumbra::testing::largeTexturesScene(6, 2048);
+    return penumbra::testing::exampleScene();
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
-    const std::string_view kind = argc == 3 ? std::string_view(argv[1]) : "";
-    if (argc != 2 && kind != "materials" && kind != "bend") {
-        std::fprintf(stderr, "usage: %s [materials|bend] <file.gltf|file.glb>\n", argv[0]);
+    const std::string_view kind = argc == 3 ? argv[1] : "";
+    const bool known = kind.empty() || kind == "materials" || kind == "bend" || kind == "spheres" || kind == "missing-image" ||
+                       kind == "truncated" || kind == "large-textures";
+    if ((argc != 2 && argc != 3) || !known) {
+        std::fprintf(stderr,
+                     "usage: %s [materials|bend|spheres|missing-image|truncated|large-textures] <file.gltf|file.glb>\n",
+                     argv[0]);
         return 2;
     }
     try {
         const std::filesystem::path path = argv[argc - 1];
         std::filesystem::create_directories(path.parent_path().empty() ? "." : path.parent_path());
-        const penumbra::testing::GltfBuilder scene = kind == "materials" ? penumbra::testing::materialsScene()
-                                                     : kind == "bend"    ? penumbra::testing::twoBoneBendScene()
-                                                                         : penumbra::testing::exampleScene();
-        if (path.extension() == ".glb")
+        const GltfBuilder scene = sceneOf(kind);
+        if (kind == "truncated")
+            std::ofstream(path, std::ios::binary) << penumbra::testing::truncatedGltf(scene);
+        else if (path.extension() == ".glb")
             scene.writeGlb(path);
         else
             scene.writeGltf(path, true);

@@ -2,6 +2,7 @@
 
 #include "penumbra/scene/TestScenes.hpp"
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
@@ -79,6 +80,37 @@ TEST(CameraControllerTest, PitchStopsShortOfStraightUp)
     controller.update({.orbit = {0.0f, -100000.0f}});
     EXPECT_LT(controller.camera().forward.y, 0.9999f);
     EXPECT_GT(glm::length(controller.camera().right()), 0.99f);
+}
+
+TEST(CameraControllerTest, FrameFitsTheSphereFromTheSameDirectionAndResetReturnsToTheStart)
+{
+    const scene::Camera start = startCamera();
+    CameraController controller(start, 8.0f);
+    controller.update({.orbit = {40.0f, 10.0f}});
+    const glm::vec3 looking = controller.camera().forward;
+    const glm::vec3 center{1.0f, 0.5f, -2.0f};
+    controller.update({.frame = true}, center, 0.33f, 16.0f / 9.0f);
+    EXPECT_NEAR(glm::length(controller.camera().forward - looking), 0.0f, kTolerance);
+    EXPECT_NEAR(glm::length(controller.target() - center), 0.0f, kTolerance);
+    // The sphere's outline at 1 / 1.1 of the (vertical, narrower) half field of view, and in front of the near plane.
+    const float distance = distanceToTarget(controller);
+    EXPECT_NEAR(std::tan(std::asin(0.33f / distance)) / std::tan(0.5f * start.fovY), 1.0f / 1.1f, 1e-3f);
+    EXPECT_LT(controller.camera().nearPlane, distance - 0.33f);
+    controller.update({.reset = true});
+    EXPECT_EQ(controller.camera().position, start.position);
+    EXPECT_EQ(controller.camera().forward, start.forward);
+}
+
+TEST(CameraControllerTest, FlySpeedFollowsTheSceneAndItsKeys)
+{
+    CameraController controller(startCamera(), 8.0f);
+    controller.flySpeed = CameraController::flySpeedFor(0.33f);
+    EXPECT_FLOAT_EQ(controller.flySpeed, 0.165f);
+    controller.update({.speedSteps = 2});
+    EXPECT_FLOAT_EQ(controller.flySpeed, 0.165f * CameraController::kSpeedStep * CameraController::kSpeedStep);
+    const glm::vec3 before = controller.camera().position;
+    controller.update({.move = {0.0f, 0.0f, 1.0f}, .seconds = 1.0f});
+    EXPECT_NEAR(glm::length(controller.camera().position - before), controller.flySpeed, kTolerance);
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "penumbra/scene/Scene.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -19,11 +20,30 @@ public:
     using scene::SceneError::SceneError;
 };
 
+// An image file that a texture uses and that cannot be read: what() names the image, its URI and the path tried.
+class GltfMissingImageError : public GltfError {
+public:
+    using GltfError::GltfError;
+};
+
+// What loadGltf does with a texture whose image file cannot be read.
+enum class MissingTextures {
+    Fail, // throw GltfMissingImageError
+    StandIn, // draw the material without the texture, with a note: its factors alone (no emissive light)
+};
+
 // Choices of loadGltf.
 struct GltfOptions {
     // The camera to use: a glTF camera's name, or the name of a node that carries one. Without
     // it the first perspective camera met walking the scene's nodes is used.
     std::optional<std::string> camera;
+    // The frame's width / height, for the framing camera of a file without one: it fits the scene's bounding sphere
+    // to the narrower field of view.
+    float aspect = 1.0f;
+    MissingTextures missingTextures = MissingTextures::Fail;
+    // Called after each image is decoded (images decode in parallel, one per hardware thread; this is called on one
+    // thread at a time) with the images done and in all: for a progress line while a large file loads.
+    std::function<void(std::size_t done, std::size_t total)> imageProgress;
 };
 
 // A loaded glTF file: the scene and the loader's notes.
@@ -32,6 +52,8 @@ struct GltfScene {
     // What was substituted or left out: defaults added, extensions and features ignored,
     // tinygltf's warnings. Nothing here changes whether the scene renders.
     std::vector<std::string> notes;
+    // The file has no lights and scene.lights holds the default sun alone: a light the user adds replaces it.
+    bool defaultLights = false;
 };
 
 // Loads a glTF 2.0 file (.gltf with external or data-URI buffers, or .glb) into a validated Scene:
@@ -57,7 +79,7 @@ struct GltfScene {
 //   where intensity / d^2 falls to 1/256, an 8-bit step of a unit-intensity surface.
 // - cameras: perspective, looking along the node's -z with +y up; aspectRatio is ignored (the
 //   frame decides it); an infinite far plane ends beyond the scene's bounds.
-// - no light: defaultSun(); no camera: framingCamera() of the scene's bounds.
+// - no camera: framingCamera() of the scene's bounds; then, with no light, scene::defaultSun() of that camera.
 // Before anything is read the file is checked as the Khronos glTF Validator checks it: the type, range and
 // enum value of every property read, required properties, every index, the node hierarchy, the byte ranges
 // of buffers, views and accessors, and the limits of gltf/src/GltfLimits.hpp and GltfImages.hpp (file,
