@@ -60,6 +60,8 @@ rhi::Image withBars(const rhi::Image& picture, const Bins& bins)
     constexpr std::uint32_t barHeight = 64;
     rhi::Image out{256, kSize + barHeight, rhi::Format::RGBA8, {}};
     out.bytes.assign(std::size_t(out.width) * out.height * 4, std::byte{0});
+    for (std::size_t i = 3; i < out.bytes.size(); i += 4)
+        out.bytes[i] = std::byte{255}; // opaque black
     for (std::uint32_t y = 0; y < kSize; ++y)
         std::copy_n(picture.texel(0, y), kSize * 4, out.bytes.data() + std::size_t(y) * out.width * 4);
     const std::uint32_t tallest = std::max(*std::max_element(bins.begin(), bins.end()), 1u);
