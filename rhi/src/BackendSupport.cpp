@@ -14,6 +14,13 @@ LodRange samplerLodRange(const SamplerDesc& desc)
     return {desc.minLod, desc.maxLod};
 }
 
+ComputePipeline::ComputePipeline(const CompiledShader& shader)
+    : bindings_(shader.bindings), workgroupSize_(shader.workgroupSize)
+{
+    std::sort(bindings_.begin(), bindings_.end(),
+              [](const ShaderBinding& a, const ShaderBinding& b) { return a.binding < b.binding; });
+}
+
 std::vector<ShaderBinding> pipelineBindings(const PipelineDesc& desc)
 {
     std::vector<ShaderBinding> all = desc.vertex->compiled().bindings;

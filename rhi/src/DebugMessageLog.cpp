@@ -26,6 +26,25 @@ void DebugMessageLog::clear()
     reported_ = 0;
 }
 
+void DebugMessageLog::openGroup(std::string name)
+{
+    std::lock_guard lock(mutex_);
+    groups_.push_back(std::move(name));
+}
+
+void DebugMessageLog::closeGroup()
+{
+    std::lock_guard lock(mutex_);
+    if (!groups_.empty())
+        groups_.pop_back();
+}
+
+std::string DebugMessageLog::openGroups() const
+{
+    std::lock_guard lock(mutex_);
+    return groups_.empty() ? std::string() : fmt::format(" [labels: {}]", fmt::join(groups_, " > "));
+}
+
 void DebugMessageLog::raiseUnreported(std::string_view source)
 {
     std::lock_guard lock(mutex_);

@@ -5,8 +5,10 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
+#include <algorithm>
 #include <list>
 #include <mutex>
+#include <optional>
 #include <spirv_cross/spirv_cross.hpp>
 #include <unordered_map>
 
@@ -20,19 +22,93 @@ void initializeGlslang()
     std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
-EShLanguage glslangStage(ShaderStage stage) { return stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment; }
-
-std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spirv, const std::string& name)
+EShLanguage glslangStage(ShaderStage stage)
 {
-    const spirv_cross::Compiler compiler(spirv);
+    switch (stage) {
+    case ShaderStage::Vertex:
+        return EShLangVertex;
+    case ShaderStage::Fragment:
+        return EShLangFragment;
+    case ShaderStage::Compute:
+        break;
+    }
+    return EShLangCompute;
+}
+
+// The RHI format of a storage image's format qualifier (GLSL 4.60 section 4.4.7, "Format Layout Qualifiers").
+std::optional<Format> storageFormat(spv::ImageFormat format)
+{
+    switch (format) {
+    case spv::ImageFormatRgba8:
+        return Format::RGBA8;
+    case spv::ImageFormatRgba16f:
+        return Format::RGBA16F;
+    case spv::ImageFormatRgba32f:
+        return Format::RGBA32F;
+    case spv::ImageFormatR8:
+        return Format::R8;
+    case spv::ImageFormatRg8:
+        return Format::RG8;
+    case spv::ImageFormatR16f:
+        return Format::R16F;
+    case spv::ImageFormatRg16f:
+        return Format::RG16F;
+    case spv::ImageFormatR32f:
+        return Format::R32F;
+    default:
+        return std::nullopt;
+    }
+}
+
+// Bytes of a variable of `type`, tightly packed: scalars, vectors, matrices, arrays and structs of them.
+std::uint64_t packedBytes(const spirv_cross::Compiler& compiler, const spirv_cross::SPIRType& type)
+{
+    std::uint64_t count = 1;
+    for (std::size_t i = 0; i < type.array.size(); ++i)
+        count *= type.array_size_literal[i] ? type.array[i] : compiler.get_constant(type.array[i]).scalar();
+    if (type.basetype == spirv_cross::SPIRType::Struct) {
+        std::uint64_t members = 0;
+        for (const spirv_cross::TypeID member : type.member_types)
+            members += packedBytes(compiler, compiler.get_type(member));
+        return count * members;
+    }
+    return count * (type.width / 8) * type.vecsize * type.columns;
+}
+
+// The `shared` variables' bytes: every OpVariable in the Workgroup storage class (SPIR-V 1.3 sections 2.3 and
+// 3.7; OpVariable is opcode 59 with the result type, result id and storage class as its first operands).
+std::uint32_t sharedMemoryBytes(const spirv_cross::Compiler& compiler, const std::vector<std::uint32_t>& spirv)
+{
+    constexpr std::size_t headerWords = 5;
+    std::uint64_t bytes = 0;
+    for (std::size_t i = headerWords; i < spirv.size();) {
+        const std::uint32_t words = spirv[i] >> 16;
+        if ((spirv[i] & 0xffffu) == spv::OpVariable && words >= 4 && spirv[i + 3] == spv::StorageClassWorkgroup)
+            bytes += packedBytes(compiler, compiler.get_type_from_variable(spirv[i + 2]));
+        i += std::max<std::uint32_t>(words, 1);
+    }
+    return std::uint32_t(bytes);
+}
+
+// A block member's size; a runtime array (`T data[]`) gives its element stride, which the C++ element must match.
+std::uint32_t memberSize(const spirv_cross::Compiler& compiler, const spirv_cross::SPIRType& block, std::uint32_t i)
+{
+    const spirv_cross::SPIRType& member = compiler.get_type(block.member_types[i]);
+    if (!member.array.empty() && member.array_size_literal.back() && member.array.back() == 0)
+        return compiler.type_struct_member_array_stride(block, i);
+    return std::uint32_t(compiler.get_declared_struct_member_size(block, i));
+}
+
+std::vector<ShaderBinding> reflectBindings(const spirv_cross::Compiler& compiler, const std::string& name)
+{
     const spirv_cross::ShaderResources resources = compiler.get_shader_resources();
     if (!resources.push_constant_buffers.empty())
         throw ShaderCompileError(
             fmt::format("{}: push constants are not part of the binding model; use a uniform block", name));
-    if (!resources.storage_buffers.empty() || !resources.storage_images.empty() || !resources.separate_images.empty() ||
-        !resources.separate_samplers.empty())
-        throw ShaderCompileError(
-            fmt::format("{}: only uniform blocks and combined samplers (sampler2D...) are supported", name));
+    if (!resources.separate_images.empty() || !resources.separate_samplers.empty())
+        throw ShaderCompileError(fmt::format("{}: only uniform blocks, combined samplers (sampler2D...), storage "
+                                             "blocks and storage images are supported",
+                                             name));
 
     std::vector<ShaderBinding> bindings;
     auto add = [&](const spirv_cross::Resource& r, BindingKind kind) {
@@ -40,14 +116,26 @@ std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spi
             throw ShaderCompileError(fmt::format("{}: '{}' uses a descriptor set other than 0", name, r.name));
         if (!compiler.has_decoration(r.id, spv::DecorationBinding))
             throw ShaderCompileError(fmt::format("{}: '{}' needs layout(binding = N)", name, r.name));
-        ShaderBinding b{compiler.get_decoration(r.id, spv::DecorationBinding), kind, r.name, 0, {}};
-        if (kind == BindingKind::UniformBuffer) {
+        ShaderBinding b{.binding = compiler.get_decoration(r.id, spv::DecorationBinding), .kind = kind, .name = r.name};
+        if (kind == BindingKind::UniformBuffer || kind == BindingKind::StorageBuffer) {
             const spirv_cross::SPIRType& block = compiler.get_type(r.base_type_id);
             b.size = std::uint32_t(compiler.get_declared_struct_size(block));
             for (std::uint32_t i = 0; i < block.member_types.size(); ++i)
                 b.members.push_back({compiler.get_member_name(r.base_type_id, i),
-                                     compiler.type_struct_member_offset(block, i),
-                                     std::uint32_t(compiler.get_declared_struct_member_size(block, i))});
+                                     compiler.type_struct_member_offset(block, i), memberSize(compiler, block, i)});
+        }
+        if (kind == BindingKind::StorageBuffer)
+            b.writes = !compiler.get_buffer_block_flags(r.id).get(spv::DecorationNonWritable);
+        if (kind == BindingKind::StorageTexture) {
+            const spirv_cross::SPIRType& image = compiler.get_type(r.type_id);
+            b.writes = !compiler.has_decoration(r.id, spv::DecorationNonWritable);
+            b.format = storageFormat(image.image.format);
+            if (!b.format)
+                throw ShaderCompileError(fmt::format("{}: storage image '{}' needs a format qualifier of an RHI "
+                                                     "format (rgba8, rgba16f, rgba32f, r8, rg8, r16f, rg16f, r32f)",
+                                                     name, r.name));
+            if (image.image.dim != spv::Dim2D || image.image.arrayed || image.image.ms)
+                throw ShaderCompileError(fmt::format("{}: storage image '{}' must be an image2D", name, r.name));
         }
         bindings.push_back(b);
     };
@@ -55,6 +143,10 @@ std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spi
         add(r, BindingKind::UniformBuffer);
     for (const spirv_cross::Resource& r : resources.sampled_images)
         add(r, BindingKind::SampledTexture);
+    for (const spirv_cross::Resource& r : resources.storage_buffers)
+        add(r, BindingKind::StorageBuffer);
+    for (const spirv_cross::Resource& r : resources.storage_images)
+        add(r, BindingKind::StorageTexture);
     return bindings;
 }
 
@@ -126,11 +218,17 @@ CompiledShader compileWithGlslang(const ShaderSource& source, const std::string&
     if (!program.link(messages))
         throw ShaderCompileError(fmt::format("GLSL link failed for {}:\n{}", source.name, program.getInfoLog()));
 
-    CompiledShader compiled{source.stage, source.name, {}, {}};
+    CompiledShader compiled{.stage = source.stage, .name = source.name};
     glslang::SpvOptions options;
     options.validate = true;
     glslang::GlslangToSpv(*program.getIntermediate(stage), compiled.spirv, &options);
-    compiled.bindings = reflectBindings(compiled.spirv, source.name);
+    const spirv_cross::Compiler compiler(compiled.spirv);
+    compiled.bindings = reflectBindings(compiler, source.name);
+    if (source.stage == ShaderStage::Compute) {
+        for (std::uint32_t axis = 0; axis < 3; ++axis)
+            compiled.workgroupSize[axis] = compiler.get_execution_mode_argument(spv::ExecutionModeLocalSize, axis);
+        compiled.sharedMemoryBytes = sharedMemoryBytes(compiler, compiled.spirv);
+    }
     return compiled;
 }
 

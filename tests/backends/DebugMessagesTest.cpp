@@ -40,6 +40,39 @@ TEST(DebugMessagesTest, VulkanValidationLayerReportsMisuse)
     expectRaisedAtSubmit(*device, *commands, "Vulkan validation");
 }
 
+// Labels reach the callbacks: a message names the labels open where the misuse happened (Vulkan: the layer's
+// pCmdBufLabels of the command buffer; GL: the application's debug groups as the debug output reports them).
+TEST(DebugMessagesTest, VulkanMessagesNameTheOpenLabels)
+{
+    auto device = strictDevice("vulkan");
+    auto commands = device->createCommandList();
+    commands->pushLabel("shadows");
+    commands->insertLabel("casters");
+    commands->pushLabel("cascade 0");
+    vkCmdSetLineWidth(vulkan::native(*commands), 4.0f);
+    commands->popLabel();
+    commands->popLabel();
+    const std::vector<std::string> messages = device->debugMessages();
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_NE(messages.front().find("[labels: shadows > cascade 0]"), std::string::npos) << messages.front();
+    expectRaisedAtSubmit(*device, *commands, "Vulkan validation");
+}
+
+TEST(DebugMessagesTest, OpenGlMessagesNameTheOpenLabels)
+{
+    auto device = strictDevice("opengl");
+    opengl::makeCurrent(*device);
+    const opengl::GlFunctions& gl = opengl::glFunctions(*device);
+    // What a replayed pushLabel calls, and a misuse inside the group.
+    gl.PushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "shadows");
+    gl.BindBuffer(GL_ARRAY_BUFFER, 123456);
+    gl.PopDebugGroup();
+    const std::vector<std::string> messages = device->debugMessages();
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_NE(messages.front().find("[labels: shadows]"), std::string::npos) << messages.front();
+    device->clearDebugMessages();
+}
+
 TEST(DebugMessagesTest, OpenGlDebugOutputReportsMisuse)
 {
     auto device = strictDevice("opengl");

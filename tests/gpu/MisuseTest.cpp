@@ -44,6 +44,34 @@ void main() { color = texture(image, vec2(0.5)); }
 
 const char* const depthOnlyFragmentGlsl = "#version 450\nvoid main() {}\n";
 
+const char* const computeGlsl = R"(#version 450
+layout(local_size_x = 4) in;
+layout(std430, binding = 0) buffer Data { uint first; uint count; uint values[]; } data;
+layout(binding = 1, rgba8) uniform image2D image;
+void main()
+{
+    data.values[gl_GlobalInvocationID.x] = data.first + data.count;
+    imageStore(image, ivec2(0), vec4(1.0));
+}
+)";
+
+// 32 x 32 x 2 = 2048 invocations: each size within glslang's limits, the whole over every device's 1024.
+const char* const bigComputeGlsl =
+    "#version 450\nlayout(local_size_x = 32, local_size_y = 32, local_size_z = 2) in;\nvoid main() {}\n";
+
+// A fragment shader that writes a storage block.
+const char* const writingFragmentGlsl = R"(#version 450
+layout(std430, binding = 2) buffer Counts { uint fragments; } counts;
+layout(location = 0) out vec4 color;
+void main() { atomicAdd(counts.fragments, 1u); color = vec4(1.0); }
+)";
+
+// The C++ twin of Data's header, wrong: `count` where `first` is.
+struct MisplacedDataHeader {
+    std::uint32_t count;
+    std::uint32_t first;
+};
+
 // The C++ twin of Transform, right and wrong.
 struct TransformUniforms {
     glm::mat4 clip{1.0f};
@@ -146,6 +174,28 @@ struct Objects {
             list->bindTexture(1, *image, *sampler);
     }
 
+    // The compute objects, made for the rows that use them: a pipeline reading a storage buffer at binding 0 and a
+    // storage image at binding 1, a 64-byte storage buffer, a 12-byte indirect buffer and a 4x4 storage texture.
+    void makeCompute()
+    {
+        computeShader = device.createShader({rhi::ShaderStage::Compute, computeGlsl, "misuse.comp"});
+        computePipeline = device.createComputePipeline({.compute = computeShader.get(), .debugName = "compute"});
+        storage = device.createBuffer({.size = 64, .usage = rhi::BufferUsage::Storage, .debugName = "storage"});
+        indirect = device.createBuffer({.size = 12, .usage = rhi::BufferUsage::Indirect, .debugName = "indirect"});
+        storageImage = device.createTexture(
+            {.width = 4, .height = 4, .usage = rhi::TextureUsage::Storage, .debugName = "storage image"});
+    }
+    // The compute pipeline bound with everything it reads, but for `except` ("buffer", "image").
+    void bindForDispatch(std::string_view except = "")
+    {
+        makeCompute();
+        list->bindComputePipeline(*computePipeline);
+        if (except != "buffer")
+            list->bindStorageBuffer(0, *storage, 0, 64);
+        if (except != "image")
+            list->bindStorageTexture(1, *storageImage);
+    }
+
     // A pass with a pipeline that reads vertex buffer slot 0 per instance (three instances fit `vertices`), all it
     // reads bound, and `indices`.
     void bindForInstancedDraw()
@@ -169,6 +219,11 @@ struct Objects {
     std::unique_ptr<rhi::Shader> vertex, fragment, localShader;
     std::unique_ptr<rhi::Framebuffer> target, multisampledTarget;
     std::unique_ptr<rhi::Pipeline> pipeline, localPipeline; // localPipeline: a row's own
+    std::unique_ptr<rhi::Shader> computeShader;
+    std::unique_ptr<rhi::ComputePipeline> computePipeline;
+    std::unique_ptr<rhi::Buffer> storage, indirect;
+    std::unique_ptr<rhi::Texture> storageImage, localTexture; // localTexture, localBuffer: a row's own
+    std::unique_ptr<rhi::Buffer> localBuffer;
     std::unique_ptr<rhi::CommandList> list; // last: it goes first, before what it names
 };
 
@@ -638,6 +693,134 @@ const std::vector<Rule>& rules()
              o.list->writeTimestamp(*queries, 2);
          },
          E::Error, text("writeTimestamp: index 2 is out of range [0, 1]")},
+        // Compute, storage and indirect commands.
+        {"dispatches happen outside passes",
+         [](Objects& o) {
+             o.bindForDispatch();
+             o.beginPass();
+         },
+         [](Objects& o) { o.list->dispatch(1); }, E::Error,
+         text("dispatch: not allowed inside a pass; call endPass() first")},
+        {"dispatches need a compute pipeline", nothing, [](Objects& o) { o.list->dispatch(1); }, E::Error,
+         text("dispatch: no compute pipeline is bound; call bindComputePipeline() first")},
+        {"dispatches bind what the pipeline reads", [](Objects& o) { o.bindForDispatch("buffer"); },
+         [](Objects& o) { o.list->dispatch(1); }, E::Error,
+         text("dispatch: pipeline 'compute' binding 0 ('Data') needs a storage buffer, but nothing is bound")},
+        {"storage blocks get their fixed part", [](Objects& o) { o.bindForDispatch(); },
+         [](Objects& o) {
+             o.list->bindStorageBuffer(0, *o.storage, 0, 4);
+             o.list->dispatch(1);
+         },
+         E::Error,
+         text("dispatch: pipeline 'compute' binding 0 ('Data') is a storage block of 8 bytes, but 4 bytes are bound")},
+        {"storage images have the shader's format",
+         [](Objects& o) {
+             o.bindForDispatch("image");
+             o.localTexture = o.device.createTexture({.width = 4,
+                                                      .height = 4,
+                                                      .format = rhi::Format::R32F,
+                                                      .usage = rhi::TextureUsage::Storage,
+                                                      .debugName = "r32f"});
+             o.list->bindStorageTexture(1, *o.localTexture);
+         },
+         [](Objects& o) { o.list->dispatch(1); }, E::Error,
+         text("dispatch: pipeline 'compute' binding 1 ('image') is a storage image of format RGBA8, but texture "
+              "'r32f' is R32F")},
+        {"dispatch counts are within Capabilities::maxWorkgroupCount", [](Objects& o) { o.bindForDispatch(); },
+         [](Objects& o) { o.list->dispatch(o.device.capabilities().maxWorkgroupCount[0] + 1); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("dispatch: {} workgroups along x exceed Capabilities::maxWorkgroupCount ({})",
+                                c.maxWorkgroupCount[0] + 1, c.maxWorkgroupCount[0]);
+         }},
+        {"workgroups are within Capabilities::maxWorkgroupInvocations", nothing,
+         [](Objects& o) {
+             o.device.createShader({rhi::ShaderStage::Compute, bigComputeGlsl, "big.comp"});
+         },
+         E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("big.comp: 32x32x2 = 2048 invocations per workgroup exceed "
+                                "Capabilities::maxWorkgroupInvocations ({})",
+                                c.maxWorkgroupInvocations);
+         }},
+        {"compute pipelines take a compute shader", nothing,
+         [](Objects& o) { o.device.createComputePipeline({.compute = o.vertex.get(), .debugName = "bad"}); }, E::Error,
+         text("compute pipeline 'bad': shader misuse.vert is not a compute shader")},
+        {"C++ storage layouts match the std430 offsets", [](Objects& o) { o.makeCompute(); },
+         [](Objects& o) {
+             o.device.createComputePipeline(
+                 {.compute = o.computeShader.get(),
+                  .storageLayouts = {{"Data",
+                                      sizeof(MisplacedDataHeader),
+                                      {PENUMBRA_UNIFORM_MEMBER(MisplacedDataHeader, count),
+                                       PENUMBRA_UNIFORM_MEMBER(MisplacedDataHeader, first),
+                                       PENUMBRA_UNIFORM_ARRAY_ELEMENT(MisplacedDataHeader, values, std::uint32_t)}}},
+                  .debugName = "bad"});
+         },
+         E::Error,
+         text("pipeline 'bad': storage block 'Data' member 'first' is at offset 0 in misuse.comp but at "
+              "offset 4 in C++")},
+        {"vertex and fragment shaders only read storage blocks", nothing,
+         [](Objects& o) {
+             o.localShader = o.device.createShader({rhi::ShaderStage::Fragment, writingFragmentGlsl, "written.frag"});
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.fragment = o.localShader.get();
+             o.device.createPipeline(d);
+         },
+         E::Error,
+         text("pipeline 'bad': storage block 'Counts' in written.frag is not readonly: vertex and fragment shaders "
+              "only read storage blocks")},
+        {"storage bindings need BufferUsage::Storage", nothing,
+         [](Objects& o) { o.list->bindStorageBuffer(0, *o.uniforms, 0, 16); }, E::Error,
+         text("bindStorageBuffer: buffer 'uniforms' lacks BufferUsage::Storage")},
+        {"storage ranges are inside the buffer", [](Objects& o) { o.makeCompute(); },
+         [](Objects& o) { o.list->bindStorageBuffer(0, *o.storage, 0, 128); }, E::Error,
+         text("bindStorageBuffer: 128 bytes at offset 0 exceed buffer 'storage' (64 bytes)")},
+        {"storage offsets are aligned", [](Objects& o) { o.makeCompute(); },
+         [](Objects& o) { o.list->bindStorageBuffer(0, *o.storage, 1, 16); }, E::Error,
+         [](const rhi::Capabilities& c) {
+             return fmt::format("bindStorageBuffer: offset 1 is not a multiple of "
+                                "Capabilities::storageBufferOffsetAlignment ({})",
+                                c.storageBufferOffsetAlignment);
+         }},
+        {"storage textures need TextureUsage::Storage", nothing,
+         [](Objects& o) { o.list->bindStorageTexture(1, *o.image); }, E::Error,
+         text("bindStorageTexture: texture 'image' lacks TextureUsage::Storage")},
+        {"storage textures are one 2D layer", nothing,
+         [](Objects& o) {
+             o.device.createTexture(
+                 {.width = 4, .height = 4, .layers = 2, .usage = rhi::TextureUsage::Storage, .debugName = "bad"});
+         },
+         E::Error, text("texture 'bad': a Storage texture is one 2D layer, not 2 layers")},
+        {"indirect buffers need BufferUsage::Indirect", [](Objects& o) { o.bindForDispatch(); },
+         [](Objects& o) { o.list->dispatchIndirect(*o.storage); }, E::Error,
+         text("dispatchIndirect: buffer 'storage' lacks BufferUsage::Indirect")},
+        {"indirect offsets are multiples of 4", [](Objects& o) { o.bindForDispatch(); },
+         [](Objects& o) { o.list->dispatchIndirect(*o.indirect, 2); }, E::Error,
+         text("dispatchIndirect: offset 2 is not a multiple of 4")},
+        {"indirect arguments are inside the buffer", [](Objects& o) { o.bindForDispatch(); },
+         [](Objects& o) { o.list->dispatchIndirect(*o.indirect, 4); }, E::Error,
+         text("dispatchIndirect arguments: 12 bytes at offset 4 exceed buffer 'indirect' (12 bytes)")},
+        {"indirect draws happen inside passes", [](Objects& o) { o.makeCompute(); },
+         [](Objects& o) { o.list->drawIndirect(*o.indirect); }, E::Error,
+         text("drawIndirect: not inside a pass; call beginPass() first")},
+        {"indirect draws' arguments are inside the buffer",
+         [](Objects& o) {
+             o.makeCompute();
+             o.bindForDraw();
+         },
+         [](Objects& o) { o.list->drawIndirect(*o.indirect); }, E::Error,
+         text("drawIndirect arguments: 16 bytes at offset 0 exceed buffer 'indirect' (12 bytes)")},
+        {"indirect indexed draws read indices from offset 0",
+         [](Objects& o) {
+             o.makeCompute();
+             o.localBuffer =
+                 o.device.createBuffer({.size = 20, .usage = rhi::BufferUsage::Indirect, .debugName = "arguments"});
+             o.bindForDraw();
+             o.list->bindIndexBuffer(*o.indices, rhi::IndexType::UInt16, 2);
+         },
+         [](Objects& o) { o.list->drawIndexedIndirect(*o.localBuffer); }, E::Error,
+         text("drawIndexedIndirect: the index buffer is bound at offset 2; indirect indexed draws need offset 0 "
+              "(start with the arguments' firstIndex)")},
         // Ownership and lifetime.
         {"lists are submitted to the device that created them", nothing,
          [](Objects& o) {

@@ -83,6 +83,57 @@ public:
 
     void operator()(const command::BindTexture& c) { cache_.texture(c.unit, c.texture, c.sampler); }
 
+    void operator()(const command::BindStorageBuffer& c)
+    {
+        gl_.BindBufferRange(GL_SHADER_STORAGE_BUFFER, c.binding, c.buffer, GLintptr(c.offset), GLsizeiptr(c.size));
+    }
+
+    void operator()(const command::BindStorageTexture& c)
+    {
+        gl_.BindImageTexture(c.unit, c.texture, GLint(c.level), GL_FALSE, 0, GL_READ_WRITE, c.format);
+    }
+
+    void operator()(const command::BindComputePipeline& c) { computeProgram_ = c.program; }
+
+    void operator()(const command::Dispatch& c)
+    {
+        cache_.useProgram(computeProgram_);
+        gl_.DispatchCompute(c.x, c.y, c.z);
+    }
+
+    void operator()(const command::DispatchIndirect& c)
+    {
+        cache_.useProgram(computeProgram_);
+        gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, c.buffer);
+        gl_.DispatchComputeIndirect(GLintptr(c.offset));
+    }
+
+    // GL's gl_InstanceID leaves out the base instance, which SPIRV-Cross adds from a uniform; the arguments are on
+    // the GPU, so gl_InstanceIndex of an indirect draw counts from 0 (docs/compute.md).
+    void operator()(const command::DrawIndirect& c)
+    {
+        prepareDraw(0);
+        gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, c.buffer);
+        gl_.DrawArraysIndirect(pipeline_->state().primitive, reinterpret_cast<const void*>(std::uintptr_t(c.offset)));
+    }
+
+    void operator()(const command::DrawIndexedIndirect& c)
+    {
+        prepareDraw(0);
+        bindIndexBufferToVertexArray();
+        gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, c.buffer);
+        gl_.DrawElementsIndirect(pipeline_->state().primitive, indexType_,
+                                 reinterpret_cast<const void*>(std::uintptr_t(c.offset)));
+    }
+
+    void operator()(const command::Barrier& c) { gl_.MemoryBarrier(c.bits); }
+
+    void operator()(const command::InsertLabel& c)
+    {
+        gl_.DebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_MARKER, 0, GL_DEBUG_SEVERITY_NOTIFICATION, -1,
+                               c.name.c_str());
+    }
+
     void operator()(const command::Draw& c)
     {
         prepareDraw(c.firstInstance);
@@ -98,11 +149,7 @@ public:
     void operator()(const command::DrawIndexed& c)
     {
         prepareDraw(c.firstInstance);
-        GlVertexArrayCache& vao = pipeline_->vertexArrayCache();
-        if (vao.indexBuffer != indexBuffer_) {
-            vao.indexBuffer = indexBuffer_;
-            gl_.VertexArrayElementBuffer(pipeline_->vertexArray(), indexBuffer_);
-        }
+        bindIndexBufferToVertexArray();
         const std::uint64_t indexSize = indexType_ == GL_UNSIGNED_SHORT ? 2 : 4;
         const auto* first = reinterpret_cast<const void*>(std::uintptr_t(indexOffset_ + c.firstIndex * indexSize));
         const GLenum mode = pipeline_->state().primitive;
@@ -177,8 +224,19 @@ private:
             cache_.colorMask(i, s.targets[i].mask);
     }
 
+    void bindIndexBufferToVertexArray()
+    {
+        GlVertexArrayCache& vao = pipeline_->vertexArrayCache();
+        if (vao.indexBuffer != indexBuffer_) {
+            vao.indexBuffer = indexBuffer_;
+            gl_.VertexArrayElementBuffer(pipeline_->vertexArray(), indexBuffer_);
+        }
+    }
+
     void prepareDraw(std::uint32_t firstInstance)
     {
+        // A dispatch since bindPipeline made its own program current.
+        cache_.useProgram(pipeline_->program());
         GlVertexArrayCache& vao = pipeline_->vertexArrayCache();
         if (vao.generation != r_.generation) {
             vao.generation = r_.generation;
@@ -214,6 +272,7 @@ private:
     const GlFunctions& gl_;
     GlStateCache& cache_;
     const GlPipeline* pipeline_ = nullptr;
+    GLuint computeProgram_ = 0;
     std::array<std::pair<GLuint, std::uint64_t>, maxVertexBuffers> vertexBuffers_{};
     GLuint indexBuffer_ = 0;
     GLenum indexType_ = GL_UNSIGNED_INT;
@@ -272,6 +331,79 @@ void GlCommandList::apiBindTexture(std::uint32_t binding, const rhi::Texture& te
 {
     commands_.push_back(command::BindTexture{binding, glObject<const GlTexture>(texture, "bound texture").name(),
                                              glObject<const GlSampler>(sampler, "bound sampler").name()});
+}
+
+void GlCommandList::apiBindStorageBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+                                         std::uint64_t size)
+{
+    commands_.push_back(
+        command::BindStorageBuffer{binding, glObject<const GlBuffer>(buffer, "storage buffer").name(), offset, size});
+}
+
+void GlCommandList::apiBindStorageTexture(std::uint32_t binding, const rhi::Texture& texture, std::uint32_t level)
+{
+    const auto& t = glObject<const GlTexture>(texture, "storage texture");
+    commands_.push_back(
+        command::BindStorageTexture{binding, t.name(), level, glTextureFormat(t.desc().format).internalFormat});
+}
+
+void GlCommandList::apiBindComputePipeline(const rhi::ComputePipeline& pipeline)
+{
+    commands_.push_back(
+        command::BindComputePipeline{glObject<const GlComputePipeline>(pipeline, "compute pipeline").program()});
+}
+
+void GlCommandList::apiDispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z)
+{
+    commands_.push_back(command::Dispatch{x, y, z});
+}
+
+void GlCommandList::apiDispatchIndirect(const rhi::Buffer& buffer, std::uint64_t offset)
+{
+    commands_.push_back(command::DispatchIndirect{glObject<const GlBuffer>(buffer, "indirect buffer").name(), offset});
+}
+
+void GlCommandList::apiDrawIndirect(const rhi::Buffer& buffer, std::uint64_t offset)
+{
+    commands_.push_back(command::DrawIndirect{glObject<const GlBuffer>(buffer, "indirect buffer").name(), offset});
+}
+
+void GlCommandList::apiDrawIndexedIndirect(const rhi::Buffer& buffer, std::uint64_t offset)
+{
+    commands_.push_back(
+        command::DrawIndexedIndirect{glObject<const GlBuffer>(buffer, "indirect buffer").name(), offset});
+}
+
+void GlCommandList::apiBarrier(const rhi::Barrier& barrier)
+{
+    // Only shader stores are incoherent in GL: every other write is ordered before later commands by the API itself
+    // (GL 4.5 section 7.12.2, "Shader Memory Access Ordering"). The bits name how the writes are read next.
+    const rhi::Access shaderWrites = rhi::Access::StorageBufferWrite | rhi::Access::StorageImageWrite;
+    if (!rhi::hasFlag(barrier.src.access, shaderWrites))
+        return;
+    GLbitfield bits = 0;
+    const auto add = [&](rhi::Access access, GLbitfield bit) {
+        if (rhi::hasFlag(barrier.dst.access, access))
+            bits |= bit;
+    };
+    add(rhi::Access::IndirectRead, GL_COMMAND_BARRIER_BIT);
+    add(rhi::Access::VertexRead, GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+    add(rhi::Access::IndexRead, GL_ELEMENT_ARRAY_BARRIER_BIT);
+    add(rhi::Access::UniformRead, GL_UNIFORM_BARRIER_BIT);
+    add(rhi::Access::SampledRead, GL_TEXTURE_FETCH_BARRIER_BIT);
+    add(rhi::Access::StorageBufferRead | rhi::Access::StorageBufferWrite, GL_SHADER_STORAGE_BARRIER_BIT);
+    add(rhi::Access::StorageImageRead | rhi::Access::StorageImageWrite, GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    add(rhi::Access::AttachmentRead | rhi::Access::AttachmentWrite, GL_FRAMEBUFFER_BARRIER_BIT);
+    add(rhi::Access::CopyRead | rhi::Access::CopyWrite,
+        GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+    add(rhi::Access::HostRead, GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    if (bits != 0)
+        commands_.push_back(command::Barrier{bits});
+}
+
+void GlCommandList::apiInsertLabel(std::string_view name)
+{
+    commands_.push_back(command::InsertLabel{std::string(name)});
 }
 
 void GlCommandList::apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,

@@ -54,6 +54,43 @@ struct BindTexture {
     GLuint texture;
     GLuint sampler;
 };
+struct BindStorageBuffer {
+    std::uint32_t binding;
+    GLuint buffer;
+    std::uint64_t offset;
+    std::uint64_t size;
+};
+struct BindStorageTexture {
+    std::uint32_t unit;
+    GLuint texture;
+    std::uint32_t level;
+    GLenum format;
+};
+struct BindComputePipeline {
+    GLuint program;
+};
+struct Dispatch {
+    std::uint32_t x, y, z;
+};
+// Indirect commands: the arguments' buffer and offset.
+struct DispatchIndirect {
+    GLuint buffer;
+    std::uint64_t offset;
+};
+struct DrawIndirect {
+    GLuint buffer;
+    std::uint64_t offset;
+};
+struct DrawIndexedIndirect {
+    GLuint buffer;
+    std::uint64_t offset;
+};
+struct Barrier {
+    GLbitfield bits;
+};
+struct InsertLabel {
+    std::string name;
+};
 struct Draw {
     std::uint32_t vertexCount, instanceCount, firstVertex, firstInstance;
 };
@@ -95,8 +132,10 @@ struct PushLabel {
 struct PopLabel {};
 
 using Any = std::variant<BeginPass, EndPass, SetViewport, SetScissor, SetDepthBias, BindPipeline, BindVertexBuffer,
-                         BindIndexBuffer, BindUniformBuffer, BindTexture, Draw, DrawIndexed, CopyBuffer, CopyTexture,
-                         CopyTextureToBuffer, ResolveTexture, WriteTimestamp, PushLabel, PopLabel>;
+                         BindIndexBuffer, BindUniformBuffer, BindTexture, BindStorageBuffer, BindStorageTexture,
+                         BindComputePipeline, Dispatch, DispatchIndirect, DrawIndirect, DrawIndexedIndirect, Barrier,
+                         InsertLabel, Draw, DrawIndexed, CopyBuffer, CopyTexture, CopyTextureToBuffer, ResolveTexture,
+                         WriteTimestamp, PushLabel, PopLabel>;
 } // namespace command
 
 // What replaying needs from the device.
@@ -134,6 +173,15 @@ private:
     void apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
                               std::uint64_t size) override;
     void apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler) override;
+    void apiBindStorageBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+                              std::uint64_t size) override;
+    void apiBindStorageTexture(std::uint32_t binding, const rhi::Texture& texture, std::uint32_t level) override;
+    void apiBindComputePipeline(const rhi::ComputePipeline& pipeline) override;
+    void apiDispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z) override;
+    void apiDispatchIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiDrawIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiDrawIndexedIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiBarrier(const rhi::Barrier& barrier) override;
     void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
                  std::uint32_t firstInstance) override;
     void apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
@@ -148,6 +196,7 @@ private:
     void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
     void apiPushLabel(std::string_view name) override;
     void apiPopLabel() override;
+    void apiInsertLabel(std::string_view name) override;
 
     const rhi::Device& device_;
     const GlContext& context_;

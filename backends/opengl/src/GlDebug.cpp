@@ -75,12 +75,17 @@ bool indicatesProblem(GLenum type, GLenum severity)
 void APIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                             const GLchar* message, const void* userParam)
 {
-    if (!indicatesProblem(type, severity))
-        return;
     auto* log = static_cast<rhi::DebugMessageLog*>(const_cast<void*>(userParam));
     const std::string text = length >= 0 ? std::string(message, std::size_t(length)) : std::string(message);
-    log->record(
-        fmt::format("GL {} {} ({}, id {}): {}", severityName(severity), typeName(type), sourceName(source), id, text));
+    // The application's groups (CommandList::pushLabel) come back in order: messages name the ones open.
+    if (source == GL_DEBUG_SOURCE_APPLICATION && type == GL_DEBUG_TYPE_PUSH_GROUP)
+        log->openGroup(text);
+    if (source == GL_DEBUG_SOURCE_APPLICATION && type == GL_DEBUG_TYPE_POP_GROUP)
+        log->closeGroup();
+    if (!indicatesProblem(type, severity))
+        return;
+    log->record(fmt::format("GL {} {} ({}, id {}): {}{}", severityName(severity), typeName(type), sourceName(source),
+                            id, text, log->openGroups()));
 }
 
 } // namespace

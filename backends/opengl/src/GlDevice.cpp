@@ -92,6 +92,19 @@ rhi::Capabilities GlDevice::queryCapabilities() const
         context_->hasExtension("GL_EXT_texture_filter_anisotropic"))
         gl.GetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &caps.maxSamplerAnisotropy);
     caps.deviceLossReported = integer(gl, GL_RESET_NOTIFICATION_STRATEGY) == GL_LOSE_CONTEXT_ON_RESET;
+    // Compute is core since GL 4.3 (section 19, limits in Table 23.64).
+    for (GLuint axis = 0; axis < 3; ++axis) {
+        GLint size = 0;
+        GLint count = 0;
+        gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_SIZE, axis, &size);
+        gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, axis, &count);
+        caps.maxWorkgroupSize[axis] = std::uint32_t(size);
+        caps.maxWorkgroupCount[axis] = std::uint32_t(count);
+    }
+    caps.maxWorkgroupInvocations = std::uint32_t(integer(gl, GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS));
+    caps.maxComputeSharedMemory = std::uint32_t(integer(gl, GL_MAX_COMPUTE_SHARED_MEMORY_SIZE));
+    caps.storageBufferOffsetAlignment = std::uint32_t(integer(gl, GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT));
+    caps.maxStorageBufferRange = std::uint64_t(integer(gl, GL_MAX_SHADER_STORAGE_BLOCK_SIZE));
     for (rhi::Format f : rhi::allFormats)
         caps.formats[std::size_t(f)] = formatSupport(f);
     // GL has no query of a device's memory; Mesa's software renderers keep every texture in system memory.
@@ -114,7 +127,9 @@ rhi::FormatSupport GlDevice::formatSupport(rhi::Format format) const
         return {};
     rhi::FormatSupport support{.sampled = query(GL_FRAGMENT_TEXTURE) == GL_FULL_SUPPORT,
                                .linearFilter = query(GL_FILTER) == GL_FULL_SUPPORT,
-                               .renderTarget = query(GL_FRAMEBUFFER_RENDERABLE) == GL_FULL_SUPPORT};
+                               .renderTarget = query(GL_FRAMEBUFFER_RENDERABLE) == GL_FULL_SUPPORT,
+                               .storage = !rhi::isDepthFormat(format) && query(GL_SHADER_IMAGE_LOAD) != GL_NONE &&
+                                          query(GL_SHADER_IMAGE_STORE) != GL_NONE};
     if (support.renderTarget)
         support.sampleCounts = 1 | multisampleCounts(internalFormat);
     return support;
@@ -182,14 +197,19 @@ std::unique_ptr<rhi::Sampler> GlDevice::apiCreateSampler(const rhi::SamplerDesc&
     return std::make_unique<GlSampler>(context_, desc, conventions_);
 }
 
-std::unique_ptr<rhi::Shader> GlDevice::createShader(const rhi::ShaderSource& source)
+std::unique_ptr<rhi::Shader> GlDevice::apiCreateShader(rhi::CompiledShader compiled)
 {
-    return std::make_unique<GlShader>(context_, rhi::compileShader(source, conventions_.glslHeader()), orientation_);
+    return std::make_unique<GlShader>(context_, std::move(compiled), orientation_);
 }
 
 std::unique_ptr<rhi::Pipeline> GlDevice::apiCreatePipeline(const rhi::PipelineDesc& desc)
 {
     return std::make_unique<GlPipeline>(context_, desc, conventions_);
+}
+
+std::unique_ptr<rhi::ComputePipeline> GlDevice::apiCreateComputePipeline(const rhi::ComputePipelineDesc& desc)
+{
+    return std::make_unique<GlComputePipeline>(context_, desc);
 }
 
 std::unique_ptr<rhi::Framebuffer> GlDevice::apiCreateFramebuffer(const rhi::FramebufferDesc& desc)

@@ -30,6 +30,19 @@ std::string crossCompile(const rhi::CompiledShader& compiled, const GlOrientatio
     }
 }
 
+GLenum glShaderStage(rhi::ShaderStage stage)
+{
+    switch (stage) {
+    case rhi::ShaderStage::Vertex:
+        return GL_VERTEX_SHADER;
+    case rhi::ShaderStage::Fragment:
+        return GL_FRAGMENT_SHADER;
+    case rhi::ShaderStage::Compute:
+        break;
+    }
+    return GL_COMPUTE_SHADER;
+}
+
 std::string shaderLog(const GlFunctions& gl, GLuint shader)
 {
     GLint length = 0;
@@ -82,8 +95,7 @@ GlShader::GlShader(GlContextPtr context, rhi::CompiledShader compiled, const GlO
 {
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
-    name_ = GlShaderName(*context_, gl.CreateShader(compiled_.stage == rhi::ShaderStage::Vertex ? GL_VERTEX_SHADER
-                                                                                                : GL_FRAGMENT_SHADER));
+    name_ = GlShaderName(*context_, gl.CreateShader(glShaderStage(compiled_.stage)));
     const GLuint shader = name_.get();
     const char* text = glsl_.c_str();
     gl.ShaderSource(shader, 1, &text, nullptr);
@@ -152,6 +164,26 @@ void GlPipeline::buildVertexArray()
     cache_.vertexBuffers.assign(strides_.size(), {0, 0});
     if (!desc_.debugName.empty())
         gl.ObjectLabel(GL_VERTEX_ARRAY, vertexArray, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
+}
+
+GlComputePipeline::GlComputePipeline(GlContextPtr context, const rhi::ComputePipelineDesc& desc)
+    : ComputePipeline(desc.compute->compiled()), context_(std::move(context)), desc_(desc)
+{
+    context_->makeCurrent();
+    const GlFunctions& gl = context_->gl();
+    const auto& shader = glObject<const GlShader>(*desc_.compute, "compute shader");
+    program_ = GlProgramName(*context_, gl.CreateProgram());
+    const GLuint program = program_.get();
+    gl.AttachShader(program, shader.name());
+    gl.LinkProgram(program);
+    gl.DetachShader(program, shader.name());
+    GLint ok = GL_FALSE;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok)
+        throw rhi::Error(fmt::format("compute pipeline '{}': linking {} failed:\n{}", desc_.debugName,
+                                     shader.compiled().name, programLog(gl, program)));
+    if (!desc_.debugName.empty())
+        gl.ObjectLabel(GL_PROGRAM, program, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
 }
 
 } // namespace penumbra::opengl

@@ -89,4 +89,18 @@ private:
     mutable GlVertexArrayCache cache_;
 };
 
+// A program of one compute shader.
+class GlComputePipeline final : public rhi::ComputePipeline {
+public:
+    GlComputePipeline(GlContextPtr context, const rhi::ComputePipelineDesc& desc);
+
+    const rhi::ComputePipelineDesc& desc() const override { return desc_; }
+    GLuint program() const { return program_.get(); }
+
+private:
+    GlContextPtr context_;
+    rhi::ComputePipelineDesc desc_;
+    GlProgramName program_;
+};
+
 } // namespace penumbra::opengl

@@ -16,7 +16,7 @@
 namespace penumbra::vulkan {
 
 VulkanCommandList::VulkanCommandList(rhi::ValidatingDevice& owner, std::shared_ptr<Context> context)
-    : ValidatingCommandList(owner), context_(std::move(context)), descriptors_(context_)
+    : ValidatingCommandList(owner), context_(std::move(context)), descriptors_(context_), computeDescriptors_(context_)
 {
     const VkDevice device = context_->device;
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -64,6 +64,7 @@ void VulkanCommandList::submit()
     prologueRecording_ = false;
     resetPools_.clear();
     descriptors_.reset();
+    computeDescriptors_.reset();
     pipeline_ = nullptr;
     begin();
 }
@@ -124,7 +125,14 @@ void VulkanCommandList::apiBindPipeline(const rhi::Pipeline& pipeline)
     vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_->handle());
     const rhi::DepthBias& b = pipeline_->signedBias();
     vkCmdSetDepthBias(commands_, b.constant, b.clamp, b.slope);
-    descriptors_.setPipeline(*pipeline_);
+    descriptors_.setPipeline(pipeline_->descriptors());
+}
+
+void VulkanCommandList::apiBindComputePipeline(const rhi::ComputePipeline& pipeline)
+{
+    const auto& vk = vulkanObject<const VulkanComputePipeline>(pipeline, "bindComputePipeline: the pipeline");
+    vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, vk.handle());
+    computeDescriptors_.setPipeline(vk.descriptors());
 }
 
 void VulkanCommandList::apiBindVertexBuffer(std::uint32_t slot, const rhi::Buffer& buffer, std::uint64_t offset)
@@ -148,13 +156,31 @@ void VulkanCommandList::apiBindUniformBuffer(std::uint32_t binding, const rhi::B
         throw rhi::UnsupportedError(
             fmt::format("bindUniformBuffer: offset {} exceeds Vulkan's 32-bit dynamic offsets", offset));
     descriptors_.setUniformBuffer(binding, vk.handle(), std::uint32_t(offset), size);
+    computeDescriptors_.setUniformBuffer(binding, vk.handle(), std::uint32_t(offset), size);
+}
+
+void VulkanCommandList::apiBindStorageBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+                                             std::uint64_t size)
+{
+    const VkBuffer handle = vulkanObject<const VulkanBuffer>(buffer, "bindStorageBuffer: the buffer").handle();
+    descriptors_.setStorageBuffer(binding, handle, offset, size);
+    computeDescriptors_.setStorageBuffer(binding, handle, offset, size);
+}
+
+void VulkanCommandList::apiBindStorageTexture(std::uint32_t binding, const rhi::Texture& texture, std::uint32_t level)
+{
+    const VkImageView view =
+        vulkanObject<const VulkanTexture>(texture, "bindStorageTexture: the texture").storageView(level);
+    descriptors_.setStorageImage(binding, view);
+    computeDescriptors_.setStorageImage(binding, view);
 }
 
 void VulkanCommandList::apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler)
 {
     const auto& vkTexture = vulkanObject<const VulkanTexture>(texture, "bindTexture: the texture");
     const auto& vkSampler = vulkanObject<const VulkanSampler>(sampler, "bindTexture: the sampler");
-    descriptors_.setTexture(binding, vkTexture.sampledView(), vkSampler.handle());
+    descriptors_.setTexture(binding, vkTexture.sampledView(), vkSampler.handle(), vkTexture.restingLayout());
+    computeDescriptors_.setTexture(binding, vkTexture.sampledView(), vkSampler.handle(), vkTexture.restingLayout());
 }
 
 void VulkanCommandList::apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
@@ -169,6 +195,44 @@ void VulkanCommandList::apiDrawIndexed(std::uint32_t indexCount, std::uint32_t i
 {
     descriptors_.flush(commands_);
     vkCmdDrawIndexed(commands_, indexCount, instanceCount, firstIndex, vertexOffset, firstInstance);
+}
+
+void VulkanCommandList::apiDrawIndirect(const rhi::Buffer& buffer, std::uint64_t offset)
+{
+    descriptors_.flush(commands_);
+    const VkBuffer handle = vulkanObject<const VulkanBuffer>(buffer, "drawIndirect: the buffer").handle();
+    vkCmdDrawIndirect(commands_, handle, offset, 1, 0);
+}
+
+void VulkanCommandList::apiDrawIndexedIndirect(const rhi::Buffer& buffer, std::uint64_t offset)
+{
+    descriptors_.flush(commands_);
+    const VkBuffer handle = vulkanObject<const VulkanBuffer>(buffer, "drawIndexedIndirect: the buffer").handle();
+    vkCmdDrawIndexedIndirect(commands_, handle, offset, 1, 0);
+}
+
+void VulkanCommandList::apiDispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z)
+{
+    computeDescriptors_.flush(commands_);
+    vkCmdDispatch(commands_, x, y, z);
+}
+
+void VulkanCommandList::apiDispatchIndirect(const rhi::Buffer& buffer, std::uint64_t offset)
+{
+    computeDescriptors_.flush(commands_);
+    const VkBuffer handle = vulkanObject<const VulkanBuffer>(buffer, "dispatchIndirect: the buffer").handle();
+    vkCmdDispatchIndirect(commands_, handle, offset);
+}
+
+void VulkanCommandList::apiBarrier(const rhi::Barrier& barrier)
+{
+    // One global memory barrier: Khronos' synchronization guidance prefers it to per-resource barriers where no
+    // layout or queue changes (the RHI's storage images rest in GENERAL).
+    VkMemoryBarrier memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    memory.srcAccessMask = toVkAccess(barrier.src.access);
+    memory.dstAccessMask = toVkAccess(barrier.dst.access);
+    vkCmdPipelineBarrier(commands_, toVkStages(barrier.src.stages), toVkStages(barrier.dst.stages), 0, 1, &memory, 0,
+                         nullptr, 0, nullptr);
 }
 
 void VulkanCommandList::apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index)
@@ -192,6 +256,16 @@ void VulkanCommandList::apiPushLabel(std::string_view name)
     VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
     label.pLabelName = text.c_str();
     context_->beginLabel(commands_, &label);
+}
+
+void VulkanCommandList::apiInsertLabel(std::string_view name)
+{
+    if (!context_->insertLabel)
+        return;
+    const std::string text(name);
+    VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+    label.pLabelName = text.c_str();
+    context_->insertLabel(commands_, &label);
 }
 
 void VulkanCommandList::apiPopLabel()

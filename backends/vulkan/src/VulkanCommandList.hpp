@@ -34,6 +34,15 @@ private:
     void apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
                               std::uint64_t size) override;
     void apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler) override;
+    void apiBindStorageBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
+                              std::uint64_t size) override;
+    void apiBindStorageTexture(std::uint32_t binding, const rhi::Texture& texture, std::uint32_t level) override;
+    void apiBindComputePipeline(const rhi::ComputePipeline& pipeline) override;
+    void apiDispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z) override;
+    void apiDispatchIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiDrawIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiDrawIndexedIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiBarrier(const rhi::Barrier& barrier) override;
     void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
                  std::uint32_t firstInstance) override;
     void apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
@@ -48,6 +57,7 @@ private:
     void apiWriteTimestamp(rhi::TimestampQueries& queries, std::uint32_t index) override;
     void apiPushLabel(std::string_view name) override;
     void apiPopLabel() override;
+    void apiInsertLabel(std::string_view name) override;
 
     void begin();
     void beginPrologue();
@@ -59,7 +69,8 @@ private:
     UniqueFence fence_;
     bool prologueRecording_ = false;
     std::vector<VkQueryPool> resetPools_;
-    DescriptorBinder descriptors_;
+    DescriptorBinder descriptors_; // the graphics bind point's
+    DescriptorBinder computeDescriptors_;
     const VulkanPipeline* pipeline_ = nullptr;
 };
 

@@ -66,6 +66,14 @@ void Context::fillCapabilities()
     capabilities.maxCubeSize = limits.maxImageDimensionCube;
     capabilities.maxSamplerAnisotropy = features.samplerAnisotropy ? limits.maxSamplerAnisotropy : 1.0f;
     capabilities.deviceLossReported = true;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        capabilities.maxWorkgroupSize[axis] = limits.maxComputeWorkGroupSize[axis];
+        capabilities.maxWorkgroupCount[axis] = limits.maxComputeWorkGroupCount[axis];
+    }
+    capabilities.maxWorkgroupInvocations = limits.maxComputeWorkGroupInvocations;
+    capabilities.maxComputeSharedMemory = limits.maxComputeSharedMemorySize;
+    capabilities.storageBufferOffsetAlignment = std::uint32_t(limits.minStorageBufferOffsetAlignment);
+    capabilities.maxStorageBufferRange = limits.maxStorageBufferRange;
     VkPhysicalDeviceMemoryProperties memory;
     vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memory);
     for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)
@@ -86,7 +94,8 @@ rhi::FormatSupport Context::formatSupport(rhi::Format format) const
                                                                        : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
     rhi::FormatSupport support{.sampled = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | transfer),
                                .linearFilter = all(VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT),
-                               .renderTarget = all(attachment | transfer)};
+                               .renderTarget = all(attachment | transfer),
+                               .storage = !rhi::isDepthFormat(format) && all(VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT)};
     if (support.renderTarget)
         support.sampleCounts = renderTargetSampleCounts(format);
     return support;
@@ -174,6 +183,8 @@ void Context::createDevice()
             vkGetDeviceProcAddr(device, "vkCmdBeginDebugUtilsLabelEXT"));
         endLabel =
             reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(vkGetDeviceProcAddr(device, "vkCmdEndDebugUtilsLabelEXT"));
+        insertLabel = reinterpret_cast<PFN_vkCmdInsertDebugUtilsLabelEXT>(
+            vkGetDeviceProcAddr(device, "vkCmdInsertDebugUtilsLabelEXT"));
     }
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

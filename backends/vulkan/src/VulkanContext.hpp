@@ -75,6 +75,7 @@ public:
     // VK_EXT_debug_utils's command labels, where the instance has the extension (with validation); else null.
     PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel = nullptr;
     PFN_vkCmdEndDebugUtilsLabelEXT endLabel = nullptr;
+    PFN_vkCmdInsertDebugUtilsLabelEXT insertLabel = nullptr;
 
 private:
     std::mutex queueMutex_;

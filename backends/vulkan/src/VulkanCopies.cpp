@@ -19,7 +19,8 @@ void VulkanCommandList::apiCopyBuffer(const rhi::Buffer& src, std::uint64_t srcO
     const auto& to = vulkanObject<const VulkanBuffer>(dst, "copyBuffer: the destination");
     if (size == 0)
         return;
-    fullBarrier(commands_);
+    // Earlier passes and copies are ordered before this one by their own dependencies, dispatches by the RHI's
+    // hazard tracker; the full barrier after orders this copy before everything later.
     const VkBufferCopy region{srcOffset, dstOffset, size};
     vkCmdCopyBuffer(commands_, from.handle(), to.handle(), 1, &region);
     fullBarrier(commands_);

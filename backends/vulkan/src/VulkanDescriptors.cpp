@@ -17,9 +17,11 @@ constexpr std::uint32_t setsPerPool = 1024;
 
 UniqueDescriptorPool DescriptorAllocator::createPool() const
 {
-    const std::array<VkDescriptorPoolSize, 2> sizes{{
+    const std::array<VkDescriptorPoolSize, 4> sizes{{
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, setsPerPool * 4},
         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, setsPerPool * 4},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, setsPerPool},
+        {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, setsPerPool},
     }};
     VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     info.maxSets = setsPerPool;
@@ -61,22 +63,31 @@ DescriptorBinder::Bound& DescriptorBinder::slot(std::uint32_t binding)
     return bound_[binding];
 }
 
-void DescriptorBinder::setPipeline(const VulkanPipeline& pipeline)
+void DescriptorBinder::setPipeline(const DescriptorLayout& pipeline)
 {
     pipeline_ = &pipeline;
     // Pipelines with the same bindings share a layout (LayoutCache), and then the set stays valid.
-    if (pipeline.layout().layout != layout_) {
-        layout_ = pipeline.layout().layout;
-        setDirty_ = !pipeline.bindings().empty();
+    if (pipeline.layout.layout != layout_) {
+        layout_ = pipeline.layout.layout;
+        setDirty_ = !pipeline.bindings->empty();
         offsetsDirty_ = false;
+    }
+}
+
+void DescriptorBinder::set(std::uint32_t binding, const Bound& bound)
+{
+    Bound& b = slot(binding);
+    if (!b.sameDescriptor(bound)) {
+        b = bound;
+        setDirty_ = true;
     }
 }
 
 void DescriptorBinder::setUniformBuffer(std::uint32_t binding, VkBuffer buffer, std::uint32_t offset, VkDeviceSize size)
 {
     Bound& b = slot(binding);
-    if (!b.isBuffer || b.buffer != buffer || b.size != size) {
-        b = Bound{.isBuffer = true, .buffer = buffer, .size = size};
+    if (b.type != VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC || b.buffer != buffer || b.size != size) {
+        b = Bound{.type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, .buffer = buffer, .size = size};
         setDirty_ = true;
     }
     if (b.offset != offset) {
@@ -85,13 +96,20 @@ void DescriptorBinder::setUniformBuffer(std::uint32_t binding, VkBuffer buffer, 
     }
 }
 
-void DescriptorBinder::setTexture(std::uint32_t binding, VkImageView view, VkSampler sampler)
+void DescriptorBinder::setTexture(std::uint32_t binding, VkImageView view, VkSampler sampler, VkImageLayout layout)
 {
-    Bound& b = slot(binding);
-    if (!b.isTexture || b.view != view || b.sampler != sampler) {
-        b = Bound{.isTexture = true, .view = view, .sampler = sampler};
-        setDirty_ = true;
-    }
+    set(binding,
+        {.type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, .view = view, .sampler = sampler, .layout = layout});
+}
+
+void DescriptorBinder::setStorageBuffer(std::uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize size)
+{
+    set(binding, {.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, .buffer = buffer, .size = size, .storageOffset = offset});
+}
+
+void DescriptorBinder::setStorageImage(std::uint32_t binding, VkImageView view)
+{
+    set(binding, {.type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, .view = view, .layout = VK_IMAGE_LAYOUT_GENERAL});
 }
 
 void DescriptorBinder::reset()
@@ -107,26 +125,26 @@ void DescriptorBinder::reset()
 
 void DescriptorBinder::bind(VkCommandBuffer commandBuffer)
 {
-    if (pipeline_->bindings().empty()) {
+    if (pipeline_->bindings->empty()) {
         setDirty_ = offsetsDirty_ = false;
         return;
     }
     if (setDirty_)
         writeSet();
-    const std::vector<std::uint32_t>& uniforms = pipeline_->uniformBindings();
+    const std::vector<std::uint32_t>& uniforms = pipeline_->uniformBindings;
     offsets_.resize(uniforms.size());
     for (std::size_t i = 0; i < uniforms.size(); ++i)
         offsets_[i] = bound_[uniforms[i]].offset;
-    vkCmdBindDescriptorSets(commandBuffer, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_,
-                            std::uint32_t(offsets_.size()), offsets_.data());
+    vkCmdBindDescriptorSets(commandBuffer, pipeline_->bindPoint, layout_, 0, 1, &set_, std::uint32_t(offsets_.size()),
+                            offsets_.data());
     setDirty_ = false;
     offsetsDirty_ = false;
 }
 
 void DescriptorBinder::writeSet()
 {
-    const std::vector<rhi::ShaderBinding>& bindings = pipeline_->bindings();
-    set_ = allocator_.allocate(pipeline_->layout().setLayout);
+    const std::vector<rhi::ShaderBinding>& bindings = *pipeline_->bindings;
+    set_ = allocator_.allocate(pipeline_->layout.setLayout);
     bufferInfos_.clear();
     imageInfos_.clear();
     writes_.clear();
@@ -134,20 +152,18 @@ void DescriptorBinder::writeSet()
     bufferInfos_.reserve(bindings.size());
     imageInfos_.reserve(bindings.size());
     for (const rhi::ShaderBinding& b : bindings) {
-        const bool wantsBuffer = b.kind == rhi::BindingKind::UniformBuffer;
         // The validation layer has checked that every binding holds what the pipeline reads.
         const Bound* bound = &bound_[b.binding];
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         write.dstSet = set_;
         write.dstBinding = b.binding;
         write.descriptorCount = 1;
-        if (wantsBuffer) {
-            bufferInfos_.push_back({bound->buffer, 0, bound->size});
-            write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+        write.descriptorType = descriptorType(b.kind);
+        if (b.kind == rhi::BindingKind::UniformBuffer || b.kind == rhi::BindingKind::StorageBuffer) {
+            bufferInfos_.push_back({bound->buffer, bound->storageOffset, bound->size});
             write.pBufferInfo = &bufferInfos_.back();
         } else {
-            imageInfos_.push_back({bound->sampler, bound->view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-            write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+            imageInfos_.push_back({bound->sampler, bound->view, bound->layout});
             write.pImageInfo = &imageInfos_.back();
         }
         writes_.push_back(write);

@@ -41,14 +41,19 @@ std::unique_ptr<rhi::Sampler> VulkanDevice::apiCreateSampler(const rhi::SamplerD
     return std::make_unique<VulkanSampler>(context_, desc);
 }
 
-std::unique_ptr<rhi::Shader> VulkanDevice::createShader(const rhi::ShaderSource& source)
+std::unique_ptr<rhi::Shader> VulkanDevice::apiCreateShader(rhi::CompiledShader compiled)
 {
-    return std::make_unique<VulkanShader>(context_, rhi::compileShader(source, context_->conventions.glslHeader()));
+    return std::make_unique<VulkanShader>(context_, std::move(compiled));
 }
 
 std::unique_ptr<rhi::Pipeline> VulkanDevice::apiCreatePipeline(const rhi::PipelineDesc& desc)
 {
     return std::make_unique<VulkanPipeline>(context_, desc);
+}
+
+std::unique_ptr<rhi::ComputePipeline> VulkanDevice::apiCreateComputePipeline(const rhi::ComputePipelineDesc& desc)
+{
+    return std::make_unique<VulkanComputePipeline>(context_, desc);
 }
 
 std::unique_ptr<rhi::Framebuffer> VulkanDevice::apiCreateFramebuffer(const rhi::FramebufferDesc& desc)

@@ -18,7 +18,6 @@ public:
     const rhi::Conventions& conventions() const override { return context_->conventions; }
     const rhi::Capabilities& capabilities() const override { return context_->capabilities; }
 
-    std::unique_ptr<rhi::Shader> createShader(const rhi::ShaderSource& source) override;
     std::unique_ptr<rhi::CommandList> createCommandList() override;
     std::unique_ptr<rhi::Swapchain> createSwapchain() override;
     std::vector<double> readTimestamps(const rhi::TimestampQueries& queries) override;
@@ -34,7 +33,9 @@ private:
     void apiWriteTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
                          std::span<const std::byte> data) override;
     std::unique_ptr<rhi::Sampler> apiCreateSampler(const rhi::SamplerDesc& desc) override;
+    std::unique_ptr<rhi::Shader> apiCreateShader(rhi::CompiledShader compiled) override;
     std::unique_ptr<rhi::Pipeline> apiCreatePipeline(const rhi::PipelineDesc& desc) override;
+    std::unique_ptr<rhi::ComputePipeline> apiCreateComputePipeline(const rhi::ComputePipelineDesc& desc) override;
     std::unique_ptr<rhi::Framebuffer> apiCreateFramebuffer(const rhi::FramebufferDesc& desc) override;
     std::unique_ptr<rhi::TimestampQueries> apiCreateTimestampQueries(std::uint32_t count) override;
     void apiSubmit(rhi::CommandList& commands) override;

@@ -191,4 +191,47 @@ VkIndexType toVkIndexType(rhi::IndexType type)
     return type == rhi::IndexType::UInt16 ? VK_INDEX_TYPE_UINT16 : VK_INDEX_TYPE_UINT32;
 }
 
+VkPipelineStageFlags toVkStages(rhi::Stage stages)
+{
+    VkPipelineStageFlags flags = 0;
+    const auto add = [&](rhi::Stage stage, VkPipelineStageFlags vk) {
+        if (rhi::hasFlag(stages, stage))
+            flags |= vk;
+    };
+    add(rhi::Stage::DrawIndirect, VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+    add(rhi::Stage::VertexInput, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT);
+    add(rhi::Stage::VertexShader, VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
+    add(rhi::Stage::FragmentShader, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+    add(rhi::Stage::Attachments, VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                     VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
+                                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT);
+    add(rhi::Stage::ComputeShader, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    add(rhi::Stage::Copy, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    add(rhi::Stage::Host, VK_PIPELINE_STAGE_HOST_BIT);
+    return flags;
+}
+
+VkAccessFlags toVkAccess(rhi::Access access)
+{
+    VkAccessFlags flags = 0;
+    const auto add = [&](rhi::Access a, VkAccessFlags vk) {
+        if (rhi::hasFlag(access, a))
+            flags |= vk;
+    };
+    add(rhi::Access::IndirectRead, VK_ACCESS_INDIRECT_COMMAND_READ_BIT);
+    add(rhi::Access::VertexRead, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
+    add(rhi::Access::IndexRead, VK_ACCESS_INDEX_READ_BIT);
+    add(rhi::Access::UniformRead, VK_ACCESS_UNIFORM_READ_BIT);
+    add(rhi::Access::SampledRead | rhi::Access::StorageBufferRead | rhi::Access::StorageImageRead,
+        VK_ACCESS_SHADER_READ_BIT);
+    add(rhi::Access::StorageBufferWrite | rhi::Access::StorageImageWrite, VK_ACCESS_SHADER_WRITE_BIT);
+    add(rhi::Access::AttachmentRead, VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    add(rhi::Access::AttachmentWrite,
+        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    add(rhi::Access::CopyRead, VK_ACCESS_TRANSFER_READ_BIT);
+    add(rhi::Access::CopyWrite, VK_ACCESS_TRANSFER_WRITE_BIT);
+    add(rhi::Access::HostRead, VK_ACCESS_HOST_READ_BIT);
+    return flags;
+}
+
 } // namespace penumbra::vulkan

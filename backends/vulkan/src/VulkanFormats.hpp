@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/Hazards.hpp"
 
 #include <vulkan/vulkan.h>
 
@@ -15,6 +16,9 @@ VkImageAspectFlags dataAspect(rhi::Format format);
 VkFormat toVkFormat(rhi::VertexFormat format);
 VkPrimitiveTopology toVkTopology(rhi::PrimitiveTopology topology);
 VkCullModeFlags toVkCullMode(rhi::CullMode cull);
+// The RHI's barrier stages and accesses (rhi/Hazards.hpp) in Vulkan 1.0 terms.
+VkPipelineStageFlags toVkStages(rhi::Stage stages);
+VkAccessFlags toVkAccess(rhi::Access access);
 VkCompareOp toVkCompareOp(rhi::CompareOp op);
 VkBlendFactor toVkBlendFactor(rhi::BlendFactor factor);
 VkBlendOp toVkBlendOp(rhi::BlendOp op);

@@ -25,8 +25,19 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(VkDebugUtilsMessageSeverityFlagBit
                                               VkDebugUtilsMessageTypeFlagsEXT,
                                               const VkDebugUtilsMessengerCallbackDataEXT* data, void* user)
 {
+    // The command buffer's open labels (CommandList::pushLabel) say which pass a message is about. The layer
+    // (1.3.239) lists each label twice in a row, so a label equal to the one before is left out.
+    std::string labels;
+    const char* previous = nullptr;
+    for (std::uint32_t i = data->cmdBufLabelCount; i > 0; --i) {
+        const char* name = data->pCmdBufLabels[i - 1].pLabelName;
+        if (previous && std::strcmp(previous, name) == 0)
+            continue;
+        labels += fmt::format("{}{}", labels.empty() ? " [labels: " : " > ", name);
+        previous = name;
+    }
     static_cast<rhi::DebugMessageLog*>(user)->record(
-        fmt::format("vulkan {}: {}", severityName(severity), data->pMessage));
+        fmt::format("vulkan {}: {}{}", severityName(severity), data->pMessage, labels.empty() ? "" : labels + "]"));
     return VK_FALSE;
 }
 
@@ -95,6 +106,15 @@ Instance::Instance(bool validation, rhi::DebugMessageLog& log, std::vector<const
     std::vector<const char*> layers;
     // Chained into the create info so that instance creation and destruction are reported too.
     VkDebugUtilsMessengerCreateInfoEXT debugInfo = messengerInfo(log);
+    // Synchronization validation on with the rest: it reports the hazards a missing or too narrow barrier leaves
+    // (the layer's "Synchronization Validation" guide, VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT),
+    // which lavapipe, running commands in order, would forgive.
+    const VkValidationFeatureEnableEXT enabledFeatures[] = {
+        VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    features.pNext = &debugInfo;
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = enabledFeatures;
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     info.pApplicationInfo = &app;
     if (validation) {
@@ -104,7 +124,8 @@ Instance::Instance(bool validation, rhi::DebugMessageLog& log, std::vector<const
                                          validationLayer));
         layers.push_back(validationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        info.pNext = &debugInfo;
+        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+        info.pNext = &features;
     }
     info.enabledLayerCount = std::uint32_t(layers.size());
     info.ppEnabledLayerNames = layers.data();

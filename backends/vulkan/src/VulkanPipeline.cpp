@@ -13,12 +13,34 @@
 namespace penumbra::vulkan {
 namespace {
 
+} // namespace
+
 VkDescriptorType descriptorType(rhi::BindingKind kind)
 {
-    // Dynamic uniform buffers: a per-draw offset is a dynamic offset, not a new descriptor set.
-    return kind == rhi::BindingKind::UniformBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC
-                                                   : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    switch (kind) {
+    case rhi::BindingKind::UniformBuffer:
+        // Dynamic uniform buffers: a per-draw offset is a dynamic offset, not a new descriptor set.
+        return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+    case rhi::BindingKind::SampledTexture:
+        return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    case rhi::BindingKind::StorageBuffer:
+        return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    case rhi::BindingKind::StorageTexture:
+        break;
+    }
+    return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
 }
+
+std::vector<std::uint32_t> uniformBindingsOf(const std::vector<rhi::ShaderBinding>& bindings)
+{
+    std::vector<std::uint32_t> uniforms;
+    for (const rhi::ShaderBinding& b : bindings)
+        if (b.kind == rhi::BindingKind::UniformBuffer)
+            uniforms.push_back(b.binding);
+    return uniforms;
+}
+
+namespace {
 
 const VulkanShader& vulkanShader(const rhi::Shader* shader, const rhi::PipelineDesc& desc)
 {
@@ -29,11 +51,11 @@ const VulkanShader& vulkanShader(const rhi::Shader* shader, const rhi::PipelineD
     return *vk;
 }
 
-void checkUniformCount(const VkPhysicalDeviceLimits& limits, const rhi::PipelineDesc& desc, std::size_t count)
+void checkUniformCount(const VkPhysicalDeviceLimits& limits, const std::string& pipeline, std::size_t count)
 {
     if (count > limits.maxDescriptorSetUniformBuffersDynamic)
         throw rhi::UnsupportedError(fmt::format("pipeline '{}': {} uniform blocks, but the device binds at most {}",
-                                                desc.debugName, count, limits.maxDescriptorSetUniformBuffersDynamic));
+                                                pipeline, count, limits.maxDescriptorSetUniformBuffersDynamic));
 }
 
 RenderPassKey compatibleRenderPass(const rhi::PipelineDesc& desc)
@@ -76,24 +98,23 @@ VulkanShader::VulkanShader(std::shared_ptr<Context> context, rhi::CompiledShader
     context_->setName(VK_OBJECT_TYPE_SHADER_MODULE, module_.get(), compiled_.name);
 }
 
-PipelineLayout LayoutCache::get(const std::vector<rhi::ShaderBinding>& bindings)
+PipelineLayout LayoutCache::get(const std::vector<rhi::ShaderBinding>& bindings, VkShaderStageFlags stages)
 {
-    std::vector<std::uint32_t> key;
+    std::vector<std::uint32_t> key{stages};
     for (const rhi::ShaderBinding& b : bindings)
         key.insert(key.end(), {b.binding, std::uint32_t(b.kind)});
     std::lock_guard lock(mutex_);
     auto found = layouts_.find(key);
     if (found == layouts_.end())
-        found = layouts_.emplace(std::move(key), create(bindings)).first;
+        found = layouts_.emplace(std::move(key), create(bindings, stages)).first;
     return {found->second.setLayout.get(), found->second.layout.get()};
 }
 
-LayoutCache::Entry LayoutCache::create(const std::vector<rhi::ShaderBinding>& bindings) const
+LayoutCache::Entry LayoutCache::create(const std::vector<rhi::ShaderBinding>& bindings, VkShaderStageFlags stages) const
 {
     std::vector<VkDescriptorSetLayoutBinding> vkBindings;
     for (const rhi::ShaderBinding& b : bindings)
-        vkBindings.push_back(
-            {b.binding, descriptorType(b.kind), 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+        vkBindings.push_back({b.binding, descriptorType(b.kind), 1, stages, nullptr});
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.bindingCount = std::uint32_t(vkBindings.size());
     setInfo.pBindings = vkBindings.data();
@@ -112,12 +133,11 @@ VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::Pipe
     : context_(std::move(context)), desc_(desc)
 {
     bindings_ = rhi::pipelineBindings(desc);
-    for (const rhi::ShaderBinding& b : bindings_)
-        if (b.kind == rhi::BindingKind::UniformBuffer)
-            uniformBindings_.push_back(b.binding);
-    checkUniformCount(context_->properties.limits, desc, uniformBindings_.size());
+    const std::vector<std::uint32_t> uniforms = uniformBindingsOf(bindings_);
+    checkUniformCount(context_->properties.limits, desc.debugName, uniforms.size());
     signedBias_ = rhi::signedDepthBias(context_->conventions, desc.depth.bias);
-    layout_ = context_->layouts().get(bindings_);
+    layout_ = context_->layouts().get(bindings_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+    descriptors_ = {&bindings_, uniforms, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS};
     const RenderPassKey passKey = compatibleRenderPass(desc);
     renderPass_ = context_->renderPasses().get(passKey);
 
@@ -197,6 +217,33 @@ VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::Pipe
     VkPipeline pipeline = VK_NULL_HANDLE;
     check(vkCreateGraphicsPipelines(context_->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
           fmt::format("vkCreateGraphicsPipelines ('{}')", desc.debugName));
+    pipeline_ = UniquePipeline(context_->device, pipeline);
+    context_->setName(VK_OBJECT_TYPE_PIPELINE, pipeline, desc.debugName);
+}
+
+VulkanComputePipeline::VulkanComputePipeline(std::shared_ptr<Context> context, const rhi::ComputePipelineDesc& desc)
+    : ComputePipeline(desc.compute->compiled()), context_(std::move(context)), desc_(desc)
+{
+    const auto* shader = dynamic_cast<const VulkanShader*>(desc.compute);
+    if (!shader)
+        throw rhi::Error(fmt::format("compute pipeline '{}': shader '{}' was not created by a Vulkan device",
+                                     desc.debugName, desc.compute->compiled().name));
+    std::vector<std::uint32_t> uniforms = uniformBindingsOf(bindings());
+    checkUniformCount(context_->properties.limits, desc.debugName, uniforms.size());
+    const PipelineLayout layout = context_->layouts().get(bindings(), VK_SHADER_STAGE_COMPUTE_BIT);
+    descriptors_ = {&bindings(), std::move(uniforms), layout, VK_PIPELINE_BIND_POINT_COMPUTE};
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                  nullptr,
+                  0,
+                  VK_SHADER_STAGE_COMPUTE_BIT,
+                  shader->module(),
+                  "main",
+                  nullptr};
+    info.layout = layout.layout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    check(vkCreateComputePipelines(context_->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+          fmt::format("vkCreateComputePipelines ('{}')", desc.debugName));
     pipeline_ = UniquePipeline(context_->device, pipeline);
     context_->setName(VK_OBJECT_TYPE_PIPELINE, pipeline, desc.debugName);
 }

@@ -31,25 +31,39 @@ struct PipelineLayout {
     VkPipelineLayout layout = VK_NULL_HANDLE;
 };
 
-// One descriptor-set layout and pipeline layout per distinct binding list. Pipelines with the same
+// One descriptor-set layout and pipeline layout per distinct binding list and stages. Pipelines with the same
 // bindings share them, so switching between such pipelines keeps the bound descriptor set valid.
 class LayoutCache {
 public:
     explicit LayoutCache(VkDevice device) : device_(device) {}
 
-    PipelineLayout get(const std::vector<rhi::ShaderBinding>& bindings);
+    PipelineLayout get(const std::vector<rhi::ShaderBinding>& bindings, VkShaderStageFlags stages);
 
 private:
     struct Entry {
         UniqueDescriptorSetLayout setLayout;
         UniquePipelineLayout layout; // after setLayout: destroyed before it
     };
-    Entry create(const std::vector<rhi::ShaderBinding>& bindings) const;
+    Entry create(const std::vector<rhi::ShaderBinding>& bindings, VkShaderStageFlags stages) const;
 
     VkDevice device_;
     std::mutex mutex_;
     std::map<std::vector<std::uint32_t>, Entry> layouts_;
 };
+
+// What DescriptorBinder needs of a graphics or compute pipeline.
+struct DescriptorLayout {
+    const std::vector<rhi::ShaderBinding>* bindings = nullptr; // sorted by number
+    std::vector<std::uint32_t> uniformBindings; // uniform blocks, in the order of their dynamic offsets
+    PipelineLayout layout;
+    VkPipelineBindPoint bindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+};
+
+// The descriptor type of a binding kind.
+VkDescriptorType descriptorType(rhi::BindingKind kind);
+
+// Binding numbers of the uniform blocks among `bindings`, in order.
+std::vector<std::uint32_t> uniformBindingsOf(const std::vector<rhi::ShaderBinding>& bindings);
 
 class VulkanPipeline final : public rhi::Pipeline {
 public:
@@ -61,8 +75,7 @@ public:
     const PipelineLayout& layout() const { return layout_; }
     // Every binding both stages declare, sorted by number: the descriptor set's contents.
     const std::vector<rhi::ShaderBinding>& bindings() const override { return bindings_; }
-    // Binding numbers of the uniform blocks, in the order of their dynamic offsets.
-    const std::vector<std::uint32_t>& uniformBindings() const { return uniformBindings_; }
+    const DescriptorLayout& descriptors() const { return descriptors_; }
     // The desc's bias with the sign the conventions give it.
     const rhi::DepthBias& signedBias() const { return signedBias_; }
     // The render pass this pipeline was created against (compatible with matching framebuffers).
@@ -72,10 +85,25 @@ private:
     std::shared_ptr<Context> context_;
     rhi::PipelineDesc desc_;
     std::vector<rhi::ShaderBinding> bindings_;
-    std::vector<std::uint32_t> uniformBindings_;
     rhi::DepthBias signedBias_;
     PipelineLayout layout_;
+    DescriptorLayout descriptors_;
     VkRenderPass renderPass_ = VK_NULL_HANDLE;
+    UniquePipeline pipeline_;
+};
+
+class VulkanComputePipeline final : public rhi::ComputePipeline {
+public:
+    VulkanComputePipeline(std::shared_ptr<Context> context, const rhi::ComputePipelineDesc& desc);
+
+    const rhi::ComputePipelineDesc& desc() const override { return desc_; }
+    VkPipeline handle() const { return pipeline_.get(); }
+    const DescriptorLayout& descriptors() const { return descriptors_; }
+
+private:
+    std::shared_ptr<Context> context_;
+    rhi::ComputePipelineDesc desc_;
+    DescriptorLayout descriptors_;
     UniquePipeline pipeline_;
 };
 

@@ -81,12 +81,14 @@ UniqueRenderPass RenderPassCache::create(const RenderPassKey& key) const
     subpass.pColorAttachments = colorRefs.data();
     subpass.pDepthStencilAttachment = key.depth ? &depthRef : nullptr;
 
-    // Full dependencies on both sides: whatever came before (copies, other passes) is finished
-    // and visible, and whatever comes after sees this pass's writes.
+    // Dependencies on both sides over graphics and copies: whatever pass or copy came before is finished and
+    // visible, and whatever pass or copy comes after sees this pass's writes. Compute is left out: the RHI's hazard
+    // tracker (rhi/Hazards.hpp) orders dispatches against passes with barriers narrowed to what each one uses.
     const VkAccessFlags all = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    const VkPipelineStageFlags graphicsAndCopies = VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
     const std::array<VkSubpassDependency, 2> dependencies{{
-        {VK_SUBPASS_EXTERNAL, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, all, all, 0},
-        {0, VK_SUBPASS_EXTERNAL, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, all, all, 0},
+        {VK_SUBPASS_EXTERNAL, 0, graphicsAndCopies, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, all, all, 0},
+        {0, VK_SUBPASS_EXTERNAL, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT, graphicsAndCopies, all, all, 0},
     }};
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};

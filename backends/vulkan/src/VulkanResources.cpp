@@ -24,6 +24,10 @@ VkBufferUsageFlags bufferUsage(rhi::BufferUsage usage)
         flags |= VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
     if (rhi::hasFlag(usage, rhi::BufferUsage::Uniform))
         flags |= VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+    if (rhi::hasFlag(usage, rhi::BufferUsage::Storage))
+        flags |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    if (rhi::hasFlag(usage, rhi::BufferUsage::Indirect))
+        flags |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
     return flags;
 }
 
@@ -38,6 +42,10 @@ VkImageLayout attachmentLayout(rhi::Format format)
 
 VkImageLayout restingLayoutOf(const rhi::TextureDesc& desc)
 {
+    // A storage image must be GENERAL while shaders load and store it (Vulkan 1.3 section 14.1.1); resting there
+    // spares a transition around every dispatch, and GENERAL serves sampling, copies and attachments too.
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Storage))
+        return VK_IMAGE_LAYOUT_GENERAL;
     if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Sampled))
         return VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     if (rhi::hasFlag(desc.usage, rhi::TextureUsage::RenderTarget))
@@ -58,6 +66,8 @@ VkImageUsageFlags imageUsage(const rhi::TextureDesc& desc)
     VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Sampled))
         usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Storage))
+        usage |= VK_IMAGE_USAGE_STORAGE_BIT;
     if (rhi::hasFlag(desc.usage, rhi::TextureUsage::RenderTarget))
         usage |= rhi::isDepthFormat(desc.format) ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
                                                  : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
@@ -138,6 +148,15 @@ VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::Textur
     viewInfo.format = format_;
     viewInfo.subresourceRange = {dataAspect(desc.format), 0, desc.mipLevels, 0, desc.layers};
     view_ = createOwned<UniqueImageView>(device, vkCreateImageView, viewInfo, "vkCreateImageView");
+    // A storage image view addresses one level (Vulkan 1.3, VUID-VkWriteDescriptorSet-descriptorType-00336 needs
+    // levelCount 1 for a storage image), so there is one per level.
+    if (rhi::hasFlag(desc.usage, rhi::TextureUsage::Storage))
+        for (std::uint32_t level = 0; level < desc.mipLevels; ++level) {
+            viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+            viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, 1, 0, 1};
+            storageViews_.push_back(
+                createOwned<UniqueImageView>(device, vkCreateImageView, viewInfo, "vkCreateImageView"));
+        }
     context_->setName(VK_OBJECT_TYPE_IMAGE, image_.get(), desc.debugName);
     context_->setName(VK_OBJECT_TYPE_IMAGE_VIEW, view_.get(), desc.debugName);
 

@@ -5,6 +5,7 @@
 #include "penumbra/rhi/Resources.hpp"
 
 #include <memory>
+#include <vector>
 #include <vulkan/vulkan.h>
 
 namespace penumbra::vulkan {
@@ -56,6 +57,8 @@ public:
     VkImage image() const { return image_.get(); }
     // The view shaders sample: every layer (2D, 2D array or cube array) and level, depth aspect only for D24S8.
     VkImageView sampledView() const { return view_.get(); }
+    // One mip level as a storage image (TextureUsage::Storage).
+    VkImageView storageView(std::uint32_t level) const { return storageViews_[level].get(); }
     VkFormat format() const { return format_; }
     VkImageLayout restingLayout() const { return restingLayout_; }
     // Level 0 of one layer with every aspect, for a framebuffer.
@@ -73,6 +76,7 @@ private:
     UniqueMemory memory_;
     UniqueImage image_;
     UniqueImageView view_;
+    std::vector<UniqueImageView> storageViews_;
 };
 
 class VulkanSampler final : public rhi::Sampler {

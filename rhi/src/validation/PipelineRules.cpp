@@ -6,6 +6,8 @@
 #include "penumbra/rhi/Error.hpp"
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <fmt/format.h>
 
 namespace penumbra::rhi {
@@ -22,33 +24,79 @@ const UniformMember* findMember(const UniformLayout& layout, const std::string& 
     return found == layout.members.end() ? nullptr : &*found;
 }
 
-// One reflected block against its C++ description; `shader` names the file that declares it.
-void compareBlock(const PipelineDesc& desc, const UniformLayout& layout, const ShaderBinding& block,
+std::string_view blockName(BindingKind kind)
+{
+    return kind == BindingKind::UniformBuffer ? "uniform block" : "storage block";
+}
+
+// One reflected block against its C++ description; `shader` names the file that declares it. Uniform blocks are
+// std140, storage blocks std430 (GLSL 4.60 section 4.4.5); the offsets reflection gives are the layout's either way.
+void compareBlock(const std::string& pipeline, const UniformLayout& layout, const ShaderBinding& block,
                   const std::string& shader)
 {
+    const std::string_view kind = blockName(block.kind);
     for (const UniformMember& glsl : block.members) {
         const UniformMember* cpp = findMember(layout, glsl.name);
         if (!cpp)
-            throw Error(fmt::format("pipeline '{}': uniform block '{}' member '{}' (offset {} in {}) is missing "
+            throw Error(fmt::format("pipeline '{}': {} '{}' member '{}' (offset {} in {}) is missing "
                                     "from the C++ layout",
-                                    desc.debugName, block.name, glsl.name, glsl.offset, shader));
+                                    pipeline, kind, block.name, glsl.name, glsl.offset, shader));
         if (cpp->offset != glsl.offset)
-            throw Error(fmt::format("pipeline '{}': uniform block '{}' member '{}' is at offset {} in {} but at "
+            throw Error(fmt::format("pipeline '{}': {} '{}' member '{}' is at offset {} in {} but at "
                                     "offset {} in C++",
-                                    desc.debugName, block.name, glsl.name, glsl.offset, shader, cpp->offset));
+                                    pipeline, kind, block.name, glsl.name, glsl.offset, shader, cpp->offset));
         if (cpp->size != glsl.size)
-            throw Error(fmt::format("pipeline '{}': uniform block '{}' member '{}' takes {} bytes in {} but {} in C++",
-                                    desc.debugName, block.name, glsl.name, glsl.size, shader, cpp->size));
+            throw Error(fmt::format("pipeline '{}': {} '{}' member '{}' takes {} bytes in {} but {} in C++", pipeline,
+                                    kind, block.name, glsl.name, glsl.size, shader, cpp->size));
     }
     for (const UniformMember& cpp : layout.members)
         if (std::none_of(block.members.begin(), block.members.end(),
                          [&](const UniformMember& m) { return m.name == cpp.name; }))
-            throw Error(fmt::format("pipeline '{}': uniform block '{}' has no member '{}' in {}, but the C++ layout "
+            throw Error(fmt::format("pipeline '{}': {} '{}' has no member '{}' in {}, but the C++ layout "
                                     "has",
-                                    desc.debugName, block.name, cpp.name, shader));
+                                    pipeline, kind, block.name, cpp.name, shader));
     if (layout.size != block.size)
-        throw Error(fmt::format("pipeline '{}': uniform block '{}' is {} bytes in {} but {} bytes in C++",
-                                desc.debugName, block.name, block.size, shader, layout.size));
+        throw Error(fmt::format("pipeline '{}': {} '{}' is {} bytes in {} but {} bytes in C++", pipeline, kind,
+                                block.name, block.size, shader, layout.size));
+}
+
+// Each layout against the block of its name and kind in `shaders`.
+void checkLayouts(const std::string& pipeline, const std::vector<UniformLayout>& layouts, BindingKind kind,
+                  std::span<const Shader* const> shaders)
+{
+    for (const UniformLayout& layout : layouts) {
+        bool declared = false;
+        for (const Shader* shader : shaders)
+            for (const ShaderBinding& b : shader->compiled().bindings)
+                if (b.kind == kind && b.name == layout.block) {
+                    compareBlock(pipeline, layout, b, shader->compiled().name);
+                    declared = true;
+                }
+        if (!declared) {
+            std::string names;
+            for (const Shader* shader : shaders)
+                names += (names.empty() ? "" : " or ") + shader->compiled().name;
+            throw Error(fmt::format("pipeline '{}': the C++ layout of {} '{}' matches no block of {}", pipeline,
+                                    blockName(kind), layout.block, names));
+        }
+    }
+}
+
+// Vertex and fragment shaders read storage blocks and use no storage images, so that graphics never writes what the
+// hazard tracker must order (and Vulkan's vertexPipelineStoresAndAtomics is not needed).
+void checkGraphicsStorage(const PipelineDesc& desc)
+{
+    for (const Shader* shader : {desc.vertex, desc.fragment})
+        for (const ShaderBinding& b : shader->compiled().bindings) {
+            if (b.kind == BindingKind::StorageTexture)
+                throw Error(fmt::format("pipeline '{}': storage image '{}' in {}: vertex and fragment shaders use no "
+                                        "storage images",
+                                        desc.debugName, b.name, shader->compiled().name));
+            if (b.kind == BindingKind::StorageBuffer && b.writes)
+                throw Error(fmt::format("pipeline '{}': storage block '{}' in {} is not readonly: vertex and fragment "
+                                        "shaders only read storage blocks",
+                                        desc.debugName, b.name, shader->compiled().name));
+        }
 }
 
 } // namespace
@@ -120,24 +168,45 @@ void checkPipeline(const Capabilities& caps, const PipelineDesc& desc)
         throw UnsupportedError(
             fmt::format("pipeline '{}': depth bias clamp is not supported by {}", desc.debugName, caps.device));
     pipelineBindings(desc);
+    checkGraphicsStorage(desc);
     checkUniformLayouts(desc);
 }
 
 void checkUniformLayouts(const PipelineDesc& desc)
 {
-    for (const UniformLayout& layout : desc.uniformLayouts) {
-        bool declared = false;
-        for (const Shader* shader : {desc.vertex, desc.fragment})
-            for (const ShaderBinding& b : shader->compiled().bindings)
-                if (b.kind == BindingKind::UniformBuffer && b.name == layout.block) {
-                    compareBlock(desc, layout, b, shader->compiled().name);
-                    declared = true;
-                }
-        if (!declared)
-            throw Error(fmt::format("pipeline '{}': the C++ layout of uniform block '{}' matches no block of {} or {}",
-                                    desc.debugName, layout.block, desc.vertex->compiled().name,
-                                    desc.fragment->compiled().name));
-    }
+    const std::array<const Shader*, 2> shaders{desc.vertex, desc.fragment};
+    checkLayouts(desc.debugName, desc.uniformLayouts, BindingKind::UniformBuffer, shaders);
+    checkLayouts(desc.debugName, desc.storageLayouts, BindingKind::StorageBuffer, shaders);
+}
+
+void checkWorkgroup(const Capabilities& caps, const CompiledShader& shader)
+{
+    const std::array<std::uint32_t, 3>& size = shader.workgroupSize;
+    const std::uint64_t invocations = std::uint64_t(size[0]) * size[1] * size[2];
+    for (std::size_t axis = 0; axis < 3; ++axis)
+        if (size[axis] > caps.maxWorkgroupSize[axis])
+            throw Error(fmt::format("{}: local_size_{} = {} exceeds Capabilities::maxWorkgroupSize ({})", shader.name,
+                                    "xyz"[axis], size[axis], caps.maxWorkgroupSize[axis]));
+    if (invocations > caps.maxWorkgroupInvocations)
+        throw Error(fmt::format("{}: {}x{}x{} = {} invocations per workgroup exceed "
+                                "Capabilities::maxWorkgroupInvocations ({})",
+                                shader.name, size[0], size[1], size[2], invocations, caps.maxWorkgroupInvocations));
+    if (shader.sharedMemoryBytes > caps.maxComputeSharedMemory)
+        throw Error(fmt::format("{}: {} bytes of shared variables exceed Capabilities::maxComputeSharedMemory ({})",
+                                shader.name, shader.sharedMemoryBytes, caps.maxComputeSharedMemory));
+}
+
+void checkComputePipeline(const ComputePipelineDesc& desc)
+{
+    if (!desc.compute)
+        throw Error(fmt::format("compute pipeline '{}' needs a compute shader", desc.debugName));
+    const CompiledShader& shader = desc.compute->compiled();
+    if (shader.stage != ShaderStage::Compute)
+        throw Error(
+            fmt::format("compute pipeline '{}': shader {} is not a compute shader", desc.debugName, shader.name));
+    const std::array<const Shader*, 1> shaders{desc.compute};
+    checkLayouts(desc.debugName, desc.uniformLayouts, BindingKind::UniformBuffer, shaders);
+    checkLayouts(desc.debugName, desc.storageLayouts, BindingKind::StorageBuffer, shaders);
 }
 
 } // namespace penumbra::rhi

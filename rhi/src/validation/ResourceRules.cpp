@@ -76,6 +76,13 @@ void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc)
     if (hasFlag(desc.usage, TextureUsage::RenderTarget) && !support.renderTarget)
         throw UnsupportedError(
             fmt::format("texture '{}': {} cannot render to {}", desc.debugName, caps.device, formatName(desc.format)));
+    if (hasFlag(desc.usage, TextureUsage::Storage) && !support.storage)
+        throw UnsupportedError(fmt::format("texture '{}': {} cannot use {} as a storage image", desc.debugName,
+                                           caps.device, formatName(desc.format)));
+    // One image2D view serves every backend: no arrays, cubes or samples (a storage image is bound by mip level).
+    if (hasFlag(desc.usage, TextureUsage::Storage) && (desc.layers != 1 || desc.array || desc.cube))
+        throw Error(fmt::format("texture '{}': a Storage texture is one 2D layer, not {} layers{}", desc.debugName,
+                                desc.layers, desc.cube ? " of a cube" : (desc.array ? " of an array" : "")));
     if (desc.samples != 1 && desc.samples != 2 && desc.samples != 4 && desc.samples != 8)
         throw Error(fmt::format("texture '{}': samples {} is not 1, 2, 4 or 8", desc.debugName, desc.samples));
     if (desc.samples > 1)

@@ -55,7 +55,15 @@ void checkTimestampQueries(const Capabilities& caps, std::uint32_t count);
 // state needs, bindings that agree between the stages, and the uniform layouts against reflection.
 void checkPipeline(const Capabilities& caps, const PipelineDesc& desc);
 
-// Each of desc.uniformLayouts against the std140 layout reflection gives the block of that name.
+// Each of desc.uniformLayouts against the std140 layout reflection gives the block of that name, each of
+// desc.storageLayouts against the std430 layout of the storage block of that name.
 void checkUniformLayouts(const PipelineDesc& desc);
+
+// A compute shader's workgroup size and shared memory within the limits (checked when the shader is created: a GL
+// driver refuses the shader itself).
+void checkWorkgroup(const Capabilities& caps, const CompiledShader& shader);
+
+// A compute shader in its stage, its layouts against reflection.
+void checkComputePipeline(const ComputePipelineDesc& desc);
 
 } // namespace penumbra::rhi

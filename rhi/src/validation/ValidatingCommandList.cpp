@@ -8,6 +8,7 @@
 
 #include "penumbra/rhi/Error.hpp"
 
+#include <array>
 #include <fmt/format.h>
 
 namespace penumbra::rhi {
@@ -31,6 +32,39 @@ bool rendersTo(const PipelineDesc& desc, const AttachmentFormats& formats)
         if (desc.colorTargets[i].format != formats.colors[i])
             return false;
     return true;
+}
+
+std::string_view kindName(BindingKind kind)
+{
+    switch (kind) {
+    case BindingKind::UniformBuffer:
+        return "uniform buffer";
+    case BindingKind::SampledTexture:
+        return "texture and sampler";
+    case BindingKind::StorageBuffer:
+        return "storage buffer";
+    case BindingKind::StorageTexture:
+        break;
+    }
+    return "storage texture";
+}
+
+// A dispatch's access to one binding, in the compute stage.
+Use computeUse(const ShaderBinding& b)
+{
+    switch (b.kind) {
+    case BindingKind::UniformBuffer:
+        return {Stage::ComputeShader, Access::UniformRead};
+    case BindingKind::SampledTexture:
+        return {Stage::ComputeShader, Access::SampledRead};
+    case BindingKind::StorageBuffer:
+        return {Stage::ComputeShader,
+                b.writes ? Access::StorageBufferRead | Access::StorageBufferWrite : Access::StorageBufferRead};
+    case BindingKind::StorageTexture:
+        break;
+    }
+    return {Stage::ComputeShader,
+            b.writes ? Access::StorageImageRead | Access::StorageImageWrite : Access::StorageImageRead};
 }
 
 AttachmentFormats pipelineFormats(const PipelineDesc& desc)
@@ -69,12 +103,43 @@ void ValidatingCommandList::requireOutsidePass(std::string_view what) const
         throw Error(fmt::format("{}: not allowed inside a pass; call endPass() first", what));
 }
 
+void ValidatingCommandList::record(const Barrier& barrier)
+{
+    if (!barrier.empty() && !barriersSuppressed_)
+        apiBarrier(barrier);
+}
+
+void ValidatingCommandList::bindResource(std::uint32_t binding, const void* object, Use graphics)
+{
+    if (binding >= resources_.size())
+        resources_.resize(binding + 1);
+    resources_[binding] = {object, graphics};
+}
+
+void ValidatingCommandList::orderDispatch(const Buffer* indirect)
+{
+    Barrier barrier;
+    for (const ShaderBinding& b : computePipeline_->bindings()) {
+        // With validation off nothing checks that each binding holds something; an empty one is left to the API.
+        if (b.binding >= resources_.size() || !resources_[b.binding].object)
+            continue;
+        const Resource& r = resources_[b.binding];
+        hazards_.use(r.object, r.graphics, computeUse(b), barrier);
+    }
+    if (indirect)
+        hazards_.use(indirect, graphicsUses(indirect->desc()), {Stage::DrawIndirect, Access::IndirectRead}, barrier);
+    record(barrier);
+}
+
 void ValidatingCommandList::forgetRecording()
 {
     inPass_ = false;
     framebuffer_ = nullptr;
     pipeline_ = nullptr;
+    computePipeline_ = nullptr;
     bound_.clear();
+    resources_.clear();
+    hazards_.reset();
     vertexSlots_ = 0;
     indexBuffer_ = false;
     drawChecked_ = false;
@@ -93,6 +158,7 @@ void ValidatingCommandList::beginPass(const PassDesc& pass)
         framebuffer_ = pass.framebuffer;
         drawChecked_ = false;
     }
+    record(hazards_.beginPass());
     apiBeginPass(pass);
 }
 
@@ -169,6 +235,7 @@ void ValidatingCommandList::bindIndexBuffer(const Buffer& buffer, IndexType type
             throw Error(fmt::format("bindIndexBuffer: offset {} is not a multiple of the index size, {} bytes", offset,
                                     indexSize));
         indexBuffer_ = true;
+        indexOffset_ = offset;
     }
     apiBindIndexBuffer(buffer, type, offset);
 }
@@ -192,9 +259,10 @@ void ValidatingCommandList::bindUniformBuffer(std::uint32_t binding, const Buffe
                                     offset, capabilities_.uniformBufferOffsetAlignment));
         if (binding >= bound_.size())
             bound_.resize(binding + 1);
-        bound_[binding] = {.uniform = true, .size = size};
+        bound_[binding] = {.set = true, .kind = BindingKind::UniformBuffer, .size = size};
         drawChecked_ = false;
     }
+    bindResource(binding, &buffer, graphicsUses(buffer.desc()));
     apiBindUniformBuffer(binding, buffer, offset, size);
 }
 
@@ -205,10 +273,120 @@ void ValidatingCommandList::bindTexture(std::uint32_t binding, const Texture& te
         checkTextureBinding(capabilities_, texture, sampler);
         if (binding >= bound_.size())
             bound_.resize(binding + 1);
-        bound_[binding] = {.texture = true};
+        bound_[binding] = {.set = true, .kind = BindingKind::SampledTexture};
         drawChecked_ = false;
     }
+    bindResource(binding, &texture, graphicsUses(texture.desc()));
     apiBindTexture(binding, texture, sampler);
+}
+
+void ValidatingCommandList::bindStorageBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
+                                              std::uint64_t size)
+{
+    if (validate_) {
+        requireDevice("bindStorageBuffer");
+        checkBufferUsage("bindStorageBuffer", buffer.desc(), BufferUsage::Storage, "Storage");
+        if (size == 0)
+            throw Error(fmt::format("bindStorageBuffer: binding {}: a storage range needs at least 1 byte", binding));
+        if (size > capabilities_.maxStorageBufferRange)
+            throw Error(fmt::format("bindStorageBuffer: binding {}: {} bytes exceed "
+                                    "Capabilities::maxStorageBufferRange ({})",
+                                    binding, size, capabilities_.maxStorageBufferRange));
+        checkBufferRange("bindStorageBuffer", buffer.desc(), offset, size);
+        if (offset % capabilities_.storageBufferOffsetAlignment != 0)
+            throw Error(fmt::format("bindStorageBuffer: offset {} is not a multiple of "
+                                    "Capabilities::storageBufferOffsetAlignment ({})",
+                                    offset, capabilities_.storageBufferOffsetAlignment));
+        if (binding >= bound_.size())
+            bound_.resize(binding + 1);
+        bound_[binding] = {.set = true, .kind = BindingKind::StorageBuffer, .size = size};
+        drawChecked_ = false;
+    }
+    bindResource(binding, &buffer, graphicsUses(buffer.desc()));
+    apiBindStorageBuffer(binding, buffer, offset, size);
+}
+
+void ValidatingCommandList::bindStorageTexture(std::uint32_t binding, const Texture& texture, std::uint32_t level)
+{
+    if (validate_) {
+        requireDevice("bindStorageTexture");
+        if (!hasFlag(texture.desc().usage, TextureUsage::Storage))
+            throw Error(
+                fmt::format("bindStorageTexture: texture '{}' lacks TextureUsage::Storage", texture.desc().debugName));
+        checkSubresource("bindStorageTexture", texture.desc(), 0, level);
+        if (binding >= bound_.size())
+            bound_.resize(binding + 1);
+        bound_[binding] = {.set = true, .kind = BindingKind::StorageTexture, .texture = &texture.desc()};
+        drawChecked_ = false;
+    }
+    bindResource(binding, &texture, graphicsUses(texture.desc()));
+    apiBindStorageTexture(binding, texture, level);
+}
+
+void ValidatingCommandList::bindComputePipeline(const ComputePipeline& pipeline)
+{
+    if (validate_)
+        requireDevice("bindComputePipeline");
+    computePipeline_ = &pipeline;
+    apiBindComputePipeline(pipeline);
+}
+
+void ValidatingCommandList::checkBindings(std::string_view what, const std::string& pipeline,
+                                          const std::vector<ShaderBinding>& bindings)
+{
+    for (const ShaderBinding& b : bindings) {
+        const Bound bound = b.binding < bound_.size() ? bound_[b.binding] : Bound{};
+        if (!bound.set || bound.kind != b.kind)
+            throw Error(fmt::format("{}: pipeline '{}' binding {} ('{}') needs a {}, but {}", what, pipeline, b.binding,
+                                    b.name, kindName(b.kind),
+                                    bound.set ? fmt::format("a {} is bound", bound.kind == BindingKind::SampledTexture
+                                                                                 ? std::string_view("texture")
+                                                                                 : kindName(bound.kind))
+                                              : std::string("nothing is bound")));
+        const bool block = b.kind == BindingKind::UniformBuffer || b.kind == BindingKind::StorageBuffer;
+        if (block && bound.size < b.size)
+            throw Error(fmt::format("{}: pipeline '{}' binding {} ('{}') is a {} block of {} bytes, but {} "
+                                    "bytes are bound",
+                                    what, pipeline, b.binding, b.name,
+                                    b.kind == BindingKind::UniformBuffer ? "uniform" : "storage", b.size, bound.size));
+        if (b.kind == BindingKind::StorageTexture && b.format && bound.texture->format != *b.format)
+            throw Error(fmt::format("{}: pipeline '{}' binding {} ('{}') is a storage image of format {}, but "
+                                    "texture '{}' is {}",
+                                    what, pipeline, b.binding, b.name, formatName(*b.format), bound.texture->debugName,
+                                    formatName(bound.texture->format)));
+    }
+}
+
+void ValidatingCommandList::checkDispatch(std::string_view what)
+{
+    requireOutsidePass(what);
+    if (!computePipeline_)
+        throw Error(fmt::format("{}: no compute pipeline is bound; call bindComputePipeline() first", what));
+    checkBindings(what, computePipeline_->desc().debugName, computePipeline_->bindings());
+}
+
+void ValidatingCommandList::dispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z)
+{
+    if (validate_) {
+        checkDispatch("dispatch");
+        const std::array<std::uint32_t, 3> counts{x, y, z};
+        for (std::size_t axis = 0; axis < 3; ++axis)
+            if (counts[axis] > capabilities_.maxWorkgroupCount[axis])
+                throw Error(fmt::format("dispatch: {} workgroups along {} exceed Capabilities::maxWorkgroupCount ({})",
+                                        counts[axis], "xyz"[axis], capabilities_.maxWorkgroupCount[axis]));
+    }
+    orderDispatch(nullptr);
+    apiDispatch(x, y, z);
+}
+
+void ValidatingCommandList::dispatchIndirect(const Buffer& buffer, std::uint64_t offset)
+{
+    if (validate_) {
+        checkDispatch("dispatchIndirect");
+        checkDrawIndirect("dispatchIndirect", buffer, offset, 3 * sizeof(std::uint32_t));
+    }
+    orderDispatch(&buffer);
+    apiDispatchIndirect(buffer, offset);
 }
 
 void ValidatingCommandList::checkDraw(std::string_view what)
@@ -227,20 +405,7 @@ void ValidatingCommandList::checkDraw(std::string_view what)
     if (!rendersTo(desc, framebuffer_->formats()))
         throw Error(fmt::format("{}: pipeline '{}' renders to {}, but the pass's framebuffer has {}", what,
                                 desc.debugName, describe(pipelineFormats(desc)), describe(framebuffer_->formats())));
-    for (const ShaderBinding& b : pipeline_->bindings()) {
-        const Bound bound = b.binding < bound_.size() ? bound_[b.binding] : Bound{};
-        const bool uniform = b.kind == BindingKind::UniformBuffer;
-        if (uniform ? !bound.uniform : !bound.texture)
-            throw Error(fmt::format("{}: pipeline '{}' binding {} ('{}') needs a {}, but {}", what, desc.debugName,
-                                    b.binding, b.name, uniform ? "uniform buffer" : "texture and sampler",
-                                    bound.uniform   ? "a uniform buffer is bound"
-                                    : bound.texture ? "a texture is bound"
-                                                    : "nothing is bound"));
-        if (uniform && bound.size < b.size)
-            throw Error(fmt::format("{}: pipeline '{}' binding {} ('{}') is a uniform block of {} bytes, but {} "
-                                    "bytes are bound",
-                                    what, desc.debugName, b.binding, b.name, b.size, bound.size));
-    }
+    checkBindings(what, desc.debugName, pipeline_->bindings());
     for (const VertexAttribute& a : desc.vertexLayout.attributes)
         if (!(vertexSlots_ & (1u << a.buffer)))
             throw Error(fmt::format("{}: pipeline '{}' reads vertex buffer slot {}, which is not bound", what,
@@ -270,6 +435,41 @@ void ValidatingCommandList::drawIndexed(std::uint32_t indexCount, std::uint32_t 
     apiDrawIndexed(indexCount, instanceCount, firstIndex, vertexOffset, firstInstance);
 }
 
+void ValidatingCommandList::checkDrawIndirect(std::string_view what, const Buffer& buffer, std::uint64_t offset,
+                                              std::uint64_t size)
+{
+    checkBufferUsage(what, buffer.desc(), BufferUsage::Indirect, "Indirect");
+    if (offset % 4 != 0)
+        throw Error(fmt::format("{}: offset {} is not a multiple of 4", what, offset));
+    checkBufferRange(fmt::format("{} arguments", what), buffer.desc(), offset, size);
+}
+
+void ValidatingCommandList::drawIndirect(const Buffer& buffer, std::uint64_t offset)
+{
+    if (validate_) {
+        checkDraw("drawIndirect");
+        checkDrawIndirect("drawIndirect", buffer, offset, 4 * sizeof(std::uint32_t));
+    }
+    apiDrawIndirect(buffer, offset);
+}
+
+void ValidatingCommandList::drawIndexedIndirect(const Buffer& buffer, std::uint64_t offset)
+{
+    if (validate_) {
+        checkDraw("drawIndexedIndirect");
+        checkDrawIndirect("drawIndexedIndirect", buffer, offset, 5 * sizeof(std::uint32_t));
+        if (!indexBuffer_)
+            throw Error("drawIndexedIndirect: no index buffer is bound; call bindIndexBuffer() first");
+        // GL's DrawElementsIndirectCommand has no byte offset into the index buffer (GL 4.5 section 10.4): firstIndex
+        // is the only start, so the same rule holds on every backend.
+        if (indexOffset_ != 0)
+            throw Error(fmt::format("drawIndexedIndirect: the index buffer is bound at offset {}; indirect indexed "
+                                    "draws need offset 0 (start with the arguments' firstIndex)",
+                                    indexOffset_));
+    }
+    apiDrawIndexedIndirect(buffer, offset);
+}
+
 void ValidatingCommandList::copyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,
                                        std::uint64_t size)
 {
@@ -278,6 +478,9 @@ void ValidatingCommandList::copyBuffer(const Buffer& src, std::uint64_t srcOffse
         checkBufferRange("copyBuffer source", src.desc(), srcOffset, size);
         checkBufferRange("copyBuffer destination", dst.desc(), dstOffset, size);
     }
+    Barrier barrier = hazards_.copy(&src, {Stage::Copy, Access::CopyRead});
+    barrier.merge(hazards_.copy(&dst, {Stage::Copy, Access::CopyWrite}));
+    record(barrier);
     apiCopyBuffer(src, srcOffset, dst, dstOffset, size);
 }
 
@@ -288,6 +491,9 @@ void ValidatingCommandList::copyTexture(const Texture& src, std::uint32_t srcLay
         requireOutsidePass("copyTexture");
         checkTextureCopy(src, srcLayer, dst, dstLayer);
     }
+    Barrier barrier = hazards_.copy(&src, {Stage::Copy, Access::CopyRead});
+    barrier.merge(hazards_.copy(&dst, {Stage::Copy, Access::CopyWrite}));
+    record(barrier);
     apiCopyTexture(src, srcLayer, dst, dstLayer);
 }
 
@@ -298,6 +504,9 @@ void ValidatingCommandList::copyTextureToBuffer(const Texture& src, std::uint32_
         requireOutsidePass("copyTextureToBuffer");
         checkTextureReadback(src.desc(), layer, level, dst.desc(), dstOffset);
     }
+    Barrier barrier = hazards_.copy(&src, {Stage::Copy, Access::CopyRead});
+    barrier.merge(hazards_.copy(&dst, {Stage::Copy, Access::CopyWrite}));
+    record(barrier);
     apiCopyTextureToBuffer(src, layer, level, dst, dstOffset);
 }
 
@@ -307,6 +516,9 @@ void ValidatingCommandList::resolveTexture(const Texture& src, Texture& dst)
         requireOutsidePass("resolveTexture");
         checkTextureResolve(src, dst);
     }
+    Barrier barrier = hazards_.copy(&src, {Stage::Copy, Access::CopyRead});
+    barrier.merge(hazards_.copy(&dst, {Stage::Copy, Access::CopyWrite}));
+    record(barrier);
     apiResolveTexture(src, dst);
 }
 
@@ -338,6 +550,13 @@ void ValidatingCommandList::popLabel()
         labels_.pop_back();
     }
     apiPopLabel();
+}
+
+void ValidatingCommandList::insertLabel(std::string_view name)
+{
+    if (validate_)
+        requireDevice("insertLabel");
+    apiInsertLabel(name);
 }
 
 } // namespace penumbra::rhi

@@ -46,11 +46,26 @@ std::unique_ptr<Sampler> ValidatingDevice::createSampler(const SamplerDesc& desc
     return apiCreateSampler(desc);
 }
 
+std::unique_ptr<Shader> ValidatingDevice::createShader(const ShaderSource& source)
+{
+    CompiledShader compiled = compileShader(source, conventions().glslHeader());
+    if (validate_ && compiled.stage == ShaderStage::Compute)
+        checkWorkgroup(capabilities(), compiled);
+    return apiCreateShader(std::move(compiled));
+}
+
 std::unique_ptr<Pipeline> ValidatingDevice::createPipeline(const PipelineDesc& desc)
 {
     if (validate_)
         checkPipeline(capabilities(), desc);
     return apiCreatePipeline(desc);
+}
+
+std::unique_ptr<ComputePipeline> ValidatingDevice::createComputePipeline(const ComputePipelineDesc& desc)
+{
+    if (validate_)
+        checkComputePipeline(desc);
+    return apiCreateComputePipeline(desc);
 }
 
 std::unique_ptr<Framebuffer> ValidatingDevice::createFramebuffer(const FramebufferDesc& desc)
@@ -69,8 +84,15 @@ std::unique_ptr<TimestampQueries> ValidatingDevice::createTimestampQueries(std::
 
 void ValidatingDevice::submit(CommandList& commands)
 {
-    if (!validate_)
-        return apiSubmit(commands);
+    if (!validate_) {
+        auto& list = static_cast<ValidatingCommandList&>(commands);
+        list.record(list.hazards_.finish());
+        apiSubmit(commands);
+        list.hazards_.reset();
+        list.resources_.clear();
+        list.computePipeline_ = nullptr;
+        return;
+    }
     if (!lifetime_->owns(&commands))
         throw Error("submit: the command list was not created by this device");
     auto& list = static_cast<ValidatingCommandList&>(commands);
@@ -83,6 +105,7 @@ void ValidatingDevice::submit(CommandList& commands)
         ValidatingCommandList& list;
         ~ForgetOnExit() { list.forgetRecording(); }
     } forget{list};
+    list.record(list.hazards_.finish());
     apiSubmit(commands);
 }
 

@@ -18,8 +18,16 @@ public:
     // does with DeviceDesc::throwOnDebugMessage); `source` names them ("Vulkan validation").
     void raiseUnreported(std::string_view source);
 
+    // The debug groups open where the API reports them to its callback in order (GL's KHR_debug reports each
+    // glPushDebugGroup and glPopDebugGroup, GL 4.5 section 20.6), so that messages can name them.
+    void openGroup(std::string name);
+    void closeGroup();
+    // " [labels: outer > inner]" while groups are open, else empty: what a message appends.
+    std::string openGroups() const;
+
 private:
     mutable std::mutex mutex_;
+    std::vector<std::string> groups_;
     std::vector<std::string> messages_;
     std::size_t reported_ = 0;
 };

@@ -12,6 +12,7 @@
 
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/Hazards.hpp"
 
 #include <array>
 #include <cstdint>
@@ -33,7 +34,11 @@ public:
     void writeTexture(Texture& texture, std::uint32_t layer, std::uint32_t level,
                       std::span<const std::byte> data) final;
     std::unique_ptr<Sampler> createSampler(const SamplerDesc& desc) final;
+    // Compiles with glslang (the conventions' header prepended), checks a compute shader's workgroup against the
+    // limits before any driver sees it, then creates the backend's module.
+    std::unique_ptr<Shader> createShader(const ShaderSource& source) final;
     std::unique_ptr<Pipeline> createPipeline(const PipelineDesc& desc) final;
+    std::unique_ptr<ComputePipeline> createComputePipeline(const ComputePipelineDesc& desc) final;
     std::unique_ptr<Framebuffer> createFramebuffer(const FramebufferDesc& desc) final;
     std::unique_ptr<TimestampQueries> createTimestampQueries(std::uint32_t count) final;
     void submit(CommandList& commands) final;
@@ -47,7 +52,9 @@ protected:
     virtual void apiWriteTexture(Texture& texture, std::uint32_t layer, std::uint32_t level,
                                  std::span<const std::byte> data) = 0;
     virtual std::unique_ptr<Sampler> apiCreateSampler(const SamplerDesc& desc) = 0;
+    virtual std::unique_ptr<Shader> apiCreateShader(CompiledShader compiled) = 0;
     virtual std::unique_ptr<Pipeline> apiCreatePipeline(const PipelineDesc& desc) = 0;
+    virtual std::unique_ptr<ComputePipeline> apiCreateComputePipeline(const ComputePipelineDesc& desc) = 0;
     virtual std::unique_ptr<Framebuffer> apiCreateFramebuffer(const FramebufferDesc& desc) = 0;
     virtual std::unique_ptr<TimestampQueries> apiCreateTimestampQueries(std::uint32_t count) = 0;
     virtual void apiSubmit(CommandList& commands) = 0;
@@ -73,6 +80,13 @@ public:
     void bindIndexBuffer(const Buffer& buffer, IndexType type, std::uint64_t offset) final;
     void bindUniformBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset, std::uint64_t size) final;
     void bindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) final;
+    void bindStorageBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset, std::uint64_t size) final;
+    void bindStorageTexture(std::uint32_t binding, const Texture& texture, std::uint32_t level) final;
+    void bindComputePipeline(const ComputePipeline& pipeline) final;
+    void dispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z) final;
+    void dispatchIndirect(const Buffer& buffer, std::uint64_t offset) final;
+    void drawIndirect(const Buffer& buffer, std::uint64_t offset) final;
+    void drawIndexedIndirect(const Buffer& buffer, std::uint64_t offset) final;
     void draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
               std::uint32_t firstInstance) final;
     void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
@@ -86,6 +100,11 @@ public:
     void writeTimestamp(TimestampQueries& queries, std::uint32_t index) final;
     void pushLabel(std::string_view name) final;
     void popLabel() final;
+    void insertLabel(std::string_view name) final;
+
+    // For negative controls only: with `suppressed`, the barriers the list derives are not recorded, so a test can
+    // show that the API's synchronization validation reports the hazard each one prevents.
+    void setBarriersSuppressed(bool suppressed) { barriersSuppressed_ = suppressed; }
 
     // Vertex buffer slots bindVertexBuffer takes: 0..maxVertexBuffers - 1.
     static constexpr std::uint32_t maxVertexBuffers = 16;
@@ -104,6 +123,16 @@ protected:
     virtual void apiBindUniformBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
                                       std::uint64_t size) = 0;
     virtual void apiBindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) = 0;
+    virtual void apiBindStorageBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
+                                      std::uint64_t size) = 0;
+    virtual void apiBindStorageTexture(std::uint32_t binding, const Texture& texture, std::uint32_t level) = 0;
+    virtual void apiBindComputePipeline(const ComputePipeline& pipeline) = 0;
+    virtual void apiDispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z) = 0;
+    virtual void apiDispatchIndirect(const Buffer& buffer, std::uint64_t offset) = 0;
+    virtual void apiDrawIndirect(const Buffer& buffer, std::uint64_t offset) = 0;
+    virtual void apiDrawIndexedIndirect(const Buffer& buffer, std::uint64_t offset) = 0;
+    // Records a barrier the hazard tracker derived (never empty), outside passes.
+    virtual void apiBarrier(const Barrier& barrier) = 0;
     virtual void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
                          std::uint32_t firstInstance) = 0;
     virtual void apiDrawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
@@ -117,21 +146,35 @@ protected:
     virtual void apiWriteTimestamp(TimestampQueries& queries, std::uint32_t index) = 0;
     virtual void apiPushLabel(std::string_view name) = 0;
     virtual void apiPopLabel() = 0;
+    virtual void apiInsertLabel(std::string_view name) = 0;
 
 private:
     friend class ValidatingDevice;
 
-    // What a binding number holds, for the checks at draw time.
+    // What a binding number holds, for the checks at draw and dispatch time.
     struct Bound {
-        bool uniform = false;
-        bool texture = false;
-        std::uint64_t size = 0; // bytes of a uniform range
+        bool set = false;
+        BindingKind kind = BindingKind::UniformBuffer;
+        std::uint64_t size = 0; // bytes of a uniform or storage range
+        const TextureDesc* texture = nullptr; // a storage texture's description
+    };
+    // What a binding number holds, for the hazard tracker (kept with validation off too).
+    struct Resource {
+        const void* object = nullptr;
+        Use graphics; // its graphics uses
     };
 
     // Every recording call starts here: the device must still exist.
     void requireDevice(std::string_view what) const;
     void requireOutsidePass(std::string_view what) const;
     void checkDraw(std::string_view what);
+    void checkDrawIndirect(std::string_view what, const Buffer& buffer, std::uint64_t offset, std::uint64_t size);
+    void checkDispatch(std::string_view what);
+    void checkBindings(std::string_view what, const std::string& pipeline, const std::vector<ShaderBinding>& bindings);
+    void bindResource(std::uint32_t binding, const void* object, Use graphics);
+    // The barrier before the bound compute pipeline's accesses (and `indirect`'s arguments, when given).
+    void orderDispatch(const Buffer* indirect);
+    void record(const Barrier& barrier);
     void forgetRecording();
 
     const Capabilities& capabilities_;
@@ -140,11 +183,16 @@ private:
     bool inPass_ = false;
     const Framebuffer* framebuffer_ = nullptr;
     const Pipeline* pipeline_ = nullptr;
+    const ComputePipeline* computePipeline_ = nullptr;
     std::vector<Bound> bound_;
+    std::vector<Resource> resources_;
+    HazardTracker hazards_;
+    bool barriersSuppressed_ = false;
     std::uint32_t vertexSlots_ = 0; // bit per bound slot
     std::vector<std::string> labels_; // open, outermost first
     std::array<std::uint64_t, maxVertexBuffers> vertexBytes_{}; // per slot, the bound buffer's bytes past the offset
     bool indexBuffer_ = false;
+    std::uint64_t indexOffset_ = 0;
     bool drawChecked_ = false; // nothing a draw depends on changed since the last checked draw
 };
 

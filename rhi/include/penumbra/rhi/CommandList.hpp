@@ -10,6 +10,7 @@
 namespace penumbra::rhi {
 
 class Buffer;
+class ComputePipeline;
 class Framebuffer;
 class Pipeline;
 class Sampler;
@@ -44,6 +45,12 @@ struct PassDesc {
     bool clearDepth = true;
 };
 
+// Hazards are the RHI's, not the user's: a list orders each access after the writes it depends on and each write after
+// the accesses it would overwrite, with the narrowest barrier the APIs offer (Vulkan pipeline barriers, GL
+// glMemoryBarrier), derived from what each dispatch binds and from the usages resources were created with. Passes,
+// copies and readbacks that follow a dispatch see its writes, and a dispatch sees what earlier passes and copies
+// wrote; the host sees a dispatch's writes to a buffer once submit returns.
+//
 // Records commands; Device::submit runs them in order and waits. After a submit the list is
 // empty and records anew. Resources a list names must outlive its submission; the list must not
 // outlive its device.
@@ -74,6 +81,21 @@ public:
                                    std::uint64_t size) = 0;
     // A texture and its sampler at a combined-sampler binding number.
     virtual void bindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) = 0;
+    // A range of a BufferUsage::Storage buffer at a storage-block binding number; offset must be a multiple of
+    // Capabilities::storageBufferOffsetAlignment, size at most Capabilities::maxStorageBufferRange.
+    virtual void bindStorageBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
+                                   std::uint64_t size) = 0;
+    // One mip level of a TextureUsage::Storage texture at a storage-image binding number (imageLoad, imageStore).
+    virtual void bindStorageTexture(std::uint32_t binding, const Texture& texture, std::uint32_t level = 0) = 0;
+
+    // Dispatches use this pipeline; it is independent of bindPipeline's, and bindings are shared by both.
+    virtual void bindComputePipeline(const ComputePipeline& pipeline) = 0;
+    // Runs x * y * z workgroups of the bound compute pipeline, outside passes; each count is at most
+    // Capabilities::maxWorkgroupCount.
+    virtual void dispatch(std::uint32_t x, std::uint32_t y = 1, std::uint32_t z = 1) = 0;
+    // dispatch with the counts read on the GPU from three uint32 at `offset` of a BufferUsage::Indirect buffer
+    // (VkDispatchIndirectCommand; GL's DispatchIndirectCommand, GL 4.5 section 19), offset a multiple of 4.
+    virtual void dispatchIndirect(const Buffer& buffer, std::uint64_t offset = 0) = 0;
 
     // Draws vertices in order, inside a pass.
     virtual void draw(std::uint32_t vertexCount, std::uint32_t instanceCount = 1, std::uint32_t firstVertex = 0,
@@ -81,6 +103,16 @@ public:
     // Draws through the bound index buffer, inside a pass.
     virtual void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount = 1, std::uint32_t firstIndex = 0,
                              std::int32_t vertexOffset = 0, std::uint32_t firstInstance = 0) = 0;
+
+    // draw with its arguments read on the GPU from four uint32 at `offset` of a BufferUsage::Indirect buffer:
+    // vertexCount, instanceCount, firstVertex, firstInstance (VkDrawIndirectCommand, GL's DrawArraysIndirectCommand);
+    // offset a multiple of 4. The instances are not checked against per-instance vertex buffers: the CPU never sees
+    // the count.
+    virtual void drawIndirect(const Buffer& buffer, std::uint64_t offset = 0) = 0;
+    // drawIndexed with five uint32 at `offset`: indexCount, instanceCount, firstIndex, vertexOffset (int32),
+    // firstInstance (VkDrawIndexedIndirectCommand, GL's DrawElementsIndirectCommand); the index buffer is bound at
+    // offset 0, since GL's command has no byte offset.
+    virtual void drawIndexedIndirect(const Buffer& buffer, std::uint64_t offset = 0) = 0;
 
     // Copies outside passes. Texture copies take whole layers, every mip level, between textures of equal size,
     // format and level count; a texture-to-buffer copy writes one level of one layer in tightly packed rows,
@@ -108,6 +140,9 @@ public:
     virtual void pushLabel(std::string_view name) = 0;
     // Closes the innermost open label.
     virtual void popLabel() = 0;
+    // A single named marker at this point of the commands (vkCmdInsertDebugUtilsLabelEXT; GL glDebugMessageInsert
+    // of type GL_DEBUG_TYPE_MARKER, GL 4.5 section 20.5), inside or outside passes.
+    virtual void insertLabel(std::string_view name) = 0;
 };
 
 } // namespace penumbra::rhi

@@ -28,6 +28,9 @@ struct FormatSupport {
     // the image format's sampleCounts within framebufferColorSampleCounts or framebufferDepthSampleCounts; GL:
     // GL_SAMPLES of GL_TEXTURE_2D_MULTISAMPLE, ARB_internalformat_query2). Counts above 8 are not offered.
     std::uint32_t sampleCounts = 0;
+    // A storage image (TextureUsage::Storage, imageLoad and imageStore) of this format: Vulkan's
+    // VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT; GL's GL_SHADER_IMAGE_LOAD and _STORE (ARB_internalformat_query2).
+    bool storage = false;
 };
 
 // The counts 1, 2, 4 and 8 that a sampleCounts mask holds, ascending ("1, 4").
@@ -59,6 +62,17 @@ struct Capabilities {
     // on OpenGL where the context was made with the lose-context-on-reset strategy (EGL_EXT_create_context_robustness,
     // GLFW's GLFW_LOSE_CONTEXT_ON_RESET), without which a reset leaves the context's behaviour undefined.
     bool deviceLossReported = false;
+    // Compute (Vulkan 1.3 section 48 limits; GL 4.5 Table 23.64): invocations per workgroup along x, y, z and in
+    // all (maxComputeWorkGroupSize, maxComputeWorkGroupInvocations), workgroups per dispatch along x, y, z
+    // (maxComputeWorkGroupCount), and bytes of `shared` variables (maxComputeSharedMemorySize).
+    std::array<std::uint32_t, 3> maxWorkgroupSize{};
+    std::uint32_t maxWorkgroupInvocations = 0;
+    std::array<std::uint32_t, 3> maxWorkgroupCount{};
+    std::uint32_t maxComputeSharedMemory = 0;
+    // Storage blocks: bindStorageBuffer's offset alignment and largest range (minStorageBufferOffsetAlignment and
+    // maxStorageBufferRange; GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT and GL_MAX_SHADER_STORAGE_BLOCK_SIZE).
+    std::uint32_t storageBufferOffsetAlignment = 256;
+    std::uint64_t maxStorageBufferRange = 0;
     // Indexed by Format. Linear filtering of depth formats is hardware 2x2 PCF with a comparison sampler;
     // lavapipe offers it for none (conventions note, section 4).
     std::array<FormatSupport, formatCount> formats{};
@@ -104,6 +118,9 @@ public:
     virtual std::unique_ptr<Shader> createShader(const ShaderSource& source) = 0;
     // Links the shaders and fixed state; bindings and uniform layouts are checked against reflection.
     virtual std::unique_ptr<Pipeline> createPipeline(const PipelineDesc& desc) = 0;
+    // A compute pipeline; its workgroup size and shared memory are checked against the limits in Capabilities,
+    // its uniform and storage layouts against reflection.
+    virtual std::unique_ptr<ComputePipeline> createComputePipeline(const ComputePipelineDesc& desc) = 0;
     // Colour and depth attachments of one size and sample count, for CommandList::beginPass.
     virtual std::unique_ptr<Framebuffer> createFramebuffer(const FramebufferDesc& desc) = 0;
     // `count` GPU timestamps for CommandList::writeTimestamp, read with readTimestamps.

@@ -19,6 +19,27 @@ constexpr E operator|(E a, E b)
 }
 
 template <FlagEnum E>
+constexpr E operator&(E a, E b)
+{
+    using U = std::underlying_type_t<E>;
+    return static_cast<E>(static_cast<U>(a) & static_cast<U>(b));
+}
+
+template <FlagEnum E>
+constexpr E& operator|=(E& a, E b)
+{
+    return a = a | b;
+}
+
+// Whether every flag of `flags` is in `set`.
+template <FlagEnum E>
+constexpr bool hasAll(E set, E flags)
+{
+    using U = std::underlying_type_t<E>;
+    return (static_cast<U>(set) & static_cast<U>(flags)) == static_cast<U>(flags);
+}
+
+template <FlagEnum E>
 constexpr bool hasFlag(E set, E flag)
 {
     using U = std::underlying_type_t<E>;

@@ -131,6 +131,8 @@ struct PipelineDesc {
     // samples the primitive covers (multisampling, Vulkan 1.3 section 28.4; GL 4.5 section 14.3.1).
     std::uint32_t samples = 1;
     std::vector<UniformLayout> uniformLayouts;
+    // The C++ structs in storage blocks the stages read, compared with their std430 layout as uniformLayouts are.
+    std::vector<UniformLayout> storageLayouts;
     std::string debugName;
 };
 
@@ -143,6 +145,37 @@ public:
     // Every binding both stages declare, sorted by number: what a draw needs bound (uniform blocks with at
     // least their reflected size, textures with a sampler).
     virtual const std::vector<ShaderBinding>& bindings() const = 0;
+};
+
+// A compute shader and the C++ layouts of its blocks: uniformLayouts against the std140 layout reflection gives, as
+// for PipelineDesc; storageLayouts against the std430 layout of storage blocks (a runtime array member, `T data[]`,
+// is described by its element: PENUMBRA_UNIFORM_ARRAY_ELEMENT). The workgroup size comes from the shader's
+// `layout(local_size_x = ...)` and must be within Capabilities' workgroup limits, as its shared memory.
+struct ComputePipelineDesc {
+    const Shader* compute = nullptr;
+    std::vector<UniformLayout> uniformLayouts;
+    std::vector<UniformLayout> storageLayouts;
+    std::string debugName;
+};
+
+// A compute shader ready to dispatch (CommandList::bindComputePipeline, dispatch, dispatchIndirect). As with
+// Pipeline, the shader may be destroyed once the pipeline exists.
+class ComputePipeline : private LiveObject<ObjectKind::Pipeline> {
+public:
+    virtual ~ComputePipeline() = default;
+    // The description the pipeline was created with.
+    virtual const ComputePipelineDesc& desc() const = 0;
+    // Every binding the shader declares, sorted by number: what a dispatch needs bound.
+    const std::vector<ShaderBinding>& bindings() const { return bindings_; }
+    // Invocations per workgroup along x, y and z, from the shader's local_size.
+    const std::array<std::uint32_t, 3>& workgroupSize() const { return workgroupSize_; }
+
+protected:
+    explicit ComputePipeline(const CompiledShader& shader);
+
+private:
+    std::vector<ShaderBinding> bindings_;
+    std::array<std::uint32_t, 3> workgroupSize_;
 };
 
 } // namespace penumbra::rhi

@@ -24,12 +24,14 @@ enum class BufferUsage : std::uint8_t {
     Index = 1 << 1,
     Uniform = 1 << 2,
     Readback = 1 << 3, // destination of texture and buffer copies, read on the CPU
+    Storage = 1 << 4, // a storage block (`buffer`) read or written by shaders: bindStorageBuffer
+    Indirect = 1 << 5, // arguments of dispatchIndirect, drawIndirect and drawIndexedIndirect
 };
 constexpr bool enableFlags(BufferUsage) { return true; }
 
 // A size of 0 is a valid empty buffer (a scene with nothing to draw): it can be bound where no byte is read.
 // Binding checks the usage: Vertex for bindVertexBuffer, Index for bindIndexBuffer, Uniform for
-// bindUniformBuffer.
+// bindUniformBuffer, Storage for bindStorageBuffer, Indirect for the indirect commands' arguments.
 struct BufferDesc {
     std::uint64_t size = 0;
     BufferUsage usage = BufferUsage::None;
@@ -60,6 +62,9 @@ enum class TextureUsage : std::uint8_t {
     None = 0,
     Sampled = 1 << 0,
     RenderTarget = 1 << 1, // colour or depth attachment, by format
+    // Read and written by shaders with imageLoad/imageStore (bindStorageTexture): a single-layer 2D texture of
+    // a format with FormatSupport::storage.
+    Storage = 1 << 2,
 };
 constexpr bool enableFlags(TextureUsage) { return true; }
 

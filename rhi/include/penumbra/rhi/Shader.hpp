@@ -1,20 +1,25 @@
 #pragma once
 
+#include "penumbra/rhi/Format.hpp"
 #include "penumbra/rhi/LiveObjects.hpp"
 #include "penumbra/rhi/UniformLayout.hpp"
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace penumbra::rhi {
 
-enum class ShaderStage : std::uint8_t { Vertex, Fragment };
+enum class ShaderStage : std::uint8_t { Vertex, Fragment, Compute };
 
 // GLSL 450 written once for both backends. `name` is what error messages cite
 // (usually the file path). The RHI prepends Conventions::glslHeader() after #version.
 // Binding model: one flat namespace of `layout(binding = N)` numbers per pipeline, shared
-// by uniform blocks (std140) and combined samplers; no push constants, no descriptor sets.
+// by uniform blocks (std140), combined samplers, storage blocks (std430, `buffer`) and storage images
+// (`image2D` with a format qualifier); no push constants, no descriptor sets. Vertex and fragment shaders read
+// storage blocks only (`readonly`); compute shaders read and write both kinds of storage.
 struct ShaderInclude {
     std::string name;
     std::string source;
@@ -29,16 +34,22 @@ struct ShaderSource {
     std::vector<ShaderInclude> includes;
 };
 
-enum class BindingKind : std::uint8_t { UniformBuffer, SampledTexture };
+enum class BindingKind : std::uint8_t { UniformBuffer, SampledTexture, StorageBuffer, StorageTexture };
 
-// One binding a shader declares, as reflection finds it: number, kind, name, size of a uniform block.
+// One binding a shader declares, as reflection finds it: number, kind, name, size of a uniform or storage block.
 struct ShaderBinding {
     std::uint32_t binding = 0;
     BindingKind kind = BindingKind::UniformBuffer;
     std::string name;
-    std::uint32_t size = 0; // uniform block size in bytes (std140)
-    // A uniform block's members as reflection gives them (std140 offsets and sizes); `name` is the block's.
+    // Block size in bytes: std140 for a uniform block, std430 for a storage block without its runtime array.
+    std::uint32_t size = 0;
+    // A block's members as reflection gives them (offsets and sizes; a runtime array's size is its element
+    // stride); `name` is the block's.
     std::vector<UniformMember> members;
+    // A storage block or image the shader may write (not declared `readonly`).
+    bool writes = false;
+    // A storage image's format qualifier (`layout(rgba8)`); the bound texture must have it.
+    std::optional<Format> format;
 };
 
 // glslang's SPIR-V for one stage, with the bindings it declares.
@@ -47,6 +58,10 @@ struct CompiledShader {
     std::string name;
     std::vector<std::uint32_t> spirv;
     std::vector<ShaderBinding> bindings;
+    // A compute shader's `layout(local_size_x = ...)`, x, y, z; zero for other stages.
+    std::array<std::uint32_t, 3> workgroupSize{};
+    // Bytes of its `shared` variables, tightly packed (the driver may round up); zero for other stages.
+    std::uint32_t sharedMemoryBytes = 0;
 };
 
 // A compiled shader stage of one device, for PipelineDesc.

@@ -33,3 +33,14 @@ struct UniformLayout {
     {                                                                                                                  \
 #member, std::uint32_t(offsetof(Struct, member)), std::uint32_t(sizeof(Struct::member))                        \
     }
+
+// The UniformMember of a runtime array `T member[]` ending a storage block, for ComputePipelineDesc::storageLayouts:
+// its offset in `Struct` (the header the array follows; offsetof of the flexible member is not standard C++, so
+// the offset is the header's size rounded up to the element's alignment) and the size of one `Element`, which
+// std430 must give as the array stride.
+#define PENUMBRA_UNIFORM_ARRAY_ELEMENT(Struct, member, Element)                                                        \
+    ::penumbra::rhi::UniformMember                                                                                     \
+    {                                                                                                                  \
+#member, std::uint32_t((sizeof(Struct) + alignof(Element) - 1) / alignof(Element) * alignof(Element)),         \
+            std::uint32_t(sizeof(Element))                                                                             \
+    }

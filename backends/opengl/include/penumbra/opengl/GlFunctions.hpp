@@ -15,6 +15,7 @@ namespace penumbra::opengl {
     X(BindBufferBase, BINDBUFFERBASE)                                                                                  \
     X(BindBufferRange, BINDBUFFERRANGE)                                                                                \
     X(BindFramebuffer, BINDFRAMEBUFFER)                                                                                \
+    X(BindImageTexture, BINDIMAGETEXTURE)                                                                              \
     X(BindSampler, BINDSAMPLER)                                                                                        \
     X(BindTexture, BINDTEXTURE)                                                                                        \
     X(BindTextureUnit, BINDTEXTUREUNIT)                                                                                \
@@ -52,15 +53,20 @@ namespace penumbra::opengl {
     X(DeleteShader, DELETESHADER)                                                                                      \
     X(DeleteTextures, DELETETEXTURES)                                                                                  \
     X(DeleteVertexArrays, DELETEVERTEXARRAYS)                                                                          \
+    X(DebugMessageInsert, DEBUGMESSAGEINSERT)                                                                          \
     X(DepthFunc, DEPTHFUNC)                                                                                            \
     X(DepthMask, DEPTHMASK)                                                                                            \
     X(DetachShader, DETACHSHADER)                                                                                      \
     X(Disable, DISABLE)                                                                                                \
     X(Disablei, DISABLEI)                                                                                              \
+    X(DispatchCompute, DISPATCHCOMPUTE)                                                                                \
+    X(DispatchComputeIndirect, DISPATCHCOMPUTEINDIRECT)                                                                \
     X(DrawArrays, DRAWARRAYS)                                                                                          \
+    X(DrawArraysIndirect, DRAWARRAYSINDIRECT)                                                                          \
     X(DrawArraysInstancedBaseInstance, DRAWARRAYSINSTANCEDBASEINSTANCE)                                                \
     X(DrawElements, DRAWELEMENTS)                                                                                      \
     X(DrawElementsBaseVertex, DRAWELEMENTSBASEVERTEX)                                                                  \
+    X(DrawElementsIndirect, DRAWELEMENTSINDIRECT)                                                                      \
     X(DrawElementsInstancedBaseVertexBaseInstance, DRAWELEMENTSINSTANCEDBASEVERTEXBASEINSTANCE)                        \
     X(Enable, ENABLE)                                                                                                  \
     X(EnableVertexArrayAttrib, ENABLEVERTEXARRAYATTRIB)                                                                \
@@ -71,6 +77,7 @@ namespace penumbra::opengl {
     X(GetGraphicsResetStatus, GETGRAPHICSRESETSTATUS)                                                                  \
     X(GetFloatv, GETFLOATV)                                                                                            \
     X(GetIntegerv, GETINTEGERV)                                                                                        \
+    X(GetIntegeri_v, GETINTEGERI_V)                                                                                    \
     X(GetInternalformativ, GETINTERNALFORMATIV)                                                                        \
     X(GetProgramInfoLog, GETPROGRAMINFOLOG)                                                                            \
     X(GetProgramiv, GETPROGRAMIV)                                                                                      \
@@ -86,6 +93,7 @@ namespace penumbra::opengl {
     X(IsVertexArray, ISVERTEXARRAY)                                                                                    \
     X(LinkProgram, LINKPROGRAM)                                                                                        \
     X(MapNamedBufferRange, MAPNAMEDBUFFERRANGE)                                                                        \
+    X(MemoryBarrier, MEMORYBARRIER)                                                                                    \
     X(NamedBufferStorage, NAMEDBUFFERSTORAGE)                                                                          \
     X(NamedBufferSubData, NAMEDBUFFERSUBDATA)                                                                          \
     X(NamedFramebufferDrawBuffer, NAMEDFRAMEBUFFERDRAWBUFFER)                                                          \
