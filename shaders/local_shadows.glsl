@@ -2,19 +2,7 @@
 // of a point light, tile-clamped PCF (shadow_filter.glsl); or, in cube-map mode, point lights through
 // hardware cube lookups. The block is penumbra::shadows::LocalShadowUniforms.
 
-layout(std140, binding = PENUMBRA_BINDING_LOCAL_SHADOWS) uniform LocalShadows {
-    mat4 worldToAtlas[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
-    vec4 tileBounds[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
-    vec4 tileData[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
-    vec4 cubeData[PENUMBRA_MAX_SHADOW_CUBES];
-    float atlasSize;
-    int defaultFilter;
-    int pointMode;
-    vec4 tileSoft[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
-    vec4 cubeSoft[PENUMBRA_MAX_SHADOW_CUBES];
-    vec4 softScales;
-    vec4 softCounts;
-} localShadows;
+#include "local_shadows_block.glsl"
 
 // Read with texelFetch (shadow_filter.glsl).
 layout(binding = PENUMBRA_BINDING_LOCAL_ATLAS) uniform sampler2D localShadowAtlas;
@@ -81,7 +69,7 @@ float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 
     const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(worldToAtlas, p, receiverDx),
                                 projectedDerivative(worldToAtlas, p, receiverDy), atlasSize, ivec2(bounds.xy),
                                 ivec2(bounds.zw), vec2(0.0));
-    return perspectiveSoftShadow(atlas, t, filterIndex, softControls(localShadows.softScales, localShadows.softCounts),
+    return perspectiveSoftShadow(atlas, t, filterIndex, localShadows.soft,
                                  tileSoft);
 #endif
 }
@@ -94,9 +82,9 @@ float localAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
     const int tile = local.tile;
     const mat4 m = localShadows.worldToAtlas[tile];
-    const vec4 p = localShadowPosition(m, localShadows.tileData[tile].x, local.plane, fromLight, position, normal);
+    const vec4 p = localShadowPosition(m, localShadows.tiles[tile].normalBias, local.plane, fromLight, position, normal);
     return filterLocalTile(localShadowAtlas, localShadows.atlasSize, m, p, localShadows.tileBounds[tile],
-                           int(localShadows.tileData[tile].y), localShadows.tileSoft[tile]);
+                           localShadows.tiles[tile].shadowFilter, localShadows.tileSoft[tile]);
 }
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read
@@ -173,7 +161,7 @@ float cubePoissonFilter(CubeReceiver r, float radius, int count)
 
 float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
 {
-    const SoftControls c = softControls(localShadows.softScales, localShadows.softCounts);
+    const SoftControls c = localShadows.soft;
     float radius = c.poissonRadius;
     if (filterIndex == PENUMBRA_FILTER_PCSS) {
         const vec3 a = abs(r.d);

@@ -4,18 +4,7 @@
 // shadow distance, and the static one combine by taking the darker, then the light's strength applies; a light
 // without realtime tiles keeps its static shadow. Needs directional_shadows.glsl and local_shadows.glsl first.
 
-layout(std140, binding = PENUMBRA_BINDING_STATIC_SHADOWS) uniform StaticShadows {
-    mat4 directionalWorldToMap[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
-    vec4 directionalBounds[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
-    vec4 directionalLights[PENUMBRA_MAX_STATIC_MAP_DIRECTIONAL_LIGHTS];
-    mat4 localWorldToMap[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-    vec4 localBounds[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-    vec4 localData[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-    vec4 atlasSizes;
-    vec4 directionalSoft[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
-    vec4 directionalSource[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
-    vec4 localSoft[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-} staticShadows;
+#include "static_shadows_block.glsl"
 
 // Read with texelFetch (shadow_filter.glsl), as the realtime atlases.
 layout(binding = PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS) uniform sampler2D staticDirectionalAtlas;

@@ -22,6 +22,21 @@ void initializeGlslang()
 
 EShLanguage glslangStage(ShaderStage stage) { return stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment; }
 
+// The members of `type` (a block or struct) at `base`, and those of its struct members as "outer.inner" (the first
+// element's where the member is an array), so a layout check reaches every field.
+void appendMembers(const spirv_cross::Compiler& compiler, const spirv_cross::SPIRType& type, const std::string& prefix,
+                   std::uint32_t base, std::vector<UniformMember>& members)
+{
+    for (std::uint32_t i = 0; i < type.member_types.size(); ++i) {
+        const std::string name = prefix + compiler.get_member_name(type.self, i);
+        const std::uint32_t offset = base + compiler.type_struct_member_offset(type, i);
+        members.push_back({name, offset, std::uint32_t(compiler.get_declared_struct_member_size(type, i))});
+        const spirv_cross::SPIRType& member = compiler.get_type(type.member_types[i]);
+        if (member.basetype == spirv_cross::SPIRType::Struct)
+            appendMembers(compiler, compiler.get_type(member.self), name + ".", offset, members);
+    }
+}
+
 std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spirv, const std::string& name)
 {
     const spirv_cross::Compiler compiler(spirv);
@@ -44,10 +59,7 @@ std::vector<ShaderBinding> reflectBindings(const std::vector<std::uint32_t>& spi
         if (kind == BindingKind::UniformBuffer) {
             const spirv_cross::SPIRType& block = compiler.get_type(r.base_type_id);
             b.size = std::uint32_t(compiler.get_declared_struct_size(block));
-            for (std::uint32_t i = 0; i < block.member_types.size(); ++i)
-                b.members.push_back({compiler.get_member_name(r.base_type_id, i),
-                                     compiler.type_struct_member_offset(block, i),
-                                     std::uint32_t(compiler.get_declared_struct_member_size(block, i))});
+            appendMembers(compiler, block, "", 0, b.members);
         }
         bindings.push_back(b);
     };

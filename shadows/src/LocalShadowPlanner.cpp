@@ -125,7 +125,7 @@ void addTile(LocalShadowPlan& plan, std::uint32_t tile, LocalShadowView view, fl
 {
     plan.uniforms.worldToAtlas[tile] = worldToAtlas(view.viewProjection, tile, plan.atlas, conventions);
     plan.uniforms.tileBounds[tile] = plan.atlas.tileTexelBounds(tile);
-    plan.uniforms.tileData[tile] = {normalBiasScale, static_cast<float>(soft.filter), 0.0f, 0.0f};
+    plan.uniforms.tiles[tile] = {.normalBias = normalBiasScale, .shadowFilter = static_cast<std::int32_t>(soft.filter)};
     plan.uniforms.tileSoft[tile] = soft.tileSoft;
     plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});
 }

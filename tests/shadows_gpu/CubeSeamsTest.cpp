@@ -165,7 +165,7 @@ private:
         const float distanceToPlane = glm::dot(position - light_, shadows::cubeFaceAxis(face));
         const glm::vec3 biased =
             position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
-                                                     distanceToPlane * plan_.uniforms.tileData[tile].x);
+                                                     distanceToPlane * plan_.uniforms.tiles[tile].normalBias);
         const glm::vec4 p = plan_.uniforms.worldToAtlas[tile] * glm::vec4(biased, 1.0f);
         const glm::vec2 texel =
             glm::vec2(p) / p.w * float(plan_.atlas.atlasSize()) - glm::vec2(plan_.atlas.tileOffset(tile));

@@ -62,8 +62,10 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
     desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kLitDepthFormat;
     desc.samples = samples_;
-    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
-                           shadows::localShadowLayout(), shadows::staticShadowLayout()};
+    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(),
+                           shaders::uniformLayout(shadows::kDirectionalShadowBlock),
+                           shaders::uniformLayout(shadows::kLocalShadowBlock),
+                           shaders::uniformLayout(shadows::kStaticShadowBlock)};
     desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
     rhi::ColorTarget target{kLitColorFormat};
     if (features.depthPrepassed) {
@@ -97,10 +99,10 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
 {
     const shadows::StaticShadowUniforms& staticMaps = staticPlan.uniforms;
     std::vector<int> filters{directional.defaultFilter, local.defaultFilter};
-    for (const glm::vec4& light : directional.lightShadowData)
-        filters.push_back(static_cast<int>(light.w));
-    for (const glm::vec4& tile : local.tileData)
-        filters.push_back(static_cast<int>(tile.y));
+    for (const shadows::DirectionalShadowLight& light : directional.lights)
+        filters.push_back(light.shadowFilter);
+    for (const shadows::LocalShadowTile& tile : local.tiles)
+        filters.push_back(tile.shadowFilter);
     for (const glm::vec4& cube : local.cubeSoft)
         filters.push_back(static_cast<int>(cube.x));
     bool staticShadows = false;

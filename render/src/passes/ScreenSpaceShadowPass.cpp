@@ -107,11 +107,11 @@ const rhi::Pipeline& ScreenSpaceShadowPass::pipeline(const LitShaderFeatures& fe
     desc.vertex = vertex_.get();
     desc.fragment = fragment.get();
     desc.colorTargets = {rhi::ColorTarget{kScreenSpaceShadowFormat}};
-    desc.uniformLayouts = {collectionLayout(), shadows::directionalShadowLayout()};
+    desc.uniformLayouts = {collectionLayout(), shaders::uniformLayout(shadows::kDirectionalShadowBlock)};
     // The static maps' functions come with local_shadows.glsl's block (screen_space_shadows.frag).
     if (features.staticShadows)
-        desc.uniformLayouts.insert(desc.uniformLayouts.end(),
-                                   {shadows::localShadowLayout(), shadows::staticShadowLayout()});
+        desc.uniformLayouts.insert(desc.uniformLayouts.end(), {shaders::uniformLayout(shadows::kLocalShadowBlock),
+                                                               shaders::uniformLayout(shadows::kStaticShadowBlock)});
     desc.debugName = fmt::format("screen-space shadows (features {:#x})", key);
     pipeline = device_.createPipeline(desc);
     return *pipeline;
