@@ -9,15 +9,24 @@ namespace {
 std::string_view glslType(const ShaderField& field)
 {
     switch (field.type) {
-    case FieldType::Float: return "float";
-    case FieldType::Int: return "int";
-    case FieldType::UInt: return "uint";
-    case FieldType::Vec2: return "vec2";
-    case FieldType::Vec3: return "vec3";
-    case FieldType::Vec4: return "vec4";
-    case FieldType::IVec4: return "ivec4";
-    case FieldType::Mat4: return "mat4";
-    case FieldType::Struct: return field.structure->name;
+    case FieldType::Float:
+        return "float";
+    case FieldType::Int:
+        return "int";
+    case FieldType::UInt:
+        return "uint";
+    case FieldType::Vec2:
+        return "vec2";
+    case FieldType::Vec3:
+        return "vec3";
+    case FieldType::Vec4:
+        return "vec4";
+    case FieldType::IVec4:
+        return "ivec4";
+    case FieldType::Mat4:
+        return "mat4";
+    case FieldType::Struct:
+        return field.structure->name;
     }
     return "float";
 }

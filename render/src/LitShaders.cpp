@@ -36,8 +36,6 @@ std::string litConstants(const LitShaderFeatures& features)
     }
     text += fmt::format("#define PENUMBRA_TEXTURE_SLOTS {}\n", scene::kTextureSlots);
     text += fmt::format("#define PENUMBRA_BINDING_COVERAGE_MAP {}\n", kLitCoverageMapBinding);
-    text += fmt::format("#define PENUMBRA_BINDING_FRAME {}\n#define PENUMBRA_BINDING_OBJECT {}\n", kLitFrameBinding,
-                        kLitObjectBinding);
     text += fmt::format("#define PENUMBRA_MAX_LIT_DIRECTIONAL_LIGHTS {}\n", maxLitDirectionalLights);
     text += fmt::format("#define PENUMBRA_LIT_DATA_WIDTH_LOG2 {}\n#define PENUMBRA_LIT_DATA_WIDTH {}\n",
                         kLitDataTextureWidthLog2, kLitDataTextureWidth);
@@ -109,6 +107,9 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
                          kLitAtlasBinding, kLitLocalAtlasBinding, kLitShadowCubesBinding, kLitShadowCubeDepthsBinding,
                          kLitStaticDirectionalAtlasBinding, kLitStaticLocalAtlasBinding, features.tentFilters ? 1 : 0,
                          features.softFilters ? 1 : 0, features.shadowCubes ? 1 : 0)});
+    source.includes.push_back(
+        {"lit_blocks.glsl", shaders::uniformBlockGlsl(kLitFrameBlock, kLitFrameBinding, "frame") +
+                                shaders::uniformBlockGlsl(kLitObjectBlock, kLitObjectBinding, "object")});
     source.includes.push_back(
         {"directional_shadows_block.glsl",
          shaders::uniformBlockGlsl(shadows::kDirectionalShadowBlock, kLitShadowBinding, "shadows")});

@@ -62,7 +62,7 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
     desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kLitDepthFormat;
     desc.samples = samples_;
-    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(),
+    desc.uniformLayouts = {shaders::uniformLayout(kLitFrameBlock), shaders::uniformLayout(kLitObjectBlock),
                            shaders::uniformLayout(shadows::kDirectionalShadowBlock),
                            shaders::uniformLayout(shadows::kLocalShadowBlock),
                            shaders::uniformLayout(shadows::kStaticShadowBlock)};

@@ -106,16 +106,24 @@ template <class Member>
 constexpr ShaderField shaderField(std::string_view name, std::size_t offset)
 {
     using Array = detail::ArrayOf<Member>;
-    return {name, detail::FieldTypeOf<typename Array::Element>::type, Array::count, std::uint32_t(offset),
-            std::uint32_t(sizeof(Member)), nullptr};
+    return {name,
+            detail::FieldTypeOf<typename Array::Element>::type,
+            Array::count,
+            std::uint32_t(offset),
+            std::uint32_t(sizeof(Member)),
+            nullptr};
 }
 
 // A field whose C++ type Member is a struct (or a std::array of one) declared by `structure`.
 template <class Member>
 constexpr ShaderField shaderStructField(std::string_view name, std::size_t offset, const ShaderStruct& structure)
 {
-    return {name, FieldType::Struct, detail::ArrayOf<Member>::count, std::uint32_t(offset),
-            std::uint32_t(sizeof(Member)), &structure};
+    return {name,
+            FieldType::Struct,
+            detail::ArrayOf<Member>::count,
+            std::uint32_t(offset),
+            std::uint32_t(sizeof(Member)),
+            &structure};
 }
 
 // The GLSL base alignment and size of one element of `field` (GLSL 4.50, 7.6.2.2, rules 1 to 9).
@@ -141,13 +149,21 @@ constexpr std::uint32_t elementAlignment(const ShaderField& field, BlockLayout l
     switch (field.type) {
     case FieldType::Float:
     case FieldType::Int:
-    case FieldType::UInt: alignment = 4; break;
-    case FieldType::Vec2: alignment = 8; break;
+    case FieldType::UInt:
+        alignment = 4;
+        break;
+    case FieldType::Vec2:
+        alignment = 8;
+        break;
     case FieldType::Vec3:
     case FieldType::Vec4:
     case FieldType::IVec4:
-    case FieldType::Mat4: alignment = 16; break;
-    case FieldType::Struct: alignment = structAlignment(*field.structure, layout); break;
+    case FieldType::Mat4:
+        alignment = 16;
+        break;
+    case FieldType::Struct:
+        alignment = structAlignment(*field.structure, layout);
+        break;
     }
     // Rule 4: in std140 an array's elements align to a vec4.
     return field.count > 0 && layout == BlockLayout::Std140 && alignment < 16 ? 16 : alignment;
@@ -159,13 +175,25 @@ constexpr std::uint32_t elementSize(const ShaderField& field, BlockLayout layout
     switch (field.type) {
     case FieldType::Float:
     case FieldType::Int:
-    case FieldType::UInt: size = 4; break;
-    case FieldType::Vec2: size = 8; break;
-    case FieldType::Vec3: size = 12; break;
+    case FieldType::UInt:
+        size = 4;
+        break;
+    case FieldType::Vec2:
+        size = 8;
+        break;
+    case FieldType::Vec3:
+        size = 12;
+        break;
     case FieldType::Vec4:
-    case FieldType::IVec4: size = 16; break;
-    case FieldType::Mat4: size = 64; break;
-    case FieldType::Struct: size = structExtent(*field.structure, layout); break;
+    case FieldType::IVec4:
+        size = 16;
+        break;
+    case FieldType::Mat4:
+        size = 64;
+        break;
+    case FieldType::Struct:
+        size = structExtent(*field.structure, layout);
+        break;
     }
     // An array's stride is its element rounded up to the element's alignment (rules 4 and 10).
     return field.count > 0 ? detail::roundUp(size, elementAlignment(field, layout)) : size;
