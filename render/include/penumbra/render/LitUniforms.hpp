@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <string_view>
 
@@ -28,13 +29,27 @@ inline constexpr rhi::Format kLitDepthFormat = rhi::Format::D32F;
 // visibility (FrameDesc::visibilityOf).
 enum class LitView : std::int32_t { Lit = 0, Cascades = 1, Visibility = 2 };
 
+// One directional light as the lit pass and the screen-space collection see it.
+struct alignas(16) LitDirectionalLight {
+    alignas(16) glm::vec3 color{0.0f}; // linear rgb x intensity
+    std::int32_t shadowSlot = -1; // its DirectionalShadowUniforms::lights entry, -1 without realtime shadows
+    alignas(16) glm::vec3 direction{0.0f}; // unit, from the light into the scene
+};
+
+inline constexpr std::array kLitDirectionalLightFields{
+    PENUMBRA_SHADER_FIELD(LitDirectionalLight, color),
+    PENUMBRA_SHADER_FIELD(LitDirectionalLight, shadowSlot),
+    PENUMBRA_SHADER_FIELD(LitDirectionalLight, direction),
+};
+inline constexpr shaders::ShaderStruct kLitDirectionalLightStruct{"DirectionalLight", sizeof(LitDirectionalLight),
+                                                                  kLitDirectionalLightFields};
+
 // The blocks of shaders/lit.glsl (kLitFrameBlock, kLitObjectBlock below), uploaded as they are.
 struct LitFrameUniforms {
     glm::mat4 viewProjection{1.0f};
     glm::vec4 cameraPosition{0.0f};
     glm::vec4 cameraForward{0.0f};
-    std::array<glm::vec4, maxLitDirectionalLights> lightColor{};
-    std::array<glm::vec4, maxLitDirectionalLights> lightDirection{}; // w = shadow slot or -1
+    std::array<LitDirectionalLight, maxLitDirectionalLights> lights{};
     glm::vec4 ambient{0.0f};
     std::int32_t directionalLightCount = 0;
     std::int32_t litView = 0; // LitView
@@ -89,8 +104,7 @@ inline constexpr std::array kLitFrameFields{
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, viewProjection),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraPosition),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraForward),
-    PENUMBRA_SHADER_FIELD(LitFrameUniforms, lightColor),
-    PENUMBRA_SHADER_FIELD(LitFrameUniforms, lightDirection),
+    PENUMBRA_SHADER_STRUCT_FIELD(LitFrameUniforms, lights, kLitDirectionalLightStruct),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, ambient),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, directionalLightCount),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, litView),

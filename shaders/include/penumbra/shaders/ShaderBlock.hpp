@@ -215,7 +215,8 @@ constexpr std::uint32_t structExtent(const ShaderStruct& structure, BlockLayout 
 }
 
 // True where every field of `block` (and of its struct fields) sits at the offset and takes the size that `layout`
-// gives it in GLSL, and the C++ struct ends where the block does: the C++ struct can be uploaded as it is.
+// gives it in GLSL, and the C++ struct ends where the block does (rounded up to its alignment at most): the C++
+// struct can be uploaded as it is.
 constexpr bool matchesLayout(const ShaderStruct& block, BlockLayout layout, bool nested = false)
 {
     std::uint32_t offset = 0;
@@ -228,7 +229,9 @@ constexpr bool matchesLayout(const ShaderStruct& block, BlockLayout layout, bool
             return false;
         offset += size;
     }
-    return block.size == (nested ? structExtent(block, layout) : offset);
+    // A struct field's stride is its padded extent; a block's C++ struct may end anywhere up to its alignment.
+    return nested ? block.size == structExtent(block, layout)
+                  : block.size >= offset && block.size <= detail::roundUp(offset, structAlignment(block, layout));
 }
 
 // `struct Name { ... };` with the struct types it holds before it, each behind an #ifndef (so a shader may take it
