@@ -1,6 +1,7 @@
 #include "penumbra/render/ReferenceLitPass.hpp"
 
 #include "penumbra/render/LitUniforms.hpp"
+#include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 #include "penumbra/shadows/InstanceTransform.hpp"
 
 #include <algorithm>
@@ -72,6 +73,9 @@ ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const GpuScene& scene)
     desc.depthFormat = kDepthFormat;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
     desc.colorTargets = {rhi::ColorTarget{kColorFormat}};
+    desc.uniformLayouts = {shaders::uniformLayout(kLitFrameBlock), shaders::uniformLayout(kLitObjectBlock),
+                           shaders::uniformLayout(shadows::kDirectionalShadowBlock),
+                           shaders::uniformLayout(kReferenceSplitBlock)};
     for (const bool doubleSided : {false, true}) {
         desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
         desc.debugName = fmt::format("reference lit ({})", doubleSided ? "double-sided" : "culled");
