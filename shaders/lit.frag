@@ -123,9 +123,9 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
     const bool receives = object.receivesShadows != 0;
     if (index < frame.directionalLightCount) {
         const int slot = receives ? frame.lights[index].shadowSlot : -1;
-        const vec4 map = staticShadows.directionalLights[index];
+        const StaticDirectionalLight map = staticShadows.directionalLights[index];
         const bool realtime = directionalShadowReaches(slot, cascade);
-        const bool fromStatic = receives && map.x >= 0.0;
+        const bool fromStatic = receives && map.tile >= 0;
         if (dot(n, -frame.lights[index].direction) <= 0.0 || !(realtime || fromStatic))
             return vec4(1.0, 1.0, 1.0, 0.0);
         const vec3 towardsLight = -frame.lights[index].direction;

@@ -106,14 +106,14 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
     for (const glm::vec4& cube : local.cubeSoft)
         filters.push_back(static_cast<int>(cube.x));
     bool staticShadows = false;
-    for (const glm::vec4& light : staticMaps.directionalLights) {
-        staticShadows = staticShadows || light.x >= 0.0f;
-        filters.push_back(static_cast<int>(light.w));
+    for (const shadows::StaticDirectionalLight& light : staticMaps.directionalLights) {
+        staticShadows = staticShadows || light.tile >= 0;
+        filters.push_back(light.shadowFilter);
     }
     for (const glm::vec4& light : staticPlan.localLightMaps)
         staticShadows = staticShadows || light.x >= 0.0f;
-    for (const glm::vec4& tile : staticMaps.localData)
-        filters.push_back(static_cast<int>(tile.y));
+    for (const shadows::LocalShadowTile& tile : staticMaps.localTiles)
+        filters.push_back(tile.shadowFilter);
     LitShaderFeatures features;
     features.localLights = frame.localLightCount > 0;
     features.staticShadows = staticShadows;
