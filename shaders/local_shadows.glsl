@@ -89,14 +89,14 @@ float localAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read
 // raw from the cube array with hardware face selection, compared against the receiver's plane along each tap's ray:
-// its major-axis distance there, as window depth (cubeData x, y).
+// its major-axis distance there, as window depth (LocalShadowCube::depthRow).
 struct CubeReceiver {
     vec3 d;        // light to the receiver
     vec3 u;
     vec3 v;
     vec3 normal;   // the receiver plane's
     int cube;
-    vec4 data;     // cubeData
+    LocalShadowCube data;
     mat2 rotation;
 };
 
@@ -107,7 +107,7 @@ float cubePlaneDepth(CubeReceiver r, vec3 tap)
     const float s = abs(along) > 1e-6 ? dot(r.normal, r.d) / along : -1.0;
     const vec3 a = abs(s > 0.0 ? tap * s : r.d);
     const float major = max(max(a.x, a.y), a.z);
-    return (r.data.x * -major + r.data.y) / major;
+    return (r.data.depthRow.x * -major + r.data.depthRow.y) / major;
 }
 
 // The tap at disk offset `o` (texels of the face at the receiver).
@@ -130,7 +130,7 @@ vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
     for (int i = 0; i < count; ++i) {
         const vec2 tap = cubeDepthAndPlane(r, cubeTap(r, nextDiskPoint(disk, i)));
         if (penumbraIsNearer(tap.x, tap.y)) {
-            const float distance = perspectiveDistance(tap.x, r.data.xy);
+            const float distance = perspectiveDistance(tap.x, r.data.depthRow);
             sum += distance;
             blockers += 1.0;
             nearest = min(nearest, distance);
@@ -139,7 +139,7 @@ vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
     if (blockers == 0.0) {
         const vec2 own = cubeDepthAndPlane(r, r.d);
         if (penumbraIsNearer(own.x, own.y)) {
-            const float distance = perspectiveDistance(own.x, r.data.xy);
+            const float distance = perspectiveDistance(own.x, r.data.depthRow);
             return vec3(distance, 1.0, distance);
         }
     }
@@ -159,7 +159,7 @@ float cubePoissonFilter(CubeReceiver r, float radius, int count)
     return lit / float(count);
 }
 
-float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
+float cubeSoftShadow(CubeReceiver r, int filterIndex)
 {
     const SoftControls c = localShadows.soft;
     float radius = c.poissonRadius;
@@ -168,16 +168,16 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
         const float receiver = max(max(a.x, a.y), a.z);
         // The two steps of the blocker search (soft_shadows.glsl, PCSS_SEARCH_STEPS): the nearest blocker's cone
         // searched again for the average; none there, fully lit.
-        float within = perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c);
+        float within = perspectiveSearchTexels(receiver, r.data.nearPlane, r.data.lightTexels, c);
         vec3 found = vec3(0.0);
         for (int searchStep = 0; searchStep < PCSS_SEARCH_STEPS; ++searchStep) {
             found = cubeSearchBlockers(r, within, c.blockerSamples, receiver);
             if (found.y == 0.0)
                 return 1.0;
             if (searchStep == 0)
-                within = min(perspectiveSearchTexels(receiver, found.z, cubeSoft.y, c), within);
+                within = min(perspectiveSearchTexels(receiver, found.z, r.data.lightTexels, c), within);
         }
-        radius = diskRadius(perspectivePenumbraTexels(receiver, found.x, cubeSoft.y, c), PENUMBRA_NEAREST_TAP_VARIANCE,
+        radius = diskRadius(perspectivePenumbraTexels(receiver, found.x, r.data.lightTexels, c), PENUMBRA_NEAREST_TAP_VARIANCE,
                             c);
         if (inUmbra(found.xy, c.blockerSamples, radius, within))
             return 0.0;
@@ -189,27 +189,26 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
 // texels around the receiver's direction; hardware face selection carries taps across face edges.
 float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
 {
-    const vec4 data = localShadows.cubeData[cube];
+    const LocalShadowCube data = localShadows.cubes[cube];
     const vec3 fromLight = position - lightPosition;
     const int face = cubeFace(fromLight);
     const vec3 axis = cubeFaceAxis(face);
     precise vec3 biased =
-        position + receiverNormalOffset(normal, normalize(-fromLight), dot(fromLight, axis) * data.z);
+        position + receiverNormalOffset(normal, normalize(-fromLight), dot(fromLight, axis) * data.normalBias);
     const vec3 d = biased - lightPosition;
     const float major = max(max(abs(d.x), abs(d.y)), abs(d.z));
-    const float reference = (data.x * -major + data.y) / major;
-    const vec3 u = cubeFaceAxis((face + 2) % 6) * (2.0 * major * data.w);
-    const vec3 v = cubeFaceAxis((face + 4) % 6) * (2.0 * major * data.w);
-    const vec4 cubeSoft = localShadows.cubeSoft[cube];
-    const int filterIndex = int(cubeSoft.x);
+    const float reference = (data.depthRow.x * -major + data.depthRow.y) / major;
+    const vec3 u = cubeFaceAxis((face + 2) % 6) * (2.0 * major * data.invFaceSize);
+    const vec3 v = cubeFaceAxis((face + 4) % 6) * (2.0 * major * data.invFaceSize);
+    const int filterIndex = data.shadowFilter;
 #if PENUMBRA_SOFT_FILTERS
     if (filterIndex >= PENUMBRA_FILTER_FIRST_POISSON_DISK) {
         // The receiver's texel on its face, offset by face: the light's own texel grid for the disk's rotation.
         const vec2 onFace = vec2(dot(d, cubeFaceAxis((face + 2) % 6)), dot(d, cubeFaceAxis((face + 4) % 6))) / major;
-        const ivec2 texel = ivec2(floor((onFace * 0.5 + 0.5) / data.w)) + ivec2(face * int(1.0 / data.w + 0.5), 0);
+        const ivec2 texel = ivec2(floor((onFace * 0.5 + 0.5) / data.invFaceSize)) + ivec2(face * int(1.0 / data.invFaceSize + 0.5), 0);
         const CubeReceiver r = CubeReceiver(d, u, v, dot(normal, d) > 0.0 ? -normal : normal, cube, data,
                                             diskRotation(texel));
-        return cubeSoftShadow(r, filterIndex, cubeSoft);
+        return cubeSoftShadow(r, filterIndex);
     }
 #endif
     const int k = PENUMBRA_FILTER_SIZES[filterIndex];

@@ -32,7 +32,7 @@ shadows::ShadowFilter plannedShadowFilter(const ShadowPlans& plans, const scene:
             throw noShadow();
         if (plans.local.cubes.empty())
             return static_cast<shadows::ShadowFilter>(plans.local.uniforms.tiles[std::size_t(shadow)].shadowFilter);
-        return static_cast<shadows::ShadowFilter>(plans.local.uniforms.cubeSoft[std::size_t(shadow)].x);
+        return static_cast<shadows::ShadowFilter>(plans.local.uniforms.cubes[std::size_t(shadow)].shadowFilter);
     }
     }
     throw noShadow();

@@ -425,7 +425,7 @@ TEST(SoftPlannerTest, LocalLightsCarryTheirFilterRadiusAndNearPlane)
                     1e-3f);
         EXPECT_NEAR(plan.uniforms.tileSoft[tile].w, 0.01f * spot.range, 1e-6f);
         if (mode == PointShadowMode::CubeMap)
-            EXPECT_EQ(plan.uniforms.cubeSoft[0].x, static_cast<float>(ShadowFilter::Poisson));
+            EXPECT_EQ(plan.uniforms.cubes[0].shadowFilter, static_cast<int>(ShadowFilter::Poisson));
         else
             EXPECT_EQ(plan.uniforms.tiles[plan.pointShadows[0]].shadowFilter, static_cast<int>(ShadowFilter::Poisson));
     }

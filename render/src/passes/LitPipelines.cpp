@@ -103,8 +103,8 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
         filters.push_back(light.shadowFilter);
     for (const shadows::LocalShadowTile& tile : local.tiles)
         filters.push_back(tile.shadowFilter);
-    for (const glm::vec4& cube : local.cubeSoft)
-        filters.push_back(static_cast<int>(cube.x));
+    for (const shadows::LocalShadowCube& cube : local.cubes)
+        filters.push_back(cube.shadowFilter);
     bool staticShadows = false;
     for (const shadows::StaticDirectionalLight& light : staticMaps.directionalLights) {
         staticShadows = staticShadows || light.tile >= 0;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 namespace penumbra::shadows {
@@ -27,21 +28,36 @@ inline constexpr std::array kLocalShadowTileFields{
 inline constexpr shaders::ShaderStruct kLocalShadowTileStruct{"LocalShadowTile", sizeof(LocalShadowTile),
                                                               kLocalShadowTileFields};
 
+// A point light's shadow cube as the lit shader reads it (PointShadowMode::CubeMap).
+struct alignas(16) LocalShadowCube {
+    glm::vec2 depthRow{0.0f}; // window depth = (x * -z + y) / z at major-axis distance z
+    float normalBias = 0.0f; // the receiver-side normal offset per unit distance, 0 where the caster side takes it
+    float invFaceSize = 0.0f; // 1 / face size (texels)
+    std::int32_t shadowFilter = 0; // the light's ShadowFilter
+    float lightTexels = 0.0f; // the light's radius in texels at unit distance (the Poisson and PCSS filters)
+    float nearPlane = 0.0f;
+};
+
+inline constexpr std::array kLocalShadowCubeFields{
+    PENUMBRA_SHADER_FIELD(LocalShadowCube, depthRow),    PENUMBRA_SHADER_FIELD(LocalShadowCube, normalBias),
+    PENUMBRA_SHADER_FIELD(LocalShadowCube, invFaceSize), PENUMBRA_SHADER_FIELD(LocalShadowCube, shadowFilter),
+    PENUMBRA_SHADER_FIELD(LocalShadowCube, lightTexels), PENUMBRA_SHADER_FIELD(LocalShadowCube, nearPlane),
+};
+inline constexpr shaders::ShaderStruct kLocalShadowCubeStruct{"LocalShadowCube", sizeof(LocalShadowCube),
+                                                              kLocalShadowCubeFields};
+
 // The lit shader's spot and point shadow block LocalShadows (local_shadows.glsl), uploaded as is.
 struct LocalShadowUniforms {
     std::array<glm::mat4, maxLocalShadowTiles> worldToAtlas{}; // per tile: world -> (u, v, depth) x w (divide by w)
     std::array<glm::vec4, maxLocalShadowTiles> tileBounds{}; // per tile: first and last texel (x, y, x, y)
     std::array<LocalShadowTile, maxLocalShadowTiles> tiles{};
-    // Per cube: x, y: window depth = (x * -z + y) / z at major-axis distance z, z = normal bias per unit distance,
-    // w = 1 / face size (texels).
-    std::array<glm::vec4, maxShadowCubes> cubeData{};
+    std::array<LocalShadowCube, maxShadowCubes> cubes{};
     float atlasSize = 0.0f; // texels on a side
     std::int32_t defaultFilter = 0; // ShadowFilter of a light without its own
     std::int32_t pointMode = 0; // PointShadowMode
     // Per tile: (t22, t32) the depth row (perspectiveDistance), the light's radius in texels at unit distance
     // (lightTexels), the near plane.
     alignas(16) std::array<glm::vec4, maxLocalShadowTiles> tileSoft{};
-    std::array<glm::vec4, maxShadowCubes> cubeSoft{}; // per cube: the light's filter, lightTexels, the near plane, 0
     SoftShadowUniforms soft;
 };
 
@@ -49,12 +65,11 @@ inline constexpr std::array kLocalShadowFields{
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, worldToAtlas),
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, tileBounds),
     PENUMBRA_SHADER_STRUCT_FIELD(LocalShadowUniforms, tiles, kLocalShadowTileStruct),
-    PENUMBRA_SHADER_FIELD(LocalShadowUniforms, cubeData),
+    PENUMBRA_SHADER_STRUCT_FIELD(LocalShadowUniforms, cubes, kLocalShadowCubeStruct),
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, atlasSize),
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, defaultFilter),
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, pointMode),
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, tileSoft),
-    PENUMBRA_SHADER_FIELD(LocalShadowUniforms, cubeSoft),
     PENUMBRA_SHADER_STRUCT_FIELD(LocalShadowUniforms, soft, kSoftShadowStruct),
 };
 // The block LocalShadows, read through the instance name `localShadows`.
