@@ -2,24 +2,7 @@
 // atlas: tent-filtered PCF (penumbra::shadows::tentFilterTaps) or the Poisson and PCSS filters
 // (soft_shadows.glsl). The uniform block is penumbra::shadows::DirectionalShadowUniforms.
 
-layout(std140, binding = PENUMBRA_BINDING_DIRECTIONAL_SHADOWS) uniform DirectionalShadows {
-    mat4 worldToAtlas[PENUMBRA_MAX_DIRECTIONAL_TILES];
-    vec4 cullingSpheres[PENUMBRA_MAX_CASCADES];
-    vec4 cascadeData[PENUMBRA_MAX_CASCADES];
-    vec4 distanceFade;
-    float atlasSize;
-    int cascadeCount;
-    int defaultFilter;
-    int cascadeBlend;
-    int shadowedLightCount;
-    int cascadeProjection;
-    vec4 lightShadowData[PENUMBRA_MAX_SHADOWED_DIRECTIONAL_LIGHTS];
-    vec4 tileSoft[PENUMBRA_MAX_DIRECTIONAL_TILES];
-    vec4 lightSoft[PENUMBRA_MAX_SHADOWED_DIRECTIONAL_LIGHTS];
-    vec4 softScales;
-    vec4 softCounts;
-    vec4 tileBounds[PENUMBRA_MAX_DIRECTIONAL_TILES];
-} shadows;
+#include "directional_shadows_block.glsl"
 
 // Read with texelFetch (shadow_filter.glsl).
 layout(binding = PENUMBRA_BINDING_DIRECTIONAL_ATLAS) uniform sampler2D shadowAtlas;
@@ -89,7 +72,7 @@ float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize
 #if PENUMBRA_SOFT_FILTERS
     const SoftTile t =
         softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, atlasSize, tileMin, tileMax, tileSoft.xy);
-    return directionalSoftShadow(atlas, t, filterIndex, softControls(shadows.softScales, shadows.softCounts),
+    return directionalSoftShadow(atlas, t, filterIndex, shadows.soft,
                                  tileSoft.zw, tanHalfAngle, texelWorld);
 #endif
 }
@@ -99,8 +82,8 @@ float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slo
 {
     const vec4 bounds = shadows.tileBounds[tile];
     return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize, ivec2(bounds.xy), ivec2(bounds.zw),
-                                 int(shadows.lightShadowData[slot].w), mat3(shadows.worldToAtlas[tile]),
-                                 shadows.tileSoft[tile], shadows.lightSoft[slot].x, shadows.cascadeData[cascade].z);
+                                 shadows.lights[slot].shadowFilter, mat3(shadows.worldToAtlas[tile]), shadows.tileSoft[tile],
+                                 shadows.lights[slot].tanHalfAngle, shadows.cascadeData[cascade].z);
 }
 
 // The receiver moved by its normal offset over the cascade's filter-sized texel diagonal (scaled to the light's
@@ -109,7 +92,7 @@ float sampleCascade(int tile, int cascade, int slot, vec3 position, vec3 normal,
 {
     precise vec3 biased = position + receiverNormalOffset(normal, towardsLight,
                                                           normalBias * shadows.cascadeData[cascade].y *
-                                                              shadows.lightSoft[slot].y);
+                                                              shadows.lights[slot].filterBiasScale);
     return filterDirectionalShadow(transformPoint(shadows.worldToAtlas[tile], biased).xyz, tile, cascade, slot);
 }
 
@@ -117,15 +100,15 @@ float sampleCascade(int tile, int cascade, int slot, vec3 position, vec3 normal,
 // `normal` is the receiver's geometric normal (either side), `towardsLight` the unit direction to the light.
 float directionalShadowVisibility(int slot, CascadeSelection s, vec3 position, vec3 normal, vec3 towardsLight)
 {
-    const vec4 light = shadows.lightShadowData[slot];
-    const int tile = int(light.z) + s.index;
+    const DirectionalShadowLight light = shadows.lights[slot];
+    const int tile = light.firstTile + s.index;
     // One call site for both cascades of a soft blend: the compilers inline every call, and the soft filters' loops
     // are long.
     float shadow = 0.0;
     const int cascades = s.blend < 1.0 ? 2 : 1;
     for (int k = 0; k < cascades; ++k) {
         const float weight = cascades == 1 ? 1.0 : (k == 0 ? s.blend : 1.0 - s.blend);
-        shadow += weight * sampleCascade(tile + k, s.index + k, slot, position, normal, towardsLight, light.y);
+        shadow += weight * sampleCascade(tile + k, s.index + k, slot, position, normal, towardsLight, light.normalBias);
     }
     return shadow;
 }
@@ -149,6 +132,6 @@ float directionalShadowAttenuation(int slot, CascadeSelection s, vec3 position, 
 {
     if (!directionalShadowReaches(slot, s))
         return 1.0;
-    const float strength = shadows.lightShadowData[slot].x * s.strength;
+    const float strength = shadows.lights[slot].strength * s.strength;
     return mix(1.0, directionalShadowVisibility(slot, s, position, normal, towardsLight), strength);
 }

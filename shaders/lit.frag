@@ -122,13 +122,13 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
 {
     const bool receives = object.receivesShadows != 0;
     if (index < frame.directionalLightCount) {
-        const int slot = receives ? int(frame.lightDirection[index].w) : -1;
-        const vec4 map = staticShadows.directionalLights[index];
+        const int slot = receives ? frame.lights[index].shadowSlot : -1;
+        const StaticDirectionalLight map = staticShadows.directionalLights[index];
         const bool realtime = directionalShadowReaches(slot, cascade);
-        const bool fromStatic = receives && map.x >= 0.0;
-        if (dot(n, -frame.lightDirection[index].xyz) <= 0.0 || !(realtime || fromStatic))
+        const bool fromStatic = receives && map.tile >= 0;
+        if (dot(n, -frame.lights[index].direction) <= 0.0 || !(realtime || fromStatic))
             return vec4(1.0, 1.0, 1.0, 0.0);
-        const vec3 towardsLight = -frame.lightDirection[index].xyz;
+        const vec3 towardsLight = -frame.lights[index].direction;
         const float shadow = realtime ? directionalShadowVisibility(slot, cascade, vPosition, geometric, towardsLight) : 1.0;
         return vec4(vec3(fromStatic ? min(shadow, staticDirectionalVisibility(map, vPosition, geometric, towardsLight))
                                     : shadow),
@@ -208,12 +208,12 @@ void main()
     const bool fromCollection = collectedHere();
 #endif
     for (int i = 0; i < frame.directionalLightCount; ++i) {
-        const vec3 l = -frame.lightDirection[i].xyz;
+        const vec3 l = -frame.lights[i].direction;
         const float nl = dot(n, l);
         if (nl <= 0.0)
             continue;
         const bool receives = object.receivesShadows != 0;
-        const int slot = receives ? int(frame.lightDirection[i].w) : -1;
+        const int slot = receives ? frame.lights[i].shadowSlot : -1;
 #if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_PIXELS
         const float attenuation = receives ? collectedShadow(collected, i) : 1.0;
 #elif PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_EDGES
@@ -223,7 +223,7 @@ void main()
 #else
         const float attenuation = directionalLightShadow(i, slot, receives, cascade, vPosition, geometric, l);
 #endif
-        color += brdf(n, v, l, base, metallic, roughness) * frame.lightColor[i].rgb * nl * attenuation;
+        color += brdf(n, v, l, base, metallic, roughness) * frame.lights[i].color * nl * attenuation;
     }
 #if PENUMBRA_LOCAL_LIGHTS
     // The cluster's lights in ascending index, as a loop over every light would add them: a light left out of the

@@ -2,19 +2,7 @@
 // of a point light, tile-clamped PCF (shadow_filter.glsl); or, in cube-map mode, point lights through
 // hardware cube lookups. The block is penumbra::shadows::LocalShadowUniforms.
 
-layout(std140, binding = PENUMBRA_BINDING_LOCAL_SHADOWS) uniform LocalShadows {
-    mat4 worldToAtlas[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
-    vec4 tileBounds[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
-    vec4 tileData[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
-    vec4 cubeData[PENUMBRA_MAX_SHADOW_CUBES];
-    float atlasSize;
-    int defaultFilter;
-    int pointMode;
-    vec4 tileSoft[PENUMBRA_MAX_LOCAL_SHADOW_TILES];
-    vec4 cubeSoft[PENUMBRA_MAX_SHADOW_CUBES];
-    vec4 softScales;
-    vec4 softCounts;
-} localShadows;
+#include "local_shadows_block.glsl"
 
 // Read with texelFetch (shadow_filter.glsl).
 layout(binding = PENUMBRA_BINDING_LOCAL_ATLAS) uniform sampler2D localShadowAtlas;
@@ -81,7 +69,7 @@ float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 
     const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(worldToAtlas, p, receiverDx),
                                 projectedDerivative(worldToAtlas, p, receiverDy), atlasSize, ivec2(bounds.xy),
                                 ivec2(bounds.zw), vec2(0.0));
-    return perspectiveSoftShadow(atlas, t, filterIndex, softControls(localShadows.softScales, localShadows.softCounts),
+    return perspectiveSoftShadow(atlas, t, filterIndex, localShadows.soft,
                                  tileSoft);
 #endif
 }
@@ -94,21 +82,21 @@ float localAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
     const int tile = local.tile;
     const mat4 m = localShadows.worldToAtlas[tile];
-    const vec4 p = localShadowPosition(m, localShadows.tileData[tile].x, local.plane, fromLight, position, normal);
+    const vec4 p = localShadowPosition(m, localShadows.tiles[tile].normalBias, local.plane, fromLight, position, normal);
     return filterLocalTile(localShadowAtlas, localShadows.atlasSize, m, p, localShadows.tileBounds[tile],
-                           int(localShadows.tileData[tile].y), localShadows.tileSoft[tile]);
+                           localShadows.tiles[tile].shadowFilter, localShadows.tileSoft[tile]);
 }
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read
 // raw from the cube array with hardware face selection, compared against the receiver's plane along each tap's ray:
-// its major-axis distance there, as window depth (cubeData x, y).
+// its major-axis distance there, as window depth (LocalShadowCube::depthRow).
 struct CubeReceiver {
     vec3 d;        // light to the receiver
     vec3 u;
     vec3 v;
     vec3 normal;   // the receiver plane's
     int cube;
-    vec4 data;     // cubeData
+    LocalShadowCube data;
     mat2 rotation;
 };
 
@@ -119,7 +107,7 @@ float cubePlaneDepth(CubeReceiver r, vec3 tap)
     const float s = abs(along) > 1e-6 ? dot(r.normal, r.d) / along : -1.0;
     const vec3 a = abs(s > 0.0 ? tap * s : r.d);
     const float major = max(max(a.x, a.y), a.z);
-    return (r.data.x * -major + r.data.y) / major;
+    return (r.data.depthRow.x * -major + r.data.depthRow.y) / major;
 }
 
 // The tap at disk offset `o` (texels of the face at the receiver).
@@ -142,7 +130,7 @@ vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
     for (int i = 0; i < count; ++i) {
         const vec2 tap = cubeDepthAndPlane(r, cubeTap(r, nextDiskPoint(disk, i)));
         if (penumbraIsNearer(tap.x, tap.y)) {
-            const float distance = perspectiveDistance(tap.x, r.data.xy);
+            const float distance = perspectiveDistance(tap.x, r.data.depthRow);
             sum += distance;
             blockers += 1.0;
             nearest = min(nearest, distance);
@@ -151,7 +139,7 @@ vec3 cubeSearchBlockers(CubeReceiver r, float radius, int count, float receiver)
     if (blockers == 0.0) {
         const vec2 own = cubeDepthAndPlane(r, r.d);
         if (penumbraIsNearer(own.x, own.y)) {
-            const float distance = perspectiveDistance(own.x, r.data.xy);
+            const float distance = perspectiveDistance(own.x, r.data.depthRow);
             return vec3(distance, 1.0, distance);
         }
     }
@@ -171,25 +159,25 @@ float cubePoissonFilter(CubeReceiver r, float radius, int count)
     return lit / float(count);
 }
 
-float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
+float cubeSoftShadow(CubeReceiver r, int filterIndex)
 {
-    const SoftControls c = softControls(localShadows.softScales, localShadows.softCounts);
+    const SoftControls c = localShadows.soft;
     float radius = c.poissonRadius;
     if (filterIndex == PENUMBRA_FILTER_PCSS) {
         const vec3 a = abs(r.d);
         const float receiver = max(max(a.x, a.y), a.z);
         // The two steps of the blocker search (soft_shadows.glsl, PCSS_SEARCH_STEPS): the nearest blocker's cone
         // searched again for the average; none there, fully lit.
-        float within = perspectiveSearchTexels(receiver, cubeSoft.z, cubeSoft.y, c);
+        float within = perspectiveSearchTexels(receiver, r.data.nearPlane, r.data.lightTexels, c);
         vec3 found = vec3(0.0);
         for (int searchStep = 0; searchStep < PCSS_SEARCH_STEPS; ++searchStep) {
             found = cubeSearchBlockers(r, within, c.blockerSamples, receiver);
             if (found.y == 0.0)
                 return 1.0;
             if (searchStep == 0)
-                within = min(perspectiveSearchTexels(receiver, found.z, cubeSoft.y, c), within);
+                within = min(perspectiveSearchTexels(receiver, found.z, r.data.lightTexels, c), within);
         }
-        radius = diskRadius(perspectivePenumbraTexels(receiver, found.x, cubeSoft.y, c), PENUMBRA_NEAREST_TAP_VARIANCE,
+        radius = diskRadius(perspectivePenumbraTexels(receiver, found.x, r.data.lightTexels, c), PENUMBRA_NEAREST_TAP_VARIANCE,
                             c);
         if (inUmbra(found.xy, c.blockerSamples, radius, within))
             return 0.0;
@@ -201,27 +189,26 @@ float cubeSoftShadow(CubeReceiver r, int filterIndex, vec4 cubeSoft)
 // texels around the receiver's direction; hardware face selection carries taps across face edges.
 float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
 {
-    const vec4 data = localShadows.cubeData[cube];
+    const LocalShadowCube data = localShadows.cubes[cube];
     const vec3 fromLight = position - lightPosition;
     const int face = cubeFace(fromLight);
     const vec3 axis = cubeFaceAxis(face);
     precise vec3 biased =
-        position + receiverNormalOffset(normal, normalize(-fromLight), dot(fromLight, axis) * data.z);
+        position + receiverNormalOffset(normal, normalize(-fromLight), dot(fromLight, axis) * data.normalBias);
     const vec3 d = biased - lightPosition;
     const float major = max(max(abs(d.x), abs(d.y)), abs(d.z));
-    const float reference = (data.x * -major + data.y) / major;
-    const vec3 u = cubeFaceAxis((face + 2) % 6) * (2.0 * major * data.w);
-    const vec3 v = cubeFaceAxis((face + 4) % 6) * (2.0 * major * data.w);
-    const vec4 cubeSoft = localShadows.cubeSoft[cube];
-    const int filterIndex = int(cubeSoft.x);
+    const float reference = (data.depthRow.x * -major + data.depthRow.y) / major;
+    const vec3 u = cubeFaceAxis((face + 2) % 6) * (2.0 * major * data.invFaceSize);
+    const vec3 v = cubeFaceAxis((face + 4) % 6) * (2.0 * major * data.invFaceSize);
+    const int filterIndex = data.shadowFilter;
 #if PENUMBRA_SOFT_FILTERS
     if (filterIndex >= PENUMBRA_FILTER_FIRST_POISSON_DISK) {
         // The receiver's texel on its face, offset by face: the light's own texel grid for the disk's rotation.
         const vec2 onFace = vec2(dot(d, cubeFaceAxis((face + 2) % 6)), dot(d, cubeFaceAxis((face + 4) % 6))) / major;
-        const ivec2 texel = ivec2(floor((onFace * 0.5 + 0.5) / data.w)) + ivec2(face * int(1.0 / data.w + 0.5), 0);
+        const ivec2 texel = ivec2(floor((onFace * 0.5 + 0.5) / data.invFaceSize)) + ivec2(face * int(1.0 / data.invFaceSize + 0.5), 0);
         const CubeReceiver r = CubeReceiver(d, u, v, dot(normal, d) > 0.0 ? -normal : normal, cube, data,
                                             diskRotation(texel));
-        return cubeSoftShadow(r, filterIndex, cubeSoft);
+        return cubeSoftShadow(r, filterIndex);
     }
 #endif
     const int k = PENUMBRA_FILTER_SIZES[filterIndex];

@@ -9,13 +9,7 @@
 #include "soft_shadows.glsl"
 #include "directional_shadows.glsl"
 #include "lit.glsl"
-#include "reference_constants.glsl"
-
-layout(std140, binding = PENUMBRA_BINDING_REFERENCE_SPLITS) uniform ReferenceSplits {
-    int cascadeCount;
-    int firstTile;  // the light's first atlas tile (-1: no shadows)
-    vec4 farDepths; // view depth where cascade i ends
-} reference;
+#include "reference_block.glsl"
 
 layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
@@ -40,6 +34,6 @@ void main()
         shadow = compareTexel(shadowAtlas, ivec2(p.xy * shadows.atlasSize), p.z);
     }
     const vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);
-    const float nl = max(dot(n, -frame.lightDirection[0].xyz), 0.0);
-    outColor = vec4(color.rgb * (frame.ambient.rgb + frame.lightColor[0].rgb * nl * shadow), 1.0);
+    const float nl = max(dot(n, -frame.lights[0].direction), 0.0);
+    outColor = vec4(color.rgb * (frame.ambient.rgb + frame.lights[0].color * nl * shadow), 1.0);
 }

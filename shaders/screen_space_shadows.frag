@@ -8,7 +8,7 @@
 // the RHI's on every backend, so no backend flips anything here.
 
 #include "lit_constants.glsl"
-#include "screen_space_constants.glsl"
+#include "screen_space_constants.glsl" // with the block Collection (penumbra::render::ScreenSpaceShadowUniforms)
 #include "transform.glsl"
 #include "shadow_filter.glsl"
 #include "soft_shadows.glsl"
@@ -19,16 +19,6 @@
 #endif
 #include "directional_light_shadow.glsl"
 #include "material.glsl"
-
-// penumbra::render::ScreenSpaceShadowUniforms.
-layout(std140, binding = PENUMBRA_BINDING_COLLECTION) uniform Collection {
-    mat4 clipToWorld;        // inverse of the lit pass's view-projection
-    vec4 cameraPosition;     // xyz
-    vec4 cameraForward;      // xyz, unit
-    int lightCount;          // lights collected
-    vec4 lightDirection[PENUMBRA_COLLECTED_LIGHTS]; // xyz from the light into the scene, w = shadow slot or -1
-    vec4 targetSize;         // width, height in pixels
-} collection;
 
 // The prepass's depth and its world position derivatives (receiver_prepass.frag), read with texelFetch.
 layout(binding = PENUMBRA_BINDING_COLLECTION_DEPTH) uniform sampler2D sceneDepth;
@@ -57,8 +47,8 @@ void main()
     const float viewDepth = -dot(collection.cameraPosition.xyz - position, collection.cameraForward.xyz);
     const CascadeSelection cascade = selectCascade(position, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
     for (int i = 0; i < collection.lightCount; ++i) {
-        const vec3 l = -collection.lightDirection[i].xyz;
-        const int slot = int(collection.lightDirection[i].w);
+        const vec3 l = -collection.lights[i].direction;
+        const int slot = collection.lights[i].shadowSlot;
         outShadows[i] = directionalLightShadow(i, slot, true, cascade, position, geometric, l);
     }
 }

@@ -6,7 +6,7 @@
 #include "instance.glsl"
 #include "material.glsl"
 #include "normal_offset.glsl"
-#include "shadow_caster.glsl"
+#include "caster_block.glsl"
 #include "transform.glsl"
 
 layout(location = 0) in vec3 inPosition;
@@ -28,15 +28,15 @@ vec4 casterClip()
     const bool positional = draw.light.w > 0.5;
     const vec3 towardsLight = mix(-draw.light.xyz, draw.light.xyz - world, bvec3(positional));
     const float distance = length(towardsLight);
-    const float reach = draw.reach.x * mix(1.0, distance, positional);
+    const float reach = draw.reach * mix(1.0, distance, positional);
     const vec4 moved =
         transformPoint(draw.viewProjection, world - receiverNormalOffset(normal, towardsLight / distance, reach));
-    return mix(plain, moved, bvec4(draw.reach.x > 0.0));
+    return mix(plain, moved, bvec4(draw.reach > 0.0));
 }
 
 void main()
 {
     const vec4 clip = casterClip();
-    gl_Position = mix(clip, penumbraClampToNearPlane(clip), bvec4(draw.material.w > 0.5));
+    gl_Position = mix(clip, penumbraClampToNearPlane(clip), bvec4(draw.pancake != 0));
     vUv = transformedUv(draw.baseColorUv, inUv, inUv1);
 }

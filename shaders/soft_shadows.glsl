@@ -187,22 +187,7 @@ float poissonFilter(sampler2D atlas, SoftTile t, float radius, int count)
     return lit / float(count);
 }
 
-// The controls of penumbra::shadows::SoftShadowUniforms.
-struct SoftControls {
-    float searchScale;
-    float penumbraScale;
-    float minTexels;
-    float maxTexels;
-    int blockerSamples;
-    int filterSamples;
-    float poissonRadius;
-};
-
-SoftControls softControls(vec4 scales, vec4 counts)
-{
-    return SoftControls(scales.x, scales.y, scales.z, scales.w, int(counts.x), int(counts.y), counts.z);
-}
-
+// SoftControls, the blocks' soft-filter settings, is generated from penumbra::shadows::SoftShadowUniforms.
 // The radius of the disk of taps, each blurring by `tapVariance` itself, that blurs as the uniform disk of radius
 // `penumbra` texels, clamped: penumbra::shadows::diskRadius.
 float diskRadius(float penumbra, float tapVariance, SoftControls c)

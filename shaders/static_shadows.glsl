@@ -4,18 +4,7 @@
 // shadow distance, and the static one combine by taking the darker, then the light's strength applies; a light
 // without realtime tiles keeps its static shadow. Needs directional_shadows.glsl and local_shadows.glsl first.
 
-layout(std140, binding = PENUMBRA_BINDING_STATIC_SHADOWS) uniform StaticShadows {
-    mat4 directionalWorldToMap[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
-    vec4 directionalBounds[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
-    vec4 directionalLights[PENUMBRA_MAX_STATIC_MAP_DIRECTIONAL_LIGHTS];
-    mat4 localWorldToMap[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-    vec4 localBounds[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-    vec4 localData[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-    vec4 atlasSizes;
-    vec4 directionalSoft[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
-    vec4 directionalSource[PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS];
-    vec4 localSoft[PENUMBRA_MAX_STATIC_LOCAL_TILES];
-} staticShadows;
+#include "static_shadows_block.glsl"
 
 // Read with texelFetch (shadow_filter.glsl), as the realtime atlases.
 layout(binding = PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS) uniform sampler2D staticDirectionalAtlas;
@@ -23,21 +12,21 @@ layout(binding = PENUMBRA_BINDING_STATIC_LOCAL_ATLAS) uniform sampler2D staticLo
 
 // Directional light `light`'s static map at a receiver (1 = lit), its normal offset as the cascades' over the
 // map's texel diagonal, filtered as the light's cascades are.
-float staticDirectionalVisibility(vec4 light, vec3 position, vec3 normal, vec3 towardsLight)
+float staticDirectionalVisibility(StaticDirectionalLight light, vec3 position, vec3 normal, vec3 towardsLight)
 {
-    const int tile = int(light.x);
-    precise vec3 biased = position + receiverNormalOffset(normal, towardsLight, light.z);
+    const int tile = light.tile;
+    precise vec3 biased = position + receiverNormalOffset(normal, towardsLight, light.normalOffset);
     const vec4 bounds = staticShadows.directionalBounds[tile];
     const vec3 p = transformPoint(staticShadows.directionalWorldToMap[tile], biased).xyz;
     // The map covers the static casters' bounding sphere: a receiver beside it (a dynamic object moved away) has no
     // static caster between it and the light.
-    const vec2 texel = p.xy * staticShadows.atlasSizes.x;
+    const vec2 texel = p.xy * staticShadows.directionalAtlasSize;
     if (any(lessThan(texel, bounds.xy)) || any(greaterThan(texel, bounds.zw + 1.0)))
         return 1.0;
-    return filterDirectionalTile(staticDirectionalAtlas, p, staticShadows.atlasSizes.x, ivec2(bounds.xy),
-                                 ivec2(bounds.zw), int(light.w), mat3(staticShadows.directionalWorldToMap[tile]),
-                                 staticShadows.directionalSoft[tile], staticShadows.directionalSource[tile].x,
-                                 staticShadows.directionalSource[tile].y);
+    return filterDirectionalTile(staticDirectionalAtlas, p, staticShadows.directionalAtlasSize, ivec2(bounds.xy),
+                                 ivec2(bounds.zw), light.shadowFilter, mat3(staticShadows.directionalWorldToMap[tile]),
+                                 staticShadows.directionalSoft[tile], staticShadows.directionalSource[tile].tanHalfAngle,
+                                 staticShadows.directionalSource[tile].texelWorldSize);
 }
 
 // A spot or point light's static map at a receiver (1 = lit), biased and filtered as its realtime tiles are.
@@ -45,24 +34,24 @@ float staticLocalVisibility(int firstTile, bool isPoint, vec3 lightPosition, vec
 {
     const vec3 fromLight = position - lightPosition;
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
-    const vec4 data = staticShadows.localData[local.tile];
+    const LocalShadowTile data = staticShadows.localTiles[local.tile];
     const mat4 m = staticShadows.localWorldToMap[local.tile];
-    const vec4 p = localShadowPosition(m, data.x, local.plane, fromLight, position, normal);
-    return filterLocalTile(staticLocalAtlas, staticShadows.atlasSizes.y, m, p, staticShadows.localBounds[local.tile],
-                           int(data.y), staticShadows.localSoft[local.tile]);
+    const vec4 p = localShadowPosition(m, data.normalBias, local.plane, fromLight, position, normal);
+    return filterLocalTile(staticLocalAtlas, staticShadows.localAtlasSize, m, p, staticShadows.localBounds[local.tile],
+                           data.shadowFilter, staticShadows.localSoft[local.tile]);
 }
 
 // Directional light `light` (the lit pass's index; `slot` its realtime shadow slot or -1) at a receiver, 1 = lit.
 float directionalAttenuation(int light, int slot, bool receives, CascadeSelection s, vec3 position, vec3 normal,
                              vec3 towardsLight)
 {
-    const vec4 map = staticShadows.directionalLights[light];
+    const StaticDirectionalLight map = staticShadows.directionalLights[light];
     if (!receives)
         return 1.0;
-    if (map.x < 0.0)
+    if (map.tile < 0)
         return directionalShadowAttenuation(slot, s, position, normal, towardsLight);
     const float realtime = directionalRealtimeShadow(slot, s, position, normal, towardsLight);
-    return mix(1.0, min(realtime, staticDirectionalVisibility(map, position, normal, towardsLight)), map.y);
+    return mix(1.0, min(realtime, staticDirectionalVisibility(map, position, normal, towardsLight)), map.strength);
 }
 
 // A spot or point light (`map` its static map's first tile or -1 and strength, `shadow` its first realtime tile or

@@ -100,7 +100,7 @@ std::optional<std::string> uncollectedShadows(const scene::Scene& scene, const s
 {
     const std::size_t count = std::min<std::size_t>(plan.shadowSlots.size(), maxLitDirectionalLights);
     for (std::size_t i = maxCollectedDirectionalLights; i < count; ++i)
-        if (plan.shadowSlots[i] >= 0 || staticMaps.directionalLights[i].x >= 0.0f)
+        if (plan.shadowSlots[i] >= 0 || staticMaps.directionalLights[i].tile >= 0)
             return fmt::format("screen-space shadows: directional light {} ('{}') has shadows, but the screen-space "
                                "shadow texture holds lights 0 to {}; the frame is drawn with forward shadows",
                                i, scene.lights[i].name, maxCollectedDirectionalLights - 1);

@@ -1,10 +1,13 @@
 #include "penumbra/render/LitUniforms.hpp"
 
 #include "penumbra/scene/Light.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/FilterConstants.hpp"
+#include "penumbra/shadows/LocalShadowUniforms.hpp"
 #include "penumbra/shadows/ShaderInterface.hpp"
+#include "penumbra/shadows/StaticShadowUniforms.hpp"
 
 #include <fmt/format.h>
 
@@ -33,8 +36,6 @@ std::string litConstants(const LitShaderFeatures& features)
     }
     text += fmt::format("#define PENUMBRA_TEXTURE_SLOTS {}\n", scene::kTextureSlots);
     text += fmt::format("#define PENUMBRA_BINDING_COVERAGE_MAP {}\n", kLitCoverageMapBinding);
-    text += fmt::format("#define PENUMBRA_BINDING_FRAME {}\n#define PENUMBRA_BINDING_OBJECT {}\n", kLitFrameBinding,
-                        kLitObjectBinding);
     text += fmt::format("#define PENUMBRA_MAX_LIT_DIRECTIONAL_LIGHTS {}\n", maxLitDirectionalLights);
     text += fmt::format("#define PENUMBRA_LIT_DATA_WIDTH_LOG2 {}\n#define PENUMBRA_LIT_DATA_WIDTH {}\n",
                         kLitDataTextureWidthLog2, kLitDataTextureWidth);
@@ -93,22 +94,31 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
     source.includes.push_back(
         {"shadow_constants.glsl",
          shadows::filterConstantsGlsl() + shadows::cascadeProjectionConstantsGlsl() + shadows::shadowInterfaceGlsl() +
-             fmt::format("#define PENUMBRA_BINDING_DIRECTIONAL_SHADOWS {}\n"
-                         "#define PENUMBRA_BINDING_DIRECTIONAL_ATLAS {}\n"
-                         "#define PENUMBRA_BINDING_LOCAL_SHADOWS {}\n"
+             shaders::structGlsl(shadows::kSoftShadowStruct) +
+             fmt::format("#define PENUMBRA_BINDING_DIRECTIONAL_ATLAS {}\n"
                          "#define PENUMBRA_BINDING_LOCAL_ATLAS {}\n"
                          "#define PENUMBRA_BINDING_SHADOW_CUBES {}\n"
                          "#define PENUMBRA_BINDING_SHADOW_CUBE_DEPTHS {}\n"
-                         "#define PENUMBRA_BINDING_STATIC_SHADOWS {}\n"
                          "#define PENUMBRA_BINDING_STATIC_DIRECTIONAL_ATLAS {}\n"
                          "#define PENUMBRA_BINDING_STATIC_LOCAL_ATLAS {}\n"
                          "#define PENUMBRA_TENT_FILTERS {}\n"
                          "#define PENUMBRA_SOFT_FILTERS {}\n"
                          "#define PENUMBRA_SHADOW_CUBES {}\n",
-                         kLitShadowBinding, kLitAtlasBinding, kLitLocalShadowBinding, kLitLocalAtlasBinding,
-                         kLitShadowCubesBinding, kLitShadowCubeDepthsBinding, kLitStaticShadowBinding,
+                         kLitAtlasBinding, kLitLocalAtlasBinding, kLitShadowCubesBinding, kLitShadowCubeDepthsBinding,
                          kLitStaticDirectionalAtlasBinding, kLitStaticLocalAtlasBinding, features.tentFilters ? 1 : 0,
                          features.softFilters ? 1 : 0, features.shadowCubes ? 1 : 0)});
+    source.includes.push_back(
+        {"lit_blocks.glsl", shaders::uniformBlockGlsl(kLitFrameBlock, kLitFrameBinding, "frame") +
+                                shaders::uniformBlockGlsl(kLitObjectBlock, kLitObjectBinding, "object")});
+    source.includes.push_back(
+        {"directional_shadows_block.glsl",
+         shaders::uniformBlockGlsl(shadows::kDirectionalShadowBlock, kLitShadowBinding, "shadows")});
+    source.includes.push_back(
+        {"local_shadows_block.glsl",
+         shaders::uniformBlockGlsl(shadows::kLocalShadowBlock, kLitLocalShadowBinding, "localShadows")});
+    source.includes.push_back(
+        {"static_shadows_block.glsl",
+         shaders::uniformBlockGlsl(shadows::kStaticShadowBlock, kLitStaticShadowBinding, "staticShadows")});
     return source;
 }
 

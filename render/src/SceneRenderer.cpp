@@ -214,8 +214,9 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     const std::vector<scene::DirectionalLight>& lights = gpuScene_.scene().lights;
     const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(lights.size(), maxLitDirectionalLights));
     for (std::uint32_t i = 0; i < count; ++i) {
-        u.lightColor[i] = glm::vec4(lights[i].color * lights[i].intensity, 0.0f);
-        u.lightDirection[i] = glm::vec4(glm::normalize(lights[i].direction), static_cast<float>(plan_.shadowSlots[i]));
+        u.lights[i] = {.color = lights[i].color * lights[i].intensity,
+                       .shadowSlot = plan_.shadowSlots[i],
+                       .direction = glm::normalize(lights[i].direction)};
     }
     u.ambient = glm::vec4(frame.ambient.sky(), 0.0f);
     u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);

@@ -24,15 +24,15 @@ shadows::ShadowFilter plannedShadowFilter(const ShadowPlans& plans, const scene:
         const int tile = light.index < plans.local.spotTiles.size() ? plans.local.spotTiles[light.index] : -1;
         if (tile < 0)
             throw noShadow();
-        return static_cast<shadows::ShadowFilter>(plans.local.uniforms.tileData[std::size_t(tile)].y);
+        return static_cast<shadows::ShadowFilter>(plans.local.uniforms.tiles[std::size_t(tile)].shadowFilter);
     }
     case scene::LightKind::Point: {
         const int shadow = light.index < plans.local.pointShadows.size() ? plans.local.pointShadows[light.index] : -1;
         if (shadow < 0)
             throw noShadow();
-        return static_cast<shadows::ShadowFilter>(plans.local.cubes.empty()
-                                                      ? plans.local.uniforms.tileData[std::size_t(shadow)].y
-                                                      : plans.local.uniforms.cubeSoft[std::size_t(shadow)].x);
+        if (plans.local.cubes.empty())
+            return static_cast<shadows::ShadowFilter>(plans.local.uniforms.tiles[std::size_t(shadow)].shadowFilter);
+        return static_cast<shadows::ShadowFilter>(plans.local.uniforms.cubes[std::size_t(shadow)].shadowFilter);
     }
     }
     throw noShadow();

@@ -99,6 +99,21 @@ std::uint32_t memberSize(const spirv_cross::Compiler& compiler, const spirv_cros
     return std::uint32_t(compiler.get_declared_struct_member_size(block, i));
 }
 
+// The members of `type` (a block or struct) at `base`, and those of its struct members as "outer.inner" (the first
+// element's where the member is an array), so a layout check reaches every field.
+void appendMembers(const spirv_cross::Compiler& compiler, const spirv_cross::SPIRType& type, const std::string& prefix,
+                   std::uint32_t base, std::vector<UniformMember>& members)
+{
+    for (std::uint32_t i = 0; i < type.member_types.size(); ++i) {
+        const std::string name = prefix + compiler.get_member_name(type.self, i);
+        const std::uint32_t offset = base + compiler.type_struct_member_offset(type, i);
+        members.push_back({name, offset, memberSize(compiler, type, i)});
+        const spirv_cross::SPIRType& member = compiler.get_type(type.member_types[i]);
+        if (member.basetype == spirv_cross::SPIRType::Struct)
+            appendMembers(compiler, compiler.get_type(member.self), name + ".", offset, members);
+    }
+}
+
 std::vector<ShaderBinding> reflectBindings(const spirv_cross::Compiler& compiler, const std::string& name)
 {
     const spirv_cross::ShaderResources resources = compiler.get_shader_resources();
@@ -120,9 +135,7 @@ std::vector<ShaderBinding> reflectBindings(const spirv_cross::Compiler& compiler
         if (kind == BindingKind::UniformBuffer || kind == BindingKind::StorageBuffer) {
             const spirv_cross::SPIRType& block = compiler.get_type(r.base_type_id);
             b.size = std::uint32_t(compiler.get_declared_struct_size(block));
-            for (std::uint32_t i = 0; i < block.member_types.size(); ++i)
-                b.members.push_back({compiler.get_member_name(r.base_type_id, i),
-                                     compiler.type_struct_member_offset(block, i), memberSize(compiler, block, i)});
+            appendMembers(compiler, block, "", 0, b.members);
         }
         if (kind == BindingKind::StorageBuffer)
             b.writes = !compiler.get_buffer_block_flags(r.id).get(spv::DecorationNonWritable);

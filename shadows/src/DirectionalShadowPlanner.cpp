@@ -38,8 +38,8 @@ void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& setting
     const float atlasFactor = normalBiasFilterFactor(settings.directional.filter);
     for (std::size_t slot = 0; slot < plan.lights.size(); ++slot) {
         const ShadowedDirectionalLight& light = plan.lights[slot];
-        u.lightSoft[slot] = {tanHalfAngularDiameter(light.angularDiameter),
-                             normalBiasFilterFactor(light.filter) / atlasFactor, 0.0f, 0.0f};
+        u.lights[slot].tanHalfAngle = tanHalfAngularDiameter(light.angularDiameter);
+        u.lights[slot].filterBiasScale = normalBiasFilterFactor(light.filter) / atlasFactor;
     }
 }
 
@@ -70,8 +70,10 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
         const ShadowedDirectionalLight& light = plan.lights[slot];
         // On the caster side the lit pass looks up where the surface is.
         const float receiverBias = light.normalBiasSide == NormalBiasSide::Receiver ? light.normalBias : 0.0f;
-        u.lightShadowData[slot] = {light.strength, receiverBias, static_cast<float>(light.firstTile),
-                                   static_cast<float>(light.filter)};
+        u.lights[slot].strength = light.strength;
+        u.lights[slot].normalBias = receiverBias;
+        u.lights[slot].firstTile = static_cast<std::int32_t>(light.firstTile);
+        u.lights[slot].shadowFilter = static_cast<std::int32_t>(light.filter);
         for (const DirectionalCascadePlan& cascade : light.cascades) {
             u.worldToAtlas[cascade.tile] = cascade.worldToAtlas;
             u.tileBounds[cascade.tile] = plan.atlas.tileTexelBounds(cascade.tile);

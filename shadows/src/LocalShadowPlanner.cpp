@@ -125,7 +125,7 @@ void addTile(LocalShadowPlan& plan, std::uint32_t tile, LocalShadowView view, fl
 {
     plan.uniforms.worldToAtlas[tile] = worldToAtlas(view.viewProjection, tile, plan.atlas, conventions);
     plan.uniforms.tileBounds[tile] = plan.atlas.tileTexelBounds(tile);
-    plan.uniforms.tileData[tile] = {normalBiasScale, static_cast<float>(soft.filter), 0.0f, 0.0f};
+    plan.uniforms.tiles[tile] = {.normalBias = normalBiasScale, .shadowFilter = static_cast<std::int32_t>(soft.filter)};
     plan.uniforms.tileSoft[tile] = soft.tileSoft;
     plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});
 }
@@ -175,10 +175,10 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
     const glm::mat4 toTexture = conventions.clipToTexture() * projection;
     const ShadowFilter filter = point.filter.value_or(local.filter);
     const float bias = localNormalBiasScale(projection, local.cubeMapSize, filter, point.normalBias);
-    plan.uniforms.cubeSoft[plan.cubes.size()] = {static_cast<float>(filter),
-                                                 point.sourceRadius /
-                                                     std::abs(texelSizeAtUnitDistance(projection, local.cubeMapSize)),
-                                                 nearPlane, 0.0f};
+    LocalShadowCube& shadowCube = plan.uniforms.cubes[plan.cubes.size()];
+    shadowCube.shadowFilter = static_cast<std::int32_t>(filter);
+    shadowCube.lightTexels = point.sourceRadius / std::abs(texelSizeAtUnitDistance(projection, local.cubeMapSize));
+    shadowCube.nearPlane = nearPlane;
     ShadowCube cube;
     cube.lightIndex = pointIndex;
     float receiverBias = bias;
@@ -192,8 +192,9 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
                     {}};
         receiverBias = sideOfNormalBias(faceView, point.normalBiasSide, bias, point.position);
     }
-    plan.uniforms.cubeData[plan.cubes.size()] = {toTexture[2][2], toTexture[3][2], receiverBias,
-                                                 1.0f / static_cast<float>(local.cubeMapSize)};
+    shadowCube.depthRow = {toTexture[2][2], toTexture[3][2]};
+    shadowCube.normalBias = receiverBias;
+    shadowCube.invFaceSize = 1.0f / static_cast<float>(local.cubeMapSize);
     plan.cubes.push_back(std::move(cube));
 }
 

@@ -43,7 +43,6 @@ std::string casterConstantsGlsl()
                {"CASTER_OPAQUE", valueOf(ShadowCasterMode::Opaque)},
                {"CASTER_CLIP", valueOf(ShadowCasterMode::Clip)},
                {"CASTER_DITHER", valueOf(ShadowCasterMode::Dither)},
-               {"BINDING_CASTER_DRAW", kCasterDrawBinding},
                {"BINDING_CASTER_BASE_COLOR", kCasterBaseColorBinding},
            });
 }

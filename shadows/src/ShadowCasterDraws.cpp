@@ -2,6 +2,7 @@
 
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 #include "penumbra/shadows/InstanceTransform.hpp"
 #include "penumbra/shadows/ShaderInterface.hpp"
@@ -17,18 +18,24 @@ rhi::ShaderSource casterShader(std::string_view fileName)
     rhi::ShaderSource source = shaders::load(fileName);
     source.includes.push_back({"caster_constants.glsl", casterConstantsGlsl()});
     source.includes.push_back({"instance_constants.glsl", instanceConstantsGlsl()});
+    source.includes.push_back(
+        {"caster_block.glsl", shaders::uniformBlockGlsl(kShadowCasterBlock, kCasterDrawBinding, "draw")});
     return source;
 }
 
-ShadowCasterUniforms casterUniforms(const ShadowViewDraw& view, const ShadowCaster& caster, float pancakeInShader)
+ShadowCasterUniforms casterUniforms(const ShadowViewDraw& view, const ShadowCaster& caster, bool pancakeInShader)
 {
-    ShadowCasterUniforms u{view.viewProjection,
-                           {caster.alpha, caster.alphaCutoff, static_cast<float>(caster.mode), pancakeInShader},
-                           {view.ditherOrigin, caster.textured ? 1.0f : 0.0f, 0.0f},
-                           caster.baseColorUv};
+    ShadowCasterUniforms u{.viewProjection = view.viewProjection,
+                           .alpha = caster.alpha,
+                           .alphaCutoff = caster.alphaCutoff,
+                           .casterMode = static_cast<std::int32_t>(caster.mode),
+                           .pancake = pancakeInShader ? 1 : 0,
+                           .ditherOrigin = view.ditherOrigin,
+                           .textured = caster.textured ? 1 : 0,
+                           .baseColorUv = caster.baseColorUv};
     if (view.normalOffset.reach > 0.0f) {
         u.light = view.normalOffset.light;
-        u.reach = {view.normalOffset.reach, 0.0f, 0.0f, 0.0f};
+        u.reach = view.normalOffset.reach;
     }
     return u;
 }
@@ -92,7 +99,7 @@ const ShadowCasterDraws::Pipelines& ShadowCasterDraws::pipelines(rhi::Format dep
     addInstanceAttributes(desc.vertexLayout, kInstanceSlot);
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer, .clamp = clamp};
     desc.depthFormat = depthFormat;
-    desc.uniformLayouts = {shadowCasterLayout()};
+    desc.uniformLayouts = {shaders::uniformLayout(kShadowCasterBlock)};
     Pipelines created;
     for (const bool doubleSided : {false, true}) {
         // Casters render their light-facing side, also through the mirrored cube face views; double-sided
@@ -113,7 +120,7 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
                                       std::span<const std::uint32_t> indices, std::span<const ShadowCaster> casters)
 {
     const bool depthClamp = view.pancake && device_.capabilities().depthClamp;
-    const float pancakeInShader = view.pancake && !depthClamp ? 1.0f : 0.0f;
+    const bool pancakeInShader = view.pancake && !depthClamp;
     const Pipelines& pipelines = this->pipelines(depthFormat, depthClamp, view.mirrored);
     const rhi::DepthBias bias{0.0f, view.slopeScaleBias, 0.0f};
     for (const std::uint32_t index : indices)

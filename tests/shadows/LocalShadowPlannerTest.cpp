@@ -101,7 +101,7 @@ TEST(SpotShadow, AxisHitsTheTileCentreAndTheConeEdgeItsBorder)
         EXPECT_NEAR(atlasPosition(plan, 0, edge).x, 1.0f, 1e-4f);
         // Normal bias: texel size at distance 1 x filter factor x sqrt 2.
         const float texel = 2.0f * std::tan(spot.outerAngle) / static_cast<float>(settings.local.atlasSize);
-        EXPECT_NEAR(plan.uniforms.tileData[0].x, texel * std::sqrt(2.0f), 1e-6f);
+        EXPECT_NEAR(plan.uniforms.tiles[0].normalBias, texel * std::sqrt(2.0f), 1e-6f);
     }
 }
 

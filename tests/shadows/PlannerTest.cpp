@@ -77,8 +77,11 @@ TEST(DirectionalShadowPlanner, TilesViewportsAndUniformsAgree)
     EXPECT_EQ(u.cascadeBlend, 1);
     EXPECT_EQ(u.shadowedLightCount, 4);
     EXPECT_EQ(u.atlasSize, 1024.0f);
-    // w: the light's filter, the atlas's PCF5x5 for a light without its own.
-    EXPECT_EQ(u.lightShadowData[1], glm::vec4(1.0f, 0.5f, 4.0f, 2.0f));
+    // The light's filter is the atlas's PCF5x5 for a light without its own.
+    EXPECT_EQ(u.lights[1].strength, 1.0f);
+    EXPECT_EQ(u.lights[1].normalBias, 0.5f);
+    EXPECT_EQ(u.lights[1].firstTile, 4);
+    EXPECT_EQ(u.lights[1].shadowFilter, 2);
     ASSERT_EQ(plan.cascadeData.size(), 4u);
     for (std::uint32_t c = 0; c < 4; ++c) {
         EXPECT_EQ(u.cullingSpheres[c], plan.cascadeData[c].selectionSphere);

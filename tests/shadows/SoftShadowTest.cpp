@@ -362,9 +362,9 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
             planDirectionalShadows(settings, conventions, cameraAt({0, 2, 5}), lights, casters);
         const DirectionalShadowPlan b =
             planDirectionalShadows(settings, conventions, cameraAt({0.37f, 2, 4.1f}), lights, casters);
-        EXPECT_EQ(a.uniforms.lightShadowData[0].w, static_cast<float>(ShadowFilter::PCSS));
-        EXPECT_NEAR(a.uniforms.lightSoft[0].x, std::tan(0.0261799f), 1e-6f);
-        EXPECT_EQ(a.uniforms.lightSoft[0].y, 1.0f); // PCSS's normal offset is the 2x2's, the atlas's default
+        EXPECT_EQ(a.uniforms.lights[0].shadowFilter, static_cast<int>(ShadowFilter::PCSS));
+        EXPECT_NEAR(a.uniforms.lights[0].tanHalfAngle, std::tan(0.0261799f), 1e-6f);
+        EXPECT_EQ(a.uniforms.lights[0].filterBiasScale, 1.0f); // PCSS's normal offset is the 2x2's, the atlas's default
         for (const DirectionalCascadePlan& cascade : a.lights[0].cascades) {
             const glm::vec4 soft = a.uniforms.tileSoft[cascade.tile];
             const glm::vec2 row{soft.z, soft.w};
@@ -418,16 +418,16 @@ TEST(SoftPlannerTest, LocalLightsCarryTheirFilterRadiusAndNearPlane)
                                                       std::span(&spot, 1), std::span(&point, 1), casters);
         const int tile = plan.spotTiles[0];
         ASSERT_GE(tile, 0);
-        EXPECT_EQ(plan.uniforms.tileData[tile].y, static_cast<float>(ShadowFilter::PCSS));
+        EXPECT_EQ(plan.uniforms.tiles[tile].shadowFilter, static_cast<int>(ShadowFilter::PCSS));
         // lightTexels = R x tile size x P[0][0] / 2.
         const float p00 = 1.0f / std::tan(spot.outerAngle);
         EXPECT_NEAR(plan.uniforms.tileSoft[tile].z, 0.2f * static_cast<float>(plan.atlas.tileSize()) * p00 / 2.0f,
                     1e-3f);
         EXPECT_NEAR(plan.uniforms.tileSoft[tile].w, 0.01f * spot.range, 1e-6f);
         if (mode == PointShadowMode::CubeMap)
-            EXPECT_EQ(plan.uniforms.cubeSoft[0].x, static_cast<float>(ShadowFilter::Poisson));
+            EXPECT_EQ(plan.uniforms.cubes[0].shadowFilter, static_cast<int>(ShadowFilter::Poisson));
         else
-            EXPECT_EQ(plan.uniforms.tileData[plan.pointShadows[0]].y, static_cast<float>(ShadowFilter::Poisson));
+            EXPECT_EQ(plan.uniforms.tiles[plan.pointShadows[0]].shadowFilter, static_cast<int>(ShadowFilter::Poisson));
     }
 }
 

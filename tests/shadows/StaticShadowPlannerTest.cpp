@@ -43,7 +43,7 @@ TEST(StaticShadowPlanner, DirectionalMapHoldsEveryStaticCasterInsideItsTile)
             planStaticShadows(cachedSettings(), conventions, lights, {}, {}, {kBounds, kStatic});
         ASSERT_EQ(plan.maps.size(), 2u); // the light without strength has none
         EXPECT_EQ(plan.directionalAtlas.tileCount(), 2u);
-        EXPECT_EQ(plan.uniforms.directionalLights[1].x, -1.0f);
+        EXPECT_EQ(plan.uniforms.directionalLights[1].tile, -1);
         for (std::uint32_t m = 0; m < 2; ++m) {
             const StaticShadowMap& map = plan.maps[m];
             EXPECT_EQ(map.kind, ShadowLightKind::Directional);
@@ -64,7 +64,7 @@ TEST(StaticShadowPlanner, DirectionalMapHoldsEveryStaticCasterInsideItsTile)
                     EXPECT_LE(p.z, 1.0f + 1e-4f);
                 }
         }
-        EXPECT_EQ(plan.uniforms.directionalLights[2].x, static_cast<float>(plan.maps[1].tiles[0].tile));
+        EXPECT_EQ(plan.uniforms.directionalLights[2].tile, static_cast<int>(plan.maps[1].tiles[0].tile));
     }
 }
 
@@ -111,9 +111,9 @@ TEST(StaticShadowPlanner, SoftFiltersStayWithTheirSoftData)
     const std::vector<DirectionalShadowLightInput> sun{{.filter = ShadowFilter::PCSS, .angularDiameter = 2.0f}};
     const StaticShadowPlan plan = planStaticShadows(cachedSettings(), conventions, sun, {}, {}, {kBounds, kStatic});
     EXPECT_TRUE(plan.report.empty());
-    EXPECT_EQ(plan.uniforms.directionalLights[0].w, static_cast<float>(ShadowFilter::PCSS));
-    EXPECT_FLOAT_EQ(plan.uniforms.directionalSource[0].x, tanHalfAngularDiameter(2.0f));
-    EXPECT_FLOAT_EQ(plan.uniforms.directionalSource[0].y, plan.maps[0].texelSize);
+    EXPECT_EQ(plan.uniforms.directionalLights[0].shadowFilter, static_cast<int>(ShadowFilter::PCSS));
+    EXPECT_FLOAT_EQ(plan.uniforms.directionalSource[0].tanHalfAngle, tanHalfAngularDiameter(2.0f));
+    EXPECT_FLOAT_EQ(plan.uniforms.directionalSource[0].texelWorldSize, plan.maps[0].texelSize);
     EXPECT_NE(plan.uniforms.directionalSoft[0].z, 0.0f) << "the depth row";
 }
 

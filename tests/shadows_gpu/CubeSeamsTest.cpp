@@ -165,7 +165,7 @@ private:
         const float distanceToPlane = glm::dot(position - light_, shadows::cubeFaceAxis(face));
         const glm::vec3 biased =
             position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
-                                                     distanceToPlane * plan_.uniforms.tileData[tile].x);
+                                                     distanceToPlane * plan_.uniforms.tiles[tile].normalBias);
         const glm::vec4 p = plan_.uniforms.worldToAtlas[tile] * glm::vec4(biased, 1.0f);
         const glm::vec2 texel =
             glm::vec2(p) / p.w * float(plan_.atlas.atlasSize()) - glm::vec2(plan_.atlas.tileOffset(tile));
@@ -178,16 +178,19 @@ private:
     // the face it reads, as hardware cube sampling does (the faces' texel addressing: rhi::cubeFaceView).
     float cubeShadow(CubeFace face, glm::vec3 position, glm::vec3 normal) const
     {
-        const glm::vec4 data = plan_.uniforms.cubeData[0];
+        const shadows::LocalShadowCube& data = plan_.uniforms.cubes[0];
         const glm::vec3 axis = shadows::cubeFaceAxis(face);
-        const glm::vec3 biased = position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
-                                                                          glm::dot(position - light_, axis) * data.z);
+        const glm::vec3 biased =
+            position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
+                                                     glm::dot(position - light_, axis) * data.normalBias);
         const glm::vec3 d = biased - light_;
         const float major = rhi::cubeFaceViewDepth(d);
-        const float reference = (data.x * -major + data.y) / major;
+        const float reference = (data.depthRow.x * -major + data.depthRow.y) / major;
         const int f = static_cast<int>(face);
-        const glm::vec3 u = shadows::cubeFaceAxis(static_cast<CubeFace>((f + 2) % 6)) * (2.0f * major * data.w);
-        const glm::vec3 v = shadows::cubeFaceAxis(static_cast<CubeFace>((f + 4) % 6)) * (2.0f * major * data.w);
+        const glm::vec3 u =
+            shadows::cubeFaceAxis(static_cast<CubeFace>((f + 2) % 6)) * (2.0f * major * data.invFaceSize);
+        const glm::vec3 v =
+            shadows::cubeFaceAxis(static_cast<CubeFace>((f + 4) % 6)) * (2.0f * major * data.invFaceSize);
         const int k = shadows::filterSize(kFilter);
         float lit = 0.0f;
         for (int y = 0; y < k; ++y)

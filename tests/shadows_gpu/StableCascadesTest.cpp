@@ -58,7 +58,7 @@ float lookUp(const ShadowFrame& frame, const rhi::Conventions& conventions, std:
 {
     const shadows::DirectionalShadowUniforms& u = frame.plan.uniforms;
     const glm::vec3 normal{0.0f, 1.0f, 0.0f};
-    const glm::vec3 biased = p + normal * (u.lightShadowData[0].y * u.cascadeData[cascade].y);
+    const glm::vec3 biased = p + normal * (u.lights[0].normalBias * u.cascadeData[cascade].y);
     const glm::vec4 atlas = u.worldToAtlas[cascade] * glm::vec4(biased, 1.0f);
     const glm::vec2 corner = glm::vec2(atlas) * u.atlasSize - 0.5f;
     const glm::vec2 base = glm::floor(corner);

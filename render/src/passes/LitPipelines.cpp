@@ -62,8 +62,10 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
     desc.vertexLayout = GpuScene::vertexLayout();
     desc.depthFormat = kLitDepthFormat;
     desc.samples = samples_;
-    desc.uniformLayouts = {litFrameLayout(), litObjectLayout(), shadows::directionalShadowLayout(),
-                           shadows::localShadowLayout(), shadows::staticShadowLayout()};
+    desc.uniformLayouts = {shaders::uniformLayout(kLitFrameBlock), shaders::uniformLayout(kLitObjectBlock),
+                           shaders::uniformLayout(shadows::kDirectionalShadowBlock),
+                           shaders::uniformLayout(shadows::kLocalShadowBlock),
+                           shaders::uniformLayout(shadows::kStaticShadowBlock)};
     desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
     rhi::ColorTarget target{kLitColorFormat};
     if (features.depthPrepassed) {
@@ -97,21 +99,21 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
 {
     const shadows::StaticShadowUniforms& staticMaps = staticPlan.uniforms;
     std::vector<int> filters{directional.defaultFilter, local.defaultFilter};
-    for (const glm::vec4& light : directional.lightShadowData)
-        filters.push_back(static_cast<int>(light.w));
-    for (const glm::vec4& tile : local.tileData)
-        filters.push_back(static_cast<int>(tile.y));
-    for (const glm::vec4& cube : local.cubeSoft)
-        filters.push_back(static_cast<int>(cube.x));
+    for (const shadows::DirectionalShadowLight& light : directional.lights)
+        filters.push_back(light.shadowFilter);
+    for (const shadows::LocalShadowTile& tile : local.tiles)
+        filters.push_back(tile.shadowFilter);
+    for (const shadows::LocalShadowCube& cube : local.cubes)
+        filters.push_back(cube.shadowFilter);
     bool staticShadows = false;
-    for (const glm::vec4& light : staticMaps.directionalLights) {
-        staticShadows = staticShadows || light.x >= 0.0f;
-        filters.push_back(static_cast<int>(light.w));
+    for (const shadows::StaticDirectionalLight& light : staticMaps.directionalLights) {
+        staticShadows = staticShadows || light.tile >= 0;
+        filters.push_back(light.shadowFilter);
     }
     for (const glm::vec4& light : staticPlan.localLightMaps)
         staticShadows = staticShadows || light.x >= 0.0f;
-    for (const glm::vec4& tile : staticMaps.localData)
-        filters.push_back(static_cast<int>(tile.y));
+    for (const shadows::LocalShadowTile& tile : staticMaps.localTiles)
+        filters.push_back(tile.shadowFilter);
     LitShaderFeatures features;
     features.localLights = frame.localLightCount > 0;
     features.staticShadows = staticShadows;

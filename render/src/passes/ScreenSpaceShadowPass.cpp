@@ -14,20 +14,6 @@
 namespace penumbra::render {
 namespace {
 
-rhi::UniformLayout collectionLayout()
-{
-    return {"Collection",
-            sizeof(ScreenSpaceShadowUniforms),
-            {
-                PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, clipToWorld),
-                PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, cameraPosition),
-                PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, cameraForward),
-                PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, lightCount),
-                PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, lightDirection),
-                PENUMBRA_UNIFORM_MEMBER(ScreenSpaceShadowUniforms, targetSize),
-            }};
-}
-
 // The parts of the lit shader the collection compiles: those of its directional shadows.
 std::uint32_t shadowFeatureKey(const LitShaderFeatures& f)
 {
@@ -39,11 +25,11 @@ rhi::ShaderSource collectionShader(const LitShaderFeatures& features)
     rhi::ShaderSource source = litShader("screen_space_shadows.frag", features);
     source.includes.push_back(
         {"screen_space_constants.glsl",
-         fmt::format("#define PENUMBRA_BINDING_COLLECTION {}\n#define PENUMBRA_BINDING_COLLECTION_DEPTH {}\n"
-                     "#define PENUMBRA_BINDING_COLLECTION_POSITION_DX {}\n"
-                     "#define PENUMBRA_BINDING_COLLECTION_POSITION_DY {}\n",
-                     kCollectionBinding, kCollectionDepthBinding, kCollectionPositionDxBinding,
-                     kCollectionPositionDyBinding)});
+         shaders::uniformBlockGlsl(kCollectionBlock, kCollectionBinding, "collection") +
+             fmt::format("#define PENUMBRA_BINDING_COLLECTION_DEPTH {}\n"
+                         "#define PENUMBRA_BINDING_COLLECTION_POSITION_DX {}\n"
+                         "#define PENUMBRA_BINDING_COLLECTION_POSITION_DY {}\n",
+                         kCollectionDepthBinding, kCollectionPositionDxBinding, kCollectionPositionDyBinding)});
     return source;
 }
 
@@ -67,7 +53,7 @@ ScreenSpaceShadowUniforms screenSpaceShadowUniforms(const LitFrameUniforms& fram
     u.cameraPosition = frame.cameraPosition;
     u.cameraForward = frame.cameraForward;
     const int lights = std::min(frame.directionalLightCount, static_cast<int>(maxCollectedDirectionalLights));
-    std::copy_n(frame.lightDirection.begin(), lights, u.lightDirection.begin());
+    std::copy_n(frame.lights.begin(), lights, u.lights.begin());
     u.targetSize = glm::vec4(static_cast<float>(width), static_cast<float>(height), 0.0f, 0.0f);
     u.lightCount = lights;
     return u;
@@ -107,11 +93,12 @@ const rhi::Pipeline& ScreenSpaceShadowPass::pipeline(const LitShaderFeatures& fe
     desc.vertex = vertex_.get();
     desc.fragment = fragment.get();
     desc.colorTargets = {rhi::ColorTarget{kScreenSpaceShadowFormat}};
-    desc.uniformLayouts = {collectionLayout(), shadows::directionalShadowLayout()};
+    desc.uniformLayouts = {shaders::uniformLayout(kCollectionBlock),
+                           shaders::uniformLayout(shadows::kDirectionalShadowBlock)};
     // The static maps' functions come with local_shadows.glsl's block (screen_space_shadows.frag).
     if (features.staticShadows)
-        desc.uniformLayouts.insert(desc.uniformLayouts.end(),
-                                   {shadows::localShadowLayout(), shadows::staticShadowLayout()});
+        desc.uniformLayouts.insert(desc.uniformLayouts.end(), {shaders::uniformLayout(shadows::kLocalShadowBlock),
+                                                               shaders::uniformLayout(shadows::kStaticShadowBlock)});
     desc.debugName = fmt::format("screen-space shadows (features {:#x})", key);
     pipeline = device_.createPipeline(desc);
     return *pipeline;

@@ -28,11 +28,22 @@ struct ScreenSpaceShadowUniforms {
     glm::vec4 cameraPosition{0.0f};
     glm::vec4 cameraForward{0.0f};
     std::int32_t lightCount = 0; // lights collected
-    // as LitFrameUniforms::lightDirection; std140 aligns a vec4 array to 16 bytes
-    alignas(16) std::array<glm::vec4, maxCollectedDirectionalLights> lightDirection{};
-    glm::vec4 targetSize{0.0f};
+    alignas(16) std::array<LitDirectionalLight, maxCollectedDirectionalLights> lights{}; // LitFrameUniforms::lights
+    glm::vec4 targetSize{0.0f}; // width, height in pixels
 };
-static_assert(sizeof(ScreenSpaceShadowUniforms) == 192);
+
+inline constexpr std::array kCollectionFields{
+    PENUMBRA_SHADER_FIELD(ScreenSpaceShadowUniforms, clipToWorld),
+    PENUMBRA_SHADER_FIELD(ScreenSpaceShadowUniforms, cameraPosition),
+    PENUMBRA_SHADER_FIELD(ScreenSpaceShadowUniforms, cameraForward),
+    PENUMBRA_SHADER_FIELD(ScreenSpaceShadowUniforms, lightCount),
+    PENUMBRA_SHADER_STRUCT_FIELD(ScreenSpaceShadowUniforms, lights, kLitDirectionalLightStruct),
+    PENUMBRA_SHADER_FIELD(ScreenSpaceShadowUniforms, targetSize),
+};
+// screen_space_shadows.frag's block Collection, read through the instance name `collection`.
+inline constexpr shaders::ShaderStruct kCollectionBlock{"Collection", sizeof(ScreenSpaceShadowUniforms),
+                                                        kCollectionFields};
+static_assert(shaders::matchesLayout(kCollectionBlock, shaders::BlockLayout::Std140));
 
 // The lit pass's frame block as the collection reads it: the inverse of its view-projection (inverted in double, so
 // the reconstructed positions lose no more than the depth's own precision), its camera and its first lights.

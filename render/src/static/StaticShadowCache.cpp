@@ -168,15 +168,16 @@ void StaticShadowCache::keepDrawn(shadows::StaticShadowMap& map, shadows::Static
         uniforms.directionalWorldToMap[tile] = was.directionalWorldToMap[tile];
         uniforms.directionalBounds[tile] = was.directionalBounds[tile];
         if (map.litIndex < shadows::maxStaticMapDirectionalLights &&
-            old.litIndex < shadows::maxStaticMapDirectionalLights)
-            uniforms.directionalLights[map.litIndex] =
-                glm::vec4(was.directionalLights[old.litIndex].x, uniforms.directionalLights[map.litIndex].y,
-                          was.directionalLights[old.litIndex].z, was.directionalLights[old.litIndex].w);
+            old.litIndex < shadows::maxStaticMapDirectionalLights) {
+            const float strength = uniforms.directionalLights[map.litIndex].strength;
+            uniforms.directionalLights[map.litIndex] = was.directionalLights[old.litIndex];
+            uniforms.directionalLights[map.litIndex].strength = strength;
+        }
     } else {
         for (const shadows::StaticShadowTile& tile : map.tiles) {
             uniforms.localWorldToMap[tile.tile] = was.localWorldToMap[tile.tile];
             uniforms.localBounds[tile.tile] = was.localBounds[tile.tile];
-            uniforms.localData[tile.tile] = was.localData[tile.tile];
+            uniforms.localTiles[tile.tile] = was.localTiles[tile.tile];
         }
     }
     const std::uint32_t litIndex = map.litIndex;

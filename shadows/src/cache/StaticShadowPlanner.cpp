@@ -90,11 +90,13 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         plan.uniforms.directionalSoft[tile] =
             glm::vec4(lightTexelAnchor(fit, plan.uniforms.directionalWorldToMap[tile]),
                       directionalDepthRow(fit, top, conventions));
-        plan.uniforms.directionalSource[tile] = {tanHalfAngularDiameter(light.angularDiameter), fit.texelSize, 0.0f,
-                                                 0.0f};
+        plan.uniforms.directionalSource[tile] = {.tanHalfAngle = tanHalfAngularDiameter(light.angularDiameter),
+                                                 .texelWorldSize = fit.texelSize};
         if (index < maxStaticMapDirectionalLights)
-            plan.uniforms.directionalLights[index] = {static_cast<float>(tile), light.strength,
-                                                      casterSide ? 0.0f : reach, static_cast<float>(filter)};
+            plan.uniforms.directionalLights[index] = {.tile = static_cast<std::int32_t>(tile),
+                                                      .strength = light.strength,
+                                                      .normalOffset = casterSide ? 0.0f : reach,
+                                                      .shadowFilter = static_cast<std::int32_t>(filter)};
         const ShadowFrustum frustum{fit.view, false, fit.halfSize, 0.0f, fit.farDepth - fit.nearDepth};
         plan.maps.push_back({ShadowLightKind::Directional,
                              index,
@@ -204,7 +206,8 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
                 draw.normalOffset = {bias, glm::vec4(light->position, 1.0f)};
             plan.uniforms.localWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.localAtlas, conventions);
             plan.uniforms.localBounds[tile] = plan.localAtlas.tileTexelBounds(tile);
-            plan.uniforms.localData[tile] = {casterSide ? 0.0f : bias, static_cast<float>(filter), 0.0f, 0.0f};
+            plan.uniforms.localTiles[tile] = {.normalBias = casterSide ? 0.0f : bias,
+                                              .shadowFilter = static_cast<std::int32_t>(filter)};
             plan.uniforms.localSoft[tile] =
                 perspectiveTileSoft(projection, tileSize, light->sourceRadius, nearPlane, conventions);
             map.tiles.push_back({{tile, plan.localAtlas.viewport(tile), draw,
@@ -265,8 +268,8 @@ StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Co
         return plan;
     planDirectional(plan, settings, conventions, lights, casters);
     planLocal(plan, settings, conventions, spots, points, casters);
-    plan.uniforms.atlasSizes = {static_cast<float>(plan.directionalAtlas.atlasSize()),
-                                static_cast<float>(plan.localAtlas.atlasSize()), 0.0f, 0.0f};
+    plan.uniforms.directionalAtlasSize = static_cast<float>(plan.directionalAtlas.atlasSize());
+    plan.uniforms.localAtlasSize = static_cast<float>(plan.localAtlas.atlasSize());
     return plan;
 }
 

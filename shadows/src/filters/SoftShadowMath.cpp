@@ -45,9 +45,13 @@ float perspectiveDistance(float depth, glm::vec2 depthRow) { return depthRow.y /
 
 SoftShadowUniforms softShadowUniforms(const SoftShadowSettings& soft)
 {
-    return {{soft.blockerSearchScale, soft.penumbraScale, soft.minPenumbraTexels, soft.maxPenumbraTexels},
-            {static_cast<float>(soft.blockerSamples), static_cast<float>(soft.filterSamples), soft.poissonRadiusTexels,
-             0.0f}};
+    return {.searchScale = soft.blockerSearchScale,
+            .penumbraScale = soft.penumbraScale,
+            .minTexels = soft.minPenumbraTexels,
+            .maxTexels = soft.maxPenumbraTexels,
+            .blockerSamples = static_cast<std::int32_t>(soft.blockerSamples),
+            .filterSamples = static_cast<std::int32_t>(soft.filterSamples),
+            .poissonRadius = soft.poissonRadiusTexels};
 }
 
 float tanHalfAngularDiameter(float degrees) { return std::tan(0.5f * degrees * 0.0174532925f); }

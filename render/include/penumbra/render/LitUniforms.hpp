@@ -2,14 +2,15 @@
 
 #include "penumbra/rhi/Format.hpp"
 #include "penumbra/rhi/Shader.hpp"
-#include "penumbra/rhi/UniformLayout.hpp"
 #include "penumbra/scene/Material.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shadows/LightClusters.hpp"
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <string_view>
 
@@ -28,13 +29,27 @@ inline constexpr rhi::Format kLitDepthFormat = rhi::Format::D32F;
 // visibility (FrameDesc::visibilityOf).
 enum class LitView : std::int32_t { Lit = 0, Cascades = 1, Visibility = 2 };
 
-// The blocks of shaders/lit.glsl, std140, uploaded as they are.
+// One directional light as the lit pass and the screen-space collection see it.
+struct alignas(16) LitDirectionalLight {
+    alignas(16) glm::vec3 color{0.0f}; // linear rgb x intensity
+    std::int32_t shadowSlot = -1; // its DirectionalShadowUniforms::lights entry, -1 without realtime shadows
+    alignas(16) glm::vec3 direction{0.0f}; // unit, from the light into the scene
+};
+
+inline constexpr std::array kLitDirectionalLightFields{
+    PENUMBRA_SHADER_FIELD(LitDirectionalLight, color),
+    PENUMBRA_SHADER_FIELD(LitDirectionalLight, shadowSlot),
+    PENUMBRA_SHADER_FIELD(LitDirectionalLight, direction),
+};
+inline constexpr shaders::ShaderStruct kLitDirectionalLightStruct{"DirectionalLight", sizeof(LitDirectionalLight),
+                                                                  kLitDirectionalLightFields};
+
+// The blocks of shaders/lit.glsl (kLitFrameBlock, kLitObjectBlock below), uploaded as they are.
 struct LitFrameUniforms {
     glm::mat4 viewProjection{1.0f};
     glm::vec4 cameraPosition{0.0f};
     glm::vec4 cameraForward{0.0f};
-    std::array<glm::vec4, maxLitDirectionalLights> lightColor{};
-    std::array<glm::vec4, maxLitDirectionalLights> lightDirection{}; // w = shadow slot or -1
+    std::array<LitDirectionalLight, maxLitDirectionalLights> lights{};
     glm::vec4 ambient{0.0f};
     std::int32_t directionalLightCount = 0;
     std::int32_t litView = 0; // LitView
@@ -48,10 +63,6 @@ struct LitFrameUniforms {
     glm::vec4 clusterSlices{0.0f};
     glm::vec4 ambientGround{0.0f}; // linear rgb from below (the hemisphere's ground; = ambient without one)
 };
-static_assert(offsetof(LitFrameUniforms, lightColor) == 96);
-static_assert(offsetof(LitFrameUniforms, ambient) == 352);
-static_assert(offsetof(LitFrameUniforms, cameraRight) == 384);
-static_assert(sizeof(LitFrameUniforms) == 448);
 
 // The lit pass's spot and point lights (spot lights, then point lights: the lit pass's local index) and their
 // clustered lists (shadows::buildLightClusters with kLitClusterGrid), in data textures that lit.frag reads with
@@ -88,47 +99,36 @@ struct LitObjectUniforms {
     // Per scene::TextureSlot, rows 0 and 1 of its uv transform, row 0's w its uv set (shadows::uvTransformRows).
     std::array<glm::vec4, 2 * scene::kTextureSlots> uvTransforms{};
 };
-static_assert(sizeof(LitObjectUniforms) == 240);
 
-// The two structs as PipelineDesc::uniformLayouts of lit.glsl's blocks Frame and Object.
-inline rhi::UniformLayout litFrameLayout()
-{
-    return {"Frame",
-            sizeof(LitFrameUniforms),
-            {
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, viewProjection),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraPosition),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraForward),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, lightColor),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, lightDirection),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, ambient),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, directionalLightCount),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, litView),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, localLightCount),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, visibilityLight),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraRight),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, cameraUp),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, clusterSlices),
-                PENUMBRA_UNIFORM_MEMBER(LitFrameUniforms, ambientGround),
-            }};
-}
+inline constexpr std::array kLitFrameFields{
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, viewProjection),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraPosition),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraForward),
+    PENUMBRA_SHADER_STRUCT_FIELD(LitFrameUniforms, lights, kLitDirectionalLightStruct),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, ambient),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, directionalLightCount),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, litView),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, localLightCount),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, visibilityLight),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraRight),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraUp),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, clusterSlices),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, ambientGround),
+};
+// lit.glsl's block Frame, read through the instance name `frame`.
+inline constexpr shaders::ShaderStruct kLitFrameBlock{"Frame", sizeof(LitFrameUniforms), kLitFrameFields};
+static_assert(shaders::matchesLayout(kLitFrameBlock, shaders::BlockLayout::Std140));
 
-inline rhi::UniformLayout litObjectLayout()
-{
-    return {"Object",
-            sizeof(LitObjectUniforms),
-            {
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, baseColor),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, surface),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, receivesShadows),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, materialMaps),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, unlit),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, blended),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, emissive),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, normal),
-                PENUMBRA_UNIFORM_MEMBER(LitObjectUniforms, uvTransforms),
-            }};
-}
+inline constexpr std::array kLitObjectFields{
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, baseColor),       PENUMBRA_SHADER_FIELD(LitObjectUniforms, surface),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, receivesShadows), PENUMBRA_SHADER_FIELD(LitObjectUniforms, materialMaps),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, unlit),           PENUMBRA_SHADER_FIELD(LitObjectUniforms, blended),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, emissive),        PENUMBRA_SHADER_FIELD(LitObjectUniforms, normal),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, uvTransforms),
+};
+// lit.glsl's block Object, read through the instance name `object`.
+inline constexpr shaders::ShaderStruct kLitObjectBlock{"Object", sizeof(LitObjectUniforms), kLitObjectFields};
+static_assert(shaders::matchesLayout(kLitObjectBlock, shaders::BlockLayout::Std140));
 
 // Bindings of the lit pass; material textures take kLitMaterialMapBinding + scene::TextureSlot.
 inline constexpr std::uint32_t kLitFrameBinding = 0;

@@ -4,6 +4,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 
 #include <array>
 #include <cstdint>
@@ -13,13 +14,21 @@ namespace penumbra::render {
 
 inline constexpr std::uint32_t kReferenceSplitsBinding = 4;
 
-// The reference block of shaders/reference_lit.frag, std140.
+// The reference block ReferenceSplits of shaders/reference_lit.frag (generated into reference_block.glsl).
 struct ReferenceSplitUniforms {
     std::int32_t cascadeCount = 0;
     std::int32_t firstTile = -1; // the first directional light's first atlas tile (-1: no shadows)
-    alignas(16) glm::vec4 farDepths{0.0f}; // view depth where cascade i ends (std140 aligns a vec4 to 16 bytes)
+    alignas(16) glm::vec4 farDepths{0.0f}; // view depth where cascade i ends
 };
-static_assert(sizeof(ReferenceSplitUniforms) == 32);
+
+inline constexpr std::array kReferenceSplitFields{
+    PENUMBRA_SHADER_FIELD(ReferenceSplitUniforms, cascadeCount),
+    PENUMBRA_SHADER_FIELD(ReferenceSplitUniforms, firstTile),
+    PENUMBRA_SHADER_FIELD(ReferenceSplitUniforms, farDepths),
+};
+inline constexpr shaders::ShaderStruct kReferenceSplitBlock{"ReferenceSplits", sizeof(ReferenceSplitUniforms),
+                                                            kReferenceSplitFields};
+static_assert(shaders::matchesLayout(kReferenceSplitBlock, shaders::BlockLayout::Std140));
 
 // The floor a lit pass is measured against (penumbra bench): the lit shader of the public cascaded shadow map
 // samples (Sascha Willems' Vulkan examples, "shadowmappingcascade"; LearnOpenGL, "Cascaded Shadow Mapping"), drawn

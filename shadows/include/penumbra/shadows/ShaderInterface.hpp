@@ -5,7 +5,7 @@
 
 namespace penumbra::shadows {
 
-// Bindings of the shadow caster pass (shaders/shadow_caster.glsl, shadow_caster_alpha.frag).
+// Bindings of the shadow caster pass (shaders/shadow_caster.vert, shadow_caster_alpha.frag).
 inline constexpr std::uint32_t kCasterDrawBinding = 0; // ShadowCasterUniforms
 inline constexpr std::uint32_t kCasterBaseColorBinding = 1; // the alpha of Clip and Dither casters
 

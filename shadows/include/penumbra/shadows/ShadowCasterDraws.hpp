@@ -3,7 +3,7 @@
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
-#include "penumbra/rhi/UniformLayout.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
@@ -17,32 +17,41 @@
 
 namespace penumbra::shadows {
 
-// The per-draw block of shadow_caster.glsl; the casters' model matrices are per instance (InstanceTransform).
+// The per-draw block ShadowCasterDraw of the caster shaders (generated into caster_block.glsl); the casters' model
+// matrices are per instance (InstanceTransform).
 struct ShadowCasterUniforms {
-    glm::mat4 viewProjection{1.0f};
-    glm::vec4 material{0.0f}; // alpha, alpha cutoff, caster mode, 1 to pancake in the shader
-    glm::vec4 sampling{0.0f}; // dither origin, 1 when the alpha comes from the base colour texture, 0
-    UvTransformRows baseColorUv{}; // ShadowCaster::baseColorUv
-    // The caster-side normal offset, read where reach.x > 0 (shadow_caster.vert).
+    glm::mat4 viewProjection{1.0f}; // the view's light view-projection
+    float alpha = 1.0f;
+    float alphaCutoff = 0.0f;
+    std::int32_t casterMode = 0; // ShadowCasterMode
+    std::int32_t pancake = 0; // 1: clamp to the near plane in the shader (no depth clamp)
+    // Added to gl_FragCoord, so the dither follows the world-fixed texel grid.
+    glm::vec2 ditherOrigin{0.0f};
+    std::int32_t textured = 0; // 1: the alpha comes from the base colour texture
+    alignas(16) UvTransformRows baseColorUv{}; // ShadowCaster::baseColorUv
+    // The caster-side normal offset (CasterNormalOffset), read where reach > 0: the direction into the scene (w = 0)
+    // or the light's position (w = 1), and the lookup reach in world units (per unit of distance from a positional
+    // light).
     glm::vec4 light{0.0f};
-    glm::vec4 reach{0.0f};
+    float reach = 0.0f;
 };
-static_assert(sizeof(ShadowCasterUniforms) == 160);
 
-// The struct as the PipelineDesc::uniformLayouts entry of shadow_caster.glsl's block ShadowCasterDraw.
-inline rhi::UniformLayout shadowCasterLayout()
-{
-    return {"ShadowCasterDraw",
-            sizeof(ShadowCasterUniforms),
-            {
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, viewProjection),
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, material),
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, sampling),
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, baseColorUv),
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, light),
-                PENUMBRA_UNIFORM_MEMBER(ShadowCasterUniforms, reach),
-            }};
-}
+inline constexpr std::array kShadowCasterFields{
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, viewProjection),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, alpha),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, alphaCutoff),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, casterMode),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, pancake),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, ditherOrigin),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, textured),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, baseColorUv),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, light),
+    PENUMBRA_SHADER_FIELD(ShadowCasterUniforms, reach),
+};
+// The block ShadowCasterDraw, read through the instance name `draw`.
+inline constexpr shaders::ShaderStruct kShadowCasterBlock{"ShadowCasterDraw", sizeof(ShadowCasterUniforms),
+                                                          kShadowCasterFields};
+static_assert(shaders::matchesLayout(kShadowCasterBlock, shaders::BlockLayout::Std140));
 
 // One shadow view's casters, drawn into the bound target's current viewport.
 struct ShadowViewDraw {

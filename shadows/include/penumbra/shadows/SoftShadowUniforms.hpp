@@ -1,28 +1,33 @@
 #pragma once
 
-#include "penumbra/rhi/UniformLayout.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
+#include <array>
 #include <cstddef>
-#include <vector>
-
-#include <glm/vec4.hpp>
+#include <cstdint>
 
 namespace penumbra::shadows {
 
-// SoftShadowSettings as the lit shader's blocks carry them (two vec4s, std140).
-struct SoftShadowUniforms {
-    glm::vec4 scales{0.0f}; // blockerSearchScale, penumbraScale, minPenumbraTexels, maxPenumbraTexels
-    glm::vec4 counts{0.0f}; // blockerSamples, filterSamples, poissonRadiusTexels, 0
+// SoftShadowSettings as the lit shader's blocks carry them: the GLSL struct SoftControls (soft_shadows.glsl).
+struct alignas(16) SoftShadowUniforms {
+    float searchScale = 0.0f; // SoftShadowSettings::blockerSearchScale
+    float penumbraScale = 0.0f;
+    float minTexels = 0.0f; // the penumbra's clamp, in texels
+    float maxTexels = 0.0f;
+    std::int32_t blockerSamples = 0;
+    std::int32_t filterSamples = 0;
+    float poissonRadius = 0.0f; // texels
 };
-static_assert(sizeof(SoftShadowUniforms) == 32);
 
-// The struct's members as the shaders' blocks flatten them (softScales, softCounts), at `offset` in their block.
-inline std::vector<rhi::UniformMember> softShadowMembers(std::uint32_t offset)
-{
-    return {{"softScales", offset + std::uint32_t(offsetof(SoftShadowUniforms, scales)), 16},
-            {"softCounts", offset + std::uint32_t(offsetof(SoftShadowUniforms, counts)), 16}};
-}
+inline constexpr std::array kSoftShadowFields{
+    PENUMBRA_SHADER_FIELD(SoftShadowUniforms, searchScale),    PENUMBRA_SHADER_FIELD(SoftShadowUniforms, penumbraScale),
+    PENUMBRA_SHADER_FIELD(SoftShadowUniforms, minTexels),      PENUMBRA_SHADER_FIELD(SoftShadowUniforms, maxTexels),
+    PENUMBRA_SHADER_FIELD(SoftShadowUniforms, blockerSamples), PENUMBRA_SHADER_FIELD(SoftShadowUniforms, filterSamples),
+    PENUMBRA_SHADER_FIELD(SoftShadowUniforms, poissonRadius),
+};
+inline constexpr shaders::ShaderStruct kSoftShadowStruct{"SoftControls", sizeof(SoftShadowUniforms), kSoftShadowFields};
+static_assert(shaders::matchesLayout(kSoftShadowStruct, shaders::BlockLayout::Std140, true));
 
 SoftShadowUniforms softShadowUniforms(const SoftShadowSettings& soft);
 

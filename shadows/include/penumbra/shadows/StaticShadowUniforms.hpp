@@ -1,6 +1,7 @@
 #pragma once
 
-#include "penumbra/rhi/UniformLayout.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
+#include "penumbra/shadows/LocalShadowUniforms.hpp"
 
 #include <array>
 #include <cstddef>
@@ -18,64 +19,75 @@ inline constexpr std::uint32_t maxStaticLocalTiles = 64;
 // map up for. Spot and point lights find theirs in StaticShadowPlan::localLightMaps, whatever their number.
 inline constexpr std::uint32_t maxStaticMapDirectionalLights = 8;
 
-// The lit shader's static shadow block, std140, uploaded as is. GLSL (shaders/static_shadows.glsl):
-//   layout(std140) uniform StaticShadows {
-//       mat4 directionalWorldToMap[4]; // per directional tile: world -> (u, v, depth) in the static directional atlas
-//       vec4 directionalBounds[4];     // per directional tile: first and last texel (x, y, x, y)
-//       vec4 directionalLights[8];     // per directional light: tile or -1, shadow strength, normal offset (world
-//                                      // units), filter (ShadowFilter)
-//       mat4 localWorldToMap[64];      // per spot and point tile: world -> (u, v, depth) x w (divide by w)
-//       vec4 localBounds[64];          // per tile: first and last texel
-//       vec4 localData[64];            // per tile: normal bias per unit distance from the light plane, filter, 0, 0
-//       vec4 atlasSizes;               // directional atlas size, local atlas size, 0, 0
-//       vec4 directionalSoft[4];       // per directional tile, for the Poisson and PCSS filters: the light texel
-//                                      // anchor (x, y) and the depth row (z, w), as
-//                                      DirectionalShadowUniforms::tileSoft
-//       vec4 directionalSource[4];     // per directional tile: tan of half the light's angular diameter, the world
-//                                      // size of a texel, 0, 0
-//       vec4 localSoft[64];            // per spot and point tile: the depth row (t22, t32), the light's radius in
-//                                      // texels at unit distance, the near plane, as LocalShadowUniforms::tileSoft
-//   };
-struct StaticShadowUniforms {
-    std::array<glm::mat4, maxStaticDirectionalMaps> directionalWorldToMap{};
-    std::array<glm::vec4, maxStaticDirectionalMaps> directionalBounds{};
-    std::array<glm::vec4, maxStaticMapDirectionalLights> directionalLights{};
-    std::array<glm::mat4, maxStaticLocalTiles> localWorldToMap{};
-    std::array<glm::vec4, maxStaticLocalTiles> localBounds{};
-    std::array<glm::vec4, maxStaticLocalTiles> localData{};
-    glm::vec4 atlasSizes{0.0f};
-    std::array<glm::vec4, maxStaticDirectionalMaps> directionalSoft{};
-    std::array<glm::vec4, maxStaticDirectionalMaps> directionalSource{};
-    std::array<glm::vec4, maxStaticLocalTiles> localSoft{};
-
-    // No light has a static map.
-    StaticShadowUniforms() { directionalLights.fill(glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f)); }
+// A directional light's static map as the lit shader reads it (StaticShadowUniforms::directionalLights).
+struct alignas(16) StaticDirectionalLight {
+    std::int32_t tile = -1; // its tile in the static directional atlas, -1: the light has no static map
+    float strength = 0.0f; // the light's shadow strength
+    float normalOffset = 0.0f; // the receiver-side normal offset in world units, 0 where the caster side takes it
+    std::int32_t shadowFilter = 0; // ShadowFilter
 };
 
-static_assert(offsetof(StaticShadowUniforms, directionalBounds) == 256);
-static_assert(offsetof(StaticShadowUniforms, localWorldToMap) == 448);
-static_assert(offsetof(StaticShadowUniforms, localBounds) == 4544);
-static_assert(offsetof(StaticShadowUniforms, atlasSizes) == 6592);
-static_assert(offsetof(StaticShadowUniforms, directionalSoft) == 6608);
-static_assert(sizeof(StaticShadowUniforms) == 7760);
+inline constexpr std::array kStaticDirectionalLightFields{
+    PENUMBRA_SHADER_FIELD(StaticDirectionalLight, tile),
+    PENUMBRA_SHADER_FIELD(StaticDirectionalLight, strength),
+    PENUMBRA_SHADER_FIELD(StaticDirectionalLight, normalOffset),
+    PENUMBRA_SHADER_FIELD(StaticDirectionalLight, shadowFilter),
+};
+inline constexpr shaders::ShaderStruct kStaticDirectionalLightStruct{"StaticDirectionalLight",
+                                                                     sizeof(StaticDirectionalLight),
+                                                                     kStaticDirectionalLightFields};
 
-// The struct as the PipelineDesc::uniformLayouts entry of the block above.
-inline rhi::UniformLayout staticShadowLayout()
-{
-    return {"StaticShadows",
-            sizeof(StaticShadowUniforms),
-            {
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalWorldToMap),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalBounds),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalLights),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localWorldToMap),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localBounds),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localData),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, atlasSizes),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalSoft),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, directionalSource),
-                PENUMBRA_UNIFORM_MEMBER(StaticShadowUniforms, localSoft),
-            }};
-}
+// What the Poisson and PCSS filters need of a static directional tile besides its soft data.
+struct alignas(16) StaticDirectionalSource {
+    float tanHalfAngle = 0.0f; // tan of half the light's angular diameter
+    float texelWorldSize = 0.0f; // the world size of a texel of the map
+};
+
+inline constexpr std::array kStaticDirectionalSourceFields{
+    PENUMBRA_SHADER_FIELD(StaticDirectionalSource, tanHalfAngle),
+    PENUMBRA_SHADER_FIELD(StaticDirectionalSource, texelWorldSize),
+};
+inline constexpr shaders::ShaderStruct kStaticDirectionalSourceStruct{"StaticDirectionalSource",
+                                                                      sizeof(StaticDirectionalSource),
+                                                                      kStaticDirectionalSourceFields};
+
+// The lit shader's static shadow block StaticShadows (static_shadows.glsl), uploaded as is.
+struct StaticShadowUniforms {
+    // Per directional tile: world -> (u, v, depth) in the static directional atlas.
+    std::array<glm::mat4, maxStaticDirectionalMaps> directionalWorldToMap{};
+    std::array<glm::vec4, maxStaticDirectionalMaps> directionalBounds{}; // per tile: first and last texel (x, y, x, y)
+    std::array<StaticDirectionalLight, maxStaticMapDirectionalLights> directionalLights{}; // per directional light
+    // Per spot and point tile: world -> (u, v, depth) x w (divide by w).
+    std::array<glm::mat4, maxStaticLocalTiles> localWorldToMap{};
+    std::array<glm::vec4, maxStaticLocalTiles> localBounds{}; // per tile: first and last texel
+    std::array<LocalShadowTile, maxStaticLocalTiles> localTiles{}; // per spot and point tile
+    float directionalAtlasSize = 0.0f; // texels on a side
+    float localAtlasSize = 0.0f;
+    // Per directional tile, for the Poisson and PCSS filters: the light texel anchor (x, y) and the depth row (z, w),
+    // as DirectionalShadowUniforms::tileSoft.
+    alignas(16) std::array<glm::vec4, maxStaticDirectionalMaps> directionalSoft{};
+    std::array<StaticDirectionalSource, maxStaticDirectionalMaps> directionalSource{}; // per directional tile
+    // Per spot and point tile: the depth row (t22, t32), the light's radius in texels at unit distance, the near
+    // plane, as LocalShadowUniforms::tileSoft.
+    std::array<glm::vec4, maxStaticLocalTiles> localSoft{};
+};
+
+inline constexpr std::array kStaticShadowFields{
+    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalWorldToMap),
+    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalBounds),
+    PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, directionalLights, kStaticDirectionalLightStruct),
+    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localWorldToMap),
+    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localBounds),
+    PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, localTiles, kLocalShadowTileStruct),
+    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalAtlasSize),
+    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localAtlasSize),
+    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalSoft),
+    PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, directionalSource, kStaticDirectionalSourceStruct),
+    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localSoft),
+};
+// The block StaticShadows, read through the instance name `staticShadows`.
+inline constexpr shaders::ShaderStruct kStaticShadowBlock{"StaticShadows", sizeof(StaticShadowUniforms),
+                                                          kStaticShadowFields};
+static_assert(shaders::matchesLayout(kStaticShadowBlock, shaders::BlockLayout::Std140));
 
 } // namespace penumbra::shadows

@@ -1,0 +1,96 @@
+// Blocks declared once (penumbra/shaders/ShaderBlock.hpp): the std140 and std430 rules, the generated GLSL and the
+// layout that pipeline creation compares with reflection.
+
+#include "penumbra/shaders/ShaderBlock.hpp"
+#include "penumbra/shadows/DirectionalShadowUniforms.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace penumbra;
+
+namespace {
+
+struct Placed {
+    float scale = 0.0f;
+    std::int32_t count = 0;
+    alignas(16) std::array<glm::vec4, 2> rows{};
+    float last = 0.0f;
+};
+constexpr std::array kPlacedFields{PENUMBRA_SHADER_FIELD(Placed, scale), PENUMBRA_SHADER_FIELD(Placed, count),
+                                   PENUMBRA_SHADER_FIELD(Placed, rows), PENUMBRA_SHADER_FIELD(Placed, last)};
+constexpr shaders::ShaderStruct kPlaced{"Placed", 52, kPlacedFields};
+
+// The same fields with the vec4 array where C++ puts it without alignas: right after the two scalars.
+struct Misplaced {
+    float scale = 0.0f;
+    std::int32_t count = 0;
+    std::array<glm::vec4, 2> rows{};
+    float last = 0.0f;
+};
+constexpr std::array kMisplacedFields{PENUMBRA_SHADER_FIELD(Misplaced, scale), PENUMBRA_SHADER_FIELD(Misplaced, count),
+                                      PENUMBRA_SHADER_FIELD(Misplaced, rows), PENUMBRA_SHADER_FIELD(Misplaced, last)};
+constexpr shaders::ShaderStruct kMisplaced{"Misplaced", sizeof(Misplaced), kMisplacedFields};
+
+// A float array: 16 bytes a float in std140 (rule 4), 4 in std430.
+struct Floats {
+    std::array<float, 4> values{};
+};
+constexpr std::array kFloatsFields{PENUMBRA_SHADER_FIELD(Floats, values)};
+constexpr shaders::ShaderStruct kFloats{"Floats", sizeof(Floats), kFloatsFields};
+
+} // namespace
+
+TEST(ShaderBlockTest, AStructPlacedAsStd140PlacesItMatches)
+{
+    static_assert(shaders::matchesLayout(kPlaced, shaders::BlockLayout::Std140));
+    EXPECT_TRUE(shaders::matchesLayout(kPlaced, shaders::BlockLayout::Std140));
+}
+
+TEST(ShaderBlockTest, AVec4ArrayAfterTwoScalarsWithoutAlignmentCatchesFault)
+{
+    EXPECT_EQ(offsetof(Misplaced, rows), 8u);
+    EXPECT_FALSE(shaders::matchesLayout(kMisplaced, shaders::BlockLayout::Std140));
+}
+
+TEST(ShaderBlockTest, Std430PacksScalarArraysThatStd140PadsToVec4s)
+{
+    EXPECT_TRUE(shaders::matchesLayout(kFloats, shaders::BlockLayout::Std430));
+    EXPECT_FALSE(shaders::matchesLayout(kFloats, shaders::BlockLayout::Std140));
+}
+
+TEST(ShaderBlockTest, TheGeneratedBlockDeclaresEveryFieldAndItsStructTypes)
+{
+    const std::string glsl = shaders::uniformBlockGlsl(shadows::kDirectionalShadowBlock, 2, "shadows");
+    EXPECT_NE(glsl.find("struct DirectionalShadowLight {\n    float strength;\n    float normalBias;\n"
+                        "    int firstTile;\n    int shadowFilter;\n"),
+              std::string::npos)
+        << glsl;
+    EXPECT_NE(glsl.find("layout(std140, binding = 2) uniform DirectionalShadows {\n    mat4 worldToAtlas[16];\n"),
+              std::string::npos)
+        << glsl;
+    EXPECT_NE(glsl.find("    DirectionalShadowLight lights[4];\n"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("    SoftControls soft;\n"), std::string::npos) << glsl;
+    EXPECT_NE(glsl.find("} shadows;\n"), std::string::npos) << glsl;
+}
+
+TEST(ShaderBlockTest, TheLayoutListsTheFieldsOfStructFieldsAsReflectionDoes)
+{
+    const rhi::UniformLayout layout = shaders::uniformLayout(shadows::kDirectionalShadowBlock);
+    const auto member = [&](const std::string& name) {
+        const auto found = std::find_if(layout.members.begin(), layout.members.end(),
+                                        [&](const rhi::UniformMember& m) { return m.name == name; });
+        EXPECT_NE(found, layout.members.end()) << name;
+        return found == layout.members.end() ? rhi::UniformMember{} : *found;
+    };
+    const std::uint32_t lights = offsetof(shadows::DirectionalShadowUniforms, lights);
+    EXPECT_EQ(member("lights").size, sizeof(shadows::DirectionalShadowUniforms::lights));
+    EXPECT_EQ(member("lights.firstTile").offset, lights + offsetof(shadows::DirectionalShadowLight, firstTile));
+    // A struct that is not an array ends at its last member, as reflection sizes it.
+    EXPECT_EQ(member("soft").size, offsetof(shadows::SoftShadowUniforms, poissonRadius) + 4);
+    EXPECT_EQ(member("soft.poissonRadius").offset, offsetof(shadows::DirectionalShadowUniforms, soft) +
+                                                       offsetof(shadows::SoftShadowUniforms, poissonRadius));
+    EXPECT_EQ(layout.size, offsetof(shadows::DirectionalShadowUniforms, tileBounds) +
+                               sizeof(shadows::DirectionalShadowUniforms::tileBounds));
+}
