@@ -4,7 +4,7 @@
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
-#include "penumbra/render/ShadowTruth.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/TestScenes.hpp"
@@ -101,9 +101,9 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     pictures.frameGraph = renderer.frameGraphDot();
     if (!scene.lights.empty())
         for (const float depth : kTexelDensityDepths)
-            pictures.texelsPerMetre.push_back(
-                render::directionalTexelsPerMetre(renderer.plan(), 0, scene.camera,
-                                                  float(frame.width) / float(frame.height), depth));
+            pictures.texelsPerMetre.push_back(truth::directionalTexelsPerMetre(renderer.plan(), 0, scene.camera,
+                                                                               float(frame.width) / float(frame.height),
+                                                                               depth));
     pictures.lit = rhi::readTexture(device, renderer.litImage());
     if (frame.cascadeView)
         pictures.cascades = rhi::readTexture(device, renderer.cascadeImage());

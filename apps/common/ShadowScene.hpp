@@ -40,7 +40,7 @@ struct ShadowPictures {
     render::FrameStats stats;
     std::string frameGraph; // the frame's graph as Graphviz dot (SceneRenderer::frameGraphDot)
     std::vector<std::string> notes;
-    // render::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
+    // truth::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
     std::vector<float> texelsPerMetre;
 
     // Throws rhi::Error naming the atlases there are.

@@ -1,5 +1,5 @@
 #include "penumbra/scene/LocalLights.hpp"
-#include "penumbra/scene/RayCaster.hpp"
+#include "penumbra/truth/RayCaster.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
 #include <glm/geometric.hpp>
@@ -145,7 +145,7 @@ TEST(TestScenesTest, CameraLooksAtTheSceneFromAbove)
 TEST(TestScenesTest, UnshadowedPillarStandsInTheFloatingCubesKeyShadow)
 {
     const Scene scene = makeSingleLightScene();
-    const RayCaster caster(scene);
+    const truth::RayCaster caster(scene);
     const Object& pillar = object(scene, "unshadowed pillar");
     const glm::vec3 topCentre{pillar.worldBounds.center().x, pillar.worldBounds.max.y + 1e-3f,
                               pillar.worldBounds.center().z};
@@ -201,8 +201,8 @@ TEST(ForestSceneTest, IsTheSameEveryTimeAndTheCameraStandsAboveTheGround)
     ASSERT_EQ(leavesA.vertices.size(), leavesB.vertices.size());
     for (std::size_t i = 0; i < leavesA.vertices.size(); ++i)
         EXPECT_EQ(leavesA.vertices[i].position, leavesB.vertices[i].position);
-    const RayCaster rays(a, RayKind::Camera);
-    const std::optional<Hit> below = rays.closestHit(a.camera.position, {0.0f, -1.0f, 0.0f});
+    const truth::RayCaster rays(a, truth::RayKind::Camera);
+    const std::optional<truth::Hit> below = rays.closestHit(a.camera.position, {0.0f, -1.0f, 0.0f});
     ASSERT_TRUE(below) << "terrain under the camera";
     EXPECT_NEAR(below->distance, 1.7f, 0.01f);
 }

@@ -3,7 +3,7 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
 #include "penumbra/scene/TestScenes.hpp"
 
 #include <algorithm>
@@ -109,8 +109,8 @@ TEST_F(LightsAndAtlasTest, ShadowsDarkenTheKeyLightsShadowAndNotReceivingKeepsIt
     // The pillar that does not receive stands in the floating cube's shadow: it must look as it does with shadows
     // off, and darken once it receives (so the first check could fail).
     const std::uint32_t pillar = *scene.findObject("unshadowed pillar");
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, 320, 180);
+    const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
+    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, 320, 180);
     scene.materials[scene.objects[pillar].material].receiveShadows = true;
     const rhi::Image receiving = renderLit(*device, scene, smallFrame());
     std::size_t pixels = 0, changed = 0, darkened = 0;

@@ -1,4 +1,4 @@
-#include "penumbra/scene/AreaLightTruth.hpp"
+#include "penumbra/truth/AreaLightTruth.hpp"
 
 #include "ParallelRows.hpp"
 
@@ -8,7 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 // Chris Wellons's "lowbias32" integer hash ("Prospecting for Hash Functions", 2018).
@@ -49,7 +49,7 @@ void perpendiculars(glm::vec3 axis, glm::vec3& t, glm::vec3& b)
 
 } // namespace
 
-AreaLightSource areaLightOf(const DirectionalLight& light)
+AreaLightSource areaLightOf(const scene::DirectionalLight& light)
 {
     AreaLightSource source;
     source.atInfinity = true;
@@ -71,13 +71,13 @@ AreaLightSource diskAt(glm::vec3 position, float radius)
 
 } // namespace
 
-AreaLightSource areaLightOf(const SpotLight& light) { return diskAt(light.position, light.sourceRadius); }
+AreaLightSource areaLightOf(const scene::SpotLight& light) { return diskAt(light.position, light.sourceRadius); }
 
-AreaLightSource areaLightOf(const PointLight& light) { return diskAt(light.position, light.sourceRadius); }
+AreaLightSource areaLightOf(const scene::PointLight& light) { return diskAt(light.position, light.sourceRadius); }
 
-SoftVisibilityMap traceAreaLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                           const AreaLightSource& light, std::uint32_t raysPerSide,
-                                           const TraceProgress& progress)
+SoftVisibilityMap traceAreaLightVisibility(const scene::Scene& scene, const RayCaster& shadowRays,
+                                           const CpuGBuffer& gbuffer, const AreaLightSource& light,
+                                           std::uint32_t raysPerSide, const TraceProgress& progress)
 {
     if (shadowRays.kind() != RayKind::Shadow)
         throw std::invalid_argument("traceAreaLightVisibility needs a RayCaster built with RayKind::Shadow");
@@ -159,4 +159,4 @@ SoftTruthFigures compareSoftVisibility(const SoftVisibilityMap& truth, const Ren
     return figures;
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

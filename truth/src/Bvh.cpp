@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <array>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 constexpr int kBinCount = 16;
@@ -15,7 +15,7 @@ constexpr std::uint32_t kMaxLeafSize = 16; // larger ranges are split even when 
 // cost about the same.
 constexpr float kTraversalCost = 1.0f;
 
-float surfaceArea(const Bounds& bounds)
+float surfaceArea(const scene::Bounds& bounds)
 {
     if (bounds.empty())
         return 0.0f;
@@ -31,17 +31,17 @@ struct Split {
 
 class Builder {
 public:
-    Builder(std::span<const Bounds> bounds, Bvh& bvh) : bounds_(bounds), bvh_(bvh)
+    Builder(std::span<const scene::Bounds> bounds, Bvh& bvh) : bounds_(bounds), bvh_(bvh)
     {
         centroids_.reserve(bounds.size());
-        for (const Bounds& b : bounds)
+        for (const scene::Bounds& b : bounds)
             centroids_.push_back(b.center());
     }
 
     void build(std::uint32_t node, std::uint32_t first, std::uint32_t count, std::uint32_t depth)
     {
-        Bounds nodeBounds;
-        Bounds centroidBounds;
+        scene::Bounds nodeBounds;
+        scene::Bounds centroidBounds;
         for (std::uint32_t i = first; i < first + count; ++i) {
             nodeBounds.extend(bounds_[bvh_.order[i]]);
             centroidBounds.extend(centroids_[bvh_.order[i]]);
@@ -75,7 +75,7 @@ public:
     }
 
 private:
-    int binOf(std::uint32_t primitive, int axis, const Bounds& centroidBounds) const
+    int binOf(std::uint32_t primitive, int axis, const scene::Bounds& centroidBounds) const
     {
         const float extent = centroidBounds.max[axis] - centroidBounds.min[axis];
         const float relative = (centroids_[primitive][axis] - centroidBounds.min[axis]) / extent;
@@ -84,13 +84,13 @@ private:
 
     // Binned SAH over all three axes; cost is kept unnormalised (areas times counts) and
     // compared with the leaf cost in the same units.
-    Split bestSplit(std::uint32_t first, std::uint32_t count, const Bounds& centroidBounds) const
+    Split bestSplit(std::uint32_t first, std::uint32_t count, const scene::Bounds& centroidBounds) const
     {
         Split best;
         for (int axis = 0; axis < 3; ++axis) {
             if (!(centroidBounds.max[axis] > centroidBounds.min[axis]))
                 continue;
-            std::array<Bounds, kBinCount> bins{};
+            std::array<scene::Bounds, kBinCount> bins{};
             std::array<std::uint32_t, kBinCount> counts{};
             for (std::uint32_t i = first; i < first + count; ++i) {
                 const std::uint32_t p = bvh_.order[i];
@@ -100,14 +100,14 @@ private:
             }
             // Right-to-left sweep stores the right side's cost per split plane.
             std::array<float, kBinCount> rightCost{};
-            Bounds right;
+            scene::Bounds right;
             std::uint32_t rightCount = 0;
             for (int bin = kBinCount - 1; bin > 0; --bin) {
                 right.extend(bins[bin]);
                 rightCount += counts[bin];
                 rightCost[bin] = surfaceArea(right) * static_cast<float>(rightCount);
             }
-            Bounds left;
+            scene::Bounds left;
             std::uint32_t leftCount = 0;
             for (int bin = 1; bin < kBinCount; ++bin) {
                 left.extend(bins[bin - 1]);
@@ -122,14 +122,14 @@ private:
         return best;
     }
 
-    std::span<const Bounds> bounds_;
+    std::span<const scene::Bounds> bounds_;
     std::vector<glm::vec3> centroids_;
     Bvh& bvh_;
 };
 
 } // namespace
 
-Bvh buildBvh(std::span<const Bounds> primitiveBounds)
+Bvh buildBvh(std::span<const scene::Bounds> primitiveBounds)
 {
     Bvh bvh;
     if (primitiveBounds.empty())
@@ -144,4 +144,4 @@ Bvh buildBvh(std::span<const Bounds> primitiveBounds)
     return bvh;
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 
 // Node of a flattened binary BVH, 32 bytes so two share a cache line.
 // Leaf: count > 0 primitives from Bvh::order[first]. Interior: count == 0, children at
@@ -29,6 +29,6 @@ struct Bvh {
 };
 
 // Top-down build with a binned surface area heuristic over primitive centroids.
-Bvh buildBvh(std::span<const Bounds> primitiveBounds);
+Bvh buildBvh(std::span<const scene::Bounds> primitiveBounds);
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

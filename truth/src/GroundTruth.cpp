@@ -1,4 +1,4 @@
-#include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
 
 #include "MeshSurfaces.hpp"
 #include "ParallelRows.hpp"
@@ -10,15 +10,15 @@
 #include <limits>
 #include <stdexcept>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 // World normal from the mesh's vertex normals at the hit. The inverse transpose keeps
 // normals perpendicular under any affine transform, not only the rigid ones of the test scene.
-glm::vec3 interpolatedNormal(const Scene& scene, const Hit& hit)
+glm::vec3 interpolatedNormal(const scene::Scene& scene, const Hit& hit)
 {
-    const Object& object = scene.objects[hit.object];
-    const MeshData& mesh = scene.meshOf(object);
+    const scene::Object& object = scene.objects[hit.object];
+    const scene::MeshData& mesh = scene.meshOf(object);
     const std::uint32_t* index = &mesh.indices[3 * std::size_t(hit.triangle)];
     const glm::vec3 local = (1.0f - hit.barycentrics.x - hit.barycentrics.y) * mesh.vertices[index[0]].normal +
                             hit.barycentrics.x * mesh.vertices[index[1]].normal +
@@ -26,9 +26,9 @@ glm::vec3 interpolatedNormal(const Scene& scene, const Hit& hit)
     return glm::normalize(glm::transpose(glm::inverse(glm::mat3(object.transform))) * local);
 }
 
-glm::vec2 interpolatedUv(const Scene& scene, const Hit& hit)
+glm::vec2 interpolatedUv(const scene::Scene& scene, const Hit& hit)
 {
-    const MeshData& mesh = scene.meshOf(scene.objects[hit.object]);
+    const scene::MeshData& mesh = scene.meshOf(scene.objects[hit.object]);
     const std::uint32_t* index = &mesh.indices[3 * std::size_t(hit.triangle)];
     return (1.0f - hit.barycentrics.x - hit.barycentrics.y) * mesh.vertices[index[0]].uv +
            hit.barycentrics.x * mesh.vertices[index[1]].uv + hit.barycentrics.y * mesh.vertices[index[2]].uv;
@@ -36,7 +36,7 @@ glm::vec2 interpolatedUv(const Scene& scene, const Hit& hit)
 
 } // namespace
 
-Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, float px, float py)
+Ray primaryRay(const scene::Camera& camera, std::uint32_t width, std::uint32_t height, float px, float py)
 {
     const float ndcX = 2.0f * px / static_cast<float>(width) - 1.0f;
     const float ndcY = 1.0f - 2.0f * py / static_cast<float>(height);
@@ -53,8 +53,8 @@ Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, 
             (camera.farPlane - camera.nearPlane) / depthPerDistance};
 }
 
-CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const Camera& camera, std::uint32_t width,
-                        std::uint32_t height, const TraceProgress& progress)
+CpuGBuffer traceGBuffer(const scene::Scene& scene, const RayCaster& cameraRays, const scene::Camera& camera,
+                        std::uint32_t width, std::uint32_t height, const TraceProgress& progress)
 {
     if (cameraRays.kind() != RayKind::Camera)
         throw std::invalid_argument("traceGBuffer needs a RayCaster built with RayKind::Camera");
@@ -62,7 +62,7 @@ CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const C
     const glm::vec3 forward = glm::normalize(camera.forward);
     std::vector<std::vector<std::uint32_t>> surfaces;
     surfaces.reserve(scene.meshes.size());
-    for (const MeshData& mesh : scene.meshes)
+    for (const scene::MeshData& mesh : scene.meshes)
         surfaces.push_back(meshSurfaces(mesh));
     forEachRow(
         height,
@@ -90,7 +90,7 @@ CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const C
     return gbuffer;
 }
 
-ShadowRayFrom raysTowards(const DirectionalLight& light)
+ShadowRayFrom raysTowards(const scene::DirectionalLight& light)
 {
     const glm::vec3 towardsLight = -glm::normalize(light.direction);
     return [towardsLight](glm::vec3 origin) {
@@ -119,7 +119,7 @@ glm::vec3 shadowRayOrigin(const GBufferSample& sample, float normalOffset)
     return sample.position + normalOffset * sample.normal;
 }
 
-LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+LightVisibilityMask traceVisibility(const scene::Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                     const ShadowRayFrom& rayFrom, float normalOffset, const TraceProgress& progress)
 {
     if (shadowRays.kind() != RayKind::Shadow)
@@ -156,17 +156,18 @@ LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowR
     return mask;
 }
 
-LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                         const DirectionalLight& light, float normalOffset)
+LightVisibilityMask traceLightVisibility(const scene::Scene& scene, const RayCaster& shadowRays,
+                                         const CpuGBuffer& gbuffer, const scene::DirectionalLight& light,
+                                         float normalOffset)
 {
     return traceVisibility(scene, shadowRays, gbuffer, raysTowards(light), normalOffset);
 }
 
-LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
+LightVisibilityMask tracePositionalLightVisibility(const scene::Scene& scene, const RayCaster& shadowRays,
                                                    const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
                                                    float normalOffset)
 {
     return traceVisibility(scene, shadowRays, gbuffer, raysTowards(lightPosition), normalOffset);
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

@@ -6,7 +6,7 @@
 #include <map>
 #include <numeric>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 // Union-find over vertices with path halving (Tarjan and van Leeuwen, "Worst-case Analysis of Set Union
@@ -30,7 +30,7 @@ void join(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
 
 } // namespace
 
-std::vector<std::uint32_t> meshSurfaces(const MeshData& mesh)
+std::vector<std::uint32_t> meshSurfaces(const scene::MeshData& mesh)
 {
     std::vector<std::uint32_t> parent(mesh.vertices.size());
     std::iota(parent.begin(), parent.end(), 0u);
@@ -54,4 +54,4 @@ std::vector<std::uint32_t> meshSurfaces(const MeshData& mesh)
     return surfaces;
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

@@ -1,13 +1,13 @@
 #pragma once
 
-#include "penumbra/scene/RayTriangle.hpp"
+#include "penumbra/truth/RayTriangle.hpp"
 
 #include <glm/geometric.hpp>
 
 #include <cmath>
 #include <limits>
 
-namespace penumbra::scene::detail {
+namespace penumbra::truth::detail {
 
 // Moller-Trumbore on a triangle stored as v0 and its edges e1 = v1 - v0, e2 = v2 - v0 (the
 // ray caster keeps them precomputed). Shared by intersectRayTriangle and the BVH traversal.
@@ -35,4 +35,4 @@ inline std::optional<TriangleHit> intersectEdges(const glm::vec3& origin, const 
     return TriangleHit{t, {u, v}};
 }
 
-} // namespace penumbra::scene::detail
+} // namespace penumbra::truth::detail

@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 
 // Runs traceRow(row) for every row in [0, rows) on every hardware thread. Rows are independent, so the
 // result does not depend on the thread count. `progress(done, rows)` is called on the calling thread only,
@@ -42,4 +42,4 @@ inline void forEachRow(std::uint32_t rows, const std::function<void(std::uint32_
         progress(rows, rows);
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

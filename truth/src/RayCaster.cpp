@@ -1,4 +1,4 @@
-#include "penumbra/scene/RayCaster.hpp"
+#include "penumbra/truth/RayCaster.hpp"
 
 #include "Bvh.hpp"
 #include "MollerTrumbore.hpp"
@@ -11,7 +11,7 @@
 #include <array>
 #include <cmath>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 // Triangles are stored as the intersection test wants them.
@@ -29,46 +29,47 @@ struct TriangleSource {
 // An object whose surface has holes: blocks a ray only where its alpha reaches `threshold`.
 // Textured materials keep a copy of their texture: the caster outlives the scene.
 struct AlphaTest {
-    Material material;
+    scene::Material material;
     float threshold;
-    std::optional<TextureImage> texture;
+    std::optional<scene::TextureImage> texture;
 };
 
-std::optional<AlphaTest> alphaTestFor(const Scene& scene, const Material& material, RayKind kind)
+std::optional<AlphaTest> alphaTestFor(const scene::Scene& scene, const scene::Material& material, RayKind kind)
 {
-    std::optional<TextureImage> texture;
-    const std::optional<MaterialTexture>& baseColor = material.texture(TextureSlot::BaseColor);
-    if (baseColor && material.caster != CasterMode::On && material.caster != CasterMode::Off)
+    std::optional<scene::TextureImage> texture;
+    const std::optional<scene::MaterialTexture>& baseColor = material.texture(scene::TextureSlot::BaseColor);
+    if (baseColor && material.caster != scene::CasterMode::On && material.caster != scene::CasterMode::Off)
         texture = scene.textures.at(baseColor->image);
     switch (material.caster) {
-    case CasterMode::Clip:
+    case scene::CasterMode::Clip:
         return AlphaTest{material, material.alphaCutoff, std::move(texture)};
-    case CasterMode::Dither:
+    case scene::CasterMode::Dither:
         if (kind == RayKind::Shadow)
             return AlphaTest{material, kDitherShadowThreshold, std::move(texture)};
         return std::nullopt;
-    case CasterMode::On:
-    case CasterMode::Off:
+    case scene::CasterMode::On:
+    case scene::CasterMode::Off:
         return std::nullopt;
     }
     return std::nullopt;
 }
 
-bool isSeen(const Scene& scene, const Object& object, RayKind kind)
+bool isSeen(const scene::Scene& scene, const scene::Object& object, RayKind kind)
 {
-    return kind == RayKind::Camera ? object.castShadows != ShadowCasting::ShadowsOnly : scene.castsShadows(object);
+    return kind == RayKind::Camera ? object.castShadows != scene::ShadowCasting::ShadowsOnly
+                                   : scene.castsShadows(object);
 }
 
 // The side of an object's triangles that the passes draw, as the sign that dot(front normal, ray direction)
 // must have (0: both sides). The lit pass culls back faces of single-sided materials; the shadow pass draws
 // the light-facing side of single-sided casters, and a shadow ray travels towards the light, so it meets
 // that side from behind.
-float drawnSide(const Scene& scene, const Object& object, RayKind kind)
+float drawnSide(const scene::Scene& scene, const scene::Object& object, RayKind kind)
 {
     const bool doubleSided = scene.materialOf(object).doubleSided;
     if (kind == RayKind::Camera)
         return doubleSided ? 0.0f : -1.0f;
-    return doubleSided || object.castShadows == ShadowCasting::TwoSided ? 0.0f : 1.0f;
+    return doubleSided || object.castShadows == scene::ShadowCasting::TwoSided ? 0.0f : 1.0f;
 }
 
 struct PreparedRay {
@@ -128,7 +129,7 @@ struct RayCaster::Data {
         const std::array<glm::vec2, 3>& uv = uvs[index];
         const glm::vec2 at =
             (1.0f - barycentrics.x - barycentrics.y) * uv[0] + barycentrics.x * uv[1] + barycentrics.y * uv[2];
-        return materialAlpha(test.material, at, test.texture ? &*test.texture : nullptr);
+        return scene::materialAlpha(test.material, at, test.texture ? &*test.texture : nullptr);
     }
 
     // Whether a hit on triangle `index` stops the ray: the drawn side, and not in a hole.
@@ -183,32 +184,32 @@ struct RayCaster::Data {
     }
 };
 
-RayCaster::RayCaster(const Scene& scene, RayKind kind) : data_(std::make_unique<Data>())
+RayCaster::RayCaster(const scene::Scene& scene, RayKind kind) : data_(std::make_unique<Data>())
 {
     scene.validate();
     data_->kind = kind;
     std::vector<TriangleEdges> triangles;
     std::vector<TriangleSource> sources;
     std::vector<std::array<glm::vec2, 3>> uvs;
-    std::vector<Bounds> bounds;
+    std::vector<scene::Bounds> bounds;
     for (std::uint32_t objectIndex = 0; objectIndex < scene.objects.size(); ++objectIndex) {
-        const Object& object = scene.objects[objectIndex];
-        const Material& material = scene.materialOf(object);
+        const scene::Object& object = scene.objects[objectIndex];
+        const scene::Material& material = scene.materialOf(object);
         data_->alphaTests.push_back(alphaTestFor(scene, material, kind));
         data_->drawnSides.push_back(drawnSide(scene, object, kind));
         if (!isSeen(scene, object, kind))
             continue;
-        const MeshData& mesh = scene.meshOf(object);
+        const scene::MeshData& mesh = scene.meshOf(object);
         for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
             std::array<glm::vec3, 3> world;
             std::array<glm::vec2, 3> uv;
-            Bounds triangleBounds;
+            scene::Bounds triangleBounds;
             for (std::size_t k = 0; k < 3; ++k) {
-                const Vertex& vertex = mesh.vertices[mesh.indices[3 * t + k]];
+                const scene::Vertex& vertex = mesh.vertices[mesh.indices[3 * t + k]];
                 world[k] = glm::vec3(object.transform * glm::vec4(vertex.position, 1.0f));
                 // Where the passes read the base colour texture (its uv set and transform, affine, so it may be
                 // applied before the barycentric interpolation).
-                uv[k] = textureUv(material.texture(TextureSlot::BaseColor), vertex.uv, vertex.uv1);
+                uv[k] = scene::textureUv(material.texture(scene::TextureSlot::BaseColor), vertex.uv, vertex.uv1);
                 triangleBounds.extend(world[k]);
             }
             triangles.push_back({world[0], world[1] - world[0], world[2] - world[0]});
@@ -263,7 +264,7 @@ Occlusion RayCaster::occlusion(const glm::vec3& origin, const glm::vec3& directi
             return false;
         const std::optional<AlphaTest>& test = data_->alphaTests[data_->sources[i].object];
         // Only shadow rays alpha-test dithered casters; occlusion() reports their alpha apart.
-        if (!test || test->material.caster != CasterMode::Dither) {
+        if (!test || test->material.caster != scene::CasterMode::Dither) {
             result.solid = data_->blocks(i, ray, hit->barycentrics);
             return result.solid;
         }
@@ -298,4 +299,4 @@ std::optional<Hit> RayCaster::closestHit(const glm::vec3& origin, const glm::vec
                glm::normalize(glm::cross(t.e1, t.e2))};
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

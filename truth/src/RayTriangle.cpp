@@ -1,8 +1,8 @@
-#include "penumbra/scene/RayTriangle.hpp"
+#include "penumbra/truth/RayTriangle.hpp"
 
 #include "MollerTrumbore.hpp"
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 
 std::optional<TriangleHit> intersectRayTriangle(const glm::vec3& origin, const glm::vec3& direction,
                                                 const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2,
@@ -11,4 +11,4 @@ std::optional<TriangleHit> intersectRayTriangle(const glm::vec3& origin, const g
     return detail::intersectEdges(origin, direction, v0, v1 - v0, v2 - v0, maxDistance);
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

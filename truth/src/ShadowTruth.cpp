@@ -1,6 +1,6 @@
-#include "penumbra/render/ShadowTruth.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
 
-#include "penumbra/render/SoftShadowTruth.hpp"
+#include "penumbra/truth/SoftShadowTruth.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace penumbra::render {
+namespace penumbra::truth {
 namespace {
 
 // The perspective view's texel at the position's distance from its light plane (a perspective texel grows
@@ -44,8 +44,8 @@ float directionalTexel(const shadows::DirectionalShadowPlan& plan, std::uint32_t
     return 0.0f;
 }
 
-float pointTexel(const ShadowPlans& plans, std::uint32_t cubeFaceSize, const scene::PointLight& light, int shadow,
-                 glm::vec3 position)
+float pointTexel(const render::ShadowPlans& plans, std::uint32_t cubeFaceSize, const scene::PointLight& light,
+                 int shadow, glm::vec3 position)
 {
     const glm::vec3 fromLight = position - light.position;
     const shadows::CubeFace face = shadows::cubeFace(fromLight);
@@ -60,12 +60,12 @@ float pointTexel(const ShadowPlans& plans, std::uint32_t cubeFaceSize, const sce
 
 } // namespace
 
-scene::RenderedVisibility renderedVisibility(const rhi::Image& view)
+RenderedVisibility renderedVisibility(const rhi::Image& view)
 {
     if (view.format != rhi::Format::RGBA8)
         throw rhi::Error("renderedVisibility: the visibility view is RGBA8");
-    scene::RenderedVisibility v{view.width, view.height, std::vector<float>(std::size_t(view.width) * view.height),
-                                std::vector<std::uint8_t>(std::size_t(view.width) * view.height)};
+    RenderedVisibility v{view.width, view.height, std::vector<float>(std::size_t(view.width) * view.height),
+                         std::vector<std::uint8_t>(std::size_t(view.width) * view.height)};
     for (std::size_t i = 0; i < v.lit.size(); ++i) {
         const std::byte* texel = view.bytes.data() + 4 * i;
         v.lit[i] = static_cast<float>(std::to_integer<int>(texel[0])) / 255.0f;
@@ -97,8 +97,8 @@ float directionalTexelsPerMetre(const shadows::DirectionalShadowPlan& plan, std:
     return covered > 0 ? sum / static_cast<float>(covered) : 0.0f;
 }
 
-float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& settings, const scene::Scene& scene,
-                      const scene::LightRef& light, glm::vec3 position)
+float shadowTexelSize(const render::ShadowPlans& plans, const shadows::ShadowSettings& settings,
+                      const scene::Scene& scene, const scene::LightRef& light, glm::vec3 position)
 {
     switch (light.kind) {
     case scene::LightKind::Directional: {
@@ -127,17 +127,17 @@ float shadowTexelSize(const ShadowPlans& plans, const shadows::ShadowSettings& s
     return 0.0f;
 }
 
-scene::ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef& light)
+ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef& light)
 {
     switch (light.kind) {
     case scene::LightKind::Directional:
-        return scene::raysTowards(scene.lights.at(light.index));
+        return raysTowards(scene.lights.at(light.index));
     case scene::LightKind::Spot:
-        return scene::raysTowards(scene.spotLights.at(light.index).position);
+        return raysTowards(scene.spotLights.at(light.index).position);
     case scene::LightKind::Point:
-        return scene::raysTowards(scene.pointLights.at(light.index).position);
+        return raysTowards(scene.pointLights.at(light.index).position);
     }
-    return scene::raysTowards(scene.lights.at(light.index));
+    return raysTowards(scene.lights.at(light.index));
 }
 
 float shadowEdgeMarginTexels(shadows::ShadowFilter filter)
@@ -148,29 +148,28 @@ float shadowEdgeMarginTexels(shadows::ShadowFilter filter)
 
 float lookupFootprintTexels(shadows::ShadowFilter filter) { return shadows::normalBiasFilterFactor(filter) + 0.5f; }
 
-LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaster& shadowRays,
-                                const scene::CpuGBuffer& gbuffer, const ShadowPlans& plans,
-                                const shadows::ShadowSettings& settings, const scene::LightRef& light,
-                                const scene::TraceProgress& progress)
+LightTruthTrace traceLightTruth(const scene::Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                const render::ShadowPlans& plans, const shadows::ShadowSettings& settings,
+                                const scene::LightRef& light, const TraceProgress& progress)
 {
-    const scene::ShadowRayFrom rays = truthRays(scene, light);
+    const ShadowRayFrom rays = truthRays(scene, light);
     // The light's own filter (its shadowFilter, else the atlas's): its reach sets the lit pass's normal offset.
     const shadows::ShadowFilter filter = plannedShadowFilter(plans, light);
     const float margin = shadowEdgeMarginTexels(filter);
     // Half the rows' progress for each of the two traces.
-    const auto half = [&](std::uint32_t offset) -> scene::TraceProgress {
+    const auto half = [&](std::uint32_t offset) -> TraceProgress {
         if (!progress)
             return {};
         return [&, offset](std::uint32_t done, std::uint32_t rows) { progress(offset + done, 2 * rows); };
     };
-    LightTruthTrace t{scene::traceVisibility(scene, shadowRays, gbuffer, rays, scene::kShadowRayOffset, half(0)),
+    LightTruthTrace t{traceVisibility(scene, shadowRays, gbuffer, rays, kShadowRayOffset, half(0)),
                       {},
-                      std::vector<scene::LookupFootprint>(gbuffer.samples.size()),
+                      std::vector<LookupFootprint>(gbuffer.samples.size()),
                       rays};
     std::vector<float> edgeRadii(gbuffer.samples.size(), 0.0f);
     for (std::size_t i = 0; i < gbuffer.samples.size(); ++i) {
-        const scene::GBufferSample& sample = gbuffer.samples[i];
-        if (sample.object == scene::kNoObject)
+        const GBufferSample& sample = gbuffer.samples[i];
+        if (sample.object == kNoObject)
             continue;
         const float texel = shadowTexelSize(plans, settings, scene, light, sample.position);
         edgeRadii[i] = margin * texel;
@@ -180,15 +179,15 @@ LightTruthTrace traceLightTruth(const scene::Scene& scene, const scene::RayCaste
                                                              shadows::normalOffsetReach(1.0f, texel, filter)),
                            lookupFootprintTexels(filter) * texel};
     }
-    t.shadowEdges = scene::traceShadowEdges(shadowRays, gbuffer, t.visibility, rays, edgeRadii, half(gbuffer.height));
+    t.shadowEdges = traceShadowEdges(shadowRays, gbuffer, t.visibility, rays, edgeRadii, half(gbuffer.height));
     return t;
 }
 
-scene::TruthComparison compareLightTruth(const LightTruthTrace& trace, const scene::RayCaster& shadowRays,
-                                         const scene::CpuGBuffer& gbuffer, const scene::RenderedVisibility& rendered)
+TruthComparison compareLightTruth(const LightTruthTrace& trace, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+                                  const RenderedVisibility& rendered)
 {
-    scene::TruthComparison c = scene::compareWithTruth(gbuffer, trace.visibility, rendered, trace.shadowEdges);
-    scene::confirmDisagreements(c, shadowRays, gbuffer, trace.visibility, trace.rays, trace.footprints);
+    TruthComparison c = compareWithTruth(gbuffer, trace.visibility, rendered, trace.shadowEdges);
+    confirmDisagreements(c, shadowRays, gbuffer, trace.visibility, trace.rays, trace.footprints);
     return c;
 }
 
@@ -200,4 +199,4 @@ std::string lightLabel(const scene::Scene& scene, const scene::LightRef& light)
     return name.empty() ? fmt::format("{} {}", scene::lightKindName(light.kind), light.index) : name;
 }
 
-} // namespace penumbra::render
+} // namespace penumbra::truth

@@ -1,12 +1,12 @@
-#include "penumbra/render/SoftShadowTruth.hpp"
+#include "penumbra/truth/SoftShadowTruth.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
 #include <fmt/format.h>
 
-namespace penumbra::render {
+namespace penumbra::truth {
 
-shadows::ShadowFilter plannedShadowFilter(const ShadowPlans& plans, const scene::LightRef& light)
+shadows::ShadowFilter plannedShadowFilter(const render::ShadowPlans& plans, const scene::LightRef& light)
 {
     const auto noShadow = [&] {
         return rhi::Error(
@@ -51,17 +51,17 @@ float lightSourceSize(const scene::Scene& scene, const scene::LightRef& light)
     return 0.0f;
 }
 
-scene::AreaLightSource areaLightOf(const scene::Scene& scene, const scene::LightRef& light)
+AreaLightSource areaLightOf(const scene::Scene& scene, const scene::LightRef& light)
 {
     switch (light.kind) {
     case scene::LightKind::Directional:
-        return scene::areaLightOf(scene.lights.at(light.index));
+        return areaLightOf(scene.lights.at(light.index));
     case scene::LightKind::Spot:
-        return scene::areaLightOf(scene.spotLights.at(light.index));
+        return areaLightOf(scene.spotLights.at(light.index));
     case scene::LightKind::Point:
-        return scene::areaLightOf(scene.pointLights.at(light.index));
+        return areaLightOf(scene.pointLights.at(light.index));
     }
     return {};
 }
 
-} // namespace penumbra::render
+} // namespace penumbra::truth

@@ -1,4 +1,4 @@
-#include "penumbra/scene/TruthComparison.hpp"
+#include "penumbra/truth/TruthComparison.hpp"
 
 #include "ParallelRows.hpp"
 
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 bool nearEdge(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth, std::uint32_t x, std::uint32_t y, int margin)
@@ -216,4 +216,4 @@ float contactGapTexels(const TruthComparison& comparison, const CpuGBuffer& gbuf
     return gap;
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

@@ -1,14 +1,14 @@
 #pragma once
 
-#include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
 #include "penumbra/scene/Light.hpp"
-#include "penumbra/scene/TruthComparison.hpp"
+#include "penumbra/truth/TruthComparison.hpp"
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 
 // Ray-traced soft shadows: the share of an area light a surface point sees.
 
@@ -23,9 +23,9 @@ struct AreaLightSource {
     float radius = 0.0f;
 };
 
-AreaLightSource areaLightOf(const DirectionalLight& light); // angularDiameter, degrees
-AreaLightSource areaLightOf(const SpotLight& light);
-AreaLightSource areaLightOf(const PointLight& light);
+AreaLightSource areaLightOf(const scene::DirectionalLight& light); // angularDiameter, degrees
+AreaLightSource areaLightOf(const scene::SpotLight& light);
+AreaLightSource areaLightOf(const scene::PointLight& light);
 
 // Rays per pixel: a raysPerSide x raysPerSide stratified grid on the light's disk (Shirley and Chiu 1997, "A
 // Low Distortion Map Between Disk and Square"), each stratum jittered by a hash of the pixel and the stratum, so the
@@ -45,8 +45,8 @@ struct SoftVisibilityMap {
 };
 
 // `shadowRays` must be built with RayKind::Shadow (throws std::invalid_argument otherwise).
-SoftVisibilityMap traceAreaLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                           const AreaLightSource& light,
+SoftVisibilityMap traceAreaLightVisibility(const scene::Scene& scene, const RayCaster& shadowRays,
+                                           const CpuGBuffer& gbuffer, const AreaLightSource& light,
                                            std::uint32_t raysPerSide = kAreaLightRaysPerSide,
                                            const TraceProgress& progress = {});
 
@@ -67,4 +67,4 @@ struct SoftTruthFigures {
 SoftTruthFigures compareSoftVisibility(const SoftVisibilityMap& truth, const RenderedVisibility& rendered,
                                        int margin = kPenumbraMargin);
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

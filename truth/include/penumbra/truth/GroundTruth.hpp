@@ -2,7 +2,7 @@
 
 #include "penumbra/scene/Camera.hpp"
 #include "penumbra/scene/Light.hpp"
-#include "penumbra/scene/RayCaster.hpp"
+#include "penumbra/truth/RayCaster.hpp"
 #include "penumbra/scene/Scene.hpp"
 
 #include <glm/vec2.hpp>
@@ -13,7 +13,7 @@
 #include <limits>
 #include <vector>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 
 // Ray-traced references for the shadow tests: what each pixel of a rendered picture shows
 // (a CPU G-buffer) and whether that point sees a directional light.
@@ -34,7 +34,7 @@ struct Ray {
 
 // Ray through pixel coordinates (px, py) (continuous: the centre of pixel (x, y) is
 // (x + 0.5, y + 0.5)).
-Ray primaryRay(const Camera& camera, std::uint32_t width, std::uint32_t height, float px, float py);
+Ray primaryRay(const scene::Camera& camera, std::uint32_t width, std::uint32_t height, float px, float py);
 
 // What the CPU ray caster sees at one pixel: object, triangle, position, normals, uv, depth.
 struct GBufferSample {
@@ -73,8 +73,8 @@ using TraceProgress = std::function<void(std::uint32_t done, std::uint32_t rows)
 
 // `cameraRays` must be built from `scene` with RayKind::Camera (throws std::invalid_argument
 // otherwise).
-CpuGBuffer traceGBuffer(const Scene& scene, const RayCaster& cameraRays, const Camera& camera, std::uint32_t width,
-                        std::uint32_t height, const TraceProgress& progress = {});
+CpuGBuffer traceGBuffer(const scene::Scene& scene, const RayCaster& cameraRays, const scene::Camera& camera,
+                        std::uint32_t width, std::uint32_t height, const TraceProgress& progress = {});
 
 enum class LightVisibility : std::uint8_t {
     Background, // no surface
@@ -112,7 +112,7 @@ struct ShadowRay {
     float maxDistance; // to the light; infinite for a directional light
 };
 using ShadowRayFrom = std::function<ShadowRay(glm::vec3 origin)>;
-ShadowRayFrom raysTowards(const DirectionalLight& light);
+ShadowRayFrom raysTowards(const scene::DirectionalLight& light);
 ShadowRayFrom raysTowards(glm::vec3 lightPosition);
 
 // A shadow ray's class: Shadowed behind a solid blocker, else Dithered behind dithered ones, else Lit.
@@ -123,16 +123,17 @@ glm::vec3 shadowRayOrigin(const GBufferSample& sample, float normalOffset = kSha
 
 // For every G-buffer sample: an occlusion ray from shadowRayOrigin(sample, normalOffset) towards the light.
 // `shadowRays` must be built with RayKind::Shadow (throws std::invalid_argument otherwise).
-LightVisibilityMask traceVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
+LightVisibilityMask traceVisibility(const scene::Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
                                     const ShadowRayFrom& rayFrom, float normalOffset = kShadowRayOffset,
                                     const TraceProgress& progress = {});
 
 // traceVisibility towards a directional light (rays along -light.direction) or a spot or point light at
 // `lightPosition` (rays end at the light).
-LightVisibilityMask traceLightVisibility(const Scene& scene, const RayCaster& shadowRays, const CpuGBuffer& gbuffer,
-                                         const DirectionalLight& light, float normalOffset = kShadowRayOffset);
-LightVisibilityMask tracePositionalLightVisibility(const Scene& scene, const RayCaster& shadowRays,
+LightVisibilityMask traceLightVisibility(const scene::Scene& scene, const RayCaster& shadowRays,
+                                         const CpuGBuffer& gbuffer, const scene::DirectionalLight& light,
+                                         float normalOffset = kShadowRayOffset);
+LightVisibilityMask tracePositionalLightVisibility(const scene::Scene& scene, const RayCaster& shadowRays,
                                                    const CpuGBuffer& gbuffer, glm::vec3 lightPosition,
                                                    float normalOffset = kShadowRayOffset);
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

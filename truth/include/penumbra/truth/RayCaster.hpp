@@ -10,7 +10,7 @@
 #include <memory>
 #include <optional>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 
 // Which surfaces a RayCaster sees, by material:
 //                  CasterMode::On   Clip                         Dither                      Off
@@ -57,7 +57,7 @@ struct Occlusion {
 class RayCaster {
 public:
     // Builds the BVH over every object of `scene` that rays of `kind` can meet.
-    explicit RayCaster(const Scene& scene, RayKind kind = RayKind::Shadow);
+    explicit RayCaster(const scene::Scene& scene, RayKind kind = RayKind::Shadow);
     ~RayCaster();
     // Moves the BVH.
     RayCaster(RayCaster&&) noexcept;
@@ -84,4 +84,4 @@ private:
     std::unique_ptr<Data> data_;
 };
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

@@ -5,7 +5,7 @@
 
 #include <optional>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 
 // Where a ray meets a triangle: origin + distance * direction, and barycentrics (u, v)
 // weighting v1 and v2 (v0's weight is 1 - u - v).
@@ -21,4 +21,4 @@ std::optional<TriangleHit> intersectRayTriangle(const glm::vec3& origin, const g
                                                 const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2,
                                                 float maxDistance);
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth

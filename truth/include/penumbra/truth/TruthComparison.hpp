@@ -1,6 +1,6 @@
 #pragma once
 
-#include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -10,7 +10,7 @@
 #include <map>
 #include <vector>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 
 // A renderer's shadow-map visibility of one light, per pixel in the ground truth's layout (row 0 at the top):
 // `lit` in [0, 1] (1 = lit) where `decided` is set; elsewhere the shadow map has no say (the light does not
@@ -141,4 +141,4 @@ float contactGapTexels(const TruthComparison& comparison, const CpuGBuffer& gbuf
                        const ShadowRayFrom& rayFrom, const std::function<float(glm::vec3)>& texelSize,
                        float contactTexels = kContactTexels);
 
-} // namespace penumbra::scene
+} // namespace penumbra::truth
