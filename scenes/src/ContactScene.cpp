@@ -1,19 +1,19 @@
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include "penumbra/scene/MeshGenerators.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
-namespace penumbra::scene {
+namespace penumbra::scenes {
 
-Scene makeContactScene()
+scene::Scene makeContactScene()
 {
-    Scene scene;
+    scene::Scene scene;
     const std::uint32_t ground = scene.addMaterial({.name = "ground", .baseColor = {0.7f, 0.7f, 0.7f, 1.0f}});
     const std::uint32_t caster = scene.addMaterial({.name = "caster", .baseColor = {0.8f, 0.45f, 0.3f, 1.0f}});
     const auto addBox = [&](std::string name, glm::vec3 halfExtents, glm::vec3 centre, std::uint32_t material) {
-        scene.addObject(std::move(name), scene.addMesh(makeBox(halfExtents)), material,
+        scene.addObject(std::move(name), scene.addMesh(scene::makeBox(halfExtents)), material,
                         glm::translate(glm::mat4(1.0f), centre));
     };
     addBox("ground", {10.0f, 0.1f, 10.0f}, {0.0f, -0.1f, 0.0f}, ground);
@@ -28,8 +28,8 @@ Scene makeContactScene()
                      .intensity = 2.0f,
                      .direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f)),
                      .angularDiameter = 10.0f}};
-    scene.camera = lookAt({1.4f, 7.0f, 0.0f}, {1.4f, 0.0f, 0.0f}, glm::radians(55.0f), {0.0f, 0.0f, -1.0f});
+    scene.camera = scene::lookAt({1.4f, 7.0f, 0.0f}, {1.4f, 0.0f, 0.0f}, glm::radians(55.0f), {0.0f, 0.0f, -1.0f});
     return scene;
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::scenes

@@ -1,5 +1,5 @@
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,7 +9,7 @@
 #include <array>
 #include <cmath>
 
-namespace penumbra::scene {
+namespace penumbra::scenes {
 namespace {
 
 // Every size of the scene, in metres and degrees.
@@ -54,9 +54,9 @@ glm::vec3 terrainNormal(float x, float z)
     return glm::normalize(glm::vec3(-dx, 1.0f, -dz));
 }
 
-MeshData makeTerrain()
+scene::MeshData makeTerrain()
 {
-    MeshData mesh;
+    scene::MeshData mesh;
     const std::uint32_t n = kTerrainQuads + 1;
     for (std::uint32_t j = 0; j < n; ++j)
         for (std::uint32_t i = 0; i < n; ++i) {
@@ -74,11 +74,11 @@ MeshData makeTerrain()
     return mesh;
 }
 
-void append(MeshData& into, const MeshData& part, const glm::mat4& transform)
+void append(scene::MeshData& into, const scene::MeshData& part, const glm::mat4& transform)
 {
     const auto first = static_cast<std::uint32_t>(into.vertices.size());
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(transform)));
-    for (const Vertex& v : part.vertices)
+    for (const scene::Vertex& v : part.vertices)
         into.vertices.push_back(
             {glm::vec3(transform * glm::vec4(v.position, 1.0f)), glm::normalize(normalMatrix * v.normal), v.uv});
     for (const std::uint32_t index : part.indices)
@@ -86,9 +86,9 @@ void append(MeshData& into, const MeshData& part, const glm::mat4& transform)
 }
 
 // One leaf card: a unit quad in the xy plane facing +z, uv over the whole leaf texture.
-MeshData makeCard()
+scene::MeshData makeCard()
 {
-    MeshData card;
+    scene::MeshData card;
     const glm::vec3 normal{0.0f, 0.0f, 1.0f};
     card.vertices = {{{-0.5f, -0.5f, 0.0f}, normal, {0.0f, 1.0f}},
                      {{0.5f, -0.5f, 0.0f}, normal, {1.0f, 1.0f}},
@@ -99,18 +99,18 @@ MeshData makeCard()
 }
 
 struct Tree {
-    MeshData wood;
-    MeshData leaves;
+    scene::MeshData wood;
+    scene::MeshData leaves;
 };
 
 // A trunk, branches leaning out from its upper half, and leaf cards in a cloud around each branch's end.
 Tree makeTree(std::uint32_t seed)
 {
     Tree tree;
-    append(tree.wood, makeCylinder(kTrunkRadius, 0.5f * kTrunkHeight, 10),
+    append(tree.wood, scene::makeCylinder(kTrunkRadius, 0.5f * kTrunkHeight, 10),
            glm::translate(glm::mat4(1.0f), {0.0f, 0.5f * kTrunkHeight, 0.0f}));
-    const MeshData branch = makeCylinder(0.07f, 1.0f, 6);
-    const MeshData card = makeCard();
+    const scene::MeshData branch = scene::makeCylinder(0.07f, 1.0f, 6);
+    const scene::MeshData card = makeCard();
     for (std::uint32_t b = 0; b < kBranchesPerTree; ++b) {
         const std::uint32_t s = seed * 1000u + b * 10u;
         const float height = kTrunkHeight * (0.45f + 0.5f * random01(s));
@@ -145,10 +145,10 @@ Tree makeTree(std::uint32_t seed)
 
 // Four leaves on a card, each an ellipse pointed at both ends around its midrib, drawn in alpha: 1 inside, 0
 // outside, with a one-texel ramp so that bilinear filtering gives a smooth cut-out edge.
-TextureImage makeLeafTexture()
+scene::TextureImage makeLeafTexture()
 {
-    TextureImage image{"leaves", kLeafTextureSize, kLeafTextureSize,
-                       std::vector<std::uint8_t>(std::size_t(kLeafTextureSize) * kLeafTextureSize * 4)};
+    scene::TextureImage image{"leaves", kLeafTextureSize, kLeafTextureSize,
+                              std::vector<std::uint8_t>(std::size_t(kLeafTextureSize) * kLeafTextureSize * 4)};
     struct Leaf {
         glm::vec2 centre;
         float angle, length, width;
@@ -181,9 +181,9 @@ TextureImage makeLeafTexture()
 
 } // namespace
 
-Scene makeForestScene()
+scene::Scene makeForestScene()
 {
-    Scene scene;
+    scene::Scene scene;
     const std::uint32_t ground =
         scene.addMaterial({.name = "grass", .baseColor = {0.25f, 0.4f, 0.15f, 1.0f}, .roughness = 0.9f});
     const std::uint32_t bark =
@@ -195,9 +195,9 @@ Scene makeForestScene()
                                                     .baseColor = {1.0f, 1.0f, 1.0f, 1.0f},
                                                     .roughness = 0.6f,
                                                     .alphaCutoff = 0.5f,
-                                                    .caster = CasterMode::Clip,
+                                                    .caster = scene::CasterMode::Clip,
                                                     .doubleSided = true,
-                                                    .textures = {MaterialTexture{.image = leafTexture}}});
+                                                    .textures = {scene::MaterialTexture{.image = leafTexture}}});
     scene.addObject("terrain", scene.addMesh(makeTerrain()), ground, glm::mat4(1.0f));
     for (std::uint32_t i = 0; i < kTrees.size(); ++i) {
         Tree tree = makeTree(i + 1);
@@ -208,18 +208,18 @@ Scene makeForestScene()
         scene.addObject(name + " wood", scene.addMesh(std::move(tree.wood)), bark, place);
         scene.addObject(name + " leaves", scene.addMesh(std::move(tree.leaves)), leaves, place);
     }
-    DirectionalLight sun;
+    scene::DirectionalLight sun;
     sun.name = "sun";
     sun.color = {1.0f, 0.96f, 0.88f};
     sun.intensity = 3.0f;
-    sun.direction = lightDirection(glm::radians(kSunPitchDegrees), glm::radians(kSunYawDegrees));
+    sun.direction = scene::lightDirection(glm::radians(kSunPitchDegrees), glm::radians(kSunYawDegrees));
     scene.lights.push_back(sun);
     const glm::vec3 eye{kCamera.x, terrainHeight(kCamera.x, kCamera.y) + kEyeHeight, kCamera.y};
     const glm::vec3 target{kCameraTarget.x, terrainHeight(kCameraTarget.x, kCameraTarget.y) + 3.0f, kCameraTarget.y};
-    scene.camera = lookAt(eye, target, glm::radians(60.0f));
+    scene.camera = scene::lookAt(eye, target, glm::radians(60.0f));
     scene.camera.farPlane = 150.0f;
     scene.validate();
     return scene;
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::scenes

@@ -1,4 +1,4 @@
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include "penumbra/scene/MeshGenerators.hpp"
 
@@ -8,7 +8,7 @@
 #include <glm/trigonometric.hpp>
 #include <string>
 
-namespace penumbra::scene {
+namespace penumbra::scenes {
 namespace {
 
 // Every size of the street, in metres.
@@ -54,7 +54,7 @@ struct Shapes {
     std::uint32_t post;
 };
 
-void addBuildings(Scene& scene, const Shapes& shapes, std::uint32_t walls)
+void addBuildings(scene::Scene& scene, const Shapes& shapes, std::uint32_t walls)
 {
     const float length = 2.0f * kHalfLength / kBuildingsPerSide;
     for (std::uint32_t i = 0; i < 2 * kBuildingsPerSide; ++i) {
@@ -67,7 +67,8 @@ void addBuildings(Scene& scene, const Shapes& shapes, std::uint32_t walls)
     }
 }
 
-void addTreesAndPosts(Scene& scene, const Shapes& shapes, std::uint32_t bark, std::uint32_t leaves, std::uint32_t metal)
+void addTreesAndPosts(scene::Scene& scene, const Shapes& shapes, std::uint32_t bark, std::uint32_t leaves,
+                      std::uint32_t metal)
 {
     for (std::uint32_t i = 0; i < 2 * kTreesPerSide; ++i) {
         // Between lamp posts: a tree every 16 m, offset by half a lamp pitch.
@@ -83,7 +84,7 @@ void addTreesAndPosts(Scene& scene, const Shapes& shapes, std::uint32_t bark, st
                                                          along(i / 2, kLampsPerRow)}));
 }
 
-void addCars(Scene& scene, const Shapes& shapes, std::uint32_t paint, std::uint32_t glass)
+void addCars(scene::Scene& scene, const Shapes& shapes, std::uint32_t paint, std::uint32_t glass)
 {
     for (std::uint32_t i = 0; i < kStreetCars; ++i) {
         // Parked in gaps of varying length along both kerbs.
@@ -95,7 +96,7 @@ void addCars(Scene& scene, const Shapes& shapes, std::uint32_t paint, std::uint3
     }
 }
 
-void addLights(Scene& scene)
+void addLights(scene::Scene& scene)
 {
     // Rows in the order kerb -x, kerb +x, facade -x, facade +x at each step along the street, nearest first.
     for (std::uint32_t k = 0; k < kLampsPerRow; ++k)
@@ -123,9 +124,9 @@ void addLights(Scene& scene)
 
 } // namespace
 
-Scene makeStreetScene()
+scene::Scene makeStreetScene()
 {
-    Scene scene;
+    scene::Scene scene;
     const std::uint32_t asphalt = scene.addMaterial({.name = "asphalt", .baseColor = {0.2f, 0.2f, 0.22f, 1.0f}});
     const std::uint32_t stone = scene.addMaterial({.name = "pavement", .baseColor = {0.55f, 0.53f, 0.5f, 1.0f}});
     const std::uint32_t walls = scene.addMaterial({.name = "walls", .baseColor = {0.7f, 0.62f, 0.52f, 1.0f}});
@@ -135,9 +136,10 @@ Scene makeStreetScene()
         {.name = "metal", .baseColor = {0.3f, 0.3f, 0.32f, 1.0f}, .metallic = 1.0f, .roughness = 0.4f});
     const std::uint32_t paint = scene.addMaterial({.name = "paint", .baseColor = {0.6f, 0.12f, 0.1f, 1.0f}});
     const std::uint32_t glass = scene.addMaterial({.name = "glass", .baseColor = {0.15f, 0.18f, 0.22f, 1.0f}});
-    const Shapes shapes{scene.addMesh(makeBox({0.5f, 0.5f, 0.5f})), scene.addMesh(makeCylinder(0.2f, 1.5f, 12)),
-                        scene.addMesh(makeSphere(1.8f, 16, 8)),
-                        scene.addMesh(makeCylinder(0.08f, 0.5f * kPostHeight, 8))};
+    const Shapes shapes{scene.addMesh(scene::makeBox({0.5f, 0.5f, 0.5f})),
+                        scene.addMesh(scene::makeCylinder(0.2f, 1.5f, 12)),
+                        scene.addMesh(scene::makeSphere(1.8f, 16, 8)),
+                        scene.addMesh(scene::makeCylinder(0.08f, 0.5f * kPostHeight, 8))};
 
     const float groundLength = 2.0f * kHalfLength + 20.0f;
     scene.addObject("ground", shapes.box, asphalt,
@@ -156,9 +158,9 @@ Scene makeStreetScene()
                      .intensity = 0.08f,
                      .direction = glm::normalize(glm::vec3(-0.3f, -0.8f, 0.4f))}};
     // At eye height at the near end of the street, looking along it.
-    scene.camera = lookAt({2.0f, 1.8f, kHalfLength + 6.0f}, {0.0f, 2.5f, 0.0f}, glm::radians(60.0f));
+    scene.camera = scene::lookAt({2.0f, 1.8f, kHalfLength + 6.0f}, {0.0f, 2.5f, 0.0f}, glm::radians(60.0f));
     scene.camera.farPlane = 450.0f;
     return scene;
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::scenes

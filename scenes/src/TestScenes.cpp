@@ -1,4 +1,4 @@
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include "penumbra/scene/MeshGenerators.hpp"
 
@@ -8,7 +8,7 @@
 #include <array>
 #include <cmath>
 
-namespace penumbra::scene {
+namespace penumbra::scenes {
 namespace {
 
 // Every position and size of the scene, in metres and degrees.
@@ -93,7 +93,7 @@ constexpr std::array kPlacements{
     Placement{"long beam", Shape::Box, {0.25f, 0.25f, 40.0f}, {-6.5f, 3.5f, -10.0f}, kNoRotation, MaterialId::Metal},
 };
 
-Material material(MaterialId id)
+scene::Material material(MaterialId id)
 {
     switch (id) {
     case MaterialId::Ground:
@@ -109,11 +109,11 @@ Material material(MaterialId id)
     case MaterialId::Metal:
         return {.name = "metal", .baseColor = {0.9f, 0.8f, 0.5f, 1.0f}, .metallic = 1.0f, .roughness = 0.3f};
     case MaterialId::ClipChecker:
-        return {.name = "clip checker", .baseColor = {0.9f, 0.8f, 0.1f, 1.0f}, .caster = CasterMode::Clip};
+        return {.name = "clip checker", .baseColor = {0.9f, 0.8f, 0.1f, 1.0f}, .caster = scene::CasterMode::Clip};
     // Alpha 0.6: about 60% of its shadow's texels survive dithering; the ground truth (fixed
     // threshold 0.5) counts it a solid caster.
     case MaterialId::DitherGlass:
-        return {.name = "dither glass", .baseColor = {0.3f, 0.8f, 0.9f, 0.6f}, .caster = CasterMode::Dither};
+        return {.name = "dither glass", .baseColor = {0.3f, 0.8f, 0.9f, 0.6f}, .caster = scene::CasterMode::Dither};
     case MaterialId::NoReceive:
         return {.name = "no receive", .baseColor = {0.9f, 0.5f, 0.1f, 1.0f}, .receiveShadows = false};
     case MaterialId::Count:
@@ -127,15 +127,15 @@ constexpr std::array kLightColors{glm::vec3{1.0f, 0.95f, 0.85f}, glm::vec3{1.0f,
 constexpr std::array kLightNames{"key", "red", "green", "blue"};
 constexpr std::array kLightIntensities{1.0f, 0.5f, 0.5f, 0.5f};
 
-MeshData makeMesh(const Placement& placement)
+scene::MeshData makeMesh(const Placement& placement)
 {
     switch (placement.shape) {
     case Shape::Box:
-        return makeBox(placement.size);
+        return scene::makeBox(placement.size);
     case Shape::Sphere:
-        return makeSphere(placement.size.x, kSphereSegments, kSphereRings);
+        return scene::makeSphere(placement.size.x, kSphereSegments, kSphereRings);
     case Shape::Cylinder:
-        return makeCylinder(placement.size.x, placement.size.y, kCylinderSegments);
+        return scene::makeCylinder(placement.size.x, placement.size.y, kCylinderSegments);
     }
     return {};
 }
@@ -166,33 +166,33 @@ glm::mat4 placementTransform(const Placement& placement)
     return m;
 }
 
-Scene makeGeometry()
+scene::Scene makeGeometry()
 {
-    Scene scene;
+    scene::Scene scene;
     for (std::uint32_t id = 0; id < static_cast<std::uint32_t>(MaterialId::Count); ++id)
         scene.addMaterial(material(static_cast<MaterialId>(id)));
     const auto materialIndex = [](MaterialId id) { return static_cast<std::uint32_t>(id); };
 
-    scene.addObject("ground", scene.addMesh(makePlane(kGroundHalfSize)), materialIndex(MaterialId::Ground),
+    scene.addObject("ground", scene.addMesh(scene::makePlane(kGroundHalfSize)), materialIndex(MaterialId::Ground),
                     glm::mat4(1.0f));
     for (const Placement& placement : kPlacements)
         scene.addObject(placement.name, scene.addMesh(makeMesh(placement)), materialIndex(placement.material),
                         placementTransform(placement));
 
-    scene.camera = lookAt(kCameraPosition, kCameraTarget, glm::radians(kCameraFovYDegrees));
+    scene.camera = scene::lookAt(kCameraPosition, kCameraTarget, glm::radians(kCameraFovYDegrees));
     return scene;
 }
 
-DirectionalLight makeLight(std::size_t index)
+scene::DirectionalLight makeLight(std::size_t index)
 {
     const float yaw = kFirstLightYawDegrees + kLightYawStepDegrees * static_cast<float>(index);
     return {.name = kLightNames[index],
             .color = kLightColors[index],
             .intensity = kLightIntensities[index],
-            .direction = lightDirection(glm::radians(kLightPitchDegrees), glm::radians(yaw))};
+            .direction = scene::lightDirection(glm::radians(kLightPitchDegrees), glm::radians(yaw))};
 }
 
-SpotLight aimedSpot(const char* name, glm::vec3 color, glm::vec3 position, glm::vec3 target, float range)
+scene::SpotLight aimedSpot(const char* name, glm::vec3 color, glm::vec3 position, glm::vec3 target, float range)
 {
     return {.name = name,
             .color = color,
@@ -206,25 +206,25 @@ SpotLight aimedSpot(const char* name, glm::vec3 color, glm::vec3 position, glm::
 
 } // namespace
 
-Scene makeShadowTestScene()
+scene::Scene makeShadowTestScene()
 {
-    Scene scene = makeGeometry();
+    scene::Scene scene = makeGeometry();
     for (std::size_t i = 0; i < kLightNames.size(); ++i)
         scene.lights.push_back(makeLight(i));
     return scene;
 }
 
-Scene makeSingleLightScene()
+scene::Scene makeSingleLightScene()
 {
-    Scene scene = makeGeometry();
+    scene::Scene scene = makeGeometry();
     scene.lights.push_back(makeLight(0));
     return scene;
 }
 
-Scene makeMixedLightsScene()
+scene::Scene makeMixedLightsScene()
 {
-    Scene scene = makeGeometry();
-    DirectionalLight key = makeLight(0);
+    scene::Scene scene = makeGeometry();
+    scene::DirectionalLight key = makeLight(0);
     key.intensity = 0.5f;
     scene.lights.push_back(key);
     scene.spotLights = {
@@ -247,13 +247,13 @@ Scene makeMixedLightsScene()
     return scene;
 }
 
-Scene makePointLightRoomScene()
+scene::Scene makePointLightRoomScene()
 {
-    Scene scene;
+    scene::Scene scene;
     for (std::uint32_t id = 0; id < static_cast<std::uint32_t>(MaterialId::Count); ++id)
         scene.addMaterial(material(static_cast<MaterialId>(id)));
     const auto addBox = [&](const char* name, glm::vec3 halfExtents, glm::vec3 centre, MaterialId id) {
-        scene.addObject(name, scene.addMesh(makeBox(halfExtents)), static_cast<std::uint32_t>(id),
+        scene.addObject(name, scene.addMesh(scene::makeBox(halfExtents)), static_cast<std::uint32_t>(id),
                         glm::translate(glm::mat4(1.0f), centre));
     };
     addBox("floor", {5.2f, 0.1f, 5.2f}, {0.0f, -0.1f, 0.0f}, MaterialId::Ground);
@@ -264,15 +264,15 @@ Scene makePointLightRoomScene()
     addBox("wall +z", {5.2f, 2.0f, 0.1f}, {0.0f, 2.0f, 5.1f}, MaterialId::White);
     addBox("crate", {0.6f, 0.6f, 0.6f}, {-1.5f, 0.6f, 2.0f}, MaterialId::Red);
     addBox("floating cube", {0.4f, 0.4f, 0.4f}, {2.0f, 2.6f, 2.0f}, MaterialId::Blue);
-    scene.addObject("pillar", scene.addMesh(makeCylinder(0.3f, 2.0f, kCylinderSegments)),
+    scene.addObject("pillar", scene.addMesh(scene::makeCylinder(0.3f, 2.0f, kCylinderSegments)),
                     static_cast<std::uint32_t>(MaterialId::Green),
                     glm::translate(glm::mat4(1.0f), {1.8f, 2.0f, -1.0f}));
     scene.pointLights = {
         {.name = "inside", .intensity = 6.0f, .position = {0.5f, 2.0f, 0.3f}, .range = 14.0f},
         {.name = "outside", .intensity = 6.0f, .position = {0.0f, 2.0f, 5.6f}, .range = 8.0f},
     };
-    scene.camera = lookAt({0.0f, 3.0f, -4.6f}, {0.0f, 0.8f, 3.0f}, glm::radians(75.0f));
+    scene.camera = scene::lookAt({0.0f, 3.0f, -4.6f}, {0.0f, 0.8f, 3.0f}, glm::radians(75.0f));
     return scene;
 }
 
-} // namespace penumbra::scene
+} // namespace penumbra::scenes

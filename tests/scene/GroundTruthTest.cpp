@@ -1,6 +1,6 @@
 #include "penumbra/truth/GroundTruth.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -13,7 +13,7 @@ namespace {
 
 TEST(GroundTruthTest, CentrePixelHitsWhatTheCameraLooksAt)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     const RayCaster cameraRays(scene, RayKind::Camera);
     // Odd size: the centre pixel's sample is exactly on the view axis.
     const CpuGBuffer gbuffer = traceGBuffer(scene, cameraRays, scene.camera, 101, 101);
@@ -73,7 +73,7 @@ TEST(GroundTruthTest, SamplesTellTheConnectedPiecesOfAMeshApart)
 
 TEST(GroundTruthTest, SamplesProjectBackToTheirPixelCentres)
 {
-    const scene::Scene scene = scene::makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     constexpr std::uint32_t width = 80, height = 60;
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, width, height);
     const scene::Camera& camera = scene.camera;
@@ -133,7 +133,7 @@ TEST(GroundTruthTest, ShadowUnderAFloatingBoxForAVerticalLight)
 
 TEST(GroundTruthTest, TestSceneMaskHasEveryCategory)
 {
-    const scene::Scene scene = scene::makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 160, 90);
     const LightVisibilityMask mask = traceLightVisibility(scene, RayCaster(scene), gbuffer, scene.lights[0]);
     std::map<LightVisibility, int> counts;
@@ -152,7 +152,7 @@ TEST(GroundTruthTest, TestSceneMaskHasEveryCategory)
 
 TEST(GroundTruthTest, WrongRayKindIsRejected)
 {
-    const scene::Scene scene = scene::makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     const RayCaster shadowRays(scene);
     EXPECT_THROW(traceGBuffer(scene, shadowRays, scene.camera, 4, 4), std::invalid_argument);
     const RayCaster cameraRays(scene, RayKind::Camera);

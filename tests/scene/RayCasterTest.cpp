@@ -1,7 +1,7 @@
 #include "penumbra/scene/MeshGenerators.hpp"
 #include "penumbra/truth/RayCaster.hpp"
 #include "penumbra/truth/RayTriangle.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -85,7 +85,7 @@ TEST(RayCasterTest, TriangleIndexAndBarycentricsReferToTheMesh)
 // The test scene with every material made a solid double-sided caster, so brute force needs no alpha nor culling.
 scene::Scene solidTestScene()
 {
-    scene::Scene scene = scene::makeShadowTestScene();
+    scene::Scene scene = scenes::makeShadowTestScene();
     for (scene::Material& material : scene.materials) {
         material.caster = scene::CasterMode::On;
         material.doubleSided = true;

@@ -11,7 +11,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/truth/RayCaster.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
 #include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/TentFilter.hpp"
@@ -242,7 +242,7 @@ protected:
 
     SeamFigures measure(PointShadowMode mode, const PlanFault& fault = {})
     {
-        scene::Scene scene = scene::makePointLightRoomScene();
+        scene::Scene scene = scenes::makePointLightRoomScene();
         scene.pointLights.pop_back();
         const glm::vec3 light = scene.pointLights[0].position;
         render::FrameDesc frame;

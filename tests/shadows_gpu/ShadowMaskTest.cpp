@@ -7,7 +7,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/truth/ShadowTruth.hpp"
 #include "penumbra/truth/GroundTruth.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/truth/TruthComparison.hpp"
 
 #include <algorithm>
@@ -146,7 +146,7 @@ std::string joined(const std::vector<std::string>& lines)
 // The mixed scene with one spot or point light kept, brightened to decide most of what it reaches.
 scene::Scene oneLocalLight(bool spot, std::size_t index)
 {
-    scene::Scene scene = scene::makeMixedLightsScene();
+    scene::Scene scene = scenes::makeMixedLightsScene();
     scene.lights.clear();
     if (spot) {
         scene.spotLights = {scene.spotLights[index]};
@@ -214,7 +214,7 @@ TEST_F(ShadowMaskTest, SpotShadowAgreesWithTheRayCast)
 
 scene::Scene roomLitFromInside()
 {
-    scene::Scene room = scene::makePointLightRoomScene();
+    scene::Scene room = scenes::makePointLightRoomScene();
     room.pointLights.pop_back();
     return room;
 }
@@ -234,7 +234,7 @@ TEST_F(ShadowMaskTest, PointShadowsAgreeWithTheRayCast)
 // The key light's scene, the sun `pitchDegrees` above the horizon (the scene's own: 50).
 scene::Scene keyLightScene(float pitchDegrees = 50.0f)
 {
-    scene::Scene scene = scene::makeSingleLightScene();
+    scene::Scene scene = scenes::makeSingleLightScene();
     scene.lights[0].direction = scene::lightDirection(glm::radians(pitchDegrees), glm::radians(30.0f));
     return scene;
 }
@@ -329,7 +329,7 @@ TEST_F(ShadowMaskTest, LowSunAgreesWithTheRayCast)
 // 100% with every filter, shadowed 99.75% (hard) to 100%, no acne.
 TEST_F(ShadowMaskTest, ForestAgreesWithTheRayCastWithEveryFilter)
 {
-    const scene::Scene scene = scene::makeForestScene();
+    const scene::Scene scene = scenes::makeForestScene();
     for (const shadows::ShadowFilterInfo& filter : shadows::shadowFilters()) {
         shadows::ShadowSettings settings;
         settings.directional.filter = filter.filter;
@@ -347,7 +347,7 @@ TEST_F(ShadowMaskTest, ForestAgreesWithTheRayCastWithEveryFilter)
 // shadowed pixels are left to judge.
 TEST_F(ShadowMaskTest, ALightsOwnFilterIsJudgedWithItsReach)
 {
-    scene::Scene scene = scene::makeContactScene();
+    scene::Scene scene = scenes::makeContactScene();
     scene.lights[0].shadowFilter = static_cast<std::int32_t>(shadows::ShadowFilter::PCF7x7);
     const render::FrameDesc frame = maskFrame({}, 1280, 720, kKeyLight);
     const TruthFigures f = report(*this, "contact pcf7", renderMask(scene, frame), traceTruth(gpu(), scene, frame));

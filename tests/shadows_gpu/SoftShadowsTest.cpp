@@ -9,7 +9,7 @@
 #include "penumbra/truth/SoftShadowTruth.hpp"
 #include "penumbra/truth/AreaLightTruth.hpp"
 #include "penumbra/truth/RayCaster.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +37,7 @@ constexpr double kPcssOverBestFixed = 0.5;
 // left of the pole, so every shadow still runs along +x from the pole's foot.
 scene::Scene contactScene(LightKind kind, ShadowFilter filter)
 {
-    scene::Scene scene = scene::makeContactScene();
+    scene::Scene scene = scenes::makeContactScene();
     const auto value = static_cast<std::int32_t>(filter);
     if (kind == LightKind::Directional) {
         scene.lights[0].shadowFilter = value;
@@ -223,7 +223,7 @@ TEST_F(SoftShadowsTest, DirectionalPcssAgainstTheAreaLight)
 {
     const AreaLightFigures figures = checkAgainstTheAreaLight(*device, LightKind::Directional);
     // Contact hardening: the pole's point at height h shadows the ground at x = h, its penumbra widening with h.
-    const scene::Camera camera = scene::makeContactScene().camera;
+    const scene::Camera camera = scenes::makeContactScene().camera;
     const std::uint32_t firstRow = pixelOf(*device, camera, kSize, kSize, {1.0f, 0.0f, -0.9f}).y;
     const std::uint32_t lastRow = pixelOf(*device, camera, kSize, kSize, {1.0f, 0.0f, 0.9f}).y;
     std::vector<int> widths;

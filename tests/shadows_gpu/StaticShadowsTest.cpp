@@ -9,7 +9,7 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/StaticShadowBake.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -61,7 +61,7 @@ protected:
 
 TEST_F(StaticShadowsTest, StaticMapsAreDrawnOnceWhileTheDynamicBallMoves)
 {
-    scene::Scene scene = scene::makeTownScene();
+    scene::Scene scene = scenes::makeTownScene();
     const render::FrameDesc frame = staticMapsFrame();
     render::SceneRenderer cached(*device, scene);
     // A renderer asked to draw every map afresh each frame, for the same scene: what the kept maps must give.
@@ -90,7 +90,7 @@ TEST_F(StaticShadowsTest, StaticMapsAreDrawnOnceWhileTheDynamicBallMoves)
 
 TEST_F(StaticShadowsTest, RealtimeDynamicCastersOnlyGiveTheSamePictureWhenNothingMoves)
 {
-    const scene::Scene scene = scene::makeTownScene();
+    const scene::Scene scene = scenes::makeTownScene();
     render::FrameDesc frame = staticMapsFrame();
     render::SceneRenderer renderer(*device, scene);
     const render::FrameStats allStats = renderer.render(scene.camera, frame);
@@ -330,7 +330,7 @@ TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
 // the shadowed ones; with static maps it agrees with the ray cast, without them nothing decides.
 TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowAsTheRayCastDoes)
 {
-    const scene::Scene scene = scene::makeTownScene();
+    const scene::Scene scene = scenes::makeTownScene();
     render::FrameDesc frame = staticMapsFrame();
     frame.shadows.maxDistance = 40.0f;
     const scene::LightRef sun{scene::LightKind::Directional, 0};

@@ -7,7 +7,7 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Shader.hpp"
 #include "penumbra/truth/GroundTruth.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <fmt/format.h>
@@ -32,7 +32,7 @@ ThreadResult renderOnThisThread(const std::string& configuration)
     ThreadResult result{.configuration = configuration};
     try {
         const std::unique_ptr<rhi::Device> device = createValidatedDevice(configuration);
-        const scene::Scene scene = scene::makeMixedLightsScene();
+        const scene::Scene scene = scenes::makeMixedLightsScene();
         result.lit = renderLit(*device, scene, litFrame(160, 90, true, 1));
         for (const std::string& message : device->debugMessages())
             result.failure += "\n  debug message: " + message;
@@ -110,7 +110,7 @@ TEST(DevicesOnThreads, ShaderCompilationFromManyThreadsGivesTheSameSpirv)
 // truth::traceGBuffer runs rows on every hardware thread and reports progress on the calling thread only.
 TEST(DevicesOnThreads, RayCasterReportsProgressOnTheCallingThreadOnly)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     const truth::RayCaster rays(scene, truth::RayKind::Camera);
     const std::thread::id caller = std::this_thread::get_id();
     int elsewhere = 0;

@@ -2,7 +2,7 @@
 
 #include "penumbra/scene/Scene.hpp"
 
-namespace penumbra::scene {
+namespace penumbra::scenes {
 
 // The shadow test scene, one place for every shadow artefact to show: a 60 x 60 ground plane at y = 0;
 // cubes, spheres and cylinders standing on it (their lowest points exactly at y = 0, so
@@ -13,26 +13,26 @@ namespace penumbra::scene {
 // Object transforms are rigid (rotation and translation only), so normals transform with
 // the transform's upper 3x3. Objects are found by name with Scene::findObject.
 // Four lights, all 50 degrees below the horizon, yaw 30, 120, 210 and 300 degrees.
-Scene makeShadowTestScene();
+scene::Scene makeShadowTestScene();
 
 // The same geometry, materials and camera with only the first ("key") light.
-Scene makeSingleLightScene();
+scene::Scene makeSingleLightScene();
 
 // The same geometry and camera lit by the key light at half intensity, three spot lights aimed at
 // objects and two point lights among them: 3 + 2 x 6 = 15 tiles of the local atlas.
-Scene makeMixedLightsScene();
+scene::Scene makeMixedLightsScene();
 
 // A closed 10 x 4 x 10 room (floor, ceiling and walls are boxes 0.2 thick, outside the interior
 // x, z in [-5, 5], y in [0, 4]) with a pillar, a floating cube and a crate, lit by the point light
 // "inside" at (0.5, 2, 0.3); the point light "outside" sits 0.4 behind the +z wall, shining at it.
 // The camera stands inside near the -z wall looking at the +z wall.
-Scene makePointLightRoomScene();
+scene::Scene makePointLightRoomScene();
 
 // A forest for real-content shadows and benchmarks: an 80 x 80 heightfield terrain (2 450 triangles), five trees
 // of about 5 000 triangles each (an opaque trunk and branches, alpha-tested leaf cards cut out by a leaf texture
 // generated here), a camera standing among them at eye height (made for 16:9, 1280 x 720) and one sun, 40 degrees
 // up. Objects: "terrain", "tree N wood" and "tree N leaves" for N = 1..5.
-Scene makeForestScene();
+scene::Scene makeForestScene();
 
 // Contact points for soft shadows, seen from straight above: a 20 x 20 ground (top at y = 0), a pole 3 high and
 // 0.2 wide standing on it at the origin, a floating slab 1 above the ground at (1.2, -2.2) and a fence of eight
@@ -42,7 +42,7 @@ Scene makeForestScene();
 // "fence 1".."fence 8".
 inline constexpr float kContactPoleHeight = 3.0f;
 inline constexpr float kContactPoleHalfWidth = 0.1f;
-Scene makeContactScene();
+scene::Scene makeContactScene();
 
 // A town larger than the default shadow distance, for static and baked shadows: a 200 x 200 ground (top at y = 0)
 // with 8 x 8 static buildings 6 to 22 high and 8 to 10 wide, 25 apart, and one dynamic red ball of radius 1 ("ball", at
@@ -50,13 +50,13 @@ Scene makeContactScene();
 // the distant buildings lie far beyond 100 units. Objects: "ground", "building 1".."building 64", "ball".
 inline constexpr float kTownHalfSize = 100.0f;
 inline constexpr glm::vec3 kTownBallStart{0.0f, 1.0f, 75.0f};
-Scene makeTownScene();
+scene::Scene makeTownScene();
 
 // Many objects of one mesh, for instanced drawing: `count` unit cubes ("cube 1".."cube <count>", one mesh and one
 // material) standing on a ground ("ground") in a square grid, kCubeGridPitch apart, filled row by row; one sun; the
 // camera low over the grid's edge looking across it.
 inline constexpr float kCubeGridPitch = 3.0f;
-Scene makeCubeGridScene(std::uint32_t count);
+scene::Scene makeCubeGridScene(std::uint32_t count);
 
 // A street at night for many lights: 384 m of street along z (x in [-6, 6] road, pavements to |x| = 12) between
 // two rows of 20 buildings; 48 trees and 128 lamp posts on the pavements, 40 parked cars. Local lights (kStreetLamps
@@ -69,6 +69,6 @@ Scene makeCubeGridScene(std::uint32_t count);
 inline constexpr std::uint32_t kStreetLamps = 256;
 inline constexpr std::uint32_t kStreetShopWindows = 64;
 inline constexpr std::uint32_t kStreetCars = 40;
-Scene makeStreetScene();
+scene::Scene makeStreetScene();
 
-} // namespace penumbra::scene
+} // namespace penumbra::scenes
