@@ -6,7 +6,7 @@
 
 #include <penumbra/backends/CreateDevice.hpp>
 #include <penumbra/render/SceneRenderer.hpp>
-#include <penumbra/scene/TestScenes.hpp>
+#include <penumbra/scenes/TestScenes.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <iostream>
@@ -69,7 +69,7 @@ void main()
 int main(int argc, char** argv)
 try {
     auto device = createDevice(examples::backendArgument(argc, argv));
-    const scene::Scene world = scene::makeShadowTestScene();
+    const scene::Scene world = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, world);
     const render::FrameDesc frame{.width = 960, .height = 540};
     const render::ShadowPlans plans = renderer.planShadows(world.camera, frame);

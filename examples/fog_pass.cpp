@@ -4,7 +4,7 @@
 #include "FogPass.hpp"
 
 #include <penumbra/backends/CreateDevice.hpp>
-#include <penumbra/scene/TestScenes.hpp>
+#include <penumbra/scenes/TestScenes.hpp>
 
 #include <iostream>
 
@@ -13,7 +13,7 @@ try {
     using namespace penumbra;
     auto device = createDevice(examples::backendArgument(argc, argv));
     constexpr std::uint32_t width = 960, height = 540;
-    examples::FoggedScene fogged(*device, scene::makeShadowTestScene(), width, height);
+    examples::FoggedScene fogged(*device, scenes::makeShadowTestScene(), width, height);
     const render::FrameStats stats =
         fogged.renderer->render(fogged.scene.camera, render::FrameDesc{.width = width, .height = height});
     for (const render::PassTiming& pass : stats.passes)

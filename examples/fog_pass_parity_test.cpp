@@ -3,7 +3,7 @@
 #include "FogPass.hpp"
 
 #include <penumbra/parity/GoogleTest.hpp>
-#include <penumbra/scene/TestScenes.hpp>
+#include <penumbra/scenes/TestScenes.hpp>
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@ std::vector<parity::Picture> renderFog(rhi::Device& device, const rhi::NamedConf
     // At 192 x 108 the test scene's lit picture itself differs along one row between opengl (clip control) and the
     // other configurations (an edge through pixel centres, a rasterization tie); at 160 x 90 it does not.
     constexpr std::uint32_t width = 160, height = 90;
-    examples::FoggedScene fogged(device, scene::makeShadowTestScene(), width, height);
+    examples::FoggedScene fogged(device, scenes::makeShadowTestScene(), width, height);
     fogged.renderer->render(fogged.scene.camera, render::FrameDesc{.width = width, .height = height});
     return {parity::colorPicture("fogged", rhi::readTexture(device, *fogged.fogged))};
 }

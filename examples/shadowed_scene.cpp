@@ -5,7 +5,7 @@
 #include <penumbra/backends/CreateDevice.hpp>
 #include <penumbra/gltf/GltfLoader.hpp>
 #include <penumbra/render/SceneRenderer.hpp>
-#include <penumbra/scene/TestScenes.hpp>
+#include <penumbra/scenes/TestScenes.hpp>
 
 #include <iostream>
 
@@ -16,7 +16,7 @@ namespace {
 scene::Scene loadScene(const std::string& file)
 {
     if (file.empty())
-        return scene::makeShadowTestScene();
+        return scenes::makeShadowTestScene();
     gltf::GltfScene loaded = gltf::loadGltf(file);
     for (const std::string& note : loaded.notes)
         std::cout << file << ": " << note << '\n';

@@ -4,10 +4,10 @@
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
-#include "penumbra/render/ShadowTruth.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <array>
@@ -59,16 +59,16 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 10> kNamedScenes{{{"test", scene::makeShadowTestScene},
-                                                   {"key-light", scene::makeSingleLightScene},
-                                                   {"mixed", scene::makeMixedLightsScene},
-                                                   {"room", scene::makePointLightRoomScene},
-                                                   {"forest", scene::makeForestScene},
-                                                   {"contact", scene::makeContactScene},
-                                                   {"town", scene::makeTownScene},
-                                                   {"street", scene::makeStreetScene},
-                                                   {"cubes", [] { return scene::makeCubeGridScene(10'000); }},
-                                                   {"cubes-100k", [] { return scene::makeCubeGridScene(100'000); }}}};
+constexpr std::array<NamedScene, 10> kNamedScenes{{{"test", scenes::makeShadowTestScene},
+                                                   {"key-light", scenes::makeSingleLightScene},
+                                                   {"mixed", scenes::makeMixedLightsScene},
+                                                   {"room", scenes::makePointLightRoomScene},
+                                                   {"forest", scenes::makeForestScene},
+                                                   {"contact", scenes::makeContactScene},
+                                                   {"town", scenes::makeTownScene},
+                                                   {"street", scenes::makeStreetScene},
+                                                   {"cubes", [] { return scenes::makeCubeGridScene(10'000); }},
+                                                   {"cubes-100k", [] { return scenes::makeCubeGridScene(100'000); }}}};
 
 } // namespace
 
@@ -101,9 +101,9 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     pictures.frameGraph = renderer.frameGraphDot();
     if (!scene.lights.empty())
         for (const float depth : kTexelDensityDepths)
-            pictures.texelsPerMetre.push_back(
-                render::directionalTexelsPerMetre(renderer.plan(), 0, scene.camera,
-                                                  float(frame.width) / float(frame.height), depth));
+            pictures.texelsPerMetre.push_back(truth::directionalTexelsPerMetre(renderer.plan(), 0, scene.camera,
+                                                                               float(frame.width) / float(frame.height),
+                                                                               depth));
     pictures.lit = rhi::readTexture(device, renderer.litImage());
     if (frame.cascadeView)
         pictures.cascades = rhi::readTexture(device, renderer.cascadeImage());

@@ -40,7 +40,7 @@ struct ShadowPictures {
     render::FrameStats stats;
     std::string frameGraph; // the frame's graph as Graphviz dot (SceneRenderer::frameGraphDot)
     std::vector<std::string> notes;
-    // render::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
+    // truth::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
     std::vector<float> texelsPerMetre;
 
     // Throws rhi::Error naming the atlases there are.
@@ -51,10 +51,10 @@ struct ShadowPictures {
 // cascade of the default splits (10, 25, 50, 100 m).
 inline constexpr std::array<float, 5> kTexelDensityDepths{3.0f, 8.0f, 15.0f, 35.0f, 70.0f};
 
-// The scenes the tool renders by name: "test" (scene::makeShadowTestScene, four lights), "key-light"
-// (scene::makeSingleLightScene), "mixed" (scene::makeMixedLightsScene: key, spot and point lights) and
-// "room" (scene::makePointLightRoomScene), "forest" (scene::makeForestScene), "contact" (scene::makeContactScene)
-// "town" (scene::makeTownScene), "cubes" and "cubes-100k" (scene::makeCubeGridScene of 10 000 and 100 000 cubes).
+// The scenes the tool renders by name: "test" (scenes::makeShadowTestScene, four lights), "key-light"
+// (scenes::makeSingleLightScene), "mixed" (scenes::makeMixedLightsScene: key, spot and point lights) and
+// "room" (scenes::makePointLightRoomScene), "forest" (scenes::makeForestScene), "contact" (scenes::makeContactScene)
+// "town" (scenes::makeTownScene), "cubes" and "cubes-100k" (scenes::makeCubeGridScene of 10 000 and 100 000 cubes).
 // Unknown names throw rhi::Error listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);

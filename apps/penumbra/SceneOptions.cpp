@@ -105,16 +105,6 @@ CLI::Validator filterValidator()
         "FILTER");
 }
 
-CLI::Validator projectionValidator()
-{
-    return CLI::Validator(
-        [](std::string& s) {
-            return shadows::projectionFromName(s) ? std::string()
-                                                  : fmt::format("'{}' is not one of {}", s, shadows::projectionNames());
-        },
-        "PROJECTION");
-}
-
 void addSceneOptions(CLI::App& command, SceneOptions& options)
 {
     command
@@ -202,13 +192,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                     fmt::format("Every light's shadow filter, over the settings' and the lights' own: {}",
                                 shadows::filterCommandNames()))
         ->check(filterValidator());
-    command
-        .add_option("--projection", options.projection,
-                    fmt::format("The directional cascades' projection, over the settings': {} (stable: bands of "
-                                "distance, shadow texels that stay put; close: bands of view depth, tiles fitted to "
-                                "their slices, more texels that swim as the camera turns)",
-                                shadows::projectionNames()))
-        ->check(projectionValidator());
+    addSettingsFieldOptions(command, options.settingsFields);
     command
         .add_option("--light-size", options.lightSize,
                     fmt::format("Every light's source size for soft shadows: degrees of angular diameter for "
@@ -245,18 +229,6 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                        "Make the objects of this name dynamic (repeatable; a glTF mesh's primitives NAME/0, NAME/1 "
                        "follow NAME): they are drawn into the realtime shadows every frame, never into static maps");
     command
-        .add_option("--static-maps", options.staticMaps,
-                    "Static shadow maps of the static casters, over the settings' static.update: everyFrame (none, "
-                    "every caster drawn every frame), onChange (kept until a static caster or the light changes), "
-                    "onDemand (kept until asked)")
-        ->check(CLI::Validator(
-            [](std::string& s) {
-                return shadows::parseStaticShadowUpdate(s)
-                           ? std::string()
-                           : fmt::format("'{}' is not everyFrame, onChange or onDemand", s);
-            },
-            "MODE"));
-    command
         .add_option("--light-static-map", options.lightStaticMaps,
                     fmt::format("A light's own static map mode, over --static-maps and the settings' (repeatable): "
                                 "NAME=MODE, MODE one of {} (settings: the settings' mode)",
@@ -268,15 +240,6 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                            : fmt::format("'{}' is not NAME=MODE with MODE one of {}", s, scene::kShadowUpdateNames);
             },
             "NAME=MODE"));
-    command
-        .add_option("--realtime-casters", options.realtimeCasters,
-                    "With static maps, what the realtime atlases draw, over the settings' static.realtimeCasters: all "
-                    "or dynamic (static casters' shadows from the static maps alone)")
-        ->check(CLI::Validator(
-            [](std::string& s) {
-                return shadows::parseRealtimeCasters(s) ? std::string() : fmt::format("'{}' is not all or dynamic", s);
-            },
-            "CASTERS"));
     command
         .add_option(
             "--baked", options.baked,
@@ -440,7 +403,8 @@ void applyBake(const SceneOptions& options, shadows::ShadowSettings& shadows)
 {
     if (options.baked.empty())
         return;
-    if (options.realtimeCasters == "all")
+    const auto realtimeCasters = options.settingsFields.find("static.realtimeCasters");
+    if (realtimeCasters != options.settingsFields.end() && realtimeCasters->second == "all")
         throw rhi::Error(fmt::format("--baked {} with --realtime-casters all: the bake holds the static casters' "
                                      "shadows, and `all` would draw those casters into the realtime atlases every "
                                      "frame again; leave --realtime-casters out (--baked implies dynamic)",
@@ -477,13 +441,8 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
     if (!options.ambient.empty())
         frame.ambient = parseAmbientOption(options.ambient).value();
     frame.maxAnisotropy = options.anisotropy.value_or(frame.maxAnisotropy);
-    if (!options.projection.empty())
-        frame.shadows.directional.projection = shadows::projectionFromName(options.projection).value();
     frame.msaa = options.msaa.value_or(frame.msaa);
-    if (!options.staticMaps.empty())
-        frame.shadows.staticMaps.update = shadows::parseStaticShadowUpdate(options.staticMaps).value();
-    if (!options.realtimeCasters.empty())
-        frame.shadows.staticMaps.realtimeCasters = shadows::parseRealtimeCasters(options.realtimeCasters).value();
+    applySettingsFieldValues(frame.shadows, options.settingsFields);
     applyBake(options, frame.shadows);
     return frame;
 }

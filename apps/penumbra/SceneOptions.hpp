@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SettingsFieldOptions.hpp"
 #include "ShadowScene.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
@@ -17,7 +18,8 @@ namespace penumbra::apps {
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --lights, --camera, --light,
 // --default-lights, --missing-textures, --ambient,
 // --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
-// --light-size, --projection, --dynamic, --static-maps, --realtime-casters, --time, --animation.
+// --light-size, --dynamic, --light-static-map, --baked, --time, --animation, and the shadow settings fields' own
+// options (addSettingsFieldOptions: --projection, --static-maps, --realtime-casters).
 struct SceneOptions {
     std::string scene = "test";
     std::optional<std::uint32_t> localLights; // --lights N: the scene's first N local lights (keepFirstLocalLights)
@@ -40,11 +42,9 @@ struct SceneOptions {
     std::string shadowPath; // kShadowPathNames (render::FrameDesc::shadowPath); empty: the settings file's, or forward
     std::string filter; // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
-    std::string projection; // shadows::projectionFromName; empty: the settings file's
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
-    std::string staticMaps; // shadows::StaticShadowUpdate by its JSON name; empty: the settings file's
     std::vector<std::string> lightStaticMaps; // NAME=MODE: a light's own static map mode (applyLightShadowUpdate)
-    std::string realtimeCasters; // shadows::RealtimeCasters by its JSON name; empty: the settings file's
+    SettingsFieldValues settingsFields; // shadow settings fields given by their options; the rest: the file's
     std::string baked; // a `penumbra bake` folder: static maps from it; empty: none
     std::optional<float> time; // seconds into the animation (scene::poseScene); empty: the rest pose
     std::string animation; // a glTF animation's name or index; empty: the first, when --time is given
@@ -62,9 +62,6 @@ std::string shadowPathHelp();
 
 // --filter's check, for every command that takes it: a shadows::filterFromCommandName name.
 CLI::Validator filterValidator();
-
-// --projection's check, for every command that takes it: a shadows::projectionFromName name.
-CLI::Validator projectionValidator();
 
 // Adds the options with validators that reject bad values before anything renders.
 void addSceneOptions(CLI::App& command, SceneOptions& options);

@@ -7,42 +7,20 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <nlohmann/json.hpp>
 #include <memory>
 #include <string>
 
 namespace penumbra::apps {
 namespace {
 
-// A default as the settings file would hold it; floats at their shortest (0.1, not toJson's double 0.100000001).
-std::string defaultText(const nlohmann::json& value)
-{
-    if (value.is_array()) {
-        std::string items;
-        for (const nlohmann::json& item : value)
-            items += (items.empty() ? "" : ", ") + defaultText(item);
-        return "[" + items + "]";
-    }
-    if (value.is_number_float())
-        return fmt::format("{}", value.get<float>());
-    if (value.is_string())
-        return value.get<std::string>();
-    return value.dump();
-}
-
 std::string vec3Text(const glm::vec3& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
 
 void printMarkdown()
 {
-    const nlohmann::json defaults = nlohmann::json::parse(shadows::toJson(shadows::ShadowSettings{}));
     fmt::print("| field | default | allowed | what it does |\n| --- | --- | --- | --- |\n");
-    for (const shadows::ShadowSettingsField& field : shadows::shadowSettingsFields()) {
-        std::string pointer = "/" + std::string(field.path);
-        for (char& c : pointer)
-            c = c == '.' ? '/' : c;
+    for (const shadows::ShadowSettingsField& field : shadows::shadowSettingsFields())
         fmt::print("| `{}` | `{}` | {} | {} |\n", field.path,
-                   defaultText(defaults.at(nlohmann::json::json_pointer(pointer))), field.allowed, field.summary);
-    }
+                   shadows::settingsFieldText(shadows::ShadowSettings{}, field.path), field.allowed, field.summary);
     const render::FrameDesc frame;
     const render::AmbientLight ambient;
     fmt::print(

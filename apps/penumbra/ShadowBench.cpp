@@ -5,7 +5,7 @@
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/FrameResources.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <benchmark/benchmark.h>
 #include <chrono>
@@ -38,7 +38,7 @@ render::FrameDesc benchFrame()
 
 scene::Scene localLightsOnly()
 {
-    scene::Scene scene = scene::makeMixedLightsScene();
+    scene::Scene scene = scenes::makeMixedLightsScene();
     scene.lights.clear();
     scene.spotLights.clear();
     scene.pointLights.clear();
@@ -63,7 +63,7 @@ scene::Scene sixteenSpots()
 scene::Scene twoPoints()
 {
     scene::Scene scene = localLightsOnly();
-    scene.pointLights = scene::makeMixedLightsScene().pointLights;
+    scene.pointLights = scenes::makeMixedLightsScene().pointLights;
     return scene;
 }
 
@@ -71,7 +71,7 @@ std::vector<Scenario> scenarios()
 {
     render::FrameDesc cubeMaps = benchFrame();
     cubeMaps.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
-    return {{"directional", scene::makeShadowTestScene(), benchFrame()},
+    return {{"directional", scenes::makeShadowTestScene(), benchFrame()},
             {"16 spot tiles", sixteenSpots(), benchFrame()},
             {"2 points, 12 tiles", twoPoints(), benchFrame()},
             {"2 points, cube maps", twoPoints(), cubeMaps}};

@@ -3,7 +3,7 @@
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/FrameResources.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
@@ -55,7 +55,7 @@ SoftShadowBench::SoftShadowBench(const std::vector<std::string>& configurations,
             c->configuration = configuration;
             c->variant = variant.name;
             c->device = createDevice(desc);
-            c->scene = scene::makeShadowTestScene();
+            c->scene = scenes::makeShadowTestScene();
             for (scene::DirectionalLight& light : c->scene.lights)
                 light.angularDiameter = kSunDiameterDegrees;
             c->renderer = std::make_unique<render::SceneRenderer>(*c->device, c->scene);

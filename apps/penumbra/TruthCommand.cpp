@@ -8,11 +8,11 @@
 #include "TruthPictures.hpp"
 
 #include "penumbra/backends/CreateDevice.hpp"
-#include "penumbra/render/ShadowTruth.hpp"
-#include "penumbra/render/SoftShadowTruth.hpp"
-#include "penumbra/scene/AreaLightTruth.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
+#include "penumbra/truth/SoftShadowTruth.hpp"
+#include "penumbra/truth/AreaLightTruth.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/scene/RayCaster.hpp"
+#include "penumbra/truth/RayCaster.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -48,7 +48,7 @@ std::vector<scene::LightRef> shadowedLights(const render::ShadowPlans& plans, co
 }
 
 // One line on stderr, redrawn as rows finish: "tracing <what> [#####-----]  50%".
-scene::TraceProgress progressBar(std::string what)
+truth::TraceProgress progressBar(std::string what)
 {
     return [what = std::move(what), shown = -1](std::uint32_t done, std::uint32_t rows) mutable {
         stopIfInterrupted();
@@ -68,7 +68,7 @@ scene::TraceProgress progressBar(std::string what)
 std::string percent(double share) { return fmt::format("{:.3f}%", 100.0 * share); }
 
 // The shadowed class by the caster nearest each receiver, so that a missing or misplaced caster can be found.
-nlohmann::json casterReport(const scene::Scene& scene, const scene::TruthComparison& c)
+nlohmann::json casterReport(const scene::Scene& scene, const truth::TruthComparison& c)
 {
     nlohmann::json casters = nlohmann::json::array();
     for (const auto& [object, figures] : c.shadowedBy)
@@ -80,7 +80,7 @@ nlohmann::json casterReport(const scene::Scene& scene, const scene::TruthCompari
 
 nlohmann::json lightReport(const scene::Scene& scene, const LightTruth& t)
 {
-    const scene::TruthComparison& c = t.comparison;
+    const truth::TruthComparison& c = t.comparison;
     return {{"name", t.name},
             {"kind", scene::lightKindName(t.light.kind)},
             {"index", t.light.index},
@@ -108,8 +108,8 @@ nlohmann::json lightReport(const scene::Scene& scene, const LightTruth& t)
 bool wantsSoftTruth(const TruthOptions& options, const scene::Scene& scene, const render::ShadowPlans& plans,
                     const scene::LightRef& light)
 {
-    return render::lightSourceSize(scene, light) > 0.0f &&
-           (options.scene.lightSize || shadows::isSoftFilter(render::plannedShadowFilter(plans, light)));
+    return truth::lightSourceSize(scene, light) > 0.0f &&
+           (options.scene.lightSize || shadows::isSoftFilter(truth::plannedShadowFilter(plans, light)));
 }
 
 void truth(const TruthOptions& options)
@@ -138,7 +138,7 @@ void truth(const TruthOptions& options)
         frame.visibilityOf = light;
         renderer.render(scene.camera, frame, plans);
         const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
-        truths.push_back({light, render::lightLabel(scene, light), {}, render::renderedVisibility(view), {}, 0.0f});
+        truths.push_back({light, truth::lightLabel(scene, light), {}, truth::renderedVisibility(view), {}, 0.0f});
     }
     for (const std::string& note : renderer.notes())
         fmt::print("  note: {}\n", note);
@@ -146,40 +146,39 @@ void truth(const TruthOptions& options)
         throw rhi::Error(
             fmt::format("{}: {} debug message(s), first: {}", options.backend, messages.size(), messages[0]));
 
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::RayCaster shadowRays(scene);
-    const scene::CpuGBuffer gbuffer =
-        scene::traceGBuffer(scene, cameraRays, scene.camera, frame.width, frame.height, progressBar("camera rays"));
+    const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
+    const truth::RayCaster shadowRays(scene);
+    const truth::CpuGBuffer gbuffer =
+        truth::traceGBuffer(scene, cameraRays, scene.camera, frame.width, frame.height, progressBar("camera rays"));
     nlohmann::json report = {{"scene", options.scene.scene},
                              {"configuration", options.backend},
                              {"width", frame.width},
                              {"height", frame.height},
-                             {"edgeMarginPixels", scene::kTruthEdgeMargin},
+                             {"edgeMarginPixels", truth::kTruthEdgeMargin},
                              {"lights", nlohmann::json::array()}};
     for (LightTruth& t : truths) {
-        render::LightTruthTrace trace = render::traceLightTruth(scene, shadowRays, gbuffer, plans, frame.shadows,
-                                                                t.light, progressBar(fmt::format("'{}'", t.name)));
-        t.comparison = render::compareLightTruth(trace, shadowRays, gbuffer, t.rendered);
+        truth::LightTruthTrace trace = truth::traceLightTruth(scene, shadowRays, gbuffer, plans, frame.shadows, t.light,
+                                                              progressBar(fmt::format("'{}'", t.name)));
+        t.comparison = truth::compareLightTruth(trace, shadowRays, gbuffer, t.rendered);
         t.raycast = std::move(trace.visibility);
         t.contactGapTexels =
-            scene::contactGapTexels(t.comparison, gbuffer, shadowRays, trace.rays, [&](glm::vec3 position) {
-                return render::shadowTexelSize(plans, frame.shadows, scene, t.light, position);
+            truth::contactGapTexels(t.comparison, gbuffer, shadowRays, trace.rays, [&](glm::vec3 position) {
+                return truth::shadowTexelSize(plans, frame.shadows, scene, t.light, position);
             });
         nlohmann::json entry = lightReport(scene, t);
         if (wantsSoftTruth(options, scene, plans, t.light)) {
-            const scene::SoftVisibilityMap soft =
-                scene::traceAreaLightVisibility(scene, shadowRays, gbuffer, render::areaLightOf(scene, t.light),
-                                                scene::kAreaLightRaysPerSide,
+            const truth::SoftVisibilityMap soft =
+                truth::traceAreaLightVisibility(scene, shadowRays, gbuffer, truth::areaLightOf(scene, t.light),
+                                                truth::kAreaLightRaysPerSide,
                                                 progressBar(fmt::format("'{}' area light", t.name)));
-            const scene::SoftTruthFigures figures = scene::compareSoftVisibility(soft, t.rendered);
-            entry["sourceSize"] = render::lightSourceSize(scene, t.light);
-            entry["filter"] =
-                shadows::shadowFilters()[std::size_t(render::plannedShadowFilter(plans, t.light))].command;
+            const truth::SoftTruthFigures figures = truth::compareSoftVisibility(soft, t.rendered);
+            entry["sourceSize"] = truth::lightSourceSize(scene, t.light);
+            entry["filter"] = shadows::shadowFilters()[std::size_t(truth::plannedShadowFilter(plans, t.light))].command;
             entry["penumbraPixels"] = figures.penumbraPixels;
             entry["softCompared"] = figures.compared;
             entry["softMeanAbsError"] = figures.meanAbsError;
             fmt::print("{}: source size {}, {} penumbra pixels, soft mean absolute error {:.4f} over {} pixels\n",
-                       t.name, render::lightSourceSize(scene, t.light), figures.penumbraPixels, figures.meanAbsError,
+                       t.name, truth::lightSourceSize(scene, t.light), figures.penumbraPixels, figures.meanAbsError,
                        figures.compared);
         }
         report["lights"].push_back(std::move(entry));
@@ -191,7 +190,7 @@ void truth(const TruthOptions& options)
     writeTruthPictures(out, truths);
     parity::writeTextFile(out / "truth.json", report.dump(2) + "\n");
     for (const LightTruth& t : truths) {
-        const scene::TruthComparison& c = t.comparison;
+        const truth::TruthComparison& c = t.comparison;
         fmt::print("{} ({} {}): agreement {} of {} pixels; truly lit {} right of {}, truly shadowed {} right of {}; "
                    "acne {}, leaks {}, contact gap {:.2f} texels\n",
                    t.name, scene::lightKindName(t.light.kind), t.light.index, percent(c.agreement()), c.compared(),

@@ -44,13 +44,13 @@ rhi::Image picture(std::uint32_t width, std::uint32_t height, Colour colour)
     return image;
 }
 
-bool isSurface(const LightTruth& t, std::size_t i) { return t.raycast.pixels[i] != scene::LightVisibility::Background; }
+bool isSurface(const LightTruth& t, std::size_t i) { return t.raycast.pixels[i] != truth::LightVisibility::Background; }
 
 // Grey by the mean of visibilityOf(light, pixel) over the lights that decide the pixel (nullopt: undecided).
 template <typename VisibilityOf>
 rhi::Image meanVisibilityPicture(std::span<const LightTruth> lights, VisibilityOf visibilityOf)
 {
-    const scene::LightVisibilityMask& first = lights.front().raycast;
+    const truth::LightVisibilityMask& first = lights.front().raycast;
     return picture(first.width, first.height, [&](std::size_t i) {
         float seen = 0.0f;
         int decided = 0;
@@ -69,15 +69,15 @@ rhi::Image raycastPicture(std::span<const LightTruth> lights)
 {
     return meanVisibilityPicture(lights, [](const LightTruth& t, std::size_t i) -> std::optional<float> {
         switch (t.raycast.pixels[i]) {
-        case scene::LightVisibility::Lit:
+        case truth::LightVisibility::Lit:
             return 1.0f;
-        case scene::LightVisibility::Shadowed:
+        case truth::LightVisibility::Shadowed:
             return 0.0f;
-        case scene::LightVisibility::Dithered:
+        case truth::LightVisibility::Dithered:
             return 1.0f - t.raycast.ditherCoverage[i];
-        case scene::LightVisibility::Background:
-        case scene::LightVisibility::FacingAway:
-        case scene::LightVisibility::NotReceiving:
+        case truth::LightVisibility::Background:
+        case truth::LightVisibility::FacingAway:
+        case truth::LightVisibility::NotReceiving:
             return std::nullopt;
         }
         return std::nullopt;
@@ -93,17 +93,17 @@ rhi::Image shadowMapPicture(std::span<const LightTruth> lights)
 
 rhi::Image disagreementPicture(std::span<const LightTruth> lights)
 {
-    const scene::TruthComparison& first = lights.front().comparison;
+    const truth::TruthComparison& first = lights.front().comparison;
     return picture(first.width, first.height, [&](std::size_t i) {
         bool acne = false, leak = false, edge = false, lit = false, shadowed = false, dithered = false;
         for (const LightTruth& t : lights) {
-            const scene::TruthVerdict v = t.comparison.verdicts[i];
-            acne |= v == scene::TruthVerdict::Acne;
-            leak |= v == scene::TruthVerdict::Leak;
-            edge |= v == scene::TruthVerdict::NearEdge;
-            lit |= v == scene::TruthVerdict::LitRight;
-            shadowed |= v == scene::TruthVerdict::ShadowedRight;
-            dithered |= v == scene::TruthVerdict::Dithered;
+            const truth::TruthVerdict v = t.comparison.verdicts[i];
+            acne |= v == truth::TruthVerdict::Acne;
+            leak |= v == truth::TruthVerdict::Leak;
+            edge |= v == truth::TruthVerdict::NearEdge;
+            lit |= v == truth::TruthVerdict::LitRight;
+            shadowed |= v == truth::TruthVerdict::ShadowedRight;
+            dithered |= v == truth::TruthVerdict::Dithered;
         }
         if (acne || leak)
             return acne && leak ? kAcneAndLeak : acne ? kAcne : kLeak;

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "penumbra/scene/Light.hpp"
-#include "penumbra/scene/TruthComparison.hpp"
+#include "penumbra/truth/TruthComparison.hpp"
 
 #include <filesystem>
 #include <string>
@@ -13,9 +13,9 @@ namespace penumbra::apps {
 struct LightTruth {
     scene::LightRef light;
     std::string name;
-    scene::LightVisibilityMask raycast;
-    scene::RenderedVisibility rendered;
-    scene::TruthComparison comparison;
+    truth::LightVisibilityMask raycast;
+    truth::RenderedVisibility rendered;
+    truth::TruthComparison comparison;
     float contactGapTexels = 0.0f;
 };
 

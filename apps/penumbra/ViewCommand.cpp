@@ -77,11 +77,7 @@ void addViewCommand(CLI::App& app)
     view->add_option("--filter", options->filter,
                      fmt::format("Every light's shadow filter: {}", shadows::filterCommandNames()))
         ->check(filterValidator());
-    view->add_option_function<std::string>(
-            "--projection",
-            [options](const std::string& name) { options->projection = shadows::projectionFromName(name); },
-            fmt::format("The directional cascades' projection: {}", shadows::projectionNames()))
-        ->check(projectionValidator());
+    addSettingsFieldOptions(*view, options->settingsFields);
     view->add_option("--light-size", options->lightSize,
                      "Every light's source size: degrees of angular diameter (directional), world units of radius "
                      "(spot, point)")

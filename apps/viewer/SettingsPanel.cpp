@@ -4,9 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <fmt/format.h>
 #include <imgui.h>
+#include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 namespace penumbra::viewer {
 namespace {
@@ -32,13 +36,100 @@ std::array<const char*, shadows::kShadowFilterCount> filterNames()
 
 bool filterCombo(const char* label, shadows::ShadowFilter& filter) { return enumCombo(label, filter, filterNames()); }
 
-// shadows::CascadeProjection's names, in its order.
-std::array<const char*, shadows::kCascadeProjectionCount> projectionNames()
+// A settings field's control is written from its entry in shadows::shadowSettingsFields(): the label is the path's
+// last name in words ("soft.blockerSearchScale": "blocker search scale"), the range or the names are the field's,
+// and its summary shows while the pointer is on it.
+std::string labelOf(std::string_view path)
 {
-    std::array<const char*, shadows::kCascadeProjectionCount> names{};
-    for (std::size_t i = 0; i < names.size(); ++i)
-        names[i] = shadows::cascadeProjectionNames()[i].name.data();
-    return names;
+    std::string label;
+    for (const char c : path.substr(path.rfind('.') + 1)) {
+        if (std::isupper(static_cast<unsigned char>(c))) {
+            label += ' ';
+            label += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        } else {
+            label += c;
+        }
+    }
+    return label;
+}
+
+void summaryTooltip(const shadows::ShadowSettingsField& field)
+{
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", std::string(field.summary).c_str());
+}
+
+// One of `names` by its index; true when the choice changed.
+bool indexCombo(const char* label, std::size_t& index, const std::vector<std::string>& names)
+{
+    bool changed = false;
+    if (ImGui::BeginCombo(label, index < names.size() ? names[index].c_str() : "")) {
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (ImGui::Selectable(names[i].c_str(), i == index)) {
+                changed = i != index;
+                index = i;
+            }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+// A field of listed names ("hard, soft, dither"), the enum's values in the names' order.
+template <typename Enum>
+bool fieldCombo(std::string_view path, Enum& value)
+{
+    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    std::vector<std::string> names;
+    for (std::size_t start = 0; start <= field.allowed.size();) {
+        const std::size_t end = std::min(field.allowed.find(", ", start), field.allowed.size());
+        names.push_back(field.allowed.substr(start, end - start));
+        start = end + 2;
+    }
+    auto index = static_cast<std::size_t>(value);
+    const bool changed = indexCombo(labelOf(path).c_str(), index, names);
+    summaryTooltip(field);
+    if (changed)
+        value = static_cast<Enum>(index);
+    return changed;
+}
+
+bool fieldSlider(std::string_view path, float& value)
+{
+    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    const bool changed = ImGui::SliderFloat(labelOf(path).c_str(), &value, static_cast<float>(field.range.low),
+                                            static_cast<float>(field.range.high));
+    summaryTooltip(field);
+    return changed;
+}
+
+bool fieldSlider(std::string_view path, std::uint32_t& value)
+{
+    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    int v = static_cast<int>(value);
+    const bool changed = ImGui::SliderInt(labelOf(path).c_str(), &v, static_cast<int>(field.range.low),
+                                          static_cast<int>(field.range.high));
+    summaryTooltip(field);
+    if (changed)
+        value = static_cast<std::uint32_t>(v);
+    return changed;
+}
+
+// The powers of two of the field's range.
+bool fieldPowerOfTwo(std::string_view path, std::uint32_t& value)
+{
+    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    std::vector<std::string> names;
+    std::size_t index = names.size();
+    for (auto size = static_cast<std::uint32_t>(field.range.low); size <= field.range.high; size *= 2) {
+        if (size == value)
+            index = names.size();
+        names.push_back(std::to_string(size));
+    }
+    const bool changed = indexCombo(labelOf(path).c_str(), index, names);
+    summaryTooltip(field);
+    if (changed)
+        value = static_cast<std::uint32_t>(field.range.low) << index;
+    return changed;
 }
 
 // A light's own filter: "atlas" (scene::kAtlasShadowFilter) or one of the filters.
@@ -54,11 +145,18 @@ bool lightFilterCombo(std::int32_t& filter)
     return changed;
 }
 
-bool sampleCountCombo(const char* label, std::uint32_t& count)
+// One of shadows::kPoissonSampleCounts.
+bool sampleCountCombo(std::string_view path, std::uint32_t& count)
 {
-    constexpr std::array names{"16", "32", "64"};
-    int index = count == 64 ? 2 : count == 32 ? 1 : 0;
-    const bool changed = ImGui::Combo(label, &index, names.data(), int(names.size()));
+    std::vector<std::string> names;
+    std::size_t index = 0;
+    for (const std::uint32_t offered : shadows::kPoissonSampleCounts) {
+        if (offered == count)
+            index = names.size();
+        names.push_back(std::to_string(offered));
+    }
+    const bool changed = indexCombo(labelOf(path).c_str(), index, names);
+    summaryTooltip(shadows::shadowSettingsField(path));
     if (changed)
         count = shadows::kPoissonSampleCounts[index];
     return changed;
@@ -67,13 +165,13 @@ bool sampleCountCombo(const char* label, std::uint32_t& count)
 bool softSettings(shadows::SoftShadowSettings& s)
 {
     bool changed = false;
-    changed |= ImGui::SliderFloat("blocker search scale", &s.blockerSearchScale, 0.1f, 10.0f);
-    changed |= ImGui::SliderFloat("penumbra scale", &s.penumbraScale, 0.1f, 10.0f);
-    changed |= sampleCountCombo("blocker samples", s.blockerSamples);
-    changed |= sampleCountCombo("filter samples", s.filterSamples);
-    changed |= ImGui::SliderFloat("min penumbra (texels)", &s.minPenumbraTexels, 0.0f, 64.0f);
-    changed |= ImGui::SliderFloat("max penumbra (texels)", &s.maxPenumbraTexels, 0.0f, 64.0f);
-    changed |= ImGui::SliderFloat("poisson radius (texels)", &s.poissonRadiusTexels, 0.5f, 64.0f);
+    changed |= fieldSlider("soft.blockerSearchScale", s.blockerSearchScale);
+    changed |= fieldSlider("soft.penumbraScale", s.penumbraScale);
+    changed |= sampleCountCombo("soft.blockerSamples", s.blockerSamples);
+    changed |= sampleCountCombo("soft.filterSamples", s.filterSamples);
+    changed |= fieldSlider("soft.minPenumbraTexels", s.minPenumbraTexels);
+    changed |= fieldSlider("soft.maxPenumbraTexels", s.maxPenumbraTexels);
+    changed |= fieldSlider("soft.poissonRadiusTexels", s.poissonRadiusTexels);
     return changed;
 }
 
@@ -92,35 +190,39 @@ bool atlasFormatCombo(rhi::Format& format)
     return changed;
 }
 
-// Ranges of the widgets are the settings' allowed ranges where those are simple; values typed in
-// (ctrl+click) may leave them, and validation then reports the field.
+// The widgets' ranges and names are the settings fields' (shadows::shadowSettingsFields()); values typed in
+// (ctrl+click) may leave a range, and validation then reports the field.
 bool shadowSettings(shadows::ShadowSettings& s)
 {
     bool changed = false;
-    changed |= ImGui::DragFloat("max distance", &s.maxDistance, 0.5f, 0.001f, 1000.0f);
-    changed |= ImGui::SliderFloat("distance fade", &s.distanceFade, 0.001f, 1.0f);
+    // Above its lower bound, the shadow distance drags as far as a kilometre.
+    const shadows::ShadowSettingsField& maxDistance = shadows::shadowSettingsField("maxDistance");
+    changed |= ImGui::DragFloat(labelOf(maxDistance.path).c_str(), &s.maxDistance, 0.5f,
+                                static_cast<float>(maxDistance.range.low), 1000.0f);
+    summaryTooltip(maxDistance);
+    changed |= fieldSlider("distanceFade", s.distanceFade);
     shadows::DirectionalShadowSettings& d = s.directional;
-    changed |= ImGui::InputScalar("atlas size", ImGuiDataType_U32, &d.atlasSize);
+    changed |= fieldPowerOfTwo("directional.atlasSize", d.atlasSize);
     changed |= atlasFormatCombo(d.atlasFormat);
     changed |= filterCombo("filter", d.filter);
-    int cascades = int(d.cascadeCount);
-    if (ImGui::SliderInt("cascades", &cascades, 1, 4)) {
-        d.cascadeCount = std::uint32_t(cascades);
-        changed = true;
-    }
-    changed |= ImGui::SliderFloat3("cascade ratios", &d.cascadeRatios.x, 0.0f, 1.0f);
-    changed |= ImGui::SliderFloat("cascade fade", &d.cascadeFade, 0.001f, 1.0f);
-    changed |= enumCombo("cascade blend", d.cascadeBlend, std::array{"hard", "soft", "dither"});
-    changed |= enumCombo("projection", d.projection, projectionNames());
+    changed |= fieldSlider("directional.cascadeCount", d.cascadeCount);
+    const shadows::ShadowSettingsField& ratios = shadows::shadowSettingsField("directional.cascadeRatios");
+    changed |= ImGui::SliderFloat3(labelOf(ratios.path).c_str(), &d.cascadeRatios.x,
+                                   static_cast<float>(ratios.range.low), static_cast<float>(ratios.range.high));
+    summaryTooltip(ratios);
+    changed |= fieldSlider("directional.cascadeFade", d.cascadeFade);
+    changed |= fieldCombo("directional.cascadeBlend", d.cascadeBlend);
+    changed |= fieldCombo("directional.projection", d.projection);
     ImGui::Separator();
     ImGui::TextUnformatted("spot and point lights");
     ImGui::PushID("local");
     shadows::LocalShadowSettings& o = s.local;
-    changed |= ImGui::InputScalar("atlas size", ImGuiDataType_U32, &o.atlasSize);
+    changed |= fieldPowerOfTwo("local.atlasSize", o.atlasSize);
     changed |= atlasFormatCombo(o.atlasFormat);
     changed |= filterCombo("filter", o.filter);
-    changed |= enumCombo("point lights", o.pointMode, std::array{"atlas tiles", "cube maps"});
-    changed |= ImGui::InputScalar("cube map size", ImGuiDataType_U32, &o.cubeMapSize);
+    changed |= fieldCombo("local.pointMode", o.pointMode);
+    changed |= fieldPowerOfTwo("local.cubeMapSize", o.cubeMapSize);
+    changed |= fieldSlider("local.nearPlane", o.nearPlane);
     ImGui::PopID();
     ImGui::Separator();
     ImGui::TextUnformatted("soft shadows (poisson, pcss)");
@@ -129,10 +231,10 @@ bool shadowSettings(shadows::ShadowSettings& s)
     ImGui::TextUnformatted("static shadow maps");
     ImGui::PushID("static");
     shadows::StaticShadowSettings& m = s.staticMaps;
-    changed |= enumCombo("update", m.update, std::array{"every frame (none)", "on change", "on demand"});
-    changed |= enumCombo("realtime casters", m.realtimeCasters, std::array{"all", "dynamic"});
-    changed |= ImGui::InputScalar("directional atlas size", ImGuiDataType_U32, &m.directionalAtlasSize);
-    changed |= ImGui::InputScalar("local atlas size", ImGuiDataType_U32, &m.localAtlasSize);
+    changed |= fieldCombo("static.update", m.update);
+    changed |= fieldCombo("static.realtimeCasters", m.realtimeCasters);
+    changed |= fieldPowerOfTwo("static.directionalAtlasSize", m.directionalAtlasSize);
+    changed |= fieldPowerOfTwo("static.localAtlasSize", m.localAtlasSize);
     ImGui::PopID();
     return changed;
 }

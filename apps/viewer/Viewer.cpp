@@ -17,6 +17,7 @@
 #include "penumbra/render/AtlasPicture.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Image.hpp"
+#include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -70,8 +71,8 @@ public:
         applied_.cascadeView = options.cascadeView;
         applied_.atlasOverlay = options.atlasOverlay;
         applied_.maxAnisotropy = options.maxAnisotropy;
-        if (options.projection)
-            applied_.shadows.directional.projection = *options.projection;
+        for (const auto& [path, text] : options.settingsFields)
+            shadows::setSettingsField(applied_.shadows, path, text);
         if (!options.baked.empty()) {
             renderer_.useBakedShadows(shadows::readStaticShadowBake(options.baked));
             applied_.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;

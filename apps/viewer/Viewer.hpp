@@ -4,6 +4,8 @@
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -25,7 +27,8 @@ struct ViewerOptions {
     bool validate = false; // the validation layer / debug output (penumbra view --validate)
     std::string filter; // every light's shadow filter (apps::applyLightOverrides); empty: their own
     std::optional<float> lightSize; // every light's source size
-    std::optional<shadows::CascadeProjection> projection; // the directional cascades'; nullopt: the settings'
+    // Shadow settings fields by path, from their options (penumbra view --projection close), over the defaults.
+    std::map<std::string, std::string, std::less<>> settingsFields;
     std::string baked; // a `penumbra bake` folder: static maps from it (static.update onChange); empty: none
 };
 

@@ -26,7 +26,7 @@ if mode == "snippets":
         "set(CMAKE_CXX_STANDARD 20)\nset(CMAKE_CXX_STANDARD_REQUIRED ON)\n"
         "find_package(Penumbra 0.1 REQUIRED)\n"
         f"add_library(doc_snippets OBJECT {' '.join(names)})\n"
-        "target_link_libraries(doc_snippets PRIVATE penumbra::backends penumbra::render penumbra::parity penumbra::imageio penumbra::gltf)\n")
+        "target_link_libraries(doc_snippets PRIVATE penumbra::backends penumbra::render penumbra::parity penumbra::imageio penumbra::gltf penumbra::scenes penumbra::truth)\n")
     print(f"extract.py: {len(names)} snippets")
 elif mode == "steps":
     steps = []

@@ -6,6 +6,7 @@
 #include <array>
 #include <string>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <utility>
 
 namespace penumbra::shadows {
@@ -42,48 +43,126 @@ std::string filterNameList(std::string_view ShadowFilterInfo::*name)
     return text;
 }
 
+// The ranges several fields share, each stated once.
+constexpr SettingRange kAtlasSizes{SettingRangeKind::PowersOfTwo, 256, 8192};
+constexpr SettingRange kFraction{SettingRangeKind::Closed, 0.001, 1};
+constexpr SettingRange kScale{SettingRangeKind::Closed, 0.1, 10};
+constexpr SettingRange kPenumbraTexels{SettingRangeKind::Closed, 0, 64};
+
+// A numeric range as messages, help and docs state it: "0.001..1", "powers of two 256..8192", "> 0.001".
+std::string rangeText(const SettingRange& range)
+{
+    switch (range.kind) {
+    case SettingRangeKind::Closed:
+        return fmt::format("{}..{}", range.low, range.high);
+    case SettingRangeKind::PowersOfTwo:
+        return fmt::format("powers of two {}..{}", range.low, range.high);
+    case SettingRangeKind::Above:
+        return fmt::format("> {}", range.low);
+    case SettingRangeKind::Listed:
+        break;
+    }
+    return "";
+}
+
+ShadowSettingsField numeric(std::string_view path, SettingRange range, std::string_view summary)
+{
+    return {path, range, rangeText(range), summary, {}};
+}
+
+ShadowSettingsField listed(std::string_view path, std::string names, std::string_view summary,
+                           std::string_view flag = {})
+{
+    return {path, {}, std::move(names), summary, flag};
+}
+
+std::array<ShadowSettingsField, 27> makeFields()
+{
+    const std::string filterNames = filterNameList(&ShadowFilterInfo::json);
+    const std::string sampleCounts = fmt::format("{}", fmt::join(kPoissonSampleCounts, ", "));
+    const SettingRange poissonRadius{SettingRangeKind::Closed, 0.5, kPenumbraTexels.high};
+    const SettingRange unit{SettingRangeKind::Closed, 0, 1};
+    return {{
+        numeric("maxDistance", {SettingRangeKind::Above, 0.001},
+                "view depth beyond which nothing is shadowed, for every light"),
+        numeric("distanceFade", kFraction, "fraction of maxDistance over which shadows fade out"),
+        numeric("directional.atlasSize", kAtlasSizes, "texels per side of the directional atlas"),
+        listed("directional.filter", filterNames, "the directional lights' filter, unless a light sets its own"),
+        numeric("directional.cascadeCount", {SettingRangeKind::Closed, 1, 4}, "cascades per directional light"),
+        {"directional.cascadeRatios",
+         unit,
+         fmt::format("3 numbers in {}, strictly increasing", rangeText(unit)),
+         "ends of cascades 1..3 as fractions of maxDistance",
+         {}},
+        numeric("directional.cascadeFade", kFraction, "fraction of the last cascade over which it fades"),
+        listed("directional.cascadeBlend", "hard, soft, dither", "how the lit pass moves from one cascade to the next"),
+        listed("directional.projection", std::string(projectionNames()),
+               "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices",
+               "--projection"),
+        listed("directional.atlasFormat", "d16, d24s8, d32f", "depth format of the directional atlas"),
+        numeric("local.atlasSize", kAtlasSizes, "texels per side of the spot and point lights' atlas"),
+        listed("local.filter", filterNames, "the spot and point lights' filter, unless a light sets its own"),
+        listed("local.atlasFormat", "d16, d24s8, d32f", "depth format of the local atlas"),
+        listed("local.pointMode", "atlas, cubemap", "point lights in six atlas tiles or in a depth cube map each"),
+        numeric("local.cubeMapSize", {SettingRangeKind::PowersOfTwo, 64, 4096}, "texels per face side in cubemap mode"),
+        numeric("local.nearPlane", {SettingRangeKind::Closed, 0.0001, 0.5},
+                "shadow near plane as a fraction of the light's range, for lights without one"),
+        numeric("soft.blockerSearchScale", kScale, "scales PCSS's blocker search region (NVIDIA's w_search)"),
+        numeric("soft.penumbraScale", kScale, "scales PCSS's penumbra estimate (NVIDIA's w_penumbra)"),
+        listed("soft.blockerSamples", sampleCounts, "Poisson disk taps of each blocker search"),
+        listed("soft.filterSamples", sampleCounts, "Poisson disk taps of the soft filters"),
+        numeric("soft.minPenumbraTexels", kPenumbraTexels, "smallest filter radius of PCSS, in texels"),
+        {"soft.maxPenumbraTexels",
+         kPenumbraTexels,
+         fmt::format("minPenumbraTexels..{}", kPenumbraTexels.high),
+         "largest filter radius and blocker search of PCSS, in texels",
+         {}},
+        numeric("soft.poissonRadiusTexels", poissonRadius, "the fixed poisson filter's radius, in texels"),
+        listed("static.update", "everyFrame, onChange, onDemand",
+               "when static shadow maps are drawn; everyFrame keeps none", "--static-maps"),
+        listed("static.realtimeCasters", "all, dynamic",
+               "which casters the realtime atlases draw while static maps exist", "--realtime-casters"),
+        numeric("static.directionalAtlasSize", kAtlasSizes, "texels per side of the directional lights' static atlas"),
+        numeric("static.localAtlasSize", kAtlasSizes, "texels per side of the spot and point lights' static atlas"),
+    }};
+}
+
 } // namespace
 
 const std::array<ShadowFilterInfo, kShadowFilterCount>& shadowFilters() { return kFilters; }
 
+bool withinRange(const SettingRange& range, double value)
+{
+    // As floats: a float field at a bound (0.0001f) is within it, as its float check always had it.
+    const float v = static_cast<float>(value);
+    switch (range.kind) {
+    case SettingRangeKind::Listed:
+        return true;
+    case SettingRangeKind::Closed:
+        return v >= static_cast<float>(range.low) && v <= static_cast<float>(range.high);
+    case SettingRangeKind::Above:
+        return v > static_cast<float>(range.low);
+    case SettingRangeKind::PowersOfTwo: {
+        if (!(value >= range.low && value <= range.high))
+            return false;
+        const auto whole = static_cast<std::uint64_t>(value);
+        return static_cast<double>(whole) == value && (whole & (whole - 1)) == 0;
+    }
+    }
+    return false;
+}
+
+const ShadowSettingsField& shadowSettingsField(std::string_view path)
+{
+    for (const ShadowSettingsField& field : shadowSettingsFields())
+        if (field.path == path)
+            return field;
+    throw rhi::Error(fmt::format("{}: no shadow settings field has this path", path));
+}
+
 std::span<const ShadowSettingsField> shadowSettingsFields()
 {
-    static const std::string filterNames = filterNameList(&ShadowFilterInfo::json);
-    static const std::array<ShadowSettingsField, 27> fields{{
-        {"maxDistance", "> 0.001", "view depth beyond which nothing is shadowed, for every light"},
-        {"distanceFade", "0.001..1", "fraction of maxDistance over which shadows fade out"},
-        {"directional.atlasSize", "powers of two 256..8192", "texels per side of the directional atlas"},
-        {"directional.filter", filterNames, "the directional lights' filter, unless a light sets its own"},
-        {"directional.cascadeCount", "1..4", "cascades per directional light"},
-        {"directional.cascadeRatios", "3 numbers in 0..1, strictly increasing",
-         "ends of cascades 1..3 as fractions of maxDistance"},
-        {"directional.cascadeFade", "0.001..1", "fraction of the last cascade over which it fades"},
-        {"directional.cascadeBlend", "hard, soft, dither", "how the lit pass moves from one cascade to the next"},
-        {"directional.projection", "stable, close",
-         "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices"},
-        {"directional.atlasFormat", "d16, d24s8, d32f", "depth format of the directional atlas"},
-        {"local.atlasSize", "powers of two 256..8192", "texels per side of the spot and point lights' atlas"},
-        {"local.filter", filterNames, "the spot and point lights' filter, unless a light sets its own"},
-        {"local.atlasFormat", "d16, d24s8, d32f", "depth format of the local atlas"},
-        {"local.pointMode", "atlas, cubemap", "point lights in six atlas tiles or in a depth cube map each"},
-        {"local.cubeMapSize", "powers of two 64..4096", "texels per face side in cubemap mode"},
-        {"local.nearPlane", "0.0001..0.5",
-         "shadow near plane as a fraction of the light's range, for lights without one"},
-        {"soft.blockerSearchScale", "0.1..10", "scales PCSS's blocker search region (NVIDIA's w_search)"},
-        {"soft.penumbraScale", "0.1..10", "scales PCSS's penumbra estimate (NVIDIA's w_penumbra)"},
-        {"soft.blockerSamples", "16, 32, 64", "Poisson disk taps of each blocker search"},
-        {"soft.filterSamples", "16, 32, 64", "Poisson disk taps of the soft filters"},
-        {"soft.minPenumbraTexels", "0..64", "smallest filter radius of PCSS, in texels"},
-        {"soft.maxPenumbraTexels", "minPenumbraTexels..64",
-         "largest filter radius and blocker search of PCSS, in texels"},
-        {"soft.poissonRadiusTexels", "0.5..64", "the fixed poisson filter's radius, in texels"},
-        {"static.update", "everyFrame, onChange, onDemand", "when static shadow maps are drawn; everyFrame keeps none"},
-        {"static.realtimeCasters", "all, dynamic", "which casters the realtime atlases draw while static maps exist"},
-        {"static.directionalAtlasSize", "powers of two 256..8192",
-         "texels per side of the directional lights' static atlas"},
-        {"static.localAtlasSize", "powers of two 256..8192",
-         "texels per side of the spot and point lights' static atlas"},
-    }};
+    static const std::array<ShadowSettingsField, 27> fields = makeFields();
     return fields;
 }
 
@@ -150,13 +229,19 @@ void validate(const ShadowSettings& settings)
 namespace detail {
 namespace {
 
-// NaN compares false, so it is never within a range.
-bool within(float value, float low, float high) { return value >= low && value <= high; }
-
 SettingsProblem outOfRange(std::string field, std::string value)
 {
     std::string allowed(allowedValues(field));
     return {std::move(field), value + " is out of range", std::move(allowed)};
+}
+
+// A numeric field against its range in the table.
+template <typename Value>
+std::optional<SettingsProblem> outsideRange(std::string_view path, Value value)
+{
+    if (withinRange(shadowSettingsField(path).range, static_cast<double>(value)))
+        return std::nullopt;
+    return outOfRange(std::string(path), fmt::format("{}", value));
 }
 
 } // namespace
@@ -171,25 +256,20 @@ std::string_view allowedValues(std::string_view field)
 
 namespace {
 
-bool powerOfTwoWithin(std::uint32_t value, std::uint32_t low, std::uint32_t high)
-{
-    return (value & (value - 1)) == 0 && value >= low && value <= high;
-}
-
 std::optional<SettingsProblem> findLocalSettingsProblem(const LocalShadowSettings& o)
 {
-    if (!powerOfTwoWithin(o.atlasSize, 256, 8192))
-        return outOfRange("local.atlasSize", fmt::format("{}", o.atlasSize));
+    if (auto problem = outsideRange("local.atlasSize", o.atlasSize))
+        return problem;
     if (static_cast<unsigned>(o.filter) > static_cast<unsigned>(ShadowFilter::PCSS))
         return outOfRange("local.filter", fmt::format("{}", static_cast<int>(o.filter)));
     if (!rhi::isDepthFormat(o.atlasFormat))
         return outOfRange("local.atlasFormat", std::string(rhi::formatName(o.atlasFormat)));
     if (static_cast<unsigned>(o.pointMode) > static_cast<unsigned>(PointShadowMode::CubeMap))
         return outOfRange("local.pointMode", fmt::format("{}", static_cast<int>(o.pointMode)));
-    if (!powerOfTwoWithin(o.cubeMapSize, 64, 4096))
-        return outOfRange("local.cubeMapSize", fmt::format("{}", o.cubeMapSize));
-    if (!within(o.nearPlane, 0.0001f, 0.5f))
-        return outOfRange("local.nearPlane", fmt::format("{}", o.nearPlane));
+    if (auto problem = outsideRange("local.cubeMapSize", o.cubeMapSize))
+        return problem;
+    if (auto problem = outsideRange("local.nearPlane", o.nearPlane))
+        return problem;
     return std::nullopt;
 }
 
@@ -203,20 +283,22 @@ bool isPoissonSampleCount(std::uint32_t count)
 
 std::optional<SettingsProblem> findSoftSettingsProblem(const SoftShadowSettings& s)
 {
-    if (!within(s.blockerSearchScale, 0.1f, 10.0f))
-        return outOfRange("soft.blockerSearchScale", fmt::format("{}", s.blockerSearchScale));
-    if (!within(s.penumbraScale, 0.1f, 10.0f))
-        return outOfRange("soft.penumbraScale", fmt::format("{}", s.penumbraScale));
+    if (auto problem = outsideRange("soft.blockerSearchScale", s.blockerSearchScale))
+        return problem;
+    if (auto problem = outsideRange("soft.penumbraScale", s.penumbraScale))
+        return problem;
     if (!isPoissonSampleCount(s.blockerSamples))
         return outOfRange("soft.blockerSamples", fmt::format("{}", s.blockerSamples));
     if (!isPoissonSampleCount(s.filterSamples))
         return outOfRange("soft.filterSamples", fmt::format("{}", s.filterSamples));
-    if (!within(s.minPenumbraTexels, 0.0f, 64.0f))
-        return outOfRange("soft.minPenumbraTexels", fmt::format("{}", s.minPenumbraTexels));
-    if (!within(s.maxPenumbraTexels, s.minPenumbraTexels, 64.0f))
+    if (auto problem = outsideRange("soft.minPenumbraTexels", s.minPenumbraTexels))
+        return problem;
+    // At least minPenumbraTexels: the table's low bound is the smallest minPenumbraTexels.
+    const SettingRange maxPenumbra = shadowSettingsField("soft.maxPenumbraTexels").range;
+    if (!withinRange({SettingRangeKind::Closed, s.minPenumbraTexels, maxPenumbra.high}, s.maxPenumbraTexels))
         return outOfRange("soft.maxPenumbraTexels", fmt::format("{}", s.maxPenumbraTexels));
-    if (!within(s.poissonRadiusTexels, 0.5f, 64.0f))
-        return outOfRange("soft.poissonRadiusTexels", fmt::format("{}", s.poissonRadiusTexels));
+    if (auto problem = outsideRange("soft.poissonRadiusTexels", s.poissonRadiusTexels))
+        return problem;
     return std::nullopt;
 }
 
@@ -226,11 +308,9 @@ std::optional<SettingsProblem> findStaticSettingsProblem(const StaticShadowSetti
         return outOfRange("static.update", fmt::format("{}", static_cast<int>(s.update)));
     if (static_cast<unsigned>(s.realtimeCasters) > static_cast<unsigned>(RealtimeCasters::Dynamic))
         return outOfRange("static.realtimeCasters", fmt::format("{}", static_cast<int>(s.realtimeCasters)));
-    if (!powerOfTwoWithin(s.directionalAtlasSize, 256, 8192))
-        return outOfRange("static.directionalAtlasSize", fmt::format("{}", s.directionalAtlasSize));
-    if (!powerOfTwoWithin(s.localAtlasSize, 256, 8192))
-        return outOfRange("static.localAtlasSize", fmt::format("{}", s.localAtlasSize));
-    return std::nullopt;
+    if (auto problem = outsideRange("static.directionalAtlasSize", s.directionalAtlasSize))
+        return problem;
+    return outsideRange("static.localAtlasSize", s.localAtlasSize);
 }
 
 } // namespace
@@ -238,22 +318,23 @@ std::optional<SettingsProblem> findStaticSettingsProblem(const StaticShadowSetti
 std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
 {
     const DirectionalShadowSettings& d = s.directional;
-    if (!(s.maxDistance > 0.001f))
-        return outOfRange("maxDistance", fmt::format("{}", s.maxDistance));
-    if (!within(s.distanceFade, 0.001f, 1.0f))
-        return outOfRange("distanceFade", fmt::format("{}", s.distanceFade));
-    if (!powerOfTwoWithin(d.atlasSize, 256, 8192))
-        return outOfRange("directional.atlasSize", fmt::format("{}", d.atlasSize));
+    if (auto problem = outsideRange("maxDistance", s.maxDistance))
+        return problem;
+    if (auto problem = outsideRange("distanceFade", s.distanceFade))
+        return problem;
+    if (auto problem = outsideRange("directional.atlasSize", d.atlasSize))
+        return problem;
     if (static_cast<unsigned>(d.filter) > static_cast<unsigned>(ShadowFilter::PCSS))
         return outOfRange("directional.filter", fmt::format("{}", static_cast<int>(d.filter)));
-    if (d.cascadeCount < 1 || d.cascadeCount > 4)
-        return outOfRange("directional.cascadeCount", fmt::format("{}", d.cascadeCount));
+    if (auto problem = outsideRange("directional.cascadeCount", d.cascadeCount))
+        return problem;
     const glm::vec3 r = d.cascadeRatios;
-    if (!within(r.x, 0.0f, 1.0f) || !within(r.y, 0.0f, 1.0f) || !within(r.z, 0.0f, 1.0f) || !(r.x < r.y) ||
+    const SettingRange ratios = shadowSettingsField("directional.cascadeRatios").range;
+    if (!withinRange(ratios, r.x) || !withinRange(ratios, r.y) || !withinRange(ratios, r.z) || !(r.x < r.y) ||
         !(r.y < r.z))
         return outOfRange("directional.cascadeRatios", fmt::format("[{}, {}, {}]", r.x, r.y, r.z));
-    if (!within(d.cascadeFade, 0.001f, 1.0f))
-        return outOfRange("directional.cascadeFade", fmt::format("{}", d.cascadeFade));
+    if (auto problem = outsideRange("directional.cascadeFade", d.cascadeFade))
+        return problem;
     if (static_cast<unsigned>(d.cascadeBlend) > static_cast<unsigned>(CascadeBlend::Dither))
         return outOfRange("directional.cascadeBlend", fmt::format("{}", static_cast<int>(d.cascadeBlend)));
     if (static_cast<unsigned>(d.projection) >= static_cast<unsigned>(kCascadeProjectionCount))

@@ -238,7 +238,52 @@ std::optional<Enum> valueOf(const std::array<EnumName<Enum>, N>& names, std::str
     return std::nullopt;
 }
 
+// "directional.cascadeCount" as the JSON pointer "/directional/cascadeCount".
+Json::json_pointer pointerOf(std::string_view path)
+{
+    std::string pointer = "/" + std::string(path);
+    for (char& c : pointer)
+        c = c == '.' ? '/' : c;
+    return Json::json_pointer(pointer);
+}
+
+// A value as a settings file would hold it; floats at their shortest (0.1, not toJson's double 0.100000001).
+std::string valueText(const Json& value)
+{
+    if (value.is_array()) {
+        std::string items;
+        for (const Json& item : value)
+            items += (items.empty() ? "" : ", ") + valueText(item);
+        return "[" + items + "]";
+    }
+    if (value.is_number_float())
+        return fmt::format("{}", value.get<float>());
+    if (value.is_string())
+        return value.get<std::string>();
+    return value.dump();
+}
+
 } // namespace
+
+std::string settingsFieldText(const ShadowSettings& settings, std::string_view path)
+{
+    return valueText(Json::parse(toJson(settings)).at(pointerOf(shadowSettingsField(path).path)));
+}
+
+void setSettingsField(ShadowSettings& settings, std::string_view path, std::string_view text)
+{
+    const ShadowSettingsField& field = shadowSettingsField(path);
+    Json root = Json::parse(toJson(settings));
+    Json& value = root.at(pointerOf(field.path));
+    if (value.is_string()) {
+        value = std::string(text);
+    } else {
+        value = Json::parse(text, nullptr, false);
+        if (value.is_discarded())
+            throw rhi::Error(fmt::format("{}: '{}' is not a value, allowed {}", path, text, field.allowed));
+    }
+    settings = parseShadowSettings(root.dump(), "settings");
+}
 
 std::optional<StaticShadowUpdate> parseStaticShadowUpdate(std::string_view name) { return valueOf(updateNames, name); }
 

@@ -4,7 +4,7 @@
 #include "LightOption.hpp"
 
 #include "penumbra/render/AmbientLight.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 0:
         if (const auto light = penumbra::apps::parseLightOption(text)) {
             // Built once: generating the scene's meshes for every input held the target at 69 executions a second.
-            static const penumbra::scene::Scene base = penumbra::scene::makeSingleLightScene();
+            static const penumbra::scene::Scene base = penumbra::scenes::makeSingleLightScene();
             penumbra::scene::Scene scene = base;
             penumbra::apps::addLight(scene, *light);
             scene.validate();

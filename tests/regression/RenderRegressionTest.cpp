@@ -12,7 +12,7 @@
 #include "penumbra/render/ReferenceLitPass.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Image.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -68,10 +68,10 @@ void staticMapsWithDynamicCasters(render::FrameDesc& frame)
 const std::vector<SceneFrames>& sceneFrames()
 {
     static const std::vector<SceneFrames> scenes{
-        {"shadow-test", scene::makeShadowTestScene, {}},
-        {"single-light", scene::makeSingleLightScene, {}},
+        {"shadow-test", scenes::makeShadowTestScene, {}},
+        {"single-light", scenes::makeSingleLightScene, {}},
         {"mixed-lights",
-         scene::makeMixedLightsScene,
+         scenes::makeMixedLightsScene,
          {{"screen-space", [](render::FrameDesc& f) { f.shadowPath = render::ShadowPath::ScreenSpace; }},
           {"msaa4", [](render::FrameDesc& f) { f.msaa = 4; }},
           {"no-prepass", [](render::FrameDesc& f) { f.depthPrepass = false; }},
@@ -84,16 +84,16 @@ const std::vector<SceneFrames>& sceneFrames()
           {"soft", soft},
           {"static-dynamic", staticMapsWithDynamicCasters}}},
         {"point-light-room",
-         scene::makePointLightRoomScene,
+         scenes::makePointLightRoomScene,
          {{"cube-maps",
            [](render::FrameDesc& f) {
                f.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
                f.visibilityOf = kPoint;
            }}}},
-        {"forest", scene::makeForestScene, {}, true},
-        {"contact", scene::makeContactScene, {}},
-        {"town", scene::makeTownScene, {}},
-        {"cube-grid", [] { return scene::makeCubeGridScene(kGridCubes); }, {}},
+        {"forest", scenes::makeForestScene, {}, true},
+        {"contact", scenes::makeContactScene, {}},
+        {"town", scenes::makeTownScene, {}},
+        {"cube-grid", [] { return scenes::makeCubeGridScene(kGridCubes); }, {}},
     };
     return scenes;
 }
@@ -150,7 +150,7 @@ FrameHashes outputsOf(rhi::Device& device, const render::SceneRenderer& renderer
 // the second after the ball moves, its static depth from the tile caches; then the static maps baked and restored.
 void addStaticFrames(rhi::Device& device, FrameTable& table)
 {
-    scene::Scene town = scene::makeTownScene();
+    scene::Scene town = scenes::makeTownScene();
     const render::FrameDesc frame = smallFrame(staticMapsWithDynamicCasters);
     render::SceneRenderer renderer(device, town);
     renderer.render(town.camera, frame);
@@ -226,7 +226,7 @@ TEST_F(RenderRegressionTest, EveryBuiltInSceneAndFrameVariantMatchesTheCommitted
 // One texel changed, of the lit image or of an atlas, is a difference the comparison names.
 TEST_F(RenderRegressionTest, ChangedTexelCatchesFault)
 {
-    const scene::Scene scene = scene::makeContactScene();
+    const scene::Scene scene = scenes::makeContactScene();
     const render::FrameDesc frame = smallFrame({});
     render::SceneRenderer renderer(*device, scene);
     renderer.render(scene.camera, frame);

@@ -1,6 +1,6 @@
-#include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,12 +8,12 @@
 
 #include <map>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 TEST(GroundTruthTest, CentrePixelHitsWhatTheCameraLooksAt)
 {
-    const Scene scene = makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     const RayCaster cameraRays(scene, RayKind::Camera);
     // Odd size: the centre pixel's sample is exactly on the view axis.
     const CpuGBuffer gbuffer = traceGBuffer(scene, cameraRays, scene.camera, 101, 101);
@@ -27,10 +27,10 @@ TEST(GroundTruthTest, CentrePixelHitsWhatTheCameraLooksAt)
 
 TEST(GroundTruthTest, RowZeroIsTheTopOfThePicture)
 {
-    Scene scene;
-    scene.addObject("box", scene.addMesh(makeBox({3, 1, 1})), scene.addMaterial({}),
+    scene::Scene scene;
+    scene.addObject("box", scene.addMesh(scene::makeBox({3, 1, 1})), scene.addMaterial({}),
                     glm::translate(glm::mat4(1.0f), glm::vec3(0, 2, 0)));
-    scene.camera = lookAt({0, 0, 10}, {0, 0, 0}, glm::radians(60.0f));
+    scene.camera = scene::lookAt({0, 0, 10}, {0, 0, 0}, glm::radians(60.0f));
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 64, 48);
     EXPECT_TRUE(gbuffer.at(32, 12).hit()); // upper half: the box above the axis
     EXPECT_FALSE(gbuffer.at(32, 36).hit()); // lower half: nothing
@@ -41,10 +41,10 @@ TEST(GroundTruthTest, RowZeroIsTheTopOfThePicture)
 // the card another, as the leaf cards of one tree are.
 TEST(GroundTruthTest, SamplesTellTheConnectedPiecesOfAMeshApart)
 {
-    MeshData mesh = makeBox({1, 1, 1});
-    const MeshData card = makePlane(1.0f);
+    scene::MeshData mesh = scene::makeBox({1, 1, 1});
+    const scene::MeshData card = scene::makePlane(1.0f);
     const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
-    for (Vertex v : card.vertices) {
+    for (scene::Vertex v : card.vertices) {
         v.position = glm::vec3(v.position.z, v.position.x, 0.0f) + glm::vec3(3.0f, 0.0f, 0.0f);
         v.normal = {0.0f, 0.0f, 1.0f};
         mesh.vertices.push_back(v);
@@ -52,9 +52,9 @@ TEST(GroundTruthTest, SamplesTellTheConnectedPiecesOfAMeshApart)
     for (const std::uint32_t index : card.indices)
         mesh.indices.push_back(first + index);
     updateBounds(mesh);
-    Scene scene;
+    scene::Scene scene;
     scene.addObject("box and card", scene.addMesh(std::move(mesh)), scene.addMaterial({}), glm::mat4(1.0f));
-    scene.camera = lookAt({4.0f, 4.0f, 10.0f}, {1.5f, 0.0f, 0.0f}, glm::radians(50.0f));
+    scene.camera = scene::lookAt({4.0f, 4.0f, 10.0f}, {1.5f, 0.0f, 0.0f}, glm::radians(50.0f));
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 96, 64);
     std::map<std::uint32_t, std::map<int, std::size_t>> facesBySurface; // surface -> face normal axis -> samples
     for (const GBufferSample& sample : gbuffer.samples)
@@ -73,10 +73,10 @@ TEST(GroundTruthTest, SamplesTellTheConnectedPiecesOfAMeshApart)
 
 TEST(GroundTruthTest, SamplesProjectBackToTheirPixelCentres)
 {
-    const Scene scene = makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     constexpr std::uint32_t width = 80, height = 60;
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, width, height);
-    const Camera& camera = scene.camera;
+    const scene::Camera& camera = scene.camera;
     const glm::mat4 viewProjection =
         glm::perspectiveRH_ZO(camera.fovY, float(width) / float(height), camera.nearPlane, camera.farPlane) *
         camera.view();
@@ -100,14 +100,14 @@ TEST(GroundTruthTest, SamplesProjectBackToTheirPixelCentres)
 
 TEST(GroundTruthTest, ShadowUnderAFloatingBoxForAVerticalLight)
 {
-    Scene scene;
+    scene::Scene scene;
     const std::uint32_t plain = scene.addMaterial({});
-    scene.addObject("ground", scene.addMesh(makePlane(20.0f)), plain, glm::mat4(1.0f));
-    scene.addObject("box", scene.addMesh(makeBox({1, 1, 1})), plain,
+    scene.addObject("ground", scene.addMesh(scene::makePlane(20.0f)), plain, glm::mat4(1.0f));
+    scene.addObject("box", scene.addMesh(scene::makeBox({1, 1, 1})), plain,
                     glm::translate(glm::mat4(1.0f), glm::vec3(0, 3, 0)));
     // Seen from a slant, so the ground under the box is partly visible beside it.
-    scene.camera = lookAt({0, 12, -12}, {0, 0, 0}, glm::radians(40.0f));
-    const DirectionalLight light{.direction = {0, -1, 0}};
+    scene.camera = scene::lookAt({0, 12, -12}, {0, 0, 0}, glm::radians(40.0f));
+    const scene::DirectionalLight light{.direction = {0, -1, 0}};
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 65, 65);
     const LightVisibilityMask mask = traceLightVisibility(scene, RayCaster(scene), gbuffer, light);
     std::map<LightVisibility, int> counts;
@@ -133,7 +133,7 @@ TEST(GroundTruthTest, ShadowUnderAFloatingBoxForAVerticalLight)
 
 TEST(GroundTruthTest, TestSceneMaskHasEveryCategory)
 {
-    const Scene scene = makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     const CpuGBuffer gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, 160, 90);
     const LightVisibilityMask mask = traceLightVisibility(scene, RayCaster(scene), gbuffer, scene.lights[0]);
     std::map<LightVisibility, int> counts;
@@ -152,7 +152,7 @@ TEST(GroundTruthTest, TestSceneMaskHasEveryCategory)
 
 TEST(GroundTruthTest, WrongRayKindIsRejected)
 {
-    const Scene scene = makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     const RayCaster shadowRays(scene);
     EXPECT_THROW(traceGBuffer(scene, shadowRays, scene.camera, 4, 4), std::invalid_argument);
     const RayCaster cameraRays(scene, RayKind::Camera);
@@ -161,4 +161,4 @@ TEST(GroundTruthTest, WrongRayKindIsRejected)
 }
 
 } // namespace
-} // namespace penumbra::scene
+} // namespace penumbra::truth

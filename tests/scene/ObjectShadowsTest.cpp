@@ -3,7 +3,7 @@
 #include "GltfLoaderFixture.hpp"
 
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/RayCaster.hpp"
+#include "penumbra/truth/RayCaster.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -19,19 +19,23 @@ Scene boxWith(ShadowCasting casting, CasterMode materialMode = CasterMode::On)
     return scene;
 }
 
-bool blocks(const Scene& scene, RayKind kind) { return RayCaster(scene, kind).occluded({0, 0, -5}, {0, 0, 1}); }
+bool blocks(const Scene& scene, truth::RayKind kind)
+{
+    return truth::RayCaster(scene, kind).occluded({0, 0, -5}, {0, 0, 1});
+}
 
 TEST(ObjectShadowsTest, RayCasterSeesWhatEachModeDraws)
 {
     for (const ShadowCasting casting : {ShadowCasting::On, ShadowCasting::TwoSided})
-        EXPECT_TRUE(blocks(boxWith(casting), RayKind::Shadow) && blocks(boxWith(casting), RayKind::Camera))
+        EXPECT_TRUE(blocks(boxWith(casting), truth::RayKind::Shadow) &&
+                    blocks(boxWith(casting), truth::RayKind::Camera))
             << shadowCastingName(casting);
-    EXPECT_FALSE(blocks(boxWith(ShadowCasting::Off), RayKind::Shadow));
-    EXPECT_TRUE(blocks(boxWith(ShadowCasting::Off), RayKind::Camera));
-    EXPECT_TRUE(blocks(boxWith(ShadowCasting::ShadowsOnly), RayKind::Shadow));
-    EXPECT_FALSE(blocks(boxWith(ShadowCasting::ShadowsOnly), RayKind::Camera));
+    EXPECT_FALSE(blocks(boxWith(ShadowCasting::Off), truth::RayKind::Shadow));
+    EXPECT_TRUE(blocks(boxWith(ShadowCasting::Off), truth::RayKind::Camera));
+    EXPECT_TRUE(blocks(boxWith(ShadowCasting::ShadowsOnly), truth::RayKind::Shadow));
+    EXPECT_FALSE(blocks(boxWith(ShadowCasting::ShadowsOnly), truth::RayKind::Camera));
     // The material's choice still holds: an object set to cast with a material that casts nothing casts nothing.
-    EXPECT_FALSE(blocks(boxWith(ShadowCasting::On, CasterMode::Off), RayKind::Shadow));
+    EXPECT_FALSE(blocks(boxWith(ShadowCasting::On, CasterMode::Off), truth::RayKind::Shadow));
 }
 
 TEST(ObjectShadowsTest, SceneAsksBothObjectAndMaterial)

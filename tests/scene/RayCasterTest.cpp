@@ -1,7 +1,7 @@
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/RayCaster.hpp"
-#include "penumbra/scene/RayTriangle.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/truth/RayCaster.hpp"
+#include "penumbra/truth/RayTriangle.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -11,22 +11,23 @@
 #include <cmath>
 #include <random>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 glm::mat4 at(const glm::vec3& position) { return glm::translate(glm::mat4(1.0f), position); }
 
 // Double-sided by default: seen from either side by both kinds of ray.
-Scene singleMeshScene(MeshData mesh, const glm::mat4& transform, Material material = {.doubleSided = true})
+scene::Scene singleMeshScene(scene::MeshData mesh, const glm::mat4& transform,
+                             scene::Material material = {.doubleSided = true})
 {
-    Scene scene;
+    scene::Scene scene;
     scene.addObject("only", scene.addMesh(std::move(mesh)), scene.addMaterial(std::move(material)), transform);
     return scene;
 }
 
 TEST(RayCasterTest, BoxKnownAnswers)
 {
-    const RayCaster caster(singleMeshScene(makeBox({1, 1, 1}), at({0, 0, 0})));
+    const RayCaster caster(singleMeshScene(scene::makeBox({1, 1, 1}), at({0, 0, 0})));
     EXPECT_EQ(caster.triangleCount(), 12u);
     const auto front = caster.closestHit({0.3f, -0.2f, -5.0f}, {0, 0, 1});
     ASSERT_TRUE(front);
@@ -51,7 +52,7 @@ TEST(RayCasterTest, SphereKnownAnswerWithinTessellation)
 {
     constexpr float radius = 2.0f;
     constexpr std::uint32_t segments = 64;
-    const RayCaster caster(singleMeshScene(makeSphere(radius, segments, 32), at({3, 1, 0})));
+    const RayCaster caster(singleMeshScene(scene::makeSphere(radius, segments, 32), at({3, 1, 0})));
     // The inscribed polyhedron lies between r cos(pi / segments)^2 and r from the centre.
     const float tolerance = radius * (1.0f - std::pow(std::cos(glm::pi<float>() / segments), 2.0f));
     for (const glm::vec3& direction : {glm::vec3(1, 0, 0), glm::vec3(0, -1, 0), glm::normalize(glm::vec3(1, 2, 3))}) {
@@ -66,12 +67,12 @@ TEST(RayCasterTest, SphereKnownAnswerWithinTessellation)
 
 TEST(RayCasterTest, TriangleIndexAndBarycentricsReferToTheMesh)
 {
-    const Scene scene = singleMeshScene(makePlane(1.0f), at({0, 2, 0}));
+    const scene::Scene scene = singleMeshScene(scene::makePlane(1.0f), at({0, 2, 0}));
     const RayCaster caster(scene);
     const glm::vec3 origin{0.3f, 5.0f, -0.4f};
     const auto hit = caster.closestHit(origin, {0, -1, 0});
     ASSERT_TRUE(hit);
-    const MeshData& mesh = scene.meshes[0];
+    const scene::MeshData& mesh = scene.meshes[0];
     const glm::vec3 p0 = mesh.vertices[mesh.indices[3 * hit->triangle]].position;
     const glm::vec3 p1 = mesh.vertices[mesh.indices[3 * hit->triangle + 1]].position;
     const glm::vec3 p2 = mesh.vertices[mesh.indices[3 * hit->triangle + 2]].position;
@@ -82,22 +83,22 @@ TEST(RayCasterTest, TriangleIndexAndBarycentricsReferToTheMesh)
 }
 
 // The test scene with every material made a solid double-sided caster, so brute force needs no alpha nor culling.
-Scene solidTestScene()
+scene::Scene solidTestScene()
 {
-    Scene scene = makeShadowTestScene();
-    for (Material& material : scene.materials) {
-        material.caster = CasterMode::On;
+    scene::Scene scene = scenes::makeShadowTestScene();
+    for (scene::Material& material : scene.materials) {
+        material.caster = scene::CasterMode::On;
         material.doubleSided = true;
     }
     return scene;
 }
 
-std::optional<Hit> bruteForceClosest(const Scene& scene, const glm::vec3& origin, const glm::vec3& direction)
+std::optional<Hit> bruteForceClosest(const scene::Scene& scene, const glm::vec3& origin, const glm::vec3& direction)
 {
     std::optional<Hit> best;
     for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
-        const Object& object = scene.objects[o];
-        const MeshData& mesh = scene.meshOf(object);
+        const scene::Object& object = scene.objects[o];
+        const scene::MeshData& mesh = scene.meshOf(object);
         for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
             glm::vec3 v[3];
             for (int k = 0; k < 3; ++k)
@@ -116,7 +117,7 @@ std::optional<Hit> bruteForceClosest(const Scene& scene, const glm::vec3& origin
 
 TEST(RayCasterTest, BvhAgreesWithBruteForceOnRandomRays)
 {
-    const Scene scene = solidTestScene();
+    const scene::Scene scene = solidTestScene();
     const RayCaster caster(scene);
     std::mt19937 random(1234);
     std::uniform_real_distribution<float> position(-12.0f, 12.0f);
@@ -146,10 +147,10 @@ TEST(RayCasterTest, BvhAgreesWithBruteForceOnRandomRays)
 
 TEST(RayCasterTest, FloatingBoxShadowsThePointBelowForAVerticalLight)
 {
-    Scene scene;
+    scene::Scene scene;
     const std::uint32_t plain = scene.addMaterial({});
-    scene.addObject("ground", scene.addMesh(makePlane(20.0f)), plain, glm::mat4(1.0f));
-    scene.addObject("box", scene.addMesh(makeBox({1, 1, 1})), plain, at({2, 3, -1}));
+    scene.addObject("ground", scene.addMesh(scene::makePlane(20.0f)), plain, glm::mat4(1.0f));
+    scene.addObject("box", scene.addMesh(scene::makeBox({1, 1, 1})), plain, at({2, 3, -1}));
     const RayCaster caster(scene);
     const glm::vec3 towardsLight{0, 1, 0};
     constexpr float offset = 1e-3f;
@@ -162,17 +163,17 @@ TEST(RayCasterTest, FloatingBoxShadowsThePointBelowForAVerticalLight)
 
 // A 3 x 3 Clip panel at y = 2 over the origin: 5 x 5 checker cells of 0.6, the cell at
 // (-x, -z) solid, its +x neighbour a hole.
-Scene panelScene(CasterMode mode, float alpha)
+scene::Scene panelScene(scene::CasterMode mode, float alpha)
 {
-    Scene scene;
-    scene.addObject("panel", scene.addMesh(makeBox({1.5f, 0.05f, 1.5f})),
+    scene::Scene scene;
+    scene.addObject("panel", scene.addMesh(scene::makeBox({1.5f, 0.05f, 1.5f})),
                     scene.addMaterial({.baseColor = {1, 1, 1, alpha}, .caster = mode}), at({0, 2, 0}));
     return scene;
 }
 
 TEST(RayCasterTest, ClipCastersHaveCheckerHolesForShadowAndCameraRays)
 {
-    const Scene scene = panelScene(CasterMode::Clip, 1.0f);
+    const scene::Scene scene = panelScene(scene::CasterMode::Clip, 1.0f);
     const glm::vec3 solidCell{-1.2f, 0, -1.2f}, holeCell{-0.6f, 0, -1.2f};
     for (const RayKind kind : {RayKind::Shadow, RayKind::Camera}) {
         const RayCaster caster(scene, kind);
@@ -182,28 +183,30 @@ TEST(RayCasterTest, ClipCastersHaveCheckerHolesForShadowAndCameraRays)
         EXPECT_TRUE(caster.closestHit(solidCell, {0, 1, 0}));
     }
     // Alpha below the cutoff everywhere: no caster at all.
-    EXPECT_FALSE(RayCaster(panelScene(CasterMode::Clip, 0.4f)).occluded(solidCell, {0, 1, 0}));
+    EXPECT_FALSE(RayCaster(panelScene(scene::CasterMode::Clip, 0.4f)).occluded(solidCell, {0, 1, 0}));
 }
 
 TEST(RayCasterTest, DitherCastersThresholdAlphaAtOneHalfForShadowsOnly)
 {
     const glm::vec3 below{-0.6f, 0, -1.2f};
-    EXPECT_TRUE(RayCaster(panelScene(CasterMode::Dither, 0.6f)).occluded(below, {0, 1, 0}));
-    EXPECT_FALSE(RayCaster(panelScene(CasterMode::Dither, 0.4f)).occluded(below, {0, 1, 0}));
-    EXPECT_TRUE(RayCaster(panelScene(CasterMode::Dither, 0.4f), RayKind::Camera).occluded(below, {0, 1, 0}));
+    EXPECT_TRUE(RayCaster(panelScene(scene::CasterMode::Dither, 0.6f)).occluded(below, {0, 1, 0}));
+    EXPECT_FALSE(RayCaster(panelScene(scene::CasterMode::Dither, 0.4f)).occluded(below, {0, 1, 0}));
+    EXPECT_TRUE(RayCaster(panelScene(scene::CasterMode::Dither, 0.4f), RayKind::Camera).occluded(below, {0, 1, 0}));
 }
 
 TEST(RayCasterTest, DitheredCastersAreReportedApartWithTheirLargestAlpha)
 {
     const glm::vec3 below{-0.6f, 0, -1.2f};
-    const Occlusion dithered = RayCaster(panelScene(CasterMode::Dither, 0.3f)).occlusion(below, {0, 1, 0});
+    const Occlusion dithered = RayCaster(panelScene(scene::CasterMode::Dither, 0.3f)).occlusion(below, {0, 1, 0});
     EXPECT_FALSE(dithered.solid);
     EXPECT_FLOAT_EQ(dithered.ditherCoverage, 0.3f);
-    Scene layered = panelScene(CasterMode::Dither, 0.3f);
-    layered.addObject("upper panel", layered.addMesh(makeBox({1.5f, 0.05f, 1.5f})),
-                      layered.addMaterial({.baseColor = {1, 1, 1, 0.7f}, .caster = CasterMode::Dither}), at({0, 4, 0}));
+    scene::Scene layered = panelScene(scene::CasterMode::Dither, 0.3f);
+    layered.addObject("upper panel", layered.addMesh(scene::makeBox({1.5f, 0.05f, 1.5f})),
+                      layered.addMaterial({.baseColor = {1, 1, 1, 0.7f}, .caster = scene::CasterMode::Dither}),
+                      at({0, 4, 0}));
     EXPECT_FLOAT_EQ(RayCaster(layered).occlusion(below, {0, 1, 0}).ditherCoverage, 0.7f);
-    layered.addObject("roof", layered.addMesh(makeBox({1.5f, 0.05f, 1.5f})), layered.addMaterial({}), at({0, 6, 0}));
+    layered.addObject("roof", layered.addMesh(scene::makeBox({1.5f, 0.05f, 1.5f})), layered.addMaterial({}),
+                      at({0, 6, 0}));
     EXPECT_TRUE(RayCaster(layered).occlusion(below, {0, 1, 0}).solid);
     const Occlusion open = RayCaster(layered).occlusion({10, 0, 0}, {0, 1, 0});
     EXPECT_FALSE(open.solid);
@@ -217,20 +220,20 @@ TEST(RayCasterTest, SingleSidedSurfacesAreSeenFromTheSideThePassesDraw)
 {
     const glm::vec3 above{0.3f, 5, -0.4f}, below{0.3f, -5, -0.4f};
     const glm::vec3 up{0, 1, 0}, down{0, -1, 0};
-    Scene scene = singleMeshScene(makePlane(1.0f), glm::mat4(1.0f), {}); // faces +y
+    scene::Scene scene = singleMeshScene(scene::makePlane(1.0f), glm::mat4(1.0f), {}); // faces +y
     EXPECT_TRUE(RayCaster(scene, RayKind::Camera).occluded(above, down));
     EXPECT_FALSE(RayCaster(scene, RayKind::Camera).occluded(below, up));
     EXPECT_TRUE(RayCaster(scene).occluded(below, up)); // light above: the front faces it
     EXPECT_FALSE(RayCaster(scene).occluded(above, down)); // light below: the front faces away
-    scene.objects[0].castShadows = ShadowCasting::TwoSided;
+    scene.objects[0].castShadows = scene::ShadowCasting::TwoSided;
     EXPECT_TRUE(RayCaster(scene).occluded(above, down));
     EXPECT_FALSE(RayCaster(scene, RayKind::Camera).occluded(below, up));
     scene.materials[0].doubleSided = true;
-    scene.objects[0].castShadows = ShadowCasting::On;
+    scene.objects[0].castShadows = scene::ShadowCasting::On;
     EXPECT_TRUE(RayCaster(scene).occluded(above, down));
     EXPECT_TRUE(RayCaster(scene, RayKind::Camera).occluded(below, up));
     // A closed single-sided mesh blocks from every side.
-    const RayCaster box(singleMeshScene(makeBox({1, 1, 1}), glm::mat4(1.0f), {}));
+    const RayCaster box(singleMeshScene(scene::makeBox({1, 1, 1}), glm::mat4(1.0f), {}));
     EXPECT_TRUE(box.occluded(below, up));
     EXPECT_TRUE(box.occluded(above, down));
     EXPECT_FLOAT_EQ(box.closestHit(below, up)->distance, 6.0f); // through the culled bottom, to the top
@@ -238,7 +241,7 @@ TEST(RayCasterTest, SingleSidedSurfacesAreSeenFromTheSideThePassesDraw)
 
 TEST(RayCasterTest, OffCastersAreOnlySeenByTheCamera)
 {
-    const Scene scene = panelScene(CasterMode::Off, 1.0f);
+    const scene::Scene scene = panelScene(scene::CasterMode::Off, 1.0f);
     EXPECT_EQ(RayCaster(scene).triangleCount(), 0u);
     EXPECT_FALSE(RayCaster(scene).occluded({-1.2f, 0, -1.2f}, {0, 1, 0}));
     EXPECT_FALSE(RayCaster(scene).closestHit({-1.2f, 0, -1.2f}, {0, 1, 0}));
@@ -247,10 +250,10 @@ TEST(RayCasterTest, OffCastersAreOnlySeenByTheCamera)
 
 TEST(RayCasterTest, InvalidSceneIsRejected)
 {
-    Scene scene = panelScene(CasterMode::On, 1.0f);
+    scene::Scene scene = panelScene(scene::CasterMode::On, 1.0f);
     scene.objects[0].material = 9;
-    EXPECT_THROW(RayCaster{scene}, SceneError);
+    EXPECT_THROW(RayCaster{scene}, scene::SceneError);
 }
 
 } // namespace
-} // namespace penumbra::scene
+} // namespace penumbra::truth

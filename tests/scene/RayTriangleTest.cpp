@@ -1,8 +1,8 @@
-#include "penumbra/scene/RayTriangle.hpp"
+#include "penumbra/truth/RayTriangle.hpp"
 
 #include <gtest/gtest.h>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 const glm::vec3 v0{0, 0, 0}, v1{1, 0, 0}, v2{0, 1, 0}; // counter-clockwise seen from +z
@@ -44,4 +44,4 @@ TEST(RayTriangleTest, Misses)
 }
 
 } // namespace
-} // namespace penumbra::scene
+} // namespace penumbra::truth

@@ -1,6 +1,6 @@
 #include "penumbra/scene/LocalLights.hpp"
-#include "penumbra/scene/RayCaster.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/truth/RayCaster.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -37,13 +37,13 @@ float lowestVertexY(const Scene& scene, const Object& o)
 
 TEST(TestScenesTest, BothScenesValidate)
 {
-    EXPECT_NO_THROW(makeShadowTestScene().validate());
-    EXPECT_NO_THROW(makeSingleLightScene().validate());
+    EXPECT_NO_THROW(scenes::makeShadowTestScene().validate());
+    EXPECT_NO_THROW(scenes::makeSingleLightScene().validate());
 }
 
 TEST(TestScenesTest, HasTheGroundAndEveryNamedObject)
 {
-    const Scene scene = makeShadowTestScene();
+    const Scene scene = scenes::makeShadowTestScene();
     EXPECT_EQ(scene.objects.size(), 1 + kStanding.size() + kFloating.size());
     const Object& ground = object(scene, "ground");
     EXPECT_EQ(ground.worldBounds.min, glm::vec3(-30, 0, -30));
@@ -52,7 +52,7 @@ TEST(TestScenesTest, HasTheGroundAndEveryNamedObject)
 
 TEST(TestScenesTest, StandingObjectsTouchTheGroundExactly)
 {
-    const Scene scene = makeShadowTestScene();
+    const Scene scene = scenes::makeShadowTestScene();
     for (const std::string& name : kStanding) {
         SCOPED_TRACE(name);
         EXPECT_EQ(lowestVertexY(scene, object(scene, name)), 0.0f);
@@ -61,7 +61,7 @@ TEST(TestScenesTest, StandingObjectsTouchTheGroundExactly)
 
 TEST(TestScenesTest, FloatingObjectsClearTheGround)
 {
-    const Scene scene = makeShadowTestScene();
+    const Scene scene = scenes::makeShadowTestScene();
     for (const std::string& name : kFloating) {
         SCOPED_TRACE(name);
         EXPECT_GT(object(scene, name).worldBounds.min.y, 1.0f);
@@ -70,7 +70,7 @@ TEST(TestScenesTest, FloatingObjectsClearTheGround)
 
 TEST(TestScenesTest, ObjectsDoNotIntersectEachOther)
 {
-    const Scene scene = makeShadowTestScene();
+    const Scene scene = scenes::makeShadowTestScene();
     for (std::size_t i = 1; i < scene.objects.size(); ++i) {
         for (std::size_t j = i + 1; j < scene.objects.size(); ++j) {
             const Bounds& a = scene.objects[i].worldBounds;
@@ -83,7 +83,7 @@ TEST(TestScenesTest, ObjectsDoNotIntersectEachOther)
 
 TEST(TestScenesTest, LongBeamRunsFromTheViewToBehindTheCamera)
 {
-    const Scene scene = makeShadowTestScene();
+    const Scene scene = scenes::makeShadowTestScene();
     const Bounds& beam = object(scene, "long beam").worldBounds;
     EXPECT_GE(beam.size().z, 80.0f);
     float nearest = INFINITY;
@@ -99,7 +99,7 @@ TEST(TestScenesTest, LongBeamRunsFromTheViewToBehindTheCamera)
 
 TEST(TestScenesTest, MaterialsCoverEveryShadowCase)
 {
-    const Scene scene = makeShadowTestScene();
+    const Scene scene = scenes::makeShadowTestScene();
     EXPECT_EQ(scene.materialOf(object(scene, "clip panel")).caster, CasterMode::Clip);
     EXPECT_EQ(scene.materialOf(object(scene, "dither sphere")).caster, CasterMode::Dither);
     EXPECT_FALSE(scene.materialOf(object(scene, "unshadowed pillar")).receiveShadows);
@@ -117,7 +117,7 @@ TEST(TestScenesTest, MaterialsCoverEveryShadowCase)
 
 TEST(TestScenesTest, FourLightsNinetyDegreesApartAtOnePitch)
 {
-    const Scene scene = makeShadowTestScene();
+    const Scene scene = scenes::makeShadowTestScene();
     ASSERT_EQ(scene.lights.size(), 4u);
     for (std::size_t i = 0; i < 4; ++i) {
         const DirectionalLight& light = scene.lights[i];
@@ -129,7 +129,7 @@ TEST(TestScenesTest, FourLightsNinetyDegreesApartAtOnePitch)
         EXPECT_NEAR(glm::dot(a, b), 0.0f, 1e-6f);
         EXPECT_NE(light.color, next.color);
     }
-    const Scene single = makeSingleLightScene();
+    const Scene single = scenes::makeSingleLightScene();
     ASSERT_EQ(single.lights.size(), 1u);
     EXPECT_EQ(single.lights[0].direction, scene.lights[0].direction);
     EXPECT_EQ(single.objects.size(), scene.objects.size());
@@ -137,15 +137,15 @@ TEST(TestScenesTest, FourLightsNinetyDegreesApartAtOnePitch)
 
 TEST(TestScenesTest, CameraLooksAtTheSceneFromAbove)
 {
-    const Camera& camera = makeShadowTestScene().camera;
+    const Camera& camera = scenes::makeShadowTestScene().camera;
     EXPECT_EQ(camera.position, glm::vec3(0, 8, -20));
     EXPECT_NEAR(glm::dot(camera.forward, glm::normalize(glm::vec3(0, -8, 25))), 1.0f, 1e-6f);
 }
 
 TEST(TestScenesTest, UnshadowedPillarStandsInTheFloatingCubesKeyShadow)
 {
-    const Scene scene = makeSingleLightScene();
-    const RayCaster caster(scene);
+    const Scene scene = scenes::makeSingleLightScene();
+    const truth::RayCaster caster(scene);
     const Object& pillar = object(scene, "unshadowed pillar");
     const glm::vec3 topCentre{pillar.worldBounds.center().x, pillar.worldBounds.max.y + 1e-3f,
                               pillar.worldBounds.center().z};
@@ -162,7 +162,7 @@ namespace {
 
 TEST(ForestSceneTest, HasTheTerrainFiveTreesAndOneSun)
 {
-    const Scene forest = makeForestScene();
+    const Scene forest = scenes::makeForestScene();
     EXPECT_EQ(forest.meshOf(object(forest, "terrain")).triangleCount(), 2450u);
     for (int i = 1; i <= 5; ++i) {
         const std::string tree = "tree " + std::to_string(i);
@@ -181,7 +181,7 @@ TEST(ForestSceneTest, HasTheTerrainFiveTreesAndOneSun)
 
 TEST(ForestSceneTest, LeafTextureCutsOutLeaves)
 {
-    const Scene forest = makeForestScene();
+    const Scene forest = scenes::makeForestScene();
     const TextureImage& leaf = forest.textures.at(0);
     std::size_t opaque = 0, clear = 0;
     for (std::size_t i = 3; i < leaf.rgba.size(); i += 4) {
@@ -195,14 +195,14 @@ TEST(ForestSceneTest, LeafTextureCutsOutLeaves)
 
 TEST(ForestSceneTest, IsTheSameEveryTimeAndTheCameraStandsAboveTheGround)
 {
-    const Scene a = makeForestScene(), b = makeForestScene();
+    const Scene a = scenes::makeForestScene(), b = scenes::makeForestScene();
     const MeshData& leavesA = a.meshOf(object(a, "tree 3 leaves"));
     const MeshData& leavesB = b.meshOf(object(b, "tree 3 leaves"));
     ASSERT_EQ(leavesA.vertices.size(), leavesB.vertices.size());
     for (std::size_t i = 0; i < leavesA.vertices.size(); ++i)
         EXPECT_EQ(leavesA.vertices[i].position, leavesB.vertices[i].position);
-    const RayCaster rays(a, RayKind::Camera);
-    const std::optional<Hit> below = rays.closestHit(a.camera.position, {0.0f, -1.0f, 0.0f});
+    const truth::RayCaster rays(a, truth::RayKind::Camera);
+    const std::optional<truth::Hit> below = rays.closestHit(a.camera.position, {0.0f, -1.0f, 0.0f});
     ASSERT_TRUE(below) << "terrain under the camera";
     EXPECT_NEAR(below->distance, 1.7f, 0.01f);
 }
@@ -215,16 +215,16 @@ namespace {
 
 TEST(StreetSceneTest, HasTheLampsShopWindowsMoonAndCars)
 {
-    const Scene street = makeStreetScene();
+    const Scene street = scenes::makeStreetScene();
     EXPECT_NO_THROW(street.validate());
-    ASSERT_EQ(street.spotLights.size(), kStreetLamps);
-    ASSERT_EQ(street.pointLights.size(), kStreetShopWindows);
+    ASSERT_EQ(street.spotLights.size(), scenes::kStreetLamps);
+    ASSERT_EQ(street.pointLights.size(), scenes::kStreetShopWindows);
     ASSERT_EQ(street.lights.size(), 1u);
     EXPECT_EQ(street.lights[0].name, "moon");
     EXPECT_LT(street.lights[0].intensity, 0.2f);
     for (const SpotLight& lamp : street.spotLights)
         EXPECT_EQ(lamp.direction, glm::vec3(0.0f, -1.0f, 0.0f)) << lamp.name;
-    for (std::uint32_t i = 1; i <= kStreetCars; ++i) {
+    for (std::uint32_t i = 1; i <= scenes::kStreetCars; ++i) {
         EXPECT_TRUE(street.findObject("car " + std::to_string(i) + "/0")) << i;
         EXPECT_TRUE(street.findObject("car " + std::to_string(i) + "/1")) << i;
     }
@@ -236,7 +236,7 @@ TEST(StreetSceneTest, HasTheLampsShopWindowsMoonAndCars)
 
 TEST(StreetSceneTest, LocalLightsRunFromTheCameraOutwards)
 {
-    const Scene street = makeStreetScene();
+    const Scene street = scenes::makeStreetScene();
     const auto distance = [&](glm::vec3 p) { return glm::length(p - street.camera.position); };
     for (std::size_t i = 4; i < street.spotLights.size(); i += 4)
         EXPECT_GT(distance(street.spotLights[i].position), distance(street.spotLights[i - 4].position)) << i;
@@ -246,13 +246,13 @@ TEST(StreetSceneTest, LocalLightsRunFromTheCameraOutwards)
 
 TEST(LocalLightsTest, KeepFirstLocalLightsTakesSpotLightsThenPointLights)
 {
-    const Scene street = makeStreetScene();
-    EXPECT_EQ(localLightCount(street), kStreetLamps + kStreetShopWindows);
+    const Scene street = scenes::makeStreetScene();
+    EXPECT_EQ(localLightCount(street), scenes::kStreetLamps + scenes::kStreetShopWindows);
     for (const std::uint32_t n : {0u, 16u, 256u, 300u, 320u, 1000u}) {
         Scene kept = street;
         keepFirstLocalLights(kept, n);
-        EXPECT_EQ(localLightCount(kept), std::min(n, kStreetLamps + kStreetShopWindows)) << n;
-        ASSERT_EQ(kept.spotLights.size(), std::min(n, kStreetLamps)) << n;
+        EXPECT_EQ(localLightCount(kept), std::min(n, scenes::kStreetLamps + scenes::kStreetShopWindows)) << n;
+        ASSERT_EQ(kept.spotLights.size(), std::min(n, scenes::kStreetLamps)) << n;
         for (std::size_t i = 0; i < kept.spotLights.size(); ++i)
             EXPECT_EQ(kept.spotLights[i].name, street.spotLights[i].name);
         for (std::size_t i = 0; i < kept.pointLights.size(); ++i)

@@ -1,13 +1,13 @@
-// scene::compareWithTruth on hand-made pictures: verdicts, per-class figures, the edge margin; and
-// scene::confirmDisagreements on a ray-cast scene.
-#include "penumbra/scene/TruthComparison.hpp"
+// truth::compareWithTruth on hand-made pictures: verdicts, per-class figures, the edge margin; and
+// truth::confirmDisagreements on a ray-cast scene.
+#include "penumbra/truth/TruthComparison.hpp"
 
 #include "penumbra/scene/MeshGenerators.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-namespace penumbra::scene {
+namespace penumbra::truth {
 namespace {
 
 constexpr std::uint32_t kSize = 16;
@@ -109,7 +109,7 @@ TEST(TruthComparisonTest, PicturesOfDifferentSizesAreRefused)
 // lit everywhere, so every compared shadowed pixel is a leak.
 struct SlabScene {
     static constexpr std::uint32_t kPixels = 128;
-    Scene scene;
+    scene::Scene scene;
     CpuGBuffer gbuffer;
     LightVisibilityMask truth;
     RenderedVisibility rendered;
@@ -117,12 +117,12 @@ struct SlabScene {
     SlabScene()
     {
         const std::uint32_t material = scene.addMaterial({});
-        scene.addObject("ground", scene.addMesh(makePlane(10.0f)), material, glm::mat4(1.0f));
+        scene.addObject("ground", scene.addMesh(scene::makePlane(10.0f)), material, glm::mat4(1.0f));
         for (const auto& [x, side] : {std::pair{-3.0f, 1.5f}, std::pair{3.0f, 4.0f}})
-            scene.addObject("slab", scene.addMesh(makeBox({0.5f * side, 0.05f, 0.5f * side})), material,
+            scene.addObject("slab", scene.addMesh(scene::makeBox({0.5f * side, 0.05f, 0.5f * side})), material,
                             glm::translate(glm::mat4(1.0f), glm::vec3(x, 4.0f, 0.0f)));
         scene.lights.push_back({.direction = glm::normalize(glm::vec3(0.0f, -1.0f, 1.0f))});
-        scene.camera = lookAt({0.0f, 14.0f, 4.0f}, {0.0f, 0.0f, 4.0f}, glm::radians(60.0f), {0.0f, 0.0f, -1.0f});
+        scene.camera = scene::lookAt({0.0f, 14.0f, 4.0f}, {0.0f, 0.0f, 4.0f}, glm::radians(60.0f), {0.0f, 0.0f, -1.0f});
         gbuffer = traceGBuffer(scene, RayCaster(scene, RayKind::Camera), scene.camera, kPixels, kPixels);
         truth = traceLightVisibility(scene, RayCaster(scene), gbuffer, scene.lights[0]);
         rendered = {kPixels, kPixels, std::vector<float>(kPixels * kPixels, 1.0f),
@@ -170,4 +170,4 @@ TEST(TruthComparisonTest, ConfirmingNeedsAFootprintPerPixel)
 }
 
 } // namespace
-} // namespace penumbra::scene
+} // namespace penumbra::truth

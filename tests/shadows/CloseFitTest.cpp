@@ -13,7 +13,7 @@ namespace {
 
 const rhi::Conventions conventions{rhi::DepthRange::ZeroToOne, true};
 
-// The built-in test scene's camera (scene::makeShadowTestScene): from (0, 8, -20) at (0, 0, 5), 60 degrees, 16:9.
+// The built-in test scene's camera (scenes::makeShadowTestScene): from (0, 8, -20) at (0, 0, 5), 60 degrees, 16:9.
 ShadowCamera sceneCamera()
 {
     ShadowCamera camera;

@@ -110,6 +110,24 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
               0u);
 }
 
+// The tool's options set a field by its path and text, and its range comes from the one table.
+TEST(ShadowSettingsJson, FieldsAreSetByPathAndCheckedByTheirRange)
+{
+    ShadowSettings settings;
+    setSettingsField(settings, "directional.projection", "close");
+    setSettingsField(settings, "static.localAtlasSize", "512");
+    EXPECT_EQ(settings.directional.projection, CascadeProjection::Close);
+    EXPECT_EQ(settings.staticMaps.localAtlasSize, 512u);
+    EXPECT_EQ(settingsFieldText(settings, "directional.projection"), "close");
+    EXPECT_EQ(settingsFieldText(ShadowSettings{}, "directional.cascadeRatios"), "[0.1, 0.25, 0.5]");
+    EXPECT_THROW(setSettingsField(settings, "directional.projection", "tight"), rhi::Error);
+    EXPECT_THROW(setSettingsField(settings, "static.localAtlasSize", "384"), rhi::Error);
+    EXPECT_EQ(settings.staticMaps.localAtlasSize, 512u);
+    EXPECT_EQ(shadowSettingsField("local.atlasSize").allowed, "powers of two 256..8192");
+    EXPECT_TRUE(withinRange(shadowSettingsField("local.nearPlane").range, 0.0001f));
+    EXPECT_FALSE(withinRange(shadowSettingsField("maxDistance").range, 0.001f));
+}
+
 TEST(ShadowSettingsJson, RoundTripKeepsEveryField)
 {
     for (const ShadowSettings& s : {ShadowSettings{}, unusualSettings()}) {

@@ -4,8 +4,8 @@
 #include "GpuTesting.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/render/ShadowTruth.hpp"
-#include "penumbra/scene/GroundTruth.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
 
@@ -47,7 +47,7 @@ scene::Scene wallScene()
 // World x where the ray through continuous pixel (px, py) meets the ground.
 std::optional<glm::vec3> groundPoint(const scene::Camera& camera, float px, float py)
 {
-    const scene::Ray ray = scene::primaryRay(camera, kWidth, kHeight, px, py);
+    const truth::Ray ray = truth::primaryRay(camera, kWidth, kHeight, px, py);
     if (ray.direction.y >= 0.0f)
         return std::nullopt;
     return ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
@@ -202,8 +202,7 @@ std::vector<PenumbraRow> pcssPenumbraRows(rhi::Device& device, float degrees, st
     frame.shadows.soft.maxPenumbraTexels = 64.0f;
     frame.visibilityOf = scene::LightRef{scene::LightKind::Directional, 0};
     renderer.render(scene.camera, frame);
-    const scene::RenderedVisibility v =
-        render::renderedVisibility(rhi::readTexture(device, renderer.visibilityImage()));
+    const truth::RenderedVisibility v = truth::renderedVisibility(rhi::readTexture(device, renderer.visibilityImage()));
     const shadows::DirectionalShadowPlan& plan = renderer.plan();
     const float edgeDistance = kWallHeight / std::sin(glm::radians(35.0f));
     expected = 0.982f * edgeDistance * std::tan(glm::radians(0.5f * degrees)) / std::sin(glm::radians(35.0f));

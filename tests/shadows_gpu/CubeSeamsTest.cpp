@@ -10,8 +10,8 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
-#include "penumbra/scene/RayCaster.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/truth/RayCaster.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
 #include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/TentFilter.hpp"
@@ -56,14 +56,14 @@ struct EdgeProbe {
 // Every receiving surface facing the light along a ray, nearest first, outside the room's closed objects: `rays`
 // sees both sides, the ray enters an object through a face towards the light and leaves it through one facing away,
 // and a surface it meets inside another object (the floor under a wall) is buried, no receiver.
-std::vector<scene::Hit> receiversAlong(const scene::Scene& scene, const scene::RayCaster& rays, glm::vec3 light,
+std::vector<truth::Hit> receiversAlong(const scene::Scene& scene, const truth::RayCaster& rays, glm::vec3 light,
                                        glm::vec3 direction)
 {
-    std::vector<scene::Hit> hits;
+    std::vector<truth::Hit> hits;
     std::set<std::uint32_t> inside;
     float travelled = 0.0f;
     while (const auto hit = rays.closestHit(light + direction * travelled, direction)) {
-        scene::Hit h = *hit;
+        truth::Hit h = *hit;
         h.distance += travelled;
         travelled = h.distance + 1e-3f;
         if (glm::dot(h.normal, direction) >= 0.0f) {
@@ -88,7 +88,7 @@ scene::Scene seenFromBothSides(scene::Scene scene)
 // `faceSize` texels wide) into either face; receivers paired where both rays meet the same surface.
 std::vector<EdgeProbe> edgeProbes(const scene::Scene& scene, glm::vec3 light, std::uint32_t faceSize)
 {
-    const scene::RayCaster rays(seenFromBothSides(scene), scene::RayKind::Camera);
+    const truth::RayCaster rays(seenFromBothSides(scene), truth::RayKind::Camera);
     // tan of the angle to the edge is 1 - 2 nudge: 2 nudge / (2 / faceSize) texels from it.
     const float nudge = 0.25f / float(faceSize);
     std::vector<EdgeProbe> probes;
@@ -99,7 +99,7 @@ std::vector<EdgeProbe> edgeProbes(const scene::Scene& scene, glm::vec3 light, st
                     for (int i = 0; i < kSamplesPerEdge; ++i) {
                         const float along = -1.0f + 2.0f * (float(i) + 0.5f) / float(kSamplesPerEdge);
                         glm::vec3 direction[2];
-                        std::vector<scene::Hit> hits[2];
+                        std::vector<truth::Hit> hits[2];
                         for (int side = 0; side < 2; ++side) {
                             glm::vec3 d(0.0f);
                             d[a] = sa * (side == 0 ? 1.0f + nudge : 1.0f - nudge);
@@ -111,8 +111,8 @@ std::vector<EdgeProbe> edgeProbes(const scene::Scene& scene, glm::vec3 light, st
                         const CubeFace faces[2] = {static_cast<CubeFace>(2 * a + (sa > 0.0f ? 0 : 1)),
                                                    static_cast<CubeFace>(2 * b + (sb > 0.0f ? 0 : 1))};
                         for (std::size_t k = 0; k < std::min(hits[0].size(), hits[1].size()); ++k) {
-                            const scene::Hit& h0 = hits[0][k];
-                            const scene::Hit& h1 = hits[1][k];
+                            const truth::Hit& h0 = hits[0][k];
+                            const truth::Hit& h1 = hits[1][k];
                             if (h0.object != h1.object || glm::dot(h0.normal, h1.normal) < 0.999f)
                                 break;
                             probes.push_back({{light + direction[0] * h0.distance, light + direction[1] * h1.distance},
@@ -245,7 +245,7 @@ protected:
 
     SeamFigures measure(PointShadowMode mode, const PlanFault& fault = {})
     {
-        scene::Scene scene = scene::makePointLightRoomScene();
+        scene::Scene scene = scenes::makePointLightRoomScene();
         scene.pointLights.pop_back();
         const glm::vec3 light = scene.pointLights[0].position;
         render::FrameDesc frame;

@@ -6,7 +6,7 @@
 #include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -118,7 +118,7 @@ TEST_F(DepthPrepassTest, GrazingTrianglesLoseNoSampleWithMsaa)
 }
 
 // One pixel of the 57 600 differs on vulkan and opengl (not on the reversed-Z configurations): a depth tie.
-TEST_F(DepthPrepassTest, ForestLeafCardsLoseNoPixel) { expectSamePicture(scene::makeForestScene(), "forest", 2); }
+TEST_F(DepthPrepassTest, ForestLeafCardsLoseNoPixel) { expectSamePicture(scenes::makeForestScene(), "forest", 2); }
 
 } // namespace
 } // namespace penumbra::testing

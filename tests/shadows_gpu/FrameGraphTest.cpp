@@ -7,7 +7,7 @@
 #include "penumbra/render/FrameResources.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include "graph/FrameGraph.hpp"
 #include "graph/TransientSlots.hpp"
@@ -102,7 +102,7 @@ protected:
 
 TEST_F(FrameGraphTest, ForwardFrameRunsTheAtlasesThePrepassAndTheLitPass)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
     const render::FrameStats stats = renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
     EXPECT_EQ(passNames(stats), (std::vector<std::string>{"directional atlas", "local atlas", "depth prepass", "lit"}));
@@ -114,7 +114,7 @@ TEST_F(FrameGraphTest, ForwardFrameRunsTheAtlasesThePrepassAndTheLitPass)
 
 TEST_F(FrameGraphTest, MultisampledScreenSpaceFrameResolvesAndCollects)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
     render::FrameDesc desc = litFrame(kWidth, kHeight, true, 4);
     desc.shadowPath = render::ShadowPath::ScreenSpace;
@@ -131,7 +131,7 @@ TEST_F(FrameGraphTest, MultisampledScreenSpaceFrameResolvesAndCollects)
 
 TEST_F(FrameGraphTest, ApplicationPassAfterTheLitPassReadsTheLitImage)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
     const std::unique_ptr<rhi::Texture> output = colorTexture(*device);
     renderer.addTexture("half bright image", *output);
@@ -153,7 +153,7 @@ TEST_F(FrameGraphTest, ApplicationPassAfterTheLitPassReadsTheLitImage)
 // A pass whose writes lead to no output is culled: the cascade view's image is no output of a frame without the view.
 TEST_F(FrameGraphTest, ApplicationPassWhoseWritesNobodyReadsIsCulled)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
     renderer.addPass(std::make_shared<HalfBrightPass>(*device, std::string(frame::kCascadeView)),
                      render::PassPlacement::before(std::string(frame::kCascadeViewPass)));
@@ -165,7 +165,7 @@ TEST_F(FrameGraphTest, ApplicationPassWhoseWritesNobodyReadsIsCulled)
 
 TEST_F(FrameGraphTest, PlacementNamingNoPassIsRefused)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
     try {
         renderer.addPass(std::make_shared<HalfBrightPass>(*device, "out"), render::PassPlacement::after("fog"));
@@ -179,7 +179,7 @@ TEST_F(FrameGraphTest, PlacementNamingNoPassIsRefused)
 
 TEST_F(FrameGraphTest, UnknownTextureIsRefusedNamingThePass)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
     renderer.addPass(std::make_shared<HalfBrightPass>(*device, "nowhere"),
                      render::PassPlacement::after(std::string(frame::kLitPass)));
@@ -197,7 +197,7 @@ TEST_F(FrameGraphTest, UnknownTextureIsRefusedNamingThePass)
 // The pass declares the lit depth but binds the lit image.
 TEST_F(FrameGraphTest, UndeclaredTextureIsRefused)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
+    const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
     const std::unique_ptr<rhi::Texture> output = colorTexture(*device);
     renderer.addTexture("half bright image", *output);

@@ -8,7 +8,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -26,7 +26,7 @@ constexpr std::uint32_t kPanes = 6;
 // each row one mesh and one material, and a spot and a point light among them.
 scene::Scene repeatedScene(scene::NormalBiasSide side)
 {
-    scene::Scene scene = scene::makeCubeGridScene(kCubes);
+    scene::Scene scene = scenes::makeCubeGridScene(kCubes);
     const std::uint32_t card = scene.addMesh(scene::makePlane(0.7f));
     const std::uint32_t cards = scene.addMaterial({.name = "cards",
                                                    .baseColor = {0.3f, 0.6f, 0.3f, 1.0f},
@@ -35,7 +35,7 @@ scene::Scene repeatedScene(scene::NormalBiasSide side)
     const std::uint32_t pane = scene.addMesh(scene::makeBox({0.5f, 0.5f, 0.05f}));
     const std::uint32_t glass =
         scene.addMaterial({.name = "glass", .baseColor = {0.4f, 0.5f, 0.9f, 0.5f}, .blend = true});
-    const float edge = 0.5f * scene::kCubeGridPitch * 20.0f;
+    const float edge = 0.5f * scenes::kCubeGridPitch * 20.0f;
     for (std::uint32_t i = 0; i < kCards; ++i) {
         // Stood upright, each turned a little further about y.
         const glm::mat4 placed =

@@ -3,8 +3,8 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
-#include "penumbra/scene/GroundTruth.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -44,7 +44,7 @@ double differingShare(const rhi::Image& a, const rhi::Image& b, int tolerance)
 
 TEST_F(LightsAndAtlasTest, LightsBeyondTheLimitAndWithoutStrengthAreLitWithoutShadowsAndReported)
 {
-    scene::Scene scene = scene::makeShadowTestScene();
+    scene::Scene scene = scenes::makeShadowTestScene();
     scene.lights[1].shadowStrength = 0.0f;
     for (int extra = 0; extra < 6; ++extra) { // 10 lights: 8 drawn, 2 beyond the lit pass's limit
         scene::DirectionalLight light = scene.lights[0];
@@ -65,7 +65,7 @@ TEST_F(LightsAndAtlasTest, LightsBeyondTheLimitAndWithoutStrengthAreLitWithoutSh
 
 TEST_F(LightsAndAtlasTest, SixteenBitAndTwentyFourBitAtlasesShadowLikeThirtyTwoBitFloat)
 {
-    const scene::Scene scene = scene::makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     render::SceneRenderer renderer(*device, scene);
     render::FrameDesc frame = smallFrame();
     renderer.render(scene.camera, frame);
@@ -85,7 +85,7 @@ TEST_F(LightsAndAtlasTest, SixteenBitAndTwentyFourBitAtlasesShadowLikeThirtyTwoB
 
 TEST_F(LightsAndAtlasTest, SettingsOutOfRangeAreRejectedNamingTheField)
 {
-    const scene::Scene scene = scene::makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     render::SceneRenderer renderer(*device, scene);
     render::FrameDesc frame = smallFrame();
     frame.shadows.directional.atlasSize = 300;
@@ -99,7 +99,7 @@ TEST_F(LightsAndAtlasTest, SettingsOutOfRangeAreRejectedNamingTheField)
 
 TEST_F(LightsAndAtlasTest, ShadowsDarkenTheKeyLightsShadowAndNotReceivingKeepsItLit)
 {
-    scene::Scene scene = scene::makeSingleLightScene();
+    scene::Scene scene = scenes::makeSingleLightScene();
     const rhi::Image shadowed = renderLit(*device, scene, smallFrame());
     const rhi::Image unshadowed = renderLit(*device, withoutShadows(scene), smallFrame());
     const double share = differingShare(shadowed, unshadowed, 8);
@@ -109,8 +109,8 @@ TEST_F(LightsAndAtlasTest, ShadowsDarkenTheKeyLightsShadowAndNotReceivingKeepsIt
     // The pillar that does not receive stands in the floating cube's shadow: it must look as it does with shadows
     // off, and darken once it receives (so the first check could fail).
     const std::uint32_t pillar = *scene.findObject("unshadowed pillar");
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, 320, 180);
+    const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
+    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, 320, 180);
     scene.materials[scene.objects[pillar].material].receiveShadows = true;
     const rhi::Image receiving = renderLit(*device, scene, smallFrame());
     std::size_t pixels = 0, changed = 0, darkened = 0;

@@ -4,7 +4,7 @@
 #include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
 
@@ -48,7 +48,7 @@ float maxLuminance(const rhi::Image& image)
 // The room with its inside light only.
 scene::Scene roomLitFromInside()
 {
-    scene::Scene scene = scene::makePointLightRoomScene();
+    scene::Scene scene = scenes::makePointLightRoomScene();
     scene.pointLights.pop_back();
     return scene;
 }
@@ -109,7 +109,7 @@ TEST_F(LocalShadowsTest, PointFacesStoreTheLightFacingSideOfACaster)
 TEST_F(LocalShadowsTest, NoLightLeaksThroughAWallNextToAPointLight)
 {
     // Only the light outside the +z wall: everything the camera sees is inside the room and in its shadow.
-    scene::Scene scene = scene::makePointLightRoomScene();
+    scene::Scene scene = scenes::makePointLightRoomScene();
     scene.pointLights.erase(scene.pointLights.begin());
     const float leaked = maxLuminance(renderLit(scene, frame()));
     const float unshadowed = maxLuminance(renderLit(withoutShadows(scene), frame()));
@@ -121,7 +121,7 @@ TEST_F(LocalShadowsTest, NoLightLeaksThroughAWallNextToAPointLight)
 
 TEST_F(LocalShadowsTest, LightsBeyondTheTileBudgetAreLitWithoutShadowsAndReported)
 {
-    scene::Scene scene = scene::makeMixedLightsScene();
+    scene::Scene scene = scenes::makeMixedLightsScene();
     scene.pointLights.push_back({.name = "third bulb", .position = {4.0f, 2.0f, 6.0f}});
     render::SceneRenderer renderer(*device, scene);
     const render::FrameStats stats = renderer.render(scene.camera, frame());

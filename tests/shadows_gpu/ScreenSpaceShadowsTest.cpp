@@ -7,7 +7,7 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -148,30 +148,30 @@ TEST_F(ScreenSpaceShadowsTest, NeedsTheDepthPrepass)
 
 TEST_F(ScreenSpaceShadowsTest, SameLitImageAsForwardOnTheTestScene)
 {
-    EXPECT_LE(pathDifference(scene::makeShadowTestScene(), "test"), kMostDiffering);
+    EXPECT_LE(pathDifference(scenes::makeShadowTestScene(), "test"), kMostDiffering);
 }
 
 TEST_F(ScreenSpaceShadowsTest, SameLitImageAsForwardOnTheMixedScene)
 {
-    EXPECT_LE(pathDifference(scene::makeMixedLightsScene(), "mixed"), kMostDiffering);
+    EXPECT_LE(pathDifference(scenes::makeMixedLightsScene(), "mixed"), kMostDiffering);
 }
 
 // PCSS with a 10 degree sun: the soft filters' receiver plane comes from the prepass's derivatives.
 TEST_F(ScreenSpaceShadowsTest, SameLitImageAsForwardOnTheContactScene)
 {
-    EXPECT_LE(pathDifference(scene::makeContactScene(), "contact"), kMostDiffering);
+    EXPECT_LE(pathDifference(scenes::makeContactScene(), "contact"), kMostDiffering);
 }
 
 TEST_F(ScreenSpaceShadowsTest, SameLitImageAsForwardInTheForest)
 {
-    EXPECT_LE(pathDifference(scene::makeForestScene(), "forest"), kMostDiffering);
+    EXPECT_LE(pathDifference(scenes::makeForestScene(), "forest"), kMostDiffering);
 }
 
 // 4x MSAA over the test scene's silhouettes against shadowed ground: a per-pixel collection gives edge pixels the
 // shadow of the surface behind; the edge fallback evaluates them forward (README, "Screen-space shadows and MSAA").
 TEST_F(ScreenSpaceShadowsTest, MsaaEdgesKeepTheirOwnShadow)
 {
-    EXPECT_LE(pathDifference(scene::makeShadowTestScene(), "test-msaa4", 4), kMostDiffering);
+    EXPECT_LE(pathDifference(scenes::makeShadowTestScene(), "test-msaa4", 4), kMostDiffering);
 }
 
 } // namespace

@@ -1,14 +1,14 @@
 // The GPU shadow masks of the key light, a spot light and point lights against a CPU ray cast of the same
-// pixels (scene::GroundTruth).
+// pixels (truth::GroundTruth).
 #include "GpuTesting.hpp"
 #include "LitRendering.hpp"
 #include "ShadowFaults.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/render/ShadowTruth.hpp"
-#include "penumbra/scene/GroundTruth.hpp"
-#include "penumbra/scene/TestScenes.hpp"
-#include "penumbra/scene/TruthComparison.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
+#include "penumbra/truth/TruthComparison.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +31,7 @@ constexpr double kClassBound = 0.995;
 
 using scene::LightKind;
 using scene::LightRef;
-using TruthFigures = scene::TruthComparison;
+using TruthFigures = truth::TruthComparison;
 constexpr LightRef kKeyLight{LightKind::Directional, 0};
 
 render::FrameDesc maskFrame(const shadows::ShadowSettings& settings, std::uint32_t width, std::uint32_t height,
@@ -48,11 +48,11 @@ render::FrameDesc maskFrame(const shadows::ShadowSettings& settings, std::uint32
 // The renderer's visibility view of one light: its filtered shadow map, and where that decides a pixel.
 struct ShadowMask {
     rhi::Image picture;
-    scene::RenderedVisibility visibility;
+    truth::RenderedVisibility visibility;
 
     bool inShadow(std::uint32_t x, std::uint32_t y) const
     {
-        return visibility.lit[std::size_t(y) * visibility.width + x] < scene::kShadowedBelow;
+        return visibility.lit[std::size_t(y) * visibility.width + x] < truth::kShadowedBelow;
     }
 };
 
@@ -68,18 +68,18 @@ public:
         render::SceneRenderer renderer(*device, rendered);
         renderer.render(rendered.camera, frame, fault(renderer.planShadows(rendered.camera, frame)));
         rhi::Image picture = rhi::readTexture(*device, renderer.visibilityImage());
-        scene::RenderedVisibility visibility = render::renderedVisibility(picture);
+        truth::RenderedVisibility visibility = truth::renderedVisibility(picture);
         return {std::move(picture), std::move(visibility)};
     }
 };
 
-bool nearLitPixel(const scene::LightVisibilityMask& truth, std::uint32_t x, std::uint32_t y)
+bool nearLitPixel(const truth::LightVisibilityMask& truth, std::uint32_t x, std::uint32_t y)
 {
-    for (int dy = -scene::kTruthEdgeMargin; dy <= scene::kTruthEdgeMargin; ++dy)
-        for (int dx = -scene::kTruthEdgeMargin; dx <= scene::kTruthEdgeMargin; ++dx) {
+    for (int dy = -truth::kTruthEdgeMargin; dy <= truth::kTruthEdgeMargin; ++dy)
+        for (int dx = -truth::kTruthEdgeMargin; dx <= truth::kTruthEdgeMargin; ++dx) {
             const int nx = int(x) + dx, ny = int(y) + dy;
             if (nx >= 0 && ny >= 0 && nx < int(truth.width) && ny < int(truth.height) &&
-                truth.at(nx, ny) == scene::LightVisibility::Lit)
+                truth.at(nx, ny) == truth::LightVisibility::Lit)
                 return true;
         }
     return false;
@@ -92,7 +92,7 @@ float footprintDistance(glm::vec3 p, glm::vec2 min, glm::vec2 max)
     return glm::length(glm::max(glm::max(min - q, q - max), glm::vec2(0.0f)));
 }
 
-std::string describe(const scene::TruthClassFigures& c)
+std::string describe(const truth::TruthClassFigures& c)
 {
     return fmt::format("{} of {} right ({:.3f}%), left out: {} near edges, {} undecided by the shadow map", c.right,
                        c.compared, 100.0 * c.share(), c.nearEdges, c.undecided);
@@ -146,7 +146,7 @@ std::string joined(const std::vector<std::string>& lines)
 // The mixed scene with one spot or point light kept, brightened to decide most of what it reaches.
 scene::Scene oneLocalLight(bool spot, std::size_t index)
 {
-    scene::Scene scene = scene::makeMixedLightsScene();
+    scene::Scene scene = scenes::makeMixedLightsScene();
     scene.lights.clear();
     if (spot) {
         scene.spotLights = {scene.spotLights[index]};
@@ -163,25 +163,25 @@ scene::Scene oneLocalLight(bool spot, std::size_t index)
 // The ray-cast reference of a scene from its camera: what each pixel shows, whether it sees the light, where its
 // shadow edges are at the resolution of the scene's own shadow plans, and the rays that confirm disagreements.
 struct Truth {
-    scene::CpuGBuffer gbuffer;
-    render::LightTruthTrace trace;
-    scene::RayCaster shadowRays;
+    truth::CpuGBuffer gbuffer;
+    truth::LightTruthTrace trace;
+    truth::RayCaster shadowRays;
 };
 
 Truth traceTruth(rhi::Device& device, const scene::Scene& scene, const render::FrameDesc& frame)
 {
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    scene::RayCaster shadowRays(scene);
+    const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
+    truth::RayCaster shadowRays(scene);
     const render::ShadowPlans plans = render::SceneRenderer(device, scene).planShadows(scene.camera, frame);
-    scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, frame.width, frame.height);
-    render::LightTruthTrace trace =
-        render::traceLightTruth(scene, shadowRays, gbuffer, plans, frame.shadows, *frame.visibilityOf);
+    truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, frame.width, frame.height);
+    truth::LightTruthTrace trace =
+        truth::traceLightTruth(scene, shadowRays, gbuffer, plans, frame.shadows, *frame.visibilityOf);
     return Truth{std::move(gbuffer), std::move(trace), std::move(shadowRays)};
 }
 
 TruthFigures report(ShadowMaskTest& test, const std::string& name, const ShadowMask& mask, const Truth& truth)
 {
-    const TruthFigures f = render::compareLightTruth(truth.trace, truth.shadowRays, truth.gbuffer, mask.visibility);
+    const TruthFigures f = truth::compareLightTruth(truth.trace, truth.shadowRays, truth.gbuffer, mask.visibility);
     std::printf("[ truth    ] %s %s: %s\n", configuration().c_str(), name.c_str(), describe(f).c_str());
     test.RecordProperty(name + ".litAgreement", std::to_string(f.lit.share()));
     test.RecordProperty(name + ".shadowedAgreement", std::to_string(f.shadowed.share()));
@@ -214,7 +214,7 @@ TEST_F(ShadowMaskTest, SpotShadowAgreesWithTheRayCast)
 
 scene::Scene roomLitFromInside()
 {
-    scene::Scene room = scene::makePointLightRoomScene();
+    scene::Scene room = scenes::makePointLightRoomScene();
     room.pointLights.pop_back();
     return room;
 }
@@ -234,13 +234,13 @@ TEST_F(ShadowMaskTest, PointShadowsAgreeWithTheRayCast)
 // The key light's scene, the sun `pitchDegrees` above the horizon (the scene's own: 50).
 scene::Scene keyLightScene(float pitchDegrees = 50.0f)
 {
-    scene::Scene scene = scene::makeSingleLightScene();
+    scene::Scene scene = scenes::makeSingleLightScene();
     scene.lights[0].direction = scene::lightDirection(glm::radians(pitchDegrees), glm::radians(30.0f));
     return scene;
 }
 
 // The sun of LowSunAgreesWithTheRayCast and of the controls: long shadows and grazing light on every upright face.
-// Shadow edges are measured in the light's texels (render::traceLightTruth), so a low sun, whose shadow texels
+// Shadow edges are measured in the light's texels (truth::traceLightTruth), so a low sun, whose shadow texels
 // stretch over many pixels, is judged by the same bound as a high one.
 constexpr float kLowSunPitchDegrees = 20.0f;
 
@@ -260,8 +260,8 @@ ContactFigures contactGaps(const scene::Scene& scene, const ShadowMask& mask, co
     ContactFigures c;
     for (std::uint32_t y = 0; y < truth.trace.visibility.height; ++y)
         for (std::uint32_t x = 0; x < truth.trace.visibility.width; ++x) {
-            const scene::GBufferSample& sample = truth.gbuffer.at(x, y);
-            if (sample.object != ground || truth.trace.visibility.at(x, y) != scene::LightVisibility::Shadowed ||
+            const truth::GBufferSample& sample = truth.gbuffer.at(x, y);
+            if (sample.object != ground || truth.trace.visibility.at(x, y) != truth::LightVisibility::Shadowed ||
                 !mask.visibility.decided[std::size_t(y) * truth.trace.visibility.width + x] ||
                 nearLitPixel(truth.trace.visibility, x, y))
                 continue;
@@ -329,7 +329,7 @@ TEST_F(ShadowMaskTest, LowSunAgreesWithTheRayCast)
 // 100% with every filter, shadowed 99.75% (hard) to 100%, no acne.
 TEST_F(ShadowMaskTest, ForestAgreesWithTheRayCastWithEveryFilter)
 {
-    const scene::Scene scene = scene::makeForestScene();
+    const scene::Scene scene = scenes::makeForestScene();
     for (const shadows::ShadowFilterInfo& filter : shadows::shadowFilters()) {
         shadows::ShadowSettings settings;
         settings.directional.filter = filter.filter;
@@ -347,7 +347,7 @@ TEST_F(ShadowMaskTest, ForestAgreesWithTheRayCastWithEveryFilter)
 // shadowed pixels are left to judge.
 TEST_F(ShadowMaskTest, ALightsOwnFilterIsJudgedWithItsReach)
 {
-    scene::Scene scene = scene::makeContactScene();
+    scene::Scene scene = scenes::makeContactScene();
     scene.lights[0].shadowFilter = static_cast<std::int32_t>(shadows::ShadowFilter::PCF7x7);
     const render::FrameDesc frame = maskFrame({}, 1280, 720, kKeyLight);
     const TruthFigures f = report(*this, "contact pcf7", renderMask(scene, frame), traceTruth(gpu(), scene, frame));
@@ -400,18 +400,18 @@ TEST_F(ShadowMaskTest, MissingCasterCatchesFault)
             measureKeyLight(*this, "without " + caster.name, broken, scene, truth, 1000, kClassBound);
         std::size_t exclusive = 0, reported = 0;
         for (std::size_t i = 0; i < brokenTruth.trace.visibility.pixels.size(); ++i) {
-            const scene::TruthVerdict v = k.truth.verdicts[i];
-            if ((v == scene::TruthVerdict::ShadowedRight || v == scene::TruthVerdict::Leak) &&
-                brokenTruth.trace.visibility.pixels[i] == scene::LightVisibility::Lit &&
+            const truth::TruthVerdict v = k.truth.verdicts[i];
+            if ((v == truth::TruthVerdict::ShadowedRight || v == truth::TruthVerdict::Leak) &&
+                brokenTruth.trace.visibility.pixels[i] == truth::LightVisibility::Lit &&
                 !brokenTruth.trace.shadowEdges[i]) {
                 ++exclusive;
-                reported += v == scene::TruthVerdict::Leak;
+                reported += v == truth::TruthVerdict::Leak;
             }
         }
         const std::uint32_t index = *scene.findObject(caster.name);
         const auto own = k.truth.shadowedBy.find(index);
-        const scene::TruthClassFigures figures =
-            own == k.truth.shadowedBy.end() ? scene::TruthClassFigures{} : own->second;
+        const truth::TruthClassFigures figures =
+            own == k.truth.shadowedBy.end() ? truth::TruthClassFigures{} : own->second;
         std::printf("[ caster   ] %s: %zu compared pixels in its own shadow, %zu reported as leaks; of the %zu it is "
                     "nearest to, %.1f%% right\n",
                     caster.name.c_str(), exclusive, reported, figures.compared, 100.0 * figures.share());

@@ -1,15 +1,15 @@
-// Soft shadows against a ray-traced area light (scene::AreaLightTruth) on the contact scene: PCSS beats every fixed
+// Soft shadows against a ray-traced area light (truth::AreaLightTruth) on the contact scene: PCSS beats every fixed
 // filter, its penumbrae widen away from the pole's foot as the true ones do, nothing leaks at the contact; a frame
 // of hard and soft lights; stability under sub-texel camera moves; cube maps against atlas tiles.
 #include "GpuTesting.hpp"
 #include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
-#include "penumbra/render/ShadowTruth.hpp"
-#include "penumbra/render/SoftShadowTruth.hpp"
-#include "penumbra/scene/AreaLightTruth.hpp"
-#include "penumbra/scene/RayCaster.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
+#include "penumbra/truth/SoftShadowTruth.hpp"
+#include "penumbra/truth/AreaLightTruth.hpp"
+#include "penumbra/truth/RayCaster.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +37,7 @@ constexpr double kPcssOverBestFixed = 0.5;
 // left of the pole, so every shadow still runs along +x from the pole's foot.
 scene::Scene contactScene(LightKind kind, ShadowFilter filter)
 {
-    scene::Scene scene = scene::makeContactScene();
+    scene::Scene scene = scenes::makeContactScene();
     const auto value = static_cast<std::int32_t>(filter);
     if (kind == LightKind::Directional) {
         scene.lights[0].shadowFilter = value;
@@ -85,12 +85,12 @@ render::FrameDesc softFrame(LightRef light, std::uint32_t samples = 16)
 class SoftShadowsTest : public GpuTest {
 public:
     // The area light's ray cast of the scene's pixels (256 rays each).
-    static scene::SoftVisibilityMap truth(const scene::Scene& scene, LightRef light)
+    static truth::SoftVisibilityMap truth(const scene::Scene& scene, LightRef light)
     {
-        const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-        const scene::RayCaster shadowRays(scene);
-        const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kSize, kSize);
-        return scene::traceAreaLightVisibility(scene, shadowRays, gbuffer, render::areaLightOf(scene, light));
+        const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
+        const truth::RayCaster shadowRays(scene);
+        const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kSize, kSize);
+        return truth::traceAreaLightVisibility(scene, shadowRays, gbuffer, truth::areaLightOf(scene, light));
     }
 };
 
@@ -176,8 +176,8 @@ BestRadius bestPoissonRadius(ErrorAt errorAt)
 struct AreaLightFigures {
     double pcss = 0.0;
     double bestFixed = 0.0;
-    scene::SoftVisibilityMap truth;
-    scene::RenderedVisibility pcssVisibility;
+    truth::SoftVisibilityMap truth;
+    truth::RenderedVisibility pcssVisibility;
 };
 
 AreaLightFigures checkAgainstTheAreaLight(rhi::Device& device, LightKind kind, std::uint32_t samples = 16)
@@ -190,16 +190,16 @@ AreaLightFigures checkAgainstTheAreaLight(rhi::Device& device, LightKind kind, s
         render::FrameDesc frame = softFrame(light, samples);
         frame.shadows.soft.poissonRadiusTexels = poissonRadius;
         renderer.render(scene.camera, frame);
-        return render::renderedVisibility(rhi::readTexture(device, renderer.visibilityImage()));
+        return truth::renderedVisibility(rhi::readTexture(device, renderer.visibilityImage()));
     };
     AreaLightFigures figures;
     figures.truth = SoftShadowsTest::truth(scene, light);
     figures.pcssVisibility = rendered(ShadowFilter::PCSS, 2.5f);
-    const scene::SoftTruthFigures pcss = scene::compareSoftVisibility(figures.truth, figures.pcssVisibility);
+    const truth::SoftTruthFigures pcss = truth::compareSoftVisibility(figures.truth, figures.pcssVisibility);
     figures.pcss = pcss.meanAbsError;
-    figures.bestFixed = scene::compareSoftVisibility(figures.truth, rendered(ShadowFilter::PCF7x7, 2.5f)).meanAbsError;
+    figures.bestFixed = truth::compareSoftVisibility(figures.truth, rendered(ShadowFilter::PCF7x7, 2.5f)).meanAbsError;
     const BestRadius poisson = bestPoissonRadius([&](float radius) {
-        return scene::compareSoftVisibility(figures.truth, rendered(ShadowFilter::Poisson, radius)).meanAbsError;
+        return truth::compareSoftVisibility(figures.truth, rendered(ShadowFilter::Poisson, radius)).meanAbsError;
     });
     const std::string fixed = fmt::format("pcf7 {:.4f}, poisson at its best radius {:.2f}: {:.4f}", figures.bestFixed,
                                           poisson.radius, poisson.error);
@@ -223,7 +223,7 @@ TEST_F(SoftShadowsTest, DirectionalPcssAgainstTheAreaLight)
 {
     const AreaLightFigures figures = checkAgainstTheAreaLight(*device, LightKind::Directional);
     // Contact hardening: the pole's point at height h shadows the ground at x = h, its penumbra widening with h.
-    const scene::Camera camera = scene::makeContactScene().camera;
+    const scene::Camera camera = scenes::makeContactScene().camera;
     const std::uint32_t firstRow = pixelOf(*device, camera, kSize, kSize, {1.0f, 0.0f, -0.9f}).y;
     const std::uint32_t lastRow = pixelOf(*device, camera, kSize, kSize, {1.0f, 0.0f, 0.9f}).y;
     std::vector<int> widths;
@@ -255,7 +255,7 @@ TEST_F(SoftShadowsTest, SpotPcssAgainstTheAreaLight) { checkAgainstTheAreaLight(
 TEST_F(SoftShadowsTest, PointPcssAgainstTheAreaLight) { checkAgainstTheAreaLight(*device, LightKind::Point); }
 
 // Share of decided pixels strictly between lit and shadowed.
-double softShare(const scene::RenderedVisibility& v)
+double softShare(const truth::RenderedVisibility& v)
 {
     std::size_t soft = 0, decided = 0;
     for (std::size_t i = 0; i < v.lit.size(); ++i) {
@@ -290,7 +290,7 @@ TEST_F(SoftShadowsTest, HardTentPoissonAndPcssLightsShareOneFrame)
     render::SceneRenderer renderer(*device, scene);
     const auto share = [&](LightRef light) {
         renderer.render(scene.camera, softFrame(light));
-        return softShare(render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage())));
+        return softShare(truth::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage())));
     };
     const double pcssShare = share({LightKind::Directional, 0});
     const double hardShare = share({LightKind::Directional, 1});
@@ -344,14 +344,14 @@ TEST_F(SoftShadowsTest, CubeMapsAgreeWithAtlasTiles)
     render::FrameDesc frame = softFrame(light);
     render::SceneRenderer renderer(*device, scene);
     renderer.render(scene.camera, frame);
-    const scene::RenderedVisibility atlas =
-        render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
+    const truth::RenderedVisibility atlas =
+        truth::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
     // Cube faces a little finer than the atlas's six 682-texel tiles (a 2048 atlas split in 3 x 3).
     frame.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
     frame.shadows.local.cubeMapSize = 1024;
     renderer.render(scene.camera, frame);
-    const scene::RenderedVisibility cube =
-        render::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
+    const truth::RenderedVisibility cube =
+        truth::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
     double difference = 0.0;
     std::size_t compared = 0;
     for (std::size_t i = 0; i < atlas.lit.size(); ++i)

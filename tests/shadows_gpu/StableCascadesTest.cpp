@@ -6,7 +6,7 @@
 
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -132,7 +132,7 @@ protected:
     std::vector<ShimmerFigures> measure(Fit fit,
                                         shadows::CascadeProjection projection = shadows::CascadeProjection::Stable)
     {
-        const scene::Scene scene = scene::makeSingleLightScene();
+        const scene::Scene scene = scenes::makeSingleLightScene();
         render::SceneRenderer renderer(*device, scene);
         const ShadowFrame before = render(renderer, scene.camera, fit, projection);
         const float texel = before.plan.lights.at(0).cascades.at(0).fit.texelSize;
@@ -206,7 +206,7 @@ TEST_F(StableCascadesTest, MissingTexelSnapCatchesFault)
 // rounding, which the soft filters' texel-rounded blocker searches can turn into changed pixels.
 TEST_F(StableCascadesTest, TilesWhoseSnapStaysHoldTheSameDepthsToTheBit)
 {
-    const scene::Scene scene = scene::makeSingleLightScene();
+    const scene::Scene scene = scenes::makeSingleLightScene();
     render::SceneRenderer renderer(*device, scene);
     const ShadowFrame before = render(renderer, scene.camera, Fit::Snapped, shadows::CascadeProjection::Stable);
     std::size_t tilesCompared = 0;

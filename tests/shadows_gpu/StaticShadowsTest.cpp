@@ -5,11 +5,11 @@
 #include "LitRendering.hpp"
 #include "StaticShadowScenes.hpp"
 
-#include "penumbra/render/ShadowTruth.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/StaticShadowBake.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +54,7 @@ protected:
 
 TEST_F(StaticShadowsTest, StaticMapsAreDrawnOnceWhileTheDynamicBallMoves)
 {
-    scene::Scene scene = scene::makeTownScene();
+    scene::Scene scene = scenes::makeTownScene();
     const render::FrameDesc frame = staticMapsFrame();
     render::SceneRenderer cached(*device, scene);
     // A renderer asked to draw every map afresh each frame, for the same scene: what the kept maps must give.
@@ -83,7 +83,7 @@ TEST_F(StaticShadowsTest, StaticMapsAreDrawnOnceWhileTheDynamicBallMoves)
 
 TEST_F(StaticShadowsTest, RealtimeDynamicCastersOnlyGiveTheSamePictureWhenNothingMoves)
 {
-    const scene::Scene scene = scene::makeTownScene();
+    const scene::Scene scene = scenes::makeTownScene();
     render::FrameDesc frame = staticMapsFrame();
     render::SceneRenderer renderer(*device, scene);
     const render::FrameStats allStats = renderer.render(scene.camera, frame);
@@ -288,8 +288,8 @@ TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
     const rhi::Image none = lit(0.0f);
     const rhi::Image full = lit(1.0f);
     const rhi::Image half = lit(0.5f);
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
+    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
     double worst = 0.0;
     std::size_t shadowed = 0;
     std::size_t shadowedBeyond = 0; // past the start of the distance fade: the static map's share grows to all
@@ -303,9 +303,9 @@ TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
             worst = std::max(worst, std::abs(m - 0.5 * (a + b)) / std::max(slack, 1e-6));
             const bool inShadow = c == 0 && a - b > 0.05;
             shadowed += inShadow ? 1 : 0;
-            const scene::GBufferSample& sample =
+            const truth::GBufferSample& sample =
                 gbuffer.at(std::uint32_t(i / 4 % kWidth), std::uint32_t(i / 4 / kWidth));
-            shadowedBeyond += inShadow && sample.object != scene::kNoObject &&
+            shadowedBeyond += inShadow && sample.object != truth::kNoObject &&
                                       sample.viewDepth > frame.shadows.maxDistance * (1.0f - frame.shadows.distanceFade)
                                   ? 1
                                   : 0;
@@ -323,13 +323,13 @@ TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
 // the shadowed ones; with static maps it agrees with the ray cast, without them nothing decides.
 TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowAsTheRayCastDoes)
 {
-    const scene::Scene scene = scene::makeTownScene();
+    const scene::Scene scene = scenes::makeTownScene();
     render::FrameDesc frame = staticMapsFrame();
     frame.shadows.maxDistance = 40.0f;
     const scene::LightRef sun{scene::LightKind::Directional, 0};
     frame.visibilityOf = sun;
-    const scene::RayCaster cameraRays(scene, scene::RayKind::Camera);
-    const scene::CpuGBuffer gbuffer = scene::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
+    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
     render::SceneRenderer renderer(*device, scene);
     struct FarShadow {
         std::size_t decided = 0;
@@ -340,7 +340,7 @@ TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowA
     const auto far = [&](std::uint32_t x, std::uint32_t y) {
         for (std::uint32_t v = std::max(y, 1u) - 1; v <= std::min(y + 1, kHeight - 1); ++v)
             for (std::uint32_t u = std::max(x, 1u) - 1; u <= std::min(x + 1, kWidth - 1); ++u)
-                if (gbuffer.at(u, v).object == scene::kNoObject || gbuffer.at(u, v).viewDepth < 50.0f)
+                if (gbuffer.at(u, v).object == truth::kNoObject || gbuffer.at(u, v).viewDepth < 50.0f)
                     return false;
         return true;
     };
@@ -362,12 +362,12 @@ TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowA
     const FarShadow cached = farShadow(cachedView);
     EXPECT_GT(cached.decided, std::size_t(kWidth) * kHeight / 10);
     EXPECT_GT(cached.shadowed, cached.decided / 10) << "the buildings' far shadows";
-    const scene::RayCaster shadowRays(scene);
-    const render::LightTruthTrace truth =
-        render::traceLightTruth(scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows,
-                                sun);
-    const scene::TruthComparison f =
-        render::compareLightTruth(truth, shadowRays, gbuffer, render::renderedVisibility(cachedView));
+    const truth::RayCaster shadowRays(scene);
+    const truth::LightTruthTrace truth =
+        truth::traceLightTruth(scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows,
+                               sun);
+    const truth::TruthComparison f =
+        truth::compareLightTruth(truth, shadowRays, gbuffer, truth::renderedVisibility(cachedView));
     std::printf("[ truth    ] %s town with static maps: lit %zu of %zu right, shadowed %zu of %zu right\n",
                 configuration().c_str(), f.lit.right, f.lit.compared, f.shadowed.right, f.shadowed.compared);
     EXPECT_GE(f.lit.share(), 0.99);

@@ -7,7 +7,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/MeshGenerators.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -61,7 +61,7 @@ void addCubesOutOfView(scene::Scene& scene, std::uint32_t mesh, std::uint32_t ma
 
 TEST_F(ViewCullingTest, ObjectsOutOfViewAreNotDrawnAndChangeNothing)
 {
-    const scene::Scene plain = scene::makeShadowTestScene();
+    const scene::Scene plain = scenes::makeShadowTestScene();
     scene::Scene crowded = plain;
     const std::uint32_t cube = crowded.addMesh(scene::makeBox({0.5f, 0.5f, 0.5f}));
     const std::uint32_t red = crowded.addMaterial({.name = "red", .baseColor = {0.9f, 0.1f, 0.1f, 1.0f}});
@@ -76,7 +76,7 @@ TEST_F(ViewCullingTest, ObjectsOutOfViewAreNotDrawnAndChangeNothing)
 
 TEST_F(ViewCullingTest, AnObjectReachingIntoTheViewIsDrawn)
 {
-    scene::Scene scene = scene::makeShadowTestScene();
+    scene::Scene scene = scenes::makeShadowTestScene();
     const Drawn expected = draw(scene);
     // A long bar whose centre lies far to the right of the view, its left end across the middle of the picture.
     const scene::Camera& camera = scene.camera;

@@ -6,8 +6,8 @@
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Shader.hpp"
-#include "penumbra/scene/GroundTruth.hpp"
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/truth/GroundTruth.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <fmt/format.h>
@@ -32,7 +32,7 @@ ThreadResult renderOnThisThread(const std::string& configuration)
     ThreadResult result{.configuration = configuration};
     try {
         const std::unique_ptr<rhi::Device> device = createValidatedDevice(configuration);
-        const scene::Scene scene = scene::makeMixedLightsScene();
+        const scene::Scene scene = scenes::makeMixedLightsScene();
         result.lit = renderLit(*device, scene, litFrame(160, 90, true, 1));
         for (const std::string& message : device->debugMessages())
             result.failure += "\n  debug message: " + message;
@@ -107,16 +107,16 @@ TEST(DevicesOnThreads, ShaderCompilationFromManyThreadsGivesTheSameSpirv)
         }
 }
 
-// scene::traceGBuffer runs rows on every hardware thread and reports progress on the calling thread only.
+// truth::traceGBuffer runs rows on every hardware thread and reports progress on the calling thread only.
 TEST(DevicesOnThreads, RayCasterReportsProgressOnTheCallingThreadOnly)
 {
-    const scene::Scene scene = scene::makeShadowTestScene();
-    const scene::RayCaster rays(scene, scene::RayKind::Camera);
+    const scene::Scene scene = scenes::makeShadowTestScene();
+    const truth::RayCaster rays(scene, truth::RayKind::Camera);
     const std::thread::id caller = std::this_thread::get_id();
     int elsewhere = 0;
     std::uint32_t finished = 0;
-    const scene::CpuGBuffer gbuffer =
-        scene::traceGBuffer(scene, rays, scene.camera, 64, 36, [&](std::uint32_t done, std::uint32_t rows) {
+    const truth::CpuGBuffer gbuffer =
+        truth::traceGBuffer(scene, rays, scene.camera, 64, 36, [&](std::uint32_t done, std::uint32_t rows) {
             // Counted without a lock on purpose: a call from another thread is a data race ThreadSanitizer reports.
             if (std::this_thread::get_id() != caller)
                 ++elsewhere;

@@ -1,6 +1,6 @@
 #include "CameraController.hpp"
 
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <cmath>
 #include <glm/geometric.hpp>

@@ -1,6 +1,6 @@
 #include "ViewState.hpp"
 
-#include "penumbra/scene/TestScenes.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@ namespace penumbra::viewer {
 namespace {
 
 struct Fixture {
-    scene::Scene scene = scene::makeShadowTestScene();
+    scene::Scene scene = scenes::makeShadowTestScene();
     ViewState applied;
     Fixture() { applied.lights = scene.lights; }
 };
@@ -28,7 +28,7 @@ TEST(ViewStateTest, AValidEditIsAppliedToTheStateAndTheSceneWithDirectionsNormal
 
 TEST(ViewStateTest, ObjectShadowChoicesReachTheScene)
 {
-    scene::Scene scene = scene::makeShadowTestScene();
+    scene::Scene scene = scenes::makeShadowTestScene();
     ViewState applied = viewStateOf(scene);
     ASSERT_EQ(applied.objects.size(), scene.objects.size());
     ViewState edited = applied;
@@ -41,7 +41,7 @@ TEST(ViewStateTest, ObjectShadowChoicesReachTheScene)
 
 TEST(ViewStateTest, SpotAndPointLightEditsReachTheSceneAndBadOnesAreRefused)
 {
-    scene::Scene scene = scene::makeMixedLightsScene();
+    scene::Scene scene = scenes::makeMixedLightsScene();
     ViewState applied = viewStateOf(scene);
     ViewState edited = applied;
     edited.spotLights[1].direction = {0.0f, -3.0f, 0.0f};

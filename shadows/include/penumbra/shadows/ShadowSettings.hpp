@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace penumbra::shadows {
@@ -82,25 +83,26 @@ inline constexpr std::uint32_t kPoissonSampleCounts[] = {16, 32, 64};
 // its s_search and s_penumbra as scales of the light-size terms, the Poisson sample counts and the penumbra's
 // clamp. Shared by every light whose filter is Poisson or PCSS.
 struct SoftShadowSettings {
-    float blockerSearchScale = 1.0f; // 0.1..10, scales w_search
-    float penumbraScale = 1.0f; // 0.1..10, scales w_penumbra
-    std::uint32_t blockerSamples = 16; // 16, 32 or 64
-    std::uint32_t filterSamples = 16; // 16, 32 or 64
-    float minPenumbraTexels = 1.0f; // 0..64, the filter radius never goes below this
-    float maxPenumbraTexels = 24.0f; // minPenumbraTexels..64, nor above this (nor the blocker search)
-    float poissonRadiusTexels = 2.5f; // 0.5..64, the fixed-radius Poisson filter's radius
+    float blockerSearchScale = 1.0f; // scales w_search
+    float penumbraScale = 1.0f; // scales w_penumbra
+    std::uint32_t blockerSamples = 16; // one of kPoissonSampleCounts
+    std::uint32_t filterSamples = 16; // one of kPoissonSampleCounts
+    float minPenumbraTexels = 1.0f; // the filter radius never goes below this
+    float maxPenumbraTexels = 24.0f; // at least minPenumbraTexels; nor above this (nor the blocker search)
+    float poissonRadiusTexels = 2.5f; // the fixed-radius Poisson filter's radius
 };
 
-// The directional lights' atlas, filter and cascades.
+// The directional lights' atlas, filter and cascades. The allowed values of every settings field are stated once,
+// in shadowSettingsFields() (docs/settings.md lists them).
 struct DirectionalShadowSettings {
-    std::uint32_t atlasSize = 1024; // texels per side, a power of two in 256..8192
+    std::uint32_t atlasSize = 1024; // texels per side
     ShadowFilter filter = ShadowFilter::PCF2x2;
-    std::uint32_t cascadeCount = 4; // 1..4
+    std::uint32_t cascadeCount = 4;
     glm::vec3 cascadeRatios{0.1f, 0.25f, 0.5f}; // ends of cascades 1..3 as fractions of the shadow distance
-    float cascadeFade = 0.1f; // 0.001..1, fraction of the last cascade's radius that fades
+    float cascadeFade = 0.1f; // fraction of the last cascade's radius that fades
     CascadeBlend cascadeBlend = CascadeBlend::Hard;
     CascadeProjection projection = CascadeProjection::Stable;
-    rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
+    rhi::Format atlasFormat = rhi::Format::D32F;
 };
 
 // Where point lights keep their six faces.
@@ -112,14 +114,13 @@ enum class PointShadowMode {
 
 // Spot and point shadows: the second atlas of up to 16 tiles (a spot light takes one, a point light six).
 struct LocalShadowSettings {
-    std::uint32_t atlasSize = 1024; // texels per side, a power of two in 256..8192
+    std::uint32_t atlasSize = 1024; // texels per side
     ShadowFilter filter = ShadowFilter::PCF2x2;
-    rhi::Format atlasFormat = rhi::Format::D32F; // D16, D24S8 or D32F
+    rhi::Format atlasFormat = rhi::Format::D32F;
     PointShadowMode pointMode = PointShadowMode::Atlas;
-    std::uint32_t cubeMapSize = 512; // CubeMap mode: texels per face side, a power of two in 64..4096
-    // Near plane of a spot or point shadow projection as a fraction of the light's range, 0.0001..0.5, for lights
-    // that set none: 1% keeps 32-bit and 24-bit depth resolution at the far end, while casters nearer than that to
-    // the light are rare.
+    std::uint32_t cubeMapSize = 512; // CubeMap mode: texels per face side
+    // Near plane of a spot or point shadow projection as a fraction of the light's range, for lights that set none: 1%
+    // keeps 32-bit and 24-bit depth resolution at the far end, while casters nearer than that to the light are rare.
     float nearPlane = 0.01f;
 };
 
@@ -142,17 +143,17 @@ struct StaticShadowSettings {
     StaticShadowUpdate update = StaticShadowUpdate::EveryFrame;
     RealtimeCasters realtimeCasters = RealtimeCasters::All;
     // Directional lights: one orthographic map each over the static casters' bounds, tiles of this atlas
-    // (one light takes it whole, up to four share it as quarters); texels per side, a power of two in 256..8192.
+    // (one light takes it whole, up to four share it as quarters); texels per side.
     std::uint32_t directionalAtlasSize = 4096;
     // Spot and point lights: tiles of this atlas as in the local atlas (a spot light one, a point light six, up to
-    // 16); texels per side, a power of two in 256..8192.
+    // 16); texels per side.
     std::uint32_t localAtlasSize = 2048;
 };
 
 // Every shadow setting of a frame; docs/settings.md lists each field with its default and range.
 struct ShadowSettings {
-    float maxDistance = 100.0f; // view depth beyond which nothing is shadowed, > 0.001; applies to every light
-    float distanceFade = 0.1f; // 0.001..1, fraction of maxDistance over which shadows fade out
+    float maxDistance = 100.0f; // view depth beyond which nothing is shadowed; applies to every light
+    float distanceFade = 0.1f; // fraction of maxDistance over which shadows fade out
     DirectionalShadowSettings directional;
     LocalShadowSettings local;
     SoftShadowSettings soft;
@@ -165,16 +166,34 @@ inline bool hasStaticMaps(const ShadowSettings& settings)
     return settings.staticMaps.update != StaticShadowUpdate::EveryFrame;
 }
 
-// One field of the settings' JSON: its path ("directional.cascadeCount"; the "static" object is
-// ShadowSettings::staticMaps), the values it allows as the validation messages state them, and what it does in a
-// line. shadowSettingsFields() lists every field in toJson's order; `penumbra settings --markdown` prints the
-// settings reference (docs/settings.md) from it.
+// How a settings field's values are bounded: by the names its `allowed` text lists (enums, depth formats, sample
+// counts), a closed range low..high, the powers of two in low..high, or anything above low.
+enum class SettingRangeKind { Listed, Closed, PowersOfTwo, Above };
+struct SettingRange {
+    SettingRangeKind kind = SettingRangeKind::Listed;
+    double low = 0.0;
+    double high = 0.0;
+};
+// Whether `value` is in the range, compared as the float fields hold it; NaN never is. A Listed range leaves the
+// check to the field's names (true).
+bool withinRange(const SettingRange& range, double value);
+
+// One field of the settings, declared once: its path in the JSON ("directional.cascadeCount"; the "static" object
+// is ShadowSettings::staticMaps), its range, the values it allows as messages, help and docs state them (written
+// from the range where it is numeric), what it does in a line, and the option of the penumbra tool that sets it over
+// a settings file ("--projection"; empty for none). Its default is ShadowSettings{}'s (settingsFieldText).
+// shadowSettingsFields() lists every field in toJson's order; validate(), the settings reference (`penumbra settings
+// --markdown`, docs/settings.md), the tool's options and the viewer's controls take their ranges and words from it.
 struct ShadowSettingsField {
     std::string_view path;
-    std::string_view allowed;
+    SettingRange range;
+    std::string allowed;
     std::string_view summary;
+    std::string_view flag;
 };
 std::span<const ShadowSettingsField> shadowSettingsFields();
+// The field of that path; throws rhi::Error naming the path where no field has it.
+const ShadowSettingsField& shadowSettingsField(std::string_view path);
 
 // Throws rhi::Error "<field>: <value> is out of range, allowed <range>" for the first field out of range
 // (field paths as in JSON: "directional.cascadeCount").

@@ -23,6 +23,15 @@ std::optional<RealtimeCasters> parseRealtimeCasters(std::string_view name);
 // Every field, two-space indented; parseShadowSettings(toJson(s)) == s.
 std::string toJson(const ShadowSettings& settings);
 
+// The field at `path` (a shadowSettingsFields() path) of `settings` as a settings file holds it, floats at their
+// shortest and names unquoted: "0.1", "[0.1, 0.25, 0.5]", "stable".
+std::string settingsFieldText(const ShadowSettings& settings, std::string_view path);
+
+// Sets the field at `path` from its text as settingsFieldText writes it ("close", "onChange", "2048"), as the
+// tool's options give it. Throws rhi::Error "<path>: <what>, allowed <allowed>" for a value it does not take, or
+// when the settings are then out of range.
+void setSettingsField(ShadowSettings& settings, std::string_view path, std::string_view text);
+
 ShadowSettings loadShadowSettings(const std::filesystem::path& path);
 
 // Writes a temporary file beside `path` and renames it over `path`: the file is never half-written.
