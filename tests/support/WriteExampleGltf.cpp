@@ -38,8 +38,8 @@ GltfBuilder sceneOf(std::string_view kind)
 int main(int argc, char** argv)
 {
     const std::string_view kind = argc == 3 ? argv[1] : "";
-    const bool known = kind.empty() || kind == "materials" || kind == "bend" || kind == "spheres" || kind == "missing-image" ||
-                       kind == "truncated" || kind == "large-textures";
+    const bool known = kind.empty() || kind == "materials" || kind == "bend" || kind == "spheres" ||
+                       kind == "missing-image" || kind == "truncated" || kind == "large-textures";
     if ((argc != 2 && argc != 3) || !known) {
         std::fprintf(stderr,
                      "usage: %s [materials|bend|spheres|missing-image|truncated|large-textures] <file.gltf|file.glb>\n",
