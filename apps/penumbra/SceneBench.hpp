@@ -23,8 +23,9 @@ struct SceneBenchOptions {
 };
 
 // The pass names of the JSON's "passes" objects, in frame order: the depth prepass, the directional and the
-// local atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass; then the
-// static shadow maps drawn in the frame (drawn first, listed last to keep the older names' order).
+// local atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass (timed in a
+// frame of its own, which the frame times leave out); then the static shadow maps drawn in the frame (drawn first,
+// listed last to keep the older names' order).
 inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "otherAtlas", "screenSpaceShadows",
                                                   "lit",   "resolve",          "reference",  "staticAtlas"};
 

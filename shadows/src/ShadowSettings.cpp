@@ -4,6 +4,7 @@
 #include "penumbra/rhi/Error.hpp"
 
 #include <array>
+#include <type_traits>
 #include <string>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -65,65 +66,200 @@ std::string rangeText(const SettingRange& range)
     return "";
 }
 
-ShadowSettingsField numeric(std::string_view path, SettingRange range, std::string_view summary)
+// A field's value as the numbers ShadowSettingsField::get gives, and back.
+template <typename Value>
+std::vector<double> numbersOf(const Value& value)
 {
-    return {path, range, rangeText(range), summary, {}};
+    if constexpr (std::is_enum_v<Value>)
+        return {static_cast<double>(static_cast<int>(value))};
+    else
+        return {static_cast<double>(value)};
+}
+std::vector<double> numbersOf(const glm::vec3& value) { return {value.x, value.y, value.z}; }
+
+template <typename Value>
+void assign(Value& value, std::span<const double> numbers)
+{
+    if constexpr (std::is_enum_v<Value>)
+        value = static_cast<Value>(static_cast<int>(numbers[0]));
+    else
+        value = static_cast<Value>(numbers[0]);
+}
+void assign(glm::vec3& value, std::span<const double> numbers)
+{
+    value = glm::vec3(static_cast<float>(numbers[0]), static_cast<float>(numbers[1]), static_cast<float>(numbers[2]));
 }
 
-ShadowSettingsField listed(std::string_view path, std::string names, std::string_view summary,
-                           std::string_view flag = {})
+// A field reading and writing the member that `member` (a generic lambda, for const settings and not) picks out;
+// its kind follows the member's type.
+template <typename Member>
+ShadowSettingsField field(std::string_view path, SettingRange range, std::string allowed, std::string_view summary,
+                          Member member, std::vector<SettingName> names = {}, std::string_view flag = {})
 {
-    return {path, {}, std::move(names), summary, flag};
+    using Value = std::remove_cvref_t<decltype(member(std::declval<ShadowSettings&>()))>;
+    SettingValueKind kind = SettingValueKind::Number;
+    if constexpr (std::is_enum_v<Value>)
+        kind = SettingValueKind::Name;
+    else if constexpr (std::is_same_v<Value, glm::vec3>)
+        kind = SettingValueKind::Numbers3;
+    else if constexpr (std::is_integral_v<Value>)
+        kind = SettingValueKind::Integer;
+    return {path,
+            range,
+            std::move(allowed),
+            summary,
+            flag,
+            kind,
+            std::move(names),
+            [member](const ShadowSettings& s) { return numbersOf(member(s)); },
+            [member](ShadowSettings& s, std::span<const double> numbers) { assign(member(s), numbers); }};
+}
+
+template <typename Member>
+ShadowSettingsField numeric(std::string_view path, SettingRange range, std::string_view summary, Member member)
+{
+    return field(path, range, rangeText(range), summary, member);
+}
+
+// A field of names: an enum's values, each named once here.
+template <typename Member>
+ShadowSettingsField named(std::string_view path, std::vector<SettingName> names, std::string_view summary,
+                          Member member, std::string_view flag = {})
+{
+    std::string allowed;
+    for (const SettingName& entry : names)
+        allowed += fmt::format("{}{}", allowed.empty() ? "" : ", ", entry.name);
+    return field(path, {}, std::move(allowed), summary, member, std::move(names), flag);
+}
+
+template <typename Enum>
+constexpr SettingName nameOf(Enum value, std::string_view name)
+{
+    return {static_cast<int>(value), name};
+}
+
+std::vector<SettingName> filterNames()
+{
+    std::vector<SettingName> names;
+    for (const ShadowFilterInfo& entry : kFilters)
+        names.push_back(nameOf(entry.filter, entry.json));
+    return names;
+}
+
+std::vector<SettingName> projectionSettingNames()
+{
+    std::vector<SettingName> names;
+    for (const CascadeProjectionName& entry : cascadeProjectionNames())
+        names.push_back(nameOf(entry.projection, entry.name));
+    return names;
+}
+
+std::vector<SettingName> depthFormats()
+{
+    return {nameOf(rhi::Format::D16, "d16"), nameOf(rhi::Format::D24S8, "d24s8"), nameOf(rhi::Format::D32F, "d32f")};
 }
 
 std::array<ShadowSettingsField, 27> makeFields()
 {
-    const std::string filterNames = filterNameList(&ShadowFilterInfo::json);
     const std::string sampleCounts = fmt::format("{}", fmt::join(kPoissonSampleCounts, ", "));
     const SettingRange poissonRadius{SettingRangeKind::Closed, 0.5, kPenumbraTexels.high};
     const SettingRange unit{SettingRangeKind::Closed, 0, 1};
     return {{
-        numeric("maxDistance", {SettingRangeKind::Above, 0.001},
-                "view depth beyond which nothing is shadowed, for every light"),
-        numeric("distanceFade", kFraction, "fraction of maxDistance over which shadows fade out"),
-        numeric("directional.atlasSize", kAtlasSizes, "texels per side of the directional atlas"),
-        listed("directional.filter", filterNames, "the directional lights' filter, unless a light sets its own"),
-        numeric("directional.cascadeCount", {SettingRangeKind::Closed, 1, 4}, "cascades per directional light"),
-        {"directional.cascadeRatios",
-         unit,
-         fmt::format("3 numbers in {}, strictly increasing", rangeText(unit)),
-         "ends of cascades 1..3 as fractions of maxDistance",
-         {}},
-        numeric("directional.cascadeFade", kFraction, "fraction of the last cascade over which it fades"),
-        listed("directional.cascadeBlend", "hard, soft, dither", "how the lit pass moves from one cascade to the next"),
-        listed("directional.projection", std::string(projectionNames()),
-               "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices",
-               "--projection"),
-        listed("directional.atlasFormat", "d16, d24s8, d32f", "depth format of the directional atlas"),
-        numeric("local.atlasSize", kAtlasSizes, "texels per side of the spot and point lights' atlas"),
-        listed("local.filter", filterNames, "the spot and point lights' filter, unless a light sets its own"),
-        listed("local.atlasFormat", "d16, d24s8, d32f", "depth format of the local atlas"),
-        listed("local.pointMode", "atlas, cubemap", "point lights in six atlas tiles or in a depth cube map each"),
-        numeric("local.cubeMapSize", {SettingRangeKind::PowersOfTwo, 64, 4096}, "texels per face side in cubemap mode"),
-        numeric("local.nearPlane", {SettingRangeKind::Closed, 0.0001, 0.5},
-                "shadow near plane as a fraction of the light's range, for lights without one"),
-        numeric("soft.blockerSearchScale", kScale, "scales PCSS's blocker search region (NVIDIA's w_search)"),
-        numeric("soft.penumbraScale", kScale, "scales PCSS's penumbra estimate (NVIDIA's w_penumbra)"),
-        listed("soft.blockerSamples", sampleCounts, "Poisson disk taps of each blocker search"),
-        listed("soft.filterSamples", sampleCounts, "Poisson disk taps of the soft filters"),
-        numeric("soft.minPenumbraTexels", kPenumbraTexels, "smallest filter radius of PCSS, in texels"),
-        {"soft.maxPenumbraTexels",
-         kPenumbraTexels,
-         fmt::format("minPenumbraTexels..{}", kPenumbraTexels.high),
-         "largest filter radius and blocker search of PCSS, in texels",
-         {}},
-        numeric("soft.poissonRadiusTexels", poissonRadius, "the fixed poisson filter's radius, in texels"),
-        listed("static.update", "everyFrame, onChange, onDemand",
-               "when static shadow maps are drawn; everyFrame keeps none", "--static-maps"),
-        listed("static.realtimeCasters", "all, dynamic",
-               "which casters the realtime atlases draw while static maps exist", "--realtime-casters"),
-        numeric("static.directionalAtlasSize", kAtlasSizes, "texels per side of the directional lights' static atlas"),
-        numeric("static.localAtlasSize", kAtlasSizes, "texels per side of the spot and point lights' static atlas"),
+        numeric(
+            "maxDistance", {SettingRangeKind::Above, 0.001},
+            "view depth beyond which nothing is shadowed, for every light",
+            [](auto& s) -> auto& { return s.maxDistance; }),
+        numeric(
+            "distanceFade", kFraction, "fraction of maxDistance over which shadows fade out",
+            [](auto& s) -> auto& { return s.distanceFade; }),
+        numeric(
+            "directional.atlasSize", kAtlasSizes, "texels per side of the directional atlas",
+            [](auto& s) -> auto& { return s.directional.atlasSize; }),
+        named(
+            "directional.filter", filterNames(), "the directional lights' filter, unless a light sets its own",
+            [](auto& s) -> auto& { return s.directional.filter; }),
+        numeric(
+            "directional.cascadeCount", {SettingRangeKind::Closed, 1, 4}, "cascades per directional light",
+            [](auto& s) -> auto& { return s.directional.cascadeCount; }),
+        field(
+            "directional.cascadeRatios", unit, fmt::format("3 numbers in {}, strictly increasing", rangeText(unit)),
+            "ends of cascades 1..3 as fractions of maxDistance",
+            [](auto& s) -> auto& { return s.directional.cascadeRatios; }),
+        numeric(
+            "directional.cascadeFade", kFraction, "fraction of the last cascade over which it fades",
+            [](auto& s) -> auto& { return s.directional.cascadeFade; }),
+        named(
+            "directional.cascadeBlend",
+            {nameOf(CascadeBlend::Hard, "hard"), nameOf(CascadeBlend::Soft, "soft"),
+             nameOf(CascadeBlend::Dither, "dither")},
+            "how the lit pass moves from one cascade to the next",
+            [](auto& s) -> auto& { return s.directional.cascadeBlend; }),
+        named(
+            "directional.projection", projectionSettingNames(),
+            "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices",
+            [](auto& s) -> auto& { return s.directional.projection; }, "--projection"),
+        named(
+            "directional.atlasFormat", depthFormats(), "depth format of the directional atlas",
+            [](auto& s) -> auto& { return s.directional.atlasFormat; }),
+        numeric(
+            "local.atlasSize", kAtlasSizes, "texels per side of the spot and point lights' atlas",
+            [](auto& s) -> auto& { return s.local.atlasSize; }),
+        named(
+            "local.filter", filterNames(), "the spot and point lights' filter, unless a light sets its own",
+            [](auto& s) -> auto& { return s.local.filter; }),
+        named(
+            "local.atlasFormat", depthFormats(), "depth format of the local atlas",
+            [](auto& s) -> auto& { return s.local.atlasFormat; }),
+        named(
+            "local.pointMode", {nameOf(PointShadowMode::Atlas, "atlas"), nameOf(PointShadowMode::CubeMap, "cubemap")},
+            "point lights in six atlas tiles or in a depth cube map each",
+            [](auto& s) -> auto& { return s.local.pointMode; }),
+        numeric(
+            "local.cubeMapSize", {SettingRangeKind::PowersOfTwo, 64, 4096}, "texels per face side in cubemap mode",
+            [](auto& s) -> auto& { return s.local.cubeMapSize; }),
+        numeric(
+            "local.nearPlane", {SettingRangeKind::Closed, 0.0001, 0.5},
+            "shadow near plane as a fraction of the light's range, for lights without one",
+            [](auto& s) -> auto& { return s.local.nearPlane; }),
+        numeric(
+            "soft.blockerSearchScale", kScale, "scales PCSS's blocker search region (NVIDIA's w_search)",
+            [](auto& s) -> auto& { return s.soft.blockerSearchScale; }),
+        numeric(
+            "soft.penumbraScale", kScale, "scales PCSS's penumbra estimate (NVIDIA's w_penumbra)",
+            [](auto& s) -> auto& { return s.soft.penumbraScale; }),
+        field(
+            "soft.blockerSamples", {}, sampleCounts, "Poisson disk taps of each blocker search",
+            [](auto& s) -> auto& { return s.soft.blockerSamples; }),
+        field(
+            "soft.filterSamples", {}, sampleCounts, "Poisson disk taps of the soft filters",
+            [](auto& s) -> auto& { return s.soft.filterSamples; }),
+        numeric(
+            "soft.minPenumbraTexels", kPenumbraTexels, "smallest filter radius of PCSS, in texels",
+            [](auto& s) -> auto& { return s.soft.minPenumbraTexels; }),
+        field(
+            "soft.maxPenumbraTexels", kPenumbraTexels, fmt::format("minPenumbraTexels..{}", kPenumbraTexels.high),
+            "largest filter radius and blocker search of PCSS, in texels",
+            [](auto& s) -> auto& { return s.soft.maxPenumbraTexels; }),
+        numeric(
+            "soft.poissonRadiusTexels", poissonRadius, "the fixed poisson filter's radius, in texels",
+            [](auto& s) -> auto& { return s.soft.poissonRadiusTexels; }),
+        named(
+            "static.update",
+            {nameOf(StaticShadowUpdate::EveryFrame, "everyFrame"), nameOf(StaticShadowUpdate::OnChange, "onChange"),
+             nameOf(StaticShadowUpdate::OnDemand, "onDemand")},
+            "when static shadow maps are drawn; everyFrame keeps none",
+            [](auto& s) -> auto& { return s.staticMaps.update; }, "--static-maps"),
+        named(
+            "static.realtimeCasters",
+            {nameOf(RealtimeCasters::All, "all"), nameOf(RealtimeCasters::Dynamic, "dynamic")},
+            "which casters the realtime atlases draw while static maps exist",
+            [](auto& s) -> auto& { return s.staticMaps.realtimeCasters; }, "--realtime-casters"),
+        numeric(
+            "static.directionalAtlasSize", kAtlasSizes, "texels per side of the directional lights' static atlas",
+            [](auto& s) -> auto& { return s.staticMaps.directionalAtlasSize; }),
+        numeric(
+            "static.localAtlasSize", kAtlasSizes, "texels per side of the spot and point lights' static atlas",
+            [](auto& s) -> auto& { return s.staticMaps.localAtlasSize; }),
     }};
 }
 
@@ -197,7 +333,7 @@ std::optional<CascadeProjection> projectionFromName(std::string_view name)
     return std::nullopt;
 }
 
-std::string_view projectionNames() { return "stable, close"; }
+std::string_view projectionNames() { return shadowSettingsField("directional.projection").allowed; }
 
 ShadowFilterFamily filterFamily(ShadowFilter filter)
 {

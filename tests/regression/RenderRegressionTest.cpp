@@ -9,6 +9,7 @@
 #include "FrameHashTable.hpp"
 #include "GpuTesting.hpp"
 
+#include "penumbra/render/FrameResources.hpp"
 #include "penumbra/render/ReferenceLitPass.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Image.hpp"
@@ -22,6 +23,7 @@
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -177,11 +179,18 @@ FrameTable renderEveryFrame(rhi::Device& device)
             renderer.render(scene.camera, frame);
             table[s.name + "/" + variant] = outputsOf(device, renderer, frame);
         };
-        draw("forward", smallFrame({}));
+        // The reference lit pass runs in the forward frame only, after the lit pass, as penumbra bench adds it.
+        std::shared_ptr<render::ReferenceLitPass> reference;
         if (s.referencePass) {
-            render::ReferenceLitPass reference(device, renderer.gpuScene());
-            reference.render(scene.camera, smallFrame({}), renderer);
-            table[s.name + "/forward"]["referenceLit"] = hashOf(rhi::readTexture(device, reference.image()));
+            reference = std::make_shared<render::ReferenceLitPass>(device, renderer, scene.camera, smallFrame({}));
+            renderer.addTexture(std::string(render::ReferenceLitPass::kImage), reference->image());
+            renderer.addTexture(std::string(render::ReferenceLitPass::kDepth), reference->depth());
+            renderer.addPass(reference, render::PassPlacement::after(std::string(render::frame::kLitPass)));
+        }
+        draw("forward", smallFrame({}));
+        if (reference) {
+            table[s.name + "/forward"]["referenceLit"] = hashOf(rhi::readTexture(device, reference->image()));
+            reference->setEnabled(false);
         }
         for (const Variant& v : s.variants)
             draw(v.name, smallFrame(v.change));

@@ -54,6 +54,13 @@ ShadowSettings unusualSettings()
     s.staticMaps.realtimeCasters = RealtimeCasters::Dynamic;
     s.staticMaps.directionalAtlasSize = 8192;
     s.staticMaps.localAtlasSize = 512;
+    s.soft = {.blockerSearchScale = 1.5f,
+              .penumbraScale = 0.5f,
+              .blockerSamples = 32,
+              .filterSamples = 64,
+              .minPenumbraTexels = 2.0f,
+              .maxPenumbraTexels = 30.0f,
+              .poissonRadiusTexels = 3.25f};
     return s;
 }
 
@@ -141,6 +148,19 @@ TEST(ShadowSettingsJson, RoundTripKeepsEveryField)
     EXPECT_NE(json.find("\"projection\": \"close\""), std::string::npos) << json;
     EXPECT_NE(toJson(ShadowSettings{}).find("\"projection\": \"stable\""), std::string::npos);
     EXPECT_NE(json.find("\"atlasFormat\": \"d24s8\""), std::string::npos) << json;
+}
+
+// Every field of the table moves through its text, and the settings file holds exactly the table's fields.
+TEST(ShadowSettingsJson, EveryFieldOfTheTableRoundTripsThroughItsText)
+{
+    const ShadowSettings unusual = unusualSettings();
+    ShadowSettings copy;
+    for (const ShadowSettingsField& field : shadowSettingsFields()) {
+        EXPECT_NE(settingsFieldText(unusual, field.path), settingsFieldText(ShadowSettings{}, field.path))
+            << field.path << " keeps its default in unusualSettings: the loop would prove nothing for it";
+        setSettingsField(copy, field.path, settingsFieldText(unusual, field.path));
+    }
+    EXPECT_EQ(toJson(copy), toJson(unusual));
 }
 
 TEST(ShadowSettingsJson, MissingFieldsKeepTheirDefaults)

@@ -1,5 +1,6 @@
 #include "penumbra/render/ReferenceLitPass.hpp"
 
+#include "penumbra/render/FrameResources.hpp"
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 #include "penumbra/shadows/InstanceTransform.hpp"
@@ -55,11 +56,22 @@ ReferenceSplitUniforms splitUniforms(const shadows::DirectionalShadowPlan& plan)
 
 } // namespace
 
-ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const GpuScene& scene)
-    : device_(device), scene_(scene), vertex_(device.createShader(referenceShader("reference_lit.vert"))),
-      fragment_(device.createShader(referenceShader("reference_lit.frag"))), commands_(device.createCommandList()),
-      timestamps_(device.capabilities().timestamps ? device.createTimestampQueries(2) : nullptr),
-      uniforms_(device, "reference lit pass uniforms"), instances_(device, "reference lit pass instances")
+ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const SceneRenderer& renderer, const scene::Camera& camera,
+                                   const FrameDesc& frame)
+    : device_(device), renderer_(renderer), camera_(camera), frame_(frame),
+      vertex_(device.createShader(referenceShader("reference_lit.vert"))),
+      fragment_(device.createShader(referenceShader("reference_lit.frag"))),
+      uniforms_(device, "reference lit pass uniforms"), instances_(device, "reference lit pass instances"),
+      color_(device.createTexture({.width = frame.width,
+                                   .height = frame.height,
+                                   .format = kColorFormat,
+                                   .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
+                                   .debugName = std::string(kImage)})),
+      depth_(device.createTexture({.width = frame.width,
+                                   .height = frame.height,
+                                   .format = kDepthFormat,
+                                   .usage = rhi::TextureUsage::RenderTarget,
+                                   .debugName = std::string(kDepth)}))
 {
     rhi::PipelineDesc desc;
     desc.vertex = vertex_.get();
@@ -83,33 +95,28 @@ ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const GpuScene& scene)
     }
 }
 
-double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& frame, const SceneRenderer& renderer)
+bool ReferenceLitPass::setup(FramePassBuilder& builder)
 {
-    if (!color_ || color_->desc().width != frame.width || color_->desc().height != frame.height) {
-        color_ = device_.createTexture({.width = frame.width,
-                                        .height = frame.height,
-                                        .format = kColorFormat,
-                                        .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
-                                        .debugName = "reference lit image"});
-        depth_ = device_.createTexture({.width = frame.width,
-                                        .height = frame.height,
-                                        .format = kDepthFormat,
-                                        .usage = rhi::TextureUsage::RenderTarget,
-                                        .debugName = "reference lit depth"});
-        const rhi::Attachment color{color_.get(), 0};
-        target_ = device_.createFramebuffer(
-            {.colors = {&color, 1}, .depth = {depth_.get(), 0}, .debugName = "reference lit"});
-    }
-    const scene::Scene& scene = scene_.scene();
+    if (!enabled_)
+        return false;
+    builder.read(frame::kDirectionalAtlas);
+    builder.write(kImage);
+    builder.write(kDepth);
+    return true;
+}
+
+void ReferenceLitPass::execute(const FramePassContext& context)
+{
+    const GpuScene& gpuScene = renderer_.gpuScene();
+    const scene::Scene& scene = gpuScene.scene();
     uniforms_.reset();
     instances_.reset();
-    const rhi::UniformSlice frameSlice = uniforms_.push(frameUniforms(camera, frame, scene, device_.conventions()));
-    const rhi::UniformSlice shadowSlice = uniforms_.push(renderer.plan().uniforms);
-    const rhi::UniformSlice splitSlice = uniforms_.push(splitUniforms(renderer.plan()));
-    rhi::CommandList& commands = *commands_;
-    if (timestamps_)
-        commands.writeTimestamp(*timestamps_, 0);
-    commands.beginPass({.framebuffer = target_.get(), .clearColor = glm::vec4(0.2f, 0.22f, 0.26f, 1.0f)});
+    const rhi::UniformSlice frameSlice = uniforms_.push(frameUniforms(camera_, frame_, scene, device_.conventions()));
+    const rhi::UniformSlice shadowSlice = uniforms_.push(renderer_.plan().uniforms);
+    const rhi::UniformSlice splitSlice = uniforms_.push(splitUniforms(renderer_.plan()));
+    rhi::CommandList& commands = context.commands();
+    commands.beginPass(
+        {.framebuffer = &context.framebuffer({kImage}, kDepth), .clearColor = glm::vec4(0.2f, 0.22f, 0.26f, 1.0f)});
     const rhi::Pipeline* bound = nullptr;
     for (const scene::Object& object : scene.objects) {
         if (object.castShadows == scene::ShadowCasting::ShadowsOnly)
@@ -121,23 +128,17 @@ double ReferenceLitPass::render(const scene::Camera& camera, const FrameDesc& fr
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
             rhi::bindUniform(commands, kLitShadowBinding, shadowSlice);
             rhi::bindUniform(commands, kReferenceSplitsBinding, splitSlice);
-            commands.bindTexture(kLitAtlasBinding, renderer.atlas().texture(), renderer.atlas().sampler());
+            commands.bindTexture(kLitAtlasBinding, context.texture(frame::kDirectionalAtlas),
+                                 renderer_.atlas().sampler());
             bound = pipeline;
         }
         // A draw per object, as the public samples draw.
         rhi::bindUniform(commands, kLitObjectBinding,
                          uniforms_.push(LitObjectUniforms{.baseColor = material.baseColor}));
-        scene_.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding,
-                            instances_.push(shadows::instanceTransform(object.transform)), 1);
+        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding,
+                              instances_.push(shadows::instanceTransform(object.transform)), 1);
     }
     commands.endPass();
-    if (timestamps_)
-        commands.writeTimestamp(*timestamps_, 1);
-    device_.submit(commands);
-    if (!timestamps_)
-        return 0.0;
-    const std::vector<double> ns = device_.readTimestamps(*timestamps_);
-    return (ns[1] - ns[0]) * 1e-6;
 }
 
 } // namespace penumbra::render

@@ -4,11 +4,13 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace penumbra::shadows {
 
@@ -184,12 +186,25 @@ bool withinRange(const SettingRange& range, double value);
 // a settings file ("--projection"; empty for none). Its default is ShadowSettings{}'s (settingsFieldText).
 // shadowSettingsFields() lists every field in toJson's order; validate(), the settings reference (`penumbra settings
 // --markdown`, docs/settings.md), the tool's options and the viewer's controls take their ranges and words from it.
+//
+// The field's value moves in and out of a ShadowSettings through `get` and `set` as numbers: one, three for
+// cascadeRatios, an enum's value for a field of names. The settings file writes it as its kind says, a field of
+// names by its entry in `names` (the only place the enums' names are stated; `allowed` lists them).
+enum class SettingValueKind { Number, Integer, Numbers3, Name };
+struct SettingName {
+    int value; // the enum's value
+    std::string_view name;
+};
 struct ShadowSettingsField {
     std::string_view path;
     SettingRange range;
     std::string allowed;
     std::string_view summary;
     std::string_view flag;
+    SettingValueKind kind = SettingValueKind::Number;
+    std::vector<SettingName> names;
+    std::function<std::vector<double>(const ShadowSettings&)> get;
+    std::function<void(ShadowSettings&, std::span<const double>)> set;
 };
 std::span<const ShadowSettingsField> shadowSettingsFields();
 // The field of that path; throws rhi::Error naming the path where no field has it.
