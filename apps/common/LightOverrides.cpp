@@ -24,13 +24,13 @@ void forEveryLight(scene::Scene& scene, const Set& set)
 }
 
 // NAME and MODE of a NAME=MODE spec (the last '=' splits: light names may hold one).
-std::optional<std::pair<std::string, scene::ShadowUpdate>> parseLightShadowUpdate(const std::string& spec)
+std::optional<std::pair<std::string, scene::LightShadowUpdate>> parseLightShadowUpdate(const std::string& spec)
 {
     const std::size_t split = spec.rfind('=');
     if (split == std::string::npos || split == 0)
         return std::nullopt;
-    const std::optional<scene::ShadowUpdate> update =
-        scene::parseShadowUpdate(std::string_view(spec).substr(split + 1));
+    const std::optional<scene::LightShadowUpdate> update =
+        scene::parseLightShadowUpdate(std::string_view(spec).substr(split + 1));
     if (!update)
         return std::nullopt;
     return std::pair{spec.substr(0, split), *update};
@@ -67,7 +67,7 @@ void applyLightShadowUpdate(scene::Scene& scene, const std::string& spec)
     const auto parsed = parseLightShadowUpdate(spec);
     if (!parsed)
         throw rhi::Error(fmt::format("--light-static-map '{}' is not NAME=MODE with MODE one of {}", spec,
-                                     scene::kShadowUpdateNames));
+                                     scene::kLightShadowUpdateNames));
     bool found = false;
     forEveryLight(scene, [&](auto& light) {
         if (light.name == parsed->first) {
@@ -87,7 +87,7 @@ void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::op
         const std::optional<shadows::ShadowFilter> chosen = shadows::filterFromCommandName(filter);
         if (!chosen)
             throw rhi::Error(fmt::format("--filter '{}' is not one of {}", filter, shadows::filterCommandNames()));
-        forEveryLight(scene, [value = static_cast<std::int32_t>(*chosen)](auto& light) { light.shadowFilter = value; });
+        forEveryLight(scene, [value = *chosen](auto& light) { light.shadowFilter = value; });
     }
     if (!normalBiasSide.empty()) {
         const std::optional<scene::NormalBiasSide> side = scene::parseNormalBiasSide(normalBiasSide);

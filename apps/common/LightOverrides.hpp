@@ -16,7 +16,7 @@ void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::op
                          const std::string& normalBiasSide = {});
 
 // --light-static-map NAME=MODE: the light named NAME (directional, spot or point; every light of that name) draws
-// its static shadow map in scene::ShadowUpdate MODE ("settings", "everyFrame", "onChange", "onDemand"). Throws
+// its static shadow map in scene::LightShadowUpdate MODE ("settings", "everyFrame", "onChange", "onDemand"). Throws
 // rhi::Error naming the option for a malformed spec, an unknown mode or a name no light has.
 void applyLightShadowUpdate(scene::Scene& scene, const std::string& spec);
 // Whether `spec` has the NAME=MODE form with a known MODE: the option's check.

@@ -121,7 +121,7 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     const shadows::StaticShadowPlan& statics = renderer.staticPlan();
     const auto has = [&](bool directional) {
         return std::any_of(statics.maps.begin(), statics.maps.end(), [&](const shadows::StaticShadowMap& m) {
-            return (m.kind == shadows::ShadowLightKind::Directional) == directional;
+            return (m.kind == shadows::LightKind::Directional) == directional;
         });
     };
     if (has(true))

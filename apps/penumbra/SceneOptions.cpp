@@ -232,12 +232,12 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
         .add_option("--light-static-map", options.lightStaticMaps,
                     fmt::format("A light's own static map mode, over --static-maps and the settings' (repeatable): "
                                 "NAME=MODE, MODE one of {} (settings: the settings' mode)",
-                                scene::kShadowUpdateNames))
+                                scene::kLightShadowUpdateNames))
         ->check(CLI::Validator(
             [](std::string& s) {
-                return isLightShadowUpdate(s)
-                           ? std::string()
-                           : fmt::format("'{}' is not NAME=MODE with MODE one of {}", s, scene::kShadowUpdateNames);
+                return isLightShadowUpdate(s) ? std::string()
+                                              : fmt::format("'{}' is not NAME=MODE with MODE one of {}", s,
+                                                            scene::kLightShadowUpdateNames);
             },
             "NAME=MODE"));
     command

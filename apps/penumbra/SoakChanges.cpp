@@ -4,6 +4,7 @@
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -47,7 +48,10 @@ std::size_t localLights(const scene::Scene& scene) { return scene.spotLights.siz
 
 void setLightFilter(std::mt19937& random, scene::Scene& scene)
 {
-    const std::int32_t filter = std::uniform_int_distribution<std::int32_t>(scene::kAtlasShadowFilter, 5)(random);
+    // -1: the atlas's filter, else one of kFilters.
+    const int pick = std::uniform_int_distribution<int>(-1, int(kFilters.size()) - 1)(random);
+    const std::optional<ShadowFilter> filter =
+        pick < 0 ? std::nullopt : std::optional<ShadowFilter>(kFilters[std::size_t(pick)]);
     const std::size_t lights = scene.lights.size() + localLights(scene);
     if (lights == 0)
         return;

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Format.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <array>
 #include <cctype>
 #include <fmt/format.h>
@@ -132,17 +133,24 @@ bool fieldPowerOfTwo(std::string_view path, std::uint32_t& value)
     return changed;
 }
 
-// A light's own filter: "atlas" (scene::kAtlasShadowFilter) or one of the filters.
-bool lightFilterCombo(std::int32_t& filter)
+// A light's own option, or none of its own (the first name: the settings' value).
+template <typename Enum, std::size_t N>
+bool optionalEnumCombo(const char* label, std::optional<Enum>& value, const std::array<const char*, N>& names)
+{
+    int index = value ? static_cast<int>(*value) + 1 : 0;
+    const bool changed = ImGui::Combo(label, &index, names.data(), int(N));
+    if (changed)
+        value = index == 0 ? std::nullopt : std::optional<Enum>(static_cast<Enum>(index - 1));
+    return changed;
+}
+
+// A light's own filter: "atlas" (the settings' filter) or one of the filters.
+bool lightFilterCombo(std::optional<shadows::ShadowFilter>& filter)
 {
     std::array<const char*, shadows::kShadowFilterCount + 1> names{"atlas"};
     for (std::size_t i = 0; i < shadows::kShadowFilterCount; ++i)
         names[i + 1] = filterNames()[i];
-    int index = filter + 1;
-    const bool changed = ImGui::Combo("shadow filter", &index, names.data(), int(names.size()));
-    if (changed)
-        filter = index - 1;
-    return changed;
+    return optionalEnumCombo("shadow filter", filter, names);
 }
 
 // One of shadows::kPoissonSampleCounts.
@@ -251,8 +259,8 @@ bool commonLightSettings(Light& light)
     changed |= ImGui::DragFloat("normal bias", &light.normalBias, 0.01f, 0.0f, 10.0f);
     changed |= enumCombo("normal bias side", light.normalBiasSide, std::array{"receiver", "caster"});
     changed |= lightFilterCombo(light.shadowFilter);
-    changed |= enumCombo("static map", light.shadowUpdate,
-                         std::array{"settings'", "every frame (none)", "on change", "on demand"});
+    changed |= optionalEnumCombo("static map", light.shadowUpdate,
+                                 std::array{"settings'", "every frame (none)", "on change", "on demand"});
     return changed;
 }
 
@@ -261,7 +269,7 @@ bool anyOnDemand(const ViewState& state)
 {
     const auto onDemand = [](const auto& lights) {
         return std::any_of(lights.begin(), lights.end(),
-                           [](const auto& l) { return l.shadowUpdate == scene::ShadowUpdate::OnDemand; });
+                           [](const auto& l) { return l.shadowUpdate == shadows::StaticShadowUpdate::OnDemand; });
     };
     return state.shadows.staticMaps.update == shadows::StaticShadowUpdate::OnDemand || onDemand(state.lights) ||
            onDemand(state.spotLights) || onDemand(state.pointLights);

@@ -41,17 +41,17 @@ float sourceSize(const Document& document, const tinygltf::Light& light, const s
     return float(value.GetNumberAsDouble());
 }
 
-// The light's static shadow map mode from its `extras` {"shadowUpdate": "onDemand"} (scene::ShadowUpdate's names),
-// the shadow settings' without one.
-scene::ShadowUpdate shadowUpdate(const Document& document, const tinygltf::Light& light, const std::string& owner)
+// The light's static shadow map mode from its `extras` {"shadowUpdate": "onDemand"} (scene::parseLightShadowUpdate's
+// names), the shadow settings' without one.
+scene::LightShadowUpdate shadowUpdate(const Document& document, const tinygltf::Light& light, const std::string& owner)
 {
     if (!light.extras.IsObject() || !light.extras.Has("shadowUpdate"))
-        return scene::ShadowUpdate::Settings;
+        return std::nullopt;
     const tinygltf::Value& value = light.extras.Get("shadowUpdate");
-    const std::optional<scene::ShadowUpdate> update =
-        value.IsString() ? scene::parseShadowUpdate(value.Get<std::string>()) : std::nullopt;
+    const std::optional<scene::LightShadowUpdate> update =
+        value.IsString() ? scene::parseLightShadowUpdate(value.Get<std::string>()) : std::nullopt;
     if (!update)
-        document.fail(fmt::format("{}: extras.shadowUpdate is not one of {}", owner, scene::kShadowUpdateNames));
+        document.fail(fmt::format("{}: extras.shadowUpdate is not one of {}", owner, scene::kLightShadowUpdateNames));
     return *update;
 }
 
@@ -68,12 +68,13 @@ void addLight(const Document& document, const LightInstance& instance, scene::Sc
     const auto intensity = float(light.intensity);
     const float range = light.range > 0.0 ? float(light.range) : defaultRange(intensity);
     if (light.type == "directional") {
-        world.lights.push_back({.name = light.name,
-                                .color = color,
-                                .intensity = intensity,
-                                .direction = forward(instance.world),
-                                .angularDiameter = sourceSize(document, light, owner, scene::kDefaultAngularDiameter),
-                                .shadowUpdate = shadowUpdate(document, light, owner)});
+        world.lights.push_back(
+            {.name = light.name,
+             .color = color,
+             .intensity = intensity,
+             .direction = forward(instance.world),
+             .angularDiameter = sourceSize(document, light, owner, scene::LightShadowDefaults::angularDiameter),
+             .shadowUpdate = shadowUpdate(document, light, owner)});
     } else if (light.type == "spot") {
         auto outer = float(light.spot.outerConeAngle);
         if (outer > kMaxSpotOuterAngle) {
@@ -81,24 +82,26 @@ void addLight(const Document& document, const LightInstance& instance, scene::Sc
                 fmt::format("{}: outer cone angle {} narrowed to {} radians", owner, outer, kMaxSpotOuterAngle));
             outer = kMaxSpotOuterAngle;
         }
-        world.spotLights.push_back({.name = light.name,
-                                    .color = color,
-                                    .intensity = intensity,
-                                    .position = origin(instance.world),
-                                    .direction = forward(instance.world),
-                                    .range = range,
-                                    .innerAngle = float(light.spot.innerConeAngle),
-                                    .outerAngle = outer,
-                                    .sourceRadius = sourceSize(document, light, owner, scene::kDefaultSourceRadius),
-                                    .shadowUpdate = shadowUpdate(document, light, owner)});
+        world.spotLights.push_back(
+            {.name = light.name,
+             .color = color,
+             .intensity = intensity,
+             .position = origin(instance.world),
+             .direction = forward(instance.world),
+             .range = range,
+             .innerAngle = float(light.spot.innerConeAngle),
+             .outerAngle = outer,
+             .sourceRadius = sourceSize(document, light, owner, scene::LightShadowDefaults::sourceRadius),
+             .shadowUpdate = shadowUpdate(document, light, owner)});
     } else if (light.type == "point") {
-        world.pointLights.push_back({.name = light.name,
-                                     .color = color,
-                                     .intensity = intensity,
-                                     .position = origin(instance.world),
-                                     .range = range,
-                                     .sourceRadius = sourceSize(document, light, owner, scene::kDefaultSourceRadius),
-                                     .shadowUpdate = shadowUpdate(document, light, owner)});
+        world.pointLights.push_back(
+            {.name = light.name,
+             .color = color,
+             .intensity = intensity,
+             .position = origin(instance.world),
+             .range = range,
+             .sourceRadius = sourceSize(document, light, owner, scene::LightShadowDefaults::sourceRadius),
+             .shadowUpdate = shadowUpdate(document, light, owner)});
     } else {
         document.fail(fmt::format("{}: type '{}' is not directional, spot or point", owner, light.type));
     }

@@ -17,7 +17,7 @@ std::vector<PerspectiveTile> perspectiveTiles(const shadows::StaticShadowPlan& p
 {
     std::vector<PerspectiveTile> tiles;
     for (const shadows::StaticShadowMap& map : plan.maps)
-        if (map.kind != shadows::ShadowLightKind::Directional)
+        if (map.kind != shadows::LightKind::Directional)
             for (const shadows::StaticShadowTile& tile : map.tiles)
                 tiles.push_back({tile.viewport, tile.projection});
     return tiles;

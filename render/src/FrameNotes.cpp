@@ -6,69 +6,53 @@
 namespace penumbra::render {
 namespace {
 
-const char* kindName(shadows::LocalLightKind kind)
-{
-    return kind == shadows::LocalLightKind::Spot ? "spot light" : "point light";
-}
-
-const std::string& localLightName(const scene::Scene& scene, shadows::LocalLightKind kind, std::uint32_t index)
-{
-    return kind == shadows::LocalLightKind::Spot ? scene.spotLights[index].name : scene.pointLights[index].name;
-}
-
-bool hasStaticMap(const shadows::StaticShadowPlan& plan, shadows::ShadowLightKind kind, std::uint32_t index)
+bool hasStaticMap(const shadows::StaticShadowPlan& plan, shadows::LightKind kind, std::uint32_t index)
 {
     return std::any_of(plan.maps.begin(), plan.maps.end(), [&](const shadows::StaticShadowMap& map) {
         return map.kind == kind && map.lightIndex == index;
     });
 }
 
-shadows::ShadowLightKind shadowLightKind(shadows::LocalLightKind kind)
-{
-    return kind == shadows::LocalLightKind::Spot ? shadows::ShadowLightKind::Spot : shadows::ShadowLightKind::Point;
-}
-
 // What a light without realtime shadows has: nothing, or its static map alone.
-const char* withoutRealtime(const ShadowPlans& plans, shadows::ShadowLightKind kind, std::uint32_t index)
+const char* withoutRealtime(const ShadowPlans& plans, shadows::LightKind kind, std::uint32_t index)
 {
     return hasStaticMap(plans.staticMaps, kind, index) ? "has static shadows only" : "has no shadows";
 }
 
 } // namespace
 
-const std::string& lightName(const scene::Scene& scene, shadows::ShadowLightKind kind, std::uint32_t index)
+const std::string& lightName(const scene::Scene& scene, shadows::LightKind kind, std::uint32_t index)
 {
     switch (kind) {
-    case shadows::ShadowLightKind::Spot:
+    case shadows::LightKind::Spot:
         return scene.spotLights[index].name;
-    case shadows::ShadowLightKind::Point:
+    case shadows::LightKind::Point:
         return scene.pointLights[index].name;
-    case shadows::ShadowLightKind::Directional:
+    case shadows::LightKind::Directional:
         break;
     }
     return scene.lights[index].name;
 }
 
-std::string localShadowUpdate(const scene::Scene& scene, shadows::LocalLightKind kind, std::uint32_t index,
+std::string localShadowUpdate(const scene::Scene& scene, shadows::LightKind kind, std::uint32_t index,
                               std::string_view reason)
 {
-    return fmt::format("{} {} ('{}'): {}", kindName(kind), index, localLightName(scene, kind, index), reason);
+    return fmt::format("{} {} ('{}'): {}", scene::lightKindName(kind), index, lightName(scene, kind, index), reason);
 }
 
 ShadowedLightCounts shadowedLightCounts(const scene::Scene& scene, const ShadowPlans& plans)
 {
     ShadowedLightCounts counts;
-    const auto count = [&](bool realtime, shadows::ShadowLightKind kind, std::uint32_t index) {
+    const auto count = [&](bool realtime, shadows::LightKind kind, std::uint32_t index) {
         ++(realtime || hasStaticMap(plans.staticMaps, kind, index) ? counts.shadowed : counts.withoutShadow);
     };
     const std::vector<int>& slots = plans.directional.shadowSlots;
     for (std::uint32_t i = 0; i < scene.lights.size(); ++i)
-        count(i < slots.size() && slots[i] >= 0, shadows::ShadowLightKind::Directional, i);
+        count(i < slots.size() && slots[i] >= 0, shadows::LightKind::Directional, i);
     for (std::uint32_t i = 0; i < scene.spotLights.size(); ++i)
-        count(i < plans.local.spotTiles.size() && plans.local.spotTiles[i] >= 0, shadows::ShadowLightKind::Spot, i);
+        count(i < plans.local.spotTiles.size() && plans.local.spotTiles[i] >= 0, shadows::LightKind::Spot, i);
     for (std::uint32_t i = 0; i < scene.pointLights.size(); ++i)
-        count(i < plans.local.pointShadows.size() && plans.local.pointShadows[i] >= 0, shadows::ShadowLightKind::Point,
-              i);
+        count(i < plans.local.pointShadows.size() && plans.local.pointShadows[i] >= 0, shadows::LightKind::Point, i);
     return counts;
 }
 
@@ -79,18 +63,17 @@ std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans
         notes.push_back(
             note.lightIndex
                 ? fmt::format("light {} ('{}') {}: {}", *note.lightIndex, scene.lights[*note.lightIndex].name,
-                              withoutRealtime(plans, shadows::ShadowLightKind::Directional, *note.lightIndex),
-                              note.reason)
+                              withoutRealtime(plans, shadows::LightKind::Directional, *note.lightIndex), note.reason)
                 : fmt::format("no shadows: {}", note.reason));
     for (std::size_t i = maxLitDirectionalLights; i < scene.lights.size(); ++i)
         notes.push_back(fmt::format("light {} ('{}') is not drawn: beyond the limit of {} directional lights", i,
                                     scene.lights[i].name, maxLitDirectionalLights));
     for (const shadows::LocalShadowNote& note : plans.local.report)
-        notes.push_back(fmt::format("{} {} ('{}') {}: {}", kindName(note.kind), note.lightIndex,
-                                    localLightName(scene, note.kind, note.lightIndex),
-                                    withoutRealtime(plans, shadowLightKind(note.kind), note.lightIndex), note.reason));
+        notes.push_back(fmt::format("{} {} ('{}') {}: {}", scene::lightKindName(note.kind), note.lightIndex,
+                                    lightName(scene, note.kind, note.lightIndex),
+                                    withoutRealtime(plans, note.kind, note.lightIndex), note.reason));
     for (const shadows::StaticShadowNote& note : plans.staticMaps.report)
-        notes.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(note.kind), note.lightIndex,
+        notes.push_back(fmt::format("{} {} ('{}'): {}", scene::lightKindName(note.kind), note.lightIndex,
                                     lightName(scene, note.kind, note.lightIndex), note.reason));
     return notes;
 }

@@ -9,11 +9,11 @@
 
 namespace penumbra::render {
 
-const std::string& lightName(const scene::Scene& scene, shadows::ShadowLightKind kind, std::uint32_t index);
+const std::string& lightName(const scene::Scene& scene, shadows::LightKind kind, std::uint32_t index);
 // Lights drawn without shadows, or not drawn at all, and why.
 std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans& plans);
 // "spot light 3 ('lamp'): a caster in its view changed": a light whose realtime tiles the frame drew again.
-std::string localShadowUpdate(const scene::Scene& scene, shadows::LocalLightKind kind, std::uint32_t index,
+std::string localShadowUpdate(const scene::Scene& scene, shadows::LightKind kind, std::uint32_t index,
                               std::string_view reason);
 // The frame's lights (directional, spot and point) with a shadow (a realtime or a static map) and without one.
 struct ShadowedLightCounts {

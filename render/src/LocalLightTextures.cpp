@@ -78,10 +78,9 @@ std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene)
     lights.reserve(scene.spotLights.size() + scene.pointLights.size());
     // The scene keeps spot cones within (0, pi / 2), as the clusters need them.
     for (const scene::SpotLight& l : scene.spotLights)
-        lights.push_back(
-            {shadows::ClusterLightKind::Spot, l.position, l.range, glm::normalize(l.direction), l.outerAngle});
+        lights.push_back({shadows::LightKind::Spot, l.position, l.range, glm::normalize(l.direction), l.outerAngle});
     for (const scene::PointLight& l : scene.pointLights)
-        lights.push_back({shadows::ClusterLightKind::Point, l.position, l.range});
+        lights.push_back({shadows::LightKind::Point, l.position, l.range});
     return lights;
 }
 

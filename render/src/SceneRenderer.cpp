@@ -138,7 +138,7 @@ shadows::StaticShadowBake SceneRenderer::bakeStaticShadows(const std::string& co
     std::optional<rhi::DepthImage> directional, local;
     for (std::size_t i = 0; i < plan.maps.size(); ++i) {
         const shadows::StaticShadowMap& map = plan.maps[i];
-        const bool isDirectional = map.kind == shadows::ShadowLightKind::Directional;
+        const bool isDirectional = map.kind == shadows::LightKind::Directional;
         std::optional<rhi::DepthImage>& depth = isDirectional ? directional : local;
         if (!depth)
             depth = rhi::readDepth(device_, (isDirectional ? staticDirectionalAtlas() : staticLocalAtlas()).texture());
@@ -363,7 +363,7 @@ std::vector<std::string> SceneRenderer::prepareStaticMaps(const FrameDesc& frame
     staticUpdateRequested_ = false;
     std::vector<std::string> updates;
     for (const StaticMapUpdate& update : draws.updates)
-        updates.push_back(fmt::format("{} {} ('{}'): {}", shadows::shadowLightKindName(update.kind), update.lightIndex,
+        updates.push_back(fmt::format("{} {} ('{}'): {}", scene::lightKindName(update.kind), update.lightIndex,
                                       lightName(gpuScene_.scene(), update.kind, update.lightIndex), update.reason));
     return updates;
 }

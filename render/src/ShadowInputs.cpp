@@ -1,48 +1,8 @@
 #include "ShadowInputs.hpp"
 
-#include "penumbra/rhi/Error.hpp"
-
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 
 namespace penumbra::render {
-namespace {
-
-shadows::NormalBiasSide biasSide(scene::NormalBiasSide side)
-{
-    return side == scene::NormalBiasSide::Caster ? shadows::NormalBiasSide::Caster : shadows::NormalBiasSide::Receiver;
-}
-
-// A scene light's shadow filter: nullopt for the atlas's, else a shadows::ShadowFilter.
-std::optional<shadows::ShadowFilter> lightFilter(std::int32_t filter, const std::string& what)
-{
-    if (filter == scene::kAtlasShadowFilter)
-        return std::nullopt;
-    if (filter < 0 || filter >= shadows::kShadowFilterCount)
-        throw rhi::Error(fmt::format("{}: shadowFilter {} is out of range, allowed {} (the atlas's) or 0..{} ({})",
-                                     what, filter, scene::kAtlasShadowFilter, shadows::kShadowFilterCount - 1,
-                                     shadows::filterCommandNames()));
-    return static_cast<shadows::ShadowFilter>(filter);
-}
-
-// A scene light's static shadow map mode: nullopt for the settings'.
-std::optional<shadows::StaticShadowUpdate> staticUpdate(scene::ShadowUpdate update)
-{
-    switch (update) {
-    case scene::ShadowUpdate::EveryFrame:
-        return shadows::StaticShadowUpdate::EveryFrame;
-    case scene::ShadowUpdate::OnChange:
-        return shadows::StaticShadowUpdate::OnChange;
-    case scene::ShadowUpdate::OnDemand:
-        return shadows::StaticShadowUpdate::OnDemand;
-    case scene::ShadowUpdate::Settings:
-        break;
-    }
-    return std::nullopt;
-}
-
-} // namespace
-
 shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect)
 {
     const glm::vec3 up = glm::normalize(glm::cross(camera.right(), camera.forward));
@@ -59,10 +19,10 @@ std::vector<shadows::DirectionalShadowLightInput> shadowLights(const std::vector
                           .normalBias = light.normalBias,
                           .slopeScaleBias = light.slopeScaleBias,
                           .castsShadows = true,
-                          .filter = lightFilter(light.shadowFilter, "light '" + light.name + "'"),
+                          .filter = light.shadowFilter,
                           .angularDiameter = light.angularDiameter,
-                          .normalBiasSide = biasSide(light.normalBiasSide),
-                          .staticUpdate = staticUpdate(light.shadowUpdate)});
+                          .normalBiasSide = light.normalBiasSide,
+                          .staticUpdate = light.shadowUpdate});
     return inputs;
 }
 
@@ -78,10 +38,10 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
                           .normalBias = l.normalBias,
                           .slopeScaleBias = l.slopeScaleBias,
                           .nearPlane = l.shadowNearPlane,
-                          .filter = lightFilter(l.shadowFilter, "spot light '" + l.name + "'"),
+                          .filter = l.shadowFilter,
                           .sourceRadius = l.sourceRadius,
-                          .normalBiasSide = biasSide(l.normalBiasSide),
-                          .staticUpdate = staticUpdate(l.shadowUpdate)});
+                          .normalBiasSide = l.normalBiasSide,
+                          .staticUpdate = l.shadowUpdate});
     return inputs;
 }
 
@@ -95,10 +55,10 @@ std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene
                           .normalBias = l.normalBias,
                           .slopeScaleBias = l.slopeScaleBias,
                           .nearPlane = l.shadowNearPlane,
-                          .filter = lightFilter(l.shadowFilter, "point light '" + l.name + "'"),
+                          .filter = l.shadowFilter,
                           .sourceRadius = l.sourceRadius,
-                          .normalBiasSide = biasSide(l.normalBiasSide),
-                          .staticUpdate = staticUpdate(l.shadowUpdate)});
+                          .normalBiasSide = l.normalBiasSide,
+                          .staticUpdate = l.shadowUpdate});
     return inputs;
 }
 

@@ -12,7 +12,7 @@
 namespace penumbra::render {
 
 shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect);
-// Throw rhi::Error naming the light for a shadowFilter out of range.
+// The lights' shadow options pass through as they are: the scene and the planners share one vocabulary.
 std::vector<shadows::DirectionalShadowLightInput> shadowLights(const std::vector<scene::DirectionalLight>& lights);
 std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::SpotLight>& lights);
 std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene::PointLight>& lights);

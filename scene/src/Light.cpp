@@ -34,17 +34,23 @@ std::optional<NormalBiasSide> parseNormalBiasSide(std::string_view name)
 
 namespace {
 
-constexpr std::array<std::string_view, 4> kUpdateNames{"settings", "everyFrame", "onChange", "onDemand"};
+// Each mode a light can have with its name: "settings" (none of its own), then StaticShadowUpdate's values.
+struct NamedUpdate {
+    LightShadowUpdate update;
+    std::string_view name;
+};
+constexpr std::array<NamedUpdate, 4> kUpdates{{{std::nullopt, "settings"},
+                                               {StaticShadowUpdate::EveryFrame, "everyFrame"},
+                                               {StaticShadowUpdate::OnChange, "onChange"},
+                                               {StaticShadowUpdate::OnDemand, "onDemand"}}};
 
 } // namespace
 
-std::string_view shadowUpdateName(ShadowUpdate update) { return kUpdateNames.at(static_cast<std::size_t>(update)); }
-
-std::optional<ShadowUpdate> parseShadowUpdate(std::string_view name)
+std::optional<LightShadowUpdate> parseLightShadowUpdate(std::string_view name)
 {
-    for (std::size_t i = 0; i < kUpdateNames.size(); ++i)
-        if (kUpdateNames[i] == name)
-            return static_cast<ShadowUpdate>(i);
+    for (const NamedUpdate& u : kUpdates)
+        if (u.name == name)
+            return u.update;
     return std::nullopt;
 }
 

@@ -15,15 +15,15 @@
 namespace penumbra::shadows {
 namespace {
 
-std::uint32_t tilesNeeded(LocalLightKind kind, PointShadowMode mode)
+std::uint32_t tilesNeeded(LightKind kind, PointShadowMode mode)
 {
-    return kind == LocalLightKind::Spot ? 1 : mode == PointShadowMode::Atlas ? cubeFaceCount : 0;
+    return kind == LightKind::Spot ? 1 : mode == PointShadowMode::Atlas ? cubeFaceCount : 0;
 }
 
 // The tiles every light that casts shadows asks for, in planning order; a light gets its tiles only
 // when all of them fit.
 struct Reservation {
-    LocalLightKind kind;
+    LightKind kind;
     std::uint32_t lightIndex;
     std::uint32_t firstTile;
 };
@@ -54,7 +54,7 @@ std::optional<std::string> shadowsNothing(const LightReach& light, const ShadowC
     return std::nullopt;
 }
 
-void reserve(Reservations& r, LocalShadowPlan& plan, LocalLightKind kind, std::uint32_t index, float strength,
+void reserve(Reservations& r, LocalShadowPlan& plan, LightKind kind, std::uint32_t index, float strength,
              PointShadowMode mode, const std::optional<std::string>& nothingToShadow)
 {
     if (!(strength > 0.0f)) {
@@ -65,7 +65,7 @@ void reserve(Reservations& r, LocalShadowPlan& plan, LocalLightKind kind, std::u
         plan.report.push_back({kind, index, *nothingToShadow});
         return;
     }
-    if (kind == LocalLightKind::Point && mode == PointShadowMode::CubeMap) {
+    if (kind == LightKind::Point && mode == PointShadowMode::CubeMap) {
         if (r.cubes.size() == maxShadowCubes) {
             plan.report.push_back({kind, index, fmt::format("all {} shadow cube maps are taken", maxShadowCubes)});
             return;
@@ -81,7 +81,7 @@ void reserve(Reservations& r, LocalShadowPlan& plan, LocalLightKind kind, std::u
                                            maxLocalShadowTiles, maxLocalShadowTiles - r.tileCount)});
         return;
     }
-    (kind == LocalLightKind::Spot ? plan.spotTiles : plan.pointShadows)[index] = static_cast<int>(r.tileCount);
+    (kind == LightKind::Spot ? plan.spotTiles : plan.pointShadows)[index] = static_cast<int>(r.tileCount);
     r.atlas.push_back({kind, index, r.tileCount});
     r.tileCount += needed;
 }
@@ -248,19 +248,19 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
             !cullCastersInFrustum(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
                                   localShadowNearPlane(spot.range, spot.nearPlane, local), spot.range, casterBounds)
                  .empty();
-        reserve(r, plan, LocalLightKind::Spot, i, spot.strength, local.pointMode,
+        reserve(r, plan, LightKind::Spot, i, spot.strength, local.pointMode,
                 shadowsNothing({spot.position, spot.range, anyCaster}, camera, settings.maxDistance));
     }
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const PointShadowInput& point = points[i];
         const bool anyCaster = castersInRange(point.position, point.range, casterBounds);
-        reserve(r, plan, LocalLightKind::Point, i, point.strength, local.pointMode,
+        reserve(r, plan, LightKind::Point, i, point.strength, local.pointMode,
                 shadowsNothing({point.position, point.range, anyCaster}, camera, settings.maxDistance));
     }
 
     plan.atlas = ShadowAtlasLayout(local.atlasSize, r.tileCount);
     for (const Reservation& reservation : r.atlas) {
-        if (reservation.kind == LocalLightKind::Spot)
+        if (reservation.kind == LightKind::Spot)
             planSpot(plan, local, spots[reservation.lightIndex], reservation.firstTile, conventions, casterBounds);
         else
             planPointTiles(plan, local, points[reservation.lightIndex], reservation.firstTile, conventions,

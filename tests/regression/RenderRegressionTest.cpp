@@ -113,7 +113,7 @@ render::FrameDesc smallFrame(const FrameChange& change)
 bool hasMapOf(const shadows::StaticShadowPlan& plan, bool directional)
 {
     return std::any_of(plan.maps.begin(), plan.maps.end(), [&](const shadows::StaticShadowMap& map) {
-        return (map.kind == shadows::ShadowLightKind::Directional) == directional;
+        return (map.kind == shadows::LightKind::Directional) == directional;
     });
 }
 

@@ -581,9 +581,9 @@ TEST_F(GltfLoaderTest, ALightsExtrasSetItsStaticMapMode)
     lights[0]["extras"]["shadowUpdate"] = "onDemand";
     lights[2]["extras"]["shadowUpdate"] = "everyFrame";
     const Scene scene = gltf::loadGltf(write(b)).scene;
-    EXPECT_EQ(scene.lights[0].shadowUpdate, ShadowUpdate::OnDemand);
-    EXPECT_EQ(scene.spotLights[0].shadowUpdate, ShadowUpdate::Settings);
-    EXPECT_EQ(scene.pointLights[0].shadowUpdate, ShadowUpdate::EveryFrame);
+    EXPECT_EQ(scene.lights[0].shadowUpdate, StaticShadowUpdate::OnDemand);
+    EXPECT_EQ(scene.spotLights[0].shadowUpdate, std::nullopt);
+    EXPECT_EQ(scene.pointLights[0].shadowUpdate, StaticShadowUpdate::EveryFrame);
     lights[1]["extras"]["shadowUpdate"] = "sometimes";
     EXPECT_CONTAINS(errorOf(write(b)),
                     "light 1 ('spot'): extras.shadowUpdate is not one of settings, everyFrame, onChange, onDemand");

@@ -37,7 +37,7 @@ std::vector<ClusterLight> randomLights(std::mt19937& rng, std::size_t count)
     for (std::size_t i = 0; i < count; ++i) {
         ClusterLight light{.position = {x(rng), y(rng), z(rng)}, .range = range(rng)};
         if (i % 2 == 1) {
-            light.kind = ClusterLightKind::Spot;
+            light.kind = LightKind::Spot;
             light.direction = testing::randomUnit(rng);
             light.outerAngle = angle(rng);
         }
@@ -147,13 +147,13 @@ TEST(LightClusters, SpotConesSkipClustersBesideThem)
 {
     const ShadowCamera camera = streetCamera();
     // A narrow spot light pointing down ahead of the camera, and a point light of the same range there.
-    const ClusterLight spot{.kind = ClusterLightKind::Spot,
+    const ClusterLight spot{.kind = LightKind::Spot,
                             .position = {0.0f, 6.0f, 120.0f},
                             .range = 10.0f,
                             .direction = {0.0f, -1.0f, 0.0f},
                             .outerAngle = 0.3f};
     ClusterLight point = spot;
-    point.kind = ClusterLightKind::Point;
+    point.kind = LightKind::Point;
     const LightClusters spotClusters = buildLightClusters(camera, std::vector<ClusterLight>{spot});
     const LightClusters pointClusters = buildLightClusters(camera, std::vector<ClusterLight>{point});
     EXPECT_GT(spotClusters.lightIndices.size(), 0u);
@@ -182,8 +182,7 @@ TEST(LightClusters, RejectsBadGridsCamerasAndLights)
     flat.farPlane = flat.nearPlane;
     EXPECT_THROW(buildLightClusters(flat, {}), rhi::Error);
     EXPECT_THROW(buildLightClusters(camera, std::vector<ClusterLight>{{.range = 0.0f}}), rhi::Error);
-    EXPECT_THROW(buildLightClusters(camera,
-                                    std::vector<ClusterLight>{{.kind = ClusterLightKind::Spot, .outerAngle = 1.6f}}),
+    EXPECT_THROW(buildLightClusters(camera, std::vector<ClusterLight>{{.kind = LightKind::Spot, .outerAngle = 1.6f}}),
                  rhi::Error);
 }
 

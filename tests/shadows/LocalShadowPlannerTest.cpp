@@ -159,7 +159,7 @@ TEST(LocalAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
     EXPECT_EQ(plan.spotTiles, (std::vector<int>{0, 1, 2, 3, 4}));
     EXPECT_EQ(plan.pointShadows, (std::vector<int>{5, -1, -1}));
     ASSERT_EQ(plan.report.size(), 2u);
-    EXPECT_EQ(plan.report[0].kind, LocalLightKind::Point);
+    EXPECT_EQ(plan.report[0].kind, LightKind::Point);
     EXPECT_EQ(plan.report[0].lightIndex, 1u);
     EXPECT_EQ(plan.report[0].reason, "shadow strength is 0");
     EXPECT_EQ(plan.report[1].lightIndex, 2u);

@@ -46,7 +46,7 @@ TEST(StaticShadowPlanner, DirectionalMapHoldsEveryStaticCasterInsideItsTile)
         EXPECT_EQ(plan.uniforms.directionalLights[1].tile, -1);
         for (std::uint32_t m = 0; m < 2; ++m) {
             const StaticShadowMap& map = plan.maps[m];
-            EXPECT_EQ(map.kind, ShadowLightKind::Directional);
+            EXPECT_EQ(map.kind, LightKind::Directional);
             ASSERT_EQ(map.tiles.size(), 1u);
             EXPECT_EQ(map.tiles[0].casters, kStatic);
             const glm::vec4 bounds = plan.uniforms.directionalBounds[map.tiles[0].tile];
@@ -77,9 +77,9 @@ TEST(StaticShadowPlanner, SpotAndPointMapsTakeTilesInTheLitPassOrder)
     const StaticShadowPlan plan =
         planStaticShadows(cachedSettings(), conventions, {}, spots, points, {kBounds, kStatic});
     ASSERT_EQ(plan.maps.size(), 2u);
-    EXPECT_EQ(plan.maps[0].kind, ShadowLightKind::Spot);
+    EXPECT_EQ(plan.maps[0].kind, LightKind::Spot);
     EXPECT_EQ(plan.maps[0].tiles.size(), 1u);
-    EXPECT_EQ(plan.maps[1].kind, ShadowLightKind::Point);
+    EXPECT_EQ(plan.maps[1].kind, LightKind::Point);
     EXPECT_EQ(plan.maps[1].tiles.size(), 6u);
     EXPECT_EQ(plan.localAtlas.tileCount(), 7u);
     // The spot light sees the first box below it, never the dynamic one's index.

@@ -191,7 +191,7 @@ std::vector<PenumbraRow> pcssPenumbraRows(rhi::Device& device, float degrees, st
 {
     scene::Scene scene = wallScene();
     scene.lights[0].angularDiameter = degrees;
-    scene.lights[0].shadowFilter = static_cast<std::int32_t>(shadows::ShadowFilter::PCSS);
+    scene.lights[0].shadowFilter = shadows::ShadowFilter::PCSS;
     render::SceneRenderer renderer(device, scene);
     render::FrameDesc frame;
     frame.width = kWidth;

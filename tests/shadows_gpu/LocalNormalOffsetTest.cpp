@@ -41,7 +41,7 @@ scene::Scene bareGround()
     const std::uint32_t grey = s.addMaterial({.name = "grey", .baseColor = {0.7f, 0.7f, 0.7f, 1.0f}});
     s.addObject("ground", s.addMesh(scene::makeBox({100.0f, 0.1f, 100.0f})), grey,
                 glm::translate(glm::mat4(1.0f), {0.0f, -0.1f, 0.0f}));
-    const auto hard = static_cast<std::int32_t>(shadows::ShadowFilter::PCF2x2);
+    const auto hard = shadows::ShadowFilter::PCF2x2;
     s.spotLights = {
         {.name = "spot", .innerAngle = 0.2f, .outerAngle = 0.3f, .slopeScaleBias = 0.0f, .shadowFilter = hard}};
     s.pointLights = {{.name = "bulb", .slopeScaleBias = 0.0f, .shadowFilter = hard}};

@@ -348,7 +348,7 @@ TEST_F(ShadowMaskTest, ForestAgreesWithTheRayCastWithEveryFilter)
 TEST_F(ShadowMaskTest, ALightsOwnFilterIsJudgedWithItsReach)
 {
     scene::Scene scene = scenes::makeContactScene();
-    scene.lights[0].shadowFilter = static_cast<std::int32_t>(shadows::ShadowFilter::PCF7x7);
+    scene.lights[0].shadowFilter = shadows::ShadowFilter::PCF7x7;
     const render::FrameDesc frame = maskFrame({}, 1280, 720, kKeyLight);
     const TruthFigures f = report(*this, "contact pcf7", renderMask(scene, frame), traceTruth(gpu(), scene, frame));
     const std::vector<std::string> failures = truthFailures(f, 300);

@@ -38,9 +38,8 @@ constexpr double kPcssOverBestFixed = 0.5;
 scene::Scene contactScene(LightKind kind, ShadowFilter filter)
 {
     scene::Scene scene = scenes::makeContactScene();
-    const auto value = static_cast<std::int32_t>(filter);
     if (kind == LightKind::Directional) {
-        scene.lights[0].shadowFilter = value;
+        scene.lights[0].shadowFilter = filter;
         return scene;
     }
     scene.lights.clear();
@@ -54,14 +53,14 @@ scene::Scene contactScene(LightKind kind, ShadowFilter filter)
                                     .innerAngle = 0.7f,
                                     .outerAngle = 1.0f,
                                     .sourceRadius = 0.15f,
-                                    .shadowFilter = value});
+                                    .shadowFilter = filter});
     else
         scene.pointLights.push_back({.name = "point",
                                      .intensity = 20.0f,
                                      .position = position,
                                      .range = 15.0f,
                                      .sourceRadius = 0.15f,
-                                     .shadowFilter = value});
+                                     .shadowFilter = filter});
     scene.validate();
     return scene;
 }
@@ -113,13 +112,12 @@ int penumbraWidth(At visibilityAt, std::uint32_t x, std::uint32_t firstRow, std:
 // The light's filter in `scene` (the renderer reads its scene's lights every frame).
 void setFilter(scene::Scene& scene, LightKind kind, ShadowFilter filter)
 {
-    const auto value = static_cast<std::int32_t>(filter);
     if (kind == LightKind::Directional)
-        scene.lights[0].shadowFilter = value;
+        scene.lights[0].shadowFilter = filter;
     else if (kind == LightKind::Spot)
-        scene.spotLights[0].shadowFilter = value;
+        scene.spotLights[0].shadowFilter = filter;
     else
-        scene.pointLights[0].shadowFilter = value;
+        scene.pointLights[0].shadowFilter = filter;
 }
 
 // The fixed Poisson filter's radius (texels) of least error, and that error.
@@ -271,7 +269,7 @@ TEST_F(SoftShadowsTest, HardTentPoissonAndPcssLightsShareOneFrame)
     scene.lights.push_back({.name = "hard sun",
                             .intensity = 1.0f,
                             .direction = glm::normalize(glm::vec3(-1.0f, -1.5f, 0.5f)),
-                            .shadowFilter = static_cast<std::int32_t>(ShadowFilter::PCF2x2)});
+                            .shadowFilter = ShadowFilter::PCF2x2});
     scene.spotLights.push_back({.name = "tent spot",
                                 .intensity = 10.0f,
                                 .position = {2.0f, 4.0f, 2.0f},
@@ -279,13 +277,13 @@ TEST_F(SoftShadowsTest, HardTentPoissonAndPcssLightsShareOneFrame)
                                 .range = 12.0f,
                                 .innerAngle = 0.6f,
                                 .outerAngle = 0.9f,
-                                .shadowFilter = static_cast<std::int32_t>(ShadowFilter::PCF5x5)});
+                                .shadowFilter = ShadowFilter::PCF5x5});
     scene.pointLights.push_back({.name = "poisson point",
                                  .intensity = 10.0f,
                                  .position = {-1.0f, 3.0f, -1.5f},
                                  .range = 12.0f,
                                  .sourceRadius = 0.2f,
-                                 .shadowFilter = static_cast<std::int32_t>(ShadowFilter::Poisson)});
+                                 .shadowFilter = ShadowFilter::Poisson});
     scene.validate();
     render::SceneRenderer renderer(*device, scene);
     const auto share = [&](LightRef light) {

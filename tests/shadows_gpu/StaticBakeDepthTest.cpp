@@ -52,13 +52,13 @@ struct StaticAtlases {
     rhi::DepthImage directional, local;
     const rhi::DepthImage& of(const shadows::StaticShadowMap& map) const
     {
-        return map.kind == shadows::ShadowLightKind::Directional ? directional : local;
+        return map.kind == shadows::LightKind::Directional ? directional : local;
     }
 };
 
 const shadows::ShadowAtlasLayout& layoutOf(const shadows::StaticShadowPlan& plan, const shadows::StaticShadowMap& map)
 {
-    return map.kind == shadows::ShadowLightKind::Directional ? plan.directionalAtlas : plan.localAtlas;
+    return map.kind == shadows::LightKind::Directional ? plan.directionalAtlas : plan.localAtlas;
 }
 
 // Calls f(tile index, baked index, texel's x and y in the atlas) for every texel of the map's tiles, in the bake's

@@ -134,30 +134,30 @@ TEST_F(StaticShadowsTest, AChangeDrawsExactlyTheMapsItTouches)
     EXPECT_EQ(updated(), kNoMap);
 }
 
-bool hasStaticMap(const render::SceneRenderer& renderer, shadows::ShadowLightKind kind)
+bool hasStaticMap(const render::SceneRenderer& renderer, shadows::LightKind kind)
 {
     const std::vector<shadows::StaticShadowMap>& maps = renderer.staticPlan().maps;
     return std::any_of(maps.begin(), maps.end(), [&](const shadows::StaticShadowMap& m) { return m.kind == kind; });
 }
 
-// Each light in a mode of its own (scene::ShadowUpdate) under settings that keep no static maps: the sun on demand,
-// the lamp on change, a bulb every frame (no static map at all).
+// Each light in a mode of its own (scene::LightShadowUpdate) under settings that keep no static maps: the sun on
+// demand, the lamp on change, a bulb every frame (no static map at all).
 TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
 {
     scene::Scene scene = boxesUnderASpot();
-    scene.lights[0].shadowUpdate = scene::ShadowUpdate::OnDemand;
-    scene.spotLights[0].shadowUpdate = scene::ShadowUpdate::OnChange;
+    scene.lights[0].shadowUpdate = shadows::StaticShadowUpdate::OnDemand;
+    scene.spotLights[0].shadowUpdate = shadows::StaticShadowUpdate::OnChange;
     scene.pointLights.push_back({.name = "bulb",
                                  .intensity = 10.0f,
                                  .position = {3.0f, 2.5f, 1.0f},
                                  .range = 8.0f,
-                                 .shadowUpdate = scene::ShadowUpdate::EveryFrame});
+                                 .shadowUpdate = shadows::StaticShadowUpdate::EveryFrame});
     const scene::Scene first = scene;
     render::FrameDesc frame = staticMapsFrame(shadows::StaticShadowUpdate::EveryFrame);
     render::SceneRenderer renderer(*device, scene);
     const auto updated = [&] { return lightsOf(renderer.render(scene.camera, frame).staticMapUpdates); };
     EXPECT_EQ(updated(), kBothMaps);
-    EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point)) << "the bulb draws every frame";
+    EXPECT_FALSE(hasStaticMap(renderer, shadows::LightKind::Point)) << "the bulb draws every frame";
     const rhi::Image mixed = read(renderer);
     EXPECT_EQ(updated(), kNoMap);
     moveObject(scene, "a", {0.3f, 0.0f, 0.0f}); // in the lamp's cone and the sun's view
@@ -172,16 +172,16 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     // both maps drawn again, the first picture again.
     scene.objects.at(scene.findObject("a").value()) = first.objects.at(first.findObject("a").value());
     scene.lights[0] = first.lights[0];
-    scene.lights[0].shadowUpdate = scene::ShadowUpdate::Settings;
-    scene.spotLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
+    scene.lights[0].shadowUpdate = std::nullopt;
+    scene.spotLights[0].shadowUpdate = std::nullopt;
     frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
     EXPECT_EQ(updated(), kBothMaps);
-    EXPECT_FALSE(hasStaticMap(renderer, shadows::ShadowLightKind::Point));
+    EXPECT_FALSE(hasStaticMap(renderer, shadows::LightKind::Point));
     const rhi::Image again = read(renderer);
     EXPECT_LE(differingShare(mixed, again), 0.001)
         << picture(mixed, "mixed-modes") << " vs " << picture(again, "on-change");
     // The bulb's six tiles reshape the static local atlas: the lamp's tile moves with them.
-    scene.pointLights[0].shadowUpdate = scene::ShadowUpdate::Settings;
+    scene.pointLights[0].shadowUpdate = std::nullopt;
     EXPECT_EQ(updated(), (std::vector<std::string>{kLampMap[0], "point light 0 ('bulb')"}));
 }
 
@@ -234,18 +234,18 @@ TEST_F(StaticShadowsTest, StaticMapsTakeTheLightsSoftFilter)
     };
     struct Case {
         scene::LightRef light;
-        std::int32_t* filter;
+        std::optional<ShadowFilter>* filter;
         ShadowFilter soft;
     };
     for (const Case& c :
          {Case{{scene::LightKind::Directional, 0}, &scene.lights[0].shadowFilter, ShadowFilter::PCSS},
           Case{{scene::LightKind::Spot, 0}, &scene.spotLights[0].shadowFilter, ShadowFilter::Poisson}}) {
-        *c.filter = static_cast<std::int32_t>(c.soft);
+        *c.filter = c.soft;
         const rhi::Image realtime = view(c.light, 100.0f, shadows::StaticShadowUpdate::EveryFrame);
         const rhi::Image fromStatic = view(c.light, 0.01f, shadows::StaticShadowUpdate::OnChange);
-        *c.filter = static_cast<std::int32_t>(ShadowFilter::PCF2x2);
+        *c.filter = ShadowFilter::PCF2x2;
         const rhi::Image hard = view(c.light, 0.01f, shadows::StaticShadowUpdate::OnChange);
-        *c.filter = scene::kAtlasShadowFilter;
+        *c.filter = std::nullopt;
         const SoftShadowSummary r = softSummary(fromStatic, realtime);
         const SoftShadowSummary st = softSummary(realtime, fromStatic);
         const SoftShadowSummary h = softSummary(realtime, hard);

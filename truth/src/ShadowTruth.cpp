@@ -105,7 +105,7 @@ float shadowTexelSize(const render::ShadowPlans& plans, const shadows::ShadowSet
         // A static map decides with the realtime shadow (the darker of the two), or alone beyond the cascades.
         float texel = directionalTexel(plans.directional, light.index, scene.camera, position);
         for (const shadows::StaticShadowMap& map : plans.staticMaps.maps)
-            if (map.kind == shadows::ShadowLightKind::Directional && map.lightIndex == light.index)
+            if (map.kind == shadows::LightKind::Directional && map.lightIndex == light.index)
                 texel = std::max(texel, map.texelSize);
         return texel;
     }

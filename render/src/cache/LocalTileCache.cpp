@@ -15,13 +15,11 @@ std::map<std::uint32_t, LocalShadowRedraw> tileLights(const shadows::LocalShadow
     std::map<std::uint32_t, LocalShadowRedraw> lights;
     for (std::uint32_t i = 0; i < plan.spotTiles.size(); ++i)
         if (plan.spotTiles[i] >= 0)
-            lights[static_cast<std::uint32_t>(plan.spotTiles[i])] = {shadows::LocalLightKind::Spot, i, {}};
+            lights[static_cast<std::uint32_t>(plan.spotTiles[i])] = {shadows::LightKind::Spot, i, {}};
     if (plan.cubes.empty())
         for (std::uint32_t i = 0; i < plan.pointShadows.size(); ++i)
             for (std::uint32_t face = 0; plan.pointShadows[i] >= 0 && face < shadows::cubeFaceCount; ++face)
-                lights[static_cast<std::uint32_t>(plan.pointShadows[i]) + face] = {shadows::LocalLightKind::Point,
-                                                                                   i,
-                                                                                   {}};
+                lights[static_cast<std::uint32_t>(plan.pointShadows[i]) + face] = {shadows::LightKind::Point, i, {}};
     return lights;
 }
 

@@ -16,7 +16,7 @@ namespace penumbra::render {
 
 // A spot or point light whose atlas tiles a frame drew again, and why.
 struct LocalShadowRedraw {
-    shadows::LocalLightKind kind = shadows::LocalLightKind::Spot;
+    shadows::LightKind kind = shadows::LightKind::Spot;
     std::uint32_t lightIndex = 0;
     std::string reason;
 };

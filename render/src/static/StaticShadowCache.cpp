@@ -3,6 +3,7 @@
 #include "TileKeys.hpp"
 
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/Light.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +31,7 @@ std::uint64_t casterKey(const shadows::StaticShadowMap& map, std::span<const sha
     return h.value();
 }
 
-bool isDirectional(const shadows::StaticShadowMap& map) { return map.kind == shadows::ShadowLightKind::Directional; }
+bool isDirectional(const shadows::StaticShadowMap& map) { return map.kind == shadows::LightKind::Directional; }
 
 std::vector<const shadows::StaticShadowMap*> mapsAt(const shadows::StaticShadowPlan& plan,
                                                     const std::vector<std::size_t>& indices)
@@ -78,7 +79,7 @@ bool sameTiles(const shadows::StaticShadowMap& a, const shadows::StaticShadowMap
 
 std::string mapName(const shadows::StaticShadowMap& map)
 {
-    return fmt::format("{} {}", shadows::shadowLightKindName(map.kind), map.lightIndex);
+    return fmt::format("{} {}", scene::lightKindName(map.kind), map.lightIndex);
 }
 
 } // namespace

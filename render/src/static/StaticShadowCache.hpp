@@ -19,7 +19,7 @@ namespace penumbra::render {
 
 // One static map drawn this frame, and why.
 struct StaticMapUpdate {
-    shadows::ShadowLightKind kind = shadows::ShadowLightKind::Directional;
+    shadows::LightKind kind = shadows::LightKind::Directional;
     std::uint32_t lightIndex = 0;
     std::string reason;
 };
@@ -70,7 +70,7 @@ private:
         std::uint64_t view = 0; // tiles, viewports, matrices, biases
         std::uint64_t casters = 0; // the static casters drawn and what they are
     };
-    using LightId = std::pair<shadows::ShadowLightKind, std::uint32_t>;
+    using LightId = std::pair<shadows::LightKind, std::uint32_t>;
 
     // Whether the atlas had to be created anew (its old tiles are gone).
     static bool prepareAtlas(rhi::Device& device, std::unique_ptr<shadows::ShadowAtlas>& atlas, std::uint32_t size,

@@ -113,9 +113,9 @@ private:
     std::filesystem::path path_;
 };
 
-ShadowLightKind kindNamed(const ManifestReader& r, const std::string& pointer, const std::string& name)
+LightKind kindNamed(const ManifestReader& r, const std::string& pointer, const std::string& name)
 {
-    for (const ShadowLightKind kind : {ShadowLightKind::Directional, ShadowLightKind::Spot, ShadowLightKind::Point})
+    for (const LightKind kind : {LightKind::Directional, LightKind::Spot, LightKind::Point})
         if (bakedKindName(kind) == name)
             return kind;
     r.fail(pointer, fmt::format("expected \"directional\", \"spot\" or \"point\", got \"{}\"", name));
@@ -128,14 +128,14 @@ std::string depthFileName(const BakedShadowMap& map)
 
 } // namespace
 
-std::string_view bakedKindName(ShadowLightKind kind)
+std::string_view bakedKindName(LightKind kind)
 {
     switch (kind) {
-    case ShadowLightKind::Spot:
+    case LightKind::Spot:
         return "spot";
-    case ShadowLightKind::Point:
+    case LightKind::Point:
         return "point";
-    case ShadowLightKind::Directional:
+    case LightKind::Directional:
         break;
     }
     return "directional";

@@ -52,7 +52,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
             continue;
         if (selected.size() == maxStaticDirectionalMaps) {
             plan.report.push_back(
-                {ShadowLightKind::Directional, i,
+                {LightKind::Directional, i,
                  fmt::format("no static map: all {} static directional maps are taken", maxStaticDirectionalMaps)});
             continue;
         }
@@ -98,7 +98,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
                                                       .normalOffset = casterSide ? 0.0f : reach,
                                                       .shadowFilter = static_cast<std::int32_t>(filter)};
         const ShadowFrustum frustum{fit.view, false, fit.halfSize, 0.0f, fit.farDepth - fit.nearDepth};
-        plan.maps.push_back({ShadowLightKind::Directional,
+        plan.maps.push_back({LightKind::Directional,
                              index,
                              {{{tile, plan.directionalAtlas.viewport(tile), view, all}, fit.projection, frustum}},
                              fit.texelSize,
@@ -109,7 +109,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
 
 // What a spot or point light's static map needs of it.
 struct LocalLightInput {
-    ShadowLightKind kind;
+    LightKind kind;
     std::uint32_t index;
     glm::vec3 position;
     glm::vec3 direction; // spot lights
@@ -131,15 +131,14 @@ std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots,
     std::vector<LocalLightInput> inputs;
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& s = spots[i];
-        inputs.push_back({ShadowLightKind::Spot, i, s.position, s.direction, s.range, s.outerAngle, s.strength,
-                          s.normalBias, s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide, s.staticUpdate,
-                          s.sourceRadius});
+        inputs.push_back({LightKind::Spot, i, s.position, s.direction, s.range, s.outerAngle, s.strength, s.normalBias,
+                          s.slopeScaleBias, s.nearPlane, s.filter, s.normalBiasSide, s.staticUpdate, s.sourceRadius});
     }
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const PointShadowInput& p = points[i];
-        inputs.push_back({ShadowLightKind::Point, i, p.position, glm::vec3(0.0f, -1.0f, 0.0f), p.range, 0.0f,
-                          p.strength, p.normalBias, p.slopeScaleBias, p.nearPlane, p.filter, p.normalBiasSide,
-                          p.staticUpdate, p.sourceRadius});
+        inputs.push_back({LightKind::Point, i, p.position, glm::vec3(0.0f, -1.0f, 0.0f), p.range, 0.0f, p.strength,
+                          p.normalBias, p.slopeScaleBias, p.nearPlane, p.filter, p.normalBiasSide, p.staticUpdate,
+                          p.sourceRadius});
     }
     return inputs;
 }
@@ -152,7 +151,7 @@ struct LocalViews {
 
 LocalViews localViews(const LocalLightInput& light, std::uint32_t tileSize, ShadowFilter filter)
 {
-    if (light.kind == ShadowLightKind::Spot)
+    if (light.kind == LightKind::Spot)
         return {2.0f * light.outerAngle, {spotView(light.position, light.direction)}};
     LocalViews faces{pointFaceFieldOfView(tileSize, filter, light.normalBias), {}};
     for (std::uint32_t face = 0; face < cubeFaceCount; ++face)
@@ -172,7 +171,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
     for (const LocalLightInput& light : inputs) {
         if (!(light.strength > 0.0f) || staticUpdateOf(light.staticUpdate, settings) == StaticShadowUpdate::EveryFrame)
             continue;
-        const std::uint32_t needed = light.kind == ShadowLightKind::Spot ? 1 : cubeFaceCount;
+        const std::uint32_t needed = light.kind == LightKind::Spot ? 1 : cubeFaceCount;
         if (tiles + needed > maxStaticLocalTiles) {
             plan.report.push_back({light.kind, light.index,
                                    fmt::format("no static map: needs {} of the static local atlas's {} tiles, {} "
@@ -193,7 +192,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
         const glm::mat4 projection = conventions.perspective(views.fov, 1.0f, nearPlane, light->range);
         const float bias = localNormalBiasScale(projection, tileSize, filter, light->normalBias);
         const bool casterSide = light->normalBiasSide == NormalBiasSide::Caster;
-        const std::uint32_t litIndex = light->index + (light->kind == ShadowLightKind::Point ? spots.size() : 0);
+        const std::uint32_t litIndex = light->index + (light->kind == LightKind::Point ? spots.size() : 0);
         plan.localLightMaps[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
         StaticShadowMap map{light->kind, light->index, {}, 0.0f, staticUpdateOf(light->staticUpdate, settings),
                             litIndex};
@@ -241,19 +240,6 @@ float windowShadowDepth(float linearDepth, const glm::mat4& projection, const rh
     const glm::mat2 r = depthRows(projection, conventions);
     const float z = -linearDepth;
     return (r[0][0] * z + r[1][0]) / (r[0][1] * z + r[1][1]);
-}
-
-std::string_view shadowLightKindName(ShadowLightKind kind)
-{
-    switch (kind) {
-    case ShadowLightKind::Directional:
-        return "directional light";
-    case ShadowLightKind::Spot:
-        return "spot light";
-    case ShadowLightKind::Point:
-        return "point light";
-    }
-    return "light";
 }
 
 StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,

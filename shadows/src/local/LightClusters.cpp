@@ -164,7 +164,7 @@ void validate(const ShadowCamera& camera, std::span<const ClusterLight> lights, 
         if (!(l.range > 0.0f && std::isfinite(l.range)))
             throw rhi::Error(
                 fmt::format("light clusters: light {} has range {}, allowed a positive finite number", i, l.range));
-        if (l.kind == ClusterLightKind::Spot && !(l.outerAngle > 0.0f && l.outerAngle < 0.5f * 3.14159265f))
+        if (l.kind == LightKind::Spot && !(l.outerAngle > 0.0f && l.outerAngle < 0.5f * 3.14159265f))
             throw rhi::Error(fmt::format("light clusters: spot light {} has outer angle {}, allowed 0 to pi/2 "
                                          "(exclusive)",
                                          i, l.outerAngle));
@@ -197,8 +197,7 @@ bool lightReaches(const ClusterLight& light, glm::vec3 world)
     const float distance = glm::length(d);
     if (distance > light.range)
         return false;
-    return light.kind == ClusterLightKind::Point ||
-           glm::dot(d, light.direction) >= std::cos(light.outerAngle) * distance;
+    return light.kind == LightKind::Point || glm::dot(d, light.direction) >= std::cos(light.outerAngle) * distance;
 }
 
 LightClusters buildLightClusters(const ShadowCamera& camera, std::span<const ClusterLight> lights,
@@ -221,7 +220,7 @@ LightClusters buildLightClusters(const ShadowCamera& camera, std::span<const Clu
     for (std::uint32_t i = 0; i < lights.size(); ++i) {
         const ClusterLight& light = lights[i];
         const Sphere reach{view.toView(light.position), light.range};
-        const bool spot = light.kind == ClusterLightKind::Spot;
+        const bool spot = light.kind == LightKind::Spot;
         const glm::vec3 axis = spot ? glm::normalize(view.directionToView(light.direction)) : glm::vec3(0.0f);
         const Sphere bound = spot ? spotBoundingSphere(reach.centre, axis, light.range, light.outerAngle) : reach;
         if (bound.centre.z + bound.radius < g.nearPlane || bound.centre.z - bound.radius > g.farPlane)

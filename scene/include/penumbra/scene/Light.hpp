@@ -1,5 +1,7 @@
 #pragma once
 
+#include "penumbra/scene/LightShadowOptions.hpp"
+
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -9,29 +11,17 @@
 
 namespace penumbra::scene {
 
-// Where a light's normal bias moves things (shadows::NormalBiasSide): the receivers' shadow lookups towards the
-// light, or the casters' vertices away from it in the shadow pass.
-enum class NormalBiasSide : std::uint8_t { Receiver, Caster };
-
 // "receiver", "caster": the names on the command line and in the viewer.
 std::string_view normalBiasSideName(NormalBiasSide side);
 std::optional<NormalBiasSide> parseNormalBiasSide(std::string_view name);
-// When a light's static shadow map (penumbra::shadows::StaticShadowUpdate) is drawn: as the shadow settings'
-// static.update says, or the light's own mode. The names are the settings JSON's: "settings", "everyFrame",
-// "onChange", "onDemand".
-enum class ShadowUpdate : std::uint8_t { Settings, EveryFrame, OnChange, OnDemand };
-std::string_view shadowUpdateName(ShadowUpdate update);
-std::optional<ShadowUpdate> parseShadowUpdate(std::string_view name);
+// A light's own static shadow map mode, or std::nullopt to follow the shadow settings' static.update.
+using LightShadowUpdate = std::optional<StaticShadowUpdate>;
+// The mode named `name` in glTF extras or on the command line ("settings" for nullopt, "everyFrame", "onChange",
+// "onDemand"), or nullopt when no mode has that name.
+std::optional<LightShadowUpdate> parseLightShadowUpdate(std::string_view name);
 // "settings, everyFrame, onChange, onDemand": for messages.
-inline constexpr const char* kShadowUpdateNames = "settings, everyFrame, onChange, onDemand";
+inline constexpr const char* kLightShadowUpdateNames = "settings, everyFrame, onChange, onDemand";
 
-// A light's own shadow filter: a penumbra::shadows::ShadowFilter value, or kAtlasShadowFilter for the shadow
-// settings' (the atlas's) filter. The renderer checks the value.
-inline constexpr std::int32_t kAtlasShadowFilter = -1;
-
-// Default source sizes: the sun's angular diameter (about 0.53 degrees) and a 5 cm bulb.
-inline constexpr float kDefaultAngularDiameter = 0.53f;
-inline constexpr float kDefaultSourceRadius = 0.05f;
 // Largest angular diameter a directional light may have, degrees (a soft-shadow filter's reach ends far earlier).
 inline constexpr float kMaxAngularDiameter = 30.0f;
 
@@ -42,13 +32,15 @@ struct DirectionalLight {
     float intensity = 1.0f;
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // unit, from the light INTO the scene; surfaces are lit from -direction
     float shadowStrength = 1.0f; // 0: shadows ignored, 1: fully dark
-    float slopeScaleBias = 1.0f; // the RHI's depth-bias slope factor for this light's casters
-    float normalBias = 1.0f; // receiver offset along its normal, in units of the cascade's filter-sized texel diagonal
-    float nearPlaneOffset = 0.2f; // pulls the shadow projection's near plane back, in world units
+    float slopeScaleBias = LightShadowDefaults::slopeScaleBias; // the RHI's depth-bias slope factor for the casters
+    float normalBias =
+        LightShadowDefaults::normalBias; // along the normal, in the cascade's filter-sized texel diagonals
+    float nearPlaneOffset = LightShadowDefaults::nearPlaneOffset; // pulls the shadow near plane back, world units
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
-    float angularDiameter = kDefaultAngularDiameter; // source size, degrees, 0..kMaxAngularDiameter (soft shadows)
-    std::int32_t shadowFilter = kAtlasShadowFilter;
-    ShadowUpdate shadowUpdate = ShadowUpdate::Settings;
+    float angularDiameter =
+        LightShadowDefaults::angularDiameter; // source size, degrees, 0..kMaxAngularDiameter (soft shadows)
+    std::optional<ShadowFilter> shadowFilter; // nullopt: the shadow settings' (the atlas's) filter
+    LightShadowUpdate shadowUpdate;
 };
 
 // A cone light. Its light falls off with distance (zero at range) and between the inner and
@@ -63,13 +55,14 @@ struct SpotLight {
     float innerAngle = 0.4f; // half-angle of full intensity, radians, 0 <= inner < outer
     float outerAngle = 0.6f; // half-angle where the light ends, radians, < pi/2
     float shadowStrength = 1.0f; // 0: shadows ignored, 1: fully dark
-    float slopeScaleBias = 1.0f;
-    float normalBias = 1.0f; // receiver offset in filter-sized texel diagonals at the receiver's distance
+    float slopeScaleBias = LightShadowDefaults::slopeScaleBias;
+    float normalBias = LightShadowDefaults::normalBias; // in filter-sized texel diagonals at the receiver's distance
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' local.nearPlane x range
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
-    float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a disk facing the receiver (soft shadows)
-    std::int32_t shadowFilter = kAtlasShadowFilter;
-    ShadowUpdate shadowUpdate = ShadowUpdate::Settings;
+    float sourceRadius =
+        LightShadowDefaults::sourceRadius; // world units, 0..range: a disk facing the receiver (soft shadows)
+    std::optional<ShadowFilter> shadowFilter; // nullopt: the shadow settings' (the atlas's) filter
+    LightShadowUpdate shadowUpdate;
 };
 
 // An omnidirectional light; its shadow is six cube faces.
@@ -80,17 +73,15 @@ struct PointLight {
     glm::vec3 position{0.0f};
     float range = 10.0f; // > 0, world units
     float shadowStrength = 1.0f;
-    float slopeScaleBias = 1.0f;
-    float normalBias = 1.0f;
+    float slopeScaleBias = LightShadowDefaults::slopeScaleBias;
+    float normalBias = LightShadowDefaults::normalBias;
     float shadowNearPlane = 0.0f; // world units, below range; 0: the shadow settings' local.nearPlane x range
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
-    float sourceRadius = kDefaultSourceRadius; // world units, 0..range: a sphere (soft shadows)
-    std::int32_t shadowFilter = kAtlasShadowFilter;
-    ShadowUpdate shadowUpdate = ShadowUpdate::Settings;
+    float sourceRadius = LightShadowDefaults::sourceRadius; // world units, 0..range: a sphere (soft shadows)
+    std::optional<ShadowFilter> shadowFilter; // nullopt: the shadow settings' (the atlas's) filter
+    LightShadowUpdate shadowUpdate;
 };
 
-// A light of a scene: its kind and its index into Scene::lights, spotLights or pointLights.
-enum class LightKind : std::uint8_t { Directional, Spot, Point };
 // Names one light of a scene: its kind and its index in that kind's list.
 struct LightRef {
     LightKind kind = LightKind::Directional;

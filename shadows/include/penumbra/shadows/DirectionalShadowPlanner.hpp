@@ -25,12 +25,12 @@ namespace penumbra::shadows {
 struct DirectionalShadowLightInput {
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // from the light into the scene
     float strength = 1.0f; // 0 turns the light's shadows off
-    float nearPlaneOffset = 0.0f; // world units the shadow near plane is pulled back (pancaking)
-    float normalBias = 1.0f; // multiple of the cascade's normal bias
-    float slopeScaleBias = 0.0f; // rasterizer slope-scaled depth bias of the shadow pass
+    float nearPlaneOffset = LightShadowDefaults::nearPlaneOffset; // world units the near plane moves back (pancaking)
+    float normalBias = LightShadowDefaults::normalBias; // multiple of the cascade's normal bias
+    float slopeScaleBias = LightShadowDefaults::slopeScaleBias; // rasterizer slope-scaled depth bias of the shadow pass
     bool castsShadows = true;
     std::optional<ShadowFilter> filter; // nullopt: the atlas's (DirectionalShadowSettings::filter)
-    float angularDiameter = 0.0f; // degrees: the source size of Poisson and PCSS filters
+    float angularDiameter = LightShadowDefaults::angularDiameter; // degrees: the source size of soft filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/UniformLayout.hpp"
+#include "penumbra/shadows/LightVocabulary.hpp"
 #include "penumbra/shadows/ShadowCamera.hpp"
 
 #include <glm/vec2.hpp>
@@ -70,12 +71,10 @@ inline rhi::UniformLayout lightClusterLayout()
             }};
 }
 
-enum class ClusterLightKind : std::uint8_t { Point, Spot };
-
 // A light's reach: a point light's sphere, or a spot light's cone (the points within `range` of the light and within
 // `outerAngle` of its axis).
 struct ClusterLight {
-    ClusterLightKind kind = ClusterLightKind::Point;
+    LightKind kind = LightKind::Point;
     glm::vec3 position{0.0f};
     float range = 10.0f; // > 0
     glm::vec3 direction{0.0f, -1.0f, 0.0f}; // spot: unit axis, away from the light

@@ -25,11 +25,11 @@ struct SpotShadowInput {
     float range = 10.0f;
     float outerAngle = 0.6f; // half-angle, radians
     float strength = 1.0f;
-    float normalBias = 1.0f;
-    float slopeScaleBias = 0.0f;
+    float normalBias = LightShadowDefaults::normalBias;
+    float slopeScaleBias = LightShadowDefaults::slopeScaleBias;
     float nearPlane = 0.0f; // world units; 0: LocalShadowSettings::nearPlane x range
     std::optional<ShadowFilter> filter; // nullopt: the atlas's (LocalShadowSettings::filter)
-    float sourceRadius = 0.0f; // world units: the source size of Poisson and PCSS filters
+    float sourceRadius = LightShadowDefaults::sourceRadius; // world units: the source size of soft filters
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
@@ -39,16 +39,14 @@ struct PointShadowInput {
     glm::vec3 position{0.0f};
     float range = 10.0f;
     float strength = 1.0f;
-    float normalBias = 1.0f;
-    float slopeScaleBias = 0.0f;
+    float normalBias = LightShadowDefaults::normalBias;
+    float slopeScaleBias = LightShadowDefaults::slopeScaleBias;
     float nearPlane = 0.0f; // world units; 0: LocalShadowSettings::nearPlane x range
     std::optional<ShadowFilter> filter; // nullopt: the atlas's (LocalShadowSettings::filter)
-    float sourceRadius = 0.0f;
+    float sourceRadius = LightShadowDefaults::sourceRadius;
     NormalBiasSide normalBiasSide = NormalBiasSide::Receiver;
     std::optional<StaticShadowUpdate> staticUpdate; // nullopt: the settings' (StaticShadowSettings::update)
 };
-
-enum class LocalLightKind : std::uint8_t { Spot, Point };
 
 // One view a spot or point shadow is rendered from: an atlas tile, or one face of a cube map.
 struct LocalShadowView {
@@ -74,7 +72,7 @@ struct ShadowCube {
 
 // Why a spot or point light gets no shadow.
 struct LocalShadowNote {
-    LocalLightKind kind = LocalLightKind::Spot;
+    LightKind kind = LightKind::Spot;
     std::uint32_t lightIndex = 0;
     std::string reason;
 };

@@ -9,12 +9,6 @@
 
 namespace penumbra::shadows {
 
-// Where a light's normal bias is applied: the receiver's lookup moves towards the light (Castano 2013, below), or
-// the caster's vertices move away from it by the same offset in the shadow pass (Unity's
-// UnityClipSpaceShadowCasterPos; Catlike Coding, "Rendering 7: Shadows", section 2.1). The caster side keeps the
-// lit pass's lookups where the surface is, but thins casters: thin ones can get holes.
-enum class NormalBiasSide : std::uint8_t { Receiver, Caster };
-
 // What the caster pass needs to move a view's casters: the lookup reach (world units; per unit of distance from the
 // light for positional lights) and the light's direction into the scene (w = 0) or position (w = 1). A reach of 0
 // draws casters where they are.

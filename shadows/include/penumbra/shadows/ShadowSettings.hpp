@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/Format.hpp"
+#include "penumbra/shadows/LightVocabulary.hpp"
 
 #include <array>
 #include <cstdint>
@@ -13,13 +14,6 @@
 #include <vector>
 
 namespace penumbra::shadows {
-
-// A light's shadow filter: a percentage-closer tent N texels wide (2x2 is one bilinear tap, "hard"), a
-// fixed-radius Poisson disk, or percentage-closer soft shadows (Fernando 2005, "Percentage-Closer Soft Shadows"):
-// a blocker search, a penumbra estimate, then the Poisson disk over that penumbra. The values are the lit
-// shader's (generated into shadow_constants.glsl by filterConstantsGlsl).
-enum class ShadowFilter { PCF2x2, PCF3x3, PCF5x5, PCF7x7, Poisson, PCSS };
-inline constexpr int kShadowFilterCount = 6;
 
 // How the lit shader filters the atlas: one bilinear comparison, a tent of bilinear comparisons, or a Poisson disk
 // (with PCSS's blocker search or without). The enum lists the families in this order.
@@ -124,14 +118,6 @@ struct LocalShadowSettings {
     // Near plane of a spot or point shadow projection as a fraction of the light's range, for lights that set none: 1%
     // keeps 32-bit and 24-bit depth resolution at the far end, while casters nearer than that to the light are rare.
     float nearPlane = 0.01f;
-};
-
-// When a light's static shadow map, the depth of its static casters alone, is drawn (Unity HDRP's shadow update
-// modes "Every Frame", "On Enable" and "On Demand"; Godot's shadow atlas re-renders a light only when it changes).
-enum class StaticShadowUpdate {
-    EveryFrame, // no static maps: every caster is drawn into the realtime atlases every frame, as before
-    OnChange, // drawn once, then again only when a static caster, the light or its settings change
-    OnDemand, // drawn once, then again only when the application asks (SceneRenderer::requestStaticShadowUpdate)
 };
 
 // Which casters the realtime atlases draw while static maps exist.

@@ -14,7 +14,7 @@ namespace penumbra::shadows {
 // One light's static map as a bake keeps it: light-space depth along each tile's view axis (linearShadowDepth), so
 // that any convention restores it; the tiles stacked from top to bottom, each `size` texels square, row 0 on top.
 struct BakedShadowMap {
-    ShadowLightKind kind = ShadowLightKind::Directional;
+    LightKind kind = LightKind::Directional;
     std::uint32_t lightIndex = 0;
     std::string lightName;
     std::uint32_t size = 0;
@@ -49,6 +49,6 @@ void writeStaticShadowBake(const std::filesystem::path& directory, const StaticS
 StaticShadowBake readStaticShadowBake(const std::filesystem::path& directory);
 
 // "directional", "spot", "point": the manifest's kind names.
-std::string_view bakedKindName(ShadowLightKind kind);
+std::string_view bakedKindName(LightKind kind);
 
 } // namespace penumbra::shadows

@@ -16,8 +16,6 @@
 
 namespace penumbra::shadows {
 
-enum class ShadowLightKind : std::uint8_t { Directional, Spot, Point };
-
 // A shadow view as no convention sees it: the light's view and its frustum, what a bake records and checks.
 struct ShadowFrustum {
     glm::mat4 view{1.0f}; // world -> light view, looking down -z
@@ -41,7 +39,7 @@ float windowShadowDepth(float linearDepth, const glm::mat4& projection, const rh
 // The static shadow map of one light: one tile of the static directional atlas (an orthographic view over every
 // static caster), one tile of the static local atlas (a spot light's cone) or six (a point light's faces).
 struct StaticShadowMap {
-    ShadowLightKind kind = ShadowLightKind::Directional;
+    LightKind kind = LightKind::Directional;
     std::uint32_t lightIndex = 0; // into the planner's input lights of that kind
     std::vector<StaticShadowTile> tiles;
     float texelSize = 0.0f; // directional maps: the world size of a texel
@@ -51,7 +49,7 @@ struct StaticShadowMap {
 
 // Why a light gets no static map.
 struct StaticShadowNote {
-    ShadowLightKind kind = ShadowLightKind::Directional;
+    LightKind kind = LightKind::Directional;
     std::uint32_t lightIndex = 0;
     std::string reason;
 };
@@ -93,7 +91,5 @@ StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Co
                                    std::span<const DirectionalShadowLightInput> lights,
                                    std::span<const SpotShadowInput> spots, std::span<const PointShadowInput> points,
                                    const StaticCasters& casters);
-
-std::string_view shadowLightKindName(ShadowLightKind kind); // "directional light", "spot light", "point light"
 
 } // namespace penumbra::shadows
