@@ -36,15 +36,12 @@ LocalTileDraws LocalTileCache::record(rhi::CommandList& commands, const shadows:
 {
     const std::vector<shadows::ShadowTileDraw> tiles = shadows::LocalShadowPass::tileDraws(plan);
     const std::map<std::uint32_t, LocalShadowRedraw> lights = tileLights(plan);
-    std::map<std::uint32_t, Key> keys;
+    std::map<std::uint32_t, TileKey> keys;
     std::vector<const shadows::ShadowTileDraw*> changed;
     LocalTileDraws result;
     std::optional<LocalShadowRedraw> lastRedraw;
     for (const shadows::ShadowTileDraw& tile : tiles) {
-        ContentHash view, drawn;
-        addTileView(view, tile);
-        addTileCasters(drawn, tile, casters);
-        const Key key{view.value(), drawn.value()};
+        const TileKey key = tileKey(tile, casters);
         keys[tile.tile] = key;
         const auto old = keys_.find(tile.tile);
         const char* reason = !valid_ || old == keys_.end()        ? "its tile is new"

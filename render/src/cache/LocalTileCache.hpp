@@ -1,5 +1,7 @@
 #pragma once
 
+#include "../static/TileKeys.hpp"
+
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/shadows/LocalShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
@@ -43,16 +45,15 @@ public:
     LocalTileDraws record(rhi::CommandList& commands, const shadows::ShadowAtlas& atlas,
                           const shadows::LocalShadowPlan& plan, std::span<const shadows::ShadowCaster> casters);
     // Forgets every tile: the atlas was made anew or drawn by another pass.
-    void invalidate() { keys_.clear(), valid_ = false; }
+    void invalidate()
+    {
+        keys_.clear();
+        valid_ = false;
+    }
 
 private:
-    struct Key {
-        std::uint64_t view = 0;
-        std::uint64_t casters = 0;
-    };
-
     shadows::StaticShadowPass pass_;
-    std::map<std::uint32_t, Key> keys_; // per atlas tile, as last drawn
+    std::map<std::uint32_t, TileKey> keys_; // per atlas tile, as last drawn
     bool valid_ = false;
 };
 

@@ -1,7 +1,5 @@
 #include "StaticTileCache.hpp"
 
-#include "TileKeys.hpp"
-
 namespace penumbra::render {
 
 StaticTileCache::StaticTileCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat, std::string name)
@@ -18,15 +16,13 @@ std::uint32_t StaticTileCache::update(rhi::CommandList& commands, shadows::Shado
         twin_ = std::make_unique<shadows::ShadowAtlas>(device_, atlas.size(), atlas.format(), name_);
         keys_.clear();
     }
-    std::map<std::uint32_t, std::uint64_t> keys;
+    std::map<std::uint32_t, TileKey> keys;
     std::vector<const shadows::ShadowTileDraw*> changed;
     for (const shadows::ShadowTileDraw& tile : tiles) {
-        ContentHash h;
-        addTileView(h, tile);
-        addTileCasters(h, tile, casters);
-        keys[tile.tile] = h.value();
+        const TileKey key = tileKey(tile, casters);
+        keys[tile.tile] = key;
         const auto old = keys_.find(tile.tile);
-        if (fresh || old == keys_.end() || old->second != h.value())
+        if (fresh || old == keys_.end() || old->second != key)
             changed.push_back(&tile);
     }
     keys_ = std::move(keys);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "TileKeys.hpp"
+
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/shadows/ShadowAtlas.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
@@ -35,7 +37,7 @@ private:
     std::string name_;
     shadows::StaticShadowPass pass_;
     std::unique_ptr<shadows::ShadowAtlas> twin_;
-    std::map<std::uint32_t, std::uint64_t> keys_; // per tile, as drawn into the twin
+    std::map<std::uint32_t, TileKey> keys_; // per tile, as drawn into the twin
 };
 
 } // namespace penumbra::render

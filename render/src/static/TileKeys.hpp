@@ -5,6 +5,7 @@
 #include "penumbra/shadows/ShadowCaster.hpp"
 #include "penumbra/shadows/ShadowCasterDraws.hpp"
 
+#include <cstdint>
 #include <span>
 
 namespace penumbra::render {
@@ -26,6 +27,23 @@ inline void addTileCasters(ContentHash& h, const shadows::ShadowTileDraw& tile,
         h.add(i).add(c.vertices).add(c.indices).add(c.indexCount).add(c.model).add(c.mode).add(c.alpha);
         h.add(c.alphaCutoff).add(c.baseColorMap).add(c.textured).add(c.baseColorUv).add(c.doubleSided);
     }
+}
+
+// One tile's key in two parts, so that a cache can say which changed: its view (addTileView) and its casters
+// (addTileCasters).
+struct TileKey {
+    std::uint64_t view = 0;
+    std::uint64_t casters = 0;
+
+    bool operator==(const TileKey&) const = default;
+};
+
+inline TileKey tileKey(const shadows::ShadowTileDraw& tile, std::span<const shadows::ShadowCaster> casters)
+{
+    ContentHash view, drawn;
+    addTileView(view, tile);
+    addTileCasters(drawn, tile, casters);
+    return {view.value(), drawn.value()};
 }
 
 } // namespace penumbra::render
