@@ -39,7 +39,7 @@ demo: build
 		--atlas out/demo/render/test-atlas --debug cascades
 
 bench: build
-	@$(PENUMBRA) bench --json out/bench.json
+	@$(PENUMBRA) bench --suites draws,indirect,dispatches,shadows --json out/bench.json
 
 # The forest's frame against the reference lit pass, 4 cascades of 2048^2 and of 4096^2 tiles, PCF 2x2, both backends
 # in one run per tile size: out/bench-forest-2048.json, out/bench-forest-4096.json (the README's table).

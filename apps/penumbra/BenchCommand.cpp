@@ -1,8 +1,7 @@
 #include "BackendOptions.hpp"
+#include "CallBench.hpp"
 #include "Commands.hpp"
-#include "DrawScene.hpp"
 #include "Interrupt.hpp"
-#include "RawDraws.hpp"
 #include "SceneBench.hpp"
 #include "ShadowBench.hpp"
 #include "SoftShadowBench.hpp"
@@ -27,6 +26,13 @@ struct BenchOptions {
     std::string json; // empty: no JSON file
 };
 
+std::vector<std::string> allSuites()
+{
+    std::vector<std::string> suites = CallBench::suites();
+    suites.insert(suites.end(), {"shadows", "soft"});
+    return suites;
+}
+
 bool wants(const BenchOptions& options, const std::string& suite)
 {
     return std::find(options.suites.begin(), options.suites.end(), suite) != options.suites.end();
@@ -50,62 +56,13 @@ public:
     std::map<std::string, double> seconds;
 };
 
-struct Case {
-    std::string configuration;
-    std::uint32_t draws;
-    std::string rhiName, validatedName, rawName;
-};
-
 void runBenchmarks(const BenchOptions& options)
 {
-    // Devices and scenes live until every benchmark has run.
-    std::vector<std::unique_ptr<rhi::Device>> devices;
-    std::vector<std::unique_ptr<DrawScene>> scenes;
-    std::vector<std::unique_ptr<rhi::CommandList>> lists;
-    std::vector<std::unique_ptr<RawDraws>> raws;
-    std::vector<Case> cases;
-    for (const std::string& configuration :
-         wants(options, "draws") ? options.configurations : std::vector<std::string>{}) {
-        rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
-        desc.validation = false; // timing the driver, not the API's validation layer
-        desc.validateUsage = false;
-        rhi::Device& device = *devices.emplace_back(createDevice(desc));
-        // The same draws through the RHI's own validation layer: its overhead is validated / rhi.
-        desc.validateUsage = true;
-        rhi::Device& validatedDevice = *devices.emplace_back(createDevice(desc));
-        const auto registerRhi = [&](const std::string& name, rhi::Device& target, std::uint32_t n) {
-            const DrawScene& scene = *scenes.emplace_back(std::make_unique<DrawScene>(target, n));
-            rhi::CommandList& commands = *lists.emplace_back(target.createCommandList());
-            benchmark::RegisterBenchmark(name.c_str(),
-                                         [&target, &scene, &commands](benchmark::State& state) {
-                                             for (auto _ : state) {
-                                                 scene.recordRhi(commands);
-                                                 target.submit(commands);
-                                             }
-                                         })
-                ->UseRealTime()
-                ->Unit(benchmark::kMillisecond)
-                ->MinTime(options.minTime);
-            return &scene;
-        };
-        for (std::uint32_t n : options.draws) {
-            const Case c{configuration, n, fmt::format("draws/{}/rhi/{}", configuration, n),
-                         fmt::format("draws/{}/rhi-validated/{}", configuration, n),
-                         fmt::format("draws/{}/raw/{}", configuration, n)};
-            const DrawScene& scene = *registerRhi(c.rhiName, device, n);
-            registerRhi(c.validatedName, validatedDevice, n);
-            RawDraws& raw = *raws.emplace_back(createRawDraws(device, scene));
-            benchmark::RegisterBenchmark(c.rawName.c_str(),
-                                         [&raw](benchmark::State& state) {
-                                             for (auto _ : state)
-                                                 raw.frame();
-                                         })
-                ->UseRealTime()
-                ->Unit(benchmark::kMillisecond)
-                ->MinTime(options.minTime);
-            cases.push_back(c);
-        }
-    }
+    std::vector<std::string> callSuites;
+    for (const std::string& suite : CallBench::suites())
+        if (wants(options, suite))
+            callSuites.push_back(suite);
+    const CallBench callBench(callSuites, options.configurations, options.draws, options.minTime);
 
     std::optional<ShadowBench> shadowBench;
     if (wants(options, "shadows"))
@@ -117,9 +74,9 @@ void runBenchmarks(const BenchOptions& options)
     CollectingReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
 
-    nlohmann::json json = {{"draws", nlohmann::json::array()},
-                           {"shadows", nlohmann::json::array()},
-                           {"soft", nlohmann::json::array()}};
+    nlohmann::json json = callBench.toJson(reporter.seconds);
+    json["shadows"] = nlohmann::json::array();
+    json["soft"] = nlohmann::json::array();
     if (shadowBench) {
         shadowBench->printSummary();
         json["shadows"] = shadowBench->toJson();
@@ -128,23 +85,7 @@ void runBenchmarks(const BenchOptions& options)
         softBench->printSummary();
         json["soft"] = softBench->toJson();
     }
-    if (!cases.empty())
-        fmt::print("\n{:<24} {:>7} {:>14} {:>14} {:>10} {:>14} {:>10}\n", "configuration", "draws", "rhi ns/draw",
-                   "raw ns/draw", "rhi / raw", "validated", "val. / rhi");
-    for (const Case& c : cases) {
-        const double rhi = reporter.seconds.at(c.rhiName) * 1e9 / c.draws;
-        const double validated = reporter.seconds.at(c.validatedName) * 1e9 / c.draws;
-        const double raw = reporter.seconds.at(c.rawName) * 1e9 / c.draws;
-        fmt::print("{:<24} {:>7} {:>14.1f} {:>14.1f} {:>10.3f} {:>14.1f} {:>10.3f}\n", c.configuration, c.draws, rhi,
-                   raw, rhi / raw, validated, validated / rhi);
-        json["draws"].push_back({{"configuration", c.configuration},
-                                 {"draws", c.draws},
-                                 {"rhiNsPerDraw", rhi},
-                                 {"rawNsPerDraw", raw},
-                                 {"rhiOverRaw", rhi / raw},
-                                 {"validatedNsPerDraw", validated},
-                                 {"validatedOverRhi", validated / rhi}});
-    }
+    callBench.printSummary(reporter.seconds);
     stopIfInterrupted();
     if (!options.json.empty()) {
         parity::writeTextFile(options.json, json.dump(2) + "\n");
@@ -159,23 +100,29 @@ void addBenchCommand(CLI::App& app)
     auto options = std::make_shared<BenchOptions>();
     auto scene = std::make_shared<SceneBenchOptions>();
     CLI::App* bench = app.add_subcommand(
-        "bench", "Time N small draws per frame through the RHI (without and with its validation layer) and "
-                 "through hand-written raw API code, and the shadow passes of the test scene; or, with --scene, "
-                 "every pass of any scene's frames");
+        "bench", "Time N small draws, indirect draws or dispatches per frame through the RHI (without and with its "
+                 "validation layer) and through hand-written raw API code, and the shadow passes of the test scene; "
+                 "or, with --scene, every pass of any scene's frames");
     CLI::Option* suites =
-        bench->add_option("-s,--suites", options->suites, "draws, shadows, soft (the soft-shadow filters' lit pass)")
-            ->check(CLI::IsMember({"draws", "shadows", "soft"}));
+        bench
+            ->add_option("-s,--suites", options->suites,
+                         "draws, indirect (drawIndexedIndirect), dispatches, shadows, soft (the soft-shadow filters' "
+                         "lit pass)")
+            ->check(CLI::IsMember(allSuites()))
+            ->delimiter(',');
     CLI::Option* configurations =
         bench->add_option("-c,--configurations", options->configurations, "Configurations to measure")
             ->check(configurationValidator());
-    CLI::Option* draws =
-        bench->add_option("-n,--draws", options->draws, "Draws per frame")->check(CLI::Range(1u, 1000000u));
+    CLI::Option* draws = bench->add_option("-n,--draws", options->draws, "Draws (or dispatches) per frame")
+                             ->check(CLI::Range(1u, 1000000u));
     CLI::Option* minTime = bench->add_option("--min-time", options->minTime, "Minimum seconds per benchmark")
                                ->check(CLI::Range(0.01, 60.0));
     bench->add_option(
         "--json", options->json,
         "Also write the figures to this file: {\"draws\": [{configuration, draws, rhiNsPerDraw, "
-        "rawNsPerDraw, rhiOverRaw, validatedNsPerDraw, validatedOverRhi}], \"shadows\": [{configuration, scenario, atlasPassMs, "
+        "rawNsPerDraw, rhiOverRaw, validatedNsPerDraw, validatedOverRhi}], \"indirect\": [the same], "
+        "\"dispatches\": [{configuration, dispatches, rhiNsPerDispatch, rawNsPerDispatch, rhiOverRaw, "
+        "validatedNsPerDispatch, validatedOverRhi}], \"shadows\": [{configuration, scenario, atlasPassMs, "
         "otherAtlasPassMs, litPassMs, frameMs, casterDraws, ...}]}; with --scene {\"scene\": "
         "[{configuration, frames, frameMs, frameMsMin, frameMsMax, passes: {depth, directionalAtlas, "
         "otherAtlas, screenSpaceShadows, lit, resolve, reference}, litOverReference, ...}]}");

@@ -75,9 +75,17 @@ DrawScene::DrawScene(rhi::Device& device, std::uint32_t count)
         std::memcpy(blocks.data() + objectStride_ * i, object.data(), objectSize);
     }
     objects_->write(0, blocks);
+
+    // indexCount, instanceCount, firstIndex, vertexOffset, firstInstance: the cube once, as drawIndexed draws it.
+    const std::vector<std::array<std::uint32_t, 5>> arguments(count, {indexCount(), 1, 0, 0, 0});
+    static_assert(sizeof(arguments[0]) == indirectStride);
+    indirectArguments_ = device.createBuffer({.size = std::uint64_t(indirectStride) * count,
+                                              .usage = rhi::BufferUsage::Indirect,
+                                              .debugName = "indirect arguments"});
+    indirectArguments_->write(0, std::as_bytes(std::span(arguments)));
 }
 
-void DrawScene::recordRhi(rhi::CommandList& commands) const
+void DrawScene::recordRhi(rhi::CommandList& commands, DrawCall call) const
 {
     commands.beginPass({.framebuffer = framebuffer_.get()});
     commands.bindPipeline(*pipeline_);
@@ -85,7 +93,10 @@ void DrawScene::recordRhi(rhi::CommandList& commands) const
     commands.bindIndexBuffer(*indices_, rhi::IndexType::UInt16);
     for (std::uint32_t i = 0; i < count_; ++i) {
         commands.bindUniformBuffer(kObjectBinding, *objects_, objectStride_ * i, objectSize);
-        commands.drawIndexed(indexCount());
+        if (call == DrawCall::Indirect)
+            commands.drawIndexedIndirect(*indirectArguments_, std::uint64_t(indirectStride) * i);
+        else
+            commands.drawIndexed(indexCount());
     }
     commands.endPass();
 }

@@ -32,4 +32,9 @@ PipelineNames pipelineNames(const rhi::Pipeline& pipeline)
     return {p.program(), p.vertexArray()};
 }
 
+GLuint programName(const rhi::ComputePipeline& pipeline)
+{
+    return glObject<const GlComputePipeline>(pipeline, "compute pipeline").program();
+}
+
 } // namespace penumbra::opengl

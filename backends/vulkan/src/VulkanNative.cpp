@@ -26,6 +26,12 @@ NativePipeline native(const rhi::Pipeline& pipeline)
     return {vk.handle(), vk.layout().layout, vk.layout().setLayout, vk.renderPass()};
 }
 
+NativePipeline native(const rhi::ComputePipeline& pipeline)
+{
+    const auto& vk = vulkanObject<const VulkanComputePipeline>(pipeline, "native: the compute pipeline");
+    return {vk.handle(), vk.descriptors().layout.layout, vk.descriptors().layout.setLayout, VK_NULL_HANDLE};
+}
+
 NativeFramebuffer native(const rhi::Framebuffer& framebuffer)
 {
     // renderPass() fills a lazy cache; the framebuffer itself is not changed.

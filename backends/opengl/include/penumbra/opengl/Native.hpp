@@ -34,5 +34,7 @@ GLuint samplerName(const rhi::Sampler& sampler);
 GLuint framebufferName(const rhi::Framebuffer& framebuffer);
 // The GL program and vertex array behind an RHI pipeline of an OpenGL device.
 PipelineNames pipelineNames(const rhi::Pipeline& pipeline);
+// The GL program behind an RHI compute pipeline of an OpenGL device.
+GLuint programName(const rhi::ComputePipeline& pipeline);
 
 } // namespace penumbra::opengl

@@ -54,6 +54,9 @@ NativeDevice native(const rhi::Device& device);
 VkBuffer native(const rhi::Buffer& buffer);
 // The Vulkan handles behind an RHI pipeline of a Vulkan device.
 NativePipeline native(const rhi::Pipeline& pipeline);
+// The Vulkan handles behind an RHI compute pipeline of a Vulkan device (no render pass; set 0 holds storage buffers as
+// STORAGE_BUFFER descriptors).
+NativePipeline native(const rhi::ComputePipeline& pipeline);
 // The Vulkan handles behind an RHI framebuffer of a Vulkan device.
 NativeFramebuffer native(const rhi::Framebuffer& framebuffer);
 // The Vulkan handles behind an RHI texture of a Vulkan device.
