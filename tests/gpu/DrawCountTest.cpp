@@ -45,7 +45,8 @@ Quadrants drawnQuadrants(rhi::Device& device, std::uint32_t count, std::uint32_t
     std::vector<std::uint32_t> indices;
     const std::array<std::array<float, 2>, 4> corners{{{-1.0f, 0.0f}, {0.0f, 0.0f}, {-1.0f, -1.0f}, {0.0f, -1.0f}}};
     for (const auto& [x, y] : corners)
-        for (const auto& [dx, dy] : std::array<std::array<float, 2>, 6>{{{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}}}) {
+        for (const auto& [dx, dy] :
+             std::array<std::array<float, 2>, 6>{{{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}}}) {
             indices.push_back(std::uint32_t(indices.size()));
             positions.insert(positions.end(), {x + dx, y + dy});
         }
@@ -110,15 +111,15 @@ struct Case {
     Quadrants expected;
 };
 // Fewer than the most, none, and more than the most (the most wins).
-const std::array<Case, 3> cases{{{2, 4, {true, true, false, false}},
-                                 {0, 4, {false, false, false, false}},
-                                 {9, 3, {true, true, true, false}}}};
+const std::array<Case, 3> cases{
+    {{2, 4, {true, true, false, false}}, {0, 4, {false, false, false, false}}, {9, 3, {true, true, true, false}}}};
 
 void expectCounted(rhi::Device& device)
 {
     for (const Case& c : cases)
         for (const bool indexed : {false, true}) {
-            SCOPED_TRACE(fmt::format("{} of at most {}, {}", c.count, c.maxDrawCount, indexed ? "indexed" : "not indexed"));
+            SCOPED_TRACE(
+                fmt::format("{} of at most {}, {}", c.count, c.maxDrawCount, indexed ? "indexed" : "not indexed"));
             EXPECT_EQ(drawnQuadrants(device, c.count, c.maxDrawCount, indexed), c.expected);
         }
 }

@@ -59,17 +59,17 @@ VkBuffer DrawCountEmulation::patch(VkCommandBuffer commands, const VulkanBuffer&
                                    std::uint32_t commandWords)
 {
     if (!pipeline_) {
-        shader_ = std::make_unique<VulkanShader>(
-            context_, rhi::compileShader({rhi::ShaderStage::Compute, patchGlsl, "draw-count-emulation.comp"},
-                                         context_->conventions.glslHeader()));
+        shader_ = std::make_unique<VulkanShader>(context_, rhi::compileShader({rhi::ShaderStage::Compute, patchGlsl,
+                                                                               "draw-count-emulation.comp"},
+                                                                              context_->conventions.glslHeader()));
         pipeline_ = std::make_unique<VulkanComputePipeline>(
             context_, rhi::ComputePipelineDesc{.compute = shader_.get(), .debugName = "draw count emulation"});
     }
     const std::uint64_t commandBytes = std::uint64_t(maxDrawCount) * commandWords * sizeof(std::uint32_t);
-    auto& patched = *patched_.emplace_back(std::make_unique<VulkanBuffer>(
-        context_, rhi::BufferDesc{.size = commandsOffset + commandBytes,
-                                  .usage = rhi::BufferUsage::Indirect,
-                                  .debugName = "draw count emulation"}));
+    auto& patched = *patched_.emplace_back(
+        std::make_unique<VulkanBuffer>(context_, rhi::BufferDesc{.size = commandsOffset + commandBytes,
+                                                                 .usage = rhi::BufferUsage::Indirect,
+                                                                 .debugName = "draw count emulation"}));
     const std::array<std::uint32_t, 4> parameters{std::uint32_t(offset / 4), std::uint32_t(countOffset / 4),
                                                   maxDrawCount, commandWords};
     patched.writeObject(parameters);

@@ -113,8 +113,8 @@ void checkBindingSet(const Capabilities& caps, const BindingSetDesc& desc)
     }
     for (const BindingLayoutItem& item : layout.items)
         if (std::find(given.begin(), given.end(), item.binding) == given.end())
-            throw Error(fmt::format("{}: layout '{}' binding {} ({}) has no item", what, layout.debugName,
-                                    item.binding, bindingKindName(item.kind)));
+            throw Error(fmt::format("{}: layout '{}' binding {} ({}) has no item", what, layout.debugName, item.binding,
+                                    bindingKindName(item.kind)));
 }
 
 } // namespace penumbra::rhi
