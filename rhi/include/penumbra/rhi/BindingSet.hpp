@@ -85,7 +85,8 @@ struct BindingSetDesc {
 };
 
 // Resources checked once, when created (usage, ranges, alignment, filtering), and bound together by
-// CommandList::bindBindingSet. The set keeps a copy of its layout, which may be destroyed first.
+// CommandList::bindBindingSet. The set keeps a copy of its layout, which may be destroyed first; the set itself must
+// outlive the submission of every list that bound it, as its resources must.
 class BindingSet : private LiveObject<ObjectKind::BindingSet> {
 public:
     // The items, sorted by binding number.
