@@ -104,8 +104,9 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       localStaticTiles_(
           std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "local atlas, static casters")),
       commands_(device.createCommandList()), graph_(std::make_unique<FrameGraph>(device)),
-      state_(std::make_unique<FrameState>()), uniforms_(device, "lit pass uniforms"),
-      instances_(device, "lit pass instances")
+      state_(std::make_unique<FrameState>()),
+      shadowMapLayout_(device.createBindingSetLayout(ShadowMapBindings::layoutDesc())),
+      uniforms_(device, "lit pass uniforms"), instances_(device, "lit pass instances")
 {
 }
 
@@ -341,6 +342,8 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
                         uniforms_.push(plan_.uniforms),
                         uniforms_.push(localPlan_.uniforms),
                         uniforms_.push(staticUniforms)};
+    shadowMapSet_ = state.shadowMaps.createSet(device_, *shadowMapLayout_);
+    state.shadowMapSet = shadowMapSet_.get();
     // Every spot and point light, listed in the clusters of the camera's view it may reach.
     const shadows::LightClusters clusters =
         shadows::buildLightClusters(shadowCamera(camera, aspectOf(frame)), clusterLights(gpuScene_.scene()),

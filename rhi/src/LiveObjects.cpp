@@ -11,11 +11,9 @@ std::array<std::atomic<std::int64_t>, kObjectKindCount> live{};
 
 std::string_view objectKindName(ObjectKind kind)
 {
-    static constexpr std::array<std::string_view, kObjectKindCount> names = {"device",           "buffer",
-                                                                             "texture",          "sampler",
-                                                                             "framebuffer",      "shader",
-                                                                             "pipeline",         "commandList",
-                                                                             "timestampQueries", "swapchain"};
+    static constexpr std::array<std::string_view, kObjectKindCount> names = {
+        "device",   "buffer",      "texture",          "sampler",   "framebuffer", "shader",
+        "pipeline", "commandList", "timestampQueries", "swapchain", "bindingSet"};
     return names.at(std::size_t(kind));
 }
 

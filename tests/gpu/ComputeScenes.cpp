@@ -307,9 +307,19 @@ ImageSum storageImageSum(rhi::Device& device, const SceneOptions& options)
     auto readback = device.createBuffer({.size = 16 * 16 * 4, .usage = rhi::BufferUsage::Readback});
     auto writer = computePipeline(device, imageWriterGlsl, "image_writer.comp");
     auto reader = computePipeline(device, imageReaderGlsl, "image_reader.comp");
+    auto layout = device.createBindingSetLayout(
+        {.items = {{0, rhi::BindingKind::StorageTexture}, {1, rhi::BindingKind::StorageBuffer}}, .debugName = "sum"});
+    auto set = device.createBindingSet(
+        {.layout = layout.get(),
+         .items = {rhi::BindingSetItem::storageTexture(0, *image), rhi::BindingSetItem::storageBuffer(1, *sum, 0, 4)},
+         .debugName = "sum"});
     auto list = commandList(device, options);
-    list->bindStorageTexture(0, *image);
-    list->bindStorageBuffer(1, *sum, 0, 4);
+    if (options.bindingSet) {
+        list->bindBindingSet(*set);
+    } else {
+        list->bindStorageTexture(0, *image);
+        list->bindStorageBuffer(1, *sum, 0, 4);
+    }
     list->bindComputePipeline(*writer);
     list->dispatch(2, 2);
     list->bindComputePipeline(*reader);

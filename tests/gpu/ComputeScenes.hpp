@@ -15,6 +15,8 @@ namespace penumbra::testing {
 // Every scene records into `list` and submits; with `suppressBarriers` the list records no derived barrier.
 struct SceneOptions {
     bool suppressBarriers = false;
+    // storageImageSum binds its image and sum with one binding set instead of single bind calls.
+    bool bindingSet = false;
 };
 
 // An inclusive prefix sum of `values` (at most 1024) in one workgroup of 256 invocations with shared memory, copied

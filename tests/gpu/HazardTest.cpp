@@ -69,5 +69,12 @@ TEST_F(HazardTest, ComputeWriteThenComputeReadCatchesFault)
     EXPECT_FALSE(reports("SYNC-HAZARD-READ-AFTER-WRITE", "vkCmdDispatch").empty());
 }
 
+// The tracker sees what a binding set binds as it sees single binds.
+TEST_F(HazardTest, ComputeWriteThenComputeReadThroughABindingSetCatchesFault)
+{
+    storageImageSum(*device, {.suppressBarriers = true, .bindingSet = true});
+    EXPECT_FALSE(reports("SYNC-HAZARD-READ-AFTER-WRITE", "vkCmdDispatch").empty());
+}
+
 } // namespace
 } // namespace penumbra::testing

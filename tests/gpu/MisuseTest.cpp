@@ -196,6 +196,14 @@ struct Objects {
             list->bindStorageTexture(1, *storageImage);
     }
 
+    // A binding set layout of the fixture pipeline's bindings: its uniform block at 0, its texture at 1.
+    void makeLayout()
+    {
+        layout = device.createBindingSetLayout(
+            {.items = {{0, rhi::BindingKind::UniformBuffer}, {1, rhi::BindingKind::SampledTexture}},
+             .debugName = "fixture"});
+    }
+
     // A pass with a pipeline that reads vertex buffer slot 0 per instance (three instances fit `vertices`), all it
     // reads bound, and `indices`.
     void bindForInstancedDraw()
@@ -224,6 +232,8 @@ struct Objects {
     std::unique_ptr<rhi::Buffer> storage, indirect;
     std::unique_ptr<rhi::Texture> storageImage, localTexture; // localTexture, localBuffer: a row's own
     std::unique_ptr<rhi::Buffer> localBuffer;
+    std::unique_ptr<rhi::BindingSetLayout> layout;
+    std::unique_ptr<rhi::BindingSet> set;
     std::unique_ptr<rhi::CommandList> list; // last: it goes first, before what it names
 };
 
@@ -821,6 +831,104 @@ const std::vector<Rule>& rules()
          [](Objects& o) { o.list->drawIndexedIndirect(*o.localBuffer); }, E::Error,
          text("drawIndexedIndirect: the index buffer is bound at offset 2; indirect indexed draws need offset 0 "
               "(start with the arguments' firstIndex)")},
+        {"count buffers need BufferUsage::Indirect",
+         [](Objects& o) {
+             o.makeCompute();
+             o.bindForDraw();
+         },
+         [](Objects& o) { o.list->drawIndirectCount(*o.indirect, 0, *o.storage, 0, 0); }, E::Error,
+         text("drawIndirectCount count: buffer 'storage' lacks BufferUsage::Indirect")},
+        {"count draws' commands are inside the buffer",
+         [](Objects& o) {
+             o.makeCompute();
+             o.bindForDraw();
+         },
+         [](Objects& o) { o.list->drawIndirectCount(*o.indirect, 0, *o.indirect, 0, 1); }, E::Error,
+         text("drawIndirectCount arguments: 16 bytes at offset 0 exceed buffer 'indirect' (12 bytes)")},
+        {"count offsets are multiples of 4",
+         [](Objects& o) {
+             o.makeCompute();
+             o.bindForDraw();
+         },
+         [](Objects& o) { o.list->drawIndirectCount(*o.indirect, 0, *o.indirect, 2, 0); }, E::Error,
+         text("drawIndirectCount count: offset 2 is not a multiple of 4")},
+        {"counts are inside their buffer",
+         [](Objects& o) {
+             o.makeCompute();
+             o.bindForDraw();
+         },
+         [](Objects& o) { o.list->drawIndexedIndirectCount(*o.indirect, 0, *o.indirect, 12, 0); }, E::Error,
+         text("drawIndexedIndirectCount count: 4 bytes at offset 12 exceed buffer 'indirect' (12 bytes)")},
+        // Binding sets.
+        {"binding set layouts list each binding once", nothing,
+         [](Objects& o) {
+             o.device.createBindingSetLayout(
+                 {.items = {{1, rhi::BindingKind::SampledTexture}, {1, rhi::BindingKind::UniformBuffer}},
+                  .debugName = "bad"});
+         },
+         E::Error, text("binding set layout 'bad': binding 1 is listed twice")},
+        {"binding sets fill every binding of their layout", [](Objects& o) { o.makeLayout(); },
+         [](Objects& o) {
+             o.device.createBindingSet({.layout = o.layout.get(),
+                                        .items = {rhi::BindingSetItem::uniformBuffer(0, *o.uniforms, 0, 64)},
+                                        .debugName = "bad"});
+         },
+         E::Error, text("binding set 'bad': layout 'fixture' binding 1 (texture and sampler) has no item")},
+        {"binding set items are of their layout's kind", [](Objects& o) { o.makeLayout(); },
+         [](Objects& o) {
+             o.device.createBindingSet({.layout = o.layout.get(),
+                                        .items = {rhi::BindingSetItem::sampledTexture(0, *o.image, *o.sampler)},
+                                        .debugName = "bad"});
+         },
+         E::Error,
+         text("binding set 'bad': binding 0 holds a texture and sampler, but layout 'fixture' declares a uniform "
+              "buffer there")},
+        {"binding set items are in their layout", [](Objects& o) { o.makeLayout(); },
+         [](Objects& o) {
+             o.device.createBindingSet({.layout = o.layout.get(),
+                                        .items = {rhi::BindingSetItem::uniformBuffer(2, *o.uniforms, 0, 64)},
+                                        .debugName = "bad"});
+         },
+         E::Error, text("binding set 'bad': binding 2 is not in layout 'fixture'")},
+        {"binding set buffers have their kind's usage", [](Objects& o) { o.makeLayout(); },
+         [](Objects& o) {
+             o.device.createBindingSet({.layout = o.layout.get(),
+                                        .items = {rhi::BindingSetItem::uniformBuffer(0, *o.vertices, 0, 36),
+                                                  rhi::BindingSetItem::sampledTexture(1, *o.image, *o.sampler)},
+                                        .debugName = "bad"});
+         },
+         E::Error, text("binding set 'bad' binding 0: buffer 'vertices' lacks BufferUsage::Uniform")},
+        {"binding set textures are Sampled", [](Objects& o) { o.makeLayout(); },
+         [](Objects& o) {
+             o.device.createBindingSet({.layout = o.layout.get(),
+                                        .items = {rhi::BindingSetItem::uniformBuffer(0, *o.uniforms, 0, 64),
+                                                  rhi::BindingSetItem::sampledTexture(1, *o.small, *o.sampler)},
+                                        .debugName = "bad"});
+         },
+         E::Error, text("binding set 'bad' binding 1: texture 'small' lacks TextureUsage::Sampled")},
+        {"binding set storage images are Storage", nothing,
+         [](Objects& o) {
+             auto layout = o.device.createBindingSetLayout(
+                 {.items = {{0, rhi::BindingKind::StorageTexture}}, .debugName = "images"});
+             o.device.createBindingSet({.layout = layout.get(),
+                                        .items = {rhi::BindingSetItem::storageTexture(0, *o.image)},
+                                        .debugName = "bad"});
+         },
+         E::Error, text("binding set 'bad' binding 0: texture 'image' lacks TextureUsage::Storage")},
+        {"a binding set's layout matches the pipeline's",
+         [](Objects& o) {
+             o.uniforms->writeObject(TransformUniforms{});
+             auto layout = o.device.createBindingSetLayout(
+                 {.items = {{0, rhi::BindingKind::SampledTexture}}, .debugName = "swapped"});
+             o.set = o.device.createBindingSet({.layout = layout.get(),
+                                                .items = {rhi::BindingSetItem::sampledTexture(0, *o.image, *o.sampler)},
+                                                .debugName = "swapped"});
+             o.bindForDraw();
+             o.list->bindBindingSet(*o.set);
+         },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: binding set 'swapped' (layout 'swapped') holds a texture and sampler at binding 0, but pipeline "
+              "'bad' declares a uniform buffer there ('Transform'): the set's layout differs from the pipeline's")},
         // Ownership and lifetime.
         {"lists are submitted to the device that created them", nothing,
          [](Objects& o) {

@@ -5,6 +5,7 @@
 #include "GlStateCache.hpp"
 #include "penumbra/rhi/BackendSupport.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fmt/format.h>
 
@@ -124,6 +125,38 @@ public:
         gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, c.buffer);
         gl_.DrawElementsIndirect(pipeline_->state().primitive, indexType_,
                                  reinterpret_cast<const void*>(std::uintptr_t(c.offset)));
+    }
+
+    void operator()(const command::DrawIndirectCount& c)
+    {
+        prepareDraw(0);
+        if (c.indexed)
+            bindIndexBufferToVertexArray();
+        gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, c.buffer);
+        const GLenum mode = pipeline_->state().primitive;
+        const void* commands = reinterpret_cast<const void*>(std::uintptr_t(c.offset));
+        if (c.native) {
+            gl_.BindBuffer(GL_PARAMETER_BUFFER, c.count);
+            if (c.indexed)
+                gl_.MultiDrawElementsIndirectCount(mode, indexType_, commands, GLintptr(c.countOffset),
+                                                   GLsizei(c.maxDrawCount), 0);
+            else
+                gl_.MultiDrawArraysIndirectCount(mode, commands, GLintptr(c.countOffset), GLsizei(c.maxDrawCount), 0);
+            return;
+        }
+        // The emulation: GL runs commands in order, so the count is read here once every earlier command has written
+        // it; shader stores need GL_BUFFER_UPDATE_BARRIER_BIT before a read through glGetBufferSubData (GL 4.5
+        // section 7.12.2). The read waits for the GPU, which is the emulation's cost.
+        gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        std::uint32_t drawn = 0;
+        gl_.GetNamedBufferSubData(c.count, GLintptr(c.countOffset), sizeof(drawn), &drawn);
+        drawn = std::min(drawn, c.maxDrawCount);
+        if (drawn == 0)
+            return;
+        if (c.indexed)
+            gl_.MultiDrawElementsIndirect(mode, indexType_, commands, GLsizei(drawn), 0);
+        else
+            gl_.MultiDrawArraysIndirect(mode, commands, GLsizei(drawn), 0);
     }
 
     void operator()(const command::Barrier& c) { gl_.MemoryBarrier(c.bits); }
@@ -372,6 +405,23 @@ void GlCommandList::apiDrawIndexedIndirect(const rhi::Buffer& buffer, std::uint6
 {
     commands_.push_back(
         command::DrawIndexedIndirect{glObject<const GlBuffer>(buffer, "indirect buffer").name(), offset});
+}
+
+void GlCommandList::apiDrawIndirectCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count,
+                                         std::uint64_t countOffset, std::uint32_t maxDrawCount)
+{
+    commands_.push_back(command::DrawIndirectCount{glObject<const GlBuffer>(buffer, "indirect buffer").name(), offset,
+                                                   glObject<const GlBuffer>(count, "count buffer").name(), countOffset,
+                                                   maxDrawCount, false, device_.capabilities().drawIndirectCount});
+}
+
+void GlCommandList::apiDrawIndexedIndirectCount(const rhi::Buffer& buffer, std::uint64_t offset,
+                                                const rhi::Buffer& count, std::uint64_t countOffset,
+                                                std::uint32_t maxDrawCount)
+{
+    commands_.push_back(command::DrawIndirectCount{glObject<const GlBuffer>(buffer, "indirect buffer").name(), offset,
+                                                   glObject<const GlBuffer>(count, "count buffer").name(), countOffset,
+                                                   maxDrawCount, true, device_.capabilities().drawIndirectCount});
 }
 
 void GlCommandList::apiBarrier(const rhi::Barrier& barrier)

@@ -85,6 +85,16 @@ struct DrawIndexedIndirect {
     GLuint buffer;
     std::uint64_t offset;
 };
+// drawIndirectCount and drawIndexedIndirectCount; `native` where the driver reads the count itself.
+struct DrawIndirectCount {
+    GLuint buffer;
+    std::uint64_t offset;
+    GLuint count;
+    std::uint64_t countOffset;
+    std::uint32_t maxDrawCount;
+    bool indexed;
+    bool native;
+};
 struct Barrier {
     GLbitfield bits;
 };
@@ -133,9 +143,9 @@ struct PopLabel {};
 
 using Any = std::variant<BeginPass, EndPass, SetViewport, SetScissor, SetDepthBias, BindPipeline, BindVertexBuffer,
                          BindIndexBuffer, BindUniformBuffer, BindTexture, BindStorageBuffer, BindStorageTexture,
-                         BindComputePipeline, Dispatch, DispatchIndirect, DrawIndirect, DrawIndexedIndirect, Barrier,
-                         InsertLabel, Draw, DrawIndexed, CopyBuffer, CopyTexture, CopyTextureToBuffer, ResolveTexture,
-                         WriteTimestamp, PushLabel, PopLabel>;
+                         BindComputePipeline, Dispatch, DispatchIndirect, DrawIndirect, DrawIndexedIndirect,
+                         DrawIndirectCount, Barrier, InsertLabel, Draw, DrawIndexed, CopyBuffer, CopyTexture,
+                         CopyTextureToBuffer, ResolveTexture, WriteTimestamp, PushLabel, PopLabel>;
 } // namespace command
 
 // What replaying needs from the device.
@@ -181,6 +191,10 @@ private:
     void apiDispatchIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
     void apiDrawIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
     void apiDrawIndexedIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiDrawIndirectCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count,
+                              std::uint64_t countOffset, std::uint32_t maxDrawCount) override;
+    void apiDrawIndexedIndirectCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count,
+                                     std::uint64_t countOffset, std::uint32_t maxDrawCount) override;
     void apiBarrier(const rhi::Barrier& barrier) override;
     void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
                  std::uint32_t firstInstance) override;

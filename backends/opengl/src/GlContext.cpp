@@ -47,7 +47,8 @@ void GlContext::initialize()
     gl_.GetStringi = getStringi;
     const bool clamp =
         version_ >= 46 || hasExtension("GL_ARB_polygon_offset_clamp") || hasExtension("GL_EXT_polygon_offset_clamp");
-    gl_ = loadGlFunctions(*context_, clamp);
+    const bool indirectCount = version_ >= 46 || hasExtension("GL_ARB_indirect_parameters");
+    gl_ = loadGlFunctions(*context_, clamp, indirectCount);
 }
 
 void GlContext::releaseIfCurrent() const

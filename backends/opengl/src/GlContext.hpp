@@ -28,8 +28,9 @@ std::unique_ptr<PlatformContext> createOsMesaContext(bool debug);
 // The context GLFW made with the window (penumbra::prepareWindowHints asked for 4.5 core).
 std::unique_ptr<PlatformContext> createGlfwWindowContext(GLFWwindow* window);
 
-// Fills the table through `loader`; throws rhi::Error naming the first entry point that is missing.
-GlFunctions loadGlFunctions(const PlatformContext& loader, bool polygonOffsetClamp);
+// Fills the table through `loader`; throws rhi::Error naming the first entry point that is missing. The optional
+// entry points are looked up where the version or extensions say the driver has them.
+GlFunctions loadGlFunctions(const PlatformContext& loader, bool polygonOffsetClamp, bool indirectCount);
 
 // The device's context, shared by the device and every object it created, so that objects can be
 // destroyed after the device: each makes the context current before deleting its GL names.

@@ -105,6 +105,8 @@ rhi::Capabilities GlDevice::queryCapabilities() const
     caps.maxComputeSharedMemory = std::uint32_t(integer(gl, GL_MAX_COMPUTE_SHARED_MEMORY_SIZE));
     caps.storageBufferOffsetAlignment = std::uint32_t(integer(gl, GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT));
     caps.maxStorageBufferRange = std::uint64_t(integer(gl, GL_MAX_SHADER_STORAGE_BLOCK_SIZE));
+    caps.drawIndirectCount =
+        desc_.nativeDrawIndirectCount && gl.MultiDrawArraysIndirectCount && gl.MultiDrawElementsIndirectCount;
     for (rhi::Format f : rhi::allFormats)
         caps.formats[std::size_t(f)] = formatSupport(f);
     // GL has no query of a device's memory; Mesa's software renderers keep every texture in system memory.

@@ -7,7 +7,7 @@
 
 namespace penumbra::opengl {
 
-GlFunctions loadGlFunctions(const PlatformContext& loader, bool polygonOffsetClamp)
+GlFunctions loadGlFunctions(const PlatformContext& loader, bool polygonOffsetClamp, bool indirectCount)
 {
     GlFunctions gl;
     auto load = [&](auto& member, const char* name) {
@@ -23,6 +23,15 @@ GlFunctions loadGlFunctions(const PlatformContext& loader, bool polygonOffsetCla
         for (const char* name : {"glPolygonOffsetClamp", "glPolygonOffsetClampARB", "glPolygonOffsetClampEXT"})
             if (GlProc proc = loader.procAddress(name); proc && !gl.PolygonOffsetClamp)
                 gl.PolygonOffsetClamp = reinterpret_cast<PFNGLPOLYGONOFFSETCLAMPPROC>(proc);
+    }
+    // The ARB functions take the same arguments as the 4.6 ones (ARB_indirect_parameters, "New Procedures").
+    if (indirectCount) {
+        for (const char* name : {"glMultiDrawArraysIndirectCount", "glMultiDrawArraysIndirectCountARB"})
+            if (GlProc proc = loader.procAddress(name); proc && !gl.MultiDrawArraysIndirectCount)
+                gl.MultiDrawArraysIndirectCount = reinterpret_cast<PFNGLMULTIDRAWARRAYSINDIRECTCOUNTPROC>(proc);
+        for (const char* name : {"glMultiDrawElementsIndirectCount", "glMultiDrawElementsIndirectCountARB"})
+            if (GlProc proc = loader.procAddress(name); proc && !gl.MultiDrawElementsIndirectCount)
+                gl.MultiDrawElementsIndirectCount = reinterpret_cast<PFNGLMULTIDRAWELEMENTSINDIRECTCOUNTPROC>(proc);
     }
     return gl;
 }

@@ -16,7 +16,8 @@
 namespace penumbra::vulkan {
 
 VulkanCommandList::VulkanCommandList(rhi::ValidatingDevice& owner, std::shared_ptr<Context> context)
-    : ValidatingCommandList(owner), context_(std::move(context)), descriptors_(context_), computeDescriptors_(context_)
+    : ValidatingCommandList(owner), context_(std::move(context)), descriptors_(context_), computeDescriptors_(context_),
+      drawCounts_(context_)
 {
     const VkDevice device = context_->device;
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -65,7 +66,10 @@ void VulkanCommandList::submit()
     resetPools_.clear();
     descriptors_.reset();
     computeDescriptors_.reset();
+    drawCounts_.reset();
     pipeline_ = nullptr;
+    framebuffer_ = nullptr;
+    computePipeline_ = VK_NULL_HANDLE;
     begin();
 }
 
@@ -88,6 +92,7 @@ void VulkanCommandList::apiBeginPass(const rhi::PassDesc& pass)
     info.clearValueCount = std::uint32_t(clears.size());
     info.pClearValues = clears.data();
     vkCmdBeginRenderPass(commands_, &info, VK_SUBPASS_CONTENTS_INLINE);
+    framebuffer_ = &framebuffer;
     apiSetViewport({0.0f, 0.0f, float(framebuffer.width()), float(framebuffer.height())});
     apiSetScissor({0, 0, framebuffer.width(), framebuffer.height()});
 }
@@ -132,6 +137,7 @@ void VulkanCommandList::apiBindComputePipeline(const rhi::ComputePipeline& pipel
 {
     const auto& vk = vulkanObject<const VulkanComputePipeline>(pipeline, "bindComputePipeline: the pipeline");
     vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, vk.handle());
+    computePipeline_ = vk.handle();
     computeDescriptors_.setPipeline(vk.descriptors());
 }
 
@@ -209,6 +215,59 @@ void VulkanCommandList::apiDrawIndexedIndirect(const rhi::Buffer& buffer, std::u
     descriptors_.flush(commands_);
     const VkBuffer handle = vulkanObject<const VulkanBuffer>(buffer, "drawIndexedIndirect: the buffer").handle();
     vkCmdDrawIndexedIndirect(commands_, handle, offset, 1, 0);
+}
+
+void VulkanCommandList::apiDrawIndirectCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count,
+                                             std::uint64_t countOffset, std::uint32_t maxDrawCount)
+{
+    drawCount(buffer, offset, count, countOffset, maxDrawCount, false);
+}
+
+void VulkanCommandList::apiDrawIndexedIndirectCount(const rhi::Buffer& buffer, std::uint64_t offset,
+                                                    const rhi::Buffer& count, std::uint64_t countOffset,
+                                                    std::uint32_t maxDrawCount)
+{
+    drawCount(buffer, offset, count, countOffset, maxDrawCount, true);
+}
+
+void VulkanCommandList::drawCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count,
+                                  std::uint64_t countOffset, std::uint32_t maxDrawCount, bool indexed)
+{
+    const auto& arguments = vulkanObject<const VulkanBuffer>(buffer, "drawIndirectCount: the buffer");
+    const auto& counter = vulkanObject<const VulkanBuffer>(count, "drawIndirectCount: the count buffer");
+    const std::uint32_t stride = indexed ? rhi::kDrawIndexedIndirectCommandBytes : rhi::kDrawIndirectCommandBytes;
+    if (context_->drawIndirectCount) {
+        descriptors_.flush(commands_);
+        (indexed ? context_->drawIndexedIndirectCount : context_->drawIndirectCount)(commands_, arguments.handle(),
+                                                                                     offset, counter.handle(),
+                                                                                     countOffset, maxDrawCount, stride);
+        return;
+    }
+    if (maxDrawCount == 0)
+        return;
+    // Suspended: bound pipelines, descriptor sets, vertex and index buffers and dynamic state (viewport, scissor,
+    // depth bias) are command buffer state, which render pass instances do not reset (Vulkan 1.3 section 6.1).
+    vkCmdEndRenderPass(commands_);
+    const VkBuffer patched =
+        drawCounts_.patch(commands_, arguments, offset, counter, countOffset, maxDrawCount, stride / 4);
+    if (computePipeline_ != VK_NULL_HANDLE)
+        vkCmdBindPipeline(commands_, VK_PIPELINE_BIND_POINT_COMPUTE, computePipeline_);
+    computeDescriptors_.rebind();
+    VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    info.renderPass = framebuffer_->renderPass(true, true);
+    info.framebuffer = framebuffer_->handle();
+    info.renderArea = {{0, 0}, {framebuffer_->width(), framebuffer_->height()}};
+    vkCmdBeginRenderPass(commands_, &info, VK_SUBPASS_CONTENTS_INLINE);
+    descriptors_.flush(commands_);
+    // Without multiDrawIndirect, one command per draw.
+    const std::uint32_t perDraw = context_->multiDrawIndirect ? maxDrawCount : 1;
+    for (std::uint32_t first = 0; first < maxDrawCount; first += perDraw) {
+        const VkDeviceSize at = DrawCountEmulation::commandsOffset + VkDeviceSize(first) * stride;
+        if (indexed)
+            vkCmdDrawIndexedIndirect(commands_, patched, at, perDraw, stride);
+        else
+            vkCmdDrawIndirect(commands_, patched, at, perDraw, stride);
+    }
 }
 
 void VulkanCommandList::apiDispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z)

@@ -2,6 +2,7 @@
 
 #include "VulkanContext.hpp"
 #include "VulkanDescriptors.hpp"
+#include "VulkanDrawCount.hpp"
 
 #include "penumbra/rhi/ValidatingDevice.hpp"
 
@@ -10,6 +11,7 @@
 
 namespace penumbra::vulkan {
 
+class VulkanFramebuffer;
 class VulkanPipeline;
 
 // Records into a VkCommandBuffer from creation on; submit() runs it and starts a new recording.
@@ -42,6 +44,10 @@ private:
     void apiDispatchIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
     void apiDrawIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
     void apiDrawIndexedIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
+    void apiDrawIndirectCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count,
+                              std::uint64_t countOffset, std::uint32_t maxDrawCount) override;
+    void apiDrawIndexedIndirectCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count,
+                                     std::uint64_t countOffset, std::uint32_t maxDrawCount) override;
     void apiBarrier(const rhi::Barrier& barrier) override;
     void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
                  std::uint32_t firstInstance) override;
@@ -61,6 +67,9 @@ private:
 
     void begin();
     void beginPrologue();
+    // Both count draws: the device's own, or the emulation (DrawCountEmulation), which suspends the pass.
+    void drawCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count, std::uint64_t countOffset,
+                   std::uint32_t maxDrawCount, bool indexed);
 
     std::shared_ptr<Context> context_;
     UniqueCommandPool pool_; // destroying it frees both command buffers
@@ -72,6 +81,9 @@ private:
     DescriptorBinder descriptors_; // the graphics bind point's
     DescriptorBinder computeDescriptors_;
     const VulkanPipeline* pipeline_ = nullptr;
+    VulkanFramebuffer* framebuffer_ = nullptr; // the open pass's
+    VkPipeline computePipeline_ = VK_NULL_HANDLE; // the bound one, restored after an emulated count draw
+    DrawCountEmulation drawCounts_;
 };
 
 } // namespace penumbra::vulkan

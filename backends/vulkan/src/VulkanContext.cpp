@@ -143,9 +143,22 @@ void Context::createDevice()
         available.pNext = &maintenance4;
         extensions.push_back(VK_KHR_MAINTENANCE_4_EXTENSION_NAME);
     }
+    // Draw counts: core in Vulkan 1.2 behind the drawIndirectCount feature (Vulkan 1.3 section 21.3), else
+    // VK_KHR_draw_indirect_count.
+    VkPhysicalDeviceVulkan12Features vulkan12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    const bool core12 = std::min(properties.apiVersion, instance.apiVersion()) >= VK_API_VERSION_1_2;
+    if (core12) {
+        vulkan12.pNext = available.pNext;
+        available.pNext = &vulkan12;
+    }
     vkGetPhysicalDeviceFeatures2(physicalDevice, &available);
     if (!maintenance4.maintenance4)
         extensions.clear();
+    const bool coreCount = desc.nativeDrawIndirectCount && vulkan12.drawIndirectCount;
+    const bool extensionCount =
+        desc.nativeDrawIndirectCount && !coreCount && hasDeviceExtension(VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
+    if (extensionCount)
+        extensions.push_back(VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
     if (desc.window.glfwWindow) {
         if (!hasDeviceExtension(VK_KHR_SWAPCHAIN_EXTENSION_NAME))
             throw rhi::Error(fmt::format("Vulkan: {} cannot present to windows (no {})", properties.deviceName,
@@ -160,7 +173,15 @@ void Context::createDevice()
     enabled.features.independentBlend = available.features.independentBlend;
     enabled.features.imageCubeArray = available.features.imageCubeArray; // every cube texture is a cube array
     enabled.features.samplerAnisotropy = available.features.samplerAnisotropy;
+    enabled.features.multiDrawIndirect = available.features.multiDrawIndirect; // the draw-count emulation's
+    multiDrawIndirect = available.features.multiDrawIndirect;
     maintenance4.pNext = nullptr;
+    VkPhysicalDeviceVulkan12Features enabled12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    if (coreCount) {
+        enabled12.drawIndirectCount = VK_TRUE;
+        enabled12.pNext = enabled.pNext;
+        enabled.pNext = &enabled12;
+    }
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -186,6 +207,15 @@ void Context::createDevice()
         insertLabel = reinterpret_cast<PFN_vkCmdInsertDebugUtilsLabelEXT>(
             vkGetDeviceProcAddr(device, "vkCmdInsertDebugUtilsLabelEXT"));
     }
+
+    if (coreCount || extensionCount) {
+        drawIndirectCount = reinterpret_cast<PFN_vkCmdDrawIndirectCount>(
+            vkGetDeviceProcAddr(device, coreCount ? "vkCmdDrawIndirectCount" : "vkCmdDrawIndirectCountKHR"));
+        drawIndexedIndirectCount = reinterpret_cast<PFN_vkCmdDrawIndexedIndirectCount>(
+            vkGetDeviceProcAddr(device,
+                                coreCount ? "vkCmdDrawIndexedIndirectCount" : "vkCmdDrawIndexedIndirectCountKHR"));
+    }
+    capabilities.drawIndirectCount = drawIndirectCount && drawIndexedIndirectCount;
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;

@@ -76,6 +76,12 @@ public:
     PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel = nullptr;
     PFN_vkCmdEndDebugUtilsLabelEXT endLabel = nullptr;
     PFN_vkCmdInsertDebugUtilsLabelEXT insertLabel = nullptr;
+    // Draw counts read on the GPU (core drawIndirectCount feature or VK_KHR_draw_indirect_count), where the device
+    // has them and DeviceDesc::nativeDrawIndirectCount asks for them; else null, and command lists emulate them.
+    PFN_vkCmdDrawIndirectCount drawIndirectCount = nullptr;
+    // Indirect draws of more than one command (the multiDrawIndirect feature).
+    bool multiDrawIndirect = false;
+    PFN_vkCmdDrawIndexedIndirectCount drawIndexedIndirectCount = nullptr;
 
 private:
     std::mutex queueMutex_;

@@ -45,6 +45,12 @@ public:
         if (setDirty_ || offsetsDirty_)
             bind(commandBuffer);
     }
+    // Another binder's set took the bind point: the next flush binds this one's set again.
+    void rebind()
+    {
+        if (set_ != VK_NULL_HANDLE)
+            offsetsDirty_ = true;
+    }
     // After submit: the sets are gone and bound resources may be destroyed.
     void reset();
 

@@ -26,8 +26,10 @@ VkBufferUsageFlags bufferUsage(rhi::BufferUsage usage)
         flags |= VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
     if (rhi::hasFlag(usage, rhi::BufferUsage::Storage))
         flags |= VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    // Indirect arguments and counts are also read as storage buffers by the draw-count emulation
+    // (VulkanDrawCount.cpp).
     if (rhi::hasFlag(usage, rhi::BufferUsage::Indirect))
-        flags |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+        flags |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     return flags;
 }
 

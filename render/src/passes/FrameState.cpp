@@ -6,19 +6,43 @@
 
 namespace penumbra::render {
 
-void ShadowMapBindings::bind(rhi::CommandList& commands) const
+rhi::BindingSetLayoutDesc ShadowMapBindings::layoutDesc()
 {
-    rhi::bindUniform(commands, kLitShadowBinding, directionalUniforms);
-    commands.bindTexture(kLitAtlasBinding, directional->texture(), directional->sampler());
-    rhi::bindUniform(commands, kLitLocalShadowBinding, localUniforms);
-    commands.bindTexture(kLitLocalAtlasBinding, local->texture(), local->sampler());
-    commands.bindTexture(kLitShadowCubesBinding, cubes->texture(), cubes->sampler());
-    commands.bindTexture(kLitShadowCubeDepthsBinding, cubes->texture(), cubes->depthSampler());
-    rhi::bindUniform(commands, kLitStaticShadowBinding, staticUniforms);
+    using K = rhi::BindingKind;
+    return {.items = {{kLitShadowBinding, K::UniformBuffer},
+                      {kLitAtlasBinding, K::SampledTexture},
+                      {kLitLocalShadowBinding, K::UniformBuffer},
+                      {kLitLocalAtlasBinding, K::SampledTexture},
+                      {kLitShadowCubesBinding, K::SampledTexture},
+                      {kLitShadowCubeDepthsBinding, K::SampledTexture},
+                      {kLitStaticShadowBinding, K::UniformBuffer},
+                      {kLitStaticDirectionalAtlasBinding, K::SampledTexture},
+                      {kLitStaticLocalAtlasBinding, K::SampledTexture}},
+            .debugName = "shadow maps"};
+}
+
+std::unique_ptr<rhi::BindingSet> ShadowMapBindings::createSet(rhi::Device& device,
+                                                              const rhi::BindingSetLayout& layout) const
+{
+    using Item = rhi::BindingSetItem;
+    const auto uniform = [](std::uint32_t binding, const rhi::UniformSlice& slice) {
+        return Item::uniformBuffer(binding, *slice.buffer, slice.offset, slice.size);
+    };
     const shadows::ShadowAtlas& staticDirectional = staticMaps->directionalAtlas();
     const shadows::ShadowAtlas& staticLocal = staticMaps->localAtlas();
-    commands.bindTexture(kLitStaticDirectionalAtlasBinding, staticDirectional.texture(), staticDirectional.sampler());
-    commands.bindTexture(kLitStaticLocalAtlasBinding, staticLocal.texture(), staticLocal.sampler());
+    return device.createBindingSet(
+        {.layout = &layout,
+         .items = {uniform(kLitShadowBinding, directionalUniforms),
+                   Item::sampledTexture(kLitAtlasBinding, directional->texture(), directional->sampler()),
+                   uniform(kLitLocalShadowBinding, localUniforms),
+                   Item::sampledTexture(kLitLocalAtlasBinding, local->texture(), local->sampler()),
+                   Item::sampledTexture(kLitShadowCubesBinding, cubes->texture(), cubes->sampler()),
+                   Item::sampledTexture(kLitShadowCubeDepthsBinding, cubes->texture(), cubes->depthSampler()),
+                   uniform(kLitStaticShadowBinding, staticUniforms),
+                   Item::sampledTexture(kLitStaticDirectionalAtlasBinding, staticDirectional.texture(),
+                                        staticDirectional.sampler()),
+                   Item::sampledTexture(kLitStaticLocalAtlasBinding, staticLocal.texture(), staticLocal.sampler())},
+         .debugName = "shadow maps"});
 }
 
 void readShadowMaps(FramePassBuilder& builder)

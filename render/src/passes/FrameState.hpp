@@ -5,8 +5,10 @@
 #include "penumbra/render/FramePass.hpp"
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/rhi/Device.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -16,7 +18,7 @@ class LocalLightTextures;
 class StaticShadowCache;
 
 // The lit pass's shadow bindings (atlases, cubes, their blocks, static maps), which the screen-space collection and
-// the debug views share.
+// the debug views share, bound with one binding set per pass.
 struct ShadowMapBindings {
     shadows::ShadowAtlas* directional = nullptr;
     shadows::ShadowAtlas* local = nullptr;
@@ -26,7 +28,10 @@ struct ShadowMapBindings {
     rhi::UniformSlice localUniforms;
     rhi::UniformSlice staticUniforms;
 
-    void bind(rhi::CommandList& commands) const;
+    // The layout of their set: the lit shaders' binding numbers.
+    static rhi::BindingSetLayoutDesc layoutDesc();
+    // This frame's set of them (the blocks move every frame), against a layout made from layoutDesc().
+    std::unique_ptr<rhi::BindingSet> createSet(rhi::Device& device, const rhi::BindingSetLayout& layout) const;
 };
 
 // Declares the reads of every texture ShadowMapBindings binds.
@@ -49,6 +54,7 @@ struct FrameState {
     std::span<const shadows::ShadowCaster> casters;
     std::span<const LitDraw> litDraws;
     ShadowMapBindings shadowMaps;
+    const rhi::BindingSet* shadowMapSet = nullptr; // shadowMaps' set, bound once by each pass that reads them
     const LocalLightTextures* localLights = nullptr; // the lit pass's and its views' spot and point lights
     SplitTiles staticTiles; // empty unless the realtime atlases draw dynamic casters only
     bool screenSpace = false; // directional shadows collected in screen space

@@ -27,6 +27,8 @@ std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer&
     commands.beginPass({.framebuffer = &target,
                         .clearColor = visibility ? kUndecided : kBackground,
                         .clearDepth = !features.depthPrepassed});
+    // A set stays bound across pipeline changes.
+    commands.bindBindingSet(*state.shadowMapSet);
     const rhi::Pipeline* bound = nullptr;
     for (const LitDraw& draw : state.litDraws) {
         const scene::Object& object = scene.objects[draw.object];
@@ -36,10 +38,10 @@ std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer&
         objectFeatures.materialMaps = litMaterialMaps(material);
         const rhi::Pipeline* pipeline = &pipelines.choose(objectFeatures, material.doubleSided, blend);
         if (pipeline != bound) {
-            // Every binding again: a pipeline change may drop what was bound (OpenGL program, Vulkan layout).
+            // The frame's other bindings with each pipeline, as before; bindings survive a pipeline change, so the
+            // shadow maps' set is bound once, above.
             commands.bindPipeline(*pipeline);
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
-            state.shadowMaps.bind(commands);
             state.localLights->bind(commands);
             if (features.directionalShadows != DirectionalShadowSource::Forward)
                 commands.bindTexture(kLitScreenSpaceShadowsBinding, collection->shadows(), collection->sampler());

@@ -65,7 +65,7 @@ void ScreenSpaceShadowsPass::execute(const FramePassContext& context)
     collection_.begin(commands, state_.features,
                       state_.uniforms->push(
                           screenSpaceShadowUniforms(state_.litFrameUniforms, desc.width, desc.height)));
-    state_.shadowMaps.bind(commands);
+    commands.bindBindingSet(*state_.shadowMapSet);
     collection_.draw(commands);
 }
 

@@ -45,17 +45,19 @@ void refuseMultisampled(std::string_view what, const TextureDesc& desc)
 
 } // namespace
 
-void checkTextureBinding(const Capabilities& caps, const Texture& texture, const Sampler& sampler)
+void checkTextureBinding(std::string_view what, const Capabilities& caps, const Texture& texture,
+                         const Sampler& sampler)
 {
     const TextureDesc& desc = texture.desc();
     if (!hasFlag(desc.usage, TextureUsage::Sampled))
-        throw Error(fmt::format("bindTexture: texture '{}' lacks TextureUsage::Sampled", desc.debugName));
+        throw Error(fmt::format("{}: texture '{}' lacks TextureUsage::Sampled", what, desc.debugName));
     const Format format = desc.format;
     if (filtersLinearly(sampler.desc()) && !caps.supportsLinearFilter(format))
-        throw UnsupportedError(fmt::format(
-            "bindTexture: texture '{}' ({}) with linear sampler '{}': this driver ({}) cannot filter {} linearly; "
-            "use a nearest sampler and filter in the shader",
-            desc.debugName, formatName(format), sampler.desc().debugName, caps.device, formatName(format)));
+        throw UnsupportedError(
+            fmt::format("{}: texture '{}' ({}) with linear sampler '{}': this driver ({}) cannot filter {} linearly; "
+                        "use a nearest sampler and filter in the shader",
+                        what, desc.debugName, formatName(format), sampler.desc().debugName, caps.device,
+                        formatName(format)));
 }
 
 void checkTextureDesc(const Capabilities& caps, const TextureDesc& desc)

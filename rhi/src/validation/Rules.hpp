@@ -42,8 +42,28 @@ void checkTextureCopy(const Texture& src, std::uint32_t srcLayer, const Texture&
 // of the same size and format.
 void checkTextureResolve(const Texture& src, const Texture& dst);
 
-// The texture must be Sampled; a linear filter is refused on a format the driver cannot filter linearly.
-void checkTextureBinding(const Capabilities& caps, const Texture& texture, const Sampler& sampler);
+// `what` binds the texture with the sampler: it must be Sampled; a linear filter is refused on a format the driver
+// cannot filter linearly.
+void checkTextureBinding(std::string_view what, const Capabilities& caps, const Texture& texture,
+                         const Sampler& sampler);
+
+// "uniform buffer", "texture and sampler", ...: what a binding of the kind holds, as messages name it.
+std::string_view bindingKindName(BindingKind kind);
+
+// `what` binds `size` bytes at `offset` of the buffer at a uniform block's binding: Uniform usage, 1 byte up to
+// Capabilities::maxUniformBufferRange, inside the buffer, offset aligned.
+void checkUniformRange(std::string_view what, const Capabilities& caps, std::uint32_t binding, const BufferDesc& buffer,
+                       std::uint64_t offset, std::uint64_t size);
+// The same for a storage block: Storage usage, maxStorageBufferRange, storageBufferOffsetAlignment.
+void checkStorageRange(std::string_view what, const Capabilities& caps, std::uint32_t binding, const BufferDesc& buffer,
+                       std::uint64_t offset, std::uint64_t size);
+// `what` binds a level of the texture as a storage image: Storage usage, the level exists.
+void checkStorageTextureBinding(std::string_view what, const Texture& texture, std::uint32_t level);
+
+// Each binding number listed once.
+void checkBindingSetLayout(const BindingSetLayoutDesc& desc);
+// A layout, one item per binding of it and of its kind, each checked as its single bind call checks it.
+void checkBindingSet(const Capabilities& caps, const BindingSetDesc& desc);
 
 // A framebuffer's attachments must exist, share one size and sample count, be render targets, and have layers in range.
 void checkFramebuffer(const FramebufferDesc& desc);

@@ -34,21 +34,6 @@ bool rendersTo(const PipelineDesc& desc, const AttachmentFormats& formats)
     return true;
 }
 
-std::string_view kindName(BindingKind kind)
-{
-    switch (kind) {
-    case BindingKind::UniformBuffer:
-        return "uniform buffer";
-    case BindingKind::SampledTexture:
-        return "texture and sampler";
-    case BindingKind::StorageBuffer:
-        return "storage buffer";
-    case BindingKind::StorageTexture:
-        break;
-    }
-    return "storage texture";
-}
-
 // A dispatch's access to one binding, in the compute stage.
 Use computeUse(const ShaderBinding& b)
 {
@@ -245,18 +230,7 @@ void ValidatingCommandList::bindUniformBuffer(std::uint32_t binding, const Buffe
 {
     if (validate_) {
         requireDevice("bindUniformBuffer");
-        checkBufferUsage("bindUniformBuffer", buffer.desc(), BufferUsage::Uniform, "Uniform");
-        if (size == 0)
-            throw Error(fmt::format("bindUniformBuffer: binding {}: a uniform range needs at least 1 byte", binding));
-        if (size > capabilities_.maxUniformBufferRange)
-            throw Error(fmt::format("bindUniformBuffer: binding {}: {} bytes exceed "
-                                    "Capabilities::maxUniformBufferRange ({})",
-                                    binding, size, capabilities_.maxUniformBufferRange));
-        checkBufferRange("bindUniformBuffer", buffer.desc(), offset, size);
-        if (offset % capabilities_.uniformBufferOffsetAlignment != 0)
-            throw Error(fmt::format("bindUniformBuffer: offset {} is not a multiple of "
-                                    "Capabilities::uniformBufferOffsetAlignment ({})",
-                                    offset, capabilities_.uniformBufferOffsetAlignment));
+        checkUniformRange("bindUniformBuffer", capabilities_, binding, buffer.desc(), offset, size);
         if (binding >= bound_.size())
             bound_.resize(binding + 1);
         bound_[binding] = {.set = true, .kind = BindingKind::UniformBuffer, .size = size};
@@ -270,7 +244,7 @@ void ValidatingCommandList::bindTexture(std::uint32_t binding, const Texture& te
 {
     if (validate_) {
         requireDevice("bindTexture");
-        checkTextureBinding(capabilities_, texture, sampler);
+        checkTextureBinding("bindTexture", capabilities_, texture, sampler);
         if (binding >= bound_.size())
             bound_.resize(binding + 1);
         bound_[binding] = {.set = true, .kind = BindingKind::SampledTexture};
@@ -285,18 +259,7 @@ void ValidatingCommandList::bindStorageBuffer(std::uint32_t binding, const Buffe
 {
     if (validate_) {
         requireDevice("bindStorageBuffer");
-        checkBufferUsage("bindStorageBuffer", buffer.desc(), BufferUsage::Storage, "Storage");
-        if (size == 0)
-            throw Error(fmt::format("bindStorageBuffer: binding {}: a storage range needs at least 1 byte", binding));
-        if (size > capabilities_.maxStorageBufferRange)
-            throw Error(fmt::format("bindStorageBuffer: binding {}: {} bytes exceed "
-                                    "Capabilities::maxStorageBufferRange ({})",
-                                    binding, size, capabilities_.maxStorageBufferRange));
-        checkBufferRange("bindStorageBuffer", buffer.desc(), offset, size);
-        if (offset % capabilities_.storageBufferOffsetAlignment != 0)
-            throw Error(fmt::format("bindStorageBuffer: offset {} is not a multiple of "
-                                    "Capabilities::storageBufferOffsetAlignment ({})",
-                                    offset, capabilities_.storageBufferOffsetAlignment));
+        checkStorageRange("bindStorageBuffer", capabilities_, binding, buffer.desc(), offset, size);
         if (binding >= bound_.size())
             bound_.resize(binding + 1);
         bound_[binding] = {.set = true, .kind = BindingKind::StorageBuffer, .size = size};
@@ -310,10 +273,7 @@ void ValidatingCommandList::bindStorageTexture(std::uint32_t binding, const Text
 {
     if (validate_) {
         requireDevice("bindStorageTexture");
-        if (!hasFlag(texture.desc().usage, TextureUsage::Storage))
-            throw Error(
-                fmt::format("bindStorageTexture: texture '{}' lacks TextureUsage::Storage", texture.desc().debugName));
-        checkSubresource("bindStorageTexture", texture.desc(), 0, level);
+        checkStorageTextureBinding("bindStorageTexture", texture, level);
         if (binding >= bound_.size())
             bound_.resize(binding + 1);
         bound_[binding] = {.set = true, .kind = BindingKind::StorageTexture, .texture = &texture.desc()};
@@ -321,6 +281,51 @@ void ValidatingCommandList::bindStorageTexture(std::uint32_t binding, const Text
     }
     bindResource(binding, &texture, graphicsUses(texture.desc()));
     apiBindStorageTexture(binding, texture, level);
+}
+
+// The set's items were checked when it was created; here they only take their binding numbers.
+void ValidatingCommandList::bindBindingSet(const BindingSet& set)
+{
+    if (validate_) {
+        requireDevice("bindBindingSet");
+        for (const BindingSetItem& item : set.items()) {
+            if (item.binding >= bound_.size())
+                bound_.resize(item.binding + 1);
+            bound_[item.binding] = {.set = true,
+                                    .kind = item.kind,
+                                    .size = item.size,
+                                    .texture = item.texture ? &item.texture->desc() : nullptr,
+                                    .from = &set};
+        }
+        drawChecked_ = false;
+    }
+    for (const BindingSetItem& item : set.items()) {
+        if (item.buffer)
+            bindResource(item.binding, item.buffer, graphicsUses(item.buffer->desc()));
+        else
+            bindResource(item.binding, item.texture, graphicsUses(item.texture->desc()));
+    }
+    apiBindBindingSet(set);
+}
+
+void ValidatingCommandList::apiBindBindingSet(const BindingSet& set)
+{
+    for (const BindingSetItem& item : set.items()) {
+        switch (item.kind) {
+        case BindingKind::UniformBuffer:
+            apiBindUniformBuffer(item.binding, *item.buffer, item.offset, item.size);
+            break;
+        case BindingKind::SampledTexture:
+            apiBindTexture(item.binding, *item.texture, *item.sampler);
+            break;
+        case BindingKind::StorageBuffer:
+            apiBindStorageBuffer(item.binding, *item.buffer, item.offset, item.size);
+            break;
+        case BindingKind::StorageTexture:
+            apiBindStorageTexture(item.binding, *item.texture, item.level);
+            break;
+        }
+    }
 }
 
 void ValidatingCommandList::bindComputePipeline(const ComputePipeline& pipeline)
@@ -336,12 +341,17 @@ void ValidatingCommandList::checkBindings(std::string_view what, const std::stri
 {
     for (const ShaderBinding& b : bindings) {
         const Bound bound = b.binding < bound_.size() ? bound_[b.binding] : Bound{};
+        if (bound.from && bound.kind != b.kind)
+            throw Error(fmt::format("{}: binding set '{}' (layout '{}') holds a {} at binding {}, but pipeline '{}' "
+                                    "declares a {} there ('{}'): the set's layout differs from the pipeline's",
+                                    what, bound.from->debugName(), bound.from->layout().debugName,
+                                    bindingKindName(bound.kind), b.binding, pipeline, bindingKindName(b.kind), b.name));
         if (!bound.set || bound.kind != b.kind)
             throw Error(fmt::format("{}: pipeline '{}' binding {} ('{}') needs a {}, but {}", what, pipeline, b.binding,
-                                    b.name, kindName(b.kind),
+                                    b.name, bindingKindName(b.kind),
                                     bound.set ? fmt::format("a {} is bound", bound.kind == BindingKind::SampledTexture
                                                                                  ? std::string_view("texture")
-                                                                                 : kindName(bound.kind))
+                                                                                 : bindingKindName(bound.kind))
                                               : std::string("nothing is bound")));
         const bool block = b.kind == BindingKind::UniformBuffer || b.kind == BindingKind::StorageBuffer;
         if (block && bound.size < b.size)
@@ -448,7 +458,7 @@ void ValidatingCommandList::drawIndirect(const Buffer& buffer, std::uint64_t off
 {
     if (validate_) {
         checkDraw("drawIndirect");
-        checkDrawIndirect("drawIndirect", buffer, offset, 4 * sizeof(std::uint32_t));
+        checkDrawIndirect("drawIndirect", buffer, offset, kDrawIndirectCommandBytes);
     }
     apiDrawIndirect(buffer, offset);
 }
@@ -457,17 +467,55 @@ void ValidatingCommandList::drawIndexedIndirect(const Buffer& buffer, std::uint6
 {
     if (validate_) {
         checkDraw("drawIndexedIndirect");
-        checkDrawIndirect("drawIndexedIndirect", buffer, offset, 5 * sizeof(std::uint32_t));
-        if (!indexBuffer_)
-            throw Error("drawIndexedIndirect: no index buffer is bound; call bindIndexBuffer() first");
-        // GL's DrawElementsIndirectCommand has no byte offset into the index buffer (GL 4.5 section 10.4): firstIndex
-        // is the only start, so the same rule holds on every backend.
-        if (indexOffset_ != 0)
-            throw Error(fmt::format("drawIndexedIndirect: the index buffer is bound at offset {}; indirect indexed "
-                                    "draws need offset 0 (start with the arguments' firstIndex)",
-                                    indexOffset_));
+        checkDrawIndirect("drawIndexedIndirect", buffer, offset, kDrawIndexedIndirectCommandBytes);
+        checkIndexedIndirect("drawIndexedIndirect");
     }
     apiDrawIndexedIndirect(buffer, offset);
+}
+
+void ValidatingCommandList::checkIndexedIndirect(std::string_view what) const
+{
+    if (!indexBuffer_)
+        throw Error(fmt::format("{}: no index buffer is bound; call bindIndexBuffer() first", what));
+    // GL's DrawElementsIndirectCommand has no byte offset into the index buffer (GL 4.5 section 10.4): firstIndex
+    // is the only start, so the same rule holds on every backend.
+    if (indexOffset_ != 0)
+        throw Error(fmt::format("{}: the index buffer is bound at offset {}; indirect indexed draws need offset 0 "
+                                "(start with the arguments' firstIndex)",
+                                what, indexOffset_));
+}
+
+void ValidatingCommandList::checkDrawIndirectCount(std::string_view what, const Buffer& buffer, std::uint64_t offset,
+                                                   const Buffer& count, std::uint64_t countOffset,
+                                                   std::uint32_t maxDrawCount, std::uint64_t stride)
+{
+    checkDraw(what);
+    checkDrawIndirect(what, buffer, offset, std::uint64_t(maxDrawCount) * stride);
+    const std::string countWhat = fmt::format("{} count", what);
+    checkBufferUsage(countWhat, count.desc(), BufferUsage::Indirect, "Indirect");
+    if (countOffset % 4 != 0)
+        throw Error(fmt::format("{}: offset {} is not a multiple of 4", countWhat, countOffset));
+    checkBufferRange(countWhat, count.desc(), countOffset, sizeof(std::uint32_t));
+}
+
+void ValidatingCommandList::drawIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count,
+                                              std::uint64_t countOffset, std::uint32_t maxDrawCount)
+{
+    if (validate_)
+        checkDrawIndirectCount("drawIndirectCount", buffer, offset, count, countOffset, maxDrawCount,
+                               kDrawIndirectCommandBytes);
+    apiDrawIndirectCount(buffer, offset, count, countOffset, maxDrawCount);
+}
+
+void ValidatingCommandList::drawIndexedIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count,
+                                                     std::uint64_t countOffset, std::uint32_t maxDrawCount)
+{
+    if (validate_) {
+        checkDrawIndirectCount("drawIndexedIndirectCount", buffer, offset, count, countOffset, maxDrawCount,
+                               kDrawIndexedIndirectCommandBytes);
+        checkIndexedIndirect("drawIndexedIndirectCount");
+    }
+    apiDrawIndexedIndirectCount(buffer, offset, count, countOffset, maxDrawCount);
 }
 
 void ValidatingCommandList::copyBuffer(const Buffer& src, std::uint64_t srcOffset, Buffer& dst, std::uint64_t dstOffset,

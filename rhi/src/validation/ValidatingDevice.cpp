@@ -68,6 +68,20 @@ std::unique_ptr<ComputePipeline> ValidatingDevice::createComputePipeline(const C
     return apiCreateComputePipeline(desc);
 }
 
+std::unique_ptr<BindingSetLayout> ValidatingDevice::createBindingSetLayout(const BindingSetLayoutDesc& desc)
+{
+    if (validate_)
+        checkBindingSetLayout(desc);
+    return std::unique_ptr<BindingSetLayout>(new BindingSetLayout(desc));
+}
+
+std::unique_ptr<BindingSet> ValidatingDevice::createBindingSet(const BindingSetDesc& desc)
+{
+    if (validate_)
+        checkBindingSet(capabilities(), desc);
+    return std::unique_ptr<BindingSet>(new BindingSet(desc));
+}
+
 std::unique_ptr<Framebuffer> ValidatingDevice::createFramebuffer(const FramebufferDesc& desc)
 {
     if (validate_)

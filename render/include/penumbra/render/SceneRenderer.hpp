@@ -248,6 +248,8 @@ private:
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<FrameGraph> graph_;
     std::unique_ptr<FrameState> state_; // what this frame's passes draw
+    std::unique_ptr<rhi::BindingSetLayout> shadowMapLayout_;
+    std::unique_ptr<rhi::BindingSet> shadowMapSet_; // this frame's (FrameState::shadowMapSet)
     std::vector<std::unique_ptr<FramePass>> framePasses_; // this frame's built-in passes
     std::vector<UserPass> userPasses_;
     std::vector<UserTexture> userTextures_;

@@ -10,6 +10,7 @@
 // would exist twice. Here the user holds the backend's own objects; the checks still live in one place and a
 // backend cannot skip them, since the public functions are final and only the api* ones are its to write.
 
+#include "penumbra/rhi/BindingSet.hpp"
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/Hazards.hpp"
@@ -39,6 +40,8 @@ public:
     std::unique_ptr<Shader> createShader(const ShaderSource& source) final;
     std::unique_ptr<Pipeline> createPipeline(const PipelineDesc& desc) final;
     std::unique_ptr<ComputePipeline> createComputePipeline(const ComputePipelineDesc& desc) final;
+    std::unique_ptr<BindingSetLayout> createBindingSetLayout(const BindingSetLayoutDesc& desc) final;
+    std::unique_ptr<BindingSet> createBindingSet(const BindingSetDesc& desc) final;
     std::unique_ptr<Framebuffer> createFramebuffer(const FramebufferDesc& desc) final;
     std::unique_ptr<TimestampQueries> createTimestampQueries(std::uint32_t count) final;
     void submit(CommandList& commands) final;
@@ -82,11 +85,16 @@ public:
     void bindTexture(std::uint32_t binding, const Texture& texture, const Sampler& sampler) final;
     void bindStorageBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset, std::uint64_t size) final;
     void bindStorageTexture(std::uint32_t binding, const Texture& texture, std::uint32_t level) final;
+    void bindBindingSet(const BindingSet& set) final;
     void bindComputePipeline(const ComputePipeline& pipeline) final;
     void dispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z) final;
     void dispatchIndirect(const Buffer& buffer, std::uint64_t offset) final;
     void drawIndirect(const Buffer& buffer, std::uint64_t offset) final;
     void drawIndexedIndirect(const Buffer& buffer, std::uint64_t offset) final;
+    void drawIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count, std::uint64_t countOffset,
+                           std::uint32_t maxDrawCount) final;
+    void drawIndexedIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count,
+                                  std::uint64_t countOffset, std::uint32_t maxDrawCount) final;
     void draw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
               std::uint32_t firstInstance) final;
     void drawIndexed(std::uint32_t indexCount, std::uint32_t instanceCount, std::uint32_t firstIndex,
@@ -126,11 +134,18 @@ protected:
     virtual void apiBindStorageBuffer(std::uint32_t binding, const Buffer& buffer, std::uint64_t offset,
                                       std::uint64_t size) = 0;
     virtual void apiBindStorageTexture(std::uint32_t binding, const Texture& texture, std::uint32_t level) = 0;
+    // Binds the set's items; by default through the single api bind calls, the table every backend applies.
+    virtual void apiBindBindingSet(const BindingSet& set);
     virtual void apiBindComputePipeline(const ComputePipeline& pipeline) = 0;
     virtual void apiDispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z) = 0;
     virtual void apiDispatchIndirect(const Buffer& buffer, std::uint64_t offset) = 0;
     virtual void apiDrawIndirect(const Buffer& buffer, std::uint64_t offset) = 0;
     virtual void apiDrawIndexedIndirect(const Buffer& buffer, std::uint64_t offset) = 0;
+    // With Capabilities::drawIndirectCount false, the backend's emulation.
+    virtual void apiDrawIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count,
+                                      std::uint64_t countOffset, std::uint32_t maxDrawCount) = 0;
+    virtual void apiDrawIndexedIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count,
+                                             std::uint64_t countOffset, std::uint32_t maxDrawCount) = 0;
     // Records a barrier the hazard tracker derived (never empty), outside passes.
     virtual void apiBarrier(const Barrier& barrier) = 0;
     virtual void apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,
@@ -157,6 +172,7 @@ private:
         BindingKind kind = BindingKind::UniformBuffer;
         std::uint64_t size = 0; // bytes of a uniform or storage range
         const TextureDesc* texture = nullptr; // a storage texture's description
+        const BindingSet* from = nullptr; // the binding set that bound it, if one did
     };
     // What a binding number holds, for the hazard tracker (kept with validation off too).
     struct Resource {
@@ -169,6 +185,10 @@ private:
     void requireOutsidePass(std::string_view what) const;
     void checkDraw(std::string_view what);
     void checkDrawIndirect(std::string_view what, const Buffer& buffer, std::uint64_t offset, std::uint64_t size);
+    // drawIndirectCount's and drawIndexedIndirectCount's rules, `stride` bytes per command.
+    void checkDrawIndirectCount(std::string_view what, const Buffer& buffer, std::uint64_t offset, const Buffer& count,
+                                std::uint64_t countOffset, std::uint32_t maxDrawCount, std::uint64_t stride);
+    void checkIndexedIndirect(std::string_view what) const;
     void checkDispatch(std::string_view what);
     void checkBindings(std::string_view what, const std::string& pipeline, const std::vector<ShaderBinding>& bindings);
     void bindResource(std::uint32_t binding, const void* object, Use graphics);

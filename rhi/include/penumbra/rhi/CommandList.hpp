@@ -9,6 +9,7 @@
 
 namespace penumbra::rhi {
 
+class BindingSet;
 class Buffer;
 class ComputePipeline;
 class Framebuffer;
@@ -19,6 +20,11 @@ class TimestampQueries;
 struct DepthBias;
 
 enum class IndexType : std::uint8_t { UInt16, UInt32 };
+
+// Bytes of one drawIndirect command (four uint32) and one drawIndexedIndirect command (five): the strides of the
+// count draws' packed commands.
+inline constexpr std::uint32_t kDrawIndirectCommandBytes = 16;
+inline constexpr std::uint32_t kDrawIndexedIndirectCommandBytes = 20;
 
 // Pixels; y counts rows from the top of the render target on every backend.
 struct Viewport {
@@ -88,6 +94,12 @@ public:
     // One mip level of a TextureUsage::Storage texture at a storage-image binding number (imageLoad, imageStore).
     virtual void bindStorageTexture(std::uint32_t binding, const Texture& texture, std::uint32_t level = 0) = 0;
 
+    // Binds every item of the set as its single bind call would (bindUniformBuffer, bindTexture, bindStorageBuffer,
+    // bindStorageTexture), in one call, for draws and dispatches alike; a later bind or set replaces the bindings it
+    // names. At each draw or dispatch, the pipeline's bindings at the set's numbers must be of the set layout's kinds
+    // (numbers the pipeline does not declare are left unused).
+    virtual void bindBindingSet(const BindingSet& set) = 0;
+
     // Dispatches use this pipeline; it is independent of bindPipeline's, and bindings are shared by both.
     virtual void bindComputePipeline(const ComputePipeline& pipeline) = 0;
     // Runs x * y * z workgroups of the bound compute pipeline, outside passes; each count is at most
@@ -113,6 +125,15 @@ public:
     // firstInstance (VkDrawIndexedIndirectCommand, GL's DrawElementsIndirectCommand); the index buffer is bound at
     // offset 0, since GL's command has no byte offset.
     virtual void drawIndexedIndirect(const Buffer& buffer, std::uint64_t offset = 0) = 0;
+    // drawIndirect of up to maxDrawCount commands packed 16 bytes apart from `offset`, as many as the uint32 at
+    // countOffset (a multiple of 4) of BufferUsage::Indirect buffer `count` says, read on the GPU
+    // (vkCmdDrawIndirectCount, Vulkan 1.2 section 21.3; glMultiDrawArraysIndirectCount, GL 4.6 section 10.4). Where
+    // Capabilities::drawIndirectCount is false the RHI emulates it with the same picture (docs/compute.md).
+    virtual void drawIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count,
+                                   std::uint64_t countOffset, std::uint32_t maxDrawCount) = 0;
+    // drawIndexedIndirect's commands packed 20 bytes apart, counted as drawIndirectCount's.
+    virtual void drawIndexedIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count,
+                                          std::uint64_t countOffset, std::uint32_t maxDrawCount) = 0;
 
     // Copies outside passes. Texture copies take whole layers, every mip level, between textures of equal size,
     // format and level count; a texture-to-buffer copy writes one level of one layer in tightly packed rows,

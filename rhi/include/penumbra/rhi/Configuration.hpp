@@ -27,6 +27,9 @@ struct DeviceDesc {
     // rules: tests/gpu/MisuseTest.cpp). On by default, as in every test; the tools turn it off in release
     // builds unless given --validate. Without it a broken rule is undefined behaviour, as in the APIs.
     bool validateUsage = true;
+    // Draw counts read on the GPU where the device has them (Capabilities::drawIndirectCount); false takes the
+    // RHI's emulation everywhere, so tests can compare the two.
+    bool nativeDrawIndirectCount = true;
     // A window to present to (Device::createSwapchain); none for offscreen devices. With one, an
     // OpenGL device takes its context from the window instead of a headless one.
     WindowDesc window;

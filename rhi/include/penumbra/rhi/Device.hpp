@@ -1,5 +1,6 @@
 #pragma once
 
+#include "penumbra/rhi/BindingSet.hpp"
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Configuration.hpp"
 #include "penumbra/rhi/Conventions.hpp"
@@ -73,6 +74,10 @@ struct Capabilities {
     // maxStorageBufferRange; GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT and GL_MAX_SHADER_STORAGE_BLOCK_SIZE).
     std::uint32_t storageBufferOffsetAlignment = 256;
     std::uint64_t maxStorageBufferRange = 0;
+    // Draw counts read on the GPU (CommandList::drawIndirectCount): Vulkan 1.2's drawIndirectCount feature or
+    // VK_KHR_draw_indirect_count; GL 4.6 or ARB_indirect_parameters; false with DeviceDesc::nativeDrawIndirectCount
+    // off. Where false the RHI emulates the count, with the same picture and a cost docs/compute.md describes.
+    bool drawIndirectCount = false;
     // Indexed by Format. Linear filtering of depth formats is hardware 2x2 PCF with a comparison sampler;
     // lavapipe offers it for none (conventions note, section 4).
     std::array<FormatSupport, formatCount> formats{};
@@ -121,6 +126,11 @@ public:
     // A compute pipeline; its workgroup size and shared memory are checked against the limits in Capabilities,
     // its uniform and storage layouts against reflection.
     virtual std::unique_ptr<ComputePipeline> createComputePipeline(const ComputePipelineDesc& desc) = 0;
+    // The binding numbers and kinds binding sets of one shape hold; each number listed once.
+    virtual std::unique_ptr<BindingSetLayout> createBindingSetLayout(const BindingSetLayoutDesc& desc) = 0;
+    // A set of resources for CommandList::bindBindingSet: one item per binding of the layout, each checked as its
+    // single bind call checks it.
+    virtual std::unique_ptr<BindingSet> createBindingSet(const BindingSetDesc& desc) = 0;
     // Colour and depth attachments of one size and sample count, for CommandList::beginPass.
     virtual std::unique_ptr<Framebuffer> createFramebuffer(const FramebufferDesc& desc) = 0;
     // `count` GPU timestamps for CommandList::writeTimestamp, read with readTimestamps.

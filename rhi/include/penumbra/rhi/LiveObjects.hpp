@@ -21,8 +21,9 @@ enum class ObjectKind : std::uint8_t {
     CommandList,
     TimestampQueries,
     Swapchain,
+    BindingSet, // binding sets and their layouts
 };
-inline constexpr std::size_t kObjectKindCount = 10;
+inline constexpr std::size_t kObjectKindCount = 11;
 
 // "device", "buffer", "texture", ... (as the soak's report names them).
 std::string_view objectKindName(ObjectKind kind);

@@ -78,6 +78,7 @@ namespace penumbra::opengl {
     X(GetFloatv, GETFLOATV)                                                                                            \
     X(GetIntegerv, GETINTEGERV)                                                                                        \
     X(GetIntegeri_v, GETINTEGERI_V)                                                                                    \
+    X(GetNamedBufferSubData, GETNAMEDBUFFERSUBDATA)                                                                    \
     X(GetInternalformativ, GETINTERNALFORMATIV)                                                                        \
     X(GetProgramInfoLog, GETPROGRAMINFOLOG)                                                                            \
     X(GetProgramiv, GETPROGRAMIV)                                                                                      \
@@ -94,6 +95,8 @@ namespace penumbra::opengl {
     X(LinkProgram, LINKPROGRAM)                                                                                        \
     X(MapNamedBufferRange, MAPNAMEDBUFFERRANGE)                                                                        \
     X(MemoryBarrier, MEMORYBARRIER)                                                                                    \
+    X(MultiDrawArraysIndirect, MULTIDRAWARRAYSINDIRECT)                                                                \
+    X(MultiDrawElementsIndirect, MULTIDRAWELEMENTSINDIRECT)                                                            \
     X(NamedBufferStorage, NAMEDBUFFERSTORAGE)                                                                          \
     X(NamedBufferSubData, NAMEDBUFFERSUBDATA)                                                                          \
     X(NamedFramebufferDrawBuffer, NAMEDFRAMEBUFFERDRAWBUFFER)                                                          \
@@ -142,6 +145,9 @@ struct GlFunctions {
 
     // glPolygonOffsetClamp (4.6) or its ARB/EXT twin; null when the driver offers none of them.
     PFNGLPOLYGONOFFSETCLAMPPROC PolygonOffsetClamp = nullptr;
+    // glMulti*IndirectCount (4.6) or their ARB_indirect_parameters twins; null when the driver offers neither.
+    PFNGLMULTIDRAWARRAYSINDIRECTCOUNTPROC MultiDrawArraysIndirectCount = nullptr;
+    PFNGLMULTIDRAWELEMENTSINDIRECTCOUNTPROC MultiDrawElementsIndirectCount = nullptr;
 };
 
 } // namespace penumbra::opengl
