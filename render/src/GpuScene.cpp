@@ -1,6 +1,7 @@
 #include "penumbra/render/GpuScene.hpp"
 
 #include "TextureSampling.hpp"
+#include "static/ContentHash.hpp"
 
 #include "penumbra/rhi/MipChain.hpp"
 
@@ -113,10 +114,20 @@ std::vector<MipChain> mipChainsOf(const scene::Scene& scene, std::size_t first, 
 GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scene), device_(device)
 {
     scene.validate();
+    // A deformed mesh's vertices are written by the GPU skinning pass (render/src/skinning) every frame.
+    std::vector<bool> deformed(scene.meshes.size(), false);
+    deformers_.assign(scene.objects.size(), -1);
+    for (std::size_t d = 0; d < scene.rig.deformers.size(); ++d) {
+        const std::uint32_t object = scene.rig.deformers[d].object;
+        deformed.at(scene.objects.at(object).mesh) = true;
+        deformers_[object] = static_cast<std::int32_t>(d);
+    }
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
         const scene::MeshData& mesh = scene.meshes[i];
         const std::string name = "mesh " + std::to_string(i);
-        meshes_.push_back({upload(device, mesh.vertices, rhi::BufferUsage::Vertex, name + " vertices"),
+        const rhi::BufferUsage usage =
+            deformed[i] ? rhi::BufferUsage::Vertex | rhi::BufferUsage::Storage : rhi::BufferUsage::Vertex;
+        meshes_.push_back({upload(device, mesh.vertices, usage, name + " vertices"),
                            upload(device, mesh.indices, rhi::BufferUsage::Index, name + " indices")});
     }
     // As many textures at a time as there are hardware threads, so no more than that many chains are held at once.
@@ -226,9 +237,26 @@ void GpuScene::casters(std::vector<shadows::ShadowCaster>& casters) const
         caster.indices = meshes_[object.mesh].indices.get();
         caster.indexCount = static_cast<std::uint32_t>(scene_.meshOf(object).indices.size());
         caster.model = object.transform;
+        caster.pose = poseKey(i);
         caster.doubleSided = caster.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided;
         caster.drawGroup = meshMaterialGroups_[i] * 2 + (caster.doubleSided ? 1 : 0);
     }
+}
+
+std::uint64_t GpuScene::poseKey(std::size_t object) const
+{
+    const std::int32_t deformer = deformers_.at(object);
+    const scene::RigPose& pose = scene_.rig.pose;
+    if (deformer < 0 || std::size_t(deformer) >= pose.weights.size())
+        return 0;
+    ContentHash hash;
+    const std::int32_t skin = scene_.rig.deformers[std::size_t(deformer)].skin;
+    if (skin >= 0)
+        for (const glm::mat4& joint : pose.joints.at(std::size_t(skin)))
+            hash.add(joint);
+    for (const float weight : pose.weights[std::size_t(deformer)])
+        hash.add(weight);
+    return hash.value();
 }
 
 std::vector<shadows::Bounds> GpuScene::casterBounds() const
