@@ -6,6 +6,7 @@
 #include "penumbra/rhi/MipChain.hpp"
 
 #include <algorithm>
+#include <fmt/format.h>
 #include <cstddef>
 #include <exception>
 #include <map>
@@ -117,9 +118,18 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
     // A deformed mesh's vertices are written by the GPU skinning pass (render/src/skinning) every frame.
     std::vector<bool> deformed(scene.meshes.size(), false);
     deformers_.assign(scene.objects.size(), -1);
+    std::vector<std::uint32_t> drawnBy(scene.meshes.size(), 0);
+    for (const scene::Object& object : scene.objects)
+        ++drawnBy[object.mesh];
     for (std::size_t d = 0; d < scene.rig.deformers.size(); ++d) {
         const std::uint32_t object = scene.rig.deformers[d].object;
-        deformed.at(scene.objects.at(object).mesh) = true;
+        const std::uint32_t mesh = scene.objects.at(object).mesh;
+        // Objects of one mesh are drawn as instances of one draw: a deformed mesh shared would show one pose for all.
+        if (drawnBy[mesh] != 1)
+            throw scene::SceneError(fmt::format("object {} ('{}') is deformed (Scene::rig.deformers[{}]), but its mesh "
+                                                "{} is drawn by {} objects; a deformed object needs a mesh of its own",
+                                                object, scene.objects[object].name, d, mesh, drawnBy[mesh]));
+        deformed[mesh] = true;
         deformers_[object] = static_cast<std::int32_t>(d);
     }
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -26,14 +27,39 @@ constexpr std::uint32_t kWidth = 160;
 constexpr std::uint32_t kHeight = 120;
 const scene::LightRef kSun{scene::LightKind::Directional, 0};
 
-scene::Scene bendScene()
+scene::Scene loaded(const GltfBuilder& builder)
 {
     const std::filesystem::path path =
         std::filesystem::temp_directory_path() / ("penumbra-skinned-" + std::to_string(::getpid()) + ".glb");
-    twoBoneBendScene().writeGlb(path);
+    builder.writeGlb(path);
     scene::Scene scene = gltf::loadGltf(path).scene;
     std::filesystem::remove(path);
     return scene;
+}
+
+scene::Scene bendScene() { return loaded(twoBoneBendScene()); }
+
+// The bend's mesh drawn by a second node with a second skin over the same joints, whose inverse bind matrices move it
+// 1 along +x first: one mesh in two poses.
+scene::Scene twoSkinsOfOneMesh()
+{
+    GltfBuilder b = twoBoneBendScene();
+    nlohmann::json& json = b.json();
+    nlohmann::json skin = json["skins"][0];
+    const std::array<float, 32> shifted{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 0,  0, 1,
+                                        1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, -1, 0, 1};
+    skin["name"] = "shifted";
+    skin["inverseBindMatrices"] = addFloatAccessor(b, shifted, "MAT4");
+    json["skins"].push_back(skin);
+    for (const nlohmann::json& node : json["nodes"])
+        if (node.value("name", "") == "bar") {
+            nlohmann::json copy = node;
+            copy["name"] = "shifted bar";
+            copy["skin"] = 1;
+            b.addRoot(b.add("nodes", copy));
+            break;
+        }
+    return loaded(b);
 }
 
 void pose(scene::Scene& scene, float time) { scene::poseScene(scene, scene::findAnimation(scene.rig, "bend"), time); }
@@ -65,8 +91,9 @@ protected:
         const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
         const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
         const truth::RayCaster shadowRays(scene);
-        const truth::LightTruthTrace trace = truth::traceLightTruth(
-            scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows, kSun);
+        const truth::LightTruthTrace trace =
+            truth::traceLightTruth(scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows,
+                                   kSun);
         return truth::compareLightTruth(trace, shadowRays, gbuffer, truth::renderedVisibility(view));
     }
 };
@@ -115,6 +142,38 @@ TEST_F(SkinnedShadowsTest, BindPoseCastersCatchesFault)
                 f.lit.compared, f.shadowed.right, f.shadowed.compared);
     EXPECT_GT(f.shadowed.compared, 50u);
     EXPECT_LT(f.shadowed.share(), 0.9) << "measured: none of the forearm's shadow pixels is drawn shadowed";
+}
+
+// Objects of one mesh and material are drawn as the instances of one draw; two skins posing one glTF mesh must not be
+// (each skinned object has a mesh of its own): the instanced frame draws each bar apart, as a draw per object does.
+TEST_F(SkinnedShadowsTest, TwoPosesOfOneMeshAreNotDrawnAsOne)
+{
+    scene::Scene scene = twoSkinsOfOneMesh();
+    ASSERT_EQ(scene.rig.deformers.size(), 2u);
+    render::SceneRenderer renderer(*device, scene);
+    pose(scene, 1.0f);
+    render::FrameDesc frame{.width = kWidth, .height = kHeight};
+    const render::FrameStats instanced = renderer.render(scene.camera, frame);
+    const rhi::Image instancedPicture = rhi::readTexture(*device, renderer.litImage());
+    frame.instancedDraws = false;
+    const render::FrameStats perObject = renderer.render(scene.camera, frame);
+    EXPECT_EQ(instanced.litDraws, 3u) << "the ground and each bar";
+    EXPECT_EQ(instanced.litDraws, perObject.litDraws);
+    EXPECT_EQ(differingPixels(instancedPicture, rhi::readTexture(*device, renderer.litImage())), 0u);
+}
+
+// A deformed mesh drawn by a second object as well would put both in one pose: refused, naming the object.
+TEST_F(SkinnedShadowsTest, ADeformedMeshSharedWithAnotherObjectIsRefused)
+{
+    scene::Scene scene = bendScene();
+    const scene::Object bar = scene.objects.at(scene.rig.deformers.at(0).object);
+    scene.addObject("copy", bar.mesh, bar.material, glm::mat4(1.0f));
+    try {
+        render::SceneRenderer renderer(*device, scene);
+        FAIL() << "no error";
+    } catch (const scene::SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("is drawn by 2 objects"), std::string::npos) << e.what();
+    }
 }
 
 // Posing a skinned mesh keeps its model matrix (its joints place it) and its vertex buffer: the tile cache must see
