@@ -19,13 +19,13 @@
 #include <filesystem>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace penumbra::testing {
 namespace {
 
 constexpr std::uint32_t kWidth = 160;
 constexpr std::uint32_t kHeight = 120;
-const scene::LightRef kSun{scene::LightKind::Directional, 0};
 
 scene::Scene loaded(const GltfBuilder& builder)
 {
@@ -74,28 +74,50 @@ std::size_t differingPixels(const rhi::Image& a, const rhi::Image& b)
 
 class SkinnedShadowsTest : public GpuTest {
 protected:
-    // The sun's visibility view of the bend at t = 1 drawn by a renderer made at the rest pose, against the ray
-    // cast of the CPU-posed mesh.
-    truth::TruthComparison sunAgainstTruth(bool casterSkinning)
+    // Each light's visibility view of the bend at t = 1 (the sun, a spot light and a point light above the forearm)
+    // drawn by a renderer made at the rest pose, against the ray cast of the CPU-posed mesh.
+    std::vector<truth::TruthComparison> againstTruth(bool casterSkinning)
     {
         scene::Scene scene = bendScene();
-        // From above the forearm, whose shadow falls on the ground under it.
+        scene.spotLights = {{.name = "over",
+                             .intensity = 20.0f,
+                             .position = {-0.5f, 3.5f, 0.3f},
+                             .direction = {0.0f, -1.0f, 0.0f},
+                             .range = 8.0f,
+                             .innerAngle = 0.5f,
+                             .outerAngle = 0.6f}};
+        scene.pointLights = {{.name = "bulb", .intensity = 10.0f, .position = {-0.5f, 3.0f, 0.4f}, .range = 8.0f}};
+        // From above the forearm, whose shadows fall on the ground under it.
         scene.camera = scene::lookAt({-0.5f, 1.9f, 1.2f}, {-0.5f, 0.0f, 0.2f}, 0.9f);
         render::SceneRenderer renderer(*device, scene);
         renderer.setCasterSkinning(casterSkinning);
         pose(scene, 1.0f);
-        render::FrameDesc frame{.width = kWidth, .height = kHeight};
-        frame.visibilityOf = kSun;
-        renderer.render(scene.camera, frame);
-        const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
         const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
         const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
         const truth::RayCaster shadowRays(scene);
-        const truth::LightTruthTrace trace =
-            truth::traceLightTruth(scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame), frame.shadows,
-                                   kSun);
-        return truth::compareLightTruth(trace, shadowRays, gbuffer, truth::renderedVisibility(view));
+        std::vector<truth::TruthComparison> comparisons;
+        for (const scene::LightRef light : kLights) {
+            render::FrameDesc frame{.width = kWidth, .height = kHeight};
+            frame.visibilityOf = light;
+            renderer.render(scene.camera, frame);
+            const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
+            const truth::LightTruthTrace trace =
+                truth::traceLightTruth(scene, shadowRays, gbuffer, renderer.planShadows(scene.camera, frame),
+                                       frame.shadows, light);
+            comparisons.push_back(
+                truth::compareLightTruth(trace, shadowRays, gbuffer, truth::renderedVisibility(view)));
+            const truth::TruthComparison& f = comparisons.back();
+            std::printf("[ truth    ] %s %s, %s casters: lit %zu of %zu right, shadowed %zu of %zu right\n",
+                        configuration().c_str(), scene::lightKindName(light.kind),
+                        casterSkinning ? "skinned" : "bind-pose", f.lit.right, f.lit.compared, f.shadowed.right,
+                        f.shadowed.compared);
+        }
+        return comparisons;
     }
+
+    static constexpr std::array<scene::LightRef, 3> kLights{scene::LightRef{scene::LightKind::Directional, 0},
+                                                            scene::LightRef{scene::LightKind::Spot, 0},
+                                                            scene::LightRef{scene::LightKind::Point, 0}};
 };
 
 // The renderer is made at the rest pose and the scene posed afterwards, as an application playing an animation does:
@@ -123,25 +145,24 @@ TEST_F(SkinnedShadowsTest, GpuSkinningDrawsTheCpuPose)
                               << savePicture(reference, "skinned-cpu-" + configuration());
 }
 
-TEST_F(SkinnedShadowsTest, TheBentShadowAgreesWithTheRayCast)
+TEST_F(SkinnedShadowsTest, TheBentShadowsAgreeWithTheRayCast)
 {
-    const truth::TruthComparison f = sunAgainstTruth(true);
-    std::printf("[ truth    ] %s bend at t = 1: lit %zu of %zu right, shadowed %zu of %zu right\n",
-                configuration().c_str(), f.lit.right, f.lit.compared, f.shadowed.right, f.shadowed.compared);
-    EXPECT_GT(f.shadowed.compared, 50u) << "the forearm's shadow, away from edges (measured: 67 pixels)";
-    EXPECT_GE(f.lit.share(), 0.995);
-    EXPECT_GE(f.shadowed.share(), 0.995);
+    for (const truth::TruthComparison& f : againstTruth(true)) {
+        EXPECT_GT(f.shadowed.compared, 50u)
+            << "the forearm's shadow, away from edges (measured: sun 67, spot 511, point 523 pixels)";
+        EXPECT_GE(f.lit.share(), 0.995);
+        EXPECT_GE(f.shadowed.share(), 0.995);
+    }
 }
 
 // The caster passes drawn from the bind-pose vertices (the other passes posed): the bar stands upright in the shadow
-// maps, so the bent arm's shadow is missing where the ray cast finds it.
+// maps of every light, so the bent arm's shadow is missing where the ray cast finds it.
 TEST_F(SkinnedShadowsTest, BindPoseCastersCatchesFault)
 {
-    const truth::TruthComparison f = sunAgainstTruth(false);
-    std::printf("[ truth    ] bind-pose casters: lit %zu of %zu right, shadowed %zu of %zu right\n", f.lit.right,
-                f.lit.compared, f.shadowed.right, f.shadowed.compared);
-    EXPECT_GT(f.shadowed.compared, 50u);
-    EXPECT_LT(f.shadowed.share(), 0.9) << "measured: none of the forearm's shadow pixels is drawn shadowed";
+    for (const truth::TruthComparison& f : againstTruth(false)) {
+        EXPECT_GT(f.shadowed.compared, 50u);
+        EXPECT_LT(f.shadowed.share(), 0.9) << "measured: sun 0 of 67, spot 2 of 511, point 5 of 523";
+    }
 }
 
 // Objects of one mesh and material are drawn as the instances of one draw; two skins posing one glTF mesh must not be
