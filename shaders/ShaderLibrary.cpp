@@ -25,9 +25,12 @@ std::string_view source(std::string_view fileName)
 rhi::ShaderSource load(std::string_view fileName)
 {
     const bool vertex = fileName.ends_with(".vert");
-    if (!vertex && !fileName.ends_with(".frag"))
-        throw rhi::Error(fmt::format("shader '{}': the extension must be .vert or .frag", fileName));
-    rhi::ShaderSource shader{vertex ? rhi::ShaderStage::Vertex : rhi::ShaderStage::Fragment,
+    const bool compute = fileName.ends_with(".comp");
+    if (!vertex && !compute && !fileName.ends_with(".frag"))
+        throw rhi::Error(fmt::format("shader '{}': the extension must be .vert, .frag or .comp", fileName));
+    rhi::ShaderSource shader{vertex    ? rhi::ShaderStage::Vertex
+                             : compute ? rhi::ShaderStage::Compute
+                                       : rhi::ShaderStage::Fragment,
                              std::string(source(fileName)),
                              std::string(fileName),
                              {}};

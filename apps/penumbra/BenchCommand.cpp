@@ -149,7 +149,10 @@ void addBenchCommand(CLI::App& app)
         ->delimiter(',')
         ->needs(sceneOption)
         ->capture_default_str();
-    bench->add_option("--frames", scene->frames, "With --scene: frames measured per configuration")
+    bench
+        ->add_option("--frames", scene->frames,
+                     "With --scene: frames measured per configuration (with --time or --animation, each frame 1/60 s "
+                     "further into the animation, looping)")
         ->check(CLI::Range(1u, 100000u))
         ->needs(sceneOption)
         ->capture_default_str();

@@ -10,19 +10,47 @@
 #include "penumbra/render/ReferenceLitPass.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/scene/Posing.hpp"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace penumbra::apps {
 namespace {
 
 constexpr std::size_t kPasses = std::size(kBenchPassNames);
+
+// How far the animation advances per drawn frame (warm-up frames included): a 60 Hz display's frame.
+constexpr float kFrameSeconds = 1.0f / 60.0f;
+
+// The animation --time or --animation plays, where given: frame i is posed at start + i * kFrameSeconds, looping over
+// the animation's duration, so that each frame skins anew and the tile caches see the pose change.
+struct BenchAnimation {
+    std::uint32_t animation = 0;
+    float start = 0.0f;
+
+    float timeOfFrame(std::uint32_t frame, const scene::Rig& rig) const
+    {
+        const float duration = rig.animations[animation].duration();
+        const float time = start + float(frame) * kFrameSeconds;
+        return duration > 0.0f ? std::fmod(time, duration) : time;
+    }
+};
+
+std::optional<BenchAnimation> benchAnimation(const SceneOptions& options, const scene::Scene& scene)
+{
+    if (!options.time && options.animation.empty())
+        return std::nullopt;
+    return BenchAnimation{scene::findAnimation(scene.rig, options.animation.empty() ? "0" : options.animation),
+                          options.time.value_or(0.0f)};
+}
 
 // One series of per-frame figures: milliseconds, or counts.
 struct Series {
@@ -77,10 +105,12 @@ void showProgress(const std::string& configuration, std::uint32_t done, std::uin
     std::fflush(stderr);
 }
 
-ConfigurationResult benchConfiguration(const std::string& configuration, const scene::Scene& scene,
+ConfigurationResult benchConfiguration(const std::string& configuration, const scene::Scene& loaded,
                                        const render::FrameDesc& frame, const SceneBenchOptions& options,
                                        const std::optional<shadows::StaticShadowBake>& bake)
 {
+    scene::Scene scene = loaded; // posed anew each frame where an animation plays
+    const std::optional<BenchAnimation> animation = benchAnimation(options.scene, scene);
     auto device = createDevice(toolDeviceDesc(configuration, options.validate));
     if (!device->capabilities().timestamps)
         throw rhi::Error(
@@ -96,6 +126,8 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
     const std::uint32_t total = options.warmup + options.frames;
     for (std::uint32_t i = 0; i < total; ++i) {
         stopIfInterrupted();
+        if (animation)
+            scene::poseScene(scene, animation->animation, animation->timeOfFrame(i, scene.rig));
         // Each measured frame leaves the reference lit pass out, so that its wall time and pass times are the
         // renderer's alone; the reference's GPU time comes from a second frame with it in, after the lit pass on the
         // same plan and atlas.

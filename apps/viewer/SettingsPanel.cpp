@@ -447,4 +447,26 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     return changed;
 }
 
+void drawAnimationPanel(AnimationPlayer& player, const scene::Rig& rig)
+{
+    if (rig.animations.empty())
+        return;
+    ImGui::SetNextWindowPos(ImVec2(10.0f, 520.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(360.0f, 0.0f), ImGuiCond_FirstUseEver);
+    ImGui::Begin("animation");
+    std::vector<std::string> names;
+    for (std::size_t a = 0; a < rig.animations.size(); ++a)
+        names.push_back(fmt::format("{} '{}' ({:.2f} s)", a, rig.animations[a].name, rig.animations[a].duration()));
+    std::size_t index = player.animation;
+    if (indexCombo("animation", index, names)) {
+        player.animation = static_cast<std::uint32_t>(index);
+        player.time = 0.0f;
+    }
+    ImGui::Checkbox("play (Space)", &player.playing);
+    if (ImGui::SliderFloat("time (, and .)", &player.time, 0.0f, rig.animations[player.animation].duration(), "%.2f s"))
+        player.playing = false;
+    ImGui::TextUnformatted("[ and ] pick the previous and next animation");
+    ImGui::End();
+}
+
 } // namespace penumbra::viewer

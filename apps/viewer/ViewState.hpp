@@ -1,5 +1,7 @@
 #pragma once
 
+#include "AnimationPlayer.hpp"
+
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/scene/Light.hpp"
 #include "penumbra/scene/Scene.hpp"
@@ -58,5 +60,9 @@ ViewState viewStateOf(const scene::Scene& scene);
 // Draws the panel into the current ImGui frame; returns whether the user changed `state`.
 // Object names come from `scene`.
 bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene::Scene& scene);
+
+// Draws the animation window where the scene has animations: the animations listed by index and name, play / pause
+// and a time slider (AnimationPlayer).
+void drawAnimationPanel(AnimationPlayer& player, const scene::Rig& rig);
 
 } // namespace penumbra::viewer

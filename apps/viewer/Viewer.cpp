@@ -17,6 +17,7 @@
 #include "penumbra/render/AtlasPicture.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Image.hpp"
+#include "penumbra/scene/Posing.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #define GLFW_INCLUDE_NONE
@@ -133,12 +134,21 @@ private:
                        size.height > 0 ? float(size.width) / float(size.height) : 1.0f);
         if (input_.togglePanel())
             panelShown_ = !panelShown_;
+        const AnimationKeys& keys = input_.animationKeys();
+        animation_.playing = animation_.playing != keys.playPause;
+        animation_.pick(keys.pickSteps, scene_.rig);
+        animation_.scrub(keys.scrubSteps, scene_.rig);
+        animation_.advance(float(status_.frameMs * 1e-3), scene_.rig);
         if (imgui_) {
             imgui_->newFrame();
             if (panelShown_ && drawSettingsPanel(edited_, status_, scene_))
                 status_.error = applyViewState(edited_, applied_, scene_);
+            if (panelShown_)
+                drawAnimationPanel(animation_, scene_.rig);
             ImGui::Render();
         }
+        if (!scene_.rig.animations.empty())
+            scene::poseScene(scene_, animation_.animation, animation_.time);
         if (size.width == 0 || size.height == 0)
             return; // minimised
         render(size);
@@ -197,6 +207,7 @@ private:
     std::unique_ptr<rhi::Device> device_;
     std::unique_ptr<rhi::Swapchain> swapchain_;
     WindowInput input_;
+    AnimationPlayer animation_;
     std::vector<std::string> loaderNotes_;
     scene::Scene scene_;
     glm::vec3 sceneCenter_{0.0f}; // the scene's bounding sphere, which F frames and the fly speed follows

@@ -54,6 +54,11 @@ CameraInput WindowInput::poll(bool uiWantsMouse, bool uiWantsKeyboard, float sec
         input.speedSteps = int(faster) - int(slower);
         input.frame = pressed(GLFW_KEY_F);
         input.reset = pressed(GLFW_KEY_R);
+        animationKeys_.playPause = pressed(GLFW_KEY_SPACE);
+        animationKeys_.scrubSteps = int(pressed(GLFW_KEY_PERIOD)) - int(pressed(GLFW_KEY_COMMA));
+        animationKeys_.pickSteps = int(pressed(GLFW_KEY_RIGHT_BRACKET)) - int(pressed(GLFW_KEY_LEFT_BRACKET));
+    } else {
+        animationKeys_ = {};
     }
     // Tab also reaches the viewer while the panel has the keyboard, so the panel can always be hidden.
     togglePanel_ = pressed(GLFW_KEY_TAB);

@@ -10,7 +10,15 @@ namespace penumbra::viewer {
 
 // Turns GLFW's mouse, scroll and keys into CameraInput: left drag orbits, right drag looks,
 // scroll zooms, W A S D Q E fly, + and - change the fly speed, F frames the scene, R resets the camera; Tab
-// shows or hides the panel. Input the UI takes (mouse over the panel, typing) is left out.
+// shows or hides the panel; Space, `,` `.` and `[` `]` play, scrub and pick animations (AnimationKeys). Input the UI
+// takes (mouse over the panel, typing) is left out.
+// The animation keys pressed since the last poll (AnimationPlayer says what they do).
+struct AnimationKeys {
+    bool playPause = false; // Space
+    int scrubSteps = 0; // `.` forward, `,` back
+    int pickSteps = 0; // `]` next animation, `[` previous
+};
+
 class WindowInput {
 public:
     // Installs the scroll callback; create it before ImGuiSession, which chains to it.
@@ -19,6 +27,8 @@ public:
     CameraInput poll(bool uiWantsMouse, bool uiWantsKeyboard, float seconds);
     // Whether Tab was pressed since the last poll: show or hide the panel.
     bool togglePanel() const { return togglePanel_; }
+    // The animation keys of the last poll.
+    const AnimationKeys& animationKeys() const { return animationKeys_; }
 
 private:
     static void onScroll(GLFWwindow* window, double x, double y);
@@ -31,6 +41,7 @@ private:
     float scroll_ = 0.0f;
     std::map<int, bool> down_; // keys read by pressed(), as they were at the last poll
     bool togglePanel_ = false;
+    AnimationKeys animationKeys_;
 };
 
 } // namespace penumbra::viewer

@@ -1,10 +1,12 @@
 #include "penumbra/render/GpuScene.hpp"
 
 #include "TextureSampling.hpp"
+#include "static/ContentHash.hpp"
 
 #include "penumbra/rhi/MipChain.hpp"
 
 #include <algorithm>
+#include <fmt/format.h>
 #include <cstddef>
 #include <exception>
 #include <map>
@@ -113,10 +115,29 @@ std::vector<MipChain> mipChainsOf(const scene::Scene& scene, std::size_t first, 
 GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scene), device_(device)
 {
     scene.validate();
+    // A deformed mesh's vertices are written by the GPU skinning pass (render/src/skinning) every frame.
+    std::vector<bool> deformed(scene.meshes.size(), false);
+    deformers_.assign(scene.objects.size(), -1);
+    std::vector<std::uint32_t> drawnBy(scene.meshes.size(), 0);
+    for (const scene::Object& object : scene.objects)
+        ++drawnBy[object.mesh];
+    for (std::size_t d = 0; d < scene.rig.deformers.size(); ++d) {
+        const std::uint32_t object = scene.rig.deformers[d].object;
+        const std::uint32_t mesh = scene.objects.at(object).mesh;
+        // Objects of one mesh are drawn as instances of one draw: a deformed mesh shared would show one pose for all.
+        if (drawnBy[mesh] != 1)
+            throw scene::SceneError(fmt::format("object {} ('{}') is deformed (Scene::rig.deformers[{}]), but its mesh "
+                                                "{} is drawn by {} objects; a deformed object needs a mesh of its own",
+                                                object, scene.objects[object].name, d, mesh, drawnBy[mesh]));
+        deformed[mesh] = true;
+        deformers_[object] = static_cast<std::int32_t>(d);
+    }
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
         const scene::MeshData& mesh = scene.meshes[i];
         const std::string name = "mesh " + std::to_string(i);
-        meshes_.push_back({upload(device, mesh.vertices, rhi::BufferUsage::Vertex, name + " vertices"),
+        const rhi::BufferUsage usage =
+            deformed[i] ? rhi::BufferUsage::Vertex | rhi::BufferUsage::Storage : rhi::BufferUsage::Vertex;
+        meshes_.push_back({upload(device, mesh.vertices, usage, name + " vertices"),
                            upload(device, mesh.indices, rhi::BufferUsage::Index, name + " indices")});
     }
     // As many textures at a time as there are hardware threads, so no more than that many chains are held at once.
@@ -226,9 +247,26 @@ void GpuScene::casters(std::vector<shadows::ShadowCaster>& casters) const
         caster.indices = meshes_[object.mesh].indices.get();
         caster.indexCount = static_cast<std::uint32_t>(scene_.meshOf(object).indices.size());
         caster.model = object.transform;
+        caster.pose = poseKey(i);
         caster.doubleSided = caster.doubleSided || object.castShadows == scene::ShadowCasting::TwoSided;
         caster.drawGroup = meshMaterialGroups_[i] * 2 + (caster.doubleSided ? 1 : 0);
     }
+}
+
+std::uint64_t GpuScene::poseKey(std::size_t object) const
+{
+    const std::int32_t deformer = deformers_.at(object);
+    const scene::RigPose& pose = scene_.rig.pose;
+    if (deformer < 0 || std::size_t(deformer) >= pose.weights.size())
+        return 0;
+    ContentHash hash;
+    const std::int32_t skin = scene_.rig.deformers[std::size_t(deformer)].skin;
+    if (skin >= 0)
+        for (const glm::mat4& joint : pose.joints.at(std::size_t(skin)))
+            hash.add(joint);
+    for (const float weight : pose.weights[std::size_t(deformer)])
+        hash.add(weight);
+    return hash.value();
 }
 
 std::vector<shadows::Bounds> GpuScene::casterBounds() const

@@ -15,6 +15,8 @@
 #include "passes/PrepassPasses.hpp"
 #include "passes/ScreenSpaceShadowPass.hpp"
 #include "passes/ShadowMapPasses.hpp"
+#include "skinning/GpuSkinning.hpp"
+#include "skinning/SkinningPass.hpp"
 #include "static/StaticMapHashes.hpp"
 #include "static/StaticShadowCache.hpp"
 #include "static/StaticTileCache.hpp"
@@ -91,8 +93,8 @@ rhi::TextureDesc depthTargetDesc(const FrameDesc& frame, std::uint32_t samples)
 } // namespace
 
 SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
-    : device_(device), gpuScene_(device, scene), shadowPass_(device, GpuScene::vertexFormat()),
-      localShadowPass_(device, GpuScene::vertexFormat()),
+    : device_(device), gpuScene_(device, scene), skinning_(std::make_unique<GpuSkinning>(device, gpuScene_)),
+      shadowPass_(device, GpuScene::vertexFormat()), localShadowPass_(device, GpuScene::vertexFormat()),
       localTiles_(std::make_unique<LocalTileCache>(device, GpuScene::vertexFormat())),
       litVertex_(device.createShader(litShader("lit.vert"))),
       litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, 1)),
@@ -313,6 +315,11 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
                          uniforms_, instances_);
     gpuScene_.casters(casters_);
+    if (!casterSkinning_)
+        for (shadows::ShadowCaster& caster : casters_)
+            for (std::uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh)
+                if (caster.vertices == &gpuScene_.vertices(mesh) && skinning_->restVertices(mesh))
+                    caster.vertices = skinning_->restVertices(mesh);
     if (!frame.instancedDraws)
         for (shadows::ShadowCaster& caster : casters_)
             caster.drawGroup = shadows::kNoDrawGroup;
@@ -409,6 +416,7 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     LitPipelines& litPipelines = frame.msaa > 1 ? *multisampledLitPipelines_ : *litPipelines_;
     framePasses_.clear();
     const auto add = [&](std::unique_ptr<FramePass> pass) { framePasses_.push_back(std::move(pass)); };
+    add(std::make_unique<SkinningPass>(*skinning_));
     add(std::make_unique<StaticMapsPass>(state, *staticShadows_));
     add(std::make_unique<StaticTilesPass>(state, *directionalStaticTiles_, StaticTilesPass::Atlas::Directional));
     add(std::make_unique<DirectionalAtlasPass>(state, shadowPass_, plan_));

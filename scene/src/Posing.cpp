@@ -7,7 +7,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <charconv>
-#include <map>
 #include <string>
 
 namespace penumbra::scene {
@@ -80,7 +79,7 @@ std::uint32_t findAnimation(const Rig& rig, std::string_view nameOrIndex)
 
 void poseScene(Scene& scene, std::optional<std::uint32_t> animation, float time)
 {
-    const Rig& rig = scene.rig;
+    Rig& rig = scene.rig;
     NodePose pose = restPose(rig);
     if (animation)
         applyAnimation(rig.animations.at(*animation), time, pose);
@@ -92,14 +91,18 @@ void poseScene(Scene& scene, std::optional<std::uint32_t> animation, float time)
     };
     for (const PlacedObject& placed : rig.placed)
         place(placed.object, world[placed.node] * placed.instance);
-    std::map<std::int32_t, std::vector<glm::mat4>> joints; // skin -> its joint matrices
+    rig.pose.joints.clear();
+    for (const Skin& skin : rig.skins)
+        rig.pose.joints.push_back(jointMatrices(skin, world));
+    rig.pose.weights.clear();
     for (const Deformer& deformer : rig.deformers) {
-        if (deformer.skin >= 0 && !joints.count(deformer.skin))
-            joints[deformer.skin] = jointMatrices(rig.skins[std::size_t(deformer.skin)], world);
+        const std::vector<float>& weights = pose.weights[deformer.node];
+        rig.pose.weights.push_back(weights);
         MeshData& mesh = scene.meshes[scene.objects[deformer.object].mesh];
-        mesh.vertices = deformVertices(deformer, pose.weights[deformer.node],
-                                       deformer.skin >= 0 ? std::span<const glm::mat4>(joints[deformer.skin])
-                                                          : std::span<const glm::mat4>());
+        mesh.vertices =
+            deformVertices(deformer, weights,
+                           deformer.skin >= 0 ? std::span<const glm::mat4>(rig.pose.joints[std::size_t(deformer.skin)])
+                                              : std::span<const glm::mat4>());
         updateBounds(mesh);
         // glTF 2.0 section 3.7.3.1: a skinned mesh's node transform is ignored, its joints place it.
         place(deformer.object, deformer.skin >= 0 ? deformer.instance : world[deformer.node] * deformer.instance);

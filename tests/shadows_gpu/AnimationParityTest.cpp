@@ -1,5 +1,5 @@
-// An animated skin drawn through every configuration: the two-bone bend posed on the CPU (scene::poseScene) at two
-// times gives different pictures, each the same on every configuration.
+// An animated skin drawn through every configuration: the two-bone bend posed (scene::poseScene, skinned on the GPU)
+// at two times gives different pictures, each the same on every configuration.
 #include "GltfAnimationScenes.hpp"
 #include "GpuTesting.hpp"
 
@@ -39,9 +39,10 @@ TEST(AnimationParity, TheTwoBoneBendIsTheSamePictureOnEveryConfigurationAtEachTi
     const render::FrameDesc frame{.width = 160, .height = 120};
     std::map<std::string, std::array<rhi::Image, 2>> pictures;
     reportSkipped(forEachConfiguration([&](rhi::Device& device, const std::string& configuration) {
+        // One renderer posed at each time in turn, as a playing animation is: skinned on the GPU each frame.
+        render::SceneRenderer renderer(device, scene);
         for (std::size_t t = 0; t < kTimes.size(); ++t) {
             scene::poseScene(scene, scene::findAnimation(scene.rig, "bend"), kTimes[t]);
-            render::SceneRenderer renderer(device, scene);
             renderer.render(scene.camera, frame);
             pictures[configuration][t] = rhi::readTexture(device, renderer.litImage());
         }

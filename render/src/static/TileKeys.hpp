@@ -24,7 +24,7 @@ inline void addTileCasters(ContentHash& h, const shadows::ShadowTileDraw& tile,
 {
     for (const std::uint32_t i : tile.casters) {
         const shadows::ShadowCaster& c = casters[i];
-        h.add(i).add(c.vertices).add(c.indices).add(c.indexCount).add(c.model).add(c.mode).add(c.alpha);
+        h.add(i).add(c.vertices).add(c.indices).add(c.indexCount).add(c.model).add(c.pose).add(c.mode).add(c.alpha);
         h.add(c.alphaCutoff).add(c.baseColorMap).add(c.textured).add(c.baseColorUv).add(c.doubleSided);
     }
 }

@@ -8,6 +8,7 @@
 namespace penumbra::render::frame {
 
 // Passes, in the order they run.
+inline constexpr std::string_view kSkinningPass = "skinning"; // a scene with skinned or morphed meshes
 inline constexpr std::string_view kStaticMapsPass = "static maps";
 inline constexpr std::string_view kDirectionalStaticTilesPass = "directional static tiles";
 inline constexpr std::string_view kDirectionalAtlasPass = "directional atlas";
@@ -20,7 +21,8 @@ inline constexpr std::string_view kLitPass = "lit";
 inline constexpr std::string_view kResolvePass = "msaa resolve";
 inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
-inline constexpr std::array kPasses{kStaticMapsPass,
+inline constexpr std::array kPasses{kSkinningPass,
+                                    kStaticMapsPass,
                                     kDirectionalStaticTilesPass,
                                     kDirectionalAtlasPass,
                                     kLocalStaticTilesPass,

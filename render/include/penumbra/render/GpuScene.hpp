@@ -15,7 +15,8 @@
 namespace penumbra::render {
 
 // A scene's meshes in GPU buffers (vertices as scene::Vertex, 32-bit indices), and its shadow
-// casters in the order the shadow planner sees their bounds.
+// casters in the order the shadow planner sees their bounds. A deformed mesh (scene::Rig::deformers) gets a vertex
+// buffer that is also a storage buffer: the renderer's GPU skinning writes its pose into it every frame.
 class GpuScene {
 public:
     // Validates the scene (scene::SceneError names what is wrong) and uploads every mesh and texture, each
@@ -62,6 +63,9 @@ public:
     // from the scene on every call, so moved objects (with updated worldBounds) are seen. `casters` is cleared and
     // filled, so that a caller keeps its storage from frame to frame.
     void casters(std::vector<shadows::ShadowCaster>& casters) const;
+    // What a deformed object's vertices are posed by this frame (a hash of its joint matrices and morph weights in
+    // scene::Rig::pose), 0 for an object drawn as uploaded: ShadowCaster::pose, which caches compare.
+    std::uint64_t poseKey(std::size_t object) const;
     // Every shadow caster's world bounds, in caster order.
     std::vector<shadows::Bounds> casterBounds() const;
     // Indices into casters() of the casters whose objects are static (scene::Mobility), ascending.
@@ -99,6 +103,8 @@ private:
     std::vector<Mesh> meshes_;
     // Per object: the objects of one mesh and material share a number (an object's mesh and material never change).
     std::vector<std::uint32_t> meshMaterialGroups_;
+    // Per object: its scene::Rig::deformers index, -1 for an object not deformed.
+    std::vector<std::int32_t> deformers_;
     rhi::Device& device_;
     std::vector<std::unique_ptr<rhi::Texture>> textures_;
     std::vector<std::unique_ptr<rhi::Sampler>> samplers_; // one per texture

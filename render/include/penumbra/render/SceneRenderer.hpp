@@ -28,6 +28,7 @@ namespace penumbra::render {
 
 class DepthPrepass;
 class FrameGraph;
+class GpuSkinning;
 class LitPipelines;
 class LocalLightTextures;
 class LocalTileCache;
@@ -199,6 +200,10 @@ public:
     // textures each reads and writes.
     std::string frameGraphDot() const;
 
+    // For the negative control only (tests): false draws the shadow casters of skinned and morphed meshes from their
+    // bind-pose vertices, as if the caster passes left skinning out, while every other pass draws the pose.
+    void setCasterSkinning(bool on) { casterSkinning_ = on; }
+
 private:
     struct UserPass {
         std::shared_ptr<FramePass> pass;
@@ -222,6 +227,8 @@ private:
 
     rhi::Device& device_;
     GpuScene gpuScene_;
+    std::unique_ptr<GpuSkinning> skinning_; // poses deformed meshes on the GPU (render/src/skinning)
+    bool casterSkinning_ = true;
     shadows::DirectionalShadowPass shadowPass_;
     shadows::LocalShadowPass localShadowPass_;
     std::unique_ptr<LocalTileCache> localTiles_;

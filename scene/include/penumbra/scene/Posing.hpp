@@ -36,8 +36,9 @@ std::uint32_t findAnimation(const Rig& rig, std::string_view nameOrIndex);
 
 // Poses the scene: its rest pose with `animation` (a Rig::animations index, none: the rest pose) applied at `time`
 // seconds. Placed objects get their node's world transform, deformed ones their morphed and skinned vertices, and
-// both their bounds, so culling and shadow fitting see the pose. The CPU path is the reference: the ground truth's
-// ray caster reads these vertices, and a GPU skinning pass is to match them.
+// both their bounds, so culling and shadow fitting see the pose; Rig::pose takes the joint matrices and morph weights
+// that the renderer's GPU skinning deforms the uploaded rest vertices with. The CPU path is the reference: the ground
+// truth's ray caster reads these vertices, and the GPU skinning matches them.
 void poseScene(Scene& scene, std::optional<std::uint32_t> animation, float time);
 
 } // namespace penumbra::scene

@@ -17,8 +17,8 @@ namespace penumbra::scene {
 // What a scene keeps of a glTF file's node hierarchy to pose it again at another time: the nodes with their rest
 // transforms, skins, the meshes that skins and morph targets deform (with their rest vertices) and the animations.
 // Empty for a scene without skins, morph targets or animations; Scene::objects hold the pose last computed
-// (posing.hpp's poseScene), the rest pose after loading. The data is what a GPU skinning pass needs as well: per
-// vertex joint indices and weights, per skin its joint matrices, per morph target its vertex offsets.
+// (Posing.hpp's poseScene), the rest pose after loading. The renderer's GPU skinning (render/src/skinning) uploads the
+// rest vertices, per vertex joint indices and weights and per morph target the vertex offsets, and reads `pose`.
 
 // A node of the hierarchy. `parent` is less than the node's own index, so one pass in order computes world transforms.
 struct RigNode {
@@ -101,12 +101,20 @@ struct Animation {
     float duration() const;
 };
 
+// The pose poseScene computed last, as the renderer's GPU skinning reads it: each skin's joint matrices
+// (jointMatrices) and each deformer's morph weights, in Rig::skins and Rig::deformers order. Empty before a pose.
+struct RigPose {
+    std::vector<std::vector<glm::mat4>> joints;
+    std::vector<std::vector<float>> weights;
+};
+
 struct Rig {
     std::vector<RigNode> nodes;
     std::vector<Skin> skins;
     std::vector<Deformer> deformers;
     std::vector<PlacedObject> placed;
     std::vector<Animation> animations;
+    RigPose pose;
 
     bool empty() const { return nodes.empty(); }
 };

@@ -39,6 +39,9 @@ struct ShadowCaster {
     const rhi::Buffer* indices = nullptr; // 32-bit indices
     std::uint32_t indexCount = 0;
     glm::mat4 model{1.0f};
+    // What the vertices were deformed to this frame (a skinned or morphed mesh's pose, as a hash), 0 for vertices that
+    // never change: the tile caches redraw a tile whose caster's pose changed although its model did not.
+    std::uint64_t pose = 0;
     ShadowCasterMode mode = ShadowCasterMode::Opaque;
     float alpha = 1.0f;
     float alphaCutoff = 0.5f;

@@ -1,0 +1,147 @@
+#version 450
+// GPU skinning (penumbra::render::GpuSkinning): one deformed mesh's vertices at the frame's pose, written into the
+// vertex buffer that every pass draws it from. Morph targets first (glTF 2.0 section 3.7.2.2), then linear blend
+// skinning (section 3.7.3): the math of scene/src/Skinning.cpp, which stays the reference (the ground truth's ray
+// caster skins on the CPU).
+
+#include "constants.glsl"
+
+layout(local_size_x = 64) in;
+
+// scene::Vertex as floats: position 0, normal 3, uv 6, uv1 8, tangent 10, colour 14.
+const uint kVertexFloats = 18;
+// MorphTarget offsets as floats per target and vertex: position, normal, tangent xyz (0 where the target has none).
+const uint kTargetFloats = 9;
+const uint kSkinned = 1u; // Deform.flags: the deformer has a skin
+const uint kFlatNormals = 2u; // Deform.flags: each triangle's vertices get its face normal (a file without normals)
+
+layout(std430, binding = PENUMBRA_BINDING_DEFORM) readonly buffer Deform {
+    uint vertexCount;
+    uint influenceSets; // JOINTS_n/WEIGHTS_n sets per vertex
+    uint targetCount;
+    uint flags;
+    float weights[]; // targetCount morph weights
+} deform;
+
+layout(std430, binding = PENUMBRA_BINDING_REST) readonly buffer Rest { float rest[]; };
+
+struct Influence {
+    uvec4 joints; // into Skin::joints
+    vec4 weights;
+};
+layout(std430, binding = PENUMBRA_BINDING_INFLUENCES) readonly buffer Influences { Influence influences[]; };
+
+layout(std430, binding = PENUMBRA_BINDING_TARGETS) readonly buffer Targets { float targets[]; };
+
+layout(std430, binding = PENUMBRA_BINDING_JOINTS) readonly buffer Joints { mat4 joints[]; };
+
+layout(std430, binding = PENUMBRA_BINDING_POSED) writeonly buffer Posed { float posed[]; };
+
+vec3 restVec3(uint v, uint at)
+{
+    const uint base = v * kVertexFloats + at;
+    return vec3(rest[base], rest[base + 1], rest[base + 2]);
+}
+
+vec3 targetVec3(uint t, uint v, uint at)
+{
+    const uint base = (t * deform.vertexCount + v) * kTargetFloats + at;
+    return vec3(targets[base], targets[base + 1], targets[base + 2]);
+}
+
+vec3 normalizedOr(vec3 v, vec3 fallback)
+{
+    const float l = length(v);
+    return l > 0.0 ? v / l : fallback;
+}
+
+// Section 3.7.3.3: sum over the vertex's influences of weight * joint matrix. Here and below `precise` with explicit
+// fused multiply-adds leaves neither shader path (SPIR-V for Vulkan, SPIRV-Cross GLSL for GL) free to contract and
+// round differently, as transform.glsl explains, so both backends pose a vertex to the same bits.
+mat4 skinMatrix(uint v)
+{
+    precise mat4 sum = mat4(0.0);
+    for (uint set = 0; set < deform.influenceSets; ++set) {
+        const Influence influence = influences[v * deform.influenceSets + set];
+        for (int i = 0; i < 4; ++i)
+            if (influence.weights[i] != 0.0) {
+                const mat4 joint = joints[influence.joints[i]];
+                for (int c = 0; c < 4; ++c)
+                    sum[c] = fma(vec4(influence.weights[i]), joint[c], sum[c]);
+            }
+    }
+    return sum;
+}
+
+// m * p for the linear part of a matrix, as fused multiply-adds.
+vec3 linearTimes(mat4 m, vec3 p)
+{
+    precise vec3 result = fma(m[0].xyz, vec3(p.x), fma(m[1].xyz, vec3(p.y), m[2].xyz * p.z));
+    return result;
+}
+
+struct Deformed {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;
+};
+
+Deformed deformed(uint v)
+{
+    precise vec3 position = restVec3(v, 0);
+    precise vec3 normal = restVec3(v, 3);
+    precise vec3 tangent = restVec3(v, 10);
+    const vec3 restNormal = normal;
+    const vec3 restTangent = tangent;
+    for (uint t = 0; t < deform.targetCount; ++t) {
+        const float w = deform.weights[t];
+        position = fma(vec3(w), targetVec3(t, v, 0), position);
+        normal = fma(vec3(w), targetVec3(t, v, 3), normal);
+        tangent = fma(vec3(w), targetVec3(t, v, 6), tangent);
+    }
+    Deformed d;
+    if ((deform.flags & kSkinned) != 0u) {
+        const mat4 skin = skinMatrix(v);
+        precise vec3 skinned = linearTimes(skin, position) + skin[3].xyz;
+        d.position = skinned;
+        const mat3 normalMatrix = transpose(inverse(mat3(skin)));
+        precise vec3 skinnedNormal = fma(normalMatrix[0], vec3(normal.x),
+                                         fma(normalMatrix[1], vec3(normal.y), normalMatrix[2] * normal.z));
+        d.normal = normalizedOr(skinnedNormal, normal);
+        d.tangent.xyz = normalizedOr(linearTimes(skin, tangent), tangent);
+    } else {
+        d.position = position;
+        d.normal = normalizedOr(normal, restNormal);
+        d.tangent.xyz = normalizedOr(tangent, restTangent);
+    }
+    d.tangent.w = rest[v * kVertexFloats + 13];
+    return d;
+}
+
+void main()
+{
+    const uint v = gl_GlobalInvocationID.x;
+    if (v >= deform.vertexCount)
+        return;
+    Deformed d = deformed(v);
+    const uint first = v - v % 3u;
+    if ((deform.flags & kFlatNormals) != 0u && first + 2u < deform.vertexCount) {
+        // The flat-shaded layout: vertices 3t, 3t + 1 and 3t + 2 make triangle t; degenerate ones face +y.
+        const vec3 p0 = first == v ? d.position : deformed(first).position;
+        const vec3 p1 = first + 1u == v ? d.position : deformed(first + 1u).position;
+        const vec3 p2 = first + 2u == v ? d.position : deformed(first + 2u).position;
+        d.normal = normalizedOr(cross(p1 - p0, p2 - p0), vec3(0.0, 1.0, 0.0));
+    }
+    const uint base = v * kVertexFloats;
+    for (uint i = 0; i < kVertexFloats; ++i)
+        posed[base + i] = rest[base + i];
+    posed[base + 0] = d.position.x;
+    posed[base + 1] = d.position.y;
+    posed[base + 2] = d.position.z;
+    posed[base + 3] = d.normal.x;
+    posed[base + 4] = d.normal.y;
+    posed[base + 5] = d.normal.z;
+    posed[base + 10] = d.tangent.x;
+    posed[base + 11] = d.tangent.y;
+    posed[base + 12] = d.tangent.z;
+}
