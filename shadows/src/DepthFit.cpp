@@ -56,7 +56,7 @@ CascadeSplits depthFitSplits(ViewDepthRange fitted, float cameraNear, float came
     splits.count = cascadeCount;
     splits.distances[0] = nearDepth;
     for (std::uint32_t i = 1; i < cascadeCount; ++i) {
-        float split = nearDepth + ratios[static_cast<int>(i - 1)] * (farDepth - nearDepth);
+        float split = ratios[static_cast<int>(i - 1)] * farDepth;
         if (stepsPerOctave > 0 && split > 0.0f) {
             const float step = depthFitStep(split, stepsPerOctave);
             split = std::round(split / step) * step;

@@ -27,9 +27,11 @@ float depthFitStep(float depth, std::uint32_t stepsPerOctave);
 ViewDepthRange quantizeViewDepthRange(ViewDepthRange measured, std::optional<ViewDepthRange> kept,
                                       std::uint32_t stepsPerOctave, float hysteresisSteps);
 
-// depthFit's splits: cascadeSplits over the fitted range, d_0 = near, d_i = near + ratio_{i-1} (far - near), d_count =
-// far, with near and far clamped to [cameraNear, shadowFar] (shadowFar = min(maxDistance, cameraFar)); the inner
-// splits rounded to depthFitStep's grid (stepsPerOctave 0: not rounded) and kept in order.
+// depthFit's splits: cascadeSplits with the fitted range's far depth for the shadow distance and its near depth for the
+// camera's near plane, d_0 = near, d_i = ratio_{i-1} far (at least near), d_count = far, with near and far clamped to
+// [cameraNear, shadowFar] (shadowFar = min(maxDistance, cameraFar)); the inner splits rounded to depthFitStep's grid
+// (stepsPerOctave 0: not rounded) and kept in order. Every slice is then within the stable fit's of the same
+// distance, so no sphere is larger.
 CascadeSplits depthFitSplits(ViewDepthRange fitted, float cameraNear, float cameraFar, float maxDistance,
                              std::uint32_t cascadeCount, glm::vec3 ratios, std::uint32_t stepsPerOctave);
 
