@@ -35,13 +35,12 @@ DepthReduction::DepthReduction(rhi::Device& device)
     const auto clear = static_cast<std::int64_t>(device.conventions().clearDepth());
     const std::unique_ptr<rhi::Shader> shader =
         device.createShader(shaders::load("depth_reduction.comp", {{"CLEAR_DEPTH", clear}}));
-    pipeline_ = device.createComputePipeline(
-        {.compute = shader.get(),
-         .storageLayouts = {{"DepthBounds",
-                             sizeof(DepthBounds),
-                             {PENUMBRA_UNIFORM_MEMBER(DepthBounds, nearest),
-                              PENUMBRA_UNIFORM_MEMBER(DepthBounds, farthest)}}},
-         .debugName = "depth reduction"});
+    pipeline_ = device.createComputePipeline({.compute = shader.get(),
+                                              .storageLayouts = {{"DepthBounds",
+                                                                  sizeof(DepthBounds),
+                                                                  {PENUMBRA_UNIFORM_MEMBER(DepthBounds, nearest),
+                                                                   PENUMBRA_UNIFORM_MEMBER(DepthBounds, farthest)}}},
+                                              .debugName = "depth reduction"});
     sampler_ = device.createSampler(
         {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "depth reduction"});
     bounds_ = device.createBuffer(
