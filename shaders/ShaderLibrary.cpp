@@ -28,12 +28,9 @@ rhi::ShaderSource load(std::string_view fileName)
     const bool compute = fileName.ends_with(".comp");
     if (!vertex && !compute && !fileName.ends_with(".frag"))
         throw rhi::Error(fmt::format("shader '{}': the extension must be .vert, .frag or .comp", fileName));
-    rhi::ShaderSource shader{vertex    ? rhi::ShaderStage::Vertex
-                             : compute ? rhi::ShaderStage::Compute
-                                       : rhi::ShaderStage::Fragment,
-                             std::string(source(fileName)),
-                             std::string(fileName),
-                             {}};
+    const rhi::ShaderStage stage =
+        vertex ? rhi::ShaderStage::Vertex : (compute ? rhi::ShaderStage::Compute : rhi::ShaderStage::Fragment);
+    rhi::ShaderSource shader{stage, std::string(source(fileName)), std::string(fileName), {}};
     for (std::size_t i = 0; i < detail::embeddedCount; ++i)
         if (detail::embedded[i].first.ends_with(".glsl"))
             shader.includes.push_back(

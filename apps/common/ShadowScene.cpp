@@ -4,6 +4,7 @@
 
 #include "penumbra/backends/CreateDevice.hpp"
 #include "penumbra/render/AtlasPicture.hpp"
+#include "penumbra/truth/RayCaster.hpp"
 #include "penumbra/truth/ShadowTruth.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/rhi/Error.hpp"
@@ -96,6 +97,10 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
     pictures.configuration = configuration;
     pictures.depthRange = device.conventions().depthRange();
     pictures.reversedZ = device.conventions().reversedZ();
+    // Depth fit plans with the last frame's reduction: a first frame reduces the view's depths, as a running
+    // application's previous frame would have.
+    if (frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit)
+        renderer.render(scene.camera, frame);
     pictures.stats = renderer.render(scene.camera, frame);
     pictures.notes = renderer.notes();
     pictures.frameGraph = renderer.frameGraphDot();
@@ -104,6 +109,7 @@ ShadowPictures renderShadowScene(rhi::Device& device, const std::string& configu
             pictures.texelsPerMetre.push_back(truth::directionalTexelsPerMetre(renderer.plan(), 0, scene.camera,
                                                                                float(frame.width) / float(frame.height),
                                                                                depth));
+    pictures.directionalPlan = renderer.plan();
     pictures.lit = rhi::readTexture(device, renderer.litImage());
     if (frame.cascadeView)
         pictures.cascades = rhi::readTexture(device, renderer.cascadeImage());
@@ -147,6 +153,19 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
         throw rhi::Error(
             fmt::format("{}: {} debug message(s), first: {}", configuration, messages.size(), messages[0]));
     return pictures;
+}
+
+truth::OnScreenTexelDensity texelsOnScreen(const ShadowPictures& pictures, const scene::Scene& scene,
+                                           const truth::CpuGBuffer& gbuffer)
+{
+    return truth::directionalTexelsOnScreen(pictures.directionalPlan, 0, scene.camera, gbuffer);
+}
+
+truth::CpuGBuffer texelDensityGBuffer(const scene::Scene& scene, const render::FrameDesc& frame)
+{
+    const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
+    return truth::traceGBuffer(scene, cameraRays, scene.camera, std::max(frame.width / kTexelDensityStride, 1u),
+                               std::max(frame.height / kTexelDensityStride, 1u));
 }
 
 std::vector<parity::Picture> parityPictures(const ShadowPictures& pictures)

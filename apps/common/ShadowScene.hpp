@@ -6,8 +6,10 @@
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/Scene.hpp"
 #include "penumbra/shadows/StaticShadowBake.hpp"
+#include "penumbra/truth/ShadowTruth.hpp"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,6 +44,9 @@ struct ShadowPictures {
     std::vector<std::string> notes;
     // truth::directionalTexelsPerMetre of the first directional light at kTexelDensityDepths (empty without one).
     std::vector<float> texelsPerMetre;
+    shadows::DirectionalShadowPlan directionalPlan; // the directional plan the frame drew
+    // texelsOnScreen's, where the caller asked for it (nullopt otherwise).
+    std::optional<truth::OnScreenTexelDensity> texelsOnScreen;
 
     // Throws rhi::Error naming the atlases there are.
     const AtlasPictures& atlas(std::string_view name) const;
@@ -50,6 +55,8 @@ struct ShadowPictures {
 // View depths (metres) at which the tool reports the directional shadows' texels per metre: one or two in each
 // cascade of the default splits (10, 25, 50, 100 m).
 inline constexpr std::array<float, 5> kTexelDensityDepths{3.0f, 8.0f, 15.0f, 35.0f, 70.0f};
+// The on-screen texel density's G-buffer takes one ray per this many pixels along each side.
+inline constexpr std::uint32_t kTexelDensityStride = 8;
 
 // The scenes the tool renders by name: "test" (scenes::makeShadowTestScene, four lights), "key-light"
 // (scenes::makeSingleLightScene), "mixed" (scenes::makeMixedLightsScene: key, spot and point lights) and
@@ -79,6 +86,13 @@ ShadowPictures renderShadowScene(const std::string& configuration, const scene::
 
 // What the parity harness compares: "lit" (colour) and each atlas by its atlasFileStem ("atlas",
 // "other-atlas", "cube-atlas"), depth compared in its light-depth fraction (AtlasPictures::lightDepth).
+// The camera's view ray-cast at one sample per kTexelDensityStride x kTexelDensityStride pixels of the frame; the
+// same in every configuration.
+truth::CpuGBuffer texelDensityGBuffer(const scene::Scene& scene, const render::FrameDesc& frame);
+// truth::directionalTexelsOnScreen of the first directional light of the pictures' plan over `gbuffer`.
+truth::OnScreenTexelDensity texelsOnScreen(const ShadowPictures& pictures, const scene::Scene& scene,
+                                           const truth::CpuGBuffer& gbuffer);
+
 std::vector<parity::Picture> parityPictures(const ShadowPictures& pictures);
 
 // The file stem of an atlas in a demo folder: "atlas" for "directional", "<name>-atlas" otherwise.

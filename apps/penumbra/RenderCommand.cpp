@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
+#include <optional>
 
 namespace penumbra::apps {
 namespace {
@@ -69,11 +70,17 @@ void render(const RenderOptions& options)
 
     // Rendered first, written after: a failing configuration leaves no files from the others.
     std::vector<ShadowPictures> all;
+    std::optional<truth::CpuGBuffer> gbuffer;
     for (const std::string& configuration : configurations) {
         stopIfInterrupted();
         all.push_back(renderShadowScene(
             configuration, loaded.scene, frame,
             {.validate = options.validate, .readAtlases = !options.atlas.empty(), .bake = bake ? &*bake : nullptr}));
+        if (!loaded.scene.lights.empty()) {
+            if (!gbuffer)
+                gbuffer = texelDensityGBuffer(loaded.scene, frame);
+            all.back().texelsOnScreen = texelsOnScreen(all.back(), loaded.scene, *gbuffer);
+        }
         printStats(all.back(), loaded.scene);
     }
     stopIfInterrupted();

@@ -490,6 +490,9 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
             fmt::print(" {:g} m: {:.1f}{}", kTexelDensityDepths[i], pictures.texelsPerMetre[i],
                        i + 1 < pictures.texelsPerMetre.size() ? "," : "\n");
     }
+    if (pictures.texelsOnScreen)
+        fmt::print("  shadow texels per metre on screen: median {:.1f}, 10th percentile {:.1f}\n",
+                   pictures.texelsOnScreen->median, pictures.texelsOnScreen->tenthPercentile);
     for (const std::string& note : pictures.notes)
         fmt::print("  note: {}\n", note);
 }

@@ -221,6 +221,10 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= fieldSlider("directional.cascadeFade", d.cascadeFade);
     changed |= fieldCombo("directional.cascadeBlend", d.cascadeBlend);
     changed |= fieldCombo("directional.projection", d.projection);
+    if (d.projection == shadows::CascadeProjection::DepthFit) {
+        changed |= fieldSlider("directional.depthFitSteps", d.depthFitSteps);
+        changed |= fieldSlider("directional.depthFitHysteresis", d.depthFitHysteresis);
+    }
     ImGui::Separator();
     ImGui::TextUnformatted("spot and point lights");
     ImGui::PushID("local");

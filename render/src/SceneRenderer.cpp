@@ -8,7 +8,9 @@
 #include "cache/LocalTileCache.hpp"
 #include "graph/FrameGraph.hpp"
 #include "passes/FrameState.hpp"
+#include "passes/DepthFitPasses.hpp"
 #include "passes/DepthPrepass.hpp"
+#include "passes/DepthReduction.hpp"
 #include "passes/LitDraws.hpp"
 #include "passes/LitPasses.hpp"
 #include "passes/LitPipelines.hpp"
@@ -184,6 +186,12 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, frame.msaa);
     if (depthPrepass_->samples() != frame.msaa)
         depthPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, frame.msaa);
+    if (frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit) {
+        if (!depthReduction_)
+            depthReduction_ = std::make_unique<DepthReduction>(device_);
+        if (frame.msaa > 1 && !depthFitPrepass_)
+            depthFitPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1);
+    }
     const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
     if (firstScreenSpace) {
         receiverPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, true);
@@ -263,7 +271,7 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     const std::vector<shadows::PointShadowInput> points = pointShadowInputs(scene.pointLights);
     const std::vector<std::uint32_t> staticCasters = gpuScene_.staticCasters();
     return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
-                                            bounds),
+                                            bounds, visibleDepths_),
             shadows::planLocalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
                                       bounds),
             shadows::planStaticShadows(frame.shadows, device_.conventions(), lights, spots, points,
@@ -331,6 +339,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
         notes_.push_back(*uncollected);
     stats.notes = notes_;
     state.screenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !uncollected;
+    state.depthFit = frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit;
     state.casters = casters_;
     state.litDraws = litDraws_;
     fillFrameBlocks(camera, frame);
@@ -423,11 +432,13 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     add(std::make_unique<StaticTilesPass>(state, *localStaticTiles_, StaticTilesPass::Atlas::Local));
     add(std::make_unique<LocalAtlasPass>(state, localShadowPass_, *localTiles_, localPlan_, gpuScene_.scene()));
     add(std::make_unique<DepthPrepassPass>(state, *depthPrepass_, gpuScene_));
+    add(std::make_unique<DepthFitPrepassPass>(state, depthFitPrepass_.get(), gpuScene_));
     if (screenSpace_) {
         add(std::make_unique<ReceiverPrepassPass>(state, *receiverPrepass_, *screenSpace_, gpuScene_));
         add(std::make_unique<ScreenSpaceShadowsPass>(state, *screenSpace_));
     }
     add(std::make_unique<LitPass>(state, litPipelines, gpuScene_, screenSpace_.get()));
+    add(std::make_unique<DepthReductionPass>(state, depthReduction_.get()));
     add(std::make_unique<ResolvePass>(state, *lit_));
     add(std::make_unique<LitViewPass>(state, *litPipelines_, gpuScene_, LitView::Cascades));
     add(std::make_unique<LitViewPass>(state, *litPipelines_, gpuScene_, LitView::Visibility));
@@ -437,6 +448,20 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
         graph.addPass(*pass);
         addUserPasses(graph, name, PassPlacement::Side::After);
     }
+}
+
+// Depth fit: this frame's reduction, read after the submission (which waited for it), is the next frame's range.
+void SceneRenderer::readVisibleDepths(const scene::Camera& camera, const FrameDesc& frame)
+{
+    if (!state_->depthFit)
+        return;
+    const glm::mat4 projection =
+        device_.conventions().perspective(camera.fovY, aspectOf(frame), camera.nearPlane, camera.farPlane);
+    const std::optional<shadows::ViewDepthRange> measured = depthReduction_->read(device_.conventions(), projection);
+    const shadows::DirectionalShadowSettings& directional = frame.shadows.directional;
+    if (measured)
+        visibleDepths_ = shadows::quantizeViewDepthRange(*measured, visibleDepths_, directional.depthFitSteps,
+                                                         directional.depthFitHysteresis);
 }
 
 void SceneRenderer::addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const
@@ -492,6 +517,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     graph_->execute(*commands_);
     stats.recordingMs = millisecondsSince(start);
     device_.submit(*commands_);
+    readVisibleDepths(camera, frame);
     stats.passes = graph_->timings();
     state_->stats = nullptr;
     return stats;

@@ -135,13 +135,18 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
-                                             std::span<const Bounds> casterBounds)
+                                             std::span<const Bounds> casterBounds,
+                                             std::optional<ViewDepthRange> visibleDepths)
 {
     validate(settings);
     const DirectionalShadowSettings& directional = settings.directional;
     DirectionalShadowPlan plan;
-    plan.splits = cascadeSplits(camera.nearPlane, camera.farPlane, settings.maxDistance, directional.cascadeCount,
-                                directional.cascadeRatios);
+    // Depth fit is the stable fit (spheres snapped to texels) over the visible depths' splits.
+    plan.splits = directional.projection == CascadeProjection::DepthFit && visibleDepths
+                      ? depthFitSplits(*visibleDepths, camera.nearPlane, camera.farPlane, settings.maxDistance,
+                                       directional.cascadeCount, directional.cascadeRatios, directional.depthFitSteps)
+                      : cascadeSplits(camera.nearPlane, camera.farPlane, settings.maxDistance, directional.cascadeCount,
+                                      directional.cascadeRatios);
     plan.shadowSlots.assign(lights.size(), -1);
     const bool distanceReachesPastNear = plan.splits.farOf(plan.splits.count - 1) > camera.nearPlane;
     if (!distanceReachesPastNear)

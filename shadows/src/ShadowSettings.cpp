@@ -159,7 +159,7 @@ std::vector<SettingName> depthFormats()
     return {nameOf(rhi::Format::D16, "d16"), nameOf(rhi::Format::D24S8, "d24s8"), nameOf(rhi::Format::D32F, "d32f")};
 }
 
-std::array<ShadowSettingsField, 27> makeFields()
+std::array<ShadowSettingsField, 29> makeFields()
 {
     const std::string sampleCounts = fmt::format("{}", fmt::join(kPoissonSampleCounts, ", "));
     const SettingRange poissonRadius{SettingRangeKind::Closed, 0.5, kPenumbraTexels.high};
@@ -196,8 +196,17 @@ std::array<ShadowSettingsField, 27> makeFields()
             [](auto& s) -> auto& { return s.directional.cascadeBlend; }),
         named(
             "directional.projection", projectionSettingNames(),
-            "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices",
+            "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices; depthFit: "
+            "stable spheres over the visible depths",
             [](auto& s) -> auto& { return s.directional.projection; }, "--projection"),
+        numeric(
+            "directional.depthFitSteps", {SettingRangeKind::Closed, 0, 64},
+            "depthFit's grid steps per power of two of view depth (0: unquantized)",
+            [](auto& s) -> auto& { return s.directional.depthFitSteps; }),
+        numeric(
+            "directional.depthFitHysteresis", {SettingRangeKind::Closed, 0, 8},
+            "grid steps the visible depths must move inside depthFit's range before it narrows",
+            [](auto& s) -> auto& { return s.directional.depthFitHysteresis; }),
         named(
             "directional.atlasFormat", depthFormats(), "depth format of the directional atlas",
             [](auto& s) -> auto& { return s.directional.atlasFormat; }),
@@ -298,7 +307,7 @@ const ShadowSettingsField& shadowSettingsField(std::string_view path)
 
 std::span<const ShadowSettingsField> shadowSettingsFields()
 {
-    static const std::array<ShadowSettingsField, 27> fields = makeFields();
+    static const std::array<ShadowSettingsField, 29> fields = makeFields();
     return fields;
 }
 
@@ -321,6 +330,7 @@ const std::array<CascadeProjectionName, kCascadeProjectionCount>& cascadeProject
     static constexpr std::array<CascadeProjectionName, kCascadeProjectionCount> names{{
         {CascadeProjection::Stable, "stable"},
         {CascadeProjection::Close, "close"},
+        {CascadeProjection::DepthFit, "depthFit"},
     }};
     return names;
 }
@@ -475,6 +485,10 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return outOfRange("directional.cascadeBlend", fmt::format("{}", static_cast<int>(d.cascadeBlend)));
     if (static_cast<unsigned>(d.projection) >= static_cast<unsigned>(kCascadeProjectionCount))
         return outOfRange("directional.projection", fmt::format("{}", static_cast<int>(d.projection)));
+    if (auto problem = outsideRange("directional.depthFitSteps", d.depthFitSteps))
+        return problem;
+    if (auto problem = outsideRange("directional.depthFitHysteresis", d.depthFitHysteresis))
+        return problem;
     if (!rhi::isDepthFormat(d.atlasFormat))
         return outOfRange("directional.atlasFormat", std::string(rhi::formatName(d.atlasFormat)));
     if (auto problem = findLocalSettingsProblem(s.local))

@@ -22,6 +22,8 @@ void expectEqual(const ShadowSettings& a, const ShadowSettings& b)
     EXPECT_EQ(a.directional.cascadeFade, b.directional.cascadeFade);
     EXPECT_EQ(a.directional.cascadeBlend, b.directional.cascadeBlend);
     EXPECT_EQ(a.directional.projection, b.directional.projection);
+    EXPECT_EQ(a.directional.depthFitSteps, b.directional.depthFitSteps);
+    EXPECT_EQ(a.directional.depthFitHysteresis, b.directional.depthFitHysteresis);
     EXPECT_EQ(a.directional.atlasFormat, b.directional.atlasFormat);
     EXPECT_EQ(a.local.atlasSize, b.local.atlasSize);
     EXPECT_EQ(a.local.filter, b.local.filter);
@@ -43,6 +45,8 @@ ShadowSettings unusualSettings()
     s.directional.cascadeFade = 0.2f;
     s.directional.cascadeBlend = CascadeBlend::Dither;
     s.directional.projection = CascadeProjection::Close;
+    s.directional.depthFitSteps = 16;
+    s.directional.depthFitHysteresis = 2.5f;
     s.directional.atlasFormat = rhi::Format::D24S8;
     s.local.atlasSize = 2048;
     s.local.filter = ShadowFilter::PCF3x3;
@@ -98,8 +102,8 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
               "directional.atlasSize: 1000 is out of range, allowed powers of two 256..8192");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.atlasSize = 16384; }),
               "directional.atlasSize: 16384 is out of range, allowed powers of two 256..8192");
-    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.projection = CascadeProjection(2); }),
-              "directional.projection: 2 is out of range, allowed stable, close");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.projection = CascadeProjection(3); }),
+              "directional.projection: 3 is out of range, allowed stable, close, depthFit");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.maxDistance = 0.0f; }),
               "maxDistance: 0 is out of range, allowed > 0.001");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.distanceFade = 1.5f; }),
@@ -218,11 +222,11 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
               "shadows.json: local.nearPlane: 0.6 is out of range, allowed 0.0001..0.5");
     EXPECT_EQ(parseError(R"({"directional": {"blend": "soft"}})"),
               "shadows.json: directional.blend: unknown field, allowed atlasSize, filter, cascadeCount, "
-              "cascadeRatios, cascadeFade, cascadeBlend, projection, atlasFormat");
+              "cascadeRatios, cascadeFade, cascadeBlend, projection, depthFitSteps, depthFitHysteresis, atlasFormat");
     EXPECT_EQ(parseError(R"({"directional": {"projection": "tight"}})"),
-              "shadows.json: directional.projection: unknown value \"tight\", allowed stable, close");
+              "shadows.json: directional.projection: unknown value \"tight\", allowed stable, close, depthFit");
     EXPECT_EQ(parseError(R"({"directional": {"projection": 1}})"),
-              "shadows.json: directional.projection: unknown value 1, allowed stable, close");
+              "shadows.json: directional.projection: unknown value 1, allowed stable, close, depthFit");
     // Found by the shadow_settings fuzz target: nlohmann reports a number beyond double as out_of_range, not as a
     // parse error; it is bad JSON like any other (tests/fuzz/regressions/shadow_settings/).
     const std::string overflow = parseError(R"({"maxDistance": 1e382})");

@@ -355,6 +355,10 @@ TEST(ShadowParity, CloseFitBlendDither)
         {.name = "close-dither", .blend = CascadeBlend::Dither, .projection = shadows::CascadeProjection::Close});
 }
 
+// Depth fit: every configuration reduces the same range (a frame of the view first, renderShadowScene) and draws
+// the same cascades from it.
+TEST(ShadowParity, DepthFit) { checkParity({.name = "depth-fit", .projection = shadows::CascadeProjection::DepthFit}); }
+
 TEST(ShadowParity, CastersClip) { checkParity({.name = "clip", .casters = CasterMode::Clip}); }
 TEST(ShadowParity, CastersDither) { checkParity({.name = "casters-dither", .casters = CasterMode::Dither}); }
 TEST(ShadowParity, CastersOff) { checkParity({.name = "casters-off", .casters = CasterMode::Off}); }

@@ -97,6 +97,24 @@ float directionalTexelsPerMetre(const shadows::DirectionalShadowPlan& plan, std:
     return covered > 0 ? sum / static_cast<float>(covered) : 0.0f;
 }
 
+OnScreenTexelDensity directionalTexelsOnScreen(const shadows::DirectionalShadowPlan& plan, std::uint32_t lightIndex,
+                                               const scene::Camera& camera, const CpuGBuffer& gbuffer)
+{
+    std::vector<float> texels;
+    for (const GBufferSample& sample : gbuffer.samples) {
+        const float texel = sample.hit() ? directionalTexel(plan, lightIndex, camera, sample.position) : 0.0f;
+        if (texel > 0.0f)
+            texels.push_back(1.0f / texel);
+    }
+    if (texels.empty())
+        return {};
+    const auto at = [&](std::size_t rank) {
+        std::nth_element(texels.begin(), texels.begin() + static_cast<std::ptrdiff_t>(rank), texels.end());
+        return texels[rank];
+    };
+    return {at(texels.size() / 2), at(texels.size() / 10), texels.size()};
+}
+
 float shadowTexelSize(const render::ShadowPlans& plans, const shadows::ShadowSettings& settings,
                       const scene::Scene& scene, const scene::LightRef& light, glm::vec3 position)
 {

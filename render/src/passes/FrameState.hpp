@@ -59,6 +59,7 @@ struct FrameState {
     SplitTiles staticTiles; // empty unless the realtime atlases draw dynamic casters only
     bool screenSpace = false; // directional shadows collected in screen space
     bool multisampled = false;
+    bool depthFit = false; // directional.projection depthFit: the lit depth is reduced for the next frame's plan
     rhi::UniformArena* uniforms = nullptr; // this frame's blocks
     LitFrameUniforms litFrameUniforms; // the lit view's Frame block
     rhi::UniformSlice litFrame; // litFrameUniforms, pushed

@@ -27,6 +27,7 @@
 namespace penumbra::render {
 
 class DepthPrepass;
+class DepthReduction;
 class FrameGraph;
 class GpuSkinning;
 class LitPipelines;
@@ -159,6 +160,10 @@ public:
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
     // The directional plan the last frame drew.
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
+    // The view-depth range the next directional.projection depthFit frame fits its cascades to: the last depth-fit
+    // frame's nearest and farthest drawn pixel (a reduction of its depth), quantized with hysteresis against the range
+    // kept before (shadows::quantizeViewDepthRange); nullopt before such a frame (depthFit is then the stable fit).
+    const std::optional<shadows::ViewDepthRange>& visibleDepths() const { return visibleDepths_; }
     // Spot and point shadows: tiles of this atlas (16 texels wide where the last frame used none).
     const shadows::ShadowAtlas& localAtlas() const { return *localAtlas_; }
     // The spot and point plan the last frame drew.
@@ -219,6 +224,7 @@ private:
     std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
     void buildGraph(const FrameDesc& frame);
+    void readVisibleDepths(const scene::Camera& camera, const FrameDesc& frame);
     void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
     // The lit view's Frame block (the debug views change its view).
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame,
@@ -242,6 +248,10 @@ private:
     // the multisampled depthPrepass_ with MSAA, instead of it without) and the collection.
     std::unique_ptr<DepthPrepass> receiverPrepass_;
     std::unique_ptr<ScreenSpaceShadowPass> screenSpace_;
+    // Depth fit, made when a frame first asks for it: the reduction, and with MSAA its single-sampled prepass.
+    std::unique_ptr<DepthReduction> depthReduction_;
+    std::unique_ptr<DepthPrepass> depthFitPrepass_;
+    std::optional<shadows::ViewDepthRange> visibleDepths_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
     std::unique_ptr<LocalLightTextures> localLights_; // every spot and point light and their cluster lists
     // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.

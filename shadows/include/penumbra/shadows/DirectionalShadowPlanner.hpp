@@ -2,6 +2,7 @@
 
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Conventions.hpp"
+#include "penumbra/shadows/DepthFit.hpp"
 #include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/CascadeData.hpp"
 #include "penumbra/shadows/CascadeSplits.hpp"
@@ -84,10 +85,13 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 
 // Plans a frame's directional shadows: the first 4 lights that cast shadows with strength > 0 and have a caster in
 // their cascades' reach (castersInReach) get cascadeCount tiles each; every other light is listed in the report with
-// the reason (never an exception). Throws rhi::Error only for settings that fail validate().
+// the reason (never an exception). CascadeProjection::DepthFit splits the cascades over `visibleDepths` (the
+// quantized range, quantizeViewDepthRange) and is the stable fit where it is nullopt (no frame reduced yet). Throws
+// rhi::Error only for settings that fail validate().
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
-                                             std::span<const Bounds> casterBounds);
+                                             std::span<const Bounds> casterBounds,
+                                             std::optional<ViewDepthRange> visibleDepths = std::nullopt);
 
 } // namespace penumbra::shadows

@@ -45,19 +45,22 @@ enum class CascadeBlend { Hard, Soft, Dither };
 // Quality"). Stable fit: cascades are bands of distance to the camera, each tile a texel-snapped square around the
 // slice's bounding sphere, so the shadow texels stay put while the camera moves or turns. Close fit: cascades are
 // bands of the camera's view depth, each tile fitted to the light-space bounds of its frustum slice: more texels on
-// screen, but the tiles change size as the camera turns and the shadow edges swim. The values are the lit shader's
-// (generated into shadow_constants.glsl as PENUMBRA_PROJECTION_<NAME>).
-enum class CascadeProjection { Stable, Close };
-inline constexpr int kCascadeProjectionCount = 2;
+// screen, but the tiles change size as the camera turns and the shadow edges swim. Depth fit: the stable fit over
+// splits of the view depths the camera saw last frame (a reduction of the depth prepass, quantized with hysteresis:
+// shadows/DepthFit.hpp), so the texels hold still while the visible depths stay within a grid step; the stable fit
+// until a frame has been reduced. The values are the lit shader's (generated into shadow_constants.glsl as
+// PENUMBRA_PROJECTION_<NAME>).
+enum class CascadeProjection { Stable, Close, DepthFit };
+inline constexpr int kCascadeProjectionCount = 3;
 
-// The projection's names, in the settings JSON and on the command line alike: "stable", "close".
+// The projection's names, in the settings JSON and on the command line alike: "stable", "close", "depthFit".
 struct CascadeProjectionName {
     CascadeProjection projection;
     std::string_view name;
 };
 const std::array<CascadeProjectionName, kCascadeProjectionCount>& cascadeProjectionNames();
 std::optional<CascadeProjection> projectionFromName(std::string_view name);
-// "stable, close".
+// "stable, close, depthFit".
 std::string_view projectionNames();
 
 // Width of a tent filter's kernel in texels: 2, 3, 5, 7 (the Poisson filters: 2, their centre tap's bilinear).
@@ -98,6 +101,11 @@ struct DirectionalShadowSettings {
     float cascadeFade = 0.1f; // fraction of the last cascade's radius that fades
     CascadeBlend cascadeBlend = CascadeBlend::Hard;
     CascadeProjection projection = CascadeProjection::Stable;
+    // Depth fit: grid steps per power of two of view depth for the fitted range and splits (0: unquantized, the
+    // range as measured, which swims), and how many steps further inside the kept range the measured one must move
+    // before the fit narrows.
+    std::uint32_t depthFitSteps = 8;
+    float depthFitHysteresis = 1.0f;
     rhi::Format atlasFormat = rhi::Format::D32F;
 };
 

@@ -27,6 +27,17 @@ float shadowTexelSize(const render::ShadowPlans& plans, const shadows::ShadowSet
 float directionalTexelsPerMetre(const shadows::DirectionalShadowPlan& plan, std::uint32_t lightIndex,
                                 const scene::Camera& camera, float aspect, float viewDepth);
 
+// Texels per metre of a directional light's map over the surfaces a camera sees: 1 / texel size of the cascade the
+// lit shader selects at each G-buffer sample that has one, their median and 10th percentile (the coarse end), and
+// how many samples had a cascade. Zeros where none had.
+struct OnScreenTexelDensity {
+    float median = 0.0f;
+    float tenthPercentile = 0.0f;
+    std::size_t samples = 0;
+};
+OnScreenTexelDensity directionalTexelsOnScreen(const shadows::DirectionalShadowPlan& plan, std::uint32_t lightIndex,
+                                               const scene::Camera& camera, const CpuGBuffer& gbuffer);
+
 // Shadow rays towards `light`, as the ray cast casts them.
 ShadowRayFrom truthRays(const scene::Scene& scene, const scene::LightRef& light);
 

@@ -1,0 +1,42 @@
+#include "DepthFitPasses.hpp"
+
+#include "DepthPrepass.hpp"
+#include "DepthReduction.hpp"
+
+#include "penumbra/render/FrameResources.hpp"
+
+namespace penumbra::render {
+
+std::string DepthFitPrepassPass::name() const { return std::string(frame::kDepthFitPrepass); }
+
+bool DepthFitPrepassPass::setup(FramePassBuilder& builder)
+{
+    if (!state_.depthFit || !state_.multisampled || state_.screenSpace)
+        return false;
+    builder.write(frame::kLitDepth);
+    return true;
+}
+
+void DepthFitPrepassPass::execute(const FramePassContext& context)
+{
+    state_.stats->depthPrepassDraws += prepass_->record(context.commands(), context.framebuffer({}, frame::kLitDepth),
+                                                        scene_, state_.litDraws, state_.litFrame);
+}
+
+std::string DepthReductionPass::name() const { return std::string(frame::kDepthReductionPass); }
+
+bool DepthReductionPass::setup(FramePassBuilder& builder)
+{
+    if (!state_.depthFit)
+        return false;
+    builder.read(frame::kLitDepth);
+    builder.keep();
+    return true;
+}
+
+void DepthReductionPass::execute(const FramePassContext& context)
+{
+    reduction_->record(context.commands(), context.texture(frame::kLitDepth));
+}
+
+} // namespace penumbra::render
