@@ -242,6 +242,21 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
             "NAME=MODE"));
     command
         .add_option(
+            "--light-shadow-resolution", options.lightShadowResolutions,
+            fmt::format("A spot or point light's own shadow resolution, over the settings' local.tileResolution "
+                        "(repeatable): NAME=N, N texels per side ({} to {}) that its tile asks for when its "
+                        "reach fills the screen",
+                        scene::kMinShadowResolution, scene::kMaxShadowResolution))
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                return isLightShadowResolution(s)
+                           ? std::string()
+                           : fmt::format("'{}' is not NAME=N with N texels from {} to {}", s,
+                                         scene::kMinShadowResolution, scene::kMaxShadowResolution);
+            },
+            "NAME=N"));
+    command
+        .add_option(
             "--baked", options.baked,
             "Static shadow maps from this `penumbra bake` folder instead of drawing static casters into them; implies "
             "--realtime-casters dynamic (the realtime atlases take static casters' depth from a cache drawn when a "
@@ -392,6 +407,8 @@ LoadedScene loadScene(const SceneOptions& options)
         addLight(loaded.scene, parseLightOption(light).value());
     loaded.scene.validate();
     applyLightOverrides(loaded.scene, options.filter, options.lightSize, options.normalBiasSide);
+    for (const std::string& spec : options.lightShadowResolutions)
+        applyLightShadowResolution(loaded.scene, spec);
     for (const std::string& spec : options.lightStaticMaps)
         applyLightShadowUpdate(loaded.scene, spec);
     for (const std::string& name : options.dynamicObjects)

@@ -105,7 +105,9 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
           std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "local atlas, static casters")),
       commands_(device.createCommandList()), graph_(std::make_unique<FrameGraph>(device)),
       state_(std::make_unique<FrameState>()), uniforms_(device, "lit pass uniforms"),
-      instances_(device, "lit pass instances")
+      instances_(device, "lit pass instances"),
+      storage_(device, "lit pass storage", rhi::BufferUsage::Storage,
+               std::max<std::uint64_t>(device.capabilities().storageBufferOffsetAlignment, 16))
 {
 }
 
@@ -262,7 +264,7 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
                                             bounds),
             shadows::planLocalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
-                                      bounds),
+                                      bounds, localPlan_.allocation),
             shadows::planStaticShadows(frame.shadows, device_.conventions(), lights, spots, points,
                                        {bounds, staticCasters})};
 }
@@ -309,6 +311,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
 
     uniforms_.reset();
     instances_.reset();
+    storage_.reset();
     litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
                          uniforms_, instances_);
     gpuScene_.casters(casters_);
@@ -340,7 +343,8 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
                         staticShadows_.get(),
                         uniforms_.push(plan_.uniforms),
                         uniforms_.push(localPlan_.uniforms),
-                        uniforms_.push(staticUniforms)};
+                        uniforms_.push(staticUniforms),
+                        localTileSlice()};
     // Every spot and point light, listed in the clusters of the camera's view it may reach.
     const shadows::LightClusters clusters =
         shadows::buildLightClusters(shadowCamera(camera, aspectOf(frame)), clusterLights(gpuScene_.scene()),
@@ -351,8 +355,17 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     state.litFrame = uniforms_.push(state.litFrameUniforms);
     if (frame.visibilityOf)
         state.visibilityLight = litLightIndex(*frame.visibilityOf);
-    state.features =
-        frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_.uniforms, staticShadows_->plan());
+    state.features = frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_, staticShadows_->plan());
+}
+
+// The local atlas's tiles in the storage arena; one empty tile stands in where the frame has none, since a storage
+// binding takes at least one element.
+rhi::BufferSlice SceneRenderer::localTileSlice()
+{
+    const std::vector<shadows::LocalAtlasTileData>& tiles = localPlan_.tileData;
+    if (tiles.empty())
+        return storage_.push(shadows::LocalAtlasTileData{});
+    return storage_.push(std::as_bytes(std::span(tiles)));
 }
 
 // The static maps to draw this frame (StaticShadowCache::prepare), named with why.

@@ -159,7 +159,7 @@ std::vector<SettingName> depthFormats()
     return {nameOf(rhi::Format::D16, "d16"), nameOf(rhi::Format::D24S8, "d24s8"), nameOf(rhi::Format::D32F, "d32f")};
 }
 
-std::array<ShadowSettingsField, 27> makeFields()
+std::array<ShadowSettingsField, 29> makeFields()
 {
     const std::string sampleCounts = fmt::format("{}", fmt::join(kPoissonSampleCounts, ", "));
     const SettingRange poissonRadius{SettingRangeKind::Closed, 0.5, kPenumbraTexels.high};
@@ -221,6 +221,15 @@ std::array<ShadowSettingsField, 27> makeFields()
             "local.nearPlane", {SettingRangeKind::Closed, 0.0001, 0.5},
             "shadow near plane as a fraction of the light's range, for lights without one",
             [](auto& s) -> auto& { return s.local.nearPlane; }),
+        numeric(
+            "local.tileResolution", {SettingRangeKind::PowersOfTwo, 16, 8192},
+            "texels per side a spot or point light without its own shadowResolution asks for when its reach fills "
+            "the screen",
+            [](auto& s) -> auto& { return s.local.tileResolution; }),
+        numeric(
+            "local.minTileResolution", {SettingRangeKind::PowersOfTwo, 16, 1024},
+            "texels per side a light's tile is lowered to, at most, before the light loses its shadow",
+            [](auto& s) -> auto& { return s.local.minTileResolution; }),
         numeric(
             "soft.blockerSearchScale", kScale, "scales PCSS's blocker search region (NVIDIA's w_search)",
             [](auto& s) -> auto& { return s.soft.blockerSearchScale; }),
@@ -298,7 +307,7 @@ const ShadowSettingsField& shadowSettingsField(std::string_view path)
 
 std::span<const ShadowSettingsField> shadowSettingsFields()
 {
-    static const std::array<ShadowSettingsField, 27> fields = makeFields();
+    static const std::array<ShadowSettingsField, 29> fields = makeFields();
     return fields;
 }
 
@@ -406,6 +415,13 @@ std::optional<SettingsProblem> findLocalSettingsProblem(const LocalShadowSetting
         return problem;
     if (auto problem = outsideRange("local.nearPlane", o.nearPlane))
         return problem;
+    if (auto problem = outsideRange("local.tileResolution", o.tileResolution))
+        return problem;
+    if (auto problem = outsideRange("local.minTileResolution", o.minTileResolution))
+        return problem;
+    if (o.minTileResolution > o.atlasSize)
+        return outOfRange("local.minTileResolution",
+                          fmt::format("{} (above local.atlasSize {})", o.minTileResolution, o.atlasSize));
     return std::nullopt;
 }
 

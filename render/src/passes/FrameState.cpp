@@ -11,6 +11,7 @@ void ShadowMapBindings::bind(rhi::CommandList& commands) const
     rhi::bindUniform(commands, kLitShadowBinding, directionalUniforms);
     commands.bindTexture(kLitAtlasBinding, directional->texture(), directional->sampler());
     rhi::bindUniform(commands, kLitLocalShadowBinding, localUniforms);
+    commands.bindStorageBuffer(kLitLocalShadowTilesBinding, *localTiles.buffer, localTiles.offset, localTiles.size);
     commands.bindTexture(kLitLocalAtlasBinding, local->texture(), local->sampler());
     commands.bindTexture(kLitShadowCubesBinding, cubes->texture(), cubes->sampler());
     commands.bindTexture(kLitShadowCubeDepthsBinding, cubes->texture(), cubes->depthSampler());

@@ -25,6 +25,7 @@ struct ShadowMapBindings {
     rhi::UniformSlice directionalUniforms;
     rhi::UniformSlice localUniforms;
     rhi::UniformSlice staticUniforms;
+    rhi::BufferSlice localTiles; // the storage block LocalShadowTiles
 
     void bind(rhi::CommandList& commands) const;
 };

@@ -213,6 +213,7 @@ private:
     FrameStats prepareFrame(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans& plans);
     std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
+    rhi::BufferSlice localTileSlice();
     void buildGraph(const FrameDesc& frame);
     void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
     // The lit view's Frame block (the debug views change its view).
@@ -253,6 +254,7 @@ private:
     std::vector<UserTexture> userTextures_;
     rhi::UniformArena uniforms_;
     rhi::VertexArena instances_; // the lit draws' instance transforms
+    rhi::BufferArena storage_; // the local atlas's tiles (shadows::LocalAtlasTileData), read by the lit shaders
 
     std::unique_ptr<shadows::ShadowAtlas> atlas_;
     std::unique_ptr<shadows::ShadowAtlas> localAtlas_;
