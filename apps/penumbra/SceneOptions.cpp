@@ -466,10 +466,14 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
 
 namespace {
 
-// "  lights: 80 with shadows, 1 without; local shadow tiles: 96 drawn, 0 cached (80 lights: its tile is new)".
+// "  lights: 80 with shadows, 1 without; local atlas 75% used (fragmentation 0.00), 0 lights at a lowered resolution;
+// local shadow tiles: 96 drawn, 0 cached (80 lights: its tile is new)".
 void printLocalShadowCache(const render::FrameStats& s)
 {
     fmt::print("  lights: {} with shadows, {} without", s.shadowedLights, s.lightsWithoutShadow);
+    if (s.localAtlasUsed > 0.0f)
+        fmt::print("; local atlas {:.0f}% used (fragmentation {:.2f}), {} lights at a lowered resolution",
+                   100.0 * s.localAtlasUsed, s.localAtlasFragmentation, s.localLightsLowered);
     if (s.localTilesDrawn + s.localTilesCached != 0) {
         fmt::print("; local shadow tiles: {} drawn, {} cached", s.localTilesDrawn, s.localTilesCached);
         // Each update reads "spot light 3 ('lamp'): why"; the reasons counted.

@@ -304,7 +304,13 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
         state.staticTiles = splitStaticCasters(plans, gpuScene_.staticCasters());
     plan_ = std::move(plans.directional);
     localPlan_ = std::move(plans.local);
-    FrameStats stats{.shadowedLights = lightCounts.shadowed, .lightsWithoutShadow = lightCounts.withoutShadow};
+    const shadows::ShadowAtlasPack& pack = localPlan_.allocation.pack;
+    const std::uint64_t atlasTexels = std::uint64_t(localPlan_.atlasSize) * localPlan_.atlasSize;
+    FrameStats stats{.shadowedLights = lightCounts.shadowed,
+                     .lightsWithoutShadow = lightCounts.withoutShadow,
+                     .localAtlasUsed = atlasTexels == 0 ? 0.0f : float(double(pack.usedTexels) / double(atlasTexels)),
+                     .localAtlasFragmentation = pack.fragmentation,
+                     .localLightsLowered = static_cast<std::uint32_t>(localPlan_.lowered.size())};
     for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
         for (const shadows::DirectionalCascadePlan& cascade : light.cascades)
             stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;

@@ -116,9 +116,10 @@ ShadowSettingsField field(std::string_view path, SettingRange range, std::string
 }
 
 template <typename Member>
-ShadowSettingsField numeric(std::string_view path, SettingRange range, std::string_view summary, Member member)
+ShadowSettingsField numeric(std::string_view path, SettingRange range, std::string_view summary, Member member,
+                            std::string_view flag = {})
 {
-    return field(path, range, rangeText(range), summary, member);
+    return field(path, range, rangeText(range), summary, member, {}, flag);
 }
 
 // A field of names: an enum's values, each named once here.
@@ -203,7 +204,7 @@ std::array<ShadowSettingsField, 29> makeFields()
             [](auto& s) -> auto& { return s.directional.atlasFormat; }),
         numeric(
             "local.atlasSize", kAtlasSizes, "texels per side of the spot and point lights' atlas",
-            [](auto& s) -> auto& { return s.local.atlasSize; }),
+            [](auto& s) -> auto& { return s.local.atlasSize; }, "--local-atlas-size"),
         named(
             "local.filter", filterNames(), "the spot and point lights' filter, unless a light sets its own",
             [](auto& s) -> auto& { return s.local.filter; }),

@@ -260,7 +260,11 @@ protected:
         const float bound = seamBound(mode);
         SeamFigures figures;
         const std::uint32_t faceSize =
-            mode == PointShadowMode::Atlas ? renderer.localPlan().atlas.tileSize() : frame.shadows.local.cubeMapSize;
+            mode == PointShadowMode::Atlas
+                ? static_cast<std::uint32_t>(renderer.localPlan()
+                                                 .tiles.at(std::size_t(renderer.localPlan().pointShadows.at(0)))
+                                                 .viewport.width)
+                : frame.shadows.local.cubeMapSize;
         for (const EdgeProbe& probe : edgeProbes(scene, light, faceSize)) {
             const float a = lookup(probe.faces[0], probe.positions[0], probe.normal);
             const float b = lookup(probe.faces[1], probe.positions[1], probe.normal);

@@ -106,6 +106,11 @@ struct FrameStats {
     // The scene's lights (directional, spot and point) drawn with a shadow, realtime or static, and without one.
     std::uint32_t shadowedLights = 0;
     std::uint32_t lightsWithoutShadow = 0;
+    // The realtime local atlas (shadows::ShadowAtlasPack): the share of its texels in tiles, the share of its free
+    // texels outside the largest free square (fragmentation), and the lights whose tiles are smaller than they asked.
+    float localAtlasUsed = 0.0f;
+    float localAtlasFragmentation = 0.0f;
+    std::uint32_t localLightsLowered = 0;
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
     // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
