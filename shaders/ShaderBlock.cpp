@@ -87,6 +87,14 @@ std::string uniformBlockGlsl(const ShaderStruct& block, std::uint32_t binding, s
     return text;
 }
 
+std::string readonlyArrayBlockGlsl(const ShaderStruct& element, std::string_view block, std::uint32_t binding,
+                                   std::string_view member, std::string_view instance)
+{
+    return structGlsl(element) +
+           fmt::format("layout(std430, binding = {}) readonly buffer {} {{\n    {} {}[];\n}} {};\n", binding, block,
+                       element.name, member, instance);
+}
+
 rhi::UniformLayout uniformLayout(const ShaderStruct& block)
 {
     rhi::UniformLayout layout{std::string(block.name), 0, {}};

@@ -1,6 +1,7 @@
 // Spot and point shadow attenuation over the local atlas: the light plane's normal bias, the cube face
 // of a point light, tile-clamped PCF (shadow_filter.glsl); or, in cube-map mode, point lights through
-// hardware cube lookups. The block is penumbra::shadows::LocalShadowUniforms.
+// hardware cube lookups. The block is penumbra::shadows::LocalShadowUniforms, the atlas tiles' storage block
+// LocalShadowTiles one penumbra::shadows::LocalAtlasTileData per tile.
 
 #include "local_shadows_block.glsl"
 
@@ -80,11 +81,10 @@ float localAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
 {
     const vec3 fromLight = position - lightPosition;
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
-    const int tile = local.tile;
-    const mat4 m = localShadows.worldToAtlas[tile];
-    const vec4 p = localShadowPosition(m, localShadows.tiles[tile].normalBias, local.plane, fromLight, position, normal);
-    return filterLocalTile(localShadowAtlas, localShadows.atlasSize, m, p, localShadows.tileBounds[tile],
-                           localShadows.tiles[tile].shadowFilter, localShadows.tileSoft[tile]);
+    const LocalAtlasTileData t = localShadowTiles.tiles[local.tile];
+    const vec4 p = localShadowPosition(t.worldToAtlas, t.normalBias, local.plane, fromLight, position, normal);
+    return filterLocalTile(localShadowAtlas, localShadows.atlasSize, t.worldToAtlas, p, t.bounds, t.shadowFilter,
+                           t.soft);
 }
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read

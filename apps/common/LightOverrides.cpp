@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 
+#include <exception>
 #include <fmt/format.h>
 #include <optional>
 #include <utility>
@@ -34,6 +35,24 @@ std::optional<std::pair<std::string, scene::LightShadowUpdate>> parseLightShadow
     if (!update)
         return std::nullopt;
     return std::pair{spec.substr(0, split), *update};
+}
+
+// NAME and N of a NAME=N spec (the last '=' splits), N a number of texels in the allowed range.
+std::optional<std::pair<std::string, float>> parseLightShadowResolution(const std::string& spec)
+{
+    const std::size_t split = spec.rfind('=');
+    if (split == std::string::npos || split == 0)
+        return std::nullopt;
+    try {
+        std::size_t used = 0;
+        const std::string number = spec.substr(split + 1);
+        const float texels = std::stof(number, &used);
+        if (used != number.size() || !(texels >= scene::kMinShadowResolution && texels <= scene::kMaxShadowResolution))
+            return std::nullopt;
+        return std::pair{spec.substr(0, split), texels};
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
 }
 
 // --light-size against each light's allowed range, so the error names the flag as typed rather than the light's
@@ -78,6 +97,30 @@ void applyLightShadowUpdate(scene::Scene& scene, const std::string& spec)
     if (!found)
         throw rhi::Error(
             fmt::format("--light-static-map '{}': the scene has no light named '{}'", spec, parsed->first));
+}
+
+bool isLightShadowResolution(const std::string& spec) { return parseLightShadowResolution(spec).has_value(); }
+
+void applyLightShadowResolution(scene::Scene& scene, const std::string& spec)
+{
+    const auto parsed = parseLightShadowResolution(spec);
+    if (!parsed)
+        throw rhi::Error(fmt::format("--light-shadow-resolution '{}' is not NAME=N with N texels from {} to {}", spec,
+                                     scene::kMinShadowResolution, scene::kMaxShadowResolution));
+    bool found = false;
+    const auto set = [&](auto& light) {
+        if (light.name == parsed->first) {
+            light.shadowResolution = parsed->second;
+            found = true;
+        }
+    };
+    for (scene::SpotLight& light : scene.spotLights)
+        set(light);
+    for (scene::PointLight& light : scene.pointLights)
+        set(light);
+    if (!found)
+        throw rhi::Error(fmt::format("--light-shadow-resolution '{}': the scene has no spot or point light named '{}'",
+                                     spec, parsed->first));
 }
 
 void applyLightOverrides(scene::Scene& scene, const std::string& filter, std::optional<float> lightSize,

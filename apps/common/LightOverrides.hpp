@@ -22,4 +22,11 @@ void applyLightShadowUpdate(scene::Scene& scene, const std::string& spec);
 // Whether `spec` has the NAME=MODE form with a known MODE: the option's check.
 bool isLightShadowUpdate(const std::string& spec);
 
+// --light-shadow-resolution NAME=N: the spot and point lights named NAME ask for shadow tiles of N texels per side
+// (scene::SpotLight::shadowResolution). Throws rhi::Error naming the option for a malformed spec, N outside
+// scene::kMinShadowResolution..kMaxShadowResolution, or a name no spot or point light has.
+void applyLightShadowResolution(scene::Scene& scene, const std::string& spec);
+// Whether `spec` has the NAME=N form with N in range: the option's check.
+bool isLightShadowResolution(const std::string& spec);
+
 } // namespace penumbra::apps

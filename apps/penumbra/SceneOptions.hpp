@@ -44,6 +44,8 @@ struct SceneOptions {
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
     std::vector<std::string> lightStaticMaps; // NAME=MODE: a light's own static map mode (applyLightShadowUpdate)
+    std::vector<std::string>
+        lightShadowResolutions; // NAME=N: a light's own shadow tile size (applyLightShadowResolution)
     SettingsFieldValues settingsFields; // shadow settings fields given by their options; the rest: the file's
     std::string baked; // a `penumbra bake` folder: static maps from it; empty: none
     std::optional<float> time; // seconds into the animation (scene::poseScene); empty: the rest pose

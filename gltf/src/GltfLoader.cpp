@@ -55,6 +55,18 @@ scene::LightShadowUpdate shadowUpdate(const Document& document, const tinygltf::
     return *update;
 }
 
+// A spot or point light's own shadow tile resolution from its `extras` {"shadowResolution": N} (texels per side),
+// nullopt (the shadow settings' local.tileResolution) without one.
+std::optional<float> shadowResolution(const Document& document, const tinygltf::Light& light, const std::string& owner)
+{
+    if (!light.extras.IsObject() || !light.extras.Has("shadowResolution"))
+        return std::nullopt;
+    const tinygltf::Value& value = light.extras.Get("shadowResolution");
+    if (!value.IsNumber() && !value.IsInt())
+        document.fail(fmt::format("{}: extras.shadowResolution is not a number", owner));
+    return float(value.GetNumberAsDouble());
+}
+
 void addLight(const Document& document, const LightInstance& instance, scene::Scene& world,
               std::vector<std::string>& notes)
 {
@@ -92,7 +104,8 @@ void addLight(const Document& document, const LightInstance& instance, scene::Sc
              .innerAngle = float(light.spot.innerConeAngle),
              .outerAngle = outer,
              .sourceRadius = sourceSize(document, light, owner, scene::LightShadowDefaults::sourceRadius),
-             .shadowUpdate = shadowUpdate(document, light, owner)});
+             .shadowUpdate = shadowUpdate(document, light, owner),
+             .shadowResolution = shadowResolution(document, light, owner)});
     } else if (light.type == "point") {
         world.pointLights.push_back(
             {.name = light.name,
@@ -101,7 +114,8 @@ void addLight(const Document& document, const LightInstance& instance, scene::Sc
              .position = origin(instance.world),
              .range = range,
              .sourceRadius = sourceSize(document, light, owner, scene::LightShadowDefaults::sourceRadius),
-             .shadowUpdate = shadowUpdate(document, light, owner)});
+             .shadowUpdate = shadowUpdate(document, light, owner),
+             .shadowResolution = shadowResolution(document, light, owner)});
     } else {
         document.fail(fmt::format("{}: type '{}' is not directional, spot or point", owner, light.type));
     }

@@ -20,10 +20,10 @@ void checkPlansFitFrame(const ShadowPlans& plans, const shadows::ShadowSettings&
         throw rhi::Error(fmt::format("shadow plans: the directional plan is for a {}-texel atlas, the frame's "
                                      "directional.atlasSize is {}",
                                      plans.directional.atlas.atlasSize(), settings.directional.atlasSize));
-    if (plans.local.atlas.atlasSize() != settings.local.atlasSize)
+    if (plans.local.atlasSize != settings.local.atlasSize)
         throw rhi::Error(fmt::format("shadow plans: the spot and point plan is for a {}-texel atlas, the frame's "
                                      "local.atlasSize is {}",
-                                     plans.local.atlas.atlasSize(), settings.local.atlasSize));
+                                     plans.local.atlasSize, settings.local.atlasSize));
     if (!plans.local.cubes.empty() && settings.local.pointMode != shadows::PointShadowMode::CubeMap)
         throw rhi::Error("shadow plans: the spot and point plan has shadow cube maps, the frame's local.pointMode "
                          "is atlas");

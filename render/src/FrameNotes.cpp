@@ -72,6 +72,9 @@ std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans
         notes.push_back(fmt::format("{} {} ('{}') {}: {}", scene::lightKindName(note.kind), note.lightIndex,
                                     lightName(scene, note.kind, note.lightIndex),
                                     withoutRealtime(plans, note.kind, note.lightIndex), note.reason));
+    for (const shadows::LocalShadowNote& note : plans.local.lowered)
+        notes.push_back(fmt::format("{} {} ('{}'): {}", scene::lightKindName(note.kind), note.lightIndex,
+                                    lightName(scene, note.kind, note.lightIndex), note.reason));
     for (const shadows::StaticShadowNote& note : plans.staticMaps.report)
         notes.push_back(fmt::format("{} {} ('{}'): {}", scene::lightKindName(note.kind), note.lightIndex,
                                     lightName(scene, note.kind, note.lightIndex), note.reason));

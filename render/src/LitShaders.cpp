@@ -115,7 +115,9 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
          shaders::uniformBlockGlsl(shadows::kDirectionalShadowBlock, kLitShadowBinding, "shadows")});
     source.includes.push_back(
         {"local_shadows_block.glsl",
-         shaders::uniformBlockGlsl(shadows::kLocalShadowBlock, kLitLocalShadowBinding, "localShadows")});
+         shaders::uniformBlockGlsl(shadows::kLocalShadowBlock, kLitLocalShadowBinding, "localShadows") +
+             shaders::readonlyArrayBlockGlsl(shadows::kLocalAtlasTileStruct, "LocalShadowTiles",
+                                             kLitLocalShadowTilesBinding, "tiles", "localShadowTiles")});
     source.includes.push_back(
         {"static_shadows_block.glsl",
          shaders::uniformBlockGlsl(shadows::kStaticShadowBlock, kLitStaticShadowBinding, "staticShadows")});

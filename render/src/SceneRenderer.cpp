@@ -110,7 +110,9 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       commands_(device.createCommandList()), graph_(std::make_unique<FrameGraph>(device)),
       state_(std::make_unique<FrameState>()),
       shadowMapLayout_(device.createBindingSetLayout(ShadowMapBindings::layoutDesc())),
-      uniforms_(device, "lit pass uniforms"), instances_(device, "lit pass instances")
+      uniforms_(device, "lit pass uniforms"), instances_(device, "lit pass instances"),
+      storage_(device, "lit pass storage", rhi::BufferUsage::Storage,
+               std::max<std::uint64_t>(device.capabilities().storageBufferOffsetAlignment, 16))
 {
 }
 
@@ -273,7 +275,7 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
                                             bounds, visibleDepths_),
             shadows::planLocalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
-                                      bounds),
+                                      bounds, localPlan_.allocation),
             shadows::planStaticShadows(frame.shadows, device_.conventions(), lights, spots, points,
                                        {bounds, staticCasters})};
 }
@@ -313,13 +315,20 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
         state.staticTiles = splitStaticCasters(plans, gpuScene_.staticCasters());
     plan_ = std::move(plans.directional);
     localPlan_ = std::move(plans.local);
-    FrameStats stats{.shadowedLights = lightCounts.shadowed, .lightsWithoutShadow = lightCounts.withoutShadow};
+    const shadows::ShadowAtlasPack& pack = localPlan_.allocation.pack;
+    const std::uint64_t atlasTexels = std::uint64_t(localPlan_.atlasSize) * localPlan_.atlasSize;
+    FrameStats stats{.shadowedLights = lightCounts.shadowed,
+                     .lightsWithoutShadow = lightCounts.withoutShadow,
+                     .localAtlasUsed = atlasTexels == 0 ? 0.0f : float(double(pack.usedTexels) / double(atlasTexels)),
+                     .localAtlasFragmentation = pack.fragmentation,
+                     .localLightsLowered = static_cast<std::uint32_t>(localPlan_.lowered.size())};
     for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
         for (const shadows::DirectionalCascadePlan& cascade : light.cascades)
             stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;
 
     uniforms_.reset();
     instances_.reset();
+    storage_.reset();
     litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
                          uniforms_, instances_);
     gpuScene_.casters(casters_);
@@ -357,7 +366,8 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
                         staticShadows_.get(),
                         uniforms_.push(plan_.uniforms),
                         uniforms_.push(localPlan_.uniforms),
-                        uniforms_.push(staticUniforms)};
+                        uniforms_.push(staticUniforms),
+                        localTileSlice()};
     shadowMapSet_ = state.shadowMaps.createSet(device_, *shadowMapLayout_);
     state.shadowMapSet = shadowMapSet_.get();
     // Every spot and point light, listed in the clusters of the camera's view it may reach.
@@ -370,8 +380,17 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     state.litFrame = uniforms_.push(state.litFrameUniforms);
     if (frame.visibilityOf)
         state.visibilityLight = litLightIndex(*frame.visibilityOf);
-    state.features =
-        frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_.uniforms, staticShadows_->plan());
+    state.features = frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_, staticShadows_->plan());
+}
+
+// The local atlas's tiles in the storage arena; one empty tile stands in where the frame has none, since a storage
+// binding takes at least one element.
+rhi::BufferSlice SceneRenderer::localTileSlice()
+{
+    const std::vector<shadows::LocalAtlasTileData>& tiles = localPlan_.tileData;
+    if (tiles.empty())
+        return storage_.push(shadows::LocalAtlasTileData{});
+    return storage_.push(std::as_bytes(std::span(tiles)));
 }
 
 // The static maps to draw this frame (StaticShadowCache::prepare), named with why.

@@ -1,8 +1,16 @@
 #include "ShadowInputs.hpp"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 
 namespace penumbra::render {
+namespace {
+
+// A light's brightness for its shadow's importance: its intensity times its colour's largest channel.
+float brightness(glm::vec3 color, float intensity) { return intensity * std::max({color.r, color.g, color.b}); }
+
+} // namespace
+
 shadows::ShadowCamera shadowCamera(const scene::Camera& camera, float aspect)
 {
     const glm::vec3 up = glm::normalize(glm::cross(camera.right(), camera.forward));
@@ -41,7 +49,9 @@ std::vector<shadows::SpotShadowInput> spotShadowInputs(const std::vector<scene::
                           .filter = l.shadowFilter,
                           .sourceRadius = l.sourceRadius,
                           .normalBiasSide = l.normalBiasSide,
-                          .staticUpdate = l.shadowUpdate});
+                          .staticUpdate = l.shadowUpdate,
+                          .intensity = brightness(l.color, l.intensity),
+                          .shadowResolution = l.shadowResolution});
     return inputs;
 }
 
@@ -58,7 +68,9 @@ std::vector<shadows::PointShadowInput> pointShadowInputs(const std::vector<scene
                           .filter = l.shadowFilter,
                           .sourceRadius = l.sourceRadius,
                           .normalBiasSide = l.normalBiasSide,
-                          .staticUpdate = l.shadowUpdate});
+                          .staticUpdate = l.shadowUpdate,
+                          .intensity = brightness(l.color, l.intensity),
+                          .shadowResolution = l.shadowResolution});
     return inputs;
 }
 

@@ -135,6 +135,13 @@ void validateSourceRadius(const std::string& what, float radius, float range)
         throw SceneError(fmt::format("{}: sourceRadius {} is outside [0, range {}]", what, radius, range));
 }
 
+void validateShadowResolution(const std::string& what, const std::optional<float>& resolution)
+{
+    if (resolution && !(*resolution >= kMinShadowResolution && *resolution <= kMaxShadowResolution))
+        throw SceneError(fmt::format("{}: shadowResolution {} is outside [{}, {}] texels", what, *resolution,
+                                     kMinShadowResolution, kMaxShadowResolution));
+}
+
 void validateLocalLight(const std::string& what, float range, float strength, float shadowNearPlane)
 {
     if (!(range > 0.0f && std::isfinite(range)))
@@ -158,6 +165,7 @@ void validateSpotLight(const SpotLight& light, std::size_t index)
                                      light.innerAngle, light.outerAngle));
     validateLocalLight(what, light.range, light.shadowStrength, light.shadowNearPlane);
     validateSourceRadius(what, light.sourceRadius, light.range);
+    validateShadowResolution(what, light.shadowResolution);
 }
 
 void validatePointLight(const PointLight& light, std::size_t index)
@@ -165,6 +173,7 @@ void validatePointLight(const PointLight& light, std::size_t index)
     const std::string what = describe("point light", index, light.name);
     validateLocalLight(what, light.range, light.shadowStrength, light.shadowNearPlane);
     validateSourceRadius(what, light.sourceRadius, light.range);
+    validateShadowResolution(what, light.shadowResolution);
 }
 
 void validateCamera(const Camera& camera)

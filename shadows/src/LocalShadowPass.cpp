@@ -29,7 +29,7 @@ std::vector<ShadowTileDraw> LocalShadowPass::tileDraws(const LocalShadowPlan& pl
                          tile.viewport,
                          {.viewProjection = tile.view.viewProjection,
                           .slopeScaleBias = tile.view.slopeScaleBias,
-                          .ditherOrigin = -glm::vec2(plan.atlas.tileOffset(tile.tile)),
+                          .ditherOrigin = -glm::vec2(tile.viewport.x, tile.viewport.y),
                           .normalOffset = tile.view.normalOffset},
                          tile.view.casters});
     return tiles;
@@ -40,9 +40,9 @@ std::uint32_t LocalShadowPass::record(rhi::CommandList& commands, const ShadowAt
                                       bool clearAtlas)
 {
     checkCubeCount(cubes, plan);
-    if (!plan.tiles.empty() && atlas.size() != plan.atlas.atlasSize())
+    if (!plan.tiles.empty() && atlas.size() != plan.atlasSize)
         throw rhi::Error(fmt::format("local shadow atlas is {} texels wide, the plan was made for {}", atlas.size(),
-                                     plan.atlas.atlasSize()));
+                                     plan.atlasSize));
     draws_.reset();
     std::uint32_t draws = 0;
     commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = clearAtlas});

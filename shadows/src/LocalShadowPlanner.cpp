@@ -1,6 +1,7 @@
 #include "penumbra/shadows/LocalShadowPlanner.hpp"
 
 #include "penumbra/shadows/AtlasMatrix.hpp"
+#include "penumbra/shadows/ShadowResolution.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <algorithm>
@@ -15,23 +16,13 @@
 namespace penumbra::shadows {
 namespace {
 
-std::uint32_t tilesNeeded(LightKind kind, PointShadowMode mode)
-{
-    return kind == LightKind::Spot ? 1 : mode == PointShadowMode::Atlas ? cubeFaceCount : 0;
-}
-
-// The tiles every light that casts shadows asks for, in planning order; a light gets its tiles only
-// when all of them fit.
-struct Reservation {
+// A light that casts shadows and asks the packer for tiles (Atlas mode), in planning order: spot lights, then point
+// lights.
+struct Candidate {
     LightKind kind;
     std::uint32_t lightIndex;
-    std::uint32_t firstTile;
-};
-
-struct Reservations {
-    std::vector<Reservation> atlas;
-    std::vector<std::uint32_t> cubes; // point light indices, CubeMap mode
-    std::uint32_t tileCount = 0;
+    LocalLightImportance importance;
+    float intensity;
 };
 
 // Why a light with shadows would shadow nothing the camera sees (Unity's
@@ -54,36 +45,48 @@ std::optional<std::string> shadowsNothing(const LightReach& light, const ShadowC
     return std::nullopt;
 }
 
-void reserve(Reservations& r, LocalShadowPlan& plan, LightKind kind, std::uint32_t index, float strength,
-             PointShadowMode mode, const std::optional<std::string>& nothingToShadow)
+// Whether a light asks for shadows at all; if not, the report says why.
+bool wantsShadow(LocalShadowPlan& plan, LightKind kind, std::uint32_t index, float strength,
+                 const std::optional<std::string>& nothingToShadow)
 {
     if (!(strength > 0.0f)) {
         plan.report.push_back({kind, index, fmt::format("shadow strength is {}", strength)});
-        return;
+        return false;
     }
     if (nothingToShadow) {
         plan.report.push_back({kind, index, *nothingToShadow});
-        return;
+        return false;
     }
-    if (kind == LightKind::Point && mode == PointShadowMode::CubeMap) {
-        if (r.cubes.size() == maxShadowCubes) {
-            plan.report.push_back({kind, index, fmt::format("all {} shadow cube maps are taken", maxShadowCubes)});
-            return;
-        }
-        plan.pointShadows[index] = static_cast<int>(r.cubes.size());
-        r.cubes.push_back(index);
-        return;
+    return true;
+}
+
+ShadowAtlasPackerSettings packerSettings(const LocalShadowSettings& local)
+{
+    return {.atlasSize = local.atlasSize,
+            .floorSize = local.minTileResolution,
+            .maxSize = local.atlasSize,
+            .hysteresis = ShadowAtlasPackerSettings{}.hysteresis};
+}
+
+// Each candidate's tile request: its size from its own resolution and importance, its priority for the packer.
+std::vector<ShadowTileRequest> tileRequests(std::vector<Candidate>& candidates, const LocalShadowSettings& local,
+                                            const ShadowCamera& camera)
+{
+    float brightest = 0.0f;
+    for (const Candidate& c : candidates)
+        brightest = std::max(brightest, c.intensity);
+    const ShadowResolutionLimits limits{.floorSize = static_cast<float>(local.minTileResolution),
+                                        .maxSize = static_cast<float>(local.atlasSize),
+                                        .defaultSize = static_cast<float>(local.tileResolution)};
+    std::vector<ShadowTileRequest> requests;
+    for (Candidate& c : candidates) {
+        c.importance.relativeIntensity = brightest > 0.0f ? c.intensity / brightest : 1.0f;
+        const ShadowResolutionRequest r = localShadowRequest(camera, c.importance, limits);
+        const bool spot = c.kind == LightKind::Spot;
+        requests.push_back({spot ? spotPackerId(c.lightIndex) : pointPackerId(c.lightIndex), r.size, r.priority,
+                            spot ? 1u : cubeFaceCount});
     }
-    const std::uint32_t needed = tilesNeeded(kind, mode);
-    if (r.tileCount + needed > maxLocalShadowTiles) {
-        plan.report.push_back({kind, index,
-                               fmt::format("needs {} of the local atlas's {} tiles, {} are left", needed,
-                                           maxLocalShadowTiles, maxLocalShadowTiles - r.tileCount)});
-        return;
-    }
-    (kind == LightKind::Spot ? plan.spotTiles : plan.pointShadows)[index] = static_cast<int>(r.tileCount);
-    r.atlas.push_back({kind, index, r.tileCount});
-    r.tileCount += needed;
+    return requests;
 }
 
 LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, float range, float slopeScaleBias,
@@ -120,47 +123,58 @@ SoftProjection softProjection(ShadowFilter filter, const glm::mat4& projection, 
     return {filter, perspectiveTileSoft(projection, tileSize, sourceRadius, nearPlane, conventions)};
 }
 
-void addTile(LocalShadowPlan& plan, std::uint32_t tile, LocalShadowView view, float normalBiasScale,
+// A tile of `size` texels whose top-left texel is `offset`.
+struct TilePlace {
+    glm::uvec2 offset;
+    std::uint32_t size;
+};
+
+void addTile(LocalShadowPlan& plan, TilePlace place, LocalShadowView view, float normalBiasScale,
              const SoftProjection& soft, const rhi::Conventions& conventions)
 {
-    plan.uniforms.worldToAtlas[tile] = worldToAtlas(view.viewProjection, tile, plan.atlas, conventions);
-    plan.uniforms.tileBounds[tile] = plan.atlas.tileTexelBounds(tile);
-    plan.uniforms.tiles[tile] = {.normalBias = normalBiasScale, .shadowFilter = static_cast<std::int32_t>(soft.filter)};
-    plan.uniforms.tileSoft[tile] = soft.tileSoft;
-    plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});
+    const auto tile = static_cast<std::uint32_t>(plan.tiles.size());
+    const glm::vec2 first(place.offset);
+    plan.tileData.push_back(
+        {.worldToAtlas = worldToAtlas(view.viewProjection, place.offset, place.size, plan.atlasSize, conventions),
+         .bounds = {first, first + static_cast<float>(place.size - 1)},
+         .soft = soft.tileSoft,
+         .normalBias = normalBiasScale,
+         .shadowFilter = static_cast<std::int32_t>(soft.filter)});
+    const auto size = static_cast<float>(place.size);
+    plan.tiles.push_back({std::move(view), tile, {first.x, first.y, size, size}});
 }
 
-void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot, std::uint32_t tile,
-              const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot,
+              const PackedLight& packed, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     const float fov = 2.0f * spot.outerAngle;
     const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, local);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
     const ShadowFilter filter = spot.filter.value_or(local.filter);
-    const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), filter, spot.normalBias);
+    const float bias = localNormalBiasScale(projection, packed.size, filter, spot.normalBias);
     LocalShadowView view = shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range,
                                       spot.slopeScaleBias, conventions, casterBounds);
     const float receiverBias = sideOfNormalBias(view, spot.normalBiasSide, bias, spot.position);
-    addTile(plan, tile, std::move(view), receiverBias,
-            softProjection(filter, projection, plan.atlas.tileSize(), spot.sourceRadius, nearPlane, conventions),
-            conventions);
+    addTile(plan, {packed.offsets.front(), packed.size}, std::move(view), receiverBias,
+            softProjection(filter, projection, packed.size, spot.sourceRadius, nearPlane, conventions), conventions);
 }
 
 void planPointTiles(LocalShadowPlan& plan, const LocalShadowSettings& local, const PointShadowInput& point,
-                    std::uint32_t firstTile, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+                    const PackedLight& packed, const rhi::Conventions& conventions,
+                    std::span<const Bounds> casterBounds)
 {
     const ShadowFilter filter = point.filter.value_or(local.filter);
-    const float fov = pointFaceFieldOfView(plan.atlas.tileSize(), filter, point.normalBias);
+    const float fov = pointFaceFieldOfView(packed.size, filter, point.normalBias);
     const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, local);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, point.range);
-    const float bias = localNormalBiasScale(projection, plan.atlas.tileSize(), filter, point.normalBias);
+    const float bias = localNormalBiasScale(projection, packed.size, filter, point.normalBias);
     const SoftProjection soft =
-        softProjection(filter, projection, plan.atlas.tileSize(), point.sourceRadius, nearPlane, conventions);
+        softProjection(filter, projection, packed.size, point.sourceRadius, nearPlane, conventions);
     for (std::uint32_t face = 0; face < cubeFaceCount; ++face) {
         LocalShadowView view = shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane,
                                           point.range, point.slopeScaleBias, conventions, casterBounds);
         const float receiverBias = sideOfNormalBias(view, point.normalBiasSide, bias, point.position);
-        addTile(plan, firstTile + face, std::move(view), receiverBias, soft, conventions);
+        addTile(plan, {packed.offsets[face], packed.size}, std::move(view), receiverBias, soft, conventions);
     }
 }
 
@@ -234,40 +248,80 @@ bool castersInRange(glm::vec3 position, float range, std::span<const Bounds> cas
 
 LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                  const ShadowCamera& camera, std::span<const SpotShadowInput> spots,
-                                 std::span<const PointShadowInput> points, std::span<const Bounds> casterBounds)
+                                 std::span<const PointShadowInput> points, std::span<const Bounds> casterBounds,
+                                 const LocalAtlasAllocation& previous)
 {
     validate(settings);
     const LocalShadowSettings& local = settings.local;
     LocalShadowPlan plan;
+    plan.atlasSize = local.atlasSize;
     plan.spotTiles.assign(spots.size(), -1);
     plan.pointShadows.assign(points.size(), -1);
-    Reservations r;
+    std::vector<Candidate> candidates;
+    std::vector<std::uint32_t> cubes; // point light indices, CubeMap mode
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& spot = spots[i];
         const bool anyCaster =
             !cullCastersInFrustum(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
                                   localShadowNearPlane(spot.range, spot.nearPlane, local), spot.range, casterBounds)
                  .empty();
-        reserve(r, plan, LightKind::Spot, i, spot.strength, local.pointMode,
-                shadowsNothing({spot.position, spot.range, anyCaster}, camera, settings.maxDistance));
+        if (wantsShadow(plan, LightKind::Spot, i, spot.strength,
+                        shadowsNothing({spot.position, spot.range, anyCaster}, camera, settings.maxDistance)))
+            candidates.push_back(
+                {LightKind::Spot,
+                 i,
+                 {.position = spot.position, .range = spot.range, .shadowResolution = spot.shadowResolution},
+                 spot.intensity});
     }
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const PointShadowInput& point = points[i];
         const bool anyCaster = castersInRange(point.position, point.range, casterBounds);
-        reserve(r, plan, LightKind::Point, i, point.strength, local.pointMode,
-                shadowsNothing({point.position, point.range, anyCaster}, camera, settings.maxDistance));
+        if (!wantsShadow(plan, LightKind::Point, i, point.strength,
+                         shadowsNothing({point.position, point.range, anyCaster}, camera, settings.maxDistance)))
+            continue;
+        if (local.pointMode == PointShadowMode::Atlas) {
+            candidates.push_back(
+                {LightKind::Point,
+                 i,
+                 {.position = point.position, .range = point.range, .shadowResolution = point.shadowResolution},
+                 point.intensity});
+        } else if (cubes.size() == maxShadowCubes) {
+            plan.report.push_back(
+                {LightKind::Point, i, fmt::format("all {} shadow cube maps are taken", maxShadowCubes)});
+        } else {
+            plan.pointShadows[i] = static_cast<int>(cubes.size());
+            cubes.push_back(i);
+        }
     }
 
-    plan.atlas = ShadowAtlasLayout(local.atlasSize, r.tileCount);
-    for (const Reservation& reservation : r.atlas) {
-        if (reservation.kind == LightKind::Spot)
-            planSpot(plan, local, spots[reservation.lightIndex], reservation.firstTile, conventions, casterBounds);
-        else
-            planPointTiles(plan, local, points[reservation.lightIndex], reservation.firstTile, conventions,
-                           casterBounds);
+    const std::vector<ShadowTileRequest> requests = tileRequests(candidates, local, camera);
+    const ShadowAtlasPackerSettings packing = packerSettings(local);
+    ShadowAtlasPacker packer =
+        previous.packer == packing ? ShadowAtlasPacker(packing, previous.pack.lights) : ShadowAtlasPacker(packing);
+    plan.allocation = {packing, packer.pack(requests)};
+    const ShadowAtlasPack& pack = plan.allocation.pack;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+        const Candidate& candidate = candidates[c];
+        const PackedLight& packed = pack.lights[c];
+        const auto note = std::find_if(pack.notes.begin(), pack.notes.end(),
+                                       [&](const ShadowAtlasPackNote& n) { return n.lightId == packed.lightId; });
+        if (packed.size == 0) {
+            plan.report.push_back({candidate.kind, candidate.lightIndex, note->reason});
+            continue;
+        }
+        if (note != pack.notes.end())
+            plan.lowered.push_back({candidate.kind, candidate.lightIndex, note->reason});
+        const int first = static_cast<int>(plan.tiles.size());
+        if (candidate.kind == LightKind::Spot) {
+            plan.spotTiles[candidate.lightIndex] = first;
+            planSpot(plan, local, spots[candidate.lightIndex], packed, conventions, casterBounds);
+        } else {
+            plan.pointShadows[candidate.lightIndex] = first;
+            planPointTiles(plan, local, points[candidate.lightIndex], packed, conventions, casterBounds);
+        }
     }
 
-    for (const std::uint32_t pointIndex : r.cubes)
+    for (const std::uint32_t pointIndex : cubes)
         planCube(plan, local, points[pointIndex], pointIndex, conventions, casterBounds);
 
     plan.uniforms.atlasSize = static_cast<float>(local.atlasSize);

@@ -23,7 +23,6 @@ std::string shadowInterfaceGlsl()
                {"MAX_SHADOWED_DIRECTIONAL_LIGHTS", maxShadowedDirectionalLights},
                {"MAX_CASCADES", maxCascades},
                {"MAX_DIRECTIONAL_TILES", maxShadowedDirectionalLights * maxCascades},
-               {"MAX_LOCAL_SHADOW_TILES", maxLocalShadowTiles},
                {"MAX_SHADOW_CUBES", maxShadowCubes},
                {"MAX_STATIC_DIRECTIONAL_MAPS", maxStaticDirectionalMaps},
                {"MAX_STATIC_LOCAL_TILES", maxStaticLocalTiles},

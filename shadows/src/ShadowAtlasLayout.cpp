@@ -1,5 +1,7 @@
 #include "penumbra/shadows/ShadowAtlasLayout.hpp"
 
+#include "penumbra/shadows/AtlasMatrix.hpp"
+
 #include "penumbra/rhi/Error.hpp"
 
 #include <fmt/format.h>
@@ -51,15 +53,7 @@ rhi::Viewport ShadowAtlasLayout::viewport(std::uint32_t tile) const
 
 glm::mat4 ShadowAtlasLayout::tileToAtlas(std::uint32_t tile) const
 {
-    // atlas uv = (tile offset + tile uv x tile size) / atlas size: 1 / split where the split divides the size.
-    const auto atlas = static_cast<float>(atlasSize_);
-    const glm::uvec2 offset = tileOffset(tile);
-    glm::mat4 m(1.0f);
-    m[0][0] = static_cast<float>(tileSize()) / atlas;
-    m[1][1] = m[0][0];
-    m[3][0] = static_cast<float>(offset.x) / atlas;
-    m[3][1] = static_cast<float>(offset.y) / atlas;
-    return m;
+    return shadows::tileToAtlas(tileOffset(tile), tileSize(), atlasSize_);
 }
 
 } // namespace penumbra::shadows

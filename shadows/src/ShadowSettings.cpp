@@ -116,9 +116,10 @@ ShadowSettingsField field(std::string_view path, SettingRange range, std::string
 }
 
 template <typename Member>
-ShadowSettingsField numeric(std::string_view path, SettingRange range, std::string_view summary, Member member)
+ShadowSettingsField numeric(std::string_view path, SettingRange range, std::string_view summary, Member member,
+                            std::string_view flag = {})
 {
-    return field(path, range, rangeText(range), summary, member);
+    return field(path, range, rangeText(range), summary, member, {}, flag);
 }
 
 // A field of names: an enum's values, each named once here.
@@ -212,7 +213,7 @@ std::array<ShadowSettingsField, 29> makeFields()
             [](auto& s) -> auto& { return s.directional.atlasFormat; }),
         numeric(
             "local.atlasSize", kAtlasSizes, "texels per side of the spot and point lights' atlas",
-            [](auto& s) -> auto& { return s.local.atlasSize; }),
+            [](auto& s) -> auto& { return s.local.atlasSize; }, "--local-atlas-size"),
         named(
             "local.filter", filterNames(), "the spot and point lights' filter, unless a light sets its own",
             [](auto& s) -> auto& { return s.local.filter; }),
@@ -230,6 +231,15 @@ std::array<ShadowSettingsField, 29> makeFields()
             "local.nearPlane", {SettingRangeKind::Closed, 0.0001, 0.5},
             "shadow near plane as a fraction of the light's range, for lights without one",
             [](auto& s) -> auto& { return s.local.nearPlane; }),
+        numeric(
+            "local.tileResolution", {SettingRangeKind::PowersOfTwo, 16, 8192},
+            "texels per side a spot or point light without its own shadowResolution asks for when its reach fills "
+            "the screen",
+            [](auto& s) -> auto& { return s.local.tileResolution; }),
+        numeric(
+            "local.minTileResolution", {SettingRangeKind::PowersOfTwo, 16, 1024},
+            "texels per side a light's tile is lowered to, at most, before the light loses its shadow",
+            [](auto& s) -> auto& { return s.local.minTileResolution; }),
         numeric(
             "soft.blockerSearchScale", kScale, "scales PCSS's blocker search region (NVIDIA's w_search)",
             [](auto& s) -> auto& { return s.soft.blockerSearchScale; }),
@@ -416,6 +426,13 @@ std::optional<SettingsProblem> findLocalSettingsProblem(const LocalShadowSetting
         return problem;
     if (auto problem = outsideRange("local.nearPlane", o.nearPlane))
         return problem;
+    if (auto problem = outsideRange("local.tileResolution", o.tileResolution))
+        return problem;
+    if (auto problem = outsideRange("local.minTileResolution", o.minTileResolution))
+        return problem;
+    if (o.minTileResolution > o.atlasSize)
+        return outOfRange("local.minTileResolution",
+                          fmt::format("{} (above local.atlasSize {})", o.minTileResolution, o.atlasSize));
     return std::nullopt;
 }
 

@@ -589,5 +589,17 @@ TEST_F(GltfLoaderTest, ALightsExtrasSetItsStaticMapMode)
                     "light 1 ('spot'): extras.shadowUpdate is not one of settings, everyFrame, onChange, onDemand");
 }
 
+TEST_F(GltfLoaderTest, ALightsExtrasSetItsShadowResolution)
+{
+    GltfBuilder b = testing::exampleScene();
+    auto& lights = b.json()["extensions"]["KHR_lights_punctual"]["lights"];
+    lights[1]["extras"]["shadowResolution"] = 512;
+    const Scene scene = gltf::loadGltf(write(b)).scene;
+    EXPECT_EQ(scene.spotLights[0].shadowResolution, std::optional<float>(512.0f));
+    EXPECT_EQ(scene.pointLights[0].shadowResolution, std::nullopt);
+    lights[1]["extras"]["shadowResolution"] = "high";
+    EXPECT_CONTAINS(errorOf(write(b)), "light 1 ('spot'): extras.shadowResolution is not a number");
+}
+
 } // namespace
 } // namespace penumbra::scene

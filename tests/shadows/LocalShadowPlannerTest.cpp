@@ -18,10 +18,28 @@ using testing::conventionName;
 // (u, v, window depth) of a world point in tile `tile`, u and v over the tile.
 glm::vec3 atlasPosition(const LocalShadowPlan& plan, std::uint32_t tile, glm::vec3 world)
 {
-    const glm::vec4 p = plan.uniforms.worldToAtlas[tile] * glm::vec4(world, 1.0f);
+    const glm::vec4 p = plan.tileData[tile].worldToAtlas * glm::vec4(world, 1.0f);
+    const rhi::Viewport& place = plan.tiles[tile].viewport;
     const glm::vec2 uv =
-        glm::vec2(p) / p.w * static_cast<float>(plan.atlas.split()) - glm::vec2(plan.atlas.tileCoordinates(tile));
+        (glm::vec2(p) / p.w * static_cast<float>(plan.atlasSize) - glm::vec2(place.x, place.y)) / place.width;
     return {uv, p.z / p.w};
+}
+
+// Whether two tiles of the plan share a texel.
+bool overlap(const rhi::Viewport& a, const rhi::Viewport& b)
+{
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+void expectDisjointTiles(const LocalShadowPlan& plan)
+{
+    for (std::size_t i = 0; i < plan.tiles.size(); ++i) {
+        const rhi::Viewport& a = plan.tiles[i].viewport;
+        EXPECT_LE(a.x + a.width, static_cast<float>(plan.atlasSize)) << i;
+        EXPECT_LE(a.y + a.height, static_cast<float>(plan.atlasSize)) << i;
+        for (std::size_t j = i + 1; j < plan.tiles.size(); ++j)
+            EXPECT_FALSE(overlap(a, plan.tiles[j].viewport)) << i << " and " << j;
+    }
 }
 
 TEST(CubeFace, PicksTheLargestComponentWithTiesToXThenY)
@@ -100,8 +118,8 @@ TEST(SpotShadow, AxisHitsTheTileCentreAndTheConeEdgeItsBorder)
         const glm::vec3 edge = spot.position + distance * spot.direction + distance * std::tan(spot.outerAngle) * right;
         EXPECT_NEAR(atlasPosition(plan, 0, edge).x, 1.0f, 1e-4f);
         // Normal bias: texel size at distance 1 x filter factor x sqrt 2.
-        const float texel = 2.0f * std::tan(spot.outerAngle) / static_cast<float>(settings.local.atlasSize);
-        EXPECT_NEAR(plan.uniforms.tiles[0].normalBias, texel * std::sqrt(2.0f), 1e-6f);
+        const float texel = 2.0f * std::tan(spot.outerAngle) / plan.tiles[0].viewport.width;
+        EXPECT_NEAR(plan.tileData[0].normalBias, texel * std::sqrt(2.0f), 1e-6f);
     }
 }
 
@@ -129,47 +147,122 @@ TEST(PointShadow, EachFaceTileHoldsItsDirection)
     }
 }
 
-TEST(LocalAtlas, TileBoundsAreTheTilesTexelsAndTilesAreUniformlySplit)
+TEST(LocalAtlas, TilesArePackedWithoutOverlapAndTheirBoundsAreTheirTexels)
 {
     const std::vector<SpotShadowInput> spots(5);
+    const std::vector<PointShadowInput> points(2);
     ShadowSettings settings;
     settings.local.atlasSize = 512;
-    const LocalShadowPlan plan = planLocalShadows(settings, allConventions()[0], {}, spots, {}, kEverywhere);
-    EXPECT_EQ(plan.atlas.split(), 4u);
-    EXPECT_EQ(plan.atlas.tileSize(), 128u);
-    EXPECT_EQ(plan.uniforms.tileBounds[0], glm::vec4(0, 0, 127, 127));
-    EXPECT_EQ(plan.uniforms.tileBounds[4], glm::vec4(0, 128, 127, 255));
-    EXPECT_EQ(plan.uniforms.tileBounds[1], glm::vec4(128, 0, 255, 127));
-    for (std::uint32_t t = 0; t < 5; ++t) {
+    const LocalShadowPlan plan = planLocalShadows(settings, allConventions()[0], {}, spots, points, kEverywhere);
+    ASSERT_EQ(plan.tiles.size(), 17u);
+    ASSERT_EQ(plan.tileData.size(), 17u);
+    for (std::uint32_t t = 0; t < plan.tiles.size(); ++t) {
+        const rhi::Viewport& v = plan.tiles[t].viewport;
         EXPECT_EQ(plan.tiles[t].tile, t);
-        EXPECT_EQ(plan.tiles[t].viewport.x, plan.uniforms.tileBounds[t].x);
-        EXPECT_EQ(plan.tiles[t].viewport.y, plan.uniforms.tileBounds[t].y);
+        EXPECT_EQ(plan.tileData[t].bounds, glm::vec4(v.x, v.y, v.x + v.width - 1, v.y + v.height - 1)) << t;
     }
+    expectDisjointTiles(plan);
 }
 
-TEST(LocalAtlas, TileBudgetTakesSpotsThenPointsAndReportsWhatDoesNotFit)
+TEST(LocalAtlas, EveryLightGetsTilesDownToTheFloorAndOnlyThenIsReported)
 {
-    const std::vector<SpotShadowInput> spots(5);
+    // 40 spot lights and two point lights (52 tiles) fit a 1024 atlas once lowered; point 1 casts nothing.
+    const std::vector<SpotShadowInput> spots(40);
     std::vector<PointShadowInput> points(3);
     points[1].strength = 0.0f;
     const LocalShadowPlan plan =
         planLocalShadows(ShadowSettings{}, allConventions()[0], {}, spots, points, kEverywhere);
-    // 5 spots + 6 (point 0) = 11; point 1 casts nothing; point 2 needs 6 more, 5 are left.
-    EXPECT_EQ(plan.atlas.tileCount(), 11u);
-    EXPECT_EQ(plan.spotTiles, (std::vector<int>{0, 1, 2, 3, 4}));
-    EXPECT_EQ(plan.pointShadows, (std::vector<int>{5, -1, -1}));
-    ASSERT_EQ(plan.report.size(), 2u);
+    EXPECT_EQ(plan.tiles.size(), 52u);
+    for (const int tile : plan.spotTiles)
+        EXPECT_GE(tile, 0);
+    EXPECT_EQ(plan.pointShadows[1], -1);
+    ASSERT_EQ(plan.report.size(), 1u);
     EXPECT_EQ(plan.report[0].kind, LightKind::Point);
     EXPECT_EQ(plan.report[0].lightIndex, 1u);
     EXPECT_EQ(plan.report[0].reason, "shadow strength is 0");
-    EXPECT_EQ(plan.report[1].lightIndex, 2u);
-    EXPECT_EQ(plan.report[1].reason, "needs 6 of the local atlas's 16 tiles, 5 are left");
+    EXPECT_FALSE(plan.lowered.empty());
+    expectDisjointTiles(plan);
 
+    // A 256 atlas holds sixteen tiles of the 64-texel floor: of 18 equal lights the two of the highest index (the
+    // packer's tie break) lose their shadows, with the reason.
+    ShadowSettings small;
+    small.local.atlasSize = 256;
+    small.local.minTileResolution = 64;
     const std::vector<SpotShadowInput> many(18);
-    const LocalShadowPlan full = planLocalShadows(ShadowSettings{}, allConventions()[0], {}, many, {}, kEverywhere);
-    EXPECT_EQ(full.atlas.tileCount(), 16u);
+    const LocalShadowPlan full = planLocalShadows(small, allConventions()[0], {}, many, {}, kEverywhere);
+    EXPECT_EQ(full.tiles.size(), 16u);
     EXPECT_EQ(full.spotTiles[16], -1);
-    EXPECT_EQ(full.report.size(), 2u);
+    EXPECT_EQ(full.spotTiles[17], -1);
+    ASSERT_EQ(full.report.size(), 2u);
+    EXPECT_EQ(full.report[0].reason, "no shadow: the 256 x 256 local atlas has no room for its 1 tile(s) of the floor "
+                                     "size 64 x 64 with every light of higher priority at that size");
+    expectDisjointTiles(full);
+}
+
+TEST(LocalAtlas, NearerLightsKeepMoreResolutionWhenSpaceRunsOut)
+{
+    // Spot lights ever farther ahead of the camera: their reach covers less of the screen, so they ask for less and
+    // are lowered first.
+    std::vector<SpotShadowInput> spots;
+    for (int i = 0; i < 12; ++i)
+        spots.push_back({.position = {0.0f, 2.0f, -6.0f - 8.0f * static_cast<float>(i)}, .range = 5.0f});
+    ShadowSettings settings;
+    settings.local.atlasSize = 512;
+    const LocalShadowPlan plan = planLocalShadows(settings, allConventions()[0], {}, spots, {}, kEverywhere);
+    ASSERT_EQ(plan.tiles.size(), spots.size());
+    for (std::size_t i = 1; i < spots.size(); ++i)
+        EXPECT_LE(plan.tiles[i].viewport.width, plan.tiles[i - 1].viewport.width) << i;
+    EXPECT_GT(plan.tiles.front().viewport.width, plan.tiles.back().viewport.width);
+    expectDisjointTiles(plan);
+}
+
+TEST(LocalAtlas, TilesStayPutFromFrameToFrameWhileLightsComeAndGo)
+{
+    std::vector<SpotShadowInput> spots;
+    for (int i = 0; i < 8; ++i)
+        spots.push_back({.position = {2.0f * static_cast<float>(i), 2.0f, -10.0f}, .range = 6.0f});
+    const std::vector<PointShadowInput> points{{.position = {0, 2, -20}, .range = 6.0f}};
+    const ShadowCamera camera;
+    const rhi::Conventions conventions = allConventions()[0];
+    // An atlas with room for every tile at the size it asks for: no light is lowered, so a light's tiles follow its
+    // own inputs alone.
+    ShadowSettings settings;
+    settings.local.atlasSize = 4096;
+    const LocalShadowPlan first = planLocalShadows(settings, conventions, camera, spots, points, kEverywhere);
+    ASSERT_TRUE(first.lowered.empty());
+    // The same inputs: every tile where it was.
+    const LocalShadowPlan again =
+        planLocalShadows(settings, conventions, camera, spots, points, kEverywhere, first.allocation);
+    ASSERT_EQ(again.tiles.size(), first.tiles.size());
+    for (std::size_t t = 0; t < first.tiles.size(); ++t) {
+        EXPECT_EQ(again.tiles[t].viewport.x, first.tiles[t].viewport.x) << t;
+        EXPECT_EQ(again.tiles[t].viewport.y, first.tiles[t].viewport.y) << t;
+        EXPECT_EQ(again.tiles[t].viewport.width, first.tiles[t].viewport.width) << t;
+    }
+    for (const PackedLight& light : again.allocation.pack.lights)
+        EXPECT_FALSE(light.moved) << light.lightId;
+    // The last spot light gone and the first moved a little: the others keep their tiles (lights are known to the
+    // packer by kind and index: spot light i is packer light 2i).
+    std::vector<SpotShadowInput> fewer(spots.begin(), spots.end() - 1);
+    fewer[0].position.x += 0.05f;
+    const LocalShadowPlan next =
+        planLocalShadows(settings, conventions, camera, fewer, points, kEverywhere, again.allocation);
+    ASSERT_EQ(next.tiles.size(), first.tiles.size() - 1);
+    for (std::size_t i = 0; i < fewer.size(); ++i) {
+        const rhi::Viewport& was = first.tiles[static_cast<std::size_t>(first.spotTiles[i])].viewport;
+        const rhi::Viewport& is = next.tiles[static_cast<std::size_t>(next.spotTiles[i])].viewport;
+        EXPECT_EQ(glm::vec3(is.x, is.y, is.width), glm::vec3(was.x, was.y, was.width)) << i;
+    }
+    const auto pointTiles = [](const LocalShadowPlan& plan) {
+        std::vector<float> places;
+        for (std::uint32_t f = 0; f < cubeFaceCount; ++f) {
+            const rhi::Viewport& v = plan.tiles[static_cast<std::size_t>(plan.pointShadows[0]) + f].viewport;
+            places.insert(places.end(), {v.x, v.y, v.width});
+        }
+        return places;
+    };
+    EXPECT_EQ(pointTiles(next), pointTiles(first));
+    expectDisjointTiles(next);
 }
 
 TEST(LocalAtlas, FrustumCullingKeepsOnlyCastersInTheCone)
@@ -215,7 +308,7 @@ TEST(LocalAtlas, LightsThatShadowNothingInViewTakeNoTile)
         planLocalShadows(ShadowSettings{}, allConventions()[0], camera, spots, points, withFarCaster);
     EXPECT_EQ(plan.spotTiles, (std::vector<int>{0, -1}));
     EXPECT_EQ(plan.pointShadows, (std::vector<int>{-1, -1}));
-    EXPECT_EQ(plan.atlas.tileCount(), 1u);
+    EXPECT_EQ(plan.tiles.size(), 1u);
     ASSERT_EQ(plan.report.size(), 3u);
     EXPECT_EQ(plan.report[0].reason, "no shadow caster is within its reach");
     EXPECT_EQ(plan.report[1].reason, "no shadow caster is within its reach");

@@ -145,7 +145,7 @@ TEST(ShadowAtlasPacker, LightsComingAndGoingLeaveTheOthersInPlace)
     expectDisjointTiles(next, 1024);
 }
 
-TEST(ShadowAtlasPacker, SpaceRunsOutLowestPriorityHalvesFirstDownToTheFloor)
+TEST(ShadowAtlasPacker, SpaceRunsOutLargestTilesHalveFirstOfEqualOnesTheLowestPriority)
 {
     // 1024^2 holds four 512 tiles; five lights ask for 512.
     ShadowAtlasPacker packer({.atlasSize = 1024, .floorSize = 64, .maxSize = 512});
@@ -153,18 +153,26 @@ TEST(ShadowAtlasPacker, SpaceRunsOutLowestPriorityHalvesFirstDownToTheFloor)
     for (std::uint32_t i = 0; i < 5; ++i)
         requests.push_back({i, 512.0f, static_cast<float>(10 - i)}); // light 4 has the lowest priority
     const ShadowAtlasPack pack = packer.pack(requests);
-    // Area 5 x 512^2 exceeds 4 x 512^2 by one 512 tile: light 4 halves to the floor (covers 512^2 - 64^2), light 3
-    // halves once (256^2 of the remaining 64^2 x 1).
-    EXPECT_EQ(pack.lights[4].size, 64u);
+    // Area 5 x 512^2 exceeds 4 x 512^2: light 4 halves (4 x 512^2 + 256^2 still exceeds it), then light 3, the lowest
+    // priority of the four largest.
+    EXPECT_EQ(pack.lights[4].size, 256u);
     EXPECT_EQ(pack.lights[3].size, 256u);
     for (std::uint32_t i = 0; i < 3; ++i)
         EXPECT_EQ(pack.lights[i].size, 512u) << i;
     ASSERT_EQ(pack.notes.size(), 2u);
     EXPECT_EQ(pack.notes[0].lightId, 3u);
     EXPECT_EQ(pack.notes[0].reason, "shadow tile 256 x 256 instead of 512 x 512: the tiles asked for need 125% of "
-                                    "the 1024 x 1024 local atlas; lights of lower priority are lowered first");
+                                    "the 1024 x 1024 local atlas; larger tiles, then lower priorities, are lowered "
+                                    "first");
     EXPECT_EQ(pack.notes[1].lightId, 4u);
     expectDisjointTiles(pack, 1024);
+
+    // A light of higher priority that asks for more gives up resolution before a smaller one goes to the floor.
+    const ShadowAtlasPack uneven = ShadowAtlasPacker({.atlasSize = 512, .floorSize = 64, .maxSize = 512})
+                                       .pack(std::vector<ShadowTileRequest>{{1, 512.0f, 9.0f}, {2, 256.0f, 1.0f}});
+    EXPECT_EQ(uneven.lights[0].size, 256u);
+    EXPECT_EQ(uneven.lights[1].size, 256u);
+    expectDisjointTiles(uneven, 512);
 }
 
 TEST(ShadowAtlasPacker, ALightLosesItsShadowOnlyWhenEveryLightIsAtTheFloor)

@@ -54,6 +54,8 @@ ShadowSettings unusualSettings()
     s.local.pointMode = PointShadowMode::CubeMap;
     s.local.cubeMapSize = 256;
     s.local.nearPlane = 0.0375f;
+    s.local.tileResolution = 256;
+    s.local.minTileResolution = 32;
     s.staticMaps.update = StaticShadowUpdate::OnDemand;
     s.staticMaps.realtimeCasters = RealtimeCasters::Dynamic;
     s.staticMaps.directionalAtlasSize = 8192;

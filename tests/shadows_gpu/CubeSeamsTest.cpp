@@ -131,9 +131,10 @@ public:
     {
         if (plan_.cubes.empty()) {
             const rhi::DepthImage atlas = rhi::readDepth(device, renderer.localAtlas().texture());
-            const std::uint32_t size = plan_.atlas.tileSize();
             for (std::uint32_t face = 0; face < shadows::cubeFaceCount; ++face) {
-                const glm::uvec2 offset = plan_.atlas.tileOffset(firstTile() + face);
+                const rhi::Viewport& place = plan_.tiles.at(firstTile() + face).viewport;
+                const auto size = static_cast<std::uint32_t>(place.width);
+                const glm::uvec2 offset(place.x, place.y);
                 shadows::ShadowDepthGrid& grid = grids_[face];
                 grid = {size, size, std::vector<float>(std::size_t(size) * size)};
                 for (std::uint32_t y = 0; y < size; ++y)
@@ -165,13 +166,12 @@ private:
         const float distanceToPlane = glm::dot(position - light_, shadows::cubeFaceAxis(face));
         const glm::vec3 biased =
             position + shadows::receiverNormalOffset(normal, glm::normalize(light_ - position),
-                                                     distanceToPlane * plan_.uniforms.tiles[tile].normalBias);
-        const glm::vec4 p = plan_.uniforms.worldToAtlas[tile] * glm::vec4(biased, 1.0f);
-        const glm::vec2 texel =
-            glm::vec2(p) / p.w * float(plan_.atlas.atlasSize()) - glm::vec2(plan_.atlas.tileOffset(tile));
-        return shadows::filterShadowWithTaps(grids_[static_cast<std::size_t>(face)], kFilter,
-                                             texel / float(plan_.atlas.tileSize()), p.z / p.w,
-                                             conventions_.shadowCompareOp());
+                                                     distanceToPlane * plan_.tileData.at(tile).normalBias);
+        const glm::vec4 p = plan_.tileData.at(tile).worldToAtlas * glm::vec4(biased, 1.0f);
+        const rhi::Viewport& place = plan_.tiles.at(tile).viewport;
+        const glm::vec2 texel = glm::vec2(p) / p.w * float(plan_.atlasSize) - glm::vec2(place.x, place.y);
+        return shadows::filterShadowWithTaps(grids_[static_cast<std::size_t>(face)], kFilter, texel / place.width,
+                                             p.z / p.w, conventions_.shadowCompareOp());
     }
 
     // A k x k box of nearest comparisons spread over the chosen face's texels; each tap's own major axis picks
@@ -260,7 +260,11 @@ protected:
         const float bound = seamBound(mode);
         SeamFigures figures;
         const std::uint32_t faceSize =
-            mode == PointShadowMode::Atlas ? renderer.localPlan().atlas.tileSize() : frame.shadows.local.cubeMapSize;
+            mode == PointShadowMode::Atlas
+                ? static_cast<std::uint32_t>(renderer.localPlan()
+                                                 .tiles.at(std::size_t(renderer.localPlan().pointShadows.at(0)))
+                                                 .viewport.width)
+                : frame.shadows.local.cubeMapSize;
         for (const EdgeProbe& probe : edgeProbes(scene, light, faceSize)) {
             const float a = lookup(probe.faces[0], probe.positions[0], probe.normal);
             const float b = lookup(probe.faces[1], probe.positions[1], probe.normal);

@@ -89,7 +89,7 @@ TEST_F(LocalShadowsTest, PointFacesStoreTheLightFacingSideOfACaster)
             atlasMode ? rhi::readDepth(*device, renderer.localAtlas().texture())
                       : rhi::readDepth(*device, renderer.shadowCubes().texture(), rhi::cubeLayer(0, face));
         const glm::mat4 toTexture =
-            atlasMode ? plan.uniforms.worldToAtlas[tile] : device->conventions().clipToTexture() * view.viewProjection;
+            atlasMode ? plan.tileData[tile].worldToAtlas : device->conventions().clipToTexture() * view.viewProjection;
         const glm::vec4 p = toTexture * glm::vec4(centre, 1.0f);
         const auto x = static_cast<std::uint32_t>(p.x / p.w * float(depth.width));
         const auto y = static_cast<std::uint32_t>(p.y / p.w * float(depth.height));
@@ -119,18 +119,32 @@ TEST_F(LocalShadowsTest, NoLightLeaksThroughAWallNextToAPointLight)
     EXPECT_LE(leaked, 1.0f) << "light leaks through the wall";
 }
 
-TEST_F(LocalShadowsTest, LightsBeyondTheTileBudgetAreLitWithoutShadowsAndReported)
+TEST_F(LocalShadowsTest, EveryLightGetsTilesWhileTheAtlasHasRoomAndTheRestAreReported)
 {
     scene::Scene scene = scenes::makeMixedLightsScene();
     scene.pointLights.push_back({.name = "third bulb", .position = {4.0f, 2.0f, 6.0f}});
     render::SceneRenderer renderer(*device, scene);
-    const render::FrameStats stats = renderer.render(scene.camera, frame());
-    const std::string expected =
-        "point light 2 ('third bulb') has no shadows: needs 6 of the local atlas's 16 tiles, 1 "
-        "are left";
-    EXPECT_NE(std::find(stats.notes.begin(), stats.notes.end(), expected), stats.notes.end());
-    EXPECT_EQ(renderer.localPlan().pointShadows, (std::vector<int>{3, 9, -1}));
-    EXPECT_EQ(renderer.localPlan().atlas.tileCount(), 15u);
+    renderer.render(scene.camera, frame());
+    // 3 spot tiles and 3 x 6 point faces: more than the 16 tiles the atlas once held.
+    EXPECT_EQ(renderer.localPlan().tiles.size(), 21u);
+    EXPECT_TRUE(renderer.localPlan().report.empty());
+    for (const int first : renderer.localPlan().pointShadows)
+        EXPECT_GE(first, 0);
+
+    // 256^2 holds sixteen tiles of the 64-texel floor: the light of the lowest priority loses its shadow (never its
+    // light) and is named with the reason.
+    render::FrameDesc small = frame();
+    small.shadows.local.atlasSize = 256;
+    small.shadows.local.minTileResolution = 64;
+    render::SceneRenderer crowded(*device, scene);
+    const render::FrameStats stats = crowded.render(scene.camera, small);
+    const std::string reason = "has no shadows: no shadow: the 256 x 256 local atlas has no room for its";
+    const auto note = std::find_if(stats.notes.begin(), stats.notes.end(),
+                                   [&](const std::string& n) { return n.find(reason) != std::string::npos; });
+    ASSERT_NE(note, stats.notes.end());
+    EXPECT_EQ(crowded.localPlan().report.size(), 1u);
+    EXPECT_EQ(stats.shadowedLights + stats.lightsWithoutShadow,
+              scene.lights.size() + scene.spotLights.size() + scene.pointLights.size());
 }
 
 TEST_F(LocalShadowsTest, DistanceFadeAppliesWithoutDirectionalLights)

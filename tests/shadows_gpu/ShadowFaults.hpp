@@ -52,8 +52,9 @@ inline shadows::LocalShadowPlan withPointFaceFieldOfView(shadows::LocalShadowPla
                 shadows::LocalAtlasTile& tile = plan.tiles.at(static_cast<std::uint32_t>(first) + f);
                 tile.view.projection = projection;
                 tile.view.viewProjection = projection * shadows::pointFaceView(face, light.position);
-                plan.uniforms.worldToAtlas[tile.tile] =
-                    shadows::worldToAtlas(tile.view.viewProjection, tile.tile, plan.atlas, conventions);
+                plan.tileData.at(tile.tile).worldToAtlas =
+                    shadows::worldToAtlas(tile.view.viewProjection, glm::uvec2(tile.viewport.x, tile.viewport.y),
+                                          static_cast<std::uint32_t>(tile.viewport.width), plan.atlasSize, conventions);
             } else {
                 shadows::LocalShadowView& view = plan.cubes.at(static_cast<std::size_t>(first)).faces[f];
                 view.projection = projection;
@@ -61,6 +62,22 @@ inline shadows::LocalShadowPlan withPointFaceFieldOfView(shadows::LocalShadowPla
             }
         }
     }
+    return plan;
+}
+
+// The local atlas's old limit of 16 tiles come back: the lights past it keep no tile (lit without shadows, as
+// before the packer and the storage block).
+inline shadows::LocalShadowPlan withSixteenLocalTiles(shadows::LocalShadowPlan plan)
+{
+    constexpr std::size_t kOldLimit = 16;
+    if (plan.tiles.size() > kOldLimit) {
+        plan.tiles.resize(kOldLimit);
+        plan.tileData.resize(kOldLimit);
+    }
+    for (std::vector<int>* firsts : {&plan.spotTiles, &plan.pointShadows})
+        for (int& first : *firsts)
+            if (plan.cubes.empty() && first >= 0 && std::size_t(first) >= kOldLimit)
+                first = -1;
     return plan;
 }
 

@@ -212,6 +212,25 @@ TEST_F(ShadowMaskTest, SpotShadowAgreesWithTheRayCast)
     checkPositionalLight(*this, scene, "spot", kSpot);
 }
 
+// The wide spot light of SpotShadowAgreesWithTheRayCast twenty times over, at the same place: each takes a tile of
+// its own (more than the 16 the local atlas once held), and any of them alone must cast the ray cast's shadow.
+scene::Scene twentySpotLights()
+{
+    scene::Scene scene = oneLocalLight(true, 2);
+    scene.spotLights[0].outerAngle = 0.9f;
+    scene.spotLights.resize(20, scene.spotLights[0]);
+    for (std::size_t i = 0; i < scene.spotLights.size(); ++i)
+        scene.spotLights[i].name = fmt::format("spot {}", i);
+    return scene;
+}
+
+TEST_F(ShadowMaskTest, TwentySpotLightsEachCastTheirShadow)
+{
+    const scene::Scene scene = twentySpotLights();
+    for (const std::uint32_t light : {0u, 19u})
+        checkPositionalLight(*this, scene, fmt::format("spot {} of 20", light), {LightKind::Spot, light});
+}
+
 scene::Scene roomLitFromInside()
 {
     scene::Scene room = scenes::makePointLightRoomScene();
@@ -491,6 +510,19 @@ TEST_F(ShadowMaskTest, NarrowCubeFacesCatchesFault)
     });
     const TruthFigures f = report(*this, "room with 86-degree cube faces", mask, traceTruth(gpu(), room, frame));
     EXPECT_FALSE(truthFailures(f, 250).empty()) << "narrowed cube faces went unnoticed";
+}
+
+// The 16-tile limit back: the twentieth light has no tile, so its shadow is missing.
+TEST_F(ShadowMaskTest, SixteenLocalTilesCatchesFault)
+{
+    const scene::Scene scene = twentySpotLights();
+    const render::FrameDesc frame = maskFrame({}, kControlWidth, kControlHeight, {LightKind::Spot, 19});
+    const ShadowMask mask = renderMask(scene, frame, [](render::ShadowPlans plans) {
+        plans.local = withSixteenLocalTiles(std::move(plans.local));
+        return plans;
+    });
+    const TruthFigures f = report(*this, "spot 19 of 20, 16 tiles", mask, traceTruth(gpu(), scene, frame));
+    EXPECT_FALSE(truthFailures(f, 250).empty()) << "the light past the 16-tile limit lost its shadow unnoticed";
 }
 
 } // namespace

@@ -55,7 +55,8 @@ float pointTexel(const render::ShadowPlans& plans, std::uint32_t cubeFaceSize, c
             plans.local.cubes.at(static_cast<std::size_t>(shadow)).faces[static_cast<std::size_t>(face)].projection,
             cubeFaceSize, axis, fromLight);
     const std::size_t tile = static_cast<std::size_t>(shadow) + static_cast<std::size_t>(face);
-    return perspectiveTexel(plans.local.tiles.at(tile).view.projection, plans.local.atlas.tileSize(), axis, fromLight);
+    const shadows::LocalAtlasTile& t = plans.local.tiles.at(tile);
+    return perspectiveTexel(t.view.projection, static_cast<std::uint32_t>(t.viewport.width), axis, fromLight);
 }
 
 } // namespace
@@ -132,8 +133,9 @@ float shadowTexelSize(const render::ShadowPlans& plans, const shadows::ShadowSet
         if (tile < 0)
             return 0.0f;
         const scene::SpotLight& spot = scene.spotLights.at(light.index);
-        return perspectiveTexel(plans.local.tiles.at(static_cast<std::size_t>(tile)).view.projection,
-                                plans.local.atlas.tileSize(), spot.direction, position - spot.position);
+        const shadows::LocalAtlasTile& t = plans.local.tiles.at(static_cast<std::size_t>(tile));
+        return perspectiveTexel(t.view.projection, static_cast<std::uint32_t>(t.viewport.width), spot.direction,
+                                position - spot.position);
     }
     case scene::LightKind::Point: {
         const int shadow = plans.local.pointShadows.at(light.index);

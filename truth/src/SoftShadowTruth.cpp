@@ -24,14 +24,14 @@ shadows::ShadowFilter plannedShadowFilter(const render::ShadowPlans& plans, cons
         const int tile = light.index < plans.local.spotTiles.size() ? plans.local.spotTiles[light.index] : -1;
         if (tile < 0)
             throw noShadow();
-        return static_cast<shadows::ShadowFilter>(plans.local.uniforms.tiles[std::size_t(tile)].shadowFilter);
+        return static_cast<shadows::ShadowFilter>(plans.local.tileData.at(std::size_t(tile)).shadowFilter);
     }
     case scene::LightKind::Point: {
         const int shadow = light.index < plans.local.pointShadows.size() ? plans.local.pointShadows[light.index] : -1;
         if (shadow < 0)
             throw noShadow();
         if (plans.local.cubes.empty())
-            return static_cast<shadows::ShadowFilter>(plans.local.uniforms.tiles[std::size_t(shadow)].shadowFilter);
+            return static_cast<shadows::ShadowFilter>(plans.local.tileData.at(std::size_t(shadow)).shadowFilter);
         return static_cast<shadows::ShadowFilter>(plans.local.uniforms.cubes[std::size_t(shadow)].shadowFilter);
     }
     }

@@ -36,14 +36,15 @@ LocalTileDraws LocalTileCache::record(rhi::CommandList& commands, const shadows:
 {
     const std::vector<shadows::ShadowTileDraw> tiles = shadows::LocalShadowPass::tileDraws(plan);
     const std::map<std::uint32_t, LocalShadowRedraw> lights = tileLights(plan);
-    std::map<std::uint32_t, TileKey> keys;
+    std::map<TilePlace, TileKey> keys;
     std::vector<const shadows::ShadowTileDraw*> changed;
     LocalTileDraws result;
     std::optional<LocalShadowRedraw> lastRedraw;
     for (const shadows::ShadowTileDraw& tile : tiles) {
         const TileKey key = tileKey(tile, casters);
-        keys[tile.tile] = key;
-        const auto old = keys_.find(tile.tile);
+        const TilePlace place{tile.viewport.x, tile.viewport.y, tile.viewport.width};
+        keys[place] = key;
+        const auto old = keys_.find(place);
         const char* reason = !valid_ || old == keys_.end()        ? "its tile is new"
                              : old->second.view != key.view       ? "its view changed"
                              : old->second.casters != key.casters ? "a caster in its view changed"

@@ -12,6 +12,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace penumbra::render {
@@ -32,7 +33,9 @@ struct LocalTileDraws {
 };
 
 // Per-light caching of the realtime local atlas: a tile is drawn again only when its light's view (place, matrices,
-// biases) or a caster in it changed since the frame that last drew it, and every other tile keeps its depth. Godot
+// biases) or a caster in it changed since the frame that last drew it, and every other tile keeps its depth. Tiles
+// are found by their place in the atlas, so a light that keeps its place (ShadowAtlasPacker's hysteresis) keeps its
+// depth while other lights come and go. Godot
 // redraws a positional light's shadow only when the light or a caster in its range moved ("Shadow atlas", Godot docs,
 // "Lights and shadows"); HDRP's cached shadows are the same idea. A changed tile is cleared on its own and drawn as
 // the realtime pass draws it, so the atlas holds the depth of drawing every tile, bit for bit.
@@ -53,7 +56,10 @@ public:
 
 private:
     shadows::StaticShadowPass pass_;
-    std::map<std::uint32_t, TileKey> keys_; // per atlas tile, as last drawn
+    // A tile's place in the atlas: its top-left texel and size. Tiles of one frame never overlap, so a place that
+    // holds the same key as last frame holds the depth drawn then, whatever the tile's index.
+    using TilePlace = std::tuple<float, float, float>;
+    std::map<TilePlace, TileKey> keys_; // per atlas tile of the last record(), as drawn
     bool valid_ = false;
 };
 

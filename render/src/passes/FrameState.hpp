@@ -27,6 +27,7 @@ struct ShadowMapBindings {
     rhi::UniformSlice directionalUniforms;
     rhi::UniformSlice localUniforms;
     rhi::UniformSlice staticUniforms;
+    rhi::BufferSlice localTiles; // the storage block LocalShadowTiles
 
     // The layout of their set: the lit shaders' binding numbers.
     static rhi::BindingSetLayoutDesc layoutDesc();

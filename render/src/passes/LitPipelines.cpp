@@ -94,14 +94,15 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
 
 LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
                                       const shadows::DirectionalShadowUniforms& directional,
-                                      const shadows::LocalShadowUniforms& local,
+                                      const shadows::LocalShadowPlan& localPlan,
                                       const shadows::StaticShadowPlan& staticPlan)
 {
     const shadows::StaticShadowUniforms& staticMaps = staticPlan.uniforms;
+    const shadows::LocalShadowUniforms& local = localPlan.uniforms;
     std::vector<int> filters{directional.defaultFilter, local.defaultFilter};
     for (const shadows::DirectionalShadowLight& light : directional.lights)
         filters.push_back(light.shadowFilter);
-    for (const shadows::LocalShadowTile& tile : local.tiles)
+    for (const shadows::LocalAtlasTileData& tile : localPlan.tileData)
         filters.push_back(tile.shadowFilter);
     for (const shadows::LocalShadowCube& cube : local.cubes)
         filters.push_back(cube.shadowFilter);

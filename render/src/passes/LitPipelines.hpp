@@ -39,7 +39,7 @@ private:
 // no prepass and every material map: the caller sets those).
 LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
                                       const shadows::DirectionalShadowUniforms& directional,
-                                      const shadows::LocalShadowUniforms& local,
+                                      const shadows::LocalShadowPlan& local,
                                       const shadows::StaticShadowPlan& staticPlan);
 
 } // namespace penumbra::render

@@ -10,11 +10,12 @@
 
 namespace penumbra::render {
 
-// What a tile's depth is drawn from: its place, its view and biases.
+// What a tile's depth is drawn from: its place (the viewport; not its index, which may change while the tile stays
+// put), its view and biases.
 inline void addTileView(ContentHash& h, const shadows::ShadowTileDraw& tile)
 {
     const shadows::ShadowViewDraw& v = tile.view;
-    h.add(tile.tile).add(tile.viewport).add(v.viewProjection).add(v.slopeScaleBias).add(v.pancake).add(v.mirrored);
+    h.add(tile.viewport).add(v.viewProjection).add(v.slopeScaleBias).add(v.pancake).add(v.mirrored);
     h.add(v.ditherOrigin).add(v.normalOffset.reach).add(v.normalOffset.light);
 }
 

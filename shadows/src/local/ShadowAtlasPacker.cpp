@@ -80,31 +80,45 @@ std::uint32_t wantedSize(const ShadowTileRequest& request, const ShadowAtlasPack
     return 1u << static_cast<std::uint32_t>(std::lround(octaves));
 }
 
-// Lowers the given sizes until their area fits the atlas: the lowest priority (ties: the highest id) is halved down
-// to the floor first, then the next; with every light at the floor, the lowest priority loses its tiles (size 0).
+// Lowers the given sizes until their area fits the atlas: the largest tile is halved first (ties: the lowest
+// priority, then the highest id), down to the floor; with every light at the floor, the lowest priority loses its
+// tiles (size 0).
 void fitArea(std::span<const ShadowTileRequest> requests, std::vector<std::uint32_t>& sizes,
              const ShadowAtlasPackerSettings& s)
 {
+    const auto lower = [&](std::size_t a, std::size_t b) {
+        return requests[a].priority != requests[b].priority ? requests[a].priority < requests[b].priority
+                                                            : requests[a].lightId > requests[b].lightId;
+    };
     std::vector<std::size_t> order(requests.size());
     for (std::size_t i = 0; i < order.size(); ++i)
         order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return requests[a].priority != requests[b].priority ? requests[a].priority < requests[b].priority
-                                                            : requests[a].lightId > requests[b].lightId;
-    });
+    std::sort(order.begin(), order.end(), lower);
     std::uint64_t total = 0;
     for (std::size_t i = 0; i < sizes.size(); ++i)
         total += area(sizes[i], requests[i].tileCount);
     const std::uint64_t budget = area(s.atlasSize, 1);
-    std::size_t halving = 0;
+    // Lights above the floor, the next to halve first: the largest size, then the lowest priority.
+    const auto halveFirst = [&](std::size_t a, std::size_t b) {
+        return sizes[a] != sizes[b] ? sizes[a] < sizes[b] : lower(b, a);
+    };
+    std::vector<std::size_t> heap;
+    for (const std::size_t i : order)
+        if (sizes[i] > s.floorSize)
+            heap.push_back(i);
+    std::make_heap(heap.begin(), heap.end(), halveFirst);
     std::size_t dropping = 0;
     while (total > budget) {
-        while (halving < order.size() && sizes[order[halving]] <= s.floorSize)
-            ++halving;
-        if (halving < order.size()) {
-            const std::size_t i = order[halving];
+        if (!heap.empty()) {
+            std::pop_heap(heap.begin(), heap.end(), halveFirst);
+            const std::size_t i = heap.back();
+            heap.pop_back();
             total -= area(sizes[i], requests[i].tileCount) - area(sizes[i] / 2, requests[i].tileCount);
             sizes[i] /= 2;
+            if (sizes[i] > s.floorSize) {
+                heap.push_back(i);
+                std::push_heap(heap.begin(), heap.end(), halveFirst);
+            }
             continue;
         }
         const std::size_t i = order[dropping++];
@@ -183,7 +197,7 @@ std::optional<std::string> note(const ShadowTileRequest& request, std::uint32_t 
                            s.atlasSize, request.tileCount, s.floorSize);
     if (size < wanted)
         return fmt::format("shadow tile {0} x {0} instead of {1} x {1}: the tiles asked for need {2:.0f}% of the "
-                           "{3} x {3} local atlas; lights of lower priority are lowered first",
+                           "{3} x {3} local atlas; larger tiles, then lower priorities, are lowered first",
                            size, wanted, 100.0 * double(wantedArea) / double(area(s.atlasSize, 1)), s.atlasSize);
     return std::nullopt;
 }
@@ -208,6 +222,29 @@ ShadowAtlasPacker::ShadowAtlasPacker(const ShadowAtlasPackerSettings& settings) 
 {
     validate(settings_);
     allocator_ = std::make_unique<QuadtreeAllocator>(settings_.atlasSize, settings_.floorSize);
+}
+
+ShadowAtlasPacker::ShadowAtlasPacker(const ShadowAtlasPackerSettings& settings, std::span<const PackedLight> previous)
+    : ShadowAtlasPacker(settings)
+{
+    for (const PackedLight& light : previous) {
+        if (light.size == 0 || !std::has_single_bit(light.size) || light.size < settings_.floorSize ||
+            light.size > settings_.atlasSize)
+            continue;
+        Placed placed{light.lightId, light.wantedSize, light.size, {}};
+        for (const glm::uvec2 offset : light.offsets) {
+            const Block b = allocator_->blockAt(offset, light.size);
+            if (offset.x % light.size != 0 || offset.y % light.size != 0 || offset.x >= settings_.atlasSize ||
+                offset.y >= settings_.atlasSize || !allocator_->allocateAt(b))
+                break;
+            placed.blocks.push_back(b);
+        }
+        if (placed.blocks.size() == light.offsets.size())
+            placed_.push_back(std::move(placed));
+        else
+            for (const Block& b : placed.blocks)
+                allocator_->release(b);
+    }
 }
 
 ShadowAtlasPacker::~ShadowAtlasPacker() = default;

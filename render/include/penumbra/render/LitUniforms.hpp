@@ -155,6 +155,10 @@ inline constexpr std::uint32_t kLitScreenSpaceDepthBinding = kLitCoverageMapBind
 inline constexpr std::uint32_t kLitLocalLightsBinding = kLitScreenSpaceDepthBinding + 1;
 inline constexpr std::uint32_t kLitLightClustersBinding = kLitScreenSpaceDepthBinding + 2;
 inline constexpr std::uint32_t kLitLightIndicesBinding = kLitScreenSpaceDepthBinding + 3;
+// The realtime local atlas's tiles (the storage block LocalShadowTiles, shadows::LocalAtlasTileData per tile). The
+// screen-space collection binds it too, beside its own bindings 1 to 4 after kLitScreenSpaceDepthBinding
+// (ScreenSpaceShadowPass.hpp).
+inline constexpr std::uint32_t kLitLocalShadowTilesBinding = kLitScreenSpaceDepthBinding + 5;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {

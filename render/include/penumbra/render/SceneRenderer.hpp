@@ -108,6 +108,11 @@ struct FrameStats {
     // The scene's lights (directional, spot and point) drawn with a shadow, realtime or static, and without one.
     std::uint32_t shadowedLights = 0;
     std::uint32_t lightsWithoutShadow = 0;
+    // The realtime local atlas (shadows::ShadowAtlasPack): the share of its texels in tiles, the share of its free
+    // texels outside the largest free square (fragmentation), and the lights whose tiles are smaller than they asked.
+    float localAtlasUsed = 0.0f;
+    float localAtlasFragmentation = 0.0f;
+    std::uint32_t localLightsLowered = 0;
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
     // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
@@ -223,6 +228,7 @@ private:
     FrameStats prepareFrame(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans& plans);
     std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
+    rhi::BufferSlice localTileSlice();
     void buildGraph(const FrameDesc& frame);
     void readVisibleDepths(const scene::Camera& camera, const FrameDesc& frame);
     void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
@@ -272,6 +278,7 @@ private:
     std::vector<UserTexture> userTextures_;
     rhi::UniformArena uniforms_;
     rhi::VertexArena instances_; // the lit draws' instance transforms
+    rhi::BufferArena storage_; // the local atlas's tiles (shadows::LocalAtlasTileData), read by the lit shaders
 
     std::unique_ptr<shadows::ShadowAtlas> atlas_;
     std::unique_ptr<shadows::ShadowAtlas> localAtlas_;

@@ -24,6 +24,9 @@ inline constexpr const char* kLightShadowUpdateNames = "settings, everyFrame, on
 
 // Largest angular diameter a directional light may have, degrees (a soft-shadow filter's reach ends far earlier).
 inline constexpr float kMaxAngularDiameter = 30.0f;
+// The range of a spot or point light's own shadowResolution, texels per side (the local atlas's tile sizes).
+inline constexpr float kMinShadowResolution = 16.0f;
+inline constexpr float kMaxShadowResolution = 8192.0f;
 
 // A light infinitely far away (a sun): its direction, colour, intensity and shadow options.
 struct DirectionalLight {
@@ -63,6 +66,9 @@ struct SpotLight {
         LightShadowDefaults::sourceRadius; // world units, 0..range: a disk facing the receiver (soft shadows)
     std::optional<ShadowFilter> shadowFilter; // nullopt: the shadow settings' (the atlas's) filter
     LightShadowUpdate shadowUpdate;
+    // Texels per side its shadow tile asks for when its reach fills the screen (scaled down by its importance on
+    // screen); nullopt: the shadow settings' local.tileResolution. kMinShadowResolution..kMaxShadowResolution.
+    std::optional<float> shadowResolution;
 };
 
 // An omnidirectional light; its shadow is six cube faces.
@@ -80,6 +86,9 @@ struct PointLight {
     float sourceRadius = LightShadowDefaults::sourceRadius; // world units, 0..range: a sphere (soft shadows)
     std::optional<ShadowFilter> shadowFilter; // nullopt: the shadow settings' (the atlas's) filter
     LightShadowUpdate shadowUpdate;
+    // Texels per side its shadow tile asks for when its reach fills the screen (scaled down by its importance on
+    // screen); nullopt: the shadow settings' local.tileResolution. kMinShadowResolution..kMaxShadowResolution.
+    std::optional<float> shadowResolution;
 };
 
 // Names one light of a scene: its kind and its index in that kind's list.

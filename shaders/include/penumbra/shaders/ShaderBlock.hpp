@@ -242,6 +242,11 @@ std::string structGlsl(const ShaderStruct& structure);
 // (each once per shader, behind an #ifndef), for a shader include.
 std::string uniformBlockGlsl(const ShaderStruct& block, std::uint32_t binding, std::string_view instance);
 
+// `layout(std430, binding = N) readonly buffer Name { Element member[]; } instance;`, a storage block that holds one
+// runtime array of `element` (checked against std430 with matchesLayout), preceded by the struct's definition.
+std::string readonlyArrayBlockGlsl(const ShaderStruct& element, std::string_view block, std::uint32_t binding,
+                                   std::string_view member, std::string_view instance);
+
 // The block as PipelineDesc::uniformLayouts takes it: every field, and the fields of struct fields as "outer.inner"
 // (the first element's where the struct field is an array), as rhi reflection lists them.
 rhi::UniformLayout uniformLayout(const ShaderStruct& block);

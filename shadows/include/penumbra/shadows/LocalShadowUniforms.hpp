@@ -12,10 +12,9 @@
 
 namespace penumbra::shadows {
 
-inline constexpr std::uint32_t maxLocalShadowTiles = 16;
 inline constexpr std::uint32_t maxShadowCubes = 4;
 
-// What the lit shader knows of one local atlas tile besides its matrix, bounds and soft data.
+// A static local map's filter and normal bias (StaticShadowUniforms::localTiles).
 struct alignas(16) LocalShadowTile {
     float normalBias = 0.0f; // normal offset per unit distance from the light plane
     std::int32_t shadowFilter = 0; // the light's ShadowFilter
@@ -46,30 +45,42 @@ inline constexpr std::array kLocalShadowCubeFields{
 inline constexpr shaders::ShaderStruct kLocalShadowCubeStruct{"LocalShadowCube", sizeof(LocalShadowCube),
                                                               kLocalShadowCubeFields};
 
-// The lit shader's spot and point shadow block LocalShadows (local_shadows.glsl), uploaded as is.
+// One tile of the realtime local atlas as the lit shader reads it: an element of the storage block LocalShadowTiles
+// (local_shadows.glsl), so the atlas holds as many tiles as it has room for (no uniform array bounds them).
+struct alignas(16) LocalAtlasTileData {
+    glm::mat4 worldToAtlas{1.0f}; // world -> (u, v, depth) x w (divide by w)
+    glm::vec4 bounds{0.0f}; // first and last texel (x, y, x, y)
+    // (t22, t32) the depth row (perspectiveDistance), the light's radius in texels at unit distance (lightTexels),
+    // the near plane.
+    glm::vec4 soft{0.0f};
+    float normalBias = 0.0f; // normal offset per unit distance from the light plane
+    std::int32_t shadowFilter = 0; // the light's ShadowFilter
+};
+
+inline constexpr std::array kLocalAtlasTileFields{
+    PENUMBRA_SHADER_FIELD(LocalAtlasTileData, worldToAtlas), PENUMBRA_SHADER_FIELD(LocalAtlasTileData, bounds),
+    PENUMBRA_SHADER_FIELD(LocalAtlasTileData, soft),         PENUMBRA_SHADER_FIELD(LocalAtlasTileData, normalBias),
+    PENUMBRA_SHADER_FIELD(LocalAtlasTileData, shadowFilter),
+};
+inline constexpr shaders::ShaderStruct kLocalAtlasTileStruct{"LocalAtlasTileData", sizeof(LocalAtlasTileData),
+                                                             kLocalAtlasTileFields};
+static_assert(shaders::matchesLayout(kLocalAtlasTileStruct, shaders::BlockLayout::Std430, true));
+
+// The lit shader's spot and point shadow block LocalShadows (local_shadows.glsl), uploaded as is; the atlas tiles are
+// in the storage block LocalShadowTiles (LocalAtlasTileData).
 struct LocalShadowUniforms {
-    std::array<glm::mat4, maxLocalShadowTiles> worldToAtlas{}; // per tile: world -> (u, v, depth) x w (divide by w)
-    std::array<glm::vec4, maxLocalShadowTiles> tileBounds{}; // per tile: first and last texel (x, y, x, y)
-    std::array<LocalShadowTile, maxLocalShadowTiles> tiles{};
     std::array<LocalShadowCube, maxShadowCubes> cubes{};
     float atlasSize = 0.0f; // texels on a side
     std::int32_t defaultFilter = 0; // ShadowFilter of a light without its own
     std::int32_t pointMode = 0; // PointShadowMode
-    // Per tile: (t22, t32) the depth row (perspectiveDistance), the light's radius in texels at unit distance
-    // (lightTexels), the near plane.
-    alignas(16) std::array<glm::vec4, maxLocalShadowTiles> tileSoft{};
     SoftShadowUniforms soft;
 };
 
 inline constexpr std::array kLocalShadowFields{
-    PENUMBRA_SHADER_FIELD(LocalShadowUniforms, worldToAtlas),
-    PENUMBRA_SHADER_FIELD(LocalShadowUniforms, tileBounds),
-    PENUMBRA_SHADER_STRUCT_FIELD(LocalShadowUniforms, tiles, kLocalShadowTileStruct),
     PENUMBRA_SHADER_STRUCT_FIELD(LocalShadowUniforms, cubes, kLocalShadowCubeStruct),
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, atlasSize),
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, defaultFilter),
     PENUMBRA_SHADER_FIELD(LocalShadowUniforms, pointMode),
-    PENUMBRA_SHADER_FIELD(LocalShadowUniforms, tileSoft),
     PENUMBRA_SHADER_STRUCT_FIELD(LocalShadowUniforms, soft, kSoftShadowStruct),
 };
 // The block LocalShadows, read through the instance name `localShadows`.

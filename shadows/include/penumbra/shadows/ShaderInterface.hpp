@@ -12,7 +12,7 @@ inline constexpr std::uint32_t kCasterBaseColorBinding = 1; // the alpha of Clip
 // The GLSL include "shadow_interface.glsl" of every shader with shadow blocks: their array sizes and the enum values
 // the shaders compare against, from the C++ declarations, so no number is written twice.
 //   PENUMBRA_MAX_SHADOWED_DIRECTIONAL_LIGHTS, PENUMBRA_MAX_CASCADES, PENUMBRA_MAX_DIRECTIONAL_TILES,
-//   PENUMBRA_MAX_LOCAL_SHADOW_TILES, PENUMBRA_MAX_SHADOW_CUBES       (DirectionalShadowUniforms, LocalShadowUniforms)
+//   PENUMBRA_MAX_SHADOW_CUBES                                        (DirectionalShadowUniforms, LocalShadowUniforms)
 //   PENUMBRA_MAX_STATIC_DIRECTIONAL_MAPS, PENUMBRA_MAX_STATIC_LOCAL_TILES,
 //   PENUMBRA_MAX_STATIC_MAP_DIRECTIONAL_LIGHTS (StaticShadowUniforms)
 //   PENUMBRA_BLEND_HARD, _SOFT, _DITHER                              (CascadeBlend)

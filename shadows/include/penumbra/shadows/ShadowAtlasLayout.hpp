@@ -18,8 +18,8 @@ enum class AtlasSplits : std::uint8_t { PowersOfTwo, WithThree };
 
 // A square atlas cut into split x split square tiles of atlasSize / split texels (rounded down). Tile i sits at
 // column i % split, row i / split, rows counted from the TOP as rhi::Viewport and texture v do. Used by the
-// directional atlas (lights x cascades), the local atlas (up to 16 tiles of spot and point lights) and the static
-// local atlas (up to 64).
+// directional atlas (lights x cascades) and the static local atlas (up to 64); the realtime local atlas gives each
+// light a tile of its own size (ShadowAtlasPacker).
 class ShadowAtlasLayout {
 public:
     // Throws rhi::Error when tileCount > maxAtlasTiles or atlasSize is not a multiple of a power-of-two split.

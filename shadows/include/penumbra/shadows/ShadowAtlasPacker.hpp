@@ -22,8 +22,10 @@ namespace penumbra::shadows {
 // - a request's size is clamped to [floorSize, maxSize] and rounded to a power of two; a light that had a tile keeps
 //   its size while its request stays within `hysteresis` octaves beyond the rounding boundary (HDRP's and Godot's
 //   caches need tiles that do not change with every small move of the camera);
-// - when the tiles' area exceeds the atlas, the lowest-priority light is halved first, down to floorSize, then the
-//   next; only when every light is at the floor does the lowest-priority light lose its shadow (never its light);
+// - when the tiles' area exceeds the atlas, the largest tiles are halved first, of lights of equal size the
+//   lowest-priority light first, down to floorSize; only when every light is at the floor does the lowest-priority
+//   light lose its shadow (never its light). Requests already grow with priority (localShadowRequest), so halving the
+//   largest keeps their order while no light falls to the floor before the others have given up resolution;
 // - a light whose size did not change keeps its tiles (PackedLight::moved false); a smaller one shrinks in place
 //   (the top-left quadrant of its old tile); others take the smallest free block that holds them, largest first;
 //   where the kept tiles leave no block large enough, every tile is placed afresh (ShadowAtlasPack::repacked).
@@ -32,6 +34,8 @@ struct ShadowAtlasPackerSettings {
     std::uint32_t floorSize = 64; // smallest tile before a light loses its shadow, a power of two
     std::uint32_t maxSize = 1024; // largest tile, a power of two from floorSize to atlasSize
     float hysteresis = 0.25f; // octaves, 0..0.5: how far past the rounding boundary a request moves a tile's size
+
+    bool operator==(const ShadowAtlasPackerSettings&) const = default;
 };
 
 // One light's request for shadow tiles this frame.
@@ -50,6 +54,8 @@ struct PackedLight {
     std::vector<glm::uvec2> offsets; // top-left texel of each tile (rows from the top, as rhi::Viewport); none if 0
     // The tiles differ from last frame's, or there are none (always so for a new light): cached maps are stale.
     bool moved = true;
+
+    bool operator==(const PackedLight&) const = default;
 };
 
 // A light that lost resolution or its shadow, and why.
@@ -79,6 +85,10 @@ class ShadowAtlasPacker {
 public:
     // Throws rhi::Error naming the setting and its allowed range.
     explicit ShadowAtlasPacker(const ShadowAtlasPackerSettings& settings);
+    // A packer that holds `previous` (an earlier pack's lights, made with the same settings) where they were, as if it
+    // had packed them: planning stays a function of its inputs and the last frame's allocation. Lights whose tiles no
+    // longer fit where they were are left out (placed afresh by the next pack).
+    ShadowAtlasPacker(const ShadowAtlasPackerSettings& settings, std::span<const PackedLight> previous);
     ~ShadowAtlasPacker();
     // Moves the packer with the tiles it keeps.
     ShadowAtlasPacker(ShadowAtlasPacker&&) noexcept;

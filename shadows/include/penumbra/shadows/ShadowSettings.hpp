@@ -126,6 +126,11 @@ struct LocalShadowSettings {
     // Near plane of a spot or point shadow projection as a fraction of the light's range, for lights that set none: 1%
     // keeps 32-bit and 24-bit depth resolution at the far end, while casters nearer than that to the light are rare.
     float nearPlane = 0.01f;
+    // Each spot light's tile and point light's faces are sized on their own (ShadowAtlasPacker): the light's
+    // shadowResolution, or this without one, times its importance on screen (localShadowRequest); texels per side.
+    std::uint32_t tileResolution = 1024;
+    // The least a tile is lowered to when the atlas runs out of room, before a light loses its shadow.
+    std::uint32_t minTileResolution = 64;
 };
 
 // Which casters the realtime atlases draw while static maps exist.
