@@ -111,7 +111,7 @@ float sideOfNormalBias(LocalShadowView& view, NormalBiasSide side, float scale, 
 // radius in texels at unit distance (lightTexels) and the near plane.
 struct SoftProjection {
     ShadowFilter filter;
-    glm::vec4 tileSoft;
+    PerspectiveTileSoft tileSoft;
 };
 
 SoftProjection softProjection(ShadowFilter filter, const glm::mat4& projection, std::uint32_t tileSize,
@@ -126,7 +126,8 @@ void addTile(LocalShadowPlan& plan, std::uint32_t tile, LocalShadowView view, fl
     plan.uniforms.worldToAtlas[tile] = worldToAtlas(view.viewProjection, tile, plan.atlas, conventions);
     plan.uniforms.tileBounds[tile] = plan.atlas.tileTexelBounds(tile);
     plan.uniforms.tiles[tile] = {.normalBias = normalBiasScale, .shadowFilter = static_cast<std::int32_t>(soft.filter)};
-    plan.uniforms.tileSoft[tile] = soft.tileSoft;
+    plan.uniforms.tileSoft[tile] =
+        glm::vec4(soft.tileSoft.depthRow, soft.tileSoft.lightTexels, soft.tileSoft.nearPlane);
     plan.tiles.push_back({std::move(view), tile, plan.atlas.viewport(tile)});
 }
 
