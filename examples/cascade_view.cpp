@@ -19,7 +19,7 @@ namespace {
 struct GroundUniforms {
     glm::mat4 clipToWorld;
     glm::mat4 worldToAtlas[4]; // the first light's cascades
-    glm::vec4 cullingSpheres[4];
+    glm::vec4 cullingSpheres[4]; // per cascade: centre, radius squared
     glm::vec4 atlas; // size in texels, cascade count
 };
 
@@ -27,7 +27,7 @@ const char* groundShader = R"(#version 450
 layout(std140, binding = 0) uniform Ground {
     mat4 clipToWorld;
     mat4 worldToAtlas[4];
-    vec4 cullingSpheres[4];
+    vec4 cullingSpheres[4]; // per cascade: centre, radius squared
     vec4 atlas;
 } ground;
 layout(binding = 1) uniform sampler2D shadowAtlas; // raw depth, read with texelFetch
@@ -83,7 +83,8 @@ try {
     uniforms.clipToWorld = glm::inverse(projection * world.camera.view());
     for (std::uint32_t c = 0; c < plan.splits.count; ++c) {
         uniforms.worldToAtlas[c] = plan.lights.at(0).cascades.at(c).worldToAtlas;
-        uniforms.cullingSpheres[c] = plan.uniforms.cullingSpheres[c];
+        const shadows::CascadeData& cascade = plan.uniforms.cascades[c];
+        uniforms.cullingSpheres[c] = glm::vec4(cascade.selectionCentre, cascade.selectionRadiusSquared);
     }
     uniforms.atlas = glm::vec4(float(renderer.atlas().size()), float(plan.splits.count), 0.0f, 0.0f);
     auto uniformBuffer = device->createBuffer({.size = sizeof(uniforms), .usage = rhi::BufferUsage::Uniform});

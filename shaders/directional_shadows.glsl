@@ -27,19 +27,18 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
 {
     CascadeSelection s;
     s.blend = 1.0;
-    s.strength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
+    s.strength = fadedShadowStrength(viewDepth, shadows.fade.inverseMaxDistance, shadows.fade.inverseDistanceFade);
     const int count = shadows.cascadeCount;
     const bool close = shadows.cascadeProjection == PENUMBRA_PROJECTION_CLOSE;
     int i = 0;
     for (; i < count; ++i) {
-        const vec4 sphere = shadows.cullingSpheres[i];
-        const vec3 offset = position - sphere.xyz;
+        const CascadeData cascade = shadows.cascades[i];
+        const vec3 offset = position - cascade.selectionCentre;
         const float distanceSquared = dot(offset, offset);
-        const float farDepth = shadows.cascadeData[i].w;
-        if (close ? viewDepth < farDepth : distanceSquared < sphere.w) {
+        if (close ? viewDepth < cascade.farDepth : distanceSquared < cascade.selectionRadiusSquared) {
             const float fade =
-                close ? fadedShadowStrength(viewDepth, 1.0 / farDepth, shadows.distanceFade.w)
-                      : fadedShadowStrength(distanceSquared, shadows.cascadeData[i].x, shadows.distanceFade.z);
+                close ? fadedShadowStrength(viewDepth, 1.0 / cascade.farDepth, shadows.fade.inverseDepthCascadeFade)
+                      : fadedShadowStrength(distanceSquared, cascade.fadeScale, shadows.fade.inverseSphereCascadeFade);
             if (i == count - 1)
                 s.strength *= fade;
             else
@@ -58,12 +57,12 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
 }
 
 // Tile tileMin..tileMax of a directional depth atlas filtered at atlas position (u, v, depth) by `filterIndex`: the
-// tent filters, or the Poisson and PCSS filters with the tile's soft data (tileSoft: the light texel anchor and the
-// depth row), the light's tan of half its angular diameter and the world size of a tile texel. `toAtlas` turns the
+// tent filters, or the Poisson and PCSS filters with the tile's soft data, the light's tan of half its angular diameter and the world size of a tile texel. `toAtlas` turns the
 // receiver's screen derivatives into atlas units. The realtime cascades and the static maps (static_shadows.glsl)
 // both filter through it.
 float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize, ivec2 tileMin, ivec2 tileMax,
-                            int filterIndex, mat3 toAtlas, vec4 tileSoft, float tanHalfAngle, float texelWorld)
+                            int filterIndex, mat3 toAtlas, DirectionalTileSoft tileSoft, float tanHalfAngle,
+                            float texelWorld)
 {
 #if PENUMBRA_SOFT_FILTERS
     if (filterIndex < PENUMBRA_FILTER_FIRST_POISSON_DISK)
@@ -71,9 +70,9 @@ float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize
         return filterShadowTile(atlas, atlasPosition, atlasSize, filterIndex, tileMin, tileMax);
 #if PENUMBRA_SOFT_FILTERS
     const SoftTile t =
-        softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, atlasSize, tileMin, tileMax, tileSoft.xy);
-    return directionalSoftShadow(atlas, t, filterIndex, shadows.soft,
-                                 tileSoft.zw, tanHalfAngle, texelWorld);
+        softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, atlasSize, tileMin, tileMax,
+                 tileSoft.lightTexelAnchor);
+    return directionalSoftShadow(atlas, t, filterIndex, shadows.soft, tileSoft.depthRow, tanHalfAngle, texelWorld);
 #endif
 }
 
@@ -83,7 +82,7 @@ float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slo
     const vec4 bounds = shadows.tileBounds[tile];
     return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize, ivec2(bounds.xy), ivec2(bounds.zw),
                                  shadows.lights[slot].shadowFilter, mat3(shadows.worldToAtlas[tile]), shadows.tileSoft[tile],
-                                 shadows.lights[slot].tanHalfAngle, shadows.cascadeData[cascade].z);
+                                 shadows.lights[slot].tanHalfAngle, shadows.cascades[cascade].texelWorldSize);
 }
 
 // The receiver moved by its normal offset over the cascade's filter-sized texel diagonal (scaled to the light's
@@ -91,7 +90,7 @@ float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slo
 float sampleCascade(int tile, int cascade, int slot, vec3 position, vec3 normal, vec3 towardsLight, float normalBias)
 {
     precise vec3 biased = position + receiverNormalOffset(normal, towardsLight,
-                                                          normalBias * shadows.cascadeData[cascade].y *
+                                                          normalBias * shadows.cascades[cascade].normalBias *
                                                               shadows.lights[slot].filterBiasScale);
     return filterDirectionalShadow(transformPoint(shadows.worldToAtlas[tile], biased).xyz, tile, cascade, slot);
 }

@@ -189,7 +189,7 @@ void main()
     const vec3 v = normalize(toCamera);
     const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);
     const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
-    const float globalStrength = fadedShadowStrength(viewDepth, shadows.distanceFade.x, shadows.distanceFade.y);
+    const float globalStrength = fadedShadowStrength(viewDepth, shadows.fade.inverseMaxDistance, shadows.fade.inverseDistanceFade);
 #if PENUMBRA_LIT_VIEW == PENUMBRA_VIEW_VISIBILITY
     outColor = shadowVisibility(frame.visibilityLight, n, geometric, cascade, globalStrength);
 #else

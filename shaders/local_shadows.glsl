@@ -57,10 +57,9 @@ vec4 localShadowPosition(mat4 worldToAtlas, float biasScale, vec3 plane, vec3 fr
 
 // A perspective tile (first and last texel `bounds`) of a depth atlas at the receiver's projected position `p`
 // (worldToAtlas x its position, before the divide by w), filtered by `filterIndex`: the tent filters, or the Poisson
-// and PCSS filters with the tile's soft data (tileSoft: the depth row, the light's radius in texels at unit distance,
-// the near plane). The realtime tiles and the static maps (static_shadows.glsl) both filter through it.
+// and PCSS filters with the tile's soft data. The realtime tiles and the static maps (static_shadows.glsl) both filter through it.
 float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 p, vec4 bounds, int filterIndex,
-                      vec4 tileSoft)
+                      PerspectiveTileSoft tileSoft)
 {
 #if PENUMBRA_SOFT_FILTERS
     if (filterIndex < PENUMBRA_FILTER_FIRST_POISSON_DISK)
@@ -84,7 +83,7 @@ float localAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
     const LocalAtlasTileData t = localShadowTiles.tiles[local.tile];
     const vec4 p = localShadowPosition(t.worldToAtlas, t.normalBias, local.plane, fromLight, position, normal);
     return filterLocalTile(localShadowAtlas, localShadows.atlasSize, t.worldToAtlas, p, t.bounds, t.shadowFilter,
-                           t.soft);
+                           PerspectiveTileSoft(t.soft.xy, t.soft.z, t.soft.w));
 }
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read

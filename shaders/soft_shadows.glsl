@@ -244,13 +244,13 @@ float perspectivePenumbraTexels(float receiver, float blocker, float lightTexels
     return c.penumbraScale * lightTexels * max(receiver - blocker, 0.0) / (blocker * receiver);
 }
 
-// tileSoft = (t22, t32, lightTexels, near plane).
-float perspectiveSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftControls c, vec4 tileSoft)
+// PerspectiveTileSoft, the tile's soft data, is generated from penumbra::shadows::PerspectiveTileSoft.
+float perspectiveSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftControls c, PerspectiveTileSoft tileSoft)
 {
     float radius = c.poissonRadius;
     if (filterIndex == PENUMBRA_FILTER_PCSS) {
-        const float receiver = perspectiveDistance(t.depth, tileSoft.xy);
-        float within = perspectiveSearchTexels(receiver, tileSoft.w, tileSoft.z, c);
+        const float receiver = perspectiveDistance(t.depth, tileSoft.depthRow);
+        float within = perspectiveSearchTexels(receiver, tileSoft.nearPlane, tileSoft.lightTexels, c);
         vec3 found = vec3(0.0);
         for (int searchStep = 0; searchStep < PCSS_SEARCH_STEPS; ++searchStep) {
             found = searchBlockers(atlas, t, within, c.blockerSamples);
@@ -258,13 +258,13 @@ float perspectiveSoftShadow(sampler2D atlas, SoftTile t, int filterIndex, SoftCo
                 return 1.0;
             // The nearest blocker's cone: the search formula with that blocker in place of the near plane.
             if (searchStep == 0)
-                within = min(
-                    perspectiveSearchTexels(receiver, perspectiveDistance(found.z, tileSoft.xy), tileSoft.z, c),
-                    within);
+                within = min(perspectiveSearchTexels(receiver, perspectiveDistance(found.z, tileSoft.depthRow),
+                                                     tileSoft.lightTexels, c),
+                             within);
         }
-        const float blocker = perspectiveDistance(found.x, tileSoft.xy);
-        radius = diskRadius(perspectivePenumbraTexels(receiver, blocker, tileSoft.z, c), PENUMBRA_BILINEAR_TAP_VARIANCE,
-                            c);
+        const float blocker = perspectiveDistance(found.x, tileSoft.depthRow);
+        radius = diskRadius(perspectivePenumbraTexels(receiver, blocker, tileSoft.lightTexels, c),
+                            PENUMBRA_BILINEAR_TAP_VARIANCE, c);
         if (inUmbra(found.xy, c.blockerSamples, radius, within))
             return 0.0;
     }

@@ -95,6 +95,7 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
         {"shadow_constants.glsl",
          shadows::filterConstantsGlsl() + shadows::cascadeProjectionConstantsGlsl() + shadows::shadowInterfaceGlsl() +
              shaders::structGlsl(shadows::kSoftShadowStruct) +
+             shaders::structGlsl(shadows::kPerspectiveTileSoftStruct) +
              fmt::format("#define PENUMBRA_BINDING_DIRECTIONAL_ATLAS {}\n"
                          "#define PENUMBRA_BINDING_LOCAL_ATLAS {}\n"
                          "#define PENUMBRA_BINDING_SHADOW_CUBES {}\n"

@@ -7,8 +7,12 @@ CascadeData cascadeData(const Sphere& cullingSphere, float texelSize, ShadowFilt
     const float filterWorldSize = texelSize * normalBiasFilterFactor(filter);
     const float shrunk = cullingSphere.radius - filterWorldSize;
     const float shrunkSquared = shrunk * shrunk;
-    return {glm::vec4(cullingSphere.centre, shrunkSquared),
-            glm::vec4(1.0f / shrunkSquared, filterWorldSize * 1.4142136f, texelSize, farDepth)};
+    return {.selectionCentre = cullingSphere.centre,
+            .selectionRadiusSquared = shrunkSquared,
+            .fadeScale = 1.0f / shrunkSquared,
+            .normalBias = filterWorldSize * 1.4142136f,
+            .texelWorldSize = texelSize,
+            .farDepth = farDepth};
 }
 
 } // namespace penumbra::shadows

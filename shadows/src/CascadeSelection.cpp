@@ -14,20 +14,20 @@ namespace penumbra::shadows {
 CascadeSelection selectCascade(const DirectionalShadowUniforms& u, glm::vec3 position, float viewDepth)
 {
     const auto count = static_cast<std::uint32_t>(u.cascadeCount);
-    const bool close = u.cascadeProjection == static_cast<int>(CascadeProjection::Close);
+    const bool close = u.cascadeProjection == CascadeProjection::Close;
     for (std::uint32_t i = 0; i < count; ++i) {
-        const glm::vec4& data = u.cascadeData[i];
+        const CascadeData& cascade = u.cascades[i];
         if (close) {
-            if (viewDepth < data.w)
-                return {i, fadedShadowStrength(viewDepth, 1.0f / data.w, u.distanceFade.w), data.w - viewDepth};
+            if (viewDepth < cascade.farDepth)
+                return {i, fadedShadowStrength(viewDepth, 1.0f / cascade.farDepth, u.fade.inverseDepthCascadeFade),
+                        cascade.farDepth - viewDepth};
             continue;
         }
-        const glm::vec4& sphere = u.cullingSpheres[i];
-        const glm::vec3 offset = position - glm::vec3(sphere);
+        const glm::vec3 offset = position - cascade.selectionCentre;
         const float distanceSquared = glm::dot(offset, offset);
-        if (distanceSquared < sphere.w)
-            return {i, fadedShadowStrength(distanceSquared, data.x, u.distanceFade.z),
-                    std::sqrt(sphere.w) - std::sqrt(distanceSquared)};
+        if (distanceSquared < cascade.selectionRadiusSquared)
+            return {i, fadedShadowStrength(distanceSquared, cascade.fadeScale, u.fade.inverseSphereCascadeFade),
+                    std::sqrt(cascade.selectionRadiusSquared) - std::sqrt(distanceSquared)};
     }
     return {count, 0.0f, 0.0f};
 }

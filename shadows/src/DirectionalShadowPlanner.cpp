@@ -30,7 +30,7 @@ std::optional<std::string> exclusion(const DirectionalShadowLightInput& light, s
     return std::nullopt;
 }
 
-// The soft shadows' blocks but for the tiles' (tileSoftData).
+// The soft shadows' blocks but for the tiles' (directionalTileSoft).
 void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
 {
     DirectionalShadowUniforms& u = plan.uniforms;
@@ -43,29 +43,17 @@ void fillSoftUniforms(DirectionalShadowPlan& plan, const ShadowSettings& setting
     }
 }
 
-// A cascade tile's DirectionalShadowUniforms::tileSoft.
-glm::vec4 tileSoftData(const DirectionalCascadePlan& cascade, const LightSpaceCasters& casters,
-                       const rhi::Conventions& conventions)
-{
-    const float top = casterTopDepth(casters, cascade.fit.nearDepth);
-    return glm::vec4(lightTexelAnchor(cascade.fit, cascade.worldToAtlas),
-                     directionalDepthRow(cascade.fit, top, conventions));
-}
-
 void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
 {
     DirectionalShadowUniforms& u = plan.uniforms;
     u.atlasSize = static_cast<float>(plan.atlas.atlasSize());
-    u.distanceFade = shadowDistanceFade(settings);
+    u.fade = shadowDistanceFade(settings);
     u.cascadeCount = static_cast<int>(plan.splits.count);
-    u.defaultFilter = static_cast<int>(settings.directional.filter);
-    u.cascadeBlend = static_cast<int>(settings.directional.cascadeBlend);
+    u.defaultFilter = settings.directional.filter;
+    u.cascadeBlend = settings.directional.cascadeBlend;
     u.shadowedLightCount = static_cast<int>(plan.lights.size());
-    u.cascadeProjection = static_cast<int>(settings.directional.projection);
-    for (std::size_t i = 0; i < plan.cascadeData.size(); ++i) {
-        u.cullingSpheres[i] = plan.cascadeData[i].selectionSphere;
-        u.cascadeData[i] = plan.cascadeData[i].data;
-    }
+    u.cascadeProjection = settings.directional.projection;
+    std::copy(plan.cascadeData.begin(), plan.cascadeData.end(), u.cascades.begin());
     for (std::size_t slot = 0; slot < plan.lights.size(); ++slot) {
         const ShadowedDirectionalLight& light = plan.lights[slot];
         // On the caster side the lit pass looks up where the surface is.
@@ -73,7 +61,7 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
         u.lights[slot].strength = light.strength;
         u.lights[slot].normalBias = receiverBias;
         u.lights[slot].firstTile = static_cast<std::int32_t>(light.firstTile);
-        u.lights[slot].shadowFilter = static_cast<std::int32_t>(light.filter);
+        u.lights[slot].shadowFilter = light.filter;
         for (const DirectionalCascadePlan& cascade : light.cascades) {
             u.worldToAtlas[cascade.tile] = cascade.worldToAtlas;
             u.tileBounds[cascade.tile] = plan.atlas.tileTexelBounds(cascade.tile);
@@ -129,7 +117,7 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 {
     if (light.normalBiasSide != NormalBiasSide::Caster || cascade >= plan.cascadeData.size())
         return {};
-    return {light.normalBias * plan.cascadeData[cascade].data.y, glm::vec4(light.direction, 0.0f)};
+    return {light.normalBias * plan.cascadeData[cascade].normalBias, glm::vec4(light.direction, 0.0f)};
 }
 
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
@@ -227,7 +215,8 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
                     cullShadowCasters(cascade.fit, casters,
                                       c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt,
                                       cullingFactor);
-            plan.uniforms.tileSoft[cascade.tile] = tileSoftData(cascade, casters, conventions);
+            plan.uniforms.tileSoft[cascade.tile] =
+                directionalTileSoft(cascade.fit, cascade.worldToAtlas, casters, conventions);
             light.cascades.push_back(std::move(cascade));
         }
     }

@@ -68,11 +68,13 @@ float texelSizeAtUnitDistance(const glm::mat4& projection, std::uint32_t tileSiz
     return 2.0f / (static_cast<float>(tileSize) * projection[0][0]);
 }
 
-glm::vec4 perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSize, float sourceRadius, float nearPlane,
-                              const rhi::Conventions& conventions)
+PerspectiveTileSoft perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSize, float sourceRadius,
+                                        float nearPlane, const rhi::Conventions& conventions)
 {
     const glm::mat4 toTexture = conventions.clipToTexture() * projection;
-    return {toTexture[2][2], toTexture[3][2], sourceRadius / texelSizeAtUnitDistance(projection, tileSize), nearPlane};
+    return {.depthRow = {toTexture[2][2], toTexture[3][2]},
+            .lightTexels = sourceRadius / texelSizeAtUnitDistance(projection, tileSize),
+            .nearPlane = nearPlane};
 }
 
 float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, ShadowFilter filter, float normalBias)

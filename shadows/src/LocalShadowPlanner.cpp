@@ -114,7 +114,7 @@ float sideOfNormalBias(LocalShadowView& view, NormalBiasSide side, float scale, 
 // radius in texels at unit distance (lightTexels) and the near plane.
 struct SoftProjection {
     ShadowFilter filter;
-    glm::vec4 tileSoft;
+    PerspectiveTileSoft tileSoft;
 };
 
 SoftProjection softProjection(ShadowFilter filter, const glm::mat4& projection, std::uint32_t tileSize,
@@ -137,7 +137,7 @@ void addTile(LocalShadowPlan& plan, TilePlace place, LocalShadowView view, float
     plan.tileData.push_back(
         {.worldToAtlas = worldToAtlas(view.viewProjection, place.offset, place.size, plan.atlasSize, conventions),
          .bounds = {first, first + static_cast<float>(place.size - 1)},
-         .soft = soft.tileSoft,
+         .soft = glm::vec4(soft.tileSoft.depthRow, soft.tileSoft.lightTexels, soft.tileSoft.nearPlane),
          .normalBias = normalBiasScale,
          .shadowFilter = static_cast<std::int32_t>(soft.filter)});
     const auto size = static_cast<float>(place.size);

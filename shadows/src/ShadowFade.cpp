@@ -4,11 +4,13 @@
 
 namespace penumbra::shadows {
 
-glm::vec4 shadowDistanceFade(const ShadowSettings& settings)
+ShadowDistanceFade shadowDistanceFade(const ShadowSettings& settings)
 {
     const float f = 1.0f - settings.directional.cascadeFade;
-    return {1.0f / settings.maxDistance, 1.0f / settings.distanceFade, 1.0f / (1.0f - f * f),
-            1.0f / settings.directional.cascadeFade};
+    return {.inverseMaxDistance = 1.0f / settings.maxDistance,
+            .inverseDistanceFade = 1.0f / settings.distanceFade,
+            .inverseSphereCascadeFade = 1.0f / (1.0f - f * f),
+            .inverseDepthCascadeFade = 1.0f / settings.directional.cascadeFade};
 }
 
 float fadedShadowStrength(float distance, float scale, float fade)

@@ -78,13 +78,13 @@ TEST(CloseFit, TheCascadeIsChosenByViewDepth)
     const ShadowCamera camera = sceneCamera();
     const DirectionalShadowPlan close = plan(CascadeProjection::Close, camera, {-0.4f, -1.0f, 0.5f});
     const DirectionalShadowPlan stable = plan(CascadeProjection::Stable, camera, {-0.4f, -1.0f, 0.5f});
-    EXPECT_EQ(close.uniforms.cascadeProjection, static_cast<int>(CascadeProjection::Close));
-    EXPECT_EQ(stable.uniforms.cascadeProjection, static_cast<int>(CascadeProjection::Stable));
+    EXPECT_EQ(close.uniforms.cascadeProjection, CascadeProjection::Close);
+    EXPECT_EQ(stable.uniforms.cascadeProjection, CascadeProjection::Stable);
     const glm::vec3 right = glm::cross(camera.forward, camera.up);
     const float tanY = std::tan(0.5f * camera.fovY);
     int stableDiffers = 0;
     for (std::uint32_t c = 0; c < 4; ++c) {
-        EXPECT_EQ(close.uniforms.cascadeData[c].w, close.splits.farOf(c));
+        EXPECT_EQ(close.uniforms.cascades[c].farDepth, close.splits.farOf(c));
         for (const float along : {0.02f, 0.5f, 0.98f}) {
             const float depth = close.splits.nearOf(c) + along * (close.splits.farOf(c) - close.splits.nearOf(c));
             for (const float corner : {0.0f, 0.99f}) {
@@ -134,7 +134,7 @@ TEST(CloseFit, SelectedCascadeFiltersStayInsideTheirTile)
                     for (std::uint32_t slot = 0; slot < p.lights.size(); ++slot) {
                         const std::uint32_t tile = p.lights[slot].firstTile + c;
                         // The receiver's normal offset, its full length in the worst direction (the light plane).
-                        const glm::vec3 offset = right * p.uniforms.cascadeData[c].y;
+                        const glm::vec3 offset = right * p.uniforms.cascades[c].normalBias;
                         const glm::vec2 texel =
                             glm::vec2(p.uniforms.worldToAtlas[tile] * glm::vec4(point + offset, 1.0f)) * size;
                         const glm::vec2 low(p.atlas.tileOffset(tile));

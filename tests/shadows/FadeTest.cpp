@@ -9,10 +9,11 @@ namespace {
 
 TEST(ShadowFade, DistanceFadeReciprocals)
 {
-    const glm::vec4 fade = shadowDistanceFade(ShadowSettings{});
-    EXPECT_FLOAT_EQ(fade.x, 1.0f / 100.0f);
-    EXPECT_FLOAT_EQ(fade.y, 1.0f / 0.1f);
-    EXPECT_FLOAT_EQ(fade.z, 1.0f / (1.0f - 0.9f * 0.9f));
+    const ShadowDistanceFade fade = shadowDistanceFade(ShadowSettings{});
+    EXPECT_FLOAT_EQ(fade.inverseMaxDistance, 1.0f / 100.0f);
+    EXPECT_FLOAT_EQ(fade.inverseDistanceFade, 1.0f / 0.1f);
+    EXPECT_FLOAT_EQ(fade.inverseSphereCascadeFade, 1.0f / (1.0f - 0.9f * 0.9f));
+    EXPECT_FLOAT_EQ(fade.inverseDepthCascadeFade, 1.0f / 0.1f);
 }
 
 TEST(ShadowFade, DistanceFadeRunsOverTheLastFractionOfTheMaxDistance)
@@ -20,8 +21,10 @@ TEST(ShadowFade, DistanceFadeRunsOverTheLastFractionOfTheMaxDistance)
     ShadowSettings settings;
     settings.maxDistance = 50.0f;
     settings.distanceFade = 0.2f;
-    const glm::vec4 fade = shadowDistanceFade(settings);
-    auto strength = [&](float depth) { return fadedShadowStrength(depth, fade.x, fade.y); };
+    const ShadowDistanceFade fade = shadowDistanceFade(settings);
+    auto strength = [&](float depth) {
+        return fadedShadowStrength(depth, fade.inverseMaxDistance, fade.inverseDistanceFade);
+    };
     EXPECT_FLOAT_EQ(strength(0.0f), 1.0f);
     EXPECT_FLOAT_EQ(strength(40.0f), 1.0f); // fade starts at (1 - 0.2) * 50
     EXPECT_NEAR(strength(45.0f), 0.5f, 1e-5f);
@@ -33,10 +36,12 @@ TEST(ShadowFade, CascadeFadeOnSquaredDistanceKeepsTheConfiguredBand)
 {
     ShadowSettings settings;
     settings.directional.cascadeFade = 0.25f;
-    const glm::vec4 fade = shadowDistanceFade(settings);
+    const ShadowDistanceFade fade = shadowDistanceFade(settings);
     const CascadeData cascade = cascadeData({{0.0f, 0.0f, 0.0f}, 20.0f}, 0.05f, ShadowFilter::PCF3x3, 30.0f);
-    const float r = std::sqrt(cascade.selectionSphere.w);
-    auto strength = [&](float distance) { return fadedShadowStrength(distance * distance, cascade.data.x, fade.z); };
+    const float r = std::sqrt(cascade.selectionRadiusSquared);
+    auto strength = [&](float distance) {
+        return fadedShadowStrength(distance * distance, cascade.fadeScale, fade.inverseSphereCascadeFade);
+    };
     EXPECT_FLOAT_EQ(strength(0.0f), 1.0f);
     EXPECT_NEAR(strength(0.75f * r), 1.0f, 1e-5f); // the band is the outer 25% of the radius
     EXPECT_GT(strength(0.8f * r), 0.0f);
@@ -54,10 +59,10 @@ TEST(CascadeData, SphereShrunkByTheFilterAndNormalBiasOverTheTexelDiagonal)
         EXPECT_EQ(normalBiasFilterFactor(filter), factor);
         const CascadeData c = cascadeData(sphere, 0.1f, filter, 30.0f);
         const float shrunk = 10.0f - 0.1f * factor;
-        EXPECT_EQ(glm::vec3(c.selectionSphere), sphere.centre);
-        EXPECT_FLOAT_EQ(c.selectionSphere.w, shrunk * shrunk);
-        EXPECT_FLOAT_EQ(c.data.x, 1.0f / (shrunk * shrunk));
-        EXPECT_FLOAT_EQ(c.data.y, 0.1f * factor * std::sqrt(2.0f));
+        EXPECT_EQ(c.selectionCentre, sphere.centre);
+        EXPECT_FLOAT_EQ(c.selectionRadiusSquared, shrunk * shrunk);
+        EXPECT_FLOAT_EQ(c.fadeScale, 1.0f / (shrunk * shrunk));
+        EXPECT_FLOAT_EQ(c.normalBias, 0.1f * factor * std::sqrt(2.0f));
     }
     EXPECT_EQ(filterSize(ShadowFilter::PCF2x2), 2);
     EXPECT_EQ(filterSize(ShadowFilter::PCF3x3), 3);

@@ -73,20 +73,21 @@ TEST(DirectionalShadowPlanner, TilesViewportsAndUniformsAgree)
     const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, casters);
     const DirectionalShadowUniforms& u = plan.uniforms;
     EXPECT_EQ(u.cascadeCount, 4);
-    EXPECT_EQ(u.defaultFilter, 2);
-    EXPECT_EQ(u.cascadeBlend, 1);
+    EXPECT_EQ(u.defaultFilter, ShadowFilter::PCF5x5);
+    EXPECT_EQ(u.cascadeBlend, CascadeBlend::Soft);
     EXPECT_EQ(u.shadowedLightCount, 4);
     EXPECT_EQ(u.atlasSize, 1024.0f);
     // The light's filter is the atlas's PCF5x5 for a light without its own.
     EXPECT_EQ(u.lights[1].strength, 1.0f);
     EXPECT_EQ(u.lights[1].normalBias, 0.5f);
     EXPECT_EQ(u.lights[1].firstTile, 4);
-    EXPECT_EQ(u.lights[1].shadowFilter, 2);
+    EXPECT_EQ(u.lights[1].shadowFilter, ShadowFilter::PCF5x5);
     ASSERT_EQ(plan.cascadeData.size(), 4u);
     for (std::uint32_t c = 0; c < 4; ++c) {
-        EXPECT_EQ(u.cullingSpheres[c], plan.cascadeData[c].selectionSphere);
-        EXPECT_EQ(u.cascadeData[c], plan.cascadeData[c].data);
-        EXPECT_LT(u.cullingSpheres[c].w, plan.cullingSpheres[c].radius * plan.cullingSpheres[c].radius);
+        EXPECT_EQ(u.cascades[c].selectionCentre, plan.cascadeData[c].selectionCentre);
+        EXPECT_EQ(u.cascades[c].fadeScale, plan.cascadeData[c].fadeScale);
+        EXPECT_EQ(u.cascades[c].farDepth, plan.cascadeData[c].farDepth);
+        EXPECT_LT(u.cascades[c].selectionRadiusSquared, plan.cullingSpheres[c].radius * plan.cullingSpheres[c].radius);
     }
     for (std::uint32_t slot = 0; slot < 4; ++slot) {
         const ShadowedDirectionalLight& light = plan.lights[slot];
@@ -127,10 +128,11 @@ TEST(DirectionalShadowPlanner, SelectedCascadeFiltersStayInsideTheirTile)
             const glm::vec3 p = camera.position + camera.forward * d + camera.up * (unit(rng) * d * tanY) +
                                 right * (unit(rng) * d * tanY * camera.aspect);
             std::uint32_t c = 0;
-            auto outside = [&](const glm::vec4& sphere) {
-                return glm::dot(p - glm::vec3(sphere), p - glm::vec3(sphere)) >= sphere.w;
+            auto outside = [&](const CascadeData& cascade) {
+                return glm::dot(p - cascade.selectionCentre, p - cascade.selectionCentre) >=
+                       cascade.selectionRadiusSquared;
             };
-            while (c < 4 && outside(plan.uniforms.cullingSpheres[c]))
+            while (c < 4 && outside(plan.uniforms.cascades[c]))
                 ++c;
             if (c == 4)
                 continue;

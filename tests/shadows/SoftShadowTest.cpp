@@ -330,8 +330,8 @@ TEST(SoftSettingsTest, FilterNamesOnTheCommandLine)
 TEST(SoftSettingsTest, CascadeDataCarriesTheTexelSize)
 {
     const CascadeData d = cascadeData({glm::vec3(0.0f), 10.0f}, 0.05f, ShadowFilter::PCSS, 15.0f);
-    EXPECT_EQ(d.data.z, 0.05f);
-    EXPECT_NEAR(d.data.y, 0.05f * 1.4142136f, 1e-7f); // the soft filters keep the 2x2's one-texel normal offset
+    EXPECT_EQ(d.texelWorldSize, 0.05f);
+    EXPECT_NEAR(d.normalBias, 0.05f * 1.4142136f, 1e-7f); // the soft filters keep the 2x2's one-texel normal offset
 }
 
 ShadowCamera cameraAt(glm::vec3 position)
@@ -362,12 +362,11 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
             planDirectionalShadows(settings, conventions, cameraAt({0, 2, 5}), lights, casters);
         const DirectionalShadowPlan b =
             planDirectionalShadows(settings, conventions, cameraAt({0.37f, 2, 4.1f}), lights, casters);
-        EXPECT_EQ(a.uniforms.lights[0].shadowFilter, static_cast<int>(ShadowFilter::PCSS));
+        EXPECT_EQ(a.uniforms.lights[0].shadowFilter, ShadowFilter::PCSS);
         EXPECT_NEAR(a.uniforms.lights[0].tanHalfAngle, std::tan(0.0261799f), 1e-6f);
         EXPECT_EQ(a.uniforms.lights[0].filterBiasScale, 1.0f); // PCSS's normal offset is the 2x2's, the atlas's default
         for (const DirectionalCascadePlan& cascade : a.lights[0].cascades) {
-            const glm::vec4 soft = a.uniforms.tileSoft[cascade.tile];
-            const glm::vec2 row{soft.z, soft.w};
+            const glm::vec2 row = a.uniforms.tileSoft[cascade.tile].depthRow;
             // Depths at the near and the far plane are the light-space depth range apart in world units, measured from
             // the casters' top (the box's corner nearest the light).
             const float nearDepth = conventions.windowDepth(cascade.fit.projection, 0.0f);
@@ -386,15 +385,14 @@ TEST(SoftPlannerTest, EveryCascadeMapsDepthToWorldDistanceAndKeepsTheLightTexelG
                 const glm::vec4 atlas = cascade.worldToAtlas * glm::vec4(point, 1.0f);
                 const glm::vec2 texel = glm::vec2(atlas) * static_cast<float>(plan.atlas.atlasSize());
                 return glm::floor(texel - glm::vec2(plan.atlas.tileOffset(cascade.tile)) +
-                                  glm::vec2(plan.uniforms.tileSoft[cascade.tile]) + 0.5f);
+                                  plan.uniforms.tileSoft[cascade.tile].lightTexelAnchor + 0.5f);
             };
             EXPECT_EQ(lightTexel(a), lightTexel(b)) << "cascade " << c;
             // The blocker search's receiver depth does not follow the camera either.
             const auto fromTop = [&](const DirectionalShadowPlan& plan) {
                 const DirectionalCascadePlan& cascade = plan.lights[0].cascades[c];
-                const glm::vec4 soft = plan.uniforms.tileSoft[cascade.tile];
                 return orthographicDistanceFromNear((cascade.worldToAtlas * glm::vec4(point, 1.0f)).z,
-                                                    {soft.z, soft.w});
+                                                    plan.uniforms.tileSoft[cascade.tile].depthRow);
             };
             EXPECT_NEAR(fromTop(a), fromTop(b), 1e-3f) << "cascade " << c;
         }

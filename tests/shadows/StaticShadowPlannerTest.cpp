@@ -111,10 +111,10 @@ TEST(StaticShadowPlanner, SoftFiltersStayWithTheirSoftData)
     const std::vector<DirectionalShadowLightInput> sun{{.filter = ShadowFilter::PCSS, .angularDiameter = 2.0f}};
     const StaticShadowPlan plan = planStaticShadows(cachedSettings(), conventions, sun, {}, {}, {kBounds, kStatic});
     EXPECT_TRUE(plan.report.empty());
-    EXPECT_EQ(plan.uniforms.directionalLights[0].shadowFilter, static_cast<int>(ShadowFilter::PCSS));
+    EXPECT_EQ(plan.uniforms.directionalLights[0].shadowFilter, ShadowFilter::PCSS);
     EXPECT_FLOAT_EQ(plan.uniforms.directionalSource[0].tanHalfAngle, tanHalfAngularDiameter(2.0f));
     EXPECT_FLOAT_EQ(plan.uniforms.directionalSource[0].texelWorldSize, plan.maps[0].texelSize);
-    EXPECT_NE(plan.uniforms.directionalSoft[0].z, 0.0f) << "the depth row";
+    EXPECT_NE(plan.uniforms.directionalSoft[0].depthRow.x, 0.0f);
 }
 
 } // namespace

@@ -46,7 +46,7 @@ bool inView(const scene::Camera& camera, glm::vec3 p)
 // no pixel shades, have no cascade there.
 std::optional<shadows::CascadeSelection> selectCascade(const ShadowFrame& frame, glm::vec3 p)
 {
-    if (frame.plan.uniforms.cascadeProjection == int(shadows::CascadeProjection::Close) && !inView(frame.camera, p))
+    if (frame.plan.uniforms.cascadeProjection == shadows::CascadeProjection::Close && !inView(frame.camera, p))
         return std::nullopt;
     const float viewDepth = glm::dot(p - frame.camera.position, frame.camera.forward);
     const shadows::CascadeSelection s = shadows::selectCascade(frame.plan.uniforms, p, viewDepth);
@@ -58,7 +58,7 @@ float lookUp(const ShadowFrame& frame, const rhi::Conventions& conventions, std:
 {
     const shadows::DirectionalShadowUniforms& u = frame.plan.uniforms;
     const glm::vec3 normal{0.0f, 1.0f, 0.0f};
-    const glm::vec3 biased = p + normal * (u.lights[0].normalBias * u.cascadeData[cascade].y);
+    const glm::vec3 biased = p + normal * (u.lights[0].normalBias * u.cascades[cascade].normalBias);
     const glm::vec4 atlas = u.worldToAtlas[cascade] * glm::vec4(biased, 1.0f);
     const glm::vec2 corner = glm::vec2(atlas) * u.atlasSize - 0.5f;
     const glm::vec2 base = glm::floor(corner);

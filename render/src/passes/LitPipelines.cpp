@@ -99,9 +99,9 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
 {
     const shadows::StaticShadowUniforms& staticMaps = staticPlan.uniforms;
     const shadows::LocalShadowUniforms& local = localPlan.uniforms;
-    std::vector<int> filters{directional.defaultFilter, local.defaultFilter};
+    std::vector<int> filters{static_cast<int>(directional.defaultFilter), local.defaultFilter};
     for (const shadows::DirectionalShadowLight& light : directional.lights)
-        filters.push_back(light.shadowFilter);
+        filters.push_back(static_cast<int>(light.shadowFilter));
     for (const shadows::LocalAtlasTileData& tile : localPlan.tileData)
         filters.push_back(tile.shadowFilter);
     for (const shadows::LocalShadowCube& cube : local.cubes)
@@ -109,7 +109,7 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
     bool staticShadows = false;
     for (const shadows::StaticDirectionalLight& light : staticMaps.directionalLights) {
         staticShadows = staticShadows || light.tile >= 0;
-        filters.push_back(light.shadowFilter);
+        filters.push_back(static_cast<int>(light.shadowFilter));
     }
     for (const glm::vec4& light : staticPlan.localLightMaps)
         staticShadows = staticShadows || light.x >= 0.0f;

@@ -86,17 +86,15 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         plan.uniforms.directionalWorldToMap[tile] =
             worldToAtlas(fit.viewProjection, tile, plan.directionalAtlas, conventions);
         plan.uniforms.directionalBounds[tile] = plan.directionalAtlas.tileTexelBounds(tile);
-        const float top = casterTopDepth(lightSpace, fit.nearDepth);
         plan.uniforms.directionalSoft[tile] =
-            glm::vec4(lightTexelAnchor(fit, plan.uniforms.directionalWorldToMap[tile]),
-                      directionalDepthRow(fit, top, conventions));
+            directionalTileSoft(fit, plan.uniforms.directionalWorldToMap[tile], lightSpace, conventions);
         plan.uniforms.directionalSource[tile] = {.tanHalfAngle = tanHalfAngularDiameter(light.angularDiameter),
                                                  .texelWorldSize = fit.texelSize};
         if (index < maxStaticMapDirectionalLights)
             plan.uniforms.directionalLights[index] = {.tile = static_cast<std::int32_t>(tile),
                                                       .strength = light.strength,
                                                       .normalOffset = casterSide ? 0.0f : reach,
-                                                      .shadowFilter = static_cast<std::int32_t>(filter)};
+                                                      .shadowFilter = filter};
         const ShadowFrustum frustum{fit.view, false, fit.halfSize, 0.0f, fit.farDepth - fit.nearDepth};
         plan.maps.push_back({LightKind::Directional,
                              index,

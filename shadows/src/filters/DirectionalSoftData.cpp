@@ -33,4 +33,11 @@ glm::vec2 directionalDepthRow(const DirectionalShadowCascade& fit, float casterT
     return {toTexture[2][2], toTexture[3][2] + toTexture[2][2] * (fit.nearDepth - casterTop)};
 }
 
+DirectionalTileSoft directionalTileSoft(const DirectionalShadowCascade& fit, const glm::mat4& worldToAtlas,
+                                        const LightSpaceCasters& casters, const rhi::Conventions& conventions)
+{
+    return {.lightTexelAnchor = lightTexelAnchor(fit, worldToAtlas),
+            .depthRow = directionalDepthRow(fit, casterTopDepth(casters, fit.nearDepth), conventions)};
+}
+
 } // namespace penumbra::shadows

@@ -12,6 +12,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 // A block shared by C++ and GLSL, declared once: the C++ struct that is uploaded, and beside it a ShaderStruct that
 // lists its fields by name (PENUMBRA_SHADER_FIELD takes each field's GLSL type, array size, offset and size from the
@@ -56,6 +57,13 @@ struct FieldTypeOf<float> {
 };
 template <>
 struct FieldTypeOf<std::int32_t> {
+    static constexpr FieldType type = FieldType::Int;
+};
+// An enum of int's size is a GLSL int: its values are generated into the shaders as #defines (the shadow filter,
+// the cascade blend), so the C++ field keeps the one enum type instead of an int copy.
+template <class T>
+requires std::is_enum_v<T> && std::is_same_v < std::underlying_type_t<T>,
+int > struct FieldTypeOf<T> {
     static constexpr FieldType type = FieldType::Int;
 };
 template <>

@@ -1,6 +1,9 @@
 #pragma once
 
 #include "penumbra/shaders/ShaderBlock.hpp"
+#include "penumbra/shadows/CascadeData.hpp"
+#include "penumbra/shadows/ShadowFade.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <array>
@@ -19,7 +22,7 @@ struct alignas(16) DirectionalShadowLight {
     float strength = 0.0f;
     float normalBias = 0.0f; // the receiver-side normal offset, 0 where the caster side takes it
     std::int32_t firstTile = 0; // its first cascade's atlas tile; cascade c is firstTile + c
-    std::int32_t shadowFilter = 0; // ShadowFilter
+    ShadowFilter shadowFilter = ShadowFilter::PCF2x2;
     float tanHalfAngle = 0.0f; // tan of half the light's angular diameter (the Poisson and PCSS filters)
     float filterBiasScale = 0.0f; // normalBiasFilterFactor of the light's filter over the atlas's
 };
@@ -40,22 +43,16 @@ inline constexpr shaders::ShaderStruct kDirectionalShadowLightStruct{"Directiona
 struct DirectionalShadowUniforms {
     // Per tile (light * cascadeCount + cascade): world -> (u, v, depth) in the atlas.
     std::array<glm::mat4, maxShadowedDirectionalLights * maxCascades> worldToAtlas{};
-    // Per cascade: xyz centre, w = r'^2 (the selection sphere shrunk by the filter).
-    std::array<glm::vec4, maxCascades> cullingSpheres{};
-    // Per cascade: x = 1 / r'^2 (cascade fade), y = normal bias in world units per unit bias, z = world size of a
-    // texel, w = view depth where the cascade ends (close fit).
-    std::array<glm::vec4, maxCascades> cascadeData{};
-    glm::vec4 distanceFade{0.0f}; // shadowDistanceFade
+    std::array<CascadeData, maxCascades> cascades{}; // per cascade, shared by every light
+    ShadowDistanceFade fade;
     float atlasSize = 0.0f; // texels on a side
     std::int32_t cascadeCount = 0;
-    std::int32_t defaultFilter = 0; // ShadowFilter of a light without its own
-    std::int32_t cascadeBlend = 0; // CascadeBlend
+    ShadowFilter defaultFilter = ShadowFilter::PCF2x2; // of a light without its own
+    CascadeBlend cascadeBlend = CascadeBlend::Hard;
     std::int32_t shadowedLightCount = 0;
-    std::int32_t cascadeProjection = 0; // CascadeProjection
+    CascadeProjection cascadeProjection = CascadeProjection::Stable;
     alignas(16) std::array<DirectionalShadowLight, maxShadowedDirectionalLights> lights{};
-    // Per tile: x, y: add to a tile texel for the light-space texel (the disk's rotation); z, w: the depth row
-    // (orthographicDistanceFromNear: the distance past the nearest caster's light-space depth).
-    std::array<glm::vec4, maxShadowedDirectionalLights * maxCascades> tileSoft{};
+    std::array<DirectionalTileSoft, maxShadowedDirectionalLights * maxCascades> tileSoft{}; // per tile
     SoftShadowUniforms soft;
     // Per tile: its first and last texel's x, y in the atlas (ShadowAtlasLayout::tileTexelBounds), which the filters
     // clamp their taps to: given, not worked out per pixel with an integer division (llvmpipe has no vector one).
@@ -64,9 +61,8 @@ struct DirectionalShadowUniforms {
 
 inline constexpr std::array kDirectionalShadowFields{
     PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, worldToAtlas),
-    PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, cullingSpheres),
-    PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, cascadeData),
-    PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, distanceFade),
+    PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, cascades, kCascadeDataStruct),
+    PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, fade, kShadowDistanceFadeStruct),
     PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, atlasSize),
     PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, cascadeCount),
     PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, defaultFilter),
@@ -74,7 +70,7 @@ inline constexpr std::array kDirectionalShadowFields{
     PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, shadowedLightCount),
     PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, cascadeProjection),
     PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, lights, kDirectionalShadowLightStruct),
-    PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, tileSoft),
+    PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, tileSoft, kDirectionalTileSoftStruct),
     PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, soft, kSoftShadowStruct),
     PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, tileBounds),
 };

@@ -4,6 +4,7 @@
 #include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/DirectionalCascadeFit.hpp"
 #include "penumbra/shadows/LightBasis.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -11,8 +12,8 @@
 
 namespace penumbra::shadows {
 
-// What the Poisson and PCSS filters (shaders/soft_shadows.glsl) need of a directional tile, the realtime cascades'
-// (DirectionalShadowUniforms::tileSoft) and the static maps' (StaticShadowUniforms::directionalSoft) alike.
+// What the Poisson and PCSS filters (shaders/soft_shadows.glsl) need of a directional tile (DirectionalTileSoft), the
+// realtime cascades' and the static maps' alike.
 
 // What a tile texel adds to become the light's own texel grid (whole texels: the fit snaps the tile's centre), per
 // axis in the direction the atlas runs along the light's right and up axes; `worldToAtlas` is the tile's.
@@ -27,5 +28,10 @@ float casterTopDepth(const LightSpaceCasters& casters, float fallback);
 // search's receiver depth), and differences of two depths stay world distances.
 glm::vec2 directionalDepthRow(const DirectionalShadowCascade& fit, float casterTop,
                               const rhi::Conventions& conventions);
+
+// A directional tile's soft data: its light texel anchor and the depth row from the top of `casters` (the fit's near
+// depth without any); `worldToAtlas` is the tile's.
+DirectionalTileSoft directionalTileSoft(const DirectionalShadowCascade& fit, const glm::mat4& worldToAtlas,
+                                        const LightSpaceCasters& casters, const rhi::Conventions& conventions);
 
 } // namespace penumbra::shadows

@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/CubeMap.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <array>
 #include <cstdint>
@@ -40,10 +41,9 @@ float localShadowNearPlane(float range, float lightNearPlane, const LocalShadowS
 float texelSizeAtUnitDistance(const glm::mat4& projection, std::uint32_t tileSize);
 
 // What the Poisson and PCSS filters need of a perspective tile (LocalShadowUniforms::tileSoft and
-// StaticShadowUniforms::localSoft): its depth row (t22, t32 of clipToTexture x projection: perspectiveDistance), the
-// light's radius in texels at unit distance, the near plane.
-glm::vec4 perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSize, float sourceRadius, float nearPlane,
-                              const rhi::Conventions& conventions);
+// StaticShadowUniforms::localSoft).
+PerspectiveTileSoft perspectiveTileSoft(const glm::mat4& projection, std::uint32_t tileSize, float sourceRadius,
+                                        float nearPlane, const rhi::Conventions& conventions);
 
 // Normal bias per unit distance from the light plane: texel size x filter size x sqrt 2 (a texel's
 // diagonal is the worst case), times the light's normal bias.

@@ -2,6 +2,8 @@
 
 #include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shadows/LocalShadowUniforms.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <array>
 #include <cstddef>
@@ -24,7 +26,7 @@ struct alignas(16) StaticDirectionalLight {
     std::int32_t tile = -1; // its tile in the static directional atlas, -1: the light has no static map
     float strength = 0.0f; // the light's shadow strength
     float normalOffset = 0.0f; // the receiver-side normal offset in world units, 0 where the caster side takes it
-    std::int32_t shadowFilter = 0; // ShadowFilter
+    ShadowFilter shadowFilter = ShadowFilter::PCF2x2;
 };
 
 inline constexpr std::array kStaticDirectionalLightFields{
@@ -63,13 +65,10 @@ struct StaticShadowUniforms {
     std::array<LocalShadowTile, maxStaticLocalTiles> localTiles{}; // per spot and point tile
     float directionalAtlasSize = 0.0f; // texels on a side
     float localAtlasSize = 0.0f;
-    // Per directional tile, for the Poisson and PCSS filters: the light texel anchor (x, y) and the depth row (z, w),
-    // as DirectionalShadowUniforms::tileSoft.
-    alignas(16) std::array<glm::vec4, maxStaticDirectionalMaps> directionalSoft{};
+    // Per directional tile, for the Poisson and PCSS filters, as DirectionalShadowUniforms::tileSoft.
+    std::array<DirectionalTileSoft, maxStaticDirectionalMaps> directionalSoft{};
     std::array<StaticDirectionalSource, maxStaticDirectionalMaps> directionalSource{}; // per directional tile
-    // Per spot and point tile: the depth row (t22, t32), the light's radius in texels at unit distance, the near
-    // plane, as LocalShadowUniforms::tileSoft.
-    std::array<glm::vec4, maxStaticLocalTiles> localSoft{};
+    std::array<PerspectiveTileSoft, maxStaticLocalTiles> localSoft{}; // per spot and point tile
 };
 
 inline constexpr std::array kStaticShadowFields{
@@ -81,9 +80,9 @@ inline constexpr std::array kStaticShadowFields{
     PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, localTiles, kLocalShadowTileStruct),
     PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalAtlasSize),
     PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localAtlasSize),
-    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalSoft),
+    PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, directionalSoft, kDirectionalTileSoftStruct),
     PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, directionalSource, kStaticDirectionalSourceStruct),
-    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localSoft),
+    PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, localSoft, kPerspectiveTileSoftStruct),
 };
 // The block StaticShadows, read through the instance name `staticShadows`.
 inline constexpr shaders::ShaderStruct kStaticShadowBlock{"StaticShadows", sizeof(StaticShadowUniforms),
