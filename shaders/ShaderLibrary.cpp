@@ -24,13 +24,14 @@ std::string_view source(std::string_view fileName)
 
 rhi::ShaderSource load(std::string_view fileName)
 {
-    const bool vertex = fileName.ends_with(".vert");
-    if (!vertex && !fileName.ends_with(".frag"))
-        throw rhi::Error(fmt::format("shader '{}': the extension must be .vert or .frag", fileName));
-    rhi::ShaderSource shader{vertex ? rhi::ShaderStage::Vertex : rhi::ShaderStage::Fragment,
-                             std::string(source(fileName)),
-                             std::string(fileName),
-                             {}};
+    rhi::ShaderStage stage = rhi::ShaderStage::Vertex;
+    if (fileName.ends_with(".frag"))
+        stage = rhi::ShaderStage::Fragment;
+    else if (fileName.ends_with(".comp"))
+        stage = rhi::ShaderStage::Compute;
+    else if (!fileName.ends_with(".vert"))
+        throw rhi::Error(fmt::format("shader '{}': the extension must be .vert, .frag or .comp", fileName));
+    rhi::ShaderSource shader{stage, std::string(source(fileName)), std::string(fileName), {}};
     for (std::size_t i = 0; i < detail::embeddedCount; ++i)
         if (detail::embedded[i].first.ends_with(".glsl"))
             shader.includes.push_back(

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/render/AmbientLight.hpp"
+#include "penumbra/render/Environment.hpp"
 #include "penumbra/render/FramePass.hpp"
 #include "penumbra/render/GpuScene.hpp"
 #include "penumbra/render/LitUniforms.hpp"
@@ -27,6 +28,7 @@
 namespace penumbra::render {
 
 class DepthPrepass;
+class EnvironmentMaps;
 class FrameGraph;
 class LitPipelines;
 class LocalLightTextures;
@@ -48,7 +50,10 @@ struct FrameDesc {
     std::uint32_t width = 1280;
     std::uint32_t height = 720;
     shadows::ShadowSettings shadows;
+    // Lights surfaces without a direct light, and only without an environment.
     AmbientLight ambient;
+    // Image-based lighting; none by default (the ambient light instead). Prefiltered once per image (by pointer).
+    EnvironmentLight environment;
     bool cascadeView = false; // also render the lit image tinted by cascade index
     // Also render this light's raw shadow-map visibility (SceneRenderer::visibilityImage()): the filtered
     // shadow in red, green and blue (1 = lit) before strength and fades, and in alpha 1 where its shadow map
@@ -109,6 +114,9 @@ struct FrameStats {
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
     // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
+    // Where this frame prefiltered a new FrameDesc::environment image: the milliseconds it took (CPU and GPU, waited
+    // for), before the frame's own work.
+    std::optional<double> environmentPrefilterMs;
 
     // The GPU time of the pass of that name; nullopt where it did not run or the device has no timestamps.
     std::optional<double> passMs(std::string_view pass) const;
@@ -236,6 +244,7 @@ private:
     std::unique_ptr<DepthPrepass> receiverPrepass_;
     std::unique_ptr<ScreenSpaceShadowPass> screenSpace_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
+    std::unique_ptr<EnvironmentMaps> environment_; // FrameDesc::environment prefiltered
     std::unique_ptr<LocalLightTextures> localLights_; // every spot and point light and their cluster lists
     // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.
     std::unique_ptr<StaticTileCache> directionalStaticTiles_;
