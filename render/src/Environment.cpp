@@ -18,8 +18,8 @@ constexpr float kPi = 3.14159265358979f;
 constexpr std::array<float, 9> kBasisConstants{0.282095f, 0.488603f, 0.488603f, 0.488603f, 1.092548f,
                                                1.092548f, 0.315392f, 1.092548f, 0.546274f};
 // The clamped cosine's convolution per band (Ramamoorthi and Hanrahan 2001, equation 8), by coefficient.
-constexpr std::array<float, 9> kCosineBands{kPi,        2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4,
-                                            kPi / 4,    kPi / 4,     kPi / 4,     kPi / 4};
+constexpr std::array<float, 9> kCosineBands{kPi,     2 * kPi / 3, 2 * kPi / 3, 2 * kPi / 3, kPi / 4,
+                                            kPi / 4, kPi / 4,     kPi / 4,     kPi / 4};
 
 std::array<float, 9> polynomials(const glm::vec3& d)
 {
@@ -59,8 +59,8 @@ EnvironmentImage studioEnvironment(std::uint32_t width)
     const glm::vec3 fill{1.4f, 1.5f, 1.7f};
     for (std::uint32_t y = 0; y < image.height; ++y)
         for (std::uint32_t x = 0; x < image.width; ++x) {
-            const glm::vec3 d = equirectDirection((float(x) + 0.5f) / float(image.width),
-                                                  (float(y) + 0.5f) / float(image.height));
+            const glm::vec3 d =
+                equirectDirection((float(x) + 0.5f) / float(image.width), (float(y) + 0.5f) / float(image.height));
             const float up = std::max(d.y, 0.0f);
             // Smoothly from floor to horizon across the horizon, so no hard line shows in reflections.
             const float aboveFloor = std::clamp(d.y * 8.0f + 0.5f, 0.0f, 1.0f);
@@ -92,9 +92,8 @@ EnvironmentImage resampleEnvironment(const EnvironmentImage& image, std::uint32_
             const std::uint32_t y1 = std::min(y0 + 1, image.height - 1);
             const float tx = sx - fx;
             const float ty = sy - fy;
-            out.texels[std::size_t(y) * width + x] =
-                glm::mix(glm::mix(image.at(x0, y0), image.at(x1, y0), tx),
-                         glm::mix(image.at(x0, y1), image.at(x1, y1), tx), ty);
+            out.texels[std::size_t(y) * width + x] = glm::mix(glm::mix(image.at(x0, y0), image.at(x1, y0), tx),
+                                                              glm::mix(image.at(x0, y1), image.at(x1, y1), tx), ty);
         }
     return out;
 }
@@ -136,8 +135,7 @@ Sh9 projectSh9(const EnvironmentImage& image)
     for (std::uint32_t y = 0; y < image.height; ++y) {
         const float v = (float(y) + 0.5f) / float(image.height);
         // An equirectangular texel's solid angle: (2 pi / width) (pi / height) sin(theta).
-        const double solidAngle =
-            (2.0 * kPi / image.width) * (kPi / image.height) * std::sin(double(v) * kPi);
+        const double solidAngle = (2.0 * kPi / image.width) * (kPi / image.height) * std::sin(double(v) * kPi);
         for (std::uint32_t x = 0; x < image.width; ++x) {
             const std::array<float, 9> basis = sh9Basis(equirectDirection((float(x) + 0.5f) / float(image.width), v));
             const glm::dvec3 radiance = glm::dvec3(image.at(x, y)) * solidAngle;

@@ -58,9 +58,8 @@ EnvironmentMaps::EnvironmentMaps(rhi::Device& device) : device_(device)
 {
     blank_ = device.createTexture({.format = rhi::Format::RGBA16F, .debugName = "environment stand-in"});
     device.writeTexture(*blank_, 0, 0, halfTexels({glm::vec4(0.0f)}));
-    wrapSampler_ = device.createSampler({.mipFilter = rhi::MipFilter::Linear,
-                                         .addressU = rhi::AddressMode::Repeat,
-                                         .debugName = "environment"});
+    wrapSampler_ = device.createSampler(
+        {.mipFilter = rhi::MipFilter::Linear, .addressU = rhi::AddressMode::Repeat, .debugName = "environment"});
     clampSampler_ = device.createSampler({.debugName = "environment BRDF"});
 }
 
@@ -82,15 +81,14 @@ std::optional<double> EnvironmentMaps::use(const std::shared_ptr<const Environme
 void EnvironmentMaps::prefilter(const EnvironmentImage& image)
 {
     validate(image, "image");
-    const EnvironmentImage resampled =
-        image.width == kEnvironmentWidth && image.height == kEnvironmentHeight
-            ? image
-            : resampleEnvironment(image, kEnvironmentWidth, kEnvironmentHeight);
+    const EnvironmentImage resampled = image.width == kEnvironmentWidth && image.height == kEnvironmentHeight
+                                           ? image
+                                           : resampleEnvironment(image, kEnvironmentWidth, kEnvironmentHeight);
     diffuse_ = diffuseShaderCoefficients(projectSh9(resampled));
     if (!pipeline_) {
         auto shader = device_.createShader(
-            shaders::load("environment_prefilter.comp", {{"ENVIRONMENT_LEVELS", kEnvironmentLevels},
-                                                         {"ENVIRONMENT_SAMPLES", kEnvironmentSamples}}));
+            shaders::load("environment_prefilter.comp",
+                          {{"ENVIRONMENT_LEVELS", kEnvironmentLevels}, {"ENVIRONMENT_SAMPLES", kEnvironmentSamples}}));
         pipeline_ = device_.createComputePipeline({.compute = shader.get(), .debugName = "environment prefilter"});
         brdf_ = device_.createTexture({.width = kBrdfTableSize,
                                        .height = kBrdfTableSize,
@@ -123,7 +121,8 @@ void EnvironmentMaps::prefilter(const EnvironmentImage& image)
         commands->bindStorageTexture(1, *specular_, m);
         const std::uint32_t width = kEnvironmentWidth >> m;
         const std::uint32_t height = kEnvironmentHeight >> m;
-        commands->dispatch((width + kWorkgroupSize - 1) / kWorkgroupSize, (height + kWorkgroupSize - 1) / kWorkgroupSize);
+        commands->dispatch((width + kWorkgroupSize - 1) / kWorkgroupSize,
+                           (height + kWorkgroupSize - 1) / kWorkgroupSize);
     }
     commands->popLabel();
     device_.submit(*commands);

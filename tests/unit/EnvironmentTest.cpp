@@ -118,7 +118,8 @@ TEST(Environment, ValidationNamesTheSourceAndTexel)
 
 TEST(Environment, ReadsRadianceHdrAndNamesAMissingFile)
 {
-    // Radiance RGBE (Ward 1991, "Real Pixels", Graphics Gems II): flat scanlines, value = mantissa x 2^(exponent - 136).
+    // Radiance RGBE (Ward 1991, "Real Pixels", Graphics Gems II): flat scanlines, value = mantissa x 2^(exponent -
+    // 136).
     const std::filesystem::path path = std::filesystem::temp_directory_path() / "penumbra-environment-test.hdr";
     {
         std::ofstream out(path, std::ios::binary);

@@ -58,8 +58,8 @@ std::array<float, 9> sh9Basis(const glm::vec3& direction);
 // The radiance's projection onto the basis: the integral of L(w) Y_i(w) over the sphere, summed per texel with its
 // solid angle.
 Sh9 projectSh9(const EnvironmentImage& image);
-// The irradiance at normal n from projected radiance (Ramamoorthi and Hanrahan 2001, equations 7 and 8: band l scaled by
-// A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4).
+// The irradiance at normal n from projected radiance (Ramamoorthi and Hanrahan 2001, equations 7 and 8: band l scaled
+// by A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4).
 glm::vec3 irradianceSh9(const Sh9& radiance, const glm::vec3& n);
 // The coefficients the lit shader evaluates: radiance projected, times each band's A_l / pi and each basis function's
 // constant, so that the Lambertian radiance per unit albedo at n is c0 + c1 y + c2 z + c3 x + c4 xy + c5 yz
