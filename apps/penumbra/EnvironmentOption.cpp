@@ -46,12 +46,12 @@ std::shared_ptr<const render::EnvironmentImage> cachedImage(const std::string& s
 
 } // namespace
 
-render::EnvironmentLight environmentOf(const std::string& source, bool gltf, float intensity, float rotationDegrees,
-                                       const std::string& what)
+render::EnvironmentLight environmentOf(const std::string& source, bool autoStudio, float intensity,
+                                       float rotationDegrees, const std::string& what)
 {
     render::EnvironmentLight environment{nullptr, intensity, rotationDegrees};
     render::validate(environment);
-    if (source == "none" || (source == "auto" && !gltf))
+    if (source == "none" || (source == "auto" && !autoStudio))
         return environment;
     environment.image = cachedImage(source == "auto" ? "default" : source, what);
     return environment;

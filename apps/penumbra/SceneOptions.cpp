@@ -166,8 +166,8 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
     command
         .add_option("--environment", options.environment,
                     fmt::format("Image-based lighting: {} (an equirectangular .hdr or .exr file; default: the built-in "
-                                "studio environment; none: the ambient light instead; auto: default for a glTF file, "
-                                "none for a built-in scene); default auto",
+                                "studio environment; none: the ambient light instead; auto: default for a glTF file "
+                                "without --ambient, none for a built-in scene); default auto",
                                 kEnvironmentSyntax))
         ->check(CLI::Validator(
             [](std::string& s) {
@@ -446,6 +446,7 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
         throw rhi::Error(fmt::format("--size '{}' is not WIDTHxHEIGHT", options.size));
     render::FrameDesc frame;
     EnvironmentSetting environment;
+    bool ambientGiven = !options.ambient.empty();
     frame.width = size->width;
     frame.height = size->height;
     frame.depthPrepass = options.prepass == "on";
@@ -456,6 +457,7 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
         RenderSettings settings = loadRenderSettings(options.settings);
         frame.shadows = settings.shadows;
         frame.ambient = settings.ambient.value_or(frame.ambient);
+        ambientGiven = settings.ambient.has_value();
         environment = settings.environment.value_or(environment);
         frame.maxAnisotropy = settings.anisotropy.value_or(frame.maxAnisotropy);
         frame.msaa = settings.msaa.value_or(frame.msaa);
@@ -473,7 +475,8 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
     environment.intensity = options.environmentIntensity.value_or(environment.intensity);
     environment.rotation = options.environmentRotation.value_or(environment.rotation);
     frame.environment =
-        environmentOf(environment.source, isGltfPath(options.scene), environment.intensity, environment.rotation,
+        environmentOf(environment.source, isGltfPath(options.scene) && !ambientGiven, environment.intensity,
+                      environment.rotation,
                       environmentFlag ? "--environment" : fmt::format("{}: environment.source", options.settings));
     applySettingsFieldValues(frame.shadows, options.settingsFields);
     applyBake(options, frame.shadows);
@@ -515,6 +518,9 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
             fmt::print("{} {} {:.2f} ms", i == 0 ? "; GPU:" : ",", s.passes[i].name, *s.passes[i].gpuMs);
     fmt::print("\n");
     printLocalShadowCache(s);
+    if (s.environmentPrefilterMs)
+        fmt::print("  environment prefiltered in {:.1f} ms (CPU and GPU, once per environment)\n",
+                   *s.environmentPrefilterMs);
     if (!pictures.texelsPerMetre.empty()) {
         fmt::print("  directional shadow texels per metre at view depth");
         for (std::size_t i = 0; i < pictures.texelsPerMetre.size(); ++i)

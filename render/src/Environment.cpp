@@ -51,12 +51,13 @@ EnvironmentImage studioEnvironment(std::uint32_t width)
     EnvironmentImage image{width, width / 2, {}};
     image.texels.resize(std::size_t(image.width) * image.height);
     // A neutral grey sky brighter overhead, a dark floor, and two soft panels; colours stay near white so that the
-    // environment does not tint materials.
-    const glm::vec3 zenith{0.55f, 0.58f, 0.62f};
-    const glm::vec3 horizon{0.42f, 0.42f, 0.42f};
-    const glm::vec3 floor{0.12f, 0.115f, 0.11f};
-    const glm::vec3 key{5.0f, 4.8f, 4.5f};
-    const glm::vec3 fill{1.4f, 1.5f, 1.7f};
+    // environment does not tint materials. Dim enough beside a sun of intensity 3 that its shadows keep their
+    // contrast: an upward white surface receives about a quarter of white from the studio.
+    const glm::vec3 zenith{0.18f, 0.19f, 0.2f};
+    const glm::vec3 horizon{0.14f, 0.14f, 0.14f};
+    const glm::vec3 floor{0.04f, 0.038f, 0.036f};
+    const glm::vec3 key{1.7f, 1.6f, 1.5f};
+    const glm::vec3 fill{0.47f, 0.5f, 0.57f};
     for (std::uint32_t y = 0; y < image.height; ++y)
         for (std::uint32_t x = 0; x < image.width; ++x) {
             const glm::vec3 d =
