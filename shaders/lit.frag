@@ -1,4 +1,5 @@
 #version 450
+// Image-based lighting from the frame's environment (environment_light.glsl), or an ambient hemisphere without one, then
 // Lambert diffuse plus GGX specular for up to 8 directional lights (4 with shadows), each attenuated by its
 // cascaded shadow, and every spot and point light whose cluster list holds the fragment's cluster, with their atlas
 // shadows; clip materials are cut
@@ -16,6 +17,7 @@
 #include "directional_light_shadow.glsl"
 #include "material.glsl"
 #include "collected_shadows.glsl"
+#include "environment_light.glsl"
 
 layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
@@ -198,9 +200,11 @@ void main()
     const float metallic = object.surface.x * metalRough.b;
     const float roughness = max(object.surface.y * metalRough.g, MIN_ROUGHNESS);
     const float occlusion = 1.0 + object.emissive.w * (sampleMap(occlusionMap, PENUMBRA_TEXTURE_OCCLUSION).r - 1.0);
-    // A sky/ground hemisphere: the ambient colour from above, the ground colour from below.
+    // The environment's diffuse and specular light, which shadows do not darken; without one, a sky/ground
+    // hemisphere: the ambient colour from above, the ground colour from below.
     const vec3 ambient = mix(frame.ambientGround.rgb, frame.ambient.rgb, 0.5 + 0.5 * n.y);
-    vec3 color = ambient * base * occlusion;
+    vec3 color = hasEnvironment() ? environmentLight(n, v, base, metallic, roughness, occlusion)
+                                  : ambient * base * occlusion;
 #if PENUMBRA_SCREEN_SPACE_SHADOWS
     const vec4 collected = collectedShadows();
 #endif

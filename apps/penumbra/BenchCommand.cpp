@@ -139,8 +139,9 @@ void addBenchCommand(CLI::App& app)
                      "several counts, comma-separated, measure each in turn")
         ->check(CLI::Range(0u, 1000000u))
         ->delimiter(',');
-    for (const char* name : {"--lights", "--camera", "--light", "--ambient", "--settings", "--size", "--prepass",
-                             "--instancing", "--msaa", "--shadow-path"})
+    for (const char* name :
+         {"--lights", "--camera", "--light", "--ambient", "--environment", "--environment-intensity",
+          "--environment-rotation", "--settings", "--size", "--prepass", "--instancing", "--msaa", "--shadow-path"})
         bench->get_option(name)->needs(sceneOption);
     bench
         ->add_option("-b,--backend", scene->backends,

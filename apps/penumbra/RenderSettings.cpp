@@ -26,6 +26,35 @@ glm::vec3 colorOf(const Json& value, const std::string& source, const char* fiel
     return {value[0].get<float>(), value[1].get<float>(), value[2].get<float>()};
 }
 
+EnvironmentSetting environmentOf(const Json& object, const std::string& source)
+{
+    if (!object.is_object())
+        throw rhi::Error(fmt::format("{}: environment: {} is not an object, allowed fields source, intensity, rotation",
+                                     source, object.dump()));
+    EnvironmentSetting environment;
+    for (const auto& [key, value] : object.items()) {
+        if (key == "source") {
+            if (!value.is_string())
+                throw rhi::Error(fmt::format("{}: environment.source: {} is not a string (a .hdr or .exr file, "
+                                             "default, none or auto)",
+                                             source, value.dump()));
+            environment.source = value.get<std::string>();
+        } else if (key == "intensity" || key == "rotation") {
+            const bool intensity = key == "intensity";
+            const float low = intensity ? 0.0f : -360.0f;
+            const float high = intensity ? render::kMaxEnvironmentIntensity : 360.0f;
+            if (!value.is_number() || value.get<float>() < low || value.get<float>() > high)
+                throw rhi::Error(fmt::format("{}: environment.{}: {} is not a number from {} to {}", source, key,
+                                             value.dump(), low, high));
+            (intensity ? environment.intensity : environment.rotation) = value.get<float>();
+        } else {
+            throw rhi::Error(
+                fmt::format("{}: environment.{}: unknown field, allowed source, intensity, rotation", source, key));
+        }
+    }
+    return environment;
+}
+
 render::AmbientLight ambientOf(const Json& object, const std::string& source)
 {
     if (!object.is_object())
@@ -104,14 +133,18 @@ RenderSettings loadRenderSettings(const std::filesystem::path& path)
     // The ambient object is this tool's; the rest is the shadow settings' JSON, whose parser names its own errors
     // (bad JSON included).
     Json root = Json::parse(text.str(), nullptr, false);
-    if (!root.is_object() || (!root.contains("ambient") && !root.contains("anisotropy") && !root.contains("msaa") &&
-                              !root.contains("shadowPath"))) {
+    if (!root.is_object() || (!root.contains("ambient") && !root.contains("environment") &&
+                              !root.contains("anisotropy") && !root.contains("msaa") && !root.contains("shadowPath"))) {
         settings.shadows = shadows::parseShadowSettings(text.str(), source);
         return settings;
     }
     if (root.contains("ambient")) {
         settings.ambient = ambientOf(root["ambient"], source);
         root.erase("ambient");
+    }
+    if (root.contains("environment")) {
+        settings.environment = environmentOf(root["environment"], source);
+        root.erase("environment");
     }
     if (root.contains("anisotropy")) {
         settings.anisotropy = anisotropyOf(root["anisotropy"], source);

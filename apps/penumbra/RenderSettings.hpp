@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace penumbra::apps {
@@ -17,9 +18,18 @@ namespace penumbra::apps {
 // kMaxAnisotropyOption (render::FrameDesc::maxAnisotropy), an optional top-level "msaa" sample count, 1, 2, 4
 // or 8 (render::FrameDesc::msaa), and an optional top-level "shadowPath", one of kShadowPathNames
 // (render::FrameDesc::shadowPath).
+// The settings' optional top-level "environment" object: {"source": kEnvironmentSyntax, "intensity": i, "rotation":
+// degrees}, each field optional (render::EnvironmentLight; a relative file is read from the working directory).
+struct EnvironmentSetting {
+    std::string source = "auto";
+    float intensity = 1.0f;
+    float rotation = 0.0f;
+};
+
 struct RenderSettings {
     shadows::ShadowSettings shadows;
     std::optional<render::AmbientLight> ambient;
+    std::optional<EnvironmentSetting> environment;
     std::optional<float> anisotropy;
     std::optional<std::uint32_t> msaa;
     std::optional<render::ShadowPath> shadowPath;

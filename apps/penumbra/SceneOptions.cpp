@@ -1,6 +1,7 @@
 #include "SceneOptions.hpp"
 
 #include "CommandLineSpecs.hpp"
+#include "EnvironmentOption.hpp"
 #include "LightOption.hpp"
 #include "LightOverrides.hpp"
 #include "RenderSettings.hpp"
@@ -164,6 +165,28 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                                                            s, kAmbientSyntax, render::kMaxAmbientIntensity);
             },
             "AMBIENT"));
+    command
+        .add_option("--environment", options.environment,
+                    fmt::format("Image-based lighting: {} (an equirectangular .hdr or .exr file; default: the built-in "
+                                "studio environment; none: the ambient light instead; auto: default for a glTF file "
+                                "without --ambient, none for a built-in scene); default auto",
+                                kEnvironmentSyntax))
+        ->check(CLI::Validator(
+            [](std::string& s) {
+                const std::string extension = std::filesystem::path(s).extension().string();
+                return s == "default" || s == "none" || s == "auto" || extension == ".hdr" || extension == ".exr"
+                           ? std::string()
+                           : fmt::format("'{}' is not {}", s, kEnvironmentSyntax);
+            },
+            "ENVIRONMENT"));
+    command
+        .add_option("--environment-intensity", options.environmentIntensity,
+                    "Multiplier of the environment's radiance; default 1")
+        ->check(CLI::Range(0.0f, render::kMaxEnvironmentIntensity));
+    command
+        .add_option("--environment-rotation", options.environmentRotation,
+                    "Turns the environment about +y by this many degrees; default 0")
+        ->check(CLI::Range(-360.0f, 360.0f));
     command
         .add_option("--anisotropy", options.anisotropy,
                     fmt::format("Most anisotropic filtering of textures, 1 (off) to {}; more than the device allows is "
@@ -441,6 +464,8 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
     if (!size)
         throw rhi::Error(fmt::format("--size '{}' is not WIDTHxHEIGHT", options.size));
     render::FrameDesc frame;
+    EnvironmentSetting environment;
+    bool ambientGiven = !options.ambient.empty();
     frame.width = size->width;
     frame.height = size->height;
     frame.depthPrepass = options.prepass == "on";
@@ -451,6 +476,8 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
         RenderSettings settings = loadRenderSettings(options.settings);
         frame.shadows = settings.shadows;
         frame.ambient = settings.ambient.value_or(frame.ambient);
+        ambientGiven = settings.ambient.has_value();
+        environment = settings.environment.value_or(environment);
         frame.maxAnisotropy = settings.anisotropy.value_or(frame.maxAnisotropy);
         frame.msaa = settings.msaa.value_or(frame.msaa);
         frame.shadowPath = settings.shadowPath.value_or(frame.shadowPath);
@@ -461,6 +488,15 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
         frame.ambient = parseAmbientOption(options.ambient).value();
     frame.maxAnisotropy = options.anisotropy.value_or(frame.maxAnisotropy);
     frame.msaa = options.msaa.value_or(frame.msaa);
+    const bool environmentFlag = !options.environment.empty();
+    if (environmentFlag)
+        environment.source = options.environment;
+    environment.intensity = options.environmentIntensity.value_or(environment.intensity);
+    environment.rotation = options.environmentRotation.value_or(environment.rotation);
+    frame.environment =
+        environmentOf(environment.source, isGltfPath(options.scene) && !ambientGiven, environment.intensity,
+                      environment.rotation,
+                      environmentFlag ? "--environment" : fmt::format("{}: environment.source", options.settings));
     applySettingsFieldValues(frame.shadows, options.settingsFields);
     applyBake(options, frame.shadows);
     return frame;
@@ -505,6 +541,9 @@ void printStats(const ShadowPictures& pictures, const scene::Scene& scene)
             fmt::print("{} {} {:.2f} ms", i == 0 ? "; GPU:" : ",", s.passes[i].name, *s.passes[i].gpuMs);
     fmt::print("\n");
     printLocalShadowCache(s);
+    if (s.environmentPrefilterMs)
+        fmt::print("  environment prefiltered in {:.1f} ms (CPU and GPU, once per environment)\n",
+                   *s.environmentPrefilterMs);
     if (!pictures.texelsPerMetre.empty()) {
         fmt::print("  directional shadow texels per metre at view depth");
         for (std::size_t i = 0; i < pictures.texelsPerMetre.size(); ++i)

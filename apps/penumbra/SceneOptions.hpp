@@ -16,7 +16,7 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --lights, --camera, --light,
-// --default-lights, --missing-textures, --ambient,
+// --default-lights, --missing-textures, --ambient, --environment, --environment-intensity, --environment-rotation,
 // --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
 // --light-size, --dynamic, --light-static-map, --baked, --time, --animation, and the shadow settings fields' own
 // options (addSettingsFieldOptions: --projection, --static-maps, --realtime-casters).
@@ -29,6 +29,10 @@ struct SceneOptions {
     std::string defaultLights = "auto";
     std::string missingTextures = "fail"; // a glTF texture whose image cannot be read: "fail" or "stand-in"
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
+    // kEnvironmentSyntax, its intensity and rotation in degrees; empty: the settings file's, or auto, 1 and 0.
+    std::string environment;
+    std::optional<float> environmentIntensity;
+    std::optional<float> environmentRotation;
     std::optional<float> anisotropy; // empty: the settings file's, or FrameDesc's default
     std::string normalBiasSide; // "receiver" or "caster" for every light; empty: each light's own
     std::string settings;

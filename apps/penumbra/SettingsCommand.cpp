@@ -1,6 +1,7 @@
 // penumbra settings: the default settings file, or with --markdown the settings reference (docs/settings.md), both
 // printed from the code's own declarations so that the reference cannot drift from what the parsers accept.
 #include "Commands.hpp"
+#include "EnvironmentOption.hpp"
 #include "RenderSettings.hpp"
 
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
@@ -34,6 +35,14 @@ void printMarkdown()
                render::kMaxAmbientIntensity);
     fmt::print("| `ambient.ground` | none | 3 numbers, each at least 0 | linear colour from below: a sky/ground "
                "hemisphere |\n");
+    const EnvironmentSetting environment;
+    fmt::print("| `environment.source` | `{}` | {} | image-based lighting (docs/lighting.md): an equirectangular file, "
+               "the built-in studio, none (the ambient light instead), or auto (the studio for glTF files) |\n",
+               environment.source, kEnvironmentSyntax);
+    fmt::print("| `environment.intensity` | `{}` | 0..{} | the environment's multiplier |\n", environment.intensity,
+               render::kMaxEnvironmentIntensity);
+    fmt::print("| `environment.rotation` | `{}` | -360..360 | degrees the environment turns about +y |\n",
+               environment.rotation);
     fmt::print("| `anisotropy` | `{}` | 1 (off)..{} | most anisotropic filtering of textures, lowered to the "
                "device's limit |\n",
                frame.maxAnisotropy, kMaxAnisotropyOption);

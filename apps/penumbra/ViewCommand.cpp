@@ -1,6 +1,7 @@
 #include "ViewCommand.hpp"
 
 #include "BackendOptions.hpp"
+#include "EnvironmentOption.hpp"
 #include "Commands.hpp"
 #include "RenderSettings.hpp"
 #include "SceneOptions.hpp"
@@ -10,6 +11,7 @@
 #include "penumbra/shadows/ShadowSettings.hpp"
 
 #include <charconv>
+#include <filesystem>
 #include <fmt/format.h>
 #include <memory>
 
@@ -87,7 +89,23 @@ void addViewCommand(CLI::App& app)
             "Static shadow maps from this `penumbra bake` folder; the viewer stops with the bake's message when "
             "the scene, a light or the static settings no longer match it")
         ->check(CLI::ExistingDirectory);
-    view->callback([options] { viewer::runViewer(*options); });
+    auto environment = std::make_shared<EnvironmentSetting>();
+    view->add_option("--environment", environment->source,
+                     fmt::format("Image-based lighting: {} (as render's --environment); default auto",
+                                 kEnvironmentSyntax));
+    view->add_option("--environment-intensity", environment->intensity, "Multiplier of the environment's radiance")
+        ->check(CLI::Range(0.0f, render::kMaxEnvironmentIntensity))
+        ->capture_default_str();
+    view->add_option("--environment-rotation", environment->rotation,
+                     "Turns the environment about +y by this many degrees")
+        ->check(CLI::Range(-360.0f, 360.0f))
+        ->capture_default_str();
+    view->callback([options, environment] {
+        const std::string extension = std::filesystem::path(options->scene).extension().string();
+        options->environment = environmentOf(environment->source, extension == ".gltf" || extension == ".glb",
+                                             environment->intensity, environment->rotation, "--environment");
+        viewer::runViewer(*options);
+    });
 }
 
 } // namespace penumbra::apps

@@ -421,6 +421,10 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     changed |= ImGui::SliderFloat("texture anisotropy", &state.maxAnisotropy, 1.0f, 16.0f, "%.0f");
     changed |= msaaChoice(state.msaa, status.msaaCounts);
     changed |= shadowPathChoice(state.shadowPath);
+    if (state.hasEnvironment) {
+        changed |= ImGui::SliderFloat("environment intensity", &state.environmentIntensity, 0.0f, 4.0f, "%.2f");
+        changed |= ImGui::SliderFloat("environment rotation", &state.environmentRotation, -180.0f, 180.0f, "%.0f deg");
+    }
     if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
         changed |= shadowSettings(state.shadows);
         if (anyOnDemand(state) && ImGui::Button("redraw static maps")) {

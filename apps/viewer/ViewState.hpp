@@ -35,6 +35,9 @@ struct ViewState {
     float maxAnisotropy = 8.0f; // render::FrameDesc::maxAnisotropy
     std::uint32_t msaa = 1; // render::FrameDesc::msaa
     render::ShadowPath shadowPath = render::ShadowPath::Forward; // render::FrameDesc::shadowPath
+    float environmentIntensity = 1.0f; // render::EnvironmentLight::intensity
+    float environmentRotation = 0.0f; // render::EnvironmentLight::rotationDegrees
+    bool hasEnvironment = false; // the view has an environment image: the panel shows its sliders
     bool redrawStaticMaps = false; // once: SceneRenderer::requestStaticShadowUpdate (the on-demand mode's button)
 };
 

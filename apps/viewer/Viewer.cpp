@@ -82,6 +82,10 @@ public:
         }
         applied_.msaa = options.msaa;
         applied_.shadowPath = options.shadowPath;
+        applied_.environmentIntensity = options.environment.intensity;
+        applied_.environmentRotation = options.environment.rotationDegrees;
+        applied_.hasEnvironment = options.environment.image != nullptr;
+        environment_ = options.environment.image;
         const std::array litTargets{render::kLitColorFormat, render::kLitDepthFormat};
         status_.msaaCounts = device_->capabilities().sampleCounts(litTargets);
         edited_ = applied_;
@@ -175,6 +179,7 @@ private:
         frame.maxAnisotropy = applied_.maxAnisotropy;
         frame.msaa = applied_.msaa;
         frame.shadowPath = applied_.shadowPath;
+        frame.environment = {environment_, applied_.environmentIntensity, applied_.environmentRotation};
         if (applied_.redrawStaticMaps)
             renderer_.requestStaticShadowUpdate();
         applied_.redrawStaticMaps = edited_.redrawStaticMaps = false;
@@ -209,6 +214,7 @@ private:
     WindowInput input_;
     AnimationPlayer animation_;
     std::vector<std::string> loaderNotes_;
+    std::shared_ptr<const render::EnvironmentImage> environment_; // ViewerOptions::environment.image
     scene::Scene scene_;
     glm::vec3 sceneCenter_{0.0f}; // the scene's bounding sphere, which F frames and the fly speed follows
     float sceneRadius_ = 1.0f;

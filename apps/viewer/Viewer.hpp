@@ -29,6 +29,9 @@ struct ViewerOptions {
     std::optional<float> lightSize; // every light's source size
     // Shadow settings fields by path, from their options (penumbra view --projection close), over the defaults.
     std::map<std::string, std::string, std::less<>> settingsFields;
+    // Image-based lighting (penumbra view --environment): the image, and the intensity and rotation the panel starts
+    // from and edits.
+    render::EnvironmentLight environment;
     std::string baked; // a `penumbra bake` folder: static maps from it (static.update onChange); empty: none
 };
 

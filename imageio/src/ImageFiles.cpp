@@ -105,6 +105,45 @@ rhi::Image readPng(const std::filesystem::path& path)
     return image;
 }
 
+FloatImage readHdr(const std::filesystem::path& path)
+{
+    if (!stbi_is_hdr(path.c_str()))
+        throw rhi::Error(fmt::format("{}: not a Radiance RGBE (.hdr) picture{}", path.string(),
+                                     std::filesystem::exists(path) ? "" : " (no such file)"));
+    int width = 0, height = 0, channels = 0;
+    const std::unique_ptr<float, void (*)(void*)> values(stbi_loadf(path.c_str(), &width, &height, &channels, 3),
+                                                         stbi_image_free);
+    if (!values)
+        throw rhi::Error(fmt::format("{}: cannot read the HDR: {}", path.string(), stbi_failure_reason()));
+    FloatImage image{std::uint32_t(width), std::uint32_t(height), {"R", "G", "B"}, {}};
+    image.values.assign(values.get(), values.get() + std::size_t(width) * std::size_t(height) * 3);
+    return image;
+}
+
+FloatImage readExrColor(const std::filesystem::path& path)
+{
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imath::Box2i window = file.header().dataWindow();
+        FloatImage image{std::uint32_t(window.max.x - window.min.x + 1),
+                         std::uint32_t(window.max.y - window.min.y + 1),
+                         {"R", "G", "B"},
+                         {}};
+        for (const std::string& name : image.channels)
+            if (!file.header().channels().findChannel(name))
+                throw rhi::Error(fmt::format("{}: the EXR has no channel '{}'; an environment needs R, G and B",
+                                             path.string(), name));
+        image.values.resize(std::size_t(image.width) * image.height * 3);
+        file.setFrameBuffer(frameBuffer(image, image.values.data(), window.min.x, window.min.y));
+        file.readPixels(window.min.y, window.max.y);
+        return image;
+    } catch (const rhi::Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw rhi::Error(fmt::format("{}: cannot read the EXR: {}", path.string(), e.what()));
+    }
+}
+
 void writePngFile(const std::filesystem::path& path, const rhi::Image& image)
 {
     writeEncoded(path, [&] { return encodePng(image); });

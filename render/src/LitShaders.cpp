@@ -53,6 +53,9 @@ std::string litConstants(const LitShaderFeatures& features)
     text += fmt::format("#define PENUMBRA_BINDING_LOCAL_LIGHTS {}\n#define PENUMBRA_BINDING_LIGHT_CLUSTERS {}\n"
                         "#define PENUMBRA_BINDING_LIGHT_INDICES {}\n",
                         kLitLocalLightsBinding, kLitLightClustersBinding, kLitLightIndicesBinding);
+    text +=
+        fmt::format("#define PENUMBRA_BINDING_ENVIRONMENT_SPECULAR {}\n#define PENUMBRA_BINDING_ENVIRONMENT_BRDF {}\n",
+                    kLitEnvironmentSpecularBinding, kLitEnvironmentBrdfBinding);
     text += fmt::format("#define PENUMBRA_LIGHT_SPOT {}\n#define PENUMBRA_LIGHT_POINT {}\n",
                         static_cast<int>(scene::LightKind::Spot), static_cast<int>(scene::LightKind::Point));
     text += fmt::format("#define PENUMBRA_DEPTH_PREPASSED {}\n", features.depthPrepassed ? 1 : 0);

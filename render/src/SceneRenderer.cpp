@@ -2,6 +2,7 @@
 
 #include "FrameChecks.hpp"
 #include "FrameNotes.hpp"
+#include "EnvironmentMaps.hpp"
 #include "LocalLightTextures.hpp"
 #include "ShadowInputs.hpp"
 #include "TextureSampling.hpp"
@@ -34,6 +35,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <glm/trigonometric.hpp>
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
@@ -102,6 +104,7 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, 1)),
       depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
       staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
+      environment_(std::make_unique<EnvironmentMaps>(device)),
       localLights_(std::make_unique<LocalLightTextures>(device)),
       directionalStaticTiles_(
           std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "directional atlas, static casters")),
@@ -233,6 +236,13 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     }
     u.ambient = glm::vec4(frame.ambient.sky(), 0.0f);
     u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);
+    if (environment_->present()) {
+        const float turn = glm::radians(frame.environment.rotationDegrees);
+        u.environment =
+            glm::vec4(std::cos(turn), std::sin(turn), float(kEnvironmentLevels - 1), frame.environment.intensity);
+        for (std::size_t i = 0; i < u.environmentSh.size(); ++i)
+            u.environmentSh[i] = glm::vec4(environment_->diffuse()[i], 0.0f);
+    }
     u.directionalLightCount = static_cast<int>(count);
     u.litView = static_cast<int>(LitView::Lit);
     const scene::Scene& scene = gpuScene_.scene();
@@ -376,6 +386,7 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
                                     kLitClusterGrid);
     localLights_->update(localLightTexels(gpuScene_.scene(), localPlan_, staticShadows_->plan()), clusters);
     state.localLights = localLights_.get();
+    state.environment = environment_.get();
     state.litFrameUniforms = frameUniforms(camera, frame, clusters.grid);
     state.litFrame = uniforms_.push(state.litFrameUniforms);
     if (frame.visibilityOf)
@@ -525,11 +536,14 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     const auto start = std::chrono::steady_clock::now();
     shadows::validate(frame.shadows);
     validate(frame.ambient);
+    validate(frame.environment);
     checkPlansFitFrame(plans, frame.shadows);
     checkMsaa(frame, device_.capabilities());
     checkShadowPath(frame);
     prepareTargets(frame, plans);
+    const std::optional<double> prefilterMs = environment_->use(frame.environment.image);
     FrameStats stats = prepareFrame(camera, frame, plans);
+    stats.environmentPrefilterMs = prefilterMs;
     state_->stats = &stats;
     buildGraph(frame);
     graph_->compile();

@@ -320,6 +320,29 @@ TEST_F(GltfMaterialsTest, OcclusionTextureDarkensTheAmbientTermOnly)
     keep({{"full", &fullImage}, {"half", &halfImage}, {"sunlit", &sunlitImage}});
 }
 
+TEST_F(GltfMaterialsTest, OcclusionTextureDarkensTheEnvironmentsDiffuseAndSpecular)
+{
+    // The occlusion quad of the test above in a uniform environment: occlusion 0 takes the diffuse and, through the
+    // specular occlusion term (Lagarde 2014, section 4.10), the specular away; the open half keeps both.
+    GltfBuilder b;
+    b.add("materials", {{"pbrMetallicRoughness", {{"metallicFactor", 0.0}}},
+                        {"occlusionTexture", {{"index", halves(b, {255, 0, 0, 255}, {0, 0, 0, 255})}}}});
+    b.addRoot(b.add("nodes", {{"mesh", addQuadMesh(b, "quad", 0)}}));
+    const scene::Scene scene = load(b, {0, 0, -1}, 0.0f);
+    auto uniform = std::make_shared<render::EnvironmentImage>();
+    uniform->width = 64;
+    uniform->height = 32;
+    uniform->texels.assign(64 * 32, glm::vec3(0.4f));
+    render::FrameDesc frame;
+    frame.width = kWidth;
+    frame.height = kHeight;
+    frame.environment.image = uniform;
+    const rhi::Image image = renderLit(*device, scene, frame);
+    EXPECT_GT(luma(image, scene, kLeft), 120.0f) << "the environment does not light the open half";
+    EXPECT_LT(luma(image, scene, kRight), 2.0f) << "occlusion 0 leaves environment light";
+    keep({{"environment", &image}});
+}
+
 TEST_F(GltfMaterialsTest, HemisphereAmbientLightsFromTheSkyAboveAndTheGroundBelow)
 {
     // No light; quads tilted 60 degrees towards the sky and towards the ground (n.y = +-0.87: 93 % of one colour).

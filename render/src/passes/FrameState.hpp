@@ -14,6 +14,7 @@
 
 namespace penumbra::render {
 
+class EnvironmentMaps;
 class LocalLightTextures;
 class StaticShadowCache;
 
@@ -56,6 +57,7 @@ struct FrameState {
     std::span<const LitDraw> litDraws;
     ShadowMapBindings shadowMaps;
     const rhi::BindingSet* shadowMapSet = nullptr; // shadowMaps' set, bound once by each pass that reads them
+    const EnvironmentMaps* environment = nullptr; // the lit pass's image-based lighting textures
     const LocalLightTextures* localLights = nullptr; // the lit pass's and its views' spot and point lights
     SplitTiles staticTiles; // empty unless the realtime atlases draw dynamic casters only
     bool screenSpace = false; // directional shadows collected in screen space

@@ -1,5 +1,6 @@
 #include "LitPasses.hpp"
 
+#include "../EnvironmentMaps.hpp"
 #include "../LocalLightTextures.hpp"
 #include "LitPipelines.hpp"
 #include "ScreenSpaceShadowPass.hpp"
@@ -43,6 +44,7 @@ std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer&
             commands.bindPipeline(*pipeline);
             rhi::bindUniform(commands, kLitFrameBinding, frameSlice);
             state.localLights->bind(commands);
+            state.environment->bind(commands);
             if (features.directionalShadows != DirectionalShadowSource::Forward)
                 commands.bindTexture(kLitScreenSpaceShadowsBinding, collection->shadows(), collection->sampler());
             // Only where the lit pass does not draw into it: multisampled, the single-sampled depth is no attachment.

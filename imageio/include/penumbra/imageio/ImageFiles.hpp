@@ -43,6 +43,11 @@ std::string encodeExr(const FloatImage& image);
 // Every channel of a one-part scanline EXR, in the file's order (OpenEXR sorts names); channels other than 32-bit
 // float are refused, since only Penumbra's own depth and picture files are read.
 FloatImage readExr(const std::filesystem::path& path);
+// A Radiance RGBE (.hdr) picture as linear R, G, B floats (stb_image's decoder).
+FloatImage readHdr(const std::filesystem::path& path);
+// The R, G and B channels of a one-part scanline EXR of any pixel type (half too, as most HDR photographs are),
+// converted to float by OpenEXR; a file without them is refused, naming it.
+FloatImage readExrColor(const std::filesystem::path& path);
 // encodeExr written to `path`; throws "cannot write <path>: <reason>".
 void writeExrFile(const std::filesystem::path& path, const FloatImage& image);
 

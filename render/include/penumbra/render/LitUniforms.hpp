@@ -62,6 +62,11 @@ struct LitFrameUniforms {
     glm::vec4 cameraUp{0.0f};
     glm::vec4 clusterSlices{0.0f};
     glm::vec4 ambientGround{0.0f}; // linear rgb from below (the hemisphere's ground; = ambient without one)
+    // Image-based lighting (shaders/environment_light.glsl): x, y = cosine and sine of the rotation about +y, z = the
+    // specular chain's last level (0: no environment, the ambient light instead), w = intensity; and the diffuse
+    // coefficients (diffuseShaderCoefficients, at intensity 1).
+    glm::vec4 environment{0.0f};
+    std::array<glm::vec4, 9> environmentSh{};
 };
 
 // The lit pass's spot and point lights (spot lights, then point lights: the lit pass's local index) and their
@@ -114,6 +119,8 @@ inline constexpr std::array kLitFrameFields{
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraUp),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, clusterSlices),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, ambientGround),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, environment),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, environmentSh),
 };
 // lit.glsl's block Frame, read through the instance name `frame`.
 inline constexpr shaders::ShaderStruct kLitFrameBlock{"Frame", sizeof(LitFrameUniforms), kLitFrameFields};
@@ -159,6 +166,9 @@ inline constexpr std::uint32_t kLitLightIndicesBinding = kLitScreenSpaceDepthBin
 // screen-space collection binds it too, beside its own bindings 1 to 4 after kLitScreenSpaceDepthBinding
 // (ScreenSpaceShadowPass.hpp).
 inline constexpr std::uint32_t kLitLocalShadowTilesBinding = kLitScreenSpaceDepthBinding + 5;
+// The environment's prefiltered specular chain and the split-sum BRDF table (render/src/EnvironmentMaps.hpp).
+inline constexpr std::uint32_t kLitEnvironmentSpecularBinding = kLitLocalShadowTilesBinding + 1;
+inline constexpr std::uint32_t kLitEnvironmentBrdfBinding = kLitLocalShadowTilesBinding + 2;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/render/AmbientLight.hpp"
+#include "penumbra/render/Environment.hpp"
 #include "penumbra/render/FramePass.hpp"
 #include "penumbra/render/GpuScene.hpp"
 #include "penumbra/render/LitUniforms.hpp"
@@ -28,6 +29,7 @@ namespace penumbra::render {
 
 class DepthPrepass;
 class DepthReduction;
+class EnvironmentMaps;
 class FrameGraph;
 class GpuSkinning;
 class LitPipelines;
@@ -50,7 +52,10 @@ struct FrameDesc {
     std::uint32_t width = 1280;
     std::uint32_t height = 720;
     shadows::ShadowSettings shadows;
+    // Lights surfaces without a direct light, and only without an environment.
     AmbientLight ambient;
+    // Image-based lighting; none by default (the ambient light instead). Prefiltered once per image (by pointer).
+    EnvironmentLight environment;
     bool cascadeView = false; // also render the lit image tinted by cascade index
     // Also render this light's raw shadow-map visibility (SceneRenderer::visibilityImage()): the filtered
     // shadow in red, green and blue (1 = lit) before strength and fades, and in alpha 1 where its shadow map
@@ -116,6 +121,9 @@ struct FrameStats {
     // Lights drawn without shadows, or not drawn at all, and why; textures sampled with less anisotropy than
     // asked for (the same as SceneRenderer::notes()).
     std::vector<std::string> notes;
+    // Where this frame prefiltered a new FrameDesc::environment image: the milliseconds it took (CPU and GPU, waited
+    // for), before the frame's own work.
+    std::optional<double> environmentPrefilterMs;
 
     // The GPU time of the pass of that name; nullopt where it did not run or the device has no timestamps.
     std::optional<double> passMs(std::string_view pass) const;
@@ -259,6 +267,7 @@ private:
     std::unique_ptr<DepthPrepass> depthFitPrepass_;
     std::optional<shadows::ViewDepthRange> visibleDepths_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
+    std::unique_ptr<EnvironmentMaps> environment_; // FrameDesc::environment prefiltered
     std::unique_ptr<LocalLightTextures> localLights_; // every spot and point light and their cluster lists
     // RealtimeCasters::Dynamic: the static casters' depth of the realtime atlases' tiles.
     std::unique_ptr<StaticTileCache> directionalStaticTiles_;
