@@ -3,9 +3,12 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Window.hpp"
 
+#include <memory>
 #include <string>
 
 namespace penumbra::rhi {
+
+class PipelineCache;
 
 // What a device is created with: the same fields for every backend. Options that only one API
 // has (the OpenGL context provider, for example) are arguments of that backend's own factory
@@ -27,6 +30,10 @@ struct DeviceDesc {
     // rules: tests/gpu/MisuseTest.cpp). On by default, as in every test; the tools turn it off in release
     // builds unless given --validate. Without it a broken rule is undefined behaviour, as in the APIs.
     bool validateUsage = true;
+    // Compiled shaders and pipelines kept on disk (penumbra/rhi/PipelineCache.hpp); null: none, the default, so
+    // that a library writes nowhere unasked. The tools pass one in the user's cache folder
+    // (defaultPipelineCacheFolder()) unless PENUMBRA_PIPELINE_CACHE=off.
+    std::shared_ptr<PipelineCache> pipelineCache;
     // A window to present to (Device::createSwapchain); none for offscreen devices. With one, an
     // OpenGL device takes its context from the window instead of a headless one.
     WindowDesc window;

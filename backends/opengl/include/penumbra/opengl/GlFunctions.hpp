@@ -79,6 +79,7 @@ namespace penumbra::opengl {
     X(GetIntegerv, GETINTEGERV)                                                                                        \
     X(GetIntegeri_v, GETINTEGERI_V)                                                                                    \
     X(GetInternalformativ, GETINTERNALFORMATIV)                                                                        \
+    X(GetProgramBinary, GETPROGRAMBINARY)                                                                              \
     X(GetProgramInfoLog, GETPROGRAMINFOLOG)                                                                            \
     X(GetProgramiv, GETPROGRAMIV)                                                                                      \
     X(GetQueryObjectui64v, GETQUERYOBJECTUI64V)                                                                        \
@@ -106,6 +107,8 @@ namespace penumbra::opengl {
     X(PolygonOffset, POLYGONOFFSET)                                                                                    \
     X(PopDebugGroup, POPDEBUGGROUP)                                                                                    \
     X(ProvokingVertex, PROVOKINGVERTEX)                                                                                \
+    X(ProgramBinary, PROGRAMBINARY)                                                                                    \
+    X(ProgramParameteri, PROGRAMPARAMETERI)                                                                            \
     X(ProgramUniform1i, PROGRAMUNIFORM1I)                                                                              \
     X(PushDebugGroup, PUSHDEBUGGROUP)                                                                                  \
     X(QueryCounter, QUERYCOUNTER)                                                                                      \
