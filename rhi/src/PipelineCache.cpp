@@ -128,13 +128,8 @@ std::optional<std::string> PipelineCache::load(std::string_view kind, std::strin
 void PipelineCache::store(std::string_view kind, std::string_view identity, std::string_view key,
                           std::string_view payload, double compileMs)
 {
-    Header header{kMagic,
-                  kFormatVersion,
-                  std::uint32_t(identity.size()),
-                  std::uint32_t(key.size()),
-                  0,
-                  payload.size(),
-                  checksum(identity, key, payload)};
+    Header header{kMagic, kFormatVersion, std::uint32_t(identity.size()),  std::uint32_t(key.size()),
+                  0,      payload.size(), checksum(identity, key, payload)};
     std::string bytes(sizeof(Header), '\0');
     std::memcpy(bytes.data(), &header, sizeof(Header));
     bytes.append(identity).append(key).append(payload);
@@ -153,8 +148,7 @@ void PipelineCache::store(std::string_view kind, std::string_view identity, std:
         notes_.push_back(std::move(failure));
 }
 
-void PipelineCache::refuse(std::string_view kind, std::string_view identity, std::string_view key,
-                           std::string_view why)
+void PipelineCache::refuse(std::string_view kind, std::string_view identity, std::string_view key, std::string_view why)
 {
     const std::lock_guard lock(mutex_);
     PipelineCacheCounts& counts = counts_[std::string(kind)];
@@ -183,8 +177,8 @@ std::string PipelineCache::summary() const
     std::string text = fmt::format("pipeline cache {}:", folder_.string());
     const char* separator = " ";
     for (const auto& [kind, c] : counts_) {
-        text += fmt::format("{}{} {} loaded, {} compiled ({:.0f} ms)", separator, kind, c.loaded, c.missed,
-                            c.compileMs);
+        text +=
+            fmt::format("{}{} {} loaded, {} compiled ({:.0f} ms)", separator, kind, c.loaded, c.missed, c.compileMs);
         if (c.ignored > 0)
             text += fmt::format(", {} ignored", c.ignored);
         separator = "; ";

@@ -66,10 +66,8 @@ Shared makeShared(rhi::Device& device)
 PerThread makePerThread(rhi::Device& device)
 {
     PerThread t;
-    t.color = device.createTexture({.width = kSize,
-                                    .height = kSize,
-                                    .format = rhi::Format::RGBA8,
-                                    .usage = rhi::TextureUsage::RenderTarget});
+    t.color = device.createTexture(
+        {.width = kSize, .height = kSize, .format = rhi::Format::RGBA8, .usage = rhi::TextureUsage::RenderTarget});
     t.depth = device.createTexture(
         {.width = kSize, .height = kSize, .format = rhi::Format::D32F, .usage = rhi::TextureUsage::RenderTarget});
     const rhi::Attachment color{t.color.get(), 0};

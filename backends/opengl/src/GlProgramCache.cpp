@@ -42,7 +42,8 @@ bool GlProgramCache::load(const GlFunctions& gl, GLuint program, const std::stri
     std::memcpy(&format, stored->data(), sizeof(format));
     // A format the driver does not list would be a GL error (INVALID_ENUM) in the debug output.
     if (std::find(formats_.begin(), formats_.end(), GLint(format)) == formats_.end()) {
-        disk_->refuse(kKind, identity_, key, fmt::format("binary format {:#x}, which the driver does not list", format));
+        disk_->refuse(kKind, identity_, key,
+                      fmt::format("binary format {:#x}, which the driver does not list", format));
         return false;
     }
     gl.ProgramBinary(program, format, stored->data() + sizeof(format), GLsizei(stored->size() - sizeof(format)));

@@ -46,8 +46,8 @@ VulkanPipelineCache::VulkanPipelineCache(std::shared_ptr<Context> context, std::
     : context_(std::move(context)), disk_(std::move(disk))
 {
     const VkPhysicalDeviceProperties& p = context_->properties;
-    identity_ = fmt::format("Vulkan {} (vendor {:#x}, device {:#x}, driver {:#x}, pipelineCacheUUID {})",
-                            p.deviceName, p.vendorID, p.deviceID, p.driverVersion, uuidText(p.pipelineCacheUUID));
+    identity_ = fmt::format("Vulkan {} (vendor {:#x}, device {:#x}, driver {:#x}, pipelineCacheUUID {})", p.deviceName,
+                            p.vendorID, p.deviceID, p.driverVersion, uuidText(p.pipelineCacheUUID));
     if (disk_)
         if (std::optional<std::string> stored = disk_->load(kKind, identity_, kKey)) {
             // The driver checks the header too, but a cache is never trusted: data for another device is refused
