@@ -9,7 +9,7 @@ CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -D
 PENUMBRA = $(BUILD)/bin/penumbra
 
 .PHONY: all deps configure build test demo bench bench-forest bench-static soak sanitize sanitize-ci tsan fuzz docs \
-	format tidy sample-viewer-compare clean
+	format tidy sample-viewer-compare device-check clean
 
 all: build
 
@@ -66,6 +66,14 @@ bench-static: build
 		baked) extra="--baked out/bench-static-bake --realtime-casters dynamic";; esac; \
 		$(PENUMBRA) bench --scene town --settings scripts/bench/town-static.json $$extra --backend vulkan,opengl \
 			--frames 10 --warmup 2 --json out/bench-static-$$mode.json || exit 1; done
+
+# On a machine with a hardware Vulkan and EGL driver: the GPU tests of every configuration and the benchmarks (bench,
+# bench-forest) in under 8 minutes, out/device-check/report.{md,json} with the device, the driver, every failure and
+# each figure (scripts/device-check.sh; DEVICE_CHECK_BASELINE=report.json puts an earlier run's figures beside).
+# `make test` runs its quick mode on lavapipe and llvmpipe (ctest device-check.quick).
+device-check: build
+	@./scripts/device-check.sh --build $(BUILD) --out out/device-check \
+		$(if $(DEVICE_CHECK_BASELINE),--baseline $(DEVICE_CHECK_BASELINE))
 
 # AddressSanitizer + UndefinedBehaviorSanitizer build and test run of everything in build-sanitize/.
 sanitize: deps

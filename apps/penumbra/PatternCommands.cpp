@@ -53,9 +53,24 @@ void addPatternCommand(CLI::App& app)
 
 void addConfigurationsCommand(CLI::App& app)
 {
-    app.add_subcommand("configurations", "List the configuration names")->callback([] {
-        for (const rhi::NamedConfiguration& c : penumbra::namedConfigurations())
-            fmt::print("{}\n", c.name);
+    auto devices = std::make_shared<bool>(false);
+    CLI::App* command = app.add_subcommand("configurations", "List the configuration names");
+    command->add_flag("--devices", *devices,
+                      "Also start each configuration's device and print its API and device, tab-separated (or why the "
+                      "driver refused it), as scripts/device-check.sh reports them");
+    command->callback([devices] {
+        for (const rhi::NamedConfiguration& c : penumbra::namedConfigurations()) {
+            if (!*devices) {
+                fmt::print("{}\n", c.name);
+                continue;
+            }
+            try {
+                const std::unique_ptr<rhi::Device> device = createDevice(toolDeviceDesc(c.name, false));
+                fmt::print("{}\t{}\t{}\n", c.name, device->capabilities().api, device->capabilities().device);
+            } catch (const rhi::Error& e) {
+                fmt::print("{}\tunsupported\t{}\n", c.name, e.what());
+            }
+        }
     });
 }
 

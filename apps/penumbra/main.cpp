@@ -30,6 +30,8 @@ int main(int argc, char** argv)
 #ifdef NDEBUG
     penumbra::apps::setToolUsageValidation(false);
 #endif
+    // Compiled shaders and pipelines outlive the process in the user's cache folder (docs/rhi.md, "Pipeline cache").
+    penumbra::apps::setToolPipelineCache(penumbra::apps::pipelineCacheFromEnvironment());
     penumbra::apps::addRenderCommand(app);
     penumbra::apps::addPatternCommand(app);
     penumbra::apps::addParityCommand(app);

@@ -1,11 +1,15 @@
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/PipelineCache.hpp"
 #include "penumbra/rhi/Shader.hpp"
 
 #include <fmt/format.h>
 #include <glslang/Public/ResourceLimits.h>
+#include <glslang/build_info.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 #include <algorithm>
+#include <chrono>
+#include <cstring>
 #include <list>
 #include <mutex>
 #include <optional>
@@ -167,6 +171,20 @@ std::vector<ShaderBinding> reflectBindings(const spirv_cross::Compiler& compiler
 // memory ran out (found by the shader fuzz target).
 constexpr std::size_t kMaxIncludeDepth = 32;
 
+// The bindings, workgroup size and shared memory of `spirv`, compiled from `source`.
+CompiledShader reflect(const ShaderSource& source, std::vector<std::uint32_t> spirv)
+{
+    CompiledShader compiled{.stage = source.stage, .name = source.name, .spirv = std::move(spirv)};
+    const spirv_cross::Compiler compiler(compiled.spirv);
+    compiled.bindings = reflectBindings(compiler, source.name);
+    if (source.stage == ShaderStage::Compute) {
+        for (std::uint32_t axis = 0; axis < 3; ++axis)
+            compiled.workgroupSize[axis] = compiler.get_execution_mode_argument(spv::ExecutionModeLocalSize, axis);
+        compiled.sharedMemoryBytes = sharedMemoryBytes(compiler, compiled.spirv);
+    }
+    return compiled;
+}
+
 // Resolves `#include "name"` against the source's include list; unknown names fail with the list.
 class IncludeList : public glslang::TShader::Includer {
 public:
@@ -231,18 +249,76 @@ CompiledShader compileWithGlslang(const ShaderSource& source, const std::string&
     if (!program.link(messages))
         throw ShaderCompileError(fmt::format("GLSL link failed for {}:\n{}", source.name, program.getInfoLog()));
 
-    CompiledShader compiled{.stage = source.stage, .name = source.name};
+    std::vector<std::uint32_t> spirv;
     glslang::SpvOptions options;
     options.validate = true;
-    glslang::GlslangToSpv(*program.getIntermediate(stage), compiled.spirv, &options);
-    const spirv_cross::Compiler compiler(compiled.spirv);
-    compiled.bindings = reflectBindings(compiler, source.name);
-    if (source.stage == ShaderStage::Compute) {
-        for (std::uint32_t axis = 0; axis < 3; ++axis)
-            compiled.workgroupSize[axis] = compiler.get_execution_mode_argument(spv::ExecutionModeLocalSize, axis);
-        compiled.sharedMemoryBytes = sharedMemoryBytes(compiler, compiled.spirv);
-    }
+    glslang::GlslangToSpv(*program.getIntermediate(stage), spirv, &options);
+    return reflect(source, std::move(spirv));
+}
+
+// What the pipeline cache's "spirv" entries were made by: glslang's version and the targets compileWithGlslang
+// asks for. Another glslang writes other SPIR-V, so its entries are foreign.
+std::string spirvIdentity()
+{
+    return fmt::format("glslang {}.{}.{}{} SPIR-V 1.3 Vulkan 1.1 GLSL 450", GLSLANG_VERSION_MAJOR,
+                       GLSLANG_VERSION_MINOR, GLSLANG_VERSION_PATCH, GLSLANG_VERSION_FLAVOR);
+}
+
+// The SPIR-V stored for `key`, reflected; nullopt when there is none or it does not hold up.
+std::optional<CompiledShader> loadSpirv(PipelineCache& disk, const ShaderSource& source, const std::string& key)
+{
+    const std::optional<std::string> payload = disk.load("spirv", spirvIdentity(), key);
+    if (!payload)
+        return std::nullopt;
+    constexpr std::uint32_t kSpirvMagic = 0x07230203; // SPIR-V 1.6 specification, section 2.3 "Physical Layout"
+    std::vector<std::uint32_t> spirv(payload->size() / sizeof(std::uint32_t));
+    std::memcpy(spirv.data(), payload->data(), spirv.size() * sizeof(std::uint32_t));
+    std::string why;
+    if (payload->size() % sizeof(std::uint32_t) != 0 || spirv.empty() || spirv.front() != kSpirvMagic)
+        why = "not a SPIR-V module";
+    else
+        try {
+            return reflect(source, std::move(spirv));
+        } catch (const std::exception& e) {
+            why = fmt::format("SPIR-V that reflection refuses: {}", e.what());
+        }
+    disk.refuse("spirv", spirvIdentity(), key, why);
+    return std::nullopt;
+}
+
+CompiledShader compileThroughDisk(const ShaderSource& source, const std::string& preamble, const std::string& key,
+                                  PipelineCache* disk)
+{
+    if (!disk)
+        return compileWithGlslang(source, preamble);
+    if (std::optional<CompiledShader> stored = loadSpirv(*disk, source, key))
+        return std::move(*stored);
+    const auto start = std::chrono::steady_clock::now();
+    CompiledShader compiled = compileWithGlslang(source, preamble);
+    const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - start;
+    disk->store("spirv", spirvIdentity(), key,
+                std::string_view(reinterpret_cast<const char*>(compiled.spirv.data()),
+                                 compiled.spirv.size() * sizeof(std::uint32_t)),
+                spent.count());
     return compiled;
+}
+
+constexpr std::size_t kShaderMemoEntries = 512;
+using Recency = std::list<std::string>;
+struct MemoEntry {
+    CompiledShader shader;
+    Recency::iterator recency;
+};
+struct Memo {
+    std::mutex mutex;
+    std::unordered_map<std::string, MemoEntry> compiled;
+    Recency recency; // most recently used first
+};
+
+Memo& memo()
+{
+    static Memo shared;
+    return shared;
 }
 
 } // namespace
@@ -254,15 +330,13 @@ CompiledShader compileWithGlslang(const ShaderSource& source, const std::string&
 // throw every time.
 CompiledShader compileShader(const ShaderSource& source, const std::string& preamble)
 {
-    constexpr std::size_t kShaderMemoEntries = 512;
-    using Recency = std::list<std::string>;
-    struct Entry {
-        CompiledShader shader;
-        Recency::iterator recency;
-    };
-    static std::mutex mutex;
-    static std::unordered_map<std::string, Entry> compiled;
-    static Recency recency; // most recently used first
+    return compileShader(source, preamble, nullptr);
+}
+
+// With a pipeline cache, a miss of the memo looks on disk before it runs glslang.
+CompiledShader compileShader(const ShaderSource& source, const std::string& preamble, PipelineCache* disk)
+{
+    auto& [mutex, compiled, recency] = memo();
     std::string key = compileKey(source, preamble);
     {
         const std::lock_guard lock(mutex);
@@ -271,7 +345,7 @@ CompiledShader compileShader(const ShaderSource& source, const std::string& prea
             return found->second.shader;
         }
     }
-    CompiledShader result = compileWithGlslang(source, preamble);
+    CompiledShader result = compileThroughDisk(source, preamble, key, disk);
     const std::lock_guard lock(mutex);
     if (const auto found = compiled.find(key); found != compiled.end())
         return found->second.shader; // another thread compiled it meanwhile
@@ -280,7 +354,15 @@ CompiledShader compileShader(const ShaderSource& source, const std::string& prea
         recency.pop_back();
     }
     recency.push_front(key);
-    return compiled.emplace(std::move(key), Entry{std::move(result), recency.begin()}).first->second.shader;
+    return compiled.emplace(std::move(key), MemoEntry{std::move(result), recency.begin()}).first->second.shader;
+}
+
+void forgetCompiledShaders()
+{
+    Memo& shared = memo();
+    const std::lock_guard lock(shared.mutex);
+    shared.compiled.clear();
+    shared.recency.clear();
 }
 
 } // namespace penumbra::rhi

@@ -63,6 +63,8 @@ GlDevice::GlDevice(const rhi::DeviceDesc& desc, const OpenGLDeviceOptions& optio
         enableDebugOutput(gl, context_->debugLog());
     orientation_.apply(*context_);
     capabilities_ = queryCapabilities();
+    if (desc_.pipelineCache && capabilities_.pipelineBinaries)
+        programs_.emplace(gl, desc_.pipelineCache);
     cache_.emplace(gl, std::uint32_t(integer(gl, GL_MAX_UNIFORM_BUFFER_BINDINGS)),
                    std::uint32_t(integer(gl, GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS)));
     resolveRead_ = createName<GlFramebufferName>(*context_, gl.CreateFramebuffers);
@@ -107,6 +109,7 @@ rhi::Capabilities GlDevice::queryCapabilities() const
     caps.maxStorageBufferRange = std::uint64_t(integer(gl, GL_MAX_SHADER_STORAGE_BLOCK_SIZE));
     caps.drawIndirectCount =
         desc_.nativeDrawIndirectCount && gl.MultiDrawArraysIndirectCount && gl.MultiDrawElementsIndirectCount;
+    caps.pipelineBinaries = integer(gl, GL_NUM_PROGRAM_BINARY_FORMATS) > 0; // core since 4.1
     for (rhi::Format f : rhi::allFormats)
         caps.formats[std::size_t(f)] = formatSupport(f);
     // GL has no query of a device's memory; Mesa's software renderers keep every texture in system memory.
@@ -206,12 +209,12 @@ std::unique_ptr<rhi::Shader> GlDevice::apiCreateShader(rhi::CompiledShader compi
 
 std::unique_ptr<rhi::Pipeline> GlDevice::apiCreatePipeline(const rhi::PipelineDesc& desc)
 {
-    return std::make_unique<GlPipeline>(context_, desc, conventions_);
+    return std::make_unique<GlPipeline>(context_, desc, conventions_, programs_ ? &*programs_ : nullptr);
 }
 
 std::unique_ptr<rhi::ComputePipeline> GlDevice::apiCreateComputePipeline(const rhi::ComputePipelineDesc& desc)
 {
-    return std::make_unique<GlComputePipeline>(context_, desc);
+    return std::make_unique<GlComputePipeline>(context_, desc, programs_ ? &*programs_ : nullptr);
 }
 
 std::unique_ptr<rhi::Framebuffer> GlDevice::apiCreateFramebuffer(const rhi::FramebufferDesc& desc)

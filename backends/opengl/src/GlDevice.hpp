@@ -3,6 +3,7 @@
 #include "GlContext.hpp"
 #include "GlHandle.hpp"
 #include "GlOrientation.hpp"
+#include "GlProgramCache.hpp"
 #include "GlStateCache.hpp"
 #include "penumbra/opengl/OpenGLDevice.hpp"
 #include "penumbra/rhi/ValidatingDevice.hpp"
@@ -56,6 +57,7 @@ private:
     rhi::Conventions conventions_;
     rhi::Capabilities capabilities_;
     std::optional<GlStateCache> cache_;
+    std::optional<GlProgramCache> programs_; // with DeviceDesc::pipelineCache where the driver has binary formats
     // resolveTexture's read and draw framebuffers, the source and destination attached for each blit.
     GlFramebufferName resolveRead_, resolveDraw_;
     std::uint64_t submitCount_ = 0;

@@ -2,8 +2,10 @@
 
 #include "GlFormats.hpp"
 #include "GlOrientation.hpp"
+#include "GlProgramCache.hpp"
 #include "penumbra/rhi/BackendSupport.hpp"
 
+#include <chrono>
 #include <fmt/format.h>
 #include <spirv_cross/spirv_glsl.hpp>
 
@@ -88,6 +90,33 @@ GlFixedState fixedState(const rhi::PipelineDesc& desc, const rhi::Conventions& c
     return s;
 }
 
+// Links `program` from `shaders`: from the binary `programs` keeps for their GLSL where it has a valid one, else
+// by the driver (then kept there). Returns whether the link succeeded.
+bool linkProgram(const GlFunctions& gl, GLuint program, std::initializer_list<const GlShader*> shaders,
+                 const GlProgramCache* programs)
+{
+    std::string key;
+    if (programs) {
+        for (const GlShader* shader : shaders)
+            key += fmt::format("{}\n{}\n", int(shader->compiled().stage), shader->glsl());
+        if (programs->load(gl, program, key))
+            return true;
+        programs->prepare(gl, program);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    for (const GlShader* shader : shaders)
+        gl.AttachShader(program, shader->name());
+    gl.LinkProgram(program);
+    for (const GlShader* shader : shaders)
+        gl.DetachShader(program, shader->name());
+    GLint ok = GL_FALSE;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+    const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - start;
+    if (ok && programs)
+        programs->store(gl, program, key, spent.count());
+    return ok == GL_TRUE;
+}
+
 } // namespace
 
 GlShader::GlShader(GlContextPtr context, rhi::CompiledShader compiled, const GlOrientation& orientation)
@@ -108,30 +137,24 @@ GlShader::GlShader(GlContextPtr context, rhi::CompiledShader compiled, const GlO
     gl.ObjectLabel(GL_SHADER, shader, GLsizei(compiled_.name.size()), compiled_.name.c_str());
 }
 
-GlPipeline::GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions)
+GlPipeline::GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions,
+                       const GlProgramCache* programs)
     : context_(std::move(context)), desc_(desc), bindings_(rhi::pipelineBindings(desc)),
       state_(fixedState(desc, conventions))
 {
     context_->makeCurrent();
-    link();
+    link(programs);
     buildVertexArray();
 }
 
-void GlPipeline::link()
+void GlPipeline::link(const GlProgramCache* programs)
 {
     const GlFunctions& gl = context_->gl();
     const auto& vertex = glObject<const GlShader>(*desc_.vertex, "vertex shader");
     const auto& fragment = glObject<const GlShader>(*desc_.fragment, "fragment shader");
     program_ = GlProgramName(*context_, gl.CreateProgram());
     const GLuint program = program_.get();
-    gl.AttachShader(program, vertex.name());
-    gl.AttachShader(program, fragment.name());
-    gl.LinkProgram(program);
-    gl.DetachShader(program, vertex.name());
-    gl.DetachShader(program, fragment.name());
-    GLint ok = GL_FALSE;
-    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok)
+    if (!linkProgram(gl, program, {&vertex, &fragment}, programs))
         throw rhi::Error(fmt::format("pipeline '{}': linking {} and {} failed:\n{}", desc_.debugName,
                                      vertex.compiled().name, fragment.compiled().name, programLog(gl, program)));
     baseInstanceLocation_ = gl.GetUniformLocation(program, "SPIRV_Cross_BaseInstance");
@@ -166,7 +189,8 @@ void GlPipeline::buildVertexArray()
         gl.ObjectLabel(GL_VERTEX_ARRAY, vertexArray, GLsizei(desc_.debugName.size()), desc_.debugName.c_str());
 }
 
-GlComputePipeline::GlComputePipeline(GlContextPtr context, const rhi::ComputePipelineDesc& desc)
+GlComputePipeline::GlComputePipeline(GlContextPtr context, const rhi::ComputePipelineDesc& desc,
+                                     const GlProgramCache* programs)
     : ComputePipeline(desc.compute->compiled()), context_(std::move(context)), desc_(desc)
 {
     context_->makeCurrent();
@@ -174,12 +198,7 @@ GlComputePipeline::GlComputePipeline(GlContextPtr context, const rhi::ComputePip
     const auto& shader = glObject<const GlShader>(*desc_.compute, "compute shader");
     program_ = GlProgramName(*context_, gl.CreateProgram());
     const GLuint program = program_.get();
-    gl.AttachShader(program, shader.name());
-    gl.LinkProgram(program);
-    gl.DetachShader(program, shader.name());
-    GLint ok = GL_FALSE;
-    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok)
+    if (!linkProgram(gl, program, {&shader}, programs))
         throw rhi::Error(fmt::format("compute pipeline '{}': linking {} failed:\n{}", desc_.debugName,
                                      shader.compiled().name, programLog(gl, program)));
     if (!desc_.debugName.empty())

@@ -11,6 +11,7 @@
 namespace penumbra::opengl {
 
 class GlOrientation;
+class GlProgramCache;
 
 // SPIR-V from glslang, cross-compiled by SPIRV-Cross to GLSL 450 core and compiled by the driver.
 class GlShader final : public rhi::Shader {
@@ -19,6 +20,8 @@ public:
 
     const rhi::CompiledShader& compiled() const override { return compiled_; }
     GLuint name() const { return name_.get(); }
+    // The GLSL the driver compiled (what a program binary is keyed by).
+    const std::string& glsl() const { return glsl_; }
 
 private:
     GlContextPtr context_;
@@ -62,7 +65,9 @@ struct GlVertexArrayCache {
 
 class GlPipeline final : public rhi::Pipeline {
 public:
-    GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions);
+    // `programs`: where linked programs are kept between processes; null: nowhere.
+    GlPipeline(GlContextPtr context, const rhi::PipelineDesc& desc, const rhi::Conventions& conventions,
+               const GlProgramCache* programs);
 
     const rhi::PipelineDesc& desc() const override { return desc_; }
     const std::vector<rhi::ShaderBinding>& bindings() const override { return bindings_; }
@@ -75,7 +80,7 @@ public:
     GlVertexArrayCache& vertexArrayCache() const { return cache_; }
 
 private:
-    void link();
+    void link(const GlProgramCache* programs);
     void buildVertexArray();
 
     GlContextPtr context_;
@@ -92,7 +97,7 @@ private:
 // A program of one compute shader.
 class GlComputePipeline final : public rhi::ComputePipeline {
 public:
-    GlComputePipeline(GlContextPtr context, const rhi::ComputePipelineDesc& desc);
+    GlComputePipeline(GlContextPtr context, const rhi::ComputePipelineDesc& desc, const GlProgramCache* programs);
 
     const rhi::ComputePipelineDesc& desc() const override { return desc_; }
     GLuint program() const { return program_.get(); }

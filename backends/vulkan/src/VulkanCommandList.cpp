@@ -75,8 +75,7 @@ void VulkanCommandList::submit()
 
 void VulkanCommandList::apiBeginPass(const rhi::PassDesc& pass)
 {
-    auto& framebuffer = const_cast<VulkanFramebuffer&>(
-        vulkanObject<const VulkanFramebuffer>(*pass.framebuffer, "beginPass: the framebuffer"));
+    const auto& framebuffer = vulkanObject<const VulkanFramebuffer>(*pass.framebuffer, "beginPass: the framebuffer");
 
     std::vector<VkClearValue> clears(framebuffer.colorCount() + (framebuffer.hasDepth() ? 1 : 0));
     const glm::vec4 color = pass.clearColor.value_or(glm::vec4(0.0f));

@@ -74,6 +74,7 @@ void Context::fillCapabilities()
     capabilities.maxComputeSharedMemory = limits.maxComputeSharedMemorySize;
     capabilities.storageBufferOffsetAlignment = std::uint32_t(limits.minStorageBufferOffsetAlignment);
     capabilities.maxStorageBufferRange = limits.maxStorageBufferRange;
+    capabilities.pipelineBinaries = true; // VkPipelineCache is core Vulkan 1.0
     VkPhysicalDeviceMemoryProperties memory;
     vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memory);
     for (std::uint32_t i = 0; i < memory.memoryHeapCount; ++i)

@@ -37,6 +37,8 @@ public:
     rhi::Capabilities capabilities;
     VkDevice device = VK_NULL_HANDLE; // owned by ownedDevice_
     VkQueue queue = VK_NULL_HANDLE;
+    // What pipelines are created with: the device's VulkanPipelineCache while it exists, else none.
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
 
     RenderPassCache& renderPasses() { return *renderPasses_; }
     LayoutCache& layouts() { return *layouts_; }

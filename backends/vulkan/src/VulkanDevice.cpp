@@ -18,6 +18,8 @@ namespace penumbra::vulkan {
 VulkanDevice::VulkanDevice(const rhi::DeviceDesc& desc)
     : ValidatingDevice(desc.validateUsage), context_(std::make_shared<Context>(desc))
 {
+    if (desc.pipelineCache)
+        pipelineCache_.emplace(context_, desc.pipelineCache);
 }
 
 std::unique_ptr<rhi::Buffer> VulkanDevice::apiCreateBuffer(const rhi::BufferDesc& desc)

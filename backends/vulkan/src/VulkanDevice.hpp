@@ -3,10 +3,12 @@
 // The rhi::Device of this backend (the public header penumbra/vulkan/VulkanDevice.hpp only has the factory).
 
 #include "VulkanContext.hpp"
+#include "VulkanPipelineCache.hpp"
 
 #include "penumbra/rhi/ValidatingDevice.hpp"
 
 #include <memory>
+#include <optional>
 
 namespace penumbra::vulkan {
 
@@ -41,6 +43,8 @@ private:
     void apiSubmit(rhi::CommandList& commands) override;
 
     std::shared_ptr<Context> context_;
+    // With DeviceDesc::pipelineCache; declared after context_, so it stores its data before the context can go.
+    std::optional<VulkanPipelineCache> pipelineCache_;
 };
 
 } // namespace penumbra::vulkan

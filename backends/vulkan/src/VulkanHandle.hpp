@@ -57,6 +57,7 @@ using UniqueImage = DeviceOwned<VkImage, vkDestroyImage>;
 using UniqueImageView = DeviceOwned<VkImageView, vkDestroyImageView>;
 using UniqueMemory = DeviceOwned<VkDeviceMemory, vkFreeMemory>; // freeing unmaps implicitly
 using UniquePipeline = DeviceOwned<VkPipeline, vkDestroyPipeline>;
+using UniquePipelineCache = DeviceOwned<VkPipelineCache, vkDestroyPipelineCache>;
 using UniquePipelineLayout = DeviceOwned<VkPipelineLayout, vkDestroyPipelineLayout>;
 using UniqueQueryPool = DeviceOwned<VkQueryPool, vkDestroyQueryPool>;
 using UniqueRenderPass = DeviceOwned<VkRenderPass, vkDestroyRenderPass>;

@@ -34,9 +34,7 @@ NativePipeline native(const rhi::ComputePipeline& pipeline)
 
 NativeFramebuffer native(const rhi::Framebuffer& framebuffer)
 {
-    // renderPass() fills a lazy cache; the framebuffer itself is not changed.
-    auto& vk =
-        const_cast<VulkanFramebuffer&>(vulkanObject<const VulkanFramebuffer>(framebuffer, "native: the framebuffer"));
+    const auto& vk = vulkanObject<const VulkanFramebuffer>(framebuffer, "native: the framebuffer");
     return {vk.handle(), vk.renderPass(false, false)};
 }
 

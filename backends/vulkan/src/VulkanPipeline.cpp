@@ -215,7 +215,7 @@ VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::Pipe
     info.layout = layout_.layout;
     info.renderPass = renderPass_;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    check(vkCreateGraphicsPipelines(context_->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+    check(vkCreateGraphicsPipelines(context_->device, context_->pipelineCache, 1, &info, nullptr, &pipeline),
           fmt::format("vkCreateGraphicsPipelines ('{}')", desc.debugName));
     pipeline_ = UniquePipeline(context_->device, pipeline);
     context_->setName(VK_OBJECT_TYPE_PIPELINE, pipeline, desc.debugName);
@@ -242,7 +242,7 @@ VulkanComputePipeline::VulkanComputePipeline(std::shared_ptr<Context> context, c
                   nullptr};
     info.layout = layout.layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    check(vkCreateComputePipelines(context_->device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+    check(vkCreateComputePipelines(context_->device, context_->pipelineCache, 1, &info, nullptr, &pipeline),
           fmt::format("vkCreateComputePipelines ('{}')", desc.debugName));
     pipeline_ = UniquePipeline(context_->device, pipeline);
     context_->setName(VK_OBJECT_TYPE_PIPELINE, pipeline, desc.debugName);

@@ -120,6 +120,16 @@ VulkanFramebuffer::VulkanFramebuffer(std::shared_ptr<Context> context, const rhi
         views.push_back(
             views_.emplace_back(static_cast<const VulkanTexture*>(a.texture)->createAttachmentView(a.layer)).get());
     VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    // All four load variants up front: beginPass may run on several recording threads at once (rhi::Device's
+    // threading contract), so nothing here is filled lazily.
+    for (std::size_t variant = 0; variant < passes_.size(); ++variant) {
+        RenderPassKey key = key_;
+        for (AttachmentKey& c : key.colors)
+            c.load = variant >= 2;
+        if (key.depth)
+            key.depth->load = variant % 2 == 1;
+        passes_[variant] = context_->renderPasses().get(key);
+    }
     info.renderPass = renderPass(false, false);
     info.attachmentCount = std::uint32_t(views.size());
     info.pAttachments = views.data();
@@ -130,18 +140,9 @@ VulkanFramebuffer::VulkanFramebuffer(std::shared_ptr<Context> context, const rhi
     context_->setName(VK_OBJECT_TYPE_FRAMEBUFFER, framebuffer_.get(), desc.debugName);
 }
 
-VkRenderPass VulkanFramebuffer::renderPass(bool loadColor, bool loadDepth)
+VkRenderPass VulkanFramebuffer::renderPass(bool loadColor, bool loadDepth) const
 {
-    VkRenderPass& pass = passes_[std::size_t(loadColor) * 2 + std::size_t(loadDepth)];
-    if (!pass) {
-        RenderPassKey key = key_;
-        for (AttachmentKey& c : key.colors)
-            c.load = loadColor;
-        if (key.depth)
-            key.depth->load = loadDepth;
-        pass = context_->renderPasses().get(key);
-    }
-    return pass;
+    return passes_[std::size_t(loadColor) * 2 + std::size_t(loadDepth)];
 }
 
 } // namespace penumbra::vulkan

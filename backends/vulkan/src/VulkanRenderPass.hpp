@@ -55,7 +55,7 @@ public:
     bool hasDepth() const { return key_.depth.has_value(); }
     const std::string& name() const { return name_; }
     // The render pass for a pass that loads or clears colour and depth.
-    VkRenderPass renderPass(bool loadColor, bool loadDepth);
+    VkRenderPass renderPass(bool loadColor, bool loadDepth) const;
 
 private:
     std::shared_ptr<Context> context_;

@@ -48,7 +48,7 @@ std::unique_ptr<Sampler> ValidatingDevice::createSampler(const SamplerDesc& desc
 
 std::unique_ptr<Shader> ValidatingDevice::createShader(const ShaderSource& source)
 {
-    CompiledShader compiled = compileShader(source, conventions().glslHeader());
+    CompiledShader compiled = compileShader(source, conventions().glslHeader(), desc().pipelineCache.get());
     if (validate_ && compiled.stage == ShaderStage::Compute)
         checkWorkgroup(capabilities(), compiled);
     return apiCreateShader(std::move(compiled));

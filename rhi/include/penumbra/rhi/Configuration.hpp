@@ -3,9 +3,12 @@
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/rhi/Window.hpp"
 
+#include <memory>
 #include <string>
 
 namespace penumbra::rhi {
+
+class PipelineCache;
 
 // What a device is created with: the same fields for every backend. Options that only one API
 // has (the OpenGL context provider, for example) are arguments of that backend's own factory
@@ -30,6 +33,10 @@ struct DeviceDesc {
     // Draw counts read on the GPU where the device has them (Capabilities::drawIndirectCount); false takes the
     // RHI's emulation everywhere, so tests can compare the two.
     bool nativeDrawIndirectCount = true;
+    // Compiled shaders and pipelines kept on disk (penumbra/rhi/PipelineCache.hpp); null: none, the default, so
+    // that a library writes nowhere unasked. The tools pass one in the user's cache folder
+    // (defaultPipelineCacheFolder()) unless PENUMBRA_PIPELINE_CACHE=off.
+    std::shared_ptr<PipelineCache> pipelineCache;
     // A window to present to (Device::createSwapchain); none for offscreen devices. With one, an
     // OpenGL device takes its context from the window instead of a headless one.
     WindowDesc window;

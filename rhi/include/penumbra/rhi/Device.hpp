@@ -78,6 +78,10 @@ struct Capabilities {
     // VK_KHR_draw_indirect_count; GL 4.6 or ARB_indirect_parameters; false with DeviceDesc::nativeDrawIndirectCount
     // off. Where false the RHI emulates the count, with the same picture and a cost docs/compute.md describes.
     bool drawIndirectCount = false;
+    // Compiled pipelines the driver hands back for the pipeline cache (DeviceDesc::pipelineCache): always on Vulkan
+    // (VkPipelineCache); on OpenGL where GL_NUM_PROGRAM_BINARY_FORMATS > 0 (GL 4.6 section 7.5 "Program Binaries"),
+    // which Mesa reports only while its own shader disk cache is on. Without it the cache keeps SPIR-V alone.
+    bool pipelineBinaries = false;
     // Indexed by Format. Linear filtering of depth formats is hardware 2x2 PCF with a comparison sampler;
     // lavapipe offers it for none (conventions note, section 4).
     std::array<FormatSupport, formatCount> formats{};
@@ -92,9 +96,15 @@ struct Capabilities {
 };
 
 // Threading: a Device and every object it created (buffers, textures, command lists, ...) are used only from the
-// thread that created the device, one call at a time; nothing here is thread-safe (an OpenGL context is current on
-// one thread, EGL 1.5 section 3.7.3 "eglMakeCurrent"). Each device owns its own API context, so devices share no
-// state with one another.
+// thread that created the device, one call at a time (an OpenGL context is current on one thread, EGL 1.5 section
+// 3.7.3 "eglMakeCurrent"). Each device owns its own API context, so devices share no state with one another.
+// The one exception is recording: command lists of one device may be recorded on several threads at once, one list
+// per thread, and may all read the same pipelines, buffers, textures, samplers and framebuffers. Creating, writing
+// (Buffer::write, writeTexture), reading back and destroying objects, and submit, stay on the device's thread, and a
+// list is submitted after its recording thread is done with it (joined, or handed back through a mutex). Lists run
+// in the order they are submitted, whatever order they were recorded in. Vulkan records into a command pool and
+// descriptor pools of the list's own (pools are externally synchronized, Vulkan 1.3 section 3.6 "Threading
+// Behavior"); OpenGL records into a list of the list's own and makes its GL calls at submit, on the device's thread.
 class Device : private LiveObject<ObjectKind::Device> {
 public:
     virtual ~Device() = default;

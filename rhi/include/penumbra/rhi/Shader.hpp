@@ -12,6 +12,8 @@
 
 namespace penumbra::rhi {
 
+class PipelineCache;
+
 enum class ShaderStage : std::uint8_t { Vertex, Fragment, Compute };
 
 // GLSL 450 written once for both backends. `name` is what error messages cite
@@ -75,5 +77,11 @@ public:
 // Compiles GLSL 450 to SPIR-V with `preamble` inserted after #version. Throws
 // ShaderCompileError carrying glslang's log ("ERROR: name:line: message").
 CompiledShader compileShader(const ShaderSource& source, const std::string& preamble);
+// The same, with SPIR-V kept in `disk` (null: none): a shader compiled by an earlier process is read back and
+// reflected instead of compiled.
+CompiledShader compileShader(const ShaderSource& source, const std::string& preamble, PipelineCache* disk);
+// Empties the process's memo of compiled shaders, so that the next compileShader of any source reads the disk or
+// runs glslang again (tests of the pipeline cache use it to act as a second process).
+void forgetCompiledShaders();
 
 } // namespace penumbra::rhi

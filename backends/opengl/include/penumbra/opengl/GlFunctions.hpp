@@ -80,6 +80,7 @@ namespace penumbra::opengl {
     X(GetIntegeri_v, GETINTEGERI_V)                                                                                    \
     X(GetNamedBufferSubData, GETNAMEDBUFFERSUBDATA)                                                                    \
     X(GetInternalformativ, GETINTERNALFORMATIV)                                                                        \
+    X(GetProgramBinary, GETPROGRAMBINARY)                                                                              \
     X(GetProgramInfoLog, GETPROGRAMINFOLOG)                                                                            \
     X(GetProgramiv, GETPROGRAMIV)                                                                                      \
     X(GetQueryObjectui64v, GETQUERYOBJECTUI64V)                                                                        \
@@ -109,6 +110,8 @@ namespace penumbra::opengl {
     X(PolygonOffset, POLYGONOFFSET)                                                                                    \
     X(PopDebugGroup, POPDEBUGGROUP)                                                                                    \
     X(ProvokingVertex, PROVOKINGVERTEX)                                                                                \
+    X(ProgramBinary, PROGRAMBINARY)                                                                                    \
+    X(ProgramParameteri, PROGRAMPARAMETERI)                                                                            \
     X(ProgramUniform1i, PROGRAMUNIFORM1I)                                                                              \
     X(PushDebugGroup, PUSHDEBUGGROUP)                                                                                  \
     X(QueryCounter, QUERYCOUNTER)                                                                                      \
