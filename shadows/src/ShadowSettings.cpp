@@ -160,7 +160,7 @@ std::vector<SettingName> depthFormats()
     return {nameOf(rhi::Format::D16, "d16"), nameOf(rhi::Format::D24S8, "d24s8"), nameOf(rhi::Format::D32F, "d32f")};
 }
 
-std::array<ShadowSettingsField, 29> makeFields()
+std::vector<ShadowSettingsField> makeFields()
 {
     const std::string sampleCounts = fmt::format("{}", fmt::join(kPoissonSampleCounts, ", "));
     const SettingRange poissonRadius{SettingRangeKind::Closed, 0.5, kPenumbraTexels.high};
@@ -317,7 +317,7 @@ const ShadowSettingsField& shadowSettingsField(std::string_view path)
 
 std::span<const ShadowSettingsField> shadowSettingsFields()
 {
-    static const std::array<ShadowSettingsField, 29> fields = makeFields();
+    static const std::vector<ShadowSettingsField> fields = makeFields();
     return fields;
 }
 

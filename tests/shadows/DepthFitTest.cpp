@@ -85,7 +85,7 @@ TEST(DepthFit, PlannerFitsTheCascadesToTheVisibleDepths)
     const DirectionalShadowPlan fitted =
         planDirectionalShadows(settings, conventions, camera, lights, casters, ViewDepthRange{1.25f, 40.0f});
     ASSERT_EQ(fitted.lights.size(), 1u);
-    EXPECT_EQ(fitted.uniforms.cascadeProjection, static_cast<int>(CascadeProjection::DepthFit));
+    EXPECT_EQ(fitted.uniforms.cascadeProjection, CascadeProjection::DepthFit);
     for (std::uint32_t c = 0; c < 4; ++c) {
         const float stableTexel = stable.lights[0].cascades[c].fit.texelSize;
         EXPECT_EQ(fallback.lights[0].cascades[c].fit.texelSize, stableTexel);

@@ -81,7 +81,7 @@ private:
     DescriptorBinder descriptors_; // the graphics bind point's
     DescriptorBinder computeDescriptors_;
     const VulkanPipeline* pipeline_ = nullptr;
-    VulkanFramebuffer* framebuffer_ = nullptr; // the open pass's
+    const VulkanFramebuffer* framebuffer_ = nullptr; // the open pass's
     VkPipeline computePipeline_ = VK_NULL_HANDLE; // the bound one, restored after an emulated count draw
     DrawCountEmulation drawCounts_;
 };
