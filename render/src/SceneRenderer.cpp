@@ -2,6 +2,7 @@
 
 #include "FrameChecks.hpp"
 #include "FrameNotes.hpp"
+#include "FrameTargets.hpp"
 #include "EnvironmentMaps.hpp"
 #include "LocalLightTextures.hpp"
 #include "ShadowInputs.hpp"
@@ -42,8 +43,6 @@
 namespace penumbra::render {
 namespace {
 
-constexpr std::uint32_t kStandInAtlasSize = 16; // an atlas without tiles in use
-
 double millisecondsSince(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -72,26 +71,6 @@ SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_
     for (shadows::LocalAtlasTile& tile : plans.local.tiles)
         drop(tile.view.casters);
     return split;
-}
-
-std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& frame, const std::string& name)
-{
-    return device.createTexture({.width = frame.width,
-                                 .height = frame.height,
-                                 .format = kLitColorFormat,
-                                 .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
-                                 .debugName = name});
-}
-
-// The single-sampled depth is what the screen-space shadow collection reads.
-rhi::TextureDesc depthTargetDesc(const FrameDesc& frame, std::uint32_t samples)
-{
-    return {.width = frame.width,
-            .height = frame.height,
-            .format = kLitDepthFormat,
-            .usage = samples == 1 ? rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget
-                                  : rhi::TextureUsage::RenderTarget,
-            .samples = samples};
 }
 
 } // namespace
@@ -160,62 +139,6 @@ shadows::StaticShadowBake SceneRenderer::bakeStaticShadows(const std::string& co
         bake.maps.push_back(std::move(baked));
     }
     return bake;
-}
-
-void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
-{
-    checkFrameSize(frame);
-    // An atlas without a tile in use is a small stand-in: the lit pass reads no texel of it, and a full-size one
-    // would still be cleared every frame (what Catlike Coding's "Directional Shadows" tutorial, section "Shadow
-    // Atlas", avoids with its 1 x 1 dummy texture).
-    const shadows::DirectionalShadowSettings& directional = frame.shadows.directional;
-    const std::uint32_t atlasSize = plans.directional.lights.empty() ? kStandInAtlasSize : directional.atlasSize;
-    if (!atlas_ || atlas_->size() != atlasSize || atlas_->format() != directional.atlasFormat)
-        atlas_ = std::make_unique<shadows::ShadowAtlas>(device_, atlasSize, directional.atlasFormat,
-                                                        "directional shadow atlas");
-    const shadows::LocalShadowSettings& local = frame.shadows.local;
-    const std::uint32_t localSize = plans.local.tiles.empty() ? kStandInAtlasSize : local.atlasSize;
-    if (!localAtlas_ || localAtlas_->size() != localSize || localAtlas_->format() != local.atlasFormat) {
-        localAtlas_ =
-            std::make_unique<shadows::ShadowAtlas>(device_, localSize, local.atlasFormat, "local shadow atlas");
-        localTiles_->invalidate();
-    }
-    // Cube-map mode keeps room for every cube it may plan; otherwise one small cube stands in for the binding.
-    const bool cubeMode = local.pointMode == shadows::PointShadowMode::CubeMap;
-    const std::uint32_t faceSize = cubeMode ? local.cubeMapSize : 16;
-    const std::uint32_t cubeCount = cubeMode ? shadows::maxShadowCubes : 1;
-    if (!shadowCubes_ || shadowCubes_->faceSize() != faceSize || shadowCubes_->cubeCount() != cubeCount ||
-        shadowCubes_->format() != local.atlasFormat)
-        shadowCubes_ = std::make_unique<shadows::ShadowCubes>(device_, faceSize, cubeCount, local.atlasFormat);
-    if (frame.msaa > 1 && (!multisampledLitPipelines_ || multisampledLitPipelines_->samples() != frame.msaa))
-        multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, frame.msaa);
-    if (depthPrepass_->samples() != frame.msaa)
-        depthPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, frame.msaa);
-    if (frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit) {
-        if (!depthReduction_)
-            depthReduction_ = std::make_unique<DepthReduction>(device_);
-        if (frame.msaa > 1 && !depthFitPrepass_)
-            depthFitPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1);
-    }
-    const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
-    if (firstScreenSpace) {
-        receiverPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, true);
-        screenSpace_ = std::make_unique<ScreenSpaceShadowPass>(device_);
-    }
-    if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height) {
-        if (firstScreenSpace)
-            screenSpace_->prepare(*depth_);
-        return;
-    }
-    lit_ = colorTarget(device_, frame, "lit image");
-    cascades_ = colorTarget(device_, frame, "cascade view");
-    visibility_ = colorTarget(device_, frame, "visibility view");
-    rhi::TextureDesc depth = depthTargetDesc(frame, 1);
-    depth.debugName = "lit depth";
-    depth_ = device_.createTexture(depth);
-    graph_->dropFramebuffers();
-    if (screenSpace_)
-        screenSpace_->prepare(*depth_);
 }
 
 LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const FrameDesc& frame,
@@ -341,15 +264,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     storage_.reset();
     litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
                          uniforms_, instances_);
-    gpuScene_.casters(casters_);
-    if (!casterSkinning_)
-        for (shadows::ShadowCaster& caster : casters_)
-            for (std::uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh)
-                if (caster.vertices == &gpuScene_.vertices(mesh) && skinning_->restVertices(mesh))
-                    caster.vertices = skinning_->restVertices(mesh);
-    if (!frame.instancedDraws)
-        for (shadows::ShadowCaster& caster : casters_)
-            caster.drawGroup = shadows::kNoDrawGroup;
+    prepareCasters(frame);
     stats.staticMapUpdates = prepareStaticMaps(frame, std::move(plans.staticMaps));
     const shadows::StaticShadowUniforms& staticUniforms = staticShadows_->plan().uniforms;
     const std::optional<std::string> uncollected =
@@ -363,6 +278,19 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     state.litDraws = litDraws_;
     fillFrameBlocks(camera, frame);
     return stats;
+}
+
+void SceneRenderer::prepareCasters(const FrameDesc& frame)
+{
+    gpuScene_.casters(casters_);
+    if (!casterSkinning_)
+        for (shadows::ShadowCaster& caster : casters_)
+            for (std::uint32_t mesh = 0; mesh < gpuScene_.scene().meshes.size(); ++mesh)
+                if (caster.vertices == &gpuScene_.vertices(mesh) && skinning_->restVertices(mesh))
+                    caster.vertices = skinning_->restVertices(mesh);
+    if (!frame.instancedDraws)
+        for (shadows::ShadowCaster& caster : casters_)
+            caster.drawGroup = shadows::kNoDrawGroup;
 }
 
 // The blocks the frame's passes bind (FrameState): the shadow maps', the lit view's and the debug views'.

@@ -233,6 +233,9 @@ private:
     };
 
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
+    // The frame's casters: the scene's, drawn from rest vertices without caster skinning, one draw each without
+    // instancing.
+    void prepareCasters(const FrameDesc& frame);
     FrameStats prepareFrame(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans& plans);
     std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);

@@ -1,0 +1,95 @@
+#include "FrameTargets.hpp"
+
+#include "FrameChecks.hpp"
+#include "cache/LocalTileCache.hpp"
+#include "graph/FrameGraph.hpp"
+#include "passes/DepthPrepass.hpp"
+#include "passes/DepthReduction.hpp"
+#include "passes/LitPipelines.hpp"
+#include "passes/ScreenSpaceShadowPass.hpp"
+
+#include "penumbra/render/FrameResources.hpp"
+
+namespace penumbra::render {
+namespace {
+
+constexpr std::uint32_t kStandInAtlasSize = 16; // an atlas without tiles in use
+
+std::unique_ptr<rhi::Texture> colorTarget(rhi::Device& device, const FrameDesc& frame, const std::string& name)
+{
+    return device.createTexture({.width = frame.width,
+                                 .height = frame.height,
+                                 .format = kLitColorFormat,
+                                 .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
+                                 .debugName = name});
+}
+
+} // namespace
+
+rhi::TextureDesc depthTargetDesc(const FrameDesc& frame, std::uint32_t samples)
+{
+    return {.width = frame.width,
+            .height = frame.height,
+            .format = kLitDepthFormat,
+            .usage = samples == 1 ? rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget
+                                  : rhi::TextureUsage::RenderTarget,
+            .samples = samples};
+}
+
+void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
+{
+    checkFrameSize(frame);
+    // An atlas without a tile in use is a small stand-in: the lit pass reads no texel of it, and a full-size one
+    // would still be cleared every frame (what Catlike Coding's "Directional Shadows" tutorial, section "Shadow
+    // Atlas", avoids with its 1 x 1 dummy texture).
+    const shadows::DirectionalShadowSettings& directional = frame.shadows.directional;
+    const std::uint32_t atlasSize = plans.directional.lights.empty() ? kStandInAtlasSize : directional.atlasSize;
+    if (!atlas_ || atlas_->size() != atlasSize || atlas_->format() != directional.atlasFormat)
+        atlas_ = std::make_unique<shadows::ShadowAtlas>(device_, atlasSize, directional.atlasFormat,
+                                                        "directional shadow atlas");
+    const shadows::LocalShadowSettings& local = frame.shadows.local;
+    const std::uint32_t localSize = plans.local.tiles.empty() ? kStandInAtlasSize : local.atlasSize;
+    if (!localAtlas_ || localAtlas_->size() != localSize || localAtlas_->format() != local.atlasFormat) {
+        localAtlas_ =
+            std::make_unique<shadows::ShadowAtlas>(device_, localSize, local.atlasFormat, "local shadow atlas");
+        localTiles_->invalidate();
+    }
+    // Cube-map mode keeps room for every cube it may plan; otherwise one small cube stands in for the binding.
+    const bool cubeMode = local.pointMode == shadows::PointShadowMode::CubeMap;
+    const std::uint32_t faceSize = cubeMode ? local.cubeMapSize : 16;
+    const std::uint32_t cubeCount = cubeMode ? shadows::maxShadowCubes : 1;
+    if (!shadowCubes_ || shadowCubes_->faceSize() != faceSize || shadowCubes_->cubeCount() != cubeCount ||
+        shadowCubes_->format() != local.atlasFormat)
+        shadowCubes_ = std::make_unique<shadows::ShadowCubes>(device_, faceSize, cubeCount, local.atlasFormat);
+    if (frame.msaa > 1 && (!multisampledLitPipelines_ || multisampledLitPipelines_->samples() != frame.msaa))
+        multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, frame.msaa);
+    if (depthPrepass_->samples() != frame.msaa)
+        depthPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, frame.msaa);
+    if (frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit) {
+        if (!depthReduction_)
+            depthReduction_ = std::make_unique<DepthReduction>(device_);
+        if (frame.msaa > 1 && !depthFitPrepass_)
+            depthFitPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1);
+    }
+    const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
+    if (firstScreenSpace) {
+        receiverPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, true);
+        screenSpace_ = std::make_unique<ScreenSpaceShadowPass>(device_);
+    }
+    if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height) {
+        if (firstScreenSpace)
+            screenSpace_->prepare(*depth_);
+        return;
+    }
+    lit_ = colorTarget(device_, frame, "lit image");
+    cascades_ = colorTarget(device_, frame, "cascade view");
+    visibility_ = colorTarget(device_, frame, "visibility view");
+    rhi::TextureDesc depth = depthTargetDesc(frame, 1);
+    depth.debugName = "lit depth";
+    depth_ = device_.createTexture(depth);
+    graph_->dropFramebuffers();
+    if (screenSpace_)
+        screenSpace_->prepare(*depth_);
+}
+
+} // namespace penumbra::render
