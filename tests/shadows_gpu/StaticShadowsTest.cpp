@@ -384,13 +384,16 @@ TEST_F(StaticShadowsTest, ALightWithoutRealtimeTilesKeepsItsStaticShadow)
     scene::Scene scene = boxesUnderASpot();
     scene.lights.clear();
     scene.spotLights.clear();
-    // Three point lights need 18 tiles of the 16 the realtime atlas has: the third gets none.
+    // Three point lights need 18 tiles; a 256^2 realtime atlas whose tiles may not go below 128^2 holds 4, so none
+    // of them keeps realtime tiles.
     for (int i = 0; i < 3; ++i)
         scene.pointLights.push_back({.name = "bulb " + std::to_string(i + 1),
                                      .intensity = 20.0f,
                                      .position = {-3.0f + 3.0f * static_cast<float>(i), 2.5f, 1.0f},
                                      .range = 10.0f});
     render::FrameDesc frame = staticMapsFrame();
+    frame.shadows.local.atlasSize = 256;
+    frame.shadows.local.minTileResolution = 128;
     frame.visibilityOf = scene::LightRef{scene::LightKind::Point, 2};
     render::SceneRenderer renderer(*device, scene);
     const auto shadowed = [&](std::vector<std::string>& notes) {
