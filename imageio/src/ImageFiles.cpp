@@ -68,6 +68,19 @@ void writeEncoded(const std::filesystem::path& path, Encode encode)
     rhi::writeFileAtomically(path, encoded);
 }
 
+// What `read` returns, with what OpenEXR throws turned into an rhi::Error naming `path` (ours pass as they are).
+template <class Read>
+FloatImage readingExr(const std::filesystem::path& path, Read read)
+{
+    try {
+        return read();
+    } catch (const rhi::Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw rhi::Error(fmt::format("{}: cannot read the EXR: {}", path.string(), e.what()));
+    }
+}
+
 } // namespace
 
 std::optional<std::size_t> FloatImage::channelIndex(std::string_view name) const
@@ -122,7 +135,7 @@ FloatImage readHdr(const std::filesystem::path& path)
 
 FloatImage readExrColor(const std::filesystem::path& path)
 {
-    try {
+    return readingExr(path, [&] {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i window = file.header().dataWindow();
         FloatImage image{std::uint32_t(window.max.x - window.min.x + 1),
@@ -137,11 +150,7 @@ FloatImage readExrColor(const std::filesystem::path& path)
         file.setFrameBuffer(frameBuffer(image, image.values.data(), window.min.x, window.min.y));
         file.readPixels(window.min.y, window.max.y);
         return image;
-    } catch (const rhi::Error&) {
-        throw;
-    } catch (const std::exception& e) {
-        throw rhi::Error(fmt::format("{}: cannot read the EXR: {}", path.string(), e.what()));
-    }
+    });
 }
 
 void writePngFile(const std::filesystem::path& path, const rhi::Image& image)
@@ -174,7 +183,7 @@ std::string encodeExr(const FloatImage& image)
 
 FloatImage readExr(const std::filesystem::path& path)
 {
-    try {
+    return readingExr(path, [&] {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i window = file.header().dataWindow();
         FloatImage image;
@@ -191,11 +200,7 @@ FloatImage readExr(const std::filesystem::path& path)
         file.setFrameBuffer(frameBuffer(image, image.values.data(), window.min.x, window.min.y));
         file.readPixels(window.min.y, window.max.y);
         return image;
-    } catch (const rhi::Error&) {
-        throw;
-    } catch (const std::exception& e) {
-        throw rhi::Error(fmt::format("{}: cannot read the EXR: {}", path.string(), e.what()));
-    }
+    });
 }
 
 void writeExrFile(const std::filesystem::path& path, const FloatImage& image)
