@@ -25,34 +25,52 @@ std::string_view bindingKindName(BindingKind kind)
     return "storage texture";
 }
 
+namespace {
+
+// What a uniform or storage range must keep: its buffer's usage, a size limit and an offset alignment (Capabilities).
+struct RangeRule {
+    std::string_view kind; // "uniform", "storage"
+    BufferUsage usage;
+    std::string_view usageName;
+    std::uint64_t maxRange;
+    std::string_view maxRangeName;
+    std::uint64_t alignment;
+    std::string_view alignmentName;
+};
+
+void checkRange(std::string_view what, const RangeRule& rule, std::uint32_t binding, const BufferDesc& buffer,
+                std::uint64_t offset, std::uint64_t size)
+{
+    checkBufferUsage(what, buffer, rule.usage, rule.usageName);
+    if (size == 0)
+        throw Error(fmt::format("{}: binding {}: a {} range needs at least 1 byte", what, binding, rule.kind));
+    if (size > rule.maxRange)
+        throw Error(fmt::format("{}: binding {}: {} bytes exceed Capabilities::{} ({})", what, binding, size,
+                                rule.maxRangeName, rule.maxRange));
+    checkBufferRange(what, buffer, offset, size);
+    if (offset % rule.alignment != 0)
+        throw Error(fmt::format("{}: offset {} is not a multiple of Capabilities::{} ({})", what, offset,
+                                rule.alignmentName, rule.alignment));
+}
+
+} // namespace
+
 void checkUniformRange(std::string_view what, const Capabilities& caps, std::uint32_t binding, const BufferDesc& buffer,
                        std::uint64_t offset, std::uint64_t size)
 {
-    checkBufferUsage(what, buffer, BufferUsage::Uniform, "Uniform");
-    if (size == 0)
-        throw Error(fmt::format("{}: binding {}: a uniform range needs at least 1 byte", what, binding));
-    if (size > caps.maxUniformBufferRange)
-        throw Error(fmt::format("{}: binding {}: {} bytes exceed Capabilities::maxUniformBufferRange ({})", what,
-                                binding, size, caps.maxUniformBufferRange));
-    checkBufferRange(what, buffer, offset, size);
-    if (offset % caps.uniformBufferOffsetAlignment != 0)
-        throw Error(fmt::format("{}: offset {} is not a multiple of Capabilities::uniformBufferOffsetAlignment ({})",
-                                what, offset, caps.uniformBufferOffsetAlignment));
+    checkRange(what,
+               {"uniform", BufferUsage::Uniform, "Uniform", caps.maxUniformBufferRange, "maxUniformBufferRange",
+                caps.uniformBufferOffsetAlignment, "uniformBufferOffsetAlignment"},
+               binding, buffer, offset, size);
 }
 
 void checkStorageRange(std::string_view what, const Capabilities& caps, std::uint32_t binding, const BufferDesc& buffer,
                        std::uint64_t offset, std::uint64_t size)
 {
-    checkBufferUsage(what, buffer, BufferUsage::Storage, "Storage");
-    if (size == 0)
-        throw Error(fmt::format("{}: binding {}: a storage range needs at least 1 byte", what, binding));
-    if (size > caps.maxStorageBufferRange)
-        throw Error(fmt::format("{}: binding {}: {} bytes exceed Capabilities::maxStorageBufferRange ({})", what,
-                                binding, size, caps.maxStorageBufferRange));
-    checkBufferRange(what, buffer, offset, size);
-    if (offset % caps.storageBufferOffsetAlignment != 0)
-        throw Error(fmt::format("{}: offset {} is not a multiple of Capabilities::storageBufferOffsetAlignment ({})",
-                                what, offset, caps.storageBufferOffsetAlignment));
+    checkRange(what,
+               {"storage", BufferUsage::Storage, "Storage", caps.maxStorageBufferRange, "maxStorageBufferRange",
+                caps.storageBufferOffsetAlignment, "storageBufferOffsetAlignment"},
+               binding, buffer, offset, size);
 }
 
 void checkStorageTextureBinding(std::string_view what, const Texture& texture, std::uint32_t level)
