@@ -21,6 +21,8 @@ std::string_view glslType(const ShaderField& field)
         return "vec3";
     case FieldType::Vec4:
         return "vec4";
+    case FieldType::IVec2:
+        return "ivec2";
     case FieldType::IVec4:
         return "ivec4";
     case FieldType::Mat4:

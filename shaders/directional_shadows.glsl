@@ -56,21 +56,21 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
     return s;
 }
 
-// Tile tileMin..tileMax of a directional depth atlas filtered at atlas position (u, v, depth) by `filterIndex`: the
+// Tile `bounds` of a directional depth atlas filtered at atlas position (u, v, depth) by `filterIndex`: the
 // tent filters, or the Poisson and PCSS filters with the tile's soft data, the light's tan of half its angular diameter and the world size of a tile texel. `toAtlas` turns the
 // receiver's screen derivatives into atlas units. The realtime cascades and the static maps (static_shadows.glsl)
 // both filter through it.
-float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize, ivec2 tileMin, ivec2 tileMax,
+float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize, TileTexelBounds bounds,
                             int filterIndex, mat3 toAtlas, DirectionalTileSoft tileSoft, float tanHalfAngle,
                             float texelWorld)
 {
 #if PENUMBRA_SOFT_FILTERS
     if (filterIndex < PENUMBRA_FILTER_FIRST_POISSON_DISK)
 #endif
-        return filterShadowTile(atlas, atlasPosition, atlasSize, filterIndex, tileMin, tileMax);
+        return filterShadowTile(atlas, atlasPosition, atlasSize, filterIndex, bounds.first, bounds.last);
 #if PENUMBRA_SOFT_FILTERS
     const SoftTile t =
-        softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, atlasSize, tileMin, tileMax,
+        softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, atlasSize, bounds.first, bounds.last,
                  tileSoft.lightTexelAnchor);
     return directionalSoftShadow(atlas, t, filterIndex, shadows.soft, tileSoft.depthRow, tanHalfAngle, texelWorld);
 #endif
@@ -79,8 +79,7 @@ float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize
 // The directional atlas's tile `tile` filtered at atlas position (u, v, depth) by light `slot`'s filter.
 float filterDirectionalShadow(vec3 atlasPosition, int tile, int cascade, int slot)
 {
-    const vec4 bounds = shadows.tileBounds[tile];
-    return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize, ivec2(bounds.xy), ivec2(bounds.zw),
+    return filterDirectionalTile(shadowAtlas, atlasPosition, shadows.atlasSize, shadows.tileBounds[tile],
                                  shadows.lights[slot].shadowFilter, mat3(shadows.worldToAtlas[tile]), shadows.tileSoft[tile],
                                  shadows.lights[slot].tanHalfAngle, shadows.cascades[cascade].texelWorldSize);
 }

@@ -77,7 +77,7 @@ vec3 frontNormal()
     const vec3 t = normalize(vTangent.xyz - n * dot(n, vTangent.xyz));
     const vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
     vec3 mapped = sampleMap(normalMap, PENUMBRA_TEXTURE_NORMAL).xyz * 2.0 - 1.0;
-    mapped.xy *= object.normal.x;
+    mapped.xy *= object.normalScale;
     return normalize(mat3(t, b, n) * mapped);
 }
 
@@ -86,6 +86,13 @@ const vec3 cascadeColors[5] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25
 
 // Spot or point light i at the fragment: its texels (PENUMBRA_LOCAL_*), direction towards it and the light that
 // arrives before N.L.
+// Local light i's static map (LocalLightTexel::StaticMap: its first tile or -1, its strength).
+StaticLocalLightMap staticLocalLightMap(int i)
+{
+    const vec4 texel = localLightTexel(i, PENUMBRA_LOCAL_STATIC_MAP);
+    return StaticLocalLightMap(int(texel.x), texel.y);
+}
+
 struct LocalLight {
     vec4 position;
     vec4 color;
@@ -139,16 +146,16 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
     const int i = index - frame.directionalLightCount;
     const LocalLight light = localLight(i);
     const vec4 shadow = light.shadow;
-    const vec4 map = localLightTexel(i, PENUMBRA_LOCAL_STATIC_MAP);
+    const StaticLocalLightMap map = staticLocalLightMap(i);
     const bool realtime = shadow.z >= 0.0 && globalStrength > 0.0;
-    const bool fromStatic = map.x >= 0.0;
+    const bool fromStatic = map.tile >= 0;
     if (!receives || dot(n, light.l) <= 0.0 || light.falloff <= 0.0 || !(realtime || fromStatic))
         return vec4(1.0, 1.0, 1.0, 0.0);
     const vec3 lightPosition = light.position.xyz;
     const vec3 axis = light.axis;
     const float visibility =
         realtime ? localShadowVisibility(int(shadow.z), light.isPoint, lightPosition, axis, vPosition, geometric) : 1.0;
-    return vec4(vec3(fromStatic ? min(visibility, staticLocalVisibility(int(map.x), light.isPoint, lightPosition, axis,
+    return vec4(vec3(fromStatic ? min(visibility, staticLocalVisibility(map.tile, light.isPoint, lightPosition, axis,
                                                                         vPosition, geometric))
                                 : visibility),
                 1.0);
@@ -156,7 +163,7 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
 
 void main()
 {
-    const int casterMode = int(object.surface.w);
+    const int casterMode = object.casterMode;
     const bool textured = hasMap(PENUMBRA_TEXTURE_BASE_COLOR);
     const vec2 baseUv = transformedUv(uvRows(PENUMBRA_TEXTURE_BASE_COLOR), vUv, vUv1);
     const vec4 texel = textured ? texture(baseColorMap, baseUv) : vec4(1.0);
@@ -167,7 +174,7 @@ void main()
 #else
     const float textureAlpha = textured ? texture(coverageMap, baseUv).a : 1.0;
     const float alpha = materialAlpha(object.baseColor.a, casterMode, baseUv, textured, textureAlpha) * vColor.a;
-    if (casterMode == PENUMBRA_CASTER_CLIP && alpha < object.surface.z)
+    if (casterMode == PENUMBRA_CASTER_CLIP && alpha < object.alphaCutoff)
         discard;
     // Blended surfaces cover by their alpha; everything else is opaque.
     const float coverage = object.blended != 0 ? alpha : 1.0;
@@ -197,9 +204,9 @@ void main()
 #else
 
     const vec4 metalRough = sampleMap(metallicRoughnessMap, PENUMBRA_TEXTURE_METALLIC_ROUGHNESS);
-    const float metallic = object.surface.x * metalRough.b;
-    const float roughness = max(object.surface.y * metalRough.g, MIN_ROUGHNESS);
-    const float occlusion = 1.0 + object.emissive.w * (sampleMap(occlusionMap, PENUMBRA_TEXTURE_OCCLUSION).r - 1.0);
+    const float metallic = object.metallic * metalRough.b;
+    const float roughness = max(object.roughness * metalRough.g, MIN_ROUGHNESS);
+    const float occlusion = 1.0 + object.occlusionStrength * (sampleMap(occlusionMap, PENUMBRA_TEXTURE_OCCLUSION).r - 1.0);
     // The environment's diffuse and specular light, which shadows do not darken; without one, a sky/ground
     // hemisphere: the ambient colour from above, the ground colour from below.
     const vec3 ambient = mix(frame.ambientGround.rgb, frame.ambient.rgb, 0.5 + 0.5 * n.y);
@@ -241,7 +248,7 @@ void main()
             continue;
         const bool receives = object.receivesShadows != 0;
 #if PENUMBRA_STATIC_SHADOWS
-        const float attenuation = localAttenuation(localLightTexel(i, PENUMBRA_LOCAL_STATIC_MAP), light.shadow.zw,
+        const float attenuation = localAttenuation(staticLocalLightMap(i), light.shadow.zw,
                                                    receives, light.isPoint, light.position.xyz, light.axis, vPosition,
                                                    geometric, globalStrength);
 #else
@@ -254,7 +261,7 @@ void main()
     }
 #endif
     // Emissive textures are RGBA8_SRGB too: already linear when sampled.
-    color += object.emissive.rgb * sampleMap(emissiveMap, PENUMBRA_TEXTURE_EMISSIVE).rgb;
+    color += object.emissive * sampleMap(emissiveMap, PENUMBRA_TEXTURE_EMISSIVE).rgb;
 #if PENUMBRA_LIT_VIEW == PENUMBRA_VIEW_CASCADES
     color = mix(color, cascadeColors[min(cascade.index, 4)] * 0.8, 0.6);
 #endif

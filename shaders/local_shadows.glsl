@@ -55,20 +55,20 @@ vec4 localShadowPosition(mat4 worldToAtlas, float biasScale, vec3 plane, vec3 fr
     return transformPoint(worldToAtlas, biased);
 }
 
-// A perspective tile (first and last texel `bounds`) of a depth atlas at the receiver's projected position `p`
+// A perspective tile (its texels `bounds`) of a depth atlas at the receiver's projected position `p`
 // (worldToAtlas x its position, before the divide by w), filtered by `filterIndex`: the tent filters, or the Poisson
 // and PCSS filters with the tile's soft data. The realtime tiles and the static maps (static_shadows.glsl) both filter through it.
-float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 p, vec4 bounds, int filterIndex,
+float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 p, TileTexelBounds bounds, int filterIndex,
                       PerspectiveTileSoft tileSoft)
 {
 #if PENUMBRA_SOFT_FILTERS
     if (filterIndex < PENUMBRA_FILTER_FIRST_POISSON_DISK)
 #endif
-        return filterShadowTile(atlas, p.xyz / p.w, atlasSize, filterIndex, ivec2(bounds.xy), ivec2(bounds.zw));
+        return filterShadowTile(atlas, p.xyz / p.w, atlasSize, filterIndex, bounds.first, bounds.last);
 #if PENUMBRA_SOFT_FILTERS
     const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(worldToAtlas, p, receiverDx),
-                                projectedDerivative(worldToAtlas, p, receiverDy), atlasSize, ivec2(bounds.xy),
-                                ivec2(bounds.zw), vec2(0.0));
+                                projectedDerivative(worldToAtlas, p, receiverDy), atlasSize, bounds.first,
+                                bounds.last, vec2(0.0));
     return perspectiveSoftShadow(atlas, t, filterIndex, localShadows.soft,
                                  tileSoft);
 #endif
@@ -82,8 +82,7 @@ float localAtlasShadow(int firstTile, bool isPoint, vec3 lightPosition, vec3 axi
     const LocalTile local = localTile(firstTile, isPoint, axis, fromLight);
     const LocalAtlasTileData t = localShadowTiles.tiles[local.tile];
     const vec4 p = localShadowPosition(t.worldToAtlas, t.normalBias, local.plane, fromLight, position, normal);
-    return filterLocalTile(localShadowAtlas, localShadows.atlasSize, t.worldToAtlas, p, t.bounds, t.shadowFilter,
-                           PerspectiveTileSoft(t.soft.xy, t.soft.z, t.soft.w));
+    return filterLocalTile(localShadowAtlas, localShadows.atlasSize, t.worldToAtlas, p, t.bounds, t.shadowFilter, t.soft);
 }
 
 // Cube-map mode's soft filters: taps are directions d + x u + y v (u, v one texel of the face at the receiver), read

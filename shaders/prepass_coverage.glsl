@@ -12,6 +12,6 @@ void discardClipHoles()
     const float textureAlpha = textured ? texture(coverageMap, baseUv).a : 1.0;
     const float alpha =
         materialAlpha(object.baseColor.a, PENUMBRA_CASTER_CLIP, baseUv, textured, textureAlpha) * vColor.a;
-    if (alpha < object.surface.z)
+    if (alpha < object.alphaCutoff)
         discard;
 }

@@ -16,15 +16,15 @@ float staticDirectionalVisibility(StaticDirectionalLight light, vec3 position, v
 {
     const int tile = light.tile;
     precise vec3 biased = position + receiverNormalOffset(normal, towardsLight, light.normalOffset);
-    const vec4 bounds = staticShadows.directionalBounds[tile];
+    const TileTexelBounds bounds = staticShadows.directionalBounds[tile];
     const vec3 p = transformPoint(staticShadows.directionalWorldToMap[tile], biased).xyz;
     // The map covers the static casters' bounding sphere: a receiver beside it (a dynamic object moved away) has no
     // static caster between it and the light.
     const vec2 texel = p.xy * staticShadows.directionalAtlasSize;
-    if (any(lessThan(texel, bounds.xy)) || any(greaterThan(texel, bounds.zw + 1.0)))
+    if (any(lessThan(texel, vec2(bounds.first))) || any(greaterThan(texel, vec2(bounds.last) + 1.0)))
         return 1.0;
-    return filterDirectionalTile(staticDirectionalAtlas, p, staticShadows.directionalAtlasSize, ivec2(bounds.xy),
-                                 ivec2(bounds.zw), light.shadowFilter, mat3(staticShadows.directionalWorldToMap[tile]),
+    return filterDirectionalTile(staticDirectionalAtlas, p, staticShadows.directionalAtlasSize, bounds,
+                                 light.shadowFilter, mat3(staticShadows.directionalWorldToMap[tile]),
                                  staticShadows.directionalSoft[tile], staticShadows.directionalSource[tile].tanHalfAngle,
                                  staticShadows.directionalSource[tile].texelWorldSize);
 }
@@ -54,16 +54,16 @@ float directionalAttenuation(int light, int slot, bool receives, CascadeSelectio
     return mix(1.0, min(realtime, staticDirectionalVisibility(map, position, normal, towardsLight)), map.strength);
 }
 
-// A spot or point light (`map` its static map's first tile or -1 and strength, `shadow` its first realtime tile or
-// cube, or -1, and its strength) at a receiver, 1 = lit. `strength` is the global one (distance fade).
-float localAttenuation(vec4 map, vec2 shadow, bool receives, bool isPoint, vec3 lightPosition, vec3 axis,
+// A spot or point light (`map` its static map, `shadow` its first realtime tile or cube, or -1, and its strength) at
+// a receiver, 1 = lit. `strength` is the global one (distance fade).
+float localAttenuation(StaticLocalLightMap map, vec2 shadow, bool receives, bool isPoint, vec3 lightPosition, vec3 axis,
                        vec3 position, vec3 normal, float strength)
 {
     if (!receives)
         return 1.0;
-    if (map.x < 0.0)
+    if (map.tile < 0)
         return localShadowAttenuation(shadow, isPoint, lightPosition, axis, position, normal, strength);
     const float realtime = localRealtimeShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal, strength);
-    return mix(1.0, min(realtime, staticLocalVisibility(int(map.x), isPoint, lightPosition, axis, position, normal)),
-               map.y);
+    return mix(1.0, min(realtime, staticLocalVisibility(map.tile, isPoint, lightPosition, axis, position, normal)),
+               map.strength);
 }

@@ -124,7 +124,8 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
                                              kLitLocalShadowTilesBinding, "tiles", "localShadowTiles")});
     source.includes.push_back(
         {"static_shadows_block.glsl",
-         shaders::uniformBlockGlsl(shadows::kStaticShadowBlock, kLitStaticShadowBinding, "staticShadows")});
+         shaders::uniformBlockGlsl(shadows::kStaticShadowBlock, kLitStaticShadowBinding, "staticShadows") +
+             shaders::structGlsl(shadows::kStaticLocalLightMapStruct)});
     return source;
 }
 

@@ -45,9 +45,12 @@ std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows
 {
     std::vector<glm::vec4> texels;
     texels.reserve((scene.spotLights.size() + scene.pointLights.size()) * kLocalLightTexels);
+    // LocalLightTexel::StaticMap: the map's first tile or -1, its strength.
     const auto staticMap = [&](std::size_t light) {
-        return light < staticPlan.localLightMaps.size() ? staticPlan.localLightMaps[light]
-                                                        : glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f);
+        const shadows::StaticLocalLightMap map = light < staticPlan.localLightMaps.size()
+                                                     ? staticPlan.localLightMaps[light]
+                                                     : shadows::StaticLocalLightMap{};
+        return glm::vec4(static_cast<float>(map.tile), map.strength, 0.0f, 0.0f);
     };
     for (std::size_t i = 0; i < scene.spotLights.size(); ++i) {
         const scene::SpotLight& l = scene.spotLights[i];

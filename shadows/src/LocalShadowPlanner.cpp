@@ -133,15 +133,16 @@ void addTile(LocalShadowPlan& plan, TilePlace place, LocalShadowView view, float
              const SoftProjection& soft, const rhi::Conventions& conventions)
 {
     const auto tile = static_cast<std::uint32_t>(plan.tiles.size());
-    const glm::vec2 first(place.offset);
+    const glm::ivec2 first(place.offset);
     plan.tileData.push_back(
         {.worldToAtlas = worldToAtlas(view.viewProjection, place.offset, place.size, plan.atlasSize, conventions),
-         .bounds = {first, first + static_cast<float>(place.size - 1)},
-         .soft = glm::vec4(soft.tileSoft.depthRow, soft.tileSoft.lightTexels, soft.tileSoft.nearPlane),
+         .bounds = {first, first + static_cast<int>(place.size - 1)},
+         .soft = soft.tileSoft,
          .normalBias = normalBiasScale,
-         .shadowFilter = static_cast<std::int32_t>(soft.filter)});
+         .shadowFilter = soft.filter});
     const auto size = static_cast<float>(place.size);
-    plan.tiles.push_back({std::move(view), tile, {first.x, first.y, size, size}});
+    plan.tiles.push_back(
+        {std::move(view), tile, {static_cast<float>(first.x), static_cast<float>(first.y), size, size}});
 }
 
 void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot,
@@ -190,7 +191,7 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
     const ShadowFilter filter = point.filter.value_or(local.filter);
     const float bias = localNormalBiasScale(projection, local.cubeMapSize, filter, point.normalBias);
     LocalShadowCube& shadowCube = plan.uniforms.cubes[plan.cubes.size()];
-    shadowCube.shadowFilter = static_cast<std::int32_t>(filter);
+    shadowCube.shadowFilter = filter;
     shadowCube.lightTexels = point.sourceRadius / std::abs(texelSizeAtUnitDistance(projection, local.cubeMapSize));
     shadowCube.nearPlane = nearPlane;
     ShadowCube cube;
@@ -325,8 +326,8 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
         planCube(plan, local, points[pointIndex], pointIndex, conventions, casterBounds);
 
     plan.uniforms.atlasSize = static_cast<float>(local.atlasSize);
-    plan.uniforms.defaultFilter = static_cast<int>(local.filter);
-    plan.uniforms.pointMode = static_cast<int>(local.pointMode);
+    plan.uniforms.defaultFilter = local.filter;
+    plan.uniforms.pointMode = local.pointMode;
     plan.uniforms.soft = softShadowUniforms(settings.soft);
     return plan;
 }

@@ -38,10 +38,10 @@ glm::uvec2 ShadowAtlasLayout::tileCoordinates(std::uint32_t tile) const { return
 
 glm::uvec2 ShadowAtlasLayout::tileOffset(std::uint32_t tile) const { return tileCoordinates(tile) * tileSize(); }
 
-glm::vec4 ShadowAtlasLayout::tileTexelBounds(std::uint32_t tile) const
+TileTexelBounds ShadowAtlasLayout::tileTexelBounds(std::uint32_t tile) const
 {
-    const glm::vec2 first(tileOffset(tile));
-    return {first, first + static_cast<float>(tileSize() - 1)};
+    const glm::ivec2 first(tileOffset(tile));
+    return {first, first + static_cast<int>(tileSize() - 1)};
 }
 
 rhi::Viewport ShadowAtlasLayout::viewport(std::uint32_t tile) const

@@ -35,7 +35,7 @@ TEST(ShadowAtlasLayout, WithThreeCutsFiveToNineTilesThreeByThree)
     const ShadowAtlasLayout layout(2048, 7, AtlasSplits::WithThree);
     EXPECT_EQ(layout.tileSize(), 682u);
     EXPECT_EQ(layout.tileOffset(5), glm::uvec2(1364, 682));
-    EXPECT_EQ(layout.tileTexelBounds(8), glm::vec4(1364, 1364, 2045, 2045));
+    EXPECT_EQ(layout.tileTexelBounds(8), (TileTexelBounds{{1364, 1364}, {2045, 2045}}));
     // Tile uv (0, 0) and (1, 1) land on the tile's first texel's corner and its last texel's far corner.
     const glm::vec4 topLeft = layout.tileToAtlas(5) * glm::vec4(0.0f, 0.0f, 0.3f, 1.0f);
     const glm::vec4 bottomRight = layout.tileToAtlas(5) * glm::vec4(1.0f, 1.0f, 0.3f, 1.0f);

@@ -159,7 +159,11 @@ TEST(LocalAtlas, TilesArePackedWithoutOverlapAndTheirBoundsAreTheirTexels)
     for (std::uint32_t t = 0; t < plan.tiles.size(); ++t) {
         const rhi::Viewport& v = plan.tiles[t].viewport;
         EXPECT_EQ(plan.tiles[t].tile, t);
-        EXPECT_EQ(plan.tileData[t].bounds, glm::vec4(v.x, v.y, v.x + v.width - 1, v.y + v.height - 1)) << t;
+        const glm::ivec2 first(static_cast<int>(v.x), static_cast<int>(v.y));
+        EXPECT_EQ(plan.tileData[t].bounds,
+                  (TileTexelBounds{first,
+                                   first + glm::ivec2(static_cast<int>(v.width), static_cast<int>(v.height)) - 1}))
+            << t;
     }
     expectDisjointTiles(plan);
 }

@@ -416,15 +416,15 @@ TEST(SoftPlannerTest, LocalLightsCarryTheirFilterRadiusAndNearPlane)
                                                       std::span(&spot, 1), std::span(&point, 1), casters);
         const int tile = plan.spotTiles[0];
         ASSERT_GE(tile, 0);
-        EXPECT_EQ(plan.tileData[tile].shadowFilter, static_cast<int>(ShadowFilter::PCSS));
+        EXPECT_EQ(plan.tileData[tile].shadowFilter, ShadowFilter::PCSS);
         // lightTexels = R x tile size x P[0][0] / 2.
         const float p00 = 1.0f / std::tan(spot.outerAngle);
-        EXPECT_NEAR(plan.tileData[tile].soft.z, 0.2f * plan.tiles[tile].viewport.width * p00 / 2.0f, 1e-3f);
-        EXPECT_NEAR(plan.tileData[tile].soft.w, 0.01f * spot.range, 1e-6f);
+        EXPECT_NEAR(plan.tileData[tile].soft.lightTexels, 0.2f * plan.tiles[tile].viewport.width * p00 / 2.0f, 1e-3f);
+        EXPECT_NEAR(plan.tileData[tile].soft.nearPlane, 0.01f * spot.range, 1e-6f);
         if (mode == PointShadowMode::CubeMap)
-            EXPECT_EQ(plan.uniforms.cubes[0].shadowFilter, static_cast<int>(ShadowFilter::Poisson));
+            EXPECT_EQ(plan.uniforms.cubes[0].shadowFilter, ShadowFilter::Poisson);
         else
-            EXPECT_EQ(plan.tileData[plan.pointShadows[0]].shadowFilter, static_cast<int>(ShadowFilter::Poisson));
+            EXPECT_EQ(plan.tileData[plan.pointShadows[0]].shadowFilter, ShadowFilter::Poisson);
     }
 }
 

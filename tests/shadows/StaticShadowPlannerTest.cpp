@@ -49,16 +49,16 @@ TEST(StaticShadowPlanner, DirectionalMapHoldsEveryStaticCasterInsideItsTile)
             EXPECT_EQ(map.kind, LightKind::Directional);
             ASSERT_EQ(map.tiles.size(), 1u);
             EXPECT_EQ(map.tiles[0].casters, kStatic);
-            const glm::vec4 bounds = plan.uniforms.directionalBounds[map.tiles[0].tile];
+            const TileTexelBounds bounds = plan.uniforms.directionalBounds[map.tiles[0].tile];
             const float size = static_cast<float>(plan.directionalAtlas.atlasSize());
             for (const std::uint32_t i : kStatic)
                 for (const glm::vec3& corner : kBounds[i].corners()) {
                     const glm::vec4 p =
                         plan.uniforms.directionalWorldToMap[map.tiles[0].tile] * glm::vec4(corner, 1.0f);
-                    EXPECT_GE(p.x * size, bounds.x);
-                    EXPECT_LE(p.x * size, bounds.z + 1.0f);
-                    EXPECT_GE(p.y * size, bounds.y);
-                    EXPECT_LE(p.y * size, bounds.w + 1.0f);
+                    EXPECT_GE(p.x * size, static_cast<float>(bounds.first.x));
+                    EXPECT_LE(p.x * size, static_cast<float>(bounds.last.x) + 1.0f);
+                    EXPECT_GE(p.y * size, static_cast<float>(bounds.first.y));
+                    EXPECT_LE(p.y * size, static_cast<float>(bounds.last.y) + 1.0f);
                     // Between the near and the far plane in window depth, whichever way depth runs.
                     EXPECT_GE(p.z, -1e-4f);
                     EXPECT_LE(p.z, 1.0f + 1e-4f);
@@ -85,9 +85,9 @@ TEST(StaticShadowPlanner, SpotAndPointMapsTakeTilesInTheLitPassOrder)
     // The spot light sees the first box below it, never the dynamic one's index.
     EXPECT_EQ(plan.maps[0].tiles[0].casters, std::vector<std::uint32_t>{0});
     ASSERT_EQ(plan.localLightMaps.size(), 3u);
-    EXPECT_EQ(plan.localLightMaps[0].x, 0.0f);
-    EXPECT_EQ(plan.localLightMaps[1].x, -1.0f); // no strength, no map
-    EXPECT_EQ(plan.localLightMaps[2].x, 1.0f); // the point light after both spot lights
+    EXPECT_EQ(plan.localLightMaps[0].tile, 0);
+    EXPECT_EQ(plan.localLightMaps[1].tile, -1); // no strength, no map
+    EXPECT_EQ(plan.localLightMaps[2].tile, 1); // the point light after both spot lights
     for (const StaticShadowTile& tile : plan.maps[1].tiles)
         for (const std::uint32_t caster : tile.casters)
             EXPECT_NE(caster, 1u);

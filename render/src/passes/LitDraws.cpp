@@ -19,13 +19,17 @@ LitObjectUniforms objectUniforms(const scene::Scene& scene, const scene::Object&
     const scene::Material& material = scene.materialOf(object);
     LitObjectUniforms u{
         .baseColor = material.baseColor,
-        .surface = {material.metallic, material.roughness, material.alphaCutoff, static_cast<float>(material.caster)},
+        .metallic = material.metallic,
+        .roughness = material.roughness,
+        .alphaCutoff = material.alphaCutoff,
+        .casterMode = static_cast<std::int32_t>(material.caster),
         .receivesShadows = scene.receivesShadows(object) ? 1 : 0,
         .materialMaps = static_cast<int>(litMaterialMaps(material)),
         .unlit = material.unlit ? 1 : 0,
         .blended = material.blend ? 1 : 0,
-        .emissive = glm::vec4(material.emissive, material.occlusionStrength),
-        .normal = {material.normalScale, 0.0f, 0.0f, 0.0f},
+        .emissive = material.emissive,
+        .occlusionStrength = material.occlusionStrength,
+        .normalScale = material.normalScale,
     };
     for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
         const shadows::UvTransformRows rows = GpuScene::uvTransform(material.textures[slot]);

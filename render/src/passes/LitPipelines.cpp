@@ -22,12 +22,9 @@ std::string samplesSuffix(std::uint32_t samples)
     return samples > 1 ? fmt::format(", {}x MSAA", samples) : std::string();
 }
 
-bool isTent(int filter)
-{
-    return shadows::filterFamily(static_cast<shadows::ShadowFilter>(filter)) == shadows::ShadowFilterFamily::Tent;
-}
+bool isTent(shadows::ShadowFilter filter) { return shadows::filterFamily(filter) == shadows::ShadowFilterFamily::Tent; }
 
-bool isSoft(int filter) { return shadows::isSoftFilter(static_cast<shadows::ShadowFilter>(filter)); }
+bool isSoft(shadows::ShadowFilter filter) { return shadows::isSoftFilter(filter); }
 
 } // namespace
 
@@ -99,9 +96,9 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
 {
     const shadows::StaticShadowUniforms& staticMaps = staticPlan.uniforms;
     const shadows::LocalShadowUniforms& local = localPlan.uniforms;
-    std::vector<int> filters{static_cast<int>(directional.defaultFilter), local.defaultFilter};
+    std::vector<shadows::ShadowFilter> filters{directional.defaultFilter, local.defaultFilter};
     for (const shadows::DirectionalShadowLight& light : directional.lights)
-        filters.push_back(static_cast<int>(light.shadowFilter));
+        filters.push_back(light.shadowFilter);
     for (const shadows::LocalAtlasTileData& tile : localPlan.tileData)
         filters.push_back(tile.shadowFilter);
     for (const shadows::LocalShadowCube& cube : local.cubes)
@@ -109,10 +106,10 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
     bool staticShadows = false;
     for (const shadows::StaticDirectionalLight& light : staticMaps.directionalLights) {
         staticShadows = staticShadows || light.tile >= 0;
-        filters.push_back(static_cast<int>(light.shadowFilter));
+        filters.push_back(light.shadowFilter);
     }
-    for (const glm::vec4& light : staticPlan.localLightMaps)
-        staticShadows = staticShadows || light.x >= 0.0f;
+    for (const shadows::StaticLocalLightMap& light : staticPlan.localLightMaps)
+        staticShadows = staticShadows || light.tile >= 0;
     for (const shadows::LocalShadowTile& tile : staticMaps.localTiles)
         filters.push_back(tile.shadowFilter);
     LitShaderFeatures features;
@@ -120,7 +117,7 @@ LitShaderFeatures frameShaderFeatures(const LitFrameUniforms& frame,
     features.staticShadows = staticShadows;
     features.tentFilters = std::any_of(filters.begin(), filters.end(), isTent);
     features.softFilters = std::any_of(filters.begin(), filters.end(), isSoft);
-    features.shadowCubes = local.pointMode == static_cast<int>(shadows::PointShadowMode::CubeMap);
+    features.shadowCubes = local.pointMode == shadows::PointShadowMode::CubeMap;
     return features;
 }
 

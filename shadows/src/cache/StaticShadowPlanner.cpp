@@ -191,7 +191,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
         const float bias = localNormalBiasScale(projection, tileSize, filter, light->normalBias);
         const bool casterSide = light->normalBiasSide == NormalBiasSide::Caster;
         const std::uint32_t litIndex = light->index + (light->kind == LightKind::Point ? spots.size() : 0);
-        plan.localLightMaps[litIndex] = {static_cast<float>(tile), light->strength, 0.0f, 0.0f};
+        plan.localLightMaps[litIndex] = {.tile = static_cast<std::int32_t>(tile), .strength = light->strength};
         StaticShadowMap map{light->kind, light->index, {}, 0.0f, staticUpdateOf(light->staticUpdate, settings),
                             litIndex};
         for (const glm::mat4& view : views.views) {
@@ -203,8 +203,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
                 draw.normalOffset = {bias, glm::vec4(light->position, 1.0f)};
             plan.uniforms.localWorldToMap[tile] = worldToAtlas(draw.viewProjection, tile, plan.localAtlas, conventions);
             plan.uniforms.localBounds[tile] = plan.localAtlas.tileTexelBounds(tile);
-            plan.uniforms.localTiles[tile] = {.normalBias = casterSide ? 0.0f : bias,
-                                              .shadowFilter = static_cast<std::int32_t>(filter)};
+            plan.uniforms.localTiles[tile] = {.normalBias = casterSide ? 0.0f : bias, .shadowFilter = filter};
             plan.uniforms.localSoft[tile] =
                 perspectiveTileSoft(projection, tileSize, light->sourceRadius, nearPlane, conventions);
             map.tiles.push_back({{tile, plan.localAtlas.viewport(tile), draw,
@@ -247,7 +246,7 @@ StaticShadowPlan planStaticShadows(const ShadowSettings& settings, const rhi::Co
 {
     validate(settings);
     StaticShadowPlan plan;
-    plan.localLightMaps.assign(spots.size() + points.size(), glm::vec4(-1.0f, 0.0f, 0.0f, 0.0f));
+    plan.localLightMaps.assign(spots.size() + points.size(), StaticLocalLightMap{});
     if (casters.indices.empty())
         return plan;
     planDirectional(plan, settings, conventions, lights, casters);

@@ -94,15 +94,19 @@ inline constexpr rhi::Format kLightIndexFormat = rhi::Format::R32F;
 // What the instances of one lit draw share; their transforms are per instance (shadows::InstanceTransform).
 struct LitObjectUniforms {
     glm::vec4 baseColor{1.0f};
-    glm::vec4 surface{0.0f}; // metallic, roughness, alpha cutoff, caster mode (material.glsl)
+    float metallic = 0.0f;
+    float roughness = 0.0f;
+    float alphaCutoff = 0.0f;
+    std::int32_t casterMode = 0; // scene::CasterMode, compared with PENUMBRA_CASTER_* (material.glsl)
     std::int32_t receivesShadows = 0;
     std::int32_t materialMaps = 0; // textures present, bit per scene::TextureSlot
     std::int32_t unlit = 0;
     std::int32_t blended = 0;
-    glm::vec4 emissive{0.0f}; // linear rgb, w = occlusion strength
-    glm::vec4 normal{0.0f}; // normal texture scale
+    alignas(16) glm::vec3 emissive{0.0f}; // linear rgb
+    float occlusionStrength = 0.0f;
+    float normalScale = 0.0f; // the normal texture's scale
     // Per scene::TextureSlot, rows 0 and 1 of its uv transform, row 0's w its uv set (shadows::uvTransformRows).
-    std::array<glm::vec4, 2 * scene::kTextureSlots> uvTransforms{};
+    alignas(16) std::array<glm::vec4, 2 * scene::kTextureSlots> uvTransforms{};
 };
 
 inline constexpr std::array kLitFrameFields{
@@ -127,10 +131,18 @@ inline constexpr shaders::ShaderStruct kLitFrameBlock{"Frame", sizeof(LitFrameUn
 static_assert(shaders::matchesLayout(kLitFrameBlock, shaders::BlockLayout::Std140));
 
 inline constexpr std::array kLitObjectFields{
-    PENUMBRA_SHADER_FIELD(LitObjectUniforms, baseColor),       PENUMBRA_SHADER_FIELD(LitObjectUniforms, surface),
-    PENUMBRA_SHADER_FIELD(LitObjectUniforms, receivesShadows), PENUMBRA_SHADER_FIELD(LitObjectUniforms, materialMaps),
-    PENUMBRA_SHADER_FIELD(LitObjectUniforms, unlit),           PENUMBRA_SHADER_FIELD(LitObjectUniforms, blended),
-    PENUMBRA_SHADER_FIELD(LitObjectUniforms, emissive),        PENUMBRA_SHADER_FIELD(LitObjectUniforms, normal),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, baseColor),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, metallic),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, roughness),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, alphaCutoff),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, casterMode),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, receivesShadows),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, materialMaps),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, unlit),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, blended),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, emissive),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, occlusionStrength),
+    PENUMBRA_SHADER_FIELD(LitObjectUniforms, normalScale),
     PENUMBRA_SHADER_FIELD(LitObjectUniforms, uvTransforms),
 };
 // lit.glsl's block Object, read through the instance name `object`.

@@ -26,7 +26,7 @@ namespace penumbra::shaders {
 // blocks; std430 for storage blocks, where arrays and structs are not rounded up to a vec4.
 enum class BlockLayout : std::uint8_t { Std140, Std430 };
 
-enum class FieldType : std::uint8_t { Float, Int, UInt, Vec2, Vec3, Vec4, IVec4, Mat4, Struct };
+enum class FieldType : std::uint8_t { Float, Int, UInt, Vec2, Vec3, Vec4, IVec2, IVec4, Mat4, Struct };
 
 struct ShaderStruct;
 
@@ -81,6 +81,10 @@ struct FieldTypeOf<glm::vec3> {
 template <>
 struct FieldTypeOf<glm::vec4> {
     static constexpr FieldType type = FieldType::Vec4;
+};
+template <>
+struct FieldTypeOf<glm::ivec2> {
+    static constexpr FieldType type = FieldType::IVec2;
 };
 template <>
 struct FieldTypeOf<glm::ivec4> {
@@ -161,6 +165,7 @@ constexpr std::uint32_t elementAlignment(const ShaderField& field, BlockLayout l
         alignment = 4;
         break;
     case FieldType::Vec2:
+    case FieldType::IVec2:
         alignment = 8;
         break;
     case FieldType::Vec3:
@@ -187,6 +192,7 @@ constexpr std::uint32_t elementSize(const ShaderField& field, BlockLayout layout
         size = 4;
         break;
     case FieldType::Vec2:
+    case FieldType::IVec2:
         size = 8;
         break;
     case FieldType::Vec3:

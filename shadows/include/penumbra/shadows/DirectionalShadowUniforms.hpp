@@ -5,6 +5,7 @@
 #include "penumbra/shadows/ShadowFade.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
+#include "penumbra/shadows/TileTexelBounds.hpp"
 
 #include <array>
 #include <cstddef>
@@ -54,9 +55,8 @@ struct DirectionalShadowUniforms {
     alignas(16) std::array<DirectionalShadowLight, maxShadowedDirectionalLights> lights{};
     std::array<DirectionalTileSoft, maxShadowedDirectionalLights * maxCascades> tileSoft{}; // per tile
     SoftShadowUniforms soft;
-    // Per tile: its first and last texel's x, y in the atlas (ShadowAtlasLayout::tileTexelBounds), which the filters
-    // clamp their taps to: given, not worked out per pixel with an integer division (llvmpipe has no vector one).
-    std::array<glm::vec4, maxShadowedDirectionalLights * maxCascades> tileBounds{};
+    // Per tile: its first and last texel in the atlas (ShadowAtlasLayout::tileTexelBounds).
+    std::array<TileTexelBounds, maxShadowedDirectionalLights * maxCascades> tileBounds{};
 };
 
 inline constexpr std::array kDirectionalShadowFields{
@@ -72,7 +72,7 @@ inline constexpr std::array kDirectionalShadowFields{
     PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, lights, kDirectionalShadowLightStruct),
     PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, tileSoft, kDirectionalTileSoftStruct),
     PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, soft, kSoftShadowStruct),
-    PENUMBRA_SHADER_FIELD(DirectionalShadowUniforms, tileBounds),
+    PENUMBRA_SHADER_STRUCT_FIELD(DirectionalShadowUniforms, tileBounds, kTileTexelBoundsStruct),
 };
 // The block DirectionalShadows, read through the instance name `shadows`.
 inline constexpr shaders::ShaderStruct kDirectionalShadowBlock{"DirectionalShadows", sizeof(DirectionalShadowUniforms),

@@ -1,7 +1,9 @@
 #pragma once
 
 #include "penumbra/shaders/ShaderBlock.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
+#include "penumbra/shadows/TileTexelBounds.hpp"
 
 #include <array>
 #include <cstddef>
@@ -17,7 +19,7 @@ inline constexpr std::uint32_t maxShadowCubes = 4;
 // A static local map's filter and normal bias (StaticShadowUniforms::localTiles).
 struct alignas(16) LocalShadowTile {
     float normalBias = 0.0f; // normal offset per unit distance from the light plane
-    std::int32_t shadowFilter = 0; // the light's ShadowFilter
+    ShadowFilter shadowFilter = ShadowFilter::PCF2x2; // the light's
 };
 
 inline constexpr std::array kLocalShadowTileFields{
@@ -32,7 +34,7 @@ struct alignas(16) LocalShadowCube {
     glm::vec2 depthRow{0.0f}; // window depth = (x * -z + y) / z at major-axis distance z
     float normalBias = 0.0f; // the receiver-side normal offset per unit distance, 0 where the caster side takes it
     float invFaceSize = 0.0f; // 1 / face size (texels)
-    std::int32_t shadowFilter = 0; // the light's ShadowFilter
+    ShadowFilter shadowFilter = ShadowFilter::PCF2x2; // the light's
     float lightTexels = 0.0f; // the light's radius in texels at unit distance (the Poisson and PCSS filters)
     float nearPlane = 0.0f;
 };
@@ -49,17 +51,17 @@ inline constexpr shaders::ShaderStruct kLocalShadowCubeStruct{"LocalShadowCube",
 // (local_shadows.glsl), so the atlas holds as many tiles as it has room for (no uniform array bounds them).
 struct alignas(16) LocalAtlasTileData {
     glm::mat4 worldToAtlas{1.0f}; // world -> (u, v, depth) x w (divide by w)
-    glm::vec4 bounds{0.0f}; // first and last texel (x, y, x, y)
-    // (t22, t32) the depth row (perspectiveDistance), the light's radius in texels at unit distance (lightTexels),
-    // the near plane.
-    glm::vec4 soft{0.0f};
+    TileTexelBounds bounds; // its first and last texel
+    PerspectiveTileSoft soft; // for the Poisson and PCSS filters
     float normalBias = 0.0f; // normal offset per unit distance from the light plane
-    std::int32_t shadowFilter = 0; // the light's ShadowFilter
+    ShadowFilter shadowFilter = ShadowFilter::PCF2x2; // the light's
 };
 
 inline constexpr std::array kLocalAtlasTileFields{
-    PENUMBRA_SHADER_FIELD(LocalAtlasTileData, worldToAtlas), PENUMBRA_SHADER_FIELD(LocalAtlasTileData, bounds),
-    PENUMBRA_SHADER_FIELD(LocalAtlasTileData, soft),         PENUMBRA_SHADER_FIELD(LocalAtlasTileData, normalBias),
+    PENUMBRA_SHADER_FIELD(LocalAtlasTileData, worldToAtlas),
+    PENUMBRA_SHADER_STRUCT_FIELD(LocalAtlasTileData, bounds, kTileTexelBoundsStruct),
+    PENUMBRA_SHADER_STRUCT_FIELD(LocalAtlasTileData, soft, kPerspectiveTileSoftStruct),
+    PENUMBRA_SHADER_FIELD(LocalAtlasTileData, normalBias),
     PENUMBRA_SHADER_FIELD(LocalAtlasTileData, shadowFilter),
 };
 inline constexpr shaders::ShaderStruct kLocalAtlasTileStruct{"LocalAtlasTileData", sizeof(LocalAtlasTileData),
@@ -71,8 +73,8 @@ static_assert(shaders::matchesLayout(kLocalAtlasTileStruct, shaders::BlockLayout
 struct LocalShadowUniforms {
     std::array<LocalShadowCube, maxShadowCubes> cubes{};
     float atlasSize = 0.0f; // texels on a side
-    std::int32_t defaultFilter = 0; // ShadowFilter of a light without its own
-    std::int32_t pointMode = 0; // PointShadowMode
+    ShadowFilter defaultFilter = ShadowFilter::PCF2x2; // of a light without its own
+    PointShadowMode pointMode = PointShadowMode::Atlas;
     SoftShadowUniforms soft;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/shadows/TileTexelBounds.hpp"
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>
@@ -38,8 +39,8 @@ public:
     glm::uvec2 tileCoordinates(std::uint32_t tile) const;
     // Top-left texel of a tile.
     glm::uvec2 tileOffset(std::uint32_t tile) const;
-    // First and last texel of a tile (x, y, x, y): the texels its filter taps may read.
-    glm::vec4 tileTexelBounds(std::uint32_t tile) const;
+    // First and last texel of a tile: the texels its filter taps may read.
+    TileTexelBounds tileTexelBounds(std::uint32_t tile) const;
     // The viewport of a tile, rows counted from the top.
     rhi::Viewport viewport(std::uint32_t tile) const;
     // Maps a tile's texture coordinates (u, v in [0, 1], depth) to the atlas's; depth passes through.

@@ -61,9 +61,9 @@ struct StaticShadowPlan {
     std::vector<StaticShadowMap> maps; // directional lights first, then spot, then point lights
     std::vector<StaticShadowNote> report;
     StaticShadowUniforms uniforms;
-    // Per spot light, then point light (the lit pass's local index): first tile of its static map or -1, shadow
-    // strength, 0, 0. The lit shader reads it from the local light texture (render::LocalLightTexel::StaticMap).
-    std::vector<glm::vec4> localLightMaps;
+    // Per spot light, then point light (the lit pass's local index). The lit shader reads it from the local light
+    // texture (render::LocalLightTexel::StaticMap).
+    std::vector<StaticLocalLightMap> localLightMaps;
 };
 
 // The casters whose depth the static maps hold: indices into the planner's caster bounds.

@@ -53,15 +53,31 @@ inline constexpr shaders::ShaderStruct kStaticDirectionalSourceStruct{"StaticDir
                                                                       sizeof(StaticDirectionalSource),
                                                                       kStaticDirectionalSourceFields};
 
+// A spot or point light's static map as the lit shader finds it (StaticShadowPlan::localLightMaps).
+struct StaticLocalLightMap {
+    std::int32_t tile = -1; // the first tile of its static map, -1: the light has none
+    float strength = 0.0f; // the light's shadow strength
+
+    bool operator==(const StaticLocalLightMap&) const = default;
+};
+
+// The GLSL struct StaticLocalLightMap (static_shadows.glsl), made from the local light texture's texel.
+inline constexpr std::array kStaticLocalLightMapFields{
+    PENUMBRA_SHADER_FIELD(StaticLocalLightMap, tile),
+    PENUMBRA_SHADER_FIELD(StaticLocalLightMap, strength),
+};
+inline constexpr shaders::ShaderStruct kStaticLocalLightMapStruct{"StaticLocalLightMap", sizeof(StaticLocalLightMap),
+                                                                  kStaticLocalLightMapFields};
+
 // The lit shader's static shadow block StaticShadows (static_shadows.glsl), uploaded as is.
 struct StaticShadowUniforms {
     // Per directional tile: world -> (u, v, depth) in the static directional atlas.
     std::array<glm::mat4, maxStaticDirectionalMaps> directionalWorldToMap{};
-    std::array<glm::vec4, maxStaticDirectionalMaps> directionalBounds{}; // per tile: first and last texel (x, y, x, y)
+    std::array<TileTexelBounds, maxStaticDirectionalMaps> directionalBounds{}; // per tile: first and last texel
     std::array<StaticDirectionalLight, maxStaticMapDirectionalLights> directionalLights{}; // per directional light
     // Per spot and point tile: world -> (u, v, depth) x w (divide by w).
     std::array<glm::mat4, maxStaticLocalTiles> localWorldToMap{};
-    std::array<glm::vec4, maxStaticLocalTiles> localBounds{}; // per tile: first and last texel
+    std::array<TileTexelBounds, maxStaticLocalTiles> localBounds{}; // per tile: first and last texel
     std::array<LocalShadowTile, maxStaticLocalTiles> localTiles{}; // per spot and point tile
     float directionalAtlasSize = 0.0f; // texels on a side
     float localAtlasSize = 0.0f;
@@ -73,10 +89,10 @@ struct StaticShadowUniforms {
 
 inline constexpr std::array kStaticShadowFields{
     PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalWorldToMap),
-    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalBounds),
+    PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, directionalBounds, kTileTexelBoundsStruct),
     PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, directionalLights, kStaticDirectionalLightStruct),
     PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localWorldToMap),
-    PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localBounds),
+    PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, localBounds, kTileTexelBoundsStruct),
     PENUMBRA_SHADER_STRUCT_FIELD(StaticShadowUniforms, localTiles, kLocalShadowTileStruct),
     PENUMBRA_SHADER_FIELD(StaticShadowUniforms, directionalAtlasSize),
     PENUMBRA_SHADER_FIELD(StaticShadowUniforms, localAtlasSize),
