@@ -31,7 +31,10 @@ endif()
 function(penumbra_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor
                                            -Wno-missing-field-initializers
-                                           $<$<BOOL:${PENUMBRA_WERROR}>:-Werror>)
+                                           $<$<BOOL:${PENUMBRA_WERROR}>:-Werror>
+                                           # In a batch only the first file is the main file, so GCC takes a type
+                                           # of a later file's anonymous namespace for one declared in a header.
+                                           $<$<BOOL:$<TARGET_PROPERTY:UNITY_BUILD>>:-Wno-subobject-linkage>)
 endfunction()
 
 # The headers only the backends share (rhi/backend/: checks every API must apply alike, the debug
