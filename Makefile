@@ -113,12 +113,15 @@ fuzz: deps
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) JOBS=$(JOBS) ./scripts/fuzz.sh $(FUZZ_TARGETS)
 
 # The lit pictures of the glTF material scenes (tests/support's materials scene and scripts/sample-viewer/scenes.mjs's
-# feature scenes) against the Khronos glTF Sample Viewer's, both backends, punctual light only:
-# out/sample-viewer/results.{json,md} and <scene>/side-by-side.png. Installs chromium and the viewer's npm packages
-# on demand (scripts/sample-viewer/compare.sh), not in `make deps`.
+# feature scenes) against the Khronos glTF Sample Viewer's, both backends: punctual light only in
+# out/sample-viewer/results.{json,md} and <scene>/side-by-side.png, then with image-based lighting on both sides from
+# one environment (scripts/sample-viewer/environment.mjs) in out/sample-viewer/ibl/. Installs chromium and the
+# viewer's npm packages on demand (scripts/sample-viewer/compare.sh), not in `make deps`.
 sample-viewer-compare: build
 	@$(BUILD)/tests/penumbra_write_example_gltf materials out/sample-viewer/input/materials.glb
 	@./scripts/sample-viewer/compare.sh --penumbra $(PENUMBRA) --out out/sample-viewer --scenes \
+		out/sample-viewer/input/materials.glb
+	@./scripts/sample-viewer/compare.sh --penumbra $(PENUMBRA) --out out/sample-viewer/ibl --ibl on --scenes \
 		out/sample-viewer/input/materials.glb
 
 # The API reference of the public headers and the guide (README.md, docs/) with Doxygen, warnings as errors:
