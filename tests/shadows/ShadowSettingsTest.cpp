@@ -251,7 +251,8 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
               "shadows.json: local.nearPlane: 0.6 is out of range, allowed 0.0001..0.5");
     EXPECT_EQ(parseError(R"({"directional": {"blend": "soft"}})"),
               "shadows.json: directional.blend: unknown field, allowed atlasSize, filter, cascadeCount, "
-              "cascadeRatios, cascadeFade, cascadeBlend, projection, depthFitSteps, depthFitHysteresis, atlasFormat");
+              "cascadeRatios, cascadeFade, cascadeBlend, projection, depthFitSteps, depthFitHysteresis, atlasFormat, "
+              "depthBias");
     EXPECT_EQ(parseError(R"({"directional": {"projection": "tight"}})"),
               "shadows.json: directional.projection: unknown value \"tight\", allowed stable, close, depthFit");
     EXPECT_EQ(parseError(R"({"directional": {"projection": 1}})"),
