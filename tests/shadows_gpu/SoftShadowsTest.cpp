@@ -305,12 +305,12 @@ TEST_F(SoftShadowsTest, HardTentPoissonAndPcssLightsShareOneFrame)
     savePicture(rhi::readTexture(*device, renderer.litImage()), "soft-mixed-lights");
 }
 
-// soft.diskRotation reaches every soft lookup (directional tiles, spot tiles, point cube maps): turned off, the Poisson
-// disk's fixed pattern replaces the per-texel noise, so pixels of the penumbrae change while the light let through
-// on average stays the same.
+// soft.diskRotation reaches the soft lookups of atlas tiles (softTile, which directional tiles share) and of point
+// cube maps: turned off, the Poisson disk's fixed pattern replaces the per-texel noise, so pixels of the penumbrae
+// change while the light let through on average stays the same.
 TEST_F(SoftShadowsTest, DiskRotationToggleChangesTheNoiseNotTheLight)
 {
-    for (const LightKind kind : {LightKind::Directional, LightKind::Spot, LightKind::Point}) {
+    for (const LightKind kind : {LightKind::Spot, LightKind::Point}) {
         const scene::Scene scene = contactScene(kind, ShadowFilter::PCSS);
         render::FrameDesc frame = softFrame(firstLight(kind));
         frame.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
