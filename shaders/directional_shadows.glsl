@@ -71,7 +71,7 @@ float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize
 #if PENUMBRA_SOFT_FILTERS
     const SoftTile t =
         softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, atlasSize, bounds.first, bounds.last,
-                 tileSoft.lightTexelAnchor);
+                 tileSoft.lightTexelAnchor, shadows.soft);
     return directionalSoftShadow(atlas, t, filterIndex, shadows.soft, tileSoft.depthRow, tanHalfAngle, texelWorld);
 #endif
 }

@@ -11,6 +11,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/Posing.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <array>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -75,7 +77,10 @@ struct ConfigurationResult {
     Series planning; // CPU: render::FrameStats::planningMs
     Series recording; // CPU: render::FrameStats::recordingMs
     Series cpuFrame; // planning + recording
-    Series localTilesDrawn, localTilesCached;
+    Series localTilesDrawn, localTilesCached, localLightsRedrawn;
+    // Why the measured frames' local lights were drawn again: how often each reason came (the text after the light's
+    // name in render::FrameStats::localShadowUpdates).
+    std::map<std::string, std::uint32_t> redrawReasons;
     std::array<Series, kPasses> passes;
     render::FrameStats last;
 };
@@ -128,6 +133,8 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         stopIfInterrupted();
         if (animation)
             scene::poseScene(scene, animation->animation, animation->timeOfFrame(i, scene.rig));
+        if (options.scene.movingCars)
+            scenes::driveStreetCars(scene, static_cast<float>(i) * kFrameSeconds);
         // Each measured frame leaves the reference lit pass out, so that its wall time and pass times are the
         // renderer's alone; the reference's GPU time comes from a second frame with it in, after the lit pass on the
         // same plan and atlas.
@@ -148,6 +155,11 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         result.cpuFrame.values.push_back(stats.planningMs + stats.recordingMs);
         result.localTilesDrawn.values.push_back(stats.localTilesDrawn);
         result.localTilesCached.values.push_back(stats.localTilesCached);
+        result.localLightsRedrawn.values.push_back(static_cast<double>(stats.localShadowUpdates.size()));
+        for (const std::string& update : stats.localShadowUpdates) {
+            const std::size_t reason = update.find("): ");
+            ++result.redrawReasons[reason == std::string::npos ? update : update.substr(reason + 3)];
+        }
         const std::array<double, kPasses> times = passTimes(stats, referenceMs);
         for (std::size_t p = 0; p < kPasses; ++p)
             result.passes[p].values.push_back(times[p]);
@@ -234,7 +246,11 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"shadowedLights", r.last.shadowedLights},
             {"lightsWithoutShadow", r.last.lightsWithoutShadow},
             {"localTilesDrawn", r.localTilesDrawn.median()},
-            {"localTilesCached", r.localTilesCached.median()}};
+            {"localTilesCached", r.localTilesCached.median()},
+            {"movingCars", options.scene.movingCars},
+            {"localLightsRedrawn", r.localLightsRedrawn.median()},
+            {"localLightsRedrawnMax", r.localLightsRedrawn.max()},
+            {"redrawReasons", r.redrawReasons}};
 }
 
 void printTable(const std::vector<ConfigurationResult>& results, const SceneBenchOptions& options,
@@ -268,6 +284,9 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
         fmt::print("{:<24} {:>8} {:>9} {:>15.1f} {:>12.1f} {:>12.2f} {:>13.2f}\n", r.configuration,
                    r.last.shadowedLights, r.last.lightsWithoutShadow, r.localTilesDrawn.median(),
                    r.localTilesCached.median(), r.cpuFrame.median(), r.passes[passIndex("otherAtlas")].median());
+    for (const ConfigurationResult& r : results)
+        for (const auto& [reason, count] : r.redrawReasons)
+            fmt::print("{}: {} light redraws over the measured frames: {}\n", r.configuration, count, reason);
     if (results.size() == 2 && results[1].frame.median() > 0.0)
         fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,
                    results[0].frame.median() / results[1].frame.median());

@@ -34,8 +34,9 @@ inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "
 // frames, warmup, frameMs (median), frameMsMin, frameMsMax, passes {name: median ms}, passesMin, passesMax,
 // litOverReference, instancing, cpuMs {planning, recording} (medians), cpuMsMax, draws {depth, lit},
 // casterDraws, cpuFrameMs (planning + recording, median), shadowedLights, lightsWithoutShadow, localTilesDrawn and
-// localTilesCached (medians)]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that
-// is missing or, with validate, reports a message.
+// localTilesCached (medians), movingCars (--moving-cars), localLightsRedrawn (median) and localLightsRedrawnMax, and
+// redrawReasons {reason: light redraws over the measured frames}]}. A pass the frame does not draw reports 0. Throws
+// rhi::Error for a device that is missing or, with validate, reports a message.
 nlohmann::json runSceneBench(const SceneBenchOptions& options);
 
 } // namespace penumbra::apps

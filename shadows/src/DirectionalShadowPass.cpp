@@ -28,6 +28,7 @@ std::vector<ShadowTileDraw> DirectionalShadowPass::tileDraws(const DirectionalSh
                              cascade.viewport,
                              {.viewProjection = cascade.fit.viewProjection,
                               .slopeScaleBias = light.slopeScaleBias,
+                              .depthBias = light.depthBias,
                               .pancake = true,
                               .ditherOrigin = ditherOrigin(cascade.fit, plan.atlas, cascade.tile),
                               .normalOffset = casterNormalOffset(plan, light, c)},

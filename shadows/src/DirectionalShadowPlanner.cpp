@@ -178,6 +178,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
                                input.strength,
                                input.normalBias,
                                input.slopeScaleBias,
+                               directional.depthBias,
                                input.nearPlaneOffset,
                                input.filter.value_or(directional.filter),
                                input.angularDiameter,

@@ -29,6 +29,7 @@ std::vector<ShadowTileDraw> LocalShadowPass::tileDraws(const LocalShadowPlan& pl
                          tile.viewport,
                          {.viewProjection = tile.view.viewProjection,
                           .slopeScaleBias = tile.view.slopeScaleBias,
+                          .depthBias = tile.view.depthBias,
                           .ditherOrigin = -glm::vec2(tile.viewport.x, tile.viewport.y),
                           .normalOffset = tile.view.normalOffset},
                          tile.view.casters});
@@ -79,6 +80,7 @@ std::uint32_t LocalShadowPass::drawCubes(rhi::CommandList& commands, const Shado
             commands.setScissor(scissorOf(viewport));
             const ShadowViewDraw view{.viewProjection = faceView.viewProjection,
                                       .slopeScaleBias = faceView.slopeScaleBias,
+                                      .depthBias = faceView.depthBias,
                                       .mirrored = true,
                                       .normalOffset = faceView.normalOffset};
             draws += draws_.draw(commands, cubes.format(), view, faceView.casters, casters);

@@ -89,13 +89,20 @@ std::vector<ShadowTileRequest> tileRequests(std::vector<Candidate>& candidates, 
     return requests;
 }
 
-LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, float range, float slopeScaleBias,
+// The rasteriser's biases of a view: the light's slope-scaled one and the settings' constant one.
+struct RasterBias {
+    float slopeScale;
+    float constant;
+};
+
+LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, float range, RasterBias bias,
                            const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, range);
     return {projection,
             projection * view,
-            slopeScaleBias,
+            bias.slopeScale,
+            bias.constant,
             cullCastersInFrustum(view, fov, nearPlane, range, casterBounds),
             {}};
 }
@@ -148,13 +155,13 @@ void addTile(LocalShadowPlan& plan, TilePlace place, LocalShadowView view, float
 void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot,
               const PackedLight& packed, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
-    const float fov = 2.0f * spot.outerAngle;
+    const ShadowFilter filter = spot.filter.value_or(local.filter);
+    const float fov = spotFieldOfView(spot.outerAngle, packed.size, filter, spot.normalBias, local.spotFovBias);
     const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, local);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
-    const ShadowFilter filter = spot.filter.value_or(local.filter);
     const float bias = localNormalBiasScale(projection, packed.size, filter, spot.normalBias);
     LocalShadowView view = shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range,
-                                      spot.slopeScaleBias, conventions, casterBounds);
+                                      {spot.slopeScaleBias, local.depthBias}, conventions, casterBounds);
     const float receiverBias = sideOfNormalBias(view, spot.normalBiasSide, bias, spot.position);
     addTile(plan, {packed.offsets.front(), packed.size}, std::move(view), receiverBias,
             softProjection(filter, projection, packed.size, spot.sourceRadius, nearPlane, conventions), conventions);
@@ -172,8 +179,9 @@ void planPointTiles(LocalShadowPlan& plan, const LocalShadowSettings& local, con
     const SoftProjection soft =
         softProjection(filter, projection, packed.size, point.sourceRadius, nearPlane, conventions);
     for (std::uint32_t face = 0; face < cubeFaceCount; ++face) {
-        LocalShadowView view = shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane,
-                                          point.range, point.slopeScaleBias, conventions, casterBounds);
+        LocalShadowView view =
+            shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane, point.range,
+                       {point.slopeScaleBias, local.depthBias}, conventions, casterBounds);
         const float receiverBias = sideOfNormalBias(view, point.normalBiasSide, bias, point.position);
         addTile(plan, {packed.offsets[face], packed.size}, std::move(view), receiverBias, soft, conventions);
     }
@@ -203,6 +211,7 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
         faceView = {projection,
                     projection * view,
                     point.slopeScaleBias,
+                    local.depthBias,
                     cullCastersInFrustum(view, kRightAngle, nearPlane, point.range, casterBounds),
                     {}};
         receiverBias = sideOfNormalBias(faceView, point.normalBiasSide, bias, point.position);

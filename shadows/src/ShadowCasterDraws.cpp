@@ -122,7 +122,7 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
     const bool depthClamp = view.pancake && device_.capabilities().depthClamp;
     const bool pancakeInShader = view.pancake && !depthClamp;
     const Pipelines& pipelines = this->pipelines(depthFormat, depthClamp, view.mirrored);
-    const rhi::DepthBias bias{0.0f, view.slopeScaleBias, 0.0f};
+    const rhi::DepthBias bias{view.depthBias, view.slopeScaleBias, 0.0f};
     for (const std::uint32_t index : indices)
         if (index >= casters.size())
             throw rhi::Error(

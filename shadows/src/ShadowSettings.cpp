@@ -49,6 +49,8 @@ constexpr SettingRange kAtlasSizes{SettingRangeKind::PowersOfTwo, 256, 8192};
 constexpr SettingRange kFraction{SettingRangeKind::Closed, 0.001, 1};
 constexpr SettingRange kScale{SettingRangeKind::Closed, 0.1, 10};
 constexpr SettingRange kPenumbraTexels{SettingRangeKind::Closed, 0, 64};
+// Depth steps of a constant depth bias: up to the 500 000 of Catlike Coding's "Directional Shadows" (section 4.1).
+constexpr SettingRange kDepthBias{SettingRangeKind::Closed, 0, 1000000};
 
 // A numeric range as messages, help and docs state it: "0.001..1", "powers of two 256..8192", "> 0.001".
 std::string rangeText(const SettingRange& range)
@@ -155,6 +157,8 @@ std::vector<SettingName> projectionSettingNames()
     return names;
 }
 
+std::vector<SettingName> toggleNames() { return {nameOf(Toggle::Off, "off"), nameOf(Toggle::On, "on")}; }
+
 std::vector<SettingName> depthFormats()
 {
     return {nameOf(rhi::Format::D16, "d16"), nameOf(rhi::Format::D24S8, "d24s8"), nameOf(rhi::Format::D32F, "d32f")};
@@ -212,6 +216,10 @@ std::vector<ShadowSettingsField> makeFields()
             "directional.atlasFormat", depthFormats(), "depth format of the directional atlas",
             [](auto& s) -> auto& { return s.directional.atlasFormat; }),
         numeric(
+            "directional.depthBias", kDepthBias,
+            "constant depth bias of the directional casters, in depth steps, beside each light's slope-scaled one",
+            [](auto& s) -> auto& { return s.directional.depthBias; }, "--directional-depth-bias"),
+        numeric(
             "local.atlasSize", kAtlasSizes, "texels per side of the spot and point lights' atlas",
             [](auto& s) -> auto& { return s.local.atlasSize; }, "--local-atlas-size"),
         named(
@@ -241,6 +249,15 @@ std::vector<ShadowSettingsField> makeFields()
             "texels per side a light's tile is lowered to, at most, before the light loses its shadow",
             [](auto& s) -> auto& { return s.local.minTileResolution; }),
         numeric(
+            "local.depthBias", kDepthBias,
+            "constant depth bias of the spot and point casters, in depth steps, beside each light's slope-scaled one",
+            [](auto& s) -> auto& { return s.local.depthBias; }, "--local-depth-bias"),
+        named(
+            "local.spotFovBias", toggleNames(),
+            "widens spot shadow frustums as point faces are, so bias and filter taps at the cone's edge stay in the "
+            "tile",
+            [](auto& s) -> auto& { return s.local.spotFovBias; }, "--spot-fov-bias"),
+        numeric(
             "soft.blockerSearchScale", kScale, "scales PCSS's blocker search region (NVIDIA's w_search)",
             [](auto& s) -> auto& { return s.soft.blockerSearchScale; }),
         numeric(
@@ -262,6 +279,10 @@ std::vector<ShadowSettingsField> makeFields()
         numeric(
             "soft.poissonRadiusTexels", poissonRadius, "the fixed poisson filter's radius, in texels",
             [](auto& s) -> auto& { return s.soft.poissonRadiusTexels; }),
+        named(
+            "soft.diskRotation", toggleNames(),
+            "turns the poisson and pcss disks per receiver texel (noise instead of the disk's fixed pattern)",
+            [](auto& s) -> auto& { return s.soft.diskRotation; }, "--disk-rotation"),
         named(
             "static.update",
             {nameOf(StaticShadowUpdate::EveryFrame, "everyFrame"), nameOf(StaticShadowUpdate::OnChange, "onChange"),
@@ -433,6 +454,10 @@ std::optional<SettingsProblem> findLocalSettingsProblem(const LocalShadowSetting
     if (o.minTileResolution > o.atlasSize)
         return outOfRange("local.minTileResolution",
                           fmt::format("{} (above local.atlasSize {})", o.minTileResolution, o.atlasSize));
+    if (auto problem = outsideRange("local.depthBias", o.depthBias))
+        return problem;
+    if (static_cast<unsigned>(o.spotFovBias) > static_cast<unsigned>(Toggle::On))
+        return outOfRange("local.spotFovBias", fmt::format("{}", static_cast<int>(o.spotFovBias)));
     return std::nullopt;
 }
 
@@ -462,6 +487,8 @@ std::optional<SettingsProblem> findSoftSettingsProblem(const SoftShadowSettings&
         return outOfRange("soft.maxPenumbraTexels", fmt::format("{}", s.maxPenumbraTexels));
     if (auto problem = outsideRange("soft.poissonRadiusTexels", s.poissonRadiusTexels))
         return problem;
+    if (static_cast<unsigned>(s.diskRotation) > static_cast<unsigned>(Toggle::On))
+        return outOfRange("soft.diskRotation", fmt::format("{}", static_cast<int>(s.diskRotation)));
     return std::nullopt;
 }
 
@@ -508,6 +535,8 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return problem;
     if (!rhi::isDepthFormat(d.atlasFormat))
         return outOfRange("directional.atlasFormat", std::string(rhi::formatName(d.atlasFormat)));
+    if (auto problem = outsideRange("directional.depthBias", d.depthBias))
+        return problem;
     if (auto problem = findLocalSettingsProblem(s.local))
         return problem;
     if (auto problem = findSoftSettingsProblem(s.soft))

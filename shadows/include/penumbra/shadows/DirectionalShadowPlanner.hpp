@@ -51,6 +51,7 @@ struct ShadowedDirectionalLight {
     float strength = 1.0f;
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
+    float depthBias = 0.0f; // the constant one, DirectionalShadowSettings::depthBias
     float nearPlaneOffset = 0.0f;
     ShadowFilter filter = ShadowFilter::PCF2x2; // the light's, resolved
     float angularDiameter = 0.0f;

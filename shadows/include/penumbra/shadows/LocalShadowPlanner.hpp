@@ -57,6 +57,7 @@ struct LocalShadowView {
     glm::mat4 projection{1.0f}; // the convention's perspective
     glm::mat4 viewProjection{1.0f};
     float slopeScaleBias = 0.0f;
+    float depthBias = 0.0f; // the constant one, LocalShadowSettings::depthBias
     std::vector<std::uint32_t> casters; // indices into the caster bounds, the views' frustum culled
     CasterNormalOffset normalOffset; // the caster-side normal bias; none on the receiver side
 };

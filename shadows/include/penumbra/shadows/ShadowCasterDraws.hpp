@@ -57,6 +57,7 @@ static_assert(shaders::matchesLayout(kShadowCasterBlock, shaders::BlockLayout::S
 struct ShadowViewDraw {
     glm::mat4 viewProjection{1.0f};
     float slopeScaleBias = 0.0f;
+    float depthBias = 0.0f; // the rasteriser's constant depth bias, in the depth format's steps
     // Orthographic views pancake casters in front of the near plane onto it; perspective views must
     // not (clamping would distort casters behind the light).
     bool pancake = false;

@@ -38,6 +38,9 @@ ShadowFilterFamily filterFamily(ShadowFilter filter);
 // Whether the filter is one of the Poisson-disk filters (Poisson, PCSS), which take SoftShadowSettings.
 bool isSoftFilter(ShadowFilter filter);
 
+// A setting that is either off or on ("off", "on" in the settings file, on the command line and in the viewer).
+enum class Toggle { Off, On };
+
 // How the lit shader moves from one cascade to the next.
 enum class CascadeBlend { Hard, Soft, Dither };
 
@@ -89,6 +92,10 @@ struct SoftShadowSettings {
     float minPenumbraTexels = 1.0f; // the filter radius never goes below this
     float maxPenumbraTexels = 24.0f; // at least minPenumbraTexels; nor above this (nor the blocker search)
     float poissonRadiusTexels = 2.5f; // the fixed-radius Poisson filter's radius
+    // Whether each receiver turns the disk by a hash of its texel in the light's grid (the rotation of the design
+    // document on PCSS, there from a blue-noise texture): on, the disk's fixed pattern becomes noise; off, every
+    // receiver reads the same disk.
+    Toggle diskRotation = Toggle::On;
 };
 
 // The directional lights' atlas, filter and cascades. The allowed values of every settings field are stated once,
@@ -107,6 +114,10 @@ struct DirectionalShadowSettings {
     std::uint32_t depthFitSteps = 8;
     float depthFitHysteresis = 1.0f;
     rhi::Format atlasFormat = rhi::Format::D32F;
+    // The rasteriser's constant depth bias of the casters, beside each light's slope-scaled one (the first argument
+    // of Unity's SetGlobalDepthBias in Catlike Coding's "Directional Shadows", section 4.1): in units of the atlas
+    // format's smallest depth step. 0 keeps the normal and slope-scaled biases alone.
+    float depthBias = 0.0f;
 };
 
 // Where point lights keep their six faces.
@@ -131,6 +142,12 @@ struct LocalShadowSettings {
     std::uint32_t tileResolution = 1024;
     // The least a tile is lowered to when the atlas runs out of room, before a light loses its shadow.
     std::uint32_t minTileResolution = 64;
+    // The constant depth bias of the spot and point casters (DirectionalShadowSettings::depthBias).
+    float depthBias = 0.0f;
+    // Widens each spot light's shadow frustum as the point faces' are, so that the normal bias and the filter's taps
+    // at the cone's edge stay inside its tile (Catlike Coding, "Point and Spot Shadows", section 2.5 "Field of View
+    // Bias", applied to spot lights as the tutorial suggests): the tile then spends a few texels outside the cone.
+    Toggle spotFovBias = Toggle::Off;
 };
 
 // Which casters the realtime atlases draw while static maps exist.
