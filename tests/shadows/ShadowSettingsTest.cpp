@@ -67,6 +67,7 @@ ShadowSettings unusualSettings()
               .minPenumbraTexels = 2.0f,
               .maxPenumbraTexels = 30.0f,
               .poissonRadiusTexels = 3.25f};
+    s.contact = {.enabled = true, .length = 0.75f, .steps = 24, .thickness = 0.05f};
     return s;
 }
 
@@ -106,6 +107,8 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
               "directional.atlasSize: 16384 is out of range, allowed powers of two 256..8192");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.projection = CascadeProjection(3); }),
               "directional.projection: 3 is out of range, allowed stable, close, depthFit");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.contact.steps = 0; }),
+              "contact.steps: 0 is out of range, allowed 1..64");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.maxDistance = 0.0f; }),
               "maxDistance: 0 is out of range, allowed > 0.001");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.distanceFade = 1.5f; }),
