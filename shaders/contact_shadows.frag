@@ -19,11 +19,12 @@ layout(location = 0) out vec4 outContact;
 
 // View depth (metres along the camera's forward) of a depth-buffer value: z_ndc = b / d - a for the camera's
 // projection (rhi::Conventions::viewDepth), reversed or not.
-float viewDepthAt(ivec2 pixel)
+float viewDepthOf(float windowDepth)
 {
-    const float z = penumbraWindowDepthToNdc(texelFetch(sceneDepth, pixel, 0).r);
-    return contact.depthToView.y / (z + contact.depthToView.x);
+    return contact.depthToView.y / (penumbraWindowDepthToNdc(windowDepth) + contact.depthToView.x);
 }
+
+float viewDepthAt(ivec2 pixel) { return viewDepthOf(texelFetch(sceneDepth, pixel, 0).r); }
 
 // How far the surface's view depth moves over one pixel, the smaller one-sided difference on each axis (so that a
 // neighbour across a silhouette does not count): a depth sample on the starting surface lies off the ray's own
@@ -38,14 +39,20 @@ float depthStepPerPixel(ivec2 pixel, float depth)
     return max(min(left, right), min(up, down));
 }
 
-// 1 where the march from `position` towards the light meets no occluder, 0 where it does.
+// 1 where the march from `position` towards the light meets no occluder, 0 where it does. Projection and view depth
+// are linear in clip space along the ray, so each step interpolates its ends instead of projecting anew.
 float contactVisibility(vec3 position, ivec2 start, vec3 towardsLight, float bias, float jitter)
 {
-    const float stepLength = contact.marchLength / float(contact.steps);
+    const vec3 end = position + towardsLight * contact.marchLength;
+    const mat4 toTexture = PENUMBRA_CLIP_TO_TEXTURE * contact.viewProjection;
+    const vec4 startTexture = toTexture * vec4(position, 1.0);
+    const vec4 endTexture = toTexture * vec4(end, 1.0);
+    const float startDepth = dot(position - contact.cameraPosition.xyz, contact.cameraForward.xyz);
+    const float endDepth = dot(end - contact.cameraPosition.xyz, contact.cameraForward.xyz);
     for (int i = 0; i < contact.steps; ++i) {
-        const vec3 p = position + towardsLight * ((float(i) + jitter) * stepLength);
-        const float rayDepth = dot(p - contact.cameraPosition.xyz, contact.cameraForward.xyz);
-        const vec4 projected = PENUMBRA_CLIP_TO_TEXTURE * (contact.viewProjection * vec4(p, 1.0));
+        const float t = (float(i) + jitter) / float(contact.steps);
+        const vec4 projected = mix(startTexture, endTexture, t);
+        const float rayDepth = mix(startDepth, endDepth, t);
         // Behind the near plane or off the picture: the depth buffer knows nothing further along.
         if (rayDepth <= contact.depthToView.z || projected.w <= 0.0)
             break;
@@ -53,9 +60,10 @@ float contactVisibility(vec3 position, ivec2 start, vec3 towardsLight, float bia
         if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0))))
             break;
         const ivec2 pixel = ivec2(uv * contact.targetSize.xy);
-        if (pixel == start || texelFetch(sceneDepth, pixel, 0).r == PENUMBRA_FAR_DEPTH)
+        const float depth = texelFetch(sceneDepth, pixel, 0).r;
+        if (pixel == start || depth == PENUMBRA_FAR_DEPTH)
             continue;
-        const float behind = rayDepth - viewDepthAt(pixel);
+        const float behind = rayDepth - viewDepthOf(depth);
         if (behind > bias && behind < bias + contact.thickness)
             return 0.0;
     }

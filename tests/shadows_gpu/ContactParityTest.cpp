@@ -29,10 +29,12 @@ const std::vector<parity::ConfigurationRun>& contactRuns()
     static const std::vector<parity::ConfigurationRun> runs =
         parity::renderConfigurations([](rhi::Device& device, const rhi::NamedConfiguration& configuration) {
             const scene::Scene scene = apps::namedScene("contact");
-            const apps::ShadowPictures forward = apps::renderShadowScene(
-                device, configuration.name, scene, contactFrame(1, render::ShadowPath::Forward), false);
-            const apps::ShadowPictures msaa = apps::renderShadowScene(
-                device, configuration.name, scene, contactFrame(4, render::ShadowPath::ScreenSpace), false);
+            const apps::ShadowPictures forward =
+                apps::renderShadowScene(device, configuration.name, scene, contactFrame(1, render::ShadowPath::Forward),
+                                        false);
+            const apps::ShadowPictures msaa =
+                apps::renderShadowScene(device, configuration.name, scene,
+                                        contactFrame(4, render::ShadowPath::ScreenSpace), false);
             testing::savePicture(forward.lit, "contact-parity-" + configuration.name);
             return std::vector{parity::colorPicture("lit-contact", forward.lit),
                                parity::colorPicture("lit-contact-msaa4-screen-space", msaa.lit)};

@@ -77,8 +77,7 @@ void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height)
     target_ = device_.createFramebuffer({.colors = {&color, 1}, .debugName = "contact shadows"});
 }
 
-void ContactShadowPass::record(rhi::CommandList& commands, const rhi::Texture& depth,
-                               const rhi::UniformSlice& uniforms)
+void ContactShadowPass::record(rhi::CommandList& commands, const rhi::Texture& depth, const rhi::UniformSlice& uniforms)
 {
     commands.beginPass({.framebuffer = target_.get(), .clearColor = std::nullopt, .clearDepth = false});
     commands.bindPipeline(*pipeline_);
