@@ -210,9 +210,8 @@ TEST(ShadowSettingsJson, BothNamesOfALocalFieldAreRefused)
 TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
-    EXPECT_EQ(
-        parseError(R"({"maxDistanse": 5})"),
-        "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, local, soft, static");
+    EXPECT_EQ(parseError(R"({"maxDistanse": 5})"), "shadows.json: maxDistanse: unknown field, allowed maxDistance, "
+                                                   "distanceFade, directional, local, soft, static, contact");
     EXPECT_EQ(parseError(R"({"static": {"update": "sometimes"}})"),
               "shadows.json: static.update: unknown value \"sometimes\", allowed everyFrame, onChange, onDemand");
     EXPECT_EQ(parseError(R"({"static": {"directionalAtlasSize": 16384}})"),
