@@ -98,7 +98,8 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             ms(frame::kLitPass),
             ms(frame::kResolvePass),
             referenceMs,
-            ms(frame::kStaticMapsPass)};
+            ms(frame::kStaticMapsPass),
+            ms(frame::kContactShadowsPass) + ms(frame::kContactPrepass)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -272,6 +273,13 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
             r.passes[passIndex("screenSpaceShadows")].median(), r.passes[passIndex("lit")].median(),
             r.passes[passIndex("resolve")].median(), r.passes[passIndex("reference")].median(), litOverReference(r),
             r.frame.max());
+    if (frame.shadows.contact.enabled)
+        for (const ConfigurationResult& r : results) {
+            const double lit = r.passes[passIndex("lit")].median();
+            const double contact = r.passes[passIndex("contactShadows")].median();
+            fmt::print("{:<24} contact shadows {:.2f} ms, {:.1f}% of the lit pass\n", r.configuration, contact,
+                       lit > 0.0 ? 100.0 * contact / lit : 0.0);
+        }
     fmt::print("{:<24} {:>12} {:>13} {:>11} {:>10} {:>12}\n", "configuration", "planning ms", "recording ms",
                "depth draws", "lit draws", "caster draws");
     for (const ConfigurationResult& r : results)

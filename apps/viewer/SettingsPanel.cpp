@@ -262,6 +262,15 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= fieldPowerOfTwo("static.directionalAtlasSize", m.directionalAtlasSize);
     changed |= fieldPowerOfTwo("static.localAtlasSize", m.localAtlasSize);
     ImGui::PopID();
+    ImGui::Separator();
+    ImGui::TextUnformatted("contact shadows");
+    shadows::ContactShadowSettings& c = s.contact;
+    changed |= fieldCombo("contact.shadows", c.enabled);
+    if (c.enabled) {
+        changed |= fieldSlider("contact.length", c.length);
+        changed |= fieldSlider("contact.steps", c.steps);
+        changed |= fieldSlider("contact.thickness", c.thickness);
+    }
     return changed;
 }
 

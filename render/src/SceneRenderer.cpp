@@ -9,6 +9,7 @@
 #include "TextureSampling.hpp"
 #include "cache/LocalTileCache.hpp"
 #include "graph/FrameGraph.hpp"
+#include "passes/ContactShadowPass.hpp"
 #include "passes/FrameState.hpp"
 #include "passes/DepthFitPasses.hpp"
 #include "passes/DepthPrepass.hpp"
@@ -274,6 +275,8 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     stats.notes = notes_;
     state.screenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !uncollected;
     state.depthFit = frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit;
+    state.contact = frame.shadows.contact.enabled;
+    state.contactShadows = contact_.get();
     state.casters = casters_;
     state.litDraws = litDraws_;
     fillFrameBlocks(camera, frame);
@@ -317,6 +320,9 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     state.environment = environment_.get();
     state.litFrameUniforms = frameUniforms(camera, frame, clusters.grid);
     state.litFrame = uniforms_.push(state.litFrameUniforms);
+    if (state.contact)
+        state.contactUniforms =
+            uniforms_.push(contactShadowUniforms(device_.conventions(), camera, frame, state.litFrameUniforms));
     if (frame.visibilityOf)
         state.visibilityLight = litLightIndex(*frame.visibilityOf);
     state.features = frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_, staticShadows_->plan());
@@ -368,14 +374,10 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
         graph.importTexture(frame::kReceiverPositionDy, screenSpace_->positionDy());
         graph.importTexture(frame::kScreenSpaceShadows, screenSpace_->shadows(), state_->screenSpace);
     }
-    if (frame.msaa > 1) {
-        graph.createTexture(frame::kMultisampledColor, {.width = frame.width,
-                                                        .height = frame.height,
-                                                        .format = kLitColorFormat,
-                                                        .usage = rhi::TextureUsage::RenderTarget,
-                                                        .samples = frame.msaa});
-        graph.createTexture(frame::kMultisampledDepth, depthTargetDesc(frame, frame.msaa));
-    }
+    if (contact_)
+        graph.importTexture(frame::kContactShadows, contact_->shadows());
+    if (frame.msaa > 1)
+        createMultisampledTargets(graph, frame);
     for (const UserTexture& texture : userTextures_)
         graph.importTexture(texture.name, texture.texture, true);
 
@@ -391,10 +393,12 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     add(std::make_unique<LocalAtlasPass>(state, localShadowPass_, *localTiles_, localPlan_, gpuScene_.scene()));
     add(std::make_unique<DepthPrepassPass>(state, *depthPrepass_, gpuScene_));
     add(std::make_unique<DepthFitPrepassPass>(state, depthFitPrepass_.get(), gpuScene_));
+    add(std::make_unique<ContactPrepassPass>(state, contactPrepass_.get(), gpuScene_));
     if (screenSpace_) {
         add(std::make_unique<ReceiverPrepassPass>(state, *receiverPrepass_, *screenSpace_, gpuScene_));
         add(std::make_unique<ScreenSpaceShadowsPass>(state, *screenSpace_));
     }
+    add(std::make_unique<ContactShadowsPass>(state, contact_.get()));
     add(std::make_unique<LitPass>(state, litPipelines, gpuScene_, screenSpace_.get()));
     add(std::make_unique<DepthReductionPass>(state, depthReduction_.get()));
     add(std::make_unique<ResolvePass>(state, *lit_));

@@ -100,7 +100,7 @@ ShadowSettingsField field(std::string_view path, SettingRange range, std::string
 {
     using Value = std::remove_cvref_t<decltype(member(std::declval<ShadowSettings&>()))>;
     SettingValueKind kind = SettingValueKind::Number;
-    if constexpr (std::is_enum_v<Value>)
+    if constexpr (std::is_enum_v<Value> || std::is_same_v<Value, bool>)
         kind = SettingValueKind::Name;
     else if constexpr (std::is_same_v<Value, glm::vec3>)
         kind = SettingValueKind::Numbers3;
@@ -300,6 +300,20 @@ std::vector<ShadowSettingsField> makeFields()
         numeric(
             "static.localAtlasSize", kAtlasSizes, "texels per side of the spot and point lights' static atlas",
             [](auto& s) -> auto& { return s.staticMaps.localAtlasSize; }),
+        named(
+            "contact.shadows", {{0, "off"}, {1, "on"}},
+            "a short march through the depth buffer towards each directional light, added to its shadow map",
+            [](auto& s) -> auto& { return s.contact.enabled; }, "--contact-shadows"),
+        numeric(
+            "contact.length", {SettingRangeKind::Closed, 0.01, 10}, "metres the contact march goes towards the light",
+            [](auto& s) -> auto& { return s.contact.length; }),
+        numeric(
+            "contact.steps", {SettingRangeKind::Closed, 1, 64}, "depth samples along the contact march",
+            [](auto& s) -> auto& { return s.contact.steps; }),
+        numeric(
+            "contact.thickness", {SettingRangeKind::Closed, 0.001, 10},
+            "metres behind a depth sample that the contact march counts as inside its surface",
+            [](auto& s) -> auto& { return s.contact.thickness; }),
     }};
 }
 
@@ -503,6 +517,15 @@ std::optional<SettingsProblem> findStaticSettingsProblem(const StaticShadowSetti
     return outsideRange("static.localAtlasSize", s.localAtlasSize);
 }
 
+std::optional<SettingsProblem> findContactSettingsProblem(const ContactShadowSettings& c)
+{
+    if (auto problem = outsideRange("contact.length", c.length))
+        return problem;
+    if (auto problem = outsideRange("contact.steps", c.steps))
+        return problem;
+    return outsideRange("contact.thickness", c.thickness);
+}
+
 } // namespace
 
 std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
@@ -541,7 +564,9 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return problem;
     if (auto problem = findSoftSettingsProblem(s.soft))
         return problem;
-    return findStaticSettingsProblem(s.staticMaps);
+    if (auto problem = findStaticSettingsProblem(s.staticMaps))
+        return problem;
+    return findContactSettingsProblem(s.contact);
 }
 
 } // namespace detail

@@ -75,6 +75,7 @@ ShadowSettings unusualSettings()
               .maxPenumbraTexels = 30.0f,
               .poissonRadiusTexels = 3.25f,
               .diskRotation = Toggle::Off};
+    s.contact = {.enabled = true, .length = 0.75f, .steps = 24, .thickness = 0.05f};
     return s;
 }
 
@@ -114,6 +115,8 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
               "directional.atlasSize: 16384 is out of range, allowed powers of two 256..8192");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.projection = CascadeProjection(3); }),
               "directional.projection: 3 is out of range, allowed stable, close, depthFit");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.contact.steps = 0; }),
+              "contact.steps: 0 is out of range, allowed 1..64");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.maxDistance = 0.0f; }),
               "maxDistance: 0 is out of range, allowed > 0.001");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.distanceFade = 1.5f; }),
@@ -234,9 +237,8 @@ TEST(ShadowSettingsJson, BothNamesOfALocalFieldAreRefused)
 TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
-    EXPECT_EQ(
-        parseError(R"({"maxDistanse": 5})"),
-        "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, local, soft, static");
+    EXPECT_EQ(parseError(R"({"maxDistanse": 5})"), "shadows.json: maxDistanse: unknown field, allowed maxDistance, "
+                                                   "distanceFade, directional, local, soft, static, contact");
     EXPECT_EQ(parseError(R"({"static": {"update": "sometimes"}})"),
               "shadows.json: static.update: unknown value \"sometimes\", allowed everyFrame, onChange, onDemand");
     EXPECT_EQ(parseError(R"({"static": {"directionalAtlasSize": 16384}})"),

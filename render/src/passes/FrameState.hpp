@@ -14,6 +14,7 @@
 
 namespace penumbra::render {
 
+class ContactShadowPass;
 class EnvironmentMaps;
 class LocalLightTextures;
 class StaticShadowCache;
@@ -63,6 +64,9 @@ struct FrameState {
     bool screenSpace = false; // directional shadows collected in screen space
     bool multisampled = false;
     bool depthFit = false; // directional.projection depthFit: the lit depth is reduced for the next frame's plan
+    bool contact = false; // shadows.contact: the lit pass takes the contact shadow texture's minimum
+    const ContactShadowPass* contactShadows = nullptr; // its texture, with `contact`
+    rhi::UniformSlice contactUniforms; // the contact march's block (ContactShadowUniforms)
     rhi::UniformArena* uniforms = nullptr; // this frame's blocks
     LitFrameUniforms litFrameUniforms; // the lit view's Frame block
     rhi::UniformSlice litFrame; // litFrameUniforms, pushed

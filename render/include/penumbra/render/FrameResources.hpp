@@ -16,8 +16,10 @@ inline constexpr std::string_view kLocalStaticTilesPass = "local static tiles";
 inline constexpr std::string_view kLocalAtlasPass = "local atlas";
 inline constexpr std::string_view kDepthPrepass = "depth prepass";
 inline constexpr std::string_view kDepthFitPrepass = "depth fit prepass";
+inline constexpr std::string_view kContactPrepass = "contact prepass";
 inline constexpr std::string_view kReceiverPrepass = "receiver prepass";
 inline constexpr std::string_view kScreenSpaceShadowsPass = "screen-space shadows";
+inline constexpr std::string_view kContactShadowsPass = "contact shadows";
 inline constexpr std::string_view kLitPass = "lit";
 inline constexpr std::string_view kDepthReductionPass = "depth reduction";
 inline constexpr std::string_view kResolvePass = "msaa resolve";
@@ -31,8 +33,10 @@ inline constexpr std::array kPasses{kSkinningPass,
                                     kLocalAtlasPass,
                                     kDepthPrepass,
                                     kDepthFitPrepass,
+                                    kContactPrepass,
                                     kReceiverPrepass,
                                     kScreenSpaceShadowsPass,
+                                    kContactShadowsPass,
                                     kLitPass,
                                     kDepthReductionPass,
                                     kResolvePass,
@@ -57,6 +61,8 @@ inline constexpr std::string_view kLightIndices = "light indices";
 inline constexpr std::string_view kReceiverPositionDx = "receiver position dx";
 inline constexpr std::string_view kReceiverPositionDy = "receiver position dy";
 inline constexpr std::string_view kScreenSpaceShadows = "screen-space shadows";
+// shadows.contact: each directional light's contact shadow march (render/src/passes/ContactShadowPass).
+inline constexpr std::string_view kContactShadows = "contact shadows";
 inline constexpr std::string_view kCascadeView = "cascade view";
 inline constexpr std::string_view kVisibilityView = "visibility view";
 

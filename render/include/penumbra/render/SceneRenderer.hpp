@@ -27,6 +27,7 @@
 
 namespace penumbra::render {
 
+class ContactShadowPass;
 class DepthPrepass;
 class DepthReduction;
 class EnvironmentMaps;
@@ -265,6 +266,9 @@ private:
     // the multisampled depthPrepass_ with MSAA, instead of it without) and the collection.
     std::unique_ptr<DepthPrepass> receiverPrepass_;
     std::unique_ptr<ScreenSpaceShadowPass> screenSpace_;
+    // Contact shadows, made when a frame first asks for them: the march, and with MSAA its single-sampled prepass.
+    std::unique_ptr<ContactShadowPass> contact_;
+    std::unique_ptr<DepthPrepass> contactPrepass_;
     // Depth fit, made when a frame first asks for it: the reduction, and with MSAA its single-sampled prepass.
     std::unique_ptr<DepthReduction> depthReduction_;
     std::unique_ptr<DepthPrepass> depthFitPrepass_;

@@ -168,6 +168,17 @@ struct StaticShadowSettings {
     std::uint32_t localAtlasSize = 2048;
 };
 
+// Contact shadows: a short march through the camera's depth buffer from each shaded pixel towards each shadowed
+// directional light, whose hit darkens the light's direct term (the minimum with the map's visibility) where the
+// map's texels and biases leave a gap under small casters and at contacts (Bend Studio, "Bend Studio's screen space
+// shadows", SIGGRAPH 2023; Unreal Engine's "Contact Shadows" documentation).
+struct ContactShadowSettings {
+    bool enabled = false;
+    float length = 0.3f; // metres of the march towards the light
+    std::uint32_t steps = 12; // depth samples along it
+    float thickness = 0.2f; // metres behind a depth sample that still count as inside its surface
+};
+
 // Every shadow setting of a frame; docs/settings.md lists each field with its default and range.
 struct ShadowSettings {
     float maxDistance = 100.0f; // view depth beyond which nothing is shadowed; applies to every light
@@ -176,6 +187,7 @@ struct ShadowSettings {
     LocalShadowSettings local;
     SoftShadowSettings soft;
     StaticShadowSettings staticMaps;
+    ContactShadowSettings contact;
 };
 
 // Whether the settings keep static shadow maps (any update mode but EveryFrame).
