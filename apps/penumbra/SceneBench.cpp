@@ -273,7 +273,7 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
             r.passes[passIndex("screenSpaceShadows")].median(), r.passes[passIndex("lit")].median(),
             r.passes[passIndex("resolve")].median(), r.passes[passIndex("reference")].median(), litOverReference(r),
             r.frame.max());
-    if (frame.shadows.contact.enabled)
+    if (frame.shadows.contact.shadows == shadows::Toggle::On)
         for (const ConfigurationResult& r : results) {
             const double lit = r.passes[passIndex("lit")].median();
             const double contact = r.passes[passIndex("contactShadows")].median();

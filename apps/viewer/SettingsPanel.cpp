@@ -265,8 +265,8 @@ bool shadowSettings(shadows::ShadowSettings& s)
     ImGui::Separator();
     ImGui::TextUnformatted("contact shadows");
     shadows::ContactShadowSettings& c = s.contact;
-    changed |= fieldCombo("contact.shadows", c.enabled);
-    if (c.enabled) {
+    changed |= fieldCombo("contact.shadows", c.shadows);
+    if (c.shadows == shadows::Toggle::On) {
         changed |= fieldSlider("contact.length", c.length);
         changed |= fieldSlider("contact.steps", c.steps);
         changed |= fieldSlider("contact.thickness", c.thickness);

@@ -92,7 +92,7 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         if (frame.msaa > 1 && !depthFitPrepass_)
             depthFitPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1);
     }
-    if (frame.shadows.contact.enabled)
+    if (frame.shadows.contact.shadows == shadows::Toggle::On)
         prepareContactShadows(device_, frame, contact_, contactPrepass_);
     const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
     if (firstScreenSpace) {

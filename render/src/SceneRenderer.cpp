@@ -275,7 +275,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     stats.notes = notes_;
     state.screenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !uncollected;
     state.depthFit = frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit;
-    state.contact = frame.shadows.contact.enabled;
+    state.contact = frame.shadows.contact.shadows == shadows::Toggle::On;
     state.contactShadows = contact_.get();
     state.casters = casters_;
     state.litDraws = litDraws_;

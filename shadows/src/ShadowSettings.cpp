@@ -100,7 +100,7 @@ ShadowSettingsField field(std::string_view path, SettingRange range, std::string
 {
     using Value = std::remove_cvref_t<decltype(member(std::declval<ShadowSettings&>()))>;
     SettingValueKind kind = SettingValueKind::Number;
-    if constexpr (std::is_enum_v<Value> || std::is_same_v<Value, bool>)
+    if constexpr (std::is_enum_v<Value>)
         kind = SettingValueKind::Name;
     else if constexpr (std::is_same_v<Value, glm::vec3>)
         kind = SettingValueKind::Numbers3;
@@ -301,9 +301,9 @@ std::vector<ShadowSettingsField> makeFields()
             "static.localAtlasSize", kAtlasSizes, "texels per side of the spot and point lights' static atlas",
             [](auto& s) -> auto& { return s.staticMaps.localAtlasSize; }),
         named(
-            "contact.shadows", {{0, "off"}, {1, "on"}},
+            "contact.shadows", toggleNames(),
             "a short march through the depth buffer towards each directional light, added to its shadow map",
-            [](auto& s) -> auto& { return s.contact.enabled; }, "--contact-shadows"),
+            [](auto& s) -> auto& { return s.contact.shadows; }, "--contact-shadows"),
         numeric(
             "contact.length", {SettingRangeKind::Closed, 0.01, 10}, "metres the contact march goes towards the light",
             [](auto& s) -> auto& { return s.contact.length; }),
@@ -519,6 +519,8 @@ std::optional<SettingsProblem> findStaticSettingsProblem(const StaticShadowSetti
 
 std::optional<SettingsProblem> findContactSettingsProblem(const ContactShadowSettings& c)
 {
+    if (static_cast<unsigned>(c.shadows) > static_cast<unsigned>(Toggle::On))
+        return outOfRange("contact.shadows", fmt::format("{}", static_cast<int>(c.shadows)));
     if (auto problem = outsideRange("contact.length", c.length))
         return problem;
     if (auto problem = outsideRange("contact.steps", c.steps))

@@ -75,7 +75,7 @@ ShadowSettings unusualSettings()
               .maxPenumbraTexels = 30.0f,
               .poissonRadiusTexels = 3.25f,
               .diskRotation = Toggle::Off};
-    s.contact = {.enabled = true, .length = 0.75f, .steps = 24, .thickness = 0.05f};
+    s.contact = {.shadows = Toggle::On, .length = 0.75f, .steps = 24, .thickness = 0.05f};
     return s;
 }
 

@@ -20,7 +20,7 @@ render::FrameDesc contactFrame(std::uint32_t msaa, render::ShadowPath path)
     frame.shadowPath = path;
     frame.shadows.directional.atlasSize = 512;
     frame.shadows.local.atlasSize = 512;
-    frame.shadows.contact.enabled = true;
+    frame.shadows.contact.shadows = shadows::Toggle::On;
     return frame;
 }
 

@@ -35,7 +35,7 @@ render::FrameDesc contactFrame(bool contact, float thickness = shadows::ContactS
     frame.shadows.directional.atlasSize = 512;
     // One cascade over the 100 m shadow distance: texels of 0.4 m, whose biases lift the shadows off their casters.
     frame.shadows.directional.cascadeCount = 1;
-    frame.shadows.contact.enabled = contact;
+    frame.shadows.contact.shadows = contact ? shadows::Toggle::On : shadows::Toggle::Off;
     frame.shadows.contact.thickness = thickness;
     frame.visibilityOf = kSun;
     return frame;

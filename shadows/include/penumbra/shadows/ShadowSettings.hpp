@@ -173,7 +173,7 @@ struct StaticShadowSettings {
 // map's texels and biases leave a gap under small casters and at contacts (Bend Studio, "Bend Studio's screen space
 // shadows", SIGGRAPH 2023; Unreal Engine's "Contact Shadows" documentation).
 struct ContactShadowSettings {
-    bool enabled = false;
+    Toggle shadows = Toggle::Off;
     float length = 0.3f; // metres of the march towards the light
     std::uint32_t steps = 12; // depth samples along it
     float thickness = 0.2f; // metres behind a depth sample that still count as inside its surface
