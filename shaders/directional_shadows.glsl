@@ -20,8 +20,8 @@ float fadedShadowStrength(float distance, float scale, float fade)
     return clamp((1.0 - distance * scale) * fade, 0.0, 1.0);
 }
 
-// Stable fit: the first cascade whose selection sphere holds the point, faded on squared distance. Close fit: the
-// first whose far split the view depth has not reached, faded linearly on view depth (Unity's "Close Fit" bands,
+// Stable fit: the first cascade whose selection sphere holds the point, faded on squared distance. Close and depth
+// fit: the first whose far split the view depth has not reached, faded linearly on view depth (Unity's "Close Fit" bands,
 // Catlike Coding, "Rendering 7: Shadows", section 1.7). The C++ twin is penumbra::shadows::selectCascade.
 CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
 {
@@ -29,7 +29,7 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
     s.blend = 1.0;
     s.strength = fadedShadowStrength(viewDepth, shadows.fade.inverseMaxDistance, shadows.fade.inverseDistanceFade);
     const int count = shadows.cascadeCount;
-    const bool close = shadows.cascadeProjection == PENUMBRA_PROJECTION_CLOSE;
+    const bool close = shadows.cascadeProjection != PENUMBRA_PROJECTION_STABLE;
     int i = 0;
     for (; i < count; ++i) {
         const CascadeData cascade = shadows.cascades[i];

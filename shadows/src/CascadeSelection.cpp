@@ -14,7 +14,8 @@ namespace penumbra::shadows {
 CascadeSelection selectCascade(const DirectionalShadowUniforms& u, glm::vec3 position, float viewDepth)
 {
     const auto count = static_cast<std::uint32_t>(u.cascadeCount);
-    const bool close = u.cascadeProjection == CascadeProjection::Close;
+    // Depth fit selects by view depth as the close fit does: its bands are the histogram's partition.
+    const bool close = u.cascadeProjection != CascadeProjection::Stable;
     for (std::uint32_t i = 0; i < count; ++i) {
         const CascadeData& cascade = u.cascades[i];
         if (close) {

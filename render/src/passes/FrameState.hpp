@@ -63,6 +63,8 @@ struct FrameState {
     bool screenSpace = false; // directional shadows collected in screen space
     bool multisampled = false;
     bool depthFit = false; // directional.projection depthFit: the lit depth is reduced for the next frame's plan
+    std::vector<glm::vec3> depthFitLights; // depth fit: the plan's shadowed directional lights, in slot order
+    float depthFitShadowFar = 0.0f; // depth fit: min(shadow distance, camera far), where the histogram ends
     rhi::UniformArena* uniforms = nullptr; // this frame's blocks
     LitFrameUniforms litFrameUniforms; // the lit view's Frame block
     rhi::UniformSlice litFrame; // litFrameUniforms, pushed

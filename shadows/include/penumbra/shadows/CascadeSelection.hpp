@@ -12,7 +12,8 @@ namespace penumbra::shadows {
 // receiver at world `position` and camera view depth `viewDepth` takes.
 // - Stable fit: the first cascade whose selection sphere (the culling sphere shrunk by the filter) holds the point;
 //   the fade runs over the sphere's outer cascadeFade fraction, on squared distance.
-// - Close fit: the first cascade whose far split the view depth has not reached; the fade runs linearly over the
+// - Close and depth fit: the first cascade whose far split the view depth has not reached; the fade runs linearly over
+// the
 //   last cascadeFade fraction of that depth (Unity's "Close Fit" bands, Catlike Coding, "Rendering 7: Shadows",
 //   section 1.7).
 struct CascadeSelection {
