@@ -86,13 +86,15 @@ std::vector<FrustumSlice> cascadeSlices(const ShadowCamera& camera, const Cascad
     return slices;
 }
 
-// Close and depth fit: the light-space bounds each light's tile of each cascade is fitted around, [slot][cascade].
+// Close and depth fit: the light-space bounds each light's tile of each cascade is fitted around, [slot][cascade];
+// `mapped` (depth fit's map-based selection) gives every tile the whole view's depth range.
 // Close fit: the slice's. Depth fit over a histogram that measured the light: x and y of the footprint of the samples
 // in the cascade's bins (from the bin of the slice's near distance, which a blend's overlap moves nearer), z the
 // slice's; the slice's where the bins hold none of the light's samples.
 std::vector<std::vector<Bounds>> fittedBounds(const std::vector<FrustumSlice>& slices,
                                               std::span<const ShadowedDirectionalLight> lights,
-                                              const DepthHistogram* histogram, std::span<const std::uint32_t> edges)
+                                              const DepthHistogram* histogram, std::span<const std::uint32_t> edges,
+                                              bool mapped)
 {
     std::vector<std::vector<Bounds>> bounds(lights.size());
     for (std::size_t slot = 0; slot < lights.size(); ++slot) {
@@ -102,10 +104,19 @@ std::vector<std::vector<Bounds>> fittedBounds(const std::vector<FrustumSlice>& s
             for (std::uint32_t s = 0; s < histogram->lightDirections.size(); ++s)
                 if (histogram->lightDirections[s] == lights[slot].direction)
                     measured = s;
+        // Map-based selection (CascadeSelection.hpp) gives a tile every receiver its square holds, at any view depth:
+        // its depth planes hold the whole view's.
+        const Bounds view =
+            lightSpaceBounds(basis, frustumSliceCorners(slices.front().camera, slices.front().nearDistance,
+                                                        slices.back().farDistance));
         for (std::size_t c = 0; c < slices.size(); ++c) {
             const FrustumSlice& slice = slices[c];
             Bounds b =
                 lightSpaceBounds(basis, frustumSliceCorners(slice.camera, slice.nearDistance, slice.farDistance));
+            if (mapped) {
+                b.min.z = view.min.z;
+                b.max.z = view.max.z;
+            }
             if (measured && c + 1 < edges.size()) {
                 const std::uint32_t first =
                     std::min(edges[c], depthHistogramBin(histogram->firstOctave, slice.nearDistance));
@@ -238,7 +249,8 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
                                input.direction});
     }
     const std::vector<std::vector<Bounds>> bounds =
-        close ? fittedBounds(slices, plan.lights, edges.empty() ? nullptr : depthFit.histogram, edges)
+        close ? fittedBounds(slices, plan.lights, edges.empty() ? nullptr : depthFit.histogram, edges,
+                             directional.projection == CascadeProjection::DepthFit)
               : std::vector<std::vector<Bounds>>();
     const std::vector<float> halfSizes =
         close ? fittedHalfSizes(bounds, plan.lights, plan.atlas.tileSize(), cascadeCount, directional, depthFit.kept)
@@ -258,10 +270,12 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
             cascade.tile = directionalTileIndex(slot, c, cascadeCount);
             cascade.worldToAtlas = worldToAtlas(cascade.fit.viewProjection, cascade.tile, plan.atlas, conventions);
             cascade.viewport = plan.atlas.viewport(cascade.tile);
+            // Depth fit's tiles are chosen by what they hold, not by view depth: no caster is left to the one before.
+            const bool banded = directional.projection == CascadeProjection::Close && c > 0;
             if (close)
                 cascade.casters =
                     cullCloseFitShadowCasters(cascade.fit, casters,
-                                              c > 0 ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
+                                              banded ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
                                               cullingFactor);
             else
                 cascade.casters =
