@@ -5,6 +5,7 @@
 #include "penumbra/shadows/LightBasis.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <glm/matrix.hpp>
 #include <span>
@@ -71,7 +72,12 @@ DepthReduction::DepthReduction(rhi::Device& device)
                               PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, shadowFar),
                               PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, firstOctave),
                               PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, lightCount)}}},
-         .storageLayouts = {{"DepthHistogram", sizeof(GpuHistogram), {PENUMBRA_UNIFORM_MEMBER(GpuHistogram, bins)}}},
+         .storageLayouts = {{"DepthHistogram",
+                             sizeof(GpuHistogram),
+                             {PENUMBRA_UNIFORM_MEMBER(GpuHistogram, bins),
+                              {"bins.count", std::uint32_t(offsetof(GpuBin, count)), sizeof(GpuBin::count)},
+                              {"bins.footprints", std::uint32_t(offsetof(GpuBin, footprints)),
+                               sizeof(GpuBin::footprints)}}}},
          .debugName = "depth reduction"});
     sampler_ = device.createSampler(
         {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "depth reduction"});
