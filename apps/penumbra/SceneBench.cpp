@@ -99,7 +99,8 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             ms(frame::kResolvePass),
             referenceMs,
             ms(frame::kStaticMapsPass),
-            ms(frame::kContactShadowsPass) + ms(frame::kContactPrepass)};
+            ms(frame::kContactShadowsPass) + ms(frame::kContactPrepass),
+            ms(frame::kDepthFitPrepass) + ms(frame::kDepthReductionPass)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -295,6 +296,12 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
     for (const ConfigurationResult& r : results)
         for (const auto& [reason, count] : r.redrawReasons)
             fmt::print("{}: {} light redraws over the measured frames: {}\n", r.configuration, count, reason);
+    // directional.projection depthFit: the reduction's GPU time and the plan's CPU time (the fit) against the frame.
+    for (const ConfigurationResult& r : results)
+        if (const double reduction = r.passes[passIndex("depthFit")].median(); reduction > 0.0)
+            fmt::print("{:<24} depth fit: reduction {:.3f} ms ({:.1f} % of the frame), planning {:.3f} ms ({:.1f} %)\n",
+                       r.configuration, reduction, 100.0 * reduction / r.frame.median(), r.planning.median(),
+                       100.0 * r.planning.median() / r.frame.median());
     if (results.size() == 2 && results[1].frame.median() > 0.0)
         fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,
                    results[0].frame.median() / results[1].frame.median());

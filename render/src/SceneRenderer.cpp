@@ -207,7 +207,9 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     const std::vector<shadows::PointShadowInput> points = pointShadowInputs(scene.pointLights);
     const std::vector<std::uint32_t> staticCasters = gpuScene_.staticCasters();
     return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
-                                            bounds, visibleDepths_),
+                                            bounds,
+                                            {depthHistogram_ ? &*depthHistogram_ : nullptr,
+                                             plan_.depthFit ? &*plan_.depthFit : nullptr}),
             shadows::planLocalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
                                       bounds, localPlan_.allocation),
             shadows::planStaticShadows(frame.shadows, device_.conventions(), lights, spots, points,
@@ -277,6 +279,11 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     state.depthFit = frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit;
     state.contact = frame.shadows.contact.shadows == shadows::Toggle::On;
     state.contactShadows = contact_.get();
+    if (state.depthFit) {
+        for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
+            state.depthFitLights.push_back(light.direction);
+        state.depthFitShadowFar = std::max(std::min(frame.shadows.maxDistance, camera.farPlane), camera.nearPlane);
+    }
     state.casters = casters_;
     state.litDraws = litDraws_;
     fillFrameBlocks(camera, frame);
@@ -412,18 +419,18 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     }
 }
 
-// Depth fit: this frame's reduction, read after the submission (which waited for it), is the next frame's range.
-void SceneRenderer::readVisibleDepths(const scene::Camera& camera, const FrameDesc& frame)
+// Depth fit: this frame's histogram, read after the submission (which waited for it), is the next frame's.
+void SceneRenderer::readDepthHistogram()
 {
     if (!state_->depthFit)
         return;
-    const glm::mat4 projection =
-        device_.conventions().perspective(camera.fovY, aspectOf(frame), camera.nearPlane, camera.farPlane);
-    const std::optional<shadows::ViewDepthRange> measured = depthReduction_->read(device_.conventions(), projection);
-    const shadows::DirectionalShadowSettings& directional = frame.shadows.directional;
-    if (measured)
-        visibleDepths_ = shadows::quantizeViewDepthRange(*measured, visibleDepths_, directional.depthFitSteps,
-                                                         directional.depthFitHysteresis);
+    if (std::optional<shadows::DepthHistogram> histogram = depthReduction_->read())
+        depthHistogram_ = std::move(*histogram);
+}
+
+std::optional<shadows::ViewDepthRange> SceneRenderer::visibleDepths() const
+{
+    return depthHistogram_ ? shadows::depthHistogramRange(*depthHistogram_) : std::nullopt;
 }
 
 void SceneRenderer::addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const
@@ -482,7 +489,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     graph_->execute(*commands_);
     stats.recordingMs = millisecondsSince(start);
     device_.submit(*commands_);
-    readVisibleDepths(camera, frame);
+    readDepthHistogram();
     stats.passes = graph_->timings();
     state_->stats = nullptr;
     return stats;

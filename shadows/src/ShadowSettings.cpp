@@ -202,15 +202,15 @@ std::vector<ShadowSettingsField> makeFields()
         named(
             "directional.projection", projectionSettingNames(),
             "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices; depthFit: "
-            "stable spheres over the visible depths",
+            "tiles fitted to the visible surfaces, split by their depths",
             [](auto& s) -> auto& { return s.directional.projection; }, "--projection"),
         numeric(
             "directional.depthFitSteps", {SettingRangeKind::Closed, 0, 64},
-            "depthFit's grid steps per power of two of view depth (0: unquantized)",
+            "depthFit's grid steps per power of two of its tiles' size (0: unquantized)",
             [](auto& s) -> auto& { return s.directional.depthFitSteps; }),
         numeric(
             "directional.depthFitHysteresis", {SettingRangeKind::Closed, 0, 8},
-            "grid steps the visible depths must move inside depthFit's range before it narrows",
+            "grid steps a depthFit tile's fit must shrink inside its size before the tile does",
             [](auto& s) -> auto& { return s.directional.depthFitHysteresis; }),
         named(
             "directional.atlasFormat", depthFormats(), "depth format of the directional atlas",

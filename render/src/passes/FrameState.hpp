@@ -67,6 +67,8 @@ struct FrameState {
     bool contact = false; // shadows.contact: the lit pass takes the contact shadow texture's minimum
     const ContactShadowPass* contactShadows = nullptr; // its texture, with `contact`
     rhi::UniformSlice contactUniforms; // the contact march's block (ContactShadowUniforms)
+    std::vector<glm::vec3> depthFitLights; // depth fit: the plan's shadowed directional lights, in slot order
+    float depthFitShadowFar = 0.0f; // depth fit: min(shadow distance, camera far), where the histogram ends
     rhi::UniformArena* uniforms = nullptr; // this frame's blocks
     LitFrameUniforms litFrameUniforms; // the lit view's Frame block
     rhi::UniformSlice litFrame; // litFrameUniforms, pushed

@@ -77,6 +77,15 @@ struct DirectionalShadowPlan {
     std::vector<int> shadowSlots; // per input light: its slot in `lights`, or -1
     std::vector<ShadowPlanNote> report;
     DirectionalShadowUniforms uniforms;
+    // CascadeProjection::DepthFit over a histogram: the partition and half sizes the next frame's plan keeps.
+    std::optional<DepthFitKept> depthFit;
+};
+
+// What CascadeProjection::DepthFit plans with: the last frame's histogram of the visible depths and what the last
+// depth-fit plan kept (its DirectionalShadowPlan::depthFit); either may be missing.
+struct DepthFitInput {
+    const DepthHistogram* histogram = nullptr;
+    const DepthFitKept* kept = nullptr;
 };
 
 // The caster pass's normal offset for cascade `cascade` of `light`: the lit pass's reach there (the cascade's
@@ -86,13 +95,14 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 
 // Plans a frame's directional shadows: the first 4 lights that cast shadows with strength > 0 and have a caster in
 // their cascades' reach (castersInReach) get cascadeCount tiles each; every other light is listed in the report with
-// the reason (never an exception). CascadeProjection::DepthFit splits the cascades over `visibleDepths` (the
-// quantized range, quantizeViewDepthRange) and is the stable fit where it is nullopt (no frame reduced yet). Throws
-// rhi::Error only for settings that fail validate().
+// the reason (never an exception). CascadeProjection::DepthFit is the close fit (view-depth bands) with its splits from
+// the histogram's partition (depthFitPartition) and each light's tile around the footprint of the samples in its band
+// (depthHistogramFootprint), the half sizes on a grid with hysteresis (depthFitHalfSize); without a histogram (no
+// frame reduced yet) it is the close fit over the usual splits, tile sizes on the grid. Throws rhi::Error only for
+// settings that fail validate().
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
-                                             std::span<const Bounds> casterBounds,
-                                             std::optional<ViewDepthRange> visibleDepths = std::nullopt);
+                                             std::span<const Bounds> casterBounds, DepthFitInput depthFit = {});
 
 } // namespace penumbra::shadows

@@ -48,9 +48,10 @@ enum class CascadeBlend { Hard, Soft, Dither };
 // Quality"). Stable fit: cascades are bands of distance to the camera, each tile a texel-snapped square around the
 // slice's bounding sphere, so the shadow texels stay put while the camera moves or turns. Close fit: cascades are
 // bands of the camera's view depth, each tile fitted to the light-space bounds of its frustum slice: more texels on
-// screen, but the tiles change size as the camera turns and the shadow edges swim. Depth fit: the stable fit over
-// splits of the view depths the camera saw last frame (a reduction of the depth prepass, quantized with hysteresis:
-// shadows/DepthFit.hpp), so the texels hold still while the visible depths stay within a grid step; the stable fit
+// screen, but the tiles change size as the camera turns and the shadow edges swim. Depth fit: bands of view depth
+// split where the last frame's visible depths put the most texels on them, each tile fitted to the light-space
+// footprint of the surfaces seen in its band (a histogram reduced from the depth prepass: shadows/DepthFit.hpp), the
+// tile sizes on a grid with hysteresis so the texels hold still while the footprints barely change; the close fit
 // until a frame has been reduced. The values are the lit shader's (generated into shadow_constants.glsl as
 // PENUMBRA_PROJECTION_<NAME>).
 enum class CascadeProjection { Stable, Close, DepthFit };
@@ -108,9 +109,10 @@ struct DirectionalShadowSettings {
     float cascadeFade = 0.1f; // fraction of the last cascade's radius that fades
     CascadeBlend cascadeBlend = CascadeBlend::Hard;
     CascadeProjection projection = CascadeProjection::Stable;
-    // Depth fit: grid steps per power of two of view depth for the fitted range and splits (0: unquantized, the
-    // range as measured, which swims), and how many steps further inside the kept range the measured one must move
-    // before the fit narrows.
+    // Depth fit: grid steps per power of two of light-space size for the tiles' half sizes (0: unquantized, as the
+    // footprints need, which swims), and how many steps further below the kept size a tile's need must fall before
+    // the tile shrinks; hysteresis / steps is also the log2 of the texel size a kept partition may lose against the
+    // best before it is dropped.
     std::uint32_t depthFitSteps = 8;
     float depthFitHysteresis = 1.0f;
     rhi::Format atlasFormat = rhi::Format::D32F;
