@@ -93,7 +93,8 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             ms(frame::kLitPass),
             ms(frame::kResolvePass),
             referenceMs,
-            ms(frame::kStaticMapsPass)};
+            ms(frame::kStaticMapsPass),
+            ms(frame::kCasterCullingPass)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -216,6 +217,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"shadowPath", kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)]},
             {"cascadeCount", frame.shadows.directional.cascadeCount},
             {"atlasSize", frame.shadows.directional.atlasSize},
+            {"culling", frame.shadows.culling == shadows::CasterCullingMode::Gpu ? "gpu" : "cpu"},
             {"frameMs", r.frame.median()},
             {"frameMsMin", r.frame.min()},
             {"frameMsMax", r.frame.max()},

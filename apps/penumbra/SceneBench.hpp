@@ -25,9 +25,12 @@ struct SceneBenchOptions {
 // The pass names of the JSON's "passes" objects, in frame order: the depth prepass, the directional and the
 // local atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass (timed in a
 // frame of its own, which the frame times leave out); then the static shadow maps drawn in the frame (drawn first,
-// listed last to keep the older names' order).
-inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "otherAtlas", "screenSpaceShadows",
-                                                  "lit",   "resolve",          "reference",  "staticAtlas"};
+// listed last to keep the older names' order), and the GPU caster culling pass (--culling gpu).
+inline constexpr const char* kBenchPassNames[] = {"depth",        "directionalAtlas",
+                                                  "otherAtlas",   "screenSpaceShadows",
+                                                  "lit",          "resolve",
+                                                  "reference",    "staticAtlas",
+                                                  "casterCulling"};
 
 // Prints a table per light count and returns {"scene": [one object per light count and configuration: configuration,
 // scene, lights (the --lights count or null), width, height,

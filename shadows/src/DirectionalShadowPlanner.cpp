@@ -189,6 +189,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     const std::vector<float> halfSizes =
         close ? closeFitHalfSizes(slices, plan.lights, plan.atlas.tileSize()) : std::vector<float>();
     const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
+    const bool gpuCulling = culledOnGpu(settings);
     for (std::uint32_t slot = 0; slot < plan.lights.size(); ++slot) {
         ShadowedDirectionalLight& light = plan.lights[slot];
         const LightSpaceCasters& casters = selectedCasters[slot];
@@ -205,16 +206,16 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
             cascade.tile = directionalTileIndex(slot, c, cascadeCount);
             cascade.worldToAtlas = worldToAtlas(cascade.fit.viewProjection, cascade.tile, plan.atlas, conventions);
             cascade.viewport = plan.atlas.viewport(cascade.tile);
-            if (close)
-                cascade.casters =
-                    cullCloseFitShadowCasters(cascade.fit, casters,
-                                              c > 0 ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
-                                              cullingFactor);
-            else
-                cascade.casters =
-                    cullShadowCasters(cascade.fit, casters,
-                                      c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt,
-                                      cullingFactor);
+            const std::optional<Sphere> previousSphere =
+                c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt;
+            const std::optional<FrustumSlice> previousSlice =
+                c > 0 ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt;
+            cascade.volume = close ? closeCascadeVolume(cascade.fit, previousSlice, cullingFactor)
+                                   : cascadeVolume(cascade.fit, previousSphere, cullingFactor);
+            // Culled on the GPU, the tile lists none here: the culling pass tests every caster against the volume.
+            if (!gpuCulling)
+                cascade.casters = close ? cullCloseFitShadowCasters(cascade.fit, casters, previousSlice, cullingFactor)
+                                        : cullShadowCasters(cascade.fit, casters, previousSphere, cullingFactor);
             plan.uniforms.tileSoft[cascade.tile] =
                 directionalTileSoft(cascade.fit, cascade.worldToAtlas, casters, conventions);
             light.cascades.push_back(std::move(cascade));

@@ -56,6 +56,7 @@ ShadowSettings unusualSettings()
     s.local.nearPlane = 0.0375f;
     s.local.tileResolution = 256;
     s.local.minTileResolution = 32;
+    s.culling = CasterCullingMode::Gpu;
     s.staticMaps.update = StaticShadowUpdate::OnDemand;
     s.staticMaps.realtimeCasters = RealtimeCasters::Dynamic;
     s.staticMaps.directionalAtlasSize = 8192;
@@ -209,7 +210,8 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
     EXPECT_EQ(
         parseError(R"({"maxDistanse": 5})"),
-        "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, local, soft, static");
+        "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, culling, directional, local, soft, "
+        "static");
     EXPECT_EQ(parseError(R"({"static": {"update": "sometimes"}})"),
               "shadows.json: static.update: unknown value \"sometimes\", allowed everyFrame, onChange, onDemand");
     EXPECT_EQ(parseError(R"({"static": {"directionalAtlasSize": 16384}})"),

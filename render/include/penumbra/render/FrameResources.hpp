@@ -10,6 +10,8 @@ namespace penumbra::render::frame {
 // Passes, in the order they run.
 inline constexpr std::string_view kSkinningPass = "skinning"; // a scene with skinned or morphed meshes
 inline constexpr std::string_view kStaticMapsPass = "static maps";
+// Shadow casters culled per tile on the GPU (ShadowSettings::culling gpu).
+inline constexpr std::string_view kCasterCullingPass = "caster culling";
 inline constexpr std::string_view kDirectionalStaticTilesPass = "directional static tiles";
 inline constexpr std::string_view kDirectionalAtlasPass = "directional atlas";
 inline constexpr std::string_view kLocalStaticTilesPass = "local static tiles";
@@ -23,21 +25,11 @@ inline constexpr std::string_view kDepthReductionPass = "depth reduction";
 inline constexpr std::string_view kResolvePass = "msaa resolve";
 inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
-inline constexpr std::array kPasses{kSkinningPass,
-                                    kStaticMapsPass,
-                                    kDirectionalStaticTilesPass,
-                                    kDirectionalAtlasPass,
-                                    kLocalStaticTilesPass,
-                                    kLocalAtlasPass,
-                                    kDepthPrepass,
-                                    kDepthFitPrepass,
-                                    kReceiverPrepass,
-                                    kScreenSpaceShadowsPass,
-                                    kLitPass,
-                                    kDepthReductionPass,
-                                    kResolvePass,
-                                    kCascadeViewPass,
-                                    kVisibilityViewPass};
+inline constexpr std::array kPasses{
+    kSkinningPass,         kStaticMapsPass,       kCasterCullingPass,      kDirectionalStaticTilesPass,
+    kDirectionalAtlasPass, kLocalStaticTilesPass, kLocalAtlasPass,         kDepthPrepass,
+    kDepthFitPrepass,      kReceiverPrepass,      kScreenSpaceShadowsPass, kLitPass,
+    kDepthReductionPass,   kResolvePass,          kCascadeViewPass,        kVisibilityViewPass};
 
 // Textures. The lit image, the atlases and the views are the frame's outputs (SceneRenderer's accessors read them).
 inline constexpr std::string_view kLitImage = "lit image"; // RGBA8 sRGB-encoded, single-sampled
