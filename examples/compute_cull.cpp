@@ -93,11 +93,11 @@ int main(int argc, char** argv)
     auto cull = device->createComputePipeline({.compute = cullShader.get(), .debugName = "cull"});
     auto vertex = device->createShader({rhi::ShaderStage::Vertex, vertexGlsl, "squares.vert"});
     auto fragment = device->createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "squares.frag"});
-    auto squares = device->createPipeline({.vertex = vertex.get(),
-                                           .fragment = fragment.get(),
-                                           .vertexLayout = {{{sizeof(offsets[0]), true}},
-                                                            {{0, rhi::VertexFormat::Float2, 0, 0}}},
-                                           .colorTargets = {{}}});
+    auto squares =
+        device->createPipeline({.vertex = vertex.get(),
+                                .fragment = fragment.get(),
+                                .vertexLayout = {{{sizeof(offsets[0]), true}}, {{0, rhi::VertexFormat::Float2, 0, 0}}},
+                                .colorTargets = {{}}});
     auto picture = device->createTexture({.width = kSize, .height = kSize, .usage = rhi::TextureUsage::RenderTarget});
     const rhi::Attachment attachment{picture.get(), 0};
     auto target = device->createFramebuffer({.colors = {&attachment, 1}});

@@ -34,11 +34,11 @@ inline constexpr const char* kBenchPassNames[] = {"depth",        "directionalAt
 
 // Prints a table per light count and returns {"scene": [one object per light count and configuration: configuration,
 // scene, lights (the --lights count or null), width, height,
-// frames, warmup, frameMs (median), frameMsMin, frameMsMax, passes {name: median ms}, passesMin, passesMax,
-// litOverReference, instancing, cpuMs {planning, recording} (medians), cpuMsMax, draws {depth, lit},
-// casterDraws, cpuFrameMs (planning + recording, median), shadowedLights, lightsWithoutShadow, localTilesDrawn and
-// localTilesCached (medians)]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that
-// is missing or, with validate, reports a message.
+// frames, warmup, culling ("cpu" or "gpu"), frameMs (median), frameMsMin, frameMsMax, passes {name: median ms},
+// passesMin, passesMax, litOverReference, instancing, cpuMs {planning, recording} (medians), cpuMsMax, draws {depth,
+// lit}, casterDraws, cpuFrameMs (planning + recording, median), shadowedLights, lightsWithoutShadow, localTilesDrawn
+// and localTilesCached (medians)]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that is
+// missing or, with validate, reports a message.
 nlohmann::json runSceneBench(const SceneBenchOptions& options);
 
 } // namespace penumbra::apps

@@ -83,11 +83,12 @@ void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const Shadow
                               bool normalMatrices)
 {
     if (casters.size() != bounds.size())
-        throw rhi::Error(fmt::format("GPU caster culling: {} casters, but {} caster bounds", casters.size(),
-                                     bounds.size()));
+        throw rhi::Error(
+            fmt::format("GPU caster culling: {} casters, but {} caster bounds", casters.size(), bounds.size()));
     casterCount_ = static_cast<std::uint32_t>(casters.size());
     tileCount_ = static_cast<std::uint32_t>(volumes.size());
-    std::vector<std::uint32_t> all(casters.size());
+    std::vector<std::uint32_t>& all = scratch_.all;
+    all.resize(casters.size());
     for (std::uint32_t i = 0; i < all.size(); ++i)
         all[i] = i;
     // The batches every tile draws, as the CPU path batches each tile's list (ShadowCasterDraws::draw).
@@ -97,8 +98,10 @@ void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const Shadow
     const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
     reserve(casterCount_, tileCount_, std::uint64_t(tileCount_) * batchCount);
 
-    std::vector<CullingCaster> culling(casters.size());
-    std::vector<InstanceTransform> transforms(casters.size());
+    std::vector<CullingCaster>& culling = scratch_.casters;
+    std::vector<InstanceTransform>& transforms = scratch_.transforms;
+    culling.resize(casters.size());
+    transforms.resize(casters.size());
     for (std::uint32_t b = 0; b < batchCount; ++b) {
         const InstanceBatches::Batch& batch = batches_.batches[b];
         const ShadowCaster& first = casters[batches_.items[batch.first]];
@@ -112,8 +115,8 @@ void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const Shadow
             transforms[i] = normalMatrices ? instanceTransform(casters[i].model) : InstanceTransform{casters[i].model};
         }
     }
-    std::vector<CulledDraw> draws;
-    draws.reserve(std::size_t(tileCount_) * batchCount);
+    std::vector<CulledDraw>& draws = scratch_.draws;
+    draws.clear();
     for (std::uint32_t t = 0; t < tileCount_; ++t)
         for (const InstanceBatches::Batch& batch : batches_.batches)
             draws.push_back({.indexCount = casters[batches_.items[batch.first]].indexCount,

@@ -105,16 +105,18 @@ TEST_F(GpuCullingTest, ListsMatchThePlanner)
 TEST_F(GpuCullingTest, DroppedCasterCatchesFault)
 {
     std::vector<std::vector<std::uint32_t>> planned, culled;
-    cullBoth([](auto&, std::vector<shadows::Bounds>& bounds) { bounds[kCubes / 2] = {glm::vec3(1e6f), glm::vec3(1e6f)}; },
-             planned, culled);
+    cullBoth(
+        [](auto&, std::vector<shadows::Bounds>& bounds) {
+            bounds[kCubes / 2] = {glm::vec3(1e6f), glm::vec3(1e6f)};
+        },
+        planned, culled);
     EXPECT_NE(culled, planned);
 }
 
 TEST_F(GpuCullingTest, WrongBoundsTestCatchesFault)
 {
     std::vector<std::vector<std::uint32_t>> planned, culled;
-    cullBoth([](std::vector<shadows::CasterVolume>& volumes, auto&) { volumes[0].square.z *= 0.5f; }, planned,
-             culled);
+    cullBoth([](std::vector<shadows::CasterVolume>& volumes, auto&) { volumes[0].square.z *= 0.5f; }, planned, culled);
     EXPECT_NE(culled, planned);
 }
 

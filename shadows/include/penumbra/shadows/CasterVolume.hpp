@@ -46,12 +46,12 @@ struct alignas(16) CasterVolume {
 };
 
 inline constexpr std::array kCasterVolumeFields{
-    PENUMBRA_SHADER_FIELD(CasterVolume, view),          PENUMBRA_SHADER_FIELD(CasterVolume, frustum),
-    PENUMBRA_SHADER_FIELD(CasterVolume, right),         PENUMBRA_SHADER_FIELD(CasterVolume, up),
-    PENUMBRA_SHADER_FIELD(CasterVolume, direction),     PENUMBRA_SHADER_FIELD(CasterVolume, square),
-    PENUMBRA_SHADER_FIELD(CasterVolume, sphere),        PENUMBRA_SHADER_FIELD(CasterVolume, slicePosition),
-    PENUMBRA_SHADER_FIELD(CasterVolume, sliceForward),  PENUMBRA_SHADER_FIELD(CasterVolume, sliceUp),
-    PENUMBRA_SHADER_FIELD(CasterVolume, sliceRight),    PENUMBRA_SHADER_FIELD(CasterVolume, kind),
+    PENUMBRA_SHADER_FIELD(CasterVolume, view),         PENUMBRA_SHADER_FIELD(CasterVolume, frustum),
+    PENUMBRA_SHADER_FIELD(CasterVolume, right),        PENUMBRA_SHADER_FIELD(CasterVolume, up),
+    PENUMBRA_SHADER_FIELD(CasterVolume, direction),    PENUMBRA_SHADER_FIELD(CasterVolume, square),
+    PENUMBRA_SHADER_FIELD(CasterVolume, sphere),       PENUMBRA_SHADER_FIELD(CasterVolume, slicePosition),
+    PENUMBRA_SHADER_FIELD(CasterVolume, sliceForward), PENUMBRA_SHADER_FIELD(CasterVolume, sliceUp),
+    PENUMBRA_SHADER_FIELD(CasterVolume, sliceRight),   PENUMBRA_SHADER_FIELD(CasterVolume, kind),
 };
 inline constexpr shaders::ShaderStruct kCasterVolumeStruct{"CasterVolume", sizeof(CasterVolume), kCasterVolumeFields};
 static_assert(shaders::matchesLayout(kCasterVolumeStruct, shaders::BlockLayout::Std430, true));

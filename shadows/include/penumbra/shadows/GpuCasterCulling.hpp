@@ -52,8 +52,8 @@ struct CulledDraw {
     std::uint32_t firstInstance = 0; // the batch's first slot in the tile's range
 };
 inline constexpr std::array kCulledDrawFields{
-    PENUMBRA_SHADER_FIELD(CulledDraw, indexCount),   PENUMBRA_SHADER_FIELD(CulledDraw, instanceCount),
-    PENUMBRA_SHADER_FIELD(CulledDraw, firstIndex),   PENUMBRA_SHADER_FIELD(CulledDraw, vertexOffset),
+    PENUMBRA_SHADER_FIELD(CulledDraw, indexCount),    PENUMBRA_SHADER_FIELD(CulledDraw, instanceCount),
+    PENUMBRA_SHADER_FIELD(CulledDraw, firstIndex),    PENUMBRA_SHADER_FIELD(CulledDraw, vertexOffset),
     PENUMBRA_SHADER_FIELD(CulledDraw, firstInstance),
 };
 inline constexpr shaders::ShaderStruct kCulledDrawStruct{"CulledDraw", sizeof(CulledDraw), kCulledDrawFields};
@@ -108,6 +108,14 @@ private:
     std::unique_ptr<rhi::Buffer> draws_;
     std::unique_ptr<rhi::Buffer> counts_;
     InstanceBatches batches_;
+    // What record() uploads, kept from frame to frame: fresh vectors of 10^5 elements cost more in page faults than
+    // filling them.
+    struct Scratch {
+        std::vector<std::uint32_t> all;
+        std::vector<CullingCaster> casters;
+        std::vector<InstanceTransform> transforms;
+        std::vector<CulledDraw> draws;
+    } scratch_;
     std::uint32_t casterCount_ = 0;
     std::uint32_t tileCount_ = 0;
 };
