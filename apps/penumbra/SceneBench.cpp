@@ -100,7 +100,8 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             referenceMs,
             ms(frame::kStaticMapsPass),
             ms(frame::kContactShadowsPass) + ms(frame::kContactPrepass),
-            ms(frame::kDepthFitPrepass) + ms(frame::kDepthReductionPass)};
+            ms(frame::kDepthFitPrepass) + ms(frame::kDepthReductionPass),
+            ms(frame::kCasterCullingPass)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -230,6 +231,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"shadowPath", kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)]},
             {"cascadeCount", frame.shadows.directional.cascadeCount},
             {"atlasSize", frame.shadows.directional.atlasSize},
+            {"culling", frame.shadows.culling == shadows::CasterCullingMode::Gpu ? "gpu" : "cpu"},
             {"frameMs", r.frame.median()},
             {"frameMsMin", r.frame.min()},
             {"frameMsMax", r.frame.max()},

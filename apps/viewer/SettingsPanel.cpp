@@ -220,6 +220,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
                                 static_cast<float>(maxDistance.range.low), 1000.0f);
     summaryTooltip(maxDistance);
     changed |= fieldSlider("distanceFade", s.distanceFade);
+    changed |= fieldCombo("culling", s.culling);
     shadows::DirectionalShadowSettings& d = s.directional;
     changed |= fieldPowerOfTwo("directional.atlasSize", d.atlasSize);
     changed |= atlasFormatCombo(d.atlasFormat);

@@ -11,6 +11,7 @@
 #include "graph/FrameGraph.hpp"
 #include "passes/ContactShadowPass.hpp"
 #include "passes/FrameState.hpp"
+#include "passes/CasterCullingPass.hpp"
 #include "passes/DepthFitPasses.hpp"
 #include "passes/DepthPrepass.hpp"
 #include "passes/DepthReduction.hpp"
@@ -251,6 +252,13 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
         state.staticTiles = splitStaticCasters(plans, gpuScene_.staticCasters());
     plan_ = std::move(plans.directional);
     localPlan_ = std::move(plans.local);
+    if (shadows::culledOnGpu(frame.shadows)) {
+        if (!casterCulling_)
+            casterCulling_ = std::make_unique<shadows::GpuCasterCulling>(device_);
+        state.culling = casterCulling_.get();
+        for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
+            state.culledLocalTile += static_cast<std::uint32_t>(light.cascades.size());
+    }
     const shadows::ShadowAtlasPack& pack = localPlan_.allocation.pack;
     const std::uint64_t atlasTexels = std::uint64_t(localPlan_.atlasSize) * localPlan_.atlasSize;
     FrameStats stats{.shadowedLights = lightCounts.shadowed,
@@ -394,6 +402,7 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     const auto add = [&](std::unique_ptr<FramePass> pass) { framePasses_.push_back(std::move(pass)); };
     add(std::make_unique<SkinningPass>(*skinning_));
     add(std::make_unique<StaticMapsPass>(state, *staticShadows_));
+    add(std::make_unique<CasterCullingPass>(state, gpuScene_, plan_, localPlan_));
     add(std::make_unique<StaticTilesPass>(state, *directionalStaticTiles_, StaticTilesPass::Atlas::Directional));
     add(std::make_unique<DirectionalAtlasPass>(state, shadowPass_, plan_));
     add(std::make_unique<StaticTilesPass>(state, *localStaticTiles_, StaticTilesPass::Atlas::Local));

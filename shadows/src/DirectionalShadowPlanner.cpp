@@ -259,6 +259,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     if (!edges.empty())
         plan.depthFit = DepthFitKept{edges, halfSizes};
     const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
+    const bool gpuCulling = culledOnGpu(settings);
     for (std::uint32_t slot = 0; slot < plan.lights.size(); ++slot) {
         ShadowedDirectionalLight& light = plan.lights[slot];
         const LightSpaceCasters& casters = selectedCasters[slot];
@@ -273,16 +274,16 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
             cascade.viewport = plan.atlas.viewport(cascade.tile);
             // Depth fit's tiles are chosen by what they hold, not by view depth: no caster is left to the one before.
             const bool banded = directional.projection == CascadeProjection::Close && c > 0;
-            if (close)
-                cascade.casters =
-                    cullCloseFitShadowCasters(cascade.fit, casters,
-                                              banded ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
-                                              cullingFactor);
-            else
-                cascade.casters =
-                    cullShadowCasters(cascade.fit, casters,
-                                      c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt,
-                                      cullingFactor);
+            const std::optional<Sphere> previousSphere =
+                c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt;
+            const std::optional<FrustumSlice> previousSlice =
+                banded ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt;
+            cascade.volume = close ? closeCascadeVolume(cascade.fit, previousSlice, cullingFactor)
+                                   : cascadeVolume(cascade.fit, previousSphere, cullingFactor);
+            // Culled on the GPU, the tile lists none here: the culling pass tests every caster against the volume.
+            if (!gpuCulling)
+                cascade.casters = close ? cullCloseFitShadowCasters(cascade.fit, casters, previousSlice, cullingFactor)
+                                        : cullShadowCasters(cascade.fit, casters, previousSphere, cullingFactor);
             plan.uniforms.tileSoft[cascade.tile] =
                 directionalTileSoft(cascade.fit, cascade.worldToAtlas, casters, conventions);
             light.cascades.push_back(std::move(cascade));

@@ -104,7 +104,8 @@ LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, fl
             bias.slopeScale,
             bias.constant,
             cullCastersInFrustum(view, fov, nearPlane, range, casterBounds),
-            {}};
+            {},
+            frustumVolume(view, fov, nearPlane, range)};
 }
 
 // The normal offset's reach per unit of distance, `scale`, goes to the lit pass's lookups on the receiver side and
@@ -213,7 +214,8 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
                     point.slopeScaleBias,
                     local.depthBias,
                     cullCastersInFrustum(view, kRightAngle, nearPlane, point.range, casterBounds),
-                    {}};
+                    {},
+                    frustumVolume(view, kRightAngle, nearPlane, point.range)};
         receiverBias = sideOfNormalBias(faceView, point.normalBiasSide, bias, point.position);
     }
     shadowCube.depthRow = {toTexture[2][2], toTexture[3][2]};
@@ -227,24 +229,11 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
 std::vector<std::uint32_t> cullCastersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
                                                 std::span<const Bounds> casterBounds)
 {
-    const float t = std::tan(0.5f * fov);
+    const CasterVolume volume = frustumVolume(view, fov, nearPlane, farPlane);
     std::vector<std::uint32_t> inside;
-    for (std::uint32_t i = 0; i < casterBounds.size(); ++i) {
-        // Culled when all 8 corners lie outside one of the six planes (view space, looking down -z).
-        std::array<int, 6> outside{};
-        for (const glm::vec3& corner : casterBounds[i].corners()) {
-            const glm::vec3 p = glm::vec3(view * glm::vec4(corner, 1.0f));
-            const float depth = -p.z;
-            outside[0] += depth < nearPlane;
-            outside[1] += depth > farPlane;
-            outside[2] += p.x > depth * t;
-            outside[3] += -p.x > depth * t;
-            outside[4] += p.y > depth * t;
-            outside[5] += -p.y > depth * t;
-        }
-        if (std::none_of(outside.begin(), outside.end(), [](int n) { return n == 8; }))
+    for (std::uint32_t i = 0; i < casterBounds.size(); ++i)
+        if (meetsFrustum(casterBounds[i], volume))
             inside.push_back(i);
-    }
     return inside;
 }
 
@@ -310,6 +299,8 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
         previous.packer == packing ? ShadowAtlasPacker(packing, previous.pack.lights) : ShadowAtlasPacker(packing);
     plan.allocation = {packing, packer.pack(requests)};
     const ShadowAtlasPack& pack = plan.allocation.pack;
+    // Atlas tiles culled on the GPU list no casters here (their views keep the volume); cube faces are culled here.
+    const std::span<const Bounds> tileCasters = culledOnGpu(settings) ? std::span<const Bounds>() : casterBounds;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Candidate& candidate = candidates[c];
         const PackedLight& packed = pack.lights[c];
@@ -324,10 +315,10 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
         const int first = static_cast<int>(plan.tiles.size());
         if (candidate.kind == LightKind::Spot) {
             plan.spotTiles[candidate.lightIndex] = first;
-            planSpot(plan, local, spots[candidate.lightIndex], packed, conventions, casterBounds);
+            planSpot(plan, local, spots[candidate.lightIndex], packed, conventions, tileCasters);
         } else {
             plan.pointShadows[candidate.lightIndex] = first;
-            planPointTiles(plan, local, points[candidate.lightIndex], packed, conventions, casterBounds);
+            planPointTiles(plan, local, points[candidate.lightIndex], packed, conventions, tileCasters);
         }
     }
 

@@ -177,6 +177,11 @@ std::vector<ShadowSettingsField> makeFields()
         numeric(
             "distanceFade", kFraction, "fraction of maxDistance over which shadows fade out",
             [](auto& s) -> auto& { return s.distanceFade; }),
+        named(
+            "culling", {nameOf(CasterCullingMode::Cpu, "cpu"), nameOf(CasterCullingMode::Gpu, "gpu")},
+            "where the realtime atlases' casters are culled per tile: cpu (the planner) or gpu (a compute pass, "
+            "indirect draws)",
+            [](auto& s) -> auto& { return s.culling; }, "--culling"),
         numeric(
             "directional.atlasSize", kAtlasSizes, "texels per side of the directional atlas",
             [](auto& s) -> auto& { return s.directional.atlasSize; }),
@@ -537,6 +542,8 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return problem;
     if (auto problem = outsideRange("distanceFade", s.distanceFade))
         return problem;
+    if (static_cast<unsigned>(s.culling) > static_cast<unsigned>(CasterCullingMode::Gpu))
+        return outOfRange("culling", fmt::format("{}", static_cast<int>(s.culling)));
     if (auto problem = outsideRange("directional.atlasSize", d.atlasSize))
         return problem;
     if (static_cast<unsigned>(d.filter) > static_cast<unsigned>(ShadowFilter::PCSS))

@@ -63,6 +63,7 @@ ShadowSettings unusualSettings()
     s.local.minTileResolution = 32;
     s.local.depthBias = 2.5f;
     s.local.spotFovBias = Toggle::On;
+    s.culling = CasterCullingMode::Gpu;
     s.staticMaps.update = StaticShadowUpdate::OnDemand;
     s.staticMaps.realtimeCasters = RealtimeCasters::Dynamic;
     s.staticMaps.directionalAtlasSize = 8192;
@@ -237,8 +238,10 @@ TEST(ShadowSettingsJson, BothNamesOfALocalFieldAreRefused)
 TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
-    EXPECT_EQ(parseError(R"({"maxDistanse": 5})"), "shadows.json: maxDistanse: unknown field, allowed maxDistance, "
-                                                   "distanceFade, directional, local, soft, static, contact");
+    EXPECT_EQ(
+        parseError(R"({"maxDistanse": 5})"),
+        "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, culling, directional, local, soft, "
+        "static, contact");
     EXPECT_EQ(parseError(R"({"static": {"update": "sometimes"}})"),
               "shadows.json: static.update: unknown value \"sometimes\", allowed everyFrame, onChange, onDemand");
     EXPECT_EQ(parseError(R"({"static": {"directionalAtlasSize": 16384}})"),

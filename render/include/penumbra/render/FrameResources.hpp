@@ -10,6 +10,8 @@ namespace penumbra::render::frame {
 // Passes, in the order they run.
 inline constexpr std::string_view kSkinningPass = "skinning"; // a scene with skinned or morphed meshes
 inline constexpr std::string_view kStaticMapsPass = "static maps";
+// Shadow casters culled per tile on the GPU (ShadowSettings::culling gpu).
+inline constexpr std::string_view kCasterCullingPass = "caster culling";
 inline constexpr std::string_view kDirectionalStaticTilesPass = "directional static tiles";
 inline constexpr std::string_view kDirectionalAtlasPass = "directional atlas";
 inline constexpr std::string_view kLocalStaticTilesPass = "local static tiles";
@@ -27,6 +29,7 @@ inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
 inline constexpr std::array kPasses{kSkinningPass,
                                     kStaticMapsPass,
+                                    kCasterCullingPass,
                                     kDirectionalStaticTilesPass,
                                     kDirectionalAtlasPass,
                                     kLocalStaticTilesPass,

@@ -258,6 +258,7 @@ private:
     shadows::DirectionalShadowPass shadowPass_;
     shadows::LocalShadowPass localShadowPass_;
     std::unique_ptr<LocalTileCache> localTiles_;
+    std::unique_ptr<shadows::GpuCasterCulling> casterCulling_; // made on the first frame that culls on the GPU
     std::unique_ptr<rhi::Shader> litVertex_;
     // Single-sampled: the lit pass without MSAA and the debug views. Multisampled: the lit pass with FrameDesc::msaa
     // samples, made when a frame first asks for that count.

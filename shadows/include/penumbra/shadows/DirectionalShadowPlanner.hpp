@@ -42,7 +42,10 @@ struct DirectionalCascadePlan {
     std::uint32_t tile = 0;
     glm::mat4 worldToAtlas{1.0f};
     rhi::Viewport viewport;
+    // The casters drawn into the tile; left empty where they are culled on the GPU (culledOnGpu), which tests them
+    // against `volume`.
     CasterCullingResult casters;
+    CasterVolume volume; // the tile's light box and culling bias, the rules `casters` were culled by
 };
 
 // A directional light that got shadow tiles, with everything resolved from its input and the settings.

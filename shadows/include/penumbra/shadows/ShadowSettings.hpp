@@ -181,10 +181,15 @@ struct ContactShadowSettings {
     float thickness = 0.2f; // metres behind a depth sample that still count as inside its surface
 };
 
+// Where the realtime atlases' casters are culled per tile: by the planner on the CPU (the reference and the
+// fallback), or by a compute pass that writes each tile's instance lists and indirect draws (docs/compute.md).
+enum class CasterCullingMode { Cpu, Gpu };
+
 // Every shadow setting of a frame; docs/settings.md lists each field with its default and range.
 struct ShadowSettings {
     float maxDistance = 100.0f; // view depth beyond which nothing is shadowed; applies to every light
     float distanceFade = 0.1f; // fraction of maxDistance over which shadows fade out
+    CasterCullingMode culling = CasterCullingMode::Cpu;
     DirectionalShadowSettings directional;
     LocalShadowSettings local;
     SoftShadowSettings soft;
@@ -196,6 +201,13 @@ struct ShadowSettings {
 inline bool hasStaticMaps(const ShadowSettings& settings)
 {
     return settings.staticMaps.update != StaticShadowUpdate::EveryFrame;
+}
+
+// Whether the realtime atlas tiles' casters are culled on the GPU: asked for, and every caster drawn (with
+// RealtimeCasters::Dynamic the tiles' lists are split between the static and the realtime atlases on the CPU).
+inline bool culledOnGpu(const ShadowSettings& settings)
+{
+    return settings.culling == CasterCullingMode::Gpu && settings.staticMaps.realtimeCasters == RealtimeCasters::All;
 }
 
 // How a settings field's values are bounded: by the names its `allowed` text lists (enums, depth formats, sample
