@@ -67,7 +67,6 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
                            shaders::uniformLayout(shadows::kDirectionalShadowBlock),
                            shaders::uniformLayout(shadows::kLocalShadowBlock),
                            shaders::uniformLayout(shadows::kStaticShadowBlock)};
-    desc.bindingSetLayouts = {&shadowMaps_};
     desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
     rhi::ColorTarget target{kLitColorFormat};
     if (features.depthPrepassed) {

@@ -93,7 +93,6 @@ const rhi::Pipeline& ScreenSpaceShadowPass::pipeline(const LitShaderFeatures& fe
     desc.vertex = vertex_.get();
     desc.fragment = fragment.get();
     desc.colorTargets = {rhi::ColorTarget{kScreenSpaceShadowFormat}};
-    desc.bindingSetLayouts = {&shadowMaps_};
     desc.uniformLayouts = {shaders::uniformLayout(kCollectionBlock),
                            shaders::uniformLayout(shadows::kDirectionalShadowBlock)};
     // The static maps' functions come with local_shadows.glsl's block (screen_space_shadows.frag).
