@@ -28,8 +28,8 @@ VulkanBindingSet::VulkanBindingSet(std::shared_ptr<Context> context, const rhi::
     poolInfo.maxSets = 1;
     poolInfo.poolSizeCount = std::uint32_t(sizes.size());
     poolInfo.pPoolSizes = sizes.data();
-    pool_ = createOwned<UniqueDescriptorPool>(context_->device, vkCreateDescriptorPool, poolInfo,
-                                              "vkCreateDescriptorPool");
+    pool_ =
+        createOwned<UniqueDescriptorPool>(context_->device, vkCreateDescriptorPool, poolInfo, "vkCreateDescriptorPool");
     VkDescriptorSetAllocateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     info.descriptorPool = pool_.get();
     info.descriptorSetCount = 1;

@@ -68,7 +68,8 @@ VkPipelineLayout LayoutCache::pipelineLayout(const std::vector<VkDescriptorSetLa
     info.setLayoutCount = std::uint32_t(sets.size());
     info.pSetLayouts = sets.data();
     return pipelineLayouts_
-        .emplace(sets, createOwned<UniquePipelineLayout>(device_, vkCreatePipelineLayout, info, "vkCreatePipelineLayout"))
+        .emplace(sets,
+                 createOwned<UniquePipelineLayout>(device_, vkCreatePipelineLayout, info, "vkCreatePipelineLayout"))
         .first->second.get();
 }
 
