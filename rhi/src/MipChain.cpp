@@ -232,7 +232,7 @@ std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_
     const std::uint32_t channels = layout.channels;
     // Level 0 is decoded a row at a time, never whole; the levels below live in two buffers used in turn (odd
     // levels in the first, even in the second), allocated once and not zero-filled: a fresh zero-filled plane per
-    // level was most of the time (docs/notes/2026-12-06-mip-chain.md).
+    // level was most of the time (docs/notes/2026-12-06-large-texture-loading.md).
     std::vector<double> decoded(std::size_t(width) * channels);
     std::vector<double> xScratch(std::size_t(std::max(width / 2, 1u)) * channels);
     const auto levelWidth = [](std::uint32_t w) { return std::max(w / 2, 1u); };
