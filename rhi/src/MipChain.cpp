@@ -235,11 +235,11 @@ std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_
     // level was most of the time (docs/notes/2026-12-06-large-texture-loading.md).
     std::vector<double> decoded(std::size_t(width) * channels);
     std::vector<double> xScratch(std::size_t(std::max(width / 2, 1u)) * channels);
-    const auto levelWidth = [](std::uint32_t w) { return std::max(w / 2, 1u); };
+    const auto halvedSize = [](std::uint32_t size) { return std::max(size / 2, 1u); }; // an axis of the next level
     std::array<std::unique_ptr<double[]>, 2> planes;
-    planes[0].reset(new double[valuesOf(levelWidth(width), levelWidth(height), channels)]);
+    planes[0].reset(new double[valuesOf(halvedSize(width), halvedSize(height), channels)]);
     if (levels > 2)
-        planes[1].reset(new double[valuesOf(levelWidth(levelWidth(width)), levelWidth(levelWidth(height)), channels)]);
+        planes[1].reset(new double[valuesOf(halvedSize(halvedSize(width)), halvedSize(halvedSize(height)), channels)]);
     double coverage = 0.0;
     if (alphaCutoff) {
         std::size_t covered = 0;
@@ -260,8 +260,8 @@ std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_
             return decoded.data();
         };
         filterLevel(w, h, channels, sourceRow, xScratch.data(), out);
-        w = levelWidth(w);
-        h = levelWidth(h);
+        w = halvedSize(w);
+        h = halvedSize(h);
         const std::span<const double> values(out, valuesOf(w, h, channels));
         chain.push_back(
             encode(layout, values,
