@@ -27,8 +27,8 @@ float fadedShadowStrength(float distance, float scale, float fade)
 float tileMargin(int tile, CascadeData cascade, vec3 position)
 {
     const vec2 texel = transformPoint(shadows.worldToAtlas[tile], position).xy * shadows.atlasSize;
-    const vec4 bounds = shadows.tileBounds[tile];
-    const vec2 inside = min(texel - bounds.xy, bounds.zw + 1.0 - texel);
+    const TileTexelBounds bounds = shadows.tileBounds[tile];
+    const vec2 inside = min(texel - vec2(bounds.first), vec2(bounds.last) + 1.0 - texel);
     return min(inside.x, inside.y) - 2.0 * cascade.normalBias / cascade.texelWorldSize;
 }
 
@@ -52,7 +52,7 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
         const float distanceSquared = dot(offset, offset);
         const int tile = shadows.lights[0].firstTile + i;
         const float margin = mapped ? tileMargin(tile, cascade, position) : 0.0;
-        const float halfTexels = 0.5 * (shadows.tileBounds[tile].z - shadows.tileBounds[tile].x + 1.0);
+        const float halfTexels = 0.5 * float(shadows.tileBounds[tile].last.x - shadows.tileBounds[tile].first.x + 1);
         if (mapped ? margin > 0.0
                    : (close ? viewDepth < cascade.farDepth : distanceSquared < cascade.selectionRadiusSquared)) {
             const float fade =

@@ -28,9 +28,9 @@ struct SceneBenchOptions {
 // listed last to keep the older names' order), the contact shadows (their march and, with MSAA on the forward
 // path, their single-sampled prepass), the depth fit's reduction (with MSAA, its single-sampled prepass) and the GPU
 // caster culling pass (--culling gpu).
-inline constexpr const char* kBenchPassNames[] = {"depth",          "directionalAtlas", "otherAtlas", "screenSpaceShadows",
-                                                  "lit",            "resolve",          "reference",  "staticAtlas",
-                                                  "contactShadows", "depthFit",         "casterCulling"};
+inline constexpr const char* kBenchPassNames[] = {
+    "depth",     "directionalAtlas", "otherAtlas",     "screenSpaceShadows", "lit",          "resolve",
+    "reference", "staticAtlas",      "contactShadows", "depthFit",           "casterCulling"};
 
 // Prints a table per light count and returns {"scene": [one object per light count and configuration: configuration,
 // scene, lights (the --lights count or null), width, height,

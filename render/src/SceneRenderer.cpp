@@ -233,7 +233,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
 {
     const scene::Scene& scene = gpuScene_.scene();
     notes_ = frameNotes(scene, plans);
-    const ShadowedLightCounts lightCounts = shadowedLightCounts(scene, plans);
+    FrameStats stats = plannedFrameStats(scene, plans);
     const AnisotropyChoice anisotropy = chooseAnisotropy(frame.maxAnisotropy, device_.capabilities());
     gpuScene_.setMaxAnisotropy(anisotropy.value);
     if (anisotropy.note && !scene.textures.empty())
@@ -259,16 +259,6 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
         for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
             state.culledLocalTile += static_cast<std::uint32_t>(light.cascades.size());
     }
-    const shadows::ShadowAtlasPack& pack = localPlan_.allocation.pack;
-    const std::uint64_t atlasTexels = std::uint64_t(localPlan_.atlasSize) * localPlan_.atlasSize;
-    FrameStats stats{.shadowedLights = lightCounts.shadowed,
-                     .lightsWithoutShadow = lightCounts.withoutShadow,
-                     .localAtlasUsed = atlasTexels == 0 ? 0.0f : float(double(pack.usedTexels) / double(atlasTexels)),
-                     .localAtlasFragmentation = pack.fragmentation,
-                     .localLightsLowered = static_cast<std::uint32_t>(localPlan_.lowered.size())};
-    for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
-        for (const shadows::DirectionalCascadePlan& cascade : light.cascades)
-            stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;
 
     uniforms_.reset();
     instances_.reset();

@@ -23,11 +23,10 @@ CascadeSelection selectCascade(const DirectionalShadowUniforms& u, glm::vec3 pos
             // tileMargin in directional_shadows.glsl.
             const std::size_t tile = static_cast<std::size_t>(u.lights[0].firstTile) + i;
             const glm::vec2 texel = glm::vec2(u.worldToAtlas[tile] * glm::vec4(position, 1.0f)) * u.atlasSize;
-            const glm::vec4 bounds = u.tileBounds[tile];
-            const glm::vec2 inside =
-                glm::min(texel - glm::vec2(bounds.x, bounds.y), glm::vec2(bounds.z, bounds.w) + 1.0f - texel);
+            const TileTexelBounds& bounds = u.tileBounds[tile];
+            const glm::vec2 inside = glm::min(texel - glm::vec2(bounds.first), glm::vec2(bounds.last) + 1.0f - texel);
             const float margin = std::min(inside.x, inside.y) - 2.0f * cascade.normalBias / cascade.texelWorldSize;
-            const float halfTexels = 0.5f * (bounds.z - bounds.x + 1.0f);
+            const float halfTexels = 0.5f * float(bounds.last.x - bounds.first.x + 1);
             if (margin > 0.0f)
                 return {i, fadedShadowStrength(halfTexels - margin, 1.0f / halfTexels, u.fade.inverseDepthCascadeFade),
                         margin * cascade.texelWorldSize};
