@@ -356,8 +356,8 @@ TEST_F(StableCascadesTest, DepthFitWalkChangesNoMoreThanTheCloseFit)
     expectWalkKeepsTheShadow(depthFit, kept, walk(shadows::CascadeProjection::Close, kFrames));
 }
 
-// The 100-frame walk of the shimmer target, for all three fits: a measurement, not run by ctest
-// (--gtest_also_run_disabled_tests --gtest_filter=*Walk100*).
+// The 100-frame walk of the shimmer target, for all three fits: a measurement that `make shimmer-walk` runs, not ctest
+// (through --gtest_also_run_disabled_tests).
 TEST_F(StableCascadesTest, DISABLED_Walk100Frames)
 {
     constexpr int kFrames = 100;
