@@ -1,28 +1,67 @@
 #version 450
-// The nearest and farthest window depth of the pixels the depth prepass drew (render/src/passes/DepthReduction.hpp):
-// a workgroup reduces its 16 x 16 pixels in shared memory, then one invocation merges them into the buffer. The
-// depths are in [0, 1], whose float bits order as unsigned integers do, so the atomics compare them as uints
-// (Lauritzen, Salvi and Lefohn, "Sample Distribution Shadow Maps", I3D 2011, section 4: the min/max reduction).
+// The depth fit's histogram of the visible view depths (render/src/passes/DepthReduction.hpp,
+// penumbra::shadows::DepthHistogram): each pixel the depth prepass drew is turned back into its world position, counted
+// in the bin of its view depth (8 per power of two, shadows::depthHistogramBin) and, per shadowed directional light,
+// widens that bin's light-space footprint. A workgroup gathers its 16 x 16 pixels in shared memory, then merges the
+// bins it touched into the buffer with atomics (Lauritzen, Salvi and Lefohn, "Sample Distribution Shadow Maps", I3D
+// 2011, sections 4.1 and 4.2: the depth histogram and the per-partition light-space bounds). Footprint floats are
+// compared as uints through orderedBits, which keeps their order for both signs.
 #include "constants.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(binding = 0) uniform sampler2D depth;
-layout(std430, binding = 1) buffer DepthBounds
-{
-    uint nearest;
-    uint farthest;
-}
-bounds;
+const uint kBins = PENUMBRA_BINS;
+const uint kStepsPerOctave = PENUMBRA_STEPS_PER_OCTAVE;
+const int kLights = PENUMBRA_LIGHTS;
 
-shared uint groupNearest;
-shared uint groupFarthest;
+layout(binding = 0) uniform sampler2D depth;
+
+// Per light: orderedBits of min x, min y, max x, max y (flat uints: the atomics take scalars).
+struct Bin {
+    uint count;
+    uint footprints[4 * kLights];
+};
+layout(std430, binding = 1) buffer DepthHistogram { Bin bins[kBins]; } histogram;
+
+layout(std140, binding = 2) uniform DepthHistogramFrame
+{
+    mat4 clipToWorld;
+    vec4 cameraPosition;
+    vec4 cameraForward;
+    vec4 lightRight[kLights];
+    vec4 lightUp[kLights];
+    vec4 targetSize; // width, height
+    float shadowFar;
+    int firstOctave;
+    int lightCount;
+}
+frame;
+
+shared uint groupCount[kBins];
+shared uint groupFootprints[kBins * 4 * kLights];
+
+uint orderedBits(float f)
+{
+    const uint u = floatBitsToUint(f);
+    return (u & 0x80000000u) != 0u ? ~u : (u | 0x80000000u);
+}
+
+// shadows::depthHistogramBin.
+uint binOf(float viewDepth)
+{
+    int exponent;
+    const float mantissa = frexp(viewDepth, exponent);
+    const int step = int((2.0 * mantissa - 1.0) * float(kStepsPerOctave));
+    const int bin = (exponent - 1 - frame.firstOctave) * int(kStepsPerOctave) + step;
+    return uint(clamp(bin, 0, int(kBins) - 1));
+}
 
 void main()
 {
-    if (gl_LocalInvocationIndex == 0u) {
-        groupNearest = 0xffffffffu;
-        groupFarthest = 0u;
+    for (uint b = gl_LocalInvocationIndex; b < kBins; b += 256u) {
+        groupCount[b] = 0u;
+        for (uint k = 0u; k < 4u * uint(kLights); ++k)
+            groupFootprints[b * 4u * uint(kLights) + k] = k % 4u < 2u ? 0xffffffffu : 0u;
     }
     barrier();
     const ivec2 size = textureSize(depth, 0);
@@ -31,14 +70,37 @@ void main()
         const float d = texelFetch(depth, pixel, 0).r;
         // The clear value is the background: nothing drawn there.
         if (d != float(PENUMBRA_CLEAR_DEPTH)) {
-            const uint bits = floatBitsToUint(d);
-            atomicMin(groupNearest, bits);
-            atomicMax(groupFarthest, bits);
+            const vec2 ndc = penumbraFragCoordToNdc(vec2(pixel) + 0.5, frame.targetSize.xy);
+            const vec4 world = frame.clipToWorld * vec4(ndc, penumbraWindowDepthToNdc(d), 1.0);
+            const vec3 position = world.xyz / world.w;
+            const float viewDepth = dot(position - frame.cameraPosition.xyz, frame.cameraForward.xyz);
+            if (viewDepth > 0.0 && viewDepth < frame.shadowFar) {
+                const uint b = binOf(viewDepth);
+                atomicAdd(groupCount[b], 1u);
+                for (int l = 0; l < frame.lightCount; ++l) {
+                    const uint x = orderedBits(dot(position, frame.lightRight[l].xyz));
+                    const uint y = orderedBits(dot(position, frame.lightUp[l].xyz));
+                    const uint at = (b * uint(kLights) + uint(l)) * 4u;
+                    atomicMin(groupFootprints[at], x);
+                    atomicMin(groupFootprints[at + 1u], y);
+                    atomicMax(groupFootprints[at + 2u], x);
+                    atomicMax(groupFootprints[at + 3u], y);
+                }
+            }
         }
     }
     barrier();
-    if (gl_LocalInvocationIndex == 0u && groupNearest <= groupFarthest) {
-        atomicMin(bounds.nearest, groupNearest);
-        atomicMax(bounds.farthest, groupFarthest);
+    for (uint b = gl_LocalInvocationIndex; b < kBins; b += 256u) {
+        if (groupCount[b] == 0u)
+            continue;
+        atomicAdd(histogram.bins[b].count, groupCount[b]);
+        for (int l = 0; l < frame.lightCount; ++l) {
+            const uint at = (b * uint(kLights) + uint(l)) * 4u;
+            const uint k = uint(l) * 4u;
+            atomicMin(histogram.bins[b].footprints[k], groupFootprints[at]);
+            atomicMin(histogram.bins[b].footprints[k + 1u], groupFootprints[at + 1u]);
+            atomicMax(histogram.bins[b].footprints[k + 2u], groupFootprints[at + 2u]);
+            atomicMax(histogram.bins[b].footprints[k + 3u], groupFootprints[at + 3u]);
+        }
     }
 }

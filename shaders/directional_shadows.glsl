@@ -20,9 +20,23 @@ float fadedShadowStrength(float distance, float scale, float fade)
     return clamp((1.0 - distance * scale) * fade, 0.0, 1.0);
 }
 
+// Depth fit's tiles hold the surfaces seen, not a region of space: the point's distance in texels inside the first
+// shadowed light's tile `tile`, less the filter's reach (cascade.normalBias over the texel size is the filter-sized
+// texel diagonal, twice that leaves room for the normal offset); <= 0 outside. The C++ twin is
+// penumbra::shadows::selectCascade.
+float tileMargin(int tile, CascadeData cascade, vec3 position)
+{
+    const vec2 texel = transformPoint(shadows.worldToAtlas[tile], position).xy * shadows.atlasSize;
+    const TileTexelBounds bounds = shadows.tileBounds[tile];
+    const vec2 inside = min(texel - vec2(bounds.first), vec2(bounds.last) + 1.0 - texel);
+    return min(inside.x, inside.y) - 2.0 * cascade.normalBias / cascade.texelWorldSize;
+}
+
 // Stable fit: the first cascade whose selection sphere holds the point, faded on squared distance. Close fit: the
 // first whose far split the view depth has not reached, faded linearly on view depth (Unity's "Close Fit" bands,
-// Catlike Coding, "Rendering 7: Shadows", section 1.7). The C++ twin is penumbra::shadows::selectCascade.
+// Catlike Coding, "Rendering 7: Shadows", section 1.7). Depth fit: the first whose tile holds the point (map-based
+// selection: Microsoft, "Cascaded Shadow Maps", section "Map-Based Cascade Selection"), faded over the cascadeFade
+// of the tile's half size inside its edge. The C++ twin is penumbra::shadows::selectCascade.
 CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
 {
     CascadeSelection s;
@@ -30,15 +44,23 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
     s.strength = fadedShadowStrength(viewDepth, shadows.fade.inverseMaxDistance, shadows.fade.inverseDistanceFade);
     const int count = shadows.cascadeCount;
     const bool close = shadows.cascadeProjection == PENUMBRA_PROJECTION_CLOSE;
+    const bool mapped = shadows.cascadeProjection == PENUMBRA_PROJECTION_DEPTHFIT;
     int i = 0;
     for (; i < count; ++i) {
         const CascadeData cascade = shadows.cascades[i];
         const vec3 offset = position - cascade.selectionCentre;
         const float distanceSquared = dot(offset, offset);
-        if (close ? viewDepth < cascade.farDepth : distanceSquared < cascade.selectionRadiusSquared) {
+        const int tile = shadows.lights[0].firstTile + i;
+        const float margin = mapped ? tileMargin(tile, cascade, position) : 0.0;
+        const float halfTexels = 0.5 * float(shadows.tileBounds[tile].last.x - shadows.tileBounds[tile].first.x + 1);
+        if (mapped ? margin > 0.0
+                   : (close ? viewDepth < cascade.farDepth : distanceSquared < cascade.selectionRadiusSquared)) {
             const float fade =
-                close ? fadedShadowStrength(viewDepth, 1.0 / cascade.farDepth, shadows.fade.inverseDepthCascadeFade)
-                      : fadedShadowStrength(distanceSquared, cascade.fadeScale, shadows.fade.inverseSphereCascadeFade);
+                mapped ? fadedShadowStrength(halfTexels - margin, 1.0 / halfTexels,
+                                             shadows.fade.inverseDepthCascadeFade)
+                : close
+                    ? fadedShadowStrength(viewDepth, 1.0 / cascade.farDepth, shadows.fade.inverseDepthCascadeFade)
+                    : fadedShadowStrength(distanceSquared, cascade.fadeScale, shadows.fade.inverseSphereCascadeFade);
             if (i == count - 1)
                 s.strength *= fade;
             else
@@ -71,7 +93,7 @@ float filterDirectionalTile(sampler2D atlas, vec3 atlasPosition, float atlasSize
 #if PENUMBRA_SOFT_FILTERS
     const SoftTile t =
         softTile(atlasPosition, toAtlas * receiverDx, toAtlas * receiverDy, atlasSize, bounds.first, bounds.last,
-                 tileSoft.lightTexelAnchor);
+                 tileSoft.lightTexelAnchor, shadows.soft);
     return directionalSoftShadow(atlas, t, filterIndex, shadows.soft, tileSoft.depthRow, tanHalfAngle, texelWorld);
 #endif
 }

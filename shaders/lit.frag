@@ -17,6 +17,8 @@
 #include "directional_light_shadow.glsl"
 #include "material.glsl"
 #include "collected_shadows.glsl"
+#include "pixel_surface.glsl"
+#include "contact_shadows_lit.glsl"
 #include "environment_light.glsl"
 
 layout(location = 0) in vec3 vPosition;
@@ -138,7 +140,10 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
         if (dot(n, -frame.lights[index].direction) <= 0.0 || !(realtime || fromStatic))
             return vec4(1.0, 1.0, 1.0, 0.0);
         const vec3 towardsLight = -frame.lights[index].direction;
-        const float shadow = realtime ? directionalShadowVisibility(slot, cascade, vPosition, geometric, towardsLight) : 1.0;
+        float shadow = realtime ? directionalShadowVisibility(slot, cascade, vPosition, geometric, towardsLight) : 1.0;
+#if PENUMBRA_CONTACT_SHADOWS
+        shadow = min(shadow, contactShadow(contactShadows(), index));
+#endif
         return vec4(vec3(fromStatic ? min(shadow, staticDirectionalVisibility(map, vPosition, geometric, towardsLight))
                                     : shadow),
                     1.0);
@@ -216,7 +221,10 @@ void main()
     const vec4 collected = collectedShadows();
 #endif
 #if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_EDGES
-    const bool fromCollection = collectedHere();
+    const bool fromCollection = pixelSurfaceHere();
+#endif
+#if PENUMBRA_CONTACT_SHADOWS
+    const vec4 contact = contactShadows();
 #endif
     for (int i = 0; i < frame.directionalLightCount; ++i) {
         const vec3 l = -frame.lights[i].direction;
@@ -234,7 +242,14 @@ void main()
 #else
         const float attenuation = directionalLightShadow(i, slot, receives, cascade, vPosition, geometric, l);
 #endif
-        color += brdf(n, v, l, base, metallic, roughness) * frame.lights[i].color * nl * attenuation;
+#if PENUMBRA_CONTACT_SHADOWS
+        // Contact shadows darken the direct light only, as the map's shadow does: the minimum, so that a pixel both
+        // cover is not darkened twice.
+        const float visible = min(attenuation, receives ? contactShadow(contact, i) : 1.0);
+#else
+        const float visible = attenuation;
+#endif
+        color += brdf(n, v, l, base, metallic, roughness) * frame.lights[i].color * nl * visible;
     }
 #if PENUMBRA_LOCAL_LIGHTS
     // The cluster's lights in ascending index, as a loop over every light would add them: a light left out of the

@@ -68,7 +68,7 @@ float filterLocalTile(sampler2D atlas, float atlasSize, mat4 worldToAtlas, vec4 
 #if PENUMBRA_SOFT_FILTERS
     const SoftTile t = softTile(p.xyz / p.w, projectedDerivative(worldToAtlas, p, receiverDx),
                                 projectedDerivative(worldToAtlas, p, receiverDy), atlasSize, bounds.first,
-                                bounds.last, vec2(0.0));
+                                bounds.last, vec2(0.0), localShadows.soft);
     return perspectiveSoftShadow(atlas, t, filterIndex, localShadows.soft,
                                  tileSoft);
 #endif
@@ -205,7 +205,7 @@ float cubeMapShadow(int cube, vec3 lightPosition, vec3 position, vec3 normal)
         const vec2 onFace = vec2(dot(d, cubeFaceAxis((face + 2) % 6)), dot(d, cubeFaceAxis((face + 4) % 6))) / major;
         const ivec2 texel = ivec2(floor((onFace * 0.5 + 0.5) / data.invFaceSize)) + ivec2(face * int(1.0 / data.invFaceSize + 0.5), 0);
         const CubeReceiver r = CubeReceiver(d, u, v, dot(normal, d) > 0.0 ? -normal : normal, cube, data,
-                                            diskRotation(texel));
+                                            diskRotation(texel, localShadows.soft));
         return cubeSoftShadow(r, filterIndex);
     }
 #endif

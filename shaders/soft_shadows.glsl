@@ -56,8 +56,11 @@ uvec2 pcg2d(uvec2 v)
     return v;
 }
 
-mat2 diskRotation(ivec2 lightTexel)
+// The disk's turn at `lightTexel`; unturned where SoftControls.diskRotation is 0 (penumbra::shadows::diskRotationAngle).
+mat2 diskRotation(ivec2 lightTexel, SoftControls controls)
 {
+    if (controls.diskRotation == 0)
+        return mat2(1.0);
     const float angle = 6.28318531 * (float(pcg2d(uvec2(lightTexel)).x >> 8u) * (1.0 / 16777216.0));
     const float c = cos(angle);
     const float s = sin(angle);
@@ -85,8 +88,10 @@ struct SoftTile {
 };
 
 // The receiver in tile `tileMin..tileMax` at atlas position `p` (u, v, depth) whose screen derivatives are
-// dpdx, dpdy (atlas units); `lightTexel` adds to a tile texel for the light's own texel grid.
-SoftTile softTile(vec3 p, vec3 dpdx, vec3 dpdy, float atlasSize, ivec2 tileMin, ivec2 tileMax, vec2 lightTexel)
+// dpdx, dpdy (atlas units); `lightTexel` adds to a tile texel for the light's own texel grid; `c` says whether the
+// disk turns.
+SoftTile softTile(vec3 p, vec3 dpdx, vec3 dpdy, float atlasSize, ivec2 tileMin, ivec2 tileMax, vec2 lightTexel,
+                  SoftControls c)
 {
     SoftTile t;
     t.centre = p.xy * atlasSize;
@@ -95,7 +100,7 @@ SoftTile softTile(vec3 p, vec3 dpdx, vec3 dpdy, float atlasSize, ivec2 tileMin, 
     t.gradient = receiverPlaneDepthGradient(dpdx * scale, dpdy * scale);
     t.tileMin = tileMin;
     t.tileMax = tileMax;
-    t.rotation = diskRotation(ivec2(floor(t.centre - vec2(tileMin) + lightTexel)));
+    t.rotation = diskRotation(ivec2(floor(t.centre - vec2(tileMin) + lightTexel)), c);
     return t;
 }
 

@@ -60,7 +60,7 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 10> kNamedScenes{{{"test", scenes::makeShadowTestScene},
+constexpr std::array<NamedScene, 11> kNamedScenes{{{"test", scenes::makeShadowTestScene},
                                                    {"key-light", scenes::makeSingleLightScene},
                                                    {"mixed", scenes::makeMixedLightsScene},
                                                    {"room", scenes::makePointLightRoomScene},
@@ -69,7 +69,8 @@ constexpr std::array<NamedScene, 10> kNamedScenes{{{"test", scenes::makeShadowTe
                                                    {"town", scenes::makeTownScene},
                                                    {"street", scenes::makeStreetScene},
                                                    {"cubes", [] { return scenes::makeCubeGridScene(10'000); }},
-                                                   {"cubes-100k", [] { return scenes::makeCubeGridScene(100'000); }}}};
+                                                   {"cubes-100k", [] { return scenes::makeCubeGridScene(100'000); }},
+                                                   {"cubes-1m", [] { return scenes::makeCubeGridScene(1'000'000); }}}};
 
 } // namespace
 

@@ -61,12 +61,12 @@ inline constexpr std::uint32_t kTexelDensityStride = 8;
 // The scenes the tool renders by name: "test" (scenes::makeShadowTestScene, four lights), "key-light"
 // (scenes::makeSingleLightScene), "mixed" (scenes::makeMixedLightsScene: key, spot and point lights) and
 // "room" (scenes::makePointLightRoomScene), "forest" (scenes::makeForestScene), "contact" (scenes::makeContactScene)
-// "town" (scenes::makeTownScene), "cubes" and "cubes-100k" (scenes::makeCubeGridScene of 10 000 and 100 000 cubes).
-// Unknown names throw rhi::Error listing these.
+// "town" (scenes::makeTownScene), "cubes", "cubes-100k" and "cubes-1m" (scenes::makeCubeGridScene of 10 000, 100 000
+// and 1 000 000 cubes). Unknown names throw rhi::Error listing these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
 inline constexpr const char* kSceneNames =
-    "test, key-light, mixed, room, forest, contact, town, street, cubes, cubes-100k";
+    "test, key-light, mixed, room, forest, contact, town, street, cubes, cubes-100k, cubes-1m";
 
 // How renderShadowScene runs: with the validation layer / debug output (the library's default, and the tests'),
 // and whether it reads the atlases back (AtlasPictures; a 4096^2 atlas is 64 MiB to copy).

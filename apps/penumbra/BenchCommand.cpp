@@ -125,7 +125,8 @@ void addBenchCommand(CLI::App& app)
         "validatedNsPerDispatch, validatedOverRhi}], \"shadows\": [{configuration, scenario, atlasPassMs, "
         "otherAtlasPassMs, litPassMs, frameMs, casterDraws, ...}]}; with --scene {\"scene\": "
         "[{configuration, frames, frameMs, frameMsMin, frameMsMax, passes: {depth, directionalAtlas, "
-        "otherAtlas, screenSpaceShadows, lit, resolve, reference}, litOverReference, ...}]}");
+        "otherAtlas, screenSpaceShadows, lit, resolve, reference, staticAtlas, contactShadows, depthFit, "
+        "casterCulling}, culling, cpuFrameMs, litOverReference, ...}]}");
 
     // Any scene's frames: the options of `render`, each meaningful only with --scene.
     addSceneOptions(*bench, scene->scene);

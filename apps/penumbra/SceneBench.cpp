@@ -11,6 +11,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scene/Posing.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <algorithm>
 #include <array>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -75,7 +77,10 @@ struct ConfigurationResult {
     Series planning; // CPU: render::FrameStats::planningMs
     Series recording; // CPU: render::FrameStats::recordingMs
     Series cpuFrame; // planning + recording
-    Series localTilesDrawn, localTilesCached;
+    Series localTilesDrawn, localTilesCached, localLightsRedrawn;
+    // Why the measured frames' local lights were drawn again: how often each reason came (the text after the light's
+    // name in render::FrameStats::localShadowUpdates).
+    std::map<std::string, std::uint32_t> redrawReasons;
     std::array<Series, kPasses> passes;
     render::FrameStats last;
 };
@@ -93,7 +98,10 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             ms(frame::kLitPass),
             ms(frame::kResolvePass),
             referenceMs,
-            ms(frame::kStaticMapsPass)};
+            ms(frame::kStaticMapsPass),
+            ms(frame::kContactShadowsPass) + ms(frame::kContactPrepass),
+            ms(frame::kDepthFitPrepass) + ms(frame::kDepthReductionPass),
+            ms(frame::kCasterCullingPass)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -128,6 +136,8 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         stopIfInterrupted();
         if (animation)
             scene::poseScene(scene, animation->animation, animation->timeOfFrame(i, scene.rig));
+        if (options.scene.movingCars)
+            scenes::driveStreetCars(scene, static_cast<float>(i) * kFrameSeconds);
         // Each measured frame leaves the reference lit pass out, so that its wall time and pass times are the
         // renderer's alone; the reference's GPU time comes from a second frame with it in, after the lit pass on the
         // same plan and atlas.
@@ -148,6 +158,11 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         result.cpuFrame.values.push_back(stats.planningMs + stats.recordingMs);
         result.localTilesDrawn.values.push_back(stats.localTilesDrawn);
         result.localTilesCached.values.push_back(stats.localTilesCached);
+        result.localLightsRedrawn.values.push_back(static_cast<double>(stats.localShadowUpdates.size()));
+        for (const std::string& update : stats.localShadowUpdates) {
+            const std::size_t reason = update.find("): ");
+            ++result.redrawReasons[reason == std::string::npos ? update : update.substr(reason + 3)];
+        }
         const std::array<double, kPasses> times = passTimes(stats, referenceMs);
         for (std::size_t p = 0; p < kPasses; ++p)
             result.passes[p].values.push_back(times[p]);
@@ -216,6 +231,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"shadowPath", kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)]},
             {"cascadeCount", frame.shadows.directional.cascadeCount},
             {"atlasSize", frame.shadows.directional.atlasSize},
+            {"culling", frame.shadows.culling == shadows::CasterCullingMode::Gpu ? "gpu" : "cpu"},
             {"frameMs", r.frame.median()},
             {"frameMsMin", r.frame.min()},
             {"frameMsMax", r.frame.max()},
@@ -234,7 +250,11 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"shadowedLights", r.last.shadowedLights},
             {"lightsWithoutShadow", r.last.lightsWithoutShadow},
             {"localTilesDrawn", r.localTilesDrawn.median()},
-            {"localTilesCached", r.localTilesCached.median()}};
+            {"localTilesCached", r.localTilesCached.median()},
+            {"movingCars", options.scene.movingCars},
+            {"localLightsRedrawn", r.localLightsRedrawn.median()},
+            {"localLightsRedrawnMax", r.localLightsRedrawn.max()},
+            {"redrawReasons", r.redrawReasons}};
 }
 
 void printTable(const std::vector<ConfigurationResult>& results, const SceneBenchOptions& options,
@@ -256,6 +276,13 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
             r.passes[passIndex("screenSpaceShadows")].median(), r.passes[passIndex("lit")].median(),
             r.passes[passIndex("resolve")].median(), r.passes[passIndex("reference")].median(), litOverReference(r),
             r.frame.max());
+    if (frame.shadows.contact.shadows == shadows::Toggle::On)
+        for (const ConfigurationResult& r : results) {
+            const double lit = r.passes[passIndex("lit")].median();
+            const double contact = r.passes[passIndex("contactShadows")].median();
+            fmt::print("{:<24} contact shadows {:.2f} ms, {:.1f}% of the lit pass\n", r.configuration, contact,
+                       lit > 0.0 ? 100.0 * contact / lit : 0.0);
+        }
     fmt::print("{:<24} {:>12} {:>13} {:>11} {:>10} {:>12}\n", "configuration", "planning ms", "recording ms",
                "depth draws", "lit draws", "caster draws");
     for (const ConfigurationResult& r : results)
@@ -268,6 +295,15 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
         fmt::print("{:<24} {:>8} {:>9} {:>15.1f} {:>12.1f} {:>12.2f} {:>13.2f}\n", r.configuration,
                    r.last.shadowedLights, r.last.lightsWithoutShadow, r.localTilesDrawn.median(),
                    r.localTilesCached.median(), r.cpuFrame.median(), r.passes[passIndex("otherAtlas")].median());
+    for (const ConfigurationResult& r : results)
+        for (const auto& [reason, count] : r.redrawReasons)
+            fmt::print("{}: {} light redraws over the measured frames: {}\n", r.configuration, count, reason);
+    // directional.projection depthFit: the reduction's GPU time and the plan's CPU time (the fit) against the frame.
+    for (const ConfigurationResult& r : results)
+        if (const double reduction = r.passes[passIndex("depthFit")].median(); reduction > 0.0)
+            fmt::print("{:<24} depth fit: reduction {:.3f} ms ({:.1f} % of the frame), planning {:.3f} ms ({:.1f} %)\n",
+                       r.configuration, reduction, 100.0 * reduction / r.frame.median(), r.planning.median(),
+                       100.0 * r.planning.median() / r.frame.median());
     if (results.size() == 2 && results[1].frame.median() > 0.0)
         fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,
                    results[0].frame.median() / results[1].frame.median());

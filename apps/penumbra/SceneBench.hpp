@@ -25,17 +25,21 @@ struct SceneBenchOptions {
 // The pass names of the JSON's "passes" objects, in frame order: the depth prepass, the directional and the
 // local atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass (timed in a
 // frame of its own, which the frame times leave out); then the static shadow maps drawn in the frame (drawn first,
-// listed last to keep the older names' order).
-inline constexpr const char* kBenchPassNames[] = {"depth", "directionalAtlas", "otherAtlas", "screenSpaceShadows",
-                                                  "lit",   "resolve",          "reference",  "staticAtlas"};
+// listed last to keep the older names' order), the contact shadows (their march and, with MSAA on the forward
+// path, their single-sampled prepass), the depth fit's reduction (with MSAA, its single-sampled prepass) and the GPU
+// caster culling pass (--culling gpu).
+inline constexpr const char* kBenchPassNames[] = {
+    "depth",     "directionalAtlas", "otherAtlas",     "screenSpaceShadows", "lit",          "resolve",
+    "reference", "staticAtlas",      "contactShadows", "depthFit",           "casterCulling"};
 
 // Prints a table per light count and returns {"scene": [one object per light count and configuration: configuration,
 // scene, lights (the --lights count or null), width, height,
-// frames, warmup, frameMs (median), frameMsMin, frameMsMax, passes {name: median ms}, passesMin, passesMax,
-// litOverReference, instancing, cpuMs {planning, recording} (medians), cpuMsMax, draws {depth, lit},
-// casterDraws, cpuFrameMs (planning + recording, median), shadowedLights, lightsWithoutShadow, localTilesDrawn and
-// localTilesCached (medians)]}. A pass the frame does not draw reports 0. Throws rhi::Error for a device that
-// is missing or, with validate, reports a message.
+// frames, warmup, culling ("cpu" or "gpu"), frameMs (median), frameMsMin, frameMsMax, passes {name: median ms},
+// passesMin, passesMax, litOverReference, instancing, cpuMs {planning, recording} (medians), cpuMsMax, draws {depth,
+// lit}, casterDraws, cpuFrameMs (planning + recording, median), shadowedLights, lightsWithoutShadow, localTilesDrawn
+// and localTilesCached (medians), movingCars (--moving-cars), localLightsRedrawn (median) and localLightsRedrawnMax,
+// and redrawReasons {reason: light redraws over the measured frames}]}. A pass the frame does not draw reports 0.
+// Throws rhi::Error for a device that is missing or, with validate, reports a message.
 nlohmann::json runSceneBench(const SceneBenchOptions& options);
 
 } // namespace penumbra::apps

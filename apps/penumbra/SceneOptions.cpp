@@ -12,6 +12,7 @@
 #include "penumbra/scene/LocalLights.hpp"
 #include "penumbra/scene/Posing.hpp"
 #include "penumbra/scene/SceneDefaults.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/shadows/ShadowSettingsJson.hpp"
 
 #include <charconv>
@@ -253,6 +254,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
     command.add_option("--dynamic", options.dynamicObjects,
                        "Make the objects of this name dynamic (repeatable; a glTF mesh's primitives NAME/0, NAME/1 "
                        "follow NAME): they are drawn into the realtime shadows every frame, never into static maps");
+    command.add_flag("--moving-cars", options.movingCars,
+                     fmt::format("With --scene street: {} of its cars drive down the road ({} m/s, dynamic); `bench` "
+                                 "moves them on each frame, so only the lights that see a car draw their shadow again",
+                                 scenes::kStreetMovingCars, scenes::kStreetCarSpeed));
     command
         .add_option("--light-static-map", options.lightStaticMaps,
                     fmt::format("A light's own static map mode, over --static-maps and the settings' (repeatable): "
@@ -438,6 +443,12 @@ LoadedScene loadScene(const SceneOptions& options)
         applyLightShadowUpdate(loaded.scene, spec);
     for (const std::string& name : options.dynamicObjects)
         makeDynamic(loaded.scene, name);
+    if (options.movingCars) {
+        if (options.scene != "street")
+            throw rhi::Error(
+                fmt::format("--moving-cars: only the street scene has moving cars, not '{}'", options.scene));
+        scenes::driveStreetCars(loaded.scene, 0.0f);
+    }
     return loaded;
 }
 

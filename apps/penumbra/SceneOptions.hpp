@@ -18,8 +18,8 @@ namespace penumbra::apps {
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --lights, --camera, --light,
 // --default-lights, --missing-textures, --ambient, --environment, --environment-intensity, --environment-rotation,
 // --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
-// --light-size, --dynamic, --light-static-map, --baked, --time, --animation, and the shadow settings fields' own
-// options (addSettingsFieldOptions: --projection, --static-maps, --realtime-casters).
+// --light-size, --dynamic, --moving-cars, --light-static-map, --baked, --time, --animation, and the shadow settings
+// fields' own options (addSettingsFieldOptions: --projection, --static-maps, --realtime-casters).
 struct SceneOptions {
     std::string scene = "test";
     std::optional<std::uint32_t> localLights; // --lights N: the scene's first N local lights (keepFirstLocalLights)
@@ -47,6 +47,9 @@ struct SceneOptions {
     std::string filter; // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
+    // --moving-cars: the street's ten moving cars (scenes::driveStreetCars) in their lanes, dynamic; `bench` drives
+    // them on by 1/60 s each frame.
+    bool movingCars = false;
     std::vector<std::string> lightStaticMaps; // NAME=MODE: a light's own static map mode (applyLightShadowUpdate)
     std::vector<std::string>
         lightShadowResolutions; // NAME=N: a light's own shadow tile size (applyLightShadowResolution)

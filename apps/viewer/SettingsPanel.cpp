@@ -115,6 +115,16 @@ bool fieldSlider(std::string_view path, std::uint32_t& value)
     return changed;
 }
 
+// A field whose range spans decades (a constant depth bias, 0 to a million steps): the slider moves logarithmically.
+bool fieldLogSlider(std::string_view path, float& value)
+{
+    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    const bool changed = ImGui::SliderFloat(labelOf(path).c_str(), &value, static_cast<float>(field.range.low),
+                                            static_cast<float>(field.range.high), "%.0f", ImGuiSliderFlags_Logarithmic);
+    summaryTooltip(field);
+    return changed;
+}
+
 // The powers of two of the field's range.
 bool fieldPowerOfTwo(std::string_view path, std::uint32_t& value)
 {
@@ -180,6 +190,7 @@ bool softSettings(shadows::SoftShadowSettings& s)
     changed |= fieldSlider("soft.minPenumbraTexels", s.minPenumbraTexels);
     changed |= fieldSlider("soft.maxPenumbraTexels", s.maxPenumbraTexels);
     changed |= fieldSlider("soft.poissonRadiusTexels", s.poissonRadiusTexels);
+    changed |= fieldCombo("soft.diskRotation", s.diskRotation);
     return changed;
 }
 
@@ -209,6 +220,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
                                 static_cast<float>(maxDistance.range.low), 1000.0f);
     summaryTooltip(maxDistance);
     changed |= fieldSlider("distanceFade", s.distanceFade);
+    changed |= fieldCombo("culling", s.culling);
     shadows::DirectionalShadowSettings& d = s.directional;
     changed |= fieldPowerOfTwo("directional.atlasSize", d.atlasSize);
     changed |= atlasFormatCombo(d.atlasFormat);
@@ -225,6 +237,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
         changed |= fieldSlider("directional.depthFitSteps", d.depthFitSteps);
         changed |= fieldSlider("directional.depthFitHysteresis", d.depthFitHysteresis);
     }
+    changed |= fieldLogSlider("directional.depthBias", d.depthBias);
     ImGui::Separator();
     ImGui::TextUnformatted("spot and point lights");
     ImGui::PushID("local");
@@ -235,6 +248,8 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= fieldCombo("local.pointMode", o.pointMode);
     changed |= fieldPowerOfTwo("local.cubeMapSize", o.cubeMapSize);
     changed |= fieldSlider("local.nearPlane", o.nearPlane);
+    changed |= fieldLogSlider("local.depthBias", o.depthBias);
+    changed |= fieldCombo("local.spotFovBias", o.spotFovBias);
     ImGui::PopID();
     ImGui::Separator();
     ImGui::TextUnformatted("soft shadows (poisson, pcss)");
@@ -248,6 +263,15 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= fieldPowerOfTwo("static.directionalAtlasSize", m.directionalAtlasSize);
     changed |= fieldPowerOfTwo("static.localAtlasSize", m.localAtlasSize);
     ImGui::PopID();
+    ImGui::Separator();
+    ImGui::TextUnformatted("contact shadows");
+    shadows::ContactShadowSettings& c = s.contact;
+    changed |= fieldCombo("contact.shadows", c.shadows);
+    if (c.shadows == shadows::Toggle::On) {
+        changed |= fieldSlider("contact.length", c.length);
+        changed |= fieldSlider("contact.steps", c.steps);
+        changed |= fieldSlider("contact.thickness", c.thickness);
+    }
     return changed;
 }
 
@@ -268,6 +292,20 @@ bool commonLightSettings(Light& light)
     return changed;
 }
 
+// A spot or point light's own shadow resolution (texels per side its tile asks for when its reach fills the screen),
+// or none of its own: the settings' local.tileResolution.
+bool shadowResolutionSetting(std::optional<float>& resolution, std::uint32_t settingsResolution)
+{
+    bool own = resolution.has_value();
+    bool changed = ImGui::Checkbox("own shadow resolution", &own);
+    if (changed)
+        resolution = own ? std::optional<float>(static_cast<float>(settingsResolution)) : std::nullopt;
+    if (resolution)
+        changed |= ImGui::SliderFloat("shadow resolution", &*resolution, scene::kMinShadowResolution,
+                                      scene::kMaxShadowResolution, "%.0f", ImGuiSliderFlags_Logarithmic);
+    return changed;
+}
+
 // Whether a static map is drawn on demand: the settings' mode, or a light's own.
 bool anyOnDemand(const ViewState& state)
 {
@@ -279,7 +317,7 @@ bool anyOnDemand(const ViewState& state)
            onDemand(state.spotLights) || onDemand(state.pointLights);
 }
 
-bool spotLightSettings(scene::SpotLight& light, std::size_t index)
+bool spotLightSettings(scene::SpotLight& light, std::size_t index, std::uint32_t tileResolution)
 {
     bool changed = false;
     ImGui::PushID(int(1000 + index));
@@ -291,13 +329,14 @@ bool spotLightSettings(scene::SpotLight& light, std::size_t index)
         changed |= ImGui::SliderAngle("inner angle", &light.innerAngle, 0.0f, 89.0f);
         changed |= ImGui::SliderAngle("outer angle", &light.outerAngle, 0.0f, 89.0f);
         changed |= ImGui::DragFloat("source radius", &light.sourceRadius, 0.005f, 0.0f, light.range);
+        changed |= shadowResolutionSetting(light.shadowResolution, tileResolution);
         ImGui::TreePop();
     }
     ImGui::PopID();
     return changed;
 }
 
-bool pointLightSettings(scene::PointLight& light, std::size_t index)
+bool pointLightSettings(scene::PointLight& light, std::size_t index, std::uint32_t tileResolution)
 {
     bool changed = false;
     ImGui::PushID(int(2000 + index));
@@ -306,6 +345,7 @@ bool pointLightSettings(scene::PointLight& light, std::size_t index)
         changed |= ImGui::DragFloat3("position", &light.position.x, 0.05f);
         changed |= ImGui::DragFloat("range", &light.range, 0.05f, 0.01f, 1000.0f);
         changed |= ImGui::DragFloat("source radius", &light.sourceRadius, 0.005f, 0.0f, light.range);
+        changed |= shadowResolutionSetting(light.shadowResolution, tileResolution);
         ImGui::TreePop();
     }
     ImGui::PopID();
@@ -436,9 +476,9 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
         for (std::size_t i = 0; i < state.lights.size(); ++i)
             changed |= lightSettings(state.lights[i], i);
         for (std::size_t i = 0; i < state.spotLights.size(); ++i)
-            changed |= spotLightSettings(state.spotLights[i], i);
+            changed |= spotLightSettings(state.spotLights[i], i, state.shadows.local.tileResolution);
         for (std::size_t i = 0; i < state.pointLights.size(); ++i)
-            changed |= pointLightSettings(state.pointLights[i], i);
+            changed |= pointLightSettings(state.pointLights[i], i, state.shadows.local.tileResolution);
     }
     if (ImGui::CollapsingHeader("objects: cast and receive shadows, dynamic"))
         changed |= objectSettings(state.objects, scene);

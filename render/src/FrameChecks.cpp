@@ -50,6 +50,9 @@ void checkShadowPath(const FrameDesc& frame)
     if (frame.shadowPath == ShadowPath::ScreenSpace && !frame.depthPrepass)
         throw rhi::Error("FrameDesc::shadowPath: the screen-space shadow path collects shadows from the depth "
                          "prepass's depth; it needs FrameDesc::depthPrepass");
+    if (frame.shadows.contact.shadows == shadows::Toggle::On && !frame.depthPrepass)
+        throw rhi::Error("contact.shadows: contact shadows march through the depth prepass's depth; they need "
+                         "FrameDesc::depthPrepass");
 }
 
 } // namespace penumbra::render

@@ -40,11 +40,18 @@ std::string localShadowUpdate(const scene::Scene& scene, shadows::LightKind kind
     return fmt::format("{} {} ('{}'): {}", scene::lightKindName(kind), index, lightName(scene, kind, index), reason);
 }
 
-ShadowedLightCounts shadowedLightCounts(const scene::Scene& scene, const ShadowPlans& plans)
+FrameStats plannedFrameStats(const scene::Scene& scene, const ShadowPlans& plans)
 {
-    ShadowedLightCounts counts;
+    const shadows::ShadowAtlasPack& pack = plans.local.allocation.pack;
+    const std::uint64_t atlasTexels = std::uint64_t(plans.local.atlasSize) * plans.local.atlasSize;
+    FrameStats stats{.localAtlasUsed = atlasTexels == 0 ? 0.0f : float(double(pack.usedTexels) / double(atlasTexels)),
+                     .localAtlasFragmentation = pack.fragmentation,
+                     .localLightsLowered = static_cast<std::uint32_t>(plans.local.lowered.size())};
+    for (const shadows::ShadowedDirectionalLight& light : plans.directional.lights)
+        for (const shadows::DirectionalCascadePlan& cascade : light.cascades)
+            stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;
     const auto count = [&](bool realtime, shadows::LightKind kind, std::uint32_t index) {
-        ++(realtime || hasStaticMap(plans.staticMaps, kind, index) ? counts.shadowed : counts.withoutShadow);
+        ++(realtime || hasStaticMap(plans.staticMaps, kind, index) ? stats.shadowedLights : stats.lightsWithoutShadow);
     };
     const std::vector<int>& slots = plans.directional.shadowSlots;
     for (std::uint32_t i = 0; i < scene.lights.size(); ++i)
@@ -53,7 +60,7 @@ ShadowedLightCounts shadowedLightCounts(const scene::Scene& scene, const ShadowP
         count(i < plans.local.spotTiles.size() && plans.local.spotTiles[i] >= 0, shadows::LightKind::Spot, i);
     for (std::uint32_t i = 0; i < scene.pointLights.size(); ++i)
         count(i < plans.local.pointShadows.size() && plans.local.pointShadows[i] >= 0, shadows::LightKind::Point, i);
-    return counts;
+    return stats;
 }
 
 std::vector<std::string> frameNotes(const scene::Scene& scene, const ShadowPlans& plans)

@@ -3,6 +3,7 @@
 #include "FrameChecks.hpp"
 #include "cache/LocalTileCache.hpp"
 #include "graph/FrameGraph.hpp"
+#include "passes/ContactShadowPass.hpp"
 #include "passes/DepthPrepass.hpp"
 #include "passes/DepthReduction.hpp"
 #include "passes/LitPipelines.hpp"
@@ -34,6 +35,26 @@ rhi::TextureDesc depthTargetDesc(const FrameDesc& frame, std::uint32_t samples)
             .usage = samples == 1 ? rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget
                                   : rhi::TextureUsage::RenderTarget,
             .samples = samples};
+}
+
+void createMultisampledTargets(FrameGraph& graph, const FrameDesc& frame)
+{
+    graph.createTexture(frame::kMultisampledColor, {.width = frame.width,
+                                                    .height = frame.height,
+                                                    .format = kLitColorFormat,
+                                                    .usage = rhi::TextureUsage::RenderTarget,
+                                                    .samples = frame.msaa});
+    graph.createTexture(frame::kMultisampledDepth, depthTargetDesc(frame, frame.msaa));
+}
+
+void prepareContactShadows(rhi::Device& device, const FrameDesc& frame, std::unique_ptr<ContactShadowPass>& contact,
+                           std::unique_ptr<DepthPrepass>& prepass)
+{
+    if (!contact)
+        contact = std::make_unique<ContactShadowPass>(device);
+    contact->prepare(frame.width, frame.height);
+    if (frame.msaa > 1 && !prepass)
+        prepass = std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1);
 }
 
 void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
@@ -71,6 +92,8 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         if (frame.msaa > 1 && !depthFitPrepass_)
             depthFitPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1);
     }
+    if (frame.shadows.contact.shadows == shadows::Toggle::On)
+        prepareContactShadows(device_, frame, contact_, contactPrepass_);
     const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
     if (firstScreenSpace) {
         receiverPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, true);

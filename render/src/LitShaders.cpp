@@ -72,6 +72,12 @@ std::string litConstants(const LitShaderFeatures& features)
                         static_cast<int>(DirectionalShadowSource::ScreenSpaceEdges),
                         static_cast<int>(features.directionalShadows), maxCollectedDirectionalLights);
     text += fmt::format("#define PENUMBRA_LIT_SAMPLES {}\n", features.samples);
+    text += fmt::format("#define PENUMBRA_CONTACT_SHADOWS {}\n#define PENUMBRA_BINDING_CONTACT_SHADOWS {}\n",
+                        features.contactShadows ? 1 : 0, kLitContactShadowsBinding);
+    // The single-sampled depth that tells a multisampled fragment whether it is its pixel's screen-space surface.
+    const bool pixelDepth = features.directionalShadows == DirectionalShadowSource::ScreenSpaceEdges ||
+                            (features.contactShadows && features.samples > 1);
+    text += fmt::format("#define PENUMBRA_PIXEL_DEPTH {}\n", pixelDepth ? 1 : 0);
     text += fmt::format(
         "#define PENUMBRA_BINDING_SCREEN_SPACE_SHADOWS {}\n#define PENUMBRA_BINDING_SCREEN_SPACE_DEPTH {}\n",
         kLitScreenSpaceShadowsBinding, kLitScreenSpaceDepthBinding);

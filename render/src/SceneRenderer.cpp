@@ -9,7 +9,9 @@
 #include "TextureSampling.hpp"
 #include "cache/LocalTileCache.hpp"
 #include "graph/FrameGraph.hpp"
+#include "passes/ContactShadowPass.hpp"
 #include "passes/FrameState.hpp"
+#include "passes/CasterCullingPass.hpp"
 #include "passes/DepthFitPasses.hpp"
 #include "passes/DepthPrepass.hpp"
 #include "passes/DepthReduction.hpp"
@@ -206,7 +208,9 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     const std::vector<shadows::PointShadowInput> points = pointShadowInputs(scene.pointLights);
     const std::vector<std::uint32_t> staticCasters = gpuScene_.staticCasters();
     return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
-                                            bounds, visibleDepths_),
+                                            bounds,
+                                            {depthHistogram_ ? &*depthHistogram_ : nullptr,
+                                             plan_.depthFit ? &*plan_.depthFit : nullptr}),
             shadows::planLocalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
                                       bounds, localPlan_.allocation),
             shadows::planStaticShadows(frame.shadows, device_.conventions(), lights, spots, points,
@@ -229,7 +233,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
 {
     const scene::Scene& scene = gpuScene_.scene();
     notes_ = frameNotes(scene, plans);
-    const ShadowedLightCounts lightCounts = shadowedLightCounts(scene, plans);
+    FrameStats stats = plannedFrameStats(scene, plans);
     const AnisotropyChoice anisotropy = chooseAnisotropy(frame.maxAnisotropy, device_.capabilities());
     gpuScene_.setMaxAnisotropy(anisotropy.value);
     if (anisotropy.note && !scene.textures.empty())
@@ -248,16 +252,13 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
         state.staticTiles = splitStaticCasters(plans, gpuScene_.staticCasters());
     plan_ = std::move(plans.directional);
     localPlan_ = std::move(plans.local);
-    const shadows::ShadowAtlasPack& pack = localPlan_.allocation.pack;
-    const std::uint64_t atlasTexels = std::uint64_t(localPlan_.atlasSize) * localPlan_.atlasSize;
-    FrameStats stats{.shadowedLights = lightCounts.shadowed,
-                     .lightsWithoutShadow = lightCounts.withoutShadow,
-                     .localAtlasUsed = atlasTexels == 0 ? 0.0f : float(double(pack.usedTexels) / double(atlasTexels)),
-                     .localAtlasFragmentation = pack.fragmentation,
-                     .localLightsLowered = static_cast<std::uint32_t>(localPlan_.lowered.size())};
-    for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
-        for (const shadows::DirectionalCascadePlan& cascade : light.cascades)
-            stats.casterDrawsWithoutCullingBias += cascade.casters.overlapping;
+    if (shadows::culledOnGpu(frame.shadows)) {
+        if (!casterCulling_)
+            casterCulling_ = std::make_unique<shadows::GpuCasterCulling>(device_);
+        state.culling = casterCulling_.get();
+        for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
+            state.culledLocalTile += static_cast<std::uint32_t>(light.cascades.size());
+    }
 
     uniforms_.reset();
     instances_.reset();
@@ -274,6 +275,13 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     stats.notes = notes_;
     state.screenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !uncollected;
     state.depthFit = frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit;
+    state.contact = frame.shadows.contact.shadows == shadows::Toggle::On;
+    state.contactShadows = contact_.get();
+    if (state.depthFit) {
+        for (const shadows::ShadowedDirectionalLight& light : plan_.lights)
+            state.depthFitLights.push_back(light.direction);
+        state.depthFitShadowFar = std::max(std::min(frame.shadows.maxDistance, camera.farPlane), camera.nearPlane);
+    }
     state.casters = casters_;
     state.litDraws = litDraws_;
     fillFrameBlocks(camera, frame);
@@ -317,6 +325,9 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     state.environment = environment_.get();
     state.litFrameUniforms = frameUniforms(camera, frame, clusters.grid);
     state.litFrame = uniforms_.push(state.litFrameUniforms);
+    if (state.contact)
+        state.contactUniforms =
+            uniforms_.push(contactShadowUniforms(device_.conventions(), camera, frame, state.litFrameUniforms));
     if (frame.visibilityOf)
         state.visibilityLight = litLightIndex(*frame.visibilityOf);
     state.features = frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_, staticShadows_->plan());
@@ -368,14 +379,10 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
         graph.importTexture(frame::kReceiverPositionDy, screenSpace_->positionDy());
         graph.importTexture(frame::kScreenSpaceShadows, screenSpace_->shadows(), state_->screenSpace);
     }
-    if (frame.msaa > 1) {
-        graph.createTexture(frame::kMultisampledColor, {.width = frame.width,
-                                                        .height = frame.height,
-                                                        .format = kLitColorFormat,
-                                                        .usage = rhi::TextureUsage::RenderTarget,
-                                                        .samples = frame.msaa});
-        graph.createTexture(frame::kMultisampledDepth, depthTargetDesc(frame, frame.msaa));
-    }
+    if (contact_)
+        graph.importTexture(frame::kContactShadows, contact_->shadows());
+    if (frame.msaa > 1)
+        createMultisampledTargets(graph, frame);
     for (const UserTexture& texture : userTextures_)
         graph.importTexture(texture.name, texture.texture, true);
 
@@ -385,16 +392,19 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     const auto add = [&](std::unique_ptr<FramePass> pass) { framePasses_.push_back(std::move(pass)); };
     add(std::make_unique<SkinningPass>(*skinning_));
     add(std::make_unique<StaticMapsPass>(state, *staticShadows_));
+    add(std::make_unique<CasterCullingPass>(state, gpuScene_, plan_, localPlan_));
     add(std::make_unique<StaticTilesPass>(state, *directionalStaticTiles_, StaticTilesPass::Atlas::Directional));
     add(std::make_unique<DirectionalAtlasPass>(state, shadowPass_, plan_));
     add(std::make_unique<StaticTilesPass>(state, *localStaticTiles_, StaticTilesPass::Atlas::Local));
     add(std::make_unique<LocalAtlasPass>(state, localShadowPass_, *localTiles_, localPlan_, gpuScene_.scene()));
     add(std::make_unique<DepthPrepassPass>(state, *depthPrepass_, gpuScene_));
     add(std::make_unique<DepthFitPrepassPass>(state, depthFitPrepass_.get(), gpuScene_));
+    add(std::make_unique<ContactPrepassPass>(state, contactPrepass_.get(), gpuScene_));
     if (screenSpace_) {
         add(std::make_unique<ReceiverPrepassPass>(state, *receiverPrepass_, *screenSpace_, gpuScene_));
         add(std::make_unique<ScreenSpaceShadowsPass>(state, *screenSpace_));
     }
+    add(std::make_unique<ContactShadowsPass>(state, contact_.get()));
     add(std::make_unique<LitPass>(state, litPipelines, gpuScene_, screenSpace_.get()));
     add(std::make_unique<DepthReductionPass>(state, depthReduction_.get()));
     add(std::make_unique<ResolvePass>(state, *lit_));
@@ -408,18 +418,18 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     }
 }
 
-// Depth fit: this frame's reduction, read after the submission (which waited for it), is the next frame's range.
-void SceneRenderer::readVisibleDepths(const scene::Camera& camera, const FrameDesc& frame)
+// Depth fit: this frame's histogram, read after the submission (which waited for it), is the next frame's.
+void SceneRenderer::readDepthHistogram()
 {
     if (!state_->depthFit)
         return;
-    const glm::mat4 projection =
-        device_.conventions().perspective(camera.fovY, aspectOf(frame), camera.nearPlane, camera.farPlane);
-    const std::optional<shadows::ViewDepthRange> measured = depthReduction_->read(device_.conventions(), projection);
-    const shadows::DirectionalShadowSettings& directional = frame.shadows.directional;
-    if (measured)
-        visibleDepths_ = shadows::quantizeViewDepthRange(*measured, visibleDepths_, directional.depthFitSteps,
-                                                         directional.depthFitHysteresis);
+    if (std::optional<shadows::DepthHistogram> histogram = depthReduction_->read())
+        depthHistogram_ = std::move(*histogram);
+}
+
+std::optional<shadows::ViewDepthRange> SceneRenderer::visibleDepths() const
+{
+    return depthHistogram_ ? shadows::depthHistogramRange(*depthHistogram_) : std::nullopt;
 }
 
 void SceneRenderer::addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const
@@ -478,7 +488,7 @@ FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& f
     graph_->execute(*commands_);
     stats.recordingMs = millisecondsSince(start);
     device_.submit(*commands_);
-    readVisibleDepths(camera, frame);
+    readDepthHistogram();
     stats.passes = graph_->timings();
     state_->stats = nullptr;
     return stats;

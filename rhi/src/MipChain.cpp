@@ -6,9 +6,11 @@
 #include "penumbra/rhi/Error.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
+#include <memory>
 
 namespace penumbra::rhi {
 namespace {
@@ -42,89 +44,168 @@ Layout layoutOf(Format format)
                             formatName(format)));
 }
 
-struct Plane {
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-    std::vector<double> values; // width * height * channels, linear light
+// The linear value of each 8-bit code, unorm and sRGB-decoded: a lookup instead of a division and a pow per
+// texel channel, computed by the same expressions, so the same doubles.
+struct UnormTables {
+    std::array<double, 256> linear{};
+    std::array<double, 256> srgb{};
 };
 
-Plane decode(const Layout& layout, std::uint32_t width, std::uint32_t height, std::span<const std::byte> bytes)
+const UnormTables& unormTables()
 {
-    Plane plane{width, height, std::vector<double>(std::size_t(width) * height * layout.channels)};
-    for (std::size_t i = 0; i < plane.values.size(); ++i) {
-        if (layout.floats) {
-            float f;
-            std::memcpy(&f, bytes.data() + i * 4, 4);
-            plane.values[i] = f;
-            continue;
+    static const UnormTables tables = [] {
+        UnormTables made;
+        for (std::size_t code = 0; code < 256; ++code) {
+            made.linear[code] = double(code) / 255.0;
+            made.srgb[code] = srgbToLinear(made.linear[code]);
         }
-        const double unorm = double(std::uint8_t(bytes[i])) / 255.0;
-        plane.values[i] = layout.srgb && i % 4 != 3 ? srgbToLinear(unorm) : unorm;
-    }
-    return plane;
+        return made;
+    }();
+    return tables;
 }
 
-std::vector<std::byte> encode(const Layout& layout, const Plane& plane)
+// Decodes row `y` of level 0 into `out` (width * channels linear values).
+void decodeRow(const Layout& layout, std::span<const std::byte> bytes, std::uint32_t width, std::uint32_t y,
+               double* out)
 {
-    std::vector<std::byte> bytes(plane.values.size() * (layout.floats ? 4 : 1));
-    for (std::size_t i = 0; i < plane.values.size(); ++i) {
-        const double v = plane.values[i];
+    const std::size_t count = std::size_t(width) * layout.channels;
+    const std::size_t first = std::size_t(y) * count;
+    if (layout.floats) {
+        for (std::size_t i = 0; i < count; ++i) {
+            float f;
+            std::memcpy(&f, bytes.data() + (first + i) * 4, 4);
+            out[i] = f;
+        }
+        return;
+    }
+    const UnormTables& tables = unormTables();
+    const auto* codes = reinterpret_cast<const std::uint8_t*>(bytes.data()) + first;
+    if (!layout.srgb) {
+        for (std::size_t i = 0; i < count; ++i)
+            out[i] = tables.linear[codes[i]];
+        return;
+    }
+    for (std::size_t i = 0; i < count; i += 4) {
+        out[i] = tables.srgb[codes[i]];
+        out[i + 1] = tables.srgb[codes[i + 1]];
+        out[i + 2] = tables.srgb[codes[i + 2]];
+        out[i + 3] = tables.linear[codes[i + 3]];
+    }
+}
+
+std::vector<std::byte> encode(const Layout& layout, std::span<const double> values, std::optional<double> alphaScale)
+{
+    std::vector<std::byte> bytes(values.size() * (layout.floats ? 4 : 1));
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const bool alpha = i % 4 == 3;
+        const double v = alphaScale && alpha ? std::min(values[i] * *alphaScale, 1.0) : values[i];
         if (layout.floats) {
             const float f = float(v);
             std::memcpy(bytes.data() + i * 4, &f, 4);
             continue;
         }
-        const double unorm = layout.srgb && i % 4 != 3 ? linearToSrgb(std::clamp(v, 0.0, 1.0)) : v;
+        const double unorm = layout.srgb && !alpha ? linearToSrgb(std::clamp(v, 0.0, 1.0)) : v;
         bytes[i] = std::byte(std::uint8_t(std::lround(std::clamp(unorm, 0.0, 1.0) * 255.0)));
     }
     return bytes;
 }
 
-// Halves one axis of `source` with the box filter; `alongX` picks the axis, the other keeps its size.
-Plane halve(const Plane& source, std::uint32_t channels, bool alongX)
+// The box filter along one axis halved from `from` texels: destination texel d averages sources
+// [first[d], first[d + 1]) of `taps`, weighted by the share of its area each covers, in ascending source order.
+struct AxisFilter {
+    struct Tap {
+        std::uint32_t source = 0;
+        double weight = 0.0;
+    };
+    std::uint32_t to = 0;
+    std::vector<std::size_t> first;
+    std::vector<Tap> taps;
+};
+
+AxisFilter axisFilter(std::uint32_t from)
 {
-    const std::uint32_t from = alongX ? source.width : source.height;
-    const std::uint32_t to = std::max(from / 2, 1u);
-    Plane out{alongX ? to : source.width, alongX ? source.height : to, {}};
-    out.values.assign(std::size_t(out.width) * out.height * channels, 0.0);
-    const double scale = double(from) / double(to); // source texels per destination texel
-    for (std::uint32_t d = 0; d < to; ++d) {
+    AxisFilter filter;
+    filter.to = std::max(from / 2, 1u);
+    const double scale = double(from) / double(filter.to); // source texels per destination texel
+    for (std::uint32_t d = 0; d < filter.to; ++d) {
+        filter.first.push_back(filter.taps.size());
         const double begin = d * scale, end = (d + 1) * scale;
-        for (auto s = std::uint32_t(begin); s < from && s < end; ++s) {
-            const double weight = (std::min(end, s + 1.0) - std::max(begin, double(s))) / scale;
-            const std::uint32_t rows = alongX ? source.height : source.width;
-            for (std::uint32_t r = 0; r < rows; ++r) {
-                const std::size_t src = alongX ? std::size_t(r) * source.width + s : std::size_t(s) * source.width + r;
-                const std::size_t dst = alongX ? std::size_t(r) * out.width + d : std::size_t(d) * out.width + r;
-                for (std::uint32_t c = 0; c < channels; ++c)
-                    out.values[dst * channels + c] += weight * source.values[src * channels + c];
+        for (auto s = std::uint32_t(begin); s < from && s < end; ++s)
+            filter.taps.push_back({s, (std::min(end, s + 1.0) - std::max(begin, double(s))) / scale});
+    }
+    filter.first.push_back(filter.taps.size());
+    return filter;
+}
+
+// One level filtered from the level above: both axes halved (an axis of one texel stays), the x axis first.
+// Each sum starts at 0.0 and adds weight * value in ascending source order, the x sums before the y sums, so every
+// level has the bits that filtering whole planes axis by axis gave. `sourceRow(y)` gives row y of the level above
+// (width * channels values) and stays valid until the next call.
+template <typename SourceRow>
+void filterLevel(std::uint32_t width, std::uint32_t height, std::uint32_t channels, SourceRow&& sourceRow,
+                 double* xScratch, double* out)
+{
+    const bool alongX = width > 1, alongY = height > 1;
+    const AxisFilter xFilter = alongX ? axisFilter(width) : AxisFilter{};
+    const std::uint32_t outWidth = alongX ? xFilter.to : width;
+    const std::size_t rowValues = std::size_t(outWidth) * channels;
+    // Row y of the level above halved along x: written to xScratch, or the row itself where x stays.
+    const auto xRow = [&](std::uint32_t y, double* scratch) -> const double* {
+        const double* source = sourceRow(y);
+        if (!alongX)
+            return source;
+        for (std::uint32_t d = 0; d < xFilter.to; ++d) {
+            for (std::uint32_t c = 0; c < channels; ++c) {
+                double sum = 0.0;
+                for (std::size_t t = xFilter.first[d]; t < xFilter.first[d + 1]; ++t)
+                    sum += xFilter.taps[t].weight * source[std::size_t(xFilter.taps[t].source) * channels + c];
+                scratch[std::size_t(d) * channels + c] = sum;
             }
         }
+        return scratch;
+    };
+    if (!alongY) {
+        if (const double* row = xRow(0, out); row != out)
+            std::copy(row, row + rowValues, out);
+        return;
     }
-    return out;
+    const AxisFilter yFilter = axisFilter(height);
+    for (std::uint32_t d = 0; d < yFilter.to; ++d) {
+        double* target = out + std::size_t(d) * rowValues;
+        for (std::size_t t = yFilter.first[d]; t < yFilter.first[d + 1]; ++t) {
+            const double weight = yFilter.taps[t].weight;
+            const double* row = xRow(yFilter.taps[t].source, xScratch);
+            // The first tap adds to 0.0 as a zeroed sum would (0.0 + -0.0 is 0.0), without a pass to zero the row.
+            for (std::size_t i = 0; i < rowValues; ++i)
+                target[i] = (t == yFilter.first[d] ? 0.0 : target[i]) + weight * row[i];
+        }
+    }
 }
 
-// Share of the plane's texels whose alpha (channel 3 of 4) times `scale` reaches `cutoff`.
-double alphaCoverage(const Plane& plane, double scale, double cutoff)
+// Texels of `values` (RGBA) whose alpha times `scale` reaches `cutoff`.
+std::size_t alphaCovered(std::span<const double> values, double scale, double cutoff)
 {
     std::size_t covered = 0;
-    for (std::size_t i = 3; i < plane.values.size(); i += 4)
-        covered += plane.values[i] * scale >= cutoff ? 1 : 0;
-    return double(covered) / double(plane.values.size() / 4);
+    for (std::size_t i = 3; i < values.size(); i += 4)
+        covered += values[i] * scale >= cutoff ? 1 : 0;
+    return covered;
 }
 
-// `plane` with its alpha scaled so that alphaCoverage is as close to `coverage` as a bisection of the scale finds
-// (coverage grows with the scale), clamped to [0, 1].
-Plane withAlphaCoverage(Plane plane, double coverage, double cutoff)
+// The alpha scale that brings the share of `values`' texels reaching `cutoff` as close to `coverage` as a
+// bisection finds (coverage grows with the scale).
+double alphaScaleFor(std::span<const double> values, double coverage, double cutoff)
 {
     double low = 0.0, high = 64.0;
     for (int step = 0; step < 32; ++step) {
         const double mid = 0.5 * (low + high);
-        (alphaCoverage(plane, mid, cutoff) < coverage ? low : high) = mid;
+        (double(alphaCovered(values, mid, cutoff)) / double(values.size() / 4) < coverage ? low : high) = mid;
     }
-    for (std::size_t i = 3; i < plane.values.size(); i += 4)
-        plane.values[i] = std::min(plane.values[i] * high, 1.0);
-    return plane;
+    return high;
+}
+
+std::size_t valuesOf(std::uint32_t width, std::uint32_t height, std::uint32_t channels)
+{
+    return std::size_t(width) * height * channels;
 }
 
 } // namespace
@@ -146,14 +227,46 @@ std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_
                                 "got {}",
                                 *alphaCutoff, formatName(format)));
     std::vector<std::vector<std::byte>> chain{std::vector<std::byte>(level0.begin(), level0.end())};
-    Plane plane = decode(layout, width, height, level0);
-    const double coverage = alphaCutoff ? alphaCoverage(plane, 1.0, *alphaCutoff) : 0.0;
+    if (levels == 1)
+        return chain;
+    const std::uint32_t channels = layout.channels;
+    // Level 0 is decoded a row at a time, never whole; the levels below live in two buffers used in turn (odd
+    // levels in the first, even in the second), allocated once and not zero-filled: a fresh zero-filled plane per
+    // level was most of the time (docs/notes/2026-12-06-large-texture-loading.md).
+    std::vector<double> decoded(std::size_t(width) * channels);
+    std::vector<double> xScratch(std::size_t(std::max(width / 2, 1u)) * channels);
+    const auto halvedSize = [](std::uint32_t size) { return std::max(size / 2, 1u); }; // an axis of the next level
+    std::array<std::unique_ptr<double[]>, 2> planes;
+    planes[0].reset(new double[valuesOf(halvedSize(width), halvedSize(height), channels)]);
+    if (levels > 2)
+        planes[1].reset(new double[valuesOf(halvedSize(halvedSize(width)), halvedSize(halvedSize(height)), channels)]);
+    double coverage = 0.0;
+    if (alphaCutoff) {
+        std::size_t covered = 0;
+        for (std::uint32_t y = 0; y < height; ++y) {
+            decodeRow(layout, level0, width, y, decoded.data());
+            covered += alphaCovered(decoded, 1.0, *alphaCutoff);
+        }
+        coverage = double(covered) / double(std::size_t(width) * height);
+    }
+    std::uint32_t w = width, h = height;
+    const double* above = nullptr; // the level above, null for level 0 (read from its bytes)
     for (std::uint32_t level = 1; level < levels; ++level) {
-        if (plane.width > 1)
-            plane = halve(plane, layout.channels, true);
-        if (plane.height > 1)
-            plane = halve(plane, layout.channels, false);
-        chain.push_back(encode(layout, alphaCutoff ? withAlphaCoverage(plane, coverage, *alphaCutoff) : plane));
+        double* out = planes[(level - 1) % 2].get();
+        const auto sourceRow = [&](std::uint32_t y) -> const double* {
+            if (above)
+                return above + std::size_t(y) * w * channels;
+            decodeRow(layout, level0, width, y, decoded.data());
+            return decoded.data();
+        };
+        filterLevel(w, h, channels, sourceRow, xScratch.data(), out);
+        w = halvedSize(w);
+        h = halvedSize(h);
+        const std::span<const double> values(out, valuesOf(w, h, channels));
+        chain.push_back(
+            encode(layout, values,
+                   alphaCutoff ? std::optional(alphaScaleFor(values, coverage, *alphaCutoff)) : std::nullopt));
+        above = out;
     }
     return chain;
 }

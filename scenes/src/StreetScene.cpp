@@ -3,9 +3,11 @@
 #include "penumbra/scene/MeshGenerators.hpp"
 
 #include <array>
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
+#include <optional>
 #include <string>
 
 namespace penumbra::scenes {
@@ -84,15 +86,26 @@ void addTreesAndPosts(scene::Scene& scene, const Shapes& shapes, std::uint32_t b
                                                          along(i / 2, kLampsPerRow)}));
 }
 
+// Where car i (0-based) is parked: in gaps of varying length along both kerbs.
+glm::vec3 parkedCar(std::uint32_t i)
+{
+    return {side(i) * kParkedCarX, 0.65f, along(i / 2, kStreetCars / 2, 3.0f * static_cast<float>(i % 3) - 3.0f)};
+}
+
+std::string carName(std::uint32_t i) { return "car " + std::to_string(i + 1); }
+
+// A car's body and its cabin, around the body's centre.
+std::array<glm::mat4, 2> carParts(glm::vec3 body)
+{
+    return {placed(body, {1.8f, 0.9f, 4.3f}), placed(body + glm::vec3(0, 0.75f, -0.2f), {1.6f, 0.6f, 2.2f})};
+}
+
 void addCars(scene::Scene& scene, const Shapes& shapes, std::uint32_t paint, std::uint32_t glass)
 {
     for (std::uint32_t i = 0; i < kStreetCars; ++i) {
-        // Parked in gaps of varying length along both kerbs.
-        const float z = along(i / 2, kStreetCars / 2, 3.0f * static_cast<float>(i % 3) - 3.0f);
-        const glm::vec3 body{side(i) * kParkedCarX, 0.65f, z};
-        const std::string name = "car " + std::to_string(i + 1);
-        scene.addObject(name + "/0", shapes.box, paint, placed(body, {1.8f, 0.9f, 4.3f}));
-        scene.addObject(name + "/1", shapes.box, glass, placed(body + glm::vec3(0, 0.75f, -0.2f), {1.6f, 0.6f, 2.2f}));
+        const std::array<glm::mat4, 2> parts = carParts(parkedCar(i));
+        scene.addObject(carName(i) + "/0", shapes.box, paint, parts[0]);
+        scene.addObject(carName(i) + "/1", shapes.box, glass, parts[1]);
     }
 }
 
@@ -123,6 +136,31 @@ void addLights(scene::Scene& scene)
 }
 
 } // namespace
+
+float streetCarDistance(float seconds) { return std::fmod(kStreetCarSpeed * seconds, 2.0f * kHalfLength); }
+
+void driveStreetCars(scene::Scene& scene, float seconds)
+{
+    for (std::uint32_t k = 0; k < kStreetMovingCars; ++k) {
+        const std::uint32_t i = k * (kStreetCars / kStreetMovingCars);
+        // Away from the camera down the lane beside car i's kerb, from where it was parked, round to the far end.
+        const glm::vec3 parked = parkedCar(i);
+        float z = parked.z - streetCarDistance(seconds);
+        if (z < -kHalfLength)
+            z += 2.0f * kHalfLength;
+        const std::array<glm::mat4, 2> parts = carParts({side(i) * kStreetLaneX, parked.y, z});
+        for (std::uint32_t part = 0; part < parts.size(); ++part) {
+            const std::string name = carName(i) + "/" + std::to_string(part);
+            const std::optional<std::uint32_t> found = scene.findObject(name);
+            if (!found)
+                throw scene::SceneError("driveStreetCars: the scene has no object '" + name + "' (not the street)");
+            scene::Object& object = scene.objects[*found];
+            object.transform = parts[part];
+            object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
+            object.mobility = scene::Mobility::Dynamic;
+        }
+    }
+}
 
 scene::Scene makeStreetScene()
 {

@@ -1,12 +1,14 @@
 // Renders glTF files with the Khronos glTF Sample Viewer (render-viewer.mjs) and with `penumbra render` on Vulkan
-// and OpenGL at the same size, camera (the file's camera 0) and lights (the file's KHR_lights_punctual ones, no
-// image-based or ambient light), and writes for each file OUT/<name>/{viewer,penumbra-vulkan,penumbra-opengl,
-// side-by-side}.png, then OUT/results.json and OUT/results.md with the differences in 8-bit units.
-//   node compare.mjs [--size WxH] [--out DIR] [--penumbra PATH] [--shadows on|off] [--anisotropy N] [--scenes]
-//                    FILE.glb...
+// and OpenGL at the same size, camera (the file's camera 0) and lights (the file's KHR_lights_punctual ones, and
+// with --ibl on the same environment on both sides, else no image-based or ambient light), and writes for each file
+// OUT/<name>/{viewer,penumbra-vulkan,penumbra-opengl,side-by-side}.png, then OUT/results.json and OUT/results.md with
+// the differences in 8-bit units.
+//   node compare.mjs [--size WxH] [--out DIR] [--penumbra PATH] [--shadows on|off] [--ibl on|off] [--anisotropy N]
+//                    [--scenes] FILE.glb...
 // --scenes adds scenes.mjs's feature scenes. --shadows off (the default) marks every node castShadows "off"
 // (Penumbra's node extras, ignored by the viewer), as the viewer draws no shadows. --anisotropy goes to penumbra
-// render (its default when not given).
+// render (its default when not given). --ibl on writes environment.mjs's sky as OUT/environment.hdr and lights
+// both sides with it: the viewer's image-based lighting (its own prefiltering) and `penumbra render --environment`.
 // Besides the viewer's own picture, "viewer-srgb" is the viewer's picture re-encoded from its pow(1/2.2) curve to
 // the exact sRGB curve (IEC 61966-2-1) that penumbra writes, background pixels left as they are: its numbers
 // separate shading differences from the two encodings.
@@ -16,6 +18,7 @@ import { execFileSync } from "node:child_process";
 import { PNG } from "pngjs";
 import { encodeGlb, readGltf } from "./glb.mjs";
 import { renderWithSampleViewer } from "./render-viewer.mjs";
+import { writeEnvironment } from "./environment.mjs";
 import { writeScenes } from "./scenes.mjs";
 
 // penumbra render's background, sRGB-encoded (kBackground in render/src/SceneRenderer.cpp).
@@ -23,13 +26,13 @@ const background = [0.2, 0.22, 0.26];
 const thresholds = [8, 16];
 
 function parseArguments(argv) {
-    const options = { size: "640x360", out: "out/sample-viewer", penumbra: "build/bin/penumbra", shadows: "off",
+    const options = { size: "640x360", out: "out/sample-viewer", penumbra: "build/bin/penumbra", shadows: "off", ibl: "off",
                       anisotropy: null, scenes: false, files: [] };
     for (let i = 0; i < argv.length; ++i) {
         const flag = argv[i];
         if (flag === "--scenes")
             options.scenes = true;
-        else if (["--size", "--out", "--penumbra", "--shadows", "--anisotropy"].includes(flag) && i + 1 < argv.length)
+        else if (["--size", "--out", "--penumbra", "--shadows", "--ibl", "--anisotropy"].includes(flag) && i + 1 < argv.length)
             options[flag.slice(2)] = argv[++i];
         else if (flag.startsWith("--"))
             throw new Error(`unknown option ${flag}`);
@@ -42,6 +45,8 @@ function parseArguments(argv) {
     [options.width, options.height] = [Number(size[1]), Number(size[2])];
     if (!["on", "off"].includes(options.shadows))
         throw new Error(`--shadows: expected on or off, got ${options.shadows}`);
+    if (!["on", "off"].includes(options.ibl))
+        throw new Error(`--ibl: expected on or off, got ${options.ibl}`);
     return options;
 }
 
@@ -293,6 +298,9 @@ async function main() {
     if (files.length === 0)
         throw new Error("no glTF files given (and no --scenes)");
     const penumbra = path.resolve(options.penumbra);
+    const environment = options.ibl === "on" ? writeEnvironment(path.join(options.out, "environment.hdr")) : null;
+    // Without an environment, no ambient light either: the viewer has none with image-based lighting off.
+    const lighting = environment ? ["--environment", environment] : ["--ambient", "0,0,0:0"];
     const jobs = files.map((file) => {
         const name = path.basename(file).replace(/\.(glb|gltf)$/, "");
         const dir = path.join(options.out, name);
@@ -301,13 +309,13 @@ async function main() {
     });
     for (const job of jobs) {
         const anisotropy = options.anisotropy === null ? [] : ["--anisotropy", options.anisotropy];
-        execFileSync(penumbra, ["render", "--scene", job.file, "--camera", cameraName(job.json), "--ambient", "0,0,0:0",
+        execFileSync(penumbra, ["render", "--scene", job.file, "--camera", cameraName(job.json), ...lighting,
                                 "--size", options.size, "--backend", "vulkan,opengl", ...anisotropy,
                                 "--out", path.join(job.dir, "penumbra.png")], { stdio: ["ignore", "ignore", "inherit"] });
     }
     const webgl = await renderWithSampleViewer(jobs.map((job) => ({
         model: job.file, out: path.join(job.dir, "viewer.png"), width: options.width, height: options.height,
-        camera: 0, clear: background })));
+        camera: 0, clear: background, environment })));
     const results = jobs.map((job) => {
         const pictures = ["viewer", "penumbra-vulkan", "penumbra-opengl"].map((p) => readPng(path.join(job.dir, `${p}.png`)));
         const [viewer, vulkan, opengl] = pictures;
@@ -328,12 +336,13 @@ async function main() {
     const report = { sampleViewer: "@khronosgroup/gltf-viewer " +
                          JSON.parse(fs.readFileSync(new URL("./node_modules/@khronosgroup/gltf-viewer/package.json",
                                                             import.meta.url))).version,
-                     webgl, size: options.size, shadows: options.shadows, ambient: "0,0,0:0",
+                     webgl, size: options.size, shadows: options.shadows,
+                     lighting: environment ? `image-based, ${path.basename(environment)} (environment.mjs)` : "ambient 0",
                      anisotropy: options.anisotropy ?? "penumbra render's default", results };
     fs.writeFileSync(path.join(options.out, "results.json"), JSON.stringify(report, null, 1) + "\n");
     fs.writeFileSync(path.join(options.out, "results.md"),
                      `Sample Viewer ${report.sampleViewer} (WebGL: ${webgl}) against penumbra render, ${options.size}, ` +
-                     `shadows ${options.shadows}, ambient 0, anisotropy ${report.anisotropy}. MAD: mean absolute difference per channel, 8-bit units; ` +
+                     `shadows ${options.shadows}, ${report.lighting}, anisotropy ${report.anisotropy}. MAD: mean absolute difference per channel, 8-bit units; ` +
                      `> 8/255, > 16/255: pixels whose largest channel difference is over that.\n\n` + table(results));
     for (const result of results) {
         const whole = result.whole.pairs;

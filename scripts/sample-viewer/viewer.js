@@ -1,9 +1,13 @@
-// Renders the glTF file named in the page's query (model=URL, width, height, camera=glTF camera index,
-// clear=r,g,b in 0-1) once with the Sample Viewer's engine and leaves the pixels in window.result:
-// { width, height, rgba (base64, rows bottom-up as gl.readPixels returns them) } or { error }.
+// window.renderJob(query) renders the glTF file named in the query string (model=URL, width, height, camera=glTF
+// camera index, clear=r,g,b in 0-1, environment=URL of a .hdr for image-based lighting, optional) once with the
+// Sample Viewer's engine and resolves to
+// { width, height, rgba (base64, rows bottom-up as gl.readPixels returns them), renderer } or { error }.
+// One page renders every job with one WebGL context, so that an environment is prefiltered once for all of them.
 // Set-up, read from the engine's source (dist/gltf-viewer.module.js, GltfState.renderingParameters):
-// - useIBL false: no image-based light (the USE_IBL define is not set, u_EnvIntensity is 0), an empty stand-in
-//   environment (noEnvironment below), renderEnvironmentMap false;
+// - without environment=: useIBL false: no image-based light (the USE_IBL define is not set, u_EnvIntensity is 0),
+//   an empty stand-in environment (noEnvironment below); with it: useIBL true, the .hdr loaded and prefiltered by
+//   the viewer's own loadEnvironment (GGX, Lambertian and Charlie cube maps), iblIntensity 1; renderEnvironmentMap
+//   false either way;
 // - usePunctual true, useDirectionalLightsWithDisabledIBL false: the file's KHR_lights_punctual lights only,
 //   no generated key and fill lights;
 // - toneMap NONE, exposure 1: the shader's toneMap() is then linearTosRGB(colour) = pow(colour, 1 / 2.2),
@@ -11,11 +15,6 @@
 // - antialias false: one sample per pixel like penumbra render's default --msaa 1.
 import { GltfState, GltfView } from "./node_modules/@khronosgroup/gltf-viewer/dist/gltf-viewer.module.js";
 
-const params = new URLSearchParams(location.search);
-const width = Number(params.get("width"));
-const height = Number(params.get("height"));
-const camera = Number(params.get("camera") ?? "0");
-const clear = (params.get("clear") ?? "0,0,0").split(",").map(Number);
 
 // The engine binds an environment's textures for every draw, IBL on or off (gltfRenderer.applyEnvironmentMap reads
 // state.environment unguarded). Loading a real one runs its GGX/Lambertian/Charlie filtering on the CPU
@@ -27,23 +26,39 @@ const noEnvironment = {
     lut: { index: 0 }, sheenLUT: { index: 0 }, sheenELUT: { index: 0 },
 };
 
-async function render() {
-    const canvas = document.getElementById("canvas");
-    canvas.width = width;
-    canvas.height = height;
-    const gl = canvas.getContext("webgl2", { antialias: false, alpha: false, preserveDrawingBuffer: true });
+// A 1 x 1 white PNG (written by pngjs).
+const sheenStandIn = "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAAC0lEQVR4AWP4DwQACfsD/c8LaHIAAAAASUVORK5CYII=";
+
+const canvas = document.getElementById("canvas");
+const gl = canvas.getContext("webgl2", { antialias: false, alpha: false, preserveDrawingBuffer: true });
+const view = gl ? new GltfView(gl) : null;
+const loader = view?.createResourceLoader(undefined, undefined, "./node_modules/@khronosgroup/gltf-viewer/dist/libs/");
+// Prefiltered environments by URL.
+const environments = new Map();
+
+async function render(params) {
     if (!gl)
         throw new Error("no WebGL2 context");
-    const view = new GltfView(gl);
+    const width = Number(params.get("width"));
+    const height = Number(params.get("height"));
+    const camera = Number(params.get("camera") ?? "0");
+    const clear = (params.get("clear") ?? "0,0,0").split(",").map(Number);
+    canvas.width = width;
+    canvas.height = height;
     const state = view.createState();
-    const loader = view.createResourceLoader(undefined, undefined, "./node_modules/@khronosgroup/gltf-viewer/dist/libs/");
     // By URL, so that a .gltf file's external buffers and images resolve beside it.
     state.gltf = await loader.loadGltf(params.get("model"));
-    state.environment = noEnvironment;
+    const environment = params.get("environment");
+    // The sheen albedo table is an image the viewer's web app ships, not its npm package; no compared material has
+    // sheen, so a 1 x 1 stand-in fills the slot.
+    if (environment && !environments.has(environment))
+        environments.set(environment, await loader.loadEnvironment(environment, { lut_sheen_E_file: sheenStandIn }));
+    state.environment = environment ? environments.get(environment) : noEnvironment;
     state.sceneIndex = state.gltf.scene ?? 0;
     state.cameraIndex = state.gltf.cameras.length > 0 ? camera : undefined;
     Object.assign(state.renderingParameters, {
-        useIBL: false,
+        useIBL: environment !== null,
+        iblIntensity: 1.0,
         usePunctual: true,
         useDirectionalLightsWithDisabledIBL: false,
         renderEnvironmentMap: false,
@@ -75,5 +90,5 @@ async function render() {
              renderer: info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER) };
 }
 
-render().then((result) => { window.result = result; },
-              (error) => { window.result = { error: String(error && error.stack || error) }; });
+window.renderJob = (query) =>
+    render(new URLSearchParams(query)).catch((error) => ({ error: String((error && error.stack) || error) }));

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <fmt/format.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 namespace penumbra::shadows {
@@ -15,8 +16,22 @@ CascadeSelection selectCascade(const DirectionalShadowUniforms& u, glm::vec3 pos
 {
     const auto count = static_cast<std::uint32_t>(u.cascadeCount);
     const bool close = u.cascadeProjection == CascadeProjection::Close;
+    const bool mapped = u.cascadeProjection == CascadeProjection::DepthFit;
     for (std::uint32_t i = 0; i < count; ++i) {
         const CascadeData& cascade = u.cascades[i];
+        if (mapped) {
+            // tileMargin in directional_shadows.glsl.
+            const std::size_t tile = static_cast<std::size_t>(u.lights[0].firstTile) + i;
+            const glm::vec2 texel = glm::vec2(u.worldToAtlas[tile] * glm::vec4(position, 1.0f)) * u.atlasSize;
+            const TileTexelBounds& bounds = u.tileBounds[tile];
+            const glm::vec2 inside = glm::min(texel - glm::vec2(bounds.first), glm::vec2(bounds.last) + 1.0f - texel);
+            const float margin = std::min(inside.x, inside.y) - 2.0f * cascade.normalBias / cascade.texelWorldSize;
+            const float halfTexels = 0.5f * float(bounds.last.x - bounds.first.x + 1);
+            if (margin > 0.0f)
+                return {i, fadedShadowStrength(halfTexels - margin, 1.0f / halfTexels, u.fade.inverseDepthCascadeFade),
+                        margin * cascade.texelWorldSize};
+            continue;
+        }
         if (close) {
             if (viewDepth < cascade.farDepth)
                 return {i, fadedShadowStrength(viewDepth, 1.0f / cascade.farDepth, u.fade.inverseDepthCascadeFade),

@@ -1,39 +1,20 @@
 #include "penumbra/shadows/CasterCulling.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 namespace penumbra::shadows {
 namespace {
 
-bool overlapsCascade(const Bounds& light, const DirectionalShadowCascade& c)
-{
-    const glm::vec2 centre = c.snappedCentre;
-    const float h = c.halfSize;
-    return light.max.x >= centre.x - h && light.min.x <= centre.x + h && light.max.y >= centre.y - h &&
-           light.min.y <= centre.y + h && light.min.z <= c.farDepth;
-}
-
-// The box's farthest point from the centre lies within the radius.
-bool insideSphere(const Bounds& box, glm::vec3 centre, float radius)
-{
-    const glm::vec3 farthest = glm::max(glm::abs(box.min - centre), glm::abs(box.max - centre));
-    return glm::dot(farthest, farthest) <= radius * radius;
-}
-
-// The culling loop of either fit: `heldByPrevious` says whether the previous cascade already holds a caster's shadow.
-template <typename HeldByPrevious>
-CasterCullingResult cullCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
-                                HeldByPrevious heldByPrevious)
+// The culling loop of either fit over the volume's two rules: the light box, then the culling bias.
+CasterCullingResult cullCasters(const CasterVolume& volume, const LightSpaceCasters& casters)
 {
     CasterCullingResult result;
     for (std::uint32_t i = 0; i < casters.light.size(); ++i) {
-        if (!overlapsCascade(casters.light[i], cascade))
+        if (!overlapsCascade(casters.light[i], volume))
             continue;
         ++result.overlapping;
-        if (heldByPrevious(casters.world[i])) {
+        if (heldByPrevious(casters.world[i], volume)) {
             ++result.culledByBias;
             continue;
         }
@@ -49,10 +30,7 @@ float cascadeBlendCullingFactor(float cascadeFade) { return std::max(0.0f, 0.8f 
 CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                       const std::optional<Sphere>& previousCullingSphere, float cullingFactor)
 {
-    return cullCasters(cascade, casters, [&](const Bounds& caster) {
-        return previousCullingSphere &&
-               insideSphere(caster, previousCullingSphere->centre, previousCullingSphere->radius * cullingFactor);
-    });
+    return cullCasters(cascadeVolume(cascade, previousCullingSphere, cullingFactor), casters);
 }
 
 bool castersInReach(const LightSpaceCasters& casters, std::span<const Sphere> cullingSpheres)
@@ -73,27 +51,13 @@ bool castersInReach(const LightSpaceCasters& casters, std::span<const Sphere> cu
 
 bool insideFrustumSlice(const Bounds& box, const FrustumSlice& slice, float depthFactor)
 {
-    const ShadowCamera& camera = slice.camera;
-    const glm::vec3 right = glm::cross(camera.forward, camera.up);
-    const float tanY = std::tan(0.5f * camera.fovY);
-    const float tanX = tanY * camera.aspect;
-    const float farDistance = slice.nearDistance + (slice.farDistance - slice.nearDistance) * depthFactor;
-    for (const glm::vec3& corner : box.corners()) {
-        const glm::vec3 offset = corner - camera.position;
-        const float depth = glm::dot(offset, camera.forward);
-        if (depth < slice.nearDistance || depth > farDistance || std::abs(glm::dot(offset, right)) > depth * tanX ||
-            std::abs(glm::dot(offset, camera.up)) > depth * tanY)
-            return false;
-    }
-    return true;
+    return heldByPrevious(box, closeCascadeVolume(DirectionalShadowCascade{}, slice, depthFactor));
 }
 
 CasterCullingResult cullCloseFitShadowCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                               const std::optional<FrustumSlice>& previousSlice, float cullingFactor)
 {
-    return cullCasters(cascade, casters, [&](const Bounds& caster) {
-        return previousSlice && insideFrustumSlice(caster, *previousSlice, cullingFactor);
-    });
+    return cullCasters(closeCascadeVolume(cascade, previousSlice, cullingFactor), casters);
 }
 
 } // namespace penumbra::shadows

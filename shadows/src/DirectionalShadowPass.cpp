@@ -28,17 +28,19 @@ std::vector<ShadowTileDraw> DirectionalShadowPass::tileDraws(const DirectionalSh
                              cascade.viewport,
                              {.viewProjection = cascade.fit.viewProjection,
                               .slopeScaleBias = light.slopeScaleBias,
+                              .depthBias = light.depthBias,
                               .pancake = true,
                               .ditherOrigin = ditherOrigin(cascade.fit, plan.atlas, cascade.tile),
                               .normalOffset = casterNormalOffset(plan, light, c)},
-                             cascade.casters.casters});
+                             cascade.casters.casters,
+                             cascade.volume});
         }
     return tiles;
 }
 
 std::uint32_t DirectionalShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas,
                                             const DirectionalShadowPlan& plan, std::span<const ShadowCaster> casters,
-                                            bool clear)
+                                            bool clear, const std::optional<CulledTiles>& culled)
 {
     if (!plan.lights.empty() && atlas.size() != plan.atlas.atlasSize())
         throw rhi::Error(fmt::format("shadow atlas is {} texels wide, the plan was made for {}", atlas.size(),
@@ -46,10 +48,14 @@ std::uint32_t DirectionalShadowPass::record(rhi::CommandList& commands, const Sh
     draws_.reset();
     std::uint32_t draws = 0;
     commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = clear});
-    for (const ShadowTileDraw& tile : tileDraws(plan)) {
+    const std::vector<ShadowTileDraw> tiles = tileDraws(plan);
+    for (std::uint32_t i = 0; i < tiles.size(); ++i) {
+        const ShadowTileDraw& tile = tiles[i];
         commands.setViewport(tile.viewport);
         commands.setScissor(scissorOf(tile.viewport));
-        draws += draws_.draw(commands, atlas.format(), tile.view, tile.casters, casters);
+        draws += culled ? draws_.drawCulled(commands, atlas.format(), tile.view, culled->culling, culled->firstTile + i,
+                                            casters)
+                        : draws_.draw(commands, atlas.format(), tile.view, tile.casters, casters);
     }
     commands.endPass();
     return draws;

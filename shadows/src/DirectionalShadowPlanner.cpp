@@ -69,13 +69,13 @@ void fillUniforms(DirectionalShadowPlan& plan, const ShadowSettings& settings)
     }
 }
 
-// The frustum slice each cascade is fitted to. Close fit with a soft or dithered blend: a slice starts where the
-// previous cascade's fade band does, so that the blended receivers lie in both tiles.
+// The frustum slice each cascade is fitted to. Close and depth fit with a soft or dithered blend: a slice starts where
+// the previous cascade's fade band does, so that the blended receivers lie in both tiles.
 std::vector<FrustumSlice> cascadeSlices(const ShadowCamera& camera, const CascadeSplits& splits,
                                         const DirectionalShadowSettings& directional)
 {
     const bool overlap =
-        directional.projection == CascadeProjection::Close && directional.cascadeBlend != CascadeBlend::Hard;
+        directional.projection != CascadeProjection::Stable && directional.cascadeBlend != CascadeBlend::Hard;
     std::vector<FrustumSlice> slices;
     for (std::uint32_t c = 0; c < splits.count; ++c) {
         const float nearDistance = overlap && c > 0
@@ -86,11 +86,60 @@ std::vector<FrustumSlice> cascadeSlices(const ShadowCamera& camera, const Cascad
     return slices;
 }
 
-// Close fit: one tile half size per cascade, the largest any light's slice bounds need, so that every light's tile
-// of a cascade has the texel size its CascadeData carries. The margin is the widest light's reach past its slice:
-// its filter's normal bias factor in texels for the taps, sqrt 2 times that times its normal bias for the offset.
-std::vector<float> closeFitHalfSizes(const std::vector<FrustumSlice>& slices,
-                                     std::span<const ShadowedDirectionalLight> lights, std::uint32_t tileSize)
+// Close and depth fit: the light-space bounds each light's tile of each cascade is fitted around, [slot][cascade];
+// `mapped` (depth fit's map-based selection) gives every tile the whole view's depth range.
+// Close fit: the slice's. Depth fit over a histogram that measured the light: x and y of the footprint of the samples
+// in the cascade's bins (from the bin of the slice's near distance, which a blend's overlap moves nearer), z the
+// slice's; the slice's where the bins hold none of the light's samples.
+std::vector<std::vector<Bounds>> fittedBounds(const std::vector<FrustumSlice>& slices,
+                                              std::span<const ShadowedDirectionalLight> lights,
+                                              const DepthHistogram* histogram, std::span<const std::uint32_t> edges,
+                                              bool mapped)
+{
+    std::vector<std::vector<Bounds>> bounds(lights.size());
+    for (std::size_t slot = 0; slot < lights.size(); ++slot) {
+        const LightBasis basis = lightBasis(lights[slot].direction);
+        std::optional<std::uint32_t> measured;
+        if (histogram)
+            for (std::uint32_t s = 0; s < histogram->lightDirections.size(); ++s)
+                if (histogram->lightDirections[s] == lights[slot].direction)
+                    measured = s;
+        // Map-based selection (CascadeSelection.hpp) gives a tile every receiver its square holds, at any view depth:
+        // its depth planes hold the whole view's.
+        const Bounds view =
+            lightSpaceBounds(basis, frustumSliceCorners(slices.front().camera, slices.front().nearDistance,
+                                                        slices.back().farDistance));
+        for (std::size_t c = 0; c < slices.size(); ++c) {
+            const FrustumSlice& slice = slices[c];
+            Bounds b =
+                lightSpaceBounds(basis, frustumSliceCorners(slice.camera, slice.nearDistance, slice.farDistance));
+            if (mapped) {
+                b.min.z = view.min.z;
+                b.max.z = view.max.z;
+            }
+            if (measured && c + 1 < edges.size()) {
+                const std::uint32_t first =
+                    std::min(edges[c], depthHistogramBin(histogram->firstOctave, slice.nearDistance));
+                if (const std::optional<Bounds> footprint =
+                        depthHistogramFootprint(*histogram, *measured, first, edges[c + 1])) {
+                    b.min = glm::vec3(glm::vec2(footprint->min), b.min.z);
+                    b.max = glm::vec3(glm::vec2(footprint->max), b.max.z);
+                }
+            }
+            bounds[slot].push_back(b);
+        }
+    }
+    return bounds;
+}
+
+// One tile half size per cascade, the largest any light's bounds need, so that every light's tile of a cascade has
+// the texel size its CascadeData carries; depth fit puts it on its grid, against the kept one. The margin is the
+// widest light's reach past its bounds: its filter's normal bias factor in texels for the taps, sqrt 2 times that
+// times its normal bias for the offset.
+std::vector<float> fittedHalfSizes(const std::vector<std::vector<Bounds>>& bounds,
+                                   std::span<const ShadowedDirectionalLight> lights, std::uint32_t tileSize,
+                                   std::size_t cascadeCount, const DirectionalShadowSettings& directional,
+                                   const DepthFitKept* kept)
 {
     float margin = 0.0f;
     for (const ShadowedDirectionalLight& light : lights) {
@@ -98,13 +147,16 @@ std::vector<float> closeFitHalfSizes(const std::vector<FrustumSlice>& slices,
         margin = std::max(margin, normalBiasFilterFactor(light.filter) * (1.0f + std::sqrt(2.0f) * receiverBias));
     }
     std::vector<float> halfSizes;
-    for (const FrustumSlice& slice : slices) {
-        const std::array<glm::vec3, 8> corners =
-            frustumSliceCorners(slice.camera, slice.nearDistance, slice.farDistance);
+    for (std::size_t c = 0; c < cascadeCount; ++c) {
         float half = 0.0f;
-        for (const ShadowedDirectionalLight& light : lights)
-            half = std::max(half,
-                            closeFitHalfSize(lightSpaceBounds(lightBasis(light.direction), corners), tileSize, margin));
+        for (const std::vector<Bounds>& lightBounds : bounds)
+            half = std::max(half, closeFitHalfSize(lightBounds[c], tileSize, margin));
+        if (directional.projection == CascadeProjection::DepthFit)
+            half = depthFitHalfSize(half,
+                                    kept && kept->halfSizes.size() == cascadeCount
+                                        ? std::optional<float>(kept->halfSizes[c])
+                                        : std::nullopt,
+                                    directional.depthFitSteps, directional.depthFitHysteresis);
         halfSizes.push_back(half);
     }
     return halfSizes;
@@ -123,18 +175,27 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
-                                             std::span<const Bounds> casterBounds,
-                                             std::optional<ViewDepthRange> visibleDepths)
+                                             std::span<const Bounds> casterBounds, DepthFitInput depthFit)
 {
     validate(settings);
     const DirectionalShadowSettings& directional = settings.directional;
     DirectionalShadowPlan plan;
-    // Depth fit is the stable fit (spheres snapped to texels) over the visible depths' splits.
-    plan.splits = directional.projection == CascadeProjection::DepthFit && visibleDepths
-                      ? depthFitSplits(*visibleDepths, camera.nearPlane, camera.farPlane, settings.maxDistance,
-                                       directional.cascadeCount, directional.cascadeRatios, directional.depthFitSteps)
-                      : cascadeSplits(camera.nearPlane, camera.farPlane, settings.maxDistance, directional.cascadeCount,
-                                      directional.cascadeRatios);
+    // Depth fit: the close fit over the histogram's partition, each tile around its samples' footprint.
+    std::vector<std::uint32_t> edges;
+    if (directional.projection == CascadeProjection::DepthFit && depthFit.histogram) {
+        const float tolerance = directional.depthFitSteps > 0
+                                    ? directional.depthFitHysteresis / static_cast<float>(directional.depthFitSteps)
+                                    : 0.0f;
+        edges = depthFitPartition(*depthFit.histogram, directional.cascadeCount,
+                                  static_cast<std::uint32_t>(depthFit.histogram->lightDirections.size()),
+                                  depthFit.kept ? std::span<const std::uint32_t>(depthFit.kept->edges)
+                                                : std::span<const std::uint32_t>(),
+                                  tolerance);
+    }
+    plan.splits = !edges.empty() ? depthFitSplits(*depthFit.histogram, edges, camera.nearPlane, camera.farPlane,
+                                                  settings.maxDistance)
+                                 : cascadeSplits(camera.nearPlane, camera.farPlane, settings.maxDistance,
+                                                 directional.cascadeCount, directional.cascadeRatios);
     plan.shadowSlots.assign(lights.size(), -1);
     const bool distanceReachesPastNear = plan.splits.farOf(plan.splits.count - 1) > camera.nearPlane;
     if (!distanceReachesPastNear)
@@ -168,7 +229,8 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     }
 
     const std::uint32_t cascadeCount = directional.cascadeCount;
-    const bool close = directional.projection == CascadeProjection::Close;
+    // Depth fit fits its tiles as the close fit does, around bounds in light space.
+    const bool close = directional.projection != CascadeProjection::Stable;
     plan.atlas = ShadowAtlasLayout(directional.atlasSize, static_cast<std::uint32_t>(selected.size()) * cascadeCount);
     if (!selected.empty())
         plan.cullingSpheres = cullingSpheres;
@@ -178,6 +240,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
                                input.strength,
                                input.normalBias,
                                input.slopeScaleBias,
+                               directional.depthBias,
                                input.nearPlaneOffset,
                                input.filter.value_or(directional.filter),
                                input.angularDiameter,
@@ -186,35 +249,41 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
                                input.normalBiasSide,
                                input.direction});
     }
+    const std::vector<std::vector<Bounds>> bounds =
+        close ? fittedBounds(slices, plan.lights, edges.empty() ? nullptr : depthFit.histogram, edges,
+                             directional.projection == CascadeProjection::DepthFit)
+              : std::vector<std::vector<Bounds>>();
     const std::vector<float> halfSizes =
-        close ? closeFitHalfSizes(slices, plan.lights, plan.atlas.tileSize()) : std::vector<float>();
+        close ? fittedHalfSizes(bounds, plan.lights, plan.atlas.tileSize(), cascadeCount, directional, depthFit.kept)
+              : std::vector<float>();
+    if (!edges.empty())
+        plan.depthFit = DepthFitKept{edges, halfSizes};
     const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
+    const bool gpuCulling = culledOnGpu(settings);
     for (std::uint32_t slot = 0; slot < plan.lights.size(); ++slot) {
         ShadowedDirectionalLight& light = plan.lights[slot];
         const LightSpaceCasters& casters = selectedCasters[slot];
         for (std::uint32_t c = 0; c < cascadeCount; ++c) {
             DirectionalCascadePlan cascade;
-            const FrustumSlice& slice = slices[c];
-            cascade.fit =
-                close ? fitCloseCascade(lightSpaceBounds(casters.basis, frustumSliceCorners(camera, slice.nearDistance,
-                                                                                            slice.farDistance)),
-                                        halfSizes[c], plan.cullingSpheres[c], casters, plan.atlas.tileSize(),
-                                        light.nearPlaneOffset, conventions)
-                      : fitDirectionalCascade(plan.cullingSpheres[c], casters, plan.atlas.tileSize(),
-                                              light.nearPlaneOffset, conventions);
+            cascade.fit = close ? fitCloseCascade(bounds[slot][c], halfSizes[c], plan.cullingSpheres[c], casters,
+                                                  plan.atlas.tileSize(), light.nearPlaneOffset, conventions)
+                                : fitDirectionalCascade(plan.cullingSpheres[c], casters, plan.atlas.tileSize(),
+                                                        light.nearPlaneOffset, conventions);
             cascade.tile = directionalTileIndex(slot, c, cascadeCount);
             cascade.worldToAtlas = worldToAtlas(cascade.fit.viewProjection, cascade.tile, plan.atlas, conventions);
             cascade.viewport = plan.atlas.viewport(cascade.tile);
-            if (close)
-                cascade.casters =
-                    cullCloseFitShadowCasters(cascade.fit, casters,
-                                              c > 0 ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt,
-                                              cullingFactor);
-            else
-                cascade.casters =
-                    cullShadowCasters(cascade.fit, casters,
-                                      c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt,
-                                      cullingFactor);
+            // Depth fit's tiles are chosen by what they hold, not by view depth: no caster is left to the one before.
+            const bool banded = directional.projection == CascadeProjection::Close && c > 0;
+            const std::optional<Sphere> previousSphere =
+                c > 0 ? std::optional<Sphere>(plan.cullingSpheres[c - 1]) : std::nullopt;
+            const std::optional<FrustumSlice> previousSlice =
+                banded ? std::optional<FrustumSlice>(slices[c - 1]) : std::nullopt;
+            cascade.volume = close ? closeCascadeVolume(cascade.fit, previousSlice, cullingFactor)
+                                   : cascadeVolume(cascade.fit, previousSphere, cullingFactor);
+            // Culled on the GPU, the tile lists none here: the culling pass tests every caster against the volume.
+            if (!gpuCulling)
+                cascade.casters = close ? cullCloseFitShadowCasters(cascade.fit, casters, previousSlice, cullingFactor)
+                                        : cullShadowCasters(cascade.fit, casters, previousSphere, cullingFactor);
             plan.uniforms.tileSoft[cascade.tile] =
                 directionalTileSoft(cascade.fit, cascade.worldToAtlas, casters, conventions);
             light.cascades.push_back(std::move(cascade));
@@ -222,10 +291,15 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     }
     // The texel size depends on the slice and the tile size only (close fit: the planner gives every light's tile of
     // a cascade the same half size), so any light's serves.
+    // Depth fit's last band reaches the shadow distance, where the close fit's does: its far split is only the
+    // farthest surface seen, and the band's fade must not fall on what is seen.
+    const float shadowFar = std::max(std::min(settings.maxDistance, camera.farPlane), camera.nearPlane);
     if (!plan.lights.empty())
         for (std::uint32_t c = 0; c < cascadeCount; ++c)
-            plan.cascadeData.push_back(cascadeData(plan.cullingSpheres[c], plan.lights[0].cascades[c].fit.texelSize,
-                                                   directional.filter, plan.splits.farOf(c)));
+            plan.cascadeData.push_back(
+                cascadeData(plan.cullingSpheres[c], plan.lights[0].cascades[c].fit.texelSize, directional.filter,
+                            !edges.empty() && c + 1 == cascadeCount ? std::max(shadowFar, plan.splits.farOf(c))
+                                                                    : plan.splits.farOf(c)));
     fillUniforms(plan, settings);
     fillSoftUniforms(plan, settings);
     return plan;

@@ -18,12 +18,20 @@ struct UnitFieldOfView {
     float bias;
 };
 
-// At the cube's 90 degrees the tile spans 2 world units at distance 1.
-UnitFieldOfView pointFaceUnits(std::uint32_t tileSize, ShadowFilter filter, float normalBias)
+// A tile whose frustum reaches tanHalf to each side at distance 1 (1 for the cube's 90 degrees) spans 2 tanHalf world
+// units there.
+UnitFieldOfView unitFieldOfView(float tanHalf, std::uint32_t tileSize, ShadowFilter filter, float normalBias)
 {
-    const float texel = 2.0f / static_cast<float>(tileSize);
+    const float texel = 2.0f * tanHalf / static_cast<float>(tileSize);
     const float filterSize = texel * normalBiasFilterFactor(filter);
     return {filterSize, normalBias * filterSize * kSqrt2};
+}
+
+// Catlike Coding, "Point and Spot Shadows", section 2.5: the normal bias and the filter size added on each side.
+float widenedFieldOfView(float tanHalf, std::uint32_t tileSize, ShadowFilter filter, float normalBias)
+{
+    const UnitFieldOfView u = unitFieldOfView(tanHalf, tileSize, filter, normalBias);
+    return 2.0f * std::atan(tanHalf + u.bias + u.filterSize);
 }
 
 } // namespace
@@ -84,8 +92,14 @@ float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, 
 
 float pointFaceFieldOfView(std::uint32_t tileSize, ShadowFilter filter, float normalBias)
 {
-    const UnitFieldOfView u = pointFaceUnits(tileSize, filter, normalBias);
-    return 2.0f * std::atan(1.0f + u.bias + u.filterSize);
+    return widenedFieldOfView(1.0f, tileSize, filter, normalBias);
+}
+
+float spotFieldOfView(float outerAngle, std::uint32_t tileSize, ShadowFilter filter, float normalBias, Toggle fovBias)
+{
+    if (fovBias == Toggle::Off)
+        return 2.0f * outerAngle;
+    return widenedFieldOfView(std::tan(outerAngle), tileSize, filter, normalBias);
 }
 
 float pointFaceFovBiasDegrees(std::uint32_t tileSize, ShadowFilter filter, float normalBias)

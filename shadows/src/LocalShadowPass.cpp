@@ -29,15 +29,17 @@ std::vector<ShadowTileDraw> LocalShadowPass::tileDraws(const LocalShadowPlan& pl
                          tile.viewport,
                          {.viewProjection = tile.view.viewProjection,
                           .slopeScaleBias = tile.view.slopeScaleBias,
+                          .depthBias = tile.view.depthBias,
                           .ditherOrigin = -glm::vec2(tile.viewport.x, tile.viewport.y),
                           .normalOffset = tile.view.normalOffset},
-                         tile.view.casters});
+                         tile.view.casters,
+                         tile.view.volume});
     return tiles;
 }
 
 std::uint32_t LocalShadowPass::record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
                                       const LocalShadowPlan& plan, std::span<const ShadowCaster> casters,
-                                      bool clearAtlas)
+                                      bool clearAtlas, const std::optional<CulledTiles>& culled)
 {
     checkCubeCount(cubes, plan);
     if (!plan.tiles.empty() && atlas.size() != plan.atlasSize)
@@ -46,10 +48,14 @@ std::uint32_t LocalShadowPass::record(rhi::CommandList& commands, const ShadowAt
     draws_.reset();
     std::uint32_t draws = 0;
     commands.beginPass({.framebuffer = &atlas.framebuffer(), .clearColor = std::nullopt, .clearDepth = clearAtlas});
-    for (const ShadowTileDraw& tile : tileDraws(plan)) {
+    const std::vector<ShadowTileDraw> tiles = tileDraws(plan);
+    for (std::uint32_t i = 0; i < tiles.size(); ++i) {
+        const ShadowTileDraw& tile = tiles[i];
         commands.setViewport(tile.viewport);
         commands.setScissor(scissorOf(tile.viewport));
-        draws += draws_.draw(commands, atlas.format(), tile.view, tile.casters, casters);
+        draws += culled ? draws_.drawCulled(commands, atlas.format(), tile.view, culled->culling, culled->firstTile + i,
+                                            casters)
+                        : draws_.draw(commands, atlas.format(), tile.view, tile.casters, casters);
     }
     commands.endPass();
     return draws + drawCubes(commands, cubes, plan, casters);
@@ -79,6 +85,7 @@ std::uint32_t LocalShadowPass::drawCubes(rhi::CommandList& commands, const Shado
             commands.setScissor(scissorOf(viewport));
             const ShadowViewDraw view{.viewProjection = faceView.viewProjection,
                                       .slopeScaleBias = faceView.slopeScaleBias,
+                                      .depthBias = faceView.depthBias,
                                       .mirrored = true,
                                       .normalOffset = faceView.normalOffset};
             draws += draws_.draw(commands, cubes.format(), view, faceView.casters, casters);

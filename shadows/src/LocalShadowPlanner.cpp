@@ -89,15 +89,23 @@ std::vector<ShadowTileRequest> tileRequests(std::vector<Candidate>& candidates, 
     return requests;
 }
 
-LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, float range, float slopeScaleBias,
+// The rasteriser's biases of a view: the light's slope-scaled one and the settings' constant one.
+struct RasterBias {
+    float slopeScale;
+    float constant;
+};
+
+LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, float range, RasterBias bias,
                            const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, range);
     return {projection,
             projection * view,
-            slopeScaleBias,
+            bias.slopeScale,
+            bias.constant,
             cullCastersInFrustum(view, fov, nearPlane, range, casterBounds),
-            {}};
+            {},
+            frustumVolume(view, fov, nearPlane, range)};
 }
 
 // The normal offset's reach per unit of distance, `scale`, goes to the lit pass's lookups on the receiver side and
@@ -148,13 +156,13 @@ void addTile(LocalShadowPlan& plan, TilePlace place, LocalShadowView view, float
 void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot,
               const PackedLight& packed, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
 {
-    const float fov = 2.0f * spot.outerAngle;
+    const ShadowFilter filter = spot.filter.value_or(local.filter);
+    const float fov = spotFieldOfView(spot.outerAngle, packed.size, filter, spot.normalBias, local.spotFovBias);
     const float nearPlane = localShadowNearPlane(spot.range, spot.nearPlane, local);
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
-    const ShadowFilter filter = spot.filter.value_or(local.filter);
     const float bias = localNormalBiasScale(projection, packed.size, filter, spot.normalBias);
     LocalShadowView view = shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range,
-                                      spot.slopeScaleBias, conventions, casterBounds);
+                                      {spot.slopeScaleBias, local.depthBias}, conventions, casterBounds);
     const float receiverBias = sideOfNormalBias(view, spot.normalBiasSide, bias, spot.position);
     addTile(plan, {packed.offsets.front(), packed.size}, std::move(view), receiverBias,
             softProjection(filter, projection, packed.size, spot.sourceRadius, nearPlane, conventions), conventions);
@@ -172,8 +180,9 @@ void planPointTiles(LocalShadowPlan& plan, const LocalShadowSettings& local, con
     const SoftProjection soft =
         softProjection(filter, projection, packed.size, point.sourceRadius, nearPlane, conventions);
     for (std::uint32_t face = 0; face < cubeFaceCount; ++face) {
-        LocalShadowView view = shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane,
-                                          point.range, point.slopeScaleBias, conventions, casterBounds);
+        LocalShadowView view =
+            shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane, point.range,
+                       {point.slopeScaleBias, local.depthBias}, conventions, casterBounds);
         const float receiverBias = sideOfNormalBias(view, point.normalBiasSide, bias, point.position);
         addTile(plan, {packed.offsets[face], packed.size}, std::move(view), receiverBias, soft, conventions);
     }
@@ -203,8 +212,10 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
         faceView = {projection,
                     projection * view,
                     point.slopeScaleBias,
+                    local.depthBias,
                     cullCastersInFrustum(view, kRightAngle, nearPlane, point.range, casterBounds),
-                    {}};
+                    {},
+                    frustumVolume(view, kRightAngle, nearPlane, point.range)};
         receiverBias = sideOfNormalBias(faceView, point.normalBiasSide, bias, point.position);
     }
     shadowCube.depthRow = {toTexture[2][2], toTexture[3][2]};
@@ -218,24 +229,11 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
 std::vector<std::uint32_t> cullCastersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
                                                 std::span<const Bounds> casterBounds)
 {
-    const float t = std::tan(0.5f * fov);
+    const CasterVolume volume = frustumVolume(view, fov, nearPlane, farPlane);
     std::vector<std::uint32_t> inside;
-    for (std::uint32_t i = 0; i < casterBounds.size(); ++i) {
-        // Culled when all 8 corners lie outside one of the six planes (view space, looking down -z).
-        std::array<int, 6> outside{};
-        for (const glm::vec3& corner : casterBounds[i].corners()) {
-            const glm::vec3 p = glm::vec3(view * glm::vec4(corner, 1.0f));
-            const float depth = -p.z;
-            outside[0] += depth < nearPlane;
-            outside[1] += depth > farPlane;
-            outside[2] += p.x > depth * t;
-            outside[3] += -p.x > depth * t;
-            outside[4] += p.y > depth * t;
-            outside[5] += -p.y > depth * t;
-        }
-        if (std::none_of(outside.begin(), outside.end(), [](int n) { return n == 8; }))
+    for (std::uint32_t i = 0; i < casterBounds.size(); ++i)
+        if (meetsFrustum(casterBounds[i], volume))
             inside.push_back(i);
-    }
     return inside;
 }
 
@@ -301,6 +299,8 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
         previous.packer == packing ? ShadowAtlasPacker(packing, previous.pack.lights) : ShadowAtlasPacker(packing);
     plan.allocation = {packing, packer.pack(requests)};
     const ShadowAtlasPack& pack = plan.allocation.pack;
+    // Atlas tiles culled on the GPU list no casters here (their views keep the volume); cube faces are culled here.
+    const std::span<const Bounds> tileCasters = culledOnGpu(settings) ? std::span<const Bounds>() : casterBounds;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Candidate& candidate = candidates[c];
         const PackedLight& packed = pack.lights[c];
@@ -315,10 +315,10 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
         const int first = static_cast<int>(plan.tiles.size());
         if (candidate.kind == LightKind::Spot) {
             plan.spotTiles[candidate.lightIndex] = first;
-            planSpot(plan, local, spots[candidate.lightIndex], packed, conventions, casterBounds);
+            planSpot(plan, local, spots[candidate.lightIndex], packed, conventions, tileCasters);
         } else {
             plan.pointShadows[candidate.lightIndex] = first;
-            planPointTiles(plan, local, points[candidate.lightIndex], packed, conventions, casterBounds);
+            planPointTiles(plan, local, points[candidate.lightIndex], packed, conventions, tileCasters);
         }
     }
 

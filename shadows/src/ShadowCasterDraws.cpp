@@ -116,13 +116,34 @@ const ShadowCasterDraws::Pipelines& ShadowCasterDraws::pipelines(rhi::Format dep
     return pipelines_.emplace(key, std::move(created)).first->second;
 }
 
+void ShadowCasterDraws::bindBatch(rhi::CommandList& commands, const Pipelines& pipelines, const ShadowViewDraw& view,
+                                  const ShadowCaster& caster, std::uint32_t index, const rhi::Pipeline*& bound)
+{
+    const bool pancakeInShader = view.pancake && !device_.capabilities().depthClamp;
+    const auto& variants = caster.mode == ShadowCasterMode::Opaque ? pipelines.opaque : pipelines.alphaTested;
+    const rhi::Pipeline* pipeline = variants[caster.doubleSided].get();
+    if (pipeline != bound) {
+        commands.bindPipeline(*pipeline);
+        commands.setDepthBias({view.depthBias, view.slopeScaleBias, 0.0f});
+        bound = pipeline;
+    }
+    rhi::bindUniform(commands, kCasterDrawBinding, uniforms_.push(casterUniforms(view, caster, pancakeInShader)));
+    if (caster.mode != ShadowCasterMode::Opaque) {
+        if (!caster.baseColorMap || !caster.baseColorSampler)
+            throw rhi::Error(fmt::format("shadow caster {}: clip and dither casters need a base colour texture "
+                                         "and sampler",
+                                         index));
+        commands.bindTexture(kCasterBaseColorBinding, *caster.baseColorMap, *caster.baseColorSampler);
+    }
+    commands.bindVertexBuffer(0, *caster.vertices);
+    commands.bindIndexBuffer(*caster.indices, rhi::IndexType::UInt32);
+}
+
 std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format depthFormat, const ShadowViewDraw& view,
                                       std::span<const std::uint32_t> indices, std::span<const ShadowCaster> casters)
 {
-    const bool depthClamp = view.pancake && device_.capabilities().depthClamp;
-    const bool pancakeInShader = view.pancake && !depthClamp;
-    const Pipelines& pipelines = this->pipelines(depthFormat, depthClamp, view.mirrored);
-    const rhi::DepthBias bias{0.0f, view.slopeScaleBias, 0.0f};
+    const Pipelines& pipelines =
+        this->pipelines(depthFormat, view.pancake && device_.capabilities().depthClamp, view.mirrored);
     for (const std::uint32_t index : indices)
         if (index >= casters.size())
             throw rhi::Error(
@@ -141,27 +162,30 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
                     fmt::format("shadow casters {} and {} share draw group {}, but draw differently (mesh, "
                                 "material or sides)",
                                 index, other, caster.drawGroup));
-        const auto& variants = caster.mode == ShadowCasterMode::Opaque ? pipelines.opaque : pipelines.alphaTested;
-        const rhi::Pipeline* pipeline = variants[caster.doubleSided].get();
-        if (pipeline != bound) {
-            commands.bindPipeline(*pipeline);
-            commands.setDepthBias(bias);
-            bound = pipeline;
-        }
-        rhi::bindUniform(commands, kCasterDrawBinding, uniforms_.push(casterUniforms(view, caster, pancakeInShader)));
-        if (caster.mode != ShadowCasterMode::Opaque) {
-            if (!caster.baseColorMap || !caster.baseColorSampler)
-                throw rhi::Error(fmt::format("shadow caster {}: clip and dither casters need a base colour texture "
-                                             "and sampler",
-                                             index));
-            commands.bindTexture(kCasterBaseColorBinding, *caster.baseColorMap, *caster.baseColorSampler);
-        }
+        bindBatch(commands, pipelines, view, caster, index, bound);
         const std::vector<InstanceTransform> instances = batchInstances(batch, casters, view.normalOffset.reach > 0.0f);
         const rhi::BufferSlice instanceSlice = instances_.push(std::as_bytes(std::span(instances)));
-        commands.bindVertexBuffer(0, *caster.vertices);
         commands.bindVertexBuffer(kInstanceSlot, *instanceSlice.buffer, instanceSlice.offset);
-        commands.bindIndexBuffer(*caster.indices, rhi::IndexType::UInt32);
         commands.drawIndexed(caster.indexCount, batchRange.count);
+    }
+    return static_cast<std::uint32_t>(batches.batches.size());
+}
+
+std::uint32_t ShadowCasterDraws::drawCulled(rhi::CommandList& commands, rhi::Format depthFormat,
+                                            const ShadowViewDraw& view, const GpuCasterCulling& culling,
+                                            std::uint32_t tile, std::span<const ShadowCaster> casters)
+{
+    const Pipelines& pipelines =
+        this->pipelines(depthFormat, view.pancake && device_.capabilities().depthClamp, view.mirrored);
+    const InstanceBatches& batches = culling.batches();
+    const rhi::Pipeline* bound = nullptr;
+    for (std::uint32_t b = 0; b < batches.batches.size(); ++b) {
+        const std::uint32_t index = batches.items[batches.batches[b].first];
+        bindBatch(commands, pipelines, view, casters[index], index, bound);
+        // The draw's firstInstance places its instances in the tile's range; a batch without any draws nothing.
+        commands.bindVertexBuffer(kInstanceSlot, culling.instances());
+        commands.drawIndexedIndirectCount(culling.draws(), culling.drawOffset(tile, b), culling.drawCounts(),
+                                          culling.countOffset(tile, b), 1);
     }
     return static_cast<std::uint32_t>(batches.batches.size());
 }

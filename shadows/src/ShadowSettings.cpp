@@ -49,6 +49,8 @@ constexpr SettingRange kAtlasSizes{SettingRangeKind::PowersOfTwo, 256, 8192};
 constexpr SettingRange kFraction{SettingRangeKind::Closed, 0.001, 1};
 constexpr SettingRange kScale{SettingRangeKind::Closed, 0.1, 10};
 constexpr SettingRange kPenumbraTexels{SettingRangeKind::Closed, 0, 64};
+// Depth steps of a constant depth bias: up to the 500 000 of Catlike Coding's "Directional Shadows" (section 4.1).
+constexpr SettingRange kDepthBias{SettingRangeKind::Closed, 0, 1000000};
 
 // A numeric range as messages, help and docs state it: "0.001..1", "powers of two 256..8192", "> 0.001".
 std::string rangeText(const SettingRange& range)
@@ -155,6 +157,8 @@ std::vector<SettingName> projectionSettingNames()
     return names;
 }
 
+std::vector<SettingName> toggleNames() { return {nameOf(Toggle::Off, "off"), nameOf(Toggle::On, "on")}; }
+
 std::vector<SettingName> depthFormats()
 {
     return {nameOf(rhi::Format::D16, "d16"), nameOf(rhi::Format::D24S8, "d24s8"), nameOf(rhi::Format::D32F, "d32f")};
@@ -173,6 +177,11 @@ std::vector<ShadowSettingsField> makeFields()
         numeric(
             "distanceFade", kFraction, "fraction of maxDistance over which shadows fade out",
             [](auto& s) -> auto& { return s.distanceFade; }),
+        named(
+            "culling", {nameOf(CasterCullingMode::Cpu, "cpu"), nameOf(CasterCullingMode::Gpu, "gpu")},
+            "where the realtime atlases' casters are culled per tile: cpu (the planner) or gpu (a compute pass, "
+            "indirect draws)",
+            [](auto& s) -> auto& { return s.culling; }, "--culling"),
         numeric(
             "directional.atlasSize", kAtlasSizes, "texels per side of the directional atlas",
             [](auto& s) -> auto& { return s.directional.atlasSize; }),
@@ -198,19 +207,23 @@ std::vector<ShadowSettingsField> makeFields()
         named(
             "directional.projection", projectionSettingNames(),
             "stable: texel-snapped spheres that hold still; close: tiles fitted to the view's slices; depthFit: "
-            "stable spheres over the visible depths",
+            "tiles fitted to the visible surfaces, split by their depths",
             [](auto& s) -> auto& { return s.directional.projection; }, "--projection"),
         numeric(
             "directional.depthFitSteps", {SettingRangeKind::Closed, 0, 64},
-            "depthFit's grid steps per power of two of view depth (0: unquantized)",
+            "depthFit's grid steps per power of two of its tiles' size (0: unquantized)",
             [](auto& s) -> auto& { return s.directional.depthFitSteps; }),
         numeric(
             "directional.depthFitHysteresis", {SettingRangeKind::Closed, 0, 8},
-            "grid steps the visible depths must move inside depthFit's range before it narrows",
+            "grid steps a depthFit tile's fit must shrink inside its size before the tile does",
             [](auto& s) -> auto& { return s.directional.depthFitHysteresis; }),
         named(
             "directional.atlasFormat", depthFormats(), "depth format of the directional atlas",
             [](auto& s) -> auto& { return s.directional.atlasFormat; }),
+        numeric(
+            "directional.depthBias", kDepthBias,
+            "constant depth bias of the directional casters, in depth steps, beside each light's slope-scaled one",
+            [](auto& s) -> auto& { return s.directional.depthBias; }, "--directional-depth-bias"),
         numeric(
             "local.atlasSize", kAtlasSizes, "texels per side of the spot and point lights' atlas",
             [](auto& s) -> auto& { return s.local.atlasSize; }, "--local-atlas-size"),
@@ -241,6 +254,15 @@ std::vector<ShadowSettingsField> makeFields()
             "texels per side a light's tile is lowered to, at most, before the light loses its shadow",
             [](auto& s) -> auto& { return s.local.minTileResolution; }),
         numeric(
+            "local.depthBias", kDepthBias,
+            "constant depth bias of the spot and point casters, in depth steps, beside each light's slope-scaled one",
+            [](auto& s) -> auto& { return s.local.depthBias; }, "--local-depth-bias"),
+        named(
+            "local.spotFovBias", toggleNames(),
+            "widens spot shadow frustums as point faces are, so bias and filter taps at the cone's edge stay in the "
+            "tile",
+            [](auto& s) -> auto& { return s.local.spotFovBias; }, "--spot-fov-bias"),
+        numeric(
             "soft.blockerSearchScale", kScale, "scales PCSS's blocker search region (NVIDIA's w_search)",
             [](auto& s) -> auto& { return s.soft.blockerSearchScale; }),
         numeric(
@@ -263,6 +285,10 @@ std::vector<ShadowSettingsField> makeFields()
             "soft.poissonRadiusTexels", poissonRadius, "the fixed poisson filter's radius, in texels",
             [](auto& s) -> auto& { return s.soft.poissonRadiusTexels; }),
         named(
+            "soft.diskRotation", toggleNames(),
+            "turns the poisson and pcss disks per receiver texel (noise instead of the disk's fixed pattern)",
+            [](auto& s) -> auto& { return s.soft.diskRotation; }, "--disk-rotation"),
+        named(
             "static.update",
             {nameOf(StaticShadowUpdate::EveryFrame, "everyFrame"), nameOf(StaticShadowUpdate::OnChange, "onChange"),
              nameOf(StaticShadowUpdate::OnDemand, "onDemand")},
@@ -279,6 +305,20 @@ std::vector<ShadowSettingsField> makeFields()
         numeric(
             "static.localAtlasSize", kAtlasSizes, "texels per side of the spot and point lights' static atlas",
             [](auto& s) -> auto& { return s.staticMaps.localAtlasSize; }),
+        named(
+            "contact.shadows", toggleNames(),
+            "a short march through the depth buffer towards each directional light, added to its shadow map",
+            [](auto& s) -> auto& { return s.contact.shadows; }, "--contact-shadows"),
+        numeric(
+            "contact.length", {SettingRangeKind::Closed, 0.01, 10}, "metres the contact march goes towards the light",
+            [](auto& s) -> auto& { return s.contact.length; }),
+        numeric(
+            "contact.steps", {SettingRangeKind::Closed, 1, 64}, "depth samples along the contact march",
+            [](auto& s) -> auto& { return s.contact.steps; }),
+        numeric(
+            "contact.thickness", {SettingRangeKind::Closed, 0.001, 10},
+            "metres behind a depth sample that the contact march counts as inside its surface",
+            [](auto& s) -> auto& { return s.contact.thickness; }),
     }};
 }
 
@@ -433,6 +473,10 @@ std::optional<SettingsProblem> findLocalSettingsProblem(const LocalShadowSetting
     if (o.minTileResolution > o.atlasSize)
         return outOfRange("local.minTileResolution",
                           fmt::format("{} (above local.atlasSize {})", o.minTileResolution, o.atlasSize));
+    if (auto problem = outsideRange("local.depthBias", o.depthBias))
+        return problem;
+    if (static_cast<unsigned>(o.spotFovBias) > static_cast<unsigned>(Toggle::On))
+        return outOfRange("local.spotFovBias", fmt::format("{}", static_cast<int>(o.spotFovBias)));
     return std::nullopt;
 }
 
@@ -462,6 +506,8 @@ std::optional<SettingsProblem> findSoftSettingsProblem(const SoftShadowSettings&
         return outOfRange("soft.maxPenumbraTexels", fmt::format("{}", s.maxPenumbraTexels));
     if (auto problem = outsideRange("soft.poissonRadiusTexels", s.poissonRadiusTexels))
         return problem;
+    if (static_cast<unsigned>(s.diskRotation) > static_cast<unsigned>(Toggle::On))
+        return outOfRange("soft.diskRotation", fmt::format("{}", static_cast<int>(s.diskRotation)));
     return std::nullopt;
 }
 
@@ -476,6 +522,17 @@ std::optional<SettingsProblem> findStaticSettingsProblem(const StaticShadowSetti
     return outsideRange("static.localAtlasSize", s.localAtlasSize);
 }
 
+std::optional<SettingsProblem> findContactSettingsProblem(const ContactShadowSettings& c)
+{
+    if (static_cast<unsigned>(c.shadows) > static_cast<unsigned>(Toggle::On))
+        return outOfRange("contact.shadows", fmt::format("{}", static_cast<int>(c.shadows)));
+    if (auto problem = outsideRange("contact.length", c.length))
+        return problem;
+    if (auto problem = outsideRange("contact.steps", c.steps))
+        return problem;
+    return outsideRange("contact.thickness", c.thickness);
+}
+
 } // namespace
 
 std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
@@ -485,6 +542,8 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return problem;
     if (auto problem = outsideRange("distanceFade", s.distanceFade))
         return problem;
+    if (static_cast<unsigned>(s.culling) > static_cast<unsigned>(CasterCullingMode::Gpu))
+        return outOfRange("culling", fmt::format("{}", static_cast<int>(s.culling)));
     if (auto problem = outsideRange("directional.atlasSize", d.atlasSize))
         return problem;
     if (static_cast<unsigned>(d.filter) > static_cast<unsigned>(ShadowFilter::PCSS))
@@ -508,11 +567,15 @@ std::optional<SettingsProblem> findSettingsProblem(const ShadowSettings& s)
         return problem;
     if (!rhi::isDepthFormat(d.atlasFormat))
         return outOfRange("directional.atlasFormat", std::string(rhi::formatName(d.atlasFormat)));
+    if (auto problem = outsideRange("directional.depthBias", d.depthBias))
+        return problem;
     if (auto problem = findLocalSettingsProblem(s.local))
         return problem;
     if (auto problem = findSoftSettingsProblem(s.soft))
         return problem;
-    return findStaticSettingsProblem(s.staticMaps);
+    if (auto problem = findStaticSettingsProblem(s.staticMaps))
+        return problem;
+    return findContactSettingsProblem(s.contact);
 }
 
 } // namespace detail

@@ -1,5 +1,7 @@
 // Binding sets on every configuration: a set gives the same picture as the single bind calls it replaces, survives a
-// pipeline change, and feeds dispatches whose hazards the RHI still orders (HazardTest has the negative control).
+// pipeline change, and feeds dispatches whose hazards the RHI still orders (HazardTest has the negative control);
+// all of it also with pipelines that list the set's layout (on Vulkan the set's own descriptor set, bound with one
+// call: tests/backends/BindingSetCallsTest.cpp), where single binds over part of a set still take their place.
 #include "ComputeScenes.hpp"
 #include "GpuTesting.hpp"
 
@@ -58,6 +60,16 @@ protected:
         layout = device->createBindingSetLayout(
             {.items = {{1, rhi::BindingKind::SampledTexture}, {0, rhi::BindingKind::UniformBuffer}},
              .debugName = "tint and image"});
+        listed = device->createPipeline({.vertex = vertex.get(),
+                                         .fragment = fragment.get(),
+                                         .colorTargets = {{}},
+                                         .bindingSetLayouts = {layout.get()},
+                                         .debugName = "set, listed"});
+        listedTint = device->createPipeline({.vertex = vertex.get(),
+                                             .fragment = tintOnly.get(),
+                                             .colorTargets = {{}},
+                                             .bindingSetLayouts = {layout.get()},
+                                             .debugName = "tint, listed"});
         set = device->createBindingSet({.layout = layout.get(),
                                         .items = {rhi::BindingSetItem::uniformBuffer(0, *tint, 0, 16),
                                                   rhi::BindingSetItem::sampledTexture(1, *image, *sampler)},
@@ -83,6 +95,7 @@ protected:
     std::unique_ptr<rhi::Buffer> tint;
     std::unique_ptr<rhi::Shader> vertex, fragment, tintOnly;
     std::unique_ptr<rhi::Pipeline> pipeline, tintPipeline;
+    std::unique_ptr<rhi::Pipeline> listed, listedTint; // list the set's layout
     std::unique_ptr<rhi::BindingSetLayout> layout;
     std::unique_ptr<rhi::BindingSet> set;
 };
@@ -108,6 +121,37 @@ TEST_F(BindingSetTest, ASetOutlivesAPipelineChangeAndServesPipelinesThatReadPart
     EXPECT_EQ(tinted, (Rgba{0, 255, 255, 255})) << describe(tinted);
 }
 
+TEST_F(BindingSetTest, APipelineListingTheLayoutDrawsTheSameThroughTheSetOrSingleBinds)
+{
+    const Rgba bySet = draw(*listed, [&](rhi::CommandList& list) { list.bindBindingSet(*set); });
+    const Rgba single = draw(*listed, [&](rhi::CommandList& list) {
+        list.bindUniformBuffer(0, *tint, 0, 16);
+        list.bindTexture(1, *image, *sampler);
+    });
+    EXPECT_EQ(bySet, (Rgba{0, 128, 255, 255})) << describe(bySet);
+    EXPECT_EQ(single, bySet) << describe(single);
+    const Rgba tinted = draw(*listedTint, [&](rhi::CommandList& list) {
+        list.bindBindingSet(*set);
+        list.bindPipeline(*listed);
+        list.draw(3);
+    });
+    EXPECT_EQ(tinted, (Rgba{0, 255, 255, 255})) << describe(tinted);
+}
+
+// A single bind after a set replaces the set's item at that binding, and the set's other items stay.
+TEST_F(BindingSetTest, ASingleBindOverASetTakesThatBinding)
+{
+    auto red = device->createBuffer({.size = 16, .usage = rhi::BufferUsage::Uniform, .debugName = "red"});
+    red->writeObject(glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
+    for (const rhi::Pipeline* drawn : {pipeline.get(), listed.get()}) {
+        const Rgba replaced = draw(*drawn, [&](rhi::CommandList& list) {
+            list.bindBindingSet(*set);
+            list.bindUniformBuffer(0, *red, 0, 16);
+        });
+        EXPECT_EQ(replaced, (Rgba{255, 0, 0, 255})) << drawn->desc().debugName << ": " << describe(replaced);
+    }
+}
+
 TEST_F(BindingSetTest, TheSetKeepsItsItemsSortedAndACopyOfItsLayout)
 {
     layout.reset();
@@ -122,6 +166,8 @@ TEST_F(BindingSetTest, DispatchesThroughASetAreOrdered)
 {
     const ImageSum sum = storageImageSum(*device, {.bindingSet = true});
     EXPECT_EQ(sum.red, 16u * (15u * 16u / 2u)); // each row holds red 0..15
+    const ImageSum listedSum = storageImageSum(*device, {.bindingSet = true, .listedLayout = true});
+    EXPECT_EQ(listedSum.red, sum.red);
 }
 
 } // namespace

@@ -137,11 +137,14 @@ void main() { atomicAdd(sum.red, uint(round(imageLoad(image, ivec2(gl_GlobalInvo
 )";
 
 std::unique_ptr<rhi::ComputePipeline> computePipeline(rhi::Device& device, const char* glsl, const char* name,
-                                                      std::vector<rhi::UniformLayout> storageLayouts = {})
+                                                      std::vector<rhi::UniformLayout> storageLayouts = {},
+                                                      std::vector<const rhi::BindingSetLayout*> bindingSetLayouts = {})
 {
     auto shader = device.createShader({rhi::ShaderStage::Compute, glsl, name});
-    return device.createComputePipeline(
-        {.compute = shader.get(), .storageLayouts = std::move(storageLayouts), .debugName = name});
+    return device.createComputePipeline({.compute = shader.get(),
+                                         .storageLayouts = std::move(storageLayouts),
+                                         .bindingSetLayouts = std::move(bindingSetLayouts),
+                                         .debugName = name});
 }
 
 std::unique_ptr<rhi::CommandList> commandList(rhi::Device& device, const SceneOptions& options)
@@ -305,10 +308,13 @@ ImageSum storageImageSum(rhi::Device& device, const SceneOptions& options)
     auto sum = device.createBuffer({.size = 4, .usage = rhi::BufferUsage::Storage, .debugName = "sum"});
     sum->writeObject(std::uint32_t(0));
     auto readback = device.createBuffer({.size = 16 * 16 * 4, .usage = rhi::BufferUsage::Readback});
-    auto writer = computePipeline(device, imageWriterGlsl, "image_writer.comp");
-    auto reader = computePipeline(device, imageReaderGlsl, "image_reader.comp");
     auto layout = device.createBindingSetLayout(
         {.items = {{0, rhi::BindingKind::StorageTexture}, {1, rhi::BindingKind::StorageBuffer}}, .debugName = "sum"});
+    std::vector<const rhi::BindingSetLayout*> listed;
+    if (options.listedLayout)
+        listed.push_back(layout.get());
+    auto writer = computePipeline(device, imageWriterGlsl, "image_writer.comp", {}, listed);
+    auto reader = computePipeline(device, imageReaderGlsl, "image_reader.comp", {}, listed);
     auto set = device.createBindingSet(
         {.layout = layout.get(),
          .items = {rhi::BindingSetItem::storageTexture(0, *image), rhi::BindingSetItem::storageBuffer(1, *sum, 0, 4)},

@@ -17,6 +17,8 @@ struct SceneOptions {
     bool suppressBarriers = false;
     // storageImageSum binds its image and sum with one binding set instead of single bind calls.
     bool bindingSet = false;
+    // ... and its pipelines list the set's layout (ComputePipelineDesc::bindingSetLayouts).
+    bool listedLayout = false;
 };
 
 // An inclusive prefix sum of `values` (at most 1024) in one workgroup of 256 invocations with shared memory, copied

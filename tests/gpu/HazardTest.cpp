@@ -69,10 +69,13 @@ TEST_F(HazardTest, ComputeWriteThenComputeReadCatchesFault)
     EXPECT_FALSE(reports("SYNC-HAZARD-READ-AFTER-WRITE", "vkCmdDispatch").empty());
 }
 
-// The tracker sees what a binding set binds as it sees single binds.
+// The tracker sees what a binding set binds as it sees single binds, also when the pipelines list the set's layout
+// (on Vulkan, the set's own descriptor set).
 TEST_F(HazardTest, ComputeWriteThenComputeReadThroughABindingSetCatchesFault)
 {
     storageImageSum(*device, {.suppressBarriers = true, .bindingSet = true});
+    EXPECT_FALSE(reports("SYNC-HAZARD-READ-AFTER-WRITE", "vkCmdDispatch").empty());
+    storageImageSum(*device, {.suppressBarriers = true, .bindingSet = true, .listedLayout = true});
     EXPECT_FALSE(reports("SYNC-HAZARD-READ-AFTER-WRITE", "vkCmdDispatch").empty());
 }
 

@@ -929,6 +929,35 @@ const std::vector<Rule>& rules()
          [](Objects& o) { o.list->draw(3); }, E::Error,
          text("draw: binding set 'swapped' (layout 'swapped') holds a texture and sampler at binding 0, but pipeline "
               "'bad' declares a uniform buffer there ('Transform'): the set's layout differs from the pipeline's")},
+        {"pipelines list binding set layouts of their bindings' kinds",
+         [](Objects& o) {
+             o.layout = o.device.createBindingSetLayout(
+                 {.items = {{0, rhi::BindingKind::SampledTexture}}, .debugName = "swapped"});
+         },
+         [](Objects& o) {
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.bindingSetLayouts = {o.layout.get()};
+             o.device.createPipeline(d);
+         },
+         E::Error,
+         text("pipeline 'bad': binding 0 ('Transform') is a uniform buffer in the shaders, but binding set layout "
+              "'swapped' holds a texture and sampler there")},
+        {"pipelines list each binding in one binding set layout at most", [](Objects& o) { o.makeLayout(); },
+         [](Objects& o) {
+             auto other = o.device.createBindingSetLayout(
+                 {.items = {{1, rhi::BindingKind::SampledTexture}}, .debugName = "texture"});
+             rhi::PipelineDesc d = o.pipelineDesc();
+             d.bindingSetLayouts = {o.layout.get(), other.get()};
+             o.device.createPipeline(d);
+         },
+         E::Error, text("pipeline 'bad': binding 1 is in binding set layouts 'fixture' and 'texture'")},
+        {"compute pipelines list no null binding set layout", nothing,
+         [](Objects& o) {
+             o.makeCompute();
+             o.device.createComputePipeline(
+                 {.compute = o.computeShader.get(), .bindingSetLayouts = {nullptr}, .debugName = "bad"});
+         },
+         E::Error, text("pipeline 'bad': bindingSetLayouts[0] is null")},
         // Ownership and lifetime.
         {"lists are submitted to the device that created them", nothing,
          [](Objects& o) {

@@ -18,7 +18,7 @@ for configuration in "$@"; do
   mkdir -p "$work/run/$configuration"
   cd "$work/run/$configuration"
   for pair in triangle:triangle.png shadowed_scene:scene.png cascade_view:cascades.png custom_pass:custom_pass.png \
-              fog_pass:fog_pass.png compute_histogram:compute_histogram.png; do
+              fog_pass:fog_pass.png compute_histogram:compute_histogram.png compute_cull:compute_cull.png; do
     program=${pair%%:*} picture=${pair#*:}
     "$work/build/$program" --backend "$configuration"
     "$check" "$picture" spread 0.05 >/dev/null || { echo "$configuration: $program wrote a flat $picture"; exit 1; }

@@ -234,6 +234,44 @@ TEST(StreetSceneTest, HasTheLampsShopWindowsMoonAndCars)
     EXPECT_LE(street.meshes.size(), 4u);
 }
 
+// Ten cars spread over the street drive down their lane, as dynamic objects, and wrap round at the far end; the
+// parked cars stay put and no moving car meets a parked one.
+TEST(StreetSceneTest, MovingCarsDriveDownTheirLaneAndWrapRound)
+{
+    const Scene parked = scenes::makeStreetScene();
+    Scene street = parked;
+    const float seconds = 30.0f; // 300 m: every car has wrapped round or is about to
+    scenes::driveStreetCars(street, seconds);
+    EXPECT_NO_THROW(street.validate());
+    std::uint32_t moving = 0;
+    for (std::size_t o = 0; o < street.objects.size(); ++o) {
+        const Object& now = street.objects[o];
+        const Object& before = parked.objects[o];
+        if (now.mobility == Mobility::Static) {
+            EXPECT_EQ(now.transform, before.transform) << now.name;
+            continue;
+        }
+        ASSERT_EQ(now.name.rfind("car ", 0), 0u) << now.name;
+        moving += now.name.back() == '0';
+        EXPECT_NEAR(std::abs(now.transform[3].x), scenes::kStreetLaneX, 1e-5f) << now.name;
+        const float driven = std::fmod(before.transform[3].z - now.transform[3].z + 384.0f, 384.0f);
+        EXPECT_NEAR(driven, scenes::streetCarDistance(seconds), 1e-3f) << now.name;
+        EXPECT_GE(now.worldBounds.min.z, -192.0f - 2.2f) << now.name;
+        EXPECT_LE(now.worldBounds.max.z, 192.0f + 2.2f) << now.name;
+        for (const Object& other : street.objects) {
+            if (other.name.rfind("car ", 0) != 0 || other.mobility != Mobility::Static)
+                continue;
+            EXPECT_FALSE(
+                now.worldBounds.max.x > other.worldBounds.min.x && other.worldBounds.max.x > now.worldBounds.min.x &&
+                now.worldBounds.max.z > other.worldBounds.min.z && other.worldBounds.max.z > now.worldBounds.min.z)
+                << now.name << " meets " << other.name;
+        }
+    }
+    EXPECT_EQ(moving, scenes::kStreetMovingCars);
+    Scene notStreet = scenes::makeShadowTestScene();
+    EXPECT_THROW(scenes::driveStreetCars(notStreet, 0.0f), SceneError);
+}
+
 TEST(StreetSceneTest, LocalLightsRunFromTheCameraOutwards)
 {
     const Scene street = scenes::makeStreetScene();

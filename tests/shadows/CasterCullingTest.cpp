@@ -1,4 +1,7 @@
 #include "penumbra/shadows/CasterCulling.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <gtest/gtest.h>
 
@@ -67,6 +70,34 @@ TEST_F(CasterCullingTest, CullingBiasSkipsCastersWhollyInsideThePreviousSphere)
         cullShadowCasters(cascades[0], lightSpaceCasters(cascades[0].basis, casters), std::nullopt, factor);
     EXPECT_EQ(first.casters.size() + biased.casters.size(), 4u);
     EXPECT_EQ(first.overlapping + biased.overlapping, 5u);
+}
+
+// casterInVolume, the reference the GPU culling pass mirrors, gives each cascade the planner's list, with the culling
+// bias of a sphere and of a frustum slice, and each frustum the local planner's.
+TEST_F(CasterCullingTest, VolumesGiveThePlannersLists)
+{
+    const LightSpaceCasters light = lightSpaceCasters(cascades[1].basis, casters);
+    const auto listed = [&](const CasterVolume& volume) {
+        std::vector<std::uint32_t> inside;
+        for (std::uint32_t i = 0; i < casters.size(); ++i)
+            if (casterInVolume(casters[i], volume))
+                inside.push_back(i);
+        return inside;
+    };
+    const float factor = cascadeBlendCullingFactor(0.1f);
+    const Sphere previous = cascades[0].cullingSphere;
+    EXPECT_EQ(listed(cascadeVolume(cascades[1], previous, factor)),
+              cullShadowCasters(cascades[1], light, previous, factor).casters);
+    EXPECT_EQ(listed(cascadeVolume(cascades[0], std::nullopt, factor)),
+              cullShadowCasters(cascades[0], light, std::nullopt, factor).casters);
+    const FrustumSlice slice{camera, splits.nearOf(0), splits.farOf(0)};
+    EXPECT_EQ(listed(closeCascadeVolume(cascades[1], slice, factor)),
+              cullCloseFitShadowCasters(cascades[1], light, slice, factor).casters);
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 20.0f, -5.0f), glm::vec3(0.0f, 0.0f, -5.0f), {0, 0, -1});
+    const std::vector<std::uint32_t> frustum = cullCastersInFrustum(view, 1.2f, 0.5f, 40.0f, casters);
+    EXPECT_EQ(listed(frustumVolume(view, 1.2f, 0.5f, 40.0f)), frustum);
+    EXPECT_FALSE(frustum.empty());
+    EXPECT_LT(frustum.size(), casters.size());
 }
 
 } // namespace

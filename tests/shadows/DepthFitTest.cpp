@@ -1,4 +1,5 @@
-// Depth fit: the stable fit over splits of the visible view depths, quantized with hysteresis.
+// Depth fit: the histogram of the visible view depths, its partition into cascades, the tiles' half sizes on a grid
+// with hysteresis, and the planner's tiles around the samples' footprints.
 #include "penumbra/shadows/DepthFit.hpp"
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
 
@@ -10,65 +11,129 @@ namespace {
 
 const rhi::Conventions conventions{rhi::DepthRange::ZeroToOne, true};
 
-TEST(DepthFit, RangeIsOnTheGridAndHoldsTheMeasuredOne)
+// A histogram over a 100 m shadow distance with `count` samples in the bin of each depth, their light-space footprint
+// (slot 0) a square of half size `half` about the origin.
+DepthHistogram histogramOf(std::initializer_list<std::pair<float, float>> depthsAndHalves, std::uint32_t count = 100)
+{
+    DepthHistogram h;
+    h.firstOctave = depthHistogramFirstOctave(100.0f);
+    h.bins.resize(kDepthHistogramBins);
+    h.lightDirections = {glm::vec3(0.0f, -1.0f, 0.0f)};
+    for (const auto& [depth, half] : depthsAndHalves) {
+        DepthHistogramBin& bin = h.bins[depthHistogramBin(h.firstOctave, depth)];
+        bin.count += count;
+        bin.footprints[0] = {-half, -half, half, half};
+    }
+    return h;
+}
+
+TEST(DepthFit, BinsAreTheStepGridAtEightStepsPerOctave)
 {
     // 8 steps per octave: 0.125 m steps in [1, 2), 4 m steps in [32, 64).
     EXPECT_EQ(depthFitStep(1.5f, 8), 0.125f);
     EXPECT_EQ(depthFitStep(40.0f, 8), 4.0f);
-    const ViewDepthRange fitted = quantizeViewDepthRange({1.3f, 37.0f}, std::nullopt, 8, 1.0f);
-    EXPECT_EQ(fitted, (ViewDepthRange{1.25f, 40.0f}));
-    // An end on the grid stays where it is.
-    EXPECT_EQ(quantizeViewDepthRange({2.0f, 32.0f}, std::nullopt, 8, 1.0f), (ViewDepthRange{2.0f, 32.0f}));
-    // Unquantized: as measured.
-    EXPECT_EQ(quantizeViewDepthRange({1.3f, 37.0f}, std::nullopt, 0, 1.0f), (ViewDepthRange{1.3f, 37.0f}));
+    // 100 m: the last octave is [64, 128), the first 16 below.
+    const int first = depthHistogramFirstOctave(100.0f);
+    EXPECT_EQ(first, 7 - 16);
+    EXPECT_EQ(depthHistogramBinStart(first, kDepthHistogramBins), 128.0f);
+    for (const float depth : {0.3f, 1.3f, 2.0f, 37.0f, 99.0f}) {
+        const std::uint32_t bin = depthHistogramBin(first, depth);
+        EXPECT_LE(depthHistogramBinStart(first, bin), depth) << depth;
+        EXPECT_GT(depthHistogramBinStart(first, bin + 1), depth) << depth;
+        EXPECT_EQ(depthHistogramBinStart(first, bin + 1) - depthHistogramBinStart(first, bin), depthFitStep(depth, 8));
+    }
+    // Depths outside the 16 octaves are clamped into the first and last bins.
+    EXPECT_EQ(depthHistogramBin(first, 1e-6f), 0u);
+    EXPECT_EQ(depthHistogramBin(first, 1e6f), kDepthHistogramBins - 1);
+    const DepthHistogram h = histogramOf({{1.3f, 1.0f}, {37.0f, 20.0f}});
+    EXPECT_EQ(depthHistogramRange(h), (ViewDepthRange{1.25f, 40.0f}));
+    EXPECT_FALSE(depthHistogramRange(histogramOf({})));
 }
 
-TEST(DepthFit, HysteresisKeepsTheRangeUntilTheDepthsMoveMoreThanItsSteps)
+TEST(DepthFit, FootprintIsTheUnionOfTheBinsWithSamples)
 {
-    const ViewDepthRange kept{1.25f, 40.0f};
-    // Depths that cross a grid line inwards keep the range (quantized alone, far would fall to 36, near rise to 1.375).
-    EXPECT_EQ(quantizeViewDepthRange({1.38f, 35.0f}, kept, 8, 1.0f), kept);
-    EXPECT_EQ(quantizeViewDepthRange({1.38f, 35.0f}, kept, 8, 0.0f), (ViewDepthRange{1.375f, 36.0f}));
-    // Beyond 1 + hysteresis steps inside (40 - 2 x 4 = 32), the range narrows.
-    EXPECT_EQ(quantizeViewDepthRange({1.3f, 31.0f}, kept, 8, 1.0f).farDepth, 32.0f);
-    EXPECT_EQ(quantizeViewDepthRange({1.55f, 38.0f}, kept, 8, 1.0f).nearDepth, 1.5f);
-    // Depths outside the kept range widen it at once: the fit must hold what is seen.
-    EXPECT_EQ(quantizeViewDepthRange({1.2f, 41.0f}, kept, 8, 4.0f), (ViewDepthRange{1.125f, 44.0f}));
+    DepthHistogram h = histogramOf({{2.0f, 1.0f}, {3.0f, 2.0f}});
+    h.bins[depthHistogramBin(h.firstOctave, 2.5f)].footprints[0] = {-50.0f, -50.0f, 50.0f, 50.0f}; // no samples
+    const std::uint32_t first = depthHistogramBin(h.firstOctave, 2.0f), last = depthHistogramBin(h.firstOctave, 3.0f);
+    const std::optional<Bounds> both = depthHistogramFootprint(h, 0, first, last + 1);
+    ASSERT_TRUE(both);
+    EXPECT_EQ(both->min, glm::vec3(-2.0f, -2.0f, 0.0f));
+    EXPECT_EQ(both->max, glm::vec3(2.0f, 2.0f, 0.0f));
+    EXPECT_FALSE(depthHistogramFootprint(h, 0, first + 1, last));
 }
 
-TEST(DepthFit, SmallDepthChangesKeepTheSplits)
+// Most samples near the camera in a small footprint, a few far in a wide one: the partition gives the near crowd its
+// own cascades instead of spacing the splits evenly in log depth.
+TEST(DepthFit, PartitionPutsTheSamplesTexelsHighest)
 {
-    const glm::vec3 ratios{0.1f, 0.25f, 0.5f};
-    std::optional<ViewDepthRange> kept;
-    std::optional<CascadeSplits> first;
-    // A visible far depth that wanders by +-1 m about 37 m (the camera stepping back and forth) keeps every split.
-    for (int frame = 0; frame < 40; ++frame) {
-        const float wander = (frame % 2 ? 1.0f : -1.0f) * 0.05f * static_cast<float>(frame % 20);
-        kept = quantizeViewDepthRange({1.3f, 37.0f + wander}, kept, 8, 1.0f);
-        const CascadeSplits splits = depthFitSplits(*kept, 0.1f, 150.0f, 100.0f, 4, ratios, 8);
-        if (!first)
-            first = splits;
-        EXPECT_EQ(splits.distances, first->distances) << "frame " << frame;
+    DepthHistogram h = histogramOf({{2.0f, 1.0f}, {2.5f, 1.2f}, {3.0f, 1.5f}, {3.5f, 1.8f}}, 1000);
+    for (const auto& [depth, half] : {std::pair{20.0f, 15.0f}, {40.0f, 30.0f}}) {
+        DepthHistogramBin& bin = h.bins[depthHistogramBin(h.firstOctave, depth)];
+        bin.count = 10;
+        bin.footprints[0] = {-half, -half, half, half};
     }
-    // The inner splits lie on the grid and in order, the outer ones at the range's ends.
-    EXPECT_EQ(first->nearOf(0), 1.25f);
-    EXPECT_EQ(first->farOf(3), 40.0f);
-    for (std::uint32_t i = 1; i < 4; ++i) {
-        const float split = first->distances[i];
-        EXPECT_GT(split, first->distances[i - 1]);
-        EXPECT_EQ(std::fmod(split, depthFitStep(split, 8)), 0.0f) << split;
-    }
+    const std::vector<std::uint32_t> edges = depthFitPartition(h, 4, 1, {}, 0.0f);
+    ASSERT_EQ(edges.size(), 5u);
+    EXPECT_EQ(edges.front(), depthHistogramBin(h.firstOctave, 2.0f));
+    EXPECT_EQ(edges.back(), depthHistogramBin(h.firstOctave, 40.0f) + 1);
+    // Three cascades for the near samples, one for the far ones (the empty bins between go to the nearer cascade).
+    EXPECT_GT(edges[3], depthHistogramBin(h.firstOctave, 3.5f));
+    EXPECT_LE(edges[3], depthHistogramBin(h.firstOctave, 20.0f));
+    EXPECT_TRUE(std::is_sorted(edges.begin(), edges.end()));
+    const CascadeSplits splits = depthFitSplits(h, edges, 0.1f, 150.0f, 100.0f);
+    EXPECT_EQ(splits.count, 4u);
+    EXPECT_EQ(splits.nearOf(0), 2.0f);
+    EXPECT_EQ(splits.farOf(3), 44.0f);
+    EXPECT_LE(splits.farOf(2), 20.0f);
+    EXPECT_LE(splits.farOf(1), 3.0f);
+}
+
+TEST(DepthFit, KeptPartitionStaysWhileItHoldsTheSamplesAndCostsLittleMore)
+{
+    const DepthHistogram h = histogramOf({{2.0f, 1.0f}, {4.0f, 2.0f}, {8.0f, 4.0f}, {16.0f, 8.0f}, {32.0f, 16.0f}});
+    const std::vector<std::uint32_t> best = depthFitPartition(h, 4, 1, {}, 0.0f);
+    // A partition that splits elsewhere: kept within a generous tolerance, dropped without one.
+    std::vector<std::uint32_t> other = best;
+    other[2] += 1;
+    EXPECT_EQ(depthFitPartition(h, 4, 1, other, 10.0f), other);
+    EXPECT_EQ(depthFitPartition(h, 4, 1, other, 0.0f), best);
+    // A kept partition that misses a sample is dropped whatever the tolerance.
+    std::vector<std::uint32_t> missing = best;
+    missing.back() -= 1;
+    EXPECT_EQ(depthFitPartition(h, 4, 1, missing, 10.0f), best);
 }
 
 TEST(DepthFit, SplitsStayWithinTheCameraAndTheShadowDistance)
 {
-    const CascadeSplits splits = depthFitSplits({0.01f, 500.0f}, 0.1f, 150.0f, 100.0f, 4, {0.1f, 0.25f, 0.5f}, 8);
+    DepthHistogram h = histogramOf({{2.0f, 1.0f}, {120.0f, 1.0f}});
+    h.bins[0].count = 5; // nearer than the first octave
+    const std::vector<std::uint32_t> edges = depthFitPartition(h, 4, 1, {}, 0.0f);
+    const CascadeSplits splits = depthFitSplits(h, edges, 0.1f, 150.0f, 100.0f);
     EXPECT_EQ(splits.nearOf(0), 0.1f);
     EXPECT_EQ(splits.farOf(3), 100.0f);
+    for (std::uint32_t c = 0; c < 4; ++c)
+        EXPECT_LE(splits.nearOf(c), splits.farOf(c));
 }
 
-// The planner: depth fit without a range is the stable fit; with a shorter visible range its tiles are finer.
-TEST(DepthFit, PlannerFitsTheCascadesToTheVisibleDepths)
+TEST(DepthFit, HalfSizeIsOnTheGridWithHysteresis)
+{
+    // 8 steps per octave: 0.5 steps in [4, 8).
+    EXPECT_EQ(depthFitHalfSize(5.1f, std::nullopt, 8, 1.0f), 5.5f);
+    EXPECT_EQ(depthFitHalfSize(5.5f, std::nullopt, 8, 1.0f), 5.5f);
+    // Kept while the required size stays within 1 + hysteresis steps below it.
+    EXPECT_EQ(depthFitHalfSize(4.6f, 5.5f, 8, 1.0f), 5.5f);
+    EXPECT_EQ(depthFitHalfSize(4.6f, 5.5f, 8, 0.0f), 5.0f);
+    EXPECT_EQ(depthFitHalfSize(4.4f, 5.5f, 8, 1.0f), 4.5f);
+    // Larger than kept: grows at once, the tile must hold the footprint.
+    EXPECT_EQ(depthFitHalfSize(5.6f, 5.5f, 8, 4.0f), 6.0f);
+    // Unquantized: as required.
+    EXPECT_EQ(depthFitHalfSize(5.1f, 5.5f, 0, 1.0f), 5.1f);
+}
+
+// The planner: depth fit without a histogram is the close fit with its tiles' sizes on the grid; with one, each tile is
+// fitted around its samples' footprint, much finer than the stable fit's spheres, and the plan keeps its partition and
+// half sizes.
+TEST(DepthFit, PlannerFitsTheTilesToTheSamples)
 {
     ShadowCamera camera;
     camera.position = {0.0f, 2.0f, 0.0f};
@@ -80,19 +145,35 @@ TEST(DepthFit, PlannerFitsTheCascadesToTheVisibleDepths)
     const std::vector<DirectionalShadowLightInput> lights{{glm::normalize(glm::vec3(-0.4f, -1.0f, 0.5f))}};
     const std::vector<Bounds> casters{{glm::vec3(-1.0f), glm::vec3(1.0f)}};
     const DirectionalShadowPlan stable = planDirectionalShadows(settings, conventions, camera, lights, casters);
+    settings.directional.projection = CascadeProjection::Close;
+    const DirectionalShadowPlan close = planDirectionalShadows(settings, conventions, camera, lights, casters);
     settings.directional.projection = CascadeProjection::DepthFit;
     const DirectionalShadowPlan fallback = planDirectionalShadows(settings, conventions, camera, lights, casters);
+    EXPECT_FALSE(fallback.depthFit);
+    DepthHistogram h = histogramOf({{2.0f, 1.0f}, {3.0f, 1.5f}, {6.0f, 3.0f}, {12.0f, 6.0f}, {30.0f, 15.0f}});
+    h.lightDirections = {lights[0].direction};
     const DirectionalShadowPlan fitted =
-        planDirectionalShadows(settings, conventions, camera, lights, casters, ViewDepthRange{1.25f, 40.0f});
+        planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, nullptr});
     ASSERT_EQ(fitted.lights.size(), 1u);
+    ASSERT_TRUE(fitted.depthFit);
     EXPECT_EQ(fitted.uniforms.cascadeProjection, CascadeProjection::DepthFit);
     for (std::uint32_t c = 0; c < 4; ++c) {
-        const float stableTexel = stable.lights[0].cascades[c].fit.texelSize;
-        EXPECT_EQ(fallback.lights[0].cascades[c].fit.texelSize, stableTexel);
-        // 40 m instead of 100 m: the first cascade (10 m to 5 m deep, but as wide at its far end) 1.5 times as fine,
-        // the others twice.
-        EXPECT_LT(fitted.lights[0].cascades[c].fit.texelSize, (c == 0 ? 0.67f : 0.5f) * stableTexel) << "cascade " << c;
+        const float closeTexel = close.lights[0].cascades[c].fit.texelSize;
+        EXPECT_GE(fallback.lights[0].cascades[c].fit.texelSize, closeTexel);
+        EXPECT_LE(fallback.lights[0].cascades[c].fit.texelSize, 1.125f * closeTexel);
+        EXPECT_EQ(fitted.depthFit->halfSizes[c], fitted.lights[0].cascades[c].fit.halfSize);
+        EXPECT_LT(fitted.lights[0].cascades[c].fit.texelSize, 0.5f * stable.lights[0].cascades[c].fit.texelSize)
+            << "cascade " << c;
     }
+    // The same histogram with the plan's kept state gives the same plan.
+    const DirectionalShadowPlan again =
+        planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, &*fitted.depthFit});
+    EXPECT_EQ(again.depthFit, fitted.depthFit);
+    // A histogram measured along another light's direction: the footprints are not used, the slices' bounds are.
+    h.lightDirections = {glm::vec3(0.0f, -1.0f, 0.0f)};
+    const DirectionalShadowPlan other =
+        planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, nullptr});
+    EXPECT_GT(other.lights[0].cascades[0].fit.texelSize, fitted.lights[0].cascades[0].fit.texelSize);
 }
 
 } // namespace

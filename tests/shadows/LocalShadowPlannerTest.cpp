@@ -123,6 +123,42 @@ TEST(SpotShadow, AxisHitsTheTileCentreAndTheConeEdgeItsBorder)
     }
 }
 
+// The FOV bias of spot lights (local.spotFovBias) is the point faces' formula over the cone: off, the cone's own angle;
+// on, the cone's edge lies the normal bias and the filter size inside the tile's edge, in texels of the cone's tile.
+TEST(SpotShadow, FovBiasKeepsTheConeEdgeTheBiasAndFilterInsideTheTile)
+{
+    EXPECT_EQ(spotFieldOfView(0.6f, 256, ShadowFilter::PCF5x5, 1.5f, Toggle::Off), 1.2f);
+    EXPECT_NEAR(spotFieldOfView(glm::radians(45.0f), 256, ShadowFilter::PCF5x5, 1.5f, Toggle::On),
+                pointFaceFieldOfView(256, ShadowFilter::PCF5x5, 1.5f), 1e-6f);
+    for (const rhi::Conventions& conventions : allConventions()) {
+        SCOPED_TRACE(conventionName(conventions));
+        const SpotShadowInput spot{.position = {0, 5, 0},
+                                   .direction = glm::normalize(glm::vec3(0.3f, -1, 0.2f)),
+                                   .range = 20.0f,
+                                   .outerAngle = glm::radians(30.0f),
+                                   .normalBias = 1.5f};
+        ShadowSettings settings;
+        settings.local.filter = ShadowFilter::PCF5x5;
+        settings.local.spotFovBias = Toggle::On;
+        settings.local.depthBias = 3.0f;
+        const LocalShadowPlan plan = planLocalShadows(settings, conventions, {}, {&spot, 1}, {}, kEverywhere);
+        ASSERT_EQ(plan.tiles.size(), 1u);
+        EXPECT_EQ(plan.tiles[0].view.depthBias, 3.0f);
+        const float tile = plan.tiles[0].viewport.width;
+        const glm::vec3 right = glm::vec3(glm::inverse(spotView(spot.position, spot.direction))[0]);
+        const float distance = 5.0f;
+        const glm::vec3 edge = spot.position + distance * spot.direction + distance * std::tan(spot.outerAngle) * right;
+        // Texels of the cone's own tile, 3 of them for the 5x5 filter, plus the normal bias's 1.5 sqrt 2 of those.
+        const float coneTexel = 2.0f * std::tan(spot.outerAngle) / tile;
+        const float widenedTexel = 2.0f *
+                                   std::tan(0.5f * spotFieldOfView(spot.outerAngle, static_cast<std::uint32_t>(tile),
+                                                                   ShadowFilter::PCF5x5, 1.5f, Toggle::On)) /
+                                   tile;
+        const float inside = 3.0f * (1.0f + 1.5f * std::sqrt(2.0f)) * coneTexel / widenedTexel;
+        EXPECT_NEAR((1.0f - atlasPosition(plan, 0, edge).x) * tile, inside, 1e-2f);
+    }
+}
+
 TEST(PointShadow, EachFaceTileHoldsItsDirection)
 {
     for (const rhi::Conventions& conventions : allConventions()) {

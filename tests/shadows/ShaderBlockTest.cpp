@@ -88,7 +88,7 @@ TEST(ShaderBlockTest, TheLayoutListsTheFieldsOfStructFieldsAsReflectionDoes)
     EXPECT_EQ(member("lights").size, sizeof(shadows::DirectionalShadowUniforms::lights));
     EXPECT_EQ(member("lights.firstTile").offset, lights + offsetof(shadows::DirectionalShadowLight, firstTile));
     // A struct that is not an array ends at its last member, as reflection sizes it.
-    EXPECT_EQ(member("soft").size, offsetof(shadows::SoftShadowUniforms, poissonRadius) + 4);
+    EXPECT_EQ(member("soft").size, offsetof(shadows::SoftShadowUniforms, diskRotation) + 4);
     EXPECT_EQ(member("soft.poissonRadius").offset, offsetof(shadows::DirectionalShadowUniforms, soft) +
                                                        offsetof(shadows::SoftShadowUniforms, poissonRadius));
     EXPECT_EQ(layout.size, offsetof(shadows::DirectionalShadowUniforms, tileBounds) +

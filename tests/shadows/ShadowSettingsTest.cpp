@@ -31,6 +31,10 @@ void expectEqual(const ShadowSettings& a, const ShadowSettings& b)
     EXPECT_EQ(a.local.pointMode, b.local.pointMode);
     EXPECT_EQ(a.local.cubeMapSize, b.local.cubeMapSize);
     EXPECT_EQ(a.local.nearPlane, b.local.nearPlane);
+    EXPECT_EQ(a.directional.depthBias, b.directional.depthBias);
+    EXPECT_EQ(a.local.depthBias, b.local.depthBias);
+    EXPECT_EQ(a.local.spotFovBias, b.local.spotFovBias);
+    EXPECT_EQ(a.soft.diskRotation, b.soft.diskRotation);
 }
 
 ShadowSettings unusualSettings()
@@ -48,6 +52,7 @@ ShadowSettings unusualSettings()
     s.directional.depthFitSteps = 16;
     s.directional.depthFitHysteresis = 2.5f;
     s.directional.atlasFormat = rhi::Format::D24S8;
+    s.directional.depthBias = 50000.0f;
     s.local.atlasSize = 2048;
     s.local.filter = ShadowFilter::PCF3x3;
     s.local.atlasFormat = rhi::Format::D16;
@@ -56,6 +61,9 @@ ShadowSettings unusualSettings()
     s.local.nearPlane = 0.0375f;
     s.local.tileResolution = 256;
     s.local.minTileResolution = 32;
+    s.local.depthBias = 2.5f;
+    s.local.spotFovBias = Toggle::On;
+    s.culling = CasterCullingMode::Gpu;
     s.staticMaps.update = StaticShadowUpdate::OnDemand;
     s.staticMaps.realtimeCasters = RealtimeCasters::Dynamic;
     s.staticMaps.directionalAtlasSize = 8192;
@@ -66,7 +74,9 @@ ShadowSettings unusualSettings()
               .filterSamples = 64,
               .minPenumbraTexels = 2.0f,
               .maxPenumbraTexels = 30.0f,
-              .poissonRadiusTexels = 3.25f};
+              .poissonRadiusTexels = 3.25f,
+              .diskRotation = Toggle::Off};
+    s.contact = {.shadows = Toggle::On, .length = 0.75f, .steps = 24, .thickness = 0.05f};
     return s;
 }
 
@@ -106,6 +116,8 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
               "directional.atlasSize: 16384 is out of range, allowed powers of two 256..8192");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.directional.projection = CascadeProjection(3); }),
               "directional.projection: 3 is out of range, allowed stable, close, depthFit");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.contact.steps = 0; }),
+              "contact.steps: 0 is out of range, allowed 1..64");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.maxDistance = 0.0f; }),
               "maxDistance: 0 is out of range, allowed > 0.001");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.distanceFade = 1.5f; }),
@@ -121,6 +133,25 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
                   s.directional.atlasFormat = rhi::Format::RGBA8;
               }).rfind("directional.atlasFormat: ", 0),
               0u);
+}
+
+// The design documents' constant biases (Catlike Coding's "Directional Shadows", section 4.1: 50 000 and 500 000) are
+// accepted; the toggles are named off and on.
+TEST(ShadowSettingsJson, TheDocumentsDepthBiasesAndTheTogglesAreAccepted)
+{
+    ShadowSettings settings;
+    setSettingsField(settings, "directional.depthBias", "500000");
+    setSettingsField(settings, "local.depthBias", "50000");
+    setSettingsField(settings, "local.spotFovBias", "on");
+    setSettingsField(settings, "soft.diskRotation", "off");
+    EXPECT_EQ(settings.directional.depthBias, 500000.0f);
+    EXPECT_EQ(settings.local.depthBias, 50000.0f);
+    EXPECT_EQ(settings.local.spotFovBias, Toggle::On);
+    EXPECT_EQ(settings.soft.diskRotation, Toggle::Off);
+    EXPECT_EQ(settingsFieldText(ShadowSettings{}, "local.spotFovBias"), "off");
+    EXPECT_EQ(settingsFieldText(ShadowSettings{}, "soft.diskRotation"), "on");
+    EXPECT_THROW(setSettingsField(settings, "local.depthBias", "-1"), rhi::Error);
+    EXPECT_THROW(setSettingsField(settings, "soft.diskRotation", "yes"), rhi::Error);
 }
 
 // The tool's options set a field by its path and text, and its range comes from the one table.
@@ -209,7 +240,8 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
     auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
     EXPECT_EQ(
         parseError(R"({"maxDistanse": 5})"),
-        "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, directional, local, soft, static");
+        "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, culling, directional, local, soft, "
+        "static, contact");
     EXPECT_EQ(parseError(R"({"static": {"update": "sometimes"}})"),
               "shadows.json: static.update: unknown value \"sometimes\", allowed everyFrame, onChange, onDemand");
     EXPECT_EQ(parseError(R"({"static": {"directionalAtlasSize": 16384}})"),
@@ -224,7 +256,8 @@ TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
               "shadows.json: local.nearPlane: 0.6 is out of range, allowed 0.0001..0.5");
     EXPECT_EQ(parseError(R"({"directional": {"blend": "soft"}})"),
               "shadows.json: directional.blend: unknown field, allowed atlasSize, filter, cascadeCount, "
-              "cascadeRatios, cascadeFade, cascadeBlend, projection, depthFitSteps, depthFitHysteresis, atlasFormat");
+              "cascadeRatios, cascadeFade, cascadeBlend, projection, depthFitSteps, depthFitHysteresis, atlasFormat, "
+              "depthBias");
     EXPECT_EQ(parseError(R"({"directional": {"projection": "tight"}})"),
               "shadows.json: directional.projection: unknown value \"tight\", allowed stable, close, depthFit");
     EXPECT_EQ(parseError(R"({"directional": {"projection": 1}})"),

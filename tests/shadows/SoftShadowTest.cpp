@@ -125,6 +125,19 @@ TEST(RotationHashTest, IsDeterministicAndSpreadsAngles)
     EXPECT_NE(diskRotationAngle({1, 0}), diskRotationAngle({0, 1}));
 }
 
+// soft.diskRotation off: every receiver reads the unturned disk, and the lit shader is told so.
+TEST(RotationHashTest, TheToggleTurnsTheRotationOff)
+{
+    for (const glm::ivec2 texel : {glm::ivec2(1, 0), glm::ivec2(0, 1), glm::ivec2(-7, 12)}) {
+        EXPECT_EQ(diskRotationAngle(texel, Toggle::Off), 0.0f);
+        EXPECT_EQ(diskRotationAngle(texel, Toggle::On), diskRotationAngle(texel));
+    }
+    SoftShadowSettings soft;
+    EXPECT_EQ(softShadowUniforms(soft).diskRotation, 1);
+    soft.diskRotation = Toggle::Off;
+    EXPECT_EQ(softShadowUniforms(soft).diskRotation, 0);
+}
+
 TEST(ReceiverPlaneTest, RecoversThePlaneGradientFromScreenDerivatives)
 {
     // A plane depth = 0.01 x + 0.002 y seen through an arbitrary screen mapping.
@@ -297,8 +310,9 @@ TEST(SoftSettingsTest, JsonRoundTripsAndNamesBadFields)
     ShadowSettings s;
     s.directional.filter = ShadowFilter::PCSS;
     s.local.filter = ShadowFilter::Poisson;
-    s.soft = {2.0f, 0.5f, 32, 64, 2.0f, 40.0f, 3.5f};
+    s.soft = {2.0f, 0.5f, 32, 64, 2.0f, 40.0f, 3.5f, Toggle::Off};
     const ShadowSettings back = parseShadowSettings(toJson(s), "test");
+    EXPECT_EQ(back.soft.diskRotation, Toggle::Off);
     EXPECT_EQ(back.directional.filter, ShadowFilter::PCSS);
     EXPECT_EQ(back.local.filter, ShadowFilter::Poisson);
     EXPECT_EQ(back.soft.blockerSearchScale, 2.0f);

@@ -106,6 +106,41 @@ TEST_F(LocalShadowsTest, PointFacesStoreTheLightFacingSideOfACaster)
     }
 }
 
+// local.depthBias, the constant depth bias beside the slope-scaled one, pushes the depths the atlas stores away from
+// the light: the crate's near face stored with the design document's 50 000 lies behind the one stored without.
+TEST_F(LocalShadowsTest, ConstantDepthBiasPushesStoredDepthsAwayFromTheLight)
+{
+    const scene::Scene scene = roomLitFromInside();
+    const glm::vec3 light = scene.pointLights[0].position;
+    const scene::Object& crate = scene.objects[*scene.findObject("crate")];
+    const glm::vec3 centre = 0.5f * (crate.worldBounds.min + crate.worldBounds.max);
+    const auto face = static_cast<std::uint32_t>(shadows::cubeFace(centre - light));
+    render::FrameDesc f = frame();
+    f.width = 160;
+    f.height = 90;
+    f.shadows.local.atlasSize = 512;
+    const auto storedDistance = [&](float depthBias) {
+        f.shadows.local.depthBias = depthBias;
+        render::SceneRenderer renderer(*device, scene);
+        renderer.render(scene.camera, f);
+        const shadows::LocalShadowPlan& plan = renderer.localPlan();
+        const std::uint32_t tile = static_cast<std::uint32_t>(plan.pointShadows[0]) + face;
+        EXPECT_EQ(plan.tiles[tile].view.depthBias, depthBias);
+        const rhi::DepthImage depth = rhi::readDepth(*device, renderer.localAtlas().texture());
+        const glm::vec4 p = plan.tileData[tile].worldToAtlas * glm::vec4(centre, 1.0f);
+        const auto x = static_cast<std::uint32_t>(p.x / p.w * float(depth.width));
+        const auto y = static_cast<std::uint32_t>(p.y / p.w * float(depth.height));
+        return device->conventions().viewDepth(plan.tiles[tile].view.projection,
+                                               depth.depth[std::size_t(y) * depth.width + x]);
+    };
+    const float unbiased = storedDistance(0.0f);
+    const float biased = storedDistance(50000.0f);
+    std::printf("[ bias     ] %s: the crate's near face stored at %.5f, with a constant bias of 50000 at %.5f\n",
+                configuration().c_str(), unbiased, biased);
+    EXPECT_GT(biased, unbiased + 1e-4f);
+    EXPECT_LT(biased, unbiased + 0.5f);
+}
+
 TEST_F(LocalShadowsTest, NoLightLeaksThroughAWallNextToAPointLight)
 {
     // Only the light outside the +z wall: everything the camera sees is inside the room and in its shadow.

@@ -188,16 +188,19 @@ TruthFigures report(ShadowMaskTest& test, const std::string& name, const ShadowM
     return f;
 }
 
-// One spot or point light alone against the ray cast towards its position.
+// One spot or point light alone against the ray cast towards its position, in a frame of width x height (at least
+// 1000 shadowed pixels judged in a 960 x 540 frame, as many per pixel in another).
 void checkPositionalLight(ShadowMaskTest& test, const scene::Scene& scene, const std::string& name,
-                          const LightRef& light, const shadows::ShadowSettings& settings = {})
+                          const LightRef& light, const shadows::ShadowSettings& settings = {},
+                          std::uint32_t width = kWidth, std::uint32_t height = kHeight)
 {
-    const render::FrameDesc frame = maskFrame(settings, kWidth, kHeight, light);
+    const render::FrameDesc frame = maskFrame(settings, width, height, light);
     const ShadowMask mask = test.renderMask(scene, frame);
     const TruthFigures f = report(test, name, mask, traceTruth(test.gpu(), scene, frame));
-    EXPECT_GT(f.compared(), std::size_t(kWidth) * kHeight / 50)
+    EXPECT_GT(f.compared(), std::size_t(width) * height / 50)
         << name << ": the light must reach a good part of the picture";
-    const std::vector<std::string> failures = truthFailures(f, 1000);
+    const std::vector<std::string> failures =
+        truthFailures(f, 1000 * std::size_t(width) * height / (std::size_t(kWidth) * kHeight));
     EXPECT_TRUE(failures.empty()) << name << ": " << joined(failures) << "; visibility view: "
                                   << savePicture(mask.picture, "truth-" + configuration() + "-" + name);
 }
@@ -210,6 +213,16 @@ TEST_F(ShadowMaskTest, SpotShadowAgreesWithTheRayCast)
     scene::Scene scene = oneLocalLight(true, 2);
     scene.spotLights[0].outerAngle = 0.9f; // a wide cone over several objects
     checkPositionalLight(*this, scene, "spot", kSpot);
+}
+
+// local.spotFovBias widens the spot's frustum past its cone: the shadow stays right (a 320 x 180 frame).
+TEST_F(ShadowMaskTest, SpotShadowWithFovBiasAgreesWithTheRayCast)
+{
+    scene::Scene scene = oneLocalLight(true, 2);
+    scene.spotLights[0].outerAngle = 0.9f;
+    shadows::ShadowSettings settings;
+    settings.local.spotFovBias = shadows::Toggle::On;
+    checkPositionalLight(*this, scene, "spot with fov bias", kSpot, settings, 320, 180);
 }
 
 // The wide spot light of SpotShadowAgreesWithTheRayCast twenty times over, at the same place: each takes a tile of

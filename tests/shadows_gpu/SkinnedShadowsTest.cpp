@@ -1,6 +1,7 @@
 // Skinned meshes posed on the GPU (render/src/skinning): the two-bone bend drawn at a pose the renderer was not made
 // at gives the picture of its CPU-posed vertices, its shadow agrees with the ray cast of the posed mesh (and a caster
-// pass left in the bind pose is caught), and the local tile cache redraws exactly the lights that see it move.
+// pass left in the bind pose is caught), so do a walking figure's, and the local tile cache redraws exactly the lights
+// that see the bend move.
 #include "GltfAnimationScenes.hpp"
 #include "GpuTesting.hpp"
 
@@ -17,8 +18,10 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 namespace penumbra::testing {
@@ -72,31 +75,38 @@ std::size_t differingPixels(const rhi::Image& a, const rhi::Image& b)
     return differing;
 }
 
+// The bend with a spot light and a point light above the forearm, seen from above the forearm, whose shadows fall on
+// the ground under it.
+scene::Scene litBend()
+{
+    scene::Scene scene = bendScene();
+    scene.spotLights = {{.name = "over",
+                         .intensity = 20.0f,
+                         .position = {-0.5f, 3.5f, 0.3f},
+                         .direction = {0.0f, -1.0f, 0.0f},
+                         .range = 8.0f,
+                         .innerAngle = 0.5f,
+                         .outerAngle = 0.6f}};
+    scene.pointLights = {{.name = "bulb", .intensity = 10.0f, .position = {-0.5f, 3.0f, 0.4f}, .range = 8.0f}};
+    scene.camera = scene::lookAt({-0.5f, 1.9f, 1.2f}, {-0.5f, 0.0f, 0.2f}, 0.9f);
+    return scene;
+}
+
 class SkinnedShadowsTest : public GpuTest {
 protected:
-    // Each light's visibility view of the bend at t = 1 (the sun, a spot light and a point light above the forearm)
-    // drawn by a renderer made at the rest pose, against the ray cast of the CPU-posed mesh.
-    std::vector<truth::TruthComparison> againstTruth(bool casterSkinning)
+    // Each light's visibility view of `scene` posed by `animation` at `time`, drawn by a renderer made at the rest
+    // pose, against the ray cast of the CPU-posed mesh.
+    std::vector<truth::TruthComparison> againstTruth(scene::Scene scene, std::span<const scene::LightRef> lights,
+                                                     const char* animation, float time, bool casterSkinning)
     {
-        scene::Scene scene = bendScene();
-        scene.spotLights = {{.name = "over",
-                             .intensity = 20.0f,
-                             .position = {-0.5f, 3.5f, 0.3f},
-                             .direction = {0.0f, -1.0f, 0.0f},
-                             .range = 8.0f,
-                             .innerAngle = 0.5f,
-                             .outerAngle = 0.6f}};
-        scene.pointLights = {{.name = "bulb", .intensity = 10.0f, .position = {-0.5f, 3.0f, 0.4f}, .range = 8.0f}};
-        // From above the forearm, whose shadows fall on the ground under it.
-        scene.camera = scene::lookAt({-0.5f, 1.9f, 1.2f}, {-0.5f, 0.0f, 0.2f}, 0.9f);
         render::SceneRenderer renderer(*device, scene);
         renderer.setCasterSkinning(casterSkinning);
-        pose(scene, 1.0f);
+        scene::poseScene(scene, scene::findAnimation(scene.rig, animation), time);
         const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
         const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
         const truth::RayCaster shadowRays(scene);
         std::vector<truth::TruthComparison> comparisons;
-        for (const scene::LightRef light : kLights) {
+        for (const scene::LightRef light : lights) {
             render::FrameDesc frame{.width = kWidth, .height = kHeight};
             frame.visibilityOf = light;
             renderer.render(scene.camera, frame);
@@ -107,12 +117,18 @@ protected:
             comparisons.push_back(
                 truth::compareLightTruth(trace, shadowRays, gbuffer, truth::renderedVisibility(view)));
             const truth::TruthComparison& f = comparisons.back();
-            std::printf("[ truth    ] %s %s, %s casters: lit %zu of %zu right, shadowed %zu of %zu right\n",
-                        configuration().c_str(), scene::lightKindName(light.kind),
+            std::printf("[ truth    ] %s %s at %g s of '%s', %s casters: lit %zu of %zu right, shadowed %zu of %zu "
+                        "right\n",
+                        configuration().c_str(), scene::lightKindName(light.kind), double(time), animation,
                         casterSkinning ? "skinned" : "bind-pose", f.lit.right, f.lit.compared, f.shadowed.right,
                         f.shadowed.compared);
         }
         return comparisons;
+    }
+
+    std::vector<truth::TruthComparison> bendAgainstTruth(bool casterSkinning)
+    {
+        return againstTruth(litBend(), kLights, "bend", 1.0f, casterSkinning);
     }
 
     static constexpr std::array<scene::LightRef, 3> kLights{scene::LightRef{scene::LightKind::Directional, 0},
@@ -147,7 +163,7 @@ TEST_F(SkinnedShadowsTest, GpuSkinningDrawsTheCpuPose)
 
 TEST_F(SkinnedShadowsTest, TheBentShadowsAgreeWithTheRayCast)
 {
-    for (const truth::TruthComparison& f : againstTruth(true)) {
+    for (const truth::TruthComparison& f : bendAgainstTruth(true)) {
         EXPECT_GT(f.shadowed.compared, 50u)
             << "the forearm's shadow, away from edges (measured: sun 67, spot 511, point 523 pixels)";
         EXPECT_GE(f.lit.share(), 0.995);
@@ -159,9 +175,25 @@ TEST_F(SkinnedShadowsTest, TheBentShadowsAgreeWithTheRayCast)
 // maps of every light, so the bent arm's shadow is missing where the ray cast finds it.
 TEST_F(SkinnedShadowsTest, BindPoseCastersCatchesFault)
 {
-    for (const truth::TruthComparison& f : againstTruth(false)) {
+    for (const truth::TruthComparison& f : bendAgainstTruth(false)) {
         EXPECT_GT(f.shadowed.compared, 50u);
         EXPECT_LT(f.shadowed.share(), 0.9) << "measured: sun 0 of 67, spot 2 of 511, point 5 of 523";
+    }
+}
+
+// The walking figure of eleven joints (tests/support/WalkingCharacterScene.cpp) mid-stride, the legs apart and one
+// knee bent: the sun's and the spot light's shadows of the posed figure agree with the ray cast.
+TEST_F(SkinnedShadowsTest, TheWalkingCharactersShadowsAgreeWithTheRayCast)
+{
+    scene::Scene scene = loaded(walkingCharacterScene());
+    // From the figure's left, above its shadows, which fall to its right and back.
+    scene.camera = scene::lookAt({-0.8f, 4.0f, 1.8f}, {-0.9f, 0.0f, -0.8f}, 0.9f);
+    constexpr std::array<scene::LightRef, 2> lights{scene::LightRef{scene::LightKind::Directional, 0},
+                                                    scene::LightRef{scene::LightKind::Spot, 0}};
+    for (const truth::TruthComparison& f : againstTruth(std::move(scene), lights, "walk", 0.3f, true)) {
+        EXPECT_GT(f.shadowed.compared, 100u) << "the figure's shadow, away from edges (measured: sun 120, spot 521)";
+        EXPECT_GE(f.lit.share(), 0.995);
+        EXPECT_GE(f.shadowed.share(), 0.995);
     }
 }
 

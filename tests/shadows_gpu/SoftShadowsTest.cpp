@@ -305,6 +305,41 @@ TEST_F(SoftShadowsTest, HardTentPoissonAndPcssLightsShareOneFrame)
     savePicture(rhi::readTexture(*device, renderer.litImage()), "soft-mixed-lights");
 }
 
+// soft.diskRotation reaches the soft lookups of atlas tiles (softTile, which directional tiles share) and of point
+// cube maps: turned off, the Poisson disk's fixed pattern replaces the per-texel noise, so pixels of the penumbrae
+// change while the light let through on average stays the same.
+TEST_F(SoftShadowsTest, DiskRotationToggleChangesTheNoiseNotTheLight)
+{
+    for (const LightKind kind : {LightKind::Spot, LightKind::Point}) {
+        const scene::Scene scene = contactScene(kind, ShadowFilter::PCSS);
+        render::FrameDesc frame = softFrame(firstLight(kind));
+        frame.shadows.local.pointMode = shadows::PointShadowMode::CubeMap;
+        render::SceneRenderer renderer(*device, scene);
+        const auto visibility = [&](shadows::Toggle rotation) {
+            frame.shadows.soft.diskRotation = rotation;
+            renderer.render(scene.camera, frame);
+            return truth::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
+        };
+        const truth::RenderedVisibility turned = visibility(shadows::Toggle::On);
+        const truth::RenderedVisibility fixed = visibility(shadows::Toggle::Off);
+        std::size_t changed = 0, decided = 0;
+        double turnedSum = 0.0, fixedSum = 0.0;
+        for (std::size_t i = 0; i < turned.lit.size(); ++i) {
+            if (!turned.decided[i])
+                continue;
+            ++decided;
+            changed += turned.lit[i] != fixed.lit[i];
+            turnedSum += turned.lit[i];
+            fixedSum += fixed.lit[i];
+        }
+        const double meanChange = std::abs(turnedSum - fixedSum) / double(std::max<std::size_t>(decided, 1));
+        std::printf("[ rotation ] %s %s: %zu of %zu pixels change, mean visibility changes by %.5f\n",
+                    configuration().c_str(), scene::lightKindName(kind), changed, decided, meanChange);
+        EXPECT_GT(changed, decided / 200) << scene::lightKindName(kind);
+        EXPECT_LT(meanChange, 0.01) << scene::lightKindName(kind);
+    }
+}
+
 TEST_F(SoftShadowsTest, PcssStaysPutUnderSubTexelCameraMoves)
 {
     const scene::Scene scene = contactScene(LightKind::Directional, ShadowFilter::PCSS);

@@ -50,15 +50,6 @@ std::vector<std::uint16_t> barIndices(const std::vector<glm::vec3>& positions)
     return indices;
 }
 
-int addSampler(GltfBuilder& b, nlohmann::json& samplers, std::span<const float> times, std::span<const float> values,
-               const std::string& type, const std::string& interpolation)
-{
-    samplers.push_back({{"input", addFloatAccessor(b, times, "SCALAR")},
-                        {"output", addFloatAccessor(b, values, type)},
-                        {"interpolation", interpolation}});
-    return int(samplers.size()) - 1;
-}
-
 void addLightAndCamera(GltfBuilder& b, const glm::vec3& cameraPosition)
 {
     b.useExtension("KHR_lights_punctual");
@@ -88,6 +79,15 @@ int addFloatAccessor(GltfBuilder& builder, std::span<const float> values, const 
     builder.json()["accessors"][std::size_t(accessor)]["min"] = lo;
     builder.json()["accessors"][std::size_t(accessor)]["max"] = hi;
     return accessor;
+}
+
+int addSampler(GltfBuilder& b, nlohmann::json& samplers, std::span<const float> times, std::span<const float> values,
+               const std::string& type, const std::string& interpolation)
+{
+    samplers.push_back({{"input", addFloatAccessor(b, times, "SCALAR")},
+                        {"output", addFloatAccessor(b, values, type)},
+                        {"interpolation", interpolation}});
+    return int(samplers.size()) - 1;
 }
 
 GltfBuilder twoBoneBendScene(BendWeights weights)

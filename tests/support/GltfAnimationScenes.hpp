@@ -38,7 +38,21 @@ GltfBuilder morphScene();
 // out-tangent (1, 0, 0), key 1 in-tangent (3, 0, 0) and value (4, 0, 0) (its other tangents 0).
 GltfBuilder keyframeScene();
 
+// A walking figure of boxes (about 1.75 tall, facing +z, feet on the ground at y = 0) as ONE skinned mesh with
+// vertex colours: pelvis, torso, head, upper and lower arms, thighs, shins and feet over the joints "hips", "spine",
+// "head", "shoulder.L/R", "elbow.L/R", "leg.L/R" and "knee.L/R" (left is +x), weights blended over 8 cm either side
+// of a joint. Animation "walk" loops every second: LINEAR rotations sampled 16 times, the legs swinging 25 degrees
+// and the arms 20 degrees in opposition, the swinging knee bent, the hips turning and dropping so that the straight
+// leg reaches the ground. A ground 8 x 8, a sun "sun" low from the left, a spot light "spot" from the front and a
+// camera "front" looking at the figure and its shadows.
+GltfBuilder walkingCharacterScene();
+
 // Appends an accessor of FLOAT components of `type` (SCALAR, VEC3, VEC4, MAT4) with min and max; returns it.
 int addFloatAccessor(GltfBuilder& builder, std::span<const float> values, const std::string& type);
+
+// Appends an animation sampler (glTF 2.0 section 5.5: `times` as its input, `values` of `type` as its output) to
+// `samplers`; returns its index there.
+int addSampler(GltfBuilder& builder, nlohmann::json& samplers, std::span<const float> times,
+               std::span<const float> values, const std::string& type, const std::string& interpolation);
 
 } // namespace penumbra::testing

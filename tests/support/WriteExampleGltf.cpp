@@ -2,6 +2,7 @@
 //   (none)          testing::exampleScene
 //   materials       testing::materialsScene
 //   bend            testing::twoBoneBendScene (a skin and an animation)
+//   character       testing::walkingCharacterScene (a figure of boxes skinned to 11 joints, walking)
 //   spheres         testing::metallicSpheresScene (no lights, no camera: the loader's defaults)
 //   missing-image   testing::missingImageScene (its image file is not written)
 //   truncated       testing::exampleScene cut half-way into its inline buffer (.gltf only)
@@ -24,6 +25,8 @@ GltfBuilder sceneOf(std::string_view kind)
         return penumbra::testing::materialsScene();
     if (kind == "bend")
         return penumbra::testing::twoBoneBendScene();
+    if (kind == "character")
+        return penumbra::testing::walkingCharacterScene();
     if (kind == "spheres")
         return penumbra::testing::metallicSpheresScene();
     if (kind == "missing-image")
@@ -38,12 +41,13 @@ GltfBuilder sceneOf(std::string_view kind)
 int main(int argc, char** argv)
 {
     const std::string_view kind = argc == 3 ? argv[1] : "";
-    const bool known = kind.empty() || kind == "materials" || kind == "bend" || kind == "spheres" ||
-                       kind == "missing-image" || kind == "truncated" || kind == "large-textures";
+    const bool known = kind.empty() || kind == "materials" || kind == "bend" || kind == "character" ||
+                       kind == "spheres" || kind == "missing-image" || kind == "truncated" || kind == "large-textures";
     if ((argc != 2 && argc != 3) || !known) {
-        std::fprintf(stderr,
-                     "usage: %s [materials|bend|spheres|missing-image|truncated|large-textures] <file.gltf|file.glb>\n",
-                     argv[0]);
+        std::fprintf(
+            stderr,
+            "usage: %s [materials|bend|character|spheres|missing-image|truncated|large-textures] <file.gltf|file.glb>\n",
+            argv[0]);
         return 2;
     }
     try {

@@ -1,17 +1,29 @@
 // Image-based lighting's CPU math (render/Environment.hpp): the equirectangular mapping, the SH9 projection of known
 // radiance (a constant and a clamped cosine lobe, whose irradiance is known in closed form), the split-sum BRDF
-// table, the built-in studio environment, and reading Radiance .hdr files.
+// table, the built-in studio environment, and reading Radiance .hdr and OpenEXR files through --environment's loader.
+#include "EnvironmentOption.hpp"
+
 #include "penumbra/imageio/ImageFiles.hpp"
 #include "penumbra/render/Environment.hpp"
 #include "penumbra/rhi/Error.hpp"
 
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
 #include <glm/geometric.hpp>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <limits>
+#include <string>
+#include <unistd.h>
+#include <vector>
 
 namespace penumbra {
 namespace {
@@ -146,6 +158,65 @@ TEST(Environment, ReadsRadianceHdrAndNamesAMissingFile)
     } catch (const rhi::Error& e) {
         EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
     }
+}
+
+// A 4 x 2 equirectangular environment as OpenEXR HALF R, G, B channels (as most HDR photographs are stored), with
+// values that half holds exactly, written with OpenEXR's own writer.
+std::vector<glm::vec3> writeHalfExr(const std::filesystem::path& path)
+{
+    constexpr int kWidth = 4, kHeight = 2;
+    std::vector<glm::vec3> texels;
+    for (int i = 0; i < kWidth * kHeight; ++i)
+        texels.emplace_back(0.25f * float(i), 1.5f + float(i), 0.0625f * float(i * i));
+    std::array<std::vector<Imath::half>, 3> channels;
+    for (const glm::vec3& texel : texels)
+        for (int c = 0; c < 3; ++c)
+            channels[std::size_t(c)].emplace_back(texel[c]);
+    Imf::Header header(kWidth, kHeight);
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 3; ++c) {
+        const char* name = c == 0 ? "R" : c == 1 ? "G" : "B";
+        header.channels().insert(name, Imf::Channel(Imf::HALF));
+        frame.insert(name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(channels[std::size_t(c)].data()),
+                                      sizeof(Imath::half), sizeof(Imath::half) * kWidth));
+    }
+    Imf::OutputFile file(path.c_str(), header);
+    file.setFrameBuffer(frame);
+    file.writePixels(kHeight);
+    return texels;
+}
+
+std::filesystem::path temporary(const std::string& name)
+{
+    return std::filesystem::temp_directory_path() / ("penumbra-" + std::to_string(::getpid()) + "-" + name);
+}
+
+// --environment FILE.exr reads the texels written, row 0 at the top, R, G and B as the file names them; a file cut
+// half-way (a download that stopped early) is refused with a message naming it.
+TEST(Environment, TheEnvironmentLoaderReadsAnExrsTexelsAndNamesACorruptOne)
+{
+    const std::filesystem::path path = temporary("sky.exr");
+    const std::vector<glm::vec3> written = writeHalfExr(path);
+    const render::EnvironmentLight light = apps::environmentOf(path.string(), false, 1.0f, 0.0f, "--environment");
+    ASSERT_TRUE(light.image);
+    EXPECT_EQ(light.image->width, 4u);
+    EXPECT_EQ(light.image->height, 2u);
+    EXPECT_EQ(light.image->texels, written);
+
+    const std::filesystem::path cut = temporary("cut.exr");
+    {
+        std::ifstream in(path, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    }
+    try {
+        apps::environmentOf(cut.string(), false, 1.0f, 0.0f, "--environment");
+        FAIL() << "a corrupt .exr was read";
+    } catch (const rhi::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(cut.string()), std::string::npos) << e.what();
+    }
+    std::filesystem::remove(path);
+    std::filesystem::remove(cut);
 }
 
 } // namespace

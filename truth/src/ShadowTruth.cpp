@@ -28,7 +28,7 @@ float directionalTexel(const shadows::DirectionalShadowPlan& plan, std::uint32_t
     if (index >= plan.shadowSlots.size() || plan.shadowSlots[index] < 0)
         return 0.0f;
     const auto& cascades = plan.lights[static_cast<std::size_t>(plan.shadowSlots[index])].cascades;
-    if (plan.uniforms.cascadeProjection == shadows::CascadeProjection::Close) {
+    if (plan.uniforms.cascadeProjection != shadows::CascadeProjection::Stable) {
         // The band of the point's view depth, as the lit shader selects it.
         const float viewDepth = glm::dot(position - camera.position, camera.forward);
         const std::uint32_t cascade = shadows::selectCascade(plan.uniforms, position, viewDepth).index;

@@ -1,5 +1,6 @@
 #include "VulkanCommandList.hpp"
 
+#include "VulkanBindingSet.hpp"
 #include "VulkanCheck.hpp"
 #include "VulkanFormats.hpp"
 #include "VulkanPipeline.hpp"
@@ -152,40 +153,67 @@ void VulkanCommandList::apiBindIndexBuffer(const rhi::Buffer& buffer, rhi::Index
     vkCmdBindIndexBuffer(commands_, handle, offset, toVkIndexType(type));
 }
 
+void VulkanCommandList::bindSingle(const rhi::BindingSetItem& item, std::string_view what)
+{
+    const Descriptor descriptor = describe(item, what);
+    descriptors_.set(item.binding, descriptor);
+    computeDescriptors_.set(item.binding, descriptor);
+}
+
+namespace {
+
+// Dynamic offsets are 32-bit (vkCmdBindDescriptorSets' pDynamicOffsets).
+void checkDynamicOffset(std::string_view what, std::uint64_t offset)
+{
+    if (offset > UINT32_MAX)
+        throw rhi::UnsupportedError(fmt::format("{}: offset {} exceeds Vulkan's 32-bit dynamic offsets", what, offset));
+}
+
+} // namespace
+
 void VulkanCommandList::apiBindUniformBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
                                              std::uint64_t size)
 {
-    const auto& vk = vulkanObject<const VulkanBuffer>(buffer, "bindUniformBuffer: the buffer");
-    // Dynamic offsets are 32-bit (VkCmdBindDescriptorSets' pDynamicOffsets).
-    if (offset > UINT32_MAX)
-        throw rhi::UnsupportedError(
-            fmt::format("bindUniformBuffer: offset {} exceeds Vulkan's 32-bit dynamic offsets", offset));
-    descriptors_.setUniformBuffer(binding, vk.handle(), std::uint32_t(offset), size);
-    computeDescriptors_.setUniformBuffer(binding, vk.handle(), std::uint32_t(offset), size);
+    checkDynamicOffset("bindUniformBuffer", offset);
+    bindSingle(rhi::BindingSetItem::uniformBuffer(binding, buffer, offset, size), "bindUniformBuffer");
 }
 
 void VulkanCommandList::apiBindStorageBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
                                              std::uint64_t size)
 {
-    const VkBuffer handle = vulkanObject<const VulkanBuffer>(buffer, "bindStorageBuffer: the buffer").handle();
-    descriptors_.setStorageBuffer(binding, handle, offset, size);
-    computeDescriptors_.setStorageBuffer(binding, handle, offset, size);
+    bindSingle(rhi::BindingSetItem::storageBuffer(binding, buffer, offset, size), "bindStorageBuffer");
 }
 
 void VulkanCommandList::apiBindStorageTexture(std::uint32_t binding, const rhi::Texture& texture, std::uint32_t level)
 {
-    const VkImageView view =
-        vulkanObject<const VulkanTexture>(texture, "bindStorageTexture: the texture").storageView(level);
-    descriptors_.setStorageImage(binding, view);
-    computeDescriptors_.setStorageImage(binding, view);
+    bindSingle(rhi::BindingSetItem::storageTexture(binding, texture, level), "bindStorageTexture");
 }
 
 void VulkanCommandList::apiBindTexture(std::uint32_t binding, const rhi::Texture& texture, const rhi::Sampler& sampler)
 {
-    const auto& vkTexture = vulkanObject<const VulkanTexture>(texture, "bindTexture: the texture");
-    const auto& vkSampler = vulkanObject<const VulkanSampler>(sampler, "bindTexture: the sampler");
-    descriptors_.setTexture(binding, vkTexture.sampledView(), vkSampler.handle(), vkTexture.restingLayout());
-    computeDescriptors_.setTexture(binding, vkTexture.sampledView(), vkSampler.handle(), vkTexture.restingLayout());
+    bindSingle(rhi::BindingSetItem::sampledTexture(binding, texture, sampler), "bindTexture");
+}
+
+void VulkanCommandList::apiBindBindingSet(const rhi::BindingSet& set)
+{
+    const auto& vk = vulkanObject<const VulkanBindingSet>(set, "bindBindingSet: the set");
+    // A pipeline that does not list the set's layout binds its uniform ranges per draw, with dynamic offsets.
+    for (const rhi::BindingSetItem& item : set.items())
+        if (item.kind == rhi::BindingKind::UniformBuffer)
+            checkDynamicOffset("bindBindingSet", item.offset);
+    descriptors_.setBindingSet(vk);
+    computeDescriptors_.setBindingSet(vk);
+}
+
+DescriptorCounts VulkanCommandList::descriptorCounts() const
+{
+    DescriptorCounts sum;
+    for (const DescriptorBinder* binder : {&descriptors_, &computeDescriptors_}) {
+        sum.bindCalls += binder->counts().bindCalls;
+        sum.bindingSetBinds += binder->counts().bindingSetBinds;
+        sum.setsWritten += binder->counts().setsWritten;
+    }
+    return sum;
 }
 
 void VulkanCommandList::apiDraw(std::uint32_t vertexCount, std::uint32_t instanceCount, std::uint32_t firstVertex,

@@ -23,6 +23,8 @@ public:
     // Ends recording, runs the prologue and the commands, waits, and begins recording anew.
     void submit();
     VkCommandBuffer commandBuffer() const { return commands_; }
+    // Both bind points' (penumbra/vulkan/Native.hpp), since the list was created.
+    DescriptorCounts descriptorCounts() const;
 
 private:
     void apiBeginPass(const rhi::PassDesc& pass) override;
@@ -39,6 +41,7 @@ private:
     void apiBindStorageBuffer(std::uint32_t binding, const rhi::Buffer& buffer, std::uint64_t offset,
                               std::uint64_t size) override;
     void apiBindStorageTexture(std::uint32_t binding, const rhi::Texture& texture, std::uint32_t level) override;
+    void apiBindBindingSet(const rhi::BindingSet& set) override;
     void apiBindComputePipeline(const rhi::ComputePipeline& pipeline) override;
     void apiDispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z) override;
     void apiDispatchIndirect(const rhi::Buffer& buffer, std::uint64_t offset) override;
@@ -67,6 +70,8 @@ private:
 
     void begin();
     void beginPrologue();
+    // A single bind call's resource, for both bind points.
+    void bindSingle(const rhi::BindingSetItem& item, std::string_view what);
     // Both count draws: the device's own, or the emulation (DrawCountEmulation), which suspends the pass.
     void drawCount(const rhi::Buffer& buffer, std::uint64_t offset, const rhi::Buffer& count, std::uint64_t countOffset,
                    std::uint32_t maxDrawCount, bool indexed);

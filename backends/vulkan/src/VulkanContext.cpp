@@ -2,7 +2,7 @@
 
 #include "VulkanCheck.hpp"
 #include "VulkanFormats.hpp"
-#include "VulkanPipeline.hpp"
+#include "VulkanLayouts.hpp"
 #include "VulkanRenderPass.hpp"
 #include "VulkanSwapchain.hpp"
 

@@ -1,5 +1,6 @@
 #include "VulkanDevice.hpp"
 
+#include "VulkanBindingSet.hpp"
 #include "VulkanCheck.hpp"
 #include "VulkanCommandList.hpp"
 #include "VulkanPipeline.hpp"
@@ -56,6 +57,11 @@ std::unique_ptr<rhi::Pipeline> VulkanDevice::apiCreatePipeline(const rhi::Pipeli
 std::unique_ptr<rhi::ComputePipeline> VulkanDevice::apiCreateComputePipeline(const rhi::ComputePipelineDesc& desc)
 {
     return std::make_unique<VulkanComputePipeline>(context_, desc);
+}
+
+std::unique_ptr<rhi::BindingSet> VulkanDevice::apiCreateBindingSet(const rhi::BindingSetDesc& desc)
+{
+    return std::make_unique<VulkanBindingSet>(context_, desc);
 }
 
 std::unique_ptr<rhi::Framebuffer> VulkanDevice::apiCreateFramebuffer(const rhi::FramebufferDesc& desc)

@@ -38,6 +38,7 @@ private:
     std::unique_ptr<rhi::Shader> apiCreateShader(rhi::CompiledShader compiled) override;
     std::unique_ptr<rhi::Pipeline> apiCreatePipeline(const rhi::PipelineDesc& desc) override;
     std::unique_ptr<rhi::ComputePipeline> apiCreateComputePipeline(const rhi::ComputePipelineDesc& desc) override;
+    std::unique_ptr<rhi::BindingSet> apiCreateBindingSet(const rhi::BindingSetDesc& desc) override;
     std::unique_ptr<rhi::Framebuffer> apiCreateFramebuffer(const rhi::FramebufferDesc& desc) override;
     std::unique_ptr<rhi::TimestampQueries> apiCreateTimestampQueries(std::uint32_t count) override;
     void apiSubmit(rhi::CommandList& commands) override;

@@ -80,9 +80,13 @@ VkBuffer DrawCountEmulation::patch(VkCommandBuffer commands, const VulkanBuffer&
                   VK_ACCESS_SHADER_READ_BIT);
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->handle());
     descriptors_.setPipeline(pipeline_->descriptors());
-    descriptors_.setStorageBuffer(0, arguments.handle(), 0, arguments.desc().size);
-    descriptors_.setStorageBuffer(1, count.handle(), 0, count.desc().size);
-    descriptors_.setStorageBuffer(2, patched.handle(), 0, patched.desc().size);
+    descriptors_.set(0, {.kind = rhi::BindingKind::StorageBuffer,
+                         .buffer = arguments.handle(),
+                         .size = arguments.desc().size});
+    descriptors_.set(1, {.kind = rhi::BindingKind::StorageBuffer, .buffer = count.handle(), .size = count.desc().size});
+    descriptors_.set(2, {.kind = rhi::BindingKind::StorageBuffer,
+                         .buffer = patched.handle(),
+                         .size = patched.desc().size});
     descriptors_.rebind();
     descriptors_.flush(commands);
     vkCmdDispatch(commands, (maxDrawCount + workgroupSize - 1) / workgroupSize, 1, 1);

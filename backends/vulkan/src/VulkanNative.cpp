@@ -23,13 +23,13 @@ VkBuffer native(const rhi::Buffer& buffer)
 NativePipeline native(const rhi::Pipeline& pipeline)
 {
     const auto& vk = vulkanObject<const VulkanPipeline>(pipeline, "native: the pipeline");
-    return {vk.handle(), vk.layout().layout, vk.layout().setLayout, vk.renderPass()};
+    return {vk.handle(), vk.descriptors().layout, vk.descriptors().drawLayout, vk.renderPass()};
 }
 
 NativePipeline native(const rhi::ComputePipeline& pipeline)
 {
     const auto& vk = vulkanObject<const VulkanComputePipeline>(pipeline, "native: the compute pipeline");
-    return {vk.handle(), vk.descriptors().layout.layout, vk.descriptors().layout.setLayout, VK_NULL_HANDLE};
+    return {vk.handle(), vk.descriptors().layout, vk.descriptors().drawLayout, VK_NULL_HANDLE};
 }
 
 NativeFramebuffer native(const rhi::Framebuffer& framebuffer)
@@ -52,6 +52,11 @@ VkSampler native(const rhi::Sampler& sampler)
 VkCommandBuffer native(const rhi::CommandList& commands)
 {
     return vulkanObject<const VulkanCommandList>(commands, "native: the command list").commandBuffer();
+}
+
+DescriptorCounts descriptorCounts(const rhi::CommandList& commands)
+{
+    return vulkanObject<const VulkanCommandList>(commands, "descriptorCounts: the command list").descriptorCounts();
 }
 
 } // namespace penumbra::vulkan

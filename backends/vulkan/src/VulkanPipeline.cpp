@@ -3,6 +3,7 @@
 #include "VulkanCheck.hpp"
 #include "VulkanFormats.hpp"
 #include "VulkanRenderPass.hpp"
+#include "VulkanSpirvSets.hpp"
 
 #include "penumbra/rhi/BackendSupport.hpp"
 #include "penumbra/rhi/Error.hpp"
@@ -11,35 +12,6 @@
 #include <fmt/format.h>
 
 namespace penumbra::vulkan {
-namespace {
-
-} // namespace
-
-VkDescriptorType descriptorType(rhi::BindingKind kind)
-{
-    switch (kind) {
-    case rhi::BindingKind::UniformBuffer:
-        // Dynamic uniform buffers: a per-draw offset is a dynamic offset, not a new descriptor set.
-        return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
-    case rhi::BindingKind::SampledTexture:
-        return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    case rhi::BindingKind::StorageBuffer:
-        return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    case rhi::BindingKind::StorageTexture:
-        break;
-    }
-    return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-}
-
-std::vector<std::uint32_t> uniformBindingsOf(const std::vector<rhi::ShaderBinding>& bindings)
-{
-    std::vector<std::uint32_t> uniforms;
-    for (const rhi::ShaderBinding& b : bindings)
-        if (b.kind == rhi::BindingKind::UniformBuffer)
-            uniforms.push_back(b.binding);
-    return uniforms;
-}
-
 namespace {
 
 const VulkanShader& vulkanShader(const rhi::Shader* shader, const rhi::PipelineDesc& desc)
@@ -51,12 +23,30 @@ const VulkanShader& vulkanShader(const rhi::Shader* shader, const rhi::PipelineD
     return *vk;
 }
 
-void checkUniformCount(const VkPhysicalDeviceLimits& limits, const std::string& pipeline, std::size_t count)
-{
-    if (count > limits.maxDescriptorSetUniformBuffersDynamic)
-        throw rhi::UnsupportedError(fmt::format("pipeline '{}': {} uniform blocks, but the device binds at most {}",
-                                                pipeline, count, limits.maxDescriptorSetUniformBuffersDynamic));
-}
+// A stage's shader module for a pipeline: the shader's own, or with binding set layouts one whose resources are moved
+// to their sets (assignDescriptorSets), kept until the pipeline is created.
+class StageModule {
+public:
+    StageModule(const Context& context, const VulkanShader& shader, const DescriptorLayout& layout)
+        : module_(shader.module())
+    {
+        if (layout.sets.empty())
+            return;
+        const std::vector<std::uint32_t> spirv = assignDescriptorSets(shader.compiled(), layout);
+        VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        info.codeSize = spirv.size() * sizeof(std::uint32_t);
+        info.pCode = spirv.data();
+        placed_ = createOwned<UniqueShaderModule>(context.device, vkCreateShaderModule, info,
+                                                  fmt::format("vkCreateShaderModule ({})", shader.compiled().name));
+        module_ = placed_.get();
+    }
+
+    VkShaderModule module() const { return module_; }
+
+private:
+    UniqueShaderModule placed_;
+    VkShaderModule module_;
+};
 
 RenderPassKey compatibleRenderPass(const rhi::PipelineDesc& desc)
 {
@@ -98,54 +88,24 @@ VulkanShader::VulkanShader(std::shared_ptr<Context> context, rhi::CompiledShader
     context_->setName(VK_OBJECT_TYPE_SHADER_MODULE, module_.get(), compiled_.name);
 }
 
-PipelineLayout LayoutCache::get(const std::vector<rhi::ShaderBinding>& bindings, VkShaderStageFlags stages)
-{
-    std::vector<std::uint32_t> key{stages};
-    for (const rhi::ShaderBinding& b : bindings)
-        key.insert(key.end(), {b.binding, std::uint32_t(b.kind)});
-    std::lock_guard lock(mutex_);
-    auto found = layouts_.find(key);
-    if (found == layouts_.end())
-        found = layouts_.emplace(std::move(key), create(bindings, stages)).first;
-    return {found->second.setLayout.get(), found->second.layout.get()};
-}
-
-LayoutCache::Entry LayoutCache::create(const std::vector<rhi::ShaderBinding>& bindings, VkShaderStageFlags stages) const
-{
-    std::vector<VkDescriptorSetLayoutBinding> vkBindings;
-    for (const rhi::ShaderBinding& b : bindings)
-        vkBindings.push_back({b.binding, descriptorType(b.kind), 1, stages, nullptr});
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = std::uint32_t(vkBindings.size());
-    setInfo.pBindings = vkBindings.data();
-    Entry result;
-    result.setLayout = createOwned<UniqueDescriptorSetLayout>(device_, vkCreateDescriptorSetLayout, setInfo,
-                                                              "vkCreateDescriptorSetLayout");
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = result.setLayout.address();
-    result.layout =
-        createOwned<UniquePipelineLayout>(device_, vkCreatePipelineLayout, layoutInfo, "vkCreatePipelineLayout");
-    return result;
-}
-
 VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::PipelineDesc& desc)
     : context_(std::move(context)), desc_(desc)
 {
     bindings_ = rhi::pipelineBindings(desc);
-    const std::vector<std::uint32_t> uniforms = uniformBindingsOf(bindings_);
-    checkUniformCount(context_->properties.limits, desc.debugName, uniforms.size());
     signedBias_ = rhi::signedDepthBias(context_->conventions, desc.depth.bias);
-    layout_ = context_->layouts().get(bindings_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
-    descriptors_ = {&bindings_, uniforms, layout_, VK_PIPELINE_BIND_POINT_GRAPHICS};
+    descriptors_ =
+        describeDescriptors(*context_, desc.debugName, bindings_, desc.bindingSetLayouts,
+                            VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, VK_PIPELINE_BIND_POINT_GRAPHICS);
     const RenderPassKey passKey = compatibleRenderPass(desc);
     renderPass_ = context_->renderPasses().get(passKey);
 
+    const StageModule vertex(*context_, vulkanShader(desc.vertex, desc), descriptors_);
+    const StageModule fragment(*context_, vulkanShader(desc.fragment, desc), descriptors_);
     const std::array<VkPipelineShaderStageCreateInfo, 2> stages{{
-        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT,
-         vulkanShader(desc.vertex, desc).module(), "main", nullptr},
+        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT, vertex.module(),
+         "main", nullptr},
         {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
-         vulkanShader(desc.fragment, desc).module(), "main", nullptr},
+         fragment.module(), "main", nullptr},
     }};
 
     std::vector<VkVertexInputBindingDescription> vertexBindings;
@@ -212,7 +172,7 @@ VulkanPipeline::VulkanPipeline(std::shared_ptr<Context> context, const rhi::Pipe
     info.pDepthStencilState = desc.depthFormat ? &depth : nullptr;
     info.pColorBlendState = &blend;
     info.pDynamicState = &dynamic;
-    info.layout = layout_.layout;
+    info.layout = descriptors_.layout;
     info.renderPass = renderPass_;
     VkPipeline pipeline = VK_NULL_HANDLE;
     check(vkCreateGraphicsPipelines(context_->device, context_->pipelineCache, 1, &info, nullptr, &pipeline),
@@ -228,19 +188,18 @@ VulkanComputePipeline::VulkanComputePipeline(std::shared_ptr<Context> context, c
     if (!shader)
         throw rhi::Error(fmt::format("compute pipeline '{}': shader '{}' was not created by a Vulkan device",
                                      desc.debugName, desc.compute->compiled().name));
-    std::vector<std::uint32_t> uniforms = uniformBindingsOf(bindings());
-    checkUniformCount(context_->properties.limits, desc.debugName, uniforms.size());
-    const PipelineLayout layout = context_->layouts().get(bindings(), VK_SHADER_STAGE_COMPUTE_BIT);
-    descriptors_ = {&bindings(), std::move(uniforms), layout, VK_PIPELINE_BIND_POINT_COMPUTE};
+    descriptors_ = describeDescriptors(*context_, desc.debugName, bindings(), desc.bindingSetLayouts,
+                                       VK_SHADER_STAGE_COMPUTE_BIT, VK_PIPELINE_BIND_POINT_COMPUTE);
+    const StageModule compute(*context_, *shader, descriptors_);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                   nullptr,
                   0,
                   VK_SHADER_STAGE_COMPUTE_BIT,
-                  shader->module(),
+                  compute.module(),
                   "main",
                   nullptr};
-    info.layout = layout.layout;
+    info.layout = descriptors_.layout;
     VkPipeline pipeline = VK_NULL_HANDLE;
     check(vkCreateComputePipelines(context_->device, context_->pipelineCache, 1, &info, nullptr, &pipeline),
           fmt::format("vkCreateComputePipelines ('{}')", desc.debugName));

@@ -1,12 +1,11 @@
 #pragma once
 
 #include "VulkanContext.hpp"
+#include "VulkanLayouts.hpp"
 
 #include "penumbra/rhi/Pipeline.hpp"
 #include "penumbra/rhi/Shader.hpp"
 
-#include <map>
-#include <mutex>
 #include <vector>
 #include <vulkan/vulkan.h>
 
@@ -25,46 +24,6 @@ private:
     UniqueShaderModule module_;
 };
 
-// A layout as pipelines and descriptor sets use it; LayoutCache owns the handles.
-struct PipelineLayout {
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-};
-
-// One descriptor-set layout and pipeline layout per distinct binding list and stages. Pipelines with the same
-// bindings share them, so switching between such pipelines keeps the bound descriptor set valid.
-class LayoutCache {
-public:
-    explicit LayoutCache(VkDevice device) : device_(device) {}
-
-    PipelineLayout get(const std::vector<rhi::ShaderBinding>& bindings, VkShaderStageFlags stages);
-
-private:
-    struct Entry {
-        UniqueDescriptorSetLayout setLayout;
-        UniquePipelineLayout layout; // after setLayout: destroyed before it
-    };
-    Entry create(const std::vector<rhi::ShaderBinding>& bindings, VkShaderStageFlags stages) const;
-
-    VkDevice device_;
-    std::mutex mutex_;
-    std::map<std::vector<std::uint32_t>, Entry> layouts_;
-};
-
-// What DescriptorBinder needs of a graphics or compute pipeline.
-struct DescriptorLayout {
-    const std::vector<rhi::ShaderBinding>* bindings = nullptr; // sorted by number
-    std::vector<std::uint32_t> uniformBindings; // uniform blocks, in the order of their dynamic offsets
-    PipelineLayout layout;
-    VkPipelineBindPoint bindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-};
-
-// The descriptor type of a binding kind.
-VkDescriptorType descriptorType(rhi::BindingKind kind);
-
-// Binding numbers of the uniform blocks among `bindings`, in order.
-std::vector<std::uint32_t> uniformBindingsOf(const std::vector<rhi::ShaderBinding>& bindings);
-
 class VulkanPipeline final : public rhi::Pipeline {
 public:
     VulkanPipeline(std::shared_ptr<Context> context, const rhi::PipelineDesc& desc);
@@ -72,8 +31,7 @@ public:
     const rhi::PipelineDesc& desc() const override { return desc_; }
 
     VkPipeline handle() const { return pipeline_.get(); }
-    const PipelineLayout& layout() const { return layout_; }
-    // Every binding both stages declare, sorted by number: the descriptor set's contents.
+    // Every binding both stages declare, sorted by number.
     const std::vector<rhi::ShaderBinding>& bindings() const override { return bindings_; }
     const DescriptorLayout& descriptors() const { return descriptors_; }
     // The desc's bias with the sign the conventions give it.
@@ -86,7 +44,6 @@ private:
     rhi::PipelineDesc desc_;
     std::vector<rhi::ShaderBinding> bindings_;
     rhi::DepthBias signedBias_;
-    PipelineLayout layout_;
     DescriptorLayout descriptors_;
     VkRenderPass renderPass_ = VK_NULL_HANDLE;
     UniquePipeline pipeline_;

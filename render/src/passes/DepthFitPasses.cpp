@@ -36,7 +36,8 @@ bool DepthReductionPass::setup(FramePassBuilder& builder)
 
 void DepthReductionPass::execute(const FramePassContext& context)
 {
-    reduction_->record(context.commands(), context.texture(frame::kLitDepth));
+    reduction_->record(context.commands(), context.texture(frame::kLitDepth), state_.litFrameUniforms,
+                       state_.depthFitLights, state_.depthFitShadowFar);
 }
 
 } // namespace penumbra::render

@@ -2,30 +2,51 @@
 
 #include "penumbra/rhi/UniformLayout.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/LightBasis.hpp"
 
 #include <algorithm>
-#include <cstdint>
+#include <cstddef>
 #include <cstring>
+#include <glm/matrix.hpp>
 #include <span>
 
 namespace penumbra::render {
 namespace {
 
-// The storage block of depth_reduction.comp.
-struct DepthBounds {
-    std::uint32_t nearest;
-    std::uint32_t farthest;
+constexpr std::uint32_t kLights = shadows::maxShadowedDirectionalLights;
+
+// One bin of the storage block DepthHistogram (std430): the count, then per light the ordered bits of the
+// footprint's min x, min y, max x, max y.
+struct GpuBin {
+    std::uint32_t count;
+    std::array<std::uint32_t, 4 * kLights> footprints;
 };
 
-// What the buffer holds before the dispatch: nothing drawn.
-constexpr DepthBounds kEmpty{0xffffffffu, 0u};
+// The storage block DepthHistogram.
+struct GpuHistogram {
+    std::array<GpuBin, shadows::kDepthHistogramBins> bins;
+};
+
 constexpr std::uint32_t kGroupSize = 16; // the shader's local_size_x and _y
 
-float windowDepthOf(std::uint32_t bits)
+// What the buffer holds before the dispatch: no samples, every footprint empty (min above max).
+GpuHistogram emptyHistogram()
 {
-    float depth = 0.0f;
-    std::memcpy(&depth, &bits, sizeof depth);
-    return depth;
+    GpuBin empty{};
+    for (std::uint32_t k = 0; k < empty.footprints.size(); ++k)
+        empty.footprints[k] = k % 4 < 2 ? 0xffffffffu : 0u;
+    GpuHistogram histogram;
+    histogram.bins.fill(empty);
+    return histogram;
+}
+
+// depth_reduction.comp's orderedBits undone.
+float fromOrderedBits(std::uint32_t bits)
+{
+    const std::uint32_t u = (bits & 0x80000000u) != 0 ? bits & 0x7fffffffu : ~bits;
+    float f = 0.0f;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
 }
 
 } // namespace
@@ -33,45 +54,91 @@ float windowDepthOf(std::uint32_t bits)
 DepthReduction::DepthReduction(rhi::Device& device)
 {
     const auto clear = static_cast<std::int64_t>(device.conventions().clearDepth());
-    const std::unique_ptr<rhi::Shader> shader =
-        device.createShader(shaders::load("depth_reduction.comp", {{"CLEAR_DEPTH", clear}}));
-    pipeline_ = device.createComputePipeline({.compute = shader.get(),
-                                              .storageLayouts = {{"DepthBounds",
-                                                                  sizeof(DepthBounds),
-                                                                  {PENUMBRA_UNIFORM_MEMBER(DepthBounds, nearest),
-                                                                   PENUMBRA_UNIFORM_MEMBER(DepthBounds, farthest)}}},
-                                              .debugName = "depth reduction"});
+    const std::unique_ptr<rhi::Shader> shader = device.createShader(
+        shaders::load("depth_reduction.comp", {{"CLEAR_DEPTH", clear},
+                                               {"BINS", shadows::kDepthHistogramBins},
+                                               {"STEPS_PER_OCTAVE", shadows::kDepthHistogramStepsPerOctave},
+                                               {"LIGHTS", kLights}}));
+    pipeline_ = device.createComputePipeline(
+        {.compute = shader.get(),
+         .uniformLayouts = {{"DepthHistogramFrame",
+                             sizeof(DepthHistogramFrame),
+                             {PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, clipToWorld),
+                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, cameraPosition),
+                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, cameraForward),
+                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, lightRight),
+                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, lightUp),
+                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, targetSize),
+                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, shadowFar),
+                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, firstOctave),
+                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, lightCount)}}},
+         .storageLayouts = {{"DepthHistogram",
+                             sizeof(GpuHistogram),
+                             {PENUMBRA_UNIFORM_MEMBER(GpuHistogram, bins),
+                              {"bins.count", std::uint32_t(offsetof(GpuBin, count)), sizeof(GpuBin::count)},
+                              {"bins.footprints", std::uint32_t(offsetof(GpuBin, footprints)),
+                               sizeof(GpuBin::footprints)}}}},
+         .debugName = "depth reduction"});
     sampler_ = device.createSampler(
         {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "depth reduction"});
-    bounds_ = device.createBuffer(
-        {.size = sizeof(DepthBounds), .usage = rhi::BufferUsage::Storage, .debugName = "depth reduction bounds"});
+    bins_ = device.createBuffer(
+        {.size = sizeof(GpuHistogram), .usage = rhi::BufferUsage::Storage, .debugName = "depth reduction histogram"});
+    frame_ = device.createBuffer({.size = sizeof(DepthHistogramFrame),
+                                  .usage = rhi::BufferUsage::Uniform,
+                                  .debugName = "depth reduction frame"});
 }
 
-void DepthReduction::record(rhi::CommandList& commands, const rhi::Texture& depth)
+void DepthReduction::record(rhi::CommandList& commands, const rhi::Texture& depth, const LitFrameUniforms& frame,
+                            std::span<const glm::vec3> lights, float shadowFar)
 {
-    bounds_->writeObject(kEmpty);
+    const rhi::TextureDesc& size = depth.desc();
+    DepthHistogramFrame block;
+    // Inverted in double, as the screen-space collection's: the positions lose no more than the depth's precision.
+    block.clipToWorld = glm::mat4(glm::inverse(glm::dmat4(frame.viewProjection)));
+    block.cameraPosition = frame.cameraPosition;
+    block.cameraForward = frame.cameraForward;
+    lights_.assign(lights.begin(), lights.begin() + std::min<std::size_t>(lights.size(), kLights));
+    for (std::size_t l = 0; l < lights_.size(); ++l) {
+        const shadows::LightBasis basis = shadows::lightBasis(lights_[l]);
+        block.lightRight[l] = glm::vec4(basis.right, 0.0f);
+        block.lightUp[l] = glm::vec4(basis.up, 0.0f);
+    }
+    block.targetSize = glm::vec4(static_cast<float>(size.width), static_cast<float>(size.height), 0.0f, 0.0f);
+    block.shadowFar = shadowFar;
+    firstOctave_ = shadows::depthHistogramFirstOctave(shadowFar);
+    block.firstOctave = firstOctave_;
+    block.lightCount = static_cast<std::int32_t>(lights_.size());
+    frame_->writeObject(block);
+    bins_->writeObject(emptyHistogram());
     commands.bindComputePipeline(*pipeline_);
     commands.bindTexture(0, depth, *sampler_);
-    commands.bindStorageBuffer(1, *bounds_, 0, sizeof(DepthBounds));
-    const rhi::TextureDesc& size = depth.desc();
+    commands.bindStorageBuffer(1, *bins_, 0, bins_->desc().size);
+    commands.bindUniformBuffer(2, *frame_, 0, sizeof(DepthHistogramFrame));
     commands.dispatch((size.width + kGroupSize - 1) / kGroupSize, (size.height + kGroupSize - 1) / kGroupSize);
     recorded_ = true;
 }
 
-std::optional<shadows::ViewDepthRange> DepthReduction::read(const rhi::Conventions& conventions,
-                                                            const glm::mat4& projection)
+std::optional<shadows::DepthHistogram> DepthReduction::read()
 {
     if (!recorded_)
         return std::nullopt;
     recorded_ = false;
-    DepthBounds bounds{};
-    bounds_->read(0, std::as_writable_bytes(std::span(&bounds, 1)));
-    if (bounds.nearest > bounds.farthest)
-        return std::nullopt;
-    // Reversed Z stores the nearest surface at the larger depth: order the two by view depth.
-    const float a = conventions.viewDepth(projection, windowDepthOf(bounds.nearest));
-    const float b = conventions.viewDepth(projection, windowDepthOf(bounds.farthest));
-    return shadows::ViewDepthRange{std::min(a, b), std::max(a, b)};
+    GpuHistogram gpuHistogram{};
+    bins_->read(0, std::as_writable_bytes(std::span(&gpuHistogram, 1)));
+    shadows::DepthHistogram histogram;
+    histogram.firstOctave = firstOctave_;
+    histogram.lightDirections = lights_;
+    for (const GpuBin& gpu : gpuHistogram.bins) {
+        shadows::DepthHistogramBin bin;
+        bin.count = gpu.count;
+        // Footprints of lights not measured keep DepthHistogramBin's zeros (the planner reads the measured ones).
+        for (std::size_t l = 0; l < lights_.size() && bin.count > 0; ++l)
+            bin.footprints[l] = {fromOrderedBits(gpu.footprints[4 * l]), fromOrderedBits(gpu.footprints[4 * l + 1]),
+                                 fromOrderedBits(gpu.footprints[4 * l + 2]),
+                                 fromOrderedBits(gpu.footprints[4 * l + 3])};
+        histogram.bins.push_back(bin);
+    }
+    return histogram;
 }
 
 } // namespace penumbra::render

@@ -1,31 +1,55 @@
 #pragma once
 
+#include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/shadows/DepthFit.hpp"
 
+#include <array>
+#include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace penumbra::render {
 
-// The depth fit's reduction (shaders/depth_reduction.comp): the nearest and farthest depth of the pixels a
-// single-sampled depth texture holds, into a two-word storage buffer. The renderer reads it after the frame's
-// submission (which already waits for the GPU), so the next frame plans with it and none waits for it.
+// The block DepthHistogramFrame of shaders/depth_reduction.comp, std140: how a pixel becomes a world position, view
+// depth and light-space x, y.
+struct DepthHistogramFrame {
+    glm::mat4 clipToWorld{1.0f};
+    glm::vec4 cameraPosition{0.0f};
+    glm::vec4 cameraForward{0.0f};
+    std::array<glm::vec4, shadows::maxShadowedDirectionalLights> lightRight{};
+    std::array<glm::vec4, shadows::maxShadowedDirectionalLights> lightUp{};
+    glm::vec4 targetSize{0.0f}; // width, height in pixels
+    float shadowFar = 0.0f; // samples at or past it are not counted
+    std::int32_t firstOctave = 0; // shadows::depthHistogramFirstOctave(shadowFar)
+    std::int32_t lightCount = 0;
+};
+
+// The depth fit's reduction (shaders/depth_reduction.comp): the histogram of the view depths of the pixels a
+// single-sampled depth texture holds, with each bin's light-space footprint per shadowed directional light
+// (shadows::DepthHistogram), into a storage buffer. The renderer reads it after the frame's submission (which already
+// waits for the GPU), so the next frame plans with it and none waits for it.
 class DepthReduction {
 public:
     explicit DepthReduction(rhi::Device& device);
 
-    // Resets the buffer and records the dispatch over `depth` (single-sampled, sampled, the frame's lit depth).
-    void record(rhi::CommandList& commands, const rhi::Texture& depth);
-    // After the submission: the view depths of the nearest and farthest pixel drawn, through the frame's `projection`;
-    // nullopt where no pixel was drawn or nothing was recorded since the last read.
-    std::optional<shadows::ViewDepthRange> read(const rhi::Conventions& conventions, const glm::mat4& projection);
+    // Resets the buffer and records the dispatch over `depth` (single-sampled, sampled, the frame's lit depth) seen
+    // through `frame`'s view (its view-projection, camera position and forward), for the shadowed directional lights
+    // `lights` (directions, in slot order; at most maxShadowedDirectionalLights) up to view depth shadowFar.
+    void record(rhi::CommandList& commands, const rhi::Texture& depth, const LitFrameUniforms& frame,
+                std::span<const glm::vec3> lights, float shadowFar);
+    // After the submission: the histogram; nullopt where nothing was recorded since the last read.
+    std::optional<shadows::DepthHistogram> read();
 
 private:
     std::unique_ptr<rhi::ComputePipeline> pipeline_;
     std::unique_ptr<rhi::Sampler> sampler_;
-    std::unique_ptr<rhi::Buffer> bounds_;
+    std::unique_ptr<rhi::Buffer> bins_;
+    std::unique_ptr<rhi::Buffer> frame_;
+    int firstOctave_ = 0;
+    std::vector<glm::vec3> lights_;
     bool recorded_ = false;
 };
 

@@ -6,6 +6,7 @@
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Device.hpp"
+#include "penumbra/shadows/GpuCasterCulling.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
 #include <memory>
@@ -14,6 +15,7 @@
 
 namespace penumbra::render {
 
+class ContactShadowPass;
 class EnvironmentMaps;
 class LocalLightTextures;
 class StaticShadowCache;
@@ -60,9 +62,18 @@ struct FrameState {
     const EnvironmentMaps* environment = nullptr; // the lit pass's image-based lighting textures
     const LocalLightTextures* localLights = nullptr; // the lit pass's and its views' spot and point lights
     SplitTiles staticTiles; // empty unless the realtime atlases draw dynamic casters only
+    // ShadowSettings::culling gpu (culledOnGpu): the culling pass's results, which the atlas passes draw; the local
+    // atlas's tiles follow the directional ones, from culledLocalTile.
+    shadows::GpuCasterCulling* culling = nullptr;
+    std::uint32_t culledLocalTile = 0;
     bool screenSpace = false; // directional shadows collected in screen space
     bool multisampled = false;
     bool depthFit = false; // directional.projection depthFit: the lit depth is reduced for the next frame's plan
+    bool contact = false; // shadows.contact: the lit pass takes the contact shadow texture's minimum
+    const ContactShadowPass* contactShadows = nullptr; // its texture, with `contact`
+    rhi::UniformSlice contactUniforms; // the contact march's block (ContactShadowUniforms)
+    std::vector<glm::vec3> depthFitLights; // depth fit: the plan's shadowed directional lights, in slot order
+    float depthFitShadowFar = 0.0f; // depth fit: min(shadow distance, camera far), where the histogram ends
     rhi::UniformArena* uniforms = nullptr; // this frame's blocks
     LitFrameUniforms litFrameUniforms; // the lit view's Frame block
     rhi::UniformSlice litFrame; // litFrameUniforms, pushed

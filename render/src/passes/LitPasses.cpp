@@ -2,6 +2,7 @@
 
 #include "../EnvironmentMaps.hpp"
 #include "../LocalLightTextures.hpp"
+#include "ContactShadowPass.hpp"
 #include "LitPipelines.hpp"
 #include "ScreenSpaceShadowPass.hpp"
 
@@ -16,10 +17,12 @@ constexpr glm::vec4 kUndecided{1.0f, 1.0f, 1.0f, 0.0f}; // the visibility view w
 
 // The frame's lit draws into `target`: after the depth prepass (features.depthPrepassed) the opaque objects are
 // drawn with an equal depth test into the prepass's depth; otherwise the target's depth is cleared. Each draw takes
-// `features` with its material's maps. Returns the draws issued.
+// `features` with its material's maps; `pixelDepth` is the single-sampled lit depth where a multisampled pass reads
+// it (pixel_surface.glsl). Returns the draws issued.
 std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer& target, LitPipelines& pipelines,
                              const rhi::UniformSlice& frameSlice, const LitShaderFeatures& features,
-                             const FrameState& state, const GpuScene& gpuScene, const ScreenSpaceShadowPass* collection)
+                             const FrameState& state, const GpuScene& gpuScene, const ScreenSpaceShadowPass* collection,
+                             const rhi::Texture* pixelDepth = nullptr)
 {
     const scene::Scene& scene = gpuScene.scene();
     const bool visibility = features.view == LitView::Visibility;
@@ -48,8 +51,12 @@ std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer&
             if (features.directionalShadows != DirectionalShadowSource::Forward)
                 commands.bindTexture(kLitScreenSpaceShadowsBinding, collection->shadows(), collection->sampler());
             // Only where the lit pass does not draw into it: multisampled, the single-sampled depth is no attachment.
-            if (features.directionalShadows == DirectionalShadowSource::ScreenSpaceEdges)
-                commands.bindTexture(kLitScreenSpaceDepthBinding, collection->depth(), collection->sampler());
+            if (pixelDepth)
+                commands.bindTexture(kLitScreenSpaceDepthBinding, *pixelDepth,
+                                     collection ? collection->sampler() : state.contactShadows->sampler());
+            if (features.contactShadows)
+                commands.bindTexture(kLitContactShadowsBinding, state.contactShadows->shadows(),
+                                     state.contactShadows->sampler());
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, draw.uniforms);
@@ -68,10 +75,19 @@ LitShaderFeatures LitPass::features() const
 {
     LitShaderFeatures features = state_.features;
     features.depthPrepassed = state_.desc->depthPrepass;
+    features.contactShadows = state_.contact;
     if (state_.screenSpace)
         features.directionalShadows =
             state_.multisampled ? DirectionalShadowSource::ScreenSpaceEdges : DirectionalShadowSource::ScreenSpace;
     return features;
+}
+
+// Multisampled, the screen-space shadows' edge fallback and the contact shadows tell a fragment on its pixel's
+// single-sampled surface by the lit depth.
+bool LitPass::readsPixelDepth(const LitShaderFeatures& f) const
+{
+    return f.directionalShadows == DirectionalShadowSource::ScreenSpaceEdges ||
+           (f.contactShadows && state_.multisampled);
 }
 
 bool LitPass::setup(FramePassBuilder& builder)
@@ -81,7 +97,9 @@ bool LitPass::setup(FramePassBuilder& builder)
     readLocalLights(builder);
     if (f.directionalShadows != DirectionalShadowSource::Forward)
         builder.read(frame::kScreenSpaceShadows);
-    if (f.directionalShadows == DirectionalShadowSource::ScreenSpaceEdges)
+    if (f.contactShadows)
+        builder.read(frame::kContactShadows);
+    if (readsPixelDepth(f))
         builder.read(frame::kLitDepth);
     const std::string_view depth = state_.multisampled ? frame::kMultisampledDepth : frame::kLitDepth;
     if (f.depthPrepassed)
@@ -97,8 +115,10 @@ void LitPass::execute(const FramePassContext& context)
     const rhi::Framebuffer& target = state_.multisampled
                                          ? context.framebuffer({frame::kMultisampledColor}, frame::kMultisampledDepth)
                                          : context.framebuffer({frame::kLitImage}, frame::kLitDepth);
-    state_.stats->litDraws = recordLitDraws(context.commands(), target, pipelines_, state_.litFrame, features(), state_,
-                                            scene_, collection_);
+    const LitShaderFeatures f = features();
+    state_.stats->litDraws =
+        recordLitDraws(context.commands(), target, pipelines_, state_.litFrame, f, state_, scene_, collection_,
+                       readsPixelDepth(f) ? &context.texture(frame::kLitDepth) : nullptr);
 }
 
 std::string ResolvePass::name() const { return std::string(frame::kResolvePass); }
@@ -126,6 +146,8 @@ bool LitViewPass::setup(FramePassBuilder& builder)
 {
     readShadowMaps(builder);
     readLocalLights(builder);
+    if (view_ == LitView::Visibility && state_.contact)
+        builder.read(frame::kContactShadows);
     builder.write(frame::kLitDepth);
     builder.write(view_ == LitView::Cascades ? frame::kCascadeView : frame::kVisibilityView);
     return true;
@@ -138,7 +160,7 @@ void LitViewPass::execute(const FramePassContext& context)
         context.framebuffer({cascades ? frame::kCascadeView : frame::kVisibilityView}, frame::kLitDepth);
     // The cascade view keeps the lit pass's shader parts; the visibility view of any light takes every part of the
     // shader: a debug view, not worth a variant each.
-    LitShaderFeatures features{.view = LitView::Visibility};
+    LitShaderFeatures features{.view = LitView::Visibility, .contactShadows = state_.contact};
     if (cascades) {
         features = state_.features;
         features.view = LitView::Cascades;

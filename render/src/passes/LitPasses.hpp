@@ -25,6 +25,7 @@ public:
 
 private:
     LitShaderFeatures features() const;
+    bool readsPixelDepth(const LitShaderFeatures& f) const;
 
     const FrameState& state_;
     LitPipelines& pipelines_;

@@ -14,7 +14,8 @@ std::uint32_t featureKey(const LitShaderFeatures& f)
     return (f.depthPrepassed ? 1u : 0u) | static_cast<std::uint32_t>(f.view) << 1 | (f.localLights ? 1u << 3 : 0u) |
            (f.staticShadows ? 1u << 4 : 0u) | (f.tentFilters ? 1u << 5 : 0u) | (f.softFilters ? 1u << 6 : 0u) |
            (f.shadowCubes ? 1u << 7 : 0u) | f.materialMaps << 8 |
-           static_cast<std::uint32_t>(f.directionalShadows) << (8 + scene::kTextureSlots);
+           static_cast<std::uint32_t>(f.directionalShadows) << (8 + scene::kTextureSlots) |
+           (f.contactShadows ? 1u << (10 + scene::kTextureSlots) : 0u);
 }
 
 std::string samplesSuffix(std::uint32_t samples)
@@ -44,10 +45,11 @@ const rhi::Shader& LitPipelines::fragment(const LitShaderFeatures& features)
 const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubleSided, bool blend)
 {
     features.samples = samples_;
-    // Blended surfaces are not in the prepass's depth, so not in the screen-space shadows either.
+    // Blended surfaces are not in the prepass's depth, so not in the screen-space or contact shadows either.
     if (blend) {
         features.depthPrepassed = false;
         features.directionalShadows = DirectionalShadowSource::Forward;
+        features.contactShadows = false;
     }
     const std::uint32_t key = featureKey(features) << 2 | (doubleSided ? 1u : 0u) | (blend ? 2u : 0u);
     std::unique_ptr<rhi::Pipeline>& pipeline = pipelines_[key];

@@ -64,8 +64,9 @@ bool DirectionalAtlasPass::setup(FramePassBuilder& builder)
 
 void DirectionalAtlasPass::execute(const FramePassContext& context)
 {
+    const auto culled = state_.culling ? std::optional(shadows::CulledTiles{*state_.culling, 0}) : std::nullopt;
     state_.stats->casterDraws = pass_.record(context.commands(), *state_.shadowMaps.directional, plan_, state_.casters,
-                                             state_.staticTiles.directional.empty());
+                                             state_.staticTiles.directional.empty(), culled);
 }
 
 std::string LocalAtlasPass::name() const { return std::string(frame::kLocalAtlasPass); }
@@ -82,6 +83,15 @@ void LocalAtlasPass::execute(const FramePassContext& context)
 {
     FrameStats& stats = *state_.stats;
     const std::uint32_t tiles = static_cast<std::uint32_t>(plan_.tiles.size());
+    if (state_.culling) {
+        // The GPU's lists are not the cache's keys: every tile is drawn anew, as the cache's first frame draws it.
+        cache_.invalidate();
+        stats.localCasterDraws =
+            pass_.record(context.commands(), *state_.shadowMaps.local, *state_.shadowMaps.cubes, plan_, state_.casters,
+                         true, shadows::CulledTiles{*state_.culling, state_.culledLocalTile});
+        stats.localTilesDrawn = tiles;
+        return;
+    }
     if (!state_.staticTiles.local.empty()) {
         // Every tile starts from its static casters' depth this frame: nothing of the last frame's atlas is kept.
         cache_.invalidate();

@@ -50,7 +50,7 @@ std::vector<std::uint64_t> staticMapHashes(const scene::Scene& scene, const shad
         for (const shadows::StaticShadowTile& tile : map.tiles) {
             const shadows::ShadowFrustum& f = tile.frustum;
             h.add(tile.viewport.width).add(f.view).add(f.perspective).add(f.extent).add(f.nearPlane).add(f.farPlane);
-            h.add(tile.view.slopeScaleBias).add(tile.view.normalOffset.reach);
+            h.add(tile.view.slopeScaleBias).add(tile.view.depthBias).add(tile.view.normalOffset.reach);
             for (const std::uint32_t caster : tile.casters) {
                 const std::uint32_t object = casterObjects.at(caster);
                 auto known = objects.find(object);

@@ -15,7 +15,8 @@ namespace penumbra::render {
 inline void addTileView(ContentHash& h, const shadows::ShadowTileDraw& tile)
 {
     const shadows::ShadowViewDraw& v = tile.view;
-    h.add(tile.viewport).add(v.viewProjection).add(v.slopeScaleBias).add(v.pancake).add(v.mirrored);
+    h.add(tile.viewport).add(v.viewProjection).add(v.slopeScaleBias).add(v.depthBias).add(v.pancake);
+    h.add(v.mirrored);
     h.add(v.ditherOrigin).add(v.normalOffset.reach).add(v.normalOffset.light);
 }
 

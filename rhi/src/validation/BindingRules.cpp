@@ -91,6 +91,28 @@ void checkBindingSetLayout(const BindingSetLayoutDesc& desc)
     }
 }
 
+void checkPipelineBindingSetLayouts(const std::string& pipeline, const std::vector<const BindingSetLayout*>& layouts,
+                                    const std::vector<ShaderBinding>& bindings)
+{
+    for (std::size_t i = 0; i < layouts.size(); ++i) {
+        if (!layouts[i])
+            throw Error(fmt::format("pipeline '{}': bindingSetLayouts[{}] is null", pipeline, i));
+        for (std::size_t j = 0; j < i; ++j)
+            for (const BindingLayoutItem& item : layouts[i]->desc().items)
+                if (layouts[j]->find(item.binding))
+                    throw Error(fmt::format("pipeline '{}': binding {} is in binding set layouts '{}' and '{}'",
+                                            pipeline, item.binding, layouts[j]->desc().debugName,
+                                            layouts[i]->desc().debugName));
+    }
+    for (const ShaderBinding& b : bindings)
+        for (const BindingSetLayout* layout : layouts)
+            if (const BindingLayoutItem* item = layout->find(b.binding); item && item->kind != b.kind)
+                throw Error(fmt::format("pipeline '{}': binding {} ('{}') is a {} in the shaders, but binding set "
+                                        "layout '{}' holds a {} there",
+                                        pipeline, b.binding, b.name, bindingKindName(b.kind), layout->desc().debugName,
+                                        bindingKindName(item->kind)));
+}
+
 void checkBindingSet(const Capabilities& caps, const BindingSetDesc& desc)
 {
     const std::string what = fmt::format("binding set '{}'", desc.debugName);

@@ -167,7 +167,7 @@ void checkPipeline(const Capabilities& caps, const PipelineDesc& desc)
     if (desc.depth.bias.clamp != 0.0f && !caps.depthBiasClamp)
         throw UnsupportedError(
             fmt::format("pipeline '{}': depth bias clamp is not supported by {}", desc.debugName, caps.device));
-    pipelineBindings(desc);
+    checkPipelineBindingSetLayouts(desc.debugName, desc.bindingSetLayouts, pipelineBindings(desc));
     checkGraphicsStorage(desc);
     checkUniformLayouts(desc);
 }
@@ -207,6 +207,7 @@ void checkComputePipeline(const ComputePipelineDesc& desc)
     const std::array<const Shader*, 1> shaders{desc.compute};
     checkLayouts(desc.debugName, desc.uniformLayouts, BindingKind::UniformBuffer, shaders);
     checkLayouts(desc.debugName, desc.storageLayouts, BindingKind::StorageBuffer, shaders);
+    checkPipelineBindingSetLayouts(desc.debugName, desc.bindingSetLayouts, shader.bindings);
 }
 
 } // namespace penumbra::rhi

@@ -65,6 +65,11 @@ void checkBindingSetLayout(const BindingSetLayoutDesc& desc);
 // A layout, one item per binding of it and of its kind, each checked as its single bind call checks it.
 void checkBindingSet(const Capabilities& caps, const BindingSetDesc& desc);
 
+// A pipeline's PipelineDesc::bindingSetLayouts: none null, no binding number in two, and each of the shaders'
+// `bindings` that one of them holds of the layout's kind.
+void checkPipelineBindingSetLayouts(const std::string& pipeline, const std::vector<const BindingSetLayout*>& layouts,
+                                    const std::vector<ShaderBinding>& bindings);
+
 // A framebuffer's attachments must exist, share one size and sample count, be render targets, and have layers in range.
 void checkFramebuffer(const FramebufferDesc& desc);
 

@@ -79,6 +79,11 @@ std::unique_ptr<BindingSet> ValidatingDevice::createBindingSet(const BindingSetD
 {
     if (validate_)
         checkBindingSet(capabilities(), desc);
+    return apiCreateBindingSet(desc);
+}
+
+std::unique_ptr<BindingSet> ValidatingDevice::apiCreateBindingSet(const BindingSetDesc& desc)
+{
     return std::unique_ptr<BindingSet>(new BindingSet(desc));
 }
 

@@ -79,6 +79,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         const bool casterSide = light.normalBiasSide == NormalBiasSide::Caster;
         ShadowViewDraw view{.viewProjection = fit.viewProjection,
                             .slopeScaleBias = light.slopeScaleBias,
+                            .depthBias = settings.directional.depthBias,
                             .pancake = true,
                             .ditherOrigin = ditherOrigin(fit, plan.directionalAtlas, tile)};
         if (casterSide)
@@ -141,16 +142,17 @@ std::vector<LocalLightInput> localInputs(std::span<const SpotShadowInput> spots,
     return inputs;
 }
 
-// The light's views: a spot light's cone, or a point light's six faces (widened as its realtime tiles are).
+// The light's views: a spot light's cone, or a point light's six faces (widened as the realtime tiles are).
 struct LocalViews {
     float fov;
     std::vector<glm::mat4> views;
 };
 
-LocalViews localViews(const LocalLightInput& light, std::uint32_t tileSize, ShadowFilter filter)
+LocalViews localViews(const LocalLightInput& light, std::uint32_t tileSize, ShadowFilter filter, Toggle spotFovBias)
 {
     if (light.kind == LightKind::Spot)
-        return {2.0f * light.outerAngle, {spotView(light.position, light.direction)}};
+        return {spotFieldOfView(light.outerAngle, tileSize, filter, light.normalBias, spotFovBias),
+                {spotView(light.position, light.direction)}};
     LocalViews faces{pointFaceFieldOfView(tileSize, filter, light.normalBias), {}};
     for (std::uint32_t face = 0; face < cubeFaceCount; ++face)
         faces.views.push_back(pointFaceView(static_cast<CubeFace>(face), light.position));
@@ -185,7 +187,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
     for (const LocalLightInput* light : selected) {
         const std::uint32_t tileSize = plan.localAtlas.tileSize();
         const ShadowFilter filter = light->filter.value_or(settings.local.filter);
-        const LocalViews views = localViews(*light, tileSize, filter);
+        const LocalViews views = localViews(*light, tileSize, filter, settings.local.spotFovBias);
         const float nearPlane = localShadowNearPlane(light->range, light->nearPlane, settings.local);
         const glm::mat4 projection = conventions.perspective(views.fov, 1.0f, nearPlane, light->range);
         const float bias = localNormalBiasScale(projection, tileSize, filter, light->normalBias);
@@ -198,6 +200,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
             // The dither follows the tile's own texel grid, as in the realtime atlas.
             ShadowViewDraw draw{.viewProjection = projection * view,
                                 .slopeScaleBias = light->slopeScaleBias,
+                                .depthBias = settings.local.depthBias,
                                 .ditherOrigin = -glm::vec2(plan.localAtlas.tileOffset(tile))};
             if (casterSide)
                 draw.normalOffset = {bias, glm::vec4(light->position, 1.0f)};

@@ -23,8 +23,10 @@ glm::uvec2 pcg2d(glm::uvec2 v)
     return v;
 }
 
-float diskRotationAngle(glm::ivec2 texel)
+float diskRotationAngle(glm::ivec2 texel, Toggle rotation)
 {
+    if (rotation == Toggle::Off)
+        return 0.0f;
     const glm::uvec2 h = pcg2d(glm::uvec2(static_cast<std::uint32_t>(texel.x), static_cast<std::uint32_t>(texel.y)));
     // 24 bits: exact in a float, the same on every backend.
     return 6.28318531f * (static_cast<float>(h.x >> 8u) * (1.0f / 16777216.0f));
@@ -51,7 +53,8 @@ SoftShadowUniforms softShadowUniforms(const SoftShadowSettings& soft)
             .maxTexels = soft.maxPenumbraTexels,
             .blockerSamples = static_cast<std::int32_t>(soft.blockerSamples),
             .filterSamples = static_cast<std::int32_t>(soft.filterSamples),
-            .poissonRadius = soft.poissonRadiusTexels};
+            .poissonRadius = soft.poissonRadiusTexels,
+            .diskRotation = soft.diskRotation == Toggle::On ? 1 : 0};
 }
 
 float tanHalfAngularDiameter(float degrees) { return std::tan(0.5f * degrees * 0.0174532925f); }

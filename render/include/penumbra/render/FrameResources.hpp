@@ -10,34 +10,32 @@ namespace penumbra::render::frame {
 // Passes, in the order they run.
 inline constexpr std::string_view kSkinningPass = "skinning"; // a scene with skinned or morphed meshes
 inline constexpr std::string_view kStaticMapsPass = "static maps";
+// Shadow casters culled per tile on the GPU (ShadowSettings::culling gpu).
+inline constexpr std::string_view kCasterCullingPass = "caster culling";
 inline constexpr std::string_view kDirectionalStaticTilesPass = "directional static tiles";
 inline constexpr std::string_view kDirectionalAtlasPass = "directional atlas";
 inline constexpr std::string_view kLocalStaticTilesPass = "local static tiles";
 inline constexpr std::string_view kLocalAtlasPass = "local atlas";
 inline constexpr std::string_view kDepthPrepass = "depth prepass";
 inline constexpr std::string_view kDepthFitPrepass = "depth fit prepass";
+inline constexpr std::string_view kContactPrepass = "contact prepass";
 inline constexpr std::string_view kReceiverPrepass = "receiver prepass";
 inline constexpr std::string_view kScreenSpaceShadowsPass = "screen-space shadows";
+inline constexpr std::string_view kContactShadowsPass = "contact shadows";
 inline constexpr std::string_view kLitPass = "lit";
 inline constexpr std::string_view kDepthReductionPass = "depth reduction";
 inline constexpr std::string_view kResolvePass = "msaa resolve";
 inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
-inline constexpr std::array kPasses{kSkinningPass,
-                                    kStaticMapsPass,
-                                    kDirectionalStaticTilesPass,
-                                    kDirectionalAtlasPass,
-                                    kLocalStaticTilesPass,
-                                    kLocalAtlasPass,
-                                    kDepthPrepass,
-                                    kDepthFitPrepass,
-                                    kReceiverPrepass,
-                                    kScreenSpaceShadowsPass,
-                                    kLitPass,
-                                    kDepthReductionPass,
-                                    kResolvePass,
-                                    kCascadeViewPass,
-                                    kVisibilityViewPass};
+inline constexpr std::array kPasses{kSkinningPass,         kStaticMapsPass,
+                                    kCasterCullingPass,    kDirectionalStaticTilesPass,
+                                    kDirectionalAtlasPass, kLocalStaticTilesPass,
+                                    kLocalAtlasPass,       kDepthPrepass,
+                                    kDepthFitPrepass,      kContactPrepass,
+                                    kReceiverPrepass,      kScreenSpaceShadowsPass,
+                                    kContactShadowsPass,   kLitPass,
+                                    kDepthReductionPass,   kResolvePass,
+                                    kCascadeViewPass,      kVisibilityViewPass};
 
 // Textures. The lit image, the atlases and the views are the frame's outputs (SceneRenderer's accessors read them).
 inline constexpr std::string_view kLitImage = "lit image"; // RGBA8 sRGB-encoded, single-sampled
@@ -57,6 +55,8 @@ inline constexpr std::string_view kLightIndices = "light indices";
 inline constexpr std::string_view kReceiverPositionDx = "receiver position dx";
 inline constexpr std::string_view kReceiverPositionDy = "receiver position dy";
 inline constexpr std::string_view kScreenSpaceShadows = "screen-space shadows";
+// shadows.contact: each directional light's contact shadow march (render/src/passes/ContactShadowPass).
+inline constexpr std::string_view kContactShadows = "contact shadows";
 inline constexpr std::string_view kCascadeView = "cascade view";
 inline constexpr std::string_view kVisibilityView = "visibility view";
 

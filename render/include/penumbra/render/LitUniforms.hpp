@@ -181,6 +181,8 @@ inline constexpr std::uint32_t kLitLocalShadowTilesBinding = kLitScreenSpaceDept
 // The environment's prefiltered specular chain and the split-sum BRDF table (render/src/EnvironmentMaps.hpp).
 inline constexpr std::uint32_t kLitEnvironmentSpecularBinding = kLitLocalShadowTilesBinding + 1;
 inline constexpr std::uint32_t kLitEnvironmentBrdfBinding = kLitLocalShadowTilesBinding + 2;
+// The contact shadow texture (LitShaderFeatures::contactShadows; render/src/passes/ContactShadowPass.hpp).
+inline constexpr std::uint32_t kLitContactShadowsBinding = kLitEnvironmentBrdfBinding + 1;
 
 inline constexpr std::uint32_t litMaterialMapBinding(scene::TextureSlot slot)
 {
@@ -213,6 +215,10 @@ struct LitShaderFeatures {
     // The lit pass's samples per pixel (FrameDesc::msaa; LitPipelines sets it): ScreenSpaceEdges tells a fragment
     // that covers its whole pixel by it.
     std::uint32_t samples = 1;
+    // Each directional light's direct term takes the minimum with its contact shadow (shadows.contact), read at
+    // the fragment's pixel; with MSAA only where the fragment is the pixel's single-sampled surface. Off by default:
+    // the frame binds the contact shadow texture only when it draws them.
+    bool contactShadows = false;
 
     // Equal features compile to the same lit shader variant.
     bool operator==(const LitShaderFeatures&) const = default;

@@ -27,6 +27,7 @@
 
 namespace penumbra::render {
 
+class ContactShadowPass;
 class DepthPrepass;
 class DepthReduction;
 class EnvironmentMaps;
@@ -173,10 +174,12 @@ public:
     const shadows::ShadowAtlas& atlas() const { return *atlas_; }
     // The directional plan the last frame drew.
     const shadows::DirectionalShadowPlan& plan() const { return plan_; }
-    // The view-depth range the next directional.projection depthFit frame fits its cascades to: the last depth-fit
-    // frame's nearest and farthest drawn pixel (a reduction of its depth), quantized with hysteresis against the range
-    // kept before (shadows::quantizeViewDepthRange); nullopt before such a frame (depthFit is then the stable fit).
-    const std::optional<shadows::ViewDepthRange>& visibleDepths() const { return visibleDepths_; }
+    // The histogram of the visible depths the next directional.projection depthFit frame fits its cascades to: the
+    // last depth-fit frame's (a reduction of its depth, shadows::DepthHistogram); nullopt before such a frame (depthFit
+    // is then the close fit over the usual splits).
+    const std::optional<shadows::DepthHistogram>& depthHistogram() const { return depthHistogram_; }
+    // The histogram's range: the start of its first bin with samples and the end of its last.
+    std::optional<shadows::ViewDepthRange> visibleDepths() const;
     // Spot and point shadows: tiles of this atlas (16 texels wide where the last frame used none).
     const shadows::ShadowAtlas& localAtlas() const { return *localAtlas_; }
     // The spot and point plan the last frame drew.
@@ -241,7 +244,7 @@ private:
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
     rhi::BufferSlice localTileSlice();
     void buildGraph(const FrameDesc& frame);
-    void readVisibleDepths(const scene::Camera& camera, const FrameDesc& frame);
+    void readDepthHistogram();
     void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
     // The lit view's Frame block (the debug views change its view).
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame,
@@ -255,6 +258,7 @@ private:
     shadows::DirectionalShadowPass shadowPass_;
     shadows::LocalShadowPass localShadowPass_;
     std::unique_ptr<LocalTileCache> localTiles_;
+    std::unique_ptr<shadows::GpuCasterCulling> casterCulling_; // made on the first frame that culls on the GPU
     std::unique_ptr<rhi::Shader> litVertex_;
     // Single-sampled: the lit pass without MSAA and the debug views. Multisampled: the lit pass with FrameDesc::msaa
     // samples, made when a frame first asks for that count.
@@ -265,10 +269,13 @@ private:
     // the multisampled depthPrepass_ with MSAA, instead of it without) and the collection.
     std::unique_ptr<DepthPrepass> receiverPrepass_;
     std::unique_ptr<ScreenSpaceShadowPass> screenSpace_;
+    // Contact shadows, made when a frame first asks for them: the march, and with MSAA its single-sampled prepass.
+    std::unique_ptr<ContactShadowPass> contact_;
+    std::unique_ptr<DepthPrepass> contactPrepass_;
     // Depth fit, made when a frame first asks for it: the reduction, and with MSAA its single-sampled prepass.
     std::unique_ptr<DepthReduction> depthReduction_;
     std::unique_ptr<DepthPrepass> depthFitPrepass_;
-    std::optional<shadows::ViewDepthRange> visibleDepths_;
+    std::optional<shadows::DepthHistogram> depthHistogram_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
     std::unique_ptr<EnvironmentMaps> environment_; // FrameDesc::environment prefiltered
     std::unique_ptr<LocalLightTextures> localLights_; // every spot and point light and their cluster lists

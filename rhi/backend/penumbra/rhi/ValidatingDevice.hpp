@@ -58,6 +58,8 @@ protected:
     virtual std::unique_ptr<Shader> apiCreateShader(CompiledShader compiled) = 0;
     virtual std::unique_ptr<Pipeline> apiCreatePipeline(const PipelineDesc& desc) = 0;
     virtual std::unique_ptr<ComputePipeline> apiCreateComputePipeline(const ComputePipelineDesc& desc) = 0;
+    // A checked set; by default the RHI's own, which the command list applies as single binds (apiBindBindingSet).
+    virtual std::unique_ptr<BindingSet> apiCreateBindingSet(const BindingSetDesc& desc);
     virtual std::unique_ptr<Framebuffer> apiCreateFramebuffer(const FramebufferDesc& desc) = 0;
     virtual std::unique_ptr<TimestampQueries> apiCreateTimestampQueries(std::uint32_t count) = 0;
     virtual void apiSubmit(CommandList& commands) = 0;

@@ -11,7 +11,7 @@
 //                                         .items = {rhi::BindingSetItem::uniformBuffer(0, blocks, 0, 256),
 //                                                   rhi::BindingSetItem::sampledTexture(1, atlas, sampler)},
 //                                         .debugName = "frame 12 shadow maps"});
-//     commands.bindPipeline(pipeline);
+//     commands.bindPipeline(pipeline); // created with .bindingSetLayouts = {layout.get()}
 //     commands.bindBindingSet(*set);
 
 #include "penumbra/rhi/LiveObjects.hpp"
@@ -89,15 +89,19 @@ struct BindingSetDesc {
 // outlive the submission of every list that bound it, as its resources must.
 class BindingSet : private LiveObject<ObjectKind::BindingSet> {
 public:
+    virtual ~BindingSet() = default;
     // The items, sorted by binding number.
     const std::vector<BindingSetItem>& items() const { return items_; }
     // The layout the set was created against.
     const BindingSetLayoutDesc& layout() const { return layout_; }
     const std::string& debugName() const { return debugName_; }
 
+protected:
+    // For ValidatingDevice and the backends' sets (ValidatingDevice::apiCreateBindingSet).
+    explicit BindingSet(const BindingSetDesc& desc);
+
 private:
     friend class ValidatingDevice;
-    explicit BindingSet(const BindingSetDesc& desc);
 
     std::vector<BindingSetItem> items_;
     BindingSetLayoutDesc layout_;

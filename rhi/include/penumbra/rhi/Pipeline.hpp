@@ -14,6 +14,8 @@
 
 namespace penumbra::rhi {
 
+class BindingSetLayout;
+
 enum class VertexFormat : std::uint8_t { Float, Float2, Float3, Float4, UByte4Norm };
 
 // Bytes of one attribute of the format.
@@ -133,6 +135,11 @@ struct PipelineDesc {
     std::vector<UniformLayout> uniformLayouts;
     // The C++ structs in storage blocks the stages read, compared with their std430 layout as uniformLayouts are.
     std::vector<UniformLayout> storageLayouts;
+    // The layouts of the binding sets the pipeline is drawn with, no binding number in two of them, each binding the
+    // shaders declare there of the layout's kind. A set of one of them is bound with one call on every backend that
+    // has descriptor sets (Vulkan: one descriptor set per layout); other bindings, and sets of layouts not listed,
+    // are bound per draw. The layouts may be destroyed once the pipeline exists.
+    std::vector<const BindingSetLayout*> bindingSetLayouts;
     std::string debugName;
 };
 
@@ -155,6 +162,7 @@ struct ComputePipelineDesc {
     const Shader* compute = nullptr;
     std::vector<UniformLayout> uniformLayouts;
     std::vector<UniformLayout> storageLayouts;
+    std::vector<const BindingSetLayout*> bindingSetLayouts; // as PipelineDesc's
     std::string debugName;
 };
 

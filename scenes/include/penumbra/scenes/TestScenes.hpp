@@ -71,4 +71,15 @@ inline constexpr std::uint32_t kStreetShopWindows = 64;
 inline constexpr std::uint32_t kStreetCars = 40;
 scene::Scene makeStreetScene();
 
+// Traffic on the street: kStreetMovingCars of its cars (every fourth, cars 1, 5, ..., 37, spread over its length)
+// drive away from the camera at kStreetCarSpeed in the lane beside their kerb (|x| = kStreetLaneX), each from where it
+// was parked and round again from the far end. Places them `seconds` after the start and makes them dynamic. Throws
+// scene::SceneError for a scene without the street's cars.
+inline constexpr std::uint32_t kStreetMovingCars = 10;
+inline constexpr float kStreetCarSpeed = 10.0f; // metres per second
+inline constexpr float kStreetLaneX = 2.5f;
+void driveStreetCars(scene::Scene& scene, float seconds);
+// How far the cars have driven after `seconds`, the street's length wrapped: 0 <= d < 384 m.
+float streetCarDistance(float seconds);
+
 } // namespace penumbra::scenes

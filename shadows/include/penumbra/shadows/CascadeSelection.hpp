@@ -15,6 +15,9 @@ namespace penumbra::shadows {
 // - Close fit: the first cascade whose far split the view depth has not reached; the fade runs linearly over the
 //   last cascadeFade fraction of that depth (Unity's "Close Fit" bands, Catlike Coding, "Rendering 7: Shadows",
 //   section 1.7).
+// - Depth fit: the first cascade whose tile of the first shadowed light holds the point, more than twice the filter's
+//   reach inside its edges (map-based selection: Microsoft, "Cascaded Shadow Maps"); the fade runs over the
+//   cascadeFade fraction of the tile's half size inside that; the margin is in world units.
 struct CascadeSelection {
     std::uint32_t index = 0; // the cascade count when no cascade holds the point
     float fade = 1.0f; // 1 inside, falling to 0 at the region's outer edge: the blend weight of `index`

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/CasterVolume.hpp"
 #include "penumbra/shadows/DirectionalCascadeFit.hpp"
 #include "penumbra/shadows/ShadowCamera.hpp"
 
@@ -24,8 +25,9 @@ float cascadeBlendCullingFactor(float cascadeFade);
 
 // Casters whose light-space box (in the cascade's basis, which must be the casters') meets the cascade's: the
 // tile's square in x, y and depth up to the far plane (no near limit: casters in front of the near plane still
-// cast, pancaked). With a previous cascade, a caster whose world box lies wholly inside that cascade's culling
-// sphere scaled by cullingFactor is skipped (culling bias): the previous, sharper cascade already holds its shadow.
+// cast, pancaked). The rules are cascadeVolume's (casterInVolume). With a previous cascade, a caster whose world box
+// lies wholly inside that cascade's culling sphere scaled by cullingFactor is skipped (culling bias): the previous,
+// sharper cascade already holds its shadow.
 CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, const LightSpaceCasters& casters,
                                       const std::optional<Sphere>& previousCullingSphere, float cullingFactor);
 
@@ -34,13 +36,6 @@ CasterCullingResult cullShadowCasters(const DirectionalShadowCascade& cascade, c
 // light. Every cascade's light box lies within that reach, so a light for which this is false draws nothing into its
 // tiles and needs none.
 bool castersInReach(const LightSpaceCasters& casters, std::span<const Sphere> cullingSpheres);
-
-// A close-fit cascade's region: the camera frustum between two view depths.
-struct FrustumSlice {
-    ShadowCamera camera;
-    float nearDistance = 0.0f;
-    float farDistance = 0.0f;
-};
 
 // Whether every corner of the box lies in the slice: inside the frustum's side planes, at view depths from
 // nearDistance to nearDistance + (farDistance - nearDistance) * depthFactor.

@@ -1,9 +1,16 @@
 #pragma once
 
+#include "penumbra/shadows/Bounds.hpp"
 #include "penumbra/shadows/CascadeSplits.hpp"
+#include "penumbra/shadows/DirectionalShadowUniforms.hpp"
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <vector>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace penumbra::shadows {
 
@@ -19,20 +26,69 @@ struct ViewDepthRange {
 // so that a step is between 1 / steps and 2 / steps of the depth itself.
 float depthFitStep(float depth, std::uint32_t stepsPerOctave);
 
-// The range depthFit fits its cascades to, from the measured one and the range the last frame kept. The near depth
-// floors and the far depth ceils onto depthFitStep's grid, so the result holds the measured range; a kept range is
-// kept while it still holds the measured one and neither end lies more than 1 + hysteresisSteps of its steps inside
-// it (hysteresis: depths that wander about a grid line do not flip the fit each frame). stepsPerOctave 0 leaves the
-// range unquantized, as measured. Depths at or below 0 are taken as given (nothing to quantize).
-ViewDepthRange quantizeViewDepthRange(ViewDepthRange measured, std::optional<ViewDepthRange> kept,
-                                      std::uint32_t stepsPerOctave, float hysteresisSteps);
+// The depth fit's histogram of the visible view depths (shaders/depth_reduction.comp): bins on depthFitStep's grid
+// at 8 steps per power of two over the 16 octaves below the shadow distance, each with its samples' count and, per
+// shadowed directional light, their light-space footprint. Sample distribution shadow maps (Lauritzen, Salvi and
+// Lefohn, I3D 2011) place the splits from such a histogram (section 4.1) and fit each cascade to the light-space
+// bounds of the samples in its partition (section 4.2), which is where most of their gain comes from.
+inline constexpr std::uint32_t kDepthHistogramStepsPerOctave = 8;
+inline constexpr std::uint32_t kDepthHistogramBins = 16 * kDepthHistogramStepsPerOctave;
 
-// depthFit's splits: cascadeSplits with the fitted range's far depth for the shadow distance and its near depth for the
-// camera's near plane, d_0 = near, d_i = ratio_{i-1} far (at least near), d_count = far, with near and far clamped to
-// [cameraNear, shadowFar] (shadowFar = min(maxDistance, cameraFar)); the inner splits rounded to depthFitStep's grid
-// (stepsPerOctave 0: not rounded) and kept in order. Every slice is then within the stable fit's of the same
-// distance, so no sphere is larger.
-CascadeSplits depthFitSplits(ViewDepthRange fitted, float cameraNear, float cameraFar, float maxDistance,
-                             std::uint32_t cascadeCount, glm::vec3 ratios, std::uint32_t stepsPerOctave);
+struct DepthHistogramBin {
+    std::uint32_t count = 0;
+    // Per light slot: min x, min y, max x, max y in the light's basis (LightBasis::toLight) of the bin's samples.
+    std::array<glm::vec4, maxShadowedDirectionalLights> footprints{};
+};
+
+struct DepthHistogram {
+    int firstOctave = 0; // bin 0 starts at 2^firstOctave; nearer samples are counted in it
+    std::vector<DepthHistogramBin> bins; // kDepthHistogramBins
+    // Per light slot: the direction the footprints were measured along (the plan's light in that slot).
+    std::vector<glm::vec3> lightDirections;
+};
+
+// ceil(log2 shadowFar) - 16: the histogram's last bin ends at or past the shadow distance.
+int depthHistogramFirstOctave(float shadowFar);
+// Where bin `bin` starts: 2^(firstOctave + bin / 8) (1 + (bin % 8) / 8); bin kDepthHistogramBins is the last's end.
+float depthHistogramBinStart(int firstOctave, std::uint32_t bin);
+// The bin of view depth `depth`, clamped to the histogram: the shader's binning, on the CPU.
+std::uint32_t depthHistogramBin(int firstOctave, float depth);
+// The start of the first bin with samples and the end of the last (2^firstOctave where bin 0 has samples, which may
+// be nearer); nullopt where no bin has any.
+std::optional<ViewDepthRange> depthHistogramRange(const DepthHistogram& histogram);
+// The light-space footprint of slot `slot`'s samples in bins [first, last) (z 0); nullopt where they have none.
+std::optional<Bounds> depthHistogramFootprint(const DepthHistogram& histogram, std::uint32_t slot, std::uint32_t first,
+                                              std::uint32_t last);
+
+// What a depth-fit plan keeps for the next frame's: its partition of the histogram and its tiles' half sizes.
+struct DepthFitKept {
+    std::vector<std::uint32_t> edges; // cascade c holds bins [edges[c], edges[c + 1])
+    std::vector<float> halfSizes; // per cascade
+
+    bool operator==(const DepthFitKept&) const = default;
+};
+
+// The partition of the histogram's bins into `cascadeCount` runs that puts the visible samples' texels highest: the
+// least sum over samples of log2 of their run's light-space extent (the larger side of the footprint over slots
+// [0, lightSlots); the run's far depth where lightSlots is 0), so the geometric mean of the samples' texel sizes is
+// least. Exact, by dynamic programming over the bins with samples (SDSM's partitions, section 4.1, optimized for the
+// texel size rather than log or k-means spaced). The result's edges run from the first bin with samples to one past
+// the last. `kept` (the last frame's edges) stays while it still holds every sample and its sum is within
+// `toleranceLog2` per sample of the least: hysteresis, so that depths that barely move keep the splits.
+std::vector<std::uint32_t> depthFitPartition(const DepthHistogram& histogram, std::uint32_t cascadeCount,
+                                             std::uint32_t lightSlots, std::span<const std::uint32_t> kept,
+                                             float toleranceLog2);
+
+// The splits of a partition: edge c's bin start for the inner splits, the partition's first and last edges for the
+// outer ones (bin 0's start taken as the camera's near plane), each clamped to [cameraNear, shadowFar] with
+// shadowFar = min(maxDistance, cameraFar), in order.
+CascadeSplits depthFitSplits(const DepthHistogram& histogram, std::span<const std::uint32_t> edges, float cameraNear,
+                             float cameraFar, float maxDistance);
+
+// The half size of a depth-fit tile: `required` (closeFitHalfSize of its footprint) ceiled onto depthFitStep's grid
+// of light-space size at `stepsPerOctave` steps per power of two; `kept` (the last frame's) while required is at most
+// kept and more than 1 + hysteresisSteps of its steps below it, so the texel size, and with it every texel, holds
+// still while the footprint barely changes. stepsPerOctave 0: required, unquantized.
+float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps);
 
 } // namespace penumbra::shadows

@@ -27,9 +27,11 @@ public:
 
     // Records the pass; returns the caster draws issued. The uniforms it writes stay valid until the
     // next record(), so submit `commands` before recording again. `atlas` may be any size where the plan has no
-    // shadowed light. `clear` false draws over what the atlas holds (cached static depth).
+    // shadowed light. `clear` false draws over what the atlas holds (cached static depth). With `culled`, the tiles
+    // draw what the GPU culled for them (indirectly) instead of the plan's lists.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const DirectionalShadowPlan& plan,
-                         std::span<const ShadowCaster> casters, bool clear = true);
+                         std::span<const ShadowCaster> casters, bool clear = true,
+                         const std::optional<CulledTiles>& culled = std::nullopt);
 
     // Every cascade tile of the plan as the pass draws it: viewport, view, biases, casters.
     static std::vector<ShadowTileDraw> tileDraws(const DirectionalShadowPlan& plan);

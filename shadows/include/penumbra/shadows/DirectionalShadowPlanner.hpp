@@ -42,7 +42,10 @@ struct DirectionalCascadePlan {
     std::uint32_t tile = 0;
     glm::mat4 worldToAtlas{1.0f};
     rhi::Viewport viewport;
+    // The casters drawn into the tile; left empty where they are culled on the GPU (culledOnGpu), which tests them
+    // against `volume`.
     CasterCullingResult casters;
+    CasterVolume volume; // the tile's light box and culling bias, the rules `casters` were culled by
 };
 
 // A directional light that got shadow tiles, with everything resolved from its input and the settings.
@@ -51,6 +54,7 @@ struct ShadowedDirectionalLight {
     float strength = 1.0f;
     float normalBias = 1.0f;
     float slopeScaleBias = 0.0f;
+    float depthBias = 0.0f; // the constant one, DirectionalShadowSettings::depthBias
     float nearPlaneOffset = 0.0f;
     ShadowFilter filter = ShadowFilter::PCF2x2; // the light's, resolved
     float angularDiameter = 0.0f;
@@ -76,6 +80,15 @@ struct DirectionalShadowPlan {
     std::vector<int> shadowSlots; // per input light: its slot in `lights`, or -1
     std::vector<ShadowPlanNote> report;
     DirectionalShadowUniforms uniforms;
+    // CascadeProjection::DepthFit over a histogram: the partition and half sizes the next frame's plan keeps.
+    std::optional<DepthFitKept> depthFit;
+};
+
+// What CascadeProjection::DepthFit plans with: the last frame's histogram of the visible depths and what the last
+// depth-fit plan kept (its DirectionalShadowPlan::depthFit); either may be missing.
+struct DepthFitInput {
+    const DepthHistogram* histogram = nullptr;
+    const DepthFitKept* kept = nullptr;
 };
 
 // The caster pass's normal offset for cascade `cascade` of `light`: the lit pass's reach there (the cascade's
@@ -85,13 +98,14 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 
 // Plans a frame's directional shadows: the first 4 lights that cast shadows with strength > 0 and have a caster in
 // their cascades' reach (castersInReach) get cascadeCount tiles each; every other light is listed in the report with
-// the reason (never an exception). CascadeProjection::DepthFit splits the cascades over `visibleDepths` (the
-// quantized range, quantizeViewDepthRange) and is the stable fit where it is nullopt (no frame reduced yet). Throws
-// rhi::Error only for settings that fail validate().
+// the reason (never an exception). CascadeProjection::DepthFit is the close fit (view-depth bands) with its splits from
+// the histogram's partition (depthFitPartition) and each light's tile around the footprint of the samples in its band
+// (depthHistogramFootprint), the half sizes on a grid with hysteresis (depthFitHalfSize); without a histogram (no
+// frame reduced yet) it is the close fit over the usual splits, tile sizes on the grid. Throws rhi::Error only for
+// settings that fail validate().
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
-                                             std::span<const Bounds> casterBounds,
-                                             std::optional<ViewDepthRange> visibleDepths = std::nullopt);
+                                             std::span<const Bounds> casterBounds, DepthFitInput depthFit = {});
 
 } // namespace penumbra::shadows

@@ -53,6 +53,12 @@ float localNormalBiasScale(const glm::mat4& projection, std::uint32_t tileSize, 
 // face edge stay inside the tile: tan(fov / 2) = 1 + bias + filter size at distance 1.
 float pointFaceFieldOfView(std::uint32_t tileSize, ShadowFilter filter, float normalBias);
 
+// Field of view of a spot light's tile: its cone (twice the outer angle) or, with the FOV bias (the settings'
+// local.spotFovBias), widened as the point faces are: tan(fov / 2) = tan(outer angle) + bias + filter size at
+// distance 1, the texel size that of the cone's own tile (the document's approximation: the widening's own texel
+// growth is left out).
+float spotFieldOfView(float outerAngle, std::uint32_t tileSize, ShadowFilter filter, float normalBias, Toggle fovBias);
+
 // The document's FOV bias in degrees: atan(1 + bias + filter size) x 2 - 90.
 float pointFaceFovBiasDegrees(std::uint32_t tileSize, ShadowFilter filter, float normalBias);
 

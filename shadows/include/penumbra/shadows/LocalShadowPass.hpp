@@ -25,8 +25,10 @@ public:
     // next record(), so submit `commands` before recording again.
     // `cubes` must hold at least plan.cubes.size() cubes; `atlas` may be any size where the plan has no tile.
     // `clearAtlas` false draws over what the atlas holds (cached static depth); cubes are always cleared.
+    // With `culled`, the atlas tiles draw what the GPU culled for them (indirectly) instead of the plan's lists.
     std::uint32_t record(rhi::CommandList& commands, const ShadowAtlas& atlas, const ShadowCubes& cubes,
-                         const LocalShadowPlan& plan, std::span<const ShadowCaster> casters, bool clearAtlas = true);
+                         const LocalShadowPlan& plan, std::span<const ShadowCaster> casters, bool clearAtlas = true,
+                         const std::optional<CulledTiles>& culled = std::nullopt);
     // Records the cube-map half of record() alone (each face cleared and drawn): for an atlas whose tiles are drawn
     // elsewhere (render's per-light tile cache). `cubes` must hold at least plan.cubes.size() cubes.
     std::uint32_t recordCubes(rhi::CommandList& commands, const ShadowCubes& cubes, const LocalShadowPlan& plan,

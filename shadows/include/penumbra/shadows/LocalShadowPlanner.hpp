@@ -3,6 +3,7 @@
 #include "penumbra/rhi/CommandList.hpp"
 #include "penumbra/rhi/Conventions.hpp"
 #include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/CasterVolume.hpp"
 #include "penumbra/shadows/LocalLightProjection.hpp"
 #include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/LocalShadowUniforms.hpp"
@@ -57,8 +58,12 @@ struct LocalShadowView {
     glm::mat4 projection{1.0f}; // the convention's perspective
     glm::mat4 viewProjection{1.0f};
     float slopeScaleBias = 0.0f;
-    std::vector<std::uint32_t> casters; // indices into the caster bounds, the views' frustum culled
+    float depthBias = 0.0f; // the constant one, LocalShadowSettings::depthBias
+    // Indices into the caster bounds, the views' frustum culled; left empty for the atlas tiles where the casters
+    // are culled on the GPU (culledOnGpu), which tests them against `volume`.
+    std::vector<std::uint32_t> casters;
     CasterNormalOffset normalOffset; // the caster-side normal bias; none on the receiver side
+    CasterVolume volume; // the view's frustum, which `casters` were culled with
 };
 
 // One tile of the local atlas: its view and viewport (its place and size in the atlas).

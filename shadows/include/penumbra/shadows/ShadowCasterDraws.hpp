@@ -4,6 +4,7 @@
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
 #include "penumbra/shaders/ShaderBlock.hpp"
+#include "penumbra/shadows/GpuCasterCulling.hpp"
 #include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <tuple>
 #include <vector>
@@ -57,6 +59,7 @@ static_assert(shaders::matchesLayout(kShadowCasterBlock, shaders::BlockLayout::S
 struct ShadowViewDraw {
     glm::mat4 viewProjection{1.0f};
     float slopeScaleBias = 0.0f;
+    float depthBias = 0.0f; // the rasteriser's constant depth bias, in the depth format's steps
     // Orthographic views pancake casters in front of the near plane onto it; perspective views must
     // not (clamping would distort casters behind the light).
     bool pancake = false;
@@ -72,6 +75,13 @@ struct ShadowTileDraw {
     rhi::Viewport viewport;
     ShadowViewDraw view;
     std::vector<std::uint32_t> casters; // indices into the caster list
+    CasterVolume volume; // what the casters were culled against, for the GPU culling pass
+};
+
+// Tiles whose casters a GpuCasterCulling culled: tile i of a pass's tileDraws is the culling's tile firstTile + i.
+struct CulledTiles {
+    const GpuCasterCulling& culling;
+    std::uint32_t firstTile = 0;
 };
 
 // The shadow caster shaders and pipelines every shadow pass shares, and its per-draw uniforms.
@@ -93,6 +103,12 @@ public:
     std::uint32_t draw(rhi::CommandList& commands, rhi::Format depthFormat, const ShadowViewDraw& view,
                        std::span<const std::uint32_t> indices, std::span<const ShadowCaster> casters);
 
+    // Draws the casters `culling` culled into `tile` (its last record, from this list's casters) with the view: an
+    // indirect draw with a count per batch, whose instances the culling pass wrote; returns the draws recorded.
+    std::uint32_t drawCulled(rhi::CommandList& commands, rhi::Format depthFormat, const ShadowViewDraw& view,
+                             const GpuCasterCulling& culling, std::uint32_t tile,
+                             std::span<const ShadowCaster> casters);
+
 private:
     // Indexed by ShadowCaster::doubleSided: culled, not culled.
     struct Pipelines {
@@ -100,6 +116,9 @@ private:
         std::array<std::unique_ptr<rhi::Pipeline>, 2> alphaTested;
     };
     const Pipelines& pipelines(rhi::Format depthFormat, bool clamp, bool mirrored);
+    // Binds the batch's pipeline (where it differs from `bound`), its uniforms, texture, vertices and indices.
+    void bindBatch(rhi::CommandList& commands, const Pipelines& pipelines, const ShadowViewDraw& view,
+                   const ShadowCaster& caster, std::uint32_t index, const rhi::Pipeline*& bound);
 
     rhi::Device& device_;
     CasterVertexFormat vertexFormat_;

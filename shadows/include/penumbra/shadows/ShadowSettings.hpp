@@ -38,6 +38,9 @@ ShadowFilterFamily filterFamily(ShadowFilter filter);
 // Whether the filter is one of the Poisson-disk filters (Poisson, PCSS), which take SoftShadowSettings.
 bool isSoftFilter(ShadowFilter filter);
 
+// A setting that is either off or on ("off", "on" in the settings file, on the command line and in the viewer).
+enum class Toggle { Off, On };
+
 // How the lit shader moves from one cascade to the next.
 enum class CascadeBlend { Hard, Soft, Dither };
 
@@ -45,9 +48,10 @@ enum class CascadeBlend { Hard, Soft, Dither };
 // Quality"). Stable fit: cascades are bands of distance to the camera, each tile a texel-snapped square around the
 // slice's bounding sphere, so the shadow texels stay put while the camera moves or turns. Close fit: cascades are
 // bands of the camera's view depth, each tile fitted to the light-space bounds of its frustum slice: more texels on
-// screen, but the tiles change size as the camera turns and the shadow edges swim. Depth fit: the stable fit over
-// splits of the view depths the camera saw last frame (a reduction of the depth prepass, quantized with hysteresis:
-// shadows/DepthFit.hpp), so the texels hold still while the visible depths stay within a grid step; the stable fit
+// screen, but the tiles change size as the camera turns and the shadow edges swim. Depth fit: bands of view depth
+// split where the last frame's visible depths put the most texels on them, each tile fitted to the light-space
+// footprint of the surfaces seen in its band (a histogram reduced from the depth prepass: shadows/DepthFit.hpp), the
+// tile sizes on a grid with hysteresis so the texels hold still while the footprints barely change; the close fit
 // until a frame has been reduced. The values are the lit shader's (generated into shadow_constants.glsl as
 // PENUMBRA_PROJECTION_<NAME>).
 enum class CascadeProjection { Stable, Close, DepthFit };
@@ -89,6 +93,10 @@ struct SoftShadowSettings {
     float minPenumbraTexels = 1.0f; // the filter radius never goes below this
     float maxPenumbraTexels = 24.0f; // at least minPenumbraTexels; nor above this (nor the blocker search)
     float poissonRadiusTexels = 2.5f; // the fixed-radius Poisson filter's radius
+    // Whether each receiver turns the disk by a hash of its texel in the light's grid (the rotation of the design
+    // document on PCSS, there from a blue-noise texture): on, the disk's fixed pattern becomes noise; off, every
+    // receiver reads the same disk.
+    Toggle diskRotation = Toggle::On;
 };
 
 // The directional lights' atlas, filter and cascades. The allowed values of every settings field are stated once,
@@ -101,12 +109,17 @@ struct DirectionalShadowSettings {
     float cascadeFade = 0.1f; // fraction of the last cascade's radius that fades
     CascadeBlend cascadeBlend = CascadeBlend::Hard;
     CascadeProjection projection = CascadeProjection::Stable;
-    // Depth fit: grid steps per power of two of view depth for the fitted range and splits (0: unquantized, the
-    // range as measured, which swims), and how many steps further inside the kept range the measured one must move
-    // before the fit narrows.
+    // Depth fit: grid steps per power of two of light-space size for the tiles' half sizes (0: unquantized, as the
+    // footprints need, which swims), and how many steps further below the kept size a tile's need must fall before
+    // the tile shrinks; hysteresis / steps is also the log2 of the texel size a kept partition may lose against the
+    // best before it is dropped.
     std::uint32_t depthFitSteps = 8;
     float depthFitHysteresis = 1.0f;
     rhi::Format atlasFormat = rhi::Format::D32F;
+    // The rasteriser's constant depth bias of the casters, beside each light's slope-scaled one (the first argument
+    // of Unity's SetGlobalDepthBias in Catlike Coding's "Directional Shadows", section 4.1): in units of the atlas
+    // format's smallest depth step. 0 keeps the normal and slope-scaled biases alone.
+    float depthBias = 0.0f;
 };
 
 // Where point lights keep their six faces.
@@ -131,6 +144,12 @@ struct LocalShadowSettings {
     std::uint32_t tileResolution = 1024;
     // The least a tile is lowered to when the atlas runs out of room, before a light loses its shadow.
     std::uint32_t minTileResolution = 64;
+    // The constant depth bias of the spot and point casters (DirectionalShadowSettings::depthBias).
+    float depthBias = 0.0f;
+    // Widens each spot light's shadow frustum as the point faces' are, so that the normal bias and the filter's taps
+    // at the cone's edge stay inside its tile (Catlike Coding, "Point and Spot Shadows", section 2.5 "Field of View
+    // Bias", applied to spot lights as the tutorial suggests): the tile then spends a few texels outside the cone.
+    Toggle spotFovBias = Toggle::Off;
 };
 
 // Which casters the realtime atlases draw while static maps exist.
@@ -151,20 +170,44 @@ struct StaticShadowSettings {
     std::uint32_t localAtlasSize = 2048;
 };
 
+// Contact shadows: a short march through the camera's depth buffer from each shaded pixel towards each shadowed
+// directional light, whose hit darkens the light's direct term (the minimum with the map's visibility) where the
+// map's texels and biases leave a gap under small casters and at contacts (Bend Studio, "Bend Studio's screen space
+// shadows", SIGGRAPH 2023; Unreal Engine's "Contact Shadows" documentation).
+struct ContactShadowSettings {
+    Toggle shadows = Toggle::Off;
+    float length = 0.3f; // metres of the march towards the light
+    std::uint32_t steps = 12; // depth samples along it
+    float thickness = 0.2f; // metres behind a depth sample that still count as inside its surface
+};
+
+// Where the realtime atlases' casters are culled per tile: by the planner on the CPU (the reference and the
+// fallback), or by a compute pass that writes each tile's instance lists and indirect draws (docs/compute.md).
+enum class CasterCullingMode { Cpu, Gpu };
+
 // Every shadow setting of a frame; docs/settings.md lists each field with its default and range.
 struct ShadowSettings {
     float maxDistance = 100.0f; // view depth beyond which nothing is shadowed; applies to every light
     float distanceFade = 0.1f; // fraction of maxDistance over which shadows fade out
+    CasterCullingMode culling = CasterCullingMode::Cpu;
     DirectionalShadowSettings directional;
     LocalShadowSettings local;
     SoftShadowSettings soft;
     StaticShadowSettings staticMaps;
+    ContactShadowSettings contact;
 };
 
 // Whether the settings keep static shadow maps (any update mode but EveryFrame).
 inline bool hasStaticMaps(const ShadowSettings& settings)
 {
     return settings.staticMaps.update != StaticShadowUpdate::EveryFrame;
+}
+
+// Whether the realtime atlas tiles' casters are culled on the GPU: asked for, and every caster drawn (with
+// RealtimeCasters::Dynamic the tiles' lists are split between the static and the realtime atlases on the CPU).
+inline bool culledOnGpu(const ShadowSettings& settings)
+{
+    return settings.culling == CasterCullingMode::Gpu && settings.staticMaps.realtimeCasters == RealtimeCasters::All;
 }
 
 // How a settings field's values are bounded: by the names its `allowed` text lists (enums, depth formats, sample

@@ -16,8 +16,9 @@ namespace penumbra::shadows {
 glm::uvec2 pcg2d(glm::uvec2 v);
 
 // The Poisson disk's rotation at light-space texel `texel` (a texel of the light's own grid, so it stays with
-// the receiver while the camera moves): an angle in [0, 2 pi).
-float diskRotationAngle(glm::ivec2 texel);
+// the receiver while the camera moves): an angle in [0, 2 pi); 0 everywhere when the rotation is off
+// (SoftShadowSettings::diskRotation).
+float diskRotationAngle(glm::ivec2 texel, Toggle rotation = Toggle::On);
 
 // Receiver-plane depth bias (Isidoro 2006, "Receiver Plane Depth Bias", GDC): the change of the receiver plane's
 // shadow-map depth per texel along x and y, from the screen-space derivatives dx, dy of its shadow-map position

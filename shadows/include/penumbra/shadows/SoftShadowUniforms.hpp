@@ -19,13 +19,14 @@ struct alignas(16) SoftShadowUniforms {
     std::int32_t blockerSamples = 0;
     std::int32_t filterSamples = 0;
     float poissonRadius = 0.0f; // texels
+    std::int32_t diskRotation = 0; // 1: the disk turns per receiver texel (SoftShadowSettings::diskRotation)
 };
 
 inline constexpr std::array kSoftShadowFields{
     PENUMBRA_SHADER_FIELD(SoftShadowUniforms, searchScale),    PENUMBRA_SHADER_FIELD(SoftShadowUniforms, penumbraScale),
     PENUMBRA_SHADER_FIELD(SoftShadowUniforms, minTexels),      PENUMBRA_SHADER_FIELD(SoftShadowUniforms, maxTexels),
     PENUMBRA_SHADER_FIELD(SoftShadowUniforms, blockerSamples), PENUMBRA_SHADER_FIELD(SoftShadowUniforms, filterSamples),
-    PENUMBRA_SHADER_FIELD(SoftShadowUniforms, poissonRadius),
+    PENUMBRA_SHADER_FIELD(SoftShadowUniforms, poissonRadius),  PENUMBRA_SHADER_FIELD(SoftShadowUniforms, diskRotation),
 };
 inline constexpr shaders::ShaderStruct kSoftShadowStruct{"SoftControls", sizeof(SoftShadowUniforms), kSoftShadowFields};
 static_assert(shaders::matchesLayout(kSoftShadowStruct, shaders::BlockLayout::Std140, true));

@@ -28,7 +28,8 @@ struct NativeDevice {
 struct NativePipeline {
     VkPipeline pipeline = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
-    // Set 0: uniform blocks are UNIFORM_BUFFER_DYNAMIC, textures COMBINED_IMAGE_SAMPLER, at their GLSL binding numbers.
+    // The per-draw set, the last: uniform blocks are UNIFORM_BUFFER_DYNAMIC, textures COMBINED_IMAGE_SAMPLER, at their
+    // GLSL binding numbers. Set 0 unless the pipeline lists binding set layouts, whose sets come first, in order.
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
     VkRenderPass renderPass = VK_NULL_HANDLE; // the compatible render pass it was created with
 };
@@ -65,5 +66,14 @@ NativeTexture native(const rhi::Texture& texture);
 VkSampler native(const rhi::Sampler& sampler);
 // The command buffer a list is recording into (valid until its next submit).
 VkCommandBuffer native(const rhi::CommandList& commands);
+
+// How a command list has bound descriptors since it was created, both bind points together: for tests that show
+// which path a binding takes.
+struct DescriptorCounts {
+    std::uint64_t bindCalls = 0; // vkCmdBindDescriptorSets
+    std::uint64_t bindingSetBinds = 0; // of those, the calls that bound a binding set's own descriptor set
+    std::uint64_t setsWritten = 0; // descriptor sets written while recording: per draw, or for a set bound in parts
+};
+DescriptorCounts descriptorCounts(const rhi::CommandList& commands);
 
 } // namespace penumbra::vulkan

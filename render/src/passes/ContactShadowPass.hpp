@@ -1,0 +1,122 @@
+#pragma once
+
+#include "FrameState.hpp"
+
+#include "penumbra/render/FramePass.hpp"
+#include "penumbra/render/LitUniforms.hpp"
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+
+namespace penumbra::render {
+
+class DepthPrepass;
+class GpuScene;
+
+// The contact shadow texture: one channel per directional light 0 .. maxCollectedDirectionalLights - 1, 1 = lit.
+// The march's answer is 0 or 1, so 8 bits hold it.
+inline constexpr rhi::Format kContactShadowFormat = rhi::Format::RGBA8;
+
+// The contact pass's bindings: its block and the single-sampled depth it marches through.
+inline constexpr std::uint32_t kContactBinding = 0;
+inline constexpr std::uint32_t kContactDepthBinding = 1;
+
+// The Contact block of shaders/contact_shadows.frag, std140.
+struct ContactShadowUniforms {
+    glm::mat4 viewProjection{1.0f};
+    glm::mat4 clipToWorld{1.0f};
+    glm::vec4 cameraPosition{0.0f};
+    glm::vec4 cameraForward{0.0f};
+    // Unit, from the surface towards directional light i (LitFrameUniforms::lights[i].direction negated).
+    std::array<glm::vec4, maxCollectedDirectionalLights> towardsLight{};
+    glm::vec4 targetSize{0.0f}; // width, height in pixels
+    // a and b of the camera's projection (view depth = b / (z_ndc + a), rhi::Conventions::viewDepth) and its near
+    // plane's view depth.
+    glm::vec4 depthToView{0.0f};
+    std::int32_t lightCount = 0;
+    std::int32_t steps = 0; // shadows::ContactShadowSettings
+    float marchLength = 0.0f; // metres (GLSL reserves the name `length`)
+    float thickness = 0.0f;
+};
+
+inline constexpr std::array kContactFields{
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, viewProjection),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, clipToWorld),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, cameraPosition),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, cameraForward),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, towardsLight),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, targetSize),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, depthToView),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, lightCount),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, steps),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, marchLength),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, thickness),
+};
+// contact_shadows.frag's block Contact, read through the instance name `contact`.
+inline constexpr shaders::ShaderStruct kContactBlock{"Contact", sizeof(ContactShadowUniforms), kContactFields};
+static_assert(shaders::matchesLayout(kContactBlock, shaders::BlockLayout::Std140));
+
+// The Contact block of a frame from `camera`: the lit pass's frame block (its view-projection and directional
+// lights) and the frame's size and settings.
+ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions, const scene::Camera& camera,
+                                            const FrameDesc& frame, const LitFrameUniforms& lit);
+
+// The contact shadow march (shaders/contact_shadows.frag): one full-screen pass over the single-sampled lit depth
+// into shadows(), which the lit pass and the visibility view read at their pixel.
+class ContactShadowPass {
+public:
+    explicit ContactShadowPass(rhi::Device& device);
+
+    // The target for frames of `width` x `height`; call again whenever the frame's size changes.
+    void prepare(std::uint32_t width, std::uint32_t height);
+    const rhi::Texture& shadows() const { return *shadows_; }
+    // Nearest, clamped: what the lit pass reads shadows() with (texelFetch).
+    const rhi::Sampler& sampler() const { return *sampler_; }
+
+    void record(rhi::CommandList& commands, const rhi::Texture& depth, const rhi::UniformSlice& uniforms);
+
+private:
+    rhi::Device& device_;
+    std::unique_ptr<rhi::Shader> vertex_, fragment_;
+    std::unique_ptr<rhi::Pipeline> pipeline_;
+    std::unique_ptr<rhi::Sampler> sampler_;
+    std::unique_ptr<rhi::Texture> shadows_;
+    std::unique_ptr<rhi::Framebuffer> target_;
+};
+
+// The frame pass of ContactShadowPass: after the prepasses, before the lit pass.
+class ContactShadowsPass final : public FramePass {
+public:
+    ContactShadowsPass(const FrameState& state, ContactShadowPass* pass) : state_(state), pass_(pass) {}
+    std::string name() const override;
+    bool setup(FramePassBuilder& builder) override;
+    void execute(const FramePassContext& context) override;
+
+private:
+    const FrameState& state_;
+    ContactShadowPass* pass_; // null until a frame asks for contact shadows
+};
+
+// The single-sampled depth that contact shadows march through on the forward path with MSAA, where neither the
+// screen-space path's receiver prepass nor the depth fit's prepass draws it.
+class ContactPrepassPass final : public FramePass {
+public:
+    ContactPrepassPass(const FrameState& state, const DepthPrepass* prepass, const GpuScene& scene)
+        : state_(state), prepass_(prepass), scene_(scene)
+    {
+    }
+    std::string name() const override;
+    bool setup(FramePassBuilder& builder) override;
+    void execute(const FramePassContext& context) override;
+
+private:
+    const FrameState& state_;
+    const DepthPrepass* prepass_; // null until a frame needs it
+    const GpuScene& scene_;
+};
+
+} // namespace penumbra::render

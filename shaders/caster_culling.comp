@@ -1,0 +1,96 @@
+#version 450
+// Shadow casters culled per tile on the GPU (penumbra::shadows::GpuCasterCulling): each invocation tests one
+// caster's world box against every tile's volume and appends it to the tile's draw of its batch. The tests mirror
+// shadows/src/CasterVolume.cpp (casterInVolume, the planner's rules) operation for operation, so the lists are the
+// CPU's; the box's light-space bounds are Arvo's ("Transforming Axis-Aligned Bounding Boxes", Graphics Gems, 1990).
+
+layout(local_size_x = 64) in;
+
+#include "culling_blocks.glsl"
+
+vec3 boxCorner(vec3 lo, vec3 hi, int i)
+{
+    return vec3((i & 1) != 0 ? hi.x : lo.x, (i & 2) != 0 ? hi.y : lo.y, (i & 4) != 0 ? hi.z : lo.z);
+}
+
+// meetsFrustum: culled where all 8 corners lie outside one of the six planes (view space, looking down -z).
+bool meetsFrustum(vec3 lo, vec3 hi, CasterVolume v)
+{
+    const float t = v.frustum.x;
+    int outside[6] = int[6](0, 0, 0, 0, 0, 0);
+    for (int i = 0; i < 8; ++i) {
+        const vec3 p = (v.view * vec4(boxCorner(lo, hi, i), 1.0)).xyz;
+        const float depth = -p.z;
+        outside[0] += depth < v.frustum.y ? 1 : 0;
+        outside[1] += depth > v.frustum.z ? 1 : 0;
+        outside[2] += p.x > depth * t ? 1 : 0;
+        outside[3] += -p.x > depth * t ? 1 : 0;
+        outside[4] += p.y > depth * t ? 1 : 0;
+        outside[5] += -p.y > depth * t ? 1 : 0;
+    }
+    for (int k = 0; k < 6; ++k)
+        if (outside[k] == 8)
+            return false;
+    return true;
+}
+
+// overlapsCascade over lightSpaceBounds: the light box meets the tile's square and begins before its far plane.
+bool overlapsCascade(vec3 lo, vec3 hi, CasterVolume v)
+{
+    const vec3 mid = 0.5 * (lo + hi);
+    const vec3 centre = vec3(dot(mid, v.right.xyz), dot(mid, v.up.xyz), dot(mid, v.direction.xyz));
+    const vec3 halfSize = 0.5 * (hi - lo);
+    const vec3 reach =
+        vec3(dot(abs(v.right.xyz), halfSize), dot(abs(v.up.xyz), halfSize), dot(abs(v.direction.xyz), halfSize));
+    const vec3 lightMin = centre - reach;
+    const vec3 lightMax = centre + reach;
+    const float h = v.square.z;
+    return lightMax.x >= v.square.x - h && lightMin.x <= v.square.x + h && lightMax.y >= v.square.y - h &&
+           lightMin.y <= v.square.y + h && lightMin.z <= v.square.w;
+}
+
+// heldByPrevious, the culling bias: the world box lies wholly inside the previous cascade's scaled sphere or slice.
+bool heldByPrevious(vec3 lo, vec3 hi, CasterVolume v)
+{
+    if (v.kind == PENUMBRA_VOLUME_BEYOND_SPHERE) {
+        const vec3 farthest = max(abs(lo - v.sphere.xyz), abs(hi - v.sphere.xyz));
+        return dot(farthest, farthest) <= v.sphere.w * v.sphere.w;
+    }
+    if (v.kind != PENUMBRA_VOLUME_BEYOND_SLICE)
+        return false;
+    for (int i = 0; i < 8; ++i) {
+        const vec3 offset = boxCorner(lo, hi, i) - v.slicePosition.xyz;
+        const float depth = dot(offset, v.sliceForward.xyz);
+        if (depth < v.slicePosition.w || depth > v.sliceForward.w ||
+            abs(dot(offset, v.sliceRight.xyz)) > depth * v.sliceRight.w ||
+            abs(dot(offset, v.sliceUp.xyz)) > depth * v.sliceUp.w)
+            return false;
+    }
+    return true;
+}
+
+bool casterInVolume(vec3 lo, vec3 hi, CasterVolume v)
+{
+    if (v.kind == PENUMBRA_VOLUME_FRUSTUM)
+        return meetsFrustum(lo, hi, v);
+    return overlapsCascade(lo, hi, v) && !heldByPrevious(lo, hi, v);
+}
+
+void main()
+{
+    const uint caster = gl_GlobalInvocationID.x;
+    if (caster >= tiles.casterCount)
+        return;
+    const CullingCaster c = casterList.casters[caster];
+    for (uint tile = 0u; tile < tiles.tileCount; ++tile) {
+        if (!casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
+            continue;
+        const uint command = tile * tiles.batchCount + c.batch;
+        const uint slot = atomicAdd(draws.commands[command].instanceCount, 1u);
+        if (slot == 0u)
+            drawCounts.counts[command] = 1u;
+        const uint at = tile * tiles.casterCount + c.first + slot;
+        culled.instances[at] = source.transforms[caster];
+        culledIndices.indices[at] = caster;
+    }
+}

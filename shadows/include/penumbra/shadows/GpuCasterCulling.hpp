@@ -1,0 +1,123 @@
+#pragma once
+
+#include "penumbra/rhi/CommandList.hpp"
+#include "penumbra/rhi/Device.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
+#include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/CasterVolume.hpp"
+#include "penumbra/shadows/InstanceBatches.hpp"
+#include "penumbra/shadows/InstanceTransform.hpp"
+#include "penumbra/shadows/ShadowCaster.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace penumbra::shadows {
+
+// One caster as the culling pass reads it: an element of the storage block CullingCasters.
+struct alignas(16) CullingCaster {
+    glm::vec4 boundsMin{0.0f}; // the world box, xyz
+    glm::vec4 boundsMax{0.0f};
+    std::uint32_t batch = 0; // its batch (draw group): tile t's draw of it is command t * batches + batch
+    std::uint32_t first = 0; // its batch's first slot in each tile's range of the instance lists
+};
+inline constexpr std::array kCullingCasterFields{
+    PENUMBRA_SHADER_FIELD(CullingCaster, boundsMin),
+    PENUMBRA_SHADER_FIELD(CullingCaster, boundsMax),
+    PENUMBRA_SHADER_FIELD(CullingCaster, batch),
+    PENUMBRA_SHADER_FIELD(CullingCaster, first),
+};
+inline constexpr shaders::ShaderStruct kCullingCasterStruct{"CullingCaster", sizeof(CullingCaster),
+                                                            kCullingCasterFields};
+static_assert(shaders::matchesLayout(kCullingCasterStruct, shaders::BlockLayout::Std430, true));
+
+// InstanceTransform as a storage element: what the pass copies into each tile's instances.
+inline constexpr std::array kInstanceTransformFields{
+    PENUMBRA_SHADER_FIELD(InstanceTransform, model),
+    PENUMBRA_SHADER_FIELD(InstanceTransform, normalColumns),
+};
+inline constexpr shaders::ShaderStruct kInstanceTransformStruct{"InstanceTransform", sizeof(InstanceTransform),
+                                                                kInstanceTransformFields};
+static_assert(shaders::matchesLayout(kInstanceTransformStruct, shaders::BlockLayout::Std430, true));
+
+// VkDrawIndexedIndirectCommand (GL's DrawElementsIndirectCommand), one per batch per tile.
+struct CulledDraw {
+    std::uint32_t indexCount = 0;
+    std::uint32_t instanceCount = 0; // counted up by the pass, from 0
+    std::uint32_t firstIndex = 0;
+    std::int32_t vertexOffset = 0;
+    std::uint32_t firstInstance = 0; // the batch's first slot in the tile's range
+};
+inline constexpr std::array kCulledDrawFields{
+    PENUMBRA_SHADER_FIELD(CulledDraw, indexCount),    PENUMBRA_SHADER_FIELD(CulledDraw, instanceCount),
+    PENUMBRA_SHADER_FIELD(CulledDraw, firstIndex),    PENUMBRA_SHADER_FIELD(CulledDraw, vertexOffset),
+    PENUMBRA_SHADER_FIELD(CulledDraw, firstInstance),
+};
+inline constexpr shaders::ShaderStruct kCulledDrawStruct{"CulledDraw", sizeof(CulledDraw), kCulledDrawFields};
+static_assert(shaders::matchesLayout(kCulledDrawStruct, shaders::BlockLayout::Std430, true));
+static_assert(sizeof(CulledDraw) == rhi::kDrawIndexedIndirectCommandBytes);
+
+// The fixed part of the storage block CasterVolumes, before its volumes.
+struct CullingCounts {
+    std::uint32_t casters = 0;
+    std::uint32_t tiles = 0;
+    std::uint32_t batches = 0;
+};
+
+// Shadow casters culled per tile on the GPU (shaders/caster_culling.comp): every caster's world box is tested against
+// every tile's CasterVolume with casterInVolume's rules; a caster that passes is appended to its batch's instances in
+// the tile's range of the instance lists (its InstanceTransform, and its index), and counted in the tile's draw of its
+// batch, an indexed indirect command. Tile t's range holds a slot for every caster; the draw of batch b in tile t is
+// command t * batches + b, and its count (0 or 1, for drawIndexedIndirectCount) says whether it has instances.
+class GpuCasterCulling {
+public:
+    explicit GpuCasterCulling(rhi::Device& device);
+
+    // Uploads the casters, their world boxes (casters[i]'s is bounds[i]) and the tiles' volumes, and records the
+    // dispatch. `normalMatrices`: the instances carry their normal matrices (the caster-side normal offset reads
+    // them). Throws rhi::Error where the counts differ, and for casters of a draw group that do not draw alike.
+    void record(rhi::CommandList& commands, std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
+                std::span<const CasterVolume> volumes, bool normalMatrices);
+
+    // The batches of the last record: batches().batches[b] is drawn by command tile * batches + b.
+    const InstanceBatches& batches() const { return batches_; }
+    const rhi::Buffer& instances() const { return *instances_; }
+    const rhi::Buffer& draws() const { return *draws_; }
+    const rhi::Buffer& drawCounts() const { return *counts_; }
+    // The byte offsets of tile t's draw of batch b in draws() and of its count in drawCounts().
+    std::uint64_t drawOffset(std::uint32_t tile, std::uint32_t batch) const;
+    std::uint64_t countOffset(std::uint32_t tile, std::uint32_t batch) const;
+
+    // After the submission: each tile's casters, ascending (for tests; reads the GPU's lists back).
+    std::vector<std::vector<std::uint32_t>> readLists() const;
+
+private:
+    void reserve(std::uint64_t casters, std::uint64_t tiles, std::uint64_t draws);
+
+    rhi::Device& device_;
+    std::unique_ptr<rhi::Shader> shader_;
+    std::unique_ptr<rhi::ComputePipeline> pipeline_;
+    std::unique_ptr<rhi::Buffer> volumes_;
+    std::unique_ptr<rhi::Buffer> casters_;
+    std::unique_ptr<rhi::Buffer> transforms_;
+    std::unique_ptr<rhi::Buffer> instances_;
+    std::unique_ptr<rhi::Buffer> indices_;
+    std::unique_ptr<rhi::Buffer> draws_;
+    std::unique_ptr<rhi::Buffer> counts_;
+    InstanceBatches batches_;
+    // What record() uploads, kept from frame to frame: fresh vectors of 10^5 elements cost more in page faults than
+    // filling them.
+    struct Scratch {
+        std::vector<std::uint32_t> all;
+        std::vector<CullingCaster> casters;
+        std::vector<InstanceTransform> transforms;
+        std::vector<CulledDraw> draws;
+    } scratch_;
+    std::uint32_t casterCount_ = 0;
+    std::uint32_t tileCount_ = 0;
+};
+
+} // namespace penumbra::shadows

@@ -1,0 +1,175 @@
+#include "penumbra/shadows/GpuCasterCulling.hpp"
+
+#include "penumbra/rhi/Error.hpp"
+#include "penumbra/shaders/ShaderLibrary.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace penumbra::shadows {
+namespace {
+
+// The pass's storage blocks, the structs generated from their C++ declarations, and the volume kinds.
+std::string cullingBlocksGlsl()
+{
+    return fmt::format("#define PENUMBRA_VOLUME_FRUSTUM {}\n#define PENUMBRA_VOLUME_BEYOND_SPHERE {}\n"
+                       "#define PENUMBRA_VOLUME_BEYOND_SLICE {}\n",
+                       static_cast<int>(CasterVolumeKind::Frustum),
+                       static_cast<int>(CasterVolumeKind::CascadeBeyondSphere),
+                       static_cast<int>(CasterVolumeKind::CascadeBeyondSlice)) +
+           shaders::structGlsl(kCasterVolumeStruct) + shaders::structGlsl(kCullingCasterStruct) +
+           shaders::structGlsl(kInstanceTransformStruct) + shaders::structGlsl(kCulledDrawStruct) +
+           // Every member name is distinct across the blocks: Mesa's GLSL compiler (22.3) takes an unsized array for
+           // another block's member of the same name and refuses to index it.
+           R"(layout(std430, binding = 0) readonly buffer CasterVolumes {
+    uint casterCount;
+    uint tileCount;
+    uint batchCount;
+    CasterVolume volumes[];
+} tiles;
+layout(std430, binding = 1) readonly buffer CullingCasters { CullingCaster casters[]; } casterList;
+layout(std430, binding = 2) readonly buffer InstanceTransforms { InstanceTransform transforms[]; } source;
+layout(std430, binding = 3) writeonly buffer CulledInstances { InstanceTransform instances[]; } culled;
+layout(std430, binding = 4) writeonly buffer CulledIndices { uint indices[]; } culledIndices;
+layout(std430, binding = 5) buffer CulledDraws { CulledDraw commands[]; } draws;
+layout(std430, binding = 6) buffer CulledDrawCounts { uint counts[]; } drawCounts;
+)";
+}
+
+rhi::ShaderSource cullingShader()
+{
+    rhi::ShaderSource source = shaders::load("caster_culling.comp");
+    source.includes.push_back({"culling_blocks.glsl", cullingBlocksGlsl()});
+    return source;
+}
+
+constexpr std::uint64_t kVolumesOffset = 16; // the CasterVolume array after CullingCounts, std430
+
+template <typename T>
+std::span<const std::byte> bytesOf(const std::vector<T>& values)
+{
+    return std::as_bytes(std::span(values));
+}
+
+} // namespace
+
+GpuCasterCulling::GpuCasterCulling(rhi::Device& device)
+    : device_(device), shader_(device.createShader(cullingShader())),
+      pipeline_(device.createComputePipeline({.compute = shader_.get(), .debugName = "caster culling"}))
+{
+    reserve(1, 1, 1);
+}
+
+void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t tiles, std::uint64_t draws)
+{
+    using rhi::BufferUsage;
+    const auto ensure = [&](std::unique_ptr<rhi::Buffer>& buffer, std::uint64_t size, BufferUsage usage,
+                            const char* name) {
+        if (!buffer || buffer->desc().size < size)
+            buffer = device_.createBuffer({.size = size, .usage = usage, .debugName = name});
+    };
+    ensure(volumes_, kVolumesOffset + tiles * sizeof(CasterVolume), BufferUsage::Storage, "culling volumes");
+    ensure(casters_, casters * sizeof(CullingCaster), BufferUsage::Storage, "culling casters");
+    ensure(transforms_, casters * sizeof(InstanceTransform), BufferUsage::Storage, "culling transforms");
+    ensure(instances_, tiles * casters * sizeof(InstanceTransform), BufferUsage::Storage | BufferUsage::Vertex,
+           "culled instances");
+    ensure(indices_, tiles * casters * sizeof(std::uint32_t), BufferUsage::Storage, "culled indices");
+    ensure(draws_, draws * sizeof(CulledDraw), BufferUsage::Storage | BufferUsage::Indirect, "culled draws");
+    ensure(counts_, draws * sizeof(std::uint32_t), BufferUsage::Storage | BufferUsage::Indirect, "culled draw counts");
+}
+
+void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const ShadowCaster> casters,
+                              std::span<const Bounds> bounds, std::span<const CasterVolume> volumes,
+                              bool normalMatrices)
+{
+    if (casters.size() != bounds.size())
+        throw rhi::Error(
+            fmt::format("GPU caster culling: {} casters, but {} caster bounds", casters.size(), bounds.size()));
+    casterCount_ = static_cast<std::uint32_t>(casters.size());
+    tileCount_ = static_cast<std::uint32_t>(volumes.size());
+    std::vector<std::uint32_t>& all = scratch_.all;
+    all.resize(casters.size());
+    for (std::uint32_t i = 0; i < all.size(); ++i)
+        all[i] = i;
+    // The batches every tile draws, as the CPU path batches each tile's list (ShadowCasterDraws::draw).
+    batches_ = batchByGroup(all, [&](std::uint32_t index) { return casters[index].drawGroup; });
+    if (casterCount_ == 0 || tileCount_ == 0)
+        return;
+    const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
+    reserve(casterCount_, tileCount_, std::uint64_t(tileCount_) * batchCount);
+
+    std::vector<CullingCaster>& culling = scratch_.casters;
+    std::vector<InstanceTransform>& transforms = scratch_.transforms;
+    culling.resize(casters.size());
+    transforms.resize(casters.size());
+    for (std::uint32_t b = 0; b < batchCount; ++b) {
+        const InstanceBatches::Batch& batch = batches_.batches[b];
+        const ShadowCaster& first = casters[batches_.items[batch.first]];
+        for (std::uint32_t k = batch.first; k < batch.first + batch.count; ++k) {
+            const std::uint32_t i = batches_.items[k];
+            if (!drawAlike(first, casters[i]))
+                throw rhi::Error(fmt::format("shadow casters {} and {} share draw group {}, but draw differently "
+                                             "(mesh, material or sides)",
+                                             batches_.items[batch.first], i, first.drawGroup));
+            culling[i] = {glm::vec4(bounds[i].min, 0.0f), glm::vec4(bounds[i].max, 0.0f), b, batch.first};
+            transforms[i] = normalMatrices ? instanceTransform(casters[i].model) : InstanceTransform{casters[i].model};
+        }
+    }
+    std::vector<CulledDraw>& draws = scratch_.draws;
+    draws.clear();
+    for (std::uint32_t t = 0; t < tileCount_; ++t)
+        for (const InstanceBatches::Batch& batch : batches_.batches)
+            draws.push_back({.indexCount = casters[batches_.items[batch.first]].indexCount,
+                             .firstInstance = t * casterCount_ + batch.first});
+    const CullingCounts counts{casterCount_, tileCount_, batchCount};
+    volumes_->writeObject(counts);
+    volumes_->write(kVolumesOffset, std::as_bytes(volumes));
+    casters_->write(0, bytesOf(culling));
+    transforms_->write(0, bytesOf(transforms));
+    draws_->write(0, bytesOf(draws));
+    counts_->write(0, bytesOf(std::vector<std::uint32_t>(draws.size(), 0)));
+
+    const std::uint64_t slots = std::uint64_t(tileCount_) * casterCount_;
+    commands.bindComputePipeline(*pipeline_);
+    commands.bindStorageBuffer(0, *volumes_, 0, kVolumesOffset + volumes.size_bytes());
+    commands.bindStorageBuffer(1, *casters_, 0, culling.size() * sizeof(CullingCaster));
+    commands.bindStorageBuffer(2, *transforms_, 0, transforms.size() * sizeof(InstanceTransform));
+    commands.bindStorageBuffer(3, *instances_, 0, slots * sizeof(InstanceTransform));
+    commands.bindStorageBuffer(4, *indices_, 0, slots * sizeof(std::uint32_t));
+    commands.bindStorageBuffer(5, *draws_, 0, draws.size() * sizeof(CulledDraw));
+    commands.bindStorageBuffer(6, *counts_, 0, draws.size() * sizeof(std::uint32_t));
+    const std::uint32_t groupSize = pipeline_->workgroupSize()[0];
+    commands.dispatch((casterCount_ + groupSize - 1) / groupSize);
+}
+
+std::uint64_t GpuCasterCulling::drawOffset(std::uint32_t tile, std::uint32_t batch) const
+{
+    return (std::uint64_t(tile) * batches_.batches.size() + batch) * sizeof(CulledDraw);
+}
+
+std::uint64_t GpuCasterCulling::countOffset(std::uint32_t tile, std::uint32_t batch) const
+{
+    return (std::uint64_t(tile) * batches_.batches.size() + batch) * sizeof(std::uint32_t);
+}
+
+std::vector<std::vector<std::uint32_t>> GpuCasterCulling::readLists() const
+{
+    std::vector<std::vector<std::uint32_t>> lists(tileCount_);
+    if (casterCount_ == 0 || tileCount_ == 0)
+        return lists;
+    std::vector<CulledDraw> draws(std::size_t(tileCount_) * batches_.batches.size());
+    draws_->read(0, std::as_writable_bytes(std::span(draws)));
+    std::vector<std::uint32_t> indices(std::size_t(tileCount_) * casterCount_);
+    indices_->read(0, std::as_writable_bytes(std::span(indices)));
+    for (std::uint32_t t = 0; t < tileCount_; ++t) {
+        for (std::uint32_t b = 0; b < batches_.batches.size(); ++b) {
+            const CulledDraw& draw = draws[t * batches_.batches.size() + b];
+            lists[t].insert(lists[t].end(), indices.begin() + draw.firstInstance,
+                            indices.begin() + draw.firstInstance + draw.instanceCount);
+        }
+        std::sort(lists[t].begin(), lists[t].end());
+    }
+    return lists;
+}
+
+} // namespace penumbra::shadows

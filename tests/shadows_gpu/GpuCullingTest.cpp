@@ -1,0 +1,136 @@
+// Shadow casters culled on the GPU (ShadowSettings::culling gpu, shaders/caster_culling.comp): the culling pass's
+// per-tile lists are the planner's (casterInVolume) and the pictures and both atlases are those of CPU culling, byte
+// for byte, on a small grid of instanced cubes that reaches out of the cascades, with a sun and a spot light.
+#include "GpuTesting.hpp"
+#include "LitRendering.hpp"
+
+#include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/rhi/Image.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
+#include "penumbra/shadows/DirectionalShadowPass.hpp"
+#include "penumbra/shadows/LocalShadowPass.hpp"
+
+#include <gtest/gtest.h>
+
+namespace penumbra::testing {
+namespace {
+
+constexpr std::uint32_t kCubes = 144;
+
+scene::Scene culledScene()
+{
+    scene::Scene scene = scenes::makeCubeGridScene(kCubes);
+    scene.spotLights = {{.name = "spot",
+                         .intensity = 6.0f,
+                         .position = {0.0f, 6.0f, 2.0f},
+                         .direction = glm::normalize(glm::vec3(0.0f, -1.0f, -0.5f)),
+                         .range = 12.0f}};
+    scene.validate();
+    return scene;
+}
+
+render::FrameDesc smallFrame(shadows::CasterCullingMode culling)
+{
+    render::FrameDesc frame = litFrame(160, 90, false, 1);
+    frame.instancedDraws = true;
+    frame.shadows.culling = culling;
+    frame.shadows.directional.atlasSize = 512;
+    frame.shadows.local.atlasSize = 512;
+    return frame;
+}
+
+class GpuCullingTest : public GpuTest {
+protected:
+    // The planner's list of every realtime tile (cascades, then local tiles) and the GPU's for the same volumes;
+    // `fault` changes what the GPU is given before it culls.
+    template <typename Fault>
+    void cullBoth(Fault fault, std::vector<std::vector<std::uint32_t>>& planned,
+                  std::vector<std::vector<std::uint32_t>>& culled)
+    {
+        const scene::Scene scene = culledScene();
+        render::SceneRenderer renderer(*device, scene);
+        const render::ShadowPlans plans =
+            renderer.planShadows(scene.camera, smallFrame(shadows::CasterCullingMode::Cpu));
+        std::vector<shadows::CasterVolume> volumes;
+        for (const std::vector<shadows::ShadowTileDraw>& tiles :
+             {shadows::DirectionalShadowPass::tileDraws(plans.directional),
+              shadows::LocalShadowPass::tileDraws(plans.local)})
+            for (const shadows::ShadowTileDraw& tile : tiles) {
+                planned.push_back(tile.casters);
+                volumes.push_back(tile.volume);
+            }
+        std::vector<shadows::ShadowCaster> casters;
+        renderer.gpuScene().casters(casters);
+        std::vector<shadows::Bounds> bounds = renderer.gpuScene().casterBounds();
+        fault(volumes, bounds);
+        shadows::GpuCasterCulling culling(*device);
+        auto commands = device->createCommandList();
+        culling.record(*commands, casters, bounds, volumes, false);
+        device->submit(*commands);
+        culled = culling.readLists();
+    }
+
+    struct Drawn {
+        rhi::Image lit;
+        rhi::DepthImage directional;
+        rhi::DepthImage local;
+        render::FrameStats stats;
+    };
+
+    Drawn draw(shadows::CasterCullingMode culling)
+    {
+        const scene::Scene scene = culledScene();
+        render::SceneRenderer renderer(*device, scene);
+        Drawn drawn;
+        drawn.stats = renderer.render(scene.camera, smallFrame(culling));
+        drawn.lit = rhi::readTexture(*device, renderer.litImage());
+        drawn.directional = rhi::readDepth(*device, renderer.atlas().texture());
+        drawn.local = rhi::readDepth(*device, renderer.localAtlas().texture());
+        return drawn;
+    }
+};
+
+TEST_F(GpuCullingTest, ListsMatchThePlanner)
+{
+    std::vector<std::vector<std::uint32_t>> planned, culled;
+    cullBoth([](auto&, auto&) {}, planned, culled);
+    ASSERT_EQ(planned.size(), 5u) << "four cascades and the spot light's tile";
+    EXPECT_EQ(culled, planned);
+    // Some cubes lie out of every tile's reach, and the culling bias leaves some out of the later cascades.
+    EXPECT_LT(planned.back().size(), kCubes);
+    EXPECT_LT(planned[3].size(), kCubes);
+}
+
+// The comparison sees a caster dropped (its box moved far away) and a wrong bounds test (a cascade's square shrunk).
+TEST_F(GpuCullingTest, DroppedCasterCatchesFault)
+{
+    std::vector<std::vector<std::uint32_t>> planned, culled;
+    cullBoth(
+        [](auto&, std::vector<shadows::Bounds>& bounds) {
+            bounds[kCubes / 2] = {glm::vec3(1e6f), glm::vec3(1e6f)};
+        },
+        planned, culled);
+    EXPECT_NE(culled, planned);
+}
+
+TEST_F(GpuCullingTest, WrongBoundsTestCatchesFault)
+{
+    std::vector<std::vector<std::uint32_t>> planned, culled;
+    cullBoth([](std::vector<shadows::CasterVolume>& volumes, auto&) { volumes[0].square.z *= 0.5f; }, planned, culled);
+    EXPECT_NE(culled, planned);
+}
+
+TEST_F(GpuCullingTest, PicturesMatchCpuCulling)
+{
+    const Drawn cpu = draw(shadows::CasterCullingMode::Cpu);
+    const Drawn gpu = draw(shadows::CasterCullingMode::Gpu);
+    EXPECT_TRUE(cpu.lit.bytes == gpu.lit.bytes)
+        << "the lit images differ: " << savePicture(cpu.lit, "gpu-culling-cpu-" + configuration()) << " "
+        << savePicture(gpu.lit, "gpu-culling-gpu-" + configuration());
+    EXPECT_TRUE(cpu.directional.depth == gpu.directional.depth) << "the directional atlases differ";
+    EXPECT_TRUE(cpu.local.depth == gpu.local.depth) << "the local atlases differ";
+    EXPECT_GT(gpu.stats.casterDraws, 0u);
+}
+
+} // namespace
+} // namespace penumbra::testing
