@@ -91,7 +91,7 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
 {
     namespace frame = render::frame;
     const auto ms = [&](std::string_view pass) { return s.passMs(pass).value_or(0.0); };
-    return {ms(frame::kDepthPrepass) + ms(frame::kReceiverPrepass),
+    return {ms(frame::kDepthPrepass) + ms(frame::kReceiverPrepass) + ms(frame::kSingleSampledDepthPrepass),
             ms(frame::kDirectionalStaticTilesPass) + ms(frame::kDirectionalAtlasPass),
             ms(frame::kLocalStaticTilesPass) + ms(frame::kLocalAtlasPass),
             ms(frame::kScreenSpaceShadowsPass),
@@ -99,8 +99,8 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             ms(frame::kResolvePass),
             referenceMs,
             ms(frame::kStaticMapsPass),
-            ms(frame::kContactShadowsPass) + ms(frame::kContactPrepass),
-            ms(frame::kDepthFitPrepass) + ms(frame::kDepthReductionPass),
+            ms(frame::kContactShadowsPass),
+            ms(frame::kDepthReductionPass),
             ms(frame::kCasterCullingPass)};
 }
 

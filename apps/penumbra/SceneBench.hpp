@@ -22,12 +22,11 @@ struct SceneBenchOptions {
     std::vector<std::uint32_t> lightCounts;
 };
 
-// The pass names of the JSON's "passes" objects, in frame order: the depth prepass, the directional and the
-// local atlas, the screen-space shadows, the lit pass, the resolve, and the minimal reference lit pass (timed in a
-// frame of its own, which the frame times leave out); then the static shadow maps drawn in the frame (drawn first,
-// listed last to keep the older names' order), the contact shadows (their march and, with MSAA on the forward
-// path, their single-sampled prepass), the depth fit's reduction (with MSAA, its single-sampled prepass) and the GPU
-// caster culling pass (--culling gpu).
+// The pass names of the JSON's "passes" objects, in frame order: the depth prepasses (with the single-sampled one
+// that depth fit and contact shadows read under MSAA), the directional and the local atlas, the screen-space shadows,
+// the lit pass, the resolve, and the minimal reference lit pass (timed in a frame of its own, which the frame times
+// leave out); then the static shadow maps drawn in the frame (drawn first, listed last to keep the older names'
+// order), the contact shadows' march, the depth fit's reduction and the GPU caster culling pass (--culling gpu).
 inline constexpr const char* kBenchPassNames[] = {
     "depth",     "directionalAtlas", "otherAtlas",     "screenSpaceShadows", "lit",          "resolve",
     "reference", "staticAtlas",      "contactShadows", "depthFit",           "casterCulling"};

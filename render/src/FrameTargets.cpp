@@ -47,14 +47,11 @@ void createMultisampledTargets(FrameGraph& graph, const FrameDesc& frame)
     graph.createTexture(frame::kMultisampledDepth, depthTargetDesc(frame, frame.msaa));
 }
 
-void prepareContactShadows(rhi::Device& device, const FrameDesc& frame, std::unique_ptr<ContactShadowPass>& contact,
-                           std::unique_ptr<DepthPrepass>& prepass)
+void prepareContactShadows(rhi::Device& device, const FrameDesc& frame, std::unique_ptr<ContactShadowPass>& contact)
 {
     if (!contact)
         contact = std::make_unique<ContactShadowPass>(device);
     contact->prepare(frame.width, frame.height);
-    if (frame.msaa > 1 && !prepass)
-        prepass = std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1);
 }
 
 void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
@@ -86,14 +83,14 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, frame.msaa);
     if (depthPrepass_->samples() != frame.msaa)
         depthPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, frame.msaa);
-    if (frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit) {
-        if (!depthReduction_)
-            depthReduction_ = std::make_unique<DepthReduction>(device_);
-        if (frame.msaa > 1 && !depthFitPrepass_)
-            depthFitPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1);
-    }
-    if (frame.shadows.contact.shadows == shadows::Toggle::On)
-        prepareContactShadows(device_, frame, contact_, contactPrepass_);
+    const bool depthFit = frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit;
+    const bool contact = frame.shadows.contact.shadows == shadows::Toggle::On;
+    if (depthFit && !depthReduction_)
+        depthReduction_ = std::make_unique<DepthReduction>(device_);
+    if (contact)
+        prepareContactShadows(device_, frame, contact_);
+    if ((depthFit || contact) && frame.msaa > 1 && !singleSampledPrepass_)
+        singleSampledPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1);
     const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
     if (firstScreenSpace) {
         receiverPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, true);

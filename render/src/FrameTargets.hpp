@@ -17,7 +17,6 @@ void createMultisampledTargets(FrameGraph& graph, const FrameDesc& frame);
 
 // shadows.contact: the march and its target for the frame's size, and with MSAA the single-sampled prepass it
 // marches through on the forward path; each made when a frame first needs it.
-void prepareContactShadows(rhi::Device& device, const FrameDesc& frame, std::unique_ptr<ContactShadowPass>& contact,
-                           std::unique_ptr<DepthPrepass>& prepass);
+void prepareContactShadows(rhi::Device& device, const FrameDesc& frame, std::unique_ptr<ContactShadowPass>& contact);
 
 } // namespace penumbra::render

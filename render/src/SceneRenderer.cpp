@@ -398,8 +398,7 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     add(std::make_unique<StaticTilesPass>(state, *localStaticTiles_, StaticTilesPass::Atlas::Local));
     add(std::make_unique<LocalAtlasPass>(state, localShadowPass_, *localTiles_, localPlan_, gpuScene_.scene()));
     add(std::make_unique<DepthPrepassPass>(state, *depthPrepass_, gpuScene_));
-    add(std::make_unique<DepthFitPrepassPass>(state, depthFitPrepass_.get(), gpuScene_));
-    add(std::make_unique<ContactPrepassPass>(state, contactPrepass_.get(), gpuScene_));
+    add(std::make_unique<SingleSampledDepthPass>(state, singleSampledPrepass_.get(), gpuScene_));
     if (screenSpace_) {
         add(std::make_unique<ReceiverPrepassPass>(state, *receiverPrepass_, *screenSpace_, gpuScene_));
         add(std::make_unique<ScreenSpaceShadowsPass>(state, *screenSpace_));

@@ -2,6 +2,7 @@
 // its layout (PipelineDesc::bindingSetLayouts) has it bound with one vkCmdBindDescriptorSets, however many draws and
 // pipeline changes follow. The backend's counts of its descriptor calls tell that path from the per-draw one.
 #include "GpuTesting.hpp"
+#include "TintedImageShaders.hpp"
 
 #include "penumbra/vulkan/Native.hpp"
 
@@ -9,20 +10,6 @@
 
 namespace penumbra::testing {
 namespace {
-
-const char* const vertexGlsl = R"(#version 450
-const vec2 corners[3] = vec2[](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
-layout(std140, binding = 0) uniform Tint { vec4 color; } tint;
-layout(location = 0) out vec4 color;
-void main() { gl_Position = vec4(corners[gl_VertexIndex], 0.5, 1.0); color = tint.color; }
-)";
-
-const char* const fragmentGlsl = R"(#version 450
-layout(location = 0) in vec4 color;
-layout(binding = 1) uniform sampler2D image;
-layout(location = 0) out vec4 result;
-void main() { result = color * texture(image, vec2(0.5)); }
-)";
 
 // Four draws with a set of the tint and the image bound once, switching between two pipelines (culled or not) that
 // list its layout when `listed`; returns the list's counts.
@@ -36,8 +23,8 @@ vulkan::DescriptorCounts countFourDraws(bool listed)
     auto sampler = device->createSampler({});
     auto tint = device->createBuffer({.size = 16, .usage = rhi::BufferUsage::Uniform, .debugName = "tint"});
     tint->writeObject(std::array<float, 4>{1.0f, 1.0f, 1.0f, 1.0f});
-    auto vertex = device->createShader({rhi::ShaderStage::Vertex, vertexGlsl, "calls.vert"});
-    auto fragment = device->createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "calls.frag"});
+    auto vertex = device->createShader({rhi::ShaderStage::Vertex, kTintedImageVertexGlsl, "calls.vert"});
+    auto fragment = device->createShader({rhi::ShaderStage::Fragment, kTintedImageFragmentGlsl, "calls.frag"});
     auto layout = device->createBindingSetLayout(
         {.items = {{0, rhi::BindingKind::UniformBuffer}, {1, rhi::BindingKind::SampledTexture}}, .debugName = "set"});
     auto set = device->createBindingSet({.layout = layout.get(),

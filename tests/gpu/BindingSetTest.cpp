@@ -4,6 +4,7 @@
 // call: tests/backends/BindingSetCallsTest.cpp), where single binds over part of a set still take their place.
 #include "ComputeScenes.hpp"
 #include "GpuTesting.hpp"
+#include "TintedImageShaders.hpp"
 
 #include "penumbra/rhi/Image.hpp"
 
@@ -11,20 +12,6 @@
 
 namespace penumbra::testing {
 namespace {
-
-const char* const vertexGlsl = R"(#version 450
-const vec2 corners[3] = vec2[](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
-layout(std140, binding = 0) uniform Tint { vec4 color; } tint;
-layout(location = 0) out vec4 color;
-void main() { gl_Position = vec4(corners[gl_VertexIndex], 0.5, 1.0); color = tint.color; }
-)";
-
-const char* const fragmentGlsl = R"(#version 450
-layout(location = 0) in vec4 color;
-layout(binding = 1) uniform sampler2D image;
-layout(location = 0) out vec4 result;
-void main() { result = color * texture(image, vec2(0.5)); }
-)";
 
 // The tint alone: binding 1 is not declared, so a set that holds it leaves it unused.
 const char* const tintOnlyFragmentGlsl = R"(#version 450
@@ -50,8 +37,8 @@ protected:
         sampler = device->createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
         tint = device->createBuffer({.size = 16, .usage = rhi::BufferUsage::Uniform, .debugName = "tint"});
         tint->writeObject(glm::vec4(0.0f, 1.0f, 1.0f, 1.0f));
-        vertex = device->createShader({rhi::ShaderStage::Vertex, vertexGlsl, "set.vert"});
-        fragment = device->createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "set.frag"});
+        vertex = device->createShader({rhi::ShaderStage::Vertex, kTintedImageVertexGlsl, "set.vert"});
+        fragment = device->createShader({rhi::ShaderStage::Fragment, kTintedImageFragmentGlsl, "set.frag"});
         tintOnly = device->createShader({rhi::ShaderStage::Fragment, tintOnlyFragmentGlsl, "tint.frag"});
         pipeline = device->createPipeline(
             {.vertex = vertex.get(), .fragment = fragment.get(), .colorTargets = {{}}, .debugName = "set"});

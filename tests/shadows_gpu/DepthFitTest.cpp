@@ -101,7 +101,7 @@ TEST_F(DepthFitTest, MultisampledFramesReduceTheSameDepths)
     ASSERT_TRUE(single.visibleDepths());
     EXPECT_EQ(multi.visibleDepths(), single.visibleDepths());
     EXPECT_TRUE(std::any_of(stats.passes.begin(), stats.passes.end(), [](const render::PassTiming& pass) {
-        return pass.name == render::frame::kDepthFitPrepass;
+        return pass.name == render::frame::kSingleSampledDepthPrepass;
     })) << "the single-sampled prepass ran";
 }
 

@@ -103,21 +103,4 @@ void ContactShadowsPass::execute(const FramePassContext& context)
     pass_->record(context.commands(), context.texture(frame::kLitDepth), state_.contactUniforms);
 }
 
-std::string ContactPrepassPass::name() const { return std::string(frame::kContactPrepass); }
-
-bool ContactPrepassPass::setup(FramePassBuilder& builder)
-{
-    // The depth fit's prepass draws the same single-sampled depth when it runs.
-    if (!state_.contact || !state_.multisampled || state_.screenSpace || state_.depthFit)
-        return false;
-    builder.write(frame::kLitDepth);
-    return true;
-}
-
-void ContactPrepassPass::execute(const FramePassContext& context)
-{
-    state_.stats->depthPrepassDraws += prepass_->record(context.commands(), context.framebuffer({}, frame::kLitDepth),
-                                                        scene_, state_.litDraws, state_.litFrame);
-}
-
 } // namespace penumbra::render

@@ -14,9 +14,6 @@
 
 namespace penumbra::render {
 
-class DepthPrepass;
-class GpuScene;
-
 // The contact shadow texture: one channel per directional light 0 .. maxCollectedDirectionalLights - 1, 1 = lit.
 // The march's answer is 0 or 1, so 8 bits hold it.
 inline constexpr rhi::Format kContactShadowFormat = rhi::Format::RGBA8;
@@ -99,24 +96,6 @@ public:
 private:
     const FrameState& state_;
     ContactShadowPass* pass_; // null until a frame asks for contact shadows
-};
-
-// The single-sampled depth that contact shadows march through on the forward path with MSAA, where neither the
-// screen-space path's receiver prepass nor the depth fit's prepass draws it.
-class ContactPrepassPass final : public FramePass {
-public:
-    ContactPrepassPass(const FrameState& state, const DepthPrepass* prepass, const GpuScene& scene)
-        : state_(state), prepass_(prepass), scene_(scene)
-    {
-    }
-    std::string name() const override;
-    bool setup(FramePassBuilder& builder) override;
-    void execute(const FramePassContext& context) override;
-
-private:
-    const FrameState& state_;
-    const DepthPrepass* prepass_; // null until a frame needs it
-    const GpuScene& scene_;
 };
 
 } // namespace penumbra::render

@@ -7,22 +7,6 @@
 
 namespace penumbra::render {
 
-std::string DepthFitPrepassPass::name() const { return std::string(frame::kDepthFitPrepass); }
-
-bool DepthFitPrepassPass::setup(FramePassBuilder& builder)
-{
-    if (!state_.depthFit || !state_.multisampled || state_.screenSpace)
-        return false;
-    builder.write(frame::kLitDepth);
-    return true;
-}
-
-void DepthFitPrepassPass::execute(const FramePassContext& context)
-{
-    state_.stats->depthPrepassDraws += prepass_->record(context.commands(), context.framebuffer({}, frame::kLitDepth),
-                                                        scene_, state_.litDraws, state_.litFrame);
-}
-
 std::string DepthReductionPass::name() const { return std::string(frame::kDepthReductionPass); }
 
 bool DepthReductionPass::setup(FramePassBuilder& builder)

@@ -26,6 +26,22 @@ void DepthPrepassPass::execute(const FramePassContext& context)
         prepass_.record(context.commands(), target, scene_, state_.litDraws, state_.litFrame);
 }
 
+std::string SingleSampledDepthPass::name() const { return std::string(frame::kSingleSampledDepthPrepass); }
+
+bool SingleSampledDepthPass::setup(FramePassBuilder& builder)
+{
+    if (!(state_.depthFit || state_.contact) || !state_.multisampled || state_.screenSpace)
+        return false;
+    builder.write(frame::kLitDepth);
+    return true;
+}
+
+void SingleSampledDepthPass::execute(const FramePassContext& context)
+{
+    state_.stats->depthPrepassDraws += prepass_->record(context.commands(), context.framebuffer({}, frame::kLitDepth),
+                                                        scene_, state_.litDraws, state_.litFrame);
+}
+
 std::string ReceiverPrepassPass::name() const { return std::string(frame::kReceiverPrepass); }
 
 bool ReceiverPrepassPass::setup(FramePassBuilder& builder)

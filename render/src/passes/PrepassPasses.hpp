@@ -10,6 +10,25 @@ class DepthPrepass;
 class GpuScene;
 class ScreenSpaceShadowPass;
 
+// With MSAA on the forward path, a single-sampled depth prepass into the lit depth for the passes that read depth per
+// pixel centre: the depth fit's reduction and the contact shadows' march (the RHI samples no multisampled depth; the
+// screen-space path's receiver prepass already draws it).
+class SingleSampledDepthPass final : public FramePass {
+public:
+    SingleSampledDepthPass(const FrameState& state, const DepthPrepass* prepass, const GpuScene& scene)
+        : state_(state), prepass_(prepass), scene_(scene)
+    {
+    }
+    std::string name() const override;
+    bool setup(FramePassBuilder& builder) override;
+    void execute(const FramePassContext& context) override;
+
+private:
+    const FrameState& state_;
+    const DepthPrepass* prepass_; // made by the first frame that needs it
+    const GpuScene& scene_;
+};
+
 // The lit pass's depth first (DepthPrepass): into the multisampled depth with MSAA, else into the lit depth; the
 // screen-space path without MSAA takes the receiver prepass instead.
 class DepthPrepassPass final : public FramePass {

@@ -17,8 +17,7 @@ inline constexpr std::string_view kDirectionalAtlasPass = "directional atlas";
 inline constexpr std::string_view kLocalStaticTilesPass = "local static tiles";
 inline constexpr std::string_view kLocalAtlasPass = "local atlas";
 inline constexpr std::string_view kDepthPrepass = "depth prepass";
-inline constexpr std::string_view kDepthFitPrepass = "depth fit prepass";
-inline constexpr std::string_view kContactPrepass = "contact prepass";
+inline constexpr std::string_view kSingleSampledDepthPrepass = "single-sampled depth prepass";
 inline constexpr std::string_view kReceiverPrepass = "receiver prepass";
 inline constexpr std::string_view kScreenSpaceShadowsPass = "screen-space shadows";
 inline constexpr std::string_view kContactShadowsPass = "contact shadows";
@@ -27,15 +26,23 @@ inline constexpr std::string_view kDepthReductionPass = "depth reduction";
 inline constexpr std::string_view kResolvePass = "msaa resolve";
 inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
-inline constexpr std::array kPasses{kSkinningPass,         kStaticMapsPass,
-                                    kCasterCullingPass,    kDirectionalStaticTilesPass,
-                                    kDirectionalAtlasPass, kLocalStaticTilesPass,
-                                    kLocalAtlasPass,       kDepthPrepass,
-                                    kDepthFitPrepass,      kContactPrepass,
-                                    kReceiverPrepass,      kScreenSpaceShadowsPass,
-                                    kContactShadowsPass,   kLitPass,
-                                    kDepthReductionPass,   kResolvePass,
-                                    kCascadeViewPass,      kVisibilityViewPass};
+inline constexpr std::array kPasses{kSkinningPass,
+                                    kStaticMapsPass,
+                                    kCasterCullingPass,
+                                    kDirectionalStaticTilesPass,
+                                    kDirectionalAtlasPass,
+                                    kLocalStaticTilesPass,
+                                    kLocalAtlasPass,
+                                    kDepthPrepass,
+                                    kSingleSampledDepthPrepass,
+                                    kReceiverPrepass,
+                                    kScreenSpaceShadowsPass,
+                                    kContactShadowsPass,
+                                    kLitPass,
+                                    kDepthReductionPass,
+                                    kResolvePass,
+                                    kCascadeViewPass,
+                                    kVisibilityViewPass};
 
 // Textures. The lit image, the atlases and the views are the frame's outputs (SceneRenderer's accessors read them).
 inline constexpr std::string_view kLitImage = "lit image"; // RGBA8 sRGB-encoded, single-sampled

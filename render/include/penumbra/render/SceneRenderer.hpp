@@ -269,12 +269,11 @@ private:
     // the multisampled depthPrepass_ with MSAA, instead of it without) and the collection.
     std::unique_ptr<DepthPrepass> receiverPrepass_;
     std::unique_ptr<ScreenSpaceShadowPass> screenSpace_;
-    // Contact shadows, made when a frame first asks for them: the march, and with MSAA its single-sampled prepass.
+    // Contact shadows and depth fit, made when a frame first asks for them: the march, the reduction, and with MSAA on
+    // the forward path the single-sampled depth prepass they both read.
     std::unique_ptr<ContactShadowPass> contact_;
-    std::unique_ptr<DepthPrepass> contactPrepass_;
-    // Depth fit, made when a frame first asks for it: the reduction, and with MSAA its single-sampled prepass.
     std::unique_ptr<DepthReduction> depthReduction_;
-    std::unique_ptr<DepthPrepass> depthFitPrepass_;
+    std::unique_ptr<DepthPrepass> singleSampledPrepass_;
     std::optional<shadows::DepthHistogram> depthHistogram_;
     std::unique_ptr<StaticShadowCache> staticShadows_;
     std::unique_ptr<EnvironmentMaps> environment_; // FrameDesc::environment prefiltered
