@@ -215,7 +215,9 @@ scene::Scene makeForestScene()
     sun.direction = scene::lightDirection(glm::radians(kSunPitchDegrees), glm::radians(kSunYawDegrees));
     scene.lights.push_back(sun);
     const glm::vec3 eye{kCamera.x, terrainHeight(kCamera.x, kCamera.y) + kEyeHeight, kCamera.y};
-    const glm::vec3 target{kCameraTargetOnGround.x, terrainHeight(kCameraTargetOnGround.x, kCameraTargetOnGround.y) + 3.0f, kCameraTargetOnGround.y};
+    const glm::vec3 target{kCameraTargetOnGround.x,
+                           terrainHeight(kCameraTargetOnGround.x, kCameraTargetOnGround.y) + 3.0f,
+                           kCameraTargetOnGround.y};
     scene.camera = scene::lookAt(eye, target, glm::radians(60.0f));
     scene.camera.farPlane = 150.0f;
     scene.validate();
