@@ -4,6 +4,10 @@
 # compiles (about a second on lavapipe), which per test was most of the suite's time. Negative controls (tests named
 # *CatchesFault) run in a test of their own per suite, "<prefix>.<Suite>.CatchesFault", so `ctest -R CatchesFault`
 # selects them; with several configurations they run on the first only (a broken render does not depend on it).
+# Sweeps named *OnOneConfiguration (every filter, every light kind against the same ray cast, long camera walks) run
+# likewise in "<prefix>.<Suite>.OnOneConfiguration" on the first configuration: the parity tests hold every other
+# configuration to the same pixels, so a sweep's verdict carries over, and each configuration keeps one check of
+# its own against the ground truth.
 # Inputs: EXECUTABLE, OUTPUT, ENVIRONMENT (one VAR=value), and CONFIGURATIONS (comma-separated: a test per
 # configuration, prefixed with its name, which the executable gets as --configuration) or PREFIX (one test).
 execute_process(COMMAND "${EXECUTABLE}" --gtest_list_tests OUTPUT_VARIABLE listing RESULT_VARIABLE status)
@@ -21,6 +25,8 @@ foreach(line IN LISTS lines)
     list(APPEND suites "${suite}")
   elseif(line MATCHES "^  (.+CatchesFault)$")
     set("controls_${suite}" TRUE)
+  elseif(line MATCHES "^  (.+OnOneConfiguration)$")
+    set("sweeps_${suite}" TRUE)
   elseif(line MATCHES "^  ")
     set("checks_${suite}" TRUE)
   endif()
@@ -44,10 +50,13 @@ endfunction()
 foreach(prefix IN LISTS prefixes)
   foreach(suite IN LISTS suites)
     if(DEFINED "checks_${suite}")
-      add_suite_test("${prefix}.${suite}" "${suite}.*-*CatchesFault")
+      add_suite_test("${prefix}.${suite}" "${suite}.*-*CatchesFault:*OnOneConfiguration")
     endif()
     if(prefix STREQUAL first AND DEFINED "controls_${suite}")
       add_suite_test("${prefix}.${suite}.CatchesFault" "${suite}.*CatchesFault")
+    endif()
+    if(prefix STREQUAL first AND DEFINED "sweeps_${suite}")
+      add_suite_test("${prefix}.${suite}.OnOneConfiguration" "${suite}.*OnOneConfiguration")
     endif()
   endforeach()
 endforeach()

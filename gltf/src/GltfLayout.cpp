@@ -16,7 +16,7 @@ std::uint64_t unsignedOf(const Json& object, const char* key, std::uint64_t fall
     return object.contains(key) ? object[key].get<std::uint64_t>() : fallback;
 }
 
-void checkBuffers(const JsonFile& file, const tinygltf::Model& model)
+void checkBufferLayout(const JsonFile& file, const tinygltf::Model& model)
 {
     for (std::size_t b = 0; b < file.count("buffers"); ++b) {
         const std::uint64_t declared = unsignedOf(file.root["buffers"][b], "byteLength");
@@ -80,7 +80,7 @@ void checkVertexAlignment(const JsonFile& file)
     }
 }
 
-void checkAccessors(const JsonFile& file)
+void checkAccessorLayout(const JsonFile& file)
 {
     for (std::size_t a = 0; a < file.count("accessors"); ++a) {
         const Json& accessor = file.root["accessors"][a];
@@ -115,8 +115,8 @@ void checkAccessors(const JsonFile& file)
 
 void checkLayout(const JsonFile& file, const tinygltf::Model& model)
 {
-    checkBuffers(file, model);
-    checkAccessors(file);
+    checkBufferLayout(file, model);
+    checkAccessorLayout(file);
     checkVertexAlignment(file);
 }
 

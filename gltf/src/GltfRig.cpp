@@ -15,7 +15,7 @@
 namespace penumbra::gltf {
 namespace {
 
-constexpr std::array<int, 1> kFloat{TINYGLTF_COMPONENT_TYPE_FLOAT};
+constexpr std::array<int, 1> kFloatComponent{TINYGLTF_COMPONENT_TYPE_FLOAT};
 constexpr std::array<int, 2> kJointTypes{TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
 constexpr std::array<int, 3> kWeightTypes{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
@@ -101,7 +101,7 @@ std::vector<scene::Skin> readSkins(const Document& document, const std::vector<s
         out.inverseBind.assign(out.joints.size(), glm::mat4(1.0f));
         if (skin.inverseBindMatrices >= 0) {
             const std::vector<float> values = readComponents(document, skin.inverseBindMatrices, owner,
-                                                             "inverseBindMatrices", TINYGLTF_TYPE_MAT4, kFloat);
+                                                             "inverseBindMatrices", TINYGLTF_TYPE_MAT4, kFloatComponent);
             const std::size_t count = values.size() / 16;
             if (count < out.joints.size())
                 document.fail(fmt::format("{}: accessor {} (inverseBindMatrices) has {} elements but the skin has {} "

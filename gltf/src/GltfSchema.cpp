@@ -14,7 +14,6 @@
 namespace penumbra::gltf {
 namespace {
 
-constexpr std::int64_t kMaxInteger = std::numeric_limits<std::int64_t>::max();
 // The bufferView.target codes: ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER.
 constexpr std::int64_t kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 

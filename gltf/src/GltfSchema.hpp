@@ -2,6 +2,7 @@
 
 #include "GltfFields.hpp"
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -11,6 +12,8 @@ namespace penumbra::gltf {
 // The glTF component types (glTF 2.0, section 5.1.3, accessor.componentType).
 inline constexpr std::int64_t kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123,
                               kUnsignedInt = 5125, kFloat = 5126;
+// The largest integer a schema check accepts where the specification sets no maximum.
+inline constexpr std::int64_t kMaxInteger = std::numeric_limits<std::int64_t>::max();
 
 std::int64_t componentSize(std::int64_t componentType);
 // How many components an accessor type ("SCALAR", "VEC3", "MAT4"...) has.

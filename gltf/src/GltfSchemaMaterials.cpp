@@ -9,7 +9,6 @@
 namespace penumbra::gltf {
 namespace {
 
-constexpr std::int64_t kMaxInteger = std::numeric_limits<std::int64_t>::max();
 constexpr double kHalfPi = std::numbers::pi / 2.0;
 
 // A textureInfo (glTF 2.0, section 5.22) and its KHR_texture_transform; returns the texture

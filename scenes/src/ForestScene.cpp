@@ -27,7 +27,7 @@ constexpr float kSunYawDegrees = 30.0f;
 // Where the five trees stand (x, z) and the camera among them.
 constexpr std::array<glm::vec2, 5> kTrees{{{-4.0f, 6.0f}, {3.5f, 9.0f}, {-1.0f, 15.0f}, {7.0f, 3.0f}, {-8.0f, 12.0f}}};
 constexpr glm::vec2 kCamera{0.5f, -2.0f};
-constexpr glm::vec2 kCameraTarget{0.0f, 10.0f};
+constexpr glm::vec2 kCameraTargetOnGround{0.0f, 10.0f};
 constexpr float kEyeHeight = 1.7f;
 
 // A reproducible hash in [0, 1) (Jarzynski and Olano 2020, "Hash Functions for GPU Rendering": PCG), so the
@@ -215,7 +215,9 @@ scene::Scene makeForestScene()
     sun.direction = scene::lightDirection(glm::radians(kSunPitchDegrees), glm::radians(kSunYawDegrees));
     scene.lights.push_back(sun);
     const glm::vec3 eye{kCamera.x, terrainHeight(kCamera.x, kCamera.y) + kEyeHeight, kCamera.y};
-    const glm::vec3 target{kCameraTarget.x, terrainHeight(kCameraTarget.x, kCameraTarget.y) + 3.0f, kCameraTarget.y};
+    const glm::vec3 target{kCameraTargetOnGround.x,
+                           terrainHeight(kCameraTargetOnGround.x, kCameraTargetOnGround.y) + 3.0f,
+                           kCameraTargetOnGround.y};
     scene.camera = scene::lookAt(eye, target, glm::radians(60.0f));
     scene.camera.farPlane = 150.0f;
     scene.validate();

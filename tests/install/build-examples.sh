@@ -10,8 +10,10 @@ build=$1 source=$2 work=$3 check=$4
 shift 4
 rm -rf "$work"
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
-cmake -S "$source/examples" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release \
-      --log-level=WARNING >/dev/null
+# Unoptimized: the examples only call into the installed (optimized) libraries, and at -O0 their nine programs
+# compile in about half the time.
+cmake -S "$source/examples" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Debug \
+      -DCMAKE_CXX_FLAGS_DEBUG=-O0 --log-level=WARNING >/dev/null
 cmake --build "$work/build" -j 1 >/dev/null
 cmake -S "$source/examples" -B "$work/from-build-folder" -DCMAKE_PREFIX_PATH="$build" --log-level=WARNING >/dev/null
 for configuration in "$@"; do

@@ -243,14 +243,20 @@ TEST_F(SoftShadowsTest, DirectionalPcssAgainstTheAreaLight)
 }
 
 // With 32 blocker and 32 filter samples, against the fixed filters at 32.
-TEST_F(SoftShadowsTest, DirectionalPcssAt32SamplesAgainstTheAreaLight)
+TEST_F(SoftShadowsTest, DirectionalPcssAt32SamplesAgainstTheAreaLightOnOneConfiguration)
 {
     checkAgainstTheAreaLight(*device, LightKind::Directional, 32);
 }
 
-TEST_F(SoftShadowsTest, SpotPcssAgainstTheAreaLight) { checkAgainstTheAreaLight(*device, LightKind::Spot); }
+TEST_F(SoftShadowsTest, SpotPcssAgainstTheAreaLightOnOneConfiguration)
+{
+    checkAgainstTheAreaLight(*device, LightKind::Spot);
+}
 
-TEST_F(SoftShadowsTest, PointPcssAgainstTheAreaLight) { checkAgainstTheAreaLight(*device, LightKind::Point); }
+TEST_F(SoftShadowsTest, PointPcssAgainstTheAreaLightOnOneConfiguration)
+{
+    checkAgainstTheAreaLight(*device, LightKind::Point);
+}
 
 // Share of decided pixels strictly between lit and shadowed.
 double softShare(const truth::RenderedVisibility& v)

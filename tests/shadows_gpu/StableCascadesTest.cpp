@@ -257,7 +257,7 @@ TEST_F(StableCascadesTest, SubTexelCameraMotionLeavesTheShadowOfStaticGeometryUn
 // Close fit (the turn's count reported, not held to zero): the slice's light-space bounds translate with the
 // camera, so the snapped tile keeps its (quantised) size and moves by whole texels, and camera translation changes
 // no more than the stable fit does; turning the camera resizes every tile, and the shadow edges swim.
-TEST_F(StableCascadesTest, CloseFitShimmersOnlyWhenTheCameraTurns)
+TEST_F(StableCascadesTest, CloseFitShimmersOnlyWhenTheCameraTurnsOnOneConfiguration)
 {
     const std::vector<ShimmerFigures> figures = measure(Fit::Snapped, shadows::CascadeProjection::Close);
     ASSERT_EQ(figures.size(), 2u);
@@ -271,7 +271,7 @@ TEST_F(StableCascadesTest, CloseFitShimmersOnlyWhenTheCameraTurns)
 // grid step (and the hysteresis) while the tiles move by whole texels, so every translation leaves the shadow as the
 // stable fit does, to float noise (held to 1 in 50 000). The 0.2 degree turn moves the footprints enough to change a
 // tile's fit here, and is held to the close fit's count for the same turn (docs/notes/2026-12-06-depth-fit.md).
-TEST_F(StableCascadesTest, DepthFitKeepsTheShadowOfStaticGeometryForSubTexelMotion)
+TEST_F(StableCascadesTest, DepthFitKeepsTheShadowOfStaticGeometryForSubTexelMotionOnOneConfiguration)
 {
     const std::vector<ShimmerFigures> figures = measure(Fit::Snapped, shadows::CascadeProjection::DepthFit);
     ASSERT_EQ(figures.size(), 5u);
@@ -347,7 +347,7 @@ void expectWalkKeepsTheShadow(const std::vector<ShimmerFigures>& depthFit, const
     EXPECT_LE(depthFitTotal, closeTotal);
 }
 
-TEST_F(StableCascadesTest, DepthFitWalkChangesNoMoreThanTheCloseFit)
+TEST_F(StableCascadesTest, DepthFitWalkChangesNoMoreThanTheCloseFitOnOneConfiguration)
 {
     constexpr int kFrames = 4;
     std::vector<bool> kept;

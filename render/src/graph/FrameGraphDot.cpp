@@ -8,7 +8,7 @@ namespace penumbra::render {
 namespace {
 
 // A double-quoted dot ID (Graphviz "The DOT Language": IDs).
-std::string quoted(const std::string& text)
+std::string dotId(const std::string& text)
 {
     std::string out = "\"";
     for (char c : text) {
@@ -34,7 +34,7 @@ std::string FrameGraph::dot() const
         std::string style = resource.transient ? ", style=filled, fillcolor=\"#dde8f5\"" : "";
         if (resource.output)
             style += ", peripheries=2";
-        out += fmt::format("  r{} [shape=ellipse, label={}{}];\n", r, quoted(resource.name), style);
+        out += fmt::format("  r{} [shape=ellipse, label={}{}];\n", r, dotId(resource.name), style);
     }
     std::size_t order = 0;
     for (std::size_t p = 0; p < passes_.size(); ++p) {
@@ -50,14 +50,14 @@ std::string FrameGraph::dot() const
         } else {
             label = fmt::format("{}. {}", ++order, label);
         }
-        out += fmt::format("  p{} [shape=box, label={}{}];\n", p, quoted(label), style);
+        out += fmt::format("  p{} [shape=box, label={}{}];\n", p, dotId(label), style);
         for (const Use& use : pass.uses) {
             // The arrow's direction says read or write; only the other uses are named.
             std::vector<std::string> attributes;
             if (pass.culled)
                 attributes = {"style=dashed", "color=gray50"};
             if (use.use != ResourceUse::Sampled && use.use != ResourceUse::RenderTarget)
-                attributes.push_back("label=" + quoted(resourceUseName(use.use)));
+                attributes.push_back("label=" + dotId(resourceUseName(use.use)));
             const std::string list = fmt::format("{}", fmt::join(attributes, ", "));
             if (readsResource(use.use))
                 out += fmt::format("  r{} -> p{} [{}];\n", use.resource, p, list);

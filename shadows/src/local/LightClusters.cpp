@@ -1,6 +1,7 @@
 #include "penumbra/shadows/LightClusters.hpp"
 
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/shadows/Sphere.hpp"
 
 #include <algorithm>
 #include <array>
@@ -40,11 +41,6 @@ struct ViewFrame {
 struct Box {
     glm::vec3 min;
     glm::vec3 max;
-};
-
-struct Sphere {
-    glm::vec3 centre;
-    float radius;
 };
 
 bool sphereMeetsBox(const Sphere& s, const Box& b)

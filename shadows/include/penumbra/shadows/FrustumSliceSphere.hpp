@@ -1,17 +1,12 @@
 #pragma once
 
 #include "penumbra/shadows/ShadowCamera.hpp"
+#include "penumbra/shadows/Sphere.hpp"
 
 #include <array>
 #include <glm/vec3.hpp>
 
 namespace penumbra::shadows {
-
-// A sphere: centre and radius.
-struct Sphere {
-    glm::vec3 centre{0.0f};
-    float radius = 0.0f;
-};
 
 // The 8 world-space corners of the camera frustum between view depths nearDistance and farDistance.
 std::array<glm::vec3, 8> frustumSliceCorners(const ShadowCamera& camera, float nearDistance, float farDistance);
