@@ -1,5 +1,7 @@
 #include "GltfImages.hpp"
 
+#include "GltfPng.hpp"
+
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
@@ -113,6 +115,15 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
         std::uint64_t(width) * std::uint64_t(height) > kMaxImageTexels)
         return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", width, height, kMaxImageSide,
                            kMaxImageTexels);
+    image.width = width;
+    image.height = height;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    if (std::optional<std::vector<unsigned char>> texels = decodeTruecolourPng(bytes)) {
+        image.image = std::move(*texels);
+        return {};
+    }
     const bool wide = stbi_is_16_bit_from_memory(bytes.data(), size) != 0;
     int decodedWidth = 0, decodedHeight = 0, decodedChannels = 0;
     std::unique_ptr<void, StbFree> pixels(
@@ -125,11 +136,6 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
     if (decodedWidth != width || decodedHeight != height || decodedChannels < 1 || decodedChannels > 4)
         return fmt::format("decoded to {}x{} texels of {} channels, its header says {}x{}", decodedWidth, decodedHeight,
                            decodedChannels, width, height);
-    image.width = width;
-    image.height = height;
-    image.component = 4;
-    image.bits = 8;
-    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
     const std::size_t texels = std::size_t(width) * std::size_t(height);
     if (wide)
         image.image = rgba8Of(static_cast<const std::uint16_t*>(pixels.get()), texels, decodedChannels);
