@@ -17,27 +17,22 @@ struct MipLevelsSlot {
     bool done = false;
 };
 
-} // namespace
+// The results the workers have made and the calling thread has not yet taken, in order.
+class MipLevelsQueue {
+public:
+    MipLevelsQueue(std::size_t count, std::size_t window) : slots_(count), window_(window) {}
 
-void generateMipLevelsInOrder(std::size_t count, const std::function<rhi::MipLevels(std::size_t)>& generate,
-                              const std::function<void(std::size_t, const rhi::MipLevels&)>& consume)
-{
-    const std::size_t threads = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), count);
-    const std::size_t window = 2 * threads;
-    std::vector<MipLevelsSlot> slots(count);
-    std::mutex mutex;
-    std::condition_variable changed;
-    std::size_t next = 0, consumed = 0;
-    bool stop = false;
-    const auto work = [&] {
+    // A worker: generates the next result while it is at most `window` ahead of the last taken, until none is left.
+    void work(const std::function<rhi::MipLevels(std::size_t)>& generate)
+    {
         for (;;) {
             std::size_t k = 0;
             {
-                std::unique_lock lock(mutex);
-                changed.wait(lock, [&] { return stop || next >= count || next < consumed + window; });
-                if (stop || next >= count)
+                std::unique_lock lock(mutex_);
+                changed_.wait(lock, [&] { return stop_ || next_ >= slots_.size() || next_ < taken_ + window_; });
+                if (stop_ || next_ >= slots_.size())
                     return;
-                k = next++;
+                k = next_++;
             }
             MipLevelsSlot made;
             try {
@@ -47,38 +42,65 @@ void generateMipLevelsInOrder(std::size_t count, const std::function<rhi::MipLev
             }
             made.done = true;
             {
-                const std::lock_guard lock(mutex);
-                slots[k] = std::move(made);
+                const std::lock_guard lock(mutex_);
+                slots_[k] = std::move(made);
             }
-            changed.notify_all();
+            changed_.notify_all();
         }
-    };
-    const auto stopWorkers = [&] {
+    }
+
+    // Result k, once made (k taken in order).
+    MipLevelsSlot take(std::size_t k)
+    {
+        MipLevelsSlot slot;
         {
-            const std::lock_guard lock(mutex);
-            stop = true;
+            std::unique_lock lock(mutex_);
+            changed_.wait(lock, [&] { return slots_[k].done; });
+            slot = std::move(slots_[k]);
+            taken_ = k + 1;
         }
-        changed.notify_all();
-    };
-    std::vector<std::jthread> workers; // joined before the state above goes
+        changed_.notify_all();
+        return slot;
+    }
+
+    // The workers start nothing more.
+    void stop()
+    {
+        {
+            const std::lock_guard lock(mutex_);
+            stop_ = true;
+        }
+        changed_.notify_all();
+    }
+
+private:
+    std::vector<MipLevelsSlot> slots_;
+    std::size_t window_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::size_t next_ = 0, taken_ = 0;
+    bool stop_ = false;
+};
+
+} // namespace
+
+void generateMipLevelsInOrder(std::size_t count, const std::function<rhi::MipLevels(std::size_t)>& generate,
+                              const std::function<void(std::size_t, const rhi::MipLevels&)>& consume)
+{
+    const std::size_t threads = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), count);
+    MipLevelsQueue queue(count, 2 * threads);
+    std::vector<std::jthread> workers; // joined before the queue goes
     for (std::size_t t = 0; t < threads; ++t)
-        workers.emplace_back(work);
+        workers.emplace_back([&] { queue.work(generate); });
     try {
         for (std::size_t k = 0; k < count; ++k) {
-            MipLevelsSlot slot;
-            {
-                std::unique_lock lock(mutex);
-                changed.wait(lock, [&] { return slots[k].done; });
-                slot = std::move(slots[k]);
-                consumed = k + 1;
-            }
-            changed.notify_all();
+            MipLevelsSlot slot = queue.take(k);
             if (slot.failure)
                 std::rethrow_exception(slot.failure);
             consume(k, *slot.levels);
         }
     } catch (...) {
-        stopWorkers();
+        queue.stop();
         throw;
     }
 }
