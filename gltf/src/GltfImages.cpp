@@ -1,5 +1,7 @@
 #include "GltfImages.hpp"
 
+#include "GltfPng.hpp"
+
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
@@ -66,6 +68,32 @@ struct StbFree {
     void operator()(void* pixels) const { stbi_image_free(pixels); }
 };
 
+// A channel as 8 bits: 16-bit channels rounded to nearest.
+std::uint8_t eightBits(std::uint8_t value) { return value; }
+std::uint8_t eightBits(std::uint16_t value) { return std::uint8_t((value + 128) / 257); }
+
+// Decoded texels of 1 to 4 channels as RGBA8, as the scene keeps them: grey (and grey-alpha) spread over RGB, a
+// missing alpha opaque. Done here, on the decoding threads, rather than later on one.
+template <typename Channel>
+std::vector<unsigned char> rgba8Of(const Channel* pixels, std::size_t texels, int channels)
+{
+    if constexpr (sizeof(Channel) == 1)
+        if (channels == 4)
+            return std::vector<unsigned char>(pixels, pixels + texels * 4);
+    std::vector<unsigned char> rgba(texels * 4);
+    const auto count = std::size_t(channels);
+    for (std::size_t t = 0; t < texels; ++t) {
+        const Channel* texel = pixels + t * count;
+        unsigned char* out = rgba.data() + t * 4;
+        const bool grey = channels <= 2;
+        out[0] = eightBits(texel[0]);
+        out[1] = eightBits(texel[grey ? 0 : 1]);
+        out[2] = eightBits(texel[grey ? 0 : 2]);
+        out[3] = channels == 2 || channels == 4 ? eightBits(texel[count - 1]) : 255;
+    }
+    return rgba;
+}
+
 } // namespace
 
 std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& image)
@@ -87,6 +115,15 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
         std::uint64_t(width) * std::uint64_t(height) > kMaxImageTexels)
         return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", width, height, kMaxImageSide,
                            kMaxImageTexels);
+    image.width = width;
+    image.height = height;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    if (std::optional<std::vector<unsigned char>> texels = decodeTruecolourPng(bytes)) {
+        image.image = std::move(*texels);
+        return {};
+    }
     const bool wide = stbi_is_16_bit_from_memory(bytes.data(), size) != 0;
     int decodedWidth = 0, decodedHeight = 0, decodedChannels = 0;
     std::unique_ptr<void, StbFree> pixels(
@@ -99,15 +136,11 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
     if (decodedWidth != width || decodedHeight != height || decodedChannels < 1 || decodedChannels > 4)
         return fmt::format("decoded to {}x{} texels of {} channels, its header says {}x{}", decodedWidth, decodedHeight,
                            decodedChannels, width, height);
-    const std::size_t length =
-        std::size_t(width) * std::size_t(height) * std::size_t(decodedChannels) * (wide ? 2u : 1u);
-    image.width = width;
-    image.height = height;
-    image.component = decodedChannels;
-    image.bits = wide ? 16 : 8;
-    image.pixel_type = wide ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-    const auto* begin = static_cast<const unsigned char*>(pixels.get());
-    image.image.assign(begin, begin + length);
+    const std::size_t texels = std::size_t(width) * std::size_t(height);
+    if (wide)
+        image.image = rgba8Of(static_cast<const std::uint16_t*>(pixels.get()), texels, decodedChannels);
+    else
+        image.image = rgba8Of(static_cast<const std::uint8_t*>(pixels.get()), texels, decodedChannels);
     return {};
 }
 
@@ -124,7 +157,9 @@ bool stashImageData(tinygltf::Image* image, int index, std::string* error, std::
         why = fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", header->width, header->height,
                           kMaxImageSide, kMaxImageTexels);
     if (why.empty()) {
-        image->image.assign(encoded.begin(), encoded.end());
+        // A buffer view's bytes stay in the model's buffer, which outlives the decoding: no copy of them is kept.
+        if (image->bufferView < 0)
+            image->image.assign(encoded.begin(), encoded.end());
         image->as_is = true;
         return true;
     }
@@ -135,6 +170,18 @@ bool stashImageData(tinygltf::Image* image, int index, std::string* error, std::
         *error += failure;
     return false;
 }
+
+namespace {
+
+// The bytes of a buffer view, whose range checkLayout has checked.
+std::span<const std::uint8_t> bufferViewBytes(const tinygltf::Model& model, int index)
+{
+    const tinygltf::BufferView& view = model.bufferViews.at(std::size_t(index));
+    const std::vector<unsigned char>& buffer = model.buffers.at(std::size_t(view.buffer)).data;
+    return std::span(buffer).subspan(view.byteOffset, view.byteLength);
+}
+
+} // namespace
 
 std::string decodeStashedImages(tinygltf::Model& model, const std::function<void(std::size_t, std::size_t)>& progress)
 {
@@ -148,10 +195,12 @@ std::string decodeStashedImages(tinygltf::Model& model, const std::function<void
     const auto work = [&] {
         for (std::size_t k = next++; k < stashed.size(); k = next++) {
             tinygltf::Image& image = model.images[stashed[k]];
-            const std::vector<unsigned char> encoded = std::move(image.image);
+            const std::vector<unsigned char> kept = std::move(image.image);
             image.image.clear();
             image.as_is = false;
-            failures[k] = decodeImage(encoded, image);
+            failures[k] = decodeImage(kept.empty() ? bufferViewBytes(model, image.bufferView)
+                                                   : std::span<const std::uint8_t>(kept),
+                                      image);
             const std::size_t finished = ++done;
             if (progress) {
                 const std::lock_guard lock(reporting);

@@ -16,13 +16,15 @@ inline constexpr std::uint32_t kMaxImageSide = 16384;
 inline constexpr std::uint64_t kMaxImageTexels = std::uint64_t(1) << 26;
 
 // Decodes a PNG or JPEG image (glTF 2.0, section 3.8.1: the two image formats core glTF allows) into
-// `image` (width, height, component, bits, pixels as stored: 1 to 4 channels of 8 or 16 bits).
+// `image` as RGBA8 (width, height, component 4, bits 8): grey spread over RGB, a missing alpha opaque, 16-bit
+// channels rounded to nearest.
 // Returns what is wrong, or "" on success: an unknown or truncated format, a picture over the limits,
 // pixel data that does not decode.
 std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& image);
 
-// tinygltf's image-loading callback (TinyGLTF::SetImageLoader): checks the format and the header's size, and keeps
-// the encoded bytes in image.image with image.as_is set, for decodeStashedImages to decode them all at once. A failure
+// tinygltf's image-loading callback (TinyGLTF::SetImageLoader): checks the format and the header's size, and sets
+// image.as_is for decodeStashedImages to decode them all at once, keeping a copy of the encoded bytes in image.image
+// unless they lie in a buffer view (image.bufferView), which the model keeps. A failure
 // is also written to `user`, a std::string, as "/images/<index>: the picture <what is wrong>".
 bool stashImageData(tinygltf::Image* image, int index, std::string* error, std::string* warning, int requestedWidth,
                     int requestedHeight, const unsigned char* bytes, int size, void* user);

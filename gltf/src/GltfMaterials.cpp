@@ -3,7 +3,6 @@
 #include "GltfSamplers.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 
 namespace penumbra::gltf {
@@ -20,38 +19,18 @@ scene::CasterMode casterMode(const Document& document, const tinygltf::Material&
     document.fail(fmt::format("{}: alphaMode '{}' is not OPAQUE, MASK or BLEND", owner, material.alphaMode));
 }
 
-// tinygltf decodes images with 1 to 4 channels of 8 or 16 bits; the scene keeps RGBA8.
-scene::TextureImage toRgba8(const Document& document, const tinygltf::Image& image, const std::string& owner)
+// decodeImage leaves every picture's `pixels` RGBA8, as the scene keeps them.
+scene::TextureImage toRgba8(const Document& document, const tinygltf::Image& image, std::vector<unsigned char> pixels,
+                            const std::string& owner)
 {
-    if (image.width <= 0 || image.height <= 0 || image.component < 1 || image.component > 4 ||
-        (image.bits != 8 && image.bits != 16))
+    if (image.width <= 0 || image.height <= 0 || image.component != 4 || image.bits != 8)
         document.fail(fmt::format("{}: decoded to {}x{} texels of {} channels of {} bits, which is not an RGBA "
-                                  "picture of 8 or 16 bits",
+                                  "picture of 8 bits",
                                   owner, image.width, image.height, image.component, image.bits));
-    const auto texels = std::size_t(image.width) * std::size_t(image.height);
-    const auto channels = std::size_t(image.component);
-    const auto bytesPerChannel = std::size_t(image.bits / 8);
-    if (image.image.size() != texels * channels * bytesPerChannel)
-        document.fail(fmt::format("{}: {} bytes of pixels for {}x{} texels", owner, image.image.size(), image.width,
-                                  image.height));
-    scene::TextureImage texture{image.name, std::uint32_t(image.width), std::uint32_t(image.height),
-                                std::vector<std::uint8_t>(texels * 4, 255)};
-    for (std::size_t t = 0; t < texels; ++t) {
-        for (std::size_t c = 0; c < 4; ++c) {
-            // Grey (and grey-alpha) pictures spread their first channel over RGB.
-            const std::size_t source = channels <= 2 ? (c < 3 ? 0 : (channels == 2 ? 1 : 4)) : c;
-            if (source >= channels)
-                continue;
-            const unsigned char* at = image.image.data() + (t * channels + source) * bytesPerChannel;
-            std::uint16_t value = *at;
-            if (bytesPerChannel == 2) {
-                std::memcpy(&value, at, 2);
-                value = std::uint16_t((value + 128) / 257);
-            }
-            texture.rgba[t * 4 + c] = std::uint8_t(value);
-        }
-    }
-    return texture;
+    if (pixels.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
+        document.fail(
+            fmt::format("{}: {} bytes of pixels for {}x{} texels", owner, pixels.size(), image.width, image.height));
+    return {image.name, std::uint32_t(image.width), std::uint32_t(image.height), std::move(pixels)};
 }
 
 double number(const Document& document, const tinygltf::Value& value, const std::string& field)
@@ -234,12 +213,18 @@ std::uint32_t MaterialTable::texture(int textureIndex, const std::string& owner,
     const std::string textureName = describe("texture", textureIndex, texture.name);
     const int imageIndex = texture.source;
     const tinygltf::Image& image = document_.at(model.images, imageIndex, "image", textureName);
-    scene::TextureImage decoded = toRgba8(document_, image, describe("image", imageIndex, image.name));
+    // The image's pixels go to its first texture; a second use (another sampler or colour space) copies them.
+    const auto taken = imageTextures_.find(imageIndex);
+    scene::TextureImage decoded =
+        toRgba8(document_, image,
+                taken == imageTextures_.end() ? document_.takePixels(imageIndex) : scene_.textures[taken->second].rgba,
+                describe("image", imageIndex, image.name));
     decoded.colorSpace = colorSpace;
     decoded.sampler = textureSampler(document_, texture.sampler, textureName);
     scene_.textures.push_back(std::move(decoded));
     const auto sceneIndex = static_cast<std::uint32_t>(scene_.textures.size() - 1);
     textures_.emplace(std::pair{textureIndex, colorSpace}, sceneIndex);
+    imageTextures_.try_emplace(imageIndex, sceneIndex);
     return sceneIndex;
 }
 

@@ -39,6 +39,7 @@ private:
     std::vector<std::string>& notes_;
     std::map<int, std::uint32_t> materials_;
     std::map<std::pair<int, scene::TextureColorSpace>, std::uint32_t> textures_; // by glTF texture
+    std::map<int, std::uint32_t> imageTextures_; // by glTF image, the scene texture its pixels went to
 };
 
 } // namespace penumbra::gltf

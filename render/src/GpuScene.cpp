@@ -1,5 +1,6 @@
 #include "penumbra/render/GpuScene.hpp"
 
+#include "MipLevelsInOrder.hpp"
 #include "TextureSampling.hpp"
 #include "static/ContentHash.hpp"
 
@@ -8,9 +9,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <cstddef>
-#include <exception>
 #include <map>
-#include <thread>
 #include <vector>
 
 namespace penumbra::render {
@@ -66,48 +65,24 @@ rhi::TextureDesc textureDesc(const scene::TextureImage& image)
             .debugName = debugName(image)};
 }
 
-using MipChain = std::vector<std::vector<std::byte>>;
-
-MipChain mipChainOf(const scene::TextureImage& image, std::optional<float> alphaCutoff)
+// Levels 1 and below of the texture's chain, with level 0's alpha-tested coverage where a Clip material cuts it.
+rhi::MipLevels mipLevelsOf(const scene::Scene& scene, std::size_t index)
 {
+    const scene::TextureImage& image = scene.textures[index];
     const rhi::TextureDesc desc = textureDesc(image);
-    return rhi::generateMipChain(desc.format, desc.width, desc.height, desc.mipLevels,
-                                 std::as_bytes(std::span(image.rgba)), alphaCutoff);
+    return rhi::generateMipLevels(desc.format, desc.width, desc.height, desc.mipLevels,
+                                  std::as_bytes(std::span(image.rgba)), clipCutoffOf(scene, std::uint32_t(index)));
 }
 
+// Level 0 is the image's own texels, uploaded as they are.
 std::unique_ptr<rhi::Texture> uploadTexture(rhi::Device& device, const scene::TextureImage& image,
-                                            const MipChain& chain)
+                                            const rhi::MipLevels& below)
 {
     auto texture = device.createTexture(textureDesc(image));
-    for (std::uint32_t level = 0; level < chain.size(); ++level)
-        device.writeTexture(*texture, 0, level, chain[level]);
+    device.writeTexture(*texture, 0, 0, std::as_bytes(std::span(image.rgba)));
+    for (std::uint32_t level = 1; level < below.levels(); ++level)
+        device.writeTexture(*texture, 0, level, below.level(level));
     return texture;
-}
-
-// The mip chains of scene.textures[first, first + count), each generated on a thread of its own: with a dozen
-// 2048 x 2048 textures, filtering them one after another took seconds of a load (the device uploads stay in order, on
-// the calling thread).
-std::vector<MipChain> mipChainsOf(const scene::Scene& scene, std::size_t first, std::size_t count)
-{
-    std::vector<MipChain> chains(count);
-    std::vector<std::exception_ptr> failures(count);
-    const auto generate = [&](std::size_t k) {
-        try {
-            chains[k] = mipChainOf(scene.textures[first + k], clipCutoffOf(scene, std::uint32_t(first + k)));
-        } catch (...) {
-            failures[k] = std::current_exception();
-        }
-    };
-    {
-        std::vector<std::jthread> threads;
-        for (std::size_t k = 1; k < count; ++k)
-            threads.emplace_back(generate, k);
-        generate(0);
-    }
-    for (const std::exception_ptr& failure : failures)
-        if (failure)
-            std::rethrow_exception(failure);
-    return chains;
 }
 
 } // namespace
@@ -140,24 +115,21 @@ GpuScene::GpuScene(rhi::Device& device, const scene::Scene& scene) : scene_(scen
         meshes_.push_back({upload(device, mesh.vertices, usage, name + " vertices"),
                            upload(device, mesh.indices, rhi::BufferUsage::Index, name + " indices")});
     }
-    // As many textures at a time as there are hardware threads, so no more than that many chains are held at once.
-    const std::size_t batch = std::max(1u, std::thread::hardware_concurrency());
-    for (std::size_t first = 0; first < scene.textures.size(); first += batch) {
-        const std::vector<MipChain> chains = mipChainsOf(scene, first, std::min(batch, scene.textures.size() - first));
-        for (std::size_t k = 0; k < chains.size(); ++k) {
-            const scene::TextureImage& image = scene.textures[first + k];
-            textures_.push_back(uploadTexture(device, image, chains[k]));
+    generateMipLevelsInOrder(
+        scene.textures.size(), [&](std::size_t i) { return mipLevelsOf(scene, i); },
+        [&](std::size_t i, const rhi::MipLevels& below) {
+            const scene::TextureImage& image = scene.textures[i];
+            textures_.push_back(uploadTexture(device, image, below));
             samplers_.push_back(device.createSampler(samplerDesc(image.sampler, anisotropy_, debugName(image))));
             coverageSamplers_.push_back(
                 device.createSampler(samplerDesc(image.sampler, 1.0f, debugName(image) + " (coverage)")));
-        }
-    }
+        });
     const scene::TextureImage white{.name = "white texel",
                                     .width = 1,
                                     .height = 1,
                                     .rgba = {255, 255, 255, 255},
                                     .sampler = {.mipFilter = scene::TextureMipFilter::None}};
-    white_ = uploadTexture(device, white, mipChainOf(white, std::nullopt));
+    white_ = uploadTexture(device, white, rhi::MipLevels{});
     whiteSampler_ = device.createSampler(samplerDesc(white.sampler, 1.0f, debugName(white)));
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> groups;
     for (const scene::Object& object : scene.objects)

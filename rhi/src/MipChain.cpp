@@ -1,5 +1,7 @@
 #include "penumbra/rhi/MipChain.hpp"
 
+#include "BoxPyramid.hpp"
+
 #include "penumbra/rhi/BackendSupport.hpp"
 #include "penumbra/rhi/ColorSpace.hpp"
 #include "penumbra/rhi/Device.hpp"
@@ -10,7 +12,6 @@
 #include <cmath>
 #include <cstring>
 #include <fmt/format.h>
-#include <memory>
 
 namespace penumbra::rhi {
 namespace {
@@ -93,128 +94,78 @@ void decodeRow(const Layout& layout, std::span<const std::byte> bytes, std::uint
     }
 }
 
-std::vector<std::byte> encode(const Layout& layout, std::span<const double> values, std::optional<double> alphaScale)
+// std::lround(std::clamp(value, 0.0, 1.0) * 255.0) as a byte, without the call: below 256 a value's fraction,
+// scaled - trunc(scaled), is exact, and lround rounds it up from one half.
+std::byte unormByte(double value)
 {
-    std::vector<std::byte> bytes(values.size() * (layout.floats ? 4 : 1));
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        const bool alpha = i % 4 == 3;
-        const double v = alphaScale && alpha ? std::min(values[i] * *alphaScale, 1.0) : values[i];
-        if (layout.floats) {
-            const float f = float(v);
-            std::memcpy(bytes.data() + i * 4, &f, 4);
-            continue;
-        }
-        const double unorm = layout.srgb && !alpha ? linearToSrgb(std::clamp(v, 0.0, 1.0)) : v;
-        bytes[i] = std::byte(std::uint8_t(std::lround(std::clamp(unorm, 0.0, 1.0) * 255.0)));
-    }
-    return bytes;
+    const double scaled = std::clamp(value, 0.0, 1.0) * 255.0;
+    const auto whole = std::uint32_t(scaled);
+    return std::byte(std::uint8_t(whole + (scaled - whole >= 0.5 ? 1u : 0u)));
 }
 
-// The box filter along one axis halved from `from` texels: destination texel d averages sources
-// [first[d], first[d + 1]) of `taps`, weighted by the share of its area each covers, in ascending source order.
-struct AxisFilter {
-    struct Tap {
-        std::uint32_t source = 0;
-        double weight = 0.0;
-    };
-    std::uint32_t to = 0;
-    std::vector<std::size_t> first;
-    std::vector<Tap> taps;
-};
-
-AxisFilter axisFilter(std::uint32_t from)
+// A linear value (alpha, or any channel of a format without sRGB) in the format's bytes.
+void encodeLinear(const Layout& layout, double value, std::byte* out)
 {
-    AxisFilter filter;
-    filter.to = std::max(from / 2, 1u);
-    const double scale = double(from) / double(filter.to); // source texels per destination texel
-    for (std::uint32_t d = 0; d < filter.to; ++d) {
-        filter.first.push_back(filter.taps.size());
-        const double begin = d * scale, end = (d + 1) * scale;
-        for (auto s = std::uint32_t(begin); s < from && s < end; ++s)
-            filter.taps.push_back({s, (std::min(end, s + 1.0) - std::max(begin, double(s))) / scale});
-    }
-    filter.first.push_back(filter.taps.size());
-    return filter;
-}
-
-// One level filtered from the level above: both axes halved (an axis of one texel stays), the x axis first.
-// Each sum starts at 0.0 and adds weight * value in ascending source order, the x sums before the y sums, so every
-// level has the bits that filtering whole planes axis by axis gave. `sourceRow(y)` gives row y of the level above
-// (width * channels values) and stays valid until the next call.
-template <typename SourceRow>
-void filterLevel(std::uint32_t width, std::uint32_t height, std::uint32_t channels, SourceRow&& sourceRow,
-                 double* xScratch, double* out)
-{
-    const bool alongX = width > 1, alongY = height > 1;
-    const AxisFilter xFilter = alongX ? axisFilter(width) : AxisFilter{};
-    const std::uint32_t outWidth = alongX ? xFilter.to : width;
-    const std::size_t rowValues = std::size_t(outWidth) * channels;
-    // Row y of the level above halved along x: written to xScratch, or the row itself where x stays.
-    const auto xRow = [&](std::uint32_t y, double* scratch) -> const double* {
-        const double* source = sourceRow(y);
-        if (!alongX)
-            return source;
-        for (std::uint32_t d = 0; d < xFilter.to; ++d) {
-            for (std::uint32_t c = 0; c < channels; ++c) {
-                double sum = 0.0;
-                for (std::size_t t = xFilter.first[d]; t < xFilter.first[d + 1]; ++t)
-                    sum += xFilter.taps[t].weight * source[std::size_t(xFilter.taps[t].source) * channels + c];
-                scratch[std::size_t(d) * channels + c] = sum;
-            }
-        }
-        return scratch;
-    };
-    if (!alongY) {
-        if (const double* row = xRow(0, out); row != out)
-            std::copy(row, row + rowValues, out);
-        return;
-    }
-    const AxisFilter yFilter = axisFilter(height);
-    for (std::uint32_t d = 0; d < yFilter.to; ++d) {
-        double* target = out + std::size_t(d) * rowValues;
-        for (std::size_t t = yFilter.first[d]; t < yFilter.first[d + 1]; ++t) {
-            const double weight = yFilter.taps[t].weight;
-            const double* row = xRow(yFilter.taps[t].source, xScratch);
-            // The first tap adds to 0.0 as a zeroed sum would (0.0 + -0.0 is 0.0), without a pass to zero the row.
-            for (std::size_t i = 0; i < rowValues; ++i)
-                target[i] = (t == yFilter.first[d] ? 0.0 : target[i]) + weight * row[i];
-        }
+    if (layout.floats) {
+        const float f = float(value);
+        std::memcpy(out, &f, 4);
+    } else {
+        *out = unormByte(value);
     }
 }
 
-// Texels of `values` (RGBA) whose alpha times `scale` reaches `cutoff`.
-std::size_t alphaCovered(std::span<const double> values, double scale, double cutoff)
+// Encodes `count` values to `out` in the format's bytes; with `skipAlpha`, channel 3 is left for later.
+void encodeValues(const Layout& layout, const double* values, std::size_t count, bool skipAlpha, std::byte* out)
+{
+    const std::size_t valueBytes = layout.floats ? 4 : 1;
+    for (std::size_t i = 0; i < count; ++i) {
+        const bool alpha = layout.channels == 4 && i % 4 == 3;
+        if (layout.srgb && !alpha)
+            out[i] = std::byte(linearToSrgbCode(values[i]));
+        else if (!(alpha && skipAlpha))
+            encodeLinear(layout, values[i], out + i * valueBytes);
+    }
+}
+
+// Values of `values[stride - 1]`, `values[2 * stride - 1]`... (alphas) whose product with `scale` reaches `cutoff`.
+std::size_t alphaCovered(const double* values, std::size_t count, std::size_t stride, double scale, double cutoff)
 {
     std::size_t covered = 0;
-    for (std::size_t i = 3; i < values.size(); i += 4)
+    for (std::size_t i = stride - 1; i < count; i += stride)
         covered += values[i] * scale >= cutoff ? 1 : 0;
     return covered;
 }
 
-// The alpha scale that brings the share of `values`' texels reaching `cutoff` as close to `coverage` as a
-// bisection finds (coverage grows with the scale).
-double alphaScaleFor(std::span<const double> values, double coverage, double cutoff)
+// The alpha scale that brings the share of `alphas` reaching `cutoff` as close to `coverage` as a bisection finds
+// (coverage grows with the scale).
+double alphaScaleFor(const std::vector<double>& alphas, double coverage, double cutoff)
 {
     double low = 0.0, high = 64.0;
     for (int step = 0; step < 32; ++step) {
         const double mid = 0.5 * (low + high);
-        (double(alphaCovered(values, mid, cutoff)) / double(values.size() / 4) < coverage ? low : high) = mid;
+        (double(alphaCovered(alphas.data(), alphas.size(), 1, mid, cutoff)) / double(alphas.size()) < coverage ? low
+                                                                                                               : high) =
+            mid;
     }
     return high;
 }
 
-std::size_t valuesOf(std::uint32_t width, std::uint32_t height, std::uint32_t channels)
+// The share of level 0's texels whose alpha reaches `cutoff`, decoded a row at a time.
+double alphaCoverage(const Layout& layout, std::span<const std::byte> level0, std::uint32_t width, std::uint32_t height,
+                     double cutoff)
 {
-    return std::size_t(width) * height * channels;
+    std::vector<double> decoded(std::size_t(width) * layout.channels);
+    std::size_t covered = 0;
+    for (std::uint32_t y = 0; y < height; ++y) {
+        decodeRow(layout, level0, width, y, decoded.data());
+        covered += alphaCovered(decoded.data(), decoded.size(), 4, 1.0, cutoff);
+    }
+    return double(covered) / double(std::size_t(width) * height);
 }
 
-} // namespace
-
-std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_t width, std::uint32_t height,
-                                                     std::uint32_t levels, std::span<const std::byte> level0,
-                                                     std::optional<float> alphaCutoff)
+void checkChain(const Layout& layout, Format format, std::uint32_t width, std::uint32_t height, std::uint32_t levels,
+                std::span<const std::byte> level0, std::optional<float> alphaCutoff)
 {
-    const Layout layout = layoutOf(format);
     const std::uint64_t expected = std::uint64_t(width) * height * texelSize(format);
     if (width == 0 || height == 0 || level0.size() != expected)
         throw Error(fmt::format("generateMipChain: level 0 of {}x{} {} takes {} bytes, got {}", width, height,
@@ -226,48 +177,64 @@ std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_
         throw Error(fmt::format("generateMipChain: an alpha cutoff ({}) needs an RGBA format and a value in (0, 1], "
                                 "got {}",
                                 *alphaCutoff, formatName(format)));
-    std::vector<std::vector<std::byte>> chain{std::vector<std::byte>(level0.begin(), level0.end())};
-    if (levels == 1)
-        return chain;
-    const std::uint32_t channels = layout.channels;
-    // Level 0 is decoded a row at a time, never whole; the levels below live in two buffers used in turn (odd
-    // levels in the first, even in the second), allocated once and not zero-filled: a fresh zero-filled plane per
-    // level was most of the time (docs/notes/2026-12-06-large-texture-loading.md).
-    std::vector<double> decoded(std::size_t(width) * channels);
-    std::vector<double> xScratch(std::size_t(std::max(width / 2, 1u)) * channels);
-    const auto halvedSize = [](std::uint32_t size) { return std::max(size / 2, 1u); }; // an axis of the next level
-    std::array<std::unique_ptr<double[]>, 2> planes;
-    planes[0].reset(new double[valuesOf(halvedSize(width), halvedSize(height), channels)]);
-    if (levels > 2)
-        planes[1].reset(new double[valuesOf(halvedSize(halvedSize(width)), halvedSize(halvedSize(height)), channels)]);
-    double coverage = 0.0;
-    if (alphaCutoff) {
-        std::size_t covered = 0;
-        for (std::uint32_t y = 0; y < height; ++y) {
-            decodeRow(layout, level0, width, y, decoded.data());
-            covered += alphaCovered(decoded, 1.0, *alphaCutoff);
-        }
-        coverage = double(covered) / double(std::size_t(width) * height);
-    }
-    std::uint32_t w = width, h = height;
-    const double* above = nullptr; // the level above, null for level 0 (read from its bytes)
+}
+
+} // namespace
+
+std::span<const std::byte> MipLevels::level(std::uint32_t level) const
+{
+    if (level == 0 || level >= levels())
+        throw Error(fmt::format("MipLevels: level {} is outside 1..{}", level, levels() - 1));
+    return {bytes_.get() + offsets_[level - 1], offsets_[level] - offsets_[level - 1]};
+}
+
+MipLevels generateMipLevels(Format format, std::uint32_t width, std::uint32_t height, std::uint32_t levels,
+                            std::span<const std::byte> level0, std::optional<float> alphaCutoff)
+{
+    const Layout layout = layoutOf(format);
+    checkChain(layout, format, width, height, levels, level0, alphaCutoff);
+    MipLevels made;
+    made.offsets_.push_back(0);
+    for (std::uint32_t level = 1; level < levels; ++level)
+        made.offsets_.push_back(made.offsets_.back() +
+                                std::size_t(mipExtent(width, level)) * mipExtent(height, level) * texelSize(format));
+    made.bytes_ = std::make_unique_for_overwrite<std::byte[]>(made.offsets_.back());
+    // With a cutoff, each level's alpha is scaled once the whole level is known: its alphas wait here.
+    std::vector<std::vector<double>> alphas(alphaCutoff ? levels : 0);
+    for (std::uint32_t level = 1; level < alphas.size(); ++level)
+        alphas[level].reserve(std::size_t(mipExtent(width, level)) * mipExtent(height, level));
+    const std::size_t valueBytes = layout.floats ? 4 : 1;
+    const auto rowDone = [&](std::uint32_t level, std::uint32_t y, const double* values) {
+        const std::size_t count = std::size_t(mipExtent(width, level)) * layout.channels;
+        encodeValues(layout, values, count, alphaCutoff.has_value(),
+                     made.bytes_.get() + made.offsets_[level - 1] + y * count * valueBytes);
+        for (std::size_t i = 3; alphaCutoff && i < count; i += 4)
+            alphas[level].push_back(values[i]);
+    };
+    BoxPyramid(
+        width, height, layout.channels, levels,
+        [&](std::uint32_t y, double* out) { decodeRow(layout, level0, width, y, out); }, rowDone)
+        .run();
+    if (!alphaCutoff)
+        return made;
+    const double coverage = alphaCoverage(layout, level0, width, height, *alphaCutoff);
     for (std::uint32_t level = 1; level < levels; ++level) {
-        double* out = planes[(level - 1) % 2].get();
-        const auto sourceRow = [&](std::uint32_t y) -> const double* {
-            if (above)
-                return above + std::size_t(y) * w * channels;
-            decodeRow(layout, level0, width, y, decoded.data());
-            return decoded.data();
-        };
-        filterLevel(w, h, channels, sourceRow, xScratch.data(), out);
-        w = halvedSize(w);
-        h = halvedSize(h);
-        const std::span<const double> values(out, valuesOf(w, h, channels));
-        chain.push_back(
-            encode(layout, values,
-                   alphaCutoff ? std::optional(alphaScaleFor(values, coverage, *alphaCutoff)) : std::nullopt));
-        above = out;
+        const double scale = alphaScaleFor(alphas[level], coverage, *alphaCutoff);
+        std::byte* out = made.bytes_.get() + made.offsets_[level - 1];
+        for (std::size_t t = 0; t < alphas[level].size(); ++t)
+            encodeLinear(layout, std::min(alphas[level][t] * scale, 1.0), out + (t * 4 + 3) * valueBytes);
     }
+    return made;
+}
+
+std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_t width, std::uint32_t height,
+                                                     std::uint32_t levels, std::span<const std::byte> level0,
+                                                     std::optional<float> alphaCutoff)
+{
+    const MipLevels below = generateMipLevels(format, width, height, levels, level0, alphaCutoff);
+    std::vector<std::vector<std::byte>> chain{std::vector<std::byte>(level0.begin(), level0.end())};
+    for (std::uint32_t level = 1; level < levels; ++level)
+        chain.emplace_back(below.level(level).begin(), below.level(level).end());
     return chain;
 }
 
@@ -275,9 +242,11 @@ void writeMipChain(Device& device, Texture& texture, std::uint32_t layer, std::s
                    std::optional<float> alphaCutoff)
 {
     const TextureDesc& desc = texture.desc();
-    const auto chain = generateMipChain(desc.format, desc.width, desc.height, desc.mipLevels, level0, alphaCutoff);
-    for (std::uint32_t level = 0; level < desc.mipLevels; ++level)
-        device.writeTexture(texture, layer, level, chain[level]);
+    const MipLevels below =
+        generateMipLevels(desc.format, desc.width, desc.height, desc.mipLevels, level0, alphaCutoff);
+    device.writeTexture(texture, layer, 0, level0);
+    for (std::uint32_t level = 1; level < desc.mipLevels; ++level)
+        device.writeTexture(texture, layer, level, below.level(level));
 }
 
 } // namespace penumbra::rhi

@@ -1,4 +1,5 @@
-// rhi::generateMipChain's alpha-coverage preservation, and its bytes against a plain reference, on the CPU.
+// rhi::generateMipChain's alpha-coverage preservation, its bytes against a plain reference, and the sRGB code table
+// against its formula, on the CPU.
 #include "penumbra/rhi/ColorSpace.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/MipChain.hpp"
@@ -149,7 +150,7 @@ TEST(MipChainTest, EveryFormatGivesTheReferenceBytesOnOddAndEvenSizes)
     const Case cases[] = {{Format::RGBA8, 4, false, false}, {Format::RGBA8_SRGB, 4, false, true},
                           {Format::R8, 1, false, false},    {Format::RG8, 2, false, false},
                           {Format::R32F, 1, true, false},   {Format::RGBA32F, 4, true, false}};
-    const std::uint32_t sizes[][2] = {{37, 23}, {1, 9}, {9, 1}, {3, 3}, {16, 8}, {5, 2}};
+    const std::uint32_t sizes[][2] = {{37, 23}, {1, 9}, {9, 1}, {3, 3}, {16, 8}, {5, 2}, {2, 13}};
     std::mt19937 random(45);
     for (const Case& c : cases) {
         for (const auto& size : sizes) {
@@ -173,6 +174,46 @@ TEST(MipChainTest, EveryFormatGivesTheReferenceBytesOnOddAndEvenSizes)
             }
         }
     }
+}
+
+// generateMipLevels holds what generateMipChain returns below level 0, in one allocation.
+TEST(MipChainTest, MipLevelsAreTheChainBelowLevelZero)
+{
+    const std::vector<std::uint8_t> level0 = stalk();
+    const auto bytes = std::as_bytes(std::span(level0));
+    const auto chain = generateMipChain(Format::RGBA8_SRGB, 8, 8, 4, bytes, 0.5f);
+    const MipLevels below = generateMipLevels(Format::RGBA8_SRGB, 8, 8, 4, bytes, 0.5f);
+    ASSERT_EQ(below.levels(), 4u);
+    for (std::uint32_t level = 1; level < 4; ++level)
+        EXPECT_TRUE(std::ranges::equal(below.level(level), chain[level])) << "level " << level;
+    EXPECT_THROW(below.level(0), Error);
+}
+
+// linearToSrgbCode's table gives the formula's code: beside every value where the code steps up (where the sRGB
+// curve crosses a half code), beside the table's guard bands around them, and at random values.
+TEST(MipChainTest, SrgbCodesAreTheFormulas)
+{
+    const auto formula = [](double linear) {
+        return std::uint8_t(std::lround(std::clamp(linearToSrgb(std::clamp(linear, 0.0, 1.0)), 0.0, 1.0) * 255.0));
+    };
+    std::vector<double> values{-1.0, -0.0, 0.0, 1e-300, 1.0, 2.0, std::nextafter(1.0, 0.0), 0.5};
+    for (int code = 1; code < 256; ++code) {
+        const double step = srgbToLinear((code - 0.5) / 255.0);
+        for (const double near : {step, step * (1.0 - 1e-9), step * (1.0 + 1e-9)}) {
+            double below = near, above = near;
+            for (int ulp = 0; ulp < 100; ++ulp) {
+                values.push_back(below = std::nextafter(below, 0.0));
+                values.push_back(above = std::nextafter(above, 1.0));
+            }
+        }
+    }
+    std::mt19937_64 random(45);
+    for (int i = 0; i < 50000; ++i)
+        values.push_back(std::uniform_real_distribution<double>(0.0, 1.0)(random));
+    std::size_t wrong = 0;
+    for (const double value : values)
+        wrong += linearToSrgbCode(value) != formula(value) ? 1 : 0;
+    EXPECT_EQ(wrong, 0u) << "of " << values.size() << " values";
 }
 
 } // namespace

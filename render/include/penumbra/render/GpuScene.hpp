@@ -22,7 +22,8 @@ public:
     // Validates the scene (scene::SceneError names what is wrong) and uploads every mesh and texture, each
     // texture through one helper: colour ones (base colour, emissive; scene::TextureColorSpace::Srgb) as
     // RGBA8_SRGB, data ones (metallic-roughness, normal, occlusion) as RGBA8, with mip chains made on the CPU
-    // (rhi::writeMipChain) where their samplers read mip levels. Samplers start without anisotropic filtering.
+    // (rhi::generateMipLevels, on hardware threads while earlier textures upload) where their samplers read mip
+    // levels. Samplers start without anisotropic filtering.
     GpuScene(rhi::Device& device, const scene::Scene& scene);
 
     // The scene this was uploaded from.

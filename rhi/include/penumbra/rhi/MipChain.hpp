@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -28,6 +29,28 @@ class Texture;
 std::vector<std::vector<std::byte>> generateMipChain(Format format, std::uint32_t width, std::uint32_t height,
                                                      std::uint32_t levels, std::span<const std::byte> level0,
                                                      std::optional<float> alphaCutoff = std::nullopt);
+
+class MipLevels;
+
+// The levels below level 0 of generateMipChain's chain, the same bytes, without a copy of level 0: what uploading a
+// texture needs (a large texture's chain no longer holds its level 0 twice).
+MipLevels generateMipLevels(Format format, std::uint32_t width, std::uint32_t height, std::uint32_t levels,
+                            std::span<const std::byte> level0, std::optional<float> alphaCutoff = std::nullopt);
+
+// Levels 1 to levels - 1 of a mip chain (level 0 is the caller's), written in place into one allocation.
+class MipLevels {
+public:
+    // The levels of the chain, level 0 included (0 for a MipLevels made empty, which holds none).
+    std::uint32_t levels() const { return std::uint32_t(offsets_.size()); }
+    // The bytes of `level`, 1 to levels() - 1.
+    std::span<const std::byte> level(std::uint32_t level) const;
+
+private:
+    friend MipLevels generateMipLevels(Format, std::uint32_t, std::uint32_t, std::uint32_t, std::span<const std::byte>,
+                                       std::optional<float>);
+    std::unique_ptr<std::byte[]> bytes_;
+    std::vector<std::size_t> offsets_; // level l's bytes are [offsets_[l - 1], offsets_[l])
+};
 
 // Fills every mip level of `layer`: level 0 from `level0`, the others generated from it by generateMipChain.
 void writeMipChain(Device& device, Texture& texture, std::uint32_t layer, std::span<const std::byte> level0,
