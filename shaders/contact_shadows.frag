@@ -1,14 +1,14 @@
 #version 450
-// Contact shadows (penumbra::render::ContactShadowPass): from every other pixel's surface (half resolution), rebuilt from the depth prepass
-// through the inverse view-projection as the screen-space collection does, a short march towards each directional
-// light through the same depth buffer; a sample whose ray point lies behind the depth there, by less than the
-// surface's assumed thickness, is an occluder the shadow map may have missed (its texels, its biases). One bit
-// per light; the lit pass takes the minimum with the map's visibility on the light's direct term. After
-// Bend Studio's "Bend Studio's screen space shadows" (Graham Aldridge, SIGGRAPH 2023 Advances) and Panos
-// Karabelas's "Screen space shadows" (2019): steps along the light, a thickness band behind each depth sample, a
-// per-pixel jitter of the first step. Screen and depth conventions are the RHI's (Conventions::clipToTexture in
-// worldToTexture maps clip space to the texture coordinates of any render target, row 0 at the top;
-// penumbraWindowDepthToNdc undoes the depth range), so no backend flips anything here.
+// Contact shadows (penumbra::render::ContactShadowPass): from every other pixel's surface (half resolution),
+// rebuilt from the depth prepass through the inverse view-projection as the screen-space collection does, a short
+// march towards each directional light through the same depth buffer; a sample whose ray point lies behind the
+// depth there, by less than the surface's assumed thickness, is an occluder the shadow map may have missed (its
+// texels, its biases). One bit per light; the lit pass upsamples them and takes the minimum with the map's
+// visibility on the light's direct term. After Bend Studio's "Bend Studio's screen space shadows" (Graham Aldridge,
+// SIGGRAPH 2023 Advances) and Panos Karabelas's "Screen space shadows" (2019): steps along the light, a thickness
+// band behind each depth sample, a per-pixel jitter of the first step. Screen and depth conventions are the RHI's
+// (Conventions::clipToTexture in worldToTexture maps clip space to the texture coordinates of any render target,
+// row 0 at the top; penumbraWindowDepthToNdc undoes the depth range), so no backend flips anything here.
 
 #include "contact_constants.glsl" // the block Contact (penumbra::render::ContactShadowUniforms) and the bindings
 #include "material.glsl"
