@@ -1,14 +1,14 @@
 #version 450
-// Contact shadows (penumbra::render::ContactShadowPass): from each pixel's surface, rebuilt from the depth prepass
-// through the inverse view-projection as the screen-space collection does, a short march towards each directional
-// light through the same depth buffer; a sample whose ray point lies behind the depth there, by less than the
-// surface's assumed thickness, is an occluder the shadow map may have missed (its texels, its biases). One channel
-// per light, 1 = lit; the lit pass takes the minimum with the map's visibility on the light's direct term. After
-// Bend Studio's "Bend Studio's screen space shadows" (Graham Aldridge, SIGGRAPH 2023 Advances) and Panos
-// Karabelas's "Screen space shadows" (2019): steps along the light, a thickness band behind each depth sample, a
-// per-pixel jitter of the first step. Screen and depth conventions are the RHI's (PENUMBRA_CLIP_TO_TEXTURE maps
-// clip space to the texture coordinates of any render target, row 0 at the top; penumbraWindowDepthToNdc undoes the
-// depth range), so no backend flips anything here.
+// Contact shadows (penumbra::render::ContactShadowPass): from every other pixel's surface (half resolution),
+// rebuilt from the depth prepass through the inverse view-projection as the screen-space collection does, a short
+// march towards each directional light through the same depth buffer; a sample whose ray point lies behind the
+// depth there, by less than the surface's assumed thickness, is an occluder the shadow map may have missed (its
+// texels, its biases). One bit per light; the lit pass upsamples them and takes the minimum with the map's
+// visibility on the light's direct term. After Bend Studio's "Bend Studio's screen space shadows" (Graham Aldridge,
+// SIGGRAPH 2023 Advances) and Panos Karabelas's "Screen space shadows" (2019): steps along the light, a thickness
+// band behind each depth sample, a per-pixel jitter of the first step. Screen and depth conventions are the RHI's
+// (Conventions::clipToTexture in worldToTexture maps clip space to the texture coordinates of any render target,
+// row 0 at the top; penumbraWindowDepthToNdc undoes the depth range), so no backend flips anything here.
 
 #include "contact_constants.glsl" // the block Contact (penumbra::render::ContactShadowUniforms) and the bindings
 #include "material.glsl"
@@ -24,29 +24,25 @@ float viewDepthOf(float windowDepth)
     return contact.depthToView.y / (penumbraWindowDepthToNdc(windowDepth) + contact.depthToView.x);
 }
 
-float viewDepthAt(ivec2 pixel) { return viewDepthOf(texelFetch(sceneDepth, pixel, 0).r); }
-
-// How far the surface's view depth moves over one pixel, the smaller one-sided difference on each axis (so that a
-// neighbour across a silhouette does not count): a depth sample on the starting surface lies off the ray's own
-// projection by up to a pixel, and must not read as an occluder.
-float depthStepPerPixel(ivec2 pixel, float depth)
+float depthAt(ivec2 pixel)
 {
-    const ivec2 last = ivec2(contact.targetSize.xy) - 1;
-    const float left = abs(depth - viewDepthAt(clamp(pixel - ivec2(1, 0), ivec2(0), last)));
-    const float right = abs(depth - viewDepthAt(clamp(pixel + ivec2(1, 0), ivec2(0), last)));
-    const float up = abs(depth - viewDepthAt(clamp(pixel - ivec2(0, 1), ivec2(0), last)));
-    const float down = abs(depth - viewDepthAt(clamp(pixel + ivec2(0, 1), ivec2(0), last)));
-    return max(min(left, right), min(up, down));
+    return texelFetch(sceneDepth, clamp(pixel, ivec2(0), ivec2(contact.targetSize.xy) - 1), 0).r;
 }
 
-// 1 where the march from `position` towards the light meets no occluder, 0 where it does. Projection and view depth
-// are linear in clip space along the ray, so each step interpolates its ends instead of projecting anew.
-float contactVisibility(vec3 position, ivec2 start, vec3 towardsLight, float bias, float jitter)
+// How far a depth moves over one pixel, the smaller one-sided difference on each axis (so that a neighbour across a
+// silhouette does not count), for the surface's window depths `here` and its four neighbours.
+float stepPerPixel(float here, float left, float right, float up, float down)
+{
+    return max(min(abs(here - left), abs(here - right)), min(abs(here - up), abs(here - down)));
+}
+
+// Whether the march from `position` towards the light meets an occluder. Projection and view depth are linear in
+// clip space along the ray, so each step interpolates its ends instead of projecting anew.
+bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float bias, float jitter)
 {
     const vec3 end = position + towardsLight * contact.marchLength;
-    const mat4 toTexture = PENUMBRA_CLIP_TO_TEXTURE * contact.viewProjection;
-    const vec4 startTexture = toTexture * vec4(position, 1.0);
-    const vec4 endTexture = toTexture * vec4(end, 1.0);
+    const vec4 startTexture = contact.worldToTexture * vec4(position, 1.0);
+    const vec4 endTexture = contact.worldToTexture * vec4(end, 1.0);
     const float startDepth = dot(position - contact.cameraPosition.xyz, contact.cameraForward.xyz);
     const float endDepth = dot(end - contact.cameraPosition.xyz, contact.cameraForward.xyz);
     for (int i = 0; i < contact.steps; ++i) {
@@ -65,25 +61,37 @@ float contactVisibility(vec3 position, ivec2 start, vec3 towardsLight, float bia
             continue;
         const float behind = rayDepth - viewDepthOf(depth);
         if (behind > bias && behind < bias + contact.thickness)
-            return 0.0;
+            return true;
     }
-    return 1.0;
+    return false;
 }
 
+// Half resolution: texel q marches from the full-resolution pixel 2q and keeps what the lit pass needs to hand its
+// answer to the pixels around it (contact_shadows_lit.glsl): that pixel's window depth, its depth step per pixel,
+// and a bit per light that the march found occluded.
 void main()
 {
-    const ivec2 pixel = ivec2(gl_FragCoord.xy);
-    const float windowDepth = texelFetch(sceneDepth, pixel, 0).r;
-    outContact = vec4(1.0);
+    const ivec2 pixel = 2 * ivec2(gl_FragCoord.xy);
+    const float windowDepth = depthAt(pixel);
+    outContact = vec4(windowDepth, 0.0, 0.0, 0.0);
     if (windowDepth == PENUMBRA_FAR_DEPTH)
         return;
-    const vec2 ndc = penumbraFragCoordToNdc(gl_FragCoord.xy, contact.targetSize.xy);
+    const vec2 centre = vec2(pixel) + 0.5;
+    const vec2 ndc = penumbraFragCoordToNdc(centre, contact.targetSize.xy);
     const vec4 world = contact.clipToWorld * vec4(ndc, penumbraWindowDepthToNdc(windowDepth), 1.0);
     const vec3 position = world.xyz / world.w;
-    const float depth = viewDepthAt(pixel);
-    // A pixel's worth of the surface's own depth slope, and a relative floor for the depth's rounding.
-    const float bias = depthStepPerPixel(pixel, depth) + 1e-3 * depth;
-    const float jitter = 0.5 + 0.5 * interleavedGradientNoise(gl_FragCoord.xy);
+    const float left = depthAt(pixel - ivec2(1, 0)), right = depthAt(pixel + ivec2(1, 0));
+    const float up = depthAt(pixel - ivec2(0, 1)), down = depthAt(pixel + ivec2(0, 1));
+    outContact.y = stepPerPixel(windowDepth, left, right, up, down);
+    // A pixel's worth of the surface's own view depth slope (a depth sample on the starting surface lies off the
+    // ray's own projection by up to a pixel, and must not read as an occluder), and a relative floor for the depth's
+    // rounding.
+    const float depth = viewDepthOf(windowDepth);
+    const float bias = stepPerPixel(depth, viewDepthOf(left), viewDepthOf(right), viewDepthOf(up), viewDepthOf(down)) +
+                       1e-3 * depth;
+    const float jitter = 0.5 + 0.5 * interleavedGradientNoise(centre);
+    int occluded = 0;
     for (int i = 0; i < contact.lightCount; ++i)
-        outContact[i] = contactVisibility(position, pixel, contact.towardsLight[i].xyz, bias, jitter);
+        occluded |= contactOccluded(position, pixel, contact.towardsLight[i].xyz, bias, jitter) ? 1 << i : 0;
+    outContact.z = float(occluded);
 }

@@ -93,6 +93,8 @@ nlohmann::json lightReport(const scene::Scene& scene, const LightTruth& t)
             {"acnePixels", c.acne()},
             {"leakPixels", c.leaks()},
             {"contactGapTexels", t.contactGapTexels},
+            {"contactShadowedPixels", t.contactGaps.shadowed},
+            {"contactGapPixels", t.contactGaps.gaps},
             {"litNearEdges", c.lit.nearEdges},
             {"shadowedNearEdges", c.shadowed.nearEdges},
             {"litUndecided", c.lit.undecided},
@@ -138,7 +140,7 @@ void truth(const TruthOptions& options)
         frame.visibilityOf = light;
         renderer.render(scene.camera, frame, plans);
         const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
-        truths.push_back({light, truth::lightLabel(scene, light), {}, truth::renderedVisibility(view), {}, 0.0f});
+        truths.push_back({light, truth::lightLabel(scene, light), {}, truth::renderedVisibility(view), {}, 0.0f, {}});
     }
     for (const std::string& note : renderer.notes())
         fmt::print("  note: {}\n", note);
@@ -165,6 +167,8 @@ void truth(const TruthOptions& options)
             truth::contactGapTexels(t.comparison, gbuffer, shadowRays, trace.rays, [&](glm::vec3 position) {
                 return truth::shadowTexelSize(plans, frame.shadows, scene, t.light, position);
             });
+        t.contactGaps = truth::contactGapPixels(gbuffer, t.raycast, t.rendered, shadowRays, trace.rays,
+                                                frame.shadows.contact.length);
         nlohmann::json entry = lightReport(scene, t);
         if (wantsSoftTruth(options, scene, plans, t.light)) {
             const truth::SoftVisibilityMap soft =
@@ -192,10 +196,10 @@ void truth(const TruthOptions& options)
     for (const LightTruth& t : truths) {
         const truth::TruthComparison& c = t.comparison;
         fmt::print("{} ({} {}): agreement {} of {} pixels; truly lit {} right of {}, truly shadowed {} right of {}; "
-                   "acne {}, leaks {}, contact gap {:.2f} texels\n",
+                   "acne {}, leaks {}, contact gap {:.2f} texels; contact gaps {} of {} pixels\n",
                    t.name, scene::lightKindName(t.light.kind), t.light.index, percent(c.agreement()), c.compared(),
                    percent(c.lit.share()), c.lit.compared, percent(c.shadowed.share()), c.shadowed.compared, c.acne(),
-                   c.leaks(), t.contactGapTexels);
+                   c.leaks(), t.contactGapTexels, t.contactGaps.gaps, t.contactGaps.shadowed);
         if (c.dithered.compared > 0)
             fmt::print("  behind dithered casters only: {} pixels, {:.3f} of the light expected on average, {:.3f} "
                        "rendered\n",

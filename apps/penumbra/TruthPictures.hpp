@@ -17,6 +17,7 @@ struct LightTruth {
     truth::RenderedVisibility rendered;
     truth::TruthComparison comparison;
     float contactGapTexels = 0.0f;
+    truth::ContactGapFigures contactGaps; // casters within contact.length, whether the frame marches or not
 };
 
 // DIR/raycast.png (ray-cast visibility), DIR/shadowmap.png (the shadow maps' visibility) and

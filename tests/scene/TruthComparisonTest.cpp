@@ -4,6 +4,7 @@
 
 #include "penumbra/scene/MeshGenerators.hpp"
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
@@ -167,6 +168,23 @@ TEST(TruthComparisonTest, ConfirmingNeedsAFootprintPerPixel)
     TruthComparison c = compareWithTruth(s.gbuffer, s.truth, s.rendered);
     EXPECT_THROW(confirmDisagreements(c, RayCaster(s.scene), s.gbuffer, s.truth, raysTowards(s.scene.lights[0]), {}),
                  std::invalid_argument);
+}
+
+// Contact gaps keep the pixels near shadow edges that the comparison leaves out, and count only casters within reach
+// along the rays: the slabs' undersides are 3.95 units up, 5.59 along the 45-degree rays.
+TEST(TruthComparisonTest, ContactGapsKeepEdgesAndCountCastersWithinReach)
+{
+    const SlabScene s;
+    const RayCaster shadowRays(s.scene);
+    const ShadowRayFrom rays = raysTowards(s.scene.lights[0]);
+    const TruthComparison c = compareWithTruth(s.gbuffer, s.truth, s.rendered);
+    const ContactGapFigures within = contactGapPixels(s.gbuffer, s.truth, s.rendered, shadowRays, rays, 6.0f);
+    EXPECT_GT(within.gaps, c.leaks()) << "the pixels near the shadows' edges count";
+    EXPECT_EQ(within.gaps, within.shadowed) << "the renderer's answer is lit everywhere";
+    EXPECT_EQ(contactGapPixels(s.gbuffer, s.truth, s.rendered, shadowRays, rays, 5.0f).shadowed, 0u);
+    RenderedVisibility dark = s.rendered;
+    std::fill(dark.lit.begin(), dark.lit.end(), 0.0f);
+    EXPECT_EQ(contactGapPixels(s.gbuffer, s.truth, dark, shadowRays, rays, 6.0f).gaps, 0u);
 }
 
 } // namespace

@@ -1,11 +1,11 @@
 // Contact shadows (shadows.contact) against the CPU ray cast, in every configuration: the contact scene seen low from
 // its shadowed side at 160 x 90 with one cascade in a 512-texel atlas, whose map leaves lit gaps at the pole's foot and
-// under the fence slats. The ray cast's own comparison leaves out pixels within a filter's reach of a shadow edge,
-// which is where those gaps are, so the gap here is every pixel decided by the map that the ray cast finds shadowed by
-// a caster within contact.length of it but that is rendered lit: contact shadows must close some of them without
-// darkening a pixel that truly sees the light (the comparison's acne does not rise). The negative control marches with
-// a thickness of 10 metres, which ignores it: surfaces then hide everything behind them, and the halos it draws are
-// caught.
+// under the fence slats. The gaps are truth::contactGapPixels (decided by the map, shadowed by a caster within
+// contact.length in the ray cast, rendered lit; the comparison's own figures leave out pixels within a filter's reach
+// of a shadow edge, which is where those gaps are): contact shadows must close some of them without darkening a
+// pixel that truly sees the light (the comparison's acne does not rise). The negative controls march with a thickness
+// of 10 metres, which ignores it (surfaces then hide everything behind them, and the halos it draws are caught), and
+// a march too short to reach a caster, whose gaps must stay.
 #include "GpuTesting.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
@@ -18,7 +18,6 @@
 #include <cstdio>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
-#include <optional>
 
 namespace penumbra::testing {
 namespace {
@@ -26,8 +25,11 @@ namespace {
 constexpr std::uint32_t kWidth = 160;
 constexpr std::uint32_t kHeight = 90;
 constexpr scene::LightRef kSun{scene::LightKind::Directional, 0};
+// Casters within the default march's length count: what contact shadows can close.
+constexpr float kReach = shadows::ContactShadowSettings{}.length;
 
-render::FrameDesc contactFrame(bool contact, float thickness = shadows::ContactShadowSettings{}.thickness)
+render::FrameDesc contactFrame(bool contact, float thickness = shadows::ContactShadowSettings{}.thickness,
+                               float length = kReach)
 {
     render::FrameDesc frame;
     frame.width = kWidth;
@@ -37,6 +39,7 @@ render::FrameDesc contactFrame(bool contact, float thickness = shadows::ContactS
     frame.shadows.directional.cascadeCount = 1;
     frame.shadows.contact.shadows = contact ? shadows::Toggle::On : shadows::Toggle::Off;
     frame.shadows.contact.thickness = thickness;
+    frame.shadows.contact.length = length;
     frame.visibilityOf = kSun;
     return frame;
 }
@@ -71,18 +74,11 @@ public:
         const truth::LightTruthTrace trace =
             truth::traceLightTruth(scene_, shadowRays, gbuffer, plans, frame.shadows, kSun);
         const truth::TruthComparison c = truth::compareLightTruth(trace, shadowRays, gbuffer, rendered);
-        Figures f{.gaps = 0, .acne = c.acne()};
-        const float reach = frame.shadows.contact.length;
-        for (std::size_t i = 0; i < gbuffer.samples.size(); ++i) {
-            if (!rendered.decided[i] || rendered.lit[i] < truth::kShadowedBelow ||
-                trace.visibility.pixels[i] != truth::LightVisibility::Shadowed)
-                continue;
-            const truth::ShadowRay ray = trace.rays(truth::shadowRayOrigin(gbuffer.samples[i]));
-            const std::optional<truth::Hit> blocker = shadowRays.closestHit(ray.origin, ray.direction, reach);
-            f.gaps += blocker ? 1 : 0;
-        }
-        std::printf("[ contact  ] %s %s: %zu gap pixels, acne %zu (lit %zu, shadowed %zu compared)\n",
-                    configuration().c_str(), name, f.gaps, f.acne, c.lit.compared, c.shadowed.compared);
+        const truth::ContactGapFigures gaps =
+            truth::contactGapPixels(gbuffer, trace.visibility, rendered, shadowRays, trace.rays, kReach);
+        const Figures f{.gaps = gaps.gaps, .acne = c.acne()};
+        std::printf("[ contact  ] %s %s: %zu gap pixels of %zu, acne %zu (lit %zu, shadowed %zu compared)\n",
+                    configuration().c_str(), name, f.gaps, gaps.shadowed, f.acne, c.lit.compared, c.shadowed.compared);
         return f;
     }
 
@@ -125,6 +121,15 @@ TEST_F(ContactShadowsTest, ThicknessIgnoredCatchesFault)
     const Figures off = measure(contactFrame(false), "off");
     const Figures ignored = measure(contactFrame(true, 10.0f), "thickness 10 m");
     EXPECT_GT(ignored.acne, off.acne) << "a march that ignores the thickness must darken truly lit pixels";
+}
+
+// A march of 2 cm reaches no caster: the gap count (truth::contactGapPixels, casters within the default length)
+// must not fall, or it would credit contact shadows with what they did not do.
+TEST_F(ContactShadowsTest, MarchTooShortCatchesFault)
+{
+    const Figures off = measure(contactFrame(false), "off");
+    const Figures tooShort = measure(contactFrame(true, shadows::ContactShadowSettings{}.thickness, 0.02f), "2 cm");
+    EXPECT_EQ(tooShort.gaps, off.gaps) << "a march that reaches no caster closes no gap";
 }
 
 } // namespace

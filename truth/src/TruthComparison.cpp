@@ -216,4 +216,27 @@ float contactGapTexels(const TruthComparison& comparison, const CpuGBuffer& gbuf
     return gap;
 }
 
+ContactGapFigures contactGapPixels(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth,
+                                   const RenderedVisibility& rendered, const RayCaster& shadowRays,
+                                   const ShadowRayFrom& rayFrom, float reach)
+{
+    if (gbuffer.samples.size() != truth.pixels.size() || rendered.lit.size() != truth.pixels.size() ||
+        rendered.decided.size() != truth.pixels.size())
+        throw std::invalid_argument("contactGapPixels: the G-buffer, the ray-cast visibility and the rendered "
+                                    "visibility must have the same size");
+    ContactGapFigures figures;
+    for (std::size_t i = 0; i < truth.pixels.size(); ++i) {
+        if (truth.pixels[i] != LightVisibility::Shadowed || !rendered.decided[i])
+            continue;
+        const GBufferSample& sample = gbuffer.samples[i];
+        const ShadowRay ray = rayFrom(shadowRayOrigin(sample));
+        if (glm::dot(ray.direction, sample.normal) < kGrazing ||
+            !shadowRays.closestHit(ray.origin, ray.direction, std::min(reach, ray.maxDistance)))
+            continue;
+        ++figures.shadowed;
+        figures.gaps += rendered.lit[i] >= kShadowedBelow ? 1 : 0;
+    }
+    return figures;
+}
+
 } // namespace penumbra::truth

@@ -30,7 +30,7 @@ ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions,
     const glm::mat4 projection = conventions.perspective(camera.fovY, aspect, camera.nearPlane, camera.farPlane);
     const shadows::ContactShadowSettings& settings = frame.shadows.contact;
     ContactShadowUniforms u;
-    u.viewProjection = lit.viewProjection;
+    u.worldToTexture = conventions.clipToTexture() * lit.viewProjection;
     // Inverted in double, as the screen-space collection's: the rebuilt positions lose no more than the depth's own
     // precision.
     u.clipToWorld = glm::mat4(glm::inverse(glm::dmat4(lit.viewProjection)));
@@ -66,6 +66,8 @@ ContactShadowPass::ContactShadowPass(rhi::Device& device)
 
 void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height)
 {
+    width = contactShadowExtent(width);
+    height = contactShadowExtent(height);
     if (shadows_ && shadows_->desc().width == width && shadows_->desc().height == height)
         return;
     shadows_ = device_.createTexture({.width = width,

@@ -14,9 +14,13 @@
 
 namespace penumbra::render {
 
-// The contact shadow texture: one channel per directional light 0 .. maxCollectedDirectionalLights - 1, 1 = lit.
-// The march's answer is 0 or 1, so 8 bits hold it.
-inline constexpr rhi::Format kContactShadowFormat = rhi::Format::RGBA8;
+// The contact shadow texture, at half the frame's resolution (texel q marched from pixel 2q): the marched pixel's
+// window depth and its depth step per pixel, exact, for the lit pass's nearest-depth upsampling, and a bit per
+// directional light 0 .. maxCollectedDirectionalLights - 1 that the march found occluded.
+inline constexpr rhi::Format kContactShadowFormat = rhi::Format::RGBA32F;
+
+// Texels per side of the contact shadow texture for `pixels` of the frame: one per two pixels, rounded up.
+constexpr std::uint32_t contactShadowExtent(std::uint32_t pixels) { return (pixels + 1) / 2; }
 
 // The contact pass's bindings: its block and the single-sampled depth it marches through.
 inline constexpr std::uint32_t kContactBinding = 0;
@@ -24,13 +28,13 @@ inline constexpr std::uint32_t kContactDepthBinding = 1;
 
 // The Contact block of shaders/contact_shadows.frag, std140.
 struct ContactShadowUniforms {
-    glm::mat4 viewProjection{1.0f};
+    glm::mat4 worldToTexture{1.0f}; // rhi::Conventions::clipToTexture() times the view-projection
     glm::mat4 clipToWorld{1.0f};
     glm::vec4 cameraPosition{0.0f};
     glm::vec4 cameraForward{0.0f};
     // Unit, from the surface towards directional light i (LitFrameUniforms::lights[i].direction negated).
     std::array<glm::vec4, maxCollectedDirectionalLights> towardsLight{};
-    glm::vec4 targetSize{0.0f}; // width, height in pixels
+    glm::vec4 targetSize{0.0f}; // the frame's width, height in pixels
     // a and b of the camera's projection (view depth = b / (z_ndc + a), rhi::Conventions::viewDepth) and its near
     // plane's view depth.
     glm::vec4 depthToView{0.0f};
@@ -41,7 +45,7 @@ struct ContactShadowUniforms {
 };
 
 inline constexpr std::array kContactFields{
-    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, viewProjection),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, worldToTexture),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, clipToWorld),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, cameraPosition),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, cameraForward),
@@ -62,13 +66,16 @@ static_assert(shaders::matchesLayout(kContactBlock, shaders::BlockLayout::Std140
 ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions, const scene::Camera& camera,
                                             const FrameDesc& frame, const LitFrameUniforms& lit);
 
-// The contact shadow march (shaders/contact_shadows.frag): one full-screen pass over the single-sampled lit depth
-// into shadows(), which the lit pass and the visibility view read at their pixel.
+// The contact shadow march (shaders/contact_shadows.frag): one full-screen pass at half resolution over the
+// single-sampled lit depth into shadows(), which the lit pass and the visibility view upsample at their pixel
+// (shaders/contact_shadows_lit.glsl). Half resolution: a full-resolution pass costs a software rasterizer a tenth of
+// the lit pass before it marches at all (docs/notes/2026-12-06-contact-shadows.md).
 class ContactShadowPass {
 public:
     explicit ContactShadowPass(rhi::Device& device);
 
-    // The target for frames of `width` x `height`; call again whenever the frame's size changes.
+    // The target (contactShadowExtent of each side) for frames of `width` x `height`; call again whenever the frame's
+    // size changes.
     void prepare(std::uint32_t width, std::uint32_t height);
     const rhi::Texture& shadows() const { return *shadows_; }
     // Nearest, clamped: what the lit pass reads shadows() with (texelFetch).

@@ -215,9 +215,9 @@ struct LitShaderFeatures {
     // The lit pass's samples per pixel (FrameDesc::msaa; LitPipelines sets it): ScreenSpaceEdges tells a fragment
     // that covers its whole pixel by it.
     std::uint32_t samples = 1;
-    // Each directional light's direct term takes the minimum with its contact shadow (shadows.contact), read at
-    // the fragment's pixel; with MSAA only where the fragment is the pixel's single-sampled surface. Off by default:
-    // the frame binds the contact shadow texture only when it draws them.
+    // Each directional light's direct term takes the minimum with its contact shadow (shadows.contact), upsampled
+    // at the fragment's pixel from the half-resolution march; with MSAA only where the fragment is the pixel's
+    // single-sampled surface. Off by default: the frame binds the contact shadow texture only when it draws them.
     bool contactShadows = false;
 
     // Equal features compile to the same lit shader variant.

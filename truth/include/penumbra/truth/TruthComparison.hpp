@@ -141,4 +141,20 @@ float contactGapTexels(const TruthComparison& comparison, const CpuGBuffer& gbuf
                        const ShadowRayFrom& rayFrom, const std::function<float(glm::vec3)>& texelSize,
                        float contactTexels = kContactTexels);
 
+// Contact gaps, what contact shadows (shadows.contact) are for: pixels the ray cast finds shadowed by a surface
+// within `reach` (world units) of the receiver along its shadow ray, which a march of that length towards the light
+// can find (`shadowed`), and those of them the renderer draws lit (`gaps`). Unlike the comparison it keeps pixels
+// near shadow edges, which is where such gaps are (a gap at a caster's foot is always within a filter's reach of
+// the caster's shadow edge); it leaves out only pixels the maps do not decide, pixels neither truly lit nor truly
+// shadowed (dithered casters), and grazing receivers (the light within 3 degrees of their plane, where the ray
+// cast's answer turns on the smallest difference of normal). Throws std::invalid_argument when the pictures differ
+// in size.
+struct ContactGapFigures {
+    std::size_t shadowed = 0;
+    std::size_t gaps = 0;
+};
+ContactGapFigures contactGapPixels(const CpuGBuffer& gbuffer, const LightVisibilityMask& truth,
+                                   const RenderedVisibility& rendered, const RayCaster& shadowRays,
+                                   const ShadowRayFrom& rayFrom, float reach);
+
 } // namespace penumbra::truth
