@@ -150,15 +150,17 @@ TEST_F(GpuLightClustersTest, ShrunkenBoundCatchesFault)
     EXPECT_NE(gpu, cpu);
 }
 
+// One renderer draws both frames (the second with the first's cached local tiles, which LocalTileCacheTest holds to
+// a fresh renderer's), switching the build between them.
 TEST_F(GpuLightClustersTest, PicturesMatchTheCpuBuild)
 {
     const scene::Scene scene = smallStreet();
+    render::SceneRenderer renderer(*device, scene);
     const auto draw = [&](shadows::LightClusterBuild build) {
         render::FrameDesc frame = litFrame(160, 90, true, 1);
         frame.shadows.local.clusterBuild = build;
         frame.shadows.directional.atlasSize = 512;
         frame.shadows.local.atlasSize = 512;
-        render::SceneRenderer renderer(*device, scene);
         const render::FrameStats stats = renderer.render(scene.camera, frame);
         const bool ran = std::any_of(stats.passes.begin(), stats.passes.end(), [](const render::PassTiming& pass) {
             return pass.name == render::frame::kLightClusterPass;
