@@ -101,7 +101,8 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             ms(frame::kStaticMapsPass),
             ms(frame::kContactShadowsPass),
             ms(frame::kDepthReductionPass),
-            ms(frame::kCasterCullingPass)};
+            ms(frame::kCasterCullingPass),
+            ms(frame::kLightClusterPass)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.
@@ -232,6 +233,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"cascadeCount", frame.shadows.directional.cascadeCount},
             {"atlasSize", frame.shadows.directional.atlasSize},
             {"culling", frame.shadows.culling == shadows::CasterCullingMode::Gpu ? "gpu" : "cpu"},
+            {"clusterBuild", frame.shadows.local.clusterBuild == shadows::LightClusterBuild::Gpu ? "gpu" : "cpu"},
             {"frameMs", r.frame.median()},
             {"frameMsMin", r.frame.min()},
             {"frameMsMax", r.frame.max()},
@@ -304,6 +306,11 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
             fmt::print("{:<24} depth fit: reduction {:.3f} ms ({:.1f} % of the frame), planning {:.3f} ms ({:.1f} %)\n",
                        r.configuration, reduction, 100.0 * reduction / r.frame.median(), r.planning.median(),
                        100.0 * r.planning.median() / r.frame.median());
+    // local.clusterBuild gpu: the light cluster build's GPU time against the lit pass that reads its lists.
+    for (const ConfigurationResult& r : results)
+        if (const double build = r.passes[passIndex("lightClusters")].median(); build > 0.0)
+            fmt::print("{:<24} light clusters built on the GPU: {:.3f} ms ({:.1f} % of the lit pass)\n",
+                       r.configuration, build, 100.0 * build / std::max(r.passes[passIndex("lit")].median(), 1e-9));
     if (results.size() == 2 && results[1].frame.median() > 0.0)
         fmt::print("{} / {} frame time: {:.3f}\n", results[0].configuration, results[1].configuration,
                    results[0].frame.median() / results[1].frame.median());

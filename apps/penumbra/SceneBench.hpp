@@ -28,17 +28,17 @@ struct SceneBenchOptions {
 // leave out); then the static shadow maps drawn in the frame (drawn first, listed last to keep the older names'
 // order), the contact shadows' march, the depth fit's reduction and the GPU caster culling pass (--culling gpu).
 inline constexpr const char* kBenchPassNames[] = {
-    "depth",     "directionalAtlas", "otherAtlas",     "screenSpaceShadows", "lit",          "resolve",
-    "reference", "staticAtlas",      "contactShadows", "depthFit",           "casterCulling"};
+    "depth",     "directionalAtlas", "otherAtlas",     "screenSpaceShadows", "lit",           "resolve",
+    "reference", "staticAtlas",      "contactShadows", "depthFit",           "casterCulling", "lightClusters"};
 
 // Prints a table per light count and returns {"scene": [one object per light count and configuration: configuration,
 // scene, lights (the --lights count or null), width, height,
-// frames, warmup, culling ("cpu" or "gpu"), frameMs (median), frameMsMin, frameMsMax, passes {name: median ms},
-// passesMin, passesMax, litOverReference, instancing, cpuMs {planning, recording} (medians), cpuMsMax, draws {depth,
-// lit}, casterDraws, cpuFrameMs (planning + recording, median), shadowedLights, lightsWithoutShadow, localTilesDrawn
-// and localTilesCached (medians), movingCars (--moving-cars), localLightsRedrawn (median) and localLightsRedrawnMax,
-// and redrawReasons {reason: light redraws over the measured frames}]}. A pass the frame does not draw reports 0.
-// Throws rhi::Error for a device that is missing or, with validate, reports a message.
+// frames, warmup, culling ("cpu" or "gpu"), clusterBuild ("cpu" or "gpu"), frameMs (median), frameMsMin, frameMsMax,
+// passes {name: median ms}, passesMin, passesMax, litOverReference, instancing, cpuMs {planning, recording} (medians),
+// cpuMsMax, draws {depth, lit}, casterDraws, cpuFrameMs (planning + recording, median), shadowedLights,
+// lightsWithoutShadow, localTilesDrawn and localTilesCached (medians), movingCars (--moving-cars), localLightsRedrawn
+// (median) and localLightsRedrawnMax, and redrawReasons {reason: light redraws over the measured frames}]}. A pass the
+// frame does not draw reports 0. Throws rhi::Error for a device that is missing or, with validate, reports a message.
 nlohmann::json runSceneBench(const SceneBenchOptions& options);
 
 } // namespace penumbra::apps

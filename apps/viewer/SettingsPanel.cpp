@@ -250,6 +250,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= fieldSlider("local.nearPlane", o.nearPlane);
     changed |= fieldLogSlider("local.depthBias", o.depthBias);
     changed |= fieldCombo("local.spotFovBias", o.spotFovBias);
+    changed |= fieldCombo("local.clusterBuild", o.clusterBuild);
     ImGui::PopID();
     ImGui::Separator();
     ImGui::TextUnformatted("soft shadows (poisson, pcss)");

@@ -17,21 +17,24 @@ std::uint32_t rowsFor(std::size_t texels)
 
 } // namespace
 
+// A texture of at least `rows` rows of this usage, made anew where the last one is too small or of another usage.
+void LocalLightTextures::reserve(DataTexture& target, rhi::Format format, const char* name, std::uint32_t rows,
+                                 rhi::TextureUsage usage)
+{
+    if (target.texture && target.texture->desc().height >= rows && target.texture->desc().usage == usage)
+        return;
+    target.texture = device_.createTexture(
+        {.width = kLitDataTextureWidth, .height = rows, .format = format, .usage = usage, .debugName = name});
+    target.uploaded.clear();
+}
+
 // The texture with room for `data`, made anew (twice as many rows, or more) when too small; `data` uploaded into its
 // first texels, the rest zero, unless that is what it holds: an upload waits for the device (Device::writeTexture).
 void LocalLightTextures::upload(DataTexture& target, rhi::Format format, const char* name,
                                 std::span<const std::byte> data)
 {
     const std::size_t texelBytes = rhi::texelSize(format);
-    const std::uint32_t rows = rowsFor(data.size() / texelBytes);
-    if (!target.texture || target.texture->desc().height < rows) {
-        target.texture = device_.createTexture({.width = kLitDataTextureWidth,
-                                                .height = rows,
-                                                .format = format,
-                                                .usage = rhi::TextureUsage::Sampled,
-                                                .debugName = name});
-        target.uploaded.clear();
-    }
+    reserve(target, format, name, rowsFor(data.size() / texelBytes), rhi::TextureUsage::Sampled);
     std::vector<std::byte> level(std::size_t(kLitDataTextureWidth) * target.texture->desc().height * texelBytes);
     std::memcpy(level.data(), data.data(), data.size());
     if (level == target.uploaded)
@@ -103,9 +106,28 @@ LocalLightTextures::LocalLightTextures(rhi::Device& device)
 {
 }
 
-void LocalLightTextures::update(const std::vector<glm::vec4>& lightTexels, const shadows::LightClusters& clusters)
+void LocalLightTextures::updateLights(const std::vector<glm::vec4>& lightTexels)
 {
     upload(lights_, kLocalLightFormat, "local lights", std::as_bytes(std::span(lightTexels)));
+}
+
+shadows::LightClusterUniforms LocalLightTextures::prepareLists(const shadows::ShadowCamera& camera,
+                                                               std::span<const shadows::ClusterLight> lights,
+                                                               shadows::LightClusterBuild build)
+{
+    gpuInputs_.reset();
+    if (build == shadows::LightClusterBuild::Gpu) {
+        gpuInputs_ = shadows::lightClusterInputs(camera, lights, kLitClusterGrid);
+        const rhi::TextureUsage usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage;
+        const shadows::LightClusterUniforms& g = gpuInputs_->grid;
+        reserve(clusters_, kLightClusterFormat, "light clusters", rowsFor(std::size_t(g.tilesX) * g.tilesY * g.slices),
+                usage);
+        reserve(indices_, kLightIndexFormat, "light indices", rowsFor(gpuInputs_->entryBound), usage);
+        if (!gpuBuild_)
+            gpuBuild_ = std::make_unique<shadows::GpuLightClusters>(device_);
+        return g;
+    }
+    const shadows::LightClusters clusters = shadows::buildLightClusters(camera, lights, kLitClusterGrid);
     std::vector<glm::vec4> ranges(clusters.ranges.size());
     for (std::size_t c = 0; c < ranges.size(); ++c)
         ranges[c] = {static_cast<float>(clusters.ranges[c].offset), static_cast<float>(clusters.ranges[c].count), 0.0f,
@@ -113,6 +135,16 @@ void LocalLightTextures::update(const std::vector<glm::vec4>& lightTexels, const
     upload(clusters_, kLightClusterFormat, "light clusters", std::as_bytes(std::span(ranges)));
     std::vector<float> indices(clusters.lightIndices.begin(), clusters.lightIndices.end());
     upload(indices_, kLightIndexFormat, "light indices", std::as_bytes(std::span(indices)));
+    return clusters.grid;
+}
+
+void LocalLightTextures::recordGpuLists(rhi::CommandList& commands, const rhi::Texture& ranges,
+                                        const rhi::Texture& indices)
+{
+    gpuBuild_->record(commands, *gpuInputs_, ranges, indices);
+    // What the textures hold is the GPU's now: the next CPU frame uploads whatever it builds.
+    clusters_.uploaded.clear();
+    indices_.uploaded.clear();
 }
 
 void LocalLightTextures::bind(rhi::CommandList& commands) const

@@ -3,14 +3,17 @@
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/scene/Scene.hpp"
+#include "penumbra/shadows/GpuLightClusters.hpp"
 #include "penumbra/shadows/LightClusters.hpp"
 #include "penumbra/shadows/LocalShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowCamera.hpp"
+#include "penumbra/shadows/ShadowSettings.hpp"
 #include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <cstddef>
 #include <glm/vec4.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -30,12 +33,21 @@ void setClusterView(LitFrameUniforms& u, const shadows::ShadowCamera& camera,
 
 // The lit pass's local light, cluster and light index textures (LitUniforms.hpp's layout), uploaded when their
 // contents change (a still camera and still lights upload nothing) and grown by powers of two of rows as the frame
-// needs.
+// needs. With LightClusterBuild::Gpu the light cluster pass writes the cluster and index textures instead.
 class LocalLightTextures {
 public:
     explicit LocalLightTextures(rhi::Device& device);
 
-    void update(const std::vector<glm::vec4>& lightTexels, const shadows::LightClusters& clusters);
+    void updateLights(const std::vector<glm::vec4>& lightTexels);
+    // This frame's lists of `lights` seen by `camera`: built and uploaded here (Cpu), or their inputs kept and the
+    // textures made ready for recordGpuLists (Gpu). Returns their grid.
+    shadows::LightClusterUniforms prepareLists(const shadows::ShadowCamera& camera,
+                                               std::span<const shadows::ClusterLight> lights,
+                                               shadows::LightClusterBuild build);
+    // Whether this frame's lists are to be built by recordGpuLists.
+    bool gpuLists() const { return gpuInputs_.has_value(); }
+    // Records the GPU build of the lists prepareLists kept into `ranges` and `indices`: clusters() and indices().
+    void recordGpuLists(rhi::CommandList& commands, const rhi::Texture& ranges, const rhi::Texture& indices);
 
     const rhi::Texture& lights() const { return *lights_.texture; }
     const rhi::Texture& clusters() const { return *clusters_.texture; }
@@ -51,10 +63,14 @@ private:
         std::unique_ptr<rhi::Texture> texture;
         std::vector<std::byte> uploaded;
     };
+    void reserve(DataTexture& target, rhi::Format format, const char* name, std::uint32_t rows,
+                 rhi::TextureUsage usage);
     void upload(DataTexture& target, rhi::Format format, const char* name, std::span<const std::byte> data);
     DataTexture lights_;
     DataTexture clusters_;
     DataTexture indices_;
+    std::unique_ptr<shadows::GpuLightClusters> gpuBuild_; // made at the first frame that builds on the GPU
+    std::optional<shadows::LightClusterInputs> gpuInputs_;
 };
 
 } // namespace penumbra::render

@@ -12,6 +12,7 @@
 #include "passes/ContactShadowPass.hpp"
 #include "passes/FrameState.hpp"
 #include "passes/CasterCullingPass.hpp"
+#include "passes/LightClusterPass.hpp"
 #include "passes/DepthFitPasses.hpp"
 #include "passes/DepthPrepass.hpp"
 #include "passes/DepthReduction.hpp"
@@ -316,14 +317,15 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
                         localTileSlice()};
     shadowMapSet_ = state.shadowMaps.createSet(device_, *shadowMapLayout_);
     state.shadowMapSet = shadowMapSet_.get();
-    // Every spot and point light, listed in the clusters of the camera's view it may reach.
-    const shadows::LightClusters clusters =
-        shadows::buildLightClusters(shadowCamera(camera, aspectOf(frame)), clusterLights(gpuScene_.scene()),
-                                    kLitClusterGrid);
-    localLights_->update(localLightTexels(gpuScene_.scene(), localPlan_, staticShadows_->plan()), clusters);
+    // Every spot and point light, listed in the clusters of the camera's view it may reach (here or on the GPU).
+    localLights_->updateLights(localLightTexels(gpuScene_.scene(), localPlan_, staticShadows_->plan()));
+    const shadows::LightClusterUniforms clusters =
+        localLights_->prepareLists(shadowCamera(camera, aspectOf(frame)), clusterLights(gpuScene_.scene()),
+                                   frame.shadows.local.clusterBuild);
     state.localLights = localLights_.get();
+    state.gpuClusters = localLights_->gpuLists() ? localLights_.get() : nullptr;
     state.environment = environment_.get();
-    state.litFrameUniforms = frameUniforms(camera, frame, clusters.grid);
+    state.litFrameUniforms = frameUniforms(camera, frame, clusters);
     state.litFrame = uniforms_.push(state.litFrameUniforms);
     if (state.contact)
         state.contactUniforms =
@@ -393,6 +395,7 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     add(std::make_unique<SkinningPass>(*skinning_));
     add(std::make_unique<StaticMapsPass>(state, *staticShadows_));
     add(std::make_unique<CasterCullingPass>(state, gpuScene_, plan_, localPlan_));
+    add(std::make_unique<LightClusterPass>(state));
     add(std::make_unique<StaticTilesPass>(state, *directionalStaticTiles_, StaticTilesPass::Atlas::Directional));
     add(std::make_unique<DirectionalAtlasPass>(state, shadowPass_, plan_));
     add(std::make_unique<StaticTilesPass>(state, *localStaticTiles_, StaticTilesPass::Atlas::Local));

@@ -262,6 +262,10 @@ std::vector<ShadowSettingsField> makeFields()
             "widens spot shadow frustums as point faces are, so bias and filter taps at the cone's edge stay in the "
             "tile",
             [](auto& s) -> auto& { return s.local.spotFovBias; }, "--spot-fov-bias"),
+        named(
+            "local.clusterBuild", {nameOf(LightClusterBuild::Cpu, "cpu"), nameOf(LightClusterBuild::Gpu, "gpu")},
+            "where the lit pass's clustered light lists are built: cpu, or gpu (a compute pass; the same lists)",
+            [](auto& s) -> auto& { return s.local.clusterBuild; }, "--cluster-build"),
         numeric(
             "soft.blockerSearchScale", kScale, "scales PCSS's blocker search region (NVIDIA's w_search)",
             [](auto& s) -> auto& { return s.soft.blockerSearchScale; }),
@@ -477,6 +481,8 @@ std::optional<SettingsProblem> findLocalSettingsProblem(const LocalShadowSetting
         return problem;
     if (static_cast<unsigned>(o.spotFovBias) > static_cast<unsigned>(Toggle::On))
         return outOfRange("local.spotFovBias", fmt::format("{}", static_cast<int>(o.spotFovBias)));
+    if (static_cast<unsigned>(o.clusterBuild) > static_cast<unsigned>(LightClusterBuild::Gpu))
+        return outOfRange("local.clusterBuild", fmt::format("{}", static_cast<int>(o.clusterBuild)));
     return std::nullopt;
 }
 

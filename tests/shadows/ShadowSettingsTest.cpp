@@ -34,6 +34,7 @@ void expectEqual(const ShadowSettings& a, const ShadowSettings& b)
     EXPECT_EQ(a.directional.depthBias, b.directional.depthBias);
     EXPECT_EQ(a.local.depthBias, b.local.depthBias);
     EXPECT_EQ(a.local.spotFovBias, b.local.spotFovBias);
+    EXPECT_EQ(a.local.clusterBuild, b.local.clusterBuild);
     EXPECT_EQ(a.soft.diskRotation, b.soft.diskRotation);
 }
 
@@ -63,6 +64,7 @@ ShadowSettings unusualSettings()
     s.local.minTileResolution = 32;
     s.local.depthBias = 2.5f;
     s.local.spotFovBias = Toggle::On;
+    s.local.clusterBuild = LightClusterBuild::Gpu;
     s.culling = CasterCullingMode::Gpu;
     s.staticMaps.update = StaticShadowUpdate::OnDemand;
     s.staticMaps.realtimeCasters = RealtimeCasters::Dynamic;

@@ -34,6 +34,8 @@ const char* resourceUseName(ResourceUse use)
         return "transfer destination";
     case ResourceUse::DrawOver:
         return "drawn over";
+    case ResourceUse::StorageWrite:
+        return "storage write";
     }
     return "?";
 }

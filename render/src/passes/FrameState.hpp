@@ -61,6 +61,7 @@ struct FrameState {
     const rhi::BindingSet* shadowMapSet = nullptr; // shadowMaps' set, bound once by each pass that reads them
     const EnvironmentMaps* environment = nullptr; // the lit pass's image-based lighting textures
     const LocalLightTextures* localLights = nullptr; // the lit pass's and its views' spot and point lights
+    LocalLightTextures* gpuClusters = nullptr; // local.clusterBuild gpu: the lists the light cluster pass builds
     SplitTiles staticTiles; // empty unless the realtime atlases draw dynamic casters only
     // ShadowSettings::culling gpu (culledOnGpu): the culling pass's results, which the atlas passes draw; the local
     // atlas's tiles follow the directional ones, from culledLocalTile.

@@ -68,12 +68,13 @@ Sphere spotBoundingSphere(glm::vec3 apex, glm::vec3 axis, float range, float ang
 // False only when the sphere lies wholly outside the cone of half-angle `angle` from `apex` along `axis`, or beyond
 // its range along the axis, or behind the apex (Wronski, above): the angle test is the distance from the sphere's
 // centre to the cone's side, an underestimate where the apex is nearer.
-bool sphereMeetsCone(const Sphere& s, glm::vec3 apex, glm::vec3 axis, float range, float angle)
+// `cone` holds the cosine and sine of the half-angle.
+bool sphereMeetsCone(const Sphere& s, glm::vec3 apex, glm::vec3 axis, float range, glm::vec2 cone)
 {
     const glm::vec3 v = s.centre - apex;
     const float along = glm::dot(v, axis);
     const float across = std::sqrt(std::max(glm::dot(v, v) - along * along, 0.0f));
-    const float toSide = std::cos(angle) * across - std::sin(angle) * along;
+    const float toSide = cone.x * across - cone.y * along;
     return !(toSide > s.radius || along > s.radius + range || along < -s.radius);
 }
 
@@ -94,27 +95,26 @@ float sliceStart(const LightClusterUniforms& g, std::uint32_t slice)
     return g.nearPlane * std::pow(g.farPlane / g.nearPlane, static_cast<float>(slice) / static_cast<float>(g.slices));
 }
 
-// Each cluster's view-space box, widened by a thousandth of its far depth so that rounding at the lookup's floor()
-// never leaves a light out.
-std::vector<Box> clusterBoxes(const LightClusterUniforms& g, const ViewFrame& view)
+// Each cluster's view-space box, widened by kClusterBoxMargin. shaders/light_clusters.comp builds the same boxes from
+// the same edges.
+std::vector<Box> clusterBoxes(const LightClusterInputs& in)
 {
+    const LightClusterUniforms& g = in.grid;
     std::vector<Box> boxes(std::size_t(g.tilesX) * g.tilesY * g.slices);
     for (std::uint32_t slice = 0; slice < g.slices; ++slice) {
-        const std::array<float, 2> depths{sliceStart(g, slice),
-                                          slice + 1 == g.slices ? g.farPlane : sliceStart(g, slice + 1)};
+        const std::array<float, 2> depths{in.depths[slice], in.depths[slice + 1]};
         for (std::uint32_t y = 0; y < g.tilesY; ++y)
             for (std::uint32_t x = 0; x < g.tilesX; ++x) {
                 Box box{glm::vec3(INFINITY), glm::vec3(-INFINITY)};
                 for (const float depth : depths)
                     for (const std::uint32_t cx : {x, x + 1})
                         for (const std::uint32_t cy : {y, y + 1}) {
-                            const glm::vec2 ndc{2.0f * static_cast<float>(cx) / static_cast<float>(g.tilesX) - 1.0f,
-                                                1.0f - 2.0f * static_cast<float>(cy) / static_cast<float>(g.tilesY)};
-                            const glm::vec3 p(ndc * view.tanHalf * depth, depth);
+                            const glm::vec2 ndc{in.edgesX[cx], in.edgesY[cy]};
+                            const glm::vec3 p(ndc * in.tanHalf * depth, depth);
                             box.min = glm::min(box.min, p);
                             box.max = glm::max(box.max, p);
                         }
-                const glm::vec3 margin(1e-3f * depths[1]);
+                const glm::vec3 margin(kClusterBoxMargin * depths[1]);
                 boxes[x + g.tilesX * (y + g.tilesY * slice)] = {box.min - margin, box.max + margin};
             }
     }
@@ -167,6 +167,42 @@ void validate(const ShadowCamera& camera, std::span<const ClusterLight> lights, 
     }
 }
 
+// The light's bound in the view (ClusterLightBound): its spheres, and the tiles and slices they may reach.
+ClusterLightBound lightBound(const LightClusterUniforms& g, const ViewFrame& view, const ClusterLight& light)
+{
+    const Sphere reach{view.toView(light.position), light.range};
+    const bool spot = light.kind == LightKind::Spot;
+    const glm::vec3 axis = spot ? glm::normalize(view.directionToView(light.direction)) : glm::vec3(0.0f);
+    const Sphere bound = spot ? spotBoundingSphere(reach.centre, axis, light.range, light.outerAngle) : reach;
+    ClusterLightBound b;
+    b.bound = glm::vec4(bound.centre, bound.radius);
+    b.reach = glm::vec4(reach.centre, reach.radius);
+    b.axis = glm::vec4(axis, spot ? 1.0f : 0.0f);
+    if (spot)
+        b.cone = {std::cos(light.outerAngle), std::sin(light.outerAngle), 0.0f, 0.0f};
+    if (bound.centre.z + bound.radius < g.nearPlane || bound.centre.z - bound.radius > g.farPlane)
+        return b;
+    b.tiles = glm::ivec4(tileRange(g, view, bound));
+    if (b.tiles.x <= b.tiles.z)
+        b.slices =
+            glm::ivec4(sliceOf(g, bound.centre.z - bound.radius), sliceOf(g, bound.centre.z + bound.radius), 0, 0);
+    return b;
+}
+
+// Whether the light may reach a point of the cluster's box: inside its bounding sphere, its range sphere and (a
+// spot light) its cone.
+bool lightMeetsBox(const ClusterLightBound& light, const Box& box)
+{
+    const Sphere bound{glm::vec3(light.bound), light.bound.w};
+    const Sphere reach{glm::vec3(light.reach), light.reach.w};
+    if (light.axis.w == 0.0f)
+        return sphereMeetsBox(bound, box);
+    if (!sphereMeetsBox(bound, box) || !sphereMeetsBox(reach, box))
+        return false;
+    const Sphere around{0.5f * (box.min + box.max), 0.5f * glm::length(box.max - box.min)};
+    return sphereMeetsCone(around, reach.centre, glm::vec3(light.axis), reach.radius, glm::vec2(light.cone));
+}
+
 } // namespace
 
 std::uint32_t clusterIndex(const LightClusterUniforms& grid, glm::vec2 ndc, float depth)
@@ -196,12 +232,12 @@ bool lightReaches(const ClusterLight& light, glm::vec3 world)
     return light.kind == LightKind::Point || glm::dot(d, light.direction) >= std::cos(light.outerAngle) * distance;
 }
 
-LightClusters buildLightClusters(const ShadowCamera& camera, std::span<const ClusterLight> lights,
-                                 const LightClusterGridDesc& desc)
+LightClusterInputs lightClusterInputs(const ShadowCamera& camera, std::span<const ClusterLight> lights,
+                                      const LightClusterGridDesc& desc)
 {
     validate(camera, lights, desc);
-    LightClusters result;
-    LightClusterUniforms& g = result.grid;
+    LightClusterInputs in;
+    LightClusterUniforms& g = in.grid;
     g.tilesX = desc.tilesX;
     g.tilesY = desc.tilesY;
     g.slices = desc.slices;
@@ -209,32 +245,42 @@ LightClusters buildLightClusters(const ShadowCamera& camera, std::span<const Clu
     g.farPlane = camera.farPlane;
     g.sliceScale = static_cast<float>(g.slices) / std::log(g.farPlane / g.nearPlane);
     g.sliceBias = -std::log(g.nearPlane) * g.sliceScale;
-
     const ViewFrame view(camera);
-    const std::vector<Box> boxes = clusterBoxes(g, view);
+    in.tanHalf = view.tanHalf;
+    for (std::uint32_t x = 0; x <= g.tilesX; ++x)
+        in.edgesX.push_back(2.0f * static_cast<float>(x) / static_cast<float>(g.tilesX) - 1.0f);
+    for (std::uint32_t y = 0; y <= g.tilesY; ++y)
+        in.edgesY.push_back(1.0f - 2.0f * static_cast<float>(y) / static_cast<float>(g.tilesY));
+    for (std::uint32_t slice = 0; slice < g.slices; ++slice)
+        in.depths.push_back(sliceStart(g, slice));
+    in.depths.push_back(g.farPlane);
+    in.lights.reserve(lights.size());
+    for (const ClusterLight& light : lights) {
+        const ClusterLightBound& b = in.lights.emplace_back(lightBound(g, view, light));
+        if (b.tiles.x <= b.tiles.z && b.slices.x <= b.slices.y)
+            in.entryBound += std::uint64_t(b.tiles.z - b.tiles.x + 1) * std::uint64_t(b.tiles.w - b.tiles.y + 1) *
+                             std::uint64_t(b.slices.y - b.slices.x + 1);
+    }
+    return in;
+}
+
+LightClusters buildLightClusters(const ShadowCamera& camera, std::span<const ClusterLight> lights,
+                                 const LightClusterGridDesc& desc)
+{
+    const LightClusterInputs in = lightClusterInputs(camera, lights, desc);
+    LightClusters result;
+    result.grid = in.grid;
+    const LightClusterUniforms& g = in.grid;
+    const std::vector<Box> boxes = clusterBoxes(in);
     std::vector<std::vector<std::uint32_t>> lists(boxes.size());
-    for (std::uint32_t i = 0; i < lights.size(); ++i) {
-        const ClusterLight& light = lights[i];
-        const Sphere reach{view.toView(light.position), light.range};
-        const bool spot = light.kind == LightKind::Spot;
-        const glm::vec3 axis = spot ? glm::normalize(view.directionToView(light.direction)) : glm::vec3(0.0f);
-        const Sphere bound = spot ? spotBoundingSphere(reach.centre, axis, light.range, light.outerAngle) : reach;
-        if (bound.centre.z + bound.radius < g.nearPlane || bound.centre.z - bound.radius > g.farPlane)
-            continue;
-        const glm::uvec4 tiles = tileRange(g, view, bound);
-        const std::uint32_t firstSlice = sliceOf(g, bound.centre.z - bound.radius);
-        const std::uint32_t lastSlice = sliceOf(g, bound.centre.z + bound.radius);
-        for (std::uint32_t slice = firstSlice; slice <= lastSlice; ++slice)
-            for (std::uint32_t y = tiles.y; y <= tiles.w; ++y)
-                for (std::uint32_t x = tiles.x; x <= tiles.z; ++x) {
-                    const std::uint32_t c = x + g.tilesX * (y + g.tilesY * slice);
-                    const Box& box = boxes[c];
-                    if (!sphereMeetsBox(bound, box) || (spot && !sphereMeetsBox(reach, box)))
-                        continue;
-                    const Sphere around{0.5f * (box.min + box.max), 0.5f * glm::length(box.max - box.min)};
-                    if (spot && !sphereMeetsCone(around, reach.centre, axis, light.range, light.outerAngle))
-                        continue;
-                    lists[c].push_back(i);
+    for (std::uint32_t i = 0; i < in.lights.size(); ++i) {
+        const ClusterLightBound& light = in.lights[i];
+        for (int slice = light.slices.x; slice <= light.slices.y; ++slice)
+            for (int y = light.tiles.y; y <= light.tiles.w; ++y)
+                for (int x = light.tiles.x; x <= light.tiles.z; ++x) {
+                    const auto c = static_cast<std::uint32_t>(x + int(g.tilesX) * (y + int(g.tilesY) * slice));
+                    if (lightMeetsBox(light, boxes[c]))
+                        lists[c].push_back(i);
                 }
     }
     result.ranges.resize(lists.size());
@@ -243,7 +289,7 @@ LightClusters buildLightClusters(const ShadowCamera& camera, std::span<const Clu
                             static_cast<std::uint32_t>(lists[c].size())};
         result.lightIndices.insert(result.lightIndices.end(), lists[c].begin(), lists[c].end());
     }
-    g.indexCount = static_cast<std::uint32_t>(result.lightIndices.size());
+    result.grid.indexCount = static_cast<std::uint32_t>(result.lightIndices.size());
     return result;
 }
 

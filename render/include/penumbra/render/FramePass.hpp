@@ -13,7 +13,7 @@ namespace penumbra::render {
 
 class FrameGraph;
 
-// How a pass uses one of the frame's textures. The first three read, the last three write (DrawOver reads too); the
+// How a pass uses one of the frame's textures. The first three read, the last four write (DrawOver reads too); the
 // graph orders and culls passes by them (and, as the RHI learns explicit barriers, derives those from them).
 enum class ResourceUse : std::uint8_t {
     Sampled, // read by shaders
@@ -22,15 +22,18 @@ enum class ResourceUse : std::uint8_t {
     RenderTarget, // drawn into, as a colour or depth attachment
     TransferDestination, // written by a copy or a resolve
     DrawOver, // drawn into over what an earlier pass left (tiles over cached depth): a read and a write
+    StorageWrite, // written by a compute shader as a storage image (imageStore)
 };
 
 constexpr bool readsResource(ResourceUse use)
 {
-    return use != ResourceUse::RenderTarget && use != ResourceUse::TransferDestination;
+    return use != ResourceUse::RenderTarget && use != ResourceUse::TransferDestination &&
+           use != ResourceUse::StorageWrite;
 }
 constexpr bool writesResource(ResourceUse use)
 {
-    return use == ResourceUse::RenderTarget || use == ResourceUse::TransferDestination || use == ResourceUse::DrawOver;
+    return use == ResourceUse::RenderTarget || use == ResourceUse::TransferDestination ||
+           use == ResourceUse::DrawOver || use == ResourceUse::StorageWrite;
 }
 const char* resourceUseName(ResourceUse use);
 

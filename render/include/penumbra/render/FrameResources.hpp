@@ -12,6 +12,8 @@ inline constexpr std::string_view kSkinningPass = "skinning"; // a scene with sk
 inline constexpr std::string_view kStaticMapsPass = "static maps";
 // Shadow casters culled per tile on the GPU (ShadowSettings::culling gpu).
 inline constexpr std::string_view kCasterCullingPass = "caster culling";
+// The clustered light lists built on the GPU (ShadowSettings local.clusterBuild gpu).
+inline constexpr std::string_view kLightClusterPass = "light cluster build";
 inline constexpr std::string_view kDirectionalStaticTilesPass = "directional static tiles";
 inline constexpr std::string_view kDirectionalAtlasPass = "directional atlas";
 inline constexpr std::string_view kLocalStaticTilesPass = "local static tiles";
@@ -26,23 +28,11 @@ inline constexpr std::string_view kDepthReductionPass = "depth reduction";
 inline constexpr std::string_view kResolvePass = "msaa resolve";
 inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
-inline constexpr std::array kPasses{kSkinningPass,
-                                    kStaticMapsPass,
-                                    kCasterCullingPass,
-                                    kDirectionalStaticTilesPass,
-                                    kDirectionalAtlasPass,
-                                    kLocalStaticTilesPass,
-                                    kLocalAtlasPass,
-                                    kDepthPrepass,
-                                    kSingleSampledDepthPrepass,
-                                    kReceiverPrepass,
-                                    kScreenSpaceShadowsPass,
-                                    kContactShadowsPass,
-                                    kLitPass,
-                                    kDepthReductionPass,
-                                    kResolvePass,
-                                    kCascadeViewPass,
-                                    kVisibilityViewPass};
+inline constexpr std::array kPasses{
+    kSkinningPass,         kStaticMapsPass,         kCasterCullingPass,  kLightClusterPass, kDirectionalStaticTilesPass,
+    kDirectionalAtlasPass, kLocalStaticTilesPass,   kLocalAtlasPass,     kDepthPrepass,     kSingleSampledDepthPrepass,
+    kReceiverPrepass,      kScreenSpaceShadowsPass, kContactShadowsPass, kLitPass,          kDepthReductionPass,
+    kResolvePass,          kCascadeViewPass,        kVisibilityViewPass};
 
 // Textures. The lit image, the atlases and the views are the frame's outputs (SceneRenderer's accessors read them).
 inline constexpr std::string_view kLitImage = "lit image"; // RGBA8 sRGB-encoded, single-sampled
@@ -54,7 +44,8 @@ inline constexpr std::string_view kLocalAtlas = "local atlas";
 inline constexpr std::string_view kShadowCubes = "shadow cubes";
 inline constexpr std::string_view kStaticDirectionalAtlas = "static directional atlas";
 inline constexpr std::string_view kStaticLocalAtlas = "static local atlas";
-// Every spot and point light and their clustered lists (LitUniforms.hpp's data textures), written on the CPU.
+// Every spot and point light and their clustered lists (LitUniforms.hpp's data textures), written on the CPU; the
+// lists by the light cluster build pass with local.clusterBuild gpu.
 inline constexpr std::string_view kLocalLights = "local lights";
 inline constexpr std::string_view kLightClusters = "light clusters";
 inline constexpr std::string_view kLightIndices = "light indices";

@@ -6,6 +6,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -28,6 +29,10 @@ namespace penumbra::shadows {
 inline constexpr std::uint32_t kDefaultClusterTilesX = 16;
 inline constexpr std::uint32_t kDefaultClusterTilesY = 9;
 inline constexpr std::uint32_t kDefaultClusterSlices = 24;
+
+// Each cluster's view-space box is widened by this fraction of its far depth, so that rounding at the lookup's floor()
+// never leaves a light out.
+inline constexpr float kClusterBoxMargin = 1e-3f;
 
 // The grid as the lit shader reads it (std140, uploaded as is; the GLSL block is to be generated from
 // lightClusterLayout()). A pixel at NDC (x, y) and view depth d (> 0, along the camera's forward axis) lies in
@@ -94,6 +99,33 @@ struct LightClusters {
     std::vector<LightClusterRange> ranges; // per cluster, in cluster order
     std::vector<std::uint32_t> lightIndices; // indices into the lights given, ascending within each cluster
 };
+
+// One light as the cluster tests take it, in the camera's view space (x right, y up, z the view depth): what
+// buildLightClusters works out per light before its loop over the clusters, and what the GPU build
+// (GpuLightClusters) reads, so that both test the same numbers. An element of a std430 storage block.
+struct alignas(16) ClusterLightBound {
+    glm::vec4 bound{0.0f}; // the smallest sphere around the light's reach: centre, radius
+    glm::vec4 reach{0.0f}; // the range sphere: the light's position, its range
+    glm::vec4 axis{0.0f}; // a spot light's unit axis with w = 1; w = 0 for a point light
+    glm::vec4 cone{0.0f}; // a spot light's cos and sin of its outer angle
+    glm::ivec4 tiles{1, 0, 0, 0}; // first x, first y, last x, last y of the tiles it may cover; none where x > z
+    glm::ivec4 slices{1, 0, 0, 0}; // its first and last slice; none where x > y
+};
+
+// What the cluster tests take for a view: the grid, its tiles' and slices' edges and every light's bound.
+struct LightClusterInputs {
+    LightClusterUniforms grid; // indexCount stays 0: the lists are not built yet
+    glm::vec2 tanHalf{0.0f}; // tangents of the half fields of view across and down
+    std::vector<float> edgesX; // tilesX + 1 NDC x of the tiles' edges, from the left
+    std::vector<float> edgesY; // tilesY + 1 NDC y of the tiles' edges, from the top
+    std::vector<float> depths; // slices + 1 view depths of the slices' ends, from the near plane
+    std::vector<ClusterLightBound> lights; // in the order given
+    std::uint64_t entryBound = 0; // no list holds more entries in all: each light's tiles times its slices, summed
+};
+
+// The inputs of buildLightClusters, validated as it validates them.
+LightClusterInputs lightClusterInputs(const ShadowCamera& camera, std::span<const ClusterLight> lights,
+                                      const LightClusterGridDesc& desc = {});
 
 // Lists each light in every cluster its reach may touch. The camera's near and far planes bound the slices.
 // Throws rhi::Error for a grid with 0 (or more than 256) tiles or slices on an axis, a camera with no depth range

@@ -129,6 +129,10 @@ enum class PointShadowMode {
     CubeMap, // a depth cube map per light, sampled with hardware cube lookups
 };
 
+// Where the lit pass's clustered light lists are built (LightClusters.hpp): by buildLightClusters on the CPU (the
+// reference), or by a compute pass into the same textures (GpuLightClusters, docs/many-lights.md).
+enum class LightClusterBuild { Cpu, Gpu };
+
 // Spot and point shadows: the second atlas of up to 16 tiles (a spot light takes one, a point light six).
 struct LocalShadowSettings {
     std::uint32_t atlasSize = 1024; // texels per side
@@ -150,6 +154,7 @@ struct LocalShadowSettings {
     // at the cone's edge stay inside its tile (Catlike Coding, "Point and Spot Shadows", section 2.5 "Field of View
     // Bias", applied to spot lights as the tutorial suggests): the tile then spends a few texels outside the cone.
     Toggle spotFovBias = Toggle::Off;
+    LightClusterBuild clusterBuild = LightClusterBuild::Cpu;
 };
 
 // Which casters the realtime atlases draw while static maps exist.
