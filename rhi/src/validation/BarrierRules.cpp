@@ -72,8 +72,8 @@ void checkResourceBarrier(const ResourceBarrier& b, ResourceState declared)
                                 b.texture ? "a texture and a buffer" : "no resource"));
     const std::string name = barrierResourceName(b.texture, b.buffer);
     if (b.after == ResourceState::Undefined)
-        throw Error(fmt::format("resourceBarriers: {} goes to state Undefined; name the state it is used in next",
-                                name));
+        throw Error(
+            fmt::format("resourceBarriers: {} goes to state Undefined; name the state it is used in next", name));
     checkBarrierUsage(b, name);
     if (b.before != declared)
         throw Error(fmt::format("resourceBarriers: {} leaves state {}, but the list last declared {}", name,
@@ -107,8 +107,8 @@ void ValidatingCommandList::checkDeclared(std::string_view what, const Texture* 
     const std::string declared = scoped == ResourceState::Undefined
                                      ? std::string("do not declare it")
                                      : fmt::format("declare it {} only", resourceStateName(scoped));
-    const std::string used = fmt::format("{} as {} ({})", barrierResourceName(texture, buffer),
-                                         resourceStateName(needed), how);
+    const std::string used =
+        fmt::format("{} as {} ({})", barrierResourceName(texture, buffer), resourceStateName(needed), how);
     if (pass.empty())
         throw Error(fmt::format("{}: uses {}, but the last resourceBarriers {}", what, used, declared));
     throw Error(fmt::format("{}: pass '{}' uses {}, but its resourceBarriers {}", what, pass, used, declared));
