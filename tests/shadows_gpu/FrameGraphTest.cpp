@@ -244,7 +244,10 @@ private:
     std::function<void(const render::FramePassContext&)> execute_;
 };
 
-const rhi::TextureDesc kTransient{.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget};
+// Sampled too: the passes read them as sampled textures, which the RHI's barriers check against the usage.
+const rhi::TextureDesc kTransient{.width = 8,
+                                  .height = 8,
+                                  .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled};
 
 // Two textures of one description used one after the other are one texture; one used alongside is another.
 TEST_F(FrameGraphTest, TransientTexturesShareWhereTheirPassesDoNotOverlap)
