@@ -80,7 +80,7 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         shadowCubes_->format() != local.atlasFormat)
         shadowCubes_ = std::make_unique<shadows::ShadowCubes>(device_, faceSize, cubeCount, local.atlasFormat);
     if (frame.msaa > 1 && (!multisampledLitPipelines_ || multisampledLitPipelines_->samples() != frame.msaa))
-        multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, frame.msaa);
+        multisampledLitPipelines_ = std::make_unique<LitPipelines>(device_, *litVertex_, *shadowMapLayout_, frame.msaa);
     if (depthPrepass_->samples() != frame.msaa)
         depthPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, frame.msaa);
     const bool depthFit = frame.shadows.directional.projection == shadows::CascadeProjection::DepthFit;
@@ -94,7 +94,7 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
     const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
     if (firstScreenSpace) {
         receiverPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, true);
-        screenSpace_ = std::make_unique<ScreenSpaceShadowPass>(device_);
+        screenSpace_ = std::make_unique<ScreenSpaceShadowPass>(device_, *shadowMapLayout_);
     }
     if (lit_ && lit_->desc().width == frame.width && lit_->desc().height == frame.height) {
         if (firstScreenSpace)

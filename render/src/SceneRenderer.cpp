@@ -83,7 +83,8 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       shadowPass_(device, GpuScene::vertexFormat()), localShadowPass_(device, GpuScene::vertexFormat()),
       localTiles_(std::make_unique<LocalTileCache>(device, GpuScene::vertexFormat())),
       litVertex_(device.createShader(litShader("lit.vert"))),
-      litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, 1)),
+      shadowMapLayout_(device.createBindingSetLayout(ShadowMapBindings::layoutDesc())),
+      litPipelines_(std::make_unique<LitPipelines>(device, *litVertex_, *shadowMapLayout_, 1)),
       depthPrepass_(std::make_unique<DepthPrepass>(device, kLitDepthFormat, 1)),
       staticShadows_(std::make_unique<StaticShadowCache>(device, GpuScene::vertexFormat())),
       environment_(std::make_unique<EnvironmentMaps>(device)),
@@ -93,9 +94,8 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       localStaticTiles_(
           std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "local atlas, static casters")),
       commands_(device.createCommandList()), graph_(std::make_unique<FrameGraph>(device)),
-      state_(std::make_unique<FrameState>()),
-      shadowMapLayout_(device.createBindingSetLayout(ShadowMapBindings::layoutDesc())),
-      uniforms_(device, "lit pass uniforms"), instances_(device, "lit pass instances"),
+      state_(std::make_unique<FrameState>()), uniforms_(device, "lit pass uniforms"),
+      instances_(device, "lit pass instances"),
       storage_(device, "lit pass storage", rhi::BufferUsage::Storage,
                std::max<std::uint64_t>(device.capabilities().storageBufferOffsetAlignment, 16))
 {

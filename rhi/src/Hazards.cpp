@@ -1,9 +1,49 @@
 #include "penumbra/rhi/Hazards.hpp"
 
+#include <array>
+#include <utility>
+
 namespace penumbra::rhi {
 namespace {
 
-bool covers(const Use& visible, const Use& use)
+// Each state's name and what it stands for, written once for stateUse and resourceStateName.
+struct StateMeaning {
+    ResourceState state;
+    const char* name;
+    Use use;
+};
+constexpr Stage kShaderStages = Stage::VertexShader | Stage::FragmentShader | Stage::ComputeShader;
+constexpr std::array<StateMeaning, 10> kStateMeanings{{
+    {ResourceState::VertexBuffer, "VertexBuffer", {Stage::VertexInput, Access::VertexRead}},
+    {ResourceState::IndexBuffer, "IndexBuffer", {Stage::VertexInput, Access::IndexRead}},
+    {ResourceState::IndirectArgument, "IndirectArgument", {Stage::DrawIndirect, Access::IndirectRead}},
+    {ResourceState::UniformBuffer, "UniformBuffer", {kShaderStages, Access::UniformRead}},
+    {ResourceState::ShaderRead,
+     "ShaderRead",
+     {kShaderStages, Access::SampledRead | Access::StorageBufferRead | Access::StorageImageRead}},
+    {ResourceState::ShaderWrite,
+     "ShaderWrite",
+     {Stage::ComputeShader,
+      Access::StorageBufferRead | Access::StorageBufferWrite | Access::StorageImageRead | Access::StorageImageWrite}},
+    {ResourceState::RenderTarget,
+     "RenderTarget",
+     {Stage::Attachments, Access::AttachmentRead | Access::AttachmentWrite}},
+    {ResourceState::DepthRead, "DepthRead", {Stage::Attachments, Access::AttachmentRead}},
+    {ResourceState::CopySource, "CopySource", {Stage::Copy, Access::CopyRead}},
+    {ResourceState::CopyDestination, "CopyDestination", {Stage::Copy, Access::CopyWrite}},
+}};
+
+// The states a declared state covers: a write state covers the reads it makes.
+ResourceState coveredStates(ResourceState state)
+{
+    if (hasFlag(state, ResourceState::ShaderWrite))
+        state |= ResourceState::ShaderRead;
+    if (hasFlag(state, ResourceState::RenderTarget))
+        state |= ResourceState::DepthRead;
+    return state;
+}
+
+bool useCovers(const Use& visible, const Use& use)
 {
     return hasAll(visible.stages, use.stages) && hasAll(visible.access, use.access);
 }
@@ -24,6 +64,36 @@ Use writesOf(const Use& use)
 }
 
 } // namespace
+
+std::string resourceStateName(ResourceState state)
+{
+    std::string name;
+    for (const StateMeaning& m : kStateMeanings)
+        if (hasFlag(state, m.state))
+            name += (name.empty() ? "" : " | ") + std::string(m.name);
+    return name.empty() ? "Undefined" : name;
+}
+
+Use stateUse(ResourceState state)
+{
+    Use use;
+    for (const StateMeaning& m : kStateMeanings)
+        if (hasFlag(state, m.state))
+            use = merged(use, m.use);
+    return use;
+}
+
+Barrier stateBarrier(ResourceState before, ResourceState after)
+{
+    Barrier barrier;
+    const Use from = stateUse(before);
+    const Use to = stateUse(after);
+    if (from.writes())
+        barrier.merge({writesOf(from), to}); // read or write after write
+    else if (to.writes() && from.stages != Stage::None)
+        barrier.merge({{from.stages, Access::None}, to}); // write after read: execution only
+    return barrier;
+}
 
 void Barrier::merge(const Barrier& other)
 {
@@ -83,7 +153,7 @@ void HazardTracker::use(const void* resource, Use graphics, Use use, Barrier& ba
         s.host = s.host || hasFlag(use.access, Access::StorageBufferWrite);
         return;
     }
-    if (s.write.stages != Stage::None && !covers(s.visible, use)) {
+    if (s.write.stages != Stage::None && !useCovers(s.visible, use)) {
         barrier.merge({s.write, use});
         s.visible = merged(s.visible, use);
     }
@@ -96,7 +166,7 @@ Barrier HazardTracker::beginPass()
     ++passes_;
     Barrier barrier;
     for (auto& [resource, s] : states_) {
-        if (s.write.stages != Stage::None && s.graphics.stages != Stage::None && !covers(s.visible, s.graphics)) {
+        if (s.write.stages != Stage::None && s.graphics.stages != Stage::None && !useCovers(s.visible, s.graphics)) {
             barrier.merge({s.write, s.graphics});
             s.visible = merged(s.visible, s.graphics);
         }
@@ -115,7 +185,7 @@ Barrier HazardTracker::copy(const void* resource, Use use)
     if (found == states_.end())
         return barrier;
     State& s = found->second;
-    if (s.write.stages != Stage::None && !covers(s.visible, use)) {
+    if (s.write.stages != Stage::None && !useCovers(s.visible, use)) {
         barrier.merge({s.write, use});
         s.visible = merged(s.visible, use);
     }
@@ -133,7 +203,7 @@ Barrier HazardTracker::finish()
     Barrier barrier;
     const Use host{Stage::Host, Access::HostRead};
     for (auto& [resource, s] : states_)
-        if (s.host && s.write.stages != Stage::None && !covers(s.visible, host)) {
+        if (s.host && s.write.stages != Stage::None && !useCovers(s.visible, host)) {
             barrier.merge({s.write, host});
             s.visible = merged(s.visible, host);
         }
@@ -144,6 +214,46 @@ void HazardTracker::reset()
 {
     states_.clear();
     passes_ = 0;
+    declared_.clear();
+    scope_ = {};
+}
+
+Barrier HazardTracker::declare(std::span<const ResourceBarrier> barriers, std::string pass, std::size_t labels)
+{
+    Barrier barrier;
+    scope_ = {true, std::move(pass), labels, {}};
+    for (const ResourceBarrier& b : barriers) {
+        const void* resource = b.texture ? static_cast<const void*>(b.texture) : static_cast<const void*>(b.buffer);
+        barrier.merge(stateBarrier(b.before, b.after));
+        declared_[resource] = b.after;
+        scope_.states[resource] = b.after;
+    }
+    return barrier;
+}
+
+void HazardTracker::labelClosed(std::size_t labels)
+{
+    if (scope_.open && labels < scope_.labels)
+        scope_ = {};
+}
+
+ResourceState HazardTracker::declared(const void* resource) const
+{
+    const auto found = declared_.find(resource);
+    return found == declared_.end() ? ResourceState::Undefined : found->second;
+}
+
+ResourceState HazardTracker::scoped(const void* resource) const
+{
+    const auto found = scope_.states.find(resource);
+    return found == scope_.states.end() ? ResourceState::Undefined : found->second;
+}
+
+bool HazardTracker::covers(const void* resource, ResourceState needed) const
+{
+    if (!scope_.open || !declared_.contains(resource))
+        return true;
+    return hasAll(coveredStates(scoped(resource)), needed);
 }
 
 } // namespace penumbra::rhi

@@ -12,6 +12,8 @@
 #include <functional>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
+#include <initializer_list>
+#include <span>
 #include <typeinfo>
 #include <vector>
 
@@ -161,6 +163,10 @@ struct Objects {
     }
 
     void beginPass() { list->beginPass({.framebuffer = target.get()}); }
+    void barriers(std::initializer_list<rhi::ResourceBarrier> items)
+    {
+        list->resourceBarriers(std::span(items.begin(), items.size()));
+    }
     // A pass with everything `pipeline` reads bound, but for `except` ("vertex", "uniform", "texture").
     void bindForDraw(std::string_view except = "")
     {
@@ -264,6 +270,7 @@ rhi::Attachment attach(const std::unique_ptr<rhi::Texture>& texture, std::uint32
 const std::vector<Rule>& rules()
 {
     using E = Raises;
+    using S = rhi::ResourceState;
     static const std::vector<Rule> table{
         // Descriptors.
         {"texture sizes are 1..maxTextureSize", nothing,
@@ -859,6 +866,46 @@ const std::vector<Rule>& rules()
          },
          [](Objects& o) { o.list->drawIndexedIndirectCount(*o.indirect, 0, *o.indirect, 12, 0); }, E::Error,
          text("drawIndexedIndirectCount count: 4 bytes at offset 12 exceed buffer 'indirect' (12 bytes)")},
+        // Explicit barriers and the uses they declare.
+        {"barriers are recorded outside passes", [](Objects& o) { o.beginPass(); },
+         [](Objects& o) { o.barriers({rhi::ResourceBarrier::of(*o.image, S::Undefined, S::ShaderRead)}); }, E::Error,
+         text("resourceBarriers: not allowed inside a pass; call endPass() first")},
+        {"a barrier names one resource", nothing,
+         [](Objects& o) { o.barriers({rhi::ResourceBarrier{.after = S::ShaderRead}}); }, E::Error,
+         text("resourceBarriers: a barrier names no resource; name one texture or one buffer")},
+        {"a barrier goes to a defined state", nothing,
+         [](Objects& o) { o.barriers({rhi::ResourceBarrier::of(*o.image, S::Undefined, S::Undefined)}); }, E::Error,
+         text("resourceBarriers: texture 'image' goes to state Undefined; name the state it is used in next")},
+        {"a barrier's state needs the resource's usage", nothing,
+         [](Objects& o) { o.barriers({rhi::ResourceBarrier::of(*o.image, S::Undefined, S::RenderTarget)}); }, E::Error,
+         text("resourceBarriers: texture 'image' cannot be in state RenderTarget, which needs "
+              "TextureUsage::RenderTarget")},
+        {"a barrier leaves the state the list last declared",
+         [](Objects& o) { o.barriers({rhi::ResourceBarrier::of(*o.image, S::Undefined, S::ShaderRead)}); },
+         [](Objects& o) { o.barriers({rhi::ResourceBarrier::of(*o.image, S::Undefined, S::ShaderRead)}); }, E::Error,
+         text("resourceBarriers: texture 'image' leaves state Undefined, but the list last declared ShaderRead")},
+        {"a resource has one barrier per call", nothing,
+         [](Objects& o) {
+             o.barriers({rhi::ResourceBarrier::of(*o.image, S::Undefined, S::ShaderRead),
+                         rhi::ResourceBarrier::of(*o.image, S::Undefined, S::ShaderRead)});
+         },
+         E::Error, text("resourceBarriers: texture 'image' has two barriers in one call; merge their states")},
+        {"draws use only what the pass's barriers declared",
+         [](Objects& o) {
+             o.uniforms->writeObject(TransformUniforms{});
+             o.barriers({rhi::ResourceBarrier::of(*o.image, S::Undefined, S::ShaderRead)});
+             o.list->pushLabel("shading");
+             o.barriers({});
+             o.bindForDraw();
+         },
+         [](Objects& o) { o.list->draw(3); }, E::Error,
+         text("draw: pass 'shading' uses texture 'image' as ShaderRead (binding 1, 'image'), but its "
+              "resourceBarriers do not declare it")},
+        {"copies use their resources as the barriers declared",
+         [](Objects& o) { o.barriers({rhi::ResourceBarrier::of(*o.color, S::Undefined, S::ShaderRead)}); },
+         [](Objects& o) { o.list->copyTextureToBuffer(*o.color, 0, 0, *o.readback, 0); }, E::Error,
+         text("copyTextureToBuffer: uses texture 'color' as CopySource (source), but the last resourceBarriers "
+              "declare it ShaderRead only")},
         // Binding sets.
         {"binding set layouts list each binding once", nothing,
          [](Objects& o) {

@@ -60,10 +60,14 @@ public:
     }
     void execute(const render::FramePassContext& context) override
     {
-        rhi::CommandList& commands = context.commands();
-        commands.beginPass({.framebuffer = &context.framebuffer({output_})});
+        draw(context.commands(), context.framebuffer({output_}), context.texture(frame::kLitImage));
+    }
+    // Half of `image` into `target`, in a pass of its own.
+    void draw(rhi::CommandList& commands, const rhi::Framebuffer& target, const rhi::Texture& image) const
+    {
+        commands.beginPass({.framebuffer = &target});
         commands.bindPipeline(*pipeline_);
-        commands.bindTexture(0, context.texture(frame::kLitImage), *sampler_);
+        commands.bindTexture(0, image, *sampler_);
         commands.draw(3);
         commands.endPass();
     }
@@ -240,7 +244,10 @@ private:
     std::function<void(const render::FramePassContext&)> execute_;
 };
 
-const rhi::TextureDesc kTransient{.width = 8, .height = 8, .usage = rhi::TextureUsage::RenderTarget};
+// Sampled too: the passes read them as sampled textures, which the RHI's barriers check against the usage.
+const rhi::TextureDesc kTransient{.width = 8,
+                                  .height = 8,
+                                  .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled};
 
 // Two textures of one description used one after the other are one texture; one used alongside is another.
 TEST_F(FrameGraphTest, TransientTexturesShareWhereTheirPassesDoNotOverlap)
@@ -302,6 +309,59 @@ TEST_F(FrameGraphTest, ReadBeforeAnyWriteIsRefused)
         FAIL() << "no error";
     } catch (const rhi::Error& e) {
         EXPECT_STREQ(e.what(), "frame graph: pass 'early' reads 'made' before any pass writes it");
+    }
+}
+
+// The graph derives each pass's barriers from its declared uses and hands them to the RHI, which then holds the pass
+// to them: a pass that samples a texture of the frame it did not declare (held from an earlier pass, so the graph's
+// own check by name cannot see it) is reported at its draw, naming the pass and the texture; declared, it draws.
+TEST_F(FrameGraphTest, UndeclaredReadCatchesFault)
+{
+    const std::unique_ptr<rhi::Texture> output = colorTexture(*device);
+    const std::unique_ptr<rhi::Texture> made =
+        device->createTexture({.width = 8,
+                               .height = 8,
+                               .usage = rhi::TextureUsage::RenderTarget | rhi::TextureUsage::Sampled,
+                               .debugName = "made"});
+    const HalfBrightPass sampling(*device, "out");
+    for (const bool declared : {true, false}) {
+        SCOPED_TRACE(declared ? "declared" : "not declared");
+        render::FrameGraph graph(*device);
+        FunctionPass writer(
+            "writer",
+            [](render::FramePassBuilder& b) {
+                b.write("made");
+                b.keep();
+            },
+            [](const render::FramePassContext& c) {
+                c.commands().beginPass({.framebuffer = &c.framebuffer({"made"})});
+                c.commands().endPass();
+            });
+        FunctionPass reader(
+            "reader",
+            [declared](render::FramePassBuilder& b) {
+                if (declared)
+                    b.read("made");
+                b.write("out");
+            },
+            [&](const render::FramePassContext& c) { sampling.draw(c.commands(), c.framebuffer({"out"}), *made); });
+        graph.importTexture("out", *output, true);
+        graph.importTexture("made", *made);
+        graph.addPass(writer);
+        graph.addPass(reader);
+        graph.compile();
+        if (declared) {
+            graph.execute(*commands);
+            EXPECT_NO_THROW(device->submit(*commands));
+            continue;
+        }
+        try {
+            graph.execute(*commands);
+            ADD_FAILURE() << "no error";
+        } catch (const rhi::Error& e) {
+            EXPECT_STREQ(e.what(), "draw: pass 'reader' uses texture 'made' as ShaderRead (binding 0, 'lit'), but its "
+                                   "resourceBarriers do not declare it");
+        }
     }
 }
 

@@ -39,6 +39,16 @@ public:
     VkQueue queue = VK_NULL_HANDLE;
     // What pipelines are created with: the device's VulkanPipelineCache while it exists, else none.
     VkPipelineCache pipelineCache = VK_NULL_HANDLE;
+    // What DescriptorBinder writes into the bindings of a binding set layout's descriptor set that a pipeline's
+    // shaders do not read, when it writes that set from single binds: the device's own 16-byte buffer (uniform and
+    // storage), 1x1 sampled and storage textures and a sampler, made before the first pipeline that lists a layout.
+    struct Placeholders {
+        VkBuffer buffer = VK_NULL_HANDLE;
+        VkImageView sampledView = VK_NULL_HANDLE;
+        VkImageLayout sampledLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        VkSampler sampler = VK_NULL_HANDLE;
+        VkImageView storageView = VK_NULL_HANDLE;
+    } placeholders;
 
     RenderPassCache& renderPasses() { return *renderPasses_; }
     LayoutCache& layouts() { return *layouts_; }

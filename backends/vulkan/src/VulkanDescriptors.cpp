@@ -4,6 +4,7 @@
 #include "VulkanCheck.hpp"
 #include "VulkanResources.hpp"
 
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -215,13 +216,33 @@ DescriptorBinder::Choice DescriptorBinder::choose(const SetSlot& set)
     if (whole)
         return {from->handle(), true};
     // Single binds, or a set of another layout, hold some of its bindings: a set written from what is bound, as the
-    // per-draw one is. The validation layer has checked that every binding the shaders declare holds something.
+    // per-draw one is. The validation layer has checked that every binding the shaders declare holds something; the
+    // layout's other bindings get placeholders, since lavapipe reads every descriptor of a bound set
+    // (VulkanDevice::makePlaceholders).
     const VkDescriptorSet written = allocator_.allocate(set.layout);
-    for (const rhi::ShaderBinding& b : set.bindings)
-        writes_.add(b.binding, slot(b.binding).descriptor, false);
+    for (const rhi::BindingLayoutItem& item : set.items) {
+        const bool declared = std::any_of(set.bindings.begin(), set.bindings.end(),
+                                          [&](const rhi::ShaderBinding& b) { return b.binding == item.binding; });
+        writes_.add(item.binding, declared ? slot(item.binding).descriptor : placeholder(item.kind), false);
+    }
     writes_.write(allocator_.device(), written);
     ++counts_.setsWritten;
     return {written, false};
+}
+
+Descriptor DescriptorBinder::placeholder(rhi::BindingKind kind) const
+{
+    const Context::Placeholders& p = allocator_.context().placeholders;
+    switch (kind) {
+    case rhi::BindingKind::UniformBuffer:
+    case rhi::BindingKind::StorageBuffer:
+        return {.kind = kind, .buffer = p.buffer, .size = 16};
+    case rhi::BindingKind::SampledTexture:
+        return {.kind = kind, .view = p.sampledView, .sampler = p.sampler, .layout = p.sampledLayout};
+    case rhi::BindingKind::StorageTexture:
+        break;
+    }
+    return {.kind = kind, .view = p.storageView, .layout = VK_IMAGE_LAYOUT_GENERAL};
 }
 
 void DescriptorBinder::writeDrawSet()

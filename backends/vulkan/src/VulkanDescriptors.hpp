@@ -62,6 +62,7 @@ public:
     VkDescriptorSet allocate(VkDescriptorSetLayout layout);
     void reset();
     VkDevice device() const { return context_->device; }
+    const Context& context() const { return *context_; }
 
 private:
     UniqueDescriptorPool createPool() const;
@@ -117,6 +118,8 @@ private:
     Slot& slot(std::uint32_t binding);
     void bind(VkCommandBuffer commandBuffer);
     Choice choose(const SetSlot& set);
+    // What a written binding set layout's set holds where the pipeline's shaders declare nothing.
+    Descriptor placeholder(rhi::BindingKind kind) const;
     void writeDrawSet();
     // Binds `set` at `index` unless it is bound there already and `force` is false.
     void bindSet(VkCommandBuffer commandBuffer, std::uint32_t index, const Choice& set, bool force);

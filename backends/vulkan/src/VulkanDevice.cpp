@@ -51,12 +51,42 @@ std::unique_ptr<rhi::Shader> VulkanDevice::apiCreateShader(rhi::CompiledShader c
 
 std::unique_ptr<rhi::Pipeline> VulkanDevice::apiCreatePipeline(const rhi::PipelineDesc& desc)
 {
+    makePlaceholders(!desc.bindingSetLayouts.empty());
     return std::make_unique<VulkanPipeline>(context_, desc);
 }
 
 std::unique_ptr<rhi::ComputePipeline> VulkanDevice::apiCreateComputePipeline(const rhi::ComputePipelineDesc& desc)
 {
+    makePlaceholders(!desc.bindingSetLayouts.empty());
     return std::make_unique<VulkanComputePipeline>(context_, desc);
+}
+
+// lavapipe (Mesa 22.3, lvp_execute.c: handle_descriptor_sets fills every binding of a bound set for every stage of
+// its layout, and fill_sampler_view_stage reads the image view of a descriptor never written) crashes on a bound set
+// with a binding left unwritten, which Vulkan allows where the pipeline does not statically use it (the valid usage
+// of vkCmdDraw, Vulkan 1.3 section 21.3: descriptors must be valid "if they are statically used"); a set written
+// from single binds therefore fills every binding, those the shaders do not read with these.
+void VulkanDevice::makePlaceholders(bool listsLayouts)
+{
+    if (!listsLayouts || placeholderBuffer_)
+        return;
+    placeholderBuffer_ = std::make_unique<VulkanBuffer>(context_, rhi::BufferDesc{.size = 16,
+                                                                                  .usage = rhi::BufferUsage::Uniform |
+                                                                                           rhi::BufferUsage::Storage,
+                                                                                  .debugName = "placeholder"});
+    placeholderTexture_ =
+        std::make_unique<VulkanTexture>(context_,
+                                        rhi::TextureDesc{.width = 1, .height = 1, .debugName = "placeholder"});
+    placeholderStorage_ =
+        std::make_unique<VulkanTexture>(context_, rhi::TextureDesc{.width = 1,
+                                                                   .height = 1,
+                                                                   .usage = rhi::TextureUsage::Storage,
+                                                                   .debugName = "placeholder (storage)"});
+    placeholderSampler_ = std::make_unique<VulkanSampler>(context_, rhi::SamplerDesc{.debugName = "placeholder"});
+    const auto& texture = static_cast<const VulkanTexture&>(*placeholderTexture_);
+    context_->placeholders = {static_cast<const VulkanBuffer&>(*placeholderBuffer_).handle(), texture.sampledView(),
+                              texture.restingLayout(), static_cast<const VulkanSampler&>(*placeholderSampler_).handle(),
+                              static_cast<const VulkanTexture&>(*placeholderStorage_).storageView(0)};
 }
 
 std::unique_ptr<rhi::BindingSet> VulkanDevice::apiCreateBindingSet(const rhi::BindingSetDesc& desc)

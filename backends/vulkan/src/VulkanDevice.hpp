@@ -42,10 +42,15 @@ private:
     std::unique_ptr<rhi::Framebuffer> apiCreateFramebuffer(const rhi::FramebufferDesc& desc) override;
     std::unique_ptr<rhi::TimestampQueries> apiCreateTimestampQueries(std::uint32_t count) override;
     void apiSubmit(rhi::CommandList& commands) override;
+    // Makes Context::placeholders, once, before a pipeline that lists binding set layouts.
+    void makePlaceholders(bool listsLayouts);
 
     std::shared_ptr<Context> context_;
     // With DeviceDesc::pipelineCache; declared after context_, so it stores its data before the context can go.
     std::optional<VulkanPipelineCache> pipelineCache_;
+    std::unique_ptr<rhi::Buffer> placeholderBuffer_;
+    std::unique_ptr<rhi::Texture> placeholderTexture_, placeholderStorage_;
+    std::unique_ptr<rhi::Sampler> placeholderSampler_;
 };
 
 } // namespace penumbra::vulkan

@@ -86,7 +86,7 @@ DescriptorLayout describeDescriptors(Context& context, const std::string& pipeli
     DescriptorLayout result;
     result.bindPoint = bindPoint;
     for (const rhi::BindingSetLayout* layout : layouts)
-        result.sets.push_back({context.layouts().setLayout(layout->desc()), {}});
+        result.sets.push_back({context.layouts().setLayout(layout->desc()), {}, layout->desc().items});
     std::vector<LayoutBinding> drawLayout;
     for (const rhi::ShaderBinding& b : bindings) {
         std::uint32_t set = result.drawSet();

@@ -57,6 +57,7 @@ private:
 struct SetSlot {
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
     std::vector<rhi::ShaderBinding> bindings; // the ones the shaders declare, sorted by number
+    std::vector<rhi::BindingLayoutItem> items; // every binding of the layout
 };
 
 // A graphics or compute pipeline's descriptor sets, as DescriptorBinder binds them.

@@ -17,6 +17,25 @@ std::string textureKey(const rhi::TextureDesc& d)
                        static_cast<int>(d.format), static_cast<int>(d.usage), d.samples);
 }
 
+// The RHI's state for a declared use.
+rhi::ResourceState graphUseState(ResourceUse use)
+{
+    switch (use) {
+    case ResourceUse::Sampled:
+        return rhi::ResourceState::ShaderRead;
+    case ResourceUse::AttachmentRead:
+        return rhi::ResourceState::DepthRead;
+    case ResourceUse::TransferSource:
+        return rhi::ResourceState::CopySource;
+    case ResourceUse::RenderTarget:
+    case ResourceUse::DrawOver:
+        return rhi::ResourceState::RenderTarget;
+    case ResourceUse::TransferDestination:
+        break;
+    }
+    return rhi::ResourceState::CopyDestination;
+}
+
 } // namespace
 
 const char* resourceUseName(ResourceUse use)
@@ -272,14 +291,34 @@ void FrameGraph::execute(rhi::CommandList& commands)
         timestamps_ = device_.createTimestampQueries(queries);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
+    std::unordered_map<const rhi::Texture*, rhi::ResourceState> states; // what the frame's passes left them in
     for (std::size_t i = 0; i < timed_.size(); ++i) {
         const FramePassContext context(*this, timed_[i], commands);
         commands.pushLabel(passes_[timed_[i]].name);
+        recordBarriers(commands, passes_[timed_[i]], states);
         passes_[timed_[i]].pass->execute(context);
         commands.popLabel();
         if (timestamps_)
             commands.writeTimestamp(*timestamps_, static_cast<std::uint32_t>(i + 1));
     }
+}
+
+void FrameGraph::recordBarriers(rhi::CommandList& commands, const Pass& pass,
+                                std::unordered_map<const rhi::Texture*, rhi::ResourceState>& states) const
+{
+    std::vector<rhi::ResourceBarrier> barriers;
+    for (const Use& use : pass.uses) {
+        const rhi::Texture* texture = resources_[use.resource].texture;
+        const auto same = std::find_if(barriers.begin(), barriers.end(),
+                                       [&](const rhi::ResourceBarrier& b) { return b.texture == texture; });
+        if (same == barriers.end())
+            barriers.push_back(rhi::ResourceBarrier::of(*texture, states[texture], graphUseState(use.use)));
+        else
+            same->after |= graphUseState(use.use);
+    }
+    for (const rhi::ResourceBarrier& b : barriers)
+        states[b.texture] = b.after;
+    commands.resourceBarriers(barriers);
 }
 
 std::vector<PassTiming> FrameGraph::timings()

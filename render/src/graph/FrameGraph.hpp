@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace penumbra::render {
@@ -36,7 +37,9 @@ public:
     // Runs every pass's setup (which throws rhi::Error for a texture the frame does not have), then throws rhi::Error
     // for a pass that reads a made texture before any pass writes it; culls, and makes the transient textures.
     void compile();
-    // Records the passes that run, each in a debug label of its name and between timestamps where the device has them.
+    // Records the passes that run, each in a debug label of its name and between timestamps where the device has them,
+    // each after the barriers its declared uses need (CommandList::resourceBarriers, inside its label, so that the RHI
+    // holds the pass to them: a texture of the frame it touches without declaring it is an rhi::Error naming both).
     void execute(rhi::CommandList& commands);
     // After the submission of execute()'s commands: every pass that ran, in order.
     std::vector<PassTiming> timings();
@@ -77,6 +80,10 @@ private:
     void cull();
     void makeTransients();
     const rhi::Texture& declaredTexture(std::size_t pass, std::string_view resource) const;
+    // The pass's uses as RHI states, merged per texture (transient resources may share one), moving each texture from
+    // the state the frame's earlier passes left it in (`states`, updated).
+    void recordBarriers(rhi::CommandList& commands, const Pass& pass,
+                        std::unordered_map<const rhi::Texture*, rhi::ResourceState>& states) const;
     const rhi::Framebuffer& framebuffer(std::size_t pass, std::initializer_list<std::string_view> colors,
                                         std::string_view depth);
 

@@ -29,8 +29,9 @@ bool isSoft(shadows::ShadowFilter filter) { return shadows::isSoftFilter(filter)
 
 } // namespace
 
-LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, std::uint32_t samples)
-    : device_(device), vertex_(vertex), samples_(samples)
+LitPipelines::LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const rhi::BindingSetLayout& shadowMaps,
+                           std::uint32_t samples)
+    : device_(device), vertex_(vertex), shadowMaps_(shadowMaps), samples_(samples)
 {
 }
 
@@ -65,6 +66,7 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
                            shaders::uniformLayout(shadows::kDirectionalShadowBlock),
                            shaders::uniformLayout(shadows::kLocalShadowBlock),
                            shaders::uniformLayout(shadows::kStaticShadowBlock)};
+    desc.bindingSetLayouts = {&shadowMaps_};
     desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
     rhi::ColorTarget target{kLitColorFormat};
     if (features.depthPrepassed) {

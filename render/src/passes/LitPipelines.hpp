@@ -19,7 +19,9 @@ namespace penumbra::render {
 // (lavapipe takes about half a second each), and most frames use few of them.
 class LitPipelines {
 public:
-    LitPipelines(rhi::Device& device, const rhi::Shader& vertex, std::uint32_t samples);
+    // `shadowMaps`: the layout of the shadow maps' binding set (ShadowMapBindings), which the pipelines list.
+    LitPipelines(rhi::Device& device, const rhi::Shader& vertex, const rhi::BindingSetLayout& shadowMaps,
+                 std::uint32_t samples);
 
     std::uint32_t samples() const { return samples_; }
     // A blended draw takes the forward shader whatever features.depthPrepassed says.
@@ -30,6 +32,7 @@ private:
 
     rhi::Device& device_;
     const rhi::Shader& vertex_;
+    const rhi::BindingSetLayout& shadowMaps_;
     std::uint32_t samples_;
     std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Shader>> fragments_; // by featureKey
     std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Pipeline>> pipelines_; // by featureKey, sides, blend

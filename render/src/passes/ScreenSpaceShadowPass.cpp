@@ -59,8 +59,8 @@ ScreenSpaceShadowUniforms screenSpaceShadowUniforms(const LitFrameUniforms& fram
     return u;
 }
 
-ScreenSpaceShadowPass::ScreenSpaceShadowPass(rhi::Device& device)
-    : device_(device), vertex_(device.createShader(shaders::load("fullscreen.vert"))),
+ScreenSpaceShadowPass::ScreenSpaceShadowPass(rhi::Device& device, const rhi::BindingSetLayout& shadowMaps)
+    : device_(device), shadowMaps_(shadowMaps), vertex_(device.createShader(shaders::load("fullscreen.vert"))),
       sampler_(device.createSampler({.magFilter = rhi::Filter::Nearest,
                                      .minFilter = rhi::Filter::Nearest,
                                      .debugName = "screen-space shadows (nearest)"}))
@@ -93,6 +93,7 @@ const rhi::Pipeline& ScreenSpaceShadowPass::pipeline(const LitShaderFeatures& fe
     desc.vertex = vertex_.get();
     desc.fragment = fragment.get();
     desc.colorTargets = {rhi::ColorTarget{kScreenSpaceShadowFormat}};
+    desc.bindingSetLayouts = {&shadowMaps_};
     desc.uniformLayouts = {shaders::uniformLayout(kCollectionBlock),
                            shaders::uniformLayout(shadows::kDirectionalShadowBlock)};
     // The static maps' functions come with local_shadows.glsl's block (screen_space_shadows.frag).

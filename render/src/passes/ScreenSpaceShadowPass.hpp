@@ -55,7 +55,8 @@ ScreenSpaceShadowUniforms screenSpaceShadowUniforms(const LitFrameUniforms& fram
 // texture, made for the depth texture prepare() is given.
 class ScreenSpaceShadowPass {
 public:
-    explicit ScreenSpaceShadowPass(rhi::Device& device);
+    // `shadowMaps`: the layout of the lit pass's shadow map set (ShadowMapBindings), which the pipelines list.
+    ScreenSpaceShadowPass(rhi::Device& device, const rhi::BindingSetLayout& shadowMaps);
 
     // The targets for `depth` (single-sampled, sampled); call again whenever the depth texture is made anew.
     void prepare(const rhi::Texture& depth);
@@ -79,6 +80,7 @@ private:
     const rhi::Pipeline& pipeline(const LitShaderFeatures& features);
 
     rhi::Device& device_;
+    const rhi::BindingSetLayout& shadowMaps_;
     std::unique_ptr<rhi::Shader> vertex_;
     std::unique_ptr<rhi::Sampler> sampler_;
     std::unordered_map<std::uint32_t, std::unique_ptr<rhi::Shader>> fragments_; // by shadowFeatureKey

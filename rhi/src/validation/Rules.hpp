@@ -35,6 +35,10 @@ void checkTextureUpload(const TextureDesc& desc, std::uint32_t layer, std::uint3
 void checkTextureReadback(const TextureDesc& desc, std::uint32_t layer, std::uint32_t level, const BufferDesc& buffer,
                           std::uint64_t offset);
 
+// One explicit barrier's rules (CommandList::resourceBarriers): one resource named, `after` a state its usages allow,
+// `before` the state the list last declared for it (`declared`, Undefined where none).
+void checkResourceBarrier(const ResourceBarrier& barrier, ResourceState declared);
+
 // copyTexture's rules: layers in range, equal size, format and level count, not a layer onto itself.
 void checkTextureCopy(const Texture& src, std::uint32_t srcLayer, const Texture& dst, std::uint32_t dstLayer);
 

@@ -94,11 +94,18 @@ void ValidatingCommandList::record(const Barrier& barrier)
         apiBarrier(barrier);
 }
 
-void ValidatingCommandList::bindResource(std::uint32_t binding, const void* object, Use graphics)
+void ValidatingCommandList::bindResource(std::uint32_t binding, const Texture& texture)
 {
     if (binding >= resources_.size())
         resources_.resize(binding + 1);
-    resources_[binding] = {object, graphics};
+    resources_[binding] = {&texture, graphicsUses(texture.desc()), &texture, nullptr};
+}
+
+void ValidatingCommandList::bindResource(std::uint32_t binding, const Buffer& buffer)
+{
+    if (binding >= resources_.size())
+        resources_.resize(binding + 1);
+    resources_[binding] = {&buffer, graphicsUses(buffer.desc()), nullptr, &buffer};
 }
 
 void ValidatingCommandList::orderDispatch(const Buffer* indirect)
@@ -126,6 +133,8 @@ void ValidatingCommandList::forgetRecording()
     resources_.clear();
     hazards_.reset();
     vertexSlots_ = 0;
+    vertexBuffers_ = {};
+    indexBufferObject_ = nullptr;
     indexBuffer_ = false;
     drawChecked_ = false;
     labels_.clear();
@@ -204,6 +213,7 @@ void ValidatingCommandList::bindVertexBuffer(std::uint32_t slot, const Buffer& b
         checkBufferRange("bindVertexBuffer", buffer.desc(), offset, 0);
         vertexSlots_ |= 1u << slot;
         vertexBytes_[slot] = buffer.desc().size - offset;
+        vertexBuffers_[slot] = &buffer;
         drawChecked_ = false;
     }
     apiBindVertexBuffer(slot, buffer, offset);
@@ -220,6 +230,7 @@ void ValidatingCommandList::bindIndexBuffer(const Buffer& buffer, IndexType type
             throw Error(fmt::format("bindIndexBuffer: offset {} is not a multiple of the index size, {} bytes", offset,
                                     indexSize));
         indexBuffer_ = true;
+        indexBufferObject_ = &buffer;
         indexOffset_ = offset;
     }
     apiBindIndexBuffer(buffer, type, offset);
@@ -236,7 +247,7 @@ void ValidatingCommandList::bindUniformBuffer(std::uint32_t binding, const Buffe
         bound_[binding] = {.set = true, .kind = BindingKind::UniformBuffer, .size = size};
         drawChecked_ = false;
     }
-    bindResource(binding, &buffer, graphicsUses(buffer.desc()));
+    bindResource(binding, buffer);
     apiBindUniformBuffer(binding, buffer, offset, size);
 }
 
@@ -250,7 +261,7 @@ void ValidatingCommandList::bindTexture(std::uint32_t binding, const Texture& te
         bound_[binding] = {.set = true, .kind = BindingKind::SampledTexture};
         drawChecked_ = false;
     }
-    bindResource(binding, &texture, graphicsUses(texture.desc()));
+    bindResource(binding, texture);
     apiBindTexture(binding, texture, sampler);
 }
 
@@ -265,7 +276,7 @@ void ValidatingCommandList::bindStorageBuffer(std::uint32_t binding, const Buffe
         bound_[binding] = {.set = true, .kind = BindingKind::StorageBuffer, .size = size};
         drawChecked_ = false;
     }
-    bindResource(binding, &buffer, graphicsUses(buffer.desc()));
+    bindResource(binding, buffer);
     apiBindStorageBuffer(binding, buffer, offset, size);
 }
 
@@ -279,7 +290,7 @@ void ValidatingCommandList::bindStorageTexture(std::uint32_t binding, const Text
         bound_[binding] = {.set = true, .kind = BindingKind::StorageTexture, .texture = &texture.desc()};
         drawChecked_ = false;
     }
-    bindResource(binding, &texture, graphicsUses(texture.desc()));
+    bindResource(binding, texture);
     apiBindStorageTexture(binding, texture, level);
 }
 
@@ -301,9 +312,9 @@ void ValidatingCommandList::bindBindingSet(const BindingSet& set)
     }
     for (const BindingSetItem& item : set.items()) {
         if (item.buffer)
-            bindResource(item.binding, item.buffer, graphicsUses(item.buffer->desc()));
+            bindResource(item.binding, *item.buffer);
         else
-            bindResource(item.binding, item.texture, graphicsUses(item.texture->desc()));
+            bindResource(item.binding, *item.texture);
     }
     apiBindBindingSet(set);
 }
@@ -373,6 +384,7 @@ void ValidatingCommandList::checkDispatch(std::string_view what)
     if (!computePipeline_)
         throw Error(fmt::format("{}: no compute pipeline is bound; call bindComputePipeline() first", what));
     checkBindings(what, computePipeline_->desc().debugName, computePipeline_->bindings());
+    checkDeclaredBindings(what, computePipeline_->bindings());
 }
 
 void ValidatingCommandList::dispatch(std::uint32_t x, std::uint32_t y, std::uint32_t z)
@@ -420,6 +432,8 @@ void ValidatingCommandList::checkDraw(std::string_view what)
         if (!(vertexSlots_ & (1u << a.buffer)))
             throw Error(fmt::format("{}: pipeline '{}' reads vertex buffer slot {}, which is not bound", what,
                                     desc.debugName, a.buffer));
+    checkDeclaredBindings(what, pipeline_->bindings());
+    checkDeclaredVertices(what);
     drawChecked_ = true;
 }
 
@@ -441,6 +455,7 @@ void ValidatingCommandList::drawIndexed(std::uint32_t indexCount, std::uint32_t 
         checkInstanceRange("drawIndexed", pipeline_->desc(), vertexBytes_, instanceCount, firstInstance);
         if (!indexBuffer_)
             throw Error("drawIndexed: no index buffer is bound; call bindIndexBuffer() first");
+        checkDeclared("drawIndexed", nullptr, indexBufferObject_, ResourceState::IndexBuffer, "index buffer");
     }
     apiDrawIndexed(indexCount, instanceCount, firstIndex, vertexOffset, firstInstance);
 }
@@ -452,6 +467,7 @@ void ValidatingCommandList::checkDrawIndirect(std::string_view what, const Buffe
     if (offset % 4 != 0)
         throw Error(fmt::format("{}: offset {} is not a multiple of 4", what, offset));
     checkBufferRange(fmt::format("{} arguments", what), buffer.desc(), offset, size);
+    checkDeclared(what, nullptr, &buffer, ResourceState::IndirectArgument, "indirect arguments");
 }
 
 void ValidatingCommandList::drawIndirect(const Buffer& buffer, std::uint64_t offset)
@@ -483,6 +499,7 @@ void ValidatingCommandList::checkIndexedIndirect(std::string_view what) const
         throw Error(fmt::format("{}: the index buffer is bound at offset {}; indirect indexed draws need offset 0 "
                                 "(start with the arguments' firstIndex)",
                                 what, indexOffset_));
+    checkDeclared(what, nullptr, indexBufferObject_, ResourceState::IndexBuffer, "index buffer");
 }
 
 void ValidatingCommandList::checkDrawIndirectCount(std::string_view what, const Buffer& buffer, std::uint64_t offset,
@@ -496,6 +513,7 @@ void ValidatingCommandList::checkDrawIndirectCount(std::string_view what, const 
     if (countOffset % 4 != 0)
         throw Error(fmt::format("{}: offset {} is not a multiple of 4", countWhat, countOffset));
     checkBufferRange(countWhat, count.desc(), countOffset, sizeof(std::uint32_t));
+    checkDeclared(what, nullptr, &count, ResourceState::IndirectArgument, "draw count");
 }
 
 void ValidatingCommandList::drawIndirectCount(const Buffer& buffer, std::uint64_t offset, const Buffer& count,
@@ -525,6 +543,8 @@ void ValidatingCommandList::copyBuffer(const Buffer& src, std::uint64_t srcOffse
         requireOutsidePass("copyBuffer");
         checkBufferRange("copyBuffer source", src.desc(), srcOffset, size);
         checkBufferRange("copyBuffer destination", dst.desc(), dstOffset, size);
+        checkDeclared("copyBuffer", nullptr, &src, ResourceState::CopySource, "source");
+        checkDeclared("copyBuffer", nullptr, &dst, ResourceState::CopyDestination, "destination");
     }
     Barrier barrier = hazards_.copy(&src, {Stage::Copy, Access::CopyRead});
     barrier.merge(hazards_.copy(&dst, {Stage::Copy, Access::CopyWrite}));
@@ -538,6 +558,8 @@ void ValidatingCommandList::copyTexture(const Texture& src, std::uint32_t srcLay
     if (validate_) {
         requireOutsidePass("copyTexture");
         checkTextureCopy(src, srcLayer, dst, dstLayer);
+        checkDeclared("copyTexture", &src, nullptr, ResourceState::CopySource, "source");
+        checkDeclared("copyTexture", &dst, nullptr, ResourceState::CopyDestination, "destination");
     }
     Barrier barrier = hazards_.copy(&src, {Stage::Copy, Access::CopyRead});
     barrier.merge(hazards_.copy(&dst, {Stage::Copy, Access::CopyWrite}));
@@ -551,6 +573,8 @@ void ValidatingCommandList::copyTextureToBuffer(const Texture& src, std::uint32_
     if (validate_) {
         requireOutsidePass("copyTextureToBuffer");
         checkTextureReadback(src.desc(), layer, level, dst.desc(), dstOffset);
+        checkDeclared("copyTextureToBuffer", &src, nullptr, ResourceState::CopySource, "source");
+        checkDeclared("copyTextureToBuffer", nullptr, &dst, ResourceState::CopyDestination, "destination");
     }
     Barrier barrier = hazards_.copy(&src, {Stage::Copy, Access::CopyRead});
     barrier.merge(hazards_.copy(&dst, {Stage::Copy, Access::CopyWrite}));
@@ -563,6 +587,8 @@ void ValidatingCommandList::resolveTexture(const Texture& src, Texture& dst)
     if (validate_) {
         requireOutsidePass("resolveTexture");
         checkTextureResolve(src, dst);
+        checkDeclared("resolveTexture", &src, nullptr, ResourceState::CopySource, "source");
+        checkDeclared("resolveTexture", &dst, nullptr, ResourceState::CopyDestination, "destination");
     }
     Barrier barrier = hazards_.copy(&src, {Stage::Copy, Access::CopyRead});
     barrier.merge(hazards_.copy(&dst, {Stage::Copy, Access::CopyWrite}));
@@ -596,6 +622,8 @@ void ValidatingCommandList::popLabel()
         if (labels_.empty())
             throw Error("popLabel: no label is open");
         labels_.pop_back();
+        hazards_.labelClosed(labels_.size());
+        drawChecked_ = false; // the declared uses may have ended with the label
     }
     apiPopLabel();
 }

@@ -260,6 +260,8 @@ private:
     std::unique_ptr<LocalTileCache> localTiles_;
     std::unique_ptr<shadows::GpuCasterCulling> casterCulling_; // made on the first frame that culls on the GPU
     std::unique_ptr<rhi::Shader> litVertex_;
+    // The shadow maps' set layout (ShadowMapBindings), which the lit and screen-space pipelines list.
+    std::unique_ptr<rhi::BindingSetLayout> shadowMapLayout_;
     // Single-sampled: the lit pass without MSAA and the debug views. Multisampled: the lit pass with FrameDesc::msaa
     // samples, made when a frame first asks for that count.
     std::unique_ptr<LitPipelines> litPipelines_;
@@ -289,7 +291,6 @@ private:
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<FrameGraph> graph_;
     std::unique_ptr<FrameState> state_; // what this frame's passes draw
-    std::unique_ptr<rhi::BindingSetLayout> shadowMapLayout_;
     std::unique_ptr<rhi::BindingSet> shadowMapSet_; // this frame's (FrameState::shadowMapSet)
     std::vector<std::unique_ptr<FramePass>> framePasses_; // this frame's built-in passes
     std::vector<UserPass> userPasses_;

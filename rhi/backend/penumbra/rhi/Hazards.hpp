@@ -10,13 +10,19 @@
 // pass or a copy, a pass, copy or host read after a dispatch, and one dispatch after another.
 //
 // Uses are declared per resource (use()); the list declares what each dispatch binds, and at a pass every result
-// of a dispatch not yet ordered is ordered before the stages its resource's usages allow. A frame graph that knows
-// each pass's reads can declare them instead and narrow that last step to the stages a pass really reads in.
+// of a dispatch not yet ordered is ordered before the stages its resource's usages allow.
+//
+// Explicit barriers (CommandList::resourceBarriers, a frame graph's declared uses) come on top: declare() gives the
+// barrier between two states and opens a scope of declared uses, and covers() then tells whether an access the list
+// records is among them, so that a pass that touches a resource it did not declare is reported.
 
 #include "penumbra/rhi/Flags.hpp"
+#include "penumbra/rhi/ResourceBarrier.hpp"
 #include "penumbra/rhi/Resources.hpp"
 
 #include <cstdint>
+#include <span>
+#include <string>
 #include <unordered_map>
 
 namespace penumbra::rhi {
@@ -81,7 +87,13 @@ struct Barrier {
 Use graphicsUses(const BufferDesc& desc);
 Use graphicsUses(const TextureDesc& desc);
 
-// One command list's record of the accesses that involve compute, per resource.
+// The stages and accesses of a resource state (ResourceState flags merged).
+Use stateUse(ResourceState state);
+// What orders `after`'s accesses behind `before`'s: the writes of `before` made visible to `after`, or where only
+// `after` writes, an execution dependency; empty where neither writes or `before` is Undefined.
+Barrier stateBarrier(ResourceState before, ResourceState after);
+
+// One command list's record of the accesses that involve compute, per resource, and of its declared states.
 class HazardTracker {
 public:
     // Declares a compute-side access (a dispatch's binding or its indirect arguments) to `resource`, whose graphics
@@ -96,7 +108,29 @@ public:
     // After submit, nothing is outstanding.
     void reset();
 
+    // CommandList::resourceBarriers: records each resource's new state and returns the barrier they need. Opens the
+    // scope of declared uses of `pass` (the innermost label open, "" without one; `labels` are open), which ends at
+    // the next declare() or when that label closes.
+    Barrier declare(std::span<const ResourceBarrier> barriers, std::string pass, std::size_t labels);
+    // A label closed, `labels` are still open.
+    void labelClosed(std::size_t labels);
+    // The state the list last declared for `resource`; Undefined where it declared none.
+    ResourceState declared(const void* resource) const;
+    // Whether an access of `resource` as `needed` is among the declared uses: true outside a scope and for a resource
+    // the list never declared; else the scope's state for it must cover `needed`.
+    bool covers(const void* resource, ResourceState needed) const;
+    // Inside a scope: its state for `resource` (Undefined where it does not name it) and its pass.
+    ResourceState scoped(const void* resource) const;
+    const std::string& scopePass() const { return scope_.pass; }
+
 private:
+    struct Scope {
+        bool open = false;
+        std::string pass;
+        std::size_t labels = 0; // open at the declaration: the scope ends when fewer are
+        std::unordered_map<const void*, ResourceState> states;
+    };
+
     struct State {
         Use graphics; // the resource's graphics uses
         Use write; // the last dispatch's write
@@ -109,6 +143,8 @@ private:
 
     std::unordered_map<const void*, State> states_;
     std::uint64_t passes_ = 0;
+    std::unordered_map<const void*, ResourceState> declared_; // the last declared state per resource
+    Scope scope_;
 };
 
 } // namespace penumbra::rhi

@@ -107,6 +107,7 @@ public:
     void copyTextureToBuffer(const Texture& src, std::uint32_t layer, std::uint32_t level, Buffer& dst,
                              std::uint64_t dstOffset) final;
     void resolveTexture(const Texture& src, Texture& dst) final;
+    void resourceBarriers(std::span<const ResourceBarrier> barriers) final;
     void writeTimestamp(TimestampQueries& queries, std::uint32_t index) final;
     void pushLabel(std::string_view name) final;
     void popLabel() final;
@@ -180,6 +181,8 @@ private:
     struct Resource {
         const void* object = nullptr;
         Use graphics; // its graphics uses
+        const Texture* texture = nullptr; // the object, as what it is (for messages)
+        const Buffer* buffer = nullptr;
     };
 
     // Every recording call starts here: the device must still exist.
@@ -193,7 +196,15 @@ private:
     void checkIndexedIndirect(std::string_view what) const;
     void checkDispatch(std::string_view what);
     void checkBindings(std::string_view what, const std::string& pipeline, const std::vector<ShaderBinding>& bindings);
-    void bindResource(std::uint32_t binding, const void* object, Use graphics);
+    void bindResource(std::uint32_t binding, const Texture& texture);
+    void bindResource(std::uint32_t binding, const Buffer& buffer);
+    // Throws where the declared uses (resourceBarriers) do not cover an access of `texture` or `buffer` as `needed`;
+    // `how` says which (BarrierRules.cpp).
+    void checkDeclared(std::string_view what, const Texture* texture, const Buffer* buffer, ResourceState needed,
+                       std::string_view how) const;
+    // checkDeclared for every binding the pipeline declares and, for a draw, every vertex buffer it reads.
+    void checkDeclaredBindings(std::string_view what, const std::vector<ShaderBinding>& bindings) const;
+    void checkDeclaredVertices(std::string_view what) const;
     // The barrier before the bound compute pipeline's accesses (and `indirect`'s arguments, when given).
     void orderDispatch(const Buffer* indirect);
     void record(const Barrier& barrier);
@@ -213,6 +224,8 @@ private:
     std::uint32_t vertexSlots_ = 0; // bit per bound slot
     std::vector<std::string> labels_; // open, outermost first
     std::array<std::uint64_t, maxVertexBuffers> vertexBytes_{}; // per slot, the bound buffer's bytes past the offset
+    std::array<const Buffer*, maxVertexBuffers> vertexBuffers_{};
+    const Buffer* indexBufferObject_ = nullptr;
     bool indexBuffer_ = false;
     std::uint64_t indexOffset_ = 0;
     bool drawChecked_ = false; // nothing a draw depends on changed since the last checked draw

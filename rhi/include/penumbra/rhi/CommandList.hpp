@@ -1,10 +1,12 @@
 #pragma once
 
 #include "penumbra/rhi/LiveObjects.hpp"
+#include "penumbra/rhi/ResourceBarrier.hpp"
 
 #include <cstdint>
 #include <glm/vec4.hpp>
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace penumbra::rhi {
@@ -150,6 +152,19 @@ public:
     // single-sampled `dst`, a RenderTarget of the same size and format with one layer (Vulkan vkCmdResolveImage;
     // GL glBlitFramebuffer from a multisampled read framebuffer, GL 4.5 section 18.3.1). Depth is not resolved.
     virtual void resolveTexture(const Texture& src, Texture& dst) = 0;
+
+    // Explicit barriers, outside passes: each resource leaves `before`, the state this list last declared for it
+    // (Undefined the first time), for `after`; the list records the API barrier that orders the two (none where
+    // neither writes or `before` is Undefined: earlier submissions have finished). A resource appears once per call,
+    // and `after` needs the resource's usage (ShaderRead: TextureUsage::Sampled or Storage, or BufferUsage::Storage;
+    // RenderTarget and DepthRead: TextureUsage::RenderTarget, DepthRead a depth format; ...).
+    // The call also declares what the commands that follow use: until the next call, or until the label open at the
+    // call closes (a frame graph's pass), the bindings, vertex, index and indirect buffers of every draw and dispatch
+    // and the source and destination of every copy that this list has declared before must be declared by this call,
+    // in a state that covers the access (ShaderWrite covers ShaderRead,
+    // RenderTarget covers DepthRead), else the validation layer raises rhi::Error naming the label, the resource and
+    // the use. Resources the list never declares keep the RHI's own hazard tracking (see above) alone.
+    virtual void resourceBarriers(std::span<const ResourceBarrier> barriers) = 0;
 
     // Device::readTimestamps gives the values after submit.
     virtual void writeTimestamp(TimestampQueries& queries, std::uint32_t index) = 0;
