@@ -38,8 +38,7 @@ double jsonInteger(const nlohmann::json& value, const SettingsFieldInfo& field, 
 
 } // namespace
 
-SettingValue settingValueFromJson(const nlohmann::json& value, const SettingsFieldInfo& field,
-                                  std::string_view source)
+SettingValue settingValueFromJson(const nlohmann::json& value, const SettingsFieldInfo& field, std::string_view source)
 {
     switch (field.kind) {
     case SettingValueKind::Number:

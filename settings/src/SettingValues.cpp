@@ -81,8 +81,8 @@ std::optional<std::string> valueOutside(const SettingsFieldInfo& field, const Se
         break;
     }
     const double number = value.numbers[0];
-    const bool listedOut = !field.listed.empty() &&
-                           std::find(field.listed.begin(), field.listed.end(), number) == field.listed.end();
+    const bool listedOut =
+        !field.listed.empty() && std::find(field.listed.begin(), field.listed.end(), number) == field.listed.end();
     if (listedOut || !withinRange(field.range, number))
         return numberText(number);
     return std::nullopt;

@@ -11,10 +11,10 @@
 namespace penumbra::shadows {
 namespace {
 
+using settings::nameOf;
 using settings::SettingName;
 using settings::SettingRange;
 using settings::SettingRangeKind;
-using settings::nameOf;
 
 // The ranges several fields share, each stated once.
 constexpr SettingRange kAtlasSizes{SettingRangeKind::PowersOfTwo, 256, 8192};
@@ -240,8 +240,9 @@ std::vector<ShadowSettingsField> shadowTableFields()
 const settings::SettingsTable<ShadowSettings>& shadowSettingsTable()
 {
     // Spot and point lights were once "other" lights: those paths still load.
-    static const settings::SettingsTable<ShadowSettings> table(
-        shadowTableFields(), {{"other", "local"}, {"static.otherAtlasSize", "static.localAtlasSize"}});
+    static const settings::SettingsTable<ShadowSettings> table(shadowTableFields(),
+                                                               {{"other", "local"},
+                                                                {"static.otherAtlasSize", "static.localAtlasSize"}});
     return table;
 }
 

@@ -88,9 +88,10 @@ void assignValue(Value& value, const SettingValue& from)
         value = glm::vec3(static_cast<float>(from.numbers[0]), static_cast<float>(from.numbers[1]),
                           static_cast<float>(from.numbers[2]));
     else if constexpr (std::is_same_v<Value, std::optional<glm::vec3>>)
-        value = from.numbers.empty() ? std::nullopt : std::optional(glm::vec3(static_cast<float>(from.numbers[0]),
-                                                                              static_cast<float>(from.numbers[1]),
-                                                                              static_cast<float>(from.numbers[2])));
+        value = from.numbers.empty()
+                    ? std::nullopt
+                    : std::optional(glm::vec3(static_cast<float>(from.numbers[0]), static_cast<float>(from.numbers[1]),
+                                              static_cast<float>(from.numbers[2])));
     else if constexpr (std::is_enum_v<Value>)
         value = static_cast<Value>(static_cast<int>(from.numbers[0]));
     else
@@ -122,8 +123,8 @@ std::string joinedNumbers(const std::vector<double>& numbers);
 // A field reading and writing the member that `member` (a generic lambda returning a reference, for const settings
 // and not: [](auto& s) -> auto& { return s.contact.steps; }) picks out; its kind follows the member's type.
 template <typename Settings, typename Member>
-SettingsField<Settings> field(std::string_view path, SettingRange range, std::string allowed,
-                              std::string_view summary, Member member, std::string_view flag = {})
+SettingsField<Settings> field(std::string_view path, SettingRange range, std::string allowed, std::string_view summary,
+                              Member member, std::string_view flag = {})
 {
     using Value = std::remove_cvref_t<decltype(member(std::declval<Settings&>()))>;
     SettingsField<Settings> result;
