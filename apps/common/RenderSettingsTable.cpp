@@ -58,9 +58,8 @@ std::vector<settings::SettingsField<RenderSettings>> renderLevelFields()
             "the environment's multiplier", [](auto& s) -> auto& { return s.environment.intensity; },
             "--environment-intensity"),
         settings::numeric<RenderSettings>(
-            "environment.rotation", {SettingRangeKind::Closed, -360.0, 360.0},
-            "degrees the environment turns about +y", [](auto& s) -> auto& { return s.environment.rotation; },
-            "--environment-rotation"),
+            "environment.rotation", {SettingRangeKind::Closed, -360.0, 360.0}, "degrees the environment turns about +y",
+            [](auto& s) -> auto& { return s.environment.rotation; }, "--environment-rotation"),
         settings::numeric<RenderSettings>(
             "anisotropy", {SettingRangeKind::Closed, 1.0, kMaxAnisotropyOption},
             "most anisotropic filtering of textures (1: off), lowered to the device's limit",
@@ -92,8 +91,9 @@ std::vector<settings::SettingsField<RenderSettings>> renderTableFields()
 const settings::SettingsTable<RenderSettings>& renderSettingsTable()
 {
     const std::span<const settings::OldPath> oldPaths = shadows::shadowSettingsTable().oldPaths();
-    static const settings::SettingsTable<RenderSettings> table(
-        renderTableFields(), std::vector<settings::OldPath>(oldPaths.begin(), oldPaths.end()));
+    static const settings::SettingsTable<RenderSettings> table(renderTableFields(),
+                                                               std::vector<settings::OldPath>(oldPaths.begin(),
+                                                                                              oldPaths.end()));
     return table;
 }
 

@@ -23,14 +23,17 @@ struct ToySettings {
 const SettingsTable<ToySettings>& toyTable()
 {
     static const SettingsTable<ToySettings> table({
-        numeric<ToySettings>("scale", {SettingRangeKind::Closed, 0.5, 2}, "how big",
-                             [](auto& s) -> auto& { return s.scale; }),
-        numeric<ToySettings>("look.size", {SettingRangeKind::PowersOfTwo, 64, 1024}, "texels per side",
-                             [](auto& s) -> auto& { return s.size; }),
-        named<ToySettings>("look.mode", {nameOf(ToyMode::Slow, "slow"), nameOf(ToyMode::Fast, "fast")}, "how fast",
-                           [](auto& s) -> auto& { return s.mode; }),
-        field<ToySettings>("tint", {SettingRangeKind::AtLeast, 0}, "3 numbers, each at least 0", "a colour",
-                           [](auto& s) -> auto& { return s.tint; }),
+        numeric<ToySettings>(
+            "scale", {SettingRangeKind::Closed, 0.5, 2}, "how big", [](auto& s) -> auto& { return s.scale; }),
+        numeric<ToySettings>(
+            "look.size", {SettingRangeKind::PowersOfTwo, 64, 1024}, "texels per side",
+            [](auto& s) -> auto& { return s.size; }),
+        named<ToySettings>(
+            "look.mode", {nameOf(ToyMode::Slow, "slow"), nameOf(ToyMode::Fast, "fast")}, "how fast",
+            [](auto& s) -> auto& { return s.mode; }),
+        field<ToySettings>(
+            "tint", {SettingRangeKind::AtLeast, 0}, "3 numbers, each at least 0", "a colour",
+            [](auto& s) -> auto& { return s.tint; }),
     });
     return table;
 }
