@@ -1,20 +1,20 @@
 // Image-based lighting in the lit pass (render::EnvironmentLight): diffuse from nine spherical harmonics
 // (frame.environmentSh, render::diffuseShaderCoefficients), specular from the prefiltered equirectangular chain and
-// the split-sum BRDF table (Karis 2013, "Real Shading in Unreal Engine 4"). frame.environment: x, y = cosine and sine of
-// the rotation about +y, z = the chain's last level (0 without an environment), w = intensity.
+// the split-sum BRDF table (Karis 2013, "Real Shading in Unreal Engine 4"). frame.environmentCos and environmentSin:
+// the rotation about +y; environmentLastLevel: the chain's last level (0 without an environment).
 
 #include "environment.glsl"
 
 layout(binding = PENUMBRA_BINDING_ENVIRONMENT_SPECULAR) uniform sampler2D environmentSpecular;
 layout(binding = PENUMBRA_BINDING_ENVIRONMENT_BRDF) uniform sampler2D environmentBrdf; // r = A, g = B
 
-bool hasEnvironment() { return frame.environment.z > 0.0; }
+bool hasEnvironment() { return frame.environmentLastLevel > 0.0; }
 
 // A world direction in the environment's frame: the environment is turned by the rotation about +y.
 vec3 toEnvironment(vec3 d)
 {
-    const float c = frame.environment.x;
-    const float s = frame.environment.y;
+    const float c = frame.environmentCos;
+    const float s = frame.environmentSin;
     return vec3(c * d.x - s * d.z, d.y, s * d.x + c * d.z);
 }
 
@@ -40,9 +40,9 @@ vec3 environmentLight(vec3 n, vec3 v, vec3 base, float metallic, float roughness
     const vec2 ab = textureLod(environmentBrdf, vec2(nv, roughness), 0.0).rg;
     const vec3 reflectance = f0 * ab.x + ab.y;
     const vec3 r = toEnvironment(reflect(-v, n));
-    const vec3 prefiltered = textureLod(environmentSpecular, equirectUv(r), roughness * frame.environment.z).rgb;
+    const vec3 prefiltered = textureLod(environmentSpecular, equirectUv(r), roughness * frame.environmentLastLevel).rgb;
     const float alpha = roughness * roughness;
     const float specularOcclusion = clamp(pow(nv + occlusion, exp2(-16.0 * alpha - 1.0)) - 1.0 + occlusion, 0.0, 1.0);
     const vec3 diffuse = (1.0 - metallic) * base * (1.0 - reflectance) * environmentDiffuse(n);
-    return frame.environment.w * (diffuse * occlusion + prefiltered * reflectance * specularOcclusion);
+    return frame.environmentIntensity * (diffuse * occlusion + prefiltered * reflectance * specularOcclusion);
 }

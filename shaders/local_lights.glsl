@@ -19,14 +19,14 @@ vec4 localLightTexel(int light, int texel)
 ivec2 clusterLightList(vec3 position)
 {
     const vec3 d = position - frame.cameraPosition.xyz;
-    const float depth = max(dot(d, frame.cameraForward.xyz), frame.clusterSlices.x);
-    const vec2 ndc = vec2(dot(d, frame.cameraRight.xyz), dot(d, frame.cameraUp.xyz)) /
-                     (vec2(frame.cameraRight.w, frame.cameraUp.w) * depth);
+    const float depth = max(dot(d, frame.cameraForward.xyz), frame.clusterNear);
+    const vec2 ndc = vec2(dot(d, frame.cameraRight), dot(d, frame.cameraUp)) /
+                     (vec2(frame.tanHalfFovX, frame.tanHalfFovY) * depth);
     const int x = clamp(int(floor((ndc.x + 1.0) * 0.5 * float(PENUMBRA_CLUSTER_TILES_X))), 0,
                         PENUMBRA_CLUSTER_TILES_X - 1);
     const int y = clamp(int(floor((1.0 - ndc.y) * 0.5 * float(PENUMBRA_CLUSTER_TILES_Y))), 0,
                         PENUMBRA_CLUSTER_TILES_Y - 1);
-    const int slice = clamp(int(floor(log(depth) * frame.clusterSlices.z + frame.clusterSlices.w)), 0,
+    const int slice = clamp(int(floor(log(depth) * frame.clusterSliceScale + frame.clusterSliceBias)), 0,
                             PENUMBRA_CLUSTER_SLICES - 1);
     const int cluster = x + PENUMBRA_CLUSTER_TILES_X * (y + PENUMBRA_CLUSTER_TILES_Y * slice);
     return ivec2(texelFetch(lightClusterData, litDataTexel(cluster), 0).xy);

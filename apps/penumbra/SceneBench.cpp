@@ -229,7 +229,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
             {"warmup", options.warmup},
             {"depthPrepass", frame.depthPrepass},
             {"msaa", frame.msaa},
-            {"shadowPath", kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)]},
+            {"shadowPath", shadowPathName(frame.shadowPath)},
             {"cascadeCount", frame.shadows.directional.cascadeCount},
             {"atlasSize", frame.shadows.directional.atlasSize},
             {"culling", frame.shadows.culling == shadows::CasterCullingMode::Gpu ? "gpu" : "cpu"},
@@ -266,8 +266,7 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
                "warm-up, instancing {} (medians; GPU timestamps per pass, wall time per frame)\n",
                options.scene.scene, frame.width, frame.height, frame.shadows.directional.cascadeCount,
                frame.shadows.directional.atlasSize, frame.depthPrepass ? "on" : "off", frame.msaa,
-               kShadowPathNames[static_cast<std::size_t>(frame.shadowPath)], options.frames, options.warmup,
-               frame.instancedDraws ? "on" : "off");
+               shadowPathName(frame.shadowPath), options.frames, options.warmup, frame.instancedDraws ? "on" : "off");
     fmt::print("{:<24} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>11} {:>9}\n", "configuration", "frame ms",
                "depth", "atlas", "local", "ss shadow", "lit", "resolve", "reference", "ours / ref", "frame max");
     for (const ConfigurationResult& r : results)

@@ -21,7 +21,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <glm/geometric.hpp>
 #include <map>
 #include <optional>
@@ -52,49 +51,6 @@ std::string validateCamera(const std::string& camera)
 }
 
 } // namespace
-
-CLI::Validator anisotropyValidator()
-{
-    return CLI::Validator(
-        [](std::string& s) {
-            float value = 0.0f;
-            const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-            return error == std::errc() && end == s.data() + s.size() && value >= 1.0f && value <= kMaxAnisotropyOption
-                       ? std::string()
-                       : fmt::format("'{}' is not a number from 1 (off) to {}", s, kMaxAnisotropyOption);
-        },
-        "N");
-}
-
-CLI::Validator msaaValidator()
-{
-    return CLI::Validator(
-        [](std::string& s) {
-            for (std::uint32_t count : kMsaaCounts)
-                if (s == std::to_string(count))
-                    return std::string();
-            return fmt::format("'{}' is not a sample count: 1 (off), 2, 4 or 8", s);
-        },
-        "1|2|4|8");
-}
-
-CLI::Validator shadowPathValidator()
-{
-    return CLI::Validator(
-        [](std::string& s) {
-            return parseShadowPath(s)
-                       ? std::string()
-                       : fmt::format("'{}' is not a shadow path: {}", s, fmt::join(kShadowPathNames, ", "));
-        },
-        "PATH");
-}
-
-std::string shadowPathHelp()
-{
-    return "Where directional shadows are evaluated: forward (in the lit pass) or screenSpace (collected after the "
-           "depth prepass by one full-screen pass into a screen-space shadow texture that the lit pass reads; needs "
-           "--prepass on); default: the settings file's shadowPath, or forward";
-}
 
 CLI::Validator filterValidator()
 {
@@ -167,41 +123,14 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
             },
             "AMBIENT"));
     command
-        .add_option("--environment", options.environment,
-                    fmt::format("Image-based lighting: {} (an equirectangular .hdr or .exr file; default: the built-in "
-                                "studio environment; none: the ambient light instead; auto: default for a glTF file "
-                                "without --ambient, none for a built-in scene); default auto",
-                                kEnvironmentSyntax))
-        ->check(CLI::Validator(
-            [](std::string& s) {
-                const std::string extension = std::filesystem::path(s).extension().string();
-                return s == "default" || s == "none" || s == "auto" || extension == ".hdr" || extension == ".exr"
-                           ? std::string()
-                           : fmt::format("'{}' is not {}", s, kEnvironmentSyntax);
-            },
-            "ENVIRONMENT"));
-    command
-        .add_option("--environment-intensity", options.environmentIntensity,
-                    "Multiplier of the environment's radiance; default 1")
-        ->check(CLI::Range(0.0f, render::kMaxEnvironmentIntensity));
-    command
-        .add_option("--environment-rotation", options.environmentRotation,
-                    "Turns the environment about +y by this many degrees; default 0")
-        ->check(CLI::Range(-360.0f, 360.0f));
-    command
-        .add_option("--anisotropy", options.anisotropy,
-                    fmt::format("Most anisotropic filtering of textures, 1 (off) to {}; more than the device allows is "
-                                "lowered to its limit and noted; default {}",
-                                kMaxAnisotropyOption, render::FrameDesc{}.maxAnisotropy))
-        ->check(anisotropyValidator());
-    command
         .add_option("--normal-bias-side", options.normalBiasSide,
                     "Where every light's normal bias goes: receiver (shadow lookups move towards the light, the "
                     "default) or caster (the shadow pass moves casters away from it)")
         ->check(CLI::IsMember({"receiver", "caster"}));
     command
         .add_option("--settings", options.settings,
-                    "Shadow settings JSON file, with optional \"ambient\" object and \"anisotropy\" number")
+                    "Settings JSON file: the shadow settings and the render-level ones (ambient, environment, "
+                    "anisotropy, msaa, shadowPath; docs/settings.md); the options here win over it")
         ->check(CLI::ExistingFile);
     command
         .add_option("--shadow-defaults", options.shadowDefaults,
@@ -246,11 +175,6 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                     "off: a draw per object (the same picture)")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
-    command
-        .add_option("--msaa", options.msaa,
-                    "Samples per pixel of the lit pass: 1 (off), 2, 4 or 8, as the device offers them; default 1")
-        ->check(msaaValidator());
-    command.add_option("--shadow-path", options.shadowPath, shadowPathHelp())->check(shadowPathValidator());
     command.add_option("--dynamic", options.dynamicObjects,
                        "Make the objects of this name dynamic (repeatable; a glTF mesh's primitives NAME/0, NAME/1 "
                        "follow NAME): they are drawn into the realtime shadows every frame, never into static maps");
@@ -474,42 +398,32 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
     const std::optional<Size> size = parseSize(options.size);
     if (!size)
         throw rhi::Error(fmt::format("--size '{}' is not WIDTHxHEIGHT", options.size));
-    render::FrameDesc frame;
-    EnvironmentSetting environment;
+    RenderSettings settings;
     bool ambientGiven = !options.ambient.empty();
+    if (options.settings.empty() && options.shadowDefaults == "scene")
+        settings.shadows = sceneShadowSettings(scene);
+    if (!options.settings.empty())
+        for (const std::string_view path : loadRenderSettings(options.settings, settings))
+            ambientGiven = ambientGiven || path.starts_with("ambient.");
+    if (!options.ambient.empty())
+        settings.ambient = parseAmbientOption(options.ambient).value();
+    applySettingsFieldValues(settings, options.settingsFields);
+    applyBake(options, settings.shadows);
+    render::FrameDesc frame;
     frame.width = size->width;
     frame.height = size->height;
     frame.depthPrepass = options.prepass == "on";
     frame.instancedDraws = options.instancing == "on";
-    if (options.settings.empty() && options.shadowDefaults == "scene")
-        frame.shadows = sceneShadowSettings(scene);
-    if (!options.settings.empty()) {
-        RenderSettings settings = loadRenderSettings(options.settings);
-        frame.shadows = settings.shadows;
-        frame.ambient = settings.ambient.value_or(frame.ambient);
-        ambientGiven = settings.ambient.has_value();
-        environment = settings.environment.value_or(environment);
-        frame.maxAnisotropy = settings.anisotropy.value_or(frame.maxAnisotropy);
-        frame.msaa = settings.msaa.value_or(frame.msaa);
-        frame.shadowPath = settings.shadowPath.value_or(frame.shadowPath);
-    }
-    if (!options.shadowPath.empty())
-        frame.shadowPath = parseShadowPath(options.shadowPath).value();
-    if (!options.ambient.empty())
-        frame.ambient = parseAmbientOption(options.ambient).value();
-    frame.maxAnisotropy = options.anisotropy.value_or(frame.maxAnisotropy);
-    frame.msaa = options.msaa.value_or(frame.msaa);
-    const bool environmentFlag = !options.environment.empty();
-    if (environmentFlag)
-        environment.source = options.environment;
-    environment.intensity = options.environmentIntensity.value_or(environment.intensity);
-    environment.rotation = options.environmentRotation.value_or(environment.rotation);
+    frame.shadows = settings.shadows;
+    frame.ambient = settings.ambient;
+    frame.maxAnisotropy = settings.anisotropy;
+    frame.msaa = settings.msaa;
+    frame.shadowPath = settings.shadowPath;
+    const bool environmentFlag = options.settingsFields.contains("environment.source");
     frame.environment =
-        environmentOf(environment.source, isGltfPath(options.scene) && !ambientGiven, environment.intensity,
-                      environment.rotation,
+        environmentOf(settings.environment.source, isGltfPath(options.scene) && !ambientGiven,
+                      settings.environment.intensity, settings.environment.rotation,
                       environmentFlag ? "--environment" : fmt::format("{}: environment.source", options.settings));
-    applySettingsFieldValues(frame.shadows, options.settingsFields);
-    applyBake(options, frame.shadows);
     return frame;
 }
 

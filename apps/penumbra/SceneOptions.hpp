@@ -16,10 +16,10 @@
 namespace penumbra::apps {
 
 // What to render, shared by `render`, `parity`, `truth` and `bench --scene`: --scene, --lights, --camera, --light,
-// --default-lights, --missing-textures, --ambient, --environment, --environment-intensity, --environment-rotation,
-// --anisotropy, --normal-bias-side, --settings, --size, --prepass, --instancing, --msaa, --shadow-path, --filter,
-// --light-size, --dynamic, --moving-cars, --light-static-map, --baked, --time, --animation, and the shadow settings
-// fields' own options (addSettingsFieldOptions: --projection, --static-maps, --realtime-casters).
+// --default-lights, --missing-textures, --ambient, --normal-bias-side, --settings, --size, --prepass, --instancing,
+// --filter, --light-size, --dynamic, --moving-cars, --light-static-map, --baked, --time, --animation, and the settings
+// fields' own options (addSettingsFieldOptions: --environment, --anisotropy, --msaa, --shadow-path, --projection,
+// --static-maps, ...).
 struct SceneOptions {
     std::string scene = "test";
     std::optional<std::uint32_t> localLights; // --lights N: the scene's first N local lights (keepFirstLocalLights)
@@ -29,11 +29,6 @@ struct SceneOptions {
     std::string defaultLights = "auto";
     std::string missingTextures = "fail"; // a glTF texture whose image cannot be read: "fail" or "stand-in"
     std::string ambient; // kAmbientSyntax; empty: the settings file's, or render::AmbientLight's default
-    // kEnvironmentSyntax, its intensity and rotation in degrees; empty: the settings file's, or auto, 1 and 0.
-    std::string environment;
-    std::optional<float> environmentIntensity;
-    std::optional<float> environmentRotation;
-    std::optional<float> anisotropy; // empty: the settings file's, or FrameDesc's default
     std::string normalBiasSide; // "receiver" or "caster" for every light; empty: each light's own
     std::string settings;
     // Without --settings: "scene" fits the shadow distance to the scene and takes kSceneAtlasSize atlases
@@ -42,8 +37,6 @@ struct SceneOptions {
     std::string size = "1280x720";
     std::string prepass = "on"; // render::FrameDesc::depthPrepass
     std::string instancing = "on"; // render::FrameDesc::instancedDraws
-    std::optional<std::uint32_t> msaa; // render::FrameDesc::msaa; empty: the settings file's, or 1
-    std::string shadowPath; // kShadowPathNames (render::FrameDesc::shadowPath); empty: the settings file's, or forward
     std::string filter; // shadows::filterFromCommandName; empty: each light's own
     std::optional<float> lightSize; // every light's source size; nullopt: each light's own
     std::vector<std::string> dynamicObjects; // objects made dynamic (scene::Mobility), by name
@@ -53,21 +46,11 @@ struct SceneOptions {
     std::vector<std::string> lightStaticMaps; // NAME=MODE: a light's own static map mode (applyLightShadowUpdate)
     std::vector<std::string>
         lightShadowResolutions; // NAME=N: a light's own shadow tile size (applyLightShadowResolution)
-    SettingsFieldValues settingsFields; // shadow settings fields given by their options; the rest: the file's
+    SettingsFieldValues settingsFields; // settings fields given by their options; the rest: the file's
     std::string baked; // a `penumbra bake` folder: static maps from it; empty: none
     std::optional<float> time; // seconds into the animation (scene::poseScene); empty: the rest pose
     std::string animation; // a glTF animation's name or index; empty: the first, when --time is given
 };
-
-// --anisotropy's check, for every command that takes it: a number from 1 (off) to kMaxAnisotropyOption.
-CLI::Validator anisotropyValidator();
-
-// --msaa's check, for every command that takes it: a count of kMsaaCounts.
-CLI::Validator msaaValidator();
-
-// --shadow-path's check and help, for every command that takes it: one of kShadowPathNames.
-CLI::Validator shadowPathValidator();
-std::string shadowPathHelp();
 
 // --filter's check, for every command that takes it: a shadows::filterFromCommandName name.
 CLI::Validator filterValidator();
@@ -93,9 +76,8 @@ std::optional<shadows::StaticShadowBake> loadBake(const SceneOptions& options);
 // rhi::Error for --realtime-casters all with --baked.
 void applyBake(const SceneOptions& options, shadows::ShadowSettings& shadows);
 
-// Size, shadow settings, ambient light, anisotropy, MSAA and shadow path of the frame (--ambient, --anisotropy, --msaa
-// and --shadow-path over the settings file's "ambient", "anisotropy", "msaa" and "shadowPath"); throws
-// rhi::Error naming the settings file and field.
+// Size, shadow settings, ambient light, environment, anisotropy, MSAA and shadow path of the frame (--ambient and the
+// settings fields' options over the settings file's fields); throws rhi::Error naming the settings file and field.
 // Without a settings file the shadows follow --shadow-defaults: sceneShadowSettings(scene) or the documents'.
 render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& scene);
 

@@ -5,6 +5,7 @@
 #include "Commands.hpp"
 #include "RenderSettings.hpp"
 #include "SceneOptions.hpp"
+#include "SettingsFieldOptions.hpp"
 #include "ShadowScene.hpp"
 #include "Viewer.hpp"
 
@@ -60,21 +61,6 @@ void addViewCommand(CLI::App& app)
     view->add_flag("!--no-ui", options->ui, "Hide the settings panel");
     view->add_flag("--cascade-view", options->cascadeView, "Start with the cascade view");
     view->add_flag("--atlas-overlay", options->atlasOverlay, "Start with the shadow atlas overlay");
-    view->add_option("--anisotropy", options->maxAnisotropy,
-                     fmt::format("Most anisotropic filtering of textures, 1 (off) to {}; more than the device "
-                                 "allows is lowered to its limit",
-                                 kMaxAnisotropyOption))
-        ->check(anisotropyValidator())
-        ->capture_default_str();
-    view->add_option("--msaa", options->msaa,
-                     "Samples per pixel of the lit pass: 1 (off), 2, 4 or 8, as the device offers them")
-        ->check(msaaValidator())
-        ->capture_default_str();
-    view->add_option_function<std::string>(
-            "--shadow-path",
-            [options](const std::string& name) { options->shadowPath = parseShadowPath(name).value(); },
-            shadowPathHelp())
-        ->check(shadowPathValidator());
     addValidateFlag(*view, options->validate);
     view->add_option("--filter", options->filter,
                      fmt::format("Every light's shadow filter: {}", shadows::filterCommandNames()))
@@ -89,21 +75,24 @@ void addViewCommand(CLI::App& app)
             "Static shadow maps from this `penumbra bake` folder; the viewer stops with the bake's message when "
             "the scene, a light or the static settings no longer match it")
         ->check(CLI::ExistingDirectory);
-    auto environment = std::make_shared<EnvironmentSetting>();
-    view->add_option("--environment", environment->source,
-                     fmt::format("Image-based lighting: {} (as render's --environment); default auto",
-                                 kEnvironmentSyntax));
-    view->add_option("--environment-intensity", environment->intensity, "Multiplier of the environment's radiance")
-        ->check(CLI::Range(0.0f, render::kMaxEnvironmentIntensity))
-        ->capture_default_str();
-    view->add_option("--environment-rotation", environment->rotation,
-                     "Turns the environment about +y by this many degrees")
-        ->check(CLI::Range(-360.0f, 360.0f))
-        ->capture_default_str();
-    view->callback([options, environment] {
+    view->callback([options] {
+        // The render-level fields set the viewer's options; the shadow settings' go on to the viewer, which sets
+        // them over the settings it fits to the scene.
+        RenderSettings render;
+        SettingsFieldValues shadowFields;
+        for (const auto& [path, text] : options->settingsFields)
+            if (isRenderLevelField(path))
+                renderSettingsTable().set(render, path, text);
+            else
+                shadowFields.emplace(path, text);
+        options->settingsFields = std::move(shadowFields);
+        options->maxAnisotropy = render.anisotropy;
+        options->msaa = render.msaa;
+        options->shadowPath = render.shadowPath;
         const std::string extension = std::filesystem::path(options->scene).extension().string();
-        options->environment = environmentOf(environment->source, extension == ".gltf" || extension == ".glb",
-                                             environment->intensity, environment->rotation, "--environment");
+        options->environment =
+            environmentOf(render.environment.source, extension == ".gltf" || extension == ".glb",
+                          render.environment.intensity, render.environment.rotation, "--environment");
         viewer::runViewer(*options);
     });
 }

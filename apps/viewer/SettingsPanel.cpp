@@ -1,3 +1,4 @@
+#include "RenderSettings.hpp"
 #include "ViewState.hpp"
 
 #include "penumbra/rhi/Format.hpp"
@@ -37,9 +38,14 @@ std::array<const char*, shadows::kShadowFilterCount> filterNames()
 
 bool filterCombo(const char* label, shadows::ShadowFilter& filter) { return enumCombo(label, filter, filterNames()); }
 
-// A settings field's control is written from its entry in shadows::shadowSettingsFields(): the label is the path's
-// last name in words ("soft.blockerSearchScale": "blocker search scale"), the range or the names are the field's,
-// and its summary shows while the pointer is on it.
+// A settings field's control is written from its entry in apps::renderSettingsTable() (the render-level fields and
+// the shadow settings'): the label is the path's last name in words ("soft.blockerSearchScale": "blocker search
+// scale"), the range or the names are the field's, and its summary shows while the pointer is on it.
+const settings::SettingsFieldInfo& settingsFieldAt(std::string_view path)
+{
+    return apps::renderSettingsTable().field(path);
+}
+
 std::string labelOf(std::string_view path)
 {
     std::string label;
@@ -54,7 +60,7 @@ std::string labelOf(std::string_view path)
     return label;
 }
 
-void summaryTooltip(const shadows::ShadowSettingsField& field)
+void summaryTooltip(const settings::SettingsFieldInfo& field)
 {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s", std::string(field.summary).c_str());
@@ -79,7 +85,7 @@ bool indexCombo(const char* label, std::size_t& index, const std::vector<std::st
 template <typename Enum>
 bool fieldCombo(std::string_view path, Enum& value)
 {
-    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    const settings::SettingsFieldInfo& field = settingsFieldAt(path);
     std::vector<std::string> names;
     for (std::size_t start = 0; start <= field.allowed.size();) {
         const std::size_t end = std::min(field.allowed.find(", ", start), field.allowed.size());
@@ -96,7 +102,7 @@ bool fieldCombo(std::string_view path, Enum& value)
 
 bool fieldSlider(std::string_view path, float& value)
 {
-    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    const settings::SettingsFieldInfo& field = settingsFieldAt(path);
     const bool changed = ImGui::SliderFloat(labelOf(path).c_str(), &value, static_cast<float>(field.range.low),
                                             static_cast<float>(field.range.high));
     summaryTooltip(field);
@@ -105,7 +111,7 @@ bool fieldSlider(std::string_view path, float& value)
 
 bool fieldSlider(std::string_view path, std::uint32_t& value)
 {
-    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    const settings::SettingsFieldInfo& field = settingsFieldAt(path);
     int v = static_cast<int>(value);
     const bool changed = ImGui::SliderInt(labelOf(path).c_str(), &v, static_cast<int>(field.range.low),
                                           static_cast<int>(field.range.high));
@@ -116,11 +122,11 @@ bool fieldSlider(std::string_view path, std::uint32_t& value)
 }
 
 // A field whose range spans decades (a constant depth bias, 0 to a million steps): the slider moves logarithmically.
-bool fieldLogSlider(std::string_view path, float& value)
+bool fieldLogSlider(std::string_view path, float& value, const char* format = "%.0f")
 {
-    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    const settings::SettingsFieldInfo& field = settingsFieldAt(path);
     const bool changed = ImGui::SliderFloat(labelOf(path).c_str(), &value, static_cast<float>(field.range.low),
-                                            static_cast<float>(field.range.high), "%.0f", ImGuiSliderFlags_Logarithmic);
+                                            static_cast<float>(field.range.high), format, ImGuiSliderFlags_Logarithmic);
     summaryTooltip(field);
     return changed;
 }
@@ -128,7 +134,7 @@ bool fieldLogSlider(std::string_view path, float& value)
 // The powers of two of the field's range.
 bool fieldPowerOfTwo(std::string_view path, std::uint32_t& value)
 {
-    const shadows::ShadowSettingsField& field = shadows::shadowSettingsField(path);
+    const settings::SettingsFieldInfo& field = settingsFieldAt(path);
     std::vector<std::string> names;
     std::size_t index = names.size();
     for (auto size = static_cast<std::uint32_t>(field.range.low); size <= field.range.high; size *= 2) {
@@ -174,7 +180,7 @@ bool sampleCountCombo(std::string_view path, std::uint32_t& count)
         names.push_back(std::to_string(offered));
     }
     const bool changed = indexCombo(labelOf(path).c_str(), index, names);
-    summaryTooltip(shadows::shadowSettingsField(path));
+    summaryTooltip(settingsFieldAt(path));
     if (changed)
         count = shadows::kPoissonSampleCounts[index];
     return changed;
@@ -209,13 +215,13 @@ bool atlasFormatCombo(rhi::Format& format)
     return changed;
 }
 
-// The widgets' ranges and names are the settings fields' (shadows::shadowSettingsFields()); values typed in
+// The widgets' ranges and names are the settings fields' (settingsFieldAt); values typed in
 // (ctrl+click) may leave a range, and validation then reports the field.
 bool shadowSettings(shadows::ShadowSettings& s)
 {
     bool changed = false;
     // Above its lower bound, the shadow distance drags as far as a kilometre.
-    const shadows::ShadowSettingsField& maxDistance = shadows::shadowSettingsField("maxDistance");
+    const settings::SettingsFieldInfo& maxDistance = settingsFieldAt("maxDistance");
     changed |= ImGui::DragFloat(labelOf(maxDistance.path).c_str(), &s.maxDistance, 0.5f,
                                 static_cast<float>(maxDistance.range.low), 1000.0f);
     summaryTooltip(maxDistance);
@@ -226,7 +232,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= atlasFormatCombo(d.atlasFormat);
     changed |= filterCombo("filter", d.filter);
     changed |= fieldSlider("directional.cascadeCount", d.cascadeCount);
-    const shadows::ShadowSettingsField& ratios = shadows::shadowSettingsField("directional.cascadeRatios");
+    const settings::SettingsFieldInfo& ratios = settingsFieldAt("directional.cascadeRatios");
     changed |= ImGui::SliderFloat3(labelOf(ratios.path).c_str(), &d.cascadeRatios.x,
                                    static_cast<float>(ratios.range.low), static_cast<float>(ratios.range.high));
     summaryTooltip(ratios);
@@ -396,12 +402,14 @@ bool objectSettings(std::vector<ObjectShadowState>& objects, const scene::Scene&
     return changed;
 }
 
-// One radio button per sample count the device offers the lit pass.
+// One radio button per sample count of the msaa field that the device offers the lit pass.
 bool msaaChoice(std::uint32_t& msaa, std::uint32_t offered)
 {
+    const settings::SettingsFieldInfo& field = settingsFieldAt("msaa");
     bool changed = false;
     ImGui::TextUnformatted("MSAA");
-    for (std::uint32_t count = 1; count <= 8; count *= 2) {
+    for (const double listed : field.listed) {
+        const auto count = static_cast<std::uint32_t>(listed);
         if ((offered & count) == 0)
             continue;
         ImGui::SameLine();
@@ -411,23 +419,25 @@ bool msaaChoice(std::uint32_t& msaa, std::uint32_t offered)
             changed = true;
         }
     }
+    summaryTooltip(field);
     return changed;
 }
 
-// Forward or screen-space directional shadows (render::FrameDesc::shadowPath).
+// The shadowPath field's names (render::FrameDesc::shadowPath), a radio button each.
 bool shadowPathChoice(render::ShadowPath& path)
 {
+    const settings::SettingsFieldInfo& field = settingsFieldAt("shadowPath");
     ImGui::TextUnformatted("directional shadows");
     int value = static_cast<int>(path);
     bool changed = false;
-    for (const auto& [choice, label] : {std::pair{render::ShadowPath::Forward, "forward"},
-                                        std::pair{render::ShadowPath::ScreenSpace, "screen-space"}}) {
+    for (const settings::SettingName& entry : field.names) {
         ImGui::SameLine();
-        if (ImGui::RadioButton(label, &value, static_cast<int>(choice))) {
-            path = choice;
+        if (ImGui::RadioButton(std::string(entry.name).c_str(), &value, entry.value)) {
+            path = static_cast<render::ShadowPath>(entry.value);
             changed = true;
         }
     }
+    summaryTooltip(field);
     return changed;
 }
 
@@ -459,12 +469,13 @@ bool drawSettingsPanel(ViewState& state, const PanelStatus& status, const scene:
     changed |= ImGui::Checkbox("cascade view", &state.cascadeView);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("atlas overlay", &state.atlasOverlay);
-    changed |= ImGui::SliderFloat("texture anisotropy", &state.maxAnisotropy, 1.0f, 16.0f, "%.0f");
+    changed |= fieldSlider("anisotropy", state.maxAnisotropy);
     changed |= msaaChoice(state.msaa, status.msaaCounts);
     changed |= shadowPathChoice(state.shadowPath);
     if (state.hasEnvironment) {
-        changed |= ImGui::SliderFloat("environment intensity", &state.environmentIntensity, 0.0f, 4.0f, "%.2f");
-        changed |= ImGui::SliderFloat("environment rotation", &state.environmentRotation, -180.0f, 180.0f, "%.0f deg");
+        ImGui::TextUnformatted("environment");
+        changed |= fieldLogSlider("environment.intensity", state.environmentIntensity, "%.2f");
+        changed |= fieldSlider("environment.rotation", state.environmentRotation);
     }
     if (ImGui::CollapsingHeader("shadows", ImGuiTreeNodeFlags_DefaultOpen)) {
         changed |= shadowSettings(state.shadows);

@@ -94,9 +94,14 @@ void setClusterView(LitFrameUniforms& u, const shadows::ShadowCamera& camera, co
 {
     // As buildLightClusters' view frame.
     const float tanHalf = std::tan(0.5f * camera.fovY);
-    u.cameraRight = glm::vec4(glm::normalize(glm::cross(camera.forward, camera.up)), camera.aspect * tanHalf);
-    u.cameraUp = glm::vec4(camera.up, tanHalf);
-    u.clusterSlices = {grid.nearPlane, grid.farPlane, grid.sliceScale, grid.sliceBias};
+    u.cameraRight = glm::normalize(glm::cross(camera.forward, camera.up));
+    u.tanHalfFovX = camera.aspect * tanHalf;
+    u.cameraUp = camera.up;
+    u.tanHalfFovY = tanHalf;
+    u.clusterNear = grid.nearPlane;
+    u.clusterFar = grid.farPlane;
+    u.clusterSliceScale = grid.sliceScale;
+    u.clusterSliceBias = grid.sliceBias;
 }
 
 LocalLightTextures::LocalLightTextures(rhi::Device& device)

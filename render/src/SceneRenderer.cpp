@@ -164,8 +164,10 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     u.ambientGround = glm::vec4(frame.ambient.below(), 0.0f);
     if (environment_->present()) {
         const float turn = glm::radians(frame.environment.rotationDegrees);
-        u.environment =
-            glm::vec4(std::cos(turn), std::sin(turn), float(kEnvironmentLevels - 1), frame.environment.intensity);
+        u.environmentCos = std::cos(turn);
+        u.environmentSin = std::sin(turn);
+        u.environmentLastLevel = float(kEnvironmentLevels - 1);
+        u.environmentIntensity = frame.environment.intensity;
         for (std::size_t i = 0; i < u.environmentSh.size(); ++i)
             u.environmentSh[i] = glm::vec4(environment_->diffuse()[i], 0.0f);
     }

@@ -56,16 +56,24 @@ struct LitFrameUniforms {
     std::int32_t localLightCount = 0;
     std::int32_t visibilityLight = 0; // LitView::Visibility's light: directional lights first, then spot and point
     // The camera's view frame as shadows::buildLightClusters cuts it into clusters: its x and y axes (unit, world
-    // space) with w = the tangent of the half field of view along that axis; slices = near plane, far plane,
-    // LightClusterUniforms::sliceScale and sliceBias.
-    glm::vec4 cameraRight{0.0f};
-    glm::vec4 cameraUp{0.0f};
-    glm::vec4 clusterSlices{0.0f};
+    // space), each with the tangent of the half field of view along it, and the slices' near and far planes, scale
+    // and bias (shadows::LightClusterUniforms).
+    alignas(16) glm::vec3 cameraRight{0.0f};
+    float tanHalfFovX = 0.0f;
+    alignas(16) glm::vec3 cameraUp{0.0f};
+    float tanHalfFovY = 0.0f;
+    float clusterNear = 0.0f;
+    float clusterFar = 0.0f;
+    float clusterSliceScale = 0.0f;
+    float clusterSliceBias = 0.0f;
     glm::vec4 ambientGround{0.0f}; // linear rgb from below (the hemisphere's ground; = ambient without one)
-    // Image-based lighting (shaders/environment_light.glsl): x, y = cosine and sine of the rotation about +y, z = the
-    // specular chain's last level (0: no environment, the ambient light instead), w = intensity; and the diffuse
+    // Image-based lighting (shaders/environment_light.glsl): the cosine and sine of the rotation about +y, the
+    // specular chain's last level (0: no environment, the ambient light instead), the intensity; and the diffuse
     // coefficients (diffuseShaderCoefficients, at intensity 1).
-    glm::vec4 environment{0.0f};
+    float environmentCos = 0.0f;
+    float environmentSin = 0.0f;
+    float environmentLastLevel = 0.0f;
+    float environmentIntensity = 0.0f;
     std::array<glm::vec4, 9> environmentSh{};
 };
 
@@ -120,10 +128,18 @@ inline constexpr std::array kLitFrameFields{
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, localLightCount),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, visibilityLight),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraRight),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, tanHalfFovX),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, cameraUp),
-    PENUMBRA_SHADER_FIELD(LitFrameUniforms, clusterSlices),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, tanHalfFovY),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, clusterNear),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, clusterFar),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, clusterSliceScale),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, clusterSliceBias),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, ambientGround),
-    PENUMBRA_SHADER_FIELD(LitFrameUniforms, environment),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, environmentCos),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, environmentSin),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, environmentLastLevel),
+    PENUMBRA_SHADER_FIELD(LitFrameUniforms, environmentIntensity),
     PENUMBRA_SHADER_FIELD(LitFrameUniforms, environmentSh),
 };
 // lit.glsl's block Frame, read through the instance name `frame`.

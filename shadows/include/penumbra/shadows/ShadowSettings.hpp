@@ -1,11 +1,11 @@
 #pragma once
 
 #include "penumbra/rhi/Format.hpp"
+#include "penumbra/settings/SettingsTable.hpp"
 #include "penumbra/shadows/LightVocabulary.hpp"
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <span>
@@ -215,44 +215,14 @@ inline bool culledOnGpu(const ShadowSettings& settings)
     return settings.culling == CasterCullingMode::Gpu && settings.staticMaps.realtimeCasters == RealtimeCasters::All;
 }
 
-// How a settings field's values are bounded: by the names its `allowed` text lists (enums, depth formats, sample
-// counts), a closed range low..high, the powers of two in low..high, or anything above low.
-enum class SettingRangeKind { Listed, Closed, PowersOfTwo, Above };
-struct SettingRange {
-    SettingRangeKind kind = SettingRangeKind::Listed;
-    double low = 0.0;
-    double high = 0.0;
-};
-// Whether `value` is in the range, compared as the float fields hold it; NaN never is. A Listed range leaves the
-// check to the field's names (true).
-bool withinRange(const SettingRange& range, double value);
-
-// One field of the settings, declared once: its path in the JSON ("directional.cascadeCount"; the "static" object
-// is ShadowSettings::staticMaps), its range, the values it allows as messages, help and docs state them (written
-// from the range where it is numeric), what it does in a line, and the option of the penumbra tool that sets it over
-// a settings file ("--projection"; empty for none). Its default is ShadowSettings{}'s (settingsFieldText).
-// shadowSettingsFields() lists every field in toJson's order; validate(), the settings reference (`penumbra settings
+// Each field of ShadowSettings declared once (ShadowSettingsTable.cpp): its path in the JSON
+// ("directional.cascadeCount"; the "static" object is ShadowSettings::staticMaps), its range, the values it allows as
+// messages, help and docs state them, what it does in a line, and the option of the penumbra tool that sets it over a
+// settings file ("--projection"; empty for none); its default is ShadowSettings{}'s. The fields are in the settings
+// file's order; validate(), the settings file (ShadowSettingsJson.hpp), the settings reference (`penumbra settings
 // --markdown`, docs/settings.md), the tool's options and the viewer's controls take their ranges and words from it.
-//
-// The field's value moves in and out of a ShadowSettings through `get` and `set` as numbers: one, three for
-// cascadeRatios, an enum's value for a field of names. The settings file writes it as its kind says, a field of
-// names by its entry in `names` (the only place the enums' names are stated; `allowed` lists them).
-enum class SettingValueKind { Number, Integer, Numbers3, Name };
-struct SettingName {
-    int value; // the enum's value
-    std::string_view name;
-};
-struct ShadowSettingsField {
-    std::string_view path;
-    SettingRange range;
-    std::string allowed;
-    std::string_view summary;
-    std::string_view flag;
-    SettingValueKind kind = SettingValueKind::Number;
-    std::vector<SettingName> names;
-    std::function<std::vector<double>(const ShadowSettings&)> get;
-    std::function<void(ShadowSettings&, std::span<const double>)> set;
-};
+using ShadowSettingsField = settings::SettingsField<ShadowSettings>;
+const settings::SettingsTable<ShadowSettings>& shadowSettingsTable();
 std::span<const ShadowSettingsField> shadowSettingsFields();
 // The field of that path; throws rhi::Error naming the path where no field has it.
 const ShadowSettingsField& shadowSettingsField(std::string_view path);
