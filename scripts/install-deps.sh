@@ -9,7 +9,7 @@ packages=(
   glslang-dev glslang-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libglm-dev libtinygltf-dev libopenexr-dev
   libstb-dev libfmt-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev zlib1g-dev
-  libimgui-dev xvfb xauth doxygen clang-format clang-tidy
+  libimgui-dev xvfb xauth doxygen clang-format clang-tidy python3
 )
 
 # The Khronos glTF Validator, the loader tests' oracle (tests/scene/GltfValidatorTest.cpp), from npm.

@@ -207,7 +207,7 @@ std::string staticMapsMode(const render::FrameDesc& frame, const SceneBenchOptio
 }
 
 // --lights N, or null: the scene's own local lights.
-nlohmann::json lightsOf(const SceneBenchOptions& options)
+nlohmann::json benchLightsOf(const SceneBenchOptions& options)
 {
     return options.scene.localLights ? nlohmann::json(*options.scene.localLights) : nlohmann::json();
 }
@@ -222,7 +222,7 @@ nlohmann::json toJson(const ConfigurationResult& r, const SceneBenchOptions& opt
     }
     return {{"configuration", r.configuration},
             {"scene", options.scene.scene},
-            {"lights", lightsOf(options)},
+            {"lights", benchLightsOf(options)},
             {"width", frame.width},
             {"height", frame.height},
             {"frames", options.frames},

@@ -20,7 +20,7 @@ namespace penumbra::apps {
 namespace {
 
 // "1280x720" -> width and height; an error message for CLI11 otherwise.
-std::string parseSize(const std::string& text, viewer::ViewerOptions& options)
+std::string parseWindowSize(const std::string& text, viewer::ViewerOptions& options)
 {
     const std::size_t x = text.find('x');
     const auto number = [](std::string_view digits, std::uint32_t& value) {
@@ -50,7 +50,7 @@ void addViewCommand(CLI::App& app)
     view->add_option_function<std::string>(
         "--size",
         [options](const std::string& text) {
-            if (const std::string error = parseSize(text, *options); !error.empty())
+            if (const std::string error = parseWindowSize(text, *options); !error.empty())
                 throw CLI::ValidationError("--size", error);
         },
         "Window size WIDTHxHEIGHT in pixels (default 1280x720)");

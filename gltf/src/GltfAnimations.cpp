@@ -9,11 +9,12 @@
 namespace penumbra::gltf {
 namespace {
 
-constexpr std::array<int, 1> kFloatOnly{TINYGLTF_COMPONENT_TYPE_FLOAT};
+constexpr std::array<int, 1> kAnimationFloat{TINYGLTF_COMPONENT_TYPE_FLOAT};
 // glTF 2.0 section 3.11, table "animation.sampler.output": rotations and weights may be normalized integers.
-constexpr std::array<int, 5> kFloatOrNormalized{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
-                                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
-                                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
+constexpr std::array<int, 5> kAnimationFloatOrNormalized{TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE,
+                                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                                         TINYGLTF_COMPONENT_TYPE_SHORT,
+                                                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT};
 
 std::optional<scene::AnimatedPath> pathOf(const std::string& path)
 {
@@ -98,7 +99,7 @@ private:
         scene::Keyframes keys;
         keys.width = std::uint32_t(width);
         keys.interpolation = interpolationOf(sampler.interpolation);
-        keys.times = readComponents(document_, sampler.input, where, "input", TINYGLTF_TYPE_SCALAR, kFloatOnly);
+        keys.times = readComponents(document_, sampler.input, where, "input", TINYGLTF_TYPE_SCALAR, kAnimationFloat);
         // glTF 2.0 section 3.11: times are seconds, time[0] >= 0 and strictly increasing.
         for (std::size_t k = 0; k < keys.times.size(); ++k) {
             if (keys.times[k] < 0.0f)
@@ -116,8 +117,9 @@ private:
                          : path == scene::AnimatedPath::Rotation ? TINYGLTF_TYPE_VEC4
                                                                  : TINYGLTF_TYPE_VEC3;
         const bool integers = path == scene::AnimatedPath::Weights || path == scene::AnimatedPath::Rotation;
-        keys.values = integers ? readComponents(document_, sampler.output, where, "output", type, kFloatOrNormalized)
-                               : readComponents(document_, sampler.output, where, "output", type, kFloatOnly);
+        keys.values =
+            integers ? readComponents(document_, sampler.output, where, "output", type, kAnimationFloatOrNormalized)
+                     : readComponents(document_, sampler.output, where, "output", type, kAnimationFloat);
         const std::size_t expected = keys.times.size() * width * (cubic ? 3 : 1);
         if (keys.values.size() != expected)
             document_.fail(fmt::format("{}: accessor {} (output) has {} components, expected {} ({} keys x {}{})",

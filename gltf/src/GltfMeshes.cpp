@@ -35,7 +35,7 @@ std::string modeName(int mode)
     return fmt::format("{}", mode);
 }
 
-int attribute(const tinygltf::Primitive& primitive, const std::string& name)
+int primitiveAttribute(const tinygltf::Primitive& primitive, const std::string& name)
 {
     const auto found = primitive.attributes.find(name);
     return found == primitive.attributes.end() ? -1 : found->second;
@@ -71,7 +71,7 @@ scene::MeshData readPrimitive(const Document& document, int meshIndex, int primi
         fmt::format("{} primitive {}", describe("mesh", meshIndex, gltfMesh.name), primitiveIndex);
     if (primitive.mode != -1 && primitive.mode != kTriangles)
         document.fail(fmt::format("{}: mode {} is not supported, only TRIANGLES", owner, modeName(primitive.mode)));
-    const int positionAccessor = attribute(primitive, "POSITION");
+    const int positionAccessor = primitiveAttribute(primitive, "POSITION");
     if (positionAccessor < 0)
         document.fail(fmt::format("{}: has no POSITION attribute", owner));
 
@@ -96,7 +96,7 @@ scene::MeshData readPrimitive(const Document& document, int meshIndex, int primi
     };
     // Reads the attribute `semantic`, if the primitive has it, into each vertex with `store`.
     const auto readAttribute = [&](const std::string& semantic, auto read, auto store) {
-        const int accessor = attribute(primitive, semantic);
+        const int accessor = primitiveAttribute(primitive, semantic);
         if (accessor < 0)
             return false;
         const auto values = read(document, accessor, owner, semantic);

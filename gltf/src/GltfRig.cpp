@@ -100,8 +100,9 @@ std::vector<scene::Skin> readSkins(const Document& document, const std::vector<s
         }
         out.inverseBind.assign(out.joints.size(), glm::mat4(1.0f));
         if (skin.inverseBindMatrices >= 0) {
-            const std::vector<float> values = readComponents(document, skin.inverseBindMatrices, owner,
-                                                             "inverseBindMatrices", TINYGLTF_TYPE_MAT4, kFloatComponent);
+            const std::vector<float> values =
+                readComponents(document, skin.inverseBindMatrices, owner, "inverseBindMatrices", TINYGLTF_TYPE_MAT4,
+                               kFloatComponent);
             const std::size_t count = values.size() / 16;
             if (count < out.joints.size())
                 document.fail(fmt::format("{}: accessor {} (inverseBindMatrices) has {} elements but the skin has {} "

@@ -158,8 +158,6 @@ bool indexedSemantic(const std::string& semantic)
            semantic == "POSITION" || semantic == "NORMAL" || semantic == "TANGENT";
 }
 
-const Json& accessorJson(const JsonFile& file, int index) { return file.root["accessors"][std::size_t(index)]; }
-
 void checkAttributeFormat(const JsonFile& file, const Fields& attributes, const std::string& semantic, int index)
 {
     const Json& accessor = accessorJson(file, index);
@@ -360,5 +358,7 @@ void checkSchema(const JsonFile& file)
     checkNodes(file, root, usage);
     checkSkinsAndAnimations(file);
 }
+
+const Json& accessorJson(const JsonFile& file, int index) { return file.root["accessors"][std::size_t(index)]; }
 
 } // namespace penumbra::gltf

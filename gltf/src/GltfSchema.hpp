@@ -26,6 +26,9 @@ std::size_t componentCount(const std::string& type);
 // pointer of the first offending value.
 void checkSchema(const JsonFile& file);
 
+// The JSON of accessor `index` (an index the schema has checked).
+const Json& accessorJson(const JsonFile& file, int index);
+
 // What each accessor is used as ("vertex attribute", "indices", "instance attribute"): one accessor serves one use.
 using AccessorUsage = std::map<int, std::string>;
 

@@ -5,8 +5,6 @@
 namespace penumbra::gltf {
 namespace {
 
-const Json& accessorJson(const JsonFile& file, int index) { return file.root["accessors"][std::size_t(index)]; }
-
 // Accessor `index` read through `owner`'s `key` is of `type` with FLOAT components.
 void requireFloat(const JsonFile& file, const Fields& owner, std::string_view key, int index, std::string_view type)
 {

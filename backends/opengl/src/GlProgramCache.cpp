@@ -7,7 +7,7 @@
 namespace penumbra::opengl {
 namespace {
 
-constexpr std::string_view kKind = "opengl";
+constexpr std::string_view kProgramCacheKind = "opengl";
 
 std::string text(const GlFunctions& gl, GLenum name)
 {
@@ -30,19 +30,19 @@ GlProgramCache::GlProgramCache(const GlFunctions& gl, std::shared_ptr<rhi::Pipel
 
 bool GlProgramCache::load(const GlFunctions& gl, GLuint program, const std::string& key) const
 {
-    const std::optional<std::string> stored = disk_->load(kKind, identity_, key);
+    const std::optional<std::string> stored = disk_->load(kProgramCacheKind, identity_, key);
     if (!stored)
         return false;
     // The payload: the binary's format, then the binary.
     GLenum format = GL_NONE;
     if (stored->size() <= sizeof(format)) {
-        disk_->refuse(kKind, identity_, key, "no program binary after its format");
+        disk_->refuse(kProgramCacheKind, identity_, key, "no program binary after its format");
         return false;
     }
     std::memcpy(&format, stored->data(), sizeof(format));
     // A format the driver does not list would be a GL error (INVALID_ENUM) in the debug output.
     if (std::find(formats_.begin(), formats_.end(), GLint(format)) == formats_.end()) {
-        disk_->refuse(kKind, identity_, key,
+        disk_->refuse(kProgramCacheKind, identity_, key,
                       fmt::format("binary format {:#x}, which the driver does not list", format));
         return false;
     }
@@ -50,7 +50,7 @@ bool GlProgramCache::load(const GlFunctions& gl, GLuint program, const std::stri
     GLint ok = GL_FALSE;
     gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok)
-        disk_->refuse(kKind, identity_, key, "the driver refused the program binary");
+        disk_->refuse(kProgramCacheKind, identity_, key, "the driver refused the program binary");
     return ok == GL_TRUE;
 }
 
@@ -71,7 +71,7 @@ void GlProgramCache::store(const GlFunctions& gl, GLuint program, const std::str
     gl.GetProgramBinary(program, length, &written, &format, payload.data() + sizeof(format));
     std::memcpy(payload.data(), &format, sizeof(format));
     payload.resize(sizeof(format) + std::size_t(written));
-    disk_->store(kKind, identity_, key, payload, linkMs);
+    disk_->store(kProgramCacheKind, identity_, key, payload, linkMs);
 }
 
 } // namespace penumbra::opengl

@@ -28,7 +28,7 @@ void attach(const GlFunctions& gl, GLuint framebuffer, GLenum attachment, const 
         gl.NamedFramebufferTexture(framebuffer, attachment, texture.name(), 0);
 }
 
-GLenum textureTarget(const rhi::TextureDesc& desc)
+GLenum textureTargetOf(const rhi::TextureDesc& desc)
 {
     if (desc.samples > 1)
         return GL_TEXTURE_2D_MULTISAMPLE;
@@ -75,7 +75,7 @@ GlTexture::GlTexture(GlContextPtr context, const rhi::TextureDesc& desc) : conte
     context_->makeCurrent();
     const GlFunctions& gl = context_->gl();
     const GlTextureFormat format = glTextureFormat(desc.format);
-    target_ = textureTarget(desc);
+    target_ = textureTargetOf(desc);
     GLuint texture = 0;
     gl.CreateTextures(target_, 1, &texture);
     name_ = GlTextureName(*context_, texture);

@@ -9,7 +9,7 @@
 namespace penumbra::vulkan {
 namespace {
 
-constexpr std::string_view kKind = "vulkan";
+constexpr std::string_view kPipelineCacheKind = "vulkan";
 // The cache holds every pipeline of the device, so one entry per device: its key says what the data is.
 constexpr std::string_view kKey = "VkPipelineCache data";
 
@@ -49,11 +49,11 @@ VulkanPipelineCache::VulkanPipelineCache(std::shared_ptr<Context> context, std::
     identity_ = fmt::format("Vulkan {} (vendor {:#x}, device {:#x}, driver {:#x}, pipelineCacheUUID {})", p.deviceName,
                             p.vendorID, p.deviceID, p.driverVersion, uuidText(p.pipelineCacheUUID));
     if (disk_)
-        if (std::optional<std::string> stored = disk_->load(kKind, identity_, kKey)) {
+        if (std::optional<std::string> stored = disk_->load(kPipelineCacheKind, identity_, kKey)) {
             // The driver checks the header too, but a cache is never trusted: data for another device is refused
             // before the driver sees it.
             if (const std::string why = pipelineCacheDataRefusal(p, *stored); !why.empty())
-                disk_->refuse(kKind, identity_, kKey, why);
+                disk_->refuse(kPipelineCacheKind, identity_, kKey, why);
             else
                 loaded_ = std::move(*stored);
         }
@@ -72,7 +72,7 @@ VulkanPipelineCache::~VulkanPipelineCache()
     try {
         const std::string now = data();
         if (now != loaded_ && pipelineCacheDataRefusal(context_->properties, now).empty())
-            disk_->store(kKind, identity_, kKey, now, 0.0);
+            disk_->store(kPipelineCacheKind, identity_, kKey, now, 0.0);
     } catch (const std::exception& e) {
         fmt::print(stderr, "penumbra: the Vulkan pipeline cache was not stored: {}\n", e.what());
     }

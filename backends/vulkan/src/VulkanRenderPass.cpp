@@ -26,7 +26,7 @@ std::vector<std::uint32_t> flatten(const RenderPassKey& key)
     return flat;
 }
 
-VkAttachmentDescription describe(const AttachmentKey& a)
+VkAttachmentDescription describeAttachment(const AttachmentKey& a)
 {
     VkAttachmentDescription d{};
     d.format = a.format;
@@ -68,12 +68,12 @@ UniqueRenderPass RenderPassCache::create(const RenderPassKey& key) const
     std::vector<VkAttachmentReference> colorRefs;
     for (const AttachmentKey& c : key.colors) {
         colorRefs.push_back({std::uint32_t(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
-        attachments.push_back(describe(c));
+        attachments.push_back(describeAttachment(c));
     }
     const VkAttachmentReference depthRef{std::uint32_t(attachments.size()),
                                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     if (key.depth)
-        attachments.push_back(describe(*key.depth));
+        attachments.push_back(describeAttachment(*key.depth));
 
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;

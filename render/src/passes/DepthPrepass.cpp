@@ -9,7 +9,7 @@
 namespace penumbra::render {
 namespace {
 
-constexpr std::uint32_t kLocations[] = {0, 2, 3, 5}; // the mesh attributes depth_prepass.vert reads
+constexpr std::uint32_t kDepthPrepassLocations[] = {0, 2, 3, 5}; // the mesh attributes depth_prepass.vert reads
 
 std::uint32_t pipelineIndex(bool doubleSided, bool clip) { return (doubleSided ? 1u : 0u) + (clip ? 2u : 0u); }
 
@@ -38,7 +38,8 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::ui
     desc.vertexLayout = GpuScene::vertexLayout();
     std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
         return a.buffer != shadows::kInstanceSlot &&
-               std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
+               std::find(std::begin(kDepthPrepassLocations), std::end(kDepthPrepassLocations), a.location) ==
+                   std::end(kDepthPrepassLocations);
     });
     desc.depthFormat = depthFormat;
     desc.samples = samples;

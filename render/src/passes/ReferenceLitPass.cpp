@@ -13,7 +13,7 @@
 namespace penumbra::render {
 namespace {
 
-constexpr std::uint32_t kLocations[] = {0, 1, 2}; // the mesh attributes reference_lit.vert reads
+constexpr std::uint32_t kReferenceLitLocations[] = {0, 1, 2}; // the mesh attributes reference_lit.vert reads
 
 constexpr rhi::Format kColorFormat = rhi::Format::RGBA8;
 constexpr rhi::Format kDepthFormat = rhi::Format::D32F;
@@ -80,7 +80,8 @@ ReferenceLitPass::ReferenceLitPass(rhi::Device& device, const SceneRenderer& ren
     desc.vertexLayout = GpuScene::vertexLayout();
     std::erase_if(desc.vertexLayout.attributes, [](const rhi::VertexAttribute& a) {
         return a.buffer != shadows::kInstanceSlot &&
-               std::find(std::begin(kLocations), std::end(kLocations), a.location) == std::end(kLocations);
+               std::find(std::begin(kReferenceLitLocations), std::end(kReferenceLitLocations), a.location) ==
+                   std::end(kReferenceLitLocations);
     });
     desc.depthFormat = kDepthFormat;
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};

@@ -12,7 +12,7 @@
 namespace penumbra::render {
 namespace {
 
-constexpr std::uint32_t kStandInAtlasSize = 16; // no map in use
+constexpr std::uint32_t kStandInStaticAtlasSize = 16; // no map in use
 
 std::uint64_t viewKey(const shadows::StaticShadowMap& map, const shadows::ShadowAtlas& atlas)
 {
@@ -87,8 +87,9 @@ std::string mapName(const shadows::StaticShadowMap& map)
 StaticShadowCache::StaticShadowCache(rhi::Device& device, const shadows::CasterVertexFormat& vertexFormat)
     : device_(device), pass_(device, vertexFormat)
 {
-    prepareAtlas(device_, directionalAtlas_, kStandInAtlasSize, rhi::Format::D32F, "static directional shadow atlas");
-    prepareAtlas(device_, localAtlas_, kStandInAtlasSize, rhi::Format::D32F, "static local shadow atlas");
+    prepareAtlas(device_, directionalAtlas_, kStandInStaticAtlasSize, rhi::Format::D32F,
+                 "static directional shadow atlas");
+    prepareAtlas(device_, localAtlas_, kStandInStaticAtlasSize, rhi::Format::D32F, "static local shadow atlas");
 }
 
 bool StaticShadowCache::prepareAtlas(rhi::Device& device, std::unique_ptr<shadows::ShadowAtlas>& atlas,
@@ -192,7 +193,7 @@ StaticMapDraws StaticShadowCache::prepare(const shadows::ShadowSettings& setting
                                           std::span<const shadows::ShadowCaster> casters, bool requested)
 {
     const auto sizeOf = [](const shadows::ShadowAtlasLayout& layout) {
-        return layout.tileCount() > 0 ? layout.atlasSize() : kStandInAtlasSize;
+        return layout.tileCount() > 0 ? layout.atlasSize() : kStandInStaticAtlasSize;
     };
     const bool directionalNew = prepareAtlas(device_, directionalAtlas_, sizeOf(plan.directionalAtlas),
                                              settings.directional.atlasFormat, "static directional shadow atlas");

@@ -144,7 +144,8 @@ glm::uvec4 tileRange(const LightClusterUniforms& g, const ViewFrame& view, const
             tileOf(low.y, true, g.tilesY)};
 }
 
-void validate(const ShadowCamera& camera, std::span<const ClusterLight> lights, const LightClusterGridDesc& desc)
+void validateClusterInputs(const ShadowCamera& camera, std::span<const ClusterLight> lights,
+                           const LightClusterGridDesc& desc)
 {
     for (const auto& [name, value] :
          {std::pair{"tilesX", desc.tilesX}, std::pair{"tilesY", desc.tilesY}, std::pair{"slices", desc.slices}})
@@ -235,7 +236,7 @@ bool lightReaches(const ClusterLight& light, glm::vec3 world)
 LightClusterInputs lightClusterInputs(const ShadowCamera& camera, std::span<const ClusterLight> lights,
                                       const LightClusterGridDesc& desc)
 {
-    validate(camera, lights, desc);
+    validateClusterInputs(camera, lights, desc);
     LightClusterInputs in;
     LightClusterUniforms& g = in.grid;
     g.tilesX = desc.tilesX;

@@ -33,7 +33,7 @@ void checkPowerOfTwo(const char* field, std::uint32_t value, std::uint32_t low, 
                                      value, low, high));
 }
 
-void validate(const ShadowAtlasPackerSettings& s)
+void validatePackerInput(const ShadowAtlasPackerSettings& s)
 {
     checkPowerOfTwo("atlasSize", s.atlasSize, 1, 1u << 16);
     checkPowerOfTwo("maxSize", s.maxSize, 1, s.atlasSize);
@@ -42,7 +42,7 @@ void validate(const ShadowAtlasPackerSettings& s)
         throw rhi::Error(fmt::format("shadow atlas packer: hysteresis is {}, allowed 0 to 0.5 octaves", s.hysteresis));
 }
 
-void validate(std::span<const ShadowTileRequest> requests)
+void validatePackerInput(std::span<const ShadowTileRequest> requests)
 {
     std::vector<std::uint32_t> ids;
     for (std::size_t i = 0; i < requests.size(); ++i) {
@@ -220,7 +220,7 @@ void measureFreeSpace(const QuadtreeAllocator& allocator, std::uint32_t atlasSiz
 
 ShadowAtlasPacker::ShadowAtlasPacker(const ShadowAtlasPackerSettings& settings) : settings_(settings)
 {
-    validate(settings_);
+    validatePackerInput(settings_);
     allocator_ = std::make_unique<QuadtreeAllocator>(settings_.atlasSize, settings_.floorSize);
 }
 
@@ -259,7 +259,7 @@ void ShadowAtlasPacker::clear()
 
 ShadowAtlasPack ShadowAtlasPacker::pack(std::span<const ShadowTileRequest> requests)
 {
-    validate(requests);
+    validatePackerInput(requests);
     const std::size_t n = requests.size();
     std::unordered_map<std::uint32_t, std::size_t> requestOf;
     for (std::size_t i = 0; i < n; ++i)
