@@ -302,14 +302,19 @@ CascadeSplits depthFitSplits(const DepthHistogram& histogram, std::span<const st
     return splits;
 }
 
-float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps)
+float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps,
+                       bool mayFallShort)
 {
     if (stepsPerOctave == 0 || !(required > 0.0f))
         return required;
     const float step = depthFitStep(required, stepsPerOctave);
     const float fitted = std::ceil(required / step) * step;
-    if (kept && required <= *kept && required > *kept - (1.0f + hysteresisSteps) * depthFitStep(*kept, stepsPerOctave))
-        return *kept;
+    if (kept) {
+        const float keptStep = depthFitStep(*kept, stepsPerOctave);
+        const float largest = *kept + (mayFallShort ? 0.5f * hysteresisSteps * keptStep : 0.0f);
+        if (required <= largest && required > *kept - (1.0f + hysteresisSteps) * keptStep)
+            return *kept;
+    }
     return fitted;
 }
 

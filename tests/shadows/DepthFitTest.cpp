@@ -126,8 +126,11 @@ TEST(DepthFit, HalfSizeIsOnTheGridWithHysteresis)
     EXPECT_EQ(depthFitHalfSize(4.6f, 5.5f, 8, 1.0f), 5.5f);
     EXPECT_EQ(depthFitHalfSize(4.6f, 5.5f, 8, 0.0f), 5.0f);
     EXPECT_EQ(depthFitHalfSize(4.4f, 5.5f, 8, 1.0f), 4.5f);
-    // Larger than kept: grows at once, the tile must hold the footprint.
+    // Larger than kept: grows at once where the tile must hold the footprint (the last cascade's).
     EXPECT_EQ(depthFitHalfSize(5.6f, 5.5f, 8, 4.0f), 6.0f);
+    // A nearer cascade's tile may fall short by half the hysteresis: the next tile serves the samples past its edge.
+    EXPECT_EQ(depthFitHalfSize(5.7f, 5.5f, 8, 1.0f, true), 5.5f);
+    EXPECT_EQ(depthFitHalfSize(5.8f, 5.5f, 8, 1.0f, true), 6.0f);
     // Unquantized: as required.
     EXPECT_EQ(depthFitHalfSize(5.1f, 5.5f, 0, 1.0f), 5.1f);
 }

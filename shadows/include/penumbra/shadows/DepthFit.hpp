@@ -90,9 +90,13 @@ CascadeSplits depthFitSplits(const DepthHistogram& histogram, std::span<const st
                              float cameraFar, float maxDistance);
 
 // The half size of a depth-fit tile: `required` (closeFitHalfSize of its footprint) ceiled onto depthFitStep's grid
-// of light-space size at `stepsPerOctave` steps per power of two; `kept` (the last frame's) while required is at most
-// kept and more than 1 + hysteresisSteps of its steps below it, so the texel size, and with it every texel, holds
-// still while the footprint barely changes. stepsPerOctave 0: required, unquantized.
-float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps);
+// of light-space size at `stepsPerOctave` steps per power of two; `kept` (the last frame's) while required is more than
+// 1 + hysteresisSteps of its steps below it and at most kept, so the texel size, and with it every texel, holds still
+// while the footprint barely changes. `mayFallShort` (every cascade but the last): kept also while required is at
+// most half of hysteresisSteps steps above it, for map-based selection serves the few samples past a tile's edge from
+// the next tile; without it a footprint fitted just below a grid line moves every texel of its tile when it grows
+// by a texel. stepsPerOctave 0: required, unquantized.
+float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps,
+                       bool mayFallShort = false);
 
 } // namespace penumbra::shadows
