@@ -20,8 +20,8 @@ float fadedShadowStrength(float distance, float scale, float fade)
     return clamp((1.0 - distance * scale) * fade, 0.0, 1.0);
 }
 
-// Depth fit's tiles hold the surfaces seen, not a region of space: the point's distance in texels inside the first
-// shadowed light's tile `tile`, less the filter's reach (cascade.normalBias over the texel size is the filter-sized
+// Depth fit's tiles hold the surfaces seen, not a region of space: the point's distance in texels inside the light's
+// tile `tile`, less the filter's reach (cascade.normalBias over the texel size is the filter-sized
 // texel diagonal, twice that leaves room for the normal offset); <= 0 outside. The C++ twin is
 // penumbra::shadows::selectCascade.
 float tileMargin(int tile, CascadeData cascade, vec3 position)
@@ -35,9 +35,10 @@ float tileMargin(int tile, CascadeData cascade, vec3 position)
 // Stable fit: the first cascade whose selection sphere holds the point, faded on squared distance. Close fit: the
 // first whose far split the view depth has not reached, faded linearly on view depth (Unity's "Close Fit" bands,
 // Catlike Coding, "Rendering 7: Shadows", section 1.7). Depth fit: the first whose tile holds the point (map-based
-// selection: Microsoft, "Cascaded Shadow Maps", section "Map-Based Cascade Selection"), faded over the cascadeFade
-// of the tile's half size inside its edge. The C++ twin is penumbra::shadows::selectCascade.
-CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
+// selection: Microsoft, "Cascaded Shadow Maps", section "Map-Based Cascade Selection") among the tiles of shadow slot
+// `slot`'s light (each light's tiles are fitted around its own footprint), faded over the cascadeFade of the tile's
+// half size inside its edge; the other projections ignore `slot`. The C++ twin is penumbra::shadows::selectCascade.
+CascadeSelection selectCascade(int slot, vec3 position, float viewDepth, float dither)
 {
     CascadeSelection s;
     s.blend = 1.0;
@@ -50,7 +51,7 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
         const CascadeData cascade = shadows.cascades[i];
         const vec3 offset = position - cascade.selectionCentre;
         const float distanceSquared = dot(offset, offset);
-        const int tile = shadows.lights[0].firstTile + i;
+        const int tile = shadows.lights[max(slot, 0)].firstTile + i;
         const float margin = mapped ? tileMargin(tile, cascade, position) : 0.0;
         const float halfTexels = 0.5 * float(shadows.tileBounds[tile].last.x - shadows.tileBounds[tile].first.x + 1);
         if (mapped ? margin > 0.0
@@ -76,6 +77,15 @@ CascadeSelection selectCascade(vec3 position, float viewDepth, float dither)
         s.blend = 1.0;
     s.index = i;
     return s;
+}
+
+// Light slot `slot`'s selection where `first` is slot 0's: depth fit selects in each light's own tiles, the other
+// projections the same cascade for every light.
+CascadeSelection selectLightCascade(CascadeSelection first, int slot, vec3 position, float viewDepth, float dither)
+{
+    if (slot <= 0 || shadows.cascadeProjection != PENUMBRA_PROJECTION_DEPTHFIT)
+        return first;
+    return selectCascade(slot, position, viewDepth, dither);
 }
 
 // Tile `bounds` of a directional depth atlas filtered at atlas position (u, v, depth) by `filterIndex`: the

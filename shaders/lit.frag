@@ -202,10 +202,16 @@ void main()
     const vec3 toCamera = frame.cameraPosition.xyz - vPosition;
     const vec3 v = normalize(toCamera);
     const float viewDepth = -dot(toCamera, frame.cameraForward.xyz);
-    const CascadeSelection cascade = selectCascade(vPosition, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
+    // The first shadowed light's selection; depth fit selects again for each other light (selectLightCascade).
+    const float dither = interleavedGradientNoise(gl_FragCoord.xy);
+    const CascadeSelection cascade = selectCascade(0, vPosition, viewDepth, dither);
     const float globalStrength = fadedShadowStrength(viewDepth, shadows.fade.inverseMaxDistance, shadows.fade.inverseDistanceFade);
 #if PENUMBRA_LIT_VIEW == PENUMBRA_VIEW_VISIBILITY
-    outColor = shadowVisibility(frame.visibilityLight, n, geometric, cascade, globalStrength);
+    const int visibilitySlot =
+        frame.visibilityLight < frame.directionalLightCount ? frame.lights[frame.visibilityLight].shadowSlot : -1;
+    outColor = shadowVisibility(frame.visibilityLight, n, geometric,
+                                selectLightCascade(cascade, visibilitySlot, vPosition, viewDepth, dither),
+                                globalStrength);
 #else
 
     const vec4 metalRough = sampleMap(metallicRoughnessMap, PENUMBRA_TEXTURE_METALLIC_ROUGHNESS);
@@ -233,14 +239,16 @@ void main()
             continue;
         const bool receives = object.receivesShadows != 0;
         const int slot = receives ? frame.lights[i].shadowSlot : -1;
+        const CascadeSelection lightCascade =
+            selectLightCascade(cascade, frame.lights[i].shadowSlot, vPosition, viewDepth, dither);
 #if PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_PIXELS
         const float attenuation = receives ? collectedShadow(collected, i) : 1.0;
 #elif PENUMBRA_SCREEN_SPACE_SHADOWS == PENUMBRA_SCREEN_SPACE_EDGES
         const float attenuation = fromCollection ? (receives ? collectedShadow(collected, i) : 1.0)
-                                                 : directionalLightShadow(i, slot, receives, cascade, vPosition,
+                                                 : directionalLightShadow(i, slot, receives, lightCascade, vPosition,
                                                                           geometric, l);
 #else
-        const float attenuation = directionalLightShadow(i, slot, receives, cascade, vPosition, geometric, l);
+        const float attenuation = directionalLightShadow(i, slot, receives, lightCascade, vPosition, geometric, l);
 #endif
 #if PENUMBRA_CONTACT_SHADOWS
         // Contact shadows darken the direct light only, as the map's shadow does: the minimum, so that a pixel both

@@ -45,10 +45,12 @@ void main()
     const vec3 geometric = normalize(cross(dx, dy));
     setReceiverDerivatives(dx, dy);
     const float viewDepth = -dot(collection.cameraPosition.xyz - position, collection.cameraForward.xyz);
-    const CascadeSelection cascade = selectCascade(position, viewDepth, interleavedGradientNoise(gl_FragCoord.xy));
+    const float dither = interleavedGradientNoise(gl_FragCoord.xy);
+    const CascadeSelection cascade = selectCascade(0, position, viewDepth, dither);
     for (int i = 0; i < collection.lightCount; ++i) {
         const vec3 l = -collection.lights[i].direction;
         const int slot = collection.lights[i].shadowSlot;
-        outShadows[i] = directionalLightShadow(i, slot, true, cascade, position, geometric, l);
+        const CascadeSelection lightCascade = selectLightCascade(cascade, slot, position, viewDepth, dither);
+        outShadows[i] = directionalLightShadow(i, slot, true, lightCascade, position, geometric, l);
     }
 }

@@ -12,7 +12,8 @@
 
 namespace penumbra::shadows {
 
-CascadeSelection selectCascade(const DirectionalShadowUniforms& u, glm::vec3 position, float viewDepth)
+CascadeSelection selectCascade(const DirectionalShadowUniforms& u, glm::vec3 position, float viewDepth,
+                               std::uint32_t slot)
 {
     const auto count = static_cast<std::uint32_t>(u.cascadeCount);
     const bool close = u.cascadeProjection == CascadeProjection::Close;
@@ -21,7 +22,7 @@ CascadeSelection selectCascade(const DirectionalShadowUniforms& u, glm::vec3 pos
         const CascadeData& cascade = u.cascades[i];
         if (mapped) {
             // tileMargin in directional_shadows.glsl.
-            const std::size_t tile = static_cast<std::size_t>(u.lights[0].firstTile) + i;
+            const std::size_t tile = static_cast<std::size_t>(u.lights.at(slot).firstTile) + i;
             const glm::vec2 texel = glm::vec2(u.worldToAtlas[tile] * glm::vec4(position, 1.0f)) * u.atlasSize;
             const TileTexelBounds& bounds = u.tileBounds[tile];
             const glm::vec2 inside = glm::min(texel - glm::vec2(bounds.first), glm::vec2(bounds.last) + 1.0f - texel);

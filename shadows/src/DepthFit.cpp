@@ -69,9 +69,74 @@ private:
     std::uint32_t slots_;
 };
 
-// The sum of the partition's run costs.
-double partitionCost(const RunCosts& runs, std::span<const std::uint32_t> edges)
+// The share of [lo, hi] inside [a, b]; a degenerate [lo, hi] (samples on a line) counts whole or not at all.
+float depthFitOverlapShare(float lo, float hi, float a, float b)
 {
+    if (!(hi > lo))
+        return lo >= a && lo <= b ? 1.0f : 0.0f;
+    return std::max(0.0f, std::min(hi, b) - std::max(lo, a)) / (hi - lo);
+}
+
+// A cascade's tile as the cost sees it, per light slot: the square about its samples' footprint, with the half size
+// the largest any slot needs (every light's tile of a cascade has one size); none where the run has no samples.
+struct MappedTile {
+    std::array<glm::vec2, maxShadowedDirectionalLights> centres{};
+    float half = 0.0f;
+    bool holdsSamples = false;
+};
+
+// The cost of a partition as map-based selection serves the samples (CascadeSelection.hpp): a sample takes the first
+// tile that holds it, so a nearer tile gives its texels to the far samples inside it. The histogram keeps only each
+// bin's footprint, so its samples are taken as spread evenly over it: the share a nearer tile holds is the footprint's
+// area inside the tile's square, each nearer tile taking its share of what the ones before left. Per sample the
+// log2 of its tile's extent, averaged over the light slots (each light selects in its own tiles).
+double mappedPartitionCost(const DepthHistogram& histogram, std::span<const std::uint32_t> edges,
+                           std::uint32_t lightSlots)
+{
+    std::vector<MappedTile> tiles(edges.size() - 1);
+    for (std::size_t c = 0; c < tiles.size(); ++c)
+        for (std::uint32_t s = 0; s < lightSlots; ++s)
+            if (const std::optional<Bounds> f = depthHistogramFootprint(histogram, s, edges[c], edges[c + 1])) {
+                const glm::vec3 extent = f->max - f->min;
+                tiles[c].centres[s] = 0.5f * glm::vec2(f->min + f->max);
+                // RunCosts' floor: a thousandth of the run's far depth.
+                const float floor = 0.5e-3f * depthHistogramBinStart(histogram.firstOctave, edges[c + 1]);
+                tiles[c].half = std::max({tiles[c].half, 0.5f * std::max(extent.x, extent.y), floor});
+                tiles[c].holdsSamples = true;
+            }
+    double sum = 0.0;
+    for (std::size_t c = 0; c < tiles.size(); ++c)
+        for (std::uint32_t b = edges[c]; b < edges[c + 1]; ++b) {
+            const DepthHistogramBin& bin = histogram.bins[b];
+            if (bin.count == 0)
+                continue;
+            double binCost = 0.0;
+            for (std::uint32_t s = 0; s < lightSlots; ++s) {
+                const glm::vec4 f = bin.footprints[s];
+                double left = 1.0;
+                for (std::size_t near = 0; near < c; ++near) {
+                    if (!tiles[near].holdsSamples)
+                        continue;
+                    const glm::vec2 centre = tiles[near].centres[s];
+                    const float half = tiles[near].half;
+                    const double share = depthFitOverlapShare(f.x, f.z, centre.x - half, centre.x + half) *
+                                         depthFitOverlapShare(f.y, f.w, centre.y - half, centre.y + half);
+                    binCost += left * share * std::log2(2.0 * half);
+                    left *= 1.0 - share;
+                }
+                binCost += left * std::log2(2.0 * tiles[c].half);
+            }
+            sum += static_cast<double>(bin.count) * binCost / static_cast<double>(lightSlots);
+        }
+    return sum;
+}
+
+// The partition's cost: mappedPartitionCost where the histogram has footprints, else the sum of its band costs.
+double partitionCost(const DepthHistogram& histogram, const RunCosts& runs, std::span<const std::uint32_t> edges,
+                     std::uint32_t lightSlots)
+{
+    if (lightSlots > 0)
+        return mappedPartitionCost(histogram, edges, lightSlots);
     double sum = 0.0;
     std::vector<double> costs;
     for (std::size_t c = 0; c + 1 < edges.size(); ++c) {
@@ -79,6 +144,38 @@ double partitionCost(const RunCosts& runs, std::span<const std::uint32_t> edges)
         sum += costs.front();
     }
     return sum;
+}
+
+// Coordinate descent on the mapped cost from `edges`: each inner edge in turn moves to the place between its
+// neighbours that costs least, until no move gains (at most kPasses rounds). The bands' optimum (the dynamic
+// programme's) is a good start: map-based selection mostly moves splits nearer, where a near tile's samples gain most.
+std::vector<std::uint32_t> descendMappedCost(const DepthHistogram& histogram, std::vector<std::uint32_t> edges,
+                                             std::uint32_t lightSlots)
+{
+    constexpr int kPasses = 8;
+    double best = mappedPartitionCost(histogram, edges, lightSlots);
+    for (int pass = 0; pass < kPasses; ++pass) {
+        bool moved = false;
+        for (std::size_t i = 1; i + 1 < edges.size(); ++i)
+            for (std::uint32_t at = edges[i - 1] + 1; at < edges[i + 1]; ++at) {
+                std::vector<std::uint32_t> candidate = edges;
+                candidate[i] = at;
+                const double cost = mappedPartitionCost(histogram, candidate, lightSlots);
+                // A relative margin: float noise must not move an edge back and forth.
+                if (cost < best - 1e-9 * std::abs(best)) {
+                    best = cost;
+                    edges = std::move(candidate);
+                    moved = true;
+                }
+            }
+        if (!moved)
+            break;
+    }
+    // The dynamic programme's rule for ties: a run starts at its first bin with samples, not in the empty bins before.
+    for (std::size_t i = 1; i + 1 < edges.size(); ++i)
+        while (edges[i] + 1 < edges[i + 1] && histogram.bins[edges[i]].count == 0)
+            ++edges[i];
+    return edges;
 }
 
 } // namespace
@@ -173,6 +270,8 @@ std::vector<std::uint32_t> depthFitPartition(const DepthHistogram& histogram, st
     for (std::uint32_t c = cascadeCount - 1; c > 0; --c)
         edges[c] = from[c][edges[c + 1] - first];
     edges[0] = first;
+    if (lightSlots > 0)
+        edges = descendMappedCost(histogram, std::move(edges), lightSlots);
 
     const bool keptHoldsTheSamples = kept.size() == edges.size() && kept.front() <= first && kept.back() >= last &&
                                      kept.back() <= histogram.bins.size() && std::is_sorted(kept.begin(), kept.end());
@@ -180,8 +279,9 @@ std::vector<std::uint32_t> depthFitPartition(const DepthHistogram& histogram, st
         std::uint64_t samples = 0;
         for (std::uint32_t b = first; b < last; ++b)
             samples += histogram.bins[b].count;
-        const double keptCost = partitionCost(runs, kept);
-        if (keptCost <= best[cascadeCount - 1][width - 1] + toleranceLog2 * static_cast<double>(samples))
+        const double keptCost = partitionCost(histogram, runs, kept, lightSlots);
+        if (keptCost <=
+            partitionCost(histogram, runs, edges, lightSlots) + toleranceLog2 * static_cast<double>(samples))
             return std::vector<std::uint32_t>(kept.begin(), kept.end());
     }
     return edges;
@@ -202,14 +302,19 @@ CascadeSplits depthFitSplits(const DepthHistogram& histogram, std::span<const st
     return splits;
 }
 
-float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps)
+float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps,
+                       bool mayFallShort)
 {
     if (stepsPerOctave == 0 || !(required > 0.0f))
         return required;
     const float step = depthFitStep(required, stepsPerOctave);
     const float fitted = std::ceil(required / step) * step;
-    if (kept && required <= *kept && required > *kept - (1.0f + hysteresisSteps) * depthFitStep(*kept, stepsPerOctave))
-        return *kept;
+    if (kept) {
+        const float keptStep = depthFitStep(*kept, stepsPerOctave);
+        const float largest = *kept + (mayFallShort ? 0.5f * hysteresisSteps * keptStep : 0.0f);
+        if (required <= largest && required > *kept - (1.0f + hysteresisSteps) * keptStep)
+            return *kept;
+    }
     return fitted;
 }
 

@@ -156,7 +156,7 @@ std::vector<float> fittedHalfSizes(const std::vector<std::vector<Bounds>>& bound
                                     kept && kept->halfSizes.size() == cascadeCount
                                         ? std::optional<float>(kept->halfSizes[c])
                                         : std::nullopt,
-                                    directional.depthFitSteps, directional.depthFitHysteresis);
+                                    directional.depthFitSteps, directional.depthFitHysteresis, c + 1 < cascadeCount);
         halfSizes.push_back(half);
     }
     return halfSizes;

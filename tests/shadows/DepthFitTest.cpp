@@ -1,7 +1,9 @@
 // Depth fit: the histogram of the visible view depths, its partition into cascades, the tiles' half sizes on a grid
 // with hysteresis, and the planner's tiles around the samples' footprints.
+#include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/DepthFit.hpp"
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
+#include "penumbra/shadows/LightBasis.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -124,8 +126,11 @@ TEST(DepthFit, HalfSizeIsOnTheGridWithHysteresis)
     EXPECT_EQ(depthFitHalfSize(4.6f, 5.5f, 8, 1.0f), 5.5f);
     EXPECT_EQ(depthFitHalfSize(4.6f, 5.5f, 8, 0.0f), 5.0f);
     EXPECT_EQ(depthFitHalfSize(4.4f, 5.5f, 8, 1.0f), 4.5f);
-    // Larger than kept: grows at once, the tile must hold the footprint.
+    // Larger than kept: grows at once where the tile must hold the footprint (the last cascade's).
     EXPECT_EQ(depthFitHalfSize(5.6f, 5.5f, 8, 4.0f), 6.0f);
+    // A nearer cascade's tile may fall short by half the hysteresis: the next tile serves the samples past its edge.
+    EXPECT_EQ(depthFitHalfSize(5.7f, 5.5f, 8, 1.0f, true), 5.5f);
+    EXPECT_EQ(depthFitHalfSize(5.8f, 5.5f, 8, 1.0f, true), 6.0f);
     // Unquantized: as required.
     EXPECT_EQ(depthFitHalfSize(5.1f, 5.5f, 0, 1.0f), 5.1f);
 }
@@ -174,6 +179,66 @@ TEST(DepthFit, PlannerFitsTheTilesToTheSamples)
     const DirectionalShadowPlan other =
         planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, nullptr});
     EXPECT_GT(other.lights[0].cascades[0].fit.texelSize, fitted.lights[0].cascades[0].fit.texelSize);
+}
+
+// Two suns from opposite sides over ground points the camera sees: each light's tiles are fitted around its own
+// footprint of the points, so each light selects in its own tiles; the first light's selection would send the second
+// light's lookups outside its tiles.
+TEST(DepthFit, EachLightSelectsInItsOwnTiles)
+{
+    ShadowCamera camera;
+    camera.position = {0.0f, 2.0f, 0.0f};
+    camera.forward = glm::normalize(glm::vec3(0.0f, -0.3f, 1.0f));
+    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    camera.aspect = 16.0f / 9.0f;
+    camera.farPlane = 150.0f;
+    ShadowSettings settings;
+    settings.directional.projection = CascadeProjection::DepthFit;
+    const std::vector<DirectionalShadowLightInput> lights{{glm::normalize(glm::vec3(-1.0f, -1.0f, 0.3f))},
+                                                          {glm::normalize(glm::vec3(1.0f, -0.7f, -0.2f))}};
+    const std::vector<Bounds> casters{{glm::vec3(-20.0f, 0.0f, 0.0f), glm::vec3(20.0f, 1.0f, 40.0f)}};
+    DepthHistogram h = histogramOf({});
+    h.lightDirections = {lights[0].direction, lights[1].direction};
+    std::vector<glm::vec3> ground;
+    for (float z = 2.0f; z < 40.0f; z += 0.5f)
+        for (float x = -0.6f * z; x <= 0.6f * z; x += 0.05f * z)
+            ground.push_back({x, 0.0f, z});
+    for (const glm::vec3& p : ground) {
+        DepthHistogramBin& bin =
+            h.bins[depthHistogramBin(h.firstOctave, glm::dot(p - camera.position, camera.forward))];
+        for (std::uint32_t s = 0; s < 2; ++s) {
+            const glm::vec3 l = lightBasis(lights[s].direction).toLight(p);
+            glm::vec4& f = bin.footprints[s];
+            f = bin.count == 0
+                    ? glm::vec4(l.x, l.y, l.x, l.y)
+                    : glm::vec4(std::min(f.x, l.x), std::min(f.y, l.y), std::max(f.z, l.x), std::max(f.w, l.y));
+        }
+        bin.count += 1;
+    }
+    const DirectionalShadowPlan plan =
+        planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, nullptr});
+    ASSERT_EQ(plan.lights.size(), 2u);
+    const DirectionalShadowUniforms& u = plan.uniforms;
+    // Whether light `slot`'s tile of cascade `c` holds the point.
+    const auto holds = [&](std::uint32_t slot, std::uint32_t c, glm::vec3 p) {
+        const std::size_t tile = plan.lights[slot].cascades.at(c).tile;
+        const glm::vec2 texel = glm::vec2(u.worldToAtlas[tile] * glm::vec4(p, 1.0f)) * u.atlasSize;
+        const TileTexelBounds& b = u.tileBounds[tile];
+        return texel.x >= float(b.first.x) && texel.y >= float(b.first.y) && texel.x <= float(b.last.x + 1) &&
+               texel.y <= float(b.last.y + 1);
+    };
+    std::size_t firstLightsMiss = 0;
+    for (const glm::vec3& p : ground) {
+        const float depth = glm::dot(p - camera.position, camera.forward);
+        for (std::uint32_t slot = 0; slot < 2; ++slot) {
+            const CascadeSelection s = selectCascade(u, p, depth, slot);
+            ASSERT_LT(s.index, 4u) << "slot " << slot << " misses the point " << p.x << ", " << p.z;
+            EXPECT_TRUE(holds(slot, s.index, p)) << "slot " << slot;
+        }
+        firstLightsMiss += !holds(1, selectCascade(u, p, depth, 0).index, p);
+    }
+    // 30 of about 1 900 points: the first light's selection would look them up outside the second light's tiles.
+    EXPECT_GT(firstLightsMiss, 0u) << "the lights' tiles differ enough to show the point";
 }
 
 } // namespace

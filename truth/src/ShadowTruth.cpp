@@ -27,11 +27,13 @@ float directionalTexel(const shadows::DirectionalShadowPlan& plan, std::uint32_t
 {
     if (index >= plan.shadowSlots.size() || plan.shadowSlots[index] < 0)
         return 0.0f;
-    const auto& cascades = plan.lights[static_cast<std::size_t>(plan.shadowSlots[index])].cascades;
+    const auto slot = static_cast<std::uint32_t>(plan.shadowSlots[index]);
+    const auto& cascades = plan.lights[slot].cascades;
     if (plan.uniforms.cascadeProjection != shadows::CascadeProjection::Stable) {
-        // The band of the point's view depth, as the lit shader selects it.
+        // The band of the point's view depth, or depth fit's first tile of the light's that holds it, as the lit
+        // shader selects them.
         const float viewDepth = glm::dot(position - camera.position, camera.forward);
-        const std::uint32_t cascade = shadows::selectCascade(plan.uniforms, position, viewDepth).index;
+        const std::uint32_t cascade = shadows::selectCascade(plan.uniforms, position, viewDepth, slot).index;
         return cascade < cascades.size() ? cascades[cascade].fit.texelSize : 0.0f;
     }
     // The first cascade whose culling sphere holds the point (not shrunk by the filter: the edge margins of the

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <vector>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -69,12 +70,15 @@ struct DepthFitKept {
 };
 
 // The partition of the histogram's bins into `cascadeCount` runs that puts the visible samples' texels highest: the
-// least sum over samples of log2 of their run's light-space extent (the larger side of the footprint over slots
-// [0, lightSlots); the run's far depth where lightSlots is 0), so the geometric mean of the samples' texel sizes is
-// least. Exact, by dynamic programming over the bins with samples (SDSM's partitions, section 4.1, optimized for the
-// texel size rather than log or k-means spaced). The result's edges run from the first bin with samples to one past
-// the last. `kept` (the last frame's edges) stays while it still holds every sample and its sum is within
-// `toleranceLog2` per sample of the least: hysteresis, so that depths that barely move keep the splits.
+// least sum over samples of log2 of the light-space extent of the tile that serves them (the larger side of the
+// footprint over slots [0, lightSlots); the run's far depth where lightSlots is 0), so the geometric mean of the
+// samples' texel sizes is least (SDSM's partitions, section 4.1, optimized for the texel size rather than log or
+// k-means spaced). First exactly, by dynamic programming over the bins with samples, with each sample served by its own
+// run's tile; then, with footprints, refined by coordinate descent for map-based selection, which serves a sample by
+// the first tile that holds it: a near tile also serves the far samples inside it (their share estimated from the bins'
+// footprints). The result's edges run from the first bin with samples to one past the last. `kept` (the last frame's
+// edges) stays while it still holds every sample and its cost is within `toleranceLog2` per sample of the result's:
+// hysteresis, so that depths that barely move keep the splits.
 std::vector<std::uint32_t> depthFitPartition(const DepthHistogram& histogram, std::uint32_t cascadeCount,
                                              std::uint32_t lightSlots, std::span<const std::uint32_t> kept,
                                              float toleranceLog2);
@@ -86,9 +90,13 @@ CascadeSplits depthFitSplits(const DepthHistogram& histogram, std::span<const st
                              float cameraFar, float maxDistance);
 
 // The half size of a depth-fit tile: `required` (closeFitHalfSize of its footprint) ceiled onto depthFitStep's grid
-// of light-space size at `stepsPerOctave` steps per power of two; `kept` (the last frame's) while required is at most
-// kept and more than 1 + hysteresisSteps of its steps below it, so the texel size, and with it every texel, holds
-// still while the footprint barely changes. stepsPerOctave 0: required, unquantized.
-float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps);
+// of light-space size at `stepsPerOctave` steps per power of two; `kept` (the last frame's) while required is more than
+// 1 + hysteresisSteps of its steps below it and at most kept, so the texel size, and with it every texel, holds still
+// while the footprint barely changes. `mayFallShort` (every cascade but the last): kept also while required is at
+// most half of hysteresisSteps steps above it, for map-based selection serves the few samples past a tile's edge from
+// the next tile; without it a footprint fitted just below a grid line moves every texel of its tile when it grows
+// by a texel. stepsPerOctave 0: required, unquantized.
+float depthFitHalfSize(float required, std::optional<float> kept, std::uint32_t stepsPerOctave, float hysteresisSteps,
+                       bool mayFallShort = false);
 
 } // namespace penumbra::shadows
