@@ -32,7 +32,9 @@ std::array<BvhPlane, 6> frustumPlanes(const CasterVolume& volume)
     const auto row = [&](int i) { return BvhPlane{{v[0][i], v[1][i], v[2][i]}, v[3][i]}; };
     const BvhPlane x = row(0), y = row(1), z = row(2);
     const float t = volume.frustum.x, nearPlane = volume.frustum.y, farPlane = volume.frustum.z;
-    const auto add = [](BvhPlane a, float s, BvhPlane b) { return BvhPlane{a.normal + s * b.normal, a.offset + s * b.offset}; };
+    const auto add = [](BvhPlane a, float s, BvhPlane b) {
+        return BvhPlane{a.normal + s * b.normal, a.offset + s * b.offset};
+    };
     return {{{z.normal, z.offset + nearPlane},
              {-z.normal, -z.offset - farPlane},
              add(x, t, z),
@@ -41,17 +43,21 @@ std::array<BvhPlane, 6> frustumPlanes(const CasterVolume& volume)
              add({-y.normal, -y.offset}, t, z)}};
 }
 
-// Whether the whole box lies outside one of the planes, by the margin: its nearest corner to the plane is outside.
-bool outsideAPlane(const Bounds& box, const std::array<BvhPlane, 6>& planes)
+// The node's reach: its half size, plus the margin times its coordinates' magnitude, which outsideAPlane takes as the
+// margin's share that grows with the box.
+glm::vec3 nodeReach(const Bounds& box)
 {
-    const glm::vec3 centre = 0.5f * (box.min + box.max), half = 0.5f * (box.max - box.min);
-    const glm::vec3 magnitude = glm::max(glm::abs(box.min), glm::abs(box.max));
-    for (const BvhPlane& plane : planes) {
-        const glm::vec3 size = glm::abs(plane.normal);
-        const float nearest = glm::dot(plane.normal, centre) + plane.offset - glm::dot(size, half);
-        if (nearest > kBvhMargin * (1.0f + glm::dot(size, magnitude) + std::abs(plane.offset)))
+    return 0.5f * (box.max - box.min) + kBvhMargin * glm::max(glm::abs(box.min), glm::abs(box.max));
+}
+
+// Whether a whole node lies outside one of the planes, by the margin: its corner nearest to the plane is outside by
+// more than kBvhMargin * (1 + |normal| . magnitude + |offset|).
+bool outsideAPlane(glm::vec3 centre, glm::vec3 reach, const std::array<BvhPlane, 6>& planes)
+{
+    for (const BvhPlane& plane : planes)
+        if (glm::dot(plane.normal, centre) - glm::dot(glm::abs(plane.normal), reach) >
+            kBvhMargin * (1.0f + std::abs(plane.offset)) - plane.offset)
             return true;
-    }
     return false;
 }
 
@@ -92,7 +98,7 @@ std::uint32_t CasterBvh::build(std::uint32_t first, std::uint32_t count)
         box = unionOf(box, b);
         centres = unionOf(centres, {b.min + b.max, b.min + b.max});
     }
-    nodes_.push_back({box, first, count});
+    nodes_.push_back({box, 0.5f * (box.min + box.max), nodeReach(box), first, count});
     if (count <= kBvhLeafBoxes)
         return index;
     const glm::vec3 extent = centres.max - centres.min;
@@ -121,7 +127,7 @@ bool CasterBvh::walk(const Skip& skip, const Visit& visit) const
     while (depth > 0) {
         const std::uint32_t n = stack[--depth];
         const Node& node = nodes_[n];
-        if (skip(node.box))
+        if (skip(node))
             continue;
         if (node.count == 0) {
             stack[depth++] = node.first;
@@ -139,7 +145,7 @@ std::vector<std::uint32_t> CasterBvh::inFrustum(const CasterVolume& volume) cons
 {
     const std::array<BvhPlane, 6> planes = frustumPlanes(volume);
     std::vector<std::uint32_t> inside;
-    walk([&](const Bounds& box) { return outsideAPlane(box, planes); },
+    walk([&](const Node& node) { return outsideAPlane(node.centre, node.reach, planes); },
          [&](std::uint32_t i) {
              if (meetsFrustum(boxes_[i], volume))
                  inside.push_back(i);
@@ -152,13 +158,13 @@ std::vector<std::uint32_t> CasterBvh::inFrustum(const CasterVolume& volume) cons
 bool CasterBvh::anyInFrustum(const CasterVolume& volume) const
 {
     const std::array<BvhPlane, 6> planes = frustumPlanes(volume);
-    return walk([&](const Bounds& box) { return outsideAPlane(box, planes); },
+    return walk([&](const Node& node) { return outsideAPlane(node.centre, node.reach, planes); },
                 [&](std::uint32_t i) { return meetsFrustum(boxes_[i], volume); });
 }
 
 bool CasterBvh::anyInRange(glm::vec3 centre, float radius) const
 {
-    return walk([&](const Bounds& box) { return beyondRange(box, centre, radius); },
+    return walk([&](const Node& node) { return beyondRange(node.box, centre, radius); },
                 [&](std::uint32_t i) { return boxInRange(boxes_[i], centre, radius); });
 }
 

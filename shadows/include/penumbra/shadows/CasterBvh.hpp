@@ -33,6 +33,8 @@ public:
 private:
     struct Node {
         Bounds box;
+        glm::vec3 centre{0.0f}; // the box's centre
+        glm::vec3 reach{0.0f}; // its half size, plus the skipping margin for its coordinates' magnitude
         std::uint32_t first = 0; // a leaf's first entry in order_, or an inner node's second child (the first follows)
         std::uint32_t count = 0; // a leaf's boxes; 0 for an inner node
     };
