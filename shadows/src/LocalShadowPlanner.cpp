@@ -244,8 +244,9 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
     plan.atlasSize = local.atlasSize;
     plan.spotTiles.assign(spots.size(), -1);
     plan.pointShadows.assign(points.size(), -1);
-    // Every light's culling walks one hierarchy of the casters' boxes, so that it costs what the light sees.
-    const CasterBvh casters(casterBounds);
+    // Every light's culling walks one hierarchy of the casters' boxes, so that it costs what the light sees; a frame
+    // without spot and point lights builds none.
+    const CasterBvh casters(spots.empty() && points.empty() ? std::span<const Bounds>() : casterBounds);
     std::vector<Candidate> candidates;
     std::vector<std::uint32_t> cubes; // point light indices, CubeMap mode
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
