@@ -85,11 +85,12 @@ void main()
     for (uint tile = 0u; tile < tiles.tileCount; ++tile) {
         if (!casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
             continue;
-        const uint command = tile * tiles.batchCount + c.batch;
+        const uint command = (tiles.firstTile + tile) * tiles.batchCount + c.batch;
         const uint slot = atomicAdd(draws.commands[command].instanceCount, 1u);
         if (slot == 0u)
             drawCounts.counts[command] = 1u;
-        const uint at = tile * tiles.casterCount + c.first + slot;
+        // The dispatch binds its own tiles' ranges of the instance lists.
+        const uint at = tile * tiles.tileSlots + c.first + slot;
         culled.instances[at] = source.transforms[caster];
         culledIndices.indices[at] = caster;
     }

@@ -241,13 +241,13 @@ std::uint64_t GpuScene::poseKey(std::size_t object) const
     return hash.value();
 }
 
-std::vector<shadows::Bounds> GpuScene::casterBounds() const
+const std::vector<shadows::Bounds>& GpuScene::casterBounds() const
 {
-    std::vector<shadows::Bounds> bounds;
+    casterBounds_.clear();
     for (const scene::Object& object : scene_.objects)
         if (scene_.castsShadows(object))
-            bounds.push_back({object.worldBounds.min, object.worldBounds.max});
-    return bounds;
+            casterBounds_.push_back({object.worldBounds.min, object.worldBounds.max});
+    return casterBounds_;
 }
 
 std::vector<std::uint32_t> GpuScene::staticCasters() const

@@ -205,7 +205,7 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     checkFrameSize(frame);
     const float aspect = aspectOf(frame);
     const scene::Scene& scene = gpuScene_.scene();
-    const std::vector<shadows::Bounds> bounds = gpuScene_.casterBounds();
+    const std::vector<shadows::Bounds>& bounds = gpuScene_.casterBounds();
     const std::vector<shadows::DirectionalShadowLightInput> lights = shadowLights(scene.lights);
     const std::vector<shadows::SpotShadowInput> spots = spotShadowInputs(scene.spotLights);
     const std::vector<shadows::PointShadowInput> points = pointShadowInputs(scene.pointLights);

@@ -25,6 +25,8 @@ std::string cullingBlocksGlsl()
     uint casterCount;
     uint tileCount;
     uint batchCount;
+    uint firstTile;
+    uint tileSlots;
     CasterVolume volumes[];
 } tiles;
 layout(std430, binding = 1) readonly buffer CullingCasters { CullingCaster casters[]; } casterList;
@@ -43,7 +45,13 @@ rhi::ShaderSource cullingShader()
     return source;
 }
 
-constexpr std::uint64_t kVolumesOffset = 16; // the CasterVolume array after CullingCounts, std430
+constexpr std::uint64_t kVolumesOffset = 32; // the CasterVolume array after CullingCounts, std430
+static_assert(sizeof(CullingCounts) <= kVolumesOffset && kVolumesOffset % alignof(CasterVolume) == 0);
+
+std::uint64_t roundUp(std::uint64_t value, std::uint64_t multiple)
+{
+    return (value + multiple - 1) / multiple * multiple;
+}
 
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& values)
@@ -53,14 +61,16 @@ std::span<const std::byte> bytesOf(const std::vector<T>& values)
 
 } // namespace
 
-GpuCasterCulling::GpuCasterCulling(rhi::Device& device)
+GpuCasterCulling::GpuCasterCulling(rhi::Device& device, std::uint32_t maxTilesPerDispatch)
     : device_(device), shader_(device.createShader(cullingShader())),
-      pipeline_(device.createComputePipeline({.compute = shader_.get(), .debugName = "caster culling"}))
+      pipeline_(device.createComputePipeline({.compute = shader_.get(), .debugName = "caster culling"})),
+      maxTilesPerDispatch_(std::max(maxTilesPerDispatch, 1u))
 {
-    reserve(1, 1, 1);
+    reserve(1, kVolumesOffset + sizeof(CasterVolume), 1);
 }
 
-void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t tiles, std::uint64_t draws)
+// The instance lists hold tileSlots_ per tile; `volumeBytes` is the dispatches' blocks of the volumes buffer.
+void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t volumeBytes, std::uint64_t draws)
 {
     using rhi::BufferUsage;
     const auto ensure = [&](std::unique_ptr<rhi::Buffer>& buffer, std::uint64_t size, BufferUsage usage,
@@ -68,12 +78,13 @@ void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t tiles, std::
         if (!buffer || buffer->desc().size < size)
             buffer = device_.createBuffer({.size = size, .usage = usage, .debugName = name});
     };
-    ensure(volumes_, kVolumesOffset + tiles * sizeof(CasterVolume), BufferUsage::Storage, "culling volumes");
+    ensure(volumes_, volumeBytes, BufferUsage::Storage, "culling volumes");
     ensure(casters_, casters * sizeof(CullingCaster), BufferUsage::Storage, "culling casters");
     ensure(transforms_, casters * sizeof(InstanceTransform), BufferUsage::Storage, "culling transforms");
-    ensure(instances_, tiles * casters * sizeof(InstanceTransform), BufferUsage::Storage | BufferUsage::Vertex,
+    const std::uint64_t slots = std::max<std::uint64_t>(std::uint64_t(tileCount_) * tileSlots_, 1);
+    ensure(instances_, slots * sizeof(InstanceTransform), BufferUsage::Storage | BufferUsage::Vertex,
            "culled instances");
-    ensure(indices_, tiles * casters * sizeof(std::uint32_t), BufferUsage::Storage, "culled indices");
+    ensure(indices_, slots * sizeof(std::uint32_t), BufferUsage::Storage, "culled indices");
     ensure(draws_, draws * sizeof(CulledDraw), BufferUsage::Storage | BufferUsage::Indirect, "culled draws");
     ensure(counts_, draws * sizeof(std::uint32_t), BufferUsage::Storage | BufferUsage::Indirect, "culled draw counts");
 }
@@ -95,13 +106,28 @@ void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const Shadow
     batches_ = batchByGroup(all, [&](std::uint32_t index) { return casters[index].drawGroup; });
     if (casterCount_ == 0 || tileCount_ == 0)
         return;
-    const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
-    reserve(casterCount_, tileCount_, std::uint64_t(tileCount_) * batchCount);
+    // A tile's slots start at a multiple of the binding offset alignment in both lists (4 and 112 bytes a slot).
+    const rhi::Capabilities& caps = device_.capabilities();
+    tileSlots_ = static_cast<std::uint32_t>(roundUp(casterCount_, std::max(caps.storageBufferOffsetAlignment / 4, 1u)));
+    const std::uint64_t tileBytes = std::uint64_t(tileSlots_) * sizeof(InstanceTransform);
+    if (tileBytes > caps.maxStorageBufferRange)
+        throw rhi::Error(fmt::format("GPU caster culling: {} casters need {} MiB of instances per tile, beyond the "
+                                     "device's storage range of {} MiB (maxStorageBufferRange); cull on the CPU "
+                                     "(--culling cpu) or draw fewer casters",
+                                     casterCount_, tileBytes >> 20, caps.maxStorageBufferRange >> 20));
+    fillCasters(casters, bounds, normalMatrices);
+    dispatchTiles(commands, volumes);
+}
 
+// The casters' boxes, batches and transforms as the pass reads them, and every tile's draws with no instances yet.
+void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
+                                   bool normalMatrices)
+{
     std::vector<CullingCaster>& culling = scratch_.casters;
     std::vector<InstanceTransform>& transforms = scratch_.transforms;
     culling.resize(casters.size());
     transforms.resize(casters.size());
+    const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
     for (std::uint32_t b = 0; b < batchCount; ++b) {
         const InstanceBatches::Batch& batch = batches_.batches[b];
         const ShadowCaster& first = casters[batches_.items[batch.first]];
@@ -120,26 +146,46 @@ void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const Shadow
     for (std::uint32_t t = 0; t < tileCount_; ++t)
         for (const InstanceBatches::Batch& batch : batches_.batches)
             draws.push_back({.indexCount = casters[batches_.items[batch.first]].indexCount,
-                             .firstInstance = t * casterCount_ + batch.first});
-    const CullingCounts counts{casterCount_, tileCount_, batchCount};
-    volumes_->writeObject(counts);
-    volumes_->write(kVolumesOffset, std::as_bytes(volumes));
-    casters_->write(0, bytesOf(culling));
-    transforms_->write(0, bytesOf(transforms));
+                             .firstInstance = t * tileSlots_ + batch.first});
+}
+
+// One dispatch per group of tiles whose instance ranges fit one storage binding (all tiles in one, unless the device's
+// range is short of them); each group reads its own block of the volumes buffer: its CullingCounts, then its volumes.
+void GpuCasterCulling::dispatchTiles(rhi::CommandList& commands, std::span<const CasterVolume> volumes)
+{
+    const rhi::Capabilities& caps = device_.capabilities();
+    const std::uint64_t tileBytes = std::uint64_t(tileSlots_) * sizeof(InstanceTransform);
+    const auto groupTiles = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>({tileCount_, maxTilesPerDispatch_, caps.maxStorageBufferRange / tileBytes}));
+    const std::uint64_t blockBytes =
+        roundUp(kVolumesOffset + groupTiles * sizeof(CasterVolume), caps.storageBufferOffsetAlignment);
+    const std::uint32_t groups = (tileCount_ + groupTiles - 1) / groupTiles;
+    const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
+    reserve(casterCount_, groups * blockBytes, std::uint64_t(tileCount_) * batchCount);
+    const std::vector<CulledDraw>& draws = scratch_.draws;
+    casters_->write(0, bytesOf(scratch_.casters));
+    transforms_->write(0, bytesOf(scratch_.transforms));
     draws_->write(0, bytesOf(draws));
     counts_->write(0, bytesOf(std::vector<std::uint32_t>(draws.size(), 0)));
 
-    const std::uint64_t slots = std::uint64_t(tileCount_) * casterCount_;
     commands.bindComputePipeline(*pipeline_);
-    commands.bindStorageBuffer(0, *volumes_, 0, kVolumesOffset + volumes.size_bytes());
-    commands.bindStorageBuffer(1, *casters_, 0, culling.size() * sizeof(CullingCaster));
-    commands.bindStorageBuffer(2, *transforms_, 0, transforms.size() * sizeof(InstanceTransform));
-    commands.bindStorageBuffer(3, *instances_, 0, slots * sizeof(InstanceTransform));
-    commands.bindStorageBuffer(4, *indices_, 0, slots * sizeof(std::uint32_t));
-    commands.bindStorageBuffer(5, *draws_, 0, draws.size() * sizeof(CulledDraw));
-    commands.bindStorageBuffer(6, *counts_, 0, draws.size() * sizeof(std::uint32_t));
     const std::uint32_t groupSize = pipeline_->workgroupSize()[0];
-    commands.dispatch((casterCount_ + groupSize - 1) / groupSize);
+    for (std::uint32_t g = 0; g < groups; ++g) {
+        const std::uint32_t first = g * groupTiles, count = std::min(groupTiles, tileCount_ - first);
+        const std::span<const CasterVolume> group = volumes.subspan(first, count);
+        volumes_->writeObject(CullingCounts{casterCount_, count, batchCount, first, tileSlots_}, g * blockBytes);
+        volumes_->write(g * blockBytes + kVolumesOffset, std::as_bytes(group));
+        const std::uint64_t slots = std::uint64_t(first) * tileSlots_, groupSlots = std::uint64_t(count) * tileSlots_;
+        commands.bindStorageBuffer(0, *volumes_, g * blockBytes, kVolumesOffset + group.size_bytes());
+        commands.bindStorageBuffer(1, *casters_, 0, scratch_.casters.size() * sizeof(CullingCaster));
+        commands.bindStorageBuffer(2, *transforms_, 0, scratch_.transforms.size() * sizeof(InstanceTransform));
+        commands.bindStorageBuffer(3, *instances_, slots * sizeof(InstanceTransform),
+                                   groupSlots * sizeof(InstanceTransform));
+        commands.bindStorageBuffer(4, *indices_, slots * sizeof(std::uint32_t), groupSlots * sizeof(std::uint32_t));
+        commands.bindStorageBuffer(5, *draws_, 0, draws.size() * sizeof(CulledDraw));
+        commands.bindStorageBuffer(6, *counts_, 0, draws.size() * sizeof(std::uint32_t));
+        commands.dispatch((casterCount_ + groupSize - 1) / groupSize);
+    }
 }
 
 std::uint64_t GpuCasterCulling::drawOffset(std::uint32_t tile, std::uint32_t batch) const
@@ -159,7 +205,7 @@ std::vector<std::vector<std::uint32_t>> GpuCasterCulling::readLists() const
         return lists;
     std::vector<CulledDraw> draws(std::size_t(tileCount_) * batches_.batches.size());
     draws_->read(0, std::as_writable_bytes(std::span(draws)));
-    std::vector<std::uint32_t> indices(std::size_t(tileCount_) * casterCount_);
+    std::vector<std::uint32_t> indices(std::size_t(tileCount_) * tileSlots_);
     indices_->read(0, std::as_writable_bytes(std::span(indices)));
     for (std::uint32_t t = 0; t < tileCount_; ++t) {
         for (std::uint32_t b = 0; b < batches_.batches.size(); ++b) {

@@ -1,6 +1,7 @@
 #include "penumbra/shadows/LocalShadowPlanner.hpp"
 
 #include "penumbra/shadows/AtlasMatrix.hpp"
+#include "penumbra/shadows/CasterBvh.hpp"
 #include "penumbra/shadows/ShadowResolution.hpp"
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
 
@@ -95,17 +96,18 @@ struct RasterBias {
     float constant;
 };
 
+// The casters a tile draws, culled by `casters`; none where the GPU culls them (no hierarchy).
+std::vector<std::uint32_t> tileCasterList(const CasterBvh* casters, const CasterVolume& volume)
+{
+    return casters ? casters->inFrustum(volume) : std::vector<std::uint32_t>();
+}
+
 LocalShadowView shadowView(const glm::mat4& view, float fov, float nearPlane, float range, RasterBias bias,
-                           const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+                           const rhi::Conventions& conventions, const CasterBvh* casters)
 {
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, range);
-    return {projection,
-            projection * view,
-            bias.slopeScale,
-            bias.constant,
-            cullCastersInFrustum(view, fov, nearPlane, range, casterBounds),
-            {},
-            frustumVolume(view, fov, nearPlane, range)};
+    const CasterVolume volume = frustumVolume(view, fov, nearPlane, range);
+    return {projection, projection * view, bias.slopeScale, bias.constant, tileCasterList(casters, volume), {}, volume};
 }
 
 // The normal offset's reach per unit of distance, `scale`, goes to the lit pass's lookups on the receiver side and
@@ -154,7 +156,7 @@ void addTile(LocalShadowPlan& plan, TilePlace place, LocalShadowView view, float
 }
 
 void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const SpotShadowInput& spot,
-              const PackedLight& packed, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+              const PackedLight& packed, const rhi::Conventions& conventions, const CasterBvh* casters)
 {
     const ShadowFilter filter = spot.filter.value_or(local.filter);
     const float fov = spotFieldOfView(spot.outerAngle, packed.size, filter, spot.normalBias, local.spotFovBias);
@@ -162,15 +164,14 @@ void planSpot(LocalShadowPlan& plan, const LocalShadowSettings& local, const Spo
     const glm::mat4 projection = conventions.perspective(fov, 1.0f, nearPlane, spot.range);
     const float bias = localNormalBiasScale(projection, packed.size, filter, spot.normalBias);
     LocalShadowView view = shadowView(spotView(spot.position, spot.direction), fov, nearPlane, spot.range,
-                                      {spot.slopeScaleBias, local.depthBias}, conventions, casterBounds);
+                                      {spot.slopeScaleBias, local.depthBias}, conventions, casters);
     const float receiverBias = sideOfNormalBias(view, spot.normalBiasSide, bias, spot.position);
     addTile(plan, {packed.offsets.front(), packed.size}, std::move(view), receiverBias,
             softProjection(filter, projection, packed.size, spot.sourceRadius, nearPlane, conventions), conventions);
 }
 
 void planPointTiles(LocalShadowPlan& plan, const LocalShadowSettings& local, const PointShadowInput& point,
-                    const PackedLight& packed, const rhi::Conventions& conventions,
-                    std::span<const Bounds> casterBounds)
+                    const PackedLight& packed, const rhi::Conventions& conventions, const CasterBvh* casters)
 {
     const ShadowFilter filter = point.filter.value_or(local.filter);
     const float fov = pointFaceFieldOfView(packed.size, filter, point.normalBias);
@@ -180,9 +181,8 @@ void planPointTiles(LocalShadowPlan& plan, const LocalShadowSettings& local, con
     const SoftProjection soft =
         softProjection(filter, projection, packed.size, point.sourceRadius, nearPlane, conventions);
     for (std::uint32_t face = 0; face < cubeFaceCount; ++face) {
-        LocalShadowView view =
-            shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane, point.range,
-                       {point.slopeScaleBias, local.depthBias}, conventions, casterBounds);
+        LocalShadowView view = shadowView(pointFaceView(static_cast<CubeFace>(face), point.position), fov, nearPlane,
+                                          point.range, {point.slopeScaleBias, local.depthBias}, conventions, casters);
         const float receiverBias = sideOfNormalBias(view, point.normalBiasSide, bias, point.position);
         addTile(plan, {packed.offsets[face], packed.size}, std::move(view), receiverBias, soft, conventions);
     }
@@ -190,7 +190,7 @@ void planPointTiles(LocalShadowPlan& plan, const LocalShadowSettings& local, con
 
 // CubeMap mode: the six mirrored face views of the hardware cube layout (rhi::cubeFaceView), 90 degrees each.
 void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const PointShadowInput& point,
-              std::uint32_t pointIndex, const rhi::Conventions& conventions, std::span<const Bounds> casterBounds)
+              std::uint32_t pointIndex, const rhi::Conventions& conventions, const CasterBvh& casters)
 {
     constexpr float kRightAngle = 1.57079633f;
     const float nearPlane = localShadowNearPlane(point.range, point.nearPlane, local);
@@ -209,13 +209,9 @@ void planCube(LocalShadowPlan& plan, const LocalShadowSettings& local, const Poi
     for (const CubeFace face : rhi::allCubeFaces) {
         const glm::mat4 view = rhi::cubeFaceView(face, point.position);
         LocalShadowView& faceView = cube.faces[static_cast<std::size_t>(face)];
-        faceView = {projection,
-                    projection * view,
-                    point.slopeScaleBias,
-                    local.depthBias,
-                    cullCastersInFrustum(view, kRightAngle, nearPlane, point.range, casterBounds),
-                    {},
-                    frustumVolume(view, kRightAngle, nearPlane, point.range)};
+        const CasterVolume volume = frustumVolume(view, kRightAngle, nearPlane, point.range);
+        faceView = {projection, projection * view, point.slopeScaleBias, local.depthBias, casters.inFrustum(volume), {},
+                    volume};
         receiverBias = sideOfNormalBias(faceView, point.normalBiasSide, bias, point.position);
     }
     shadowCube.depthRow = {toTexture[2][2], toTexture[3][2]};
@@ -237,14 +233,6 @@ std::vector<std::uint32_t> cullCastersInFrustum(const glm::mat4& view, float fov
     return inside;
 }
 
-bool castersInRange(glm::vec3 position, float range, std::span<const Bounds> casterBounds)
-{
-    return std::any_of(casterBounds.begin(), casterBounds.end(), [&](const Bounds& b) {
-        const glm::vec3 nearest = glm::clamp(position, b.min, b.max);
-        return glm::dot(nearest - position, nearest - position) <= range * range;
-    });
-}
-
 LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                  const ShadowCamera& camera, std::span<const SpotShadowInput> spots,
                                  std::span<const PointShadowInput> points, std::span<const Bounds> casterBounds,
@@ -256,14 +244,16 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
     plan.atlasSize = local.atlasSize;
     plan.spotTiles.assign(spots.size(), -1);
     plan.pointShadows.assign(points.size(), -1);
+    // Every light's culling walks one hierarchy of the casters' boxes, so that it costs what the light sees; a frame
+    // without spot and point lights builds none.
+    const CasterBvh casters(spots.empty() && points.empty() ? std::span<const Bounds>() : casterBounds);
     std::vector<Candidate> candidates;
     std::vector<std::uint32_t> cubes; // point light indices, CubeMap mode
     for (std::uint32_t i = 0; i < spots.size(); ++i) {
         const SpotShadowInput& spot = spots[i];
         const bool anyCaster =
-            !cullCastersInFrustum(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
-                                  localShadowNearPlane(spot.range, spot.nearPlane, local), spot.range, casterBounds)
-                 .empty();
+            casters.anyInFrustum(frustumVolume(spotView(spot.position, spot.direction), 2.0f * spot.outerAngle,
+                                               localShadowNearPlane(spot.range, spot.nearPlane, local), spot.range));
         if (wantsShadow(plan, LightKind::Spot, i, spot.strength,
                         shadowsNothing({spot.position, spot.range, anyCaster}, camera, settings.maxDistance)))
             candidates.push_back(
@@ -274,7 +264,7 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
     }
     for (std::uint32_t i = 0; i < points.size(); ++i) {
         const PointShadowInput& point = points[i];
-        const bool anyCaster = castersInRange(point.position, point.range, casterBounds);
+        const bool anyCaster = casters.anyInRange(point.position, point.range);
         if (!wantsShadow(plan, LightKind::Point, i, point.strength,
                          shadowsNothing({point.position, point.range, anyCaster}, camera, settings.maxDistance)))
             continue;
@@ -300,7 +290,7 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
     plan.allocation = {packing, packer.pack(requests)};
     const ShadowAtlasPack& pack = plan.allocation.pack;
     // Atlas tiles culled on the GPU list no casters here (their views keep the volume); cube faces are culled here.
-    const std::span<const Bounds> tileCasters = culledOnGpu(settings) ? std::span<const Bounds>() : casterBounds;
+    const CasterBvh* tileCasters = culledOnGpu(settings) ? nullptr : &casters;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Candidate& candidate = candidates[c];
         const PackedLight& packed = pack.lights[c];
@@ -323,7 +313,7 @@ LocalShadowPlan planLocalShadows(const ShadowSettings& settings, const rhi::Conv
     }
 
     for (const std::uint32_t pointIndex : cubes)
-        planCube(plan, local, points[pointIndex], pointIndex, conventions, casterBounds);
+        planCube(plan, local, points[pointIndex], pointIndex, conventions, casters);
 
     plan.uniforms.atlasSize = static_cast<float>(local.atlasSize);
     plan.uniforms.defaultFilter = local.filter;

@@ -1,7 +1,10 @@
+#include "penumbra/shadows/CasterBvh.hpp"
 #include "penumbra/shadows/CasterCulling.hpp"
 #include "penumbra/shadows/LocalShadowPlanner.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -98,6 +101,45 @@ TEST_F(CasterCullingTest, VolumesGiveThePlannersLists)
     EXPECT_EQ(listed(frustumVolume(view, 1.2f, 0.5f, 40.0f)), frustum);
     EXPECT_FALSE(frustum.empty());
     EXPECT_LT(frustum.size(), casters.size());
+}
+
+// The hierarchy gives each frustum and range the brute-force answer, box for box: 600 boxes of mixed sizes (some
+// straddling many views), 200 views from random places in random directions.
+TEST(CasterBvhTest, ListsAreTheBruteForceOnes)
+{
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> place(-200.0f, 200.0f), unit(-1.0f, 1.0f), size(0.05f, 1.0f);
+    std::vector<Bounds> boxes;
+    for (int i = 0; i < 600; ++i) {
+        const glm::vec3 centre(place(random), 0.1f * place(random), place(random));
+        const float half = i % 50 == 0 ? 80.0f * size(random) : 4.0f * size(random);
+        boxes.push_back({centre - half * glm::vec3(size(random), size(random), size(random)),
+                         centre + half * glm::vec3(size(random), size(random), size(random))});
+    }
+    const CasterBvh bvh(boxes);
+    std::size_t listed = 0;
+    for (int v = 0; v < 200; ++v) {
+        const glm::vec3 eye(place(random), 0.1f * place(random), place(random));
+        glm::vec3 direction(unit(random), unit(random), unit(random));
+        direction = glm::length(direction) > 1e-3f ? glm::normalize(direction) : glm::vec3(0.0f, -1.0f, 0.0f);
+        const glm::vec3 up = std::abs(direction.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+        const glm::mat4 view = glm::lookAt(eye, eye + direction, up);
+        const float fov = 0.2f + 2.8f * size(random), nearPlane = 0.05f * size(random), range = 100.0f * size(random);
+        const std::vector<std::uint32_t> expected = cullCastersInFrustum(view, fov, nearPlane, range, boxes);
+        const CasterVolume volume = frustumVolume(view, fov, nearPlane, range);
+        EXPECT_EQ(bvh.inFrustum(volume), expected) << "view " << v;
+        EXPECT_EQ(bvh.anyInFrustum(volume), !expected.empty()) << "view " << v;
+        listed += expected.size();
+        const bool inRange = std::any_of(boxes.begin(), boxes.end(), [&](const Bounds& b) {
+            const glm::vec3 nearest = glm::clamp(eye, b.min, b.max);
+            return glm::dot(nearest - eye, nearest - eye) <= range * range;
+        });
+        EXPECT_EQ(bvh.anyInRange(eye, range), inRange) << "view " << v;
+    }
+    EXPECT_GT(listed, 200u); // the views see something
+    EXPECT_LT(listed, 200u * boxes.size() / 4); // and far from everything
+    EXPECT_TRUE(
+        CasterBvh(std::span<const Bounds>()).inFrustum(frustumVolume(glm::mat4(1.0f), 1.0f, 0.1f, 10.0f)).empty());
 }
 
 } // namespace

@@ -42,10 +42,11 @@ render::FrameDesc smallFrame(shadows::CasterCullingMode culling)
 class GpuCullingTest : public GpuTest {
 protected:
     // The planner's list of every realtime tile (cascades, then local tiles) and the GPU's for the same volumes;
-    // `fault` changes what the GPU is given before it culls.
+    // `fault` changes what the GPU is given before it culls; `tilesPerDispatch` splits the tiles over dispatches.
     template <typename Fault>
     void cullBoth(Fault fault, std::vector<std::vector<std::uint32_t>>& planned,
-                  std::vector<std::vector<std::uint32_t>>& culled)
+                  std::vector<std::vector<std::uint32_t>>& culled,
+                  std::uint32_t tilesPerDispatch = std::numeric_limits<std::uint32_t>::max())
     {
         const scene::Scene scene = culledScene();
         render::SceneRenderer renderer(*device, scene);
@@ -63,7 +64,7 @@ protected:
         renderer.gpuScene().casters(casters);
         std::vector<shadows::Bounds> bounds = renderer.gpuScene().casterBounds();
         fault(volumes, bounds);
-        shadows::GpuCasterCulling culling(*device);
+        shadows::GpuCasterCulling culling(*device, tilesPerDispatch);
         auto commands = device->createCommandList();
         culling.record(*commands, casters, bounds, volumes, false);
         device->submit(*commands);
@@ -99,6 +100,11 @@ TEST_F(GpuCullingTest, ListsMatchThePlanner)
     // Some cubes lie out of every tile's reach, and the culling bias leaves some out of the later cascades.
     EXPECT_LT(planned.back().size(), kCubes);
     EXPECT_LT(planned[3].size(), kCubes);
+    // The same lists where the tiles are culled two per dispatch, as a device with a short storage range culls 10^6
+    // casters.
+    std::vector<std::vector<std::uint32_t>> replanned, split;
+    cullBoth([](auto&, auto&) {}, replanned, split, 2);
+    EXPECT_EQ(split, planned);
 }
 
 // The comparison sees a caster dropped (its box moved far away) and a wrong bounds test (a cascade's square shrunk).

@@ -40,8 +40,18 @@ LocalTileDraws LocalTileCache::record(rhi::CommandList& commands, const shadows:
     std::vector<const shadows::ShadowTileDraw*> changed;
     LocalTileDraws result;
     std::optional<LocalShadowRedraw> lastRedraw;
+    // Each caster's hash is computed the first time a tile draws it (0: not yet).
+    casterHashes_.assign(casters.size(), 0);
+    const auto casterHash = [&](std::uint32_t i) {
+        if (casterHashes_[i] == 0) {
+            ContentHash h;
+            addCaster(h, casters[i]);
+            casterHashes_[i] = h.value() | 1u;
+        }
+        return casterHashes_[i];
+    };
     for (const shadows::ShadowTileDraw& tile : tiles) {
-        const TileKey key = tileKey(tile, casters);
+        const TileKey key = sharedCasterTileKey(tile, casterHash);
         const TilePlace place{tile.viewport.x, tile.viewport.y, tile.viewport.width};
         keys[place] = key;
         const auto old = keys_.find(place);

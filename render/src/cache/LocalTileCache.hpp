@@ -60,6 +60,7 @@ private:
     // holds the same key as last frame holds the depth drawn then, whatever the tile's index.
     using TilePlace = std::tuple<float, float, float>;
     std::map<TilePlace, TileKey> keys_; // per atlas tile of the last record(), as drawn
+    std::vector<std::uint64_t> casterHashes_; // record()'s per caster, kept to spare the allocation
     bool valid_ = false;
 };
 

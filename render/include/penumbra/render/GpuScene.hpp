@@ -67,8 +67,9 @@ public:
     // What a deformed object's vertices are posed by this frame (a hash of its joint matrices and morph weights in
     // scene::Rig::pose), 0 for an object drawn as uploaded: ShadowCaster::pose, which caches compare.
     std::uint64_t poseKey(std::size_t object) const;
-    // Every shadow caster's world bounds, in caster order.
-    std::vector<shadows::Bounds> casterBounds() const;
+    // Every shadow caster's world bounds, in caster order, read from the scene on every call into storage kept from
+    // call to call (a scene of 10^5 objects would page-fault fresh vectors every frame): valid until the next call.
+    const std::vector<shadows::Bounds>& casterBounds() const;
     // Indices into casters() of the casters whose objects are static (scene::Mobility), ascending.
     std::vector<std::uint32_t> staticCasters() const;
 
@@ -106,6 +107,7 @@ private:
     std::vector<std::uint32_t> meshMaterialGroups_;
     // Per object: its scene::Rig::deformers index, -1 for an object not deformed.
     std::vector<std::int32_t> deformers_;
+    mutable std::vector<shadows::Bounds> casterBounds_; // casterBounds()'s storage
     rhi::Device& device_;
     std::vector<std::unique_ptr<rhi::Texture>> textures_;
     std::vector<std::unique_ptr<rhi::Sampler>> samplers_; // one per texture

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -60,25 +61,33 @@ inline constexpr shaders::ShaderStruct kCulledDrawStruct{"CulledDraw", sizeof(Cu
 static_assert(shaders::matchesLayout(kCulledDrawStruct, shaders::BlockLayout::Std430, true));
 static_assert(sizeof(CulledDraw) == rhi::kDrawIndexedIndirectCommandBytes);
 
-// The fixed part of the storage block CasterVolumes, before its volumes.
+// The fixed part of the storage block CasterVolumes, before its volumes: one dispatch's share of the tiles.
 struct CullingCounts {
     std::uint32_t casters = 0;
-    std::uint32_t tiles = 0;
+    std::uint32_t tiles = 0; // the dispatch's tiles, firstTile onwards
     std::uint32_t batches = 0;
+    std::uint32_t firstTile = 0;
+    std::uint32_t tileSlots = 0; // instance slots per tile: the caster count, rounded up for the binding offsets
 };
 
 // Shadow casters culled per tile on the GPU (shaders/caster_culling.comp): every caster's world box is tested against
 // every tile's CasterVolume with casterInVolume's rules; a caster that passes is appended to its batch's instances in
 // the tile's range of the instance lists (its InstanceTransform, and its index), and counted in the tile's draw of its
-// batch, an indexed indirect command. Tile t's range holds a slot for every caster; the draw of batch b in tile t is
-// command t * batches + b, and its count (0 or 1, for drawIndexedIndirectCount) says whether it has instances.
+// batch, an indexed indirect command. Tile t's range holds a slot for every caster (tileSlots() of them); the draw of
+// batch b in tile t is command t * batches + b, and its count (0 or 1, for drawIndexedIndirectCount) says whether it
+// has instances. The tiles are culled in as few dispatches as the device's storage range allows, each binding the
+// instance ranges of its tiles only, so that 10^6 casters fit where all tiles' ranges together would not.
 class GpuCasterCulling {
 public:
-    explicit GpuCasterCulling(rhi::Device& device);
+    // `maxTilesPerDispatch`: the most tiles one dispatch culls, fewer where their instances exceed the device's
+    // storage range (a test gives a small number to see tiles culled over several dispatches).
+    explicit GpuCasterCulling(rhi::Device& device,
+                              std::uint32_t maxTilesPerDispatch = std::numeric_limits<std::uint32_t>::max());
 
     // Uploads the casters, their world boxes (casters[i]'s is bounds[i]) and the tiles' volumes, and records the
-    // dispatch. `normalMatrices`: the instances carry their normal matrices (the caster-side normal offset reads
-    // them). Throws rhi::Error where the counts differ, and for casters of a draw group that do not draw alike.
+    // dispatches. `normalMatrices`: the instances carry their normal matrices (the caster-side normal offset reads
+    // them). Throws rhi::Error where the counts differ, for casters of a draw group that do not draw alike, and where
+    // one tile's instances exceed the device's storage range (Capabilities::maxStorageBufferRange).
     void record(rhi::CommandList& commands, std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
                 std::span<const CasterVolume> volumes, bool normalMatrices);
 
@@ -95,7 +104,9 @@ public:
     std::vector<std::vector<std::uint32_t>> readLists() const;
 
 private:
-    void reserve(std::uint64_t casters, std::uint64_t tiles, std::uint64_t draws);
+    void reserve(std::uint64_t casters, std::uint64_t volumeBytes, std::uint64_t draws);
+    void fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds, bool normalMatrices);
+    void dispatchTiles(rhi::CommandList& commands, std::span<const CasterVolume> volumes);
 
     rhi::Device& device_;
     std::unique_ptr<rhi::Shader> shader_;
@@ -118,6 +129,8 @@ private:
     } scratch_;
     std::uint32_t casterCount_ = 0;
     std::uint32_t tileCount_ = 0;
+    std::uint32_t tileSlots_ = 0;
+    std::uint32_t maxTilesPerDispatch_;
 };
 
 } // namespace penumbra::shadows
