@@ -37,13 +37,6 @@ function(penumbra_warnings target)
                                            $<$<BOOL:$<TARGET_PROPERTY:UNITY_BUILD>>:-Wno-subobject-linkage>)
 endfunction()
 
-# A test executable's files all parse GoogleTest, fmt and GLM: precompiled once per executable, they cost a file
-# 3.0 CPU-s to compile instead of 4.2 (tests/shadows/LightClustersTest.cpp at -O2, 2026-12-06). Third-party headers
-# only, so that editing the library does not rebuild the header.
-function(penumbra_test_headers target)
-  target_precompile_headers(${target} PRIVATE <gtest/gtest.h> <fmt/format.h> <glm/glm.hpp> <string> <vector>)
-endfunction()
-
 # The headers only the backends share (rhi/backend/: checks every API must apply alike, the debug
 # message log), on `target`'s own include path: never installed or exported, so no part of the public API.
 function(penumbra_uses_backend_headers target)

@@ -27,6 +27,8 @@ rhi::ResourceState graphUseState(ResourceUse use)
         return rhi::ResourceState::DepthRead;
     case ResourceUse::TransferSource:
         return rhi::ResourceState::CopySource;
+    case ResourceUse::StorageWrite:
+        return rhi::ResourceState::ShaderWrite;
     case ResourceUse::RenderTarget:
     case ResourceUse::DrawOver:
         return rhi::ResourceState::RenderTarget;
