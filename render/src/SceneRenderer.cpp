@@ -53,29 +53,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 
 float aspectOf(const FrameDesc& frame) { return static_cast<float>(frame.width) / static_cast<float>(frame.height); }
 
-bool isStatic(const std::vector<std::uint32_t>& staticCasters, std::uint32_t caster)
-{
-    return std::binary_search(staticCasters.begin(), staticCasters.end(), caster);
-}
-
-SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_t>& staticCasters)
-{
-    SplitTiles split{shadows::DirectionalShadowPass::tileDraws(plans.directional),
-                     shadows::LocalShadowPass::tileDraws(plans.local)};
-    for (std::vector<shadows::ShadowTileDraw>* tiles : {&split.directional, &split.local})
-        for (shadows::ShadowTileDraw& tile : *tiles)
-            std::erase_if(tile.casters, [&](std::uint32_t i) { return !isStatic(staticCasters, i); });
-    const auto drop = [&](std::vector<std::uint32_t>& casters) {
-        std::erase_if(casters, [&](std::uint32_t i) { return isStatic(staticCasters, i); });
-    };
-    for (shadows::ShadowedDirectionalLight& light : plans.directional.lights)
-        for (shadows::DirectionalCascadePlan& cascade : light.cascades)
-            drop(cascade.casters.casters);
-    for (shadows::LocalAtlasTile& tile : plans.local.tiles)
-        drop(tile.view.casters);
-    return split;
-}
-
 } // namespace
 
 SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)

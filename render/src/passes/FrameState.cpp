@@ -3,8 +3,38 @@
 #include "../static/StaticShadowCache.hpp"
 
 #include "penumbra/render/FrameResources.hpp"
+#include "penumbra/shadows/DirectionalShadowPass.hpp"
+#include "penumbra/shadows/LocalShadowPass.hpp"
+
+#include <algorithm>
 
 namespace penumbra::render {
+namespace {
+
+bool isStaticCaster(const std::vector<std::uint32_t>& staticCasters, std::uint32_t caster)
+{
+    return std::binary_search(staticCasters.begin(), staticCasters.end(), caster);
+}
+
+} // namespace
+
+SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_t>& staticCasters)
+{
+    SplitTiles split{shadows::DirectionalShadowPass::tileDraws(plans.directional),
+                     shadows::LocalShadowPass::tileDraws(plans.local)};
+    for (std::vector<shadows::ShadowTileDraw>* tiles : {&split.directional, &split.local})
+        for (shadows::ShadowTileDraw& tile : *tiles)
+            std::erase_if(tile.casters, [&](std::uint32_t i) { return !isStaticCaster(staticCasters, i); });
+    const auto drop = [&](std::vector<std::uint32_t>& casters) {
+        std::erase_if(casters, [&](std::uint32_t i) { return isStaticCaster(staticCasters, i); });
+    };
+    for (shadows::ShadowedDirectionalLight& light : plans.directional.lights)
+        for (shadows::DirectionalCascadePlan& cascade : light.cascades)
+            drop(cascade.casters.casters);
+    for (shadows::LocalAtlasTile& tile : plans.local.tiles)
+        drop(tile.view.casters);
+    return split;
+}
 
 rhi::BindingSetLayoutDesc ShadowMapBindings::layoutDesc()
 {

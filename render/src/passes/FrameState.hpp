@@ -50,6 +50,9 @@ struct SplitTiles {
     std::vector<shadows::ShadowTileDraw> local;
 };
 
+// Moves the static casters (`staticCasters`, sorted) out of the plans' tiles into the returned tiles.
+SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_t>& staticCasters);
+
 // What SceneRenderer planned for this frame and its built-in passes draw: set before the graph compiles, read by the
 // passes' setup and execute, which add their counts to `stats`.
 struct FrameState {
