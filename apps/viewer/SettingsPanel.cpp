@@ -253,6 +253,8 @@ bool shadowSettings(shadows::ShadowSettings& s)
     changed |= filterCombo("filter", o.filter);
     changed |= fieldCombo("local.pointMode", o.pointMode);
     changed |= fieldPowerOfTwo("local.cubeMapSize", o.cubeMapSize);
+    changed |= fieldPowerOfTwo("local.tileResolution", o.tileResolution);
+    changed |= fieldPowerOfTwo("local.minTileResolution", o.minTileResolution);
     changed |= fieldSlider("local.nearPlane", o.nearPlane);
     changed |= fieldLogSlider("local.depthBias", o.depthBias);
     changed |= fieldCombo("local.spotFovBias", o.spotFovBias);
