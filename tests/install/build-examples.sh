@@ -10,8 +10,7 @@ build=$1 source=$2 work=$3 check=$4
 shift 4
 rm -rf "$work"
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
-# Unoptimized: the examples only call into the installed (optimized) libraries, and at -O0 their nine programs
-# compile in about half the time.
+# Unoptimized: the examples only call into the installed (optimized) libraries, and compile faster at -O0.
 cmake -S "$source/examples" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Debug \
       -DCMAKE_CXX_FLAGS_DEBUG=-O0 --log-level=WARNING >/dev/null
 cmake --build "$work/build" -j 1 >/dev/null
