@@ -79,7 +79,8 @@ struct LitFrameUniforms {
 
 // The lit pass's spot and point lights (spot lights, then point lights: the lit pass's local index) and their
 // clustered lists (shadows::buildLightClusters with kLitClusterGrid), in data textures that lit.frag reads with
-// texelFetch: the RHI has no storage buffers yet. Each texture is kLitDataTextureWidth texels wide with as many rows
+// texelFetch, uploaded by the CPU or, for the lists, written as storage images by the light cluster pass
+// (local.clusterBuild). Each texture is kLitDataTextureWidth texels wide with as many rows
 // as the frame needs, rounded up to a power of two; texel t of a texture lies at column t % width, row t / width.
 inline constexpr std::uint32_t kLitDataTextureWidthLog2 = 10;
 inline constexpr std::uint32_t kLitDataTextureWidth = 1u << kLitDataTextureWidthLog2;

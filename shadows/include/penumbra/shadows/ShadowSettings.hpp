@@ -112,7 +112,8 @@ struct DirectionalShadowSettings {
     // Depth fit: grid steps per power of two of light-space size for the tiles' half sizes (0: unquantized, as the
     // footprints need, which swims), and how many steps further below the kept size a tile's need must fall before
     // the tile shrinks; hysteresis / steps is also the log2 of the texel size a kept partition may lose against the
-    // best before it is dropped.
+    // best before it is dropped. A tile but the last also keeps its size while its footprint grows by up to half a
+    // step (DepthFit.hpp).
     std::uint32_t depthFitSteps = 8;
     float depthFitHysteresis = 1.0f;
     rhi::Format atlasFormat = rhi::Format::D32F;
