@@ -13,7 +13,7 @@
 namespace penumbra {
 namespace {
 
-std::unique_ptr<rhi::Device> strictDevice(const char* configuration)
+std::unique_ptr<rhi::Device> throwingDevice(const char* configuration)
 {
     rhi::DeviceDesc desc = penumbra::parseConfiguration(configuration);
     desc.validation = true;
@@ -63,7 +63,7 @@ TEST_F(VulkanDeviceLossTest, ALostDeviceIsReportedWithTheApiCodeAndANewDeviceWor
     // submission or before.
     setenv("PENUMBRA_LOSE_DEVICE_AT_SUBMIT", "4", 1);
     {
-        auto device = strictDevice("vulkan");
+        auto device = throwingDevice("vulkan");
         ClearedTarget target(*device, glm::vec4(1.0f));
         int succeeded = 0;
         int lost = 0;
@@ -85,7 +85,7 @@ TEST_F(VulkanDeviceLossTest, ALostDeviceIsReportedWithTheApiCodeAndANewDeviceWor
     } // every object of the lost device destroyed here, without a crash or a validation message
 
     setenv("PENUMBRA_LOSE_DEVICE_AT_SUBMIT", "0", 1);
-    auto device = strictDevice("vulkan");
+    auto device = throwingDevice("vulkan");
     ClearedTarget target(*device, glm::vec4(0.0f, 1.0f, 0.0f, 1.0f));
     device->submit(*target.commands);
     const rhi::Image image = rhi::readTexture(*device, *target.texture);
@@ -98,7 +98,7 @@ TEST_F(VulkanDeviceLossTest, ALostDeviceIsReportedWithTheApiCodeAndANewDeviceWor
 TEST_F(VulkanDeviceLossTest, WithoutALossEverySubmissionSucceeds)
 {
     setenv("PENUMBRA_LOSE_DEVICE_AT_SUBMIT", "0", 1);
-    auto device = strictDevice("vulkan");
+    auto device = throwingDevice("vulkan");
     ClearedTarget target(*device, glm::vec4(1.0f));
     for (int submission = 0; submission < 3; ++submission)
         EXPECT_NO_THROW(device->submit(*target.commands));
@@ -107,7 +107,7 @@ TEST_F(VulkanDeviceLossTest, WithoutALossEverySubmissionSucceeds)
 // EGL contexts are made with the lose-context-on-reset strategy where the display offers it, as Mesa's does.
 TEST(OpenGlDeviceLossTest, TheContextReportsResets)
 {
-    auto device = strictDevice("opengl");
+    auto device = throwingDevice("opengl");
     EXPECT_TRUE(device->capabilities().deviceLossReported);
     ClearedTarget target(*device, glm::vec4(1.0f));
     EXPECT_NO_THROW(device->submit(*target.commands));

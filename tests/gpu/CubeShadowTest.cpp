@@ -10,7 +10,7 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kFaceSize = 32;
+constexpr std::uint32_t kShadowFaceSize = 32;
 constexpr float kNear = 0.1f, kFar = 10.0f;
 const glm::vec3 kLight(-1.0f, 2.0f, 0.5f);
 
@@ -54,8 +54,8 @@ protected:
     void SetUp() override
     {
         GpuTest::SetUp();
-        map = device->createTexture({.width = kFaceSize,
-                                     .height = kFaceSize,
+        map = device->createTexture({.width = kShadowFaceSize,
+                                     .height = kShadowFaceSize,
                                      .layers = 12,
                                      .cube = true,
                                      .format = GetParam(),
@@ -74,16 +74,16 @@ protected:
 TEST_P(CubeShadowTest, FaceDepthReadbacksMatchTheCubeSamplingTable)
 {
     const rhi::Conventions& conventions = device->conventions();
-    const float margin = 1.5f * 2.0f / kFaceSize;
+    const float margin = 1.5f * 2.0f / kShadowFaceSize;
     for (std::uint32_t cube = 0; cube < 2; ++cube)
         for (rhi::CubeFace face : rhi::allCubeFaces) {
             const rhi::DepthImage depth = rhi::readDepth(*device, *map, rhi::cubeLayer(cube, face));
             const float occluderDepth = conventions.windowDepth(projection, kOccluders[cube].distance);
             const CubeFaceFrame f = cubeFaceFrame(face);
             int wrong = 0;
-            for (std::uint32_t y = 0; y < kFaceSize; ++y)
-                for (std::uint32_t x = 0; x < kFaceSize; ++x) {
-                    const glm::vec3 d = cubeTexelDirection(face, x, y, kFaceSize);
+            for (std::uint32_t y = 0; y < kShadowFaceSize; ++y)
+                for (std::uint32_t x = 0; x < kShadowFaceSize; ++x) {
+                    const glm::vec3 d = cubeTexelDirection(face, x, y, kShadowFaceSize);
                     const float b = glm::dot(d, f.b), c = glm::dot(d, f.c);
                     if (std::abs(b) < margin || std::abs(c) < margin)
                         continue; // the occluders' edges

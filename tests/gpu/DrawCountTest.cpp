@@ -13,12 +13,12 @@
 namespace penumbra::testing {
 namespace {
 
-const char* const vertexGlsl = R"(#version 450
+const char* const quadVertexGlsl = R"(#version 450
 layout(location = 0) in vec2 position;
 void main() { gl_Position = vec4(position, 0.5, 1.0); }
 )";
 
-const char* const fragmentGlsl = R"(#version 450
+const char* const redGlsl = R"(#version 450
 layout(location = 0) out vec4 color;
 void main() { color = vec4(1.0, 0.0, 0.0, 1.0); }
 )";
@@ -73,8 +73,8 @@ Quadrants drawnQuadrants(rhi::Device& device, std::uint32_t count, std::uint32_t
     const std::array<std::uint32_t, 2> words{count, 0};
     counter->write(0, std::as_bytes(std::span(words)));
 
-    auto vertex = device.createShader({rhi::ShaderStage::Vertex, vertexGlsl, "quadrant.vert"});
-    auto fragment = device.createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "quadrant.frag"});
+    auto vertex = device.createShader({rhi::ShaderStage::Vertex, quadVertexGlsl, "quadrant.vert"});
+    auto fragment = device.createShader({rhi::ShaderStage::Fragment, redGlsl, "quadrant.frag"});
     auto pipeline = device.createPipeline({.vertex = vertex.get(),
                                            .fragment = fragment.get(),
                                            .vertexLayout = {{{.stride = 8}}, {{.format = rhi::VertexFormat::Float2}}},

@@ -20,7 +20,7 @@
 namespace penumbra::testing {
 namespace {
 
-const char* const vertexGlsl = R"(#version 450
+const char* const tintVertexGlsl = R"(#version 450
 layout(location = 0) in vec3 position;
 layout(std140, binding = 0) uniform Transform {
     mat4 clip;
@@ -30,7 +30,7 @@ layout(location = 0) out vec4 tint;
 void main() { gl_Position = transform.clip * vec4(position, 1.0); tint = transform.tint; }
 )";
 
-const char* const fragmentGlsl = R"(#version 450
+const char* const tintedTextureGlsl = R"(#version 450
 layout(location = 0) in vec4 tint;
 layout(binding = 1) uniform sampler2D image;
 layout(location = 0) out vec4 color;
@@ -125,8 +125,8 @@ struct Objects {
             {.width = 4, .height = 4, .usage = rhi::TextureUsage::RenderTarget, .debugName = "small"});
         sampler = device.createSampler(
             {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "nearest"});
-        vertex = device.createShader({rhi::ShaderStage::Vertex, vertexGlsl, "misuse.vert"});
-        fragment = device.createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "misuse.frag"});
+        vertex = device.createShader({rhi::ShaderStage::Vertex, tintVertexGlsl, "misuse.vert"});
+        fragment = device.createShader({rhi::ShaderStage::Fragment, tintedTextureGlsl, "misuse.frag"});
         const rhi::Attachment colorAttachment{color.get(), 0};
         target = device.createFramebuffer(
             {.colors = {&colorAttachment, 1}, .depth = {depth.get(), 0}, .debugName = "target"});
@@ -1025,7 +1025,7 @@ const std::vector<Rule>& rules()
     return table;
 }
 
-std::string describe(const std::exception& e)
+std::string describeException(const std::exception& e)
 {
     return fmt::format("{} \"{}\"",
                        dynamic_cast<const rhi::UnsupportedError*>(&e) ? "UnsupportedError"
@@ -1086,7 +1086,7 @@ TEST_F(MisuseTest, EveryRuleRaisesItsErrorAtTheBreakingCall)
         try {
             rule.setup(o);
         } catch (const std::exception& e) {
-            ADD_FAILURE() << "the setup threw " << describe(e);
+            ADD_FAILURE() << "the setup threw " << describeException(e);
             continue;
         }
         const std::string expected = rule.message(device->capabilities());
@@ -1094,10 +1094,10 @@ TEST_F(MisuseTest, EveryRuleRaisesItsErrorAtTheBreakingCall)
             rule.breaking(o);
             ADD_FAILURE() << "the breaking call was accepted; expected \"" << expected << "\"";
         } catch (const rhi::UnsupportedError& e) {
-            EXPECT_EQ(rule.raises, Raises::Unsupported) << describe(e);
+            EXPECT_EQ(rule.raises, Raises::Unsupported) << describeException(e);
             EXPECT_EQ(std::string(e.what()), expected);
         } catch (const rhi::Error& e) {
-            EXPECT_EQ(rule.raises, Raises::Error) << describe(e);
+            EXPECT_EQ(rule.raises, Raises::Error) << describeException(e);
             EXPECT_EQ(std::string(e.what()), expected);
         }
     }

@@ -13,14 +13,14 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kSize = 128;
+constexpr std::uint32_t kMultisampleSize = 128;
 
-const char* const vertexGlsl = R"(#version 450
+const char* const triangleVertexGlsl = R"(#version 450
 layout(location = 0) in vec2 position;
 void main() { gl_Position = vec4(position, 0.5, 1.0); }
 )";
 
-const char* const fragmentGlsl = R"(#version 450
+const char* const whiteGlsl = R"(#version 450
 layout(location = 0) out vec4 color;
 void main() { color = vec4(1.0); }
 )";
@@ -62,8 +62,8 @@ protected:
     // The triangle drawn with `samples` into colour and depth, resolved where multisampled, read back.
     rhi::Image drawTriangle(std::uint32_t samples)
     {
-        auto vertex = device->createShader({rhi::ShaderStage::Vertex, vertexGlsl, "triangle.vert"});
-        auto fragment = device->createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "white.frag"});
+        auto vertex = device->createShader({rhi::ShaderStage::Vertex, triangleVertexGlsl, "triangle.vert"});
+        auto fragment = device->createShader({rhi::ShaderStage::Fragment, whiteGlsl, "white.frag"});
         rhi::PipelineDesc desc{.vertex = vertex.get(), .fragment = fragment.get()};
         desc.vertexLayout = {{{.stride = sizeof(glm::vec2)}}, {{.location = 0, .format = rhi::VertexFormat::Float2}}};
         desc.depth = {.test = true, .write = true};
@@ -75,16 +75,18 @@ protected:
         auto vertices = device->createBuffer({.size = sizeof(kTriangle), .usage = rhi::BufferUsage::Vertex});
         vertices->write(0, std::as_bytes(std::span(kTriangle)));
 
-        auto resolved = device->createTexture(
-            {.width = kSize, .height = kSize, .usage = rhi::TextureUsage::RenderTarget, .debugName = "resolved"});
+        auto resolved = device->createTexture({.width = kMultisampleSize,
+                                               .height = kMultisampleSize,
+                                               .usage = rhi::TextureUsage::RenderTarget,
+                                               .debugName = "resolved"});
         auto color = samples == 1 ? nullptr
-                                  : device->createTexture({.width = kSize,
-                                                           .height = kSize,
+                                  : device->createTexture({.width = kMultisampleSize,
+                                                           .height = kMultisampleSize,
                                                            .usage = rhi::TextureUsage::RenderTarget,
                                                            .samples = samples,
                                                            .debugName = "multisampled colour"});
-        auto depth = device->createTexture({.width = kSize,
-                                            .height = kSize,
+        auto depth = device->createTexture({.width = kMultisampleSize,
+                                            .height = kMultisampleSize,
                                             .format = rhi::Format::D32F,
                                             .usage = rhi::TextureUsage::RenderTarget,
                                             .samples = samples,
@@ -147,8 +149,8 @@ TEST_F(MultisampleTest, CountsTheDeviceLacksAreRefusedWithTheOnesItOffers)
     const rhi::Capabilities& caps = device->capabilities();
     const std::uint32_t color = caps.format(rhi::Format::RGBA8).sampleCounts;
     const std::array targets{rhi::Format::RGBA8, rhi::Format::D32F};
-    auto vertex = device->createShader({rhi::ShaderStage::Vertex, vertexGlsl, "triangle.vert"});
-    auto fragment = device->createShader({rhi::ShaderStage::Fragment, fragmentGlsl, "white.frag"});
+    auto vertex = device->createShader({rhi::ShaderStage::Vertex, triangleVertexGlsl, "triangle.vert"});
+    auto fragment = device->createShader({rhi::ShaderStage::Fragment, whiteGlsl, "white.frag"});
     for (std::uint32_t count = 2; count <= 8; count *= 2) {
         if ((color & count) == 0) {
             try {

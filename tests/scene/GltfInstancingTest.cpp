@@ -101,7 +101,7 @@ void expectSameObjects(const Scene& instanced, const Scene& plain, float toleran
     }
 }
 
-std::string joined(const std::vector<std::string>& notes)
+std::string joinedNotes(const std::vector<std::string>& notes)
 {
     std::string out;
     for (const std::string& note : notes)
@@ -199,7 +199,7 @@ TEST_F(GltfLoaderTest, InstancesScaledToNothingAndApplicationAttributesAreNoted)
     const gltf::GltfScene loaded = gltf::loadGltf(write(b));
     ASSERT_EQ(loaded.scene.objects.size(), 2u);
     EXPECT_EQ(loaded.scene.objects[1].name, "trees/instance 2");
-    const std::string notes = joined(loaded.notes);
+    const std::string notes = joinedNotes(loaded.notes);
     EXPECT_CONTAINS(notes, "node 0 ('trees'): 1 of 3 instances skipped, their transforms scale them to nothing");
     EXPECT_CONTAINS(notes, "node 0 ('trees'): EXT_mesh_gpu_instancing attribute _ID is application-specific: ignored");
 }

@@ -11,8 +11,6 @@
 namespace penumbra::shadows {
 namespace {
 
-const rhi::Conventions conventions{rhi::DepthRange::ZeroToOne, true};
-
 // The built-in test scene's camera (scenes::makeShadowTestScene): from (0, 8, -20) at (0, 0, 5), 60 degrees, 16:9.
 ShadowCamera sceneCamera()
 {
@@ -36,7 +34,7 @@ DirectionalShadowPlan plan(CascadeProjection projection, const ShadowCamera& cam
     const std::vector<DirectionalShadowLightInput> lights{{glm::normalize(light)}};
     // Without casters of the test's own, one where the camera stands: the light then has a caster in reach.
     const std::vector<Bounds> atCamera{{camera.position - 1.0f, camera.position + 1.0f}};
-    return planDirectionalShadows(settings, conventions, camera, lights,
+    return planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights,
                                   casters.empty() ? std::span<const Bounds>(atCamera) : casters);
 }
 
@@ -116,7 +114,8 @@ TEST(CloseFit, SelectedCascadeFiltersStayInsideTheirTile)
             const std::vector<DirectionalShadowLightInput> lights{{testing::randomUnit(rng)},
                                                                   {testing::randomUnit(rng)}};
             const std::vector<Bounds> casters{{camera.position - 1.0f, camera.position + 1.0f}};
-            const DirectionalShadowPlan p = planDirectionalShadows(settings, conventions, camera, lights, casters);
+            const DirectionalShadowPlan p =
+                planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters);
             const glm::vec3 right = glm::cross(camera.forward, camera.up);
             const float tanY = std::tan(0.5f * camera.fovY);
             const float size = static_cast<float>(p.atlas.atlasSize());

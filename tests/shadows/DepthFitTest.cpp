@@ -1,5 +1,6 @@
 // Depth fit: the histogram of the visible view depths, its partition into cascades, the tiles' half sizes on a grid
 // with hysteresis, and the planner's tiles around the samples' footprints.
+#include "ShadowTestSupport.hpp"
 #include "penumbra/shadows/CascadeSelection.hpp"
 #include "penumbra/shadows/DepthFit.hpp"
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
@@ -10,8 +11,6 @@
 
 namespace penumbra::shadows {
 namespace {
-
-const rhi::Conventions conventions{rhi::DepthRange::ZeroToOne, true};
 
 // A histogram over a 100 m shadow distance with `count` samples in the bin of each depth, their light-space footprint
 // (slot 0) a square of half size `half` about the origin.
@@ -149,16 +148,19 @@ TEST(DepthFit, PlannerFitsTheTilesToTheSamples)
     ShadowSettings settings;
     const std::vector<DirectionalShadowLightInput> lights{{glm::normalize(glm::vec3(-0.4f, -1.0f, 0.5f))}};
     const std::vector<Bounds> casters{{glm::vec3(-1.0f), glm::vec3(1.0f)}};
-    const DirectionalShadowPlan stable = planDirectionalShadows(settings, conventions, camera, lights, casters);
+    const DirectionalShadowPlan stable =
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters);
     settings.directional.projection = CascadeProjection::Close;
-    const DirectionalShadowPlan close = planDirectionalShadows(settings, conventions, camera, lights, casters);
+    const DirectionalShadowPlan close =
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters);
     settings.directional.projection = CascadeProjection::DepthFit;
-    const DirectionalShadowPlan fallback = planDirectionalShadows(settings, conventions, camera, lights, casters);
+    const DirectionalShadowPlan fallback =
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters);
     EXPECT_FALSE(fallback.depthFit);
     DepthHistogram h = histogramOf({{2.0f, 1.0f}, {3.0f, 1.5f}, {6.0f, 3.0f}, {12.0f, 6.0f}, {30.0f, 15.0f}});
     h.lightDirections = {lights[0].direction};
     const DirectionalShadowPlan fitted =
-        planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, nullptr});
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters, {&h, nullptr});
     ASSERT_EQ(fitted.lights.size(), 1u);
     ASSERT_TRUE(fitted.depthFit);
     EXPECT_EQ(fitted.uniforms.cascadeProjection, CascadeProjection::DepthFit);
@@ -172,12 +174,12 @@ TEST(DepthFit, PlannerFitsTheTilesToTheSamples)
     }
     // The same histogram with the plan's kept state gives the same plan.
     const DirectionalShadowPlan again =
-        planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, &*fitted.depthFit});
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters, {&h, &*fitted.depthFit});
     EXPECT_EQ(again.depthFit, fitted.depthFit);
     // A histogram measured along another light's direction: the footprints are not used, the slices' bounds are.
     h.lightDirections = {glm::vec3(0.0f, -1.0f, 0.0f)};
     const DirectionalShadowPlan other =
-        planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, nullptr});
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters, {&h, nullptr});
     EXPECT_GT(other.lights[0].cascades[0].fit.texelSize, fitted.lights[0].cascades[0].fit.texelSize);
 }
 
@@ -216,7 +218,7 @@ TEST(DepthFit, EachLightSelectsInItsOwnTiles)
         bin.count += 1;
     }
     const DirectionalShadowPlan plan =
-        planDirectionalShadows(settings, conventions, camera, lights, casters, {&h, nullptr});
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters, {&h, nullptr});
     ASSERT_EQ(plan.lights.size(), 2u);
     const DirectionalShadowUniforms& u = plan.uniforms;
     // Whether light `slot`'s tile of cascade `c` holds the point.

@@ -13,7 +13,7 @@
 namespace penumbra::shadows {
 namespace {
 
-ShadowCamera streetCamera()
+ShadowCamera longStreetCamera()
 {
     return {.position = {0.0f, 1.7f, 150.0f},
             .forward = {0.0f, 0.0f, -1.0f},
@@ -95,7 +95,7 @@ std::size_t countMisses(const LightClusters& clusters, const ShadowCamera& camer
 TEST(LightClusters, EveryLightThatReachesAPointIsInItsClusterList)
 {
     std::mt19937 rng(11);
-    const ShadowCamera camera = streetCamera();
+    const ShadowCamera camera = longStreetCamera();
     const std::vector<ClusterLight> lights = randomLights(rng, 1024);
     const auto start = std::chrono::steady_clock::now();
     const LightClusters clusters = buildLightClusters(camera, lights);
@@ -114,7 +114,8 @@ TEST(LightClusters, ListsAreConsecutiveAndAscending)
 {
     std::mt19937 rng(5);
     const std::vector<ClusterLight> lights = randomLights(rng, 200);
-    const LightClusters clusters = buildLightClusters(streetCamera(), lights, {.tilesX = 8, .tilesY = 4, .slices = 6});
+    const LightClusters clusters =
+        buildLightClusters(longStreetCamera(), lights, {.tilesX = 8, .tilesY = 4, .slices = 6});
     ASSERT_EQ(clusters.ranges.size(), 8u * 4 * 6);
     std::uint32_t next = 0;
     for (const LightClusterRange& r : clusters.ranges) {
@@ -129,7 +130,7 @@ TEST(LightClusters, ListsAreConsecutiveAndAscending)
 
 TEST(LightClusters, LookupMatchesTheGridsFormula)
 {
-    const ShadowCamera camera = streetCamera();
+    const ShadowCamera camera = longStreetCamera();
     const LightClusters clusters = buildLightClusters(camera, {});
     const LightClusterUniforms& g = clusters.grid;
     // The top-left corner, just past the near plane, is cluster 0; the bottom-right at the far plane the last.
@@ -145,7 +146,7 @@ TEST(LightClusters, LookupMatchesTheGridsFormula)
 
 TEST(LightClusters, SpotConesSkipClustersBesideThem)
 {
-    const ShadowCamera camera = streetCamera();
+    const ShadowCamera camera = longStreetCamera();
     // A narrow spot light pointing down ahead of the camera, and a point light of the same range there.
     const ClusterLight spot{.kind = LightKind::Spot,
                             .position = {0.0f, 6.0f, 120.0f},
@@ -164,7 +165,7 @@ TEST(LightClusters, MissCountCatchesFault)
 {
     // Lists built for lights half their range miss the points the full lights reach.
     std::mt19937 rng(2);
-    const ShadowCamera camera = streetCamera();
+    const ShadowCamera camera = longStreetCamera();
     const std::vector<ClusterLight> lights = randomLights(rng, 64);
     std::vector<ClusterLight> shrunk = lights;
     for (ClusterLight& light : shrunk)
@@ -175,7 +176,7 @@ TEST(LightClusters, MissCountCatchesFault)
 
 TEST(LightClusters, RejectsBadGridsCamerasAndLights)
 {
-    const ShadowCamera camera = streetCamera();
+    const ShadowCamera camera = longStreetCamera();
     EXPECT_THROW(buildLightClusters(camera, {}, {.tilesX = 0}), rhi::Error);
     EXPECT_THROW(buildLightClusters(camera, {}, {.slices = 1000}), rhi::Error);
     ShadowCamera flat = camera;

@@ -8,8 +8,6 @@
 namespace penumbra::shadows {
 namespace {
 
-const rhi::Conventions conventions{rhi::DepthRange::ZeroToOne, true};
-
 ShadowCamera streetCamera()
 {
     ShadowCamera camera;
@@ -39,7 +37,7 @@ TEST(DirectionalShadowPlanner, ReportsLightsWithoutTilesAndNeverThrows)
     const std::vector<DirectionalShadowLightInput> lights = sixLights();
     const std::vector<Bounds> casters{{{-1, 0, -5}, {1, 2, -3}}};
     const DirectionalShadowPlan plan =
-        planDirectionalShadows(ShadowSettings{}, conventions, streetCamera(), lights, casters);
+        planDirectionalShadows(ShadowSettings{}, testing::kZeroToOneReversed, streetCamera(), lights, casters);
     ASSERT_EQ(plan.lights.size(), 4u);
     EXPECT_EQ(plan.lights[0].lightIndex, 0u);
     EXPECT_EQ(plan.lights[1].lightIndex, 2u);
@@ -54,7 +52,7 @@ TEST(DirectionalShadowPlanner, ReportsLightsWithoutTilesAndNeverThrows)
 
     std::vector<DirectionalShadowLightInput> five(5);
     const DirectionalShadowPlan full =
-        planDirectionalShadows(ShadowSettings{}, conventions, streetCamera(), five, casters);
+        planDirectionalShadows(ShadowSettings{}, testing::kZeroToOneReversed, streetCamera(), five, casters);
     EXPECT_EQ(full.lights.size(), 4u);
     ASSERT_EQ(full.report.size(), 1u);
     EXPECT_EQ(full.report[0].lightIndex, 4u);
@@ -70,7 +68,8 @@ TEST(DirectionalShadowPlanner, TilesViewportsAndUniformsAgree)
     settings.directional.cascadeBlend = CascadeBlend::Soft;
     const std::vector<DirectionalShadowLightInput> lights = sixLights();
     const std::vector<Bounds> casters{{{-1, 0, -5}, {1, 2, -3}}};
-    const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, casters);
+    const DirectionalShadowPlan plan =
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, streetCamera(), lights, casters);
     const DirectionalShadowUniforms& u = plan.uniforms;
     EXPECT_EQ(u.cascadeCount, 4);
     EXPECT_EQ(u.defaultFilter, ShadowFilter::PCF5x5);
@@ -118,7 +117,8 @@ TEST(DirectionalShadowPlanner, SelectedCascadeFiltersStayInsideTheirTile)
         const std::vector<DirectionalShadowLightInput> lights{{testing::randomUnit(rng)}, {testing::randomUnit(rng)}};
         // A caster where the camera stands: in every light's first cascade, so both lights take tiles.
         const std::vector<Bounds> casters{{camera.position - 1.0f, camera.position + 1.0f}};
-        const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, camera, lights, casters);
+        const DirectionalShadowPlan plan =
+            planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters);
         const glm::vec3 right = glm::cross(camera.forward, camera.up);
         const float tanY = std::tan(0.5f * camera.fovY);
         const float size = static_cast<float>(plan.atlas.atlasSize());
@@ -162,7 +162,8 @@ TEST(DirectionalShadowPlanner, NoShadowDistanceBeyondTheNearPlane)
     ShadowSettings settings;
     settings.maxDistance = 0.05f;
     const std::vector<DirectionalShadowLightInput> lights(2);
-    const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, {});
+    const DirectionalShadowPlan plan =
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, streetCamera(), lights, {});
     EXPECT_TRUE(plan.lights.empty());
     ASSERT_EQ(plan.report.size(), 3u);
     EXPECT_FALSE(plan.report[0].lightIndex.has_value());
@@ -173,7 +174,7 @@ TEST(DirectionalShadowPlanner, InvalidSettingsThrow)
 {
     ShadowSettings settings;
     settings.directional.cascadeCount = 0;
-    EXPECT_THROW(planDirectionalShadows(settings, conventions, streetCamera(), {}, {}), rhi::Error);
+    EXPECT_THROW(planDirectionalShadows(settings, testing::kZeroToOneReversed, streetCamera(), {}, {}), rhi::Error);
 }
 
 TEST(DirectionalShadowPlanner, OneLightOneCascadeUsesTheWholeAtlas)
@@ -182,7 +183,8 @@ TEST(DirectionalShadowPlanner, OneLightOneCascadeUsesTheWholeAtlas)
     settings.directional.cascadeCount = 1;
     const std::vector<DirectionalShadowLightInput> lights(1);
     const std::vector<Bounds> casters{{{-1, 0, -5}, {1, 2, -3}}};
-    const DirectionalShadowPlan plan = planDirectionalShadows(settings, conventions, streetCamera(), lights, casters);
+    const DirectionalShadowPlan plan =
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, streetCamera(), lights, casters);
     EXPECT_EQ(plan.atlas.split(), 1u);
     ASSERT_EQ(plan.lights.size(), 1u);
     const rhi::Viewport v = plan.lights[0].cascades[0].viewport;
@@ -197,7 +199,7 @@ TEST(DirectionalShadowPlanner, ALightWithNoCasterInReachTakesNoTile)
     std::vector<DirectionalShadowLightInput> lights(1);
     lights[0].direction = {0.0f, -1.0f, 0.0f};
     const auto plan = [&](const Bounds& caster) {
-        return planDirectionalShadows(ShadowSettings{}, conventions, streetCamera(), lights,
+        return planDirectionalShadows(ShadowSettings{}, testing::kZeroToOneReversed, streetCamera(), lights,
                                       std::vector<Bounds>{caster});
     };
     EXPECT_EQ(plan({{-1, 50, -10}, {1, 52, -8}}).lights.size(), 1u) << "above the view, toward the light";

@@ -8,8 +8,7 @@
 
 #include <algorithm>
 
-using namespace penumbra;
-
+namespace penumbra {
 namespace {
 
 struct Placed {
@@ -94,3 +93,5 @@ TEST(ShaderBlockTest, TheLayoutListsTheFieldsOfStructFieldsAsReflectionDoes)
     EXPECT_EQ(layout.size, offsetof(shadows::DirectionalShadowUniforms, tileBounds) +
                                sizeof(shadows::DirectionalShadowUniforms::tileBounds));
 }
+
+} // namespace penumbra

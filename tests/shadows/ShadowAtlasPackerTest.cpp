@@ -13,7 +13,7 @@ namespace penumbra::shadows {
 namespace {
 
 // Every tile of every light lies inside the atlas, on its own size's grid, and no two tiles share a texel.
-void expectDisjointTiles(const ShadowAtlasPack& pack, std::uint32_t atlasSize)
+void expectDisjointPackedTiles(const ShadowAtlasPack& pack, std::uint32_t atlasSize)
 {
     struct Tile {
         glm::uvec2 offset;
@@ -62,7 +62,7 @@ TEST(ShadowAtlasPacker, RoundsAndClampsRequestsToPowersOfTwo)
     EXPECT_FALSE(pack.repacked);
     EXPECT_EQ(pack.usedTexels, 256u * 256 + 512 * 512 + 64 * 64 + 1024 * 1024);
     EXPECT_EQ(pack.usedTexels + pack.freeTexels, 4096u * 4096);
-    expectDisjointTiles(pack, 4096);
+    expectDisjointPackedTiles(pack, 4096);
 }
 
 TEST(ShadowAtlasPacker, RandomFramesNeverOverlapAndAccountForEveryTexel)
@@ -83,7 +83,7 @@ TEST(ShadowAtlasPacker, RandomFramesNeverOverlapAndAccountForEveryTexel)
             requests.push_back({light, size(rng), priority(rng), light % 5 == 0 ? 6u : 1u});
         }
         const ShadowAtlasPack pack = packer.pack(requests);
-        expectDisjointTiles(pack, 4096);
+        expectDisjointPackedTiles(pack, 4096);
         EXPECT_EQ(pack.usedTexels + pack.freeTexels, 4096u * 4096) << frame;
         for (const PackedLight& light : pack.lights)
             EXPECT_EQ(light.offsets.size(), light.size == 0 ? 0u : (light.lightId % 5 == 0 ? 6u : 1u));
@@ -122,7 +122,7 @@ TEST(ShadowAtlasPacker, TilesStayPutWhileRequestsMoveWithinTheHysteresis)
     EXPECT_TRUE(next.lights[5].moved);
     for (std::size_t i = 0; i < next.lights.size(); ++i)
         EXPECT_EQ(next.lights[i].moved, i == 5) << i;
-    expectDisjointTiles(next, 2048);
+    expectDisjointPackedTiles(next, 2048);
 }
 
 TEST(ShadowAtlasPacker, LightsComingAndGoingLeaveTheOthersInPlace)
@@ -142,7 +142,7 @@ TEST(ShadowAtlasPacker, LightsComingAndGoingLeaveTheOthersInPlace)
     }
     EXPECT_TRUE(lightOf(next, 100).moved);
     EXPECT_EQ(lightOf(next, 100).size, 256u);
-    expectDisjointTiles(next, 1024);
+    expectDisjointPackedTiles(next, 1024);
 }
 
 TEST(ShadowAtlasPacker, SpaceRunsOutLargestTilesHalveFirstOfEqualOnesTheLowestPriority)
@@ -165,14 +165,14 @@ TEST(ShadowAtlasPacker, SpaceRunsOutLargestTilesHalveFirstOfEqualOnesTheLowestPr
                                     "the 1024 x 1024 local atlas; larger tiles, then lower priorities, are lowered "
                                     "first");
     EXPECT_EQ(pack.notes[1].lightId, 4u);
-    expectDisjointTiles(pack, 1024);
+    expectDisjointPackedTiles(pack, 1024);
 
     // A light of higher priority that asks for more gives up resolution before a smaller one goes to the floor.
     const ShadowAtlasPack uneven = ShadowAtlasPacker({.atlasSize = 512, .floorSize = 64, .maxSize = 512})
                                        .pack(std::vector<ShadowTileRequest>{{1, 512.0f, 9.0f}, {2, 256.0f, 1.0f}});
     EXPECT_EQ(uneven.lights[0].size, 256u);
     EXPECT_EQ(uneven.lights[1].size, 256u);
-    expectDisjointTiles(uneven, 512);
+    expectDisjointPackedTiles(uneven, 512);
 }
 
 TEST(ShadowAtlasPacker, ALightLosesItsShadowOnlyWhenEveryLightIsAtTheFloor)
@@ -227,7 +227,7 @@ TEST(ShadowAtlasPacker, ALightWhoseTileCountChangesIsPlacedAgain)
     const ShadowAtlasPack shrunk = packer.pack(std::vector<ShadowTileRequest>{{1, 64.0f, 1.0f, 6}, {2, 128.0f, 1.0f}});
     EXPECT_EQ(shrunk.lights[0].offsets.size(), 6u);
     EXPECT_EQ(shrunk.usedTexels + shrunk.freeTexels, 1024u * 1024);
-    expectDisjointTiles(shrunk, 1024);
+    expectDisjointPackedTiles(shrunk, 1024);
 }
 
 TEST(ShadowAtlasPacker, KeptTilesThatLeaveNoRoomAreRepacked)
@@ -253,7 +253,7 @@ TEST(ShadowAtlasPacker, KeptTilesThatLeaveNoRoomAreRepacked)
     EXPECT_TRUE(repacked.repacked);
     EXPECT_EQ(repacked.lights.back().size, 128u);
     EXPECT_TRUE(repacked.notes.empty());
-    expectDisjointTiles(repacked, 256);
+    expectDisjointPackedTiles(repacked, 256);
 }
 
 TEST(ShadowAtlasPacker, HoldsAThousandLights)
@@ -280,7 +280,7 @@ TEST(ShadowAtlasPacker, OverlapCheckCatchesFault)
 {
     ShadowAtlasPack pack;
     pack.lights = {{1, 128, 128, {{0, 0}}, true}, {2, 64, 64, {{64, 64}}, true}};
-    EXPECT_NONFATAL_FAILURE(expectDisjointTiles(pack, 256), "overlap");
+    EXPECT_NONFATAL_FAILURE(expectDisjointPackedTiles(pack, 256), "overlap");
 }
 
 TEST(ShadowAtlasPacker, RejectsBadSettingsAndRequestsNamingThem)

@@ -84,7 +84,7 @@ ShadowSettings unusualSettings()
 
 // The message of the rhi::Error that `f` throws; fails the test when it throws nothing.
 template <typename F>
-std::string errorOf(F&& f)
+std::string settingsErrorOf(F&& f)
 {
     try {
         f();
@@ -99,7 +99,7 @@ std::string validationError(void (*change)(ShadowSettings&))
 {
     ShadowSettings s;
     change(s);
-    return errorOf([&] { validate(s); });
+    return settingsErrorOf([&] { validate(s); });
 }
 
 TEST(ShadowSettings, DefaultsAreValid)
@@ -228,9 +228,9 @@ TEST(ShadowSettingsJson, OldNamesOfTheLocalFieldsStillLoad)
 
 TEST(ShadowSettingsJson, BothNamesOfALocalFieldAreRefused)
 {
-    EXPECT_EQ(errorOf([] { parseShadowSettings(R"({"local": {}, "other": {}})", "both.json"); }),
+    EXPECT_EQ(settingsErrorOf([] { parseShadowSettings(R"({"local": {}, "other": {}})", "both.json"); }),
               "both.json: other and local are one field (the old and the current name); give only local");
-    EXPECT_EQ(errorOf([] {
+    EXPECT_EQ(settingsErrorOf([] {
                   parseShadowSettings(R"({"static": {"otherAtlasSize": 512, "localAtlasSize": 512}})", "both.json");
               }),
               "both.json: static.otherAtlasSize and static.localAtlasSize are one field (the old and the current "
@@ -239,7 +239,9 @@ TEST(ShadowSettingsJson, BothNamesOfALocalFieldAreRefused)
 
 TEST(ShadowSettingsJson, ErrorsNameTheSourceTheFieldAndTheRange)
 {
-    auto parseError = [](const char* json) { return errorOf([&] { parseShadowSettings(json, "shadows.json"); }); };
+    auto parseError = [](const char* json) {
+        return settingsErrorOf([&] { parseShadowSettings(json, "shadows.json"); });
+    };
     EXPECT_EQ(
         parseError(R"({"maxDistanse": 5})"),
         "shadows.json: maxDistanse: unknown field, allowed maxDistance, distanceFade, culling, directional, local, soft, "
@@ -333,10 +335,10 @@ TEST_F(ShadowSettingsFile, FailedSaveLeavesTheOldFileWhole)
 TEST_F(ShadowSettingsFile, LoadErrorsNameThePath)
 {
     const std::filesystem::path missing = directory / "nothing.json";
-    EXPECT_NE(errorOf([&] { loadShadowSettings(missing); }).find(missing.string()), std::string::npos);
+    EXPECT_NE(settingsErrorOf([&] { loadShadowSettings(missing); }).find(missing.string()), std::string::npos);
     const std::filesystem::path bad = directory / "bad.json";
     std::ofstream(bad) << R"({"directional": {"cascadeCount": 7}})";
-    EXPECT_EQ(errorOf([&] { loadShadowSettings(bad); }),
+    EXPECT_EQ(settingsErrorOf([&] { loadShadowSettings(bad); }),
               bad.string() + ": directional.cascadeCount: 7 is out of range, allowed 1..4");
 }
 

@@ -12,6 +12,9 @@
 
 namespace penumbra::shadows::testing {
 
+// Depth in [0, 1] and reversed-Z: the conventions of the planner tests that need only one.
+inline const rhi::Conventions kZeroToOneReversed{rhi::DepthRange::ZeroToOne, true};
+
 // The four conventions: depth range [0, 1] or [-1, 1], reversed-Z off or on.
 inline std::array<rhi::Conventions, 4> allConventions()
 {

@@ -21,14 +21,6 @@ namespace {
 
 constexpr std::array<float, 2> kTimes{0.0f, 1.0f};
 
-std::size_t differingPixels(const rhi::Image& a, const rhi::Image& b)
-{
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i + 3 < a.bytes.size(); i += 4)
-        differing += a.bytes[i] != b.bytes[i] || a.bytes[i + 1] != b.bytes[i + 1] || a.bytes[i + 2] != b.bytes[i + 2];
-    return differing;
-}
-
 TEST(AnimationParity, TheTwoBoneBendIsTheSamePictureOnEveryConfigurationAtEachTime)
 {
     const std::filesystem::path path =
@@ -50,10 +42,10 @@ TEST(AnimationParity, TheTwoBoneBendIsTheSamePictureOnEveryConfigurationAtEachTi
     ASSERT_FALSE(pictures.empty());
     for (const auto& [configuration, times] : pictures) {
         // The bar leans over to -x at t = 1: the pictures differ where it stood and where it bends to.
-        EXPECT_GT(differingPixels(times[0], times[1]), 200u) << configuration;
+        EXPECT_GT(differingPixels(times[0], times[1], 0), 200u) << configuration;
         const auto& [first, reference] = *pictures.begin();
         for (std::size_t t = 0; t < kTimes.size(); ++t)
-            EXPECT_EQ(differingPixels(reference[t], times[t]), 0u)
+            EXPECT_EQ(differingPixels(reference[t], times[t], 0), 0u)
                 << "t = " << kTimes[t] << ": " << savePicture(reference[t], "bend-reference-" + first) << " vs "
                 << savePicture(times[t], "bend-" + configuration);
     }

@@ -20,8 +20,8 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 640;
-constexpr std::uint32_t kHeight = 480;
+constexpr std::uint32_t kSeamWidth = 640;
+constexpr std::uint32_t kSeamHeight = 480;
 constexpr float kWallX = 1.0f;
 constexpr float kWallHeight = 3.0f;
 constexpr float kWallHalfThickness = 0.1f;
@@ -47,7 +47,7 @@ scene::Scene wallScene()
 // World x where the ray through continuous pixel (px, py) meets the ground.
 std::optional<glm::vec3> groundPoint(const scene::Camera& camera, float px, float py)
 {
-    const truth::Ray ray = truth::primaryRay(camera, kWidth, kHeight, px, py);
+    const truth::Ray ray = truth::primaryRay(camera, kSeamWidth, kSeamHeight, px, py);
     if (ray.direction.y >= 0.0f)
         return std::nullopt;
     return ray.origin + ray.direction * (-ray.origin.y / ray.direction.y);
@@ -70,8 +70,8 @@ protected:
         scene.lights[0].normalBias *= normalBias;
         render::SceneRenderer renderer(*device, scene);
         render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
+        frame.width = kSeamWidth;
+        frame.height = kSeamHeight;
         frame.shadows.directional.cascadeBlend = blend;
         frame.shadows.directional.cascadeFade = 0.2f;
         frame.shadows.directional.projection = projection;
@@ -83,17 +83,17 @@ protected:
         // Per row, the outer shadow edge: scanning from the lit ground at the left towards the wall, where
         // luminance crosses halfway between the lit and shadowed levels (interpolated between pixel centres).
         std::vector<glm::vec3> edges;
-        for (std::uint32_t y = 0; y < kHeight; ++y) {
-            const auto middle = groundPoint(scene.camera, kWidth * 0.5f, y + 0.5f);
+        for (std::uint32_t y = 0; y < kSeamHeight; ++y) {
+            const auto middle = groundPoint(scene.camera, kSeamWidth * 0.5f, y + 0.5f);
             if (!middle || middle->z > 0.85f * plan.splits.farOf(plan.splits.count - 1))
                 continue; // beyond the distance fade
             float litLevel = 0.0f, shadowLevel = 255.0f;
-            for (std::uint32_t x = 0; x < kWidth; ++x) {
+            for (std::uint32_t x = 0; x < kSeamWidth; ++x) {
                 litLevel = std::max(litLevel, luminance(lit, x, y));
                 shadowLevel = std::min(shadowLevel, luminance(lit, x, y));
             }
             const float half = 0.5f * (litLevel + shadowLevel);
-            for (std::uint32_t x = 1; x < kWidth; ++x) {
+            for (std::uint32_t x = 1; x < kSeamWidth; ++x) {
                 // The camera looks down +z, so world +x (the shadow side) is on the picture's left.
                 const float a = luminance(lit, x - 1, y), b = luminance(lit, x, y);
                 const auto pa = groundPoint(scene.camera, x - 0.5f, y + 0.5f);
@@ -194,8 +194,8 @@ std::vector<PenumbraRow> pcssPenumbraRows(rhi::Device& device, float degrees, st
     scene.lights[0].shadowFilter = shadows::ShadowFilter::PCSS;
     render::SceneRenderer renderer(device, scene);
     render::FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
+    frame.width = kSeamWidth;
+    frame.height = kSeamHeight;
     frame.shadows.directional.cascadeBlend = shadows::CascadeBlend::Hard;
     frame.shadows.soft.blockerSamples = samples;
     frame.shadows.soft.filterSamples = samples;
@@ -208,11 +208,11 @@ std::vector<PenumbraRow> pcssPenumbraRows(rhi::Device& device, float degrees, st
     expected = 0.982f * edgeDistance * std::tan(glm::radians(0.5f * degrees)) / std::sin(glm::radians(35.0f));
 
     std::vector<PenumbraRow> rows;
-    for (std::uint32_t y = 0; y < kHeight; ++y) {
+    for (std::uint32_t y = 0; y < kSeamHeight; ++y) {
         // Where visibility falls below `level` scanning from the lit ground on the picture's left towards the wall.
         const auto crossing = [&](float level) -> std::optional<glm::vec3> {
-            for (std::uint32_t x = 1; x < kWidth; ++x) {
-                const std::size_t i = std::size_t(y) * kWidth + x;
+            for (std::uint32_t x = 1; x < kSeamWidth; ++x) {
+                const std::size_t i = std::size_t(y) * kSeamWidth + x;
                 if (!v.decided[i] || !v.decided[i - 1])
                     continue;
                 const float a = v.lit[i - 1], b = v.lit[i];
@@ -225,8 +225,8 @@ std::vector<PenumbraRow> pcssPenumbraRows(rhi::Device& device, float degrees, st
         if (!outer || !inner || outer->z > 0.85f * plan.splits.farOf(plan.splits.count - 1))
             continue;
         // A pixel must be at most a tenth of the band for the row to resolve its width.
-        const auto next = groundPoint(scene.camera, kWidth * 0.5f + 1.0f, y + 0.5f);
-        const auto here = groundPoint(scene.camera, kWidth * 0.5f, y + 0.5f);
+        const auto next = groundPoint(scene.camera, kSeamWidth * 0.5f + 1.0f, y + 0.5f);
+        const auto here = groundPoint(scene.camera, kSeamWidth * 0.5f, y + 0.5f);
         if (!next || !here || glm::length(*next - *here) > 0.1f * expected)
             continue;
         const float viewDepth = glm::dot(*outer - scene.camera.position, scene.camera.forward);

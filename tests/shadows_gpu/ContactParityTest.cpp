@@ -11,7 +11,7 @@
 namespace penumbra {
 namespace {
 
-render::FrameDesc contactFrame(std::uint32_t msaa, render::ShadowPath path)
+render::FrameDesc contactParityFrame(std::uint32_t msaa, render::ShadowPath path)
 {
     render::FrameDesc frame;
     frame.width = 160;
@@ -30,11 +30,11 @@ const std::vector<parity::ConfigurationRun>& contactRuns()
         parity::renderConfigurations([](rhi::Device& device, const rhi::NamedConfiguration& configuration) {
             const scene::Scene scene = apps::namedScene("contact");
             const apps::ShadowPictures forward =
-                apps::renderShadowScene(device, configuration.name, scene, contactFrame(1, render::ShadowPath::Forward),
-                                        false);
+                apps::renderShadowScene(device, configuration.name, scene,
+                                        contactParityFrame(1, render::ShadowPath::Forward), false);
             const apps::ShadowPictures msaa =
                 apps::renderShadowScene(device, configuration.name, scene,
-                                        contactFrame(4, render::ShadowPath::ScreenSpace), false);
+                                        contactParityFrame(4, render::ShadowPath::ScreenSpace), false);
             testing::savePicture(forward.lit, "contact-parity-" + configuration.name);
             return std::vector{parity::colorPicture("lit-contact", forward.lit),
                                parity::colorPicture("lit-contact-msaa4-screen-space", msaa.lit)};

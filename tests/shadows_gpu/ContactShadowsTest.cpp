@@ -22,8 +22,8 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 160;
-constexpr std::uint32_t kHeight = 90;
+constexpr std::uint32_t kContactWidth = 160;
+constexpr std::uint32_t kContactHeight = 90;
 constexpr scene::LightRef kSun{scene::LightKind::Directional, 0};
 // Casters within the default march's length count: what contact shadows can close.
 constexpr float kReach = shadows::ContactShadowSettings{}.length;
@@ -32,8 +32,8 @@ render::FrameDesc contactFrame(bool contact, float thickness = shadows::ContactS
                                float length = kReach)
 {
     render::FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
+    frame.width = kContactWidth;
+    frame.height = kContactHeight;
     frame.shadows.directional.atlasSize = 512;
     // One cascade over the 100 m shadow distance: texels of 0.4 m, whose biases lift the shadows off their casters.
     frame.shadows.directional.cascadeCount = 1;
@@ -70,7 +70,8 @@ public:
             truth::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
         const truth::RayCaster cameraRays(scene_, truth::RayKind::Camera);
         const truth::RayCaster shadowRays(scene_);
-        const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene_, cameraRays, scene_.camera, kWidth, kHeight);
+        const truth::CpuGBuffer gbuffer =
+            truth::traceGBuffer(scene_, cameraRays, scene_.camera, kContactWidth, kContactHeight);
         const truth::LightTruthTrace trace =
             truth::traceLightTruth(scene_, shadowRays, gbuffer, plans, frame.shadows, kSun);
         const truth::TruthComparison c = truth::compareLightTruth(trace, shadowRays, gbuffer, rendered);

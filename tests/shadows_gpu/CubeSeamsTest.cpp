@@ -232,7 +232,7 @@ float seamBound(PointShadowMode mode)
     return largest + 0.5f * 2.0f / float(n);
 }
 
-struct SeamFigures {
+struct CubeSeamFigures {
     std::size_t probes = 0;
     std::size_t partial = 0; // probes where a face sees a shadow boundary within its filter (value strictly in (0, 1))
     float largest = 0.0f; // largest difference between the two faces
@@ -243,7 +243,7 @@ class CubeSeamsTest : public GpuTest, public ::testing::WithParamInterface<Point
 protected:
     using PlanFault = std::function<render::ShadowPlans(render::ShadowPlans, const scene::Scene&)>;
 
-    SeamFigures measure(PointShadowMode mode, const PlanFault& fault = {})
+    CubeSeamFigures measure(PointShadowMode mode, const PlanFault& fault = {})
     {
         scene::Scene scene = scenes::makePointLightRoomScene();
         scene.pointLights.pop_back();
@@ -258,7 +258,7 @@ protected:
         renderer.render(scene.camera, frame, fault ? fault(std::move(plans), scene) : std::move(plans));
         const PointShadowLookup lookup(*device, renderer, light);
         const float bound = seamBound(mode);
-        SeamFigures figures;
+        CubeSeamFigures figures;
         const std::uint32_t faceSize =
             mode == PointShadowMode::Atlas
                 ? static_cast<std::uint32_t>(renderer.localPlan()
@@ -284,7 +284,7 @@ protected:
 
 TEST_P(CubeSeamsTest, FacesAgreeWhereTheyMeet)
 {
-    const SeamFigures figures = measure(GetParam());
+    const CubeSeamFigures figures = measure(GetParam());
     RecordProperty("largestDifference", std::to_string(figures.largest));
     ASSERT_GT(figures.partial, 150u) << "shadow boundaries must cross the face edges";
     EXPECT_EQ(figures.beyondBound, 0u) << "largest difference " << figures.largest;

@@ -20,8 +20,8 @@ namespace {
 
 // Small frames and a small atlas: the forest's leaf cards are slow to draw on the software rasterizers, and the
 // reduction and the fit do not depend on the sizes.
-constexpr std::uint32_t kWidth = 160;
-constexpr std::uint32_t kHeight = 90;
+constexpr std::uint32_t kDepthFitWidth = 160;
+constexpr std::uint32_t kDepthFitHeight = 90;
 constexpr std::uint32_t kAtlasSize = 512;
 
 class DepthFitTest : public GpuTest {
@@ -29,8 +29,8 @@ protected:
     render::FrameDesc frameOf(shadows::CascadeProjection projection, std::uint32_t msaa = 1) const
     {
         render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
+        frame.width = kDepthFitWidth;
+        frame.height = kDepthFitHeight;
         frame.msaa = msaa;
         frame.shadows.directional.projection = projection;
         frame.shadows.directional.atlasSize = kAtlasSize;
@@ -42,7 +42,8 @@ TEST_F(DepthFitTest, ForestReductionHoldsTheVisibleDepthsAndFitsFinerCascades)
 {
     const scene::Scene scene = scenes::makeForestScene();
     const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
-    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kWidth / 2, kHeight / 2);
+    const truth::CpuGBuffer gbuffer =
+        truth::traceGBuffer(scene, cameraRays, scene.camera, kDepthFitWidth / 2, kDepthFitHeight / 2);
     float nearest = 1e9f, farthest = 0.0f;
     for (const truth::GBufferSample& sample : gbuffer.samples)
         if (sample.hit()) {

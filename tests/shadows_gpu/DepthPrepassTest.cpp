@@ -16,8 +16,8 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
+constexpr std::uint32_t kPrepassWidth = 320;
+constexpr std::uint32_t kPrepassHeight = 180;
 
 // A 40 x 40 m sheet folded into 80 ridges across x, each 0.25 m wide and 0.05 m high, in shared-vertex strips.
 scene::MeshData ridgedSheet()
@@ -82,7 +82,7 @@ protected:
     // anisotropic filter costs the forest about 50 times trilinear (TextureTest covers anisotropy).
     rhi::Image render(const scene::Scene& scene, bool prepass, std::uint32_t msaa)
     {
-        render::FrameDesc frame = litFrame(kWidth, kHeight, prepass, msaa);
+        render::FrameDesc frame = litFrame(kPrepassWidth, kPrepassHeight, prepass, msaa);
         frame.maxAnisotropy = 1.0f;
         return renderLit(*device, scene, frame);
     }
@@ -102,7 +102,8 @@ protected:
             differing += std::memcmp(&without.bytes[i], &with.bytes[i], 4) != 0 ? 1 : 0;
             covered += std::memcmp(&without.bytes[i], background, 4) != 0 ? 1 : 0;
         }
-        EXPECT_GT(covered, std::size_t(kWidth) * kHeight / 4) << name << ": the geometry covers too little";
+        EXPECT_GT(covered, std::size_t(kPrepassWidth) * kPrepassHeight / 4)
+            << name << ": the geometry covers too little";
         EXPECT_LE(differing, ties) << name << ": " << differing << " pixels differ with the depth prepass";
         savePicture(with, std::string("depth-prepass-") + name + "-" + configuration());
     }

@@ -16,8 +16,8 @@
 namespace penumbra {
 namespace {
 
-constexpr std::uint32_t kWidth = 192;
-constexpr std::uint32_t kHeight = 144;
+constexpr std::uint32_t kEnvironmentWidth = 192;
+constexpr std::uint32_t kEnvironmentHeight = 144;
 constexpr int kColumns = 5;
 constexpr int kRows = 3;
 constexpr float kCameraDistance = 7.0f;
@@ -47,8 +47,8 @@ scene::Scene sphereGrid()
 render::FrameDesc gridFrame(bool environment)
 {
     render::FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
+    frame.width = kEnvironmentWidth;
+    frame.height = kEnvironmentHeight;
     if (environment) {
         static const auto studio = std::make_shared<const render::EnvironmentImage>(render::studioEnvironment());
         frame.environment.image = studio;
@@ -60,15 +60,15 @@ render::FrameDesc gridFrame(bool environment)
 float metalLuma(const rhi::Image& picture)
 {
     const float halfHeight = kCameraDistance * std::tan(kFovY / 2.0f);
-    const float halfWidth = halfHeight * float(kWidth) / float(kHeight);
+    const float halfWidth = halfHeight * float(kEnvironmentWidth) / float(kEnvironmentHeight);
     float sum = 0.0f;
     int count = 0;
     for (int row = 0; row < 2; ++row)
         for (int column = 0; column < kColumns; ++column) {
             const float x = float(column - kColumns / 2);
             const float y = float(kRows / 2 - row);
-            const auto px = std::uint32_t((0.5f + 0.5f * x / halfWidth) * float(kWidth));
-            const auto py = std::uint32_t((0.5f - 0.5f * y / halfHeight) * float(kHeight));
+            const auto px = std::uint32_t((0.5f + 0.5f * x / halfWidth) * float(kEnvironmentWidth));
+            const auto py = std::uint32_t((0.5f - 0.5f * y / halfHeight) * float(kEnvironmentHeight));
             for (std::uint32_t dy = py - 1; dy <= py + 1; ++dy)
                 for (std::uint32_t dx = px - 1; dx <= px + 1; ++dx, ++count)
                     sum += testing::luminance(picture, dx, dy);

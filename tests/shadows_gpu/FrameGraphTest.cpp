@@ -21,8 +21,8 @@ namespace {
 
 namespace frame = render::frame;
 
-constexpr std::uint32_t kWidth = 160;
-constexpr std::uint32_t kHeight = 90;
+constexpr std::uint32_t kGraphWidth = 160;
+constexpr std::uint32_t kGraphHeight = 90;
 
 std::vector<std::string> passNames(const render::FrameStats& stats)
 {
@@ -81,8 +81,8 @@ private:
 
 std::unique_ptr<rhi::Texture> colorTexture(rhi::Device& device)
 {
-    return device.createTexture({.width = kWidth,
-                                 .height = kHeight,
+    return device.createTexture({.width = kGraphWidth,
+                                 .height = kGraphHeight,
                                  .format = render::kLitColorFormat,
                                  .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget});
 }
@@ -108,7 +108,7 @@ TEST_F(FrameGraphTest, ForwardFrameRunsTheAtlasesThePrepassAndTheLitPass)
 {
     const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
-    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kGraphWidth, kGraphHeight, true, 1));
     EXPECT_EQ(passNames(stats), (std::vector<std::string>{"directional atlas", "local atlas", "depth prepass", "lit"}));
     // The debug views are in the graph, culled: nothing reads what they write.
     const std::string dot = renderer.frameGraphDot();
@@ -120,7 +120,7 @@ TEST_F(FrameGraphTest, MultisampledScreenSpaceFrameResolvesAndCollects)
 {
     const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
-    render::FrameDesc desc = litFrame(kWidth, kHeight, true, 4);
+    render::FrameDesc desc = litFrame(kGraphWidth, kGraphHeight, true, 4);
     desc.shadowPath = render::ShadowPath::ScreenSpace;
     desc.cascadeView = true;
     const render::FrameStats stats = renderer.render(scene.camera, desc);
@@ -141,7 +141,7 @@ TEST_F(FrameGraphTest, ApplicationPassAfterTheLitPassReadsTheLitImage)
     renderer.addTexture("half bright image", *output);
     renderer.addPass(std::make_shared<HalfBrightPass>(*device, "half bright image"),
                      render::PassPlacement::after(std::string(frame::kLitPass)));
-    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kGraphWidth, kGraphHeight, true, 1));
     ASSERT_EQ(passNames(stats).back(), "half bright");
     const rhi::Image lit = rhi::readTexture(*device, renderer.litImage());
     const rhi::Image half = rhi::readTexture(*device, *output);
@@ -161,7 +161,7 @@ TEST_F(FrameGraphTest, ApplicationPassWhoseWritesNobodyReadsIsCulled)
     render::SceneRenderer renderer(*device, scene);
     renderer.addPass(std::make_shared<HalfBrightPass>(*device, std::string(frame::kCascadeView)),
                      render::PassPlacement::before(std::string(frame::kCascadeViewPass)));
-    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kGraphWidth, kGraphHeight, true, 1));
     const std::vector<std::string> names = passNames(stats);
     EXPECT_EQ(std::find(names.begin(), names.end(), "half bright"), names.end());
     EXPECT_NE(renderer.frameGraphDot().find("half bright\\n(culled"), std::string::npos);
@@ -189,7 +189,7 @@ TEST_F(FrameGraphTest, UnknownTextureIsRefusedNamingThePass)
     renderer.addPass(std::make_shared<HalfBrightPass>(*device, "nowhere"),
                      render::PassPlacement::after(std::string(frame::kLitPass)));
     try {
-        renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+        renderer.render(scene.camera, litFrame(kGraphWidth, kGraphHeight, true, 1));
         FAIL() << "no error";
     } catch (const rhi::Error& e) {
         EXPECT_NE(std::string(e.what()).find(
@@ -209,7 +209,7 @@ TEST_F(FrameGraphTest, UndeclaredTextureIsRefused)
     renderer.addPass(std::make_shared<HalfBrightPass>(*device, "half bright image", std::string(frame::kLitDepth)),
                      render::PassPlacement::after(std::string(frame::kLitPass)));
     try {
-        renderer.render(scene.camera, litFrame(kWidth, kHeight, true, 1));
+        renderer.render(scene.camera, litFrame(kGraphWidth, kGraphHeight, true, 1));
         FAIL() << "no error";
     } catch (const rhi::Error& e) {
         EXPECT_NE(std::string(e.what()).find("pass 'half bright' did not declare texture 'lit image'"),

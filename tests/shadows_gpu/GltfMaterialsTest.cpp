@@ -19,8 +19,8 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
+constexpr std::uint32_t kMaterialsWidth = 320;
+constexpr std::uint32_t kMaterialsHeight = 180;
 using Texel = std::array<std::uint8_t, 4>;
 
 // Points on the quad of quadFile(): on its left half and on its right half, each between two texels of halves().
@@ -116,21 +116,21 @@ protected:
     rhi::Image render(const scene::Scene& scene, render::AmbientLight ambient = {})
     {
         render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
+        frame.width = kMaterialsWidth;
+        frame.height = kMaterialsHeight;
         frame.ambient = ambient;
         return renderLit(*device, scene, frame);
     }
 
     Rgba at(const rhi::Image& image, const scene::Scene& scene, glm::vec3 world) const
     {
-        const glm::uvec2 p = pixelOf(*device, scene.camera, kWidth, kHeight, world);
+        const glm::uvec2 p = pixelOf(*device, scene.camera, kMaterialsWidth, kMaterialsHeight, world);
         return pixel(image, p.x, p.y);
     }
 
     float luma(const rhi::Image& image, const scene::Scene& scene, glm::vec3 world) const
     {
-        const glm::uvec2 p = pixelOf(*device, scene.camera, kWidth, kHeight, world);
+        const glm::uvec2 p = pixelOf(*device, scene.camera, kMaterialsWidth, kMaterialsHeight, world);
         return luminance(image, p.x, p.y);
     }
 
@@ -334,8 +334,8 @@ TEST_F(GltfMaterialsTest, OcclusionTextureDarkensTheEnvironmentsDiffuseAndSpecul
     uniform->height = 32;
     uniform->texels.assign(64 * 32, glm::vec3(0.4f));
     render::FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
+    frame.width = kMaterialsWidth;
+    frame.height = kMaterialsHeight;
     frame.environment.image = uniform;
     const rhi::Image image = renderLit(*device, scene, frame);
     EXPECT_GT(luma(image, scene, kLeft), 120.0f) << "the environment does not light the open half";

@@ -15,11 +15,11 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kCubes = 144;
+constexpr std::uint32_t kCulledCubes = 144;
 
 scene::Scene culledScene()
 {
-    scene::Scene scene = scenes::makeCubeGridScene(kCubes);
+    scene::Scene scene = scenes::makeCubeGridScene(kCulledCubes);
     scene.spotLights = {{.name = "spot",
                          .intensity = 6.0f,
                          .position = {0.0f, 6.0f, 2.0f},
@@ -98,8 +98,8 @@ TEST_F(GpuCullingTest, ListsMatchThePlanner)
     ASSERT_EQ(planned.size(), 5u) << "four cascades and the spot light's tile";
     EXPECT_EQ(culled, planned);
     // Some cubes lie out of every tile's reach, and the culling bias leaves some out of the later cascades.
-    EXPECT_LT(planned.back().size(), kCubes);
-    EXPECT_LT(planned[3].size(), kCubes);
+    EXPECT_LT(planned.back().size(), kCulledCubes);
+    EXPECT_LT(planned[3].size(), kCulledCubes);
     // The same lists where the tiles are culled two per dispatch, as a device with a short storage range culls 10^6
     // casters.
     std::vector<std::vector<std::uint32_t>> replanned, split;
@@ -113,7 +113,7 @@ TEST_F(GpuCullingTest, DroppedCasterCatchesFault)
     std::vector<std::vector<std::uint32_t>> planned, culled;
     cullBoth(
         [](auto&, std::vector<shadows::Bounds>& bounds) {
-            bounds[kCubes / 2] = {glm::vec3(1e6f), glm::vec3(1e6f)};
+            bounds[kCulledCubes / 2] = {glm::vec3(1e6f), glm::vec3(1e6f)};
         },
         planned, culled);
     EXPECT_NE(culled, planned);

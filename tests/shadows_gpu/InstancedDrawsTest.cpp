@@ -16,11 +16,11 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
+constexpr std::uint32_t kInstancedWidth = 320;
+constexpr std::uint32_t kInstancedHeight = 180;
 constexpr std::uint32_t kCubes = 400;
 constexpr std::uint32_t kCards = 12;
-constexpr std::uint32_t kPanes = 6;
+constexpr std::uint32_t kInstancedPanes = 6;
 
 // The cube grid with a row of double-sided clip cards (the checker of material.glsl cuts them) and blended panes,
 // each row one mesh and one material, and a spot and a point light among them.
@@ -44,7 +44,7 @@ scene::Scene repeatedScene(scene::NormalBiasSide side)
         scene.addObject("card " + std::to_string(i), card, cards,
                         glm::rotate(placed, glm::radians(90.0f), glm::vec3(1, 0, 0)));
     }
-    for (std::uint32_t i = 0; i < kPanes; ++i)
+    for (std::uint32_t i = 0; i < kInstancedPanes; ++i)
         scene.addObject("pane " + std::to_string(i), pane, glass,
                         glm::translate(glm::mat4(1.0f), {-5.0f + 2.0f * float(i), 0.8f, edge - 3.0f}));
     scene.spotLights = {{.name = "spot",
@@ -60,7 +60,7 @@ scene::Scene repeatedScene(scene::NormalBiasSide side)
     return scene;
 }
 
-struct Drawn {
+struct DrawnBatches {
     rhi::Image lit;
     rhi::DepthImage directional;
     rhi::DepthImage local;
@@ -69,14 +69,14 @@ struct Drawn {
 
 class InstancedDrawsTest : public GpuTest {
 protected:
-    Drawn draw(const scene::Scene& scene, bool instanced)
+    DrawnBatches draw(const scene::Scene& scene, bool instanced)
     {
-        render::FrameDesc frame = litFrame(kWidth, kHeight, true, 1);
+        render::FrameDesc frame = litFrame(kInstancedWidth, kInstancedHeight, true, 1);
         frame.instancedDraws = instanced;
         frame.shadows.directional.atlasSize = 1024;
         frame.shadows.local.atlasSize = 1024;
         render::SceneRenderer renderer(*device, scene);
-        Drawn drawn;
+        DrawnBatches drawn;
         drawn.stats = renderer.render(scene.camera, frame);
         drawn.lit = rhi::readTexture(*device, renderer.litImage());
         drawn.directional = rhi::readDepth(*device, renderer.atlas().texture());
@@ -87,8 +87,8 @@ protected:
     void expectSamePictures(scene::NormalBiasSide side, const char* name)
     {
         const scene::Scene scene = repeatedScene(side);
-        const Drawn perObject = draw(scene, false);
-        const Drawn instanced = draw(scene, true);
+        const DrawnBatches perObject = draw(scene, false);
+        const DrawnBatches instanced = draw(scene, true);
         EXPECT_TRUE(perObject.lit.bytes == instanced.lit.bytes) << name << ": the lit images differ";
         EXPECT_TRUE(perObject.directional.depth == instanced.directional.depth)
             << name << ": the directional atlases differ";
@@ -100,7 +100,7 @@ protected:
         EXPECT_EQ(instanced.stats.depthPrepassDraws, 3u) << name; // blended panes are not in the prepass
         // A draw per object in view (the grid reaches out of it: ViewCullingTest), against the four groups' draws.
         EXPECT_GT(perObject.stats.litDraws, 50 * instanced.stats.litDraws) << name;
-        EXPECT_LT(perObject.stats.litDraws, 1 + kCubes + kCards + kPanes) << name;
+        EXPECT_LT(perObject.stats.litDraws, 1 + kCubes + kCards + kInstancedPanes) << name;
         // Every shadow view draws each of the four meshes at most once.
         const std::uint32_t cascades = 4, localViews = 1 + 6;
         EXPECT_LE(instanced.stats.casterDraws, 4 * cascades) << name;

@@ -15,7 +15,7 @@ namespace {
 
 class LightsAndAtlasTest : public GpuTest {};
 
-render::FrameDesc smallFrame()
+render::FrameDesc atlasFrame()
 {
     render::FrameDesc frame;
     frame.width = 320;
@@ -29,19 +29,6 @@ bool mentions(const std::vector<std::string>& notes, const std::string& text)
                        [&](const std::string& n) { return n.find(text) != std::string::npos; });
 }
 
-// Share of pixels whose RGB differs by more than `tolerance` in some channel.
-double differingShare(const rhi::Image& a, const rhi::Image& b, int tolerance)
-{
-    std::size_t differing = 0;
-    for (std::size_t p = 0; p < a.bytes.size(); p += 4)
-        for (std::size_t c = 0; c < 3; ++c)
-            if (std::abs(int(a.bytes[p + c]) - int(b.bytes[p + c])) > tolerance) {
-                ++differing;
-                break;
-            }
-    return double(differing) / double(a.bytes.size() / 4);
-}
-
 TEST_F(LightsAndAtlasTest, LightsBeyondTheLimitAndWithoutStrengthAreLitWithoutShadowsAndReported)
 {
     scene::Scene scene = scenes::makeShadowTestScene();
@@ -53,7 +40,7 @@ TEST_F(LightsAndAtlasTest, LightsBeyondTheLimitAndWithoutStrengthAreLitWithoutSh
         scene.lights.push_back(light);
     }
     render::SceneRenderer renderer(*device, scene);
-    renderer.render(scene.camera, smallFrame());
+    renderer.render(scene.camera, atlasFrame());
     const shadows::DirectionalShadowPlan& plan = renderer.plan();
     ASSERT_EQ(plan.lights.size(), 4u) << "four shadow slots, filled by the first lights that can cast";
     EXPECT_EQ(plan.shadowSlots[1], -1);
@@ -67,7 +54,7 @@ TEST_F(LightsAndAtlasTest, SixteenBitAndTwentyFourBitAtlasesShadowLikeThirtyTwoB
 {
     const scene::Scene scene = scenes::makeSingleLightScene();
     render::SceneRenderer renderer(*device, scene);
-    render::FrameDesc frame = smallFrame();
+    render::FrameDesc frame = atlasFrame();
     renderer.render(scene.camera, frame);
     const rhi::Image reference = rhi::readTexture(*device, renderer.litImage());
     for (rhi::Format format : {rhi::Format::D16, rhi::Format::D24S8}) {
@@ -87,7 +74,7 @@ TEST_F(LightsAndAtlasTest, SettingsOutOfRangeAreRejectedNamingTheField)
 {
     const scene::Scene scene = scenes::makeSingleLightScene();
     render::SceneRenderer renderer(*device, scene);
-    render::FrameDesc frame = smallFrame();
+    render::FrameDesc frame = atlasFrame();
     frame.shadows.directional.atlasSize = 300;
     try {
         renderer.render(scene.camera, frame);
@@ -100,8 +87,8 @@ TEST_F(LightsAndAtlasTest, SettingsOutOfRangeAreRejectedNamingTheField)
 TEST_F(LightsAndAtlasTest, ShadowsDarkenTheKeyLightsShadowAndNotReceivingKeepsItLit)
 {
     scene::Scene scene = scenes::makeSingleLightScene();
-    const rhi::Image shadowed = renderLit(*device, scene, smallFrame());
-    const rhi::Image unshadowed = renderLit(*device, withoutShadows(scene), smallFrame());
+    const rhi::Image shadowed = renderLit(*device, scene, atlasFrame());
+    const rhi::Image unshadowed = renderLit(*device, withoutShadows(scene), atlasFrame());
     const double share = differingShare(shadowed, unshadowed, 8);
     EXPECT_GT(share, 0.02) << "shadows cover part of the ground";
     EXPECT_LT(share, 0.5);
@@ -112,7 +99,7 @@ TEST_F(LightsAndAtlasTest, ShadowsDarkenTheKeyLightsShadowAndNotReceivingKeepsIt
     const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
     const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, 320, 180);
     scene.materials[scene.objects[pillar].material].receiveShadows = true;
-    const rhi::Image receiving = renderLit(*device, scene, smallFrame());
+    const rhi::Image receiving = renderLit(*device, scene, atlasFrame());
     std::size_t pixels = 0, changed = 0, darkened = 0;
     for (std::uint32_t y = 1; y + 1 < 180; ++y)
         for (std::uint32_t x = 1; x + 1 < 320; ++x) {

@@ -3,12 +3,21 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scene/Scene.hpp"
+#include "penumbra/scenes/TestScenes.hpp"
 
 #include <functional>
 #include <glm/vec2.hpp>
 #include <string>
 
 namespace penumbra::testing {
+
+// The point-light room with its inside light only.
+inline scene::Scene roomLitFromInside()
+{
+    scene::Scene room = scenes::makePointLightRoomScene();
+    room.pointLights.pop_back();
+    return room;
+}
 
 // A frame of the default settings with the given size, depth prepass and MSAA sample count.
 inline render::FrameDesc litFrame(std::uint32_t width, std::uint32_t height, bool prepass, std::uint32_t msaa)

@@ -20,8 +20,8 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 160;
-constexpr std::uint32_t kHeight = 90;
+constexpr std::uint32_t kNormalOffsetWidth = 160;
+constexpr std::uint32_t kNormalOffsetHeight = 90;
 constexpr float kDistances[] = {10.0f, 20.0f, 40.0f};
 const float kElevation = glm::radians(30.0f);
 
@@ -87,14 +87,14 @@ protected:
                               float distance)
     {
         render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
+        frame.width = kNormalOffsetWidth;
+        frame.height = kNormalOffsetHeight;
         frame.visibilityOf = scene::LightRef{kind, 0};
         renderer.render(scene.camera, frame);
         const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
         GroundShadow g{kind, distance};
-        for (std::uint32_t y = 0; y < kHeight; ++y)
-            for (std::uint32_t x = 0; x < kWidth; ++x) {
+        for (std::uint32_t y = 0; y < kNormalOffsetHeight; ++y)
+            for (std::uint32_t x = 0; x < kNormalOffsetWidth; ++x) {
                 const Rgba p = pixel(view, x, y);
                 g.decided += p[3] >= 128 ? 1 : 0;
                 g.shadowed += p[3] >= 128 && p[0] < 250 ? 1 : 0;
@@ -111,7 +111,8 @@ protected:
 TEST_F(LocalNormalOffsetTest, GrazingLightFromTenToFortyUnitsLeavesNoAcne)
 {
     for (const GroundShadow& g : groundShadows([](float) { return 1.0f; })) {
-        EXPECT_GT(g.decided, std::size_t(kWidth * kHeight / 5)) << scene::lightKindName(g.kind) << " " << g.distance;
+        EXPECT_GT(g.decided, std::size_t(kNormalOffsetWidth * kNormalOffsetHeight / 5))
+            << scene::lightKindName(g.kind) << " " << g.distance;
         EXPECT_EQ(g.shadowed, 0u) << scene::lightKindName(g.kind) << " " << g.distance << " units away";
     }
 }

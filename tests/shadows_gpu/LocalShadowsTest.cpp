@@ -16,16 +16,16 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 640;
-constexpr std::uint32_t kHeight = 360;
+constexpr std::uint32_t kLocalWidth = 640;
+constexpr std::uint32_t kLocalHeight = 360;
 
 class LocalShadowsTest : public GpuTest {
 protected:
     render::FrameDesc frame() const
     {
         render::FrameDesc f;
-        f.width = kWidth;
-        f.height = kHeight;
+        f.width = kLocalWidth;
+        f.height = kLocalHeight;
         f.ambient.intensity = 0.0f;
         return f;
     }
@@ -43,14 +43,6 @@ float maxLuminance(const rhi::Image& image)
         for (std::uint32_t x = 0; x < image.width; ++x)
             m = std::max(m, luminance(image, x, y));
     return m;
-}
-
-// The room with its inside light only.
-scene::Scene roomLitFromInside()
-{
-    scene::Scene scene = scenes::makePointLightRoomScene();
-    scene.pointLights.pop_back();
-    return scene;
 }
 
 render::FrameDesc inMode(render::FrameDesc frame, shadows::PointShadowMode mode)

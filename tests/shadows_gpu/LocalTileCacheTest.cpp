@@ -43,7 +43,7 @@ scene::Scene twoSpotsAndABulb()
     return s;
 }
 
-struct Drawn {
+struct DrawnTiles {
     render::FrameStats stats;
     rhi::Image lit;
     rhi::DepthImage localAtlas;
@@ -51,19 +51,19 @@ struct Drawn {
 
 class LocalTileCacheTest : public GpuTest {
 protected:
-    Drawn draw(render::SceneRenderer& renderer, const scene::Scene& scene)
+    DrawnTiles draw(render::SceneRenderer& renderer, const scene::Scene& scene)
     {
         render::FrameStats stats = renderer.render(scene.camera, frame_);
         return {std::move(stats), rhi::readTexture(*device, renderer.litImage()),
                 rhi::readDepth(*device, renderer.localAtlas().texture())};
     }
     // The frame of a renderer that has drawn nothing before.
-    Drawn fresh(const scene::Scene& scene)
+    DrawnTiles fresh(const scene::Scene& scene)
     {
         render::SceneRenderer renderer(*device, scene);
         return draw(renderer, scene);
     }
-    void expectSame(const Drawn& kept, const Drawn& drawn, const std::string& what)
+    void expectSame(const DrawnTiles& kept, const DrawnTiles& drawn, const std::string& what)
     {
         EXPECT_TRUE(kept.lit.bytes == drawn.lit.bytes)
             << what << ": " << savePicture(kept.lit, "local-cache-" + what + "-kept-" + configuration()) << " vs "
@@ -80,7 +80,7 @@ TEST_F(LocalTileCacheTest, OnlyTheLightsWhoseViewOrCastersChangedAreDrawnAgain)
 {
     scene::Scene scene = twoSpotsAndABulb();
     render::SceneRenderer renderer(*device, scene);
-    const Drawn first = draw(renderer, scene);
+    const DrawnTiles first = draw(renderer, scene);
     EXPECT_EQ(first.stats.localTilesDrawn, kTiles);
     EXPECT_EQ(first.stats.localTilesCached, 0u);
     EXPECT_EQ(first.stats.localShadowUpdates, (std::vector<std::string>{"spot light 0 ('left'): its tile is new",
@@ -89,7 +89,7 @@ TEST_F(LocalTileCacheTest, OnlyTheLightsWhoseViewOrCastersChangedAreDrawnAgain)
     EXPECT_EQ(first.stats.shadowedLights, 3u);
     EXPECT_EQ(first.stats.lightsWithoutShadow, 0u);
 
-    const Drawn still = draw(renderer, scene);
+    const DrawnTiles still = draw(renderer, scene);
     EXPECT_EQ(still.stats.localTilesDrawn, 0u);
     EXPECT_EQ(still.stats.localTilesCached, kTiles);
     EXPECT_EQ(still.stats.localCasterDraws, 0u);
@@ -97,7 +97,7 @@ TEST_F(LocalTileCacheTest, OnlyTheLightsWhoseViewOrCastersChangedAreDrawnAgain)
     expectSame(still, first, "still");
 
     moveObject(scene, "a", {0.3f, 0.0f, 0.2f});
-    const Drawn moved = draw(renderer, scene);
+    const DrawnTiles moved = draw(renderer, scene);
     EXPECT_EQ(moved.stats.localShadowUpdates,
               std::vector<std::string>{"spot light 0 ('left'): a caster in its view changed"});
     EXPECT_EQ(moved.stats.localTilesDrawn, 1u);
@@ -105,7 +105,7 @@ TEST_F(LocalTileCacheTest, OnlyTheLightsWhoseViewOrCastersChangedAreDrawnAgain)
     expectSame(moved, fresh(scene), "moved");
 
     scene.spotLights[1].range = 6.5f;
-    const Drawn reached = draw(renderer, scene);
+    const DrawnTiles reached = draw(renderer, scene);
     EXPECT_EQ(reached.stats.localShadowUpdates, std::vector<std::string>{"spot light 1 ('right'): its view changed"});
     expectSame(reached, fresh(scene), "range");
 }
@@ -117,12 +117,12 @@ TEST_F(LocalTileCacheTest, StaleTileCatchesFault)
     scene::Scene scene = twoSpotsAndABulb();
     const scene::Object old = scene.objects.at(scene.findObject("a").value());
     moveObject(scene, "a", {0.3f, 0.0f, 0.2f});
-    const Drawn drawn = fresh(scene);
+    const DrawnTiles drawn = fresh(scene);
     scene::Scene stale = scene;
     stale.objects.at(stale.findObject("a").value()).castShadows = scene::ShadowCasting::Off;
     const std::uint32_t ghost = stale.addObject("a as cached", old.mesh, old.material, old.transform);
     stale.objects[ghost].castShadows = scene::ShadowCasting::ShadowsOnly;
-    const Drawn kept = fresh(stale);
+    const DrawnTiles kept = fresh(stale);
     EXPECT_FALSE(kept.lit.bytes == drawn.lit.bytes);
     EXPECT_FALSE(kept.localAtlas.depth == drawn.localAtlas.depth);
 }

@@ -17,14 +17,14 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
+constexpr std::uint32_t kManyLightsWidth = 320;
+constexpr std::uint32_t kManyLightsHeight = 180;
 // sRGB levels a pool stands above the ambient-lit ground (measured: 90 to 200 at its centre).
 constexpr float kPoolMargin = 30.0f;
 // Lights removed one at a time (local indices: spot lights 0..149, then point lights).
 constexpr std::array<std::uint32_t, 4> kRemoved{0, 77, 150, 299};
 
-struct Variant {
+struct LightsVariant {
     const char* name;
     bool prepass = true;
     std::uint32_t msaa = 1;
@@ -33,14 +33,14 @@ struct Variant {
 };
 
 constexpr std::array kVariants{
-    Variant{"prepass, PCF 2x2"},
-    Variant{"no prepass, 4x MSAA, PCF 5x5", false, 4, render::ShadowPath::Forward, shadows::ShadowFilter::PCF5x5},
-    Variant{"screen-space, PCSS", true, 1, render::ShadowPath::ScreenSpace, shadows::ShadowFilter::PCSS},
+    LightsVariant{"prepass, PCF 2x2"},
+    LightsVariant{"no prepass, 4x MSAA, PCF 5x5", false, 4, render::ShadowPath::Forward, shadows::ShadowFilter::PCF5x5},
+    LightsVariant{"screen-space, PCSS", true, 1, render::ShadowPath::ScreenSpace, shadows::ShadowFilter::PCSS},
 };
 
-render::FrameDesc frameOf(const Variant& v)
+render::FrameDesc lightsFrameOf(const LightsVariant& v)
 {
-    render::FrameDesc frame = litFrame(kWidth, kHeight, v.prepass, v.msaa);
+    render::FrameDesc frame = litFrame(kManyLightsWidth, kManyLightsHeight, v.prepass, v.msaa);
     frame.shadowPath = v.path;
     frame.shadows.directional.atlasSize = 512;
     frame.shadows.local.atlasSize = 512;
@@ -102,12 +102,13 @@ TEST_F(ManyLightsTest, EveryLightsPoolIsLitAndEachRemovedLightTakesItsPoolAway)
     ASSERT_EQ(lights, kManyLightsColumns * kManyLightsRows);
     for (std::size_t v = 0; v < kVariants.size(); ++v) {
         SCOPED_TRACE(kVariants[v].name);
-        const Pictures pictures = render(many, frameOf(kVariants[v]));
+        const Pictures pictures = render(many, lightsFrameOf(kVariants[v]));
         const std::string saved = savePicture(pictures.all, "many-lights-" + std::to_string(v));
         EXPECT_EQ(missingPools(many, pictures.all, pictures.dark, lights), std::vector<std::uint32_t>{}) << saved;
         const std::set<std::uint32_t> removed(kRemoved.begin(), kRemoved.end());
         for (std::uint32_t i = 0; i < lights; ++i) {
-            const glm::uvec2 p = pixelOf(*device, many.scene.camera, kWidth, kHeight, many.groundPoints[i]);
+            const glm::uvec2 p =
+                pixelOf(*device, many.scene.camera, kManyLightsWidth, kManyLightsHeight, many.groundPoints[i]);
             const float all = luminance(pictures.all, p.x, p.y);
             const float without = luminance(pictures.removed, p.x, p.y);
             if (removed.contains(i))
@@ -124,7 +125,7 @@ TEST_F(ManyLightsTest, ThousandAndTwentyFourLightsAreAllDrawn)
     const ManyLightsScene many = manyLightsScene(32, 32);
     const auto lights = static_cast<std::uint32_t>(many.groundPoints.size());
     ASSERT_EQ(lights, 1024u);
-    render::FrameDesc frame = frameOf(kVariants.front());
+    render::FrameDesc frame = lightsFrameOf(kVariants.front());
     frame.width = 480;
     frame.height = 480;
     const rhi::Image lit = renderLit(*device, many.scene, frame);
@@ -147,12 +148,12 @@ TEST_F(ManyLightsTest, WideSpotConeLightsItsWholeReach)
     wide.intensity = 40.0f; // 2.7 m away and 68 degrees off the ground normal: little light arrives
     many.scene.pointLights.clear();
     const glm::vec3 offAxis = wide.position + glm::vec3(2.5f, -1.0f, 0.0f);
-    const render::FrameDesc frame = frameOf(kVariants.front());
+    const render::FrameDesc frame = lightsFrameOf(kVariants.front());
     const rhi::Image lit = renderLit(*device, many.scene, frame);
     scene::Scene none = many.scene;
     none.spotLights.clear();
     const rhi::Image dark = renderLit(*device, none, frame);
-    const glm::uvec2 p = pixelOf(*device, many.scene.camera, kWidth, kHeight, offAxis);
+    const glm::uvec2 p = pixelOf(*device, many.scene.camera, kManyLightsWidth, kManyLightsHeight, offAxis);
     EXPECT_GT(luminance(lit, p.x, p.y), luminance(dark, p.x, p.y) + kPoolMargin)
         << savePicture(lit, "many-lights-wide");
 }
@@ -164,7 +165,7 @@ TEST_F(ManyLightsTest, OnlyTheFirstSixteenLightsCatchesFault)
     const ManyLightsScene many = manyLightsScene();
     ManyLightsScene limited = many;
     scene::keepFirstLocalLights(limited.scene, 16);
-    const render::FrameDesc frame = frameOf(kVariants.front());
+    const render::FrameDesc frame = lightsFrameOf(kVariants.front());
     const rhi::Image lit = renderLit(*device, limited.scene, frame);
     scene::Scene none = many.scene;
     none.spotLights.clear();

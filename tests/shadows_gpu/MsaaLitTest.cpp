@@ -17,7 +17,7 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kSize = 128;
+constexpr std::uint32_t kMsaaLitSize = 128;
 
 scene::Scene turnedSquare()
 {
@@ -46,7 +46,7 @@ class MsaaLitTest : public GpuTest {
 protected:
     rhi::Image render(const scene::Scene& scene, std::uint32_t msaa)
     {
-        return renderLit(*device, scene, litFrame(kSize, kSize, true, msaa));
+        return renderLit(*device, scene, litFrame(kMsaaLitSize, kMsaaLitSize, true, msaa));
     }
 };
 
@@ -78,7 +78,7 @@ TEST_F(MsaaLitTest, SquareEdgesAreAntiAliased)
     const rhi::Image multi = render(scene, samples);
     const Blends hard = countBlends(single), smooth = countBlends(multi);
     savePicture(multi, fmt::format("{}/msaa-lit-square-{}x", configuration(), samples));
-    ASSERT_GT(hard.square, std::size_t(kSize) * kSize / 5) << "the square covers too little";
+    ASSERT_GT(hard.square, std::size_t(kMsaaLitSize) * kMsaaLitSize / 5) << "the square covers too little";
     EXPECT_EQ(hard.intermediate, 0u) << savePicture(single, configuration() + "/msaa-lit-square-1x");
     // The square's outline is about 4 x 50 pixels long.
     EXPECT_GT(smooth.intermediate, 150u) << savePicture(multi, configuration() + "/msaa-lit-square");

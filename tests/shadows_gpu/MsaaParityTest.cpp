@@ -13,14 +13,14 @@
 namespace penumbra {
 namespace {
 
-constexpr std::uint32_t kSize = 128;
+constexpr std::uint32_t kMsaaParitySize = 128;
 constexpr std::uint32_t kSamples = 4; // offered by every configuration here (MultisampleTest)
 
 render::FrameDesc msaaFrame()
 {
     render::FrameDesc frame;
-    frame.width = kSize;
-    frame.height = kSize;
+    frame.width = kMsaaParitySize;
+    frame.height = kMsaaParitySize;
     frame.msaa = kSamples;
     frame.shadows.directional.atlasSize = 512;
     frame.shadows.local.atlasSize = 512;
@@ -39,12 +39,10 @@ const std::vector<parity::ConfigurationRun>& msaaRuns()
     return runs;
 }
 
-bool reversedTwins(const std::string& a, const std::string& b) { return a + "-reversed" == b || b + "-reversed" == a; }
-
 parity::Thresholds msaaThresholds(const std::string& a, const std::string& b)
 {
-    return reversedTwins(a, b) ? parity::identical()
-                               : parity::Thresholds{.maxDifference = 1.0, .maxDifferingPixels = 2};
+    return testing::reversedTwins(a, b) ? parity::identical()
+                                        : parity::Thresholds{.maxDifference = 1.0, .maxDifferingPixels = 2};
 }
 
 parity::Options msaaParityOptions()

@@ -13,14 +13,14 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
-constexpr glm::vec3 kSun{0.6f, -1.0f, 0.0f};
+constexpr std::uint32_t kObjectWidth = 320;
+constexpr std::uint32_t kObjectHeight = 180;
+constexpr glm::vec3 kObjectSun{0.6f, -1.0f, 0.0f};
 constexpr float kQuadHeight = 1.5f;
 constexpr glm::vec3 kQuadCentre{0.0f, kQuadHeight, 0.0f};
 // The quad's shadow is its footprint moved by kQuadHeight * 0.6 along +x: x in [0.4, 1.4]; this point is in it and
 // seen past the quad from the camera.
-constexpr glm::vec3 kShadowedGround{1.0f, 0.0f, 0.0f};
+constexpr glm::vec3 kObjectShadowedGround{1.0f, 0.0f, 0.0f};
 
 enum class Facing { Up, Down }; // towards the sun, or away from it
 
@@ -36,7 +36,7 @@ scene::Scene quadOverGround(scene::ShadowCasting casting, Facing facing = Facing
     if (facing == Facing::Down)
         quad = glm::rotate(quad, glm::radians(180.0f), glm::vec3(1.0f, 0.0f, 0.0f));
     s.objects[s.addObject("quad", s.addMesh(scene::makePlane(0.5f)), red, quad)].castShadows = casting;
-    s.lights = {{.name = "sun", .intensity = 2.0f, .direction = glm::normalize(kSun)}};
+    s.lights = {{.name = "sun", .intensity = 2.0f, .direction = glm::normalize(kObjectSun)}};
     s.camera = scene::lookAt({0.0f, 4.0f, 5.0f}, {0.6f, 0.5f, 0.0f}, 0.9f);
     return s;
 }
@@ -46,8 +46,8 @@ protected:
     rhi::Image render(const scene::Scene& scene)
     {
         render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
+        frame.width = kObjectWidth;
+        frame.height = kObjectHeight;
         rhi::Image image = renderLit(*device, scene, frame);
         const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
         pictures_ +=
@@ -57,13 +57,13 @@ protected:
 
     Rgba at(const rhi::Image& image, const scene::Scene& scene, glm::vec3 world) const
     {
-        const glm::uvec2 p = pixelOf(*device, scene.camera, kWidth, kHeight, world);
+        const glm::uvec2 p = pixelOf(*device, scene.camera, kObjectWidth, kObjectHeight, world);
         return pixel(image, p.x, p.y);
     }
 
     float shadowLuma(const rhi::Image& image, const scene::Scene& scene) const
     {
-        const glm::uvec2 p = pixelOf(*device, scene.camera, kWidth, kHeight, kShadowedGround);
+        const glm::uvec2 p = pixelOf(*device, scene.camera, kObjectWidth, kObjectHeight, kObjectShadowedGround);
         return luminance(image, p.x, p.y);
     }
 

@@ -22,10 +22,10 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
+constexpr std::uint32_t kScreenSpaceWidth = 320;
+constexpr std::uint32_t kScreenSpaceHeight = 180;
 // The acceptance: 0.01% of the picture, 5 of 320 x 180's 57 600 pixels.
-constexpr std::size_t kMostDiffering = std::size_t(kWidth) * kHeight / 10000;
+constexpr std::size_t kMostDiffering = std::size_t(kScreenSpaceWidth) * kScreenSpaceHeight / 10000;
 
 // A ground plane seen from straight above, +x to the right and -z up the picture (SceneOptions' look-down camera),
 // and one small floating cube whose shadow, the only one, falls in the top-left quadrant of the picture.
@@ -42,20 +42,6 @@ scene::Scene cornerMarkerScene()
     scene.camera = scene::lookAt({0.0f, 10.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.9f, {0.0f, 0.0f, -1.0f});
     scene.validate();
     return scene;
-}
-
-// Pixels where any channel differs by more than 1 of 255.
-std::size_t differingPixels(const rhi::Image& a, const rhi::Image& b)
-{
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i + 3 < a.bytes.size(); i += 4) {
-        bool differs = false;
-        for (std::size_t c = 0; c < 4; ++c)
-            differs =
-                differs || std::abs(std::to_integer<int>(a.bytes[i + c]) - std::to_integer<int>(b.bytes[i + c])) > 1;
-        differing += differs ? 1 : 0;
-    }
-    return differing;
 }
 
 // An RGBA32F image's floats.
@@ -82,7 +68,7 @@ protected:
     // Trilinear without anisotropy, as DepthPrepassTest: the forest's leaves cost lavapipe 50 times more with it.
     render::FrameDesc frame(render::ShadowPath path, std::uint32_t msaa = 1) const
     {
-        render::FrameDesc f = litFrame(kWidth, kHeight, true, msaa);
+        render::FrameDesc f = litFrame(kScreenSpaceWidth, kScreenSpaceHeight, true, msaa);
         f.maxAnisotropy = 1.0f;
         f.shadowPath = path;
         return f;
@@ -104,7 +90,7 @@ protected:
         savePicture(collected, fmt::format("{}/screen-space-{}-collected", configuration(), name));
         savePicture(shadowPicture(shadows, forward.width, forward.height),
                     fmt::format("{}/screen-space-{}-shadow-texture", configuration(), name));
-        const std::size_t differing = differingPixels(forward, collected);
+        const std::size_t differing = differingPixels(forward, collected, 1);
         RecordProperty("differingPixels", static_cast<int>(differing));
         return differing;
     }
@@ -122,10 +108,10 @@ TEST_F(ScreenSpaceShadowsTest, MarkerShadowLandsInItsCorner)
     ASSERT_EQ(mask.format, rhi::Format::RGBA32F);
     const std::vector<float> shadows = texels(mask);
     std::size_t maskedInCorner = 0, maskedElsewhere = 0, darkInCorner = 0, darkElsewhere = 0;
-    for (std::uint32_t y = 0; y < kHeight; ++y)
-        for (std::uint32_t x = 0; x < kWidth; ++x) {
-            const bool corner = x < kWidth / 2 && y < kHeight / 2;
-            const bool masked = shadows[(std::size_t(y) * kWidth + x) * 4] < 0.5f;
+    for (std::uint32_t y = 0; y < kScreenSpaceHeight; ++y)
+        for (std::uint32_t x = 0; x < kScreenSpaceWidth; ++x) {
+            const bool corner = x < kScreenSpaceWidth / 2 && y < kScreenSpaceHeight / 2;
+            const bool masked = shadows[(std::size_t(y) * kScreenSpaceWidth + x) * 4] < 0.5f;
             const bool dark = luminance(lit, x, y) + 20.0f < luminance(unshadowed, x, y);
             (corner ? maskedInCorner : maskedElsewhere) += masked ? 1 : 0;
             (corner ? darkInCorner : darkElsewhere) += dark ? 1 : 0;

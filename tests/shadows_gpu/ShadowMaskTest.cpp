@@ -23,8 +23,8 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 960;
-constexpr std::uint32_t kHeight = 540;
+constexpr std::uint32_t kMaskWidth = 960;
+constexpr std::uint32_t kMaskHeight = 540;
 // Each class, truly lit and truly shadowed, must be right on this share of its pixels away from edges, unless
 // a test states another bound for its shadowed class and why.
 constexpr double kClassBound = 0.995;
@@ -92,17 +92,17 @@ float footprintDistance(glm::vec3 p, glm::vec2 min, glm::vec2 max)
     return glm::length(glm::max(glm::max(min - q, q - max), glm::vec2(0.0f)));
 }
 
-std::string describe(const truth::TruthClassFigures& c)
+std::string describeFigures(const truth::TruthClassFigures& c)
 {
     return fmt::format("{} of {} right ({:.3f}%), left out: {} near edges, {} undecided by the shadow map", c.right,
                        c.compared, 100.0 * c.share(), c.nearEdges, c.undecided);
 }
 
-std::string describe(const TruthFigures& f)
+std::string describeFigures(const TruthFigures& f)
 {
     return fmt::format("lit {}; shadowed {}; acne {}, leaks {}; behind dithered casters {}, {:.3f} lit on average "
                        "({:.3f} expected)",
-                       describe(f.lit), describe(f.shadowed), f.acne(), f.leaks(), f.dithered.compared,
+                       describeFigures(f.lit), describeFigures(f.shadowed), f.acne(), f.leaks(), f.dithered.compared,
                        f.dithered.renderedLit(), f.dithered.expectedLit());
 }
 
@@ -182,7 +182,7 @@ Truth traceTruth(rhi::Device& device, const scene::Scene& scene, const render::F
 TruthFigures report(ShadowMaskTest& test, const std::string& name, const ShadowMask& mask, const Truth& truth)
 {
     const TruthFigures f = truth::compareLightTruth(truth.trace, truth.shadowRays, truth.gbuffer, mask.visibility);
-    std::printf("[ truth    ] %s %s: %s\n", configuration().c_str(), name.c_str(), describe(f).c_str());
+    std::printf("[ truth    ] %s %s: %s\n", configuration().c_str(), name.c_str(), describeFigures(f).c_str());
     test.RecordProperty(name + ".litAgreement", std::to_string(f.lit.share()));
     test.RecordProperty(name + ".shadowedAgreement", std::to_string(f.shadowed.share()));
     return f;
@@ -192,7 +192,7 @@ TruthFigures report(ShadowMaskTest& test, const std::string& name, const ShadowM
 // 1000 shadowed pixels judged in a 960 x 540 frame, as many per pixel in another).
 void checkPositionalLight(ShadowMaskTest& test, const scene::Scene& scene, const std::string& name,
                           const LightRef& light, const shadows::ShadowSettings& settings = {},
-                          std::uint32_t width = kWidth, std::uint32_t height = kHeight)
+                          std::uint32_t width = kMaskWidth, std::uint32_t height = kMaskHeight)
 {
     const render::FrameDesc frame = maskFrame(settings, width, height, light);
     const ShadowMask mask = test.renderMask(scene, frame);
@@ -200,7 +200,7 @@ void checkPositionalLight(ShadowMaskTest& test, const scene::Scene& scene, const
     EXPECT_GT(f.compared(), std::size_t(width) * height / 50)
         << name << ": the light must reach a good part of the picture";
     const std::vector<std::string> failures =
-        truthFailures(f, 1000 * std::size_t(width) * height / (std::size_t(kWidth) * kHeight));
+        truthFailures(f, 1000 * std::size_t(width) * height / (std::size_t(kMaskWidth) * kMaskHeight));
     EXPECT_TRUE(failures.empty()) << name << ": " << joined(failures) << "; visibility view: "
                                   << savePicture(mask.picture, "truth-" + configuration() + "-" + name);
 }
@@ -242,13 +242,6 @@ TEST_F(ShadowMaskTest, TwentySpotLightsEachCastTheirShadowOnOneConfiguration)
     const scene::Scene scene = twentySpotLights();
     for (const std::uint32_t light : {0u, 19u})
         checkPositionalLight(*this, scene, fmt::format("spot {} of 20", light), {LightKind::Spot, light});
-}
-
-scene::Scene roomLitFromInside()
-{
-    scene::Scene room = scenes::makePointLightRoomScene();
-    room.pointLights.pop_back();
-    return room;
 }
 
 TEST_F(ShadowMaskTest, PointShadowsAgreeWithTheRayCast)
@@ -340,7 +333,7 @@ KeyLightFigures measureKeyLight(ShadowMaskTest& test, const std::string& name, c
 TEST_F(ShadowMaskTest, ShadowMapAgreesWithTheRayCastAndHasNoAcneOrPeterPanning)
 {
     const scene::Scene scene = keyLightScene();
-    const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kWidth, kHeight, kKeyLight));
+    const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kMaskWidth, kMaskHeight, kKeyLight));
     const KeyLightFigures k = measureKeyLight(*this, "key", scene, scene, truth, 4000, kClassBound);
     EXPECT_TRUE(k.failures.empty()) << joined(k.failures);
 }
@@ -349,7 +342,7 @@ TEST_F(ShadowMaskTest, ShadowMapAgreesWithTheRayCastAndHasNoAcneOrPeterPanning)
 TEST_F(ShadowMaskTest, LowSunAgreesWithTheRayCast)
 {
     const scene::Scene scene = keyLightScene(kLowSunPitchDegrees);
-    const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kWidth, kHeight, kKeyLight));
+    const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kMaskWidth, kMaskHeight, kKeyLight));
     const KeyLightFigures k = measureKeyLight(*this, "low sun", scene, scene, truth, 8000, kClassBound);
     EXPECT_TRUE(k.failures.empty()) << joined(k.failures);
 }
@@ -412,7 +405,7 @@ TEST_F(ShadowMaskTest, CasterSideNormalBiasAgreesWithTheRayCast)
     for (const float pitch : {50.0f, kLowSunPitchDegrees}) {
         scene::Scene scene = keyLightScene(pitch);
         scene.lights[0].normalBiasSide = scene::NormalBiasSide::Caster;
-        const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kWidth, kHeight, kKeyLight));
+        const Truth truth = traceTruth(gpu(), scene, maskFrame({}, kMaskWidth, kMaskHeight, kKeyLight));
         const KeyLightFigures k =
             measureKeyLight(*this, fmt::format("caster side {:.0f}", pitch), scene, scene, truth, 4000, kClassBound);
         const std::vector<std::string> failures = truthFailures(k.truth, 4000);
@@ -423,8 +416,8 @@ TEST_F(ShadowMaskTest, CasterSideNormalBiasAgreesWithTheRayCast)
 
 // Negative controls, on one configuration at half size: the metrics above must report each fault.
 
-constexpr std::uint32_t kControlWidth = kWidth / 2;
-constexpr std::uint32_t kControlHeight = kHeight / 2;
+constexpr std::uint32_t kControlWidth = kMaskWidth / 2;
+constexpr std::uint32_t kControlHeight = kMaskHeight / 2;
 
 // Each caster left out of the shadow pass (its material copied with casting off) while the ray cast keeps it. Where
 // the ray cast of the scene without it turns compared pixels lit (its own shadow, not covered by another's, away
@@ -436,7 +429,7 @@ constexpr std::uint32_t kControlHeight = kHeight / 2;
 TEST_F(ShadowMaskTest, MissingCasterCatchesFault)
 {
     const scene::Scene scene = keyLightScene(kLowSunPitchDegrees);
-    const render::FrameDesc frame = maskFrame({}, kWidth, kHeight, kKeyLight);
+    const render::FrameDesc frame = maskFrame({}, kMaskWidth, kMaskHeight, kKeyLight);
     const Truth truth = traceTruth(gpu(), scene, frame);
     std::size_t caught = 0;
     for (const scene::Object& caster : scene.objects) {

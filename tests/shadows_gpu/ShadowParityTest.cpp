@@ -43,9 +43,9 @@ using scene::CasterMode;
 using shadows::CascadeBlend;
 using shadows::ShadowFilter;
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
-constexpr std::uint32_t kAtlasSize = 1024;
+constexpr std::uint32_t kParityWidth = 320;
+constexpr std::uint32_t kParityHeight = 180;
+constexpr std::uint32_t kParityAtlasSize = 1024;
 
 // llvmpipe snaps window positions to 1/256 pixel (FIXED_ORDER 8).
 constexpr float kSubpixelStep = 1.0f / 256.0f;
@@ -64,7 +64,7 @@ struct Variant {
     ShadowFilter localFilter = ShadowFilter::PCF2x2;
     shadows::PointShadowMode pointMode = shadows::PointShadowMode::Atlas;
     bool textured = false; // every material gets texturedChecker() as its base colour texture
-    bool staticMaps = false; // static shadow maps kept (onChange) in static atlases of kAtlasSize
+    bool staticMaps = false; // static shadow maps kept (onChange) in static atlases of kParityAtlasSize
     // Lit pixels a pair may differ in beyond the bounds of litThresholds: PCSS's blocker average and penumbra
     // divide depths the two depth mappings round differently, which flips a penumbra pixel by 1/255 here and there
     // (measured: 2 of 57 600 between reversed twins, 3 across backends).
@@ -125,20 +125,20 @@ scene::Scene sceneOf(const Variant& variant)
 render::FrameDesc frameOf(const Variant& variant)
 {
     render::FrameDesc frame;
-    frame.width = kWidth;
-    frame.height = kHeight;
-    frame.shadows.directional.atlasSize = kAtlasSize;
+    frame.width = kParityWidth;
+    frame.height = kParityHeight;
+    frame.shadows.directional.atlasSize = kParityAtlasSize;
     frame.shadows.directional.cascadeCount = variant.cascades;
     frame.shadows.directional.filter = variant.filter;
     frame.shadows.directional.cascadeBlend = variant.blend;
     frame.shadows.directional.projection = variant.projection;
-    frame.shadows.local.atlasSize = kAtlasSize;
+    frame.shadows.local.atlasSize = kParityAtlasSize;
     frame.shadows.local.filter = variant.localFilter;
     frame.shadows.local.pointMode = variant.pointMode;
     if (variant.staticMaps) {
         frame.shadows.staticMaps.update = shadows::StaticShadowUpdate::OnChange;
-        frame.shadows.staticMaps.directionalAtlasSize = kAtlasSize;
-        frame.shadows.staticMaps.localAtlasSize = kAtlasSize;
+        frame.shadows.staticMaps.directionalAtlasSize = kParityAtlasSize;
+        frame.shadows.staticMaps.localAtlasSize = kParityAtlasSize;
     }
     return frame;
 }
@@ -252,8 +252,6 @@ parity::Thresholds atlasThresholds(const std::string& atlas)
             }};
 }
 
-bool reversedTwins(const std::string& a, const std::string& b) { return a + "-reversed" == b || b + "-reversed" == a; }
-
 // Lit images. A configuration against its twin of the same backend with the other depth mapping: byte-identical
 // (measured). Otherwise at most 1 of the 57 600 pixels (a shadow edge) and PSNR >= 60 dB. With soft shadows the
 // twins may differ in `softPixels` pixels by up to 2: a depth comparison that flips between the mappings moves a
@@ -261,9 +259,9 @@ bool reversedTwins(const std::string& a, const std::string& b) { return a + "-re
 // fully lit instead of filtered to nearly lit (measured: 1 pixel by 2 of 255 in mixed-pcss).
 parity::Thresholds litThresholds(const std::string& a, const std::string& b, std::uint32_t softPixels = 0)
 {
-    if (reversedTwins(a, b) && softPixels == 0)
+    if (testing::reversedTwins(a, b) && softPixels == 0)
         return parity::identical();
-    if (reversedTwins(a, b))
+    if (testing::reversedTwins(a, b))
         return {.maxDifference = 2.0, .maxDifferingPixels = softPixels};
     return {.maxDifference = parity::kAnyDifference, .minPsnr = 60.0, .maxDifferingPixels = 1 + softPixels};
 }
@@ -473,12 +471,12 @@ TEST(ShadowParity, ChangedLitPixelCatchesFault)
         std::byte& green = changed.color.bytes[(std::size_t(y) * changed.width() + x) * 4 + 1];
         green = std::byte(std::uint8_t(green) ^ 1u);
     };
-    nudge(kWidth / 2, kHeight / 2);
+    nudge(kParityWidth / 2, kParityHeight / 2);
     const parity::PictureComparison one = parity::comparePictures(lit, conventions, changed, conventions, twins);
     EXPECT_EQ(one.figures.differingPixels, 1u);
     EXPECT_FALSE(one.pass());
     EXPECT_TRUE(parity::comparePictures(lit, conventions, changed, conventions, backends).pass());
-    nudge(kWidth / 4, kHeight / 4);
+    nudge(kParityWidth / 4, kParityHeight / 4);
     EXPECT_FALSE(parity::comparePictures(lit, conventions, changed, conventions, backends).pass());
 }
 

@@ -26,7 +26,7 @@ using scene::LightKind;
 using scene::LightRef;
 using shadows::ShadowFilter;
 
-constexpr std::uint32_t kSize = 160;
+constexpr std::uint32_t kSoftSize = 160;
 // PCSS's mean absolute error against the area light over the best fixed filter's at the same sample count, at most
 // (see checkAgainstTheAreaLight): the 0.5. The sun at 16 + 16 samples measures 0.496 on every configuration,
 // where the 16 filter taps' noise and the fence's stacked slats (one depth layer holds the slat nearest the light,
@@ -69,8 +69,8 @@ scene::Scene contactScene(LightKind kind, ShadowFilter filter)
 render::FrameDesc softFrame(LightRef light, std::uint32_t samples = 16)
 {
     render::FrameDesc frame;
-    frame.width = kSize;
-    frame.height = kSize;
+    frame.width = kSoftSize;
+    frame.height = kSoftSize;
     frame.shadows.maxDistance = 20.0f;
     frame.shadows.directional.cascadeCount = 1;
     frame.shadows.directional.atlasSize = 2048;
@@ -88,7 +88,7 @@ public:
     {
         const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
         const truth::RayCaster shadowRays(scene);
-        const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kSize, kSize);
+        const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kSoftSize, kSoftSize);
         return truth::traceAreaLightVisibility(scene, shadowRays, gbuffer, truth::areaLightOf(scene, light));
     }
 };
@@ -210,9 +210,9 @@ AreaLightFigures checkAgainstTheAreaLight(rhi::Device& device, LightKind kind, s
                 scene::lightKindName(kind), samples, samples, pcss.penumbraPixels, figures.pcss,
                 figures.pcss / figures.bestFixed, fixed.c_str());
     for (const float x : {0.14f, 0.2f, 0.3f}) {
-        const glm::uvec2 p = pixelOf(device, scene.camera, kSize, kSize, {x, 0.0f, 0.0f});
+        const glm::uvec2 p = pixelOf(device, scene.camera, kSoftSize, kSoftSize, {x, 0.0f, 0.0f});
         EXPECT_LT(figures.truth.at(p.x, p.y), 0.05f) << "x = " << x;
-        EXPECT_LT(figures.pcssVisibility.lit[std::size_t(p.y) * kSize + p.x], 0.1f) << "light leaks at x = " << x;
+        EXPECT_LT(figures.pcssVisibility.lit[std::size_t(p.y) * kSoftSize + p.x], 0.1f) << "light leaks at x = " << x;
     }
     return figures;
 }
@@ -222,17 +222,18 @@ TEST_F(SoftShadowsTest, DirectionalPcssAgainstTheAreaLight)
     const AreaLightFigures figures = checkAgainstTheAreaLight(*device, LightKind::Directional);
     // Contact hardening: the pole's point at height h shadows the ground at x = h, its penumbra widening with h.
     const scene::Camera camera = scenes::makeContactScene().camera;
-    const std::uint32_t firstRow = pixelOf(*device, camera, kSize, kSize, {1.0f, 0.0f, -0.9f}).y;
-    const std::uint32_t lastRow = pixelOf(*device, camera, kSize, kSize, {1.0f, 0.0f, 0.9f}).y;
+    const std::uint32_t firstRow = pixelOf(*device, camera, kSoftSize, kSoftSize, {1.0f, 0.0f, -0.9f}).y;
+    const std::uint32_t lastRow = pixelOf(*device, camera, kSoftSize, kSoftSize, {1.0f, 0.0f, 0.9f}).y;
     std::vector<int> widths;
     for (const float height : {0.75f, 1.5f, 2.5f}) {
-        const std::uint32_t x = pixelOf(*device, camera, kSize, kSize, {height, 0.0f, 0.0f}).x;
+        const std::uint32_t x = pixelOf(*device, camera, kSoftSize, kSoftSize, {height, 0.0f, 0.0f}).x;
         const int expected = penumbraWidth([&](std::uint32_t px, std::uint32_t py) { return figures.truth.at(px, py); },
                                            x, firstRow, lastRow);
-        const int rendered =
-            penumbraWidth([&](std::uint32_t px,
-                              std::uint32_t py) { return figures.pcssVisibility.lit[std::size_t(py) * kSize + px]; },
-                          x, firstRow, lastRow);
+        const int rendered = penumbraWidth(
+            [&](std::uint32_t px, std::uint32_t py) {
+                return figures.pcssVisibility.lit[std::size_t(py) * kSoftSize + px];
+            },
+            x, firstRow, lastRow);
         EXPECT_GT(expected, 2) << "at x = " << height;
         EXPECT_NEAR(rendered, expected, 0.25 * expected + 0.5) << "penumbra width in pixels at x = " << height;
         std::printf("x = %.2f: ray-traced %d px, pcss %d px\n", height, expected, rendered);
@@ -369,8 +370,8 @@ TEST_F(SoftShadowsTest, PcssStaysPutUnderSubTexelCameraMoves)
     for (std::size_t m = 0; m < moved.size(); ++m) {
         const rhi::Image after = pictureWithPlansFrom(moved[m]);
         std::size_t changed = 0;
-        for (std::uint32_t y = 0; y < kSize; ++y)
-            for (std::uint32_t x = 0; x < kSize; ++x)
+        for (std::uint32_t y = 0; y < kSoftSize; ++y)
+            for (std::uint32_t x = 0; x < kSoftSize; ++x)
                 changed += pixel(still, x, y) != pixel(after, x, y);
         EXPECT_EQ(changed, 0u) << "move " << m << ": " << savePicture(after, fmt::format("soft-moved-{}", m));
     }

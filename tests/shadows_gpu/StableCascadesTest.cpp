@@ -27,8 +27,8 @@ struct ShadowFrame {
     scene::Camera camera;
 };
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
+constexpr std::uint32_t kStableWidth = 320;
+constexpr std::uint32_t kStableHeight = 180;
 
 // Whether the camera sees the point (inside its frustum's side planes).
 bool inView(const scene::Camera& camera, glm::vec3 p)
@@ -38,7 +38,7 @@ bool inView(const scene::Camera& camera, glm::vec3 p)
     const float tanY = std::tan(0.5f * camera.fovY);
     const float depth = glm::dot(offset, camera.forward);
     return std::abs(glm::dot(offset, up)) <= depth * tanY &&
-           std::abs(glm::dot(offset, camera.right())) <= depth * tanY * float(kWidth) / float(kHeight);
+           std::abs(glm::dot(offset, camera.right())) <= depth * tanY * float(kStableWidth) / float(kStableHeight);
 }
 
 // The cascade a ground point selects (hard blend, shadows::selectCascade as the lit shader does), and how far inside
@@ -145,8 +145,8 @@ protected:
                        shadows::CascadeProjection projection)
     {
         render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
+        frame.width = kStableWidth;
+        frame.height = kStableHeight;
         frame.shadows.directional.projection = projection;
         if (fit == Fit::Unquantized)
             frame.shadows.directional.depthFitSteps = 0;
@@ -209,8 +209,8 @@ protected:
         const scene::Scene scene = scenes::makeSingleLightScene();
         render::SceneRenderer renderer(*device, scene);
         render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
+        frame.width = kStableWidth;
+        frame.height = kStableHeight;
         frame.shadows.directional.projection = projection;
         std::optional<ShadowFrame> before;
         std::vector<ShimmerFigures> figures;

@@ -60,17 +60,4 @@ inline void moveObject(scene::Scene& scene, const std::string& name, glm::vec3 o
     object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
 }
 
-// Pixels whose channels differ by more than 1 step, out of all.
-inline double differingShare(const rhi::Image& a, const rhi::Image& b)
-{
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < a.bytes.size(); i += 4) {
-        bool differs = false;
-        for (std::size_t c = 0; c < 3; ++c)
-            differs |= std::abs(std::to_integer<int>(a.bytes[i + c]) - std::to_integer<int>(b.bytes[i + c])) > 1;
-        differing += differs ? 1 : 0;
-    }
-    return static_cast<double>(differing) / static_cast<double>(a.bytes.size() / 4);
-}
-
 } // namespace penumbra::testing

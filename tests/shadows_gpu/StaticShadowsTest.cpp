@@ -25,9 +25,6 @@ namespace {
 
 using shadows::ShadowFilter;
 
-constexpr std::uint32_t kWidth = kStaticWidth;
-constexpr std::uint32_t kHeight = kStaticHeight;
-
 // The static map updates of boxesUnderASpot(), by light.
 const std::vector<std::string> kSunMap{"directional light 0 ('sun')"};
 const std::vector<std::string> kLampMap{"spot light 0 ('lamp')"};
@@ -75,7 +72,7 @@ TEST_F(StaticShadowsTest, StaticMapsAreDrawnOnceWhileTheDynamicBallMoves)
         fresh.requestStaticShadowUpdate();
         EXPECT_EQ(fresh.render(scene.camera, freshFrame).staticCasterDraws, 65u);
         const rhi::Image drawn = read(fresh);
-        EXPECT_LE(differingShare(kept, drawn), 0.001)
+        EXPECT_LE(differingShare(kept, drawn, 1), 0.001)
             << "frame " << k << ": " << picture(kept, "kept") << " vs " << picture(drawn, "fresh");
         moveObject(scene, "ball", {3.0f, 0.0f, -4.0f});
     }
@@ -96,7 +93,7 @@ TEST_F(StaticShadowsTest, RealtimeDynamicCastersOnlyGiveTheSamePictureWhenNothin
     EXPECT_EQ(dynamicStats.staticCasterDraws, 0u);
     EXPECT_GT(allStats.casterDraws, dynamicStats.casterDraws);
     const rhi::Image d = read(renderer);
-    const double share = differingShare(a, d);
+    const double share = differingShare(a, d, 1);
     std::printf("[ static   ] %s realtime dynamic casters only vs all: %.4f%% of pixels differ by more than 1/255\n",
                 configuration().c_str(), 100.0 * share);
     EXPECT_LE(share, 0.001) << picture(a, "all-casters") << " vs " << picture(d, "dynamic-casters");
@@ -178,7 +175,7 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     EXPECT_EQ(updated(), kBothMaps);
     EXPECT_FALSE(hasStaticMap(renderer, shadows::LightKind::Point));
     const rhi::Image again = read(renderer);
-    EXPECT_LE(differingShare(mixed, again), 0.001)
+    EXPECT_LE(differingShare(mixed, again, 1), 0.001)
         << picture(mixed, "mixed-modes") << " vs " << picture(again, "on-change");
     // The bulb's six tiles reshape the static local atlas: the lamp's tile moves with them.
     scene.pointLights[0].shadowUpdate = std::nullopt;
@@ -195,8 +192,8 @@ struct SoftShadowSummary {
 SoftShadowSummary softSummary(const rhi::Image& a, const rhi::Image& b)
 {
     SoftShadowSummary summary;
-    for (std::uint32_t y = 0; y < kHeight; ++y)
-        for (std::uint32_t x = 0; x < kWidth; ++x) {
+    for (std::uint32_t y = 0; y < kStaticHeight; ++y)
+        for (std::uint32_t x = 0; x < kStaticWidth; ++x) {
             const Rgba p = pixel(a, x, y);
             const Rgba q = pixel(b, x, y);
             if (p[3] < 128 || q[3] < 128)
@@ -289,7 +286,7 @@ TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
     const rhi::Image full = lit(1.0f);
     const rhi::Image half = lit(0.5f);
     const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
-    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kStaticWidth, kStaticHeight);
     double worst = 0.0;
     std::size_t shadowed = 0;
     std::size_t shadowedBeyond = 0; // past the start of the distance fade: the static map's share grows to all
@@ -304,7 +301,7 @@ TEST_F(StaticShadowsTest, TheLightsStrengthMixesTheStaticAndRealtimeShadow)
             const bool inShadow = c == 0 && a - b > 0.05;
             shadowed += inShadow ? 1 : 0;
             const truth::GBufferSample& sample =
-                gbuffer.at(std::uint32_t(i / 4 % kWidth), std::uint32_t(i / 4 / kWidth));
+                gbuffer.at(std::uint32_t(i / 4 % kStaticWidth), std::uint32_t(i / 4 / kStaticWidth));
             shadowedBeyond += inShadow && sample.object != truth::kNoObject &&
                                       sample.viewDepth > frame.shadows.maxDistance * (1.0f - frame.shadows.distanceFade)
                                   ? 1
@@ -329,7 +326,7 @@ TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowA
     const scene::LightRef sun{scene::LightKind::Directional, 0};
     frame.visibilityOf = sun;
     const truth::RayCaster cameraRays(scene, truth::RayKind::Camera);
-    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kWidth, kHeight);
+    const truth::CpuGBuffer gbuffer = truth::traceGBuffer(scene, cameraRays, scene.camera, kStaticWidth, kStaticHeight);
     render::SceneRenderer renderer(*device, scene);
     struct FarShadow {
         std::size_t decided = 0;
@@ -338,16 +335,16 @@ TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowA
     // A pixel whose 3 x 3 neighbourhood lies beyond: the rasterizer and the ray cast may see different sides of
     // an edge.
     const auto far = [&](std::uint32_t x, std::uint32_t y) {
-        for (std::uint32_t v = std::max(y, 1u) - 1; v <= std::min(y + 1, kHeight - 1); ++v)
-            for (std::uint32_t u = std::max(x, 1u) - 1; u <= std::min(x + 1, kWidth - 1); ++u)
+        for (std::uint32_t v = std::max(y, 1u) - 1; v <= std::min(y + 1, kStaticHeight - 1); ++v)
+            for (std::uint32_t u = std::max(x, 1u) - 1; u <= std::min(x + 1, kStaticWidth - 1); ++u)
                 if (gbuffer.at(u, v).object == truth::kNoObject || gbuffer.at(u, v).viewDepth < 50.0f)
                     return false;
         return true;
     };
     const auto farShadow = [&](const rhi::Image& view) {
         FarShadow result;
-        for (std::uint32_t y = 0; y < kHeight; ++y)
-            for (std::uint32_t x = 0; x < kWidth; ++x) {
+        for (std::uint32_t y = 0; y < kStaticHeight; ++y)
+            for (std::uint32_t x = 0; x < kStaticWidth; ++x) {
                 if (!far(x, y))
                     continue;
                 const Rgba p = pixel(view, x, y);
@@ -360,7 +357,7 @@ TEST_F(StaticShadowsTest, BeyondTheShadowDistanceTheStaticMapContinuesTheShadowA
     renderer.render(scene.camera, frame);
     const rhi::Image cachedView = rhi::readTexture(*device, renderer.visibilityImage());
     const FarShadow cached = farShadow(cachedView);
-    EXPECT_GT(cached.decided, std::size_t(kWidth) * kHeight / 10);
+    EXPECT_GT(cached.decided, std::size_t(kStaticWidth) * kStaticHeight / 10);
     EXPECT_GT(cached.shadowed, cached.decided / 10) << "the buildings' far shadows";
     const truth::RayCaster shadowRays(scene);
     const truth::LightTruthTrace truth =
@@ -400,8 +397,8 @@ TEST_F(StaticShadowsTest, ALightWithoutRealtimeTilesKeepsItsStaticShadow)
         notes = renderer.render(scene.camera, frame).notes;
         const rhi::Image view = rhi::readTexture(*device, renderer.visibilityImage());
         std::size_t count = 0;
-        for (std::uint32_t y = 0; y < kHeight; ++y)
-            for (std::uint32_t x = 0; x < kWidth; ++x)
+        for (std::uint32_t y = 0; y < kStaticHeight; ++y)
+            for (std::uint32_t x = 0; x < kStaticWidth; ++x)
                 count += pixel(view, x, y)[3] >= 128 && pixel(view, x, y)[0] < 128 ? 1 : 0;
         return count;
     };

@@ -16,8 +16,8 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
+constexpr std::uint32_t kTexturedWidth = 320;
+constexpr std::uint32_t kTexturedHeight = 180;
 
 class TexturedMaterialTest : public GpuTest {
 protected:
@@ -56,14 +56,14 @@ protected:
     rhi::Image render(const scene::Scene& scene)
     {
         render::FrameDesc frame;
-        frame.width = kWidth;
-        frame.height = kHeight;
+        frame.width = kTexturedWidth;
+        frame.height = kTexturedHeight;
         return renderLit(*device, scene, frame);
     }
 
     glm::uvec2 pixelOf(const scene::Scene& scene, glm::vec3 world) const
     {
-        return testing::pixelOf(*device, scene.camera, kWidth, kHeight, world);
+        return testing::pixelOf(*device, scene.camera, kTexturedWidth, kTexturedHeight, world);
     }
 };
 

@@ -15,22 +15,22 @@
 namespace penumbra::testing {
 namespace {
 
-constexpr std::uint32_t kWidth = 320;
-constexpr std::uint32_t kHeight = 180;
+constexpr std::uint32_t kCullingWidth = 320;
+constexpr std::uint32_t kCullingHeight = 180;
 
-struct Drawn {
+struct DrawnCulled {
     rhi::Image lit;
     render::FrameStats stats;
 };
 
 class ViewCullingTest : public GpuTest {
 protected:
-    Drawn draw(const scene::Scene& scene)
+    DrawnCulled draw(const scene::Scene& scene)
     {
-        render::FrameDesc frame = litFrame(kWidth, kHeight, true, 1);
+        render::FrameDesc frame = litFrame(kCullingWidth, kCullingHeight, true, 1);
         frame.instancedDraws = false; // a draw per object: the draws count the objects drawn
         render::SceneRenderer renderer(*device, scene);
-        Drawn drawn;
+        DrawnCulled drawn;
         drawn.stats = renderer.render(scene.camera, frame);
         drawn.lit = rhi::readTexture(*device, renderer.litImage());
         return drawn;
@@ -67,8 +67,8 @@ TEST_F(ViewCullingTest, ObjectsOutOfViewAreNotDrawnAndChangeNothing)
     const std::uint32_t red = crowded.addMaterial({.name = "red", .baseColor = {0.9f, 0.1f, 0.1f, 1.0f}});
     addCubesOutOfView(crowded, cube, red);
     crowded.validate();
-    const Drawn expected = draw(plain);
-    const Drawn drawn = draw(crowded);
+    const DrawnCulled expected = draw(plain);
+    const DrawnCulled drawn = draw(crowded);
     EXPECT_EQ(drawn.stats.litDraws, expected.stats.litDraws);
     EXPECT_EQ(drawn.stats.depthPrepassDraws, expected.stats.depthPrepassDraws);
     EXPECT_TRUE(drawn.lit.bytes == expected.lit.bytes) << "objects out of view changed the picture";
@@ -77,7 +77,7 @@ TEST_F(ViewCullingTest, ObjectsOutOfViewAreNotDrawnAndChangeNothing)
 TEST_F(ViewCullingTest, AnObjectReachingIntoTheViewIsDrawn)
 {
     scene::Scene scene = scenes::makeShadowTestScene();
-    const Drawn expected = draw(scene);
+    const DrawnCulled expected = draw(scene);
     // A long bar whose centre lies far to the right of the view, its left end across the middle of the picture.
     const scene::Camera& camera = scene.camera;
     const std::uint32_t bar = scene.addMesh(scene::makeBox({40.0f, 0.2f, 0.2f}));
@@ -88,7 +88,7 @@ TEST_F(ViewCullingTest, AnObjectReachingIntoTheViewIsDrawn)
                                        camera.position + 8.0f * camera.forward + 40.0f * camera.right()));
     scene.objects[object].castShadows = scene::ShadowCasting::Off;
     scene.validate();
-    const Drawn drawn = draw(scene);
+    const DrawnCulled drawn = draw(scene);
     EXPECT_EQ(drawn.stats.litDraws, expected.stats.litDraws + 1);
     EXPECT_FALSE(drawn.lit.bytes == expected.lit.bytes) << "the bar is not in the picture";
 }

@@ -12,12 +12,6 @@
 namespace penumbra::testing {
 namespace {
 
-template <typename T>
-std::span<const std::uint8_t> bytesOf(std::span<const T> values)
-{
-    return {reinterpret_cast<const std::uint8_t*>(values.data()), values.size_bytes()};
-}
-
 std::size_t components(const std::string& type)
 {
     return type == "SCALAR" ? 1 : type == "MAT4" ? 16 : std::size_t(type.back() - '0');

@@ -38,12 +38,6 @@ void writeFile(const std::filesystem::path& path, std::span<const std::uint8_t> 
         throw std::runtime_error("cannot write " + path.string());
 }
 
-template <typename T>
-std::span<const std::uint8_t> bytesOf(std::span<const T> values)
-{
-    return {reinterpret_cast<const std::uint8_t*>(values.data()), values.size_bytes()};
-}
-
 void appendU32(std::vector<std::uint8_t>& out, std::uint32_t value)
 {
     for (int i = 0; i < 4; ++i)

@@ -15,6 +15,13 @@
 
 namespace penumbra::testing {
 
+// The bytes of `values`, as a glTF buffer holds them.
+template <typename T>
+std::span<const std::uint8_t> bytesOf(std::span<const T> values)
+{
+    return {reinterpret_cast<const std::uint8_t*>(values.data()), values.size_bytes()};
+}
+
 // glTF component types, as the specification numbers them.
 enum class Component : int {
     Byte = 5120,

@@ -129,4 +129,24 @@ std::string savePicture(const rhi::Image& image, const std::string& name)
     return path;
 }
 
+std::size_t differingPixels(const rhi::Image& a, const rhi::Image& b, int tolerance)
+{
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i + 3 < a.bytes.size(); i += 4) {
+        bool differs = false;
+        for (std::size_t c = 0; c < 3; ++c)
+            differs |=
+                std::abs(std::to_integer<int>(a.bytes[i + c]) - std::to_integer<int>(b.bytes[i + c])) > tolerance;
+        differing += differs ? 1 : 0;
+    }
+    return differing;
+}
+
+double differingShare(const rhi::Image& a, const rhi::Image& b, int tolerance)
+{
+    return static_cast<double>(differingPixels(a, b, tolerance)) / static_cast<double>(a.bytes.size() / 4);
+}
+
+bool reversedTwins(const std::string& a, const std::string& b) { return a + "-reversed" == b || b + "-reversed" == a; }
+
 } // namespace penumbra::testing

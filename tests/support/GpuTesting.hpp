@@ -58,6 +58,13 @@ Rgba pixel(const rhi::Image& image, std::uint32_t x, std::uint32_t y);
 float luminance(const rhi::Image& image, std::uint32_t x, std::uint32_t y);
 std::string describe(Rgba c);
 
+// Pixels whose red, green or blue differ by more than `tolerance` steps; as a share of all pixels.
+std::size_t differingPixels(const rhi::Image& a, const rhi::Image& b, int tolerance);
+double differingShare(const rhi::Image& a, const rhi::Image& b, int tolerance);
+
+// Whether two configuration names are one backend with the two depth mappings ("vulkan", "vulkan-reversed").
+bool reversedTwins(const std::string& a, const std::string& b);
+
 // The lowest sample count above 1 that the device offers for every one of `targets` (Capabilities::sampleCounts);
 // 0 where it offers none.
 std::uint32_t lowestMultisampleCount(const rhi::Capabilities& caps, std::span<const rhi::Format> targets);

@@ -13,12 +13,6 @@
 namespace penumbra::testing {
 namespace {
 
-template <typename T>
-std::span<const std::uint8_t> bytesOf(std::span<const T> values)
-{
-    return {reinterpret_cast<const std::uint8_t*>(values.data()), values.size_bytes()};
-}
-
 // The skeleton, in Skin::joints order. Joints sit where their bone starts; the rest pose has no rotations, so each
 // inverse bind matrix is a translation by minus the joint's position.
 enum Joint : std::uint8_t {

@@ -13,15 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 using penumbra::rhi::writeFileAtomically;
 
-fs::path scratch(const char* name) { return penumbra::testing::scratchFolder("atomic-file-tests", name); }
-
-std::string contents(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+fs::path atomicScratch(const char* name) { return penumbra::testing::scratchFolder("atomic-file-tests", name); }
 
 std::size_t entries(const fs::path& folder)
 {
@@ -40,19 +32,19 @@ std::string failureOf(const fs::path& path)
 
 TEST(AtomicFile, WritesAndReplacesLeavingOnlyTheFile)
 {
-    const fs::path folder = scratch("replace");
+    const fs::path folder = atomicScratch("replace");
     writeFileAtomically(folder / "a.json", "first");
     writeFileAtomically(folder / "a.json", "second, longer");
-    EXPECT_EQ(contents(folder / "a.json"), "second, longer");
+    EXPECT_EQ(penumbra::testing::fileContents(folder / "a.json"), "second, longer");
     EXPECT_EQ(entries(folder), 1u);
     EXPECT_STREQ(penumbra::rhi::temporaryFileInProgress(), "");
 }
 
 TEST(AtomicFile, CreatesParentFolders)
 {
-    const fs::path folder = scratch("parents");
+    const fs::path folder = atomicScratch("parents");
     writeFileAtomically(folder / "x" / "y" / "z.txt", "deep");
-    EXPECT_EQ(contents(folder / "x" / "y" / "z.txt"), "deep");
+    EXPECT_EQ(penumbra::testing::fileContents(folder / "x" / "y" / "z.txt"), "deep");
 }
 
 TEST(AtomicFile, FullDiskIsANamedError)
@@ -63,7 +55,7 @@ TEST(AtomicFile, FullDiskIsANamedError)
 
 TEST(AtomicFile, FolderThatCannotBeMadeIsANamedError)
 {
-    const fs::path folder = scratch("not-a-folder");
+    const fs::path folder = atomicScratch("not-a-folder");
     writeFileAtomically(folder / "file", "a file, not a folder");
     EXPECT_EQ(failureOf(folder / "file" / "sub" / "out.png"),
               "cannot write " + (folder / "file" / "sub" / "out.png").string() + ": cannot create the folder " +
@@ -73,7 +65,7 @@ TEST(AtomicFile, FolderThatCannotBeMadeIsANamedError)
 
 TEST(AtomicFile, FolderInThePlaceOfTheFileIsANamedError)
 {
-    const fs::path folder = scratch("folder-in-place");
+    const fs::path folder = atomicScratch("folder-in-place");
     fs::create_directories(folder / "out.png");
     EXPECT_EQ(failureOf(folder / "out.png"), "cannot write " + (folder / "out.png").string() + ": it is a folder");
     EXPECT_EQ(entries(folder), 1u);

@@ -7,12 +7,12 @@
 namespace penumbra::rhi {
 namespace {
 
-struct Case {
+struct ConventionCase {
     DepthRange range;
     bool reversed;
 };
 
-class ConventionsTest : public ::testing::TestWithParam<Case> {
+class ConventionsTest : public ::testing::TestWithParam<ConventionCase> {
 protected:
     Conventions conventions{GetParam().range, GetParam().reversed};
 
@@ -110,10 +110,11 @@ TEST_P(ConventionsTest, ShaderHeaderStatesTheSameFacts)
 }
 
 INSTANTIATE_TEST_SUITE_P(, ConventionsTest,
-                         ::testing::Values(Case{DepthRange::ZeroToOne, false}, Case{DepthRange::ZeroToOne, true},
-                                           Case{DepthRange::MinusOneToOne, false},
-                                           Case{DepthRange::MinusOneToOne, true}),
-                         [](const ::testing::TestParamInfo<Case>& param) {
+                         ::testing::Values(ConventionCase{DepthRange::ZeroToOne, false},
+                                           ConventionCase{DepthRange::ZeroToOne, true},
+                                           ConventionCase{DepthRange::MinusOneToOne, false},
+                                           ConventionCase{DepthRange::MinusOneToOne, true}),
+                         [](const ::testing::TestParamInfo<ConventionCase>& param) {
                              return std::string(param.param.range == DepthRange::ZeroToOne ? "ZeroToOne"
                                                                                            : "MinusOneToOne") +
                                     (param.param.reversed ? "Reversed" : "");

@@ -12,7 +12,7 @@ namespace fs = std::filesystem;
 namespace imageio = penumbra::imageio;
 namespace rhi = penumbra::rhi;
 
-fs::path scratch(const char* name) { return penumbra::testing::scratchFolder("image-files-tests", name); }
+fs::path imageScratch(const char* name) { return penumbra::testing::scratchFolder("image-files-tests", name); }
 
 // A picture whose every byte differs from its neighbours', so a swapped channel or flipped row shows.
 rhi::Image gradient(std::uint32_t width, std::uint32_t height)
@@ -37,7 +37,7 @@ void expectFailure(Call call, const std::string& text)
 
 TEST(ImageFiles, PngKeepsEveryByteAndRowOrder)
 {
-    const fs::path file = scratch("png") / "gradient.png";
+    const fs::path file = imageScratch("png") / "gradient.png";
     const rhi::Image image = gradient(13, 5);
     imageio::writePngFile(file, image);
     const rhi::Image read = imageio::readPng(file);
@@ -53,7 +53,7 @@ TEST(ImageFiles, PngEncodingIsTheSameBytesEveryTime)
 
 TEST(ImageFiles, ExrKeepsFloatValuesAndChannelNames)
 {
-    const fs::path file = scratch("exr") / "depth.exr";
+    const fs::path file = imageScratch("exr") / "depth.exr";
     imageio::FloatImage depth{3, 2, {"Z"}, {0.0f, 0.25f, 1.0f, 1e-7f, 0.999999f, 0.5f}};
     imageio::writeExrFile(file, depth);
     const imageio::FloatImage read = imageio::readExr(file);
@@ -66,7 +66,7 @@ TEST(ImageFiles, ExrKeepsFloatValuesAndChannelNames)
 
 TEST(ImageFiles, ExrChannelsAreFoundByName)
 {
-    const fs::path file = scratch("rgba") / "picture.exr";
+    const fs::path file = imageScratch("rgba") / "picture.exr";
     imageio::FloatImage picture{1, 1, {"R", "G", "B", "A"}, {0.1f, 0.2f, 0.3f, 1.0f}};
     imageio::writeExrFile(file, picture);
     const imageio::FloatImage read = imageio::readExr(file);
@@ -78,7 +78,7 @@ TEST(ImageFiles, ExrChannelsAreFoundByName)
 
 TEST(ImageFiles, BadInputIsANamedError)
 {
-    const fs::path folder = scratch("bad");
+    const fs::path folder = imageScratch("bad");
     rhi::Image grey{2, 2, rhi::Format::R8, std::vector<std::byte>(4)};
     expectFailure([&] { imageio::encodePng(grey); }, "PNG needs RGBA8");
     expectFailure([&] { imageio::encodeExr({2, 2, {"Z"}, {1.0f}}); }, "needs 4 values, has 1");

@@ -16,15 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using penumbra::rhi::PipelineCache;
 
-fs::path scratch(const char* name) { return penumbra::testing::scratchFolder("pipeline-cache-tests", name); }
-
-std::string contents(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+fs::path cacheScratch(const char* name) { return penumbra::testing::scratchFolder("pipeline-cache-tests", name); }
 
 void overwrite(const fs::path& path, const std::string& bytes)
 {
@@ -43,7 +35,7 @@ struct StoredEntry {
 
 StoredEntry storeOne(const char* test)
 {
-    const fs::path folder = scratch(test);
+    const fs::path folder = cacheScratch(test);
     PipelineCache writer(folder);
     writer.store("spirv", kIdentity, kKey, kPayload, 1.0);
     return {folder, writer.entryPath("spirv", kIdentity, kKey)};
@@ -76,7 +68,7 @@ TEST(PipelineCache, StoredEntryLoadsBackInAnotherInstance)
 TEST(PipelineCache, CorruptEntryIsIgnored)
 {
     const StoredEntry stored = storeOne("corrupt");
-    std::string bytes = contents(stored.file);
+    std::string bytes = penumbra::testing::fileContents(stored.file);
     bytes.back() ^= 0x20; // one bit of the payload
     overwrite(stored.file, bytes);
     expectIgnored(stored.folder, "corrupt: the checksum does not match");
@@ -85,7 +77,7 @@ TEST(PipelineCache, CorruptEntryIsIgnored)
 TEST(PipelineCache, TruncatedEntryIsIgnored)
 {
     const StoredEntry stored = storeOne("truncated");
-    const std::string bytes = contents(stored.file);
+    const std::string bytes = penumbra::testing::fileContents(stored.file);
     overwrite(stored.file, bytes.substr(0, bytes.size() - 3));
     expectIgnored(stored.folder, "truncated");
     overwrite(stored.file, bytes.substr(0, 10));
@@ -112,7 +104,7 @@ TEST(PipelineCache, FileOfAnotherKindIsIgnored)
 
 TEST(PipelineCache, UnwritableFolderIsANoteNotAnError)
 {
-    const fs::path folder = scratch("unwritable");
+    const fs::path folder = cacheScratch("unwritable");
     overwrite(folder / "file", "a file where the cache's folder should be");
     PipelineCache cache(folder / "file");
     EXPECT_NO_THROW(cache.store("spirv", kIdentity, kKey, kPayload, 1.0));
@@ -148,7 +140,7 @@ TEST(PipelineCache, SpirvReadBackEqualsCompiledAndDamagedSpirvIsCompiledAgain)
         .source = "#version 450\nlayout(location = 0) out vec4 color;\nvoid main() { color = vec4(0.25); }\n",
         .name = "PipelineCacheTest.frag"};
     const std::string preamble = "#define PIPELINE_CACHE_TEST 1\n";
-    const fs::path folder = scratch("spirv");
+    const fs::path folder = cacheScratch("spirv");
 
     penumbra::rhi::forgetCompiledShaders();
     PipelineCache first(folder);
@@ -166,7 +158,7 @@ TEST(PipelineCache, SpirvReadBackEqualsCompiledAndDamagedSpirvIsCompiledAgain)
 
     // A damaged entry is compiled anew, with a note, to the same SPIR-V.
     const fs::path file = fs::directory_iterator(folder)->path();
-    std::string bytes = contents(file);
+    std::string bytes = penumbra::testing::fileContents(file);
     bytes[bytes.size() / 2] ^= 0x01;
     overwrite(file, bytes);
     penumbra::rhi::forgetCompiledShaders();
