@@ -8,7 +8,7 @@ packages=(
   libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
   glslang-dev glslang-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libglm-dev libtinygltf-dev libopenexr-dev
-  libstb-dev libfmt-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev zlib1g-dev
+  libstb-dev libfmt-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libpng-dev
   libimgui-dev xvfb xauth doxygen clang-format clang-tidy python3
 )
 

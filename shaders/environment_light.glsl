@@ -1,7 +1,8 @@
 // Image-based lighting in the lit pass (render::EnvironmentLight): diffuse from nine spherical harmonics
 // (frame.environmentSh, render::diffuseShaderCoefficients), specular from the prefiltered equirectangular chain and
-// the split-sum BRDF table (Karis 2013, "Real Shading in Unreal Engine 4"). frame.environmentCos and environmentSin:
-// the rotation about +y; environmentLastLevel: the chain's last level (0 without an environment).
+// the split-sum BRDF table (Karis 2013, "Real Shading in Unreal Engine 4") with multiple scattering.
+// frame.environmentCos and environmentSin: the rotation about +y; environmentLastLevel: the chain's last level (0
+// without an environment).
 
 #include "environment.glsl"
 
@@ -29,16 +30,33 @@ vec3 environmentDiffuse(vec3 n)
     return max(e, vec3(0.0));
 }
 
+// The share of the prefiltered radiance the specular layer reflects, single and multiple scattering together, from
+// the split-sum table's scale A and bias B (Fdez-Aguera 2019, "A Multiple-Scattering Microfacet Model for Real-Time
+// Image-based Lighting", JCGT 8(1)): the single-scattering Fresnel grows towards grazing angles only as far
+// as the roughness lets it (Fr), and the energy single scattering loses, 1 - (A + B), comes back in proportion to the
+// average Fresnel F_avg. As the Khronos glTF Sample Viewer does (getIBLGGXFresnel), the multiple-scattering term is
+// lit by the prefiltered radiance too, where the paper lights it by the irradiance.
+vec3 environmentReflectance(vec3 f0, vec2 ab, float nv, float roughness)
+{
+    const vec3 fr = max(vec3(1.0 - roughness), f0) - f0;
+    const vec3 kS = f0 + fr * pow(1.0 - nv, 5.0);
+    const vec3 fssEss = kS * ab.x + ab.y;
+    const float ems = 1.0 - (ab.x + ab.y);
+    const vec3 fAverage = f0 + (1.0 - f0) / 21.0;
+    const vec3 fmsEms = ems * fssEss * fAverage / (1.0 - fAverage * ems);
+    return fssEss + fmsEms;
+}
+
 // The environment's light leaving the surface towards v, with the same metallic-roughness split as brdf(): the
-// specular layer reflects f0 A + B, the dielectric's diffuse takes what it does not. Ambient occlusion darkens the
-// diffuse; the specular takes Lagarde and de Rousiers 2014, "Moving Frostbite to PBR", section 4.10.2, equation 62
-// (with their roughness, the GGX alpha).
+// specular layer reflects environmentReflectance, the dielectric's diffuse takes what it does not. Ambient occlusion
+// darkens the diffuse; the specular takes Lagarde and de Rousiers 2014, "Moving Frostbite to PBR", section 4.10.2,
+// equation 62 (with their roughness, the GGX alpha).
 vec3 environmentLight(vec3 n, vec3 v, vec3 base, float metallic, float roughness, float occlusion)
 {
     const float nv = max(dot(n, v), 1e-4);
     const vec3 f0 = mix(vec3(0.04), base, metallic);
     const vec2 ab = textureLod(environmentBrdf, vec2(nv, roughness), 0.0).rg;
-    const vec3 reflectance = f0 * ab.x + ab.y;
+    const vec3 reflectance = environmentReflectance(f0, ab, nv, roughness);
     const vec3 r = toEnvironment(reflect(-v, n));
     const vec3 prefiltered = textureLod(environmentSpecular, equirectUv(r), roughness * frame.environmentLastLevel).rgb;
     const float alpha = roughness * roughness;

@@ -13,6 +13,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -68,28 +69,22 @@ struct StbFree {
     void operator()(void* pixels) const { stbi_image_free(pixels); }
 };
 
-// A channel as 8 bits: 16-bit channels rounded to nearest.
-std::uint8_t eightBits(std::uint8_t value) { return value; }
-std::uint8_t eightBits(std::uint16_t value) { return std::uint8_t((value + 128) / 257); }
-
-// Decoded texels of 1 to 4 channels as RGBA8, as the scene keeps them: grey (and grey-alpha) spread over RGB, a
-// missing alpha opaque. Done here, on the decoding threads, rather than later on one.
-template <typename Channel>
-std::vector<unsigned char> rgba8Of(const Channel* pixels, std::size_t texels, int channels)
+// Decoded JPEG texels of 1 to 4 channels as RGBA8, as the scene keeps them: grey (and grey-alpha) spread over RGB,
+// a missing alpha opaque. Done here, on the decoding threads, rather than later on one.
+std::vector<unsigned char> rgba8Of(const std::uint8_t* pixels, std::size_t texels, int channels)
 {
-    if constexpr (sizeof(Channel) == 1)
-        if (channels == 4)
-            return std::vector<unsigned char>(pixels, pixels + texels * 4);
+    if (channels == 4)
+        return std::vector<unsigned char>(pixels, pixels + texels * 4);
     std::vector<unsigned char> rgba(texels * 4);
     const auto count = std::size_t(channels);
     for (std::size_t t = 0; t < texels; ++t) {
-        const Channel* texel = pixels + t * count;
+        const std::uint8_t* texel = pixels + t * count;
         unsigned char* out = rgba.data() + t * 4;
         const bool grey = channels <= 2;
-        out[0] = eightBits(texel[0]);
-        out[1] = eightBits(texel[grey ? 0 : 1]);
-        out[2] = eightBits(texel[grey ? 0 : 2]);
-        out[3] = channels == 2 || channels == 4 ? eightBits(texel[count - 1]) : 255;
+        out[0] = texel[0];
+        out[1] = texel[grey ? 0 : 1];
+        out[2] = texel[grey ? 0 : 2];
+        out[3] = channels == 2 || channels == 4 ? texel[count - 1] : 255;
     }
     return rgba;
 }
@@ -107,6 +102,20 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
                    std::uint64_t(header->width) * header->height > kMaxImageTexels))
         return fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", header->width, header->height,
                            kMaxImageSide, kMaxImageTexels);
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    if (startsWith(bytes, kPng)) {
+        try {
+            PngPicture picture = decodePng(bytes);
+            image.width = int(picture.width);
+            image.height = int(picture.height);
+            image.image = std::move(picture.rgba);
+        } catch (const std::runtime_error& failure) {
+            return failure.what();
+        }
+        return {};
+    }
     const int size = int(bytes.size());
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels))
@@ -117,30 +126,15 @@ std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& im
                            kMaxImageTexels);
     image.width = width;
     image.height = height;
-    image.component = 4;
-    image.bits = 8;
-    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-    if (std::optional<std::vector<unsigned char>> texels = decodeTruecolourPng(bytes)) {
-        image.image = std::move(*texels);
-        return {};
-    }
-    const bool wide = stbi_is_16_bit_from_memory(bytes.data(), size) != 0;
     int decodedWidth = 0, decodedHeight = 0, decodedChannels = 0;
-    std::unique_ptr<void, StbFree> pixels(
-        wide ? static_cast<void*>(
-                   stbi_load_16_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &decodedChannels, 0))
-             : static_cast<void*>(
-                   stbi_load_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &decodedChannels, 0)));
+    std::unique_ptr<stbi_uc, StbFree> pixels(
+        stbi_load_from_memory(bytes.data(), size, &decodedWidth, &decodedHeight, &decodedChannels, 0));
     if (!pixels)
         return fmt::format("does not decode: {}", stbi_failure_reason());
     if (decodedWidth != width || decodedHeight != height || decodedChannels < 1 || decodedChannels > 4)
         return fmt::format("decoded to {}x{} texels of {} channels, its header says {}x{}", decodedWidth, decodedHeight,
                            decodedChannels, width, height);
-    const std::size_t texels = std::size_t(width) * std::size_t(height);
-    if (wide)
-        image.image = rgba8Of(static_cast<const std::uint16_t*>(pixels.get()), texels, decodedChannels);
-    else
-        image.image = rgba8Of(static_cast<const std::uint8_t*>(pixels.get()), texels, decodedChannels);
+    image.image = rgba8Of(pixels.get(), std::size_t(width) * std::size_t(height), decodedChannels);
     return {};
 }
 
@@ -208,8 +202,8 @@ std::string decodeStashedImages(tinygltf::Model& model, const std::function<void
             }
         }
     };
-    // Each picture decodes on its own (stb_image keeps its failure reason per thread), so the pictures do not depend
-    // on the thread count.
+    // Each picture decodes on its own (libpng's state is per picture, stb_image keeps its failure reason per thread),
+    // so the pictures do not depend on the thread count.
     const std::size_t helpers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()) - 1,
                                                       stashed.size() > 0 ? stashed.size() - 1 : 0);
     {

@@ -15,9 +15,9 @@ namespace penumbra::gltf {
 inline constexpr std::uint32_t kMaxImageSide = 16384;
 inline constexpr std::uint64_t kMaxImageTexels = std::uint64_t(1) << 26;
 
-// Decodes a PNG or JPEG image (glTF 2.0, section 3.8.1: the two image formats core glTF allows) into
-// `image` as RGBA8 (width, height, component 4, bits 8): grey spread over RGB, a missing alpha opaque, 16-bit
-// channels rounded to nearest.
+// Decodes a PNG (libpng, decodePng) or JPEG (stb_image) image (glTF 2.0, section 3.8.1: the two image formats core
+// glTF allows) into `image` as RGBA8 (width, height, component 4, bits 8): grey spread over RGB, a missing alpha
+// opaque, 16-bit channels rounded to nearest.
 // Returns what is wrong, or "" on success: an unknown or truncated format, a picture over the limits,
 // pixel data that does not decode.
 std::string decodeImage(std::span<const std::uint8_t> bytes, tinygltf::Image& image);

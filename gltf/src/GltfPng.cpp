@@ -1,59 +1,111 @@
 #include "GltfPng.hpp"
 
-#include <sys/mman.h>
-#include <zlib.h>
+#include "GltfImages.hpp"
 
-#include <cstdlib>
+#include <fmt/format.h>
+#include <png.h>
+#include <sys/mman.h>
+
+#include <csetjmp>
 #include <cstring>
-#include <string_view>
+#include <new>
+#include <stdexcept>
 
 namespace penumbra::gltf {
 namespace {
 
-std::uint32_t pngBigEndian(const std::uint8_t* bytes)
+// What libpng's callbacks share with the decoder. Plain data only: on an error libpng's error function longjmps
+// back to the setjmp of readPngHeader or readPngRows (the libpng manual's "Error handling": the function must not
+// return), over libpng's frames and these, so no frame it skips may own anything with a destructor.
+struct PngSource {
+    const std::uint8_t* bytes;
+    std::size_t size;
+    std::size_t at;
+    char message[256];
+};
+
+void pngReadBytes(png_structp png, png_bytep out, std::size_t count)
 {
-    return std::uint32_t(bytes[0]) << 24 | std::uint32_t(bytes[1]) << 16 | std::uint32_t(bytes[2]) << 8 | bytes[3];
+    auto* source = static_cast<PngSource*>(png_get_io_ptr(png));
+    if (count > source->size - source->at)
+        png_error(png, "the picture's data ends early");
+    std::memcpy(out, source->bytes + source->at, count);
+    source->at += count;
 }
 
-// The Paeth predictor (W3C PNG, section 9.4): whichever of left, above and upper left is nearest a + b - c.
-std::uint8_t paethPredictor(int a, int b, int c)
+[[noreturn]] void pngFail(png_structp png, png_const_charp message)
 {
-    const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
-    return std::uint8_t(pa <= pb && pa <= pc ? a : pb <= pc ? b : c);
+    auto* source = static_cast<PngSource*>(png_get_error_ptr(png));
+    std::strncpy(source->message, message ? message : "", sizeof source->message - 1);
+    source->message[sizeof source->message - 1] = '\0';
+    png_longjmp(png, 1);
 }
 
-// Undoes a row's filter (section 9.2) in place; `above` is the previous row, zeros for the first.
-bool unfilterPngRow(std::uint8_t filter, std::uint8_t* row, const std::uint8_t* above, std::size_t size,
-                    std::size_t bpp)
-{
-    switch (filter) {
-    case 0:
-        return true;
-    case 1:
-        for (std::size_t i = bpp; i < size; ++i)
-            row[i] = std::uint8_t(row[i] + row[i - bpp]);
-        return true;
-    case 2:
-        for (std::size_t i = 0; i < size; ++i)
-            row[i] = std::uint8_t(row[i] + above[i]);
-        return true;
-    case 3:
-        for (std::size_t i = 0; i < size; ++i)
-            row[i] = std::uint8_t(row[i] + ((i >= bpp ? row[i - bpp] : 0) + above[i]) / 2);
-        return true;
-    case 4:
-        for (std::size_t i = 0; i < size; ++i)
-            row[i] = std::uint8_t(row[i] + (i >= bpp ? paethPredictor(row[i - bpp], above[i], above[i - bpp])
-                                                     : paethPredictor(0, above[i], 0)));
-        return true;
-    default:
-        return false;
+// Warnings (an ancillary chunk libpng drops, a known incorrect ICC profile) change no texel; libpng's default would
+// print them on stderr.
+void pngIgnoreWarning(png_structp, png_const_charp) {}
+
+// libpng's read and info structures, destroyed on every path.
+struct PngReader {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    explicit PngReader(PngSource& source)
+    {
+        png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &source, pngFail, pngIgnoreWarning);
+        if (png)
+            info = png_create_info_struct(png);
+        if (!png || !info) {
+            png_destroy_read_struct(png ? &png : nullptr, nullptr, nullptr);
+            throw std::bad_alloc();
+        }
+        png_set_read_fn(png, &source, pngReadBytes);
     }
+    ~PngReader() { png_destroy_read_struct(&png, &info, nullptr); }
+    PngReader(const PngReader&) = delete;
+    PngReader& operator=(const PngReader&) = delete;
+};
+
+// Reads the chunks up to the first IDAT and sets the transformations to RGBA8; false on an error (the source's
+// message says which). Sets `width` and `height` from IHDR.
+bool readPngHeader(png_structp png, png_infop info, png_uint_32* width, png_uint_32* height)
+{
+    if (setjmp(png_jmpbuf(png)))
+        return false;
+    // stb_image, the loader's decoder before libpng, checked neither chunk CRCs nor zlib's Adler-32: a picture it
+    // decoded still decodes, to the same texels.
+    png_set_crc_action(png, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
+    png_set_option(png, PNG_IGNORE_ADLER32, PNG_OPTION_ON);
+    png_read_info(png, info);
+    *width = png_get_image_width(png, info);
+    *height = png_get_image_height(png, info);
+    const int colourType = png_get_color_type(png, info);
+    const bool transparency = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
+    png_set_expand(png); // palette to RGB, grey of 1, 2 or 4 bits to 8, tRNS to alpha
+    png_set_scale_16(png);
+    png_set_gray_to_rgb(png);
+    if ((colourType & PNG_COLOR_MASK_ALPHA) == 0 && !transparency)
+        png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    return true;
 }
 
-// `size` zeroed bytes whose pages the kernel may back with transparent huge pages (madvise(2), MADV_HUGEPAGE, for
-// systems that leave them to madvise): a fresh 16 MiB picture otherwise takes 4096 page faults, and page faults were a
-// third of loading a dozen 2048 x 2048 textures on a virtual machine. A hint: where it fails, nothing changes.
+// Decodes every row (every pass's rows of an interlaced picture, each pass combined into the rows) into `rgba`;
+// false on an error.
+bool readPngRows(png_structp png, png_infop info, unsigned char* rgba, png_uint_32 width, png_uint_32 height)
+{
+    if (setjmp(png_jmpbuf(png)))
+        return false;
+    const int passes = png_get_interlace_type(png, info) == PNG_INTERLACE_ADAM7 ? PNG_INTERLACE_ADAM7_PASSES : 1;
+    for (int pass = 0; pass < passes; ++pass)
+        for (png_uint_32 y = 0; y < height; ++y)
+            png_read_row(png, rgba + std::size_t(y) * width * 4, nullptr);
+    return true;
+}
+
+// `size` bytes whose pages the kernel may back with transparent huge pages (madvise(2), MADV_HUGEPAGE, for systems
+// that leave them to madvise): a fresh 16 MiB picture otherwise takes 4096 page faults, and page faults were a third
+// of loading a dozen 2048 x 2048 textures on a virtual machine. A hint: where it fails, nothing changes.
 std::vector<unsigned char> freshPicture(std::size_t size)
 {
     std::vector<unsigned char> bytes;
@@ -67,105 +119,25 @@ std::vector<unsigned char> freshPicture(std::size_t size)
     return bytes;
 }
 
-// zlib's inflate state, ended on every path.
-struct PngInflater {
-    z_stream stream{};
-    bool open = false;
-    PngInflater() { open = inflateInit(&stream) == Z_OK; }
-    ~PngInflater()
-    {
-        if (open)
-            inflateEnd(&stream);
-    }
-    PngInflater(const PngInflater&) = delete;
-    PngInflater& operator=(const PngInflater&) = delete;
-};
-
 } // namespace
 
-std::optional<std::vector<unsigned char>> decodeTruecolourPng(std::span<const std::uint8_t> bytes)
+PngPicture decodePng(std::span<const std::uint8_t> bytes)
 {
-    // The signature, then IHDR first (section 11.2.2): width, height, depth, colour type, compression, filter,
-    // interlace.
-    if (bytes.size() < 33 || std::string_view(reinterpret_cast<const char*>(bytes.data()) + 12, 4) != "IHDR" ||
-        pngBigEndian(bytes.data() + 8) != 13)
-        return std::nullopt;
-    const std::uint8_t* header = bytes.data() + 16;
-    const std::uint32_t width = pngBigEndian(header), height = pngBigEndian(header + 4);
-    const std::uint8_t depth = header[8], colourType = header[9];
-    if (width == 0 || height == 0 || depth != 8 || (colourType != 2 && colourType != 6) || header[10] != 0 ||
-        header[11] != 0 || header[12] != 0)
-        return std::nullopt;
-    const std::size_t bpp = colourType == 6 ? 4 : 3, rowSize = std::size_t(width) * bpp;
-    std::vector<unsigned char> rgba = freshPicture(std::size_t(width) * height * 4);
-    std::vector<std::uint8_t> rows(2 * (rowSize + 1), 0); // this row and the one above, each after its filter byte
-    PngInflater inflater;
-    if (!inflater.open)
-        return std::nullopt;
-    z_stream& stream = inflater.stream;
-    std::uint32_t y = 0;
-    std::size_t filled = 0; // bytes of the current row (filter byte first) inflated so far
-    bool ended = false;
-    // Inflates the input the stream holds into rows, until it needs more; false where the data breaks the picture.
-    const auto inflateRows = [&] {
-        for (;;) {
-            std::uint8_t past = 0; // where data past the last row would go
-            std::uint8_t* row = rows.data() + (y % 2) * (rowSize + 1);
-            stream.next_out = y < height ? row + filled : &past;
-            stream.avail_out = y < height ? uInt(rowSize + 1 - filled) : 1u;
-            const int result = inflate(&stream, Z_NO_FLUSH);
-            if (result == Z_BUF_ERROR)
-                return true; // no progress without more input
-            if (result != Z_OK && result != Z_STREAM_END)
-                return false;
-            ended = result == Z_STREAM_END;
-            if (y == height)
-                return stream.avail_out == 1 && (ended || stream.avail_in == 0);
-            filled = rowSize + 1 - stream.avail_out;
-            if (filled == rowSize + 1) {
-                const std::uint8_t* above = rows.data() + ((y + 1) % 2) * (rowSize + 1);
-                if (!unfilterPngRow(row[0], row + 1, above + 1, rowSize, bpp))
-                    return false;
-                unsigned char* out = rgba.data() + std::size_t(y) * width * 4;
-                for (std::size_t x = 0; x < width; ++x) {
-                    std::memcpy(out + x * 4, row + 1 + x * bpp, bpp);
-                    if (bpp == 3)
-                        out[x * 4 + 3] = 255;
-                }
-                filled = 0;
-                ++y;
-            } else if (!ended) {
-                return true; // the input ran out inside a row
-            }
-            if (ended)
-                return true;
-        }
-    };
-    for (std::size_t at = 33; at + 12 <= bytes.size();) {
-        const std::uint32_t length = pngBigEndian(bytes.data() + at);
-        const std::string_view type(reinterpret_cast<const char*>(bytes.data()) + at + 4, 4);
-        if (length > bytes.size() - at - 12)
-            return std::nullopt;
-        const std::uint8_t* data = bytes.data() + at + 8;
-        at += 12 + std::size_t(length);
-        if (type == "IEND")
-            break;
-        if (type != "IDAT") {
-            // Ancillary chunks (lower-case first letter) other than transparency change no texel here.
-            if (type == "tRNS" || type == "CgBI" || (type[0] >= 'A' && type[0] <= 'Z'))
-                return std::nullopt;
-            continue;
-        }
-        if (ended)
-            return std::nullopt;
-        stream.next_in = const_cast<Bytef*>(data);
-        stream.avail_in = length;
-        if (!inflateRows())
-            return std::nullopt;
-    }
-    if (!ended || y != height)
-        return std::nullopt;
-    return rgba;
+    PngSource source{bytes.data(), bytes.size(), 0, {}};
+    PngReader reader(source);
+    png_uint_32 width = 0, height = 0;
+    if (!readPngHeader(reader.png, reader.info, &width, &height))
+        throw std::runtime_error(fmt::format("does not decode: libpng: {}", source.message));
+    if (width > kMaxImageSide || height > kMaxImageSide || std::uint64_t(width) * height > kMaxImageTexels)
+        throw std::runtime_error(fmt::format("is {}x{} texels, over the limits of {} a side and {} texels", width,
+                                             height, kMaxImageSide, kMaxImageTexels));
+    if (png_get_rowbytes(reader.png, reader.info) != std::size_t(width) * 4)
+        throw std::runtime_error(fmt::format("does not decode: libpng gives {} bytes a row, not RGBA8's {}",
+                                             png_get_rowbytes(reader.png, reader.info), std::size_t(width) * 4));
+    PngPicture picture{width, height, freshPicture(std::size_t(width) * height * 4)};
+    if (!readPngRows(reader.png, reader.info, picture.rgba.data(), width, height))
+        throw std::runtime_error(fmt::format("does not decode: libpng: {}", source.message));
+    return picture;
 }
 
 } // namespace penumbra::gltf

@@ -1,19 +1,24 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <span>
 #include <vector>
 
 namespace penumbra::gltf {
 
-// The texels of a PNG of 8-bit truecolour, with or without alpha, not interlaced (the pictures glTF files mostly
-// carry), as RGBA8, a missing alpha opaque: inflated by zlib a row at a time and unfiltered straight into the texels
-// (W3C PNG, second edition, sections 9 and 10). stb_image's inflate, and its whole-picture buffers and their page
-// faults, were most of loading a dozen 2048 x 2048 textures (docs/notes/2026-12-06-large-texture-loading.md).
-// Nothing for any other PNG (another colour type or depth, interlaced, a tRNS or PLTE chunk, an unknown critical
-// chunk) or one that does not inflate to exactly its rows: stb_image decodes those, or says what is wrong. PNG is
-// lossless, so both give the same texels.
-std::optional<std::vector<unsigned char>> decodeTruecolourPng(std::span<const std::uint8_t> bytes);
+// A PNG picture decoded to RGBA8, as the scene keeps textures.
+struct PngPicture {
+    std::uint32_t width = 0, height = 0;
+    std::vector<unsigned char> rgba;
+};
+
+// Decodes a PNG of any colour type, bit depth and interlace with libpng, a row at a time straight into the RGBA8
+// texels: palette and grey expanded to RGB, a tRNS chunk to alpha, a missing alpha opaque, 16-bit channels rounded
+// to nearest (libpng's png_set_scale_16). Colour-space chunks (gAMA, cHRM, iCCP, sRGB) change no texel, as glTF
+// 2.0 section 3.8.1 asks, and chunk checksums are not checked (the texels are the same either way).
+// Throws std::runtime_error saying what is wrong, as a phrase after "the picture": "does not decode: libpng: " and
+// libpng's message, or that it is over the loader's limits (kMaxImageSide, kMaxImageTexels), checked before any
+// texel is decoded.
+PngPicture decodePng(std::span<const std::uint8_t> bytes);
 
 } // namespace penumbra::gltf
