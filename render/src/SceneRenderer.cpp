@@ -156,7 +156,7 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     return u;
 }
 
-// The lit pass's order: directional lights, then spot lights, then point lights (localLightTexels).
+// The lit pass's order: directional lights, then spot lights, then point lights (localLightRecords).
 int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 {
     const scene::Scene& scene = gpuScene_.scene();
@@ -300,7 +300,7 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     shadowMapSet_ = state.shadowMaps.createSet(device_, *shadowMapLayout_);
     state.shadowMapSet = shadowMapSet_.get();
     // Every spot and point light, listed in the clusters of the camera's view it may reach (here or on the GPU).
-    localLights_->updateLights(localLightTexels(gpuScene_.scene(), localPlan_, staticShadows_->plan()));
+    localLights_->updateLights(localLightRecords(gpuScene_.scene(), localPlan_, staticShadows_->plan()));
     const shadows::LightClusterUniforms clusters =
         localLights_->prepareLists(shadowCamera(camera, aspectOf(frame)), clusterLights(gpuScene_.scene()),
                                    frame.shadows.local.clusterBuild);
