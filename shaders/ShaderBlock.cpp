@@ -1,6 +1,8 @@
 #include "penumbra/shaders/ShaderBlock.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <stdexcept>
 #include <fmt/format.h>
 
 namespace penumbra::shaders {
@@ -95,6 +97,24 @@ std::string readonlyArrayBlockGlsl(const ShaderStruct& element, std::string_view
     return structGlsl(element) +
            fmt::format("layout(std430, binding = {}) readonly buffer {} {{\n    {} {}[];\n}} {};\n", binding, block,
                        element.name, member, instance);
+}
+
+std::string texelRecordGlsl(const ShaderStruct& record, std::string_view fetch, std::string_view prefix)
+{
+    if (!fitsTexels(record))
+        throw std::invalid_argument(fmt::format("texel record '{}': every field must be a float or float vector within "
+                                                "one 16-byte texel, and the record whole texels ({} bytes)",
+                                                record.name, record.size));
+    std::string text =
+        fmt::format("// Generated from the texel record {} ({} texels).\n", record.name, record.size / 16);
+    for (const ShaderField& field : record.fields) {
+        std::string name(field.name);
+        name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+        const std::string_view lanes = std::string_view("xyzw").substr(field.offset % 16 / 4, field.size / 4);
+        text += fmt::format("{} {}{}(int record) {{ return {}(record, {}).{}; }}\n", glslType(field), prefix, name,
+                            fetch, field.offset / 16, lanes);
+    }
+    return text;
 }
 
 rhi::UniformLayout uniformLayout(const ShaderStruct& block)

@@ -86,20 +86,20 @@ vec3 frontNormal()
 const vec3 cascadeColors[5] = vec3[](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.25, 0.4, 1.0),
                                      vec3(1.0, 1.0, 0.25), vec3(0.5, 0.5, 0.5));
 
-// Spot or point light i at the fragment: its texels (PENUMBRA_LOCAL_*), direction towards it and the light that
-// arrives before N.L.
-// Local light i's static map (LocalLightTexel::StaticMap: its first tile or -1, its strength).
+// Local light i's static map: its first tile or -1, its strength.
 StaticLocalLightMap staticLocalLightMap(int i)
 {
-    const vec4 texel = localLightTexel(i, PENUMBRA_LOCAL_STATIC_MAP);
-    return StaticLocalLightMap(int(texel.x), texel.y);
+    return StaticLocalLightMap(int(localLightStaticTile(i)), localLightStaticStrength(i));
 }
 
+// Spot or point light i at the fragment: its fields (localLight* of local_light_record.glsl), direction towards it
+// and the light that arrives before N.L.
 struct LocalLight {
-    vec4 position;
-    vec4 color;
+    vec3 position;
+    vec3 color;
     vec3 axis;
-    vec4 shadow;
+    int shadowTile;
+    float shadowStrength;
     vec3 l;
     float falloff;
     bool isPoint;
@@ -108,20 +108,24 @@ struct LocalLight {
 LocalLight localLight(int i)
 {
     LocalLight result;
-    result.position = localLightTexel(i, PENUMBRA_LOCAL_POSITION);
-    result.color = localLightTexel(i, PENUMBRA_LOCAL_COLOR);
-    result.axis = localLightTexel(i, PENUMBRA_LOCAL_AXIS).xyz;
-    result.shadow = localLightTexel(i, PENUMBRA_LOCAL_SHADOW);
-    const vec4 light = result.position;
-    const vec3 toLight = light.xyz - vPosition;
+    result.position = localLightPosition(i);
+    result.color = localLightColor(i);
+    result.axis = localLightAxis(i);
+    result.shadowTile = int(localLightShadowTile(i));
+    result.shadowStrength = localLightShadowStrength(i);
+    const float inverseRangeSquared = localLightInverseRangeSquared(i);
+    const vec3 toLight = result.position - vPosition;
     const float d2 = max(dot(toLight, toLight), 1e-5);
     result.l = toLight * inversesqrt(d2);
-    result.isPoint = int(result.color.w) == PENUMBRA_LIGHT_POINT;
+    result.isPoint = int(localLightKind(i)) == PENUMBRA_LIGHT_POINT;
     // Smooth range window over inverse-square falloff (Karis 2013, "Real Shading in Unreal Engine 4", section
     // "Lights"), then the spot cone's smooth step between outer and inner angle.
-    const float window = clamp(1.0 - d2 * light.w * d2 * light.w, 0.0, 1.0);
-    const vec4 shadow = result.shadow;
-    const float cone = result.isPoint ? 1.0 : clamp(dot(result.axis, -result.l) * shadow.x + shadow.y, 0.0, 1.0);
+    const float window =
+        clamp(1.0 - d2 * inverseRangeSquared * d2 * inverseRangeSquared, 0.0, 1.0);
+    const float cone = result.isPoint ? 1.0
+                                      : clamp(dot(result.axis, -result.l) * localLightConeScale(i) +
+                                                  localLightConeOffset(i),
+                                              0.0, 1.0);
     result.falloff = window * window / d2 * cone * cone;
     return result;
 }
@@ -150,16 +154,16 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
     }
     const int i = index - frame.directionalLightCount;
     const LocalLight light = localLight(i);
-    const vec4 shadow = light.shadow;
     const StaticLocalLightMap map = staticLocalLightMap(i);
-    const bool realtime = shadow.z >= 0.0 && globalStrength > 0.0;
+    const bool realtime = light.shadowTile >= 0 && globalStrength > 0.0;
     const bool fromStatic = map.tile >= 0;
     if (!receives || dot(n, light.l) <= 0.0 || light.falloff <= 0.0 || !(realtime || fromStatic))
         return vec4(1.0, 1.0, 1.0, 0.0);
-    const vec3 lightPosition = light.position.xyz;
+    const vec3 lightPosition = light.position;
     const vec3 axis = light.axis;
     const float visibility =
-        realtime ? localShadowVisibility(int(shadow.z), light.isPoint, lightPosition, axis, vPosition, geometric) : 1.0;
+        realtime ? localShadowVisibility(light.shadowTile, light.isPoint, lightPosition, axis, vPosition, geometric)
+                 : 1.0;
     return vec4(vec3(fromStatic ? min(visibility, staticLocalVisibility(map.tile, light.isPoint, lightPosition, axis,
                                                                         vPosition, geometric))
                                 : visibility),
@@ -271,16 +275,16 @@ void main()
             continue;
         const bool receives = object.receivesShadows != 0;
 #if PENUMBRA_STATIC_SHADOWS
-        const float attenuation = localAttenuation(staticLocalLightMap(i), light.shadow.zw,
-                                                   receives, light.isPoint, light.position.xyz, light.axis, vPosition,
-                                                   geometric, globalStrength);
+        const float attenuation =
+            localAttenuation(staticLocalLightMap(i), light.shadowTile, light.shadowStrength, receives, light.isPoint,
+                             light.position, light.axis, vPosition, geometric, globalStrength);
 #else
         const float attenuation =
-            receives ? localShadowAttenuation(light.shadow.zw, light.isPoint, light.position.xyz, light.axis,
-                                              vPosition, geometric, globalStrength)
+            receives ? localShadowAttenuation(light.shadowTile, light.shadowStrength, light.isPoint, light.position,
+                                              light.axis, vPosition, geometric, globalStrength)
                      : 1.0;
 #endif
-        color += brdf(n, v, light.l, base, metallic, roughness) * light.color.rgb * nl * light.falloff * attenuation;
+        color += brdf(n, v, light.l, base, metallic, roughness) * light.color * nl * light.falloff * attenuation;
     }
 #endif
     // Emissive textures are RGBA8_SRGB too: already linear when sampled.

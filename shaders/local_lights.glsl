@@ -9,11 +9,13 @@ layout(binding = PENUMBRA_BINDING_LIGHT_INDICES) uniform sampler2D lightIndexDat
 
 ivec2 litDataTexel(int t) { return ivec2(t & (PENUMBRA_LIT_DATA_WIDTH - 1), t >> PENUMBRA_LIT_DATA_WIDTH_LOG2); }
 
-// Texel `texel` (PENUMBRA_LOCAL_*) of local light `light`.
+// Texel `texel` of local light `light`, for the accessors of its fields that follow (LitUniforms.hpp's
+// LocalLightRecord: localLightPosition(light), localLightColor(light)...).
 vec4 localLightTexel(int light, int texel)
 {
     return texelFetch(localLightData, litDataTexel(light * PENUMBRA_LOCAL_LIGHT_TEXELS + texel), 0);
 }
+#include "local_light_record.glsl"
 
 // The list of the cluster holding world-space `position`: its first entry in the index texture and its length.
 ivec2 clusterLightList(vec3 position)

@@ -232,15 +232,15 @@ float localShadowVisibility(int tile, bool isPoint, vec3 lightPosition, vec3 axi
 #endif
 }
 
-// 1 = fully lit. `shadow`: first tile (or cube), -1 without shadows; the light's shadow strength. `strength` is the
-// global one (distance fade), which applies to every light.
-float localShadowAttenuation(vec2 shadow, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position, vec3 normal,
-                             float strength)
+// 1 = fully lit. `tile`: the first tile (or cube), -1 without shadows; `lightStrength`: the light's shadow strength.
+// `strength` is the global one (distance fade), which applies to every light.
+float localShadowAttenuation(int tile, float lightStrength, bool isPoint, vec3 lightPosition, vec3 axis, vec3 position,
+                             vec3 normal, float strength)
 {
-    const float s = shadow.y * strength;
-    if (shadow.x < 0.0 || s <= 0.0)
+    const float s = lightStrength * strength;
+    if (tile < 0 || s <= 0.0)
         return 1.0;
-    return mix(1.0, localShadowVisibility(int(shadow.x), isPoint, lightPosition, axis, position, normal), s);
+    return mix(1.0, localShadowVisibility(tile, isPoint, lightPosition, axis, position, normal), s);
 }
 
 // The realtime shadow faded by the global strength, before the light's own (1 = lit; 1 without a tile).

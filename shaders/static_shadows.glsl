@@ -54,16 +54,16 @@ float directionalAttenuation(int light, int slot, bool receives, CascadeSelectio
     return mix(1.0, min(realtime, staticDirectionalVisibility(map, position, normal, towardsLight)), map.strength);
 }
 
-// A spot or point light (`map` its static map, `shadow` its first realtime tile or cube, or -1, and its strength) at
-// a receiver, 1 = lit. `strength` is the global one (distance fade).
-float localAttenuation(StaticLocalLightMap map, vec2 shadow, bool receives, bool isPoint, vec3 lightPosition, vec3 axis,
-                       vec3 position, vec3 normal, float strength)
+// A spot or point light (`map` its static map, `tile` its first realtime tile or cube, or -1, `lightStrength` its
+// shadow strength) at a receiver, 1 = lit. `strength` is the global one (distance fade).
+float localAttenuation(StaticLocalLightMap map, int tile, float lightStrength, bool receives, bool isPoint,
+                       vec3 lightPosition, vec3 axis, vec3 position, vec3 normal, float strength)
 {
     if (!receives)
         return 1.0;
     if (map.tile < 0)
-        return localShadowAttenuation(shadow, isPoint, lightPosition, axis, position, normal, strength);
-    const float realtime = localRealtimeShadow(int(shadow.x), isPoint, lightPosition, axis, position, normal, strength);
+        return localShadowAttenuation(tile, lightStrength, isPoint, lightPosition, axis, position, normal, strength);
+    const float realtime = localRealtimeShadow(tile, isPoint, lightPosition, axis, position, normal, strength);
     return mix(1.0, min(realtime, staticLocalVisibility(map.tile, isPoint, lightPosition, axis, position, normal)),
                map.strength);
 }

@@ -1,13 +1,17 @@
 #include "FrameTargets.hpp"
 
 #include "FrameChecks.hpp"
+#include "LocalLightTextures.hpp"
 #include "cache/LocalTileCache.hpp"
 #include "graph/FrameGraph.hpp"
 #include "passes/ContactShadowPass.hpp"
 #include "passes/DepthPrepass.hpp"
 #include "passes/DepthReduction.hpp"
+#include "passes/FrameState.hpp"
 #include "passes/LitPipelines.hpp"
 #include "passes/ScreenSpaceShadowPass.hpp"
+#include "skinning/GpuSkinning.hpp"
+#include "static/StaticShadowCache.hpp"
 
 #include "penumbra/render/FrameResources.hpp"
 
@@ -110,6 +114,45 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
     graph_->dropFramebuffers();
     if (screenSpace_)
         screenSpace_->prepare(*depth_);
+}
+
+// This frame's textures and buffers: the renderer's, the frame's transient ones and the application's.
+void SceneRenderer::importResources(const FrameDesc& frame)
+{
+    FrameGraph& graph = *graph_;
+    graph.reset();
+    const FrameState& state = *state_;
+    graph.importTexture(frame::kLitImage, *lit_, true);
+    graph.importTexture(frame::kLitDepth, *depth_);
+    graph.importTexture(frame::kDirectionalAtlas, atlas_->texture(), true);
+    graph.importTexture(frame::kLocalAtlas, localAtlas_->texture(), true);
+    graph.importTexture(frame::kShadowCubes, shadowCubes_->texture(), true);
+    graph.importTexture(frame::kStaticDirectionalAtlas, staticShadows_->directionalAtlas().texture(), true);
+    graph.importTexture(frame::kStaticLocalAtlas, staticShadows_->localAtlas().texture(), true);
+    graph.importTexture(frame::kLocalLights, localLights_->lights());
+    graph.importTexture(frame::kLightClusters, localLights_->clusters());
+    graph.importTexture(frame::kLightIndices, localLights_->indices());
+    graph.importTexture(frame::kCascadeView, *cascades_, frame.cascadeView);
+    graph.importTexture(frame::kVisibilityView, *visibility_, frame.visibilityOf.has_value());
+    if (screenSpace_) {
+        graph.importTexture(frame::kReceiverPositionDx, screenSpace_->positionDx());
+        graph.importTexture(frame::kReceiverPositionDy, screenSpace_->positionDy());
+        graph.importTexture(frame::kScreenSpaceShadows, screenSpace_->shadows(), state.screenSpace);
+    }
+    if (contact_)
+        graph.importTexture(frame::kContactShadows, contact_->shadows());
+    if (frame.msaa > 1)
+        createMultisampledTargets(graph, frame);
+    for (const UserTexture& texture : userTextures_)
+        graph.importTexture(texture.name, texture.texture, true);
+    if (state.posedVertices)
+        graph.importBuffers(frame::kPosedVertices, skinning_->posedVertices());
+    if (state.culling) {
+        graph.importBuffer(frame::kCulledInstances, state.culling->instances());
+        graph.importBuffers(frame::kCulledDraws, {&state.culling->draws(), &state.culling->drawCounts()});
+    }
+    if (state.depthFit)
+        graph.importBuffer(frame::kDepthHistogram, depthReduction_->histogram(), true);
 }
 
 } // namespace penumbra::render

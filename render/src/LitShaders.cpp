@@ -42,14 +42,7 @@ std::string litConstants(const LitShaderFeatures& features)
     text += fmt::format("#define PENUMBRA_CLUSTER_TILES_X {}\n#define PENUMBRA_CLUSTER_TILES_Y {}\n"
                         "#define PENUMBRA_CLUSTER_SLICES {}\n",
                         kLitClusterGrid.tilesX, kLitClusterGrid.tilesY, kLitClusterGrid.slices);
-    text += fmt::format("#define PENUMBRA_LOCAL_LIGHT_TEXELS {}\n#define PENUMBRA_LOCAL_POSITION {}\n"
-                        "#define PENUMBRA_LOCAL_COLOR {}\n#define PENUMBRA_LOCAL_AXIS {}\n"
-                        "#define PENUMBRA_LOCAL_SHADOW {}\n#define PENUMBRA_LOCAL_STATIC_MAP {}\n",
-                        kLocalLightTexels, static_cast<std::uint32_t>(LocalLightTexel::Position),
-                        static_cast<std::uint32_t>(LocalLightTexel::Color),
-                        static_cast<std::uint32_t>(LocalLightTexel::Axis),
-                        static_cast<std::uint32_t>(LocalLightTexel::Shadow),
-                        static_cast<std::uint32_t>(LocalLightTexel::StaticMap));
+    text += fmt::format("#define PENUMBRA_LOCAL_LIGHT_TEXELS {}\n", kLocalLightTexels);
     text += fmt::format("#define PENUMBRA_BINDING_LOCAL_LIGHTS {}\n#define PENUMBRA_BINDING_LIGHT_CLUSTERS {}\n"
                         "#define PENUMBRA_BINDING_LIGHT_INDICES {}\n",
                         kLitLocalLightsBinding, kLitLightClustersBinding, kLitLightIndicesBinding);
@@ -98,6 +91,8 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
 {
     rhi::ShaderSource source = shaders::load(fileName);
     source.includes.push_back({"lit_constants.glsl", litConstants(features)});
+    source.includes.push_back(
+        {"local_light_record.glsl", shaders::texelRecordGlsl(kLocalLightRecord, "localLightTexel", "localLight")});
     source.includes.push_back({"caster_constants.glsl", shadows::casterConstantsGlsl()});
     source.includes.push_back({"instance_constants.glsl", shadows::instanceConstantsGlsl()});
     source.includes.push_back(

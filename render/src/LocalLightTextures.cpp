@@ -43,39 +43,39 @@ void LocalLightTextures::upload(DataTexture& target, rhi::Format format, const c
     target.uploaded = std::move(level);
 }
 
-std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
-                                        const shadows::StaticShadowPlan& staticPlan)
+std::vector<LocalLightRecord> localLightRecords(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
+                                                const shadows::StaticShadowPlan& staticPlan)
 {
-    std::vector<glm::vec4> texels;
-    texels.reserve((scene.spotLights.size() + scene.pointLights.size()) * kLocalLightTexels);
-    // LocalLightTexel::StaticMap: the map's first tile or -1, its strength.
-    const auto staticMap = [&](std::size_t light) {
+    std::vector<LocalLightRecord> records;
+    records.reserve(scene.spotLights.size() + scene.pointLights.size());
+    // Light `light`'s common fields: where it is, its colour, its shadow tile and static map.
+    const auto record = [&](std::size_t light, const auto& l, scene::LightKind kind, std::int32_t shadowTile) {
         const shadows::StaticLocalLightMap map = light < staticPlan.localLightMaps.size()
                                                      ? staticPlan.localLightMaps[light]
                                                      : shadows::StaticLocalLightMap{};
-        return glm::vec4(static_cast<float>(map.tile), map.strength, 0.0f, 0.0f);
+        return LocalLightRecord{.position = l.position,
+                                .inverseRangeSquared = 1.0f / (l.range * l.range),
+                                .color = l.color * l.intensity,
+                                .kind = static_cast<float>(kind),
+                                .shadowTile = static_cast<float>(shadowTile),
+                                .shadowStrength = l.shadowStrength,
+                                .staticTile = static_cast<float>(map.tile),
+                                .staticStrength = map.strength};
     };
     for (std::size_t i = 0; i < scene.spotLights.size(); ++i) {
         const scene::SpotLight& l = scene.spotLights[i];
+        LocalLightRecord spot = record(i, l, scene::LightKind::Spot, plan.spotTiles[i]);
         // Smooth step of the cone: saturate(cos(angle) * a + b), 0 at the outer, 1 at the inner angle.
         const float cosOuter = std::cos(l.outerAngle);
-        const float scale = 1.0f / std::max(std::cos(l.innerAngle) - cosOuter, 1e-3f);
-        texels.insert(texels.end(),
-                      {glm::vec4(l.position, 1.0f / (l.range * l.range)),
-                       glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Spot)),
-                       glm::vec4(l.direction, 0.0f),
-                       {scale, -cosOuter * scale, static_cast<float>(plan.spotTiles[i]), l.shadowStrength},
-                       staticMap(i)});
+        spot.axis = l.direction;
+        spot.coneScale = 1.0f / std::max(std::cos(l.innerAngle) - cosOuter, 1e-3f);
+        spot.coneOffset = -cosOuter * spot.coneScale;
+        records.push_back(spot);
     }
-    for (std::size_t i = 0; i < scene.pointLights.size(); ++i) {
-        const scene::PointLight& l = scene.pointLights[i];
-        texels.insert(texels.end(), {glm::vec4(l.position, 1.0f / (l.range * l.range)),
-                                     glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Point)),
-                                     glm::vec4(0.0f),
-                                     {0.0f, 0.0f, static_cast<float>(plan.pointShadows[i]), l.shadowStrength},
-                                     staticMap(scene.spotLights.size() + i)});
-    }
-    return texels;
+    for (std::size_t i = 0; i < scene.pointLights.size(); ++i)
+        records.push_back(
+            record(scene.spotLights.size() + i, scene.pointLights[i], scene::LightKind::Point, plan.pointShadows[i]));
+    return records;
 }
 
 std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene)
@@ -111,9 +111,9 @@ LocalLightTextures::LocalLightTextures(rhi::Device& device)
 {
 }
 
-void LocalLightTextures::updateLights(const std::vector<glm::vec4>& lightTexels)
+void LocalLightTextures::updateLights(std::span<const LocalLightRecord> lights)
 {
-    upload(lights_, kLocalLightFormat, "local lights", std::as_bytes(std::span(lightTexels)));
+    upload(lights_, kLocalLightFormat, "local lights", std::as_bytes(lights));
 }
 
 shadows::LightClusterUniforms LocalLightTextures::prepareLists(const shadows::ShadowCamera& camera,

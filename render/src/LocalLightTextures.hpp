@@ -19,10 +19,10 @@
 
 namespace penumbra::render {
 
-// Every spot and point light of the scene in the lit pass's order (spot lights, then point lights), kLocalLightTexels
-// texels each (LocalLightTexel): where it is, its colour, cone and shadows.
-std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
-                                        const shadows::StaticShadowPlan& staticPlan);
+// Every spot and point light of the scene in the lit pass's order (spot lights, then point lights): where it is, its
+// colour, cone and shadows.
+std::vector<LocalLightRecord> localLightRecords(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
+                                                const shadows::StaticShadowPlan& staticPlan);
 
 // The reach of every spot and point light, in the same order, as shadows::buildLightClusters takes it.
 std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene);
@@ -38,7 +38,7 @@ class LocalLightTextures {
 public:
     explicit LocalLightTextures(rhi::Device& device);
 
-    void updateLights(const std::vector<glm::vec4>& lightTexels);
+    void updateLights(std::span<const LocalLightRecord> lights);
     // This frame's lists of `lights` seen by `camera`: built and uploaded here (Cpu), or their inputs kept and the
     // textures made ready for recordGpuLists (Gpu). Returns their grid.
     shadows::LightClusterUniforms prepareLists(const shadows::ShadowCamera& camera,

@@ -156,7 +156,7 @@ LitFrameUniforms SceneRenderer::frameUniforms(const scene::Camera& camera, const
     return u;
 }
 
-// The lit pass's order: directional lights, then spot lights, then point lights (localLightTexels).
+// The lit pass's order: directional lights, then spot lights, then point lights (localLightRecords).
 int SceneRenderer::litLightIndex(const scene::LightRef& light) const
 {
     const scene::Scene& scene = gpuScene_.scene();
@@ -246,6 +246,9 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
                          uniforms_, instances_);
     prepareCasters(frame);
+    if (state.culling)
+        prepareCasterCulling(*state.culling, casters_, gpuScene_, plan_, localPlan_);
+    state.posedVertices = !skinning_->empty();
     stats.staticMapUpdates = prepareStaticMaps(frame, std::move(plans.staticMaps));
     const shadows::StaticShadowUniforms& staticUniforms = staticShadows_->plan().uniforms;
     const std::optional<std::string> uncollected =
@@ -297,7 +300,7 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     shadowMapSet_ = state.shadowMaps.createSet(device_, *shadowMapLayout_);
     state.shadowMapSet = shadowMapSet_.get();
     // Every spot and point light, listed in the clusters of the camera's view it may reach (here or on the GPU).
-    localLights_->updateLights(localLightTexels(gpuScene_.scene(), localPlan_, staticShadows_->plan()));
+    localLights_->updateLights(localLightRecords(gpuScene_.scene(), localPlan_, staticShadows_->plan()));
     const shadows::LightClusterUniforms clusters =
         localLights_->prepareLists(shadowCamera(camera, aspectOf(frame)), clusterLights(gpuScene_.scene()),
                                    frame.shadows.local.clusterBuild);
@@ -337,43 +340,18 @@ std::vector<std::string> SceneRenderer::prepareStaticMaps(const FrameDesc& frame
     return updates;
 }
 
-// This frame's textures and passes: the built-in ones in running order, each application pass beside the one it
-// names.
+// This frame's passes: the built-in ones in running order, each application pass beside the one it names.
 void SceneRenderer::buildGraph(const FrameDesc& frame)
 {
     FrameGraph& graph = *graph_;
-    graph.reset();
-    graph.importTexture(frame::kLitImage, *lit_, true);
-    graph.importTexture(frame::kLitDepth, *depth_);
-    graph.importTexture(frame::kDirectionalAtlas, atlas_->texture(), true);
-    graph.importTexture(frame::kLocalAtlas, localAtlas_->texture(), true);
-    graph.importTexture(frame::kShadowCubes, shadowCubes_->texture(), true);
-    graph.importTexture(frame::kStaticDirectionalAtlas, staticShadows_->directionalAtlas().texture(), true);
-    graph.importTexture(frame::kStaticLocalAtlas, staticShadows_->localAtlas().texture(), true);
-    graph.importTexture(frame::kLocalLights, localLights_->lights());
-    graph.importTexture(frame::kLightClusters, localLights_->clusters());
-    graph.importTexture(frame::kLightIndices, localLights_->indices());
-    graph.importTexture(frame::kCascadeView, *cascades_, frame.cascadeView);
-    graph.importTexture(frame::kVisibilityView, *visibility_, frame.visibilityOf.has_value());
-    if (screenSpace_) {
-        graph.importTexture(frame::kReceiverPositionDx, screenSpace_->positionDx());
-        graph.importTexture(frame::kReceiverPositionDy, screenSpace_->positionDy());
-        graph.importTexture(frame::kScreenSpaceShadows, screenSpace_->shadows(), state_->screenSpace);
-    }
-    if (contact_)
-        graph.importTexture(frame::kContactShadows, contact_->shadows());
-    if (frame.msaa > 1)
-        createMultisampledTargets(graph, frame);
-    for (const UserTexture& texture : userTextures_)
-        graph.importTexture(texture.name, texture.texture, true);
-
+    importResources(frame);
     const FrameState& state = *state_;
     LitPipelines& litPipelines = frame.msaa > 1 ? *multisampledLitPipelines_ : *litPipelines_;
     framePasses_.clear();
     const auto add = [&](std::unique_ptr<FramePass> pass) { framePasses_.push_back(std::move(pass)); };
     add(std::make_unique<SkinningPass>(*skinning_));
     add(std::make_unique<StaticMapsPass>(state, *staticShadows_));
-    add(std::make_unique<CasterCullingPass>(state, gpuScene_, plan_, localPlan_));
+    add(std::make_unique<CasterCullingPass>(state));
     add(std::make_unique<LightClusterPass>(state));
     add(std::make_unique<StaticTilesPass>(state, *directionalStaticTiles_, StaticTilesPass::Atlas::Directional));
     add(std::make_unique<DirectionalAtlasPass>(state, shadowPass_, plan_));

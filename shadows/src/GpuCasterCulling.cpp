@@ -93,11 +93,19 @@ void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const Shadow
                               std::span<const Bounds> bounds, std::span<const CasterVolume> volumes,
                               bool normalMatrices)
 {
+    prepare(casters, bounds, volumes, normalMatrices);
+    dispatch(commands);
+}
+
+void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
+                               std::span<const CasterVolume> volumes, bool normalMatrices)
+{
     if (casters.size() != bounds.size())
         throw rhi::Error(
             fmt::format("GPU caster culling: {} casters, but {} caster bounds", casters.size(), bounds.size()));
     casterCount_ = static_cast<std::uint32_t>(casters.size());
     tileCount_ = static_cast<std::uint32_t>(volumes.size());
+    groups_ = 0;
     std::vector<std::uint32_t>& all = scratch_.all;
     all.resize(casters.size());
     for (std::uint32_t i = 0; i < all.size(); ++i)
@@ -116,7 +124,7 @@ void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const Shadow
                                      "(--culling cpu) or draw fewer casters",
                                      casterCount_, tileBytes >> 20, caps.maxStorageBufferRange >> 20));
     fillCasters(casters, bounds, normalMatrices);
-    dispatchTiles(commands, volumes);
+    uploadTiles(volumes);
 }
 
 // The casters' boxes, batches and transforms as the pass reads them, and every tile's draws with no instances yet.
@@ -151,32 +159,39 @@ void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::s
 
 // One dispatch per group of tiles whose instance ranges fit one storage binding (all tiles in one, unless the device's
 // range is short of them); each group reads its own block of the volumes buffer: its CullingCounts, then its volumes.
-void GpuCasterCulling::dispatchTiles(rhi::CommandList& commands, std::span<const CasterVolume> volumes)
+void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
 {
     const rhi::Capabilities& caps = device_.capabilities();
     const std::uint64_t tileBytes = std::uint64_t(tileSlots_) * sizeof(InstanceTransform);
-    const auto groupTiles = static_cast<std::uint32_t>(
+    groupTiles_ = static_cast<std::uint32_t>(
         std::min<std::uint64_t>({tileCount_, maxTilesPerDispatch_, caps.maxStorageBufferRange / tileBytes}));
-    const std::uint64_t blockBytes =
-        roundUp(kVolumesOffset + groupTiles * sizeof(CasterVolume), caps.storageBufferOffsetAlignment);
-    const std::uint32_t groups = (tileCount_ + groupTiles - 1) / groupTiles;
+    blockBytes_ = roundUp(kVolumesOffset + groupTiles_ * sizeof(CasterVolume), caps.storageBufferOffsetAlignment);
+    groups_ = (tileCount_ + groupTiles_ - 1) / groupTiles_;
     const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
-    reserve(casterCount_, groups * blockBytes, std::uint64_t(tileCount_) * batchCount);
+    reserve(casterCount_, groups_ * blockBytes_, std::uint64_t(tileCount_) * batchCount);
     const std::vector<CulledDraw>& draws = scratch_.draws;
     casters_->write(0, bytesOf(scratch_.casters));
     transforms_->write(0, bytesOf(scratch_.transforms));
     draws_->write(0, bytesOf(draws));
     counts_->write(0, bytesOf(std::vector<std::uint32_t>(draws.size(), 0)));
+    for (std::uint32_t g = 0; g < groups_; ++g) {
+        const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
+        volumes_->writeObject(CullingCounts{casterCount_, count, batchCount, first, tileSlots_}, g * blockBytes_);
+        volumes_->write(g * blockBytes_ + kVolumesOffset, std::as_bytes(volumes.subspan(first, count)));
+    }
+}
 
+void GpuCasterCulling::dispatch(rhi::CommandList& commands)
+{
+    if (groups_ == 0)
+        return;
+    const std::vector<CulledDraw>& draws = scratch_.draws;
     commands.bindComputePipeline(*pipeline_);
     const std::uint32_t groupSize = pipeline_->workgroupSize()[0];
-    for (std::uint32_t g = 0; g < groups; ++g) {
-        const std::uint32_t first = g * groupTiles, count = std::min(groupTiles, tileCount_ - first);
-        const std::span<const CasterVolume> group = volumes.subspan(first, count);
-        volumes_->writeObject(CullingCounts{casterCount_, count, batchCount, first, tileSlots_}, g * blockBytes);
-        volumes_->write(g * blockBytes + kVolumesOffset, std::as_bytes(group));
+    for (std::uint32_t g = 0; g < groups_; ++g) {
+        const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
         const std::uint64_t slots = std::uint64_t(first) * tileSlots_, groupSlots = std::uint64_t(count) * tileSlots_;
-        commands.bindStorageBuffer(0, *volumes_, g * blockBytes, kVolumesOffset + group.size_bytes());
+        commands.bindStorageBuffer(0, *volumes_, g * blockBytes_, kVolumesOffset + count * sizeof(CasterVolume));
         commands.bindStorageBuffer(1, *casters_, 0, scratch_.casters.size() * sizeof(CullingCaster));
         commands.bindStorageBuffer(2, *transforms_, 0, scratch_.transforms.size() * sizeof(InstanceTransform));
         commands.bindStorageBuffer(3, *instances_, slots * sizeof(InstanceTransform),

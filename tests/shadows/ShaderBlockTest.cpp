@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace penumbra {
 namespace {
@@ -39,7 +40,48 @@ struct Floats {
 constexpr std::array kFloatsFields{PENUMBRA_SHADER_FIELD(Floats, values)};
 constexpr shaders::ShaderStruct kFloats{"Floats", sizeof(Floats), kFloatsFields};
 
+// A texel record of two texels: a vec3 and a float in the first, a vec2 in the second.
+struct TwoTexels {
+    glm::vec3 position{0.0f};
+    float range = 0.0f;
+    glm::vec2 cone{0.0f};
+    glm::vec2 padding{0.0f};
+};
+constexpr std::array kTwoTexelsFields{PENUMBRA_SHADER_FIELD(TwoTexels, position),
+                                      PENUMBRA_SHADER_FIELD(TwoTexels, range), PENUMBRA_SHADER_FIELD(TwoTexels, cone)};
+constexpr shaders::ShaderStruct kTwoTexels{"TwoTexels", sizeof(TwoTexels), kTwoTexelsFields};
+
+// The vec3 straddles the two texels.
+struct StraddlingTexels {
+    float range = 0.0f;
+    glm::vec2 cone{0.0f};
+    glm::vec3 position{0.0f};
+    float padding = 0.0f;
+    glm::vec2 padding2{0.0f};
+};
+constexpr std::array kStraddlingFields{PENUMBRA_SHADER_FIELD(StraddlingTexels, range),
+                                       PENUMBRA_SHADER_FIELD(StraddlingTexels, cone),
+                                       PENUMBRA_SHADER_FIELD(StraddlingTexels, position)};
+constexpr shaders::ShaderStruct kStraddling{"StraddlingTexels", sizeof(StraddlingTexels), kStraddlingFields};
+
 } // namespace
+
+TEST(ShaderBlockTest, ATexelRecordGetsAnAccessorPerNamedField)
+{
+    static_assert(shaders::fitsTexels(kTwoTexels));
+    EXPECT_EQ(shaders::texelRecordGlsl(kTwoTexels, "fetchLight", "light"),
+              "// Generated from the texel record TwoTexels (2 texels).\n"
+              "vec3 lightPosition(int record) { return fetchLight(record, 0).xyz; }\n"
+              "float lightRange(int record) { return fetchLight(record, 0).w; }\n"
+              "vec2 lightCone(int record) { return fetchLight(record, 1).xy; }\n");
+}
+
+TEST(ShaderBlockTest, ATexelRecordFieldAcrossTwoTexelsIsRefused)
+{
+    EXPECT_EQ(offsetof(StraddlingTexels, position), 12u);
+    EXPECT_FALSE(shaders::fitsTexels(kStraddling));
+    EXPECT_THROW(shaders::texelRecordGlsl(kStraddling, "fetchLight", "light"), std::invalid_argument);
+}
 
 TEST(ShaderBlockTest, AStructPlacedAsStd140PlacesItMatches)
 {

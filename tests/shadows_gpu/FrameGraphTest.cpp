@@ -12,6 +12,8 @@
 #include "graph/FrameGraph.hpp"
 #include "graph/TransientSlots.hpp"
 
+#include <array>
+#include <fmt/format.h>
 #include <functional>
 #include <gtest/gtest.h>
 #include <map>
@@ -363,6 +365,121 @@ TEST_F(FrameGraphTest, UndeclaredReadCatchesFault)
                                    "resourceBarriers do not declare it");
         }
     }
+}
+
+// A buffer that one pass writes and another reads is a frame resource as a texture is: the graph orders the two by the
+// declared uses (a copy into it, a copy out of it), and the RHI holds the reader to its declaration: reading the buffer
+// undeclared is reported at its copy, naming the pass and the buffer; declared, the bytes arrive.
+TEST_F(FrameGraphTest, UndeclaredBufferReadCatchesFault)
+{
+    const std::array<std::uint32_t, 4> values{1, 2, 3, 4};
+    const std::unique_ptr<rhi::Buffer> source = device->createBuffer({.size = sizeof values, .debugName = "source"});
+    source->write(0, std::as_bytes(std::span(values)));
+    const std::unique_ptr<rhi::Buffer> made = device->createBuffer({.size = sizeof values, .debugName = "made"});
+    const std::unique_ptr<rhi::Buffer> out =
+        device->createBuffer({.size = sizeof values, .usage = rhi::BufferUsage::Readback, .debugName = "out"});
+    for (const bool declared : {true, false}) {
+        SCOPED_TRACE(declared ? "declared" : "not declared");
+        render::FrameGraph graph(*device);
+        FunctionPass writer(
+            "writer",
+            [](render::FramePassBuilder& b) {
+                b.write("made", render::ResourceUse::TransferDestination);
+                b.keep();
+            },
+            [&](const render::FramePassContext& c) { c.commands().copyBuffer(*source, 0, *made, 0, sizeof values); });
+        FunctionPass reader(
+            "reader",
+            [declared](render::FramePassBuilder& b) {
+                if (declared)
+                    b.read("made", render::ResourceUse::TransferSource);
+                b.write("out", render::ResourceUse::TransferDestination);
+            },
+            [&](const render::FramePassContext& c) { c.commands().copyBuffer(*made, 0, *out, 0, sizeof values); });
+        graph.importBuffer("out", *out, true);
+        graph.importBuffer("made", *made);
+        graph.addPass(writer);
+        graph.addPass(reader);
+        graph.compile();
+        if (declared) {
+            graph.execute(*commands);
+            device->submit(*commands);
+            std::array<std::uint32_t, 4> read{};
+            out->read(0, std::as_writable_bytes(std::span(read)));
+            EXPECT_EQ(read, values);
+            continue;
+        }
+        try {
+            graph.execute(*commands);
+            ADD_FAILURE() << "no error";
+        } catch (const rhi::Error& e) {
+            EXPECT_STREQ(e.what(), "copyBuffer: pass 'reader' uses buffer 'made' as CopySource (source), but its "
+                                   "resourceBarriers do not declare it");
+        }
+    }
+}
+
+// A pass whose buffer nobody reads is culled as one whose texture nobody reads; the dot text draws buffers as
+// cylinders with their uses named; a buffer use on a texture, and a texture use on a buffer, are refused.
+TEST_F(FrameGraphTest, BufferWriterIsCulledUnlessItsBufferIsRead)
+{
+    const std::unique_ptr<rhi::Buffer> made = device->createBuffer(
+        {.size = 16, .usage = rhi::BufferUsage::Storage | rhi::BufferUsage::Indirect, .debugName = "made"});
+    const std::unique_ptr<rhi::Texture> output = colorTexture(*device);
+    for (const bool read : {true, false}) {
+        render::FrameGraph graph(*device);
+        FunctionPass writer("writer",
+                            [](render::FramePassBuilder& b) { b.write("made", render::ResourceUse::StorageWrite); });
+        FunctionPass reader("reader", [read](render::FramePassBuilder& b) {
+            if (read)
+                b.read("made", render::ResourceUse::IndirectRead);
+            b.write("out");
+        });
+        graph.importBuffer("made", *made);
+        graph.importTexture("out", *output, true);
+        graph.addPass(writer);
+        graph.addPass(reader);
+        graph.compile();
+        const std::string dot = graph.dot();
+        EXPECT_NE(dot.find("[shape=cylinder, label=\"made\"]"), std::string::npos) << dot;
+        EXPECT_EQ(dot.find("writer\\n(culled") != std::string::npos, !read) << dot;
+        EXPECT_EQ(dot.find("label=\"indirect read\"") != std::string::npos, read) << dot;
+    }
+    render::FrameGraph graph(*device);
+    FunctionPass vertices("vertices",
+                          [](render::FramePassBuilder& b) { b.read("out", render::ResourceUse::VertexRead); });
+    graph.importTexture("out", *output, true);
+    graph.addPass(vertices);
+    EXPECT_THROW(
+        {
+            try {
+                graph.compile();
+            } catch (const rhi::Error& e) {
+                EXPECT_STREQ(e.what(),
+                             "frame graph: pass 'vertices' uses texture 'out' as vertex read, a use of buffers only");
+                throw;
+            }
+        },
+        rhi::Error);
+}
+
+// The frame's own buffers are resources of its graph: the caster culling pass writes the instance lists and indirect
+// draws that the atlas passes read, the depth reduction writes the histogram the renderer reads after the frame.
+TEST_F(FrameGraphTest, CulledCastersAndTheDepthHistogramAreFrameBuffers)
+{
+    const scene::Scene scene = scenes::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    render::FrameDesc desc = litFrame(kWidth, kHeight, true, 1);
+    desc.shadows.culling = shadows::CasterCullingMode::Gpu;
+    desc.shadows.directional.projection = shadows::CascadeProjection::DepthFit;
+    const render::FrameStats stats = renderer.render(scene.camera, desc);
+    EXPECT_EQ(passNames(stats), (std::vector<std::string>{"caster culling", "directional atlas", "local atlas",
+                                                          "depth prepass", "lit", "depth reduction"}));
+    const std::string dot = renderer.frameGraphDot();
+    for (const std::string_view buffer : {frame::kCulledInstances, frame::kCulledDraws})
+        EXPECT_NE(dot.find(fmt::format("[shape=cylinder, label=\"{}\"]", buffer)), std::string::npos) << dot;
+    EXPECT_NE(dot.find("[shape=cylinder, label=\"depth histogram\", peripheries=2]"), std::string::npos) << dot;
+    EXPECT_NE(dot.find("label=\"indirect read\""), std::string::npos) << dot;
 }
 
 // Transient textures of one kind share a slot where their passes do not overlap, and keep their slots from frame to

@@ -20,22 +20,40 @@ std::string textureKey(const rhi::TextureDesc& d)
 // The RHI's state for a declared use.
 rhi::ResourceState graphUseState(ResourceUse use)
 {
+    using rhi::ResourceState;
     switch (use) {
     case ResourceUse::Sampled:
-        return rhi::ResourceState::ShaderRead;
+    case ResourceUse::StorageRead:
+        return ResourceState::ShaderRead;
     case ResourceUse::AttachmentRead:
-        return rhi::ResourceState::DepthRead;
-    case ResourceUse::TransferSource:
-        return rhi::ResourceState::CopySource;
-    case ResourceUse::StorageWrite:
-        return rhi::ResourceState::ShaderWrite;
+        return ResourceState::DepthRead;
     case ResourceUse::RenderTarget:
     case ResourceUse::DrawOver:
-        return rhi::ResourceState::RenderTarget;
+        return ResourceState::RenderTarget;
+    case ResourceUse::VertexRead:
+        return ResourceState::VertexBuffer;
+    case ResourceUse::IndexRead:
+        return ResourceState::IndexBuffer;
+    case ResourceUse::IndirectRead:
+        return ResourceState::IndirectArgument;
+    case ResourceUse::UniformRead:
+        return ResourceState::UniformBuffer;
+    case ResourceUse::StorageWrite:
+        return ResourceState::ShaderWrite;
+    case ResourceUse::TransferSource:
+        return ResourceState::CopySource;
     case ResourceUse::TransferDestination:
         break;
     }
-    return rhi::ResourceState::CopyDestination;
+    return ResourceState::CopyDestination;
+}
+
+// How a message names a resource a use is declared for.
+const char* useResourceKind(ResourceUse use)
+{
+    if (!bufferUse(use))
+        return "texture";
+    return textureUse(use) ? "resource" : "buffer";
 }
 
 } // namespace
@@ -47,16 +65,26 @@ const char* resourceUseName(ResourceUse use)
         return "sampled";
     case ResourceUse::AttachmentRead:
         return "attachment read";
-    case ResourceUse::TransferSource:
-        return "transfer source";
     case ResourceUse::RenderTarget:
         return "render target";
-    case ResourceUse::TransferDestination:
-        return "transfer destination";
     case ResourceUse::DrawOver:
         return "drawn over";
+    case ResourceUse::VertexRead:
+        return "vertex read";
+    case ResourceUse::IndexRead:
+        return "index read";
+    case ResourceUse::IndirectRead:
+        return "indirect read";
+    case ResourceUse::UniformRead:
+        return "uniform read";
+    case ResourceUse::StorageRead:
+        return "storage read";
     case ResourceUse::StorageWrite:
         return "storage write";
+    case ResourceUse::TransferSource:
+        return "transfer source";
+    case ResourceUse::TransferDestination:
+        return "transfer destination";
     }
     return "?";
 }
@@ -81,7 +109,16 @@ void FramePassBuilder::keep() { graph_.passes_[pass_].kept = true; }
 
 const rhi::Texture& FramePassContext::texture(std::string_view resource) const
 {
-    return graph_.declaredTexture(pass_, resource);
+    return *graph_.declared(pass_, resource, false).texture;
+}
+
+const rhi::Buffer& FramePassContext::buffer(std::string_view resource) const
+{
+    const std::vector<const rhi::Buffer*>& buffers = graph_.declared(pass_, resource, true).buffers;
+    if (buffers.size() != 1)
+        throw rhi::Error(fmt::format("frame graph: pass '{}' asks for buffer '{}', which holds {} buffers",
+                                     graph_.passes_[pass_].name, resource, buffers.size()));
+    return *buffers.front();
 }
 
 const rhi::Framebuffer& FramePassContext::framebuffer(std::initializer_list<std::string_view> colors,
@@ -101,18 +138,26 @@ void FrameGraph::reset()
     timed_.clear();
 }
 
+void FrameGraph::addResource(Resource resource)
+{
+    if (resourceIndex(resource.name) != resources_.size())
+        throw rhi::Error(fmt::format("frame graph: resource '{}' declared twice", resource.name));
+    resources_.push_back(std::move(resource));
+}
+
 void FrameGraph::importTexture(std::string_view name, const rhi::Texture& texture, bool output)
 {
-    if (resourceIndex(name) != resources_.size())
-        throw rhi::Error(fmt::format("frame graph: texture '{}' declared twice", name));
-    resources_.push_back({std::string(name), &texture, std::nullopt, output});
+    addResource({.name = std::string(name), .texture = &texture, .output = output});
 }
 
 void FrameGraph::createTexture(std::string_view name, const rhi::TextureDesc& desc)
 {
-    if (resourceIndex(name) != resources_.size())
-        throw rhi::Error(fmt::format("frame graph: texture '{}' declared twice", name));
-    resources_.push_back({std::string(name), nullptr, desc, false});
+    addResource({.name = std::string(name), .transient = desc});
+}
+
+void FrameGraph::importBuffers(std::string_view name, std::vector<const rhi::Buffer*> buffers, bool output)
+{
+    addResource({.name = std::string(name), .output = output, .isBuffer = true, .buffers = std::move(buffers)});
 }
 
 void FrameGraph::addPass(FramePass& pass)
@@ -137,9 +182,14 @@ void FrameGraph::declare(std::size_t pass, std::string_view resource, ResourceUs
         std::string known;
         for (const Resource& r : resources_)
             known += fmt::format("{}'{}'", known.empty() ? "" : ", ", r.name);
-        throw rhi::Error(fmt::format("frame graph: pass '{}' uses texture '{}', which the frame does not have ({})",
-                                     passes_[pass].name, resource, known));
+        throw rhi::Error(fmt::format("frame graph: pass '{}' uses {} '{}', which the frame does not have ({})",
+                                     passes_[pass].name, useResourceKind(use), resource, known));
     }
+    const bool isBuffer = resources_[index].isBuffer;
+    if (isBuffer ? !bufferUse(use) : !textureUse(use))
+        throw rhi::Error(fmt::format("frame graph: pass '{}' uses {} '{}' as {}, a use of {} only", passes_[pass].name,
+                                     isBuffer ? "buffer" : "texture", resource, resourceUseName(use),
+                                     isBuffer ? "textures" : "buffers"));
     passes_[pass].uses.push_back({index, use});
 }
 
@@ -250,15 +300,18 @@ void FrameGraph::makeTransients()
     pool_ = std::move(pool);
 }
 
-const rhi::Texture& FrameGraph::declaredTexture(std::size_t pass, std::string_view resource) const
+const FrameGraph::Resource& FrameGraph::declared(std::size_t pass, std::string_view resource, bool buffer) const
 {
     const std::size_t index = resourceIndex(resource);
     const std::vector<Use>& uses = passes_[pass].uses;
     if (index == resources_.size() ||
         std::none_of(uses.begin(), uses.end(), [&](const Use& u) { return u.resource == index; }))
-        throw rhi::Error(fmt::format("frame graph: pass '{}' did not declare texture '{}' in its setup",
-                                     passes_[pass].name, resource));
-    return *resources_[index].texture;
+        throw rhi::Error(fmt::format("frame graph: pass '{}' did not declare {} '{}' in its setup", passes_[pass].name,
+                                     buffer ? "buffer" : "texture", resource));
+    if (resources_[index].isBuffer != buffer)
+        throw rhi::Error(fmt::format("frame graph: pass '{}' asks for {} '{}', which is a {}", passes_[pass].name,
+                                     buffer ? "buffer" : "texture", resource, buffer ? "texture" : "buffer"));
+    return resources_[index];
 }
 
 const rhi::Framebuffer& FrameGraph::framebuffer(std::size_t pass, std::initializer_list<std::string_view> colors,
@@ -267,11 +320,11 @@ const rhi::Framebuffer& FrameGraph::framebuffer(std::size_t pass, std::initializ
     std::vector<const rhi::Texture*> key;
     std::vector<rhi::Attachment> attachments;
     for (std::string_view color : colors) {
-        key.push_back(&declaredTexture(pass, color));
+        key.push_back(declared(pass, color, false).texture);
         attachments.push_back({key.back(), 0});
     }
     key.push_back(nullptr); // the colours end
-    const rhi::Texture* depthTexture = depth.empty() ? nullptr : &declaredTexture(pass, depth);
+    const rhi::Texture* depthTexture = depth.empty() ? nullptr : declared(pass, depth, false).texture;
     key.push_back(depthTexture);
     std::unique_ptr<rhi::Framebuffer>& framebuffer = framebuffers_[key];
     if (!framebuffer)
@@ -293,7 +346,7 @@ void FrameGraph::execute(rhi::CommandList& commands)
         timestamps_ = device_.createTimestampQueries(queries);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
-    std::unordered_map<const rhi::Texture*, rhi::ResourceState> states; // what the frame's passes left them in
+    std::unordered_map<const void*, rhi::ResourceState> states; // what the frame's passes left them in
     for (std::size_t i = 0; i < timed_.size(); ++i) {
         const FramePassContext context(*this, timed_[i], commands);
         commands.pushLabel(passes_[timed_[i]].name);
@@ -306,20 +359,30 @@ void FrameGraph::execute(rhi::CommandList& commands)
 }
 
 void FrameGraph::recordBarriers(rhi::CommandList& commands, const Pass& pass,
-                                std::unordered_map<const rhi::Texture*, rhi::ResourceState>& states) const
+                                std::unordered_map<const void*, rhi::ResourceState>& states) const
 {
+    const auto key = [](const rhi::ResourceBarrier& b) {
+        return b.texture ? static_cast<const void*>(b.texture) : static_cast<const void*>(b.buffer);
+    };
     std::vector<rhi::ResourceBarrier> barriers;
-    for (const Use& use : pass.uses) {
-        const rhi::Texture* texture = resources_[use.resource].texture;
+    const auto add = [&](rhi::ResourceBarrier barrier) {
         const auto same = std::find_if(barriers.begin(), barriers.end(),
-                                       [&](const rhi::ResourceBarrier& b) { return b.texture == texture; });
+                                       [&](const rhi::ResourceBarrier& b) { return key(b) == key(barrier); });
         if (same == barriers.end())
-            barriers.push_back(rhi::ResourceBarrier::of(*texture, states[texture], graphUseState(use.use)));
+            barriers.push_back(barrier);
         else
-            same->after |= graphUseState(use.use);
+            same->after |= barrier.after;
+    };
+    for (const Use& use : pass.uses) {
+        const Resource& resource = resources_[use.resource];
+        const rhi::ResourceState after = graphUseState(use.use);
+        if (resource.texture)
+            add(rhi::ResourceBarrier::of(*resource.texture, states[resource.texture], after));
+        for (const rhi::Buffer* buffer : resource.buffers)
+            add(rhi::ResourceBarrier::of(*buffer, states[buffer], after));
     }
     for (const rhi::ResourceBarrier& b : barriers)
-        states[b.texture] = b.after;
+        states[key(b)] = b.after;
     commands.resourceBarriers(barriers);
 }
 

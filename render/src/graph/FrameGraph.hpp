@@ -13,8 +13,9 @@
 
 namespace penumbra::render {
 
-// A frame's passes and textures (Filament's FrameGraph; O'Donnell, "FrameGraph: Extensible Rendering Architecture in
-// Frostbite", GDC 2017). Each frame: reset(), import and create textures, add passes in running order, compile()
+// A frame's passes, textures and buffers (Filament's FrameGraph; O'Donnell, "FrameGraph: Extensible Rendering
+// Architecture in Frostbite", GDC 2017). Each frame: reset(), import and create textures, import the buffers that
+// passes write and others read within the frame, add passes in running order, compile()
 // (setup, checks, culling, transient textures), execute() into a command list; after its submission, timings().
 // Textures made for the frame live in the graph's pool across frames, so a frame like the last makes none.
 class FrameGraph {
@@ -31,6 +32,14 @@ public:
     // A texture the graph makes for the passes between the first and the last that use it; textures of one
     // description whose spans do not overlap share one (TransientSlots.hpp).
     void createTexture(std::string_view name, const rhi::TextureDesc& desc);
+    // Buffers made outside the graph that one pass writes and later ones read, under one name: the uses a pass
+    // declares for the name hold for each of them (the vertex buffers skinning poses, read by every pass that draws).
+    // An output is read after the frame (by the host, after the submission).
+    void importBuffers(std::string_view name, std::vector<const rhi::Buffer*> buffers, bool output = false);
+    void importBuffer(std::string_view name, const rhi::Buffer& buffer, bool output = false)
+    {
+        importBuffers(name, {&buffer}, output);
+    }
     // In running order; the pass must outlive execute(). Throws rhi::Error for a second pass of one name.
     void addPass(FramePass& pass);
 
@@ -39,13 +48,14 @@ public:
     void compile();
     // Records the passes that run, each in a debug label of its name and between timestamps where the device has them,
     // each after the barriers its declared uses need (CommandList::resourceBarriers, inside its label, so that the RHI
-    // holds the pass to them: a texture of the frame it touches without declaring it is an rhi::Error naming both).
+    // holds the pass to them: a texture or buffer of the frame it touches without declaring it is an rhi::Error naming
+    // both).
     void execute(rhi::CommandList& commands);
     // After the submission of execute()'s commands: every pass that ran, in order.
     std::vector<PassTiming> timings();
     // The compiled frame as Graphviz dot: passes in order (culled ones dashed, ones off this frame dotted), textures
-    // (outputs double-bordered, transient ones filled), an arrow per declared use (uses other than sampled and
-    // render target named).
+    // as ellipses and buffers as cylinders (outputs double-bordered, transient textures filled), an arrow per declared
+    // use (uses other than sampled and render target named).
     std::string dot() const;
 
     // Framebuffers reference their textures: call when an imported texture is made anew.
@@ -72,18 +82,23 @@ private:
         const rhi::Texture* texture = nullptr; // imported, or the pool's once compiled
         std::optional<rhi::TextureDesc> transient;
         bool output = false;
+        bool isBuffer = false;
+        std::vector<const rhi::Buffer*> buffers; // a buffer resource's (none where the frame has none of them)
     };
 
     std::size_t resourceIndex(std::string_view name) const;
+    void addResource(Resource resource);
     void declare(std::size_t pass, std::string_view resource, ResourceUse use);
     void checkOrder() const;
     void cull();
     void makeTransients();
-    const rhi::Texture& declaredTexture(std::size_t pass, std::string_view resource) const;
-    // The pass's uses as RHI states, merged per texture (transient resources may share one), moving each texture from
-    // the state the frame's earlier passes left it in (`states`, updated).
+    // The declared resource of that name; throws rhi::Error where the pass did not declare it or it is not a buffer
+    // (a texture).
+    const Resource& declared(std::size_t pass, std::string_view resource, bool buffer) const;
+    // The pass's uses as RHI states, merged per texture and buffer (transient textures may share one), moving each
+    // from the state the frame's earlier passes left it in (`states`, updated).
     void recordBarriers(rhi::CommandList& commands, const Pass& pass,
-                        std::unordered_map<const rhi::Texture*, rhi::ResourceState>& states) const;
+                        std::unordered_map<const void*, rhi::ResourceState>& states) const;
     const rhi::Framebuffer& framebuffer(std::size_t pass, std::initializer_list<std::string_view> colors,
                                         std::string_view depth);
 

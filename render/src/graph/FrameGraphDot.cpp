@@ -34,7 +34,8 @@ std::string FrameGraph::dot() const
         std::string style = resource.transient ? ", style=filled, fillcolor=\"#dde8f5\"" : "";
         if (resource.output)
             style += ", peripheries=2";
-        out += fmt::format("  r{} [shape=ellipse, label={}{}];\n", r, dotId(resource.name), style);
+        out += fmt::format("  r{} [shape={}, label={}{}];\n", r, resource.isBuffer ? "cylinder" : "ellipse",
+                           dotId(resource.name), style);
     }
     std::size_t order = 0;
     for (std::size_t p = 0; p < passes_.size(); ++p) {

@@ -6,28 +6,32 @@
 
 namespace penumbra::render {
 
+void prepareCasterCulling(shadows::GpuCasterCulling& culling, std::span<const shadows::ShadowCaster> casters,
+                          const GpuScene& scene, const shadows::DirectionalShadowPlan& plan,
+                          const shadows::LocalShadowPlan& localPlan)
+{
+    std::vector<shadows::CasterVolume> volumes;
+    bool normalMatrices = false;
+    for (const std::vector<shadows::ShadowTileDraw>& tiles :
+         {shadows::DirectionalShadowPass::tileDraws(plan), shadows::LocalShadowPass::tileDraws(localPlan)})
+        for (const shadows::ShadowTileDraw& tile : tiles) {
+            volumes.push_back(tile.volume);
+            normalMatrices |= tile.view.normalOffset.reach > 0.0f;
+        }
+    culling.prepare(casters, scene.casterBounds(), volumes, normalMatrices);
+}
+
 std::string CasterCullingPass::name() const { return std::string(frame::kCasterCullingPass); }
 
 bool CasterCullingPass::setup(FramePassBuilder& builder)
 {
     if (!state_.culling)
         return false;
-    // Its results are buffers the atlas passes draw from, which the graph does not track: never culled.
-    builder.keep();
+    builder.write(frame::kCulledInstances, ResourceUse::StorageWrite);
+    builder.write(frame::kCulledDraws, ResourceUse::StorageWrite);
     return true;
 }
 
-void CasterCullingPass::execute(const FramePassContext& context)
-{
-    std::vector<shadows::CasterVolume> volumes;
-    bool normalMatrices = false;
-    for (const std::vector<shadows::ShadowTileDraw>& tiles :
-         {shadows::DirectionalShadowPass::tileDraws(plan_), shadows::LocalShadowPass::tileDraws(localPlan_)})
-        for (const shadows::ShadowTileDraw& tile : tiles) {
-            volumes.push_back(tile.volume);
-            normalMatrices |= tile.view.normalOffset.reach > 0.0f;
-        }
-    state_.culling->record(context.commands(), state_.casters, scene_.casterBounds(), volumes, normalMatrices);
-}
+void CasterCullingPass::execute(const FramePassContext& context) { state_.culling->dispatch(context.commands()); }
 
 } // namespace penumbra::render

@@ -14,7 +14,7 @@ bool DepthReductionPass::setup(FramePassBuilder& builder)
     if (!state_.depthFit)
         return false;
     builder.read(frame::kLitDepth);
-    builder.keep();
+    builder.write(frame::kDepthHistogram, ResourceUse::StorageWrite);
     return true;
 }
 

@@ -42,6 +42,8 @@ public:
                 std::span<const glm::vec3> lights, float shadowFar);
     // After the submission: the histogram; nullopt where nothing was recorded since the last read.
     std::optional<shadows::DepthHistogram> read();
+    // The storage buffer record()'s dispatch writes and read() reads.
+    const rhi::Buffer& histogram() const { return *bins_; }
 
 private:
     std::unique_ptr<rhi::ComputePipeline> pipeline_;

@@ -91,4 +91,18 @@ void readLocalLights(FramePassBuilder& builder)
         builder.read(texture);
 }
 
+void readPosedVertices(FramePassBuilder& builder, const FrameState& state)
+{
+    if (state.posedVertices)
+        builder.read(frame::kPosedVertices, ResourceUse::VertexRead);
+}
+
+void readCulledCasters(FramePassBuilder& builder, const FrameState& state)
+{
+    if (!state.culling)
+        return;
+    builder.read(frame::kCulledInstances, ResourceUse::VertexRead);
+    builder.read(frame::kCulledDraws, ResourceUse::IndirectRead);
+}
+
 } // namespace penumbra::render

@@ -43,6 +43,12 @@ void readShadowMaps(FramePassBuilder& builder);
 // Declares the reads of the local light textures (LocalLightTextures).
 void readLocalLights(FramePassBuilder& builder);
 
+struct FrameState;
+// For a pass that draws the scene's meshes: declares the posed vertices' read where the frame has them.
+void readPosedVertices(FramePassBuilder& builder, const FrameState& state);
+// For an atlas pass: declares the caster culling pass's results' reads where the frame culls on the GPU.
+void readCulledCasters(FramePassBuilder& builder, const FrameState& state);
+
 // RealtimeCasters::Dynamic: the tiles' static casters, which the realtime atlases take from StaticTileCache, and
 // the tiles without them, which the passes draw over it.
 struct SplitTiles {
@@ -70,6 +76,7 @@ struct FrameState {
     // atlas's tiles follow the directional ones, from culledLocalTile.
     shadows::GpuCasterCulling* culling = nullptr;
     std::uint32_t culledLocalTile = 0;
+    bool posedVertices = false; // the scene has deformed meshes, which the skinning pass poses (kPosedVertices)
     bool screenSpace = false; // directional shadows collected in screen space
     bool multisampled = false;
     bool depthFit = false; // directional.projection depthFit: the lit depth is reduced for the next frame's plan

@@ -107,6 +107,7 @@ bool LitPass::setup(FramePassBuilder& builder)
     else
         builder.write(depth);
     builder.write(state_.multisampled ? frame::kMultisampledColor : frame::kLitImage);
+    readPosedVertices(builder, state_);
     return true;
 }
 
@@ -150,6 +151,7 @@ bool LitViewPass::setup(FramePassBuilder& builder)
         builder.read(frame::kContactShadows);
     builder.write(frame::kLitDepth);
     builder.write(view_ == LitView::Cascades ? frame::kCascadeView : frame::kVisibilityView);
+    readPosedVertices(builder, state_);
     return true;
 }
 

@@ -15,6 +15,7 @@ bool DepthPrepassPass::setup(FramePassBuilder& builder)
     if (!state_.desc->depthPrepass || (state_.screenSpace && !state_.multisampled))
         return false;
     builder.write(state_.multisampled ? frame::kMultisampledDepth : frame::kLitDepth);
+    readPosedVertices(builder, state_);
     return true;
 }
 
@@ -33,6 +34,7 @@ bool SingleSampledDepthPass::setup(FramePassBuilder& builder)
     if (!(state_.depthFit || state_.contact) || !state_.multisampled || state_.screenSpace)
         return false;
     builder.write(frame::kLitDepth);
+    readPosedVertices(builder, state_);
     return true;
 }
 
@@ -51,6 +53,7 @@ bool ReceiverPrepassPass::setup(FramePassBuilder& builder)
     builder.write(frame::kLitDepth);
     builder.write(frame::kReceiverPositionDx);
     builder.write(frame::kReceiverPositionDy);
+    readPosedVertices(builder, state_);
     return true;
 }
 

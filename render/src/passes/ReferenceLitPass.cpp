@@ -101,6 +101,8 @@ bool ReferenceLitPass::setup(FramePassBuilder& builder)
     if (!enabled_)
         return false;
     builder.read(frame::kDirectionalAtlas);
+    if (!renderer_.gpuScene().scene().rig.deformers.empty())
+        builder.read(frame::kPosedVertices, ResourceUse::VertexRead);
     builder.write(kImage);
     builder.write(kDepth);
     return true;

@@ -18,6 +18,7 @@ bool StaticMapsPass::setup(FramePassBuilder& builder)
     // The cache clears a static atlas made anew and draws the chosen tiles over the rest: both atlases are read too.
     builder.write(frame::kStaticDirectionalAtlas, ResourceUse::DrawOver);
     builder.write(frame::kStaticLocalAtlas, ResourceUse::DrawOver);
+    readPosedVertices(builder, state_);
     return true;
 }
 
@@ -43,6 +44,7 @@ bool StaticTilesPass::setup(FramePassBuilder& builder)
         return false;
     builder.write(atlas_ == Atlas::Directional ? frame::kDirectionalAtlas : frame::kLocalAtlas,
                   ResourceUse::TransferDestination);
+    readPosedVertices(builder, state_);
     return true;
 }
 
@@ -59,6 +61,8 @@ bool DirectionalAtlasPass::setup(FramePassBuilder& builder)
 {
     builder.write(frame::kDirectionalAtlas,
                   state_.staticTiles.directional.empty() ? ResourceUse::RenderTarget : ResourceUse::DrawOver);
+    readPosedVertices(builder, state_);
+    readCulledCasters(builder, state_);
     return true;
 }
 
@@ -76,6 +80,8 @@ bool LocalAtlasPass::setup(FramePassBuilder& builder)
     // Tiles kept from earlier frames, or the static casters' depth that StaticTilesPass copied in: drawn over.
     builder.write(frame::kLocalAtlas, ResourceUse::DrawOver);
     builder.write(frame::kShadowCubes);
+    readPosedVertices(builder, state_);
+    readCulledCasters(builder, state_);
     return true;
 }
 

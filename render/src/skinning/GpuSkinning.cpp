@@ -172,6 +172,14 @@ void GpuSkinning::record(rhi::CommandList& commands)
     }
 }
 
+std::vector<const rhi::Buffer*> GpuSkinning::posedVertices() const
+{
+    std::vector<const rhi::Buffer*> buffers;
+    for (const Deformer& deformer : deformers_)
+        buffers.push_back(&scene_.vertices(deformer.mesh));
+    return buffers;
+}
+
 const rhi::Buffer* GpuSkinning::restVertices(std::uint32_t mesh) const
 {
     for (const Deformer& deformer : deformers_)

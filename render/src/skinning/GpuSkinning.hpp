@@ -25,6 +25,8 @@ public:
     bool empty() const { return deformers_.empty(); }
     // Writes the scene's current pose and records the dispatches (outside passes).
     void record(rhi::CommandList& commands);
+    // The vertex buffers record() writes: the deformed meshes' in GpuScene.
+    std::vector<const rhi::Buffer*> posedVertices() const;
     // The bind-pose (rest) vertices of a mesh that is drawn deformed, as a vertex buffer; nullptr for other meshes.
     // For the negative control that leaves skinning out of the shadow casters.
     const rhi::Buffer* restVertices(std::uint32_t mesh) const;

@@ -10,7 +10,7 @@ bool SkinningPass::setup(FramePassBuilder& builder)
 {
     if (skinning_.empty())
         return false;
-    builder.keep();
+    builder.write(frame::kPosedVertices, ResourceUse::StorageWrite);
     return true;
 }
 

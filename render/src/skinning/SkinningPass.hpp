@@ -7,7 +7,7 @@
 namespace penumbra::render {
 
 // The frame's first pass where the scene has deformed meshes: GpuSkinning poses them into the vertex buffers that
-// every later pass draws. It writes buffers, not frame textures, so the graph is told to keep it.
+// every later pass draws (frame::kPosedVertices, a storage write here, a vertex read in the passes that draw).
 class SkinningPass final : public FramePass {
 public:
     explicit SkinningPass(GpuSkinning& skinning) : skinning_(skinning) {}

@@ -13,39 +13,45 @@ namespace penumbra::render {
 
 class FrameGraph;
 
-// How a pass uses one of the frame's textures. The first three read, the last four write (DrawOver reads too); the
-// graph orders and culls passes by them (and, as the RHI learns explicit barriers, derives those from them).
+// How a pass uses one of the frame's resources, textures and buffers. The graph orders and culls passes by them and
+// derives each pass's barriers from them (each stands for one rhi::ResourceState). The first four are for textures
+// only, the next four for buffers only, the last four for either.
 enum class ResourceUse : std::uint8_t {
-    Sampled, // read by shaders
+    Sampled, // a texture read by shaders through a sampler
     AttachmentRead, // a depth attachment tested but not written (an equal test against the prepass's depth)
-    TransferSource, // read by a copy or a resolve
     RenderTarget, // drawn into, as a colour or depth attachment
-    TransferDestination, // written by a copy or a resolve
     DrawOver, // drawn into over what an earlier pass left (tiles over cached depth): a read and a write
-    StorageWrite, // written by a compute shader as a storage image (imageStore)
+    VertexRead, // a buffer bound as a vertex buffer (per-vertex or per-instance attributes)
+    IndexRead, // a buffer bound as an index buffer
+    IndirectRead, // a buffer of indirect draw or dispatch arguments, or of their counts
+    UniformRead, // a buffer bound as a uniform block
+    StorageRead, // read by shaders as a storage block or image (imageLoad)
+    StorageWrite, // written (and read) by a compute shader as a storage block or image (imageStore)
+    TransferSource, // read by a copy or a resolve
+    TransferDestination, // written by a copy or a resolve
 };
 
-constexpr bool readsResource(ResourceUse use)
-{
-    return use != ResourceUse::RenderTarget && use != ResourceUse::TransferDestination &&
-           use != ResourceUse::StorageWrite;
-}
 constexpr bool writesResource(ResourceUse use)
 {
     return use == ResourceUse::RenderTarget || use == ResourceUse::TransferDestination ||
            use == ResourceUse::DrawOver || use == ResourceUse::StorageWrite;
 }
+constexpr bool readsResource(ResourceUse use) { return use == ResourceUse::DrawOver || !writesResource(use); }
+// Whether a texture may have the use; a buffer may have those from VertexRead on.
+constexpr bool textureUse(ResourceUse use) { return use < ResourceUse::VertexRead || use >= ResourceUse::StorageRead; }
+constexpr bool bufferUse(ResourceUse use) { return use >= ResourceUse::VertexRead; }
 const char* resourceUseName(ResourceUse use);
 
-// What a pass tells the graph in FramePass::setup: the frame's textures it reads and writes, by name
+// What a pass tells the graph in FramePass::setup: the frame's textures and buffers it reads and writes, by name
 // (FrameResources.hpp names the built-in ones). A pass may touch only what it declared.
 class FramePassBuilder {
 public:
-    // The pass reads `resource`; throws rhi::Error for a name the frame does not know (listing those it does).
+    // The pass reads `resource`; throws rhi::Error for a name the frame does not know (listing those it does) and for
+    // a use its kind of resource cannot have (a buffer sampled, a texture as vertices).
     void read(std::string_view resource, ResourceUse use = ResourceUse::Sampled);
     // The pass writes `resource`; throws as read() does.
     void write(std::string_view resource, ResourceUse use = ResourceUse::RenderTarget);
-    // The pass has effects outside the frame's textures (a readback, a counter): the graph never culls it.
+    // The pass has effects outside the frame's resources (a counter kept elsewhere): the graph never culls it.
     void keep();
 
 private:
@@ -63,6 +69,8 @@ public:
     rhi::CommandList& commands() const { return commands_; }
     // A texture the pass declared; throws rhi::Error for one it did not.
     const rhi::Texture& texture(std::string_view resource) const;
+    // A buffer the pass declared; throws rhi::Error for one it did not, or a resource of several buffers.
+    const rhi::Buffer& buffer(std::string_view resource) const;
     // A framebuffer of declared textures (layer 0), made once and kept while they live.
     const rhi::Framebuffer& framebuffer(std::initializer_list<std::string_view> colors,
                                         std::string_view depth = {}) const;

@@ -3,8 +3,8 @@
 #include <array>
 #include <string_view>
 
-// The names of the frame's built-in passes and textures, as SceneRenderer's graph knows them: what a user's pass
-// reads or writes (FramePassBuilder) and where it is placed (PassPlacement). `penumbra render --graph` draws them.
+// The names of the frame's built-in passes, textures and buffers, as SceneRenderer's graph knows them: what a user's
+// pass reads or writes (FramePassBuilder) and where it is placed (PassPlacement). `penumbra render --graph` draws them.
 namespace penumbra::render::frame {
 
 // Passes, in the order they run.
@@ -57,5 +57,16 @@ inline constexpr std::string_view kScreenSpaceShadows = "screen-space shadows";
 inline constexpr std::string_view kContactShadows = "contact shadows";
 inline constexpr std::string_view kCascadeView = "cascade view";
 inline constexpr std::string_view kVisibilityView = "visibility view";
+
+// Buffers that passes write and later passes read within the frame.
+// The deformed meshes' vertex buffers, posed by the skinning pass and drawn by every pass that draws the scene (a
+// scene with skinned or morphed meshes).
+inline constexpr std::string_view kPosedVertices = "posed vertices";
+// ShadowSettings::culling gpu: the caster culling pass's per-tile instance lists (per-instance vertices) and indexed
+// indirect draws with their counts, which the atlas passes draw.
+inline constexpr std::string_view kCulledInstances = "culled instances";
+inline constexpr std::string_view kCulledDraws = "culled draws";
+// directional.projection depthFit: the depth reduction's histogram, an output the renderer reads after the frame.
+inline constexpr std::string_view kDepthHistogram = "depth histogram";
 
 } // namespace penumbra::render::frame

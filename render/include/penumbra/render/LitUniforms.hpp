@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <string_view>
@@ -85,15 +86,41 @@ struct LitFrameUniforms {
 inline constexpr std::uint32_t kLitDataTextureWidthLog2 = 10;
 inline constexpr std::uint32_t kLitDataTextureWidth = 1u << kLitDataTextureWidthLog2;
 inline constexpr shadows::LightClusterGridDesc kLitClusterGrid{};
-// Local light i takes texels i * kLocalLightTexels + LocalLightTexel of the local light texture.
-enum class LocalLightTexel : std::uint32_t {
-    Position = 0, // xyz, w = 1 / range^2
-    Color = 1, // linear rgb x intensity, w = scene::LightKind
-    Axis = 2, // spot cone axis (unit, away from the light)
-    Shadow = 3, // spot cone scale and offset (saturate(cos * scale + offset)), first shadow tile or -1, strength
-    StaticMap = 4, // first tile of its static map or -1, the map's strength (shadows::StaticShadowPlan::localLightMaps)
+// One spot or point light in the local light texture: local light i takes texels i * kLocalLightTexels onwards.
+// lit.frag reads each field through the accessor generated from kLocalLightRecord (shaders::texelRecordGlsl:
+// localLightPosition(i), localLightColor(i)...). Integers are stored as floats (exact up to 2^24).
+struct LocalLightRecord {
+    glm::vec3 position{0.0f};
+    float inverseRangeSquared = 0.0f; // 1 / range^2
+    glm::vec3 color{0.0f}; // linear rgb x intensity
+    float kind = 0.0f; // scene::LightKind
+    glm::vec3 axis{0.0f}; // spot cone axis (unit, away from the light); 0 for a point light
+    float axisPadding = 0.0f;
+    float coneScale = 0.0f; // the spot cone's smooth step: saturate(cos * coneScale + coneOffset); 0 for a point light
+    float coneOffset = 0.0f;
+    float shadowTile = 0.0f; // first shadow tile (LocalShadowPlan::spotTiles, pointShadows) or -1
+    float shadowStrength = 0.0f;
+    float staticTile = -1.0f; // first tile of its static map or -1 (shadows::StaticShadowPlan::localLightMaps)
+    float staticStrength = 0.0f; // that map's strength
+    glm::vec2 staticPadding{0.0f};
 };
-inline constexpr std::uint32_t kLocalLightTexels = 5;
+inline constexpr std::array kLocalLightRecordFields{
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, position),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, inverseRangeSquared),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, color),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, kind),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, axis),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, coneScale),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, coneOffset),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, shadowTile),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, shadowStrength),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, staticTile),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, staticStrength),
+};
+inline constexpr shaders::ShaderStruct kLocalLightRecord{"LocalLightRecord", sizeof(LocalLightRecord),
+                                                         kLocalLightRecordFields};
+static_assert(shaders::fitsTexels(kLocalLightRecord));
+inline constexpr std::uint32_t kLocalLightTexels = sizeof(LocalLightRecord) / 16;
 inline constexpr rhi::Format kLocalLightFormat = rhi::Format::RGBA32F;
 // Texel c of the cluster texture is cluster c's list: x = its first entry in the index texture, y = its length.
 inline constexpr rhi::Format kLightClusterFormat = rhi::Format::RGBA32F;

@@ -243,6 +243,7 @@ private:
     std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
     rhi::BufferSlice localTileSlice();
+    void importResources(const FrameDesc& frame);
     void buildGraph(const FrameDesc& frame);
     void readDepthHistogram();
     void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;

@@ -261,6 +261,29 @@ std::string uniformBlockGlsl(const ShaderStruct& block, std::uint32_t binding, s
 std::string readonlyArrayBlockGlsl(const ShaderStruct& element, std::string_view block, std::uint32_t binding,
                                    std::string_view member, std::string_view instance);
 
+// A record of RGBA32F texels in a data texture (read with texelFetch), declared once as blocks are: the C++ struct
+// that is uploaded, 16 bytes a texel, and a ShaderStruct naming its fields (padding left out). True where every field
+// is a float or float vector (not an array) lying within one texel, and the struct is whole texels.
+constexpr bool fitsTexels(const ShaderStruct& record)
+{
+    if (record.size == 0 || record.size % 16 != 0)
+        return false;
+    for (const ShaderField& field : record.fields) {
+        const bool floats = field.type == FieldType::Float || field.type == FieldType::Vec2 ||
+                            field.type == FieldType::Vec3 || field.type == FieldType::Vec4;
+        if (!floats || field.count != 0 || field.offset % 4 != 0 ||
+            field.offset / 16 != (field.offset + field.size - 1) / 16 || field.offset + field.size > record.size)
+            return false;
+    }
+    return true;
+}
+
+// Per field of `record` (fitsTexels), a GLSL accessor that fetches the field's texel through `fetch(int record, int
+// texel)`, a function the shader defines before it, and returns the field's lanes. Named `prefix` and the field's
+// name capitalized: for the field `color` in bytes 16 to 27, `vec3 localLightColor(int record) { return
+// localLightTexel(record, 1).xyz; }`. Throws std::invalid_argument for a record that does not fit texels.
+std::string texelRecordGlsl(const ShaderStruct& record, std::string_view fetch, std::string_view prefix);
+
 // The block as PipelineDesc::uniformLayouts takes it: every field, and the fields of struct fields as "outer.inner"
 // (the first element's where the struct field is an array), as rhi reflection lists them.
 rhi::UniformLayout uniformLayout(const ShaderStruct& block);

@@ -84,10 +84,16 @@ public:
     explicit GpuCasterCulling(rhi::Device& device,
                               std::uint32_t maxTilesPerDispatch = std::numeric_limits<std::uint32_t>::max());
 
-    // Uploads the casters, their world boxes (casters[i]'s is bounds[i]) and the tiles' volumes, and records the
-    // dispatches. `normalMatrices`: the instances carry their normal matrices (the caster-side normal offset reads
-    // them). Throws rhi::Error where the counts differ, for casters of a draw group that do not draw alike, and where
-    // one tile's instances exceed the device's storage range (Capabilities::maxStorageBufferRange).
+    // Uploads the casters, their world boxes (casters[i]'s is bounds[i]) and the tiles' volumes, and makes the
+    // buffers the results go to (instances(), draws(), drawCounts() hold from here on, for a frame graph to declare).
+    // `normalMatrices`: the instances carry their normal matrices (the caster-side normal offset reads them). Throws
+    // rhi::Error where the counts differ, for casters of a draw group that do not draw alike, and where one tile's
+    // instances exceed the device's storage range (Capabilities::maxStorageBufferRange).
+    void prepare(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
+                 std::span<const CasterVolume> volumes, bool normalMatrices);
+    // Records the dispatches of the last prepare() (outside passes).
+    void dispatch(rhi::CommandList& commands);
+    // prepare(), then dispatch().
     void record(rhi::CommandList& commands, std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
                 std::span<const CasterVolume> volumes, bool normalMatrices);
 
@@ -106,7 +112,7 @@ public:
 private:
     void reserve(std::uint64_t casters, std::uint64_t volumeBytes, std::uint64_t draws);
     void fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds, bool normalMatrices);
-    void dispatchTiles(rhi::CommandList& commands, std::span<const CasterVolume> volumes);
+    void uploadTiles(std::span<const CasterVolume> volumes);
 
     rhi::Device& device_;
     std::unique_ptr<rhi::Shader> shader_;
@@ -130,6 +136,11 @@ private:
     std::uint32_t casterCount_ = 0;
     std::uint32_t tileCount_ = 0;
     std::uint32_t tileSlots_ = 0;
+    // The dispatches prepare() set up: groups_ of groupTiles_ tiles (the last fewer), each with a block of
+    // blockBytes_ in the volumes buffer; none where there is nothing to cull.
+    std::uint32_t groups_ = 0;
+    std::uint32_t groupTiles_ = 0;
+    std::uint64_t blockBytes_ = 0;
     std::uint32_t maxTilesPerDispatch_;
 };
 

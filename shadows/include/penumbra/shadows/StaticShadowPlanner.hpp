@@ -62,7 +62,7 @@ struct StaticShadowPlan {
     std::vector<StaticShadowNote> report;
     StaticShadowUniforms uniforms;
     // Per spot light, then point light (the lit pass's local index). The lit shader reads it from the local light
-    // texture (render::LocalLightTexel::StaticMap).
+    // texture (render::LocalLightRecord::staticTile, staticStrength).
     std::vector<StaticLocalLightMap> localLightMaps;
 };
 
