@@ -44,7 +44,8 @@ void LocalLightTextures::upload(DataTexture& target, rhi::Format format, const c
 }
 
 std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
-                                        const shadows::StaticShadowPlan& staticPlan)
+                                        const shadows::StaticShadowPlan& staticPlan,
+                                        std::span<const std::uint32_t> contactLights)
 {
     std::vector<glm::vec4> texels;
     texels.reserve((scene.spotLights.size() + scene.pointLights.size()) * kLocalLightTexels);
@@ -55,6 +56,11 @@ std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows
                                                      : shadows::StaticLocalLightMap{};
         return glm::vec4(static_cast<float>(map.tile), map.strength, 0.0f, 0.0f);
     };
+    // LocalLightTexel::Axis's w: the light's bit in the contact shadow texture, or -1.
+    const auto contactBit = [&](std::size_t light) {
+        const auto found = std::find(contactLights.begin(), contactLights.end(), light);
+        return found == contactLights.end() ? -1.0f : static_cast<float>(found - contactLights.begin());
+    };
     for (std::size_t i = 0; i < scene.spotLights.size(); ++i) {
         const scene::SpotLight& l = scene.spotLights[i];
         // Smooth step of the cone: saturate(cos(angle) * a + b), 0 at the outer, 1 at the inner angle.
@@ -63,7 +69,7 @@ std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows
         texels.insert(texels.end(),
                       {glm::vec4(l.position, 1.0f / (l.range * l.range)),
                        glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Spot)),
-                       glm::vec4(l.direction, 0.0f),
+                       glm::vec4(l.direction, contactBit(i)),
                        {scale, -cosOuter * scale, static_cast<float>(plan.spotTiles[i]), l.shadowStrength},
                        staticMap(i)});
     }
@@ -71,7 +77,7 @@ std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows
         const scene::PointLight& l = scene.pointLights[i];
         texels.insert(texels.end(), {glm::vec4(l.position, 1.0f / (l.range * l.range)),
                                      glm::vec4(l.color * l.intensity, static_cast<float>(scene::LightKind::Point)),
-                                     glm::vec4(0.0f),
+                                     glm::vec4(0.0f, 0.0f, 0.0f, contactBit(scene.spotLights.size() + i)),
                                      {0.0f, 0.0f, static_cast<float>(plan.pointShadows[i]), l.shadowStrength},
                                      staticMap(scene.spotLights.size() + i)});
     }

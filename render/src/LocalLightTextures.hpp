@@ -20,9 +20,11 @@
 namespace penumbra::render {
 
 // Every spot and point light of the scene in the lit pass's order (spot lights, then point lights), kLocalLightTexels
-// texels each (LocalLightTexel): where it is, its colour, cone and shadows.
+// texels each (LocalLightTexel): where it is, its colour, cone and shadows, and its bit among `contactLights` (the
+// frame's contact local lights, contactLocalLights).
 std::vector<glm::vec4> localLightTexels(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
-                                        const shadows::StaticShadowPlan& staticPlan);
+                                        const shadows::StaticShadowPlan& staticPlan,
+                                        std::span<const std::uint32_t> contactLights);
 
 // The reach of every spot and point light, in the same order, as shadows::buildLightClusters takes it.
 std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene);

@@ -89,7 +89,7 @@ inline constexpr shadows::LightClusterGridDesc kLitClusterGrid{};
 enum class LocalLightTexel : std::uint32_t {
     Position = 0, // xyz, w = 1 / range^2
     Color = 1, // linear rgb x intensity, w = scene::LightKind
-    Axis = 2, // spot cone axis (unit, away from the light)
+    Axis = 2, // spot cone axis (unit, away from the light), w = its bit in the contact shadow texture or -1
     Shadow = 3, // spot cone scale and offset (saturate(cos * scale + offset)), first shadow tile or -1, strength
     StaticMap = 4, // first tile of its static map or -1, the map's strength (shadows::StaticShadowPlan::localLightMaps)
 };
