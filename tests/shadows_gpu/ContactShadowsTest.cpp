@@ -83,21 +83,9 @@ public:
         std::size_t acne = 0; // the comparison's: truly lit, rendered dark, away from edges
     };
 
-    // The sun taken away; a spot light from the pole's -x side shining down past it, and a point light low at
-    // -x -z, whose shadows of the pole and the slats fall towards the camera and to its left.
-    void useLocalLights()
-    {
-        scene_.lights.clear();
-        scene_.spotLights.push_back({.name = "spot",
-                                     .intensity = 4.0f,
-                                     .position = {-2.5f, 3.0f, 0.5f},
-                                     .direction = glm::normalize(glm::vec3(3.0f, -3.0f, 0.5f)),
-                                     .range = 12.0f,
-                                     .innerAngle = glm::radians(40.0f),
-                                     .outerAngle = glm::radians(50.0f)});
-        scene_.pointLights.push_back(
-            {.name = "point", .intensity = 4.0f, .position = {-3.0f, 1.5f, -2.0f}, .range = 10.0f});
-    }
+    // The contact scene's spot and point lights instead of its sun (scenes::makeContactLocalLightsScene), from the
+    // same camera.
+    void useLocalLights() { scene_ = scenes::makeContactLocalLightsScene(); }
 
     // The visibility view of `frame`'s light (FrameDesc::visibilityOf) against the ray cast.
     Figures measure(const render::FrameDesc& frame, const char* name)
