@@ -49,14 +49,16 @@ render::FrameDesc contactFrame(bool contact, float thickness = shadows::ContactS
     return frame;
 }
 
-// contactFrame for the spot and point lights (contactLocalLights), seen through `light`'s visibility view: tiles of at
-// most 64 texels in a 512-texel local atlas, which leave gaps at the pole's foot and under the slats.
+// contactFrame for the spot and point lights (contactLocalLights: both, the nearest first), seen through `light`'s
+// visibility view: tiles of at most 64 texels in a 512-texel local atlas, which leave gaps at the pole's foot and under
+// the slats.
 render::FrameDesc localContactFrame(bool contact, scene::LightRef light, float length = kReach)
 {
     render::FrameDesc frame = contactFrame(contact, shadows::ContactShadowSettings{}.thickness, length);
     frame.shadows.local.atlasSize = 512;
     frame.shadows.local.tileResolution = 64;
     frame.shadows.local.minTileResolution = 16;
+    frame.shadows.contact.localLights = 2;
     frame.visibilityOf = light;
     return frame;
 }

@@ -190,7 +190,7 @@ struct ContactShadowSettings {
     float length = 0.3f; // metres of the march towards the light
     std::uint32_t steps = 12; // depth samples along it
     float thickness = 0.2f; // metres behind a depth sample that still count as inside its surface
-    std::uint32_t localLights = 2; // spot and point lights marched towards, 0 to kMaxContactLocalLights
+    std::uint32_t localLights = 1; // spot and point lights marched towards, 0 to kMaxContactLocalLights
 };
 
 // Where the realtime atlases' casters are culled per tile: by the planner on the CPU (the reference and the
