@@ -1,8 +1,9 @@
 #version 450
 // Contact shadows (penumbra::render::ContactShadowPass): from every other pixel's surface (half resolution),
 // rebuilt from the depth prepass through the inverse view-projection as the screen-space collection does, a short
-// march towards each directional light through the same depth buffer; a sample whose ray point lies behind the
-// depth there, by less than the surface's assumed thickness, is an occluder the shadow map may have missed (its
+// march towards each directional light, and towards the position of each of a few spot and point lights chosen per
+// frame (penumbra::render::contactLocalLights), through the same depth buffer; a sample whose ray point lies behind
+// the depth there, by less than the surface's assumed thickness, is an occluder the shadow map may have missed (its
 // texels, its biases). One bit per light; the lit pass upsamples them and takes the minimum with the map's
 // visibility on the light's direct term. After Bend Studio's "Bend Studio's screen space shadows" (Graham Aldridge,
 // SIGGRAPH 2023 Advances) and Panos Karabelas's "Screen space shadows" (2019): steps along the light, a thickness
@@ -36,11 +37,11 @@ float stepPerPixel(float here, float left, float right, float up, float down)
     return max(min(abs(here - left), abs(here - right)), min(abs(here - up), abs(here - down)));
 }
 
-// Whether the march from `position` towards the light meets an occluder. Projection and view depth are linear in
-// clip space along the ray, so each step interpolates its ends instead of projecting anew.
-bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float bias, float jitter)
+// Whether the march of `marchLength` metres from `position` towards the light meets an occluder. Projection and
+// view depth are linear in clip space along the ray, so each step interpolates its ends instead of projecting anew.
+bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchLength, float bias, float jitter)
 {
-    const vec3 end = position + towardsLight * contact.marchLength;
+    const vec3 end = position + towardsLight * marchLength;
     const vec4 startTexture = contact.worldToTexture * vec4(position, 1.0);
     const vec4 endTexture = contact.worldToTexture * vec4(end, 1.0);
     const float startDepth = dot(position - contact.cameraPosition.xyz, contact.cameraForward.xyz);
@@ -68,7 +69,7 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float bias, 
 
 // Half resolution: texel q marches from the full-resolution pixel 2q and keeps what the lit pass needs to hand its
 // answer to the pixels around it (contact_shadows_lit.glsl): that pixel's window depth, its depth step per pixel,
-// and a bit per light that the march found occluded.
+// a bit per directional light and a bit per spot or point light that the march found occluded.
 void main()
 {
     const ivec2 pixel = 2 * ivec2(gl_FragCoord.xy);
@@ -92,6 +93,23 @@ void main()
     const float jitter = 0.5 + 0.5 * interleavedGradientNoise(centre);
     int occluded = 0;
     for (int i = 0; i < contact.lightCount; ++i)
-        occluded |= contactOccluded(position, pixel, contact.towardsLight[i].xyz, bias, jitter) ? 1 << i : 0;
+        occluded |= contactOccluded(position, pixel, contact.towardsLight[i].xyz, contact.marchLength, bias, jitter)
+                        ? 1 << i
+                        : 0;
     outContact.z = float(occluded);
+    // A spot or point light: towards its position, no farther than the light itself, and only where it shines (within
+    // its range and cone), since the lit pass adds nothing of it elsewhere.
+    int localOccluded = 0;
+    for (int k = 0; k < contact.localLightCount; ++k) {
+        const vec3 toLight = contact.localPosition[k].xyz - position;
+        const float distance = length(toLight);
+        const vec3 towardsLight = toLight / max(distance, 1e-6);
+        if (distance * distance * contact.localPosition[k].w < 1.0 &&
+            dot(contact.localCone[k].xyz, -towardsLight) > contact.localCone[k].w)
+            localOccluded |=
+                contactOccluded(position, pixel, towardsLight, min(contact.marchLength, distance), bias, jitter)
+                    ? 1 << k
+                    : 0;
+    }
+    outContact.w = float(localOccluded);
 }

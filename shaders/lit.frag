@@ -103,6 +103,7 @@ struct LocalLight {
     vec3 l;
     float falloff;
     bool isPoint;
+    int contactBit; // its bit in the contact shadow texture (contactLocalShadow), -1 without contact shadows
 };
 
 LocalLight localLight(int i)
@@ -111,6 +112,7 @@ LocalLight localLight(int i)
     result.position = localLightPosition(i);
     result.color = localLightColor(i);
     result.axis = localLightAxis(i);
+    result.contactBit = int(localLightContactBit(i));
     result.shadowTile = int(localLightShadowTile(i));
     result.shadowStrength = localLightShadowStrength(i);
     const float inverseRangeSquared = localLightInverseRangeSquared(i);
@@ -161,9 +163,12 @@ vec4 shadowVisibility(int index, vec3 n, vec3 geometric, CascadeSelection cascad
         return vec4(1.0, 1.0, 1.0, 0.0);
     const vec3 lightPosition = light.position;
     const vec3 axis = light.axis;
-    const float visibility =
+    float visibility =
         realtime ? localShadowVisibility(light.shadowTile, light.isPoint, lightPosition, axis, vPosition, geometric)
                  : 1.0;
+#if PENUMBRA_CONTACT_SHADOWS
+    visibility = min(visibility, contactLocalShadow(contactShadows(), light.contactBit));
+#endif
     return vec4(vec3(fromStatic ? min(visibility, staticLocalVisibility(map.tile, light.isPoint, lightPosition, axis,
                                                                         vPosition, geometric))
                                 : visibility),
@@ -234,7 +239,7 @@ void main()
     const bool fromCollection = pixelSurfaceHere();
 #endif
 #if PENUMBRA_CONTACT_SHADOWS
-    const vec4 contact = contactShadows();
+    const ivec2 contact = contactShadows();
 #endif
     for (int i = 0; i < frame.directionalLightCount; ++i) {
         const vec3 l = -frame.lights[i].direction;
@@ -284,7 +289,16 @@ void main()
                                               light.axis, vPosition, geometric, globalStrength)
                      : 1.0;
 #endif
-        color += brdf(n, v, light.l, base, metallic, roughness) * light.color * nl * light.falloff * attenuation;
+#if PENUMBRA_CONTACT_SHADOWS
+        // As a directional light's, the minimum with the map's shadow; faded by the light's shadow strength as its map
+        // is (the frame's few nearest shadowed lights have a bit, contactLocalLights; the others none).
+        const float visible = min(attenuation, receives ? mix(1.0, contactLocalShadow(contact, light.contactBit),
+                                                              light.shadowStrength)
+                                                        : 1.0);
+#else
+        const float visible = attenuation;
+#endif
+        color += brdf(n, v, light.l, base, metallic, roughness) * light.color * nl * light.falloff * visible;
     }
 #endif
     // Emissive textures are RGBA8_SRGB too: already linear when sampled.

@@ -60,12 +60,13 @@ struct NamedScene {
     scene::Scene (*make)();
 };
 
-constexpr std::array<NamedScene, 11> kNamedScenes{{{"test", scenes::makeShadowTestScene},
+constexpr std::array<NamedScene, 12> kNamedScenes{{{"test", scenes::makeShadowTestScene},
                                                    {"key-light", scenes::makeSingleLightScene},
                                                    {"mixed", scenes::makeMixedLightsScene},
                                                    {"room", scenes::makePointLightRoomScene},
                                                    {"forest", scenes::makeForestScene},
                                                    {"contact", scenes::makeContactScene},
+                                                   {"contact-local", scenes::makeContactLocalLightsScene},
                                                    {"town", scenes::makeTownScene},
                                                    {"street", scenes::makeStreetScene},
                                                    {"cubes", [] { return scenes::makeCubeGridScene(10'000); }},

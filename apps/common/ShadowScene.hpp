@@ -60,13 +60,14 @@ inline constexpr std::uint32_t kTexelDensityStride = 8;
 
 // The scenes the tool renders by name: "test" (scenes::makeShadowTestScene, four lights), "key-light"
 // (scenes::makeSingleLightScene), "mixed" (scenes::makeMixedLightsScene: key, spot and point lights) and
-// "room" (scenes::makePointLightRoomScene), "forest" (scenes::makeForestScene), "contact" (scenes::makeContactScene)
-// "town" (scenes::makeTownScene), "cubes", "cubes-100k" and "cubes-1m" (scenes::makeCubeGridScene of 10 000, 100 000
-// and 1 000 000 cubes). Unknown names throw rhi::Error listing these.
+// "room" (scenes::makePointLightRoomScene), "forest" (scenes::makeForestScene), "contact" (scenes::makeContactScene),
+// "contact-local" (scenes::makeContactLocalLightsScene), "town" (scenes::makeTownScene), "cubes", "cubes-100k" and
+// "cubes-1m" (scenes::makeCubeGridScene of 10 000, 100 000 and 1 000 000 cubes). Unknown names throw rhi::Error listing
+// these.
 scene::Scene namedScene(const std::string& name);
 bool isNamedScene(std::string_view name);
 inline constexpr const char* kSceneNames =
-    "test, key-light, mixed, room, forest, contact, town, street, cubes, cubes-100k, cubes-1m";
+    "test, key-light, mixed, room, forest, contact, contact-local, town, street, cubes, cubes-100k, cubes-1m";
 
 // How renderShadowScene runs: with the validation layer / debug output (the library's default, and the tests'),
 // and whether it reads the atlases back (AtlasPictures; a 4096^2 atlas is 64 MiB to copy).

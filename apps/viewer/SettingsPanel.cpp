@@ -280,6 +280,7 @@ bool shadowSettings(shadows::ShadowSettings& s)
         changed |= fieldSlider("contact.length", c.length);
         changed |= fieldSlider("contact.steps", c.steps);
         changed |= fieldSlider("contact.thickness", c.thickness);
+        changed |= fieldSlider("contact.localLights", c.localLights);
     }
     return changed;
 }

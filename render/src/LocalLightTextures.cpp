@@ -44,11 +44,17 @@ void LocalLightTextures::upload(DataTexture& target, rhi::Format format, const c
 }
 
 std::vector<LocalLightRecord> localLightRecords(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
-                                                const shadows::StaticShadowPlan& staticPlan)
+                                                const shadows::StaticShadowPlan& staticPlan,
+                                                std::span<const std::uint32_t> contactLights)
 {
     std::vector<LocalLightRecord> records;
     records.reserve(scene.spotLights.size() + scene.pointLights.size());
     // Light `light`'s common fields: where it is, its colour, its shadow tile and static map.
+    // Light `light`'s bit in the contact shadow texture, or -1.
+    const auto contactBit = [&](std::size_t light) {
+        const auto found = std::find(contactLights.begin(), contactLights.end(), light);
+        return found == contactLights.end() ? -1.0f : static_cast<float>(found - contactLights.begin());
+    };
     const auto record = [&](std::size_t light, const auto& l, scene::LightKind kind, std::int32_t shadowTile) {
         const shadows::StaticLocalLightMap map = light < staticPlan.localLightMaps.size()
                                                      ? staticPlan.localLightMaps[light]
@@ -57,6 +63,7 @@ std::vector<LocalLightRecord> localLightRecords(const scene::Scene& scene, const
                                 .inverseRangeSquared = 1.0f / (l.range * l.range),
                                 .color = l.color * l.intensity,
                                 .kind = static_cast<float>(kind),
+                                .contactBit = contactBit(light),
                                 .shadowTile = static_cast<float>(shadowTile),
                                 .shadowStrength = l.shadowStrength,
                                 .staticTile = static_cast<float>(map.tile),

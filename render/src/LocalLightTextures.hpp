@@ -20,9 +20,10 @@
 namespace penumbra::render {
 
 // Every spot and point light of the scene in the lit pass's order (spot lights, then point lights): where it is, its
-// colour, cone and shadows.
+// colour, cone and shadows, and its bit among `contactLights` (the frame's contact local lights, contactLocalLights).
 std::vector<LocalLightRecord> localLightRecords(const scene::Scene& scene, const shadows::LocalShadowPlan& plan,
-                                                const shadows::StaticShadowPlan& staticPlan);
+                                                const shadows::StaticShadowPlan& staticPlan,
+                                                std::span<const std::uint32_t> contactLights);
 
 // The reach of every spot and point light, in the same order, as shadows::buildLightClusters takes it.
 std::vector<shadows::ClusterLight> clusterLights(const scene::Scene& scene);

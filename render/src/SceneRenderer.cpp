@@ -300,7 +300,10 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     shadowMapSet_ = state.shadowMaps.createSet(device_, *shadowMapLayout_);
     state.shadowMapSet = shadowMapSet_.get();
     // Every spot and point light, listed in the clusters of the camera's view it may reach (here or on the GPU).
-    localLights_->updateLights(localLightRecords(gpuScene_.scene(), localPlan_, staticShadows_->plan()));
+    const std::vector<std::uint32_t> contactLights =
+        state.contact ? contactLocalLights(gpuScene_.scene(), camera, frame, localPlan_, staticShadows_->plan())
+                      : std::vector<std::uint32_t>{};
+    localLights_->updateLights(localLightRecords(gpuScene_.scene(), localPlan_, staticShadows_->plan(), contactLights));
     const shadows::LightClusterUniforms clusters =
         localLights_->prepareLists(shadowCamera(camera, aspectOf(frame)), clusterLights(gpuScene_.scene()),
                                    frame.shadows.local.clusterBuild);
@@ -311,7 +314,8 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     state.litFrame = uniforms_.push(state.litFrameUniforms);
     if (state.contact)
         state.contactUniforms =
-            uniforms_.push(contactShadowUniforms(device_.conventions(), camera, frame, state.litFrameUniforms));
+            uniforms_.push(contactShadowUniforms(device_.conventions(), camera, frame, state.litFrameUniforms,
+                                                 gpuScene_.scene(), contactLights));
     if (frame.visibilityOf)
         state.visibilityLight = litLightIndex(*frame.visibilityOf);
     state.features = frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_, staticShadows_->plan());

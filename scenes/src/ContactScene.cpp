@@ -2,6 +2,7 @@
 
 #include "penumbra/scene/MeshGenerators.hpp"
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -29,6 +30,22 @@ scene::Scene makeContactScene()
                      .direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f)),
                      .angularDiameter = 10.0f}};
     scene.camera = scene::lookAt({1.4f, 7.0f, 0.0f}, {1.4f, 0.0f, 0.0f}, glm::radians(55.0f), {0.0f, 0.0f, -1.0f});
+    return scene;
+}
+
+scene::Scene makeContactLocalLightsScene()
+{
+    scene::Scene scene = makeContactScene();
+    scene.lights.clear();
+    scene.spotLights.push_back({.name = "spot",
+                                .intensity = 12.0f,
+                                .position = {-2.5f, 3.0f, 0.5f},
+                                .direction = glm::normalize(glm::vec3(3.0f, -3.0f, 0.5f)),
+                                .range = 12.0f,
+                                .innerAngle = glm::radians(40.0f),
+                                .outerAngle = glm::radians(50.0f)});
+    scene.pointLights.push_back({.name = "point", .intensity = 6.0f, .position = {-3.0f, 1.5f, -2.0f}, .range = 10.0f});
+    scene.camera = scene::lookAt({4.0f, 2.0f, -1.0f}, {0.0f, 0.0f, 1.0f}, glm::radians(55.0f), {0.0f, 1.0f, 0.0f});
     return scene;
 }
 

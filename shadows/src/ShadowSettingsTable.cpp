@@ -224,7 +224,7 @@ std::vector<ShadowSettingsField> shadowTableFields()
             [](auto& s) -> auto& { return s.staticMaps.localAtlasSize; }),
         settings::named<ShadowSettings>(
             "contact.shadows", toggleNames(),
-            "a short march through the depth buffer towards each directional light, added to its shadow map",
+            "a short march through the depth buffer towards each directional light and the nearest spot and point lights, added to their shadow maps",
             [](auto& s) -> auto& { return s.contact.shadows; }, "--contact-shadows"),
         settings::numeric<ShadowSettings>(
             "contact.length", {SettingRangeKind::Closed, 0.01, 10}, "metres the contact march goes towards the light",
@@ -236,6 +236,10 @@ std::vector<ShadowSettingsField> shadowTableFields()
             "contact.thickness", {SettingRangeKind::Closed, 0.001, 10},
             "metres behind a depth sample that the contact march counts as inside its surface",
             [](auto& s) -> auto& { return s.contact.thickness; }),
+        settings::numeric<ShadowSettings>(
+            "contact.localLights", {SettingRangeKind::Closed, 0, static_cast<double>(kMaxContactLocalLights)},
+            "spot and point lights with shadows that the contact march goes towards, the nearest the camera",
+            [](auto& s) -> auto& { return s.contact.localLights; }, "--contact-local-lights"),
     }};
 }
 

@@ -78,7 +78,7 @@ ShadowSettings unusualSettings()
               .maxPenumbraTexels = 30.0f,
               .poissonRadiusTexels = 3.25f,
               .diskRotation = Toggle::Off};
-    s.contact = {.shadows = Toggle::On, .length = 0.75f, .steps = 24, .thickness = 0.05f};
+    s.contact = {.shadows = Toggle::On, .length = 0.75f, .steps = 24, .thickness = 0.05f, .localLights = 3};
     return s;
 }
 
@@ -120,6 +120,8 @@ TEST(ShadowSettings, ValidationNamesTheFieldTheValueAndTheRange)
               "directional.projection: 3 is out of range, allowed stable, close, depthFit");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.contact.steps = 0; }),
               "contact.steps: 0 is out of range, allowed 1..64");
+    EXPECT_EQ(validationError([](ShadowSettings& s) { s.contact.localLights = 5; }),
+              "contact.localLights: 5 is out of range, allowed 0..4");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.maxDistance = 0.0f; }),
               "maxDistance: 0 is out of range, allowed > 0.001");
     EXPECT_EQ(validationError([](ShadowSettings& s) { s.distanceFade = 1.5f; }),

@@ -5,7 +5,9 @@
 // of a shadow edge, which is where those gaps are): contact shadows must close some of them without darkening a
 // pixel that truly sees the light (the comparison's acne does not rise). The negative controls march with a thickness
 // of 10 metres, which ignores it (surfaces then hide everything behind them, and the halos it draws are caught), and
-// a march too short to reach a caster, whose gaps must stay.
+// a march too short to reach a caster, whose gaps must stay. The same for a spot and a point light over the pole and
+// the fence (the sun taken away; small tiles of a 512-texel local atlas, whose texels and biases leave the gaps),
+// which the march goes towards by their position.
 #include "GpuTesting.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
@@ -18,6 +20,7 @@
 #include <cstdio>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
+#include <memory>
 
 namespace penumbra::testing {
 namespace {
@@ -25,6 +28,8 @@ namespace {
 constexpr std::uint32_t kContactWidth = 160;
 constexpr std::uint32_t kContactHeight = 90;
 constexpr scene::LightRef kSun{scene::LightKind::Directional, 0};
+constexpr scene::LightRef kContactSpot{scene::LightKind::Spot, 0};
+constexpr scene::LightRef kContactPoint{scene::LightKind::Point, 0};
 // Casters within the default march's length count: what contact shadows can close.
 constexpr float kReach = shadows::ContactShadowSettings{}.length;
 
@@ -44,6 +49,20 @@ render::FrameDesc contactFrame(bool contact, float thickness = shadows::ContactS
     return frame;
 }
 
+// contactFrame for the spot and point lights (contactLocalLights: both, the nearest first), seen through `light`'s
+// visibility view: tiles of at most 64 texels in a 512-texel local atlas, which leave gaps at the pole's foot and under
+// the slats.
+render::FrameDesc localContactFrame(bool contact, scene::LightRef light, float length = kReach)
+{
+    render::FrameDesc frame = contactFrame(contact, shadows::ContactShadowSettings{}.thickness, length);
+    frame.shadows.local.atlasSize = 512;
+    frame.shadows.local.tileResolution = 64;
+    frame.shadows.local.minTileResolution = 16;
+    frame.shadows.contact.localLights = 2;
+    frame.visibilityOf = light;
+    return frame;
+}
+
 class ContactShadowsTest : public GpuTest {
 public:
     void SetUp() override
@@ -55,43 +74,70 @@ public:
         scene_.camera = scene::lookAt({4.0f, 2.0f, -1.0f}, {0.0f, 0.0f, 1.0f}, glm::radians(55.0f), {0.0f, 1.0f, 0.0f});
     }
 
+    void TearDown() override
+    {
+        renderer_.reset();
+        GpuTest::TearDown();
+    }
+
     struct Figures {
         std::size_t gaps = 0; // truly shadowed within contact.length of the caster, rendered lit
         std::size_t acne = 0; // the comparison's: truly lit, rendered dark, away from edges
     };
 
-    // The sun's visibility view with `frame` against the ray cast.
+    // The contact scene's spot and point lights instead of its sun (scenes::makeContactLocalLightsScene), from the
+    // same camera.
+    void useLocalLights() { scene_ = scenes::makeContactLocalLightsScene(); }
+
+    // The visibility view of `frame`'s light (FrameDesc::visibilityOf) against the ray cast.
     Figures measure(const render::FrameDesc& frame, const char* name)
     {
-        render::SceneRenderer renderer(*device, scene_);
+        render::SceneRenderer& renderer = sceneRenderer();
         const render::ShadowPlans plans = renderer.planShadows(scene_.camera, frame);
         renderer.render(scene_.camera, frame, plans);
         const truth::RenderedVisibility rendered =
             truth::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
-        const truth::RayCaster cameraRays(scene_, truth::RayKind::Camera);
-        const truth::RayCaster shadowRays(scene_);
-        const truth::CpuGBuffer gbuffer =
-            truth::traceGBuffer(scene_, cameraRays, scene_.camera, kContactWidth, kContactHeight);
+        if (!shadowRays_) {
+            const truth::RayCaster cameraRays(scene_, truth::RayKind::Camera);
+            gbuffer_ = truth::traceGBuffer(scene_, cameraRays, scene_.camera, kContactWidth, kContactHeight);
+            shadowRays_ = std::make_unique<truth::RayCaster>(scene_);
+        }
+        const truth::RayCaster& shadowRays = *shadowRays_;
+        const truth::CpuGBuffer& gbuffer = gbuffer_;
         const truth::LightTruthTrace trace =
-            truth::traceLightTruth(scene_, shadowRays, gbuffer, plans, frame.shadows, kSun);
+            truth::traceLightTruth(scene_, shadowRays, gbuffer, plans, frame.shadows, *frame.visibilityOf);
         const truth::TruthComparison c = truth::compareLightTruth(trace, shadowRays, gbuffer, rendered);
         const truth::ContactGapFigures gaps =
             truth::contactGapPixels(gbuffer, trace.visibility, rendered, shadowRays, trace.rays, kReach);
         const Figures f{.gaps = gaps.gaps, .acne = c.acne()};
-        std::printf("[ contact  ] %s %s: %zu gap pixels of %zu, acne %zu (lit %zu, shadowed %zu compared)\n",
-                    configuration().c_str(), name, f.gaps, gaps.shadowed, f.acne, c.lit.compared, c.shadowed.compared);
+        std::printf("[ contact  ] %s %s %s: %zu gap pixels of %zu, acne %zu (lit %zu, shadowed %zu compared)\n",
+                    configuration().c_str(), scene::lightKindName(frame.visibilityOf->kind), name, f.gaps,
+                    gaps.shadowed, f.acne, c.lit.compared, c.shadowed.compared);
         return f;
     }
 
     rhi::Image visibility(const render::FrameDesc& frame)
     {
-        render::SceneRenderer renderer(*device, scene_);
+        render::SceneRenderer& renderer = sceneRenderer();
         renderer.render(scene_.camera, frame);
         return rhi::readTexture(*device, renderer.visibilityImage());
     }
 
 private:
+    // One renderer for every frame of a test, made at its first frame (after useLocalLights): its pipelines are
+    // compiled once.
+    render::SceneRenderer& sceneRenderer()
+    {
+        if (!renderer_)
+            renderer_ = std::make_unique<render::SceneRenderer>(*device, scene_);
+        return *renderer_;
+    }
+
     scene::Scene scene_;
+    std::unique_ptr<render::SceneRenderer> renderer_;
+    // The camera's pixels and the shadow rays' BVH, traced at a test's first measure.
+    truth::CpuGBuffer gbuffer_;
+    std::unique_ptr<truth::RayCaster> shadowRays_;
 };
 
 TEST_F(ContactShadowsTest, CloseGapsWithoutAcne)
@@ -131,6 +177,48 @@ TEST_F(ContactShadowsTest, MarchTooShortCatchesFault)
     const Figures off = measure(contactFrame(false), "off");
     const Figures tooShort = measure(contactFrame(true, shadows::ContactShadowSettings{}.thickness, 0.02f), "2 cm");
     EXPECT_EQ(tooShort.gaps, off.gaps) << "a march that reaches no caster closes no gap";
+}
+
+// A spot and a point light: contact shadows towards their position close some of the gaps their small tiles leave,
+// and darken no pixel that truly sees the light.
+TEST_F(ContactShadowsTest, LocalLightsCloseGapsWithoutAcne)
+{
+    useLocalLights();
+    for (const scene::LightRef light : {kContactSpot, kContactPoint}) {
+        const Figures off = measure(localContactFrame(false, light), "off");
+        const Figures on = measure(localContactFrame(true, light), "on");
+        ASSERT_GT(off.gaps, 0u) << scene::lightKindName(light.kind) << ": the map alone must leave gaps";
+        EXPECT_LT(on.gaps, off.gaps) << scene::lightKindName(light.kind);
+        EXPECT_LE(on.acne, off.acne) << scene::lightKindName(light.kind);
+    }
+}
+
+// The local lights' contact shadows, forward, on the screen-space path and with 4x MSAA: the same pixels.
+TEST_F(ContactShadowsTest, LocalLightsEveryPathMarchesTheSameDepth)
+{
+    useLocalLights();
+    for (const scene::LightRef light : {kContactSpot, kContactPoint}) {
+        const render::FrameDesc forward = localContactFrame(true, light);
+        render::FrameDesc screenSpace = forward;
+        screenSpace.shadowPath = render::ShadowPath::ScreenSpace;
+        render::FrameDesc msaa = forward;
+        msaa.msaa = 4;
+        const rhi::Image reference = visibility(forward);
+        EXPECT_EQ(visibility(screenSpace).bytes, reference.bytes)
+            << scene::lightKindName(light.kind) << ", screen-space";
+        EXPECT_EQ(visibility(msaa).bytes, reference.bytes) << scene::lightKindName(light.kind) << ", 4x MSAA";
+    }
+}
+
+// A march of 2 cm towards the spot or point light reaches no caster: their gaps must stay.
+TEST_F(ContactShadowsTest, LocalLightsMarchTooShortCatchesFault)
+{
+    useLocalLights();
+    for (const scene::LightRef light : {kContactSpot, kContactPoint}) {
+        const Figures off = measure(localContactFrame(false, light), "off");
+        const Figures tooShort = measure(localContactFrame(true, light, 0.02f), "2 cm");
+        EXPECT_EQ(tooShort.gaps, off.gaps) << scene::lightKindName(light.kind);
+    }
 }
 
 } // namespace

@@ -3,10 +3,14 @@
 #include "DepthPrepass.hpp"
 
 #include "penumbra/render/FrameResources.hpp"
+#include "penumbra/scene/ViewFrustum.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
+#include "penumbra/shadows/ContactLights.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 namespace penumbra::render {
@@ -23,8 +27,33 @@ rhi::ShaderSource contactShader()
 
 } // namespace
 
+std::vector<std::uint32_t> contactLocalLights(const scene::Scene& scene, const scene::Camera& camera,
+                                              const FrameDesc& frame, const shadows::LocalShadowPlan& plan,
+                                              const shadows::StaticShadowPlan& staticPlan)
+{
+    const scene::ViewFrustum view(camera, static_cast<float>(frame.width) / static_cast<float>(frame.height));
+    std::vector<shadows::ContactLightCandidate> candidates;
+    const auto consider = [&](std::uint32_t light, int tile, glm::vec3 position, float range, float strength) {
+        const bool staticMap = light < staticPlan.localLightMaps.size() && staticPlan.localLightMaps[light].tile >= 0;
+        if ((tile >= 0 || staticMap) && strength > 0.0f &&
+            view.mayShow({position - glm::vec3(range), position + glm::vec3(range)}))
+            candidates.push_back({light, position, range});
+    };
+    const auto spots = static_cast<std::uint32_t>(scene.spotLights.size());
+    for (std::uint32_t i = 0; i < spots; ++i) {
+        const scene::SpotLight& l = scene.spotLights[i];
+        consider(i, plan.spotTiles[i], l.position, l.range, l.shadowStrength);
+    }
+    for (std::uint32_t i = 0; i < scene.pointLights.size(); ++i) {
+        const scene::PointLight& l = scene.pointLights[i];
+        consider(spots + i, plan.pointShadows[i], l.position, l.range, l.shadowStrength);
+    }
+    return shadows::nearestContactLights(camera.position, candidates, frame.shadows.contact.localLights);
+}
+
 ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions, const scene::Camera& camera,
-                                            const FrameDesc& frame, const LitFrameUniforms& lit)
+                                            const FrameDesc& frame, const LitFrameUniforms& lit,
+                                            const scene::Scene& scene, std::span<const std::uint32_t> localLights)
 {
     const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
     const glm::mat4 projection = conventions.perspective(camera.fovY, aspect, camera.nearPlane, camera.farPlane);
@@ -42,6 +71,21 @@ ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions,
     u.targetSize = glm::vec4(static_cast<float>(frame.width), static_cast<float>(frame.height), 0.0f, 0.0f);
     u.depthToView = glm::vec4(projection[2][2], projection[3][2], camera.nearPlane, 0.0f);
     u.lightCount = lights;
+    const auto spots = static_cast<std::uint32_t>(scene.spotLights.size());
+    const std::size_t locals = std::min<std::size_t>(localLights.size(), shadows::kMaxContactLocalLights);
+    for (std::size_t k = 0; k < locals; ++k) {
+        const std::uint32_t i = localLights[k];
+        if (i < spots) {
+            const scene::SpotLight& l = scene.spotLights[i];
+            u.localPosition[k] = glm::vec4(l.position, 1.0f / (l.range * l.range));
+            u.localCone[k] = glm::vec4(glm::normalize(l.direction), std::cos(l.outerAngle));
+        } else {
+            const scene::PointLight& l = scene.pointLights[i - spots];
+            u.localPosition[k] = glm::vec4(l.position, 1.0f / (l.range * l.range));
+            u.localCone[k] = glm::vec4(0.0f, 0.0f, 0.0f, -2.0f);
+        }
+    }
+    u.localLightCount = static_cast<std::int32_t>(locals);
     u.steps = static_cast<std::int32_t>(settings.steps);
     u.marchLength = settings.length;
     u.thickness = settings.thickness;

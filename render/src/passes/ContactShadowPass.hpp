@@ -6,17 +6,22 @@
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
+#include "penumbra/shadows/LocalShadowPlanner.hpp"
 #include "penumbra/shadows/ShadowSettings.hpp"
+#include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
+#include <vector>
 
 namespace penumbra::render {
 
 // The contact shadow texture, at half the frame's resolution (texel q marched from pixel 2q): the marched pixel's
-// window depth and its depth step per pixel, exact, for the lit pass's nearest-depth upsampling, and a bit per
-// directional light 0 .. maxCollectedDirectionalLights - 1 that the march found occluded.
+// window depth and its depth step per pixel, exact, for the lit pass's nearest-depth upsampling, a bit per
+// directional light 0 .. maxCollectedDirectionalLights - 1 and a bit per contact local light (contactLocalLights)
+// that the march found occluded.
 inline constexpr rhi::Format kContactShadowFormat = rhi::Format::RGBA32F;
 
 // Texels per side of the contact shadow texture for `pixels` of the frame: one per two pixels, rounded up.
@@ -34,6 +39,11 @@ struct ContactShadowUniforms {
     glm::vec4 cameraForward{0.0f};
     // Unit, from the surface towards directional light i (LitFrameUniforms::lights[i].direction negated).
     std::array<glm::vec4, maxCollectedDirectionalLights> towardsLight{};
+    // The spot and point lights of contactLocalLights, in its order: position and 1 / range^2; the spot cone's axis
+    // (unit, away from the light) and the cosine of its outer angle, (0, 0, 0, -2) for a point light (every
+    // direction).
+    std::array<glm::vec4, shadows::kMaxContactLocalLights> localPosition{};
+    std::array<glm::vec4, shadows::kMaxContactLocalLights> localCone{};
     glm::vec4 targetSize{0.0f}; // the frame's width, height in pixels
     // a and b of the camera's projection (view depth = b / (z_ndc + a), rhi::Conventions::viewDepth) and its near
     // plane's view depth.
@@ -42,6 +52,7 @@ struct ContactShadowUniforms {
     std::int32_t steps = 0; // shadows::ContactShadowSettings
     float marchLength = 0.0f; // metres (GLSL reserves the name `length`)
     float thickness = 0.0f;
+    std::int32_t localLightCount = 0;
 };
 
 inline constexpr std::array kContactFields{
@@ -50,21 +61,34 @@ inline constexpr std::array kContactFields{
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, cameraPosition),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, cameraForward),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, towardsLight),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, localPosition),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, localCone),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, targetSize),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, depthToView),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, lightCount),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, steps),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, marchLength),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, thickness),
+    PENUMBRA_SHADER_FIELD(ContactShadowUniforms, localLightCount),
 };
 // contact_shadows.frag's block Contact, read through the instance name `contact`.
 inline constexpr shaders::ShaderStruct kContactBlock{"Contact", sizeof(ContactShadowUniforms), kContactFields};
 static_assert(shaders::matchesLayout(kContactBlock, shaders::BlockLayout::Std140));
 
+// The spot and point lights (their index in the lit pass's local order: spot lights, then point lights) that the
+// contact march goes towards this frame, at most ContactShadowSettings::localLights: of those with a shadow map this
+// frame (realtime or static) and a shadow strength, whose reach the camera's view may show, the nearest
+// (shadows::nearestContactLights). A light's place in the list is its bit in the contact shadow texture
+// (LocalLightRecord::contactBit).
+std::vector<std::uint32_t> contactLocalLights(const scene::Scene& scene, const scene::Camera& camera,
+                                              const FrameDesc& frame, const shadows::LocalShadowPlan& plan,
+                                              const shadows::StaticShadowPlan& staticPlan);
+
 // The Contact block of a frame from `camera`: the lit pass's frame block (its view-projection and directional
-// lights) and the frame's size and settings.
+// lights), the scene's spot and point lights `localLights` (contactLocalLights) and the frame's size and settings.
 ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions, const scene::Camera& camera,
-                                            const FrameDesc& frame, const LitFrameUniforms& lit);
+                                            const FrameDesc& frame, const LitFrameUniforms& lit,
+                                            const scene::Scene& scene, std::span<const std::uint32_t> localLights);
 
 // The contact shadow march (shaders/contact_shadows.frag): one full-screen pass at half resolution over the
 // single-sampled lit depth into shadows(), which the lit pass and the visibility view upsample at their pixel

@@ -95,7 +95,7 @@ struct LocalLightRecord {
     glm::vec3 color{0.0f}; // linear rgb x intensity
     float kind = 0.0f; // scene::LightKind
     glm::vec3 axis{0.0f}; // spot cone axis (unit, away from the light); 0 for a point light
-    float axisPadding = 0.0f;
+    float contactBit = -1.0f; // its bit in the contact shadow texture (contactLocalLights) or -1
     float coneScale = 0.0f; // the spot cone's smooth step: saturate(cos * coneScale + coneOffset); 0 for a point light
     float coneOffset = 0.0f;
     float shadowTile = 0.0f; // first shadow tile (LocalShadowPlan::spotTiles, pointShadows) or -1
@@ -105,17 +105,12 @@ struct LocalLightRecord {
     glm::vec2 staticPadding{0.0f};
 };
 inline constexpr std::array kLocalLightRecordFields{
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, position),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, inverseRangeSquared),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, color),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, kind),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, axis),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, coneScale),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, coneOffset),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, shadowTile),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, shadowStrength),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, staticTile),
-    PENUMBRA_SHADER_FIELD(LocalLightRecord, staticStrength),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, position),   PENUMBRA_SHADER_FIELD(LocalLightRecord, inverseRangeSquared),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, color),      PENUMBRA_SHADER_FIELD(LocalLightRecord, kind),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, axis),       PENUMBRA_SHADER_FIELD(LocalLightRecord, contactBit),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, coneScale),  PENUMBRA_SHADER_FIELD(LocalLightRecord, coneOffset),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, shadowTile), PENUMBRA_SHADER_FIELD(LocalLightRecord, shadowStrength),
+    PENUMBRA_SHADER_FIELD(LocalLightRecord, staticTile), PENUMBRA_SHADER_FIELD(LocalLightRecord, staticStrength),
 };
 inline constexpr shaders::ShaderStruct kLocalLightRecord{"LocalLightRecord", sizeof(LocalLightRecord),
                                                          kLocalLightRecordFields};

@@ -43,6 +43,11 @@ scene::Scene makeForestScene();
 inline constexpr float kContactPoleHeight = 3.0f;
 inline constexpr float kContactPoleHalfWidth = 0.1f;
 scene::Scene makeContactScene();
+// The contact scene lit by a spot light and a point light instead of its sun, seen low from where their shadows of
+// the pole and the fence fall (for contact shadows towards local lights): the spot "spot" at (-2.5, 3, 0.5) shining
+// down past the pole's -x side, the point light "point" low at (-3, 1.5, -2); the camera at (4, 2, -1) looks at
+// (0, 0, 1).
+scene::Scene makeContactLocalLightsScene();
 
 // A town larger than the default shadow distance, for static and baked shadows: a 200 x 200 ground (top at y = 0)
 // with 8 x 8 static buildings 6 to 22 high and 8 to 10 wide, 25 apart, and one dynamic red ball of radius 1 ("ball", at

@@ -176,15 +176,21 @@ struct StaticShadowSettings {
     std::uint32_t localAtlasSize = 2048;
 };
 
+// The most spot and point lights a frame marches contact shadows towards (ContactShadowSettings::localLights): a
+// bit each in the contact shadow texture.
+inline constexpr std::uint32_t kMaxContactLocalLights = 4;
+
 // Contact shadows: a short march through the camera's depth buffer from each shaded pixel towards each shadowed
-// directional light, whose hit darkens the light's direct term (the minimum with the map's visibility) where the
-// map's texels and biases leave a gap under small casters and at contacts (Bend Studio, "Bend Studio's screen space
-// shadows", SIGGRAPH 2023; Unreal Engine's "Contact Shadows" documentation).
+// directional light and the `localLights` nearest shadowed spot and point lights (nearestContactLights), whose hit
+// darkens the light's direct term (the minimum with the map's visibility) where the map's texels and biases leave a
+// gap under small casters and at contacts (Bend Studio, "Bend Studio's screen space shadows", SIGGRAPH 2023; Unreal
+// Engine's "Contact Shadows" documentation).
 struct ContactShadowSettings {
     Toggle shadows = Toggle::Off;
     float length = 0.3f; // metres of the march towards the light
     std::uint32_t steps = 12; // depth samples along it
     float thickness = 0.2f; // metres behind a depth sample that still count as inside its surface
+    std::uint32_t localLights = 1; // spot and point lights marched towards, 0 to kMaxContactLocalLights
 };
 
 // Where the realtime atlases' casters are culled per tile: by the planner on the CPU (the reference and the
