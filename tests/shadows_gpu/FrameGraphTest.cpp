@@ -469,7 +469,7 @@ TEST_F(FrameGraphTest, CulledCastersAndTheDepthHistogramAreFrameBuffers)
 {
     const scene::Scene scene = scenes::makeShadowTestScene();
     render::SceneRenderer renderer(*device, scene);
-    render::FrameDesc desc = litFrame(kWidth, kHeight, true, 1);
+    render::FrameDesc desc = litFrame(kGraphWidth, kGraphHeight, true, 1);
     desc.shadows.culling = shadows::CasterCullingMode::Gpu;
     desc.shadows.directional.projection = shadows::CascadeProjection::DepthFit;
     const render::FrameStats stats = renderer.render(scene.camera, desc);
