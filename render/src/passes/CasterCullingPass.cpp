@@ -27,7 +27,8 @@ void CasterCullingPass::execute(const FramePassContext& context)
             volumes.push_back(tile.volume);
             normalMatrices |= tile.view.normalOffset.reach > 0.0f;
         }
-    state_.culling->record(context.commands(), state_.casters, scene_.casterBounds(), volumes, normalMatrices);
+    state_.culling->record(context.commands(), state_.casters, scene_.casterBounds(), volumes, normalMatrices,
+                           &scene_.casterChanges());
 }
 
 } // namespace penumbra::render
