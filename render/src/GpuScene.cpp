@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <cstddef>
+#include <cstring>
 #include <map>
 #include <vector>
 
@@ -271,8 +272,9 @@ void GpuScene::refresh(const CasterOptions& options) const
             rebuild = true;
             break;
         }
-        if (object.transform == kept.transform && object.worldBounds.min == kept.worldBounds.min &&
-            object.worldBounds.max == kept.worldBounds.max)
+        // Bit for bit, which is faster than float by float over 10^5 objects, and counts a NaN that stays as unchanged.
+        if (std::memcmp(&object.transform, &kept.transform, sizeof(glm::mat4)) == 0 &&
+            std::memcmp(&object.worldBounds, &kept.worldBounds, sizeof(scene::Bounds)) == 0)
             continue;
         kept.transform = object.transform;
         kept.worldBounds = object.worldBounds;

@@ -256,6 +256,8 @@ private:
 
     rhi::Device& device_;
     GpuScene gpuScene_;
+    // The directional planner's light-space caster boxes, kept from frame to frame (planning is const).
+    mutable shadows::LightSpaceCache lightSpace_;
     std::unique_ptr<GpuSkinning> skinning_; // poses deformed meshes on the GPU (render/src/skinning)
     bool casterSkinning_ = true;
     shadows::DirectionalShadowPass shadowPass_;
