@@ -177,7 +177,22 @@ int SceneRenderer::litLightIndex(const scene::LightRef& light) const
     return static_cast<int>(directional + local);
 }
 
+GpuScene::CasterOptions SceneRenderer::casterOptions(const FrameDesc& frame) const
+{
+    GpuScene::CasterOptions options{.instancedDraws = frame.instancedDraws, .vertices = {}};
+    if (!casterSkinning_)
+        for (std::uint32_t mesh = 0; mesh < gpuScene_.scene().meshes.size(); ++mesh)
+            options.vertices.push_back(skinning_->restVertices(mesh));
+    return options;
+}
+
 ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameDesc& frame) const
+{
+    gpuScene_.refresh(casterOptions(frame));
+    return planRefreshed(camera, frame);
+}
+
+ShadowPlans SceneRenderer::planRefreshed(const scene::Camera& camera, const FrameDesc& frame) const
 {
     checkFrameSize(frame);
     const float aspect = aspectOf(frame);
@@ -186,11 +201,12 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
     const std::vector<shadows::DirectionalShadowLightInput> lights = shadowLights(scene.lights);
     const std::vector<shadows::SpotShadowInput> spots = spotShadowInputs(scene.spotLights);
     const std::vector<shadows::PointShadowInput> points = pointShadowInputs(scene.pointLights);
-    const std::vector<std::uint32_t> staticCasters = gpuScene_.staticCasters();
+    const std::vector<std::uint32_t>& staticCasters = gpuScene_.staticCasters();
     return {shadows::planDirectionalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), lights,
                                             bounds,
                                             {depthHistogram_ ? &*depthHistogram_ : nullptr,
-                                             plan_.depthFit ? &*plan_.depthFit : nullptr}),
+                                             plan_.depthFit ? &*plan_.depthFit : nullptr},
+                                            {&lightSpace_, &gpuScene_.casterChanges()}),
             shadows::planLocalShadows(frame.shadows, device_.conventions(), shadowCamera(camera, aspect), spots, points,
                                       bounds, localPlan_.allocation),
             shadows::planStaticShadows(frame.shadows, device_.conventions(), lights, spots, points,
@@ -200,9 +216,10 @@ ShadowPlans SceneRenderer::planShadows(const scene::Camera& camera, const FrameD
 FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame)
 {
     const auto start = std::chrono::steady_clock::now();
-    ShadowPlans plans = planShadows(camera, frame);
+    gpuScene_.refresh(casterOptions(frame));
+    ShadowPlans plans = planRefreshed(camera, frame);
     const double planningMs = millisecondsSince(start);
-    FrameStats stats = render(camera, frame, std::move(plans));
+    FrameStats stats = renderRefreshed(camera, frame, std::move(plans));
     stats.planningMs = planningMs;
     return stats;
 }
@@ -245,9 +262,8 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     storage_.reset();
     litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
                          uniforms_, instances_);
-    prepareCasters(frame);
     if (state.culling)
-        prepareCasterCulling(*state.culling, casters_, gpuScene_, plan_, localPlan_);
+        prepareCasterCulling(*state.culling, gpuScene_.casters(), gpuScene_, plan_, localPlan_);
     state.posedVertices = !skinning_->empty();
     stats.staticMapUpdates = prepareStaticMaps(frame, std::move(plans.staticMaps));
     const shadows::StaticShadowUniforms& staticUniforms = staticShadows_->plan().uniforms;
@@ -265,23 +281,10 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
             state.depthFitLights.push_back(light.direction);
         state.depthFitShadowFar = std::max(std::min(frame.shadows.maxDistance, camera.farPlane), camera.nearPlane);
     }
-    state.casters = casters_;
+    state.casters = gpuScene_.casters();
     state.litDraws = litDraws_;
     fillFrameBlocks(camera, frame);
     return stats;
-}
-
-void SceneRenderer::prepareCasters(const FrameDesc& frame)
-{
-    gpuScene_.casters(casters_);
-    if (!casterSkinning_)
-        for (shadows::ShadowCaster& caster : casters_)
-            for (std::uint32_t mesh = 0; mesh < gpuScene_.scene().meshes.size(); ++mesh)
-                if (caster.vertices == &gpuScene_.vertices(mesh) && skinning_->restVertices(mesh))
-                    caster.vertices = skinning_->restVertices(mesh);
-    if (!frame.instancedDraws)
-        for (shadows::ShadowCaster& caster : casters_)
-            caster.drawGroup = shadows::kNoDrawGroup;
 }
 
 // The blocks the frame's passes bind (FrameState): the shadow maps', the lit view's and the debug views'.
@@ -335,7 +338,7 @@ rhi::BufferSlice SceneRenderer::localTileSlice()
 std::vector<std::string> SceneRenderer::prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan)
 {
     const StaticMapDraws draws =
-        staticShadows_->prepare(frame.shadows, std::move(plan), casters_, staticUpdateRequested_);
+        staticShadows_->prepare(frame.shadows, std::move(plan), gpuScene_.casters(), staticUpdateRequested_);
     staticUpdateRequested_ = false;
     std::vector<std::string> updates;
     for (const StaticMapUpdate& update : draws.updates)
@@ -433,6 +436,12 @@ std::optional<double> FrameStats::passMs(std::string_view pass) const
 }
 
 FrameStats SceneRenderer::render(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans)
+{
+    gpuScene_.refresh(casterOptions(frame));
+    return renderRefreshed(camera, frame, std::move(plans));
+}
+
+FrameStats SceneRenderer::renderRefreshed(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans)
 {
     const auto start = std::chrono::steady_clock::now();
     shadows::validate(frame.shadows);

@@ -7,6 +7,7 @@
 #include "penumbra/shadows/SoftShadowUniforms.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <fmt/format.h>
@@ -175,7 +176,8 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
-                                             std::span<const Bounds> casterBounds, DepthFitInput depthFit)
+                                             std::span<const Bounds> casterBounds, DepthFitInput depthFit,
+                                             LightSpaceInput lightSpace)
 {
     validate(settings);
     const DirectionalShadowSettings& directional = settings.directional;
@@ -208,14 +210,18 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     for (const FrustumSlice& slice : slices)
         cullingSpheres.push_back(frustumSliceSphere(camera, slice.nearDistance, slice.farDistance));
     std::vector<std::uint32_t> selected;
-    std::vector<LightSpaceCasters> selectedCasters;
+    // The selected lights' boxes: the cache's, or made here (a deque keeps them in place as it grows).
+    std::deque<LightSpaceCasters> made;
+    std::vector<const LightSpaceCasters*> selectedCasters;
     for (std::uint32_t i = 0; i < lights.size(); ++i) {
         std::optional<std::string> reason = exclusion(lights[i], selected.size());
         if (!reason && !distanceReachesPastNear)
             reason = "no shadow distance in front of the camera";
-        std::optional<LightSpaceCasters> casters;
+        const LightSpaceCasters* casters = nullptr;
         if (!reason) {
-            casters = lightSpaceCasters(lightBasis(lights[i].direction), casterBounds);
+            casters = lightSpace.cache && lightSpace.changes
+                          ? &lightSpace.cache->casters(lights[i].direction, casterBounds, *lightSpace.changes)
+                          : &made.emplace_back(lightSpaceCasters(lightBasis(lights[i].direction), casterBounds));
             if (!castersInReach(*casters, cullingSpheres))
                 reason = "no caster in its cascades' reach";
         }
@@ -225,7 +231,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
         }
         plan.shadowSlots[i] = static_cast<int>(selected.size());
         selected.push_back(i);
-        selectedCasters.push_back(std::move(*casters));
+        selectedCasters.push_back(casters);
     }
 
     const std::uint32_t cascadeCount = directional.cascadeCount;
@@ -262,7 +268,7 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
     const bool gpuCulling = culledOnGpu(settings);
     for (std::uint32_t slot = 0; slot < plan.lights.size(); ++slot) {
         ShadowedDirectionalLight& light = plan.lights[slot];
-        const LightSpaceCasters& casters = selectedCasters[slot];
+        const LightSpaceCasters& casters = *selectedCasters[slot];
         for (std::uint32_t c = 0; c < cascadeCount; ++c) {
             DirectionalCascadePlan cascade;
             cascade.fit = close ? fitCloseCascade(bounds[slot][c], halfSizes[c], plan.cullingSpheres[c], casters,

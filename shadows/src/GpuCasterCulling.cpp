@@ -91,14 +91,14 @@ void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t volumeBytes,
 
 void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const ShadowCaster> casters,
                               std::span<const Bounds> bounds, std::span<const CasterVolume> volumes,
-                              bool normalMatrices)
+                              bool normalMatrices, const CasterChanges* changes)
 {
-    prepare(casters, bounds, volumes, normalMatrices);
+    prepare(casters, bounds, volumes, normalMatrices, changes);
     dispatch(commands);
 }
 
 void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
-                               std::span<const CasterVolume> volumes, bool normalMatrices)
+                               std::span<const CasterVolume> volumes, bool normalMatrices, const CasterChanges* changes)
 {
     if (casters.size() != bounds.size())
         throw rhi::Error(
@@ -106,12 +106,21 @@ void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<
     casterCount_ = static_cast<std::uint32_t>(casters.size());
     tileCount_ = static_cast<std::uint32_t>(volumes.size());
     groups_ = 0;
-    std::vector<std::uint32_t>& all = scratch_.all;
-    all.resize(casters.size());
-    for (std::uint32_t i = 0; i < all.size(); ++i)
-        all[i] = i;
-    // The batches every tile draws, as the CPU path batches each tile's list (ShadowCasterDraws::draw).
-    batches_ = batchByGroup(all, [&](std::uint32_t index) { return casters[index].drawGroup; });
+    uploaded_.clear();
+    // The casters changed since those in storage were uploaded, where storage holds this list's.
+    std::optional<std::vector<CasterRange>> changed;
+    if (changes && resident_ && resident_->generation && resident_->casters == casterCount_ &&
+        resident_->normalMatrices == normalMatrices)
+        changed = changes->since(resident_->generation);
+    if (!changed) {
+        resident_.reset();
+        std::vector<std::uint32_t>& all = scratch_.all;
+        all.resize(casters.size());
+        for (std::uint32_t i = 0; i < all.size(); ++i)
+            all[i] = i;
+        // The batches every tile draws, as the CPU path batches each tile's list (ShadowCasterDraws::draw).
+        batches_ = batchByGroup(all, [&](std::uint32_t index) { return casters[index].drawGroup; });
+    }
     if (casterCount_ == 0 || tileCount_ == 0)
         return;
     // A tile's slots start at a multiple of the binding offset alignment in both lists (4 and 112 bytes a slot).
@@ -123,11 +132,19 @@ void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<
                                      "device's storage range of {} MiB (maxStorageBufferRange); cull on the CPU "
                                      "(--culling cpu) or draw fewer casters",
                                      casterCount_, tileBytes >> 20, caps.maxStorageBufferRange >> 20));
-    fillCasters(casters, bounds, normalMatrices);
+    if (changed) {
+        fillChanged(casters, bounds, normalMatrices, *changed);
+        uploaded_ = std::move(*changed);
+    } else {
+        fillCasters(casters, bounds, normalMatrices);
+        uploaded_ = {{0, casterCount_}};
+    }
+    fillDraws(casters);
     uploadTiles(volumes);
+    resident_ = Resident{changes ? std::optional(changes->generation()) : std::nullopt, casterCount_, normalMatrices};
 }
 
-// The casters' boxes, batches and transforms as the pass reads them, and every tile's draws with no instances yet.
+// The casters' boxes, batches and transforms as the pass reads them.
 void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
                                    bool normalMatrices)
 {
@@ -149,12 +166,38 @@ void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::s
             transforms[i] = normalMatrices ? instanceTransform(casters[i].model) : InstanceTransform{casters[i].model};
         }
     }
+}
+
+void GpuCasterCulling::fillChanged(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
+                                   bool normalMatrices, std::span<const CasterRange> changed)
+{
+    for (const CasterRange& range : changed)
+        for (std::uint32_t i = range.first; i < range.first + range.count; ++i) {
+            scratch_.casters[i].boundsMin = glm::vec4(bounds[i].min, 0.0f);
+            scratch_.casters[i].boundsMax = glm::vec4(bounds[i].max, 0.0f);
+            scratch_.transforms[i] =
+                normalMatrices ? instanceTransform(casters[i].model) : InstanceTransform{casters[i].model};
+        }
+}
+
+void GpuCasterCulling::fillDraws(std::span<const ShadowCaster> casters)
+{
     std::vector<CulledDraw>& draws = scratch_.draws;
     draws.clear();
     for (std::uint32_t t = 0; t < tileCount_; ++t)
         for (const InstanceBatches::Batch& batch : batches_.batches)
             draws.push_back({.indexCount = casters[batches_.items[batch.first]].indexCount,
                              .firstInstance = t * tileSlots_ + batch.first});
+}
+
+void GpuCasterCulling::uploadCasters()
+{
+    for (const CasterRange& range : uploaded_) {
+        casters_->write(range.first * sizeof(CullingCaster),
+                        std::as_bytes(std::span(scratch_.casters).subspan(range.first, range.count)));
+        transforms_->write(range.first * sizeof(InstanceTransform),
+                           std::as_bytes(std::span(scratch_.transforms).subspan(range.first, range.count)));
+    }
 }
 
 // One dispatch per group of tiles whose instance ranges fit one storage binding (all tiles in one, unless the device's
@@ -168,10 +211,14 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
     blockBytes_ = roundUp(kVolumesOffset + groupTiles_ * sizeof(CasterVolume), caps.storageBufferOffsetAlignment);
     groups_ = (tileCount_ + groupTiles_ - 1) / groupTiles_;
     const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
+    const rhi::Buffer* residentCasters = casters_.get();
+    const rhi::Buffer* residentTransforms = transforms_.get();
     reserve(casterCount_, groups_ * blockBytes_, std::uint64_t(tileCount_) * batchCount);
+    // Buffers made anew hold none of the casters.
+    if (casters_.get() != residentCasters || transforms_.get() != residentTransforms)
+        uploaded_ = {{0, casterCount_}};
+    uploadCasters();
     const std::vector<CulledDraw>& draws = scratch_.draws;
-    casters_->write(0, bytesOf(scratch_.casters));
-    transforms_->write(0, bytesOf(scratch_.transforms));
     draws_->write(0, bytesOf(draws));
     counts_->write(0, bytesOf(std::vector<std::uint32_t>(draws.size(), 0)));
     for (std::uint32_t g = 0; g < groups_; ++g) {

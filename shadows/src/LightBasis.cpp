@@ -1,5 +1,6 @@
 #include "penumbra/shadows/LightBasis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -40,10 +41,12 @@ Bounds lightSpaceBounds(const LightBasis& basis, const Bounds& world)
 
 LightSpaceCasters lightSpaceCasters(const LightBasis& basis, std::span<const Bounds> world)
 {
-    LightSpaceCasters casters{basis, world, {}};
+    LightSpaceCasters casters{basis, world, {}, std::numeric_limits<float>::max()};
     casters.light.reserve(world.size());
-    for (const Bounds& box : world)
+    for (const Bounds& box : world) {
         casters.light.push_back(lightSpaceBounds(basis, box));
+        casters.top = std::min(casters.top, casters.light.back().min.z);
+    }
     return casters;
 }
 

@@ -7,9 +7,11 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scenes/TestScenes.hpp"
+#include "penumbra/shadows/GpuCasterCulling.hpp"
 #include "penumbra/shadows/DirectionalShadowPass.hpp"
 #include "penumbra/shadows/LocalShadowPass.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 namespace penumbra::testing {
@@ -60,8 +62,7 @@ protected:
                 planned.push_back(tile.casters);
                 volumes.push_back(tile.volume);
             }
-        std::vector<shadows::ShadowCaster> casters;
-        renderer.gpuScene().casters(casters);
+        const std::vector<shadows::ShadowCaster>& casters = renderer.gpuScene().casters();
         std::vector<shadows::Bounds> bounds = renderer.gpuScene().casterBounds();
         fault(volumes, bounds);
         shadows::GpuCasterCulling culling(*device, tilesPerDispatch);
@@ -77,6 +78,54 @@ protected:
         rhi::DepthImage local;
         render::FrameStats stats;
     };
+
+    // A cube of the first cascade moved far out of every tile between two records into the same resident storage:
+    // what each record uploaded, and the moved record's lists beside those of a culling that uploads everything.
+    // `reported`: the record sees the scene's change log; otherwise a copy taken before the move, which misses it.
+    struct MovedCaster {
+        std::vector<shadows::CasterRange> first, unchanged, moved;
+        std::uint32_t caster = 0;
+        shadows::Bounds bounds; // the moved caster's in GpuScene::casterBounds
+        glm::vec3 movedMin{0.0f};
+        std::vector<std::vector<std::uint32_t>> resident, full;
+    };
+    MovedCaster moveCaster(bool reported)
+    {
+        scene::Scene scene = culledScene();
+        render::SceneRenderer renderer(*device, scene);
+        const render::FrameDesc frame = smallFrame(shadows::CasterCullingMode::Gpu);
+        const render::GpuScene& gpuScene = renderer.gpuScene();
+        shadows::GpuCasterCulling culling(*device);
+        const auto record = [&](shadows::GpuCasterCulling& target, const shadows::CasterChanges* changes) {
+            const render::ShadowPlans plans = renderer.planShadows(scene.camera, frame);
+            std::vector<shadows::CasterVolume> volumes;
+            for (const shadows::ShadowTileDraw& tile : shadows::DirectionalShadowPass::tileDraws(plans.directional))
+                volumes.push_back(tile.volume);
+            auto commands = device->createCommandList();
+            target.record(*commands, gpuScene.casters(), gpuScene.casterBounds(), volumes, false, changes);
+            device->submit(*commands);
+        };
+        MovedCaster result;
+        record(culling, &gpuScene.casterChanges());
+        result.first = culling.uploaded();
+        result.caster = culling.readLists().front().back();
+        record(culling, &gpuScene.casterChanges());
+        result.unchanged = culling.uploaded();
+        const shadows::CasterChanges beforeMove = gpuScene.casterChanges();
+        // The ground is object and caster 0, cube i object and caster i.
+        scene::Object& object = scene.objects.at(result.caster);
+        object.transform = glm::translate(glm::mat4(1.0f), glm::vec3(500.0f, 0.5f, 500.0f));
+        object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
+        result.movedMin = object.worldBounds.min;
+        record(culling, reported ? &gpuScene.casterChanges() : &beforeMove);
+        result.moved = culling.uploaded();
+        result.bounds = gpuScene.casterBounds().at(result.caster);
+        result.resident = culling.readLists();
+        shadows::GpuCasterCulling fresh(*device);
+        record(fresh, nullptr);
+        result.full = fresh.readLists();
+        return result;
+    }
 
     Drawn draw(shadows::CasterCullingMode culling)
     {
@@ -136,6 +185,29 @@ TEST_F(GpuCullingTest, PicturesMatchCpuCulling)
     EXPECT_TRUE(cpu.directional.depth == gpu.directional.depth) << "the directional atlases differ";
     EXPECT_TRUE(cpu.local.depth == gpu.local.depth) << "the local atlases differ";
     EXPECT_GT(gpu.stats.casterDraws, 0u);
+}
+
+// Instances stay in GPU storage: the first record uploads every caster, one with nothing changed none, one after a
+// cube moved that cube alone, and the lists are those of a full upload.
+TEST_F(GpuCullingTest, MovedCasterIsUploadedAlone)
+{
+    const MovedCaster moved = moveCaster(true);
+    ASSERT_EQ(moved.first.size(), 1u);
+    EXPECT_EQ(moved.first[0].first, 0u);
+    EXPECT_EQ(moved.first[0].count, kCubes + 1) << "the ground and every cube";
+    EXPECT_TRUE(moved.unchanged.empty());
+    EXPECT_EQ(moved.moved, (std::vector<shadows::CasterRange>{{moved.caster, 1}}));
+    EXPECT_EQ(moved.bounds.min, moved.movedMin);
+    EXPECT_EQ(moved.resident, moved.full);
+    EXPECT_NE(moved.full.front(), std::vector<std::uint32_t>()) << "the first cascade keeps other casters";
+}
+
+// A record that misses the move (a change log from before it) keeps the stale box: its lists still hold the cube.
+TEST_F(GpuCullingTest, UnreportedMoveCatchesFault)
+{
+    const MovedCaster moved = moveCaster(false);
+    EXPECT_TRUE(moved.moved.empty());
+    EXPECT_NE(moved.resident, moved.full);
 }
 
 } // namespace

@@ -18,7 +18,7 @@ void prepareCasterCulling(shadows::GpuCasterCulling& culling, std::span<const sh
             volumes.push_back(tile.volume);
             normalMatrices |= tile.view.normalOffset.reach > 0.0f;
         }
-    culling.prepare(casters, scene.casterBounds(), volumes, normalMatrices);
+    culling.prepare(casters, scene.casterBounds(), volumes, normalMatrices, &scene.casterChanges());
 }
 
 std::string CasterCullingPass::name() const { return std::string(frame::kCasterCullingPass); }

@@ -1,6 +1,7 @@
 #include "penumbra/shadows/StaticShadowPlanner.hpp"
 
 #include "penumbra/shadows/AtlasMatrix.hpp"
+#include "penumbra/shadows/CasterBvh.hpp"
 #include "penumbra/shadows/DirectionalCascadeFit.hpp"
 #include "penumbra/shadows/DirectionalShadowPass.hpp"
 #include "penumbra/shadows/DirectionalSoftData.hpp"
@@ -29,14 +30,22 @@ Sphere boundingSphere(const StaticCasters& casters)
     return {0.5f * (box.min + box.max), std::max(0.5f * glm::length(box.max - box.min), 1e-3f)};
 }
 
-// The static casters whose boxes meet a perspective view's frustum, as caster indices.
-std::vector<std::uint32_t> castersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
-                                            const StaticCasters& casters)
+// The static casters' boxes, in the order of their indices.
+std::vector<Bounds> staticBoundsOf(const StaticCasters& casters)
 {
     std::vector<Bounds> bounds;
+    bounds.reserve(casters.indices.size());
     for (const std::uint32_t i : casters.indices)
         bounds.push_back(casters.bounds[i]);
-    std::vector<std::uint32_t> inside = cullCastersInFrustum(view, fov, nearPlane, farPlane, bounds);
+    return bounds;
+}
+
+// The static casters whose boxes meet a perspective view's frustum, as caster indices (ascending, as `staticBvh`'s
+// entries follow the ascending indices): cullCastersInFrustum's list, walked down the hierarchy over the static boxes.
+std::vector<std::uint32_t> castersInFrustum(const glm::mat4& view, float fov, float nearPlane, float farPlane,
+                                            const CasterBvh& staticBvh, const StaticCasters& casters)
+{
+    std::vector<std::uint32_t> inside = staticBvh.inFrustum(frustumVolume(view, fov, nearPlane, farPlane));
     for (std::uint32_t& i : inside)
         i = casters.indices[i];
     return inside;
@@ -64,9 +73,7 @@ void planDirectional(StaticShadowPlan& plan, const ShadowSettings& settings, con
         return;
     const Sphere sphere = boundingSphere(casters);
     const std::vector<std::uint32_t> all(casters.indices.begin(), casters.indices.end());
-    std::vector<Bounds> staticBounds;
-    for (const std::uint32_t i : casters.indices)
-        staticBounds.push_back(casters.bounds[i]);
+    const std::vector<Bounds> staticBounds = staticBoundsOf(casters);
     for (std::uint32_t tile = 0; tile < selected.size(); ++tile) {
         const std::uint32_t index = selected[tile];
         const DirectionalShadowLightInput& light = lights[index];
@@ -183,6 +190,11 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
         tiles += needed;
     }
     plan.localAtlas = ShadowAtlasLayout(settings.staticMaps.localAtlasSize, tiles);
+    if (selected.empty())
+        return;
+    // One hierarchy for every view: each view's culling costs what it sees, not every static caster.
+    const std::vector<Bounds> staticBounds = staticBoundsOf(casters);
+    const CasterBvh staticBvh(staticBounds);
     std::uint32_t tile = 0;
     for (const LocalLightInput* light : selected) {
         const std::uint32_t tileSize = plan.localAtlas.tileSize();
@@ -210,7 +222,7 @@ void planLocal(StaticShadowPlan& plan, const ShadowSettings& settings, const rhi
             plan.uniforms.localSoft[tile] =
                 perspectiveTileSoft(projection, tileSize, light->sourceRadius, nearPlane, conventions);
             map.tiles.push_back({{tile, plan.localAtlas.viewport(tile), draw,
-                                  castersInFrustum(view, views.fov, nearPlane, light->range, casters)},
+                                  castersInFrustum(view, views.fov, nearPlane, light->range, staticBvh, casters)},
                                  projection,
                                  ShadowFrustum{view, true, views.fov, nearPlane, light->range}});
             ++tile;

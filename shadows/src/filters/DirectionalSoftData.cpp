@@ -19,12 +19,7 @@ glm::vec2 lightTexelAnchor(const DirectionalShadowCascade& fit, const glm::mat4&
 
 float casterTopDepth(const LightSpaceCasters& casters, float fallback)
 {
-    if (casters.light.empty())
-        return fallback;
-    float top = std::numeric_limits<float>::max();
-    for (const Bounds& caster : casters.light)
-        top = std::min(top, caster.min.z);
-    return top;
+    return casters.light.empty() ? fallback : casters.top;
 }
 
 glm::vec2 directionalDepthRow(const DirectionalShadowCascade& fit, float casterTop, const rhi::Conventions& conventions)

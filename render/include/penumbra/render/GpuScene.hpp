@@ -4,6 +4,7 @@
 #include "penumbra/scene/Scene.hpp"
 #include "penumbra/rhi/UniformArena.hpp"
 #include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/CasterChanges.hpp"
 #include "penumbra/shadows/InstanceTransform.hpp"
 #include "penumbra/shadows/ShadowCaster.hpp"
 
@@ -60,18 +61,33 @@ public:
     // Makes every texture's sampler anew with this anisotropy (within the device's limit) where it changed.
     void setMaxAnisotropy(float anisotropy);
 
-    // Objects whose material casts shadows, with their world bounds; object transforms are read
-    // from the scene on every call, so moved objects (with updated worldBounds) are seen. `casters` is cleared and
-    // filled, so that a caller keeps its storage from frame to frame.
-    void casters(std::vector<shadows::ShadowCaster>& casters) const;
+    // What the caster list depends on besides the scene.
+    struct CasterOptions {
+        // False: every caster is drawn alone (ShadowCaster::drawGroup is kNoDrawGroup).
+        bool instancedDraws = true;
+        // Per mesh, the vertex buffer its casters draw instead of vertices(mesh); empty, or nullptr for a mesh, to
+        // draw the scene's own (the negative control that leaves skinning out of the casters draws rest poses).
+        std::vector<const rhi::Buffer*> vertices;
+        bool operator==(const CasterOptions&) const = default;
+    };
+    // Reads the scene's objects again for the caster list, bounds and static casters below, which are kept from call
+    // to call: a caster is rewritten only where its object moved (transform or world bounds) or its pose changed, and
+    // recorded in casterChanges(); the whole list is built anew where an object's shadow casting or mobility, a
+    // material, or the options changed. A scene of 10^5 objects thus costs one comparison per object and frame rather
+    // than its caster list and bounds built anew. The renderer calls it once per frame before planning; the
+    // constructor once with default options. Throws rhi::Error where objects were added or removed since the upload.
+    void refresh(const CasterOptions& options) const;
+    // Objects whose material casts shadows, with their world bounds, as of the last refresh().
+    const std::vector<shadows::ShadowCaster>& casters() const { return casters_; }
     // What a deformed object's vertices are posed by this frame (a hash of its joint matrices and morph weights in
     // scene::Rig::pose), 0 for an object drawn as uploaded: ShadowCaster::pose, which caches compare.
     std::uint64_t poseKey(std::size_t object) const;
-    // Every shadow caster's world bounds, in caster order, read from the scene on every call into storage kept from
-    // call to call (a scene of 10^5 objects would page-fault fresh vectors every frame): valid until the next call.
-    const std::vector<shadows::Bounds>& casterBounds() const;
+    // Every shadow caster's world bounds, in caster order, as of the last refresh().
+    const std::vector<shadows::Bounds>& casterBounds() const { return casterBounds_; }
     // Indices into casters() of the casters whose objects are static (scene::Mobility), ascending.
-    std::vector<std::uint32_t> staticCasters() const;
+    const std::vector<std::uint32_t>& staticCasters() const { return staticCasters_; }
+    // Which casters each refresh() changed: what keeps casters resident rewrites only those.
+    const shadows::CasterChanges& casterChanges() const { return casterChanges_; }
 
     // The vertex layout the caster passes read from the scene's vertex buffers.
     static shadows::CasterVertexFormat vertexFormat();
@@ -107,7 +123,30 @@ private:
     std::vector<std::uint32_t> meshMaterialGroups_;
     // Per object: its scene::Rig::deformers index, -1 for an object not deformed.
     std::vector<std::int32_t> deformers_;
-    mutable std::vector<shadows::Bounds> casterBounds_; // casterBounds()'s storage
+    // What an object was at the last refresh(), as far as its caster depends on it.
+    struct ObjectSnapshot {
+        glm::mat4 transform{1.0f};
+        scene::Bounds worldBounds;
+        scene::ShadowCasting castShadows = scene::ShadowCasting::On;
+        scene::Mobility mobility = scene::Mobility::Static;
+    };
+    static constexpr std::uint32_t kNoCaster = 0xffffffffu;
+    // Builds the caster list, bounds and static casters anew.
+    void rebuildCasters(const CasterOptions& options) const;
+    // Whether the materials' casters differ from those the list was built with (and keeps the new ones).
+    bool materialsChanged() const;
+
+    // refresh()'s caches: the renderer plans from a const scene, as the shadow caches do.
+    mutable std::vector<shadows::ShadowCaster> casters_;
+    mutable std::vector<shadows::Bounds> casterBounds_;
+    mutable std::vector<std::uint32_t> staticCasters_;
+    mutable std::vector<ObjectSnapshot> snapshots_; // per object
+    mutable std::vector<std::uint32_t> casterOf_; // per object: its index in casters_, or kNoCaster
+    mutable std::vector<shadows::ShadowCaster> materialCasters_; // per material, as materialCaster() made it
+    mutable std::vector<scene::CasterMode> materialModes_; // per material
+    mutable std::optional<CasterOptions> options_; // those of the last refresh
+    mutable shadows::CasterChanges casterChanges_;
+    std::vector<std::uint32_t> deformedObjects_; // ascending
     rhi::Device& device_;
     std::vector<std::unique_ptr<rhi::Texture>> textures_;
     std::vector<std::unique_ptr<rhi::Sampler>> samplers_; // one per texture

@@ -236,9 +236,12 @@ private:
     };
 
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
-    // The frame's casters: the scene's, drawn from rest vertices without caster skinning, one draw each without
-    // instancing.
-    void prepareCasters(const FrameDesc& frame);
+    // What the frame's casters are made with: drawn from rest vertices without caster skinning, one draw each
+    // without instancing (GpuScene::refresh).
+    GpuScene::CasterOptions casterOptions(const FrameDesc& frame) const;
+    // planShadows and render after GpuScene::refresh.
+    ShadowPlans planRefreshed(const scene::Camera& camera, const FrameDesc& frame) const;
+    FrameStats renderRefreshed(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
     FrameStats prepareFrame(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans& plans);
     std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
@@ -254,6 +257,8 @@ private:
 
     rhi::Device& device_;
     GpuScene gpuScene_;
+    // The directional planner's light-space caster boxes, kept from frame to frame (planning is const).
+    mutable shadows::LightSpaceCache lightSpace_;
     std::unique_ptr<GpuSkinning> skinning_; // poses deformed meshes on the GPU (render/src/skinning)
     bool casterSkinning_ = true;
     shadows::DirectionalShadowPass shadowPass_;
@@ -287,8 +292,6 @@ private:
     bool staticUpdateRequested_ = false;
     // This frame's draws (passes/LitDraws.hpp), shared by the prepass and every lit view.
     std::vector<LitDraw> litDraws_;
-    // This frame's shadow casters (GpuScene::casters), kept so that their storage is reused.
-    std::vector<shadows::ShadowCaster> casters_;
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<FrameGraph> graph_;
     std::unique_ptr<FrameState> state_; // what this frame's passes draw

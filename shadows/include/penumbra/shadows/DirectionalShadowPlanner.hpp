@@ -9,6 +9,7 @@
 #include "penumbra/shadows/CasterCulling.hpp"
 #include "penumbra/shadows/DirectionalCascadeFit.hpp"
 #include "penumbra/shadows/DirectionalShadowUniforms.hpp"
+#include "penumbra/shadows/LightSpaceCache.hpp"
 #include "penumbra/shadows/NormalOffset.hpp"
 #include "penumbra/shadows/ShadowAtlasLayout.hpp"
 #include "penumbra/shadows/ShadowCamera.hpp"
@@ -91,6 +92,13 @@ struct DepthFitInput {
     const DepthFitKept* kept = nullptr;
 };
 
+// Where the planner takes the casters' light-space boxes from: a cache kept by the caller, with the change log of its
+// caster list, or (no cache) boxes made anew.
+struct LightSpaceInput {
+    LightSpaceCache* cache = nullptr;
+    const CasterChanges* changes = nullptr;
+};
+
 // The caster pass's normal offset for cascade `cascade` of `light`: the lit pass's reach there (the cascade's
 // filter-sized texel diagonal times the light's normalBias) on the caster side, none on the receiver side.
 CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const ShadowedDirectionalLight& light,
@@ -106,6 +114,7 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
-                                             std::span<const Bounds> casterBounds, DepthFitInput depthFit = {});
+                                             std::span<const Bounds> casterBounds, DepthFitInput depthFit = {},
+                                             LightSpaceInput lightSpace = {});
 
 } // namespace penumbra::shadows

@@ -4,6 +4,7 @@
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shadows/Bounds.hpp"
+#include "penumbra/shadows/CasterChanges.hpp"
 #include "penumbra/shadows/CasterVolume.hpp"
 #include "penumbra/shadows/InstanceBatches.hpp"
 #include "penumbra/shadows/InstanceTransform.hpp"
@@ -13,6 +14,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -86,16 +88,22 @@ public:
 
     // Uploads the casters, their world boxes (casters[i]'s is bounds[i]) and the tiles' volumes, and makes the
     // buffers the results go to (instances(), draws(), drawCounts() hold from here on, for a frame graph to declare).
-    // `normalMatrices`: the instances carry their normal matrices (the caster-side normal offset reads them). Throws
-    // rhi::Error where the counts differ, for casters of a draw group that do not draw alike, and where one tile's
-    // instances exceed the device's storage range (Capabilities::maxStorageBufferRange).
+    // `normalMatrices`: the instances carry their normal matrices (the caster-side normal offset reads them). The
+    // casters stay in GPU storage from prepare to prepare: with `changes` (the log of the list the casters come from,
+    // GpuScene::casterChanges) only the casters changed since the last prepare are uploaded again, their models and
+    // boxes; everything is uploaded without it, where changes->since() says all, or where the count or normalMatrices
+    // differ. Throws rhi::Error where the counts differ, for casters of a draw group that do not draw alike, and where
+    // one tile's instances exceed the device's storage range (Capabilities::maxStorageBufferRange).
     void prepare(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
-                 std::span<const CasterVolume> volumes, bool normalMatrices);
+                 std::span<const CasterVolume> volumes, bool normalMatrices, const CasterChanges* changes = nullptr);
     // Records the dispatches of the last prepare() (outside passes).
     void dispatch(rhi::CommandList& commands);
     // prepare(), then dispatch().
     void record(rhi::CommandList& commands, std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
-                std::span<const CasterVolume> volumes, bool normalMatrices);
+                std::span<const CasterVolume> volumes, bool normalMatrices, const CasterChanges* changes = nullptr);
+
+    // The casters the last prepare uploaded (for tests): ascending disjoint ranges.
+    const std::vector<CasterRange>& uploaded() const { return uploaded_; }
 
     // The batches of the last record: batches().batches[b] is drawn by command tile * batches + b.
     const InstanceBatches& batches() const { return batches_; }
@@ -111,7 +119,15 @@ public:
 
 private:
     void reserve(std::uint64_t casters, std::uint64_t volumeBytes, std::uint64_t draws);
+    // Every caster's box, batch and transform into the scratch storage.
     void fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds, bool normalMatrices);
+    // The changed casters' boxes and transforms only (their batches stay).
+    void fillChanged(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds, bool normalMatrices,
+                     std::span<const CasterRange> changed);
+    // Every tile's draws, with no instances yet.
+    void fillDraws(std::span<const ShadowCaster> casters);
+    // The uploaded_ ranges of the casters and transforms.
+    void uploadCasters();
     void uploadTiles(std::span<const CasterVolume> volumes);
 
     rhi::Device& device_;
@@ -133,6 +149,16 @@ private:
         std::vector<InstanceTransform> transforms;
         std::vector<CulledDraw> draws;
     } scratch_;
+    // What the casters and transforms buffers hold: the generation of the changes they were uploaded at, the count
+    // and whether the transforms carry normal matrices; nullopt before the first upload or after a record that
+    // uploaded nothing.
+    struct Resident {
+        std::optional<std::uint64_t> generation;
+        std::uint32_t casters = 0;
+        bool normalMatrices = false;
+    };
+    std::optional<Resident> resident_;
+    std::vector<CasterRange> uploaded_;
     std::uint32_t casterCount_ = 0;
     std::uint32_t tileCount_ = 0;
     std::uint32_t tileSlots_ = 0;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <span>
+#include <limits>
 #include <vector>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -36,6 +37,9 @@ struct LightSpaceCasters {
     LightBasis basis;
     std::span<const Bounds> world; // caster i's world box
     std::vector<Bounds> light; // caster i's light-space box
+    // The least light-space depth of any caster (the nearest to the light), the largest float without casters:
+    // every cascade's soft shadow data asks for it (casterTopDepth), so it is found once per light.
+    float top = std::numeric_limits<float>::max();
 };
 
 // `world` must outlive the result, which refers to it.
