@@ -194,7 +194,7 @@ TEST_F(GpuCullingTest, MovedCasterIsUploadedAlone)
     const MovedCaster moved = moveCaster(true);
     ASSERT_EQ(moved.first.size(), 1u);
     EXPECT_EQ(moved.first[0].first, 0u);
-    EXPECT_EQ(moved.first[0].count, kCubes + 1) << "the ground and every cube";
+    EXPECT_EQ(moved.first[0].count, kCulledCubes + 1) << "the ground and every cube";
     EXPECT_TRUE(moved.unchanged.empty());
     EXPECT_EQ(moved.moved, (std::vector<shadows::CasterRange>{{moved.caster, 1}}));
     EXPECT_EQ(moved.bounds.min, moved.movedMin);
