@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+#include <span>
 
 #include <cmath>
 #include <random>
@@ -93,24 +94,40 @@ scene::Scene solidTestScene()
     return scene;
 }
 
-std::optional<Hit> bruteForceClosest(const scene::Scene& scene, const glm::vec3& origin, const glm::vec3& direction)
+// A triangle of the scene in world space.
+struct WorldTriangle {
+    std::uint32_t object;
+    std::uint32_t triangle;
+    glm::vec3 v[3];
+};
+
+// Every triangle of the scene, transformed once for all the rays.
+std::vector<WorldTriangle> worldTriangles(const scene::Scene& scene)
 {
-    std::optional<Hit> best;
+    std::vector<WorldTriangle> triangles;
     for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
         const scene::MeshData& mesh = scene.meshOf(object);
         for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
-            glm::vec3 v[3];
-            for (int k = 0; k < 3; ++k)
-                v[k] = glm::vec3(
-                    object.transform *
-                    glm::vec4(mesh.vertices[mesh.indices[3 * t + static_cast<std::uint32_t>(k)]].position, 1.0f));
-            const auto hit = intersectRayTriangle(origin, direction, v[0], v[1], v[2],
-                                                  best ? best->distance : std::numeric_limits<float>::infinity());
-            if (hit)
-                best =
-                    Hit{hit->distance, o, t, hit->barycentrics, glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]))};
+            WorldTriangle& world = triangles.emplace_back(WorldTriangle{o, t, {}});
+            for (std::uint32_t k = 0; k < 3; ++k)
+                world.v[k] =
+                    glm::vec3(object.transform * glm::vec4(mesh.vertices[mesh.indices[3 * t + k]].position, 1.0f));
         }
+    }
+    return triangles;
+}
+
+std::optional<Hit> bruteForceClosest(std::span<const WorldTriangle> triangles, const glm::vec3& origin,
+                                     const glm::vec3& direction)
+{
+    std::optional<Hit> best;
+    for (const WorldTriangle& t : triangles) {
+        const auto hit = intersectRayTriangle(origin, direction, t.v[0], t.v[1], t.v[2],
+                                              best ? best->distance : std::numeric_limits<float>::infinity());
+        if (hit)
+            best = Hit{hit->distance, t.object, t.triangle, hit->barycentrics,
+                       glm::normalize(glm::cross(t.v[1] - t.v[0], t.v[2] - t.v[0]))};
     }
     return best;
 }
@@ -119,6 +136,7 @@ TEST(RayCasterTest, BvhAgreesWithBruteForceOnRandomRays)
 {
     const scene::Scene scene = solidTestScene();
     const RayCaster caster(scene);
+    const std::vector<WorldTriangle> triangles = worldTriangles(scene);
     std::mt19937 random(1234);
     std::uniform_real_distribution<float> position(-12.0f, 12.0f);
     std::uniform_real_distribution<float> height(0.01f, 8.0f);
@@ -128,7 +146,7 @@ TEST(RayCasterTest, BvhAgreesWithBruteForceOnRandomRays)
         const glm::vec3 origin{position(random), height(random), position(random)};
         const glm::vec3 direction = glm::normalize(glm::vec3(gaussian(random), gaussian(random), gaussian(random)));
         const float maxDistance = (i % 4 == 0) ? 5.0f : std::numeric_limits<float>::infinity();
-        const auto expected = bruteForceClosest(scene, origin, direction);
+        const auto expected = bruteForceClosest(triangles, origin, direction);
         const bool expectedHit = expected && expected->distance <= maxDistance;
         const auto actual = caster.closestHit(origin, direction, maxDistance);
         ASSERT_EQ(actual.has_value(), expectedHit) << "ray " << i;
