@@ -175,23 +175,15 @@ void addLight(scene::Scene& scene, const LightOption& light)
         light);
 }
 
-std::optional<render::AmbientLight> parseAmbientOption(const std::string& text)
+std::optional<AmbientFields> ambientFields(const std::string& text)
 {
-    const auto fields = numberFields(text);
-    if (!fields || fields->size() < 2 || fields->size() > 3)
+    std::vector<std::string> parts;
+    std::stringstream stream(text);
+    for (std::string part; std::getline(stream, part, ':');)
+        parts.push_back(part);
+    if (parts.size() < 2 || parts.size() > 3 || text.back() == ':')
         return std::nullopt;
-    const std::optional<glm::vec3> color = vec3Of((*fields)[0]);
-    const std::optional<float> intensity = scalarOf((*fields)[1]);
-    const std::optional<glm::vec3> ground = fields->size() == 3 ? vec3Of((*fields)[2]) : std::nullopt;
-    if (!color || !intensity || (fields->size() == 3 && !ground))
-        return std::nullopt;
-    const render::AmbientLight ambient{*color, *intensity, ground};
-    try {
-        render::validate(ambient);
-    } catch (const rhi::Error&) {
-        return std::nullopt;
-    }
-    return ambient;
+    return AmbientFields{"[" + parts[0] + "]", parts[1], parts.size() == 3 ? "[" + parts[2] + "]" : "none"};
 }
 
 } // namespace penumbra::apps

@@ -33,7 +33,14 @@ void addLight(scene::Scene& scene, const LightOption& light);
 // hemisphere (render::AmbientLight).
 inline constexpr const char* kAmbientSyntax = "r,g,b:intensity[:groundR,groundG,groundB]";
 
-// nullopt for text that does not follow the syntax or is out of render::validate's range.
-std::optional<render::AmbientLight> parseAmbientOption(const std::string& text);
+// --ambient's parts as the render settings' fields ambient.color, ambient.intensity and ambient.ground, each written
+// as a settings file holds it (ground `none` without a third part), for the settings table to read and check.
+struct AmbientFields {
+    std::string color;
+    std::string intensity;
+    std::string ground;
+};
+// nullopt for text of other than two or three parts.
+std::optional<AmbientFields> ambientFields(const std::string& text);
 
 } // namespace penumbra::apps

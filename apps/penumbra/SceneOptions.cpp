@@ -43,6 +43,22 @@ std::string validateScene(const std::string& scene)
     return fmt::format("'{}' is neither a built-in scene ({}) nor a .gltf or .glb file", scene, kSceneNames);
 }
 
+// --ambient over `settings`: its parts are the ambient fields, which the settings table reads and checks as it does a
+// settings file's. Throws rhi::Error naming the syntax, or the field and what it allows.
+void applyAmbientOption(RenderSettings& settings, const std::string& text)
+{
+    const std::optional<AmbientFields> fields = ambientFields(text);
+    if (!fields)
+        throw rhi::Error(fmt::format("'{}' is not {}", text, kAmbientSyntax));
+    try {
+        applySettingsFieldValues(settings, {{"ambient.color", fields->color},
+                                            {"ambient.intensity", fields->intensity},
+                                            {"ambient.ground", fields->ground}});
+    } catch (const rhi::Error& e) {
+        throw rhi::Error(fmt::format("'{}' ({}): {}", text, kAmbientSyntax, e.what()));
+    }
+}
+
 std::string validateCamera(const std::string& camera)
 {
     if (camera.find(':') != std::string::npos && !parseLookAt(camera))
@@ -116,10 +132,13 @@ void addSceneOptions(CLI::App& command, SceneOptions& options)
                                 kAmbientSyntax))
         ->check(CLI::Validator(
             [](std::string& s) {
-                return parseAmbientOption(s) ? std::string()
-                                             : fmt::format("'{}' is not {} with colours of at least 0 and an intensity "
-                                                           "of 0 to {}",
-                                                           s, kAmbientSyntax, render::kMaxAmbientIntensity);
+                RenderSettings probe;
+                try {
+                    applyAmbientOption(probe, s);
+                    return std::string();
+                } catch (const rhi::Error& e) {
+                    return std::string(e.what());
+                }
             },
             "AMBIENT"));
     command
@@ -406,7 +425,7 @@ render::FrameDesc frameDesc(const SceneOptions& options, const scene::Scene& sce
         for (const std::string_view path : loadRenderSettings(options.settings, settings))
             ambientGiven = ambientGiven || path.starts_with("ambient.");
     if (!options.ambient.empty())
-        settings.ambient = parseAmbientOption(options.ambient).value();
+        applyAmbientOption(settings, options.ambient);
     applySettingsFieldValues(settings, options.settingsFields);
     applyBake(options, settings.shadows);
     render::FrameDesc frame;

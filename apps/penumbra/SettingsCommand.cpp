@@ -1,5 +1,6 @@
-// penumbra settings: the default settings file, or with --markdown the settings reference (docs/settings.md), both
-// printed from the code's own declarations so that the reference cannot drift from what the parsers accept.
+// penumbra settings: the default settings file (shadow and render-level fields), or with --markdown the settings
+// reference (docs/settings.md), both printed from the code's own declarations so that the reference cannot drift from
+// what the parsers accept.
 #include "Commands.hpp"
 #include "RenderSettings.hpp"
 
@@ -38,7 +39,8 @@ void addSettingsCommand(CLI::App& app)
 {
     auto* command =
         app.add_subcommand("settings",
-                           "Print the default shadow settings as a --settings file, or the reference table");
+                           "Print the default settings (shadow and render-level) as a --settings file, or the "
+                           "reference table");
     auto markdown = std::make_shared<bool>(false);
     command->add_flag("--markdown", *markdown,
                       "Print every settings field with its default and allowed values, as Markdown");
@@ -46,7 +48,7 @@ void addSettingsCommand(CLI::App& app)
         if (*markdown)
             printMarkdown();
         else
-            fmt::print("{}", shadows::toJson(shadows::ShadowSettings{}));
+            fmt::print("{}", renderSettingsTable().toJson(RenderSettings{}));
     });
 }
 

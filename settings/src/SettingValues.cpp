@@ -42,7 +42,9 @@ std::string joinedNumbers(const std::vector<double>& numbers) { return fmt::form
 SettingValue parseSettingText(const SettingsFieldInfo& field, std::string_view text, std::string_view source)
 {
     nlohmann::json value = std::string(text);
-    if (field.kind != SettingValueKind::Name && field.kind != SettingValueKind::Text) {
+    if (field.optional && text == "none") {
+        value = nullptr; // settingValueText's word for an optional field left out
+    } else if (field.kind != SettingValueKind::Name && field.kind != SettingValueKind::Text) {
         value = nlohmann::json::parse(text, nullptr, false);
         if (value.is_discarded())
             throw rhi::Error(fmt::format("{}: '{}' is not a value, allowed {}", field.path, text, field.allowed));

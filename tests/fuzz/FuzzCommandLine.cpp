@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
     case 1:
-        penumbra::apps::parseAmbientOption(text);
+        penumbra::apps::ambientFields(text);
         break;
     case 2:
         if (const auto parsed = penumbra::apps::parseSize(text);

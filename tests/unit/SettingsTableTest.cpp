@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <gtest/gtest.h>
+#include <optional>
 #include <string>
 
 namespace penumbra::settings {
@@ -18,6 +19,7 @@ struct ToySettings {
     std::uint32_t size = 256;
     ToyMode mode = ToyMode::Slow;
     glm::vec3 tint{1.0f};
+    std::optional<glm::vec3> ground;
 };
 
 const SettingsTable<ToySettings>& toyTable()
@@ -34,6 +36,9 @@ const SettingsTable<ToySettings>& toyTable()
         field<ToySettings>(
             "tint", {SettingRangeKind::AtLeast, 0}, "3 numbers, each at least 0", "a colour",
             [](auto& s) -> auto& { return s.tint; }),
+        field<ToySettings>(
+            "ground", {SettingRangeKind::AtLeast, 0}, "3 numbers, each at least 0", "an optional colour",
+            [](auto& s) -> auto& { return s.ground; }),
     });
     return table;
 }
@@ -74,6 +79,7 @@ TEST(SettingsTable, JsonRoundTripKeepsEveryField)
     toyTable().set(settings, "look.size", "512");
     toyTable().set(settings, "look.mode", "fast");
     toyTable().set(settings, "tint", "[0.5, 0.25, 2]");
+    toyTable().set(settings, "ground", "[0, 0.5, 1]");
     const std::string json = toyTable().toJson(settings);
     ToySettings read;
     const std::vector<std::string_view> given = toyTable().read(json, "round-trip", read);
@@ -82,8 +88,23 @@ TEST(SettingsTable, JsonRoundTripKeepsEveryField)
     EXPECT_EQ(read.size, 512u);
     EXPECT_EQ(read.mode, ToyMode::Fast);
     EXPECT_EQ(read.tint, glm::vec3(0.5f, 0.25f, 2.0f));
+    EXPECT_EQ(read.ground, glm::vec3(0.0f, 0.5f, 1.0f));
     EXPECT_EQ(toyTable().toJson(read), json);
     EXPECT_EQ(toyTable().text(read, "tint"), "[0.5, 0.25, 2]");
+}
+
+// An optional field left out reads `none` (text()), and set() takes that word back (the command line's --ambient
+// without a ground colour gives it).
+TEST(SettingsTable, AnOptionalFieldLeftOutIsSetFromTheWordItIsWrittenAs)
+{
+    ToySettings settings;
+    toyTable().set(settings, "ground", "[0.5, 0.5, 0.5]");
+    EXPECT_EQ(settings.ground, glm::vec3(0.5f));
+    EXPECT_EQ(toyTable().text(ToySettings{}, "ground"), "none");
+    toyTable().set(settings, "ground", "none");
+    EXPECT_FALSE(settings.ground.has_value());
+    EXPECT_NE(toyError([&] { toyTable().set(settings, "tint", "none"); }), "no error")
+        << "a field that is not optional takes no `none`";
 }
 
 } // namespace
