@@ -3,6 +3,7 @@
 #include "penumbra/rhi/Error.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <fmt/format.h>
 #include <limits>
@@ -34,6 +35,13 @@ double jsonInteger(const nlohmann::json& value, const SettingsFieldInfo& field, 
     if (i < 0 || i > std::numeric_limits<std::uint32_t>::max())
         refuseJsonValue(field, source, fmt::format("{} is out of range", value.dump()));
     return static_cast<double>(i);
+}
+
+// The float a field holds, as the double nearest its shortest decimal text: a file says 0.3, not the float's exact
+// 0.30000001192092896, and reads back to the same float.
+double shortestFloat(double number)
+{
+    return std::strtod(fmt::format("{}", static_cast<float>(number)).c_str(), nullptr);
 }
 
 } // namespace
@@ -71,14 +79,13 @@ nlohmann::ordered_json jsonOfSettingValue(const SettingsFieldInfo& field, const 
 {
     switch (field.kind) {
     case SettingValueKind::Number:
-        return static_cast<float>(value.numbers[0]);
+        return shortestFloat(value.numbers[0]);
     case SettingValueKind::Integer:
         return static_cast<std::uint32_t>(value.numbers[0]);
     case SettingValueKind::Numbers3:
         if (value.numbers.empty())
             return nullptr;
-        return {static_cast<float>(value.numbers[0]), static_cast<float>(value.numbers[1]),
-                static_cast<float>(value.numbers[2])};
+        return {shortestFloat(value.numbers[0]), shortestFloat(value.numbers[1]), shortestFloat(value.numbers[2])};
     case SettingValueKind::Name:
         for (const SettingName& entry : field.names)
             if (entry.value == static_cast<int>(value.numbers[0]))
