@@ -1,5 +1,6 @@
 #include "GltfFile.hpp"
 
+#include "GltfHugePages.hpp"
 #include "GltfImages.hpp"
 #include "GltfLayout.hpp"
 #include "GltfLimits.hpp"
@@ -227,6 +228,8 @@ Document readDocument(const std::string& name, std::span<const std::uint8_t> byt
     tinygltf::TinyGLTF loader;
     std::string imageFailure;
     loader.SetImageLoader(stashImageData, &imageFailure);
+    loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readWholeFileHugePages,
+                           &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string error, warning;
     const std::string base = folder.string();

@@ -1,10 +1,10 @@
 #include "GltfPng.hpp"
 
+#include "GltfHugePages.hpp"
 #include "GltfImages.hpp"
 
 #include <fmt/format.h>
 #include <png.h>
-#include <sys/mman.h>
 
 #include <csetjmp>
 #include <cstring>
@@ -103,22 +103,6 @@ bool readPngRows(png_structp png, png_infop info, unsigned char* rgba, png_uint_
     return true;
 }
 
-// `size` bytes whose pages the kernel may back with transparent huge pages (madvise(2), MADV_HUGEPAGE, for systems
-// that leave them to madvise): a fresh 16 MiB picture otherwise takes 4096 page faults, and page faults were a third
-// of loading a dozen 2048 x 2048 textures on a virtual machine. A hint: where it fails, nothing changes.
-std::vector<unsigned char> freshPicture(std::size_t size)
-{
-    std::vector<unsigned char> bytes;
-    bytes.reserve(size);
-    constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
-    const auto first = reinterpret_cast<std::uintptr_t>(bytes.data());
-    const std::uintptr_t begin = (first + kHugePage - 1) & ~(kHugePage - 1), end = (first + size) & ~(kHugePage - 1);
-    if (end > begin)
-        madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-    bytes.resize(size);
-    return bytes;
-}
-
 } // namespace
 
 PngPicture decodePng(std::span<const std::uint8_t> bytes)
@@ -134,7 +118,7 @@ PngPicture decodePng(std::span<const std::uint8_t> bytes)
     if (png_get_rowbytes(reader.png, reader.info) != std::size_t(width) * 4)
         throw std::runtime_error(fmt::format("does not decode: libpng gives {} bytes a row, not RGBA8's {}",
                                              png_get_rowbytes(reader.png, reader.info), std::size_t(width) * 4));
-    PngPicture picture{width, height, freshPicture(std::size_t(width) * height * 4)};
+    PngPicture picture{width, height, hugePageBytes(std::size_t(width) * height * 4)};
     if (!readPngRows(reader.png, reader.info, picture.rgba.data(), width, height))
         throw std::runtime_error(fmt::format("does not decode: libpng: {}", source.message));
     return picture;

@@ -17,7 +17,7 @@
 namespace penumbra::vulkan {
 
 VulkanDevice::VulkanDevice(const rhi::DeviceDesc& desc)
-    : ValidatingDevice(desc.validateUsage), context_(std::make_shared<Context>(desc))
+    : ValidatingDevice(desc.validateUsage), context_(std::make_shared<Context>(desc)), staging_(context_)
 {
     if (desc.pipelineCache)
         pipelineCache_.emplace(context_, desc.pipelineCache);
@@ -36,7 +36,8 @@ std::unique_ptr<rhi::Texture> VulkanDevice::apiCreateTexture(const rhi::TextureD
 void VulkanDevice::apiWriteTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
                                    std::span<const std::byte> data)
 {
-    vulkanObject<VulkanTexture>(texture, "writeTexture: the texture").upload(layer, level, data);
+    vulkanObject<VulkanTexture>(texture, "writeTexture: the texture")
+        .upload(layer, level, data, staging_.reserve(data.size()));
 }
 
 std::unique_ptr<rhi::Sampler> VulkanDevice::apiCreateSampler(const rhi::SamplerDesc& desc)

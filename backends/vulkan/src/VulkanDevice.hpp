@@ -4,6 +4,7 @@
 
 #include "VulkanContext.hpp"
 #include "VulkanPipelineCache.hpp"
+#include "VulkanStaging.hpp"
 
 #include "penumbra/rhi/ValidatingDevice.hpp"
 
@@ -46,6 +47,7 @@ private:
     void makePlaceholders(bool listsLayouts);
 
     std::shared_ptr<Context> context_;
+    StagingBuffer staging_;
     // With DeviceDesc::pipelineCache; declared after context_, so it stores its data before the context can go.
     std::optional<VulkanPipelineCache> pipelineCache_;
     std::unique_ptr<rhi::Buffer> placeholderBuffer_;

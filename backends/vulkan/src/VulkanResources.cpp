@@ -6,6 +6,7 @@
 #include "penumbra/rhi/BackendSupport.hpp"
 #include "penumbra/rhi/ValidationRules.hpp"
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/HugePages.hpp"
 #include "penumbra/rhi/MemorySize.hpp"
 
 #include <algorithm>
@@ -76,6 +77,22 @@ VkImageUsageFlags imageUsage(const rhi::TextureDesc& desc)
     return usage;
 }
 
+// A CPU device's (lavapipe's) device memory is process memory that vkMapMemory returns as it is: the hint reaches the
+// pages its copies into the image first touch. A large texture only; other devices' memory is not process memory.
+void adviseHugePagesOf(const Context& context, VkDeviceMemory memory, const VkMemoryAllocateInfo& alloc)
+{
+    constexpr VkDeviceSize kLargeTexture = VkDeviceSize(4) << 20;
+    VkPhysicalDeviceMemoryProperties properties;
+    vkGetPhysicalDeviceMemoryProperties(context.physicalDevice, &properties);
+    if (alloc.allocationSize < kLargeTexture ||
+        !(properties.memoryTypes[alloc.memoryTypeIndex].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT))
+        return;
+    void* mapped = nullptr;
+    check(vkMapMemory(context.device, memory, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
+    rhi::adviseHugePages(mapped, alloc.allocationSize);
+    vkUnmapMemory(context.device, memory);
+}
+
 } // namespace
 
 MappedBuffer::MappedBuffer(std::shared_ptr<Context> context, VkDeviceSize size, VkBufferUsageFlags usage)
@@ -143,6 +160,8 @@ VulkanTexture::VulkanTexture(std::shared_ptr<Context> context, const rhi::Textur
                                         fmt::format("vkAllocateMemory of {} for {}", rhi::byteSize(requirements.size),
                                                     rhi::describeAllocation(desc)));
     check(vkBindImageMemory(device, image_.get(), memory_.get(), 0), "vkBindImageMemory");
+    if (context_->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
+        adviseHugePagesOf(*context_, memory_.get(), alloc);
 
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     viewInfo.image = image_.get();
@@ -203,9 +222,9 @@ void VulkanTexture::transition(VkCommandBuffer commandBuffer, std::uint32_t laye
                     from, to);
 }
 
-void VulkanTexture::upload(std::uint32_t layer, std::uint32_t level, std::span<const std::byte> data)
+void VulkanTexture::upload(std::uint32_t layer, std::uint32_t level, std::span<const std::byte> data,
+                           MappedBuffer& staging)
 {
-    MappedBuffer staging(context_, data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     std::memcpy(staging.data(), data.data(), data.size());
     context_->runOnce([&](VkCommandBuffer commandBuffer) {
         transition(commandBuffer, layer, restingLayout_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);

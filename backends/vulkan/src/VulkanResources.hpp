@@ -65,7 +65,8 @@ public:
     UniqueImageView createAttachmentView(std::uint32_t layer) const;
     // Moves every level of one layer (or of all with layer = ~0u) between layouts, waiting for all earlier work.
     void transition(VkCommandBuffer commandBuffer, std::uint32_t layer, VkImageLayout from, VkImageLayout to) const;
-    void upload(std::uint32_t layer, std::uint32_t level, std::span<const std::byte> data);
+    // Copies `data` into one level of one layer through `staging` (at least data.size() bytes), and waits.
+    void upload(std::uint32_t layer, std::uint32_t level, std::span<const std::byte> data, MappedBuffer& staging);
 
 private:
     std::shared_ptr<Context> context_;
