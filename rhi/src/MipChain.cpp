@@ -6,6 +6,7 @@
 #include "penumbra/rhi/ColorSpace.hpp"
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/rhi/HugePages.hpp"
 
 #include <algorithm>
 #include <array>
@@ -199,6 +200,7 @@ MipLevels generateMipLevels(Format format, std::uint32_t width, std::uint32_t he
         made.offsets_.push_back(made.offsets_.back() +
                                 std::size_t(mipExtent(width, level)) * mipExtent(height, level) * texelSize(format));
     made.bytes_ = std::make_unique_for_overwrite<std::byte[]>(made.offsets_.back());
+    adviseHugePages(made.bytes_.get(), made.offsets_.back()); // 5.3 MiB for a 2048 x 2048 RGBA8 texture
     // With a cutoff, each level's alpha is scaled once the whole level is known: its alphas wait here.
     std::vector<std::vector<double>> alphas(alphaCutoff ? levels : 0);
     for (std::uint32_t level = 1; level < alphas.size(); ++level)
