@@ -36,8 +36,8 @@ std::unique_ptr<rhi::Texture> VulkanDevice::apiCreateTexture(const rhi::TextureD
 void VulkanDevice::apiWriteTexture(rhi::Texture& texture, std::uint32_t layer, std::uint32_t level,
                                    std::span<const std::byte> data)
 {
-    vulkanObject<VulkanTexture>(texture, "writeTexture: the texture")
-        .upload(layer, level, data, staging_.reserve(data.size()));
+    auto& target = vulkanObject<VulkanTexture>(texture, "writeTexture: the texture");
+    staging_.use(data.size(), [&](MappedBuffer& staging) { target.upload(layer, level, data, staging); });
 }
 
 std::unique_ptr<rhi::Sampler> VulkanDevice::apiCreateSampler(const rhi::SamplerDesc& desc)

@@ -4,15 +4,20 @@
 
 namespace penumbra::vulkan {
 
-MappedBuffer& StagingBuffer::reserve(VkDeviceSize size)
+void StagingBuffer::use(VkDeviceSize size, const std::function<void(MappedBuffer&)>& copy)
 {
-    if (!buffer_ || size_ < size) {
-        buffer_.reset();
-        buffer_.emplace(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-        size_ = size;
-        rhi::adviseHugePages(buffer_->data(), size);
+    if (size > kKeptBytes) {
+        MappedBuffer once(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        rhi::adviseHugePages(once.data(), size);
+        copy(once);
+        return;
     }
-    return *buffer_;
+    if (!kept_ || keptSize_ < size) {
+        kept_.emplace(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        keptSize_ = size;
+        rhi::adviseHugePages(kept_->data(), size);
+    }
+    copy(*kept_);
 }
 
 } // namespace penumbra::vulkan
