@@ -269,7 +269,7 @@ Document readDocument(const std::filesystem::path& path, std::vector<std::string
     if (size > kMaxFileBytes)
         throw GltfError(fmt::format("{}: {} bytes, over the limit of {}", name, size, kMaxFileBytes));
     std::ifstream in(path, std::ios::binary);
-    std::vector<std::uint8_t> bytes(size);
+    std::vector<std::uint8_t> bytes = hugePageBytes(std::size_t(size)); // a .glb holds its buffers and pictures
     if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
         throw GltfError(fmt::format("{}: cannot read the file", name));
     return readDocument(name, bytes, path.parent_path(), notes, missingTextures, progress);

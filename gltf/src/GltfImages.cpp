@@ -1,5 +1,6 @@
 #include "GltfImages.hpp"
 
+#include "GltfHugePages.hpp"
 #include "GltfPng.hpp"
 
 #include <fmt/format.h>
@@ -73,9 +74,11 @@ struct StbFree {
 // a missing alpha opaque. Done here, on the decoding threads, rather than later on one.
 std::vector<unsigned char> rgba8Of(const std::uint8_t* pixels, std::size_t texels, int channels)
 {
-    if (channels == 4)
-        return std::vector<unsigned char>(pixels, pixels + texels * 4);
-    std::vector<unsigned char> rgba(texels * 4);
+    std::vector<unsigned char> rgba = hugePageBytes(texels * 4);
+    if (channels == 4) {
+        std::copy(pixels, pixels + texels * 4, rgba.begin());
+        return rgba;
+    }
     const auto count = std::size_t(channels);
     for (std::size_t t = 0; t < texels; ++t) {
         const std::uint8_t* texel = pixels + t * count;
