@@ -1,37 +1,36 @@
 #version 450
-// Contact shadows (penumbra::render::ContactShadowPass): from every other pixel's surface (half resolution),
-// rebuilt from the depth prepass through the inverse view-projection as the screen-space collection does, a short
-// march towards each directional light, and towards the position of each of a few spot and point lights chosen per
-// frame (penumbra::render::contactLocalLights), through the same depth buffer; a sample whose ray point lies behind
-// the depth there, by less than the surface's assumed thickness, is an occluder the shadow map may have missed (its
-// texels, its biases). One bit per light; the lit pass upsamples them and takes the minimum with the map's
-// visibility on the light's direct term. After Bend Studio's "Bend Studio's screen space shadows" (Graham Aldridge,
-// SIGGRAPH 2023 Advances) and Panos Karabelas's "Screen space shadows" (2019): steps along the light, a thickness
-// band behind each depth sample, a per-pixel jitter of the first step. Screen and depth conventions are the RHI's
-// (Conventions::clipToTexture in worldToTexture maps clip space to the texture coordinates of any render target,
-// row 0 at the top; penumbraWindowDepthToNdc undoes the depth range), so no backend flips anything here.
+// Contact shadows (penumbra::render::ContactShadowPass): from every other pixel's surface (half resolution), rebuilt
+// from its view depth along the ray through the pixel's centre, a short march towards each directional light, and
+// towards the position of each of a few spot and point lights chosen per frame (penumbra::render::contactLocalLights),
+// through the same view depths; a sample whose ray point lies behind the surface there, by less than the surface's
+// assumed thickness, is an occluder the shadow map may have missed (its texels, its biases). One bit per light; the
+// lit pass upsamples them and takes the minimum with the map's visibility on the light's direct term. After Bend
+// Studio's "Bend Studio's screen space shadows" (Graham Aldridge, SIGGRAPH 2023 Advances) and Panos Karabelas's
+// "Screen space shadows" (2019): steps along the light, a thickness band behind each depth sample, a per-pixel jitter
+// of the first step. The march reads the prepass's view depth (view_depth.glsl), not the depth buffer: every depth
+// convention rounds the depth buffer differently, and a sample within that rounding of the bias would decide
+// otherwise in each configuration. Screen conventions are the RHI's (Conventions::clipToTexture in worldToTexture maps
+// clip space to the texture coordinates of any render target, row 0 at the top; its z row is unused here), so no
+// backend flips anything.
 
 #include "contact_constants.glsl" // the block Contact (penumbra::render::ContactShadowUniforms) and the bindings
 #include "material.glsl"
 
-layout(binding = PENUMBRA_BINDING_CONTACT_DEPTH) uniform sampler2D sceneDepth;
+// The prepass's view depth (view_depth.glsl), metres along the camera's forward; 0 where no surface was drawn.
+layout(binding = PENUMBRA_BINDING_CONTACT_DEPTH) uniform sampler2D sceneViewDepth;
 
 layout(location = 0) out vec4 outContact;
 
-// View depth (metres along the camera's forward) of a depth-buffer value: z_ndc = b / d - a for the camera's
-// projection (rhi::Conventions::viewDepth), reversed or not.
-float viewDepthOf(float windowDepth)
+float viewDepthAt(ivec2 pixel)
 {
-    return contact.depthToView.y / (penumbraWindowDepthToNdc(windowDepth) + contact.depthToView.x);
+    return texelFetch(sceneViewDepth, clamp(pixel, ivec2(0), ivec2(contact.targetSize.xy) - 1), 0).r;
 }
 
-float depthAt(ivec2 pixel)
-{
-    return texelFetch(sceneDepth, clamp(pixel, ivec2(0), ivec2(contact.targetSize.xy) - 1), 0).r;
-}
+// 1 / view depth, 0 where no surface was drawn (infinitely far, as the depth buffer's far value).
+float inverseViewDepth(float depth) { return depth > 0.0 ? 1.0 / depth : 0.0; }
 
 // How far a depth moves over one pixel, the smaller one-sided difference on each axis (so that a neighbour across a
-// silhouette does not count), for the surface's window depths `here` and its four neighbours.
+// silhouette does not count), for the surface's depths `here` and its four neighbours.
 float stepPerPixel(float here, float left, float right, float up, float down)
 {
     return max(min(abs(here - left), abs(here - right)), min(abs(here - up), abs(here - down)));
@@ -51,16 +50,16 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
         const vec4 projected = mix(startTexture, endTexture, t);
         const float rayDepth = mix(startDepth, endDepth, t);
         // Behind the near plane or off the picture: the depth buffer knows nothing further along.
-        if (rayDepth <= contact.depthToView.z || projected.w <= 0.0)
+        if (rayDepth <= contact.nearPlane || projected.w <= 0.0)
             break;
         const vec2 uv = projected.xy / projected.w;
         if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0))))
             break;
         const ivec2 pixel = ivec2(uv * contact.targetSize.xy);
-        const float depth = texelFetch(sceneDepth, pixel, 0).r;
-        if (pixel == start || depth == PENUMBRA_FAR_DEPTH)
+        const float depth = texelFetch(sceneViewDepth, pixel, 0).r;
+        if (pixel == start || depth <= 0.0)
             continue;
-        const float behind = rayDepth - viewDepthOf(depth);
+        const float behind = rayDepth - depth;
         if (behind > bias && behind < bias + contact.thickness)
             return true;
     }
@@ -68,28 +67,32 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
 }
 
 // Half resolution: texel q marches from the full-resolution pixel 2q and keeps what the lit pass needs to hand its
-// answer to the pixels around it (contact_shadows_lit.glsl): that pixel's window depth, its depth step per pixel,
-// a bit per directional light and a bit per spot or point light that the march found occluded.
+// answer to the pixels around it (contact_shadows_lit.glsl): that pixel's inverse view depth, its step per pixel, a
+// bit per directional light and a bit per spot or point light that the march found occluded.
 void main()
 {
     const ivec2 pixel = 2 * ivec2(gl_FragCoord.xy);
-    const float windowDepth = depthAt(pixel);
-    outContact = vec4(windowDepth, 0.0, 0.0, 0.0);
-    if (windowDepth == PENUMBRA_FAR_DEPTH)
+    const float depth = viewDepthAt(pixel);
+    outContact = vec4(depth, 0.0, 0.0, 0.0);
+    if (depth <= 0.0)
         return;
     const vec2 centre = vec2(pixel) + 0.5;
     const vec2 ndc = penumbraFragCoordToNdc(centre, contact.targetSize.xy);
-    const vec4 world = contact.clipToWorld * vec4(ndc, penumbraWindowDepthToNdc(windowDepth), 1.0);
-    const vec3 position = world.xyz / world.w;
-    const float left = depthAt(pixel - ivec2(1, 0)), right = depthAt(pixel + ivec2(1, 0));
-    const float up = depthAt(pixel - ivec2(0, 1)), down = depthAt(pixel + ivec2(0, 1));
-    outContact.y = stepPerPixel(windowDepth, left, right, up, down);
+    const vec3 position = contact.cameraPosition.xyz +
+                          depth * (contact.cameraForward.xyz + ndc.x * contact.viewRayRight.xyz +
+                                   ndc.y * contact.viewRayUp.xyz);
     // A pixel's worth of the surface's own view depth slope (a depth sample on the starting surface lies off the
-    // ray's own projection by up to a pixel, and must not read as an occluder), and a relative floor for the depth's
+    // ray's own projection by up to a pixel, and must not read as an occluder), and a relative floor for the depths'
     // rounding.
-    const float depth = viewDepthOf(windowDepth);
-    const float bias = stepPerPixel(depth, viewDepthOf(left), viewDepthOf(right), viewDepthOf(up), viewDepthOf(down)) +
-                       1e-3 * depth;
+    const float left = viewDepthAt(pixel - ivec2(1, 0)), right = viewDepthAt(pixel + ivec2(1, 0));
+    const float up = viewDepthAt(pixel - ivec2(0, 1)), down = viewDepthAt(pixel + ivec2(0, 1));
+    const float bias = stepPerPixel(depth, left, right, up, down) + 1e-3 * depth;
+    // For the upsampling, the inverse view depth (gl_FragCoord.w there), which is linear in screen space as window
+    // depth is: on a plane the odd pixel between two marched ones lies exactly between them, and a step per pixel
+    // measures the plane alike on both sides.
+    const float inverse = 1.0 / depth;
+    outContact.xy = vec2(inverse, stepPerPixel(inverse, inverseViewDepth(left), inverseViewDepth(right),
+                                               inverseViewDepth(up), inverseViewDepth(down)));
     const float jitter = 0.5 + 0.5 * interleavedGradientNoise(centre);
     int occluded = 0;
     for (int i = 0; i < contact.lightCount; ++i)

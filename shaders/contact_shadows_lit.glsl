@@ -7,7 +7,7 @@
 // pixel must not take the contact shadow of the surface behind or in front).
 layout(binding = PENUMBRA_BINDING_CONTACT_SHADOWS) uniform sampler2D contactShadowTexture;
 
-// The march ran at half resolution, texel q from pixel 2q (x: its window depth, y: that depth's step per pixel,
+// The march ran at half resolution, texel q from pixel 2q (x: its inverse view depth, y: its step per pixel,
 // z: a bit per occluded directional light, w: a bit per occluded contact local light). A pixel takes the answer of
 // the marched pixel within one pixel of it on each axis (1, 2 or 4 of them) whose depth is nearest its own, if that
 // one lies on its surface (within two of its steps per pixel, rounding aside), and none (lit) otherwise:
@@ -23,14 +23,15 @@ ivec2 contactShadows()
     const ivec2 pixel = ivec2(gl_FragCoord.xy);
     const ivec2 low = pixel >> 1;
     const ivec2 high = min((pixel + 1) >> 1, textureSize(contactShadowTexture, 0) - 1);
-    const float depth = gl_FragCoord.z;
+    // The inverse view depth, 1 / w_c (view_depth.glsl): the same in every depth convention.
+    const float depth = gl_FragCoord.w;
     float nearest = -1.0;
     ivec2 occluded = ivec2(0);
     for (int k = 0; k < 4; ++k) {
         const ivec2 texel = ivec2(k % 2 == 0 ? low.x : high.x, k < 2 ? low.y : high.y);
         const vec4 marched = texelFetch(contactShadowTexture, texel, 0);
         const float apart = abs(marched.x - depth);
-        if ((nearest < 0.0 || apart < nearest) && apart <= 2.0 * marched.y + 1e-6 * max(abs(depth), 1e-3)) {
+        if ((nearest < 0.0 || apart < nearest) && apart <= 2.0 * marched.y + 1e-6 * depth) {
             nearest = apart;
             occluded = ivec2(marched.zw);
         }

@@ -55,7 +55,7 @@ void prepareContactShadows(rhi::Device& device, const FrameDesc& frame, std::uni
 {
     if (!contact)
         contact = std::make_unique<ContactShadowPass>(device);
-    contact->prepare(frame.width, frame.height);
+    contact->prepare(frame.width, frame.height, frame.shadowPath == ShadowPath::ScreenSpace);
 }
 
 void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& plans)
@@ -93,7 +93,8 @@ void SceneRenderer::prepareTargets(const FrameDesc& frame, const ShadowPlans& pl
         depthReduction_ = std::make_unique<DepthReduction>(device_);
     if (contact)
         prepareContactShadows(device_, frame, contact_);
-    if ((depthFit || contact) && frame.msaa > 1 && !singleSampledPrepass_)
+    // With contact shadows, theirs (ContactShadowPass::prepass), which writes the view depth too.
+    if (depthFit && !contact && frame.msaa > 1 && !singleSampledPrepass_)
         singleSampledPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1);
     const bool firstScreenSpace = frame.shadowPath == ShadowPath::ScreenSpace && !screenSpace_;
     if (firstScreenSpace) {
@@ -139,8 +140,10 @@ void SceneRenderer::importResources(const FrameDesc& frame)
         graph.importTexture(frame::kReceiverPositionDy, screenSpace_->positionDy());
         graph.importTexture(frame::kScreenSpaceShadows, screenSpace_->shadows(), state.screenSpace);
     }
-    if (contact_)
+    if (contact_) {
         graph.importTexture(frame::kContactShadows, contact_->shadows());
+        graph.importTexture(frame::kContactViewDepth, contact_->viewDepth());
+    }
     if (frame.msaa > 1)
         createMultisampledTargets(graph, frame);
     for (const UserTexture& texture : userTextures_)

@@ -315,10 +315,17 @@ void SceneRenderer::fillFrameBlocks(const scene::Camera& camera, const FrameDesc
     state.environment = environment_.get();
     state.litFrameUniforms = frameUniforms(camera, frame, clusters);
     state.litFrame = uniforms_.push(state.litFrameUniforms);
-    if (state.contact)
-        state.contactUniforms =
-            uniforms_.push(contactShadowUniforms(device_.conventions(), camera, frame, state.litFrameUniforms,
-                                                 gpuScene_.scene(), contactLights));
+    if (state.contact) {
+        const ContactShadowUniforms contact =
+            contactShadowUniforms(device_.conventions(), camera, frame, state.litFrameUniforms, gpuScene_.scene(),
+                                  contactLights);
+        // No light to march towards: the frame skips the pass (a full-screen pass costs a software rasterizer a
+        // fixed part before it marches at all, docs/notes/2026-12-07-contact-parity-cost.md), the view depth and the
+        // lit pass's upsampling, whose answer would be lit everywhere.
+        state.contact = contact.lightCount > 0 || contact.localLightCount > 0;
+        if (state.contact)
+            state.contactUniforms = uniforms_.push(contact);
+    }
     if (frame.visibilityOf)
         state.visibilityLight = litLightIndex(*frame.visibilityOf);
     state.features = frameShaderFeatures(state.litFrameUniforms, plan_.uniforms, localPlan_, staticShadows_->plan());

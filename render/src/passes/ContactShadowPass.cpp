@@ -1,7 +1,5 @@
 #include "ContactShadowPass.hpp"
 
-#include "DepthPrepass.hpp"
-
 #include "penumbra/render/FrameResources.hpp"
 #include "penumbra/scene/ViewFrustum.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
@@ -60,16 +58,17 @@ ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions,
     const shadows::ContactShadowSettings& settings = frame.shadows.contact;
     ContactShadowUniforms u;
     u.worldToTexture = conventions.clipToTexture() * lit.viewProjection;
-    // Inverted in double, as the screen-space collection's: the rebuilt positions lose no more than the depth's own
-    // precision.
-    u.clipToWorld = glm::mat4(glm::inverse(glm::dmat4(lit.viewProjection)));
     u.cameraPosition = lit.cameraPosition;
     u.cameraForward = lit.cameraForward;
+    // View x = x_ndc * viewDepth / projection[0][0], y likewise: the x and y rows of every convention's projection.
+    const glm::mat4 viewToWorld = glm::inverse(camera.view());
+    u.viewRayRight = glm::vec4(glm::vec3(viewToWorld[0]) / projection[0][0], 0.0f);
+    u.viewRayUp = glm::vec4(glm::vec3(viewToWorld[1]) / projection[1][1], 0.0f);
+    u.nearPlane = camera.nearPlane;
     const int lights = std::min(lit.directionalLightCount, static_cast<int>(maxCollectedDirectionalLights));
     for (int i = 0; i < lights; ++i)
         u.towardsLight[i] = glm::vec4(-lit.lights[i].direction, 0.0f);
     u.targetSize = glm::vec4(static_cast<float>(frame.width), static_cast<float>(frame.height), 0.0f, 0.0f);
-    u.depthToView = glm::vec4(projection[2][2], projection[3][2], camera.nearPlane, 0.0f);
     u.lightCount = lights;
     const auto spots = static_cast<std::uint32_t>(scene.spotLights.size());
     const std::size_t locals = std::min<std::size_t>(localLights.size(), shadows::kMaxContactLocalLights);
@@ -108,14 +107,21 @@ ContactShadowPass::ContactShadowPass(rhi::Device& device)
     pipeline_ = device.createPipeline(desc);
 }
 
-void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height)
+void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height, bool receivers)
 {
-    width = contactShadowExtent(width);
-    height = contactShadowExtent(height);
-    if (shadows_ && shadows_->desc().width == width && shadows_->desc().height == height)
+    if (!prepass_)
+        prepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, false, true);
+    if (receivers && !receiverPrepass_)
+        receiverPrepass_ = std::make_unique<DepthPrepass>(device_, kLitDepthFormat, 1, true, true);
+    if (viewDepth_ && viewDepth_->desc().width == width && viewDepth_->desc().height == height)
         return;
-    shadows_ = device_.createTexture({.width = width,
-                                      .height = height,
+    viewDepth_ = device_.createTexture({.width = width,
+                                        .height = height,
+                                        .format = kViewDepthFormat,
+                                        .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
+                                        .debugName = "contact view depth"});
+    shadows_ = device_.createTexture({.width = contactShadowExtent(width),
+                                      .height = contactShadowExtent(height),
                                       .format = kContactShadowFormat,
                                       .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
                                       .debugName = "contact shadows"});
@@ -123,12 +129,12 @@ void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height)
     target_ = device_.createFramebuffer({.colors = {&color, 1}, .debugName = "contact shadows"});
 }
 
-void ContactShadowPass::record(rhi::CommandList& commands, const rhi::Texture& depth, const rhi::UniformSlice& uniforms)
+void ContactShadowPass::record(rhi::CommandList& commands, const rhi::UniformSlice& uniforms)
 {
     commands.beginPass({.framebuffer = target_.get(), .clearColor = std::nullopt, .clearDepth = false});
     commands.bindPipeline(*pipeline_);
     rhi::bindUniform(commands, kContactBinding, uniforms);
-    commands.bindTexture(kContactDepthBinding, depth, *sampler_);
+    commands.bindTexture(kContactDepthBinding, *viewDepth_, *sampler_);
     commands.draw(3);
     commands.endPass();
 }
@@ -139,14 +145,14 @@ bool ContactShadowsPass::setup(FramePassBuilder& builder)
 {
     if (!state_.contact)
         return false;
-    builder.read(frame::kLitDepth);
+    builder.read(frame::kContactViewDepth);
     builder.write(frame::kContactShadows);
     return true;
 }
 
 void ContactShadowsPass::execute(const FramePassContext& context)
 {
-    pass_->record(context.commands(), context.texture(frame::kLitDepth), state_.contactUniforms);
+    pass_->record(context.commands(), state_.contactUniforms);
 }
 
 } // namespace penumbra::render

@@ -13,24 +13,45 @@ constexpr std::uint32_t kDepthPrepassLocations[] = {0, 2, 3, 5}; // the mesh att
 
 std::uint32_t pipelineIndex(bool doubleSided, bool clip) { return (doubleSided ? 1u : 0u) + (clip ? 2u : 0u); }
 
-// receiver_prepass.frag, opaque or with the clip materials' alpha test.
-rhi::ShaderSource receiverFragment(bool clip)
+// receiver_prepass.frag, opaque or with the clip materials' alpha test, with the view depth or without.
+rhi::ShaderSource receiverFragment(bool clip, bool viewDepth)
 {
     rhi::ShaderSource source = litShader("receiver_prepass.frag");
     source.includes.push_back(
-        {"receiver_prepass_variant.glsl", fmt::format("#define PENUMBRA_RECEIVER_CLIP {}\n", clip ? 1 : 0)});
+        {"receiver_prepass_variant.glsl",
+         fmt::format("#define PENUMBRA_RECEIVER_CLIP {}\n#define PENUMBRA_RECEIVER_VIEW_DEPTH {}\n", clip ? 1 : 0,
+                     viewDepth ? 1 : 0)});
     return source;
+}
+
+// view_depth_prepass.frag, opaque or with the clip materials' alpha test.
+rhi::ShaderSource viewDepthFragment(bool clip)
+{
+    rhi::ShaderSource source = litShader("view_depth_prepass.frag");
+    source.includes.push_back(
+        {"view_depth_prepass_variant.glsl", fmt::format("#define PENUMBRA_VIEW_DEPTH_CLIP {}\n", clip ? 1 : 0)});
+    return source;
+}
+
+// The prepass's fragment shader for its targets, opaque or clip.
+rhi::ShaderSource prepassFragment(bool receivers, bool viewDepth, bool clip)
+{
+    if (receivers)
+        return receiverFragment(clip, viewDepth);
+    if (viewDepth)
+        return viewDepthFragment(clip);
+    // Depth only, no discard: early depth testing stays on.
+    return clip ? litShader("depth_prepass_clip.frag") : shaders::load("shadow_caster_opaque.frag");
 }
 
 } // namespace
 
-DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::uint32_t samples, bool receivers)
-    : samples_(samples), receivers_(receivers),
+DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::uint32_t samples, bool receivers,
+                           bool viewDepth)
+    : samples_(samples), receivers_(receivers), viewDepth_(viewDepth),
       vertex_(device.createShader(litShader(receivers ? "receiver_prepass.vert" : "depth_prepass.vert"))),
-      // Depth only, no discard: early depth testing stays on.
-      opaqueFragment_(
-          device.createShader(receivers ? receiverFragment(false) : shaders::load("shadow_caster_opaque.frag"))),
-      clipFragment_(device.createShader(receivers ? receiverFragment(true) : litShader("depth_prepass_clip.frag")))
+      opaqueFragment_(device.createShader(prepassFragment(receivers, viewDepth, false))),
+      clipFragment_(device.createShader(prepassFragment(receivers, viewDepth, true)))
 {
     rhi::PipelineDesc desc;
     desc.vertex = vertex_.get();
@@ -45,13 +66,16 @@ DepthPrepass::DepthPrepass(rhi::Device& device, rhi::Format depthFormat, std::ui
     desc.samples = samples;
     if (receivers)
         desc.colorTargets = {rhi::ColorTarget{kReceiverDerivativeFormat}, rhi::ColorTarget{kReceiverDerivativeFormat}};
+    if (viewDepth)
+        desc.colorTargets.push_back(rhi::ColorTarget{kViewDepthFormat});
     desc.depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer};
     for (const bool clip : {false, true})
         for (const bool doubleSided : {false, true}) {
             desc.fragment = clip ? clipFragment_.get() : opaqueFragment_.get();
             desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
-            desc.debugName = fmt::format("depth prepass ({}{}, {}{})", receivers ? "receivers, " : "",
-                                         clip ? "clip" : "opaque", doubleSided ? "double-sided" : "culled",
+            desc.debugName = fmt::format("depth prepass ({}{}{}, {}{})", receivers ? "receivers, " : "",
+                                         viewDepth ? "view depth, " : "", clip ? "clip" : "opaque",
+                                         doubleSided ? "double-sided" : "culled",
                                          samples > 1 ? fmt::format(", {}x MSAA", samples) : std::string());
             pipelines_[pipelineIndex(doubleSided, clip)] = device.createPipeline(desc);
         }
@@ -61,7 +85,10 @@ std::uint32_t DepthPrepass::record(rhi::CommandList& commands, const rhi::Frameb
                                    std::span<const LitDraw> draws, const rhi::UniformSlice& frame) const
 {
     const scene::Scene& scene = gpuScene.scene();
-    commands.beginPass({.framebuffer = &target, .clearColor = std::nullopt, .clearDepth = true});
+    // The view depth's 0 marks pixels without a surface; the derivatives beside it are read only where there is one.
+    commands.beginPass({.framebuffer = &target,
+                        .clearColor = viewDepth_ ? std::optional(glm::vec4(0.0f)) : std::nullopt,
+                        .clearDepth = true});
     const rhi::Pipeline* bound = nullptr;
     std::uint32_t issued = 0;
     for (const LitDraw& draw : draws) {

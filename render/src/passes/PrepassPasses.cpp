@@ -1,5 +1,6 @@
 #include "PrepassPasses.hpp"
 
+#include "ContactShadowPass.hpp"
 #include "DepthPrepass.hpp"
 #include "ScreenSpaceShadowPass.hpp"
 
@@ -15,12 +16,22 @@ bool DepthPrepassPass::setup(FramePassBuilder& builder)
     if (!state_.desc->depthPrepass || (state_.screenSpace && !state_.multisampled))
         return false;
     builder.write(state_.multisampled ? frame::kMultisampledDepth : frame::kLitDepth);
+    if (writesViewDepth())
+        builder.write(frame::kContactViewDepth);
     readPosedVertices(builder, state_);
     return true;
 }
 
 void DepthPrepassPass::execute(const FramePassContext& context)
 {
+    if (writesViewDepth()) {
+        state_.stats->depthPrepassDraws +=
+            state_.contactShadows->prepass(false).record(context.commands(),
+                                                         context.framebuffer({frame::kContactViewDepth},
+                                                                             frame::kLitDepth),
+                                                         scene_, state_.litDraws, state_.litFrame);
+        return;
+    }
     const rhi::Framebuffer& target =
         context.framebuffer({}, state_.multisampled ? frame::kMultisampledDepth : frame::kLitDepth);
     state_.stats->depthPrepassDraws +=
@@ -34,14 +45,20 @@ bool SingleSampledDepthPass::setup(FramePassBuilder& builder)
     if (!(state_.depthFit || state_.contact) || !state_.multisampled || state_.screenSpace)
         return false;
     builder.write(frame::kLitDepth);
+    if (state_.contact)
+        builder.write(frame::kContactViewDepth);
     readPosedVertices(builder, state_);
     return true;
 }
 
 void SingleSampledDepthPass::execute(const FramePassContext& context)
 {
-    state_.stats->depthPrepassDraws += prepass_->record(context.commands(), context.framebuffer({}, frame::kLitDepth),
-                                                        scene_, state_.litDraws, state_.litFrame);
+    // With contact shadows, their prepass, which writes the view depth too.
+    const DepthPrepass& prepass = state_.contact ? state_.contactShadows->prepass(false) : *prepass_;
+    const rhi::Framebuffer& target = state_.contact ? context.framebuffer({frame::kContactViewDepth}, frame::kLitDepth)
+                                                    : context.framebuffer({}, frame::kLitDepth);
+    state_.stats->depthPrepassDraws +=
+        prepass.record(context.commands(), target, scene_, state_.litDraws, state_.litFrame);
 }
 
 std::string ReceiverPrepassPass::name() const { return std::string(frame::kReceiverPrepass); }
@@ -53,12 +70,24 @@ bool ReceiverPrepassPass::setup(FramePassBuilder& builder)
     builder.write(frame::kLitDepth);
     builder.write(frame::kReceiverPositionDx);
     builder.write(frame::kReceiverPositionDy);
+    if (state_.contact)
+        builder.write(frame::kContactViewDepth);
     readPosedVertices(builder, state_);
     return true;
 }
 
 void ReceiverPrepassPass::execute(const FramePassContext& context)
 {
+    if (state_.contact) {
+        // Contact shadows' receiver prepass, which writes the view depth too.
+        const rhi::Framebuffer& target =
+            context.framebuffer({frame::kReceiverPositionDx, frame::kReceiverPositionDy, frame::kContactViewDepth},
+                                frame::kLitDepth);
+        state_.stats->depthPrepassDraws +=
+            state_.contactShadows->prepass(true).record(context.commands(), target, scene_, state_.litDraws,
+                                                        state_.litFrame);
+        return;
+    }
     state_.stats->depthPrepassDraws +=
         prepass_.record(context.commands(), collection_.receiverTarget(), scene_, state_.litDraws, state_.litFrame);
 }

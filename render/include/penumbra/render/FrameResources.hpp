@@ -55,6 +55,8 @@ inline constexpr std::string_view kReceiverPositionDy = "receiver position dy";
 inline constexpr std::string_view kScreenSpaceShadows = "screen-space shadows";
 // shadows.contact: each directional light's contact shadow march (render/src/passes/ContactShadowPass).
 inline constexpr std::string_view kContactShadows = "contact shadows";
+// shadows.contact: the view depth the prepass writes beside the lit depth, which the march reads (view_depth.glsl).
+inline constexpr std::string_view kContactViewDepth = "contact view depth";
 inline constexpr std::string_view kCascadeView = "cascade view";
 inline constexpr std::string_view kVisibilityView = "visibility view";
 

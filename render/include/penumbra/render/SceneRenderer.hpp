@@ -277,8 +277,9 @@ private:
     // the multisampled depthPrepass_ with MSAA, instead of it without) and the collection.
     std::unique_ptr<DepthPrepass> receiverPrepass_;
     std::unique_ptr<ScreenSpaceShadowPass> screenSpace_;
-    // Contact shadows and depth fit, made when a frame first asks for them: the march, the reduction, and with MSAA on
-    // the forward path the single-sampled depth prepass they both read.
+    // Contact shadows and depth fit, made when a frame first asks for them: the march (with its own prepasses, which
+    // write the view depth it reads), the reduction, and with MSAA on the forward path the single-sampled depth prepass
+    // the reduction reads without contact shadows.
     std::unique_ptr<ContactShadowPass> contact_;
     std::unique_ptr<DepthReduction> depthReduction_;
     std::unique_ptr<DepthPrepass> singleSampledPrepass_;
