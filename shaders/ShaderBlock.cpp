@@ -155,14 +155,6 @@ std::string storageBlockGlsl(const ShaderStruct& block, std::uint32_t binding, s
     return text;
 }
 
-std::string readonlyArrayBlockGlsl(const ShaderStruct& element, std::string_view block, std::uint32_t binding,
-                                   std::string_view member, std::string_view instance)
-{
-    return structGlsl(element) +
-           fmt::format("layout(std430, binding = {}) readonly buffer {} {{\n    {} {}[];\n}} {};\n", binding, block,
-                       element.name, member, instance);
-}
-
 std::string texelRecordGlsl(const ShaderStruct& record, std::string_view fetch, std::string_view prefix)
 {
     if (!fitsTexels(record))

@@ -328,11 +328,6 @@ std::string uniformBlockGlsl(const ShaderStruct& block, std::uint32_t binding, s
 std::string storageBlockGlsl(const ShaderStruct& block, std::uint32_t binding, std::string_view instance,
                              BlockAccess access);
 
-// `layout(std430, binding = N) readonly buffer Name { Element member[]; } instance;`, a storage block that holds one
-// runtime array of `element` (checked against std430 with matchesLayout), preceded by the struct's definition.
-std::string readonlyArrayBlockGlsl(const ShaderStruct& element, std::string_view block, std::uint32_t binding,
-                                   std::string_view member, std::string_view instance);
-
 // A record of RGBA32F texels in a data texture (read with texelFetch), declared once as blocks are: the C++ struct
 // that is uploaded, 16 bytes a texel, and a ShaderStruct naming its fields (padding left out). True where every field
 // is a float or float vector (not an array) lying within one texel, and the struct is whole texels.
