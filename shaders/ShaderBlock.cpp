@@ -27,6 +27,8 @@ std::string_view glslType(const ShaderField& field)
         return "ivec2";
     case FieldType::IVec4:
         return "ivec4";
+    case FieldType::UVec4:
+        return "uvec4";
     case FieldType::Mat4:
         return "mat4";
     case FieldType::Struct:
@@ -35,13 +37,35 @@ std::string_view glslType(const ShaderField& field)
     return "float";
 }
 
+std::string arraySuffix(const ShaderField& field)
+{
+    if (field.runtime)
+        return "[]";
+    if (field.length)
+        return fmt::format("[PENUMBRA_{}]", field.length->name);
+    return field.count > 0 ? fmt::format("[{}]", field.count) : "";
+}
+
 std::string fieldLines(const ShaderStruct& structure)
 {
     std::string text;
     for (const ShaderField& field : structure.fields)
-        text += field.count > 0 ? fmt::format("    {} {}[{}];\n", glslType(field), field.name, field.count)
-                                : fmt::format("    {} {};\n", glslType(field), field.name);
+        text += fmt::format("    {} {}{};\n", glslType(field), field.name, arraySuffix(field));
     return text;
+}
+
+// The constants that name the arrays' lengths of `structure` and its struct types, each defined once per shader:
+// where the shader has it already (from another block, or shaders::load's constants.glsl), it must have this value.
+void appendLengths(const ShaderStruct& structure, std::string& text)
+{
+    for (const ShaderField& field : structure.fields) {
+        if (field.type == FieldType::Struct)
+            appendLengths(*field.structure, text);
+        if (field.length)
+            text += fmt::format("#ifndef PENUMBRA_{0}\n#define PENUMBRA_{0} {1}\n#elif PENUMBRA_{0} != {1}\n"
+                                "#error PENUMBRA_{0} is not {1}, the length of {2}.{3}\n#endif\n",
+                                field.length->name, field.length->value, structure.name, field.name);
+    }
 }
 
 // Struct types before the structs that hold them; each behind a guard, as two blocks of one shader may share one.
@@ -56,19 +80,46 @@ void appendStructTypes(const ShaderStruct& structure, std::string& text)
         }
 }
 
-void appendMembers(const ShaderStruct& structure, const std::string& prefix, std::uint32_t base,
+void appendMembers(const ShaderStruct& structure, BlockLayout layout, const std::string& prefix, std::uint32_t base,
                    std::vector<rhi::UniformMember>& members)
 {
     for (const ShaderField& field : structure.fields) {
         const std::string name = prefix + std::string(field.name);
         // Reflection sizes a struct that is not an array by its last member's end, without the padding that rounds
         // it up to its alignment (matchesLayout checks the C++ struct's size against the padded one).
-        const bool lone = field.type == FieldType::Struct && field.count == 0;
-        members.push_back(
-            {name, base + field.offset, lone ? fieldsEnd(*field.structure, BlockLayout::Std140) : field.size});
+        const bool lone = field.type == FieldType::Struct && !isArray(field);
+        members.push_back({name, base + field.offset, lone ? fieldsEnd(*field.structure, layout) : field.size});
         if (field.type == FieldType::Struct)
-            appendMembers(*field.structure, name + ".", base + field.offset, members);
+            appendMembers(*field.structure, layout, name + ".", base + field.offset, members);
     }
+}
+
+rhi::UniformLayout blockLayout(const ShaderStruct& block, BlockLayout layout)
+{
+    rhi::UniformLayout result{std::string(block.name), 0, {}};
+    appendMembers(block, layout, "", 0, result.members);
+    // Reflection's block size is where its last member ends, so a trailing struct's padding is not in it; a runtime
+    // array adds nothing to it.
+    for (const ShaderField& field : block.fields) {
+        const rhi::UniformMember& member =
+            *std::find_if(result.members.begin(), result.members.end(),
+                          [&](const rhi::UniformMember& m) { return m.name == field.name; });
+        result.size = std::max(result.size, member.offset + (field.runtime ? 0 : member.size));
+    }
+    return result;
+}
+
+constexpr std::string_view accessQualifier(BlockAccess access)
+{
+    switch (access) {
+    case BlockAccess::ReadOnly:
+        return "readonly ";
+    case BlockAccess::WriteOnly:
+        return "writeonly ";
+    case BlockAccess::ReadWrite:
+        break;
+    }
+    return "";
 }
 
 } // namespace
@@ -76,6 +127,7 @@ void appendMembers(const ShaderStruct& structure, const std::string& prefix, std
 std::string structGlsl(const ShaderStruct& structure)
 {
     std::string text;
+    appendLengths(structure, text);
     appendStructTypes(structure, text);
     text += fmt::format("#ifndef PENUMBRA_STRUCT_{0}\n#define PENUMBRA_STRUCT_{0}\nstruct {0} {{\n{1}}};\n#endif\n",
                         structure.name, fieldLines(structure));
@@ -85,18 +137,22 @@ std::string structGlsl(const ShaderStruct& structure)
 std::string uniformBlockGlsl(const ShaderStruct& block, std::uint32_t binding, std::string_view instance)
 {
     std::string text;
+    appendLengths(block, text);
     appendStructTypes(block, text);
     text += fmt::format("layout(std140, binding = {}) uniform {} {{\n{}}} {};\n", binding, block.name,
                         fieldLines(block), instance);
     return text;
 }
 
-std::string readonlyArrayBlockGlsl(const ShaderStruct& element, std::string_view block, std::uint32_t binding,
-                                   std::string_view member, std::string_view instance)
+std::string storageBlockGlsl(const ShaderStruct& block, std::uint32_t binding, std::string_view instance,
+                             BlockAccess access)
 {
-    return structGlsl(element) +
-           fmt::format("layout(std430, binding = {}) readonly buffer {} {{\n    {} {}[];\n}} {};\n", binding, block,
-                       element.name, member, instance);
+    std::string text;
+    appendLengths(block, text);
+    appendStructTypes(block, text);
+    text += fmt::format("layout(std430, binding = {}) {}buffer {} {{\n{}}}{}{};\n", binding, accessQualifier(access),
+                        block.name, fieldLines(block), instance.empty() ? "" : " ", instance);
+    return text;
 }
 
 std::string texelRecordGlsl(const ShaderStruct& record, std::string_view fetch, std::string_view prefix)
@@ -117,18 +173,8 @@ std::string texelRecordGlsl(const ShaderStruct& record, std::string_view fetch, 
     return text;
 }
 
-rhi::UniformLayout uniformLayout(const ShaderStruct& block)
-{
-    rhi::UniformLayout layout{std::string(block.name), 0, {}};
-    appendMembers(block, "", 0, layout.members);
-    // Reflection's block size is where its last member ends, so a trailing struct's padding is not in it.
-    for (const ShaderField& field : block.fields) {
-        const rhi::UniformMember& member =
-            *std::find_if(layout.members.begin(), layout.members.end(),
-                          [&](const rhi::UniformMember& m) { return m.name == field.name; });
-        layout.size = std::max(layout.size, member.offset + member.size);
-    }
-    return layout;
-}
+rhi::UniformLayout uniformLayout(const ShaderStruct& block) { return blockLayout(block, BlockLayout::Std140); }
+
+rhi::UniformLayout storageLayout(const ShaderStruct& block) { return blockLayout(block, BlockLayout::Std430); }
 
 } // namespace penumbra::shaders

@@ -7,6 +7,10 @@
 // 2011, sections 4.1 and 4.2: the depth histogram and the per-partition light-space bounds). Footprint floats are
 // compared as uints through orderedBits, which keeps their order for both signs.
 #include "constants.glsl"
+// The storage block DepthHistogram (`histogram`: per bin, the count and per light the orderedBits of the footprint's
+// min x, min y, max x, max y) and the uniform block DepthHistogramFrame (`frame`), generated from their C++
+// declarations with the lengths PENUMBRA_BINS, PENUMBRA_LIGHTS and PENUMBRA_BIN_FOOTPRINTS (DepthReduction.cpp).
+#include "depth_reduction_blocks.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
@@ -16,29 +20,8 @@ const int kLights = PENUMBRA_LIGHTS;
 
 layout(binding = 0) uniform sampler2D depth;
 
-// Per light: orderedBits of min x, min y, max x, max y (flat uints: the atomics take scalars).
-struct Bin {
-    uint count;
-    uint footprints[4 * kLights];
-};
-layout(std430, binding = 1) buffer DepthHistogram { Bin bins[kBins]; } histogram;
-
-layout(std140, binding = 2) uniform DepthHistogramFrame
-{
-    mat4 clipToWorld;
-    vec4 cameraPosition;
-    vec4 cameraForward;
-    vec4 lightRight[kLights];
-    vec4 lightUp[kLights];
-    vec4 targetSize; // width, height
-    float shadowFar;
-    int firstOctave;
-    int lightCount;
-}
-frame;
-
 shared uint groupCount[kBins];
-shared uint groupFootprints[kBins * 4 * kLights];
+shared uint groupFootprints[kBins * PENUMBRA_BIN_FOOTPRINTS];
 
 uint orderedBits(float f)
 {

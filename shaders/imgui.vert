@@ -2,16 +2,12 @@
 // Dear ImGui's vertices (apps/viewer/ImGuiRenderer): positions in window pixels, rows counted
 // from the top as RHI viewports do, uv into the bound texture, straight-alpha colour.
 
-#include "constants.glsl"
-
 layout(location = 0) in vec2 inPosition;
 layout(location = 1) in vec2 inUv;
 layout(location = 2) in vec4 inColor;
 
-// xy: pixels to NDC scale, zw: offset; y is negative because canonical NDC y points up.
-layout(std140, binding = PENUMBRA_BINDING_FRAME) uniform ImGuiFrame {
-    vec4 pixelToNdc;
-} frame;
+// The uniform block ImGuiFrame (`frame`: pixelToNdc), generated from apps/viewer/ImGuiRenderer's ImGuiFrameUniforms.
+#include "imgui_blocks.glsl"
 
 layout(location = 0) out vec2 vUv;
 layout(location = 1) out vec4 vColor;

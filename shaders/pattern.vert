@@ -2,14 +2,11 @@
 // The test pattern: vertices in canonical NDC (y up) with a colour; z is a view depth in
 // [near, far] turned into this convention's clip space by the projection of the block.
 
-#include "constants.glsl"
-
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec4 inColor;
 
-layout(std140, binding = PENUMBRA_BINDING_PATTERN) uniform Pattern {
-    mat4 projection;
-} pattern;
+// The uniform block Pattern (`pattern`: projection), generated from apps/common/TestPattern's PatternUniforms.
+#include "pattern_blocks.glsl"
 
 layout(location = 0) out vec4 vColor;
 

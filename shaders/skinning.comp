@@ -12,30 +12,13 @@ layout(local_size_x = 64) in;
 const uint kVertexFloats = 18;
 // MorphTarget offsets as floats per target and vertex: position, normal, tangent xyz (0 where the target has none).
 const uint kTargetFloats = 9;
-const uint kSkinned = 1u; // Deform.flags: the deformer has a skin
-const uint kFlatNormals = 2u; // Deform.flags: each triangle's vertices get its face normal (a file without normals)
+const uint kSkinned = PENUMBRA_DEFORM_SKINNED; // Deform.flags: the deformer has a skin
+// Deform.flags: each triangle's vertices get its face normal (a file without normals)
+const uint kFlatNormals = PENUMBRA_DEFORM_FLAT_NORMALS;
 
-layout(std430, binding = PENUMBRA_BINDING_DEFORM) readonly buffer Deform {
-    uint vertexCount;
-    uint influenceSets; // JOINTS_n/WEIGHTS_n sets per vertex
-    uint targetCount;
-    uint flags;
-    float weights[]; // targetCount morph weights
-} deform;
-
-layout(std430, binding = PENUMBRA_BINDING_REST) readonly buffer Rest { float rest[]; };
-
-struct Influence {
-    uvec4 joints; // into Skin::joints
-    vec4 weights;
-};
-layout(std430, binding = PENUMBRA_BINDING_INFLUENCES) readonly buffer Influences { Influence influences[]; };
-
-layout(std430, binding = PENUMBRA_BINDING_TARGETS) readonly buffer Targets { float targets[]; };
-
-layout(std430, binding = PENUMBRA_BINDING_JOINTS) readonly buffer Joints { mat4 joints[]; };
-
-layout(std430, binding = PENUMBRA_BINDING_POSED) writeonly buffer Posed { float posed[]; };
+// The storage blocks, generated from their C++ declarations (render/src/skinning/GpuSkinning.cpp): `deform` (the
+// header and targetCount morph weights), and as globals rest[], influences[], targets[], joints[] and posed[].
+#include "skinning_blocks.glsl"
 
 vec3 restVec3(uint v, uint at)
 {

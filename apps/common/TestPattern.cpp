@@ -1,5 +1,6 @@
 #include "TestPattern.hpp"
 
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <glm/gtc/constants.hpp>
@@ -7,9 +8,20 @@
 namespace penumbra::pattern {
 namespace {
 
-constexpr std::uint32_t kPatternBinding = 0; // pattern.vert's Pattern block
+constexpr std::uint32_t kPatternBinding = 0;
+constexpr std::array kPatternFields{PENUMBRA_SHADER_FIELD(PatternUniforms, projection)};
+constexpr shaders::ShaderStruct kPatternBlock{"Pattern", sizeof(PatternUniforms), kPatternFields};
+static_assert(shaders::matchesLayout(kPatternBlock, shaders::BlockLayout::Std140));
 
 } // namespace
+
+rhi::ShaderSource patternVertexShader()
+{
+    rhi::ShaderSource source = shaders::load("pattern.vert");
+    source.includes.push_back(
+        {"pattern_blocks.glsl", shaders::uniformBlockGlsl(kPatternBlock, kPatternBinding, "pattern")});
+    return source;
+}
 
 std::vector<PatternVertex> testPattern()
 {
@@ -45,7 +57,7 @@ std::vector<PatternVertex> testPattern()
 PatternRenderer::PatternRenderer(rhi::Device& device, const PatternTarget& target)
     : device_(device), target_(target),
       projection_(device.conventions().perspective(glm::half_pi<float>(), 1.0f, target.zNear, target.zFar)),
-      vertexShader_(device.createShader(shaders::load("pattern.vert", {{"BINDING_PATTERN", kPatternBinding}}))),
+      vertexShader_(device.createShader(patternVertexShader())),
       fragmentShader_(device.createShader(shaders::load("pattern.frag"))),
       color_(
           device.createTexture({.width = target.width,
@@ -60,13 +72,13 @@ PatternRenderer::PatternRenderer(rhi::Device& device, const PatternTarget& targe
                                    .usage = rhi::TextureUsage::RenderTarget,
                                    .debugName = "pattern.depth"})),
       uniforms_(device.createBuffer(
-          {.size = sizeof(glm::mat4), .usage = rhi::BufferUsage::Uniform, .debugName = "pattern.uniforms"})),
+          {.size = sizeof(PatternUniforms), .usage = rhi::BufferUsage::Uniform, .debugName = "pattern.uniforms"})),
       commands_(device.createCommandList())
 {
     const rhi::Attachment colorAttachment{color_.get(), 0};
     framebuffer_ =
         device.createFramebuffer({.colors = {&colorAttachment, 1}, .depth = {depth_.get(), 0}, .debugName = "pattern"});
-    uniforms_->writeObject(projection_);
+    uniforms_->writeObject(PatternUniforms{projection_});
 }
 
 const rhi::Pipeline& PatternRenderer::pipeline(rhi::CullMode cull)
@@ -86,6 +98,7 @@ const rhi::Pipeline& PatternRenderer::pipeline(rhi::CullMode cull)
         .depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer},
         .colorTargets = {{.format = rhi::Format::RGBA8}},
         .depthFormat = rhi::Format::D32F,
+        .uniformLayouts = {shaders::uniformLayout(kPatternBlock)},
         .debugName = "pattern",
     };
     pipelines_.emplace_back(cull, device_.createPipeline(desc));
@@ -102,7 +115,7 @@ void PatternRenderer::render(std::span<const PatternVertex> triangles, rhi::Cull
                 {.size = size, .usage = rhi::BufferUsage::Vertex, .debugName = "pattern.vertices"});
         vertices_->write(0, std::as_bytes(triangles));
         commands_->bindPipeline(pipeline(cull));
-        commands_->bindUniformBuffer(kPatternBinding, *uniforms_, 0, sizeof(glm::mat4));
+        commands_->bindUniformBuffer(kPatternBinding, *uniforms_, 0, sizeof(PatternUniforms));
         commands_->bindVertexBuffer(0, *vertices_);
         commands_->draw(std::uint32_t(triangles.size()));
     }

@@ -2,7 +2,9 @@
 
 #include "penumbra/rhi/Device.hpp"
 #include "penumbra/rhi/Image.hpp"
+#include "penumbra/rhi/Shader.hpp"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <memory>
@@ -16,6 +18,14 @@ struct PatternVertex {
     glm::vec3 position;
     glm::vec4 color;
 };
+
+// pattern.vert's uniform block Pattern (std140): the projection of the view depths.
+struct PatternUniforms {
+    glm::mat4 projection{1.0f};
+};
+
+// pattern.vert with its block Pattern (PatternUniforms) at binding 0, generated from the C++ declaration.
+rhi::ShaderSource patternVertexShader();
 
 // The demo picture: overlapping triangles at several depths, a red marker at the top-left,
 // a green one at the top-right and a blue one at the bottom-left, so any flip or depth mistake shows.

@@ -14,7 +14,10 @@ namespace penumbra::apps {
 class DispatchScene {
 public:
     static constexpr std::uint32_t countersBinding = 0;
-    using Counters = std::array<std::uint32_t, 64>; // one per invocation of the workgroup
+    // The shader's storage block Counters: one count per invocation of the workgroup.
+    struct Counters {
+        std::array<std::uint32_t, 64> counts{};
+    };
 
     DispatchScene(rhi::Device& device, std::uint32_t count);
 

@@ -1,5 +1,6 @@
 #include "DrawScene.hpp"
 
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <array>
@@ -12,7 +13,19 @@
 namespace penumbra::apps {
 namespace {
 
-constexpr std::uint32_t kObjectBinding = 0; // mesh.vert's Object block
+constexpr std::uint32_t kObjectBinding = 0;
+constexpr std::array kDrawObjectFields{PENUMBRA_SHADER_FIELD(DrawObjectUniforms, modelViewProjection),
+                                       PENUMBRA_SHADER_FIELD(DrawObjectUniforms, color)};
+constexpr shaders::ShaderStruct kDrawObjectBlock{"Object", sizeof(DrawObjectUniforms), kDrawObjectFields};
+static_assert(shaders::matchesLayout(kDrawObjectBlock, shaders::BlockLayout::Std140));
+
+rhi::ShaderSource meshVertexShader()
+{
+    rhi::ShaderSource source = shaders::load("mesh.vert");
+    source.includes.push_back(
+        {"mesh_blocks.glsl", shaders::uniformBlockGlsl(kDrawObjectBlock, kObjectBinding, "object")});
+    return source;
+}
 
 } // namespace
 
@@ -20,7 +33,7 @@ DrawScene::DrawScene(rhi::Device& device, std::uint32_t count)
     : count_(count), objectStride_((objectSize + device.capabilities().uniformBufferOffsetAlignment - 1) /
                                    device.capabilities().uniformBufferOffsetAlignment *
                                    device.capabilities().uniformBufferOffsetAlignment),
-      vertexShader_(device.createShader(shaders::load("mesh.vert", {{"BINDING_OBJECT", kObjectBinding}}))),
+      vertexShader_(device.createShader(meshVertexShader())),
       fragmentShader_(device.createShader(shaders::load("mesh.frag")))
 {
     pipeline_ = device.createPipeline({
@@ -32,6 +45,7 @@ DrawScene::DrawScene(rhi::Device& device, std::uint32_t count)
         .depth = {.test = true, .write = true, .compare = rhi::DepthTest::Nearer},
         .colorTargets = {{.format = rhi::Format::RGBA8}},
         .depthFormat = rhi::Format::D32F,
+        .uniformLayouts = {shaders::uniformLayout(kDrawObjectBlock)},
         .debugName = "mesh",
     });
     color_ = device.createTexture({.width = size,
@@ -69,10 +83,8 @@ DrawScene::DrawScene(rhi::Device& device, std::uint32_t count)
         glm::mat4 model = glm::translate(glm::mat4(1.0f), glm::vec3(u * 5.0f, v * 5.0f, -9.0f));
         model = glm::rotate(model, float(i) * 0.37f, glm::normalize(glm::vec3(1, 1, 0)));
         model = glm::scale(model, glm::vec3(2.0f / float(side)));
-        const glm::mat4 mvp = projection * model;
-        const std::array<glm::vec4, 5> object = {mvp[0], mvp[1], mvp[2], mvp[3],
-                                                 glm::vec4(u * 0.5f + 0.5f, v * 0.5f + 0.5f, 0.5f, 1.0f)};
-        std::memcpy(blocks.data() + objectStride_ * i, object.data(), objectSize);
+        const DrawObjectUniforms object{projection * model, glm::vec4(u * 0.5f + 0.5f, v * 0.5f + 0.5f, 0.5f, 1.0f)};
+        std::memcpy(blocks.data() + objectStride_ * i, &object, objectSize);
     }
     objects_->write(0, blocks);
 

@@ -3,6 +3,8 @@
 #include "penumbra/rhi/Device.hpp"
 
 #include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 
 namespace penumbra::apps {
@@ -10,6 +12,12 @@ namespace penumbra::apps {
 // How the draw-call benchmark draws each cube: drawIndexed, or drawIndexedIndirect with the cube's arguments read on
 // the GPU from DrawScene::indirectArguments.
 enum class DrawCall { Direct, Indirect };
+
+// mesh.vert's uniform block Object (std140): one cube's transform and colour.
+struct DrawObjectUniforms {
+    glm::mat4 modelViewProjection{1.0f};
+    glm::vec4 color{0.0f};
+};
 
 // The draw-call benchmark's scene: `count` small cubes, each with its own transform and colour
 // in one uniform buffer (one aligned block per cube), drawn into a small RGBA8 + D32F target.
@@ -24,7 +32,7 @@ public:
     std::uint32_t count() const { return count_; }
     std::uint32_t indexCount() const { return 36; }
     std::uint64_t objectStride() const { return objectStride_; }
-    static constexpr std::uint32_t objectSize = 80; // std140 size of mesh.vert's Object block
+    static constexpr std::uint32_t objectSize = sizeof(DrawObjectUniforms);
     static constexpr std::uint32_t size = 128; // target width and height
     // Bytes per cube in indirectArguments(): VkDrawIndexedIndirectCommand, GL's DrawElementsIndirectCommand.
     static constexpr std::uint32_t indirectStride = 20;

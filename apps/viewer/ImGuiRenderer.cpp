@@ -1,8 +1,10 @@
 #include "ImGuiRenderer.hpp"
 
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <glm/vec4.hpp>
 #include <imgui.h>
@@ -12,6 +14,23 @@ namespace {
 
 constexpr std::uint32_t kFrameBinding = 0;
 constexpr std::uint32_t kTextureBinding = 1;
+
+// imgui.vert's uniform block ImGuiFrame (std140): window pixels to NDC, xy the scale, zw the offset; y is negative
+// because canonical NDC y points up.
+struct ImGuiFrameUniforms {
+    glm::vec4 pixelToNdc{0.0f};
+};
+constexpr std::array kImGuiFrameFields{PENUMBRA_SHADER_FIELD(ImGuiFrameUniforms, pixelToNdc)};
+constexpr shaders::ShaderStruct kImGuiFrameBlock{"ImGuiFrame", sizeof(ImGuiFrameUniforms), kImGuiFrameFields};
+static_assert(shaders::matchesLayout(kImGuiFrameBlock, shaders::BlockLayout::Std140));
+
+rhi::ShaderSource imguiVertexShader()
+{
+    rhi::ShaderSource source = shaders::load("imgui.vert");
+    source.includes.push_back(
+        {"imgui_blocks.glsl", shaders::uniformBlockGlsl(kImGuiFrameBlock, kFrameBinding, "frame")});
+    return source;
+}
 
 static_assert(sizeof(ImDrawIdx) == 2, "ImGuiRenderer draws 16-bit indices, ImGui's default");
 
@@ -32,6 +51,7 @@ rhi::PipelineDesc pipelineDesc(const rhi::Shader& vertex, const rhi::Shader& fra
     blend.srcAlpha = rhi::BlendFactor::One;
     blend.dstAlpha = rhi::BlendFactor::OneMinusSrcAlpha;
     desc.colorTargets = {{target, rhi::ColorMask::All, blend}};
+    desc.uniformLayouts = {shaders::uniformLayout(kImGuiFrameBlock)};
     desc.debugName = "imgui";
     return desc;
 }
@@ -39,7 +59,7 @@ rhi::PipelineDesc pipelineDesc(const rhi::Shader& vertex, const rhi::Shader& fra
 } // namespace
 
 ImGuiRenderer::ImGuiRenderer(rhi::Device& device, rhi::Format targetFormat)
-    : device_(device), vertex_(device.createShader(shaders::load("imgui.vert", {{"BINDING_FRAME", kFrameBinding}}))),
+    : device_(device), vertex_(device.createShader(imguiVertexShader())),
       fragment_(device.createShader(shaders::load("imgui.frag", {{"BINDING_TEXTURE", kTextureBinding}}))),
       pipeline_(device.createPipeline(pipelineDesc(*vertex_, *fragment_, targetFormat))),
       sampler_(device.createSampler(
@@ -81,11 +101,11 @@ void ImGuiRenderer::record(rhi::CommandList& commands, const ImDrawData& drawDat
     uniforms_.reset();
     const ImVec2 origin = drawData.DisplayPos;
     const ImVec2 size = drawData.DisplaySize;
-    const glm::vec4 pixelToNdc{2.0f / size.x, -2.0f / size.y, -1.0f - 2.0f * origin.x / size.x,
-                               1.0f + 2.0f * origin.y / size.y};
+    const ImGuiFrameUniforms frame{
+        {2.0f / size.x, -2.0f / size.y, -1.0f - 2.0f * origin.x / size.x, 1.0f + 2.0f * origin.y / size.y}};
 
     commands.bindPipeline(*pipeline_);
-    rhi::bindUniform(commands, kFrameBinding, uniforms_.push(pixelToNdc));
+    rhi::bindUniform(commands, kFrameBinding, uniforms_.push(frame));
     commands.bindVertexBuffer(0, *vertices_);
     commands.bindIndexBuffer(*indices_, rhi::IndexType::UInt16);
     std::uint64_t vertexBytes = 0;

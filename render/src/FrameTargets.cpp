@@ -148,6 +148,8 @@ void SceneRenderer::importResources(const FrameDesc& frame)
         createMultisampledTargets(graph, frame);
     for (const UserTexture& texture : userTextures_)
         graph.importTexture(texture.name, texture.texture, true);
+    for (const UserBuffer& buffer : userBuffers_)
+        graph.importBuffer(buffer.name, buffer.buffer, true);
     if (state.posedVertices)
         graph.importBuffers(frame::kPosedVertices, skinning_->posedVertices());
     if (state.culling) {

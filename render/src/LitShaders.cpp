@@ -121,8 +121,8 @@ rhi::ShaderSource litShader(std::string_view fileName, const LitShaderFeatures& 
     source.includes.push_back(
         {"local_shadows_block.glsl",
          shaders::uniformBlockGlsl(shadows::kLocalShadowBlock, kLitLocalShadowBinding, "localShadows") +
-             shaders::readonlyArrayBlockGlsl(shadows::kLocalAtlasTileStruct, "LocalShadowTiles",
-                                             kLitLocalShadowTilesBinding, "tiles", "localShadowTiles")});
+             shaders::storageBlockGlsl(shadows::kLocalShadowTilesBlock, kLitLocalShadowTilesBinding, "localShadowTiles",
+                                       shaders::BlockAccess::ReadOnly)});
     source.includes.push_back(
         {"static_shadows_block.glsl",
          shaders::uniformBlockGlsl(shadows::kStaticShadowBlock, kLitStaticShadowBinding, "staticShadows") +

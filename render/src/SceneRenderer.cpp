@@ -433,6 +433,11 @@ void SceneRenderer::addTexture(std::string name, const rhi::Texture& texture)
     userTextures_.push_back({std::move(name), texture});
 }
 
+void SceneRenderer::addBuffer(std::string name, const rhi::Buffer& buffer)
+{
+    userBuffers_.push_back({std::move(name), buffer});
+}
+
 std::string SceneRenderer::frameGraphDot() const { return graph_->dot(); }
 
 std::optional<double> FrameStats::passMs(std::string_view pass) const

@@ -9,33 +9,71 @@
 namespace penumbra::shadows {
 namespace {
 
-// The pass's storage blocks, the structs generated from their C++ declarations, and the volume kinds.
+constexpr std::uint64_t kVolumesOffset = 32; // the CasterVolume array after CullingCounts, std430
+static_assert(sizeof(CullingCounts) <= kVolumesOffset && kVolumesOffset % alignof(CasterVolume) == 0);
+
+// The pass's storage blocks, at bindings 0 to 6 in this order. Every member name is distinct across the blocks:
+// Mesa's GLSL compiler (22.3) takes an unsized array for another block's member of the same name and refuses to
+// index it.
+constexpr std::array kCasterVolumesFields{PENUMBRA_SHADER_FIELD(CullingCounts, casterCount),
+                                          PENUMBRA_SHADER_FIELD(CullingCounts, tileCount),
+                                          PENUMBRA_SHADER_FIELD(CullingCounts, batchCount),
+                                          PENUMBRA_SHADER_FIELD(CullingCounts, firstTile),
+                                          PENUMBRA_SHADER_FIELD(CullingCounts, tileSlots),
+                                          shaders::runtimeStructArrayField<CasterVolume>("volumes", kVolumesOffset,
+                                                                                         kCasterVolumeStruct)};
+constexpr std::array kCullingCastersFields{
+    shaders::runtimeStructArrayField<CullingCaster>("casters", 0, kCullingCasterStruct)};
+constexpr std::array kInstanceTransformsFields{
+    shaders::runtimeStructArrayField<InstanceTransform>("transforms", 0, kInstanceTransformStruct)};
+constexpr std::array kCulledInstancesFields{
+    shaders::runtimeStructArrayField<InstanceTransform>("instances", 0, kInstanceTransformStruct)};
+constexpr std::array kCulledIndicesFields{shaders::runtimeArrayField<std::uint32_t>("indices", 0)};
+constexpr std::array kCulledDrawsFields{shaders::runtimeStructArrayField<CulledDraw>("commands", 0, kCulledDrawStruct)};
+constexpr std::array kCulledDrawCountsFields{shaders::runtimeArrayField<std::uint32_t>("counts", 0)};
+
+// A block, its instance name and access, in binding order.
+struct CullingBlock {
+    shaders::ShaderStruct block;
+    std::string_view instance;
+    shaders::BlockAccess access;
+};
+constexpr std::array kCullingBlocks{
+    CullingBlock{{"CasterVolumes", sizeof(CullingCounts), kCasterVolumesFields},
+                 "tiles",
+                 shaders::BlockAccess::ReadOnly},
+    CullingBlock{{"CullingCasters", 0, kCullingCastersFields}, "casterList", shaders::BlockAccess::ReadOnly},
+    CullingBlock{{"InstanceTransforms", 0, kInstanceTransformsFields}, "source", shaders::BlockAccess::ReadOnly},
+    CullingBlock{{"CulledInstances", 0, kCulledInstancesFields}, "culled", shaders::BlockAccess::WriteOnly},
+    CullingBlock{{"CulledIndices", 0, kCulledIndicesFields}, "culledIndices", shaders::BlockAccess::WriteOnly},
+    CullingBlock{{"CulledDraws", 0, kCulledDrawsFields}, "draws", shaders::BlockAccess::ReadWrite},
+    CullingBlock{{"CulledDrawCounts", 0, kCulledDrawCountsFields}, "drawCounts", shaders::BlockAccess::ReadWrite},
+};
+static_assert(std::all_of(kCullingBlocks.begin(), kCullingBlocks.end(), [](const CullingBlock& b) {
+    return shaders::matchesLayout(b.block, shaders::BlockLayout::Std430);
+}));
+
+// The pass's storage blocks generated from their C++ declarations, and the volume kinds.
 std::string cullingBlocksGlsl()
 {
-    return fmt::format("#define PENUMBRA_VOLUME_FRUSTUM {}\n#define PENUMBRA_VOLUME_BEYOND_SPHERE {}\n"
-                       "#define PENUMBRA_VOLUME_BEYOND_SLICE {}\n",
-                       static_cast<int>(CasterVolumeKind::Frustum),
-                       static_cast<int>(CasterVolumeKind::CascadeBeyondSphere),
-                       static_cast<int>(CasterVolumeKind::CascadeBeyondSlice)) +
-           shaders::structGlsl(kCasterVolumeStruct) + shaders::structGlsl(kCullingCasterStruct) +
-           shaders::structGlsl(kInstanceTransformStruct) + shaders::structGlsl(kCulledDrawStruct) +
-           // Every member name is distinct across the blocks: Mesa's GLSL compiler (22.3) takes an unsized array for
-           // another block's member of the same name and refuses to index it.
-           R"(layout(std430, binding = 0) readonly buffer CasterVolumes {
-    uint casterCount;
-    uint tileCount;
-    uint batchCount;
-    uint firstTile;
-    uint tileSlots;
-    CasterVolume volumes[];
-} tiles;
-layout(std430, binding = 1) readonly buffer CullingCasters { CullingCaster casters[]; } casterList;
-layout(std430, binding = 2) readonly buffer InstanceTransforms { InstanceTransform transforms[]; } source;
-layout(std430, binding = 3) writeonly buffer CulledInstances { InstanceTransform instances[]; } culled;
-layout(std430, binding = 4) writeonly buffer CulledIndices { uint indices[]; } culledIndices;
-layout(std430, binding = 5) buffer CulledDraws { CulledDraw commands[]; } draws;
-layout(std430, binding = 6) buffer CulledDrawCounts { uint counts[]; } drawCounts;
-)";
+    std::string text = fmt::format("#define PENUMBRA_VOLUME_FRUSTUM {}\n#define PENUMBRA_VOLUME_BEYOND_SPHERE {}\n"
+                                   "#define PENUMBRA_VOLUME_BEYOND_SLICE {}\n",
+                                   static_cast<int>(CasterVolumeKind::Frustum),
+                                   static_cast<int>(CasterVolumeKind::CascadeBeyondSphere),
+                                   static_cast<int>(CasterVolumeKind::CascadeBeyondSlice));
+    for (std::uint32_t binding = 0; binding < kCullingBlocks.size(); ++binding) {
+        const CullingBlock& b = kCullingBlocks[binding];
+        text += shaders::storageBlockGlsl(b.block, binding, b.instance, b.access);
+    }
+    return text;
+}
+
+std::vector<rhi::UniformLayout> cullingStorageLayouts()
+{
+    std::vector<rhi::UniformLayout> layouts;
+    for (const CullingBlock& b : kCullingBlocks)
+        layouts.push_back(shaders::storageLayout(b.block));
+    return layouts;
 }
 
 rhi::ShaderSource cullingShader()
@@ -44,9 +82,6 @@ rhi::ShaderSource cullingShader()
     source.includes.push_back({"culling_blocks.glsl", cullingBlocksGlsl()});
     return source;
 }
-
-constexpr std::uint64_t kVolumesOffset = 32; // the CasterVolume array after CullingCounts, std430
-static_assert(sizeof(CullingCounts) <= kVolumesOffset && kVolumesOffset % alignof(CasterVolume) == 0);
 
 std::uint64_t roundUp(std::uint64_t value, std::uint64_t multiple)
 {
@@ -63,7 +98,8 @@ std::span<const std::byte> bytesOf(const std::vector<T>& values)
 
 GpuCasterCulling::GpuCasterCulling(rhi::Device& device, std::uint32_t maxTilesPerDispatch)
     : device_(device), shader_(device.createShader(cullingShader())),
-      pipeline_(device.createComputePipeline({.compute = shader_.get(), .debugName = "caster culling"})),
+      pipeline_(device.createComputePipeline(
+          {.compute = shader_.get(), .storageLayouts = cullingStorageLayouts(), .debugName = "caster culling"})),
       maxTilesPerDispatch_(std::max(maxTilesPerDispatch, 1u))
 {
     reserve(1, kVolumesOffset + sizeof(CasterVolume), 1);

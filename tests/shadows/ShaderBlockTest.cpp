@@ -64,7 +64,53 @@ constexpr std::array kStraddlingFields{PENUMBRA_SHADER_FIELD(StraddlingTexels, r
                                        PENUMBRA_SHADER_FIELD(StraddlingTexels, position)};
 constexpr shaders::ShaderStruct kStraddling{"StraddlingTexels", sizeof(StraddlingTexels), kStraddlingFields};
 
+// A storage block: a header, an array whose length a constant names, and a runtime array of vec4s after them.
+constexpr shaders::ShaderConstant kBlockTestLanes{"TEST_LANES", 3};
+struct LanesHeader {
+    std::uint32_t count = 0;
+    std::array<std::uint32_t, 3> lanes{};
+};
+constexpr std::array kLanesFields{PENUMBRA_SHADER_FIELD(LanesHeader, count),
+                                  PENUMBRA_SHADER_FIELD(LanesHeader, lanes, kBlockTestLanes),
+                                  shaders::runtimeArrayField<glm::vec4>("points", sizeof(LanesHeader))};
+constexpr shaders::ShaderStruct kLanesBlock{"Lanes", sizeof(LanesHeader), kLanesFields};
+
+// The runtime array right after a 4-byte header, where C++ would write it: std430 puts a vec4 at 16.
+constexpr std::array kEarlyPointsFields{PENUMBRA_SHADER_FIELD(LanesHeader, count),
+                                        shaders::runtimeArrayField<glm::vec4>("points", 4)};
+constexpr shaders::ShaderStruct kEarlyPointsBlock{"EarlyPoints", 4, kEarlyPointsFields};
+
 } // namespace
+
+TEST(ShaderBlockTest, AStorageBlockNamesItsLengthsAndEndsInItsRuntimeArray)
+{
+    static_assert(shaders::matchesLayout(kLanesBlock, shaders::BlockLayout::Std430));
+    EXPECT_EQ(shaders::storageBlockGlsl(kLanesBlock, 3, "lanes", shaders::BlockAccess::ReadOnly),
+              "#ifndef PENUMBRA_TEST_LANES\n#define PENUMBRA_TEST_LANES 3\n#elif PENUMBRA_TEST_LANES != 3\n"
+              "#error PENUMBRA_TEST_LANES is not 3, the length of Lanes.lanes\n#endif\n"
+              "layout(std430, binding = 3) readonly buffer Lanes {\n    uint count;\n"
+              "    uint lanes[PENUMBRA_TEST_LANES];\n    vec4 points[];\n} lanes;\n");
+    // No instance name: the members are the shader's globals.
+    const std::string globals = shaders::storageBlockGlsl(kLanesBlock, 0, "", shaders::BlockAccess::WriteOnly);
+    EXPECT_NE(globals.find("layout(std430, binding = 0) writeonly buffer Lanes {\n"), std::string::npos) << globals;
+    EXPECT_TRUE(globals.ends_with("    vec4 points[];\n};\n")) << globals;
+    // As reflection gives it: the runtime array's size is its stride, and the block ends where the array begins.
+    const rhi::UniformLayout layout = shaders::storageLayout(kLanesBlock);
+    ASSERT_EQ(layout.members.size(), 3u);
+    EXPECT_EQ(layout.members[2].name, "points");
+    EXPECT_EQ(layout.members[2].offset, 16u);
+    EXPECT_EQ(layout.members[2].size, 16u);
+    EXPECT_EQ(layout.size, 16u);
+}
+
+TEST(ShaderBlockTest, ARuntimeArrayWhereStd430DoesNotPutItCatchesFault)
+{
+    EXPECT_FALSE(shaders::matchesLayout(kEarlyPointsBlock, shaders::BlockLayout::Std430));
+    // A named length other than the C++ array's: a compile error where the field is constexpr, a throw here.
+    static constexpr shaders::ShaderConstant kFour{"FOUR", 4};
+    using ThreeFloats = std::array<float, 3>;
+    EXPECT_THROW(shaders::shaderField<ThreeFloats>("values", 0, kFour), std::logic_error);
+}
 
 TEST(ShaderBlockTest, ATexelRecordGetsAnAccessorPerNamedField)
 {

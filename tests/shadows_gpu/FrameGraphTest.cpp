@@ -8,6 +8,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/scenes/TestScenes.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 
 #include "graph/FrameGraph.hpp"
 #include "graph/TransientSlots.hpp"
@@ -154,6 +155,101 @@ TEST_F(FrameGraphTest, ApplicationPassAfterTheLitPassReadsTheLitImage)
         wrong += std::abs(int(half.bytes[i]) - expected) > 1 ? 1 : 0;
     }
     EXPECT_EQ(wrong, 0u);
+}
+
+// An application's compute pass: counts the lit image's pixels whose red is above 0 into a buffer of its own, whose
+// block is generated from its C++ declaration.
+struct LitPixelCount {
+    std::uint32_t litPixels = 0;
+};
+constexpr std::array kLitPixelCountFields{PENUMBRA_SHADER_FIELD(LitPixelCount, litPixels)};
+constexpr shaders::ShaderStruct kLitPixelCountBlock{"LitPixelCount", sizeof(LitPixelCount), kLitPixelCountFields};
+static_assert(shaders::matchesLayout(kLitPixelCountBlock, shaders::BlockLayout::Std430));
+
+class LitPixelCountPass final : public render::FramePass {
+public:
+    LitPixelCountPass(rhi::Device& device, std::string output) : output_(std::move(output))
+    {
+        const std::unique_ptr<rhi::Shader> shader = device.createShader(
+            {rhi::ShaderStage::Compute,
+             R"(#version 450
+            layout(local_size_x = 8, local_size_y = 8) in;
+            layout(binding = 0) uniform sampler2D lit;
+            #include "lit_pixel_count_block.glsl"
+            void main()
+            {
+                const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+                if (all(lessThan(p, textureSize(lit, 0))) && texelFetch(lit, p, 0).r > 0.0)
+                    atomicAdd(count.litPixels, 1u);
+            })",
+             "lit_pixel_count.comp",
+             {{"lit_pixel_count_block.glsl",
+               shaders::storageBlockGlsl(kLitPixelCountBlock, 1, "count", shaders::BlockAccess::ReadWrite)}}});
+        pipeline_ = device.createComputePipeline(
+            {.compute = shader.get(), .storageLayouts = {shaders::storageLayout(kLitPixelCountBlock)}});
+        sampler_ = device.createSampler({.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest});
+    }
+
+    std::string name() const override { return "lit pixel count"; }
+    bool setup(render::FramePassBuilder& builder) override
+    {
+        builder.read(frame::kLitImage);
+        builder.write(output_, render::ResourceUse::StorageWrite);
+        return true;
+    }
+    void execute(const render::FramePassContext& context) override
+    {
+        rhi::CommandList& commands = context.commands();
+        commands.bindComputePipeline(*pipeline_);
+        commands.bindTexture(0, context.texture(frame::kLitImage), *sampler_);
+        commands.bindStorageBuffer(1, context.buffer(output_), 0, sizeof(LitPixelCount));
+        commands.dispatch((kGraphWidth + 7) / 8, (kGraphHeight + 7) / 8);
+    }
+
+private:
+    std::string output_;
+    std::unique_ptr<rhi::ComputePipeline> pipeline_;
+    std::unique_ptr<rhi::Sampler> sampler_;
+};
+
+TEST_F(FrameGraphTest, ApplicationPassWritesABufferOfItsOwn)
+{
+    const scene::Scene scene = scenes::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    const std::unique_ptr<rhi::Buffer> count = device->createBuffer(
+        {.size = sizeof(LitPixelCount), .usage = rhi::BufferUsage::Storage, .debugName = "lit pixel count"});
+    count->writeObject(LitPixelCount{});
+    renderer.addBuffer("lit pixel count", *count);
+    renderer.addPass(std::make_shared<LitPixelCountPass>(*device, "lit pixel count"),
+                     render::PassPlacement::after(std::string(frame::kLitPass)));
+    const render::FrameStats stats = renderer.render(scene.camera, litFrame(kGraphWidth, kGraphHeight, true, 1));
+    ASSERT_EQ(passNames(stats).back(), "lit pixel count");
+    const rhi::Image lit = rhi::readTexture(*device, renderer.litImage());
+    std::uint32_t expected = 0;
+    for (std::size_t i = 0; i < lit.bytes.size(); i += 4)
+        expected += lit.bytes[i] != std::byte{0} ? 1 : 0;
+    LitPixelCount counted;
+    count->read(0, std::as_writable_bytes(std::span(&counted, 1)));
+    EXPECT_GT(expected, 0u);
+    EXPECT_EQ(counted.litPixels, expected);
+}
+
+// Without addBuffer the frame has no buffer of that name.
+TEST_F(FrameGraphTest, ApplicationBufferNotAddedIsRefused)
+{
+    const scene::Scene scene = scenes::makeShadowTestScene();
+    render::SceneRenderer renderer(*device, scene);
+    renderer.addPass(std::make_shared<LitPixelCountPass>(*device, "lit pixel count"),
+                     render::PassPlacement::after(std::string(frame::kLitPass)));
+    try {
+        renderer.render(scene.camera, litFrame(kGraphWidth, kGraphHeight, true, 1));
+        FAIL() << "no error";
+    } catch (const rhi::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("pass 'lit pixel count' uses resource 'lit pixel count', which the "
+                                             "frame does not have"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 // A pass whose writes lead to no output is culled: the cascade view's image is no output of a frame without the view.

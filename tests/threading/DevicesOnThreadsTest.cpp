@@ -3,6 +3,7 @@
 // of process-wide state under that contract: the shader compiler's memo and the ray caster's row threads.
 #include "GpuTesting.hpp"
 #include "LitRendering.hpp"
+#include "TestPattern.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Shader.hpp"
@@ -77,9 +78,8 @@ TEST(DevicesOnThreads, EveryConfigurationRendersOnItsOwnThreadAsItDoesAlone)
 // different sources at once get the SPIR-V a single thread gets.
 TEST(DevicesOnThreads, ShaderCompilationFromManyThreadsGivesTheSameSpirv)
 {
-    const std::vector<rhi::ShaderSource> sources{shaders::load("pattern.vert", {{"BINDING_PATTERN", 0}}),
-                                                 shaders::load("pattern.frag"),
-                                                 shaders::load("imgui.vert", {{"BINDING_FRAME", 0}}),
+    const std::vector<rhi::ShaderSource> sources{pattern::patternVertexShader(), shaders::load("pattern.frag"),
+                                                 shaders::load("mesh.frag"),
                                                  shaders::load("imgui.frag", {{"BINDING_TEXTURE", 1}})};
     std::vector<rhi::CompiledShader> expected;
     for (const rhi::ShaderSource& source : sources)

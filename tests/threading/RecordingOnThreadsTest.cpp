@@ -38,7 +38,7 @@ struct PerThread {
 Shared makeShared(rhi::Device& device)
 {
     Shared s;
-    s.vertex = device.createShader(shaders::load("pattern.vert", {{"BINDING_PATTERN", 0}}));
+    s.vertex = device.createShader(pattern::patternVertexShader());
     s.fragment = device.createShader(shaders::load("pattern.frag"));
     s.pipeline = device.createPipeline({
         .vertex = s.vertex.get(),

@@ -1,6 +1,5 @@
 #include "DepthReduction.hpp"
 
-#include "penumbra/rhi/UniformLayout.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 #include "penumbra/shadows/LightBasis.hpp"
 
@@ -14,18 +13,44 @@ namespace penumbra::render {
 namespace {
 
 constexpr std::uint32_t kLights = shadows::maxShadowedDirectionalLights;
+constexpr std::uint32_t kDepthHistogramBinding = 1;
+constexpr std::uint32_t kDepthHistogramFrameBinding = 2;
+// The lengths of the histogram's arrays, PENUMBRA_BINS and PENUMBRA_BIN_FOOTPRINTS in depth_reduction.comp.
+constexpr shaders::ShaderConstant kDepthBinsLength{"BINS", shadows::kDepthHistogramBins};
+constexpr shaders::ShaderConstant kDepthBinFootprintsLength{"BIN_FOOTPRINTS", 4 * kLights};
 
 // One bin of the storage block DepthHistogram (std430): the count, then per light the ordered bits of the
-// footprint's min x, min y, max x, max y.
+// footprint's min x, min y, max x, max y (flat uints: the shader's atomics take scalars).
 struct GpuBin {
     std::uint32_t count;
     std::array<std::uint32_t, 4 * kLights> footprints;
 };
+constexpr std::array kGpuBinFields{PENUMBRA_SHADER_FIELD(GpuBin, count),
+                                   PENUMBRA_SHADER_FIELD(GpuBin, footprints, kDepthBinFootprintsLength)};
+constexpr shaders::ShaderStruct kGpuBinStruct{"Bin", sizeof(GpuBin), kGpuBinFields};
 
 // The storage block DepthHistogram.
 struct GpuHistogram {
     std::array<GpuBin, shadows::kDepthHistogramBins> bins;
 };
+constexpr std::array kGpuHistogramFields{
+    PENUMBRA_SHADER_STRUCT_FIELD(GpuHistogram, bins, kGpuBinStruct, kDepthBinsLength)};
+constexpr shaders::ShaderStruct kGpuHistogramBlock{"DepthHistogram", sizeof(GpuHistogram), kGpuHistogramFields};
+static_assert(shaders::matchesLayout(kGpuHistogramBlock, shaders::BlockLayout::Std430));
+
+rhi::ShaderSource depthReductionShader(const rhi::Device& device)
+{
+    const auto clear = static_cast<std::int64_t>(device.conventions().clearDepth());
+    rhi::ShaderSource source =
+        shaders::load("depth_reduction.comp",
+                      {{"CLEAR_DEPTH", clear}, {"STEPS_PER_OCTAVE", shadows::kDepthHistogramStepsPerOctave}});
+    source.includes.push_back(
+        {"depth_reduction_blocks.glsl",
+         shaders::storageBlockGlsl(kGpuHistogramBlock, kDepthHistogramBinding, "histogram",
+                                   shaders::BlockAccess::ReadWrite) +
+             shaders::uniformBlockGlsl(kDepthHistogramFrameBlock, kDepthHistogramFrameBinding, "frame")});
+    return source;
+}
 
 constexpr std::uint32_t kGroupSize = 16; // the shader's local_size_x and _y
 
@@ -53,32 +78,11 @@ float fromOrderedBits(std::uint32_t bits)
 
 DepthReduction::DepthReduction(rhi::Device& device)
 {
-    const auto clear = static_cast<std::int64_t>(device.conventions().clearDepth());
-    const std::unique_ptr<rhi::Shader> shader = device.createShader(
-        shaders::load("depth_reduction.comp", {{"CLEAR_DEPTH", clear},
-                                               {"BINS", shadows::kDepthHistogramBins},
-                                               {"STEPS_PER_OCTAVE", shadows::kDepthHistogramStepsPerOctave},
-                                               {"LIGHTS", kLights}}));
-    pipeline_ = device.createComputePipeline(
-        {.compute = shader.get(),
-         .uniformLayouts = {{"DepthHistogramFrame",
-                             sizeof(DepthHistogramFrame),
-                             {PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, clipToWorld),
-                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, cameraPosition),
-                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, cameraForward),
-                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, lightRight),
-                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, lightUp),
-                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, targetSize),
-                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, shadowFar),
-                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, firstOctave),
-                              PENUMBRA_UNIFORM_MEMBER(DepthHistogramFrame, lightCount)}}},
-         .storageLayouts = {{"DepthHistogram",
-                             sizeof(GpuHistogram),
-                             {PENUMBRA_UNIFORM_MEMBER(GpuHistogram, bins),
-                              {"bins.count", std::uint32_t(offsetof(GpuBin, count)), sizeof(GpuBin::count)},
-                              {"bins.footprints", std::uint32_t(offsetof(GpuBin, footprints)),
-                               sizeof(GpuBin::footprints)}}}},
-         .debugName = "depth reduction"});
+    const std::unique_ptr<rhi::Shader> shader = device.createShader(depthReductionShader(device));
+    pipeline_ = device.createComputePipeline({.compute = shader.get(),
+                                              .uniformLayouts = {shaders::uniformLayout(kDepthHistogramFrameBlock)},
+                                              .storageLayouts = {shaders::storageLayout(kGpuHistogramBlock)},
+                                              .debugName = "depth reduction"});
     sampler_ = device.createSampler(
         {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "depth reduction"});
     bins_ = device.createBuffer(
@@ -112,8 +116,8 @@ void DepthReduction::record(rhi::CommandList& commands, const rhi::Texture& dept
     bins_->writeObject(emptyHistogram());
     commands.bindComputePipeline(*pipeline_);
     commands.bindTexture(0, depth, *sampler_);
-    commands.bindStorageBuffer(1, *bins_, 0, bins_->desc().size);
-    commands.bindUniformBuffer(2, *frame_, 0, sizeof(DepthHistogramFrame));
+    commands.bindStorageBuffer(kDepthHistogramBinding, *bins_, 0, bins_->desc().size);
+    commands.bindUniformBuffer(kDepthHistogramFrameBinding, *frame_, 0, sizeof(DepthHistogramFrame));
     commands.dispatch((size.width + kGroupSize - 1) / kGroupSize, (size.height + kGroupSize - 1) / kGroupSize);
     recorded_ = true;
 }

@@ -2,6 +2,7 @@
 
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/rhi/Device.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shadows/DepthFit.hpp"
 
 #include <array>
@@ -12,6 +13,9 @@
 #include <vector>
 
 namespace penumbra::render {
+
+// The shadowed directional lights the depth reduction measures, PENUMBRA_LIGHTS in depth_reduction.comp.
+inline constexpr shaders::ShaderConstant kDepthReductionLights{"LIGHTS", shadows::maxShadowedDirectionalLights};
 
 // The block DepthHistogramFrame of shaders/depth_reduction.comp, std140: how a pixel becomes a world position, view
 // depth and light-space x, y.
@@ -26,6 +30,21 @@ struct DepthHistogramFrame {
     std::int32_t firstOctave = 0; // shadows::depthHistogramFirstOctave(shadowFar)
     std::int32_t lightCount = 0;
 };
+
+inline constexpr std::array kDepthHistogramFrameFields{
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, clipToWorld),
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, cameraPosition),
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, cameraForward),
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, lightRight, kDepthReductionLights),
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, lightUp, kDepthReductionLights),
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, targetSize),
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, shadowFar),
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, firstOctave),
+    PENUMBRA_SHADER_FIELD(DepthHistogramFrame, lightCount),
+};
+inline constexpr shaders::ShaderStruct kDepthHistogramFrameBlock{"DepthHistogramFrame", sizeof(DepthHistogramFrame),
+                                                                 kDepthHistogramFrameFields};
+static_assert(shaders::matchesLayout(kDepthHistogramFrameBlock, shaders::BlockLayout::Std140));
 
 // The depth fit's reduction (shaders/depth_reduction.comp): the histogram of the view depths of the pixels a
 // single-sampled depth texture holds, with each bin's light-space footprint per shadowed directional light

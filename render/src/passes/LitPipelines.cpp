@@ -66,6 +66,7 @@ const rhi::Pipeline& LitPipelines::choose(LitShaderFeatures features, bool doubl
                            shaders::uniformLayout(shadows::kDirectionalShadowBlock),
                            shaders::uniformLayout(shadows::kLocalShadowBlock),
                            shaders::uniformLayout(shadows::kStaticShadowBlock)};
+    desc.storageLayouts = {shaders::storageLayout(shadows::kLocalShadowTilesBlock)};
     desc.bindingSetLayouts = {&shadowMaps_};
     desc.cull = doubleSided ? rhi::CullMode::None : rhi::CullMode::Back;
     rhi::ColorTarget target{kLitColorFormat};

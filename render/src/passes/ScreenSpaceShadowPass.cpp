@@ -97,9 +97,11 @@ const rhi::Pipeline& ScreenSpaceShadowPass::pipeline(const LitShaderFeatures& fe
     desc.uniformLayouts = {shaders::uniformLayout(kCollectionBlock),
                            shaders::uniformLayout(shadows::kDirectionalShadowBlock)};
     // The static maps' functions come with local_shadows.glsl's block (screen_space_shadows.frag).
-    if (features.staticShadows)
+    if (features.staticShadows) {
         desc.uniformLayouts.insert(desc.uniformLayouts.end(), {shaders::uniformLayout(shadows::kLocalShadowBlock),
                                                                shaders::uniformLayout(shadows::kStaticShadowBlock)});
+        desc.storageLayouts = {shaders::storageLayout(shadows::kLocalShadowTilesBlock)};
+    }
     desc.debugName = fmt::format("screen-space shadows (features {:#x})", key);
     pipeline = device_.createPipeline(desc);
     return *pipeline;

@@ -1,12 +1,14 @@
 #include "GpuSkinning.hpp"
 
 #include "penumbra/rhi/Error.hpp"
+#include "penumbra/shaders/ShaderBlock.hpp"
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <fmt/format.h>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -28,16 +30,45 @@ constexpr std::uint32_t kFlatNormals = 2;
 // The fixed part of skinning.comp's Deform block; the morph weights follow.
 struct DeformHeader {
     std::uint32_t vertexCount = 0;
-    std::uint32_t influenceSets = 0;
+    std::uint32_t influenceSets = 0; // JOINTS_n/WEIGHTS_n sets per vertex
     std::uint32_t targetCount = 0;
-    std::uint32_t flags = 0;
+    std::uint32_t flags = 0; // kSkinned, kFlatNormals
 };
 
-// One element of the Influences block: a vertex's JOINTS_n and WEIGHTS_n.
+// One element of the Influences block: a vertex's JOINTS_n (into Skin::joints) and WEIGHTS_n.
 struct Influence {
     glm::uvec4 joints;
     glm::vec4 weights;
 };
+
+// skinning.comp's storage blocks, generated from these declarations. Rest, Targets and Posed are scene::Vertex and
+// the morph offsets as floats (the shader's kVertexFloats and kTargetFloats a vertex); Joints a skin's matrices.
+constexpr std::array kDeformFields{PENUMBRA_SHADER_FIELD(DeformHeader, vertexCount),
+                                   PENUMBRA_SHADER_FIELD(DeformHeader, influenceSets),
+                                   PENUMBRA_SHADER_FIELD(DeformHeader, targetCount),
+                                   PENUMBRA_SHADER_FIELD(DeformHeader, flags),
+                                   shaders::runtimeArrayField<float>("weights", sizeof(DeformHeader))};
+constexpr shaders::ShaderStruct kDeformBlock{"Deform", sizeof(DeformHeader), kDeformFields};
+constexpr std::array kSkinInfluenceFields{PENUMBRA_SHADER_FIELD(Influence, joints),
+                                          PENUMBRA_SHADER_FIELD(Influence, weights)};
+constexpr shaders::ShaderStruct kSkinInfluenceStruct{"Influence", sizeof(Influence), kSkinInfluenceFields};
+constexpr std::array kInfluencesFields{
+    shaders::runtimeStructArrayField<Influence>("influences", 0, kSkinInfluenceStruct)};
+constexpr shaders::ShaderStruct kInfluencesBlock{"Influences", 0, kInfluencesFields};
+constexpr std::array kRestFields{shaders::runtimeArrayField<float>("rest", 0)};
+constexpr shaders::ShaderStruct kRestBlock{"Rest", 0, kRestFields};
+constexpr std::array kTargetsFields{shaders::runtimeArrayField<float>("targets", 0)};
+constexpr shaders::ShaderStruct kTargetsBlock{"Targets", 0, kTargetsFields};
+constexpr std::array kJointsFields{shaders::runtimeArrayField<glm::mat4>("joints", 0)};
+constexpr shaders::ShaderStruct kJointsBlock{"Joints", 0, kJointsFields};
+constexpr std::array kPosedFields{shaders::runtimeArrayField<float>("posed", 0)};
+constexpr shaders::ShaderStruct kPosedBlock{"Posed", 0, kPosedFields};
+static_assert(shaders::matchesLayout(kDeformBlock, shaders::BlockLayout::Std430) &&
+              shaders::matchesLayout(kInfluencesBlock, shaders::BlockLayout::Std430) &&
+              shaders::matchesLayout(kRestBlock, shaders::BlockLayout::Std430) &&
+              shaders::matchesLayout(kTargetsBlock, shaders::BlockLayout::Std430) &&
+              shaders::matchesLayout(kJointsBlock, shaders::BlockLayout::Std430) &&
+              shaders::matchesLayout(kPosedBlock, shaders::BlockLayout::Std430));
 
 // Where a storage block reads nothing (a deformer without skin or targets) it is still bound with a few bytes:
 // Vulkan refuses an empty range.
@@ -85,12 +116,18 @@ std::vector<float> targetsOf(const scene::Deformer& deformer)
 
 rhi::ShaderSource skinningShader()
 {
-    return shaders::load("skinning.comp", {{"BINDING_DEFORM", kDeformBinding},
-                                           {"BINDING_REST", kRestBinding},
-                                           {"BINDING_INFLUENCES", kInfluencesBinding},
-                                           {"BINDING_TARGETS", kTargetsBinding},
-                                           {"BINDING_JOINTS", kJointsBinding},
-                                           {"BINDING_POSED", kPosedBinding}});
+    using shaders::BlockAccess;
+    rhi::ShaderSource source =
+        shaders::load("skinning.comp", {{"DEFORM_SKINNED", kSkinned}, {"DEFORM_FLAT_NORMALS", kFlatNormals}});
+    source.includes.push_back(
+        {"skinning_blocks.glsl",
+         shaders::storageBlockGlsl(kDeformBlock, kDeformBinding, "deform", BlockAccess::ReadOnly) +
+             shaders::storageBlockGlsl(kRestBlock, kRestBinding, "", BlockAccess::ReadOnly) +
+             shaders::storageBlockGlsl(kInfluencesBlock, kInfluencesBinding, "", BlockAccess::ReadOnly) +
+             shaders::storageBlockGlsl(kTargetsBlock, kTargetsBinding, "", BlockAccess::ReadOnly) +
+             shaders::storageBlockGlsl(kJointsBlock, kJointsBinding, "", BlockAccess::ReadOnly) +
+             shaders::storageBlockGlsl(kPosedBlock, kPosedBinding, "", BlockAccess::WriteOnly)});
+    return source;
 }
 
 } // namespace
@@ -103,13 +140,9 @@ GpuSkinning::GpuSkinning(rhi::Device& device, const GpuScene& scene) : device_(d
     const auto shader = device.createShader(skinningShader());
     pipeline_ = device.createComputePipeline(
         {.compute = shader.get(),
-         .storageLayouts = {{"Deform",
-                             sizeof(DeformHeader),
-                             {PENUMBRA_UNIFORM_MEMBER(DeformHeader, vertexCount),
-                              PENUMBRA_UNIFORM_MEMBER(DeformHeader, influenceSets),
-                              PENUMBRA_UNIFORM_MEMBER(DeformHeader, targetCount),
-                              PENUMBRA_UNIFORM_MEMBER(DeformHeader, flags),
-                              PENUMBRA_UNIFORM_ARRAY_ELEMENT(DeformHeader, weights, float)}}},
+         .storageLayouts = {shaders::storageLayout(kDeformBlock), shaders::storageLayout(kRestBlock),
+                            shaders::storageLayout(kInfluencesBlock), shaders::storageLayout(kTargetsBlock),
+                            shaders::storageLayout(kJointsBlock), shaders::storageLayout(kPosedBlock)},
          .debugName = "skinning"});
     for (const scene::Deformer& deformer : source.rig.deformers) {
         const std::uint32_t mesh = source.objects.at(deformer.object).mesh;

@@ -12,22 +12,36 @@ namespace {
 
 constexpr std::uint32_t kClusterGroupSize = 64; // light_clusters.comp's local_size_x of the count and write stages
 
-// The pass's storage blocks and images; ClusterLightBound generated from its C++ declaration. Every member name is
-// distinct across the blocks (Mesa's GLSL compiler, see GpuCasterCulling).
+constexpr std::uint32_t kClusterGridBinding = 0;
+constexpr std::uint32_t kClusterLightBoundsBinding = 1;
+constexpr std::uint32_t kClusterCountsBinding = 2;
+
+// The pass's storage blocks. Every member name is distinct across the blocks (Mesa's GLSL compiler, see
+// GpuCasterCulling).
+constexpr std::array kClusterGridFields{PENUMBRA_SHADER_FIELD(ClusterGridHeader, gridSize),
+                                        PENUMBRA_SHADER_FIELD(ClusterGridHeader, dataLayout),
+                                        PENUMBRA_SHADER_FIELD(ClusterGridHeader, view),
+                                        shaders::runtimeArrayField<float>("edges", sizeof(ClusterGridHeader))};
+constexpr shaders::ShaderStruct kClusterGridBlock{"ClusterGrid", sizeof(ClusterGridHeader), kClusterGridFields};
+constexpr std::array kClusterLightBoundsFields{
+    shaders::runtimeStructArrayField<ClusterLightBound>("lights", 0, kClusterLightBoundStruct)};
+constexpr shaders::ShaderStruct kClusterLightBoundsBlock{"ClusterLightBounds", 0, kClusterLightBoundsFields};
+constexpr std::array kClusterCountsFields{shaders::runtimeArrayField<std::uint32_t>("clusterCounts", 0)};
+constexpr shaders::ShaderStruct kClusterCountsBlock{"ClusterCounts", 0, kClusterCountsFields};
+static_assert(shaders::matchesLayout(kClusterGridBlock, shaders::BlockLayout::Std430) &&
+              shaders::matchesLayout(kClusterLightBoundsBlock, shaders::BlockLayout::Std430) &&
+              shaders::matchesLayout(kClusterCountsBlock, shaders::BlockLayout::Std430));
+
+// The storage blocks generated from their C++ declarations, and the images the lists are written to.
 std::string clusterBlocksGlsl()
 {
-    return shaders::structGlsl(kClusterLightBoundStruct) +
-           R"(layout(std430, binding = 0) readonly buffer ClusterGrid {
-    ivec4 gridSize;
-    ivec4 dataLayout;
-    vec4 view;
-    float edges[];
-} grid;
-layout(std430, binding = 1) readonly buffer ClusterLightBounds { ClusterLightBound lights[]; } lightBounds;
-layout(std430, binding = 2) buffer ClusterCounts { uint clusterCounts[]; } counts;
-layout(binding = 3, rgba32f) uniform writeonly image2D clusterRanges;
-layout(binding = 4, r32f) uniform writeonly image2D lightIndices;
-)";
+    using shaders::BlockAccess;
+    return shaders::storageBlockGlsl(kClusterGridBlock, kClusterGridBinding, "grid", BlockAccess::ReadOnly) +
+           shaders::storageBlockGlsl(kClusterLightBoundsBlock, kClusterLightBoundsBinding, "lightBounds",
+                                     BlockAccess::ReadOnly) +
+           shaders::storageBlockGlsl(kClusterCountsBlock, kClusterCountsBinding, "counts", BlockAccess::ReadWrite) +
+           "layout(binding = 3, rgba32f) uniform writeonly image2D clusterRanges;\n"
+           "layout(binding = 4, r32f) uniform writeonly image2D lightIndices;\n";
 }
 
 std::unique_ptr<rhi::ComputePipeline> clusterPipeline(rhi::Device& device, int stage, const char* name)
@@ -37,12 +51,8 @@ std::unique_ptr<rhi::ComputePipeline> clusterPipeline(rhi::Device& device, int s
     const std::unique_ptr<rhi::Shader> shader = device.createShader(source);
     return device.createComputePipeline(
         {.compute = shader.get(),
-         .storageLayouts = {{"ClusterGrid",
-                             sizeof(ClusterGridHeader),
-                             {PENUMBRA_UNIFORM_MEMBER(ClusterGridHeader, gridSize),
-                              PENUMBRA_UNIFORM_MEMBER(ClusterGridHeader, dataLayout),
-                              PENUMBRA_UNIFORM_MEMBER(ClusterGridHeader, view),
-                              PENUMBRA_UNIFORM_ARRAY_ELEMENT(ClusterGridHeader, edges, float)}}},
+         .storageLayouts = {shaders::storageLayout(kClusterGridBlock), shaders::storageLayout(kClusterLightBoundsBlock),
+                            shaders::storageLayout(kClusterCountsBlock)},
          .debugName = name});
 }
 
@@ -103,9 +113,9 @@ void GpuLightClusters::record(rhi::CommandList& commands, const LightClusterInpu
     if (!inputs.lights.empty())
         lights_->write(0, std::as_bytes(std::span(inputs.lights)));
 
-    commands.bindStorageBuffer(0, *grid_, 0, gridBytes_.size());
-    commands.bindStorageBuffer(1, *lights_, 0, lights_->desc().size);
-    commands.bindStorageBuffer(2, *counts_, 0, 2 * clusters * sizeof(std::uint32_t));
+    commands.bindStorageBuffer(kClusterGridBinding, *grid_, 0, gridBytes_.size());
+    commands.bindStorageBuffer(kClusterLightBoundsBinding, *lights_, 0, lights_->desc().size);
+    commands.bindStorageBuffer(kClusterCountsBinding, *counts_, 0, 2 * clusters * sizeof(std::uint32_t));
     commands.bindStorageTexture(3, ranges);
     commands.bindStorageTexture(4, indices);
     const auto groups = static_cast<std::uint32_t>((clusters + kClusterGroupSize - 1) / kClusterGroupSize);

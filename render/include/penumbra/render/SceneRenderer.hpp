@@ -217,6 +217,10 @@ public:
     // A texture of the application's that its passes use by `name`, one of the frame's outputs: the passes that lead
     // to it are never culled. It must outlive the renderer's frames.
     void addTexture(std::string name, const rhi::Texture& texture);
+    // A buffer of the application's that its passes use by `name` (a storage buffer a compute pass fills and the
+    // application reads after the frame's submission), one of the frame's outputs as addTexture's textures are. It
+    // must outlive the renderer's frames.
+    void addBuffer(std::string name, const rhi::Buffer& buffer);
     // The last frame's graph as Graphviz dot: its passes in order (culled ones and ones off that frame marked) and the
     // textures each reads and writes.
     std::string frameGraphDot() const;
@@ -233,6 +237,10 @@ private:
     struct UserTexture {
         std::string name;
         const rhi::Texture& texture;
+    };
+    struct UserBuffer {
+        std::string name;
+        const rhi::Buffer& buffer;
     };
 
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
@@ -300,6 +308,7 @@ private:
     std::vector<std::unique_ptr<FramePass>> framePasses_; // this frame's built-in passes
     std::vector<UserPass> userPasses_;
     std::vector<UserTexture> userTextures_;
+    std::vector<UserBuffer> userBuffers_;
     rhi::UniformArena uniforms_;
     rhi::VertexArena instances_; // the lit draws' instance transforms
     rhi::BufferArena storage_; // the local atlas's tiles (shadows::LocalAtlasTileData), read by the lit shaders

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/UniformLayout.hpp"
+#include "penumbra/shaders/ShaderConstant.hpp"
 
 #include <array>
 #include <cstddef>
@@ -10,15 +11,17 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
 
 // A block shared by C++ and GLSL, declared once: the C++ struct that is uploaded, and beside it a ShaderStruct that
 // lists its fields by name (PENUMBRA_SHADER_FIELD takes each field's GLSL type, array size, offset and size from the
-// C++ member). From the list come the GLSL block text (uniformBlockGlsl, injected into the shaders as an include),
-// the rhi::UniformLayout that pipeline creation compares with reflection (uniformLayout), and a compile-time check
-// that the C++ offsets are the ones std140 (or std430) gives the GLSL (matchesLayout, in a static_assert).
+// C++ member). From the list come the GLSL block text (uniformBlockGlsl, storageBlockGlsl, injected into the shaders
+// as an include), the rhi::UniformLayout that pipeline creation compares with reflection (uniformLayout,
+// storageLayout), and a compile-time check that the C++ offsets are the ones std140 (or std430) gives the GLSL
+// (matchesLayout, in a static_assert). No shader writes a block body by hand (ctest format.shader-blocks).
 // The model is Filament's UibGenerator (filament/src/details/UibGenerator.cpp): a block is a list of named fields.
 namespace penumbra::shaders {
 
@@ -26,7 +29,10 @@ namespace penumbra::shaders {
 // blocks; std430 for storage blocks, where arrays and structs are not rounded up to a vec4.
 enum class BlockLayout : std::uint8_t { Std140, Std430 };
 
-enum class FieldType : std::uint8_t { Float, Int, UInt, Vec2, Vec3, Vec4, IVec2, IVec4, Mat4, Struct };
+// A storage block's memory qualifier (GLSL 4.50, section 4.10): what the shader may do with it.
+enum class BlockAccess : std::uint8_t { ReadWrite, ReadOnly, WriteOnly };
+
+enum class FieldType : std::uint8_t { Float, Int, UInt, Vec2, Vec3, Vec4, IVec2, IVec4, UVec4, Mat4, Struct };
 
 struct ShaderStruct;
 
@@ -38,6 +44,11 @@ struct ShaderField {
     std::uint32_t offset = 0;
     std::uint32_t size = 0;
     const ShaderStruct* structure = nullptr; // the field's struct type where type is FieldType::Struct
+    // The constant that names the array's length in GLSL (`uint bins[PENUMBRA_BINS]`), shared with the shader's code;
+    // null: the length is written as a number.
+    const ShaderConstant* length = nullptr;
+    // A runtime-sized array (`float weights[]`), the last field of a storage block; `size` is one element's.
+    bool runtime = false;
 };
 
 // A GLSL struct or block body: its name (the block name, or the struct type's), the C++ struct's size, its fields.
@@ -91,6 +102,10 @@ struct FieldTypeOf<glm::ivec4> {
     static constexpr FieldType type = FieldType::IVec4;
 };
 template <>
+struct FieldTypeOf<glm::uvec4> {
+    static constexpr FieldType type = FieldType::UVec4;
+};
+template <>
 struct FieldTypeOf<glm::mat4> {
     static constexpr FieldType type = FieldType::Mat4;
 };
@@ -111,6 +126,16 @@ constexpr std::uint32_t roundUp(std::uint32_t value, std::uint32_t alignment)
     return (value + alignment - 1) / alignment * alignment;
 }
 
+// `field` with its array length named by `length`; a length other than the C++ array's fails to compile (a throw
+// in a constant expression).
+constexpr ShaderField namedLength(ShaderField field, const ShaderConstant& length)
+{
+    if (field.count == 0 || std::int64_t(field.count) != length.value)
+        throw std::logic_error("a shader field's named length differs from its C++ array's length");
+    field.length = &length;
+    return field;
+}
+
 } // namespace detail
 
 // A field of C++ type Member (a scalar, glm vector or matrix, or a std::array of one), named as in GLSL.
@@ -126,6 +151,13 @@ constexpr ShaderField shaderField(std::string_view name, std::size_t offset)
             nullptr};
 }
 
+// A field whose C++ type Member is a std::array whose length GLSL names by `length` (its value the array's).
+template <class Member>
+constexpr ShaderField shaderField(std::string_view name, std::size_t offset, const ShaderConstant& length)
+{
+    return detail::namedLength(shaderField<Member>(name, offset), length);
+}
+
 // A field whose C++ type Member is a struct (or a std::array of one) declared by `structure`.
 template <class Member>
 constexpr ShaderField shaderStructField(std::string_view name, std::size_t offset, const ShaderStruct& structure)
@@ -137,6 +169,33 @@ constexpr ShaderField shaderStructField(std::string_view name, std::size_t offse
             std::uint32_t(sizeof(Member)),
             &structure};
 }
+
+template <class Member>
+constexpr ShaderField shaderStructField(std::string_view name, std::size_t offset, const ShaderStruct& structure,
+                                        const ShaderConstant& length)
+{
+    return detail::namedLength(shaderStructField<Member>(name, offset, structure), length);
+}
+
+// The runtime-sized array `Element name[]` that ends a storage block (GLSL 4.50, section 4.1.9), at `offset`, where
+// the C++ code writes its first element (after the header whose fields come before it in the block).
+template <class Element>
+constexpr ShaderField runtimeArrayField(std::string_view name, std::size_t offset)
+{
+    ShaderField field = shaderField<Element>(name, offset);
+    field.runtime = true;
+    return field;
+}
+
+template <class Element>
+constexpr ShaderField runtimeStructArrayField(std::string_view name, std::size_t offset, const ShaderStruct& structure)
+{
+    ShaderField field = shaderStructField<Element>(name, offset, structure);
+    field.runtime = true;
+    return field;
+}
+
+constexpr bool isArray(const ShaderField& field) { return field.count > 0 || field.runtime; }
 
 // The GLSL base alignment and size of one element of `field` (GLSL 4.50, 7.6.2.2, rules 1 to 9).
 constexpr std::uint32_t elementAlignment(const ShaderField& field, BlockLayout layout);
@@ -171,6 +230,7 @@ constexpr std::uint32_t elementAlignment(const ShaderField& field, BlockLayout l
     case FieldType::Vec3:
     case FieldType::Vec4:
     case FieldType::IVec4:
+    case FieldType::UVec4:
     case FieldType::Mat4:
         alignment = 16;
         break;
@@ -179,7 +239,7 @@ constexpr std::uint32_t elementAlignment(const ShaderField& field, BlockLayout l
         break;
     }
     // Rule 4: in std140 an array's elements align to a vec4.
-    return field.count > 0 && layout == BlockLayout::Std140 && alignment < 16 ? 16 : alignment;
+    return isArray(field) && layout == BlockLayout::Std140 && alignment < 16 ? 16 : alignment;
 }
 
 constexpr std::uint32_t elementSize(const ShaderField& field, BlockLayout layout)
@@ -200,6 +260,7 @@ constexpr std::uint32_t elementSize(const ShaderField& field, BlockLayout layout
         break;
     case FieldType::Vec4:
     case FieldType::IVec4:
+    case FieldType::UVec4:
         size = 16;
         break;
     case FieldType::Mat4:
@@ -210,7 +271,7 @@ constexpr std::uint32_t elementSize(const ShaderField& field, BlockLayout layout
         break;
     }
     // An array's stride is its element rounded up to the element's alignment (rules 4 and 10).
-    return field.count > 0 ? detail::roundUp(size, elementAlignment(field, layout)) : size;
+    return isArray(field) ? detail::roundUp(size, elementAlignment(field, layout)) : size;
 }
 
 // Where GLSL puts each field of `structure`, and the end of its last field.
@@ -230,18 +291,23 @@ constexpr std::uint32_t structExtent(const ShaderStruct& structure, BlockLayout 
 
 // True where every field of `block` (and of its struct fields) sits at the offset and takes the size that `layout`
 // gives it in GLSL, and the C++ struct ends where the block does (rounded up to its alignment at most): the C++
-// struct can be uploaded as it is.
+// struct can be uploaded as it is. A runtime array ends a std430 block, its C++ elements a GLSL stride apart, and
+// the C++ struct of the fields before it ends at or before its first element.
 constexpr bool matchesLayout(const ShaderStruct& block, BlockLayout layout, bool nested = false)
 {
     std::uint32_t offset = 0;
-    for (const ShaderField& field : block.fields) {
-        offset = detail::roundUp(offset, elementAlignment(field, layout));
+    for (std::size_t i = 0; i < block.fields.size(); ++i) {
+        const ShaderField& field = block.fields[i];
+        const std::uint32_t start = detail::roundUp(offset, elementAlignment(field, layout));
         const std::uint32_t size = elementSize(field, layout) * (field.count > 0 ? field.count : 1);
-        if (field.offset != offset || field.size != size)
+        if (field.offset != start || field.size != size)
             return false;
         if (field.type == FieldType::Struct && !matchesLayout(*field.structure, layout, true))
             return false;
-        offset += size;
+        if (field.runtime)
+            return !nested && layout == BlockLayout::Std430 && i + 1 == block.fields.size() && block.size >= offset &&
+                   block.size <= start;
+        offset = start + size;
     }
     // A struct field's stride is its padded extent; a block's C++ struct may end anywhere up to its alignment.
     return nested ? block.size == structExtent(block, layout)
@@ -256,10 +322,11 @@ std::string structGlsl(const ShaderStruct& structure);
 // (each once per shader, behind an #ifndef), for a shader include.
 std::string uniformBlockGlsl(const ShaderStruct& block, std::uint32_t binding, std::string_view instance);
 
-// `layout(std430, binding = N) readonly buffer Name { Element member[]; } instance;`, a storage block that holds one
-// runtime array of `element` (checked against std430 with matchesLayout), preceded by the struct's definition.
-std::string readonlyArrayBlockGlsl(const ShaderStruct& element, std::string_view block, std::uint32_t binding,
-                                   std::string_view member, std::string_view instance);
+// `layout(std430, binding = N) readonly buffer Name { ... } instance;` (the qualifier as `access` says; no instance
+// name where `instance` is empty, so the members are the shader's globals), preceded by the definitions of its
+// struct types and the constants that name its arrays' lengths.
+std::string storageBlockGlsl(const ShaderStruct& block, std::uint32_t binding, std::string_view instance,
+                             BlockAccess access);
 
 // A record of RGBA32F texels in a data texture (read with texelFetch), declared once as blocks are: the C++ struct
 // that is uploaded, 16 bytes a texel, and a ShaderStruct naming its fields (padding left out). True where every field
@@ -288,12 +355,18 @@ std::string texelRecordGlsl(const ShaderStruct& record, std::string_view fetch, 
 // (the first element's where the struct field is an array), as rhi reflection lists them.
 rhi::UniformLayout uniformLayout(const ShaderStruct& block);
 
+// The same for a storage block (std430), as storageLayouts takes it: a runtime array's size is its stride, and the
+// block's size ends where the runtime array begins.
+rhi::UniformLayout storageLayout(const ShaderStruct& block);
+
 } // namespace penumbra::shaders
 
 // The ShaderField of `member` of `Struct`, by offsetof and sizeof (Struct must be standard-layout); the GLSL name is
-// the C++ one.
-#define PENUMBRA_SHADER_FIELD(Struct, member)                                                                          \
-    ::penumbra::shaders::shaderField<decltype(Struct::member)>(#member, offsetof(Struct, member))
+// the C++ one. An array member may name its length by a ShaderConstant after it.
+#define PENUMBRA_SHADER_FIELD(Struct, member, ...)                                                                     \
+    ::penumbra::shaders::shaderField<decltype(Struct::member)>(#member,                                                \
+                                                               offsetof(Struct, member) __VA_OPT__(, ) __VA_ARGS__)
 // The same for a member whose type is a struct declared by the ShaderStruct `structure`.
-#define PENUMBRA_SHADER_STRUCT_FIELD(Struct, member, structure)                                                        \
-    ::penumbra::shaders::shaderStructField<decltype(Struct::member)>(#member, offsetof(Struct, member), structure)
+#define PENUMBRA_SHADER_STRUCT_FIELD(Struct, member, structure, ...)                                                   \
+    ::penumbra::shaders::shaderStructField<decltype(Struct::member)>(#member, offsetof(Struct, member),                \
+                                                                     structure __VA_OPT__(, ) __VA_ARGS__)

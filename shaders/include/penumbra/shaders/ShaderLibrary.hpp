@@ -1,6 +1,7 @@
 #pragma once
 
 #include "penumbra/rhi/Shader.hpp"
+#include "penumbra/shaders/ShaderConstant.hpp"
 
 #include <cstdint>
 #include <initializer_list>
@@ -15,12 +16,6 @@ std::string_view source(std::string_view fileName);
 // A ShaderSource for a file, its stage taken from the extension (.vert, .frag, .comp); the .glsl files are its
 // includes.
 rhi::ShaderSource load(std::string_view fileName);
-
-// A number the C++ caller shares with a shader (a binding, say), written once in C++: `#define PENUMBRA_<name> value`.
-struct ShaderConstant {
-    std::string_view name;
-    std::int64_t value;
-};
 
 // One `#define PENUMBRA_<name> value` line per constant.
 std::string defineLines(std::initializer_list<ShaderConstant> constants);

@@ -65,9 +65,9 @@ static_assert(sizeof(CulledDraw) == rhi::kDrawIndexedIndirectCommandBytes);
 
 // The fixed part of the storage block CasterVolumes, before its volumes: one dispatch's share of the tiles.
 struct CullingCounts {
-    std::uint32_t casters = 0;
-    std::uint32_t tiles = 0; // the dispatch's tiles, firstTile onwards
-    std::uint32_t batches = 0;
+    std::uint32_t casterCount = 0;
+    std::uint32_t tileCount = 0; // the dispatch's tiles, firstTile onwards
+    std::uint32_t batchCount = 0;
     std::uint32_t firstTile = 0;
     std::uint32_t tileSlots = 0; // instance slots per tile: the caster count, rounded up for the binding offsets
 };

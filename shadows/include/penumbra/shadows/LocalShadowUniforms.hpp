@@ -67,6 +67,11 @@ inline constexpr std::array kLocalAtlasTileFields{
 inline constexpr shaders::ShaderStruct kLocalAtlasTileStruct{"LocalAtlasTileData", sizeof(LocalAtlasTileData),
                                                              kLocalAtlasTileFields};
 static_assert(shaders::matchesLayout(kLocalAtlasTileStruct, shaders::BlockLayout::Std430, true));
+// The storage block LocalShadowTiles: every tile of the atlas, as many as it holds.
+inline constexpr std::array kLocalShadowTilesFields{
+    shaders::runtimeStructArrayField<LocalAtlasTileData>("tiles", 0, kLocalAtlasTileStruct)};
+inline constexpr shaders::ShaderStruct kLocalShadowTilesBlock{"LocalShadowTiles", 0, kLocalShadowTilesFields};
+static_assert(shaders::matchesLayout(kLocalShadowTilesBlock, shaders::BlockLayout::Std430));
 
 // The lit shader's spot and point shadow block LocalShadows (local_shadows.glsl), uploaded as is; the atlas tiles are
 // in the storage block LocalShadowTiles (LocalAtlasTileData).
