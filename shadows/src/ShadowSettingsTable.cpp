@@ -224,7 +224,7 @@ std::vector<ShadowSettingsField> shadowTableFields()
             [](auto& s) -> auto& { return s.staticMaps.localAtlasSize; }),
         settings::named<ShadowSettings>(
             "contact.shadows", toggleNames(),
-            "a short march through the depth buffer towards each directional light and the nearest spot and point lights, added to their shadow maps",
+            "a short screen-space march through the visible depths towards each directional light and the nearest spot and point lights, added to their shadow maps",
             [](auto& s) -> auto& { return s.contact.shadows; }, "--contact-shadows"),
         settings::numeric<ShadowSettings>(
             "contact.length", {SettingRangeKind::Closed, 0.01, 10}, "metres the contact march goes towards the light",
