@@ -17,6 +17,7 @@
 #include "passes/DepthPrepass.hpp"
 #include "passes/DepthReduction.hpp"
 #include "passes/LitDraws.hpp"
+#include "passes/LitInstances.hpp"
 #include "passes/LitPasses.hpp"
 #include "passes/LitPipelines.hpp"
 #include "passes/PrepassPasses.hpp"
@@ -260,8 +261,15 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     uniforms_.reset();
     instances_.reset();
     storage_.reset();
+    // With GPU culling the opaque lit instances stay resident: nothing per object in a frame where nothing moved.
+    const bool residentLit = state.culling && frame.instancedDraws;
+    if (residentLit) {
+        if (!litInstances_)
+            litInstances_ = std::make_unique<LitInstances>(device_);
+        litInstances_->update(gpuScene_);
+    }
     litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
-                         uniforms_, instances_);
+                         uniforms_, instances_, residentLit ? litInstances_.get() : nullptr);
     if (state.culling)
         prepareCasterCulling(*state.culling, gpuScene_.casters(), gpuScene_, plan_, localPlan_);
     state.posedVertices = !skinning_->empty();
