@@ -53,8 +53,8 @@ void LitInstances::write(const scene::Scene& scene, std::uint32_t first, std::ui
     scratch_.clear();
     for (std::uint32_t slot = first; slot < end; ++slot) {
         const std::uint32_t object = objects_[slot];
-        scratch_.push_back(shadows::instanceTransform(object == kNoSlot ? glm::mat4(1.0f)
-                                                                         : scene.objects[object].transform));
+        scratch_.push_back(
+            shadows::instanceTransform(object == kNoSlot ? glm::mat4(1.0f) : scene.objects[object].transform));
     }
     if (!scratch_.empty())
         buffer_->write(first * sizeof(shadows::InstanceTransform), std::as_bytes(std::span(scratch_)));
@@ -92,8 +92,8 @@ void LitInstances::update(const GpuScene& gpuScene)
     }
 }
 
-void LitInstances::appendDraws(const GpuScene& gpuScene, const scene::ViewFrustum& frustum,
-                               rhi::UniformArena& uniforms, std::vector<LitDraw>& draws) const
+void LitInstances::appendDraws(const GpuScene& gpuScene, const scene::ViewFrustum& frustum, rhi::UniformArena& uniforms,
+                               std::vector<LitDraw>& draws) const
 {
     const scene::Scene& scene = gpuScene.scene();
     struct Run {
@@ -144,8 +144,7 @@ void LitInstances::appendDraws(const GpuScene& gpuScene, const scene::ViewFrustu
         }
         shown.push_back({*firstObject, g, std::move(runs)});
     }
-    std::sort(shown.begin(), shown.end(),
-              [](const Shown& a, const Shown& b) { return a.firstObject < b.firstObject; });
+    std::sort(shown.begin(), shown.end(), [](const Shown& a, const Shown& b) { return a.firstObject < b.firstObject; });
     for (const Shown& s : shown) {
         const Group& group = groups_[s.group];
         const std::uint32_t object = objects_[group.first];
