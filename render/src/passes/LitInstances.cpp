@@ -6,6 +6,36 @@
 #include <map>
 
 namespace penumbra::render {
+namespace {
+
+// Chunks [first, end) of one group, in view.
+struct LitChunkRun {
+    std::uint32_t first = 0;
+    std::uint32_t end = 0;
+};
+
+// Leaves at most `most` runs: the gaps of at most the (runs - most)-th shortest length are drawn through.
+void bridgeShortestGaps(std::vector<LitChunkRun>& runs, std::size_t most)
+{
+    if (runs.size() <= most)
+        return;
+    std::vector<std::uint32_t> gaps;
+    for (std::size_t r = 1; r < runs.size(); ++r)
+        gaps.push_back(runs[r].first - runs[r - 1].end);
+    const auto nth = gaps.begin() + std::ptrdiff_t(runs.size() - most - 1);
+    std::nth_element(gaps.begin(), nth, gaps.end());
+    const std::uint32_t bridged = *nth;
+    std::vector<LitChunkRun> merged{runs.front()};
+    for (std::size_t r = 1; r < runs.size(); ++r) {
+        if (runs[r].first - merged.back().end <= bridged)
+            merged.back().end = runs[r].end;
+        else
+            merged.push_back(runs[r]);
+    }
+    runs = std::move(merged);
+}
+
+} // namespace
 
 void LitInstances::rebuild(const GpuScene& gpuScene)
 {
@@ -96,19 +126,15 @@ void LitInstances::appendDraws(const GpuScene& gpuScene, const scene::ViewFrustu
                                std::vector<LitDraw>& draws) const
 {
     const scene::Scene& scene = gpuScene.scene();
-    struct Run {
-        std::uint32_t first = 0; // chunks
-        std::uint32_t end = 0;
-    };
     struct Shown {
         std::uint32_t firstObject = 0; // its first object in view, by litDraws' per-object test
         std::size_t group = 0;
-        std::vector<Run> runs;
+        std::vector<LitChunkRun> runs;
     };
     std::vector<Shown> shown;
     for (std::size_t g = 0; g < groups_.size(); ++g) {
         const Group& group = groups_[g];
-        std::vector<Run> runs;
+        std::vector<LitChunkRun> runs;
         const std::uint32_t endChunk = (group.first + group.count + kChunk - 1) / kChunk;
         for (std::uint32_t chunk = group.first / kChunk; chunk < endChunk; ++chunk) {
             if (!frustum.mayShow(chunkBounds_[chunk]))
@@ -126,22 +152,7 @@ void LitInstances::appendDraws(const GpuScene& gpuScene, const scene::ViewFrustu
                     firstObject = objects_[slot];
         if (!firstObject)
             continue;
-        if (runs.size() > kMaxRuns) {
-            // The gaps of at most the (runs - kMaxRuns)-th shortest length are drawn through.
-            std::vector<std::uint32_t> gaps;
-            for (std::size_t r = 1; r < runs.size(); ++r)
-                gaps.push_back(runs[r].first - runs[r - 1].end);
-            std::nth_element(gaps.begin(), gaps.begin() + std::ptrdiff_t(runs.size() - kMaxRuns - 1), gaps.end());
-            const std::uint32_t bridged = gaps[runs.size() - kMaxRuns - 1];
-            std::vector<Run> merged{runs.front()};
-            for (std::size_t r = 1; r < runs.size(); ++r) {
-                if (runs[r].first - merged.back().end <= bridged)
-                    merged.back().end = runs[r].end;
-                else
-                    merged.push_back(runs[r]);
-            }
-            runs = std::move(merged);
-        }
+        bridgeShortestGaps(runs, kMaxRuns);
         shown.push_back({*firstObject, g, std::move(runs)});
     }
     std::sort(shown.begin(), shown.end(), [](const Shown& a, const Shown& b) { return a.firstObject < b.firstObject; });
@@ -149,7 +160,7 @@ void LitInstances::appendDraws(const GpuScene& gpuScene, const scene::ViewFrustu
         const Group& group = groups_[s.group];
         const std::uint32_t object = objects_[group.first];
         const rhi::UniformSlice block = uniforms.push(litObjectUniforms(scene, scene.objects[object]));
-        for (const Run& run : s.runs) {
+        for (const LitChunkRun& run : s.runs) {
             const std::uint32_t first = run.first * kChunk;
             const std::uint32_t end = std::min(run.end * kChunk, group.first + group.count);
             constexpr std::uint64_t kBytes = sizeof(shadows::InstanceTransform);

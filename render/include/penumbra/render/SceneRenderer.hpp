@@ -245,6 +245,7 @@ private:
     FrameStats renderRefreshed(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
     FrameStats prepareFrame(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans& plans);
     std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
+    std::vector<LitDraw> frameLitDraws(const scene::Camera& camera, const FrameDesc& frame, bool culledOnGpu);
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
     rhi::BufferSlice localTileSlice();
     void importResources(const FrameDesc& frame);
