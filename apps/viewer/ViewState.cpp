@@ -28,6 +28,7 @@ std::string applyViewState(const ViewState& edited, ViewState& applied, scene::S
         scene.objects[i].receiveShadows = candidate.objects[i].receive;
         scene.objects[i].mobility = candidate.objects[i].mobility;
     }
+    ++scene.revision;
     applied = std::move(candidate);
     return {};
 }

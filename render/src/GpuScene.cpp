@@ -211,14 +211,15 @@ bool GpuScene::materialsChanged() const
 {
     bool changed = materialCasters_.size() != scene_.materials.size();
     materialCasters_.resize(scene_.materials.size());
-    materialModes_.resize(scene_.materials.size());
+    materialKeys_.resize(scene_.materials.size());
     for (std::size_t m = 0; m < scene_.materials.size(); ++m) {
         const scene::Material& material = scene_.materials[m];
         const shadows::ShadowCaster caster = materialCaster(material);
-        if (material.caster != materialModes_[m] || !shadows::drawAlike(caster, materialCasters_[m])) {
+        const MaterialKey key{material.caster, material.blend, material.receiveShadows};
+        if (key != materialKeys_[m] || !shadows::drawAlike(caster, materialCasters_[m])) {
             changed = true;
             materialCasters_[m] = caster;
-            materialModes_[m] = material.caster;
+            materialKeys_[m] = key;
         }
     }
     return changed;
@@ -233,7 +234,8 @@ void GpuScene::rebuildCasters(const CasterOptions& options) const
     casterOf_.assign(scene_.objects.size(), kNoCaster);
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
         const scene::Object& object = scene_.objects[i];
-        snapshots_[i] = {object.transform, object.worldBounds, object.castShadows, object.mobility};
+        snapshots_[i] = {object.transform, object.worldBounds, object.castShadows, object.receiveShadows,
+                         object.mobility};
         if (!scene_.castsShadows(object))
             continue;
         const auto index = static_cast<std::uint32_t>(casters_.size());
@@ -253,6 +255,40 @@ void GpuScene::rebuildCasters(const CasterOptions& options) const
             staticCasters_.push_back(index);
     }
     casterChanges_.changedAll();
+    objectChanges_.changedAll();
+}
+
+bool GpuScene::compareObjects(std::size_t first, std::size_t end, bool reported) const
+{
+    for (std::size_t i = first; i < end; ++i) {
+        const scene::Object& object = scene_.objects[i];
+        ObjectSnapshot& kept = snapshots_[i];
+        const bool kindChanged = object.castShadows != kept.castShadows ||
+                                 object.receiveShadows != kept.receiveShadows || object.mobility != kept.mobility;
+        // Bit for bit, which is faster than float by float over 10^5 objects, and counts a NaN that stays as unchanged.
+        const bool moved = std::memcmp(&object.transform, &kept.transform, sizeof(glm::mat4)) != 0 ||
+                           std::memcmp(&object.worldBounds, &kept.worldBounds, sizeof(scene::Bounds)) != 0;
+        if (!kindChanged && !moved)
+            continue;
+        if (!reported)
+            throw rhi::Error(
+                fmt::format("GpuScene: object {} ('{}') was edited in place (its transform, world bounds, "
+                            "shadow casting or receiving, or mobility) without scene::Scene::revision "
+                            "being raised; raise it after editing, so the renderer reads the objects again",
+                            i, object.name));
+        if (kindChanged)
+            return true;
+        kept.transform = object.transform;
+        kept.worldBounds = object.worldBounds;
+        objectChanges_.changed(static_cast<std::uint32_t>(i));
+        const std::uint32_t caster = casterOf_[i];
+        if (caster == kNoCaster)
+            continue;
+        casters_[caster].model = object.transform;
+        casterBounds_[caster] = {object.worldBounds.min, object.worldBounds.max};
+        casterChanges_.changed(caster);
+    }
+    return false;
 }
 
 void GpuScene::refresh(const CasterOptions& options) const
@@ -265,26 +301,16 @@ void GpuScene::refresh(const CasterOptions& options) const
     // Both run: materialsChanged() keeps the materials' casters that a rebuild copies.
     bool rebuild = materialsChanged();
     rebuild = !options_ || *options_ != options || rebuild;
-    for (std::size_t i = 0; i < objects.size() && !rebuild; ++i) {
-        const scene::Object& object = objects[i];
-        ObjectSnapshot& kept = snapshots_[i];
-        if (object.castShadows != kept.castShadows || object.mobility != kept.mobility) {
-            rebuild = true;
-            break;
-        }
-        // Bit for bit, which is faster than float by float over 10^5 objects, and counts a NaN that stays as unchanged.
-        if (std::memcmp(&object.transform, &kept.transform, sizeof(glm::mat4)) == 0 &&
-            std::memcmp(&object.worldBounds, &kept.worldBounds, sizeof(scene::Bounds)) == 0)
-            continue;
-        kept.transform = object.transform;
-        kept.worldBounds = object.worldBounds;
-        const std::uint32_t caster = casterOf_[i];
-        if (caster == kNoCaster)
-            continue;
-        casters_[caster].model = object.transform;
-        casterBounds_[caster] = {object.worldBounds.min, object.worldBounds.max};
-        casterChanges_.changed(caster);
+    if (!rebuild && revision_ != scene_.revision) {
+        rebuild = compareObjects(0, objects.size(), true);
+    } else if (!rebuild && !objects.empty()) {
+        // The next kSpotChecks objects in turn, wrapping round.
+        const std::size_t first = spotCheck_ < objects.size() ? spotCheck_ : 0;
+        const std::size_t end = std::min(objects.size(), first + kSpotChecks);
+        compareObjects(first, end, false);
+        spotCheck_ = end;
     }
+    revision_ = scene_.revision;
     if (rebuild) {
         options_ = options;
         rebuildCasters(options);
@@ -301,6 +327,7 @@ void GpuScene::refresh(const CasterOptions& options) const
         }
     }
     casterChanges_.advance();
+    objectChanges_.advance();
 }
 
 std::uint64_t GpuScene::poseKey(std::size_t object) const

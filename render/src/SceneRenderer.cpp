@@ -17,6 +17,7 @@
 #include "passes/DepthPrepass.hpp"
 #include "passes/DepthReduction.hpp"
 #include "passes/LitDraws.hpp"
+#include "passes/LitInstances.hpp"
 #include "passes/LitPasses.hpp"
 #include "passes/LitPipelines.hpp"
 #include "passes/PrepassPasses.hpp"
@@ -260,8 +261,7 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     uniforms_.reset();
     instances_.reset();
     storage_.reset();
-    litDraws_ = litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
-                         uniforms_, instances_);
+    litDraws_ = frameLitDraws(camera, frame, state.culling != nullptr);
     if (state.culling)
         prepareCasterCulling(*state.culling, gpuScene_.casters(), gpuScene_, plan_, localPlan_);
     state.posedVertices = !skinning_->empty();
@@ -285,6 +285,20 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     state.litDraws = litDraws_;
     fillFrameBlocks(camera, frame);
     return stats;
+}
+
+// With GPU culling (and instancing) the opaque lit instances stay resident: nothing per object in a frame where nothing
+// moved.
+std::vector<LitDraw> SceneRenderer::frameLitDraws(const scene::Camera& camera, const FrameDesc& frame, bool culledOnGpu)
+{
+    const bool resident = culledOnGpu && frame.instancedDraws;
+    if (resident) {
+        if (!litInstances_)
+            litInstances_ = std::make_unique<LitInstances>(device_);
+        litInstances_->update(gpuScene_);
+    }
+    return litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
+                    uniforms_, instances_, resident ? litInstances_.get() : nullptr);
 }
 
 // The blocks the frame's passes bind (FrameState): the shadow maps', the lit view's and the debug views'.

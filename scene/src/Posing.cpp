@@ -91,6 +91,7 @@ void poseScene(Scene& scene, std::optional<std::uint32_t> animation, float time)
     };
     for (const PlacedObject& placed : rig.placed)
         place(placed.object, world[placed.node] * placed.instance);
+    ++scene.revision;
     rig.pose.joints.clear();
     for (const Skin& skin : rig.skins)
         rig.pose.joints.push_back(jointMatrices(skin, world));

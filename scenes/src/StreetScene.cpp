@@ -160,6 +160,7 @@ void driveStreetCars(scene::Scene& scene, float seconds)
             object.mobility = scene::Mobility::Dynamic;
         }
     }
+    ++scene.revision;
 }
 
 scene::Scene makeStreetScene()

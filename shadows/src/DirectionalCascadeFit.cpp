@@ -7,12 +7,6 @@
 namespace penumbra::shadows {
 namespace {
 
-bool overlapsSquare(const Bounds& light, glm::vec2 centre, float halfSize)
-{
-    return light.max.x >= centre.x - halfSize && light.min.x <= centre.x + halfSize &&
-           light.max.y >= centre.y - halfSize && light.min.y <= centre.y + halfSize;
-}
-
 // Rows right, up, -direction with the eye at (snapped x, snapped y, near depth) in light space;
 // built from the light-space numbers directly so the snapped translation is exact.
 glm::mat4 lightView(const LightBasis& b, glm::vec2 snapped, float nearDepth)
@@ -35,11 +29,7 @@ glm::mat4 lightView(const LightBasis& b, glm::vec2 snapped, float nearDepth)
 void placeDepthPlanes(DirectionalShadowCascade& c, float minDepth, float maxDepth, float nearPlaneOffset,
                       const LightSpaceCasters& casters, const rhi::Conventions& conventions)
 {
-    c.nearDepth = minDepth;
-    for (const Bounds& light : casters.light) {
-        if (overlapsSquare(light, c.snappedCentre, c.halfSize))
-            c.nearDepth = std::min(c.nearDepth, light.min.z);
-    }
+    c.nearDepth = nearestDepthOver(casters, c.snappedCentre, c.halfSize, minDepth);
     const float grid = depthPlaneGrid(c.texelSize);
     c.nearDepth = std::floor((c.nearDepth - nearPlaneOffset) / grid) * grid;
     c.farDepth = std::ceil(maxDepth / grid) * grid;

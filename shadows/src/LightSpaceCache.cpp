@@ -27,15 +27,14 @@ const LightSpaceCasters& LightSpaceCache::casters(glm::vec3 direction, std::span
     } else {
         LightSpaceCasters& casters = light->casters;
         casters.world = world;
-        for (const CasterRange& range : *changed)
+        for (const CasterRange& range : *changed) {
             for (std::uint32_t i = range.first; i < range.first + range.count; ++i)
                 casters.light[i] = lightSpaceBounds(casters.basis, world[i]);
-        // A moved caster may have been the top one: the least depth is taken over every caster again.
-        if (!changed->empty()) {
-            casters.top = std::numeric_limits<float>::max();
-            for (const Bounds& box : casters.light)
-                casters.top = std::min(casters.top, box.min.z);
+            refitChunks(casters, range.first, range.first + range.count);
         }
+        // A moved caster may have been the top one: the least depth is taken over the chunks again.
+        if (!changed->empty())
+            refitTop(casters);
     }
     light->generation = changes.generation();
     light->used = calls_;

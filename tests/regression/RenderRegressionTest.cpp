@@ -160,6 +160,7 @@ void addStaticFrames(rhi::Device& device, FrameTable& table)
     scene::Object& ball = town.objects.at(town.findObject("ball").value());
     ball.transform = glm::translate(glm::mat4(1.0f), {3.0f, 0.0f, -4.0f}) * ball.transform;
     ball.worldBounds = town.meshOf(ball).bounds.transformed(ball.transform);
+    ++town.revision;
     renderer.render(town.camera, frame);
     table["town/static-dynamic-ball-moved"] = outputsOf(device, renderer, frame);
     renderer.useBakedShadows(renderer.bakeStaticShadows(configuration()));

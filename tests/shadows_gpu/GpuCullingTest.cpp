@@ -5,6 +5,7 @@
 #include "LitRendering.hpp"
 
 #include "penumbra/render/SceneRenderer.hpp"
+#include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Image.hpp"
 #include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/shadows/GpuCasterCulling.hpp"
@@ -116,6 +117,7 @@ protected:
         scene::Object& object = scene.objects.at(result.caster);
         object.transform = glm::translate(glm::mat4(1.0f), glm::vec3(500.0f, 0.5f, 500.0f));
         object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
+        ++scene.revision;
         result.movedMin = object.worldBounds.min;
         record(culling, reported ? &gpuScene.casterChanges() : &beforeMove);
         result.moved = culling.uploaded();
@@ -137,6 +139,16 @@ protected:
         drawn.directional = rhi::readDepth(*device, renderer.atlas().texture());
         drawn.local = rhi::readDepth(*device, renderer.localAtlas().texture());
         return drawn;
+    }
+
+    // The last cube lifted into the near view: `reported` raises the scene's revision, as an editor must.
+    static void liftLastCube(scene::Scene& scene, bool reported)
+    {
+        scene::Object& cube = scene.objects.at(kCulledCubes);
+        cube.transform = glm::translate(glm::mat4(1.0f), scene.camera.position + glm::vec3(0.0f, -1.0f, -4.0f));
+        cube.worldBounds = scene.meshOf(cube).bounds.transformed(cube.transform);
+        if (reported)
+            ++scene.revision;
     }
 };
 
@@ -185,6 +197,38 @@ TEST_F(GpuCullingTest, PicturesMatchCpuCulling)
     EXPECT_TRUE(cpu.directional.depth == gpu.directional.depth) << "the directional atlases differ";
     EXPECT_TRUE(cpu.local.depth == gpu.local.depth) << "the local atlases differ";
     EXPECT_GT(gpu.stats.casterDraws, 0u);
+}
+
+// The lit pass's instances stay resident with GPU culling (render/src/passes/LitInstances.hpp): after a cube moved the
+// next frame is still CPU culling's, byte for byte.
+TEST_F(GpuCullingTest, MovedObjectMatchesCpuCulling)
+{
+    scene::Scene scene = culledScene();
+    const render::FrameDesc frame = smallFrame(shadows::CasterCullingMode::Gpu);
+    render::SceneRenderer gpu(*device, scene);
+    gpu.render(scene.camera, frame);
+    const rhi::Image before = rhi::readTexture(*device, gpu.litImage());
+    liftLastCube(scene, true);
+    gpu.render(scene.camera, frame);
+    const rhi::Image moved = rhi::readTexture(*device, gpu.litImage());
+    render::SceneRenderer cpu(*device, scene);
+    cpu.render(scene.camera, smallFrame(shadows::CasterCullingMode::Cpu));
+    const rhi::Image reference = rhi::readTexture(*device, cpu.litImage());
+    EXPECT_FALSE(before.bytes == moved.bytes) << "the cube moved into view";
+    EXPECT_TRUE(moved.bytes == reference.bytes)
+        << "the lit images differ: " << savePicture(reference, "gpu-culling-moved-cpu-" + configuration()) << " "
+        << savePicture(moved, "gpu-culling-moved-gpu-" + configuration());
+}
+
+// A move whose editor does not raise Scene::revision is found by the renderer's spot checks, not drawn stale.
+TEST_F(GpuCullingTest, UnreportedEditCatchesFault)
+{
+    scene::Scene scene = culledScene();
+    const render::FrameDesc frame = smallFrame(shadows::CasterCullingMode::Gpu);
+    render::SceneRenderer renderer(*device, scene);
+    renderer.render(scene.camera, frame);
+    liftLastCube(scene, false);
+    EXPECT_THROW(renderer.render(scene.camera, frame), rhi::Error);
 }
 
 // Instances stay in GPU storage: the first record uploads every caster, one with nothing changed none, one after a

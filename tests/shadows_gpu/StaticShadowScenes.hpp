@@ -58,6 +58,7 @@ inline void moveObject(scene::Scene& scene, const std::string& name, glm::vec3 o
     scene::Object& object = scene.objects.at(scene.findObject(name).value());
     object.transform = glm::translate(glm::mat4(1.0f), offset) * object.transform;
     object.worldBounds = scene.meshOf(object).bounds.transformed(object.transform);
+    ++scene.revision;
 }
 
 } // namespace penumbra::testing

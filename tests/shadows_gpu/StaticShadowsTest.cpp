@@ -168,6 +168,7 @@ TEST_F(StaticShadowsTest, EachLightKeepsItsMapInItsOwnUpdateMode)
     // The scene as at first, the sun and the lamp on change as the settings now say, the bulb still every frame:
     // both maps drawn again, the first picture again.
     scene.objects.at(scene.findObject("a").value()) = first.objects.at(first.findObject("a").value());
+    ++scene.revision;
     scene.lights[0] = first.lights[0];
     scene.lights[0].shadowUpdate = std::nullopt;
     scene.spotLights[0].shadowUpdate = std::nullopt;

@@ -1,5 +1,7 @@
 #include "LitDraws.hpp"
 
+#include "LitInstances.hpp"
+
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/shadows/InstanceBatches.hpp"
 #include "penumbra/shadows/InstanceTransform.hpp"
@@ -14,7 +16,9 @@ namespace {
 static_assert(static_cast<int>(scene::CasterMode::Clip) == static_cast<int>(shadows::ShadowCasterMode::Clip) &&
               static_cast<int>(scene::CasterMode::Dither) == static_cast<int>(shadows::ShadowCasterMode::Dither));
 
-LitObjectUniforms objectUniforms(const scene::Scene& scene, const scene::Object& object)
+} // namespace
+
+LitObjectUniforms litObjectUniforms(const scene::Scene& scene, const scene::Object& object)
 {
     const scene::Material& material = scene.materialOf(object);
     LitObjectUniforms u{
@@ -39,17 +43,24 @@ LitObjectUniforms objectUniforms(const scene::Scene& scene, const scene::Object&
     return u;
 }
 
-} // namespace
-
 std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera, const scene::ViewFrustum& frustum,
-                              bool instanced, rhi::UniformArena& uniforms, rhi::VertexArena& instances)
+                              bool instanced, rhi::UniformArena& uniforms, rhi::VertexArena& instances,
+                              const LitInstances* resident)
 {
     const scene::Scene& scene = gpuScene.scene();
     std::vector<std::uint32_t> opaque, blended;
-    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-        const scene::Object& object = scene.objects[i];
-        if (object.castShadows != scene::ShadowCasting::ShadowsOnly && frustum.mayShow(object.worldBounds))
-            (scene.materialOf(object).blend ? blended : opaque).push_back(i);
+    std::vector<LitDraw> draws;
+    if (resident) {
+        resident->appendDraws(gpuScene, frustum, uniforms, draws);
+        for (const std::uint32_t i : resident->blended())
+            if (frustum.mayShow(scene.objects[i].worldBounds))
+                blended.push_back(i);
+    } else {
+        for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+            const scene::Object& object = scene.objects[i];
+            if (object.castShadows != scene::ShadowCasting::ShadowsOnly && frustum.mayShow(object.worldBounds))
+                (scene.materialOf(object).blend ? blended : opaque).push_back(i);
+        }
     }
     const auto distance2 = [&](std::uint32_t i) {
         const glm::vec3 d = scene.objects[i].worldBounds.center() - camera;
@@ -60,7 +71,6 @@ std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera,
     const auto group = [&](std::uint32_t object) {
         return instanced ? gpuScene.litDrawGroup(object) : shadows::kNoDrawGroup;
     };
-    std::vector<LitDraw> draws;
     std::vector<shadows::InstanceTransform> transforms;
     for (const bool blending : {false, true}) {
         const shadows::InstanceBatches batches =
@@ -70,7 +80,7 @@ std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera,
             for (std::uint32_t i = batch.first; i < batch.first + batch.count; ++i)
                 transforms.push_back(shadows::instanceTransform(scene.objects[batches.items[i]].transform));
             const std::uint32_t object = batches.items[batch.first];
-            draws.push_back({object, batch.count, uniforms.push(objectUniforms(scene, scene.objects[object])),
+            draws.push_back({object, batch.count, uniforms.push(litObjectUniforms(scene, scene.objects[object])),
                              instances.push(std::as_bytes(std::span(transforms)))});
         }
     }

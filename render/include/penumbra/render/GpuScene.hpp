@@ -72,11 +72,17 @@ public:
     };
     // Reads the scene's objects again for the caster list, bounds and static casters below, which are kept from call
     // to call: a caster is rewritten only where its object moved (transform or world bounds) or its pose changed, and
-    // recorded in casterChanges(); the whole list is built anew where an object's shadow casting or mobility, a
-    // material, or the options changed. A scene of 10^5 objects thus costs one comparison per object and frame rather
-    // than its caster list and bounds built anew. The renderer calls it once per frame before planning; the
-    // constructor once with default options. Throws rhi::Error where objects were added or removed since the upload.
+    // recorded in casterChanges(); the whole list is built anew where an object's shadow casting, shadow receiving or
+    // mobility, a material, or the options changed. The objects are compared with what they were only where
+    // scene::Scene::revision changed since the last call; under an unchanged revision only kSpotChecks objects are
+    // (the next ones in turn), so a frame where nothing moved costs nothing per object. The renderer calls it once per
+    // frame before planning; the constructor once with default options. Throws rhi::Error where objects were added or
+    // removed since the upload, and where a spot check finds an object changed under an unchanged revision (an edit
+    // its editor did not report).
     void refresh(const CasterOptions& options) const;
+    // Objects compared per refresh() under an unchanged scene::Scene::revision: an unreported edit is found within
+    // objects / kSpotChecks frames, in the first frame in a scene of fewer objects.
+    static constexpr std::size_t kSpotChecks = 1024;
     // Objects whose material casts shadows, with their world bounds, as of the last refresh().
     const std::vector<shadows::ShadowCaster>& casters() const { return casters_; }
     // What a deformed object's vertices are posed by this frame (a hash of its joint matrices and morph weights in
@@ -88,6 +94,10 @@ public:
     const std::vector<std::uint32_t>& staticCasters() const { return staticCasters_; }
     // Which casters each refresh() changed: what keeps casters resident rewrites only those.
     const shadows::CasterChanges& casterChanges() const { return casterChanges_; }
+    // Which objects each refresh() found moved (indices into Scene::objects; all where the lists were built anew, as
+    // after a change of an object's shadow casting or receiving or of a material): what keeps the lit instances
+    // resident (LitInstances) rewrites only those.
+    const shadows::CasterChanges& objectChanges() const { return objectChanges_; }
 
     // The vertex layout the caster passes read from the scene's vertex buffers.
     static shadows::CasterVertexFormat vertexFormat();
@@ -128,13 +138,25 @@ private:
         glm::mat4 transform{1.0f};
         scene::Bounds worldBounds;
         scene::ShadowCasting castShadows = scene::ShadowCasting::On;
+        bool receiveShadows = true;
         scene::Mobility mobility = scene::Mobility::Static;
+    };
+    // What the lists depend on of a material besides its caster: whether its objects are lit opaque or blended, and
+    // receive shadows (their lit draw group).
+    struct MaterialKey {
+        scene::CasterMode caster = scene::CasterMode::On;
+        bool blend = false;
+        bool receiveShadows = true;
+        bool operator==(const MaterialKey&) const = default;
     };
     static constexpr std::uint32_t kNoCaster = 0xffffffffu;
     // Builds the caster list, bounds and static casters anew.
     void rebuildCasters(const CasterOptions& options) const;
     // Whether the materials' casters differ from those the list was built with (and keeps the new ones).
     bool materialsChanged() const;
+    // Compares objects [first, end) with their snapshots: rewrites the casters of moved ones and logs them. Returns
+    // whether the lists must be built anew. `reported`: the scene's revision changed; otherwise a change throws.
+    bool compareObjects(std::size_t first, std::size_t end, bool reported) const;
 
     // refresh()'s caches: the renderer plans from a const scene, as the shadow caches do.
     mutable std::vector<shadows::ShadowCaster> casters_;
@@ -143,9 +165,12 @@ private:
     mutable std::vector<ObjectSnapshot> snapshots_; // per object
     mutable std::vector<std::uint32_t> casterOf_; // per object: its index in casters_, or kNoCaster
     mutable std::vector<shadows::ShadowCaster> materialCasters_; // per material, as materialCaster() made it
-    mutable std::vector<scene::CasterMode> materialModes_; // per material
+    mutable std::vector<MaterialKey> materialKeys_; // per material
     mutable std::optional<CasterOptions> options_; // those of the last refresh
     mutable shadows::CasterChanges casterChanges_;
+    mutable shadows::CasterChanges objectChanges_;
+    mutable std::optional<std::uint64_t> revision_; // the scene's at the last refresh
+    mutable std::size_t spotCheck_ = 0; // the first object the next spot checks compare
     std::vector<std::uint32_t> deformedObjects_; // ascending
     rhi::Device& device_;
     std::vector<std::unique_ptr<rhi::Texture>> textures_;

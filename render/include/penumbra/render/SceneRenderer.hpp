@@ -33,6 +33,7 @@ class DepthReduction;
 class EnvironmentMaps;
 class FrameGraph;
 class GpuSkinning;
+class LitInstances;
 class LitPipelines;
 class LocalLightTextures;
 class LocalTileCache;
@@ -252,6 +253,7 @@ private:
     FrameStats renderRefreshed(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans plans);
     FrameStats prepareFrame(const scene::Camera& camera, const FrameDesc& frame, ShadowPlans& plans);
     std::vector<std::string> prepareStaticMaps(const FrameDesc& frame, shadows::StaticShadowPlan plan);
+    std::vector<LitDraw> frameLitDraws(const scene::Camera& camera, const FrameDesc& frame, bool culledOnGpu);
     void fillFrameBlocks(const scene::Camera& camera, const FrameDesc& frame);
     rhi::BufferSlice localTileSlice();
     void importResources(const FrameDesc& frame);
@@ -301,6 +303,7 @@ private:
     bool staticUpdateRequested_ = false;
     // This frame's draws (passes/LitDraws.hpp), shared by the prepass and every lit view.
     std::vector<LitDraw> litDraws_;
+    std::unique_ptr<LitInstances> litInstances_; // made on the first frame that culls on the GPU, with instancing
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<FrameGraph> graph_;
     std::unique_ptr<FrameState> state_; // what this frame's passes draw

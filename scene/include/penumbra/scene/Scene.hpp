@@ -79,6 +79,11 @@ struct Scene {
     Camera camera;
     // A glTF file's nodes, skins, morph targets and animations, to pose the objects at another time (Posing.hpp).
     Rig rig;
+    // Raised by whoever edits objects in place (transform and worldBounds, castShadows, receiveShadows, mobility) once
+    // a renderer draws the scene: the renderer reads the objects again only where it changed, so a frame where nothing
+    // moved costs nothing per object. poseScene raises it; an edit left unreported is caught (render::GpuScene::refresh
+    // throws where its spot checks find an object changed under an unchanged revision).
+    std::uint64_t revision = 0;
 
     // Adds a mesh and returns its index.
     std::uint32_t addMesh(MeshData mesh);
