@@ -8,10 +8,16 @@
 
 layout(local_size_x = 64) in;
 
-// scene::Vertex as floats: position 0, normal 3, uv 6, uv1 8, tangent 10, colour 14.
-const uint kVertexFloats = 18;
+// scene::Vertex as floats, and where its position, normal and tangent start (from its C++ declaration).
+const uint kVertexFloats = PENUMBRA_VERTEX_FLOATS;
+const uint kVertexPosition = PENUMBRA_VERTEX_POSITION;
+const uint kVertexNormal = PENUMBRA_VERTEX_NORMAL;
+const uint kVertexTangent = PENUMBRA_VERTEX_TANGENT;
 // MorphTarget offsets as floats per target and vertex: position, normal, tangent xyz (0 where the target has none).
-const uint kTargetFloats = 9;
+const uint kTargetFloats = PENUMBRA_TARGET_FLOATS;
+const uint kTargetPosition = PENUMBRA_TARGET_POSITION;
+const uint kTargetNormal = PENUMBRA_TARGET_NORMAL;
+const uint kTargetTangent = PENUMBRA_TARGET_TANGENT;
 const uint kSkinned = PENUMBRA_DEFORM_SKINNED; // Deform.flags: the deformer has a skin
 // Deform.flags: each triangle's vertices get its face normal (a file without normals)
 const uint kFlatNormals = PENUMBRA_DEFORM_FLAT_NORMALS;
@@ -71,16 +77,16 @@ struct Deformed {
 
 Deformed deformed(uint v)
 {
-    precise vec3 position = restVec3(v, 0);
-    precise vec3 normal = restVec3(v, 3);
-    precise vec3 tangent = restVec3(v, 10);
+    precise vec3 position = restVec3(v, kVertexPosition);
+    precise vec3 normal = restVec3(v, kVertexNormal);
+    precise vec3 tangent = restVec3(v, kVertexTangent);
     const vec3 restNormal = normal;
     const vec3 restTangent = tangent;
     for (uint t = 0; t < deform.targetCount; ++t) {
         const float w = deform.weights[t];
-        position = fma(vec3(w), targetVec3(t, v, 0), position);
-        normal = fma(vec3(w), targetVec3(t, v, 3), normal);
-        tangent = fma(vec3(w), targetVec3(t, v, 6), tangent);
+        position = fma(vec3(w), targetVec3(t, v, kTargetPosition), position);
+        normal = fma(vec3(w), targetVec3(t, v, kTargetNormal), normal);
+        tangent = fma(vec3(w), targetVec3(t, v, kTargetTangent), tangent);
     }
     Deformed d;
     if ((deform.flags & kSkinned) != 0u) {
@@ -97,7 +103,7 @@ Deformed deformed(uint v)
         d.normal = normalizedOr(normal, restNormal);
         d.tangent.xyz = normalizedOr(tangent, restTangent);
     }
-    d.tangent.w = rest[v * kVertexFloats + 13];
+    d.tangent.w = rest[v * kVertexFloats + kVertexTangent + 3u];
     return d;
 }
 
@@ -118,13 +124,9 @@ void main()
     const uint base = v * kVertexFloats;
     for (uint i = 0; i < kVertexFloats; ++i)
         posed[base + i] = rest[base + i];
-    posed[base + 0] = d.position.x;
-    posed[base + 1] = d.position.y;
-    posed[base + 2] = d.position.z;
-    posed[base + 3] = d.normal.x;
-    posed[base + 4] = d.normal.y;
-    posed[base + 5] = d.normal.z;
-    posed[base + 10] = d.tangent.x;
-    posed[base + 11] = d.tangent.y;
-    posed[base + 12] = d.tangent.z;
+    for (uint i = 0; i < 3u; ++i) {
+        posed[base + kVertexPosition + i] = d.position[i];
+        posed[base + kVertexNormal + i] = d.normal[i];
+        posed[base + kVertexTangent + i] = d.tangent[i];
+    }
 }

@@ -5,10 +5,12 @@
 #include "penumbra/shaders/ShaderLibrary.hpp"
 
 #include <fmt/format.h>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -26,6 +28,18 @@ constexpr std::uint32_t kPosedBinding = 5;
 
 constexpr std::uint32_t kSkinned = 1; // skinning.comp's Deform.flags
 constexpr std::uint32_t kFlatNormals = 2;
+
+// Float index of a byte offset into scene::Vertex or a morph target's offsets: the Rest, Targets and Posed buffers hold
+// them as flat floats, and the shader reads the fields at these indices.
+constexpr std::uint32_t floatIndex(std::size_t byteOffset) { return std::uint32_t(byteOffset / sizeof(float)); }
+
+// One vertex's morph offsets in the Targets buffer: position, normal and tangent xyz, 0 where the target has none.
+struct TargetOffsets {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};
+    glm::vec3 tangent{0.0f};
+};
+constexpr std::uint32_t kTargetFloats = floatIndex(sizeof(TargetOffsets));
 
 // The fixed part of skinning.comp's Deform block; the morph weights follow.
 struct DeformHeader {
@@ -97,18 +111,15 @@ std::vector<Influence> influencesOf(const scene::Deformer& deformer)
 std::vector<float> targetsOf(const scene::Deformer& deformer)
 {
     const std::size_t vertices = deformer.rest.size();
-    std::vector<float> out(deformer.targets.size() * vertices * 9, 0.0f);
+    std::vector<float> out(deformer.targets.size() * vertices * kTargetFloats, 0.0f);
     for (std::size_t t = 0; t < deformer.targets.size(); ++t) {
         const scene::MorphTarget& target = deformer.targets[t];
         for (std::size_t v = 0; v < vertices; ++v) {
-            float* at = &out[(t * vertices + v) * 9];
-            const auto put = [&](const std::vector<glm::vec3>& offsets, std::size_t first) {
-                if (!offsets.empty())
-                    std::copy_n(&offsets[v].x, 3, at + first);
-            };
-            put(target.positions, 0);
-            put(target.normals, 3);
-            put(target.tangents, 6);
+            TargetOffsets offsets;
+            offsets.position = target.positions.empty() ? glm::vec3(0.0f) : target.positions[v];
+            offsets.normal = target.normals.empty() ? glm::vec3(0.0f) : target.normals[v];
+            offsets.tangent = target.tangents.empty() ? glm::vec3(0.0f) : target.tangents[v];
+            std::memcpy(&out[(t * vertices + v) * kTargetFloats], &offsets, sizeof(offsets));
         }
     }
     return out;
@@ -118,7 +129,16 @@ rhi::ShaderSource skinningShader()
 {
     using shaders::BlockAccess;
     rhi::ShaderSource source =
-        shaders::load("skinning.comp", {{"DEFORM_SKINNED", kSkinned}, {"DEFORM_FLAT_NORMALS", kFlatNormals}});
+        shaders::load("skinning.comp", {{"DEFORM_SKINNED", kSkinned},
+                                        {"DEFORM_FLAT_NORMALS", kFlatNormals},
+                                        {"VERTEX_FLOATS", floatIndex(sizeof(scene::Vertex))},
+                                        {"VERTEX_POSITION", floatIndex(offsetof(scene::Vertex, position))},
+                                        {"VERTEX_NORMAL", floatIndex(offsetof(scene::Vertex, normal))},
+                                        {"VERTEX_TANGENT", floatIndex(offsetof(scene::Vertex, tangent))},
+                                        {"TARGET_FLOATS", kTargetFloats},
+                                        {"TARGET_POSITION", floatIndex(offsetof(TargetOffsets, position))},
+                                        {"TARGET_NORMAL", floatIndex(offsetof(TargetOffsets, normal))},
+                                        {"TARGET_TANGENT", floatIndex(offsetof(TargetOffsets, tangent))}});
     source.includes.push_back(
         {"skinning_blocks.glsl",
          shaders::storageBlockGlsl(kDeformBlock, kDeformBinding, "deform", BlockAccess::ReadOnly) +
