@@ -8,7 +8,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?= -DPENUMBRA_WERROR=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
 PENUMBRA = $(BUILD)/bin/penumbra
 
-.PHONY: all deps configure build test demo bench bench-forest bench-static shimmer-walk soak sanitize sanitize-ci tsan fuzz docs \
+.PHONY: all deps configure build test demo bench bench-forest bench-loading bench-static shimmer-walk soak sanitize sanitize-ci tsan fuzz docs \
 	format tidy sample-viewer-compare device-check clean
 
 all: build
@@ -46,6 +46,15 @@ bench: build
 bench-forest: build
 	@for tiles in 2048 4096; do $(PENUMBRA) bench --scene forest --settings scripts/bench/forest-$$tiles-tiles.json \
 		--backend vulkan,opengl --frames 10 --warmup 2 --json out/bench-forest-$$tiles.json || exit 1; done
+
+# Loading a glTF file with a dozen 2048^2 PNG textures (the example writer's large-textures, written once into
+# out/bench-loading/), then each backend's device, uploads, mip chains, pipelines and first frame: out/bench-loading.json
+# (loadSeconds, firstFrameSeconds). Target: the first picture within 3 s on 2 cores.
+bench-loading: build
+	@[ -f out/bench-loading/large.gltf ] || $(BUILD)/tests/penumbra_write_example_gltf large-textures \
+		out/bench-loading/large.gltf
+	@$(PENUMBRA) bench --scene out/bench-loading/large.gltf --backend vulkan,opengl --size 64x64 --frames 1 \
+		--warmup 0 --json out/bench-loading.json
 
 # The long soak on both backends: SOAK_FRAMES (default 10000) frames of seeded viewer changes on SOAK_SCENE (default
 # test), out/soak-<backend>.json with every checkpoint's resident memory and live RHI objects. The warm-up is long
