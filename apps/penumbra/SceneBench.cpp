@@ -352,7 +352,6 @@ void printTable(const std::vector<ConfigurationResult>& results, const SceneBenc
 void benchLights(const SceneBenchOptions& options, nlohmann::json& rows)
 {
     const std::vector<std::string> configurations = expandBackends(options.backends);
-    mergeFreedBlocksAtOnce();
     const auto loadStart = std::chrono::steady_clock::now();
     const LoadedScene loaded = loadScene(options.scene);
     const double loadSeconds = secondsSince(loadStart);
@@ -360,6 +359,7 @@ void benchLights(const SceneBenchOptions& options, nlohmann::json& rows)
     const std::optional<shadows::StaticShadowBake> bake = loadBake(options.scene);
     for (const std::string& note : loaded.notes)
         fmt::print("{}: {}\n", options.scene.scene, note);
+    mergeFreedBlocksAtOnce();
     std::vector<ConfigurationResult> results;
     for (const std::string& configuration : configurations)
         results.push_back(benchConfiguration(configuration, loaded.scene, frame, options, bake));
