@@ -447,8 +447,16 @@ void GlCommandList::apiBarrier(const rhi::Barrier& barrier)
     add(rhi::Access::CopyRead | rhi::Access::CopyWrite,
         GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
     add(rhi::Access::HostRead, GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
-    if (bits != 0)
-        commands_.push_back(command::Barrier{bits});
+    if (bits == 0)
+        return;
+    // Barriers with nothing between them are one barrier with all their bits: one glMemoryBarrier, which a driver may
+    // implement as a whole finish (llvmpipe does).
+    if (!commands_.empty())
+        if (auto* previous = std::get_if<command::Barrier>(&commands_.back())) {
+            previous->bits |= bits;
+            return;
+        }
+    commands_.push_back(command::Barrier{bits});
 }
 
 void GlCommandList::apiInsertLabel(std::string_view name)
