@@ -3,6 +3,7 @@
 #include "FrameChecks.hpp"
 #include "LocalLightTextures.hpp"
 #include "cache/LocalTileCache.hpp"
+#include "graph/ApplicationPasses.hpp"
 #include "graph/FrameGraph.hpp"
 #include "passes/ContactShadowPass.hpp"
 #include "passes/DepthPrepass.hpp"
@@ -146,10 +147,7 @@ void SceneRenderer::importResources(const FrameDesc& frame)
     }
     if (frame.msaa > 1)
         createMultisampledTargets(graph, frame);
-    for (const UserTexture& texture : userTextures_)
-        graph.importTexture(texture.name, texture.texture, true);
-    for (const UserBuffer& buffer : userBuffers_)
-        graph.importBuffer(buffer.name, buffer.buffer, true);
+    applicationPasses_->importResources(graph);
     if (state.posedVertices)
         graph.importBuffers(frame::kPosedVertices, skinning_->posedVertices());
     if (state.culling) {

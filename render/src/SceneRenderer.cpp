@@ -8,6 +8,7 @@
 #include "ShadowInputs.hpp"
 #include "TextureSampling.hpp"
 #include "cache/LocalTileCache.hpp"
+#include "graph/ApplicationPasses.hpp"
 #include "graph/FrameGraph.hpp"
 #include "passes/ContactShadowPass.hpp"
 #include "passes/FrameState.hpp"
@@ -72,8 +73,8 @@ SceneRenderer::SceneRenderer(rhi::Device& device, const scene::Scene& scene)
       localStaticTiles_(
           std::make_unique<StaticTileCache>(device, GpuScene::vertexFormat(), "local atlas, static casters")),
       commands_(device.createCommandList()), graph_(std::make_unique<FrameGraph>(device)),
-      state_(std::make_unique<FrameState>()), uniforms_(device, "lit pass uniforms"),
-      instances_(device, "lit pass instances"),
+      state_(std::make_unique<FrameState>()), applicationPasses_(std::make_unique<ApplicationPasses>()),
+      uniforms_(device, "lit pass uniforms"), instances_(device, "lit pass instances"),
       storage_(device, "lit pass storage", rhi::BufferUsage::Storage,
                std::max<std::uint64_t>(device.capabilities().storageBufferOffsetAlignment, 16))
 {
@@ -397,12 +398,8 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     add(std::make_unique<ResolvePass>(state, *lit_));
     add(std::make_unique<LitViewPass>(state, *litPipelines_, gpuScene_, LitView::Cascades));
     add(std::make_unique<LitViewPass>(state, *litPipelines_, gpuScene_, LitView::Visibility));
-    for (const std::unique_ptr<FramePass>& pass : framePasses_) {
-        const std::string name = pass->name();
-        addUserPasses(graph, name, PassPlacement::Side::Before);
-        graph.addPass(*pass);
-        addUserPasses(graph, name, PassPlacement::Side::After);
-    }
+    for (const std::unique_ptr<FramePass>& pass : framePasses_)
+        applicationPasses_->addAround(graph, *pass);
 }
 
 // Depth fit: this frame's histogram, read after the submission (which waited for it), is the next frame's.
@@ -419,37 +416,19 @@ std::optional<shadows::ViewDepthRange> SceneRenderer::visibleDepths() const
     return depthHistogram_ ? shadows::depthHistogramRange(*depthHistogram_) : std::nullopt;
 }
 
-void SceneRenderer::addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const
-{
-    for (const UserPass& user : userPasses_)
-        if (user.placement.pass == pass && user.placement.side == side)
-            graph.addPass(*user.pass);
-}
-
 void SceneRenderer::addPass(std::shared_ptr<FramePass> pass, PassPlacement placement)
 {
-    if (!pass)
-        throw rhi::Error("SceneRenderer::addPass: no pass");
-    if (std::find(frame::kPasses.begin(), frame::kPasses.end(), placement.pass) == frame::kPasses.end()) {
-        std::string names;
-        for (std::string_view name : frame::kPasses)
-            names += fmt::format("{}'{}'", names.empty() ? "" : ", ", name);
-        throw rhi::Error(fmt::format("SceneRenderer::addPass: pass '{}' is placed {} '{}', which is not a pass of the "
-                                     "frame ({})",
-                                     pass->name(), placement.side == PassPlacement::Side::Before ? "before" : "after",
-                                     placement.pass, names));
-    }
-    userPasses_.push_back({std::move(pass), std::move(placement)});
+    applicationPasses_->addPass(std::move(pass), std::move(placement));
 }
 
 void SceneRenderer::addTexture(std::string name, const rhi::Texture& texture)
 {
-    userTextures_.push_back({std::move(name), texture});
+    applicationPasses_->addTexture(std::move(name), texture);
 }
 
 void SceneRenderer::addBuffer(std::string name, const rhi::Buffer& buffer)
 {
-    userBuffers_.push_back({std::move(name), buffer});
+    applicationPasses_->addBuffer(std::move(name), buffer);
 }
 
 std::string SceneRenderer::frameGraphDot() const { return graph_->dot(); }

@@ -27,6 +27,7 @@
 
 namespace penumbra::render {
 
+class ApplicationPasses;
 class ContactShadowPass;
 class DepthPrepass;
 class DepthReduction;
@@ -231,19 +232,6 @@ public:
     void setCasterSkinning(bool on) { casterSkinning_ = on; }
 
 private:
-    struct UserPass {
-        std::shared_ptr<FramePass> pass;
-        PassPlacement placement;
-    };
-    struct UserTexture {
-        std::string name;
-        const rhi::Texture& texture;
-    };
-    struct UserBuffer {
-        std::string name;
-        const rhi::Buffer& buffer;
-    };
-
     void prepareTargets(const FrameDesc& frame, const ShadowPlans& plans);
     // What the frame's casters are made with: drawn from rest vertices without caster skinning, one draw each
     // without instancing (GpuScene::refresh).
@@ -259,7 +247,6 @@ private:
     void importResources(const FrameDesc& frame);
     void buildGraph(const FrameDesc& frame);
     void readDepthHistogram();
-    void addUserPasses(FrameGraph& graph, const std::string& pass, PassPlacement::Side side) const;
     // The lit view's Frame block (the debug views change its view).
     LitFrameUniforms frameUniforms(const scene::Camera& camera, const FrameDesc& frame,
                                    const shadows::LightClusterUniforms& clusters) const;
@@ -309,9 +296,7 @@ private:
     std::unique_ptr<FrameState> state_; // what this frame's passes draw
     std::unique_ptr<rhi::BindingSet> shadowMapSet_; // this frame's (FrameState::shadowMapSet)
     std::vector<std::unique_ptr<FramePass>> framePasses_; // this frame's built-in passes
-    std::vector<UserPass> userPasses_;
-    std::vector<UserTexture> userTextures_;
-    std::vector<UserBuffer> userBuffers_;
+    std::unique_ptr<ApplicationPasses> applicationPasses_; // addPass, addTexture, addBuffer
     rhi::UniformArena uniforms_;
     rhi::VertexArena instances_; // the lit draws' instance transforms
     rhi::BufferArena storage_; // the local atlas's tiles (shadows::LocalAtlasTileData), read by the lit shaders
