@@ -16,10 +16,12 @@ namespace {
 
 rhi::ShaderSource contactShader()
 {
-    rhi::ShaderSource source = litShader("contact_shadows.frag");
-    source.includes.push_back({"contact_constants.glsl",
-                               shaders::uniformBlockGlsl(kContactBlock, kContactBinding, "contact") +
-                                   fmt::format("#define PENUMBRA_BINDING_CONTACT_DEPTH {}\n", kContactDepthBinding)});
+    rhi::ShaderSource source = litShader("contact_shadows.comp");
+    source.includes.push_back(
+        {"contact_constants.glsl", shaders::uniformBlockGlsl(kContactBlock, kContactBinding, "contact") +
+                                       fmt::format("#define PENUMBRA_BINDING_CONTACT_DEPTH {}\n"
+                                                   "#define PENUMBRA_BINDING_CONTACT_SHADOWS_OUT {}\n",
+                                                   kContactDepthBinding, kContactShadowsOutBinding)});
     return source;
 }
 
@@ -92,19 +94,14 @@ ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions,
 }
 
 ContactShadowPass::ContactShadowPass(rhi::Device& device)
-    : device_(device), vertex_(device.createShader(shaders::load("fullscreen.vert"))),
-      fragment_(device.createShader(contactShader())),
-      sampler_(device.createSampler({.magFilter = rhi::Filter::Nearest,
-                                     .minFilter = rhi::Filter::Nearest,
-                                     .debugName = "contact shadows (nearest)"}))
+    : device_(device), sampler_(device.createSampler({.magFilter = rhi::Filter::Nearest,
+                                                      .minFilter = rhi::Filter::Nearest,
+                                                      .debugName = "contact shadows (nearest)"}))
 {
-    rhi::PipelineDesc desc;
-    desc.vertex = vertex_.get();
-    desc.fragment = fragment_.get();
-    desc.colorTargets = {rhi::ColorTarget{kContactShadowFormat}};
-    desc.uniformLayouts = {shaders::uniformLayout(kContactBlock)};
-    desc.debugName = "contact shadows";
-    pipeline_ = device.createPipeline(desc);
+    const std::unique_ptr<rhi::Shader> shader = device.createShader(contactShader());
+    pipeline_ = device.createComputePipeline({.compute = shader.get(),
+                                              .uniformLayouts = {shaders::uniformLayout(kContactBlock)},
+                                              .debugName = "contact shadows"});
 }
 
 void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height, bool receivers)
@@ -123,20 +120,19 @@ void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height, bool 
     shadows_ = device_.createTexture({.width = contactShadowExtent(width),
                                       .height = contactShadowExtent(height),
                                       .format = kContactShadowFormat,
-                                      .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
+                                      .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage,
                                       .debugName = "contact shadows"});
-    const rhi::Attachment color{shadows_.get(), 0};
-    target_ = device_.createFramebuffer({.colors = {&color, 1}, .debugName = "contact shadows"});
 }
 
 void ContactShadowPass::record(rhi::CommandList& commands, const rhi::UniformSlice& uniforms)
 {
-    commands.beginPass({.framebuffer = target_.get(), .clearColor = std::nullopt, .clearDepth = false});
-    commands.bindPipeline(*pipeline_);
+    const std::array<std::uint32_t, 3>& group = pipeline_->workgroupSize();
+    commands.bindComputePipeline(*pipeline_);
     rhi::bindUniform(commands, kContactBinding, uniforms);
     commands.bindTexture(kContactDepthBinding, *viewDepth_, *sampler_);
-    commands.draw(3);
-    commands.endPass();
+    commands.bindStorageTexture(kContactShadowsOutBinding, *shadows_);
+    const rhi::TextureDesc& size = shadows_->desc();
+    commands.dispatch((size.width + group[0] - 1) / group[0], (size.height + group[1] - 1) / group[1]);
 }
 
 std::string ContactShadowsPass::name() const { return std::string(frame::kContactShadowsPass); }
@@ -146,7 +142,7 @@ bool ContactShadowsPass::setup(FramePassBuilder& builder)
     if (!state_.contact)
         return false;
     builder.read(frame::kContactViewDepth);
-    builder.write(frame::kContactShadows);
+    builder.write(frame::kContactShadows, ResourceUse::StorageWrite);
     return true;
 }
 
