@@ -16,12 +16,10 @@ namespace {
 
 rhi::ShaderSource contactShader()
 {
-    rhi::ShaderSource source = litShader("contact_shadows.comp");
-    source.includes.push_back(
-        {"contact_constants.glsl", shaders::uniformBlockGlsl(kContactBlock, kContactBinding, "contact") +
-                                       fmt::format("#define PENUMBRA_BINDING_CONTACT_DEPTH {}\n"
-                                                   "#define PENUMBRA_BINDING_CONTACT_SHADOWS_OUT {}\n",
-                                                   kContactDepthBinding, kContactShadowsOutBinding)});
+    rhi::ShaderSource source = litShader("contact_shadows.frag");
+    source.includes.push_back({"contact_constants.glsl",
+                               shaders::uniformBlockGlsl(kContactBlock, kContactBinding, "contact") +
+                                   fmt::format("#define PENUMBRA_BINDING_CONTACT_DEPTH {}\n", kContactDepthBinding)});
     return source;
 }
 
@@ -94,14 +92,19 @@ ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions,
 }
 
 ContactShadowPass::ContactShadowPass(rhi::Device& device)
-    : device_(device), sampler_(device.createSampler({.magFilter = rhi::Filter::Nearest,
-                                                      .minFilter = rhi::Filter::Nearest,
-                                                      .debugName = "contact shadows (nearest)"}))
+    : device_(device), vertex_(device.createShader(shaders::load("fullscreen.vert"))),
+      fragment_(device.createShader(contactShader())),
+      sampler_(device.createSampler({.magFilter = rhi::Filter::Nearest,
+                                     .minFilter = rhi::Filter::Nearest,
+                                     .debugName = "contact shadows (nearest)"}))
 {
-    const std::unique_ptr<rhi::Shader> shader = device.createShader(contactShader());
-    pipeline_ = device.createComputePipeline({.compute = shader.get(),
-                                              .uniformLayouts = {shaders::uniformLayout(kContactBlock)},
-                                              .debugName = "contact shadows"});
+    rhi::PipelineDesc desc;
+    desc.vertex = vertex_.get();
+    desc.fragment = fragment_.get();
+    desc.colorTargets = {rhi::ColorTarget{kContactShadowFormat}};
+    desc.uniformLayouts = {shaders::uniformLayout(kContactBlock)};
+    desc.debugName = "contact shadows";
+    pipeline_ = device.createPipeline(desc);
 }
 
 void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height, bool receivers)
@@ -120,19 +123,20 @@ void ContactShadowPass::prepare(std::uint32_t width, std::uint32_t height, bool 
     shadows_ = device_.createTexture({.width = contactShadowExtent(width),
                                       .height = contactShadowExtent(height),
                                       .format = kContactShadowFormat,
-                                      .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::Storage,
+                                      .usage = rhi::TextureUsage::Sampled | rhi::TextureUsage::RenderTarget,
                                       .debugName = "contact shadows"});
+    const rhi::Attachment color{shadows_.get(), 0};
+    target_ = device_.createFramebuffer({.colors = {&color, 1}, .debugName = "contact shadows"});
 }
 
 void ContactShadowPass::record(rhi::CommandList& commands, const rhi::UniformSlice& uniforms)
 {
-    const std::array<std::uint32_t, 3>& group = pipeline_->workgroupSize();
-    commands.bindComputePipeline(*pipeline_);
+    commands.beginPass({.framebuffer = target_.get(), .clearColor = std::nullopt, .clearDepth = false});
+    commands.bindPipeline(*pipeline_);
     rhi::bindUniform(commands, kContactBinding, uniforms);
     commands.bindTexture(kContactDepthBinding, *viewDepth_, *sampler_);
-    commands.bindStorageTexture(kContactShadowsOutBinding, *shadows_);
-    const rhi::TextureDesc& size = shadows_->desc();
-    commands.dispatch((size.width + group[0] - 1) / group[0], (size.height + group[1] - 1) / group[1]);
+    commands.draw(3);
+    commands.endPass();
 }
 
 std::string ContactShadowsPass::name() const { return std::string(frame::kContactShadowsPass); }
@@ -142,7 +146,7 @@ bool ContactShadowsPass::setup(FramePassBuilder& builder)
     if (!state_.contact)
         return false;
     builder.read(frame::kContactViewDepth);
-    builder.write(frame::kContactShadows, ResourceUse::StorageWrite);
+    builder.write(frame::kContactShadows);
     return true;
 }
 

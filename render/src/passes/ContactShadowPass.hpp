@@ -28,13 +28,12 @@ inline constexpr rhi::Format kContactShadowFormat = rhi::Format::RGBA32F;
 // Texels per side of the contact shadow texture for `pixels` of the frame: one per two pixels, rounded up.
 constexpr std::uint32_t contactShadowExtent(std::uint32_t pixels) { return (pixels + 1) / 2; }
 
-// The contact pass's bindings: its block, the single-sampled view depth it marches through (kViewDepthFormat,
-// written by the prepass) and the contact shadow texture it stores into.
+// The contact pass's bindings: its block and the single-sampled view depth it marches through (kViewDepthFormat,
+// written by the prepass).
 inline constexpr std::uint32_t kContactBinding = 0;
 inline constexpr std::uint32_t kContactDepthBinding = 1;
-inline constexpr std::uint32_t kContactShadowsOutBinding = 2;
 
-// The Contact block of shaders/contact_shadows.comp, std140.
+// The Contact block of shaders/contact_shadows.frag, std140.
 struct ContactShadowUniforms {
     glm::mat4 worldToTexture{1.0f}; // rhi::Conventions::clipToTexture() times the view-projection
     glm::vec4 cameraPosition{0.0f};
@@ -76,7 +75,7 @@ inline constexpr std::array kContactFields{
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, localLightCount),
     PENUMBRA_SHADER_FIELD(ContactShadowUniforms, nearPlane),
 };
-// contact_shadows.comp's block Contact, read through the instance name `contact`.
+// contact_shadows.frag's block Contact, read through the instance name `contact`.
 inline constexpr shaders::ShaderStruct kContactBlock{"Contact", sizeof(ContactShadowUniforms), kContactFields};
 static_assert(shaders::matchesLayout(kContactBlock, shaders::BlockLayout::Std140));
 
@@ -95,12 +94,12 @@ ContactShadowUniforms contactShadowUniforms(const rhi::Conventions& conventions,
                                             const FrameDesc& frame, const LitFrameUniforms& lit,
                                             const scene::Scene& scene, std::span<const std::uint32_t> localLights);
 
-// The contact shadow march (shaders/contact_shadows.comp): one compute dispatch at half resolution over the
+// The contact shadow march (shaders/contact_shadows.frag): one full-screen pass at half resolution over the
 // single-sampled view depth that the prepass writes beside the lit depth (viewDepth(), shaders/view_depth.glsl) into
 // shadows(), which the lit pass and the visibility view upsample at their pixel (shaders/contact_shadows_lit.glsl).
-// Half resolution: a quarter of the marches (docs/notes/2026-12-06-contact-shadows.md). A dispatch, not a full-screen
-// draw: lavapipe spends several milliseconds on a render pass before it draws anything. View depth, not the depth
-// buffer: the same in every depth convention (docs/notes/2026-12-07-contact-parity-cost.md).
+// Half resolution: a full-resolution pass costs a software rasterizer a tenth of the lit pass before it marches at all
+// (docs/notes/2026-12-06-contact-shadows.md). View depth, not the depth buffer: the same in every depth convention
+// (docs/notes/2026-12-07-contact-parity-cost.md).
 class ContactShadowPass {
 public:
     explicit ContactShadowPass(rhi::Device& device);
@@ -121,9 +120,11 @@ public:
 
 private:
     rhi::Device& device_;
-    std::unique_ptr<rhi::ComputePipeline> pipeline_;
+    std::unique_ptr<rhi::Shader> vertex_, fragment_;
+    std::unique_ptr<rhi::Pipeline> pipeline_;
     std::unique_ptr<rhi::Sampler> sampler_;
     std::unique_ptr<rhi::Texture> shadows_, viewDepth_;
+    std::unique_ptr<rhi::Framebuffer> target_;
     std::unique_ptr<DepthPrepass> prepass_, receiverPrepass_;
 };
 

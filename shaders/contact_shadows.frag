@@ -11,8 +11,7 @@
 // convention rounds the depth buffer differently, and a sample within that rounding of the bias would decide
 // otherwise in each configuration. Screen conventions are the RHI's (Conventions::clipToTexture in worldToTexture maps
 // clip space to the texture coordinates of any render target, row 0 at the top; its z row is unused here), so no
-// backend flips anything. A compute shader, not a full-screen draw: on lavapipe a render pass costs several
-// milliseconds before it draws anything, a dispatch does not (docs/notes/2026-12-07-contact-parity-cost.md).
+// backend flips anything.
 
 #include "contact_constants.glsl" // the block Contact (penumbra::render::ContactShadowUniforms) and the bindings
 #include "material.glsl"
@@ -20,12 +19,7 @@
 // The prepass's view depth (view_depth.glsl), metres along the camera's forward; 0 where no surface was drawn.
 layout(binding = PENUMBRA_BINDING_CONTACT_DEPTH) uniform sampler2D sceneViewDepth;
 
-// 8 x 8 invocations: 64, a whole number of the SIMD widths that llvmpipe and GPUs run invocations in, in a square
-// whose rays start close together and so fetch nearby depths.
-layout(local_size_x = 8, local_size_y = 8) in;
-
-// contactShadowExtent of the frame's size, kContactShadowFormat.
-layout(binding = PENUMBRA_BINDING_CONTACT_SHADOWS_OUT, rgba32f) uniform writeonly image2D contactShadows;
+layout(location = 0) out vec4 outContact;
 
 float viewDepthAt(ivec2 pixel)
 {
@@ -75,12 +69,13 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
 // Half resolution: texel q marches from the full-resolution pixel 2q and keeps what the lit pass needs to hand its
 // answer to the pixels around it (contact_shadows_lit.glsl): that pixel's inverse view depth, its step per pixel, a
 // bit per directional light and a bit per spot or point light that the march found occluded.
-vec4 march(ivec2 pixel)
+void main()
 {
+    const ivec2 pixel = 2 * ivec2(gl_FragCoord.xy);
     const float depth = viewDepthAt(pixel);
-    vec4 marched = vec4(depth, 0.0, 0.0, 0.0);
+    outContact = vec4(depth, 0.0, 0.0, 0.0);
     if (depth <= 0.0)
-        return marched;
+        return;
     const vec2 centre = vec2(pixel) + 0.5;
     const vec2 ndc = penumbraFragCoordToNdc(centre, contact.targetSize.xy);
     const vec3 position = contact.cameraPosition.xyz +
@@ -96,15 +91,15 @@ vec4 march(ivec2 pixel)
     // depth is: on a plane the odd pixel between two marched ones lies exactly between them, and a step per pixel
     // measures the plane alike on both sides.
     const float inverse = 1.0 / depth;
-    marched.xy = vec2(inverse, stepPerPixel(inverse, inverseViewDepth(left), inverseViewDepth(right),
-                                            inverseViewDepth(up), inverseViewDepth(down)));
+    outContact.xy = vec2(inverse, stepPerPixel(inverse, inverseViewDepth(left), inverseViewDepth(right),
+                                               inverseViewDepth(up), inverseViewDepth(down)));
     const float jitter = 0.5 + 0.5 * interleavedGradientNoise(centre);
     int occluded = 0;
     for (int i = 0; i < contact.lightCount; ++i)
         occluded |= contactOccluded(position, pixel, contact.towardsLight[i].xyz, contact.marchLength, bias, jitter)
                         ? 1 << i
                         : 0;
-    marched.z = float(occluded);
+    outContact.z = float(occluded);
     // A spot or point light: towards its position, no farther than the light itself, and only where it shines (within
     // its range and cone), since the lit pass adds nothing of it elsewhere.
     int localOccluded = 0;
@@ -119,14 +114,5 @@ vec4 march(ivec2 pixel)
                     ? 1 << k
                     : 0;
     }
-    marched.w = float(localOccluded);
-    return marched;
-}
-
-void main()
-{
-    const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(texel, imageSize(contactShadows))))
-        return;
-    imageStore(contactShadows, texel, march(2 * texel));
+    outContact.w = float(localOccluded);
 }
