@@ -1,6 +1,7 @@
 #include "penumbra/shadows/DepthFitTiles.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -14,6 +15,13 @@ namespace {
 constexpr int kRasterCells = 256;
 // Coordinate descent rounds at most; each moves every size by at most one grid step.
 constexpr int kDescentRounds = 16;
+// Mean-shift steps at most from the heaviest window to the one centred on its samples.
+constexpr int kShiftSteps = 16;
+// The least gain, in bits per sample, for which the descent moves a size. About the optimum the cost is flat, so
+// neighbouring sizes nearly tie there, and the configurations' depth buffers, which differ in their last bits, move a
+// few samples into a neighbouring cell: a size must win by more than those samples weigh, or the configurations
+// would choose differently (the parity tests).
+constexpr double kDecisiveGain = 1.0 / 256.0;
 
 // One light slot's samples on a raster anchored to a multiple of its cell: mass per cell, rows of nx.
 struct Raster {
@@ -94,6 +102,21 @@ public:
                 at(x + 1, y + 1) = mass[static_cast<std::size_t>(y * nx_ + x)] + at(x, y + 1) + at(x + 1, y) - at(x, y);
     }
 
+    // The mean of the cells' x, y (cell centres, in cells) in the window, weighted by `mass`; the window's centre where
+    // it holds nothing.
+    static glm::dvec2 centroid(const Raster& r, const std::vector<double>& mass, int x, int y, int k)
+    {
+        glm::dvec2 weighted(0.0);
+        double total = 0.0;
+        for (int j = std::max(y, 0); j < std::min(y + k, r.ny); ++j)
+            for (int i = std::max(x, 0); i < std::min(x + k, r.nx); ++i) {
+                const double m = mass[static_cast<std::size_t>(j * r.nx + i)];
+                weighted += m * glm::dvec2(i + 0.5, j + 0.5);
+                total += m;
+            }
+        return total > 0.0 ? weighted / total : glm::dvec2(x, y) + 0.5 * k;
+    }
+
     double sum(int x, int y, int k) const
     {
         const int x0 = std::clamp(x, 0, nx_), x1 = std::clamp(x + k, 0, nx_);
@@ -128,6 +151,59 @@ void clear(const Raster& r, std::vector<double>& mass, const Window& w, int k)
             mass[static_cast<std::size_t>(y * r.nx + x)] = 0.0;
 }
 
+// From the heaviest window, mean shift (Comaniciu and Meer, "Mean Shift: A Robust Approach Toward Feature Space
+// Analysis", PAMI 2002): the window moves to be centred on the mean of the samples it holds until it is. Where
+// neighbouring windows hold nearly as much (a plateau), which one is heaviest turns on a few samples, and the
+// configurations' depth buffers, which differ in their last bits, move a few samples into a neighbouring cell; the
+// mean moves only as much as those samples weigh, so every configuration places the tile alike (the parity tests).
+Window centred(const Raster& r, const std::vector<double>& mass, const WindowSums& sums, Window w, int k)
+{
+    for (int step = 0; step < kShiftSteps; ++step) {
+        const glm::dvec2 mean = WindowSums::centroid(r, mass, w.x, w.y, k);
+        const glm::ivec2 corner(static_cast<int>(std::floor(mean.x - 0.5 * k + 0.5)),
+                                static_cast<int>(std::floor(mean.y - 0.5 * k + 0.5)));
+        if (corner.x == w.x && corner.y == w.y)
+            break;
+        w = {corner.x, corner.y, sums.sum(corner.x, corner.y, k)};
+    }
+    return w;
+}
+
+// From the mean-shift window, one cell at a time towards more samples while a move gains more than `decisive`: the
+// mean of samples that end at an edge (the near ground at the view's bottom edge) leaves empty cells in the window.
+Window climbed(const WindowSums& sums, Window w, int k, double decisive)
+{
+    constexpr std::array<glm::ivec2, 4> kMoves{glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1),
+                                               glm::ivec2(0, 1)};
+    for (int step = 0; step < 4 * kShiftSteps; ++step) {
+        Window best = w;
+        for (const glm::ivec2 move : kMoves) {
+            const double m = sums.sum(w.x + move.x, w.y + move.y, k);
+            if (m > best.mass + decisive)
+                best = {w.x + move.x, w.y + move.y, m};
+        }
+        if (best.x == w.x && best.y == w.y)
+            break;
+        w = best;
+    }
+    return w;
+}
+
+// What a placement costs: first the log2 half size of the tile that serves the median sample (the issue's measure,
+// texels per metre on screen, is a median), then the sum over samples of log2 of their tile's half size (the
+// geometric mean texel, depthFitPartition's cost), which decides between sizes with the same median and weighs the
+// tails; both over every slot's samples.
+struct Cost {
+    double median = 0.0;
+    double sum = 0.0;
+
+    // Better by more than `margin` in the sum, or by a smaller median.
+    bool beats(const Cost& other, double margin) const
+    {
+        return median < other.median || (median == other.median && sum < other.sum - margin);
+    }
+};
+
 class Placement {
 public:
     Placement(std::vector<Raster> rasters, const DepthFitTilesInput& input) : rasters_(std::move(rasters)), in_(input)
@@ -144,14 +220,16 @@ public:
         return static_cast<int>(std::floor(2.0f * half * in_.servedShare / r.cell));
     }
 
-    // Each tile put where it holds the most of what the nearer ones left (at `at`'s centres where given); the mean
-    // over slots of the sum of the samples' log2 half sizes.
-    double cost(const std::vector<float>& halves, const std::vector<std::vector<glm::vec2>>* at,
-                std::vector<std::vector<glm::vec2>>* centres) const
+    // Each tile put where it holds the most of what the nearer ones left (at `at`'s centres where given); the sum is
+    // the mean over slots.
+    Cost cost(const std::vector<float>& halves, const std::vector<std::vector<glm::vec2>>* at,
+              std::vector<std::vector<glm::vec2>>* centres) const
     {
         if (centres)
             centres->assign(halves.size(), std::vector<glm::vec2>(rasters_.size()));
         double total = 0.0;
+        std::vector<std::pair<double, double>> served; // log2 half size, samples
+        const double lastLog2 = std::log2(static_cast<double>(in_.lastHalfSize));
         for (std::size_t s = 0; s < rasters_.size(); ++s) {
             const Raster& r = rasters_[s];
             std::vector<double> mass = r.mass;
@@ -167,18 +245,30 @@ public:
                     w = {static_cast<int>(std::lround(corner.x)), static_cast<int>(std::lround(corner.y)), 0.0};
                     w.mass = sums.sum(w.x, w.y, k);
                 } else {
-                    w = sums.heaviest(k);
+                    w = climbed(sums, centred(r, mass, sums, sums.heaviest(k), k), k, kDecisiveGain * samples(r));
                 }
-                total += w.mass * std::log2(static_cast<double>(halves[c]));
+                served.emplace_back(std::log2(static_cast<double>(halves[c])), w.mass);
+                total += w.mass * served.back().first;
                 left -= w.mass;
                 clear(r, mass, w, k);
                 if (centres)
                     (*centres)[c][s] =
                         at ? (*at)[c][s] : r.origin + (glm::vec2(w.x, w.y) + 0.5f * static_cast<float>(k)) * r.cell;
             }
-            total += std::max(left, 0.0) * std::log2(static_cast<double>(in_.lastHalfSize));
+            served.emplace_back(lastLog2, std::max(left, 0.0));
+            total += served.back().second * lastLog2;
         }
-        return total / static_cast<double>(rasters_.size());
+        std::sort(served.begin(), served.end());
+        double below = 0.0;
+        Cost cost{lastLog2, total / static_cast<double>(rasters_.size())};
+        for (const auto& [log2Half, samples] : served) {
+            below += samples;
+            if (below >= 0.5 * samples_ * static_cast<double>(rasters_.size())) {
+                cost.median = log2Half;
+                break;
+            }
+        }
+        return cost;
     }
 
     double samples() const { return samples_; }
@@ -222,13 +312,13 @@ struct CoarseSearch {
     std::vector<float> candidates;
     std::vector<float> halves;
     std::vector<float> best;
-    double bestCost = std::numeric_limits<double>::infinity();
+    Cost bestCost{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
 
     void search(std::size_t tiles, std::size_t from)
     {
         if (halves.size() == tiles) {
-            const double c = placement.cost(halves, nullptr, nullptr);
-            if (c < bestCost) {
+            const Cost c = placement.cost(halves, nullptr, nullptr);
+            if (c.beats(bestCost, 0.0)) {
                 bestCost = c;
                 best = halves;
             }
@@ -276,7 +366,7 @@ DepthFitTiles depthFitTiles(const DepthHistogram& histogram, const DepthFitTiles
         coarse.search(input.placed, 0);
         halves = coarse.best;
     }
-    double cost = placement.cost(halves, nullptr, nullptr);
+    Cost cost = placement.cost(halves, nullptr, nullptr);
     for (int round = 0; round < kDescentRounds; ++round) {
         bool moved = false;
         for (std::size_t c = 0; c < halves.size(); ++c)
@@ -285,8 +375,8 @@ DepthFitTiles depthFitTiles(const DepthHistogram& histogram, const DepthFitTiles
                 candidate[c] = gridNeighbour(halves[c], steps, up);
                 if (!(candidate[c] >= smallest && candidate[c] < input.lastHalfSize))
                     continue;
-                // A relative margin: float noise must not move a size back and forth.
-                if (const double c2 = placement.cost(candidate, nullptr, nullptr); c2 < cost - 1e-9 * std::abs(cost)) {
+                if (const Cost c2 = placement.cost(candidate, nullptr, nullptr);
+                    c2.beats(cost, kDecisiveGain * placement.samples())) {
                     cost = c2;
                     halves = std::move(candidate);
                     moved = true;
@@ -298,10 +388,12 @@ DepthFitTiles depthFitTiles(const DepthHistogram& histogram, const DepthFitTiles
     DepthFitTiles tiles;
     tiles.halfSizes = halves;
     placement.cost(halves, nullptr, &tiles.centres);
-    if (keptFits &&
-        placement.cost(input.kept->halfSizes, &input.kept->centres, nullptr) <=
-            cost + static_cast<double>(input.toleranceLog2) * placement.samples())
-        return *input.kept;
+    if (keptFits) {
+        const Cost kept = placement.cost(input.kept->halfSizes, &input.kept->centres, nullptr);
+        const auto tolerance = static_cast<double>(input.toleranceLog2);
+        if (kept.median <= cost.median + tolerance && kept.sum <= cost.sum + tolerance * placement.samples())
+            return *input.kept;
+    }
     return tiles;
 }
 

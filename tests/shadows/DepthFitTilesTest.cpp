@@ -142,8 +142,8 @@ TEST(DepthFitTiles, PlannerPlacesTheTilesAndTheLastHoldsEverySample)
     }
     EXPECT_GT(servedByPlaced, points.size() / 2);
     // The same histogram with the plan's kept state gives the same plan.
-    const DirectionalShadowPlan again = planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights,
-                                                               casters, {&h, &*plan.depthFit});
+    const DirectionalShadowPlan again =
+        planDirectionalShadows(settings, testing::kZeroToOneReversed, camera, lights, casters, {&h, &*plan.depthFit});
     EXPECT_EQ(again.depthFit, plan.depthFit);
 }
 
