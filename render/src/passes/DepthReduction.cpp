@@ -82,6 +82,13 @@ float fromOrderedBits(std::uint32_t bits)
     return f;
 }
 
+// The bytes of the block that `lights` lights use: the bins, then their occupancy grids (the last lights' are not
+// cleared, dispatched over or read).
+std::size_t usedBytes(std::size_t lights)
+{
+    return offsetof(GpuHistogram, occupancy) + lights * shadows::kOccupancyOctaves * kGridCells * sizeof(std::uint32_t);
+}
+
 } // namespace
 
 DepthReduction::DepthReduction(rhi::Device& device)
@@ -132,7 +139,7 @@ void DepthReduction::record(rhi::CommandList& commands, const rhi::Texture& dept
     block.firstOctave = firstOctave_;
     block.lightCount = static_cast<std::int32_t>(lights_.size());
     frame_->writeObject(block);
-    bins_->write(0, empty_);
+    bins_->write(0, std::span<const std::byte>(empty_).first(usedBytes(lights_.size())));
     commands.bindComputePipeline(*pipeline_);
     commands.bindTexture(0, depth, *sampler_);
     commands.bindStorageBuffer(kDepthHistogramBinding, *bins_, 0, bins_->desc().size);
@@ -147,7 +154,7 @@ std::optional<shadows::DepthHistogram> DepthReduction::read()
         return std::nullopt;
     recorded_ = false;
     const auto read = std::make_unique<GpuHistogram>();
-    bins_->read(0, std::as_writable_bytes(std::span(read.get(), 1)));
+    bins_->read(0, std::as_writable_bytes(std::span(read.get(), 1)).first(usedBytes(lights_.size())));
     shadows::DepthHistogram histogram;
     histogram.firstOctave = firstOctave_;
     histogram.lightDirections = lights_;
