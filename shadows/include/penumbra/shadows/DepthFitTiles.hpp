@@ -31,14 +31,17 @@ struct DepthFitTilesInput {
 
 // Map-based selection serves a sample by the first tile that holds it, whatever its depth, so the tiles are placed
 // around clusters of the samples in light space rather than around runs of depth: each light slot's occupancy grids
-// are spread onto one raster about its footprint, and the tiles are the squares that put the samples' texels highest,
-// the least mean log2 of the half size of the tile that serves each sample (the geometric mean texel, as
-// depthFitPartition's cost; the median would be a step function of the sizes, and the geometric mean also counts the
-// near and far tails), averaged over the slots. For given half sizes (shared by the slots) each tile in turn is put
-// where it holds the most samples the nearer ones left; the sizes are searched on the grid, powers of two first (half
-// sizes not decreasing from tile to tile), then by coordinate descent one grid step at a time; the samples no placed
-// tile holds are the last tile's. `kept` stays, sizes and centres, while it costs at most toleranceLog2 more per
-// sample; the search then starts from its sizes. Empty where no slot has occupancy grids.
+// are spread onto one raster about its footprint. For given half sizes (shared by the slots) each tile in turn goes to
+// the window that holds the most of what the tiles before it left, then to the one centred on those samples (mean
+// shift) and towards more of them while a move gains more than 1/256 of the samples, so that the few samples the
+// configurations' depth buffers put in a neighbouring cell place no tile differently; the samples no placed tile
+// holds are the last tile's. The cost is first the log2 half size of the tile that serves the median sample (the
+// issue's measure is the median texel density on screen), then the samples' mean log2 half size (the geometric mean
+// texel, depthFitPartition's cost: it chooses among sizes with the same median and weighs the tails). The sizes are
+// searched on the grid, powers of two first (half sizes not decreasing from tile to tile), then by coordinate descent
+// one grid step at a time, a step taken only for a gain above 1/256 bit per sample. `kept` stays, sizes and centres,
+// while its median is at most toleranceLog2 larger and its mean log2 at most toleranceLog2 more per sample; the
+// search then starts from its sizes instead of the powers of two. Empty where a slot has no occupancy grids.
 DepthFitTiles depthFitTiles(const DepthHistogram& histogram, const DepthFitTilesInput& input);
 
 } // namespace penumbra::shadows
