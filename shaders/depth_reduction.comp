@@ -5,11 +5,14 @@
 // widens that bin's light-space footprint. A workgroup gathers its 16 x 16 pixels in shared memory, then merges the
 // bins it touched into the buffer with atomics (Lauritzen, Salvi and Lefohn, "Sample Distribution Shadow Maps", I3D
 // 2011, sections 4.1 and 4.2: the depth histogram and the per-partition light-space bounds). Footprint floats are
-// compared as uints through orderedBits, which keeps their order for both signs.
+// compared as uints through orderedBits, which keeps their order for both signs. Each pixel also counts, per light, in
+// its cell of the occupancy grid of its depth's octave (shadows::OccupancyGrid), in the buffer directly: the cells a
+// workgroup touches are few, and integer counts add up the same in any order.
 #include "constants.glsl"
 // The storage block DepthHistogram (`histogram`: per bin, the count and per light the orderedBits of the footprint's
-// min x, min y, max x, max y) and the uniform block DepthHistogramFrame (`frame`), generated from their C++
-// declarations with the lengths PENUMBRA_BINS, PENUMBRA_LIGHTS and PENUMBRA_BIN_FOOTPRINTS (DepthReduction.cpp).
+// min x, min y, max x, max y; then the occupancy counts, light, octave, row, column) and the uniform block
+// DepthHistogramFrame (`frame`), generated from their C++ declarations with the lengths PENUMBRA_BINS,
+// PENUMBRA_LIGHTS, PENUMBRA_BIN_FOOTPRINTS, PENUMBRA_OCCUPANCY and PENUMBRA_OCCUPANCY_GRIDS (DepthReduction.cpp).
 #include "depth_reduction_blocks.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -17,6 +20,8 @@ layout(local_size_x = 16, local_size_y = 16) in;
 const uint kBins = PENUMBRA_BINS;
 const uint kStepsPerOctave = PENUMBRA_STEPS_PER_OCTAVE;
 const int kLights = PENUMBRA_LIGHTS;
+const uint kCells = PENUMBRA_OCCUPANCY_CELLS;
+const uint kOctaves = PENUMBRA_OCCUPANCY_OCTAVES;
 
 layout(binding = 0) uniform sampler2D depth;
 
@@ -37,6 +42,22 @@ uint binOf(float viewDepth)
     const int step = int((2.0 * mantissa - 1.0) * float(kStepsPerOctave));
     const int bin = (exponent - 1 - frame.firstOctave) * int(kStepsPerOctave) + step;
     return uint(clamp(bin, 0, int(kBins) - 1));
+}
+
+// shadows::occupancyOctave.
+uint occupancyOctave(uint bin)
+{
+    const uint skipped = kBins / kStepsPerOctave - kOctaves;
+    return max(bin / kStepsPerOctave, skipped) - skipped;
+}
+
+// Counts the sample at light-space x, y in light l's grid of its octave.
+void occupy(int l, uint octave, vec2 light)
+{
+    const uint grid = uint(l) * kOctaves + octave;
+    const vec4 g = frame.occupancyGrids[grid];
+    const uvec2 cell = uvec2(clamp(ivec2(floor((light - g.xy) * g.z)), ivec2(0), ivec2(kCells - 1u)));
+    atomicAdd(histogram.occupancy[(grid * kCells + cell.y) * kCells + cell.x], 1u);
 }
 
 void main()
@@ -61,8 +82,10 @@ void main()
                 const uint b = binOf(viewDepth);
                 atomicAdd(groupCount[b], 1u);
                 for (int l = 0; l < frame.lightCount; ++l) {
-                    const uint x = orderedBits(dot(position, frame.lightRight[l].xyz));
-                    const uint y = orderedBits(dot(position, frame.lightUp[l].xyz));
+                    const vec2 light = vec2(dot(position, frame.lightRight[l].xyz), dot(position, frame.lightUp[l].xyz));
+                    occupy(l, occupancyOctave(b), light);
+                    const uint x = orderedBits(light.x);
+                    const uint y = orderedBits(light.y);
                     const uint at = (b * uint(kLights) + uint(l)) * 4u;
                     atomicMin(groupFootprints[at], x);
                     atomicMin(groupFootprints[at + 1u], y);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <glm/common.hpp>
 
 namespace penumbra::shadows {
 namespace {
@@ -209,6 +210,22 @@ std::uint32_t depthHistogramBin(int firstOctave, float depth)
     const int step = static_cast<int>((2.0f * mantissa - 1.0f) * kDepthHistogramStepsPerOctave);
     const int bin = octave * static_cast<int>(kDepthHistogramStepsPerOctave) + step;
     return static_cast<std::uint32_t>(std::clamp(bin, 0, static_cast<int>(kDepthHistogramBins) - 1));
+}
+
+OccupancyGrid occupancyGridAbout(int firstOctave, std::uint32_t octave, glm::vec2 camera)
+{
+    const int near = firstOctave +
+                     static_cast<int>(kDepthHistogramBins / kDepthHistogramStepsPerOctave - kOccupancyOctaves + octave);
+    OccupancyGrid grid;
+    grid.cellSize = std::ldexp(1.0f, near - 3);
+    grid.origin = (glm::floor(camera / grid.cellSize) - 0.5f * static_cast<float>(kOccupancyCells)) * grid.cellSize;
+    return grid;
+}
+
+std::uint32_t occupancyOctave(std::uint32_t bin)
+{
+    const std::uint32_t skipped = kDepthHistogramBins / kDepthHistogramStepsPerOctave - kOccupancyOctaves;
+    return std::max(bin / kDepthHistogramStepsPerOctave, skipped) - skipped;
 }
 
 std::optional<ViewDepthRange> depthHistogramRange(const DepthHistogram& histogram)

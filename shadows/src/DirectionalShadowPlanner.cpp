@@ -1,6 +1,7 @@
 #include "penumbra/shadows/DirectionalShadowPlanner.hpp"
 
 #include "penumbra/shadows/AtlasMatrix.hpp"
+#include "penumbra/shadows/DepthFitTiles.hpp"
 #include "penumbra/shadows/DirectionalSoftData.hpp"
 #include "penumbra/shadows/FrustumSliceSphere.hpp"
 #include "penumbra/shadows/ShadowFade.hpp"
@@ -92,10 +93,11 @@ std::vector<FrustumSlice> cascadeSlices(const ShadowCamera& camera, const Cascad
 // Close fit: the slice's. Depth fit over a histogram that measured the light: x and y of the footprint of the samples
 // in the cascade's bins (from the bin of the slice's near distance, which a blend's overlap moves nearer), z the
 // slice's; the slice's where the bins hold none of the light's samples.
+// `lastHoldsAll` (tiles placed over the occupancy grids): the last cascade's footprint is every bin's.
 std::vector<std::vector<Bounds>> fittedBounds(const std::vector<FrustumSlice>& slices,
                                               std::span<const ShadowedDirectionalLight> lights,
                                               const DepthHistogram* histogram, std::span<const std::uint32_t> edges,
-                                              bool mapped)
+                                              bool mapped, bool lastHoldsAll)
 {
     std::vector<std::vector<Bounds>> bounds(lights.size());
     for (std::size_t slot = 0; slot < lights.size(); ++slot) {
@@ -120,7 +122,9 @@ std::vector<std::vector<Bounds>> fittedBounds(const std::vector<FrustumSlice>& s
             }
             if (measured && c + 1 < edges.size()) {
                 const std::uint32_t first =
-                    std::min(edges[c], depthHistogramBin(histogram->firstOctave, slice.nearDistance));
+                    lastHoldsAll && c + 1 == slices.size()
+                        ? edges.front()
+                        : std::min(edges[c], depthHistogramBin(histogram->firstOctave, slice.nearDistance));
                 if (const std::optional<Bounds> footprint =
                         depthHistogramFootprint(*histogram, *measured, first, edges[c + 1])) {
                     b.min = glm::vec3(glm::vec2(footprint->min), b.min.z);
@@ -137,16 +141,22 @@ std::vector<std::vector<Bounds>> fittedBounds(const std::vector<FrustumSlice>& s
 // the texel size its CascadeData carries; depth fit puts it on its grid, against the kept one. The margin is the
 // widest light's reach past its bounds: its filter's normal bias factor in texels for the taps, sqrt 2 times that
 // times its normal bias for the offset.
-std::vector<float> fittedHalfSizes(const std::vector<std::vector<Bounds>>& bounds,
-                                   std::span<const ShadowedDirectionalLight> lights, std::uint32_t tileSize,
-                                   std::size_t cascadeCount, const DirectionalShadowSettings& directional,
-                                   const DepthFitKept* kept)
+float fitMargin(std::span<const ShadowedDirectionalLight> lights)
 {
     float margin = 0.0f;
     for (const ShadowedDirectionalLight& light : lights) {
         const float receiverBias = light.normalBiasSide == NormalBiasSide::Receiver ? light.normalBias : 0.0f;
         margin = std::max(margin, normalBiasFilterFactor(light.filter) * (1.0f + std::sqrt(2.0f) * receiverBias));
     }
+    return margin;
+}
+
+std::vector<float> fittedHalfSizes(const std::vector<std::vector<Bounds>>& bounds,
+                                   std::span<const ShadowedDirectionalLight> lights, std::uint32_t tileSize,
+                                   std::size_t cascadeCount, const DirectionalShadowSettings& directional,
+                                   const DepthFitKept* kept)
+{
+    const float margin = fitMargin(lights);
     std::vector<float> halfSizes;
     for (std::size_t c = 0; c < cascadeCount; ++c) {
         float half = 0.0f;
@@ -161,6 +171,63 @@ std::vector<float> fittedHalfSizes(const std::vector<std::vector<Bounds>>& bound
         halfSizes.push_back(half);
     }
     return halfSizes;
+}
+
+// The histogram slot that measured each plan light; nullopt unless every light has one with occupancy grids.
+std::optional<std::vector<std::uint32_t>> occupancySlots(const DepthHistogram* histogram,
+                                                         std::span<const ShadowedDirectionalLight> lights)
+{
+    if (!histogram || histogram->occupancy.size() != histogram->lightDirections.size() || lights.empty())
+        return std::nullopt;
+    std::vector<std::uint32_t> slots;
+    for (const ShadowedDirectionalLight& light : lights) {
+        const auto at =
+            std::find(histogram->lightDirections.begin(), histogram->lightDirections.end(), light.direction);
+        if (at == histogram->lightDirections.end() ||
+            histogram->occupancy[at - histogram->lightDirections.begin()].empty())
+            return std::nullopt;
+        slots.push_back(static_cast<std::uint32_t>(at - histogram->lightDirections.begin()));
+    }
+    return slots;
+}
+
+// Depth fit over occupancy grids: every tile but the last placed by depthFitTiles, each light's square about its
+// slot's centre (its depth planes the view's, as fittedBounds gives them); the last keeps fittedBounds' footprint of
+// every sample. Sets `kept`'s centres.
+void placeOverOccupancy(std::vector<std::vector<Bounds>>& bounds, std::vector<float>& halfSizes,
+                        const DepthHistogram& histogram, std::span<const std::uint32_t> slots,
+                        std::span<const ShadowedDirectionalLight> lights, std::uint32_t tileSize,
+                        const DirectionalShadowSettings& directional, const DepthFitKept* kept, DepthFitKept& keep)
+{
+    const std::size_t placed = halfSizes.size() - 1;
+    // Map-based selection's inset (selectCascade): twice the filter's reach, with the snap's half texel, each side.
+    const float servedShare = 1.0f - 2.0f * (2.0f * fitMargin(lights) + 1.0f) / static_cast<float>(tileSize);
+    std::optional<DepthFitTiles> keptTiles;
+    if (kept && kept->halfSizes.size() == halfSizes.size())
+        keptTiles = DepthFitTiles{{kept->halfSizes.begin(), kept->halfSizes.end() - 1}, kept->centres};
+    const DepthFitTiles tiles =
+        depthFitTiles(histogram, {.placed = static_cast<std::uint32_t>(placed),
+                                  .lastHalfSize = halfSizes.back(),
+                                  .servedShare = servedShare,
+                                  .stepsPerOctave = directional.depthFitSteps,
+                                  .toleranceLog2 = directional.depthFitSteps > 0
+                                                       ? directional.depthFitHysteresis /
+                                                             static_cast<float>(directional.depthFitSteps)
+                                                       : 0.0f,
+                                  .kept = keptTiles ? &*keptTiles : nullptr});
+    if (tiles.halfSizes.size() != placed)
+        return;
+    for (std::size_t c = 0; c < placed; ++c) {
+        halfSizes[c] = tiles.halfSizes[c];
+        for (std::size_t l = 0; l < lights.size(); ++l) {
+            const glm::vec2 centre = tiles.centres[c][slots[l]];
+            const glm::vec2 reach(servedShare * halfSizes[c]);
+            bounds[l][c].min = glm::vec3(centre - reach, bounds[l][c].min.z);
+            bounds[l][c].max = glm::vec3(centre + reach, bounds[l][c].max.z);
+        }
+    }
+    keep.halfSizes = halfSizes;
+    keep.centres = tiles.centres;
 }
 
 } // namespace
@@ -255,15 +322,21 @@ DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, con
                                input.normalBiasSide,
                                input.direction});
     }
-    const std::vector<std::vector<Bounds>> bounds =
+    const std::optional<std::vector<std::uint32_t>> occupancy =
+        edges.empty() || cascadeCount < 2 ? std::nullopt : occupancySlots(depthFit.histogram, plan.lights);
+    std::vector<std::vector<Bounds>> bounds =
         close ? fittedBounds(slices, plan.lights, edges.empty() ? nullptr : depthFit.histogram, edges,
-                             directional.projection == CascadeProjection::DepthFit)
+                             directional.projection == CascadeProjection::DepthFit, occupancy.has_value())
               : std::vector<std::vector<Bounds>>();
-    const std::vector<float> halfSizes =
+    std::vector<float> halfSizes =
         close ? fittedHalfSizes(bounds, plan.lights, plan.atlas.tileSize(), cascadeCount, directional, depthFit.kept)
               : std::vector<float>();
-    if (!edges.empty())
-        plan.depthFit = DepthFitKept{edges, halfSizes};
+    if (!edges.empty()) {
+        plan.depthFit = DepthFitKept{edges, halfSizes, {}};
+        if (occupancy)
+            placeOverOccupancy(bounds, halfSizes, *depthFit.histogram, *occupancy, plan.lights, plan.atlas.tileSize(),
+                               directional, depthFit.kept, *plan.depthFit);
+    }
     const float cullingFactor = cascadeBlendCullingFactor(directional.cascadeFade);
     const bool gpuCulling = culledOnGpu(settings);
     for (std::uint32_t slot = 0; slot < plan.lights.size(); ++slot) {

@@ -18,6 +18,8 @@ constexpr std::uint32_t kDepthHistogramFrameBinding = 2;
 // The lengths of the histogram's arrays, PENUMBRA_BINS and PENUMBRA_BIN_FOOTPRINTS in depth_reduction.comp.
 constexpr shaders::ShaderConstant kDepthBinsLength{"BINS", shadows::kDepthHistogramBins};
 constexpr shaders::ShaderConstant kDepthBinFootprintsLength{"BIN_FOOTPRINTS", 4 * kLights};
+constexpr std::uint32_t kGridCells = shadows::kOccupancyCells * shadows::kOccupancyCells;
+constexpr shaders::ShaderConstant kOccupancyLength{"OCCUPANCY", kLights* shadows::kOccupancyOctaves* kGridCells};
 
 // One bin of the storage block DepthHistogram (std430): the count, then per light the ordered bits of the
 // footprint's min x, min y, max x, max y (flat uints: the shader's atomics take scalars).
@@ -29,12 +31,14 @@ constexpr std::array kGpuBinFields{PENUMBRA_SHADER_FIELD(GpuBin, count),
                                    PENUMBRA_SHADER_FIELD(GpuBin, footprints, kDepthBinFootprintsLength)};
 constexpr shaders::ShaderStruct kGpuBinStruct{"Bin", sizeof(GpuBin), kGpuBinFields};
 
-// The storage block DepthHistogram.
+// The storage block DepthHistogram: the bins, then the occupancy grids' counts (light, octave, row, column).
 struct GpuHistogram {
     std::array<GpuBin, shadows::kDepthHistogramBins> bins;
+    std::array<std::uint32_t, kLights * shadows::kOccupancyOctaves * kGridCells> occupancy;
 };
-constexpr std::array kGpuHistogramFields{
-    PENUMBRA_SHADER_STRUCT_FIELD(GpuHistogram, bins, kGpuBinStruct, kDepthBinsLength)};
+constexpr std::array kGpuHistogramFields{PENUMBRA_SHADER_STRUCT_FIELD(GpuHistogram, bins, kGpuBinStruct,
+                                                                      kDepthBinsLength),
+                                         PENUMBRA_SHADER_FIELD(GpuHistogram, occupancy, kOccupancyLength)};
 constexpr shaders::ShaderStruct kGpuHistogramBlock{"DepthHistogram", sizeof(GpuHistogram), kGpuHistogramFields};
 static_assert(shaders::matchesLayout(kGpuHistogramBlock, shaders::BlockLayout::Std430));
 
@@ -42,8 +46,10 @@ rhi::ShaderSource depthReductionShader(const rhi::Device& device)
 {
     const auto clear = static_cast<std::int64_t>(device.conventions().clearDepth());
     rhi::ShaderSource source =
-        shaders::load("depth_reduction.comp",
-                      {{"CLEAR_DEPTH", clear}, {"STEPS_PER_OCTAVE", shadows::kDepthHistogramStepsPerOctave}});
+        shaders::load("depth_reduction.comp", {{"CLEAR_DEPTH", clear},
+                                               {"STEPS_PER_OCTAVE", shadows::kDepthHistogramStepsPerOctave},
+                                               {"OCCUPANCY_CELLS", shadows::kOccupancyCells},
+                                               {"OCCUPANCY_OCTAVES", shadows::kOccupancyOctaves}});
     source.includes.push_back(
         {"depth_reduction_blocks.glsl",
          shaders::storageBlockGlsl(kGpuHistogramBlock, kDepthHistogramBinding, "histogram",
@@ -54,14 +60,16 @@ rhi::ShaderSource depthReductionShader(const rhi::Device& device)
 
 constexpr std::uint32_t kGroupSize = 16; // the shader's local_size_x and _y
 
-// What the buffer holds before the dispatch: no samples, every footprint empty (min above max).
-GpuHistogram emptyHistogram()
+// What the buffer holds before the dispatch: no samples, every footprint empty (min above max). On the heap: the
+// occupancy grids make it half a megabyte.
+std::unique_ptr<GpuHistogram> emptyHistogram()
 {
     GpuBin empty{};
     for (std::uint32_t k = 0; k < empty.footprints.size(); ++k)
         empty.footprints[k] = k % 4 < 2 ? 0xffffffffu : 0u;
-    GpuHistogram histogram;
-    histogram.bins.fill(empty);
+    auto histogram = std::make_unique<GpuHistogram>();
+    histogram->bins.fill(empty);
+    histogram->occupancy.fill(0u);
     return histogram;
 }
 
@@ -72,6 +80,13 @@ float fromOrderedBits(std::uint32_t bits)
     float f = 0.0f;
     std::memcpy(&f, &u, sizeof f);
     return f;
+}
+
+// The bytes of the block that `lights` lights use: the bins, then their occupancy grids (the last lights' are not
+// cleared, dispatched over or read).
+std::size_t usedBytes(std::size_t lights)
+{
+    return offsetof(GpuHistogram, occupancy) + lights * shadows::kOccupancyOctaves * kGridCells * sizeof(std::uint32_t);
 }
 
 } // namespace
@@ -87,6 +102,9 @@ DepthReduction::DepthReduction(rhi::Device& device)
         {.magFilter = rhi::Filter::Nearest, .minFilter = rhi::Filter::Nearest, .debugName = "depth reduction"});
     bins_ = device.createBuffer(
         {.size = sizeof(GpuHistogram), .usage = rhi::BufferUsage::Storage, .debugName = "depth reduction histogram"});
+    const std::unique_ptr<GpuHistogram> empty = emptyHistogram();
+    const std::span<const std::byte> emptyBytes = std::as_bytes(std::span(empty.get(), 1));
+    empty_.assign(emptyBytes.begin(), emptyBytes.end());
     frame_ = device.createBuffer({.size = sizeof(DepthHistogramFrame),
                                   .usage = rhi::BufferUsage::Uniform,
                                   .debugName = "depth reduction frame"});
@@ -102,18 +120,26 @@ void DepthReduction::record(rhi::CommandList& commands, const rhi::Texture& dept
     block.cameraPosition = frame.cameraPosition;
     block.cameraForward = frame.cameraForward;
     lights_.assign(lights.begin(), lights.begin() + std::min<std::size_t>(lights.size(), kLights));
+    firstOctave_ = shadows::depthHistogramFirstOctave(shadowFar);
+    grids_.assign(lights_.size(), {});
     for (std::size_t l = 0; l < lights_.size(); ++l) {
         const shadows::LightBasis basis = shadows::lightBasis(lights_[l]);
         block.lightRight[l] = glm::vec4(basis.right, 0.0f);
         block.lightUp[l] = glm::vec4(basis.up, 0.0f);
+        const glm::vec2 camera = glm::vec2(basis.toLight(glm::vec3(frame.cameraPosition)));
+        for (std::uint32_t o = 0; o < shadows::kOccupancyOctaves; ++o) {
+            grids_[l].push_back(shadows::occupancyGridAbout(firstOctave_, o, camera));
+            const shadows::OccupancyGrid& grid = grids_[l].back();
+            block.occupancyGrids[l * shadows::kOccupancyOctaves + o] =
+                glm::vec4(grid.origin, 1.0f / grid.cellSize, 0.0f);
+        }
     }
     block.targetSize = glm::vec4(static_cast<float>(size.width), static_cast<float>(size.height), 0.0f, 0.0f);
     block.shadowFar = shadowFar;
-    firstOctave_ = shadows::depthHistogramFirstOctave(shadowFar);
     block.firstOctave = firstOctave_;
     block.lightCount = static_cast<std::int32_t>(lights_.size());
     frame_->writeObject(block);
-    bins_->writeObject(emptyHistogram());
+    bins_->write(0, std::span<const std::byte>(empty_).first(usedBytes(lights_.size())));
     commands.bindComputePipeline(*pipeline_);
     commands.bindTexture(0, depth, *sampler_);
     commands.bindStorageBuffer(kDepthHistogramBinding, *bins_, 0, bins_->desc().size);
@@ -127,12 +153,19 @@ std::optional<shadows::DepthHistogram> DepthReduction::read()
     if (!recorded_)
         return std::nullopt;
     recorded_ = false;
-    GpuHistogram gpuHistogram{};
-    bins_->read(0, std::as_writable_bytes(std::span(&gpuHistogram, 1)));
+    const auto read = std::make_unique<GpuHistogram>();
+    bins_->read(0, std::as_writable_bytes(std::span(read.get(), 1)).first(usedBytes(lights_.size())));
     shadows::DepthHistogram histogram;
     histogram.firstOctave = firstOctave_;
     histogram.lightDirections = lights_;
-    for (const GpuBin& gpu : gpuHistogram.bins) {
+    histogram.occupancy = grids_;
+    for (std::size_t l = 0; l < grids_.size(); ++l)
+        for (std::size_t o = 0; o < shadows::kOccupancyOctaves; ++o) {
+            const auto first = read->occupancy.begin() +
+                               static_cast<std::ptrdiff_t>((l * shadows::kOccupancyOctaves + o) * kGridCells);
+            histogram.occupancy[l][o].counts.assign(first, first + kGridCells);
+        }
+    for (const GpuBin& gpu : read->bins) {
         shadows::DepthHistogramBin bin;
         bin.count = gpu.count;
         // Footprints of lights not measured keep DepthHistogramBin's zeros (the planner reads the measured ones).

@@ -41,11 +41,35 @@ struct DepthHistogramBin {
     std::array<glm::vec4, maxShadowedDirectionalLights> footprints{};
 };
 
+// The reduction's light-space occupancy grids, the finer light-space information the tiles are placed with
+// (depthFitTiles): per shadowed light and per octave of view depth, the last kOccupancyOctaves octaves below the
+// shadow distance (nearer samples count in the first), kOccupancyCells x kOccupancyCells counts of the samples in each
+// cell of a square grid about the camera. A cell is 1/8 of the octave's near depth, so the grid reaches twice the
+// octave's far depth from the camera on each side (any sample within a 2 x 2 field of view's tangents of that
+// depth; farther ones count in the edge cells): cells as fine as the tiles that serve those depths need.
+inline constexpr std::uint32_t kOccupancyCells = 64;
+inline constexpr std::uint32_t kOccupancyOctaves = 8;
+
+struct OccupancyGrid {
+    glm::vec2 origin{0.0f}; // light-space x, y of cell (0, 0)'s lower corner, a multiple of cellSize
+    float cellSize = 0.0f; // a power of two
+    std::vector<std::uint32_t> counts; // kOccupancyCells^2, row after row (y major)
+};
+
+// The occupancy grid of octave `octave` (0 to kOccupancyOctaves - 1) of a histogram starting at `firstOctave`, placed
+// about the camera's light-space x, y on its own cell grid, so that it stays put while the camera moves within a
+// cell; counts empty.
+OccupancyGrid occupancyGridAbout(int firstOctave, std::uint32_t octave, glm::vec2 camera);
+// The occupancy octave of histogram bin `bin`: the shader's, on the CPU.
+std::uint32_t occupancyOctave(std::uint32_t bin);
+
 struct DepthHistogram {
     int firstOctave = 0; // bin 0 starts at 2^firstOctave; nearer samples are counted in it
     std::vector<DepthHistogramBin> bins; // kDepthHistogramBins
     // Per light slot: the direction the footprints were measured along (the plan's light in that slot).
     std::vector<glm::vec3> lightDirections;
+    // Per light slot, the occupancy grids (kOccupancyOctaves); empty where none were reduced.
+    std::vector<std::vector<OccupancyGrid>> occupancy;
 };
 
 // ceil(log2 shadowFar) - 16: the histogram's last bin ends at or past the shadow distance.
@@ -65,6 +89,9 @@ std::optional<Bounds> depthHistogramFootprint(const DepthHistogram& histogram, s
 struct DepthFitKept {
     std::vector<std::uint32_t> edges; // cascade c holds bins [edges[c], edges[c + 1])
     std::vector<float> halfSizes; // per cascade
+    // Tiles placed over the occupancy grids (depthFitTiles): per cascade but the last, per histogram light slot, the
+    // centre of the square it serves; empty otherwise.
+    std::vector<std::vector<glm::vec2>> centres;
 
     bool operator==(const DepthFitKept&) const = default;
 };

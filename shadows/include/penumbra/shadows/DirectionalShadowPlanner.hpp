@@ -108,9 +108,10 @@ CasterNormalOffset casterNormalOffset(const DirectionalShadowPlan& plan, const S
 // their cascades' reach (castersInReach) get cascadeCount tiles each; every other light is listed in the report with
 // the reason (never an exception). CascadeProjection::DepthFit is the close fit (view-depth bands) with its splits from
 // the histogram's partition (depthFitPartition) and each light's tile around the footprint of the samples in its band
-// (depthHistogramFootprint), the half sizes on a grid with hysteresis (depthFitHalfSize); without a histogram (no
-// frame reduced yet) it is the close fit over the usual splits, tile sizes on the grid. Throws rhi::Error only for
-// settings that fail validate().
+// (depthHistogramFootprint), the half sizes on a grid with hysteresis (depthFitHalfSize); where the histogram has
+// occupancy grids for every light, every tile but the last is placed over them instead (depthFitTiles) and the last
+// is fitted around every sample. Without a histogram (no frame reduced yet) it is the close fit over the usual
+// splits, tile sizes on the grid. Throws rhi::Error only for settings that fail validate().
 DirectionalShadowPlan planDirectionalShadows(const ShadowSettings& settings, const rhi::Conventions& conventions,
                                              const ShadowCamera& camera,
                                              std::span<const DirectionalShadowLightInput> lights,
