@@ -82,6 +82,8 @@ void main()
     if (caster >= tiles.casterCount)
         return;
     const CullingCaster c = casterList.casters[caster];
+    // Read once for all tiles: a storage access costs llvmpipe a loop over the lanes per component.
+    const InstanceTransform transform = source.transforms[caster];
     for (uint tile = 0u; tile < tiles.tileCount; ++tile) {
         if (!casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
             continue;
@@ -91,7 +93,7 @@ void main()
             drawCounts.counts[command] = 1u;
         // The dispatch binds its own tiles' ranges of the instance lists.
         const uint at = tile * tiles.tileSlots + c.first + slot;
-        culled.instances[at] = source.transforms[caster];
+        culled.instances[at] = transform;
         culledIndices.indices[at] = caster;
     }
 }

@@ -9,19 +9,20 @@
 namespace penumbra::shadows {
 namespace {
 
-constexpr std::uint64_t kVolumesOffset = 32; // the CasterVolume array after CullingCounts, std430
-static_assert(sizeof(CullingCounts) <= kVolumesOffset && kVolumesOffset % alignof(CasterVolume) == 0);
+// The uniform block at binding 0; the storage blocks follow it, at bindings 1 to 6.
+constexpr std::uint32_t kTilesBinding = 0;
+constexpr std::array kCullingTilesFields{PENUMBRA_SHADER_FIELD(CullingTiles, casterCount),
+                                         PENUMBRA_SHADER_FIELD(CullingTiles, tileCount),
+                                         PENUMBRA_SHADER_FIELD(CullingTiles, batchCount),
+                                         PENUMBRA_SHADER_FIELD(CullingTiles, firstTile),
+                                         PENUMBRA_SHADER_FIELD(CullingTiles, tileSlots),
+                                         PENUMBRA_SHADER_STRUCT_FIELD(CullingTiles, volumes, kCasterVolumeStruct)};
+constexpr shaders::ShaderStruct kCullingTilesBlock{"CullingTiles", sizeof(CullingTiles), kCullingTilesFields};
+static_assert(shaders::matchesLayout(kCullingTilesBlock, shaders::BlockLayout::Std140));
 
-// The pass's storage blocks, at bindings 0 to 6 in this order. Every member name is distinct across the blocks:
+// The pass's storage blocks, at bindings 1 to 6 in this order. Every member name is distinct across the blocks:
 // Mesa's GLSL compiler (22.3) takes an unsized array for another block's member of the same name and refuses to
 // index it.
-constexpr std::array kCasterVolumesFields{PENUMBRA_SHADER_FIELD(CullingCounts, casterCount),
-                                          PENUMBRA_SHADER_FIELD(CullingCounts, tileCount),
-                                          PENUMBRA_SHADER_FIELD(CullingCounts, batchCount),
-                                          PENUMBRA_SHADER_FIELD(CullingCounts, firstTile),
-                                          PENUMBRA_SHADER_FIELD(CullingCounts, tileSlots),
-                                          shaders::runtimeStructArrayField<CasterVolume>("volumes", kVolumesOffset,
-                                                                                         kCasterVolumeStruct)};
 constexpr std::array kCullingCastersFields{
     shaders::runtimeStructArrayField<CullingCaster>("casters", 0, kCullingCasterStruct)};
 constexpr std::array kInstanceTransformsFields{
@@ -39,9 +40,6 @@ struct CullingBlock {
     shaders::BlockAccess access;
 };
 constexpr std::array kCullingBlocks{
-    CullingBlock{{"CasterVolumes", sizeof(CullingCounts), kCasterVolumesFields},
-                 "tiles",
-                 shaders::BlockAccess::ReadOnly},
     CullingBlock{{"CullingCasters", 0, kCullingCastersFields}, "casterList", shaders::BlockAccess::ReadOnly},
     CullingBlock{{"InstanceTransforms", 0, kInstanceTransformsFields}, "source", shaders::BlockAccess::ReadOnly},
     CullingBlock{{"CulledInstances", 0, kCulledInstancesFields}, "culled", shaders::BlockAccess::WriteOnly},
@@ -53,7 +51,7 @@ static_assert(std::all_of(kCullingBlocks.begin(), kCullingBlocks.end(), [](const
     return shaders::matchesLayout(b.block, shaders::BlockLayout::Std430);
 }));
 
-// The pass's storage blocks generated from their C++ declarations, and the volume kinds.
+// The pass's blocks generated from their C++ declarations, and the volume kinds.
 std::string cullingBlocksGlsl()
 {
     std::string text = fmt::format("#define PENUMBRA_VOLUME_FRUSTUM {}\n#define PENUMBRA_VOLUME_BEYOND_SPHERE {}\n"
@@ -61,9 +59,10 @@ std::string cullingBlocksGlsl()
                                    static_cast<int>(CasterVolumeKind::Frustum),
                                    static_cast<int>(CasterVolumeKind::CascadeBeyondSphere),
                                    static_cast<int>(CasterVolumeKind::CascadeBeyondSlice));
-    for (std::uint32_t binding = 0; binding < kCullingBlocks.size(); ++binding) {
-        const CullingBlock& b = kCullingBlocks[binding];
-        text += shaders::storageBlockGlsl(b.block, binding, b.instance, b.access);
+    text += shaders::uniformBlockGlsl(kCullingTilesBlock, kTilesBinding, "tiles");
+    for (std::uint32_t i = 0; i < kCullingBlocks.size(); ++i) {
+        const CullingBlock& b = kCullingBlocks[i];
+        text += shaders::storageBlockGlsl(b.block, kTilesBinding + 1 + i, b.instance, b.access);
     }
     return text;
 }
@@ -98,14 +97,16 @@ std::span<const std::byte> bytesOf(const std::vector<T>& values)
 
 GpuCasterCulling::GpuCasterCulling(rhi::Device& device, std::uint32_t maxTilesPerDispatch)
     : device_(device), shader_(device.createShader(cullingShader())),
-      pipeline_(device.createComputePipeline(
-          {.compute = shader_.get(), .storageLayouts = cullingStorageLayouts(), .debugName = "caster culling"})),
+      pipeline_(device.createComputePipeline({.compute = shader_.get(),
+                                              .uniformLayouts = {shaders::uniformLayout(kCullingTilesBlock)},
+                                              .storageLayouts = cullingStorageLayouts(),
+                                              .debugName = "caster culling"})),
       maxTilesPerDispatch_(std::max(maxTilesPerDispatch, 1u))
 {
-    reserve(1, kVolumesOffset + sizeof(CasterVolume), 1);
+    reserve(1, sizeof(CullingTiles), 1);
 }
 
-// The instance lists hold tileSlots_ per tile; `volumeBytes` is the dispatches' blocks of the volumes buffer.
+// The instance lists hold tileSlots_ per tile; `volumeBytes` is the dispatches' blocks of the tiles buffer.
 void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t volumeBytes, std::uint64_t draws)
 {
     using rhi::BufferUsage;
@@ -114,7 +115,7 @@ void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t volumeBytes,
         if (!buffer || buffer->desc().size < size)
             buffer = device_.createBuffer({.size = size, .usage = usage, .debugName = name});
     };
-    ensure(volumes_, volumeBytes, BufferUsage::Storage, "culling volumes");
+    ensure(volumes_, volumeBytes, BufferUsage::Uniform, "culling tiles");
     ensure(casters_, casters * sizeof(CullingCaster), BufferUsage::Storage, "culling casters");
     ensure(transforms_, casters * sizeof(InstanceTransform), BufferUsage::Storage, "culling transforms");
     const std::uint64_t slots = std::max<std::uint64_t>(std::uint64_t(tileCount_) * tileSlots_, 1);
@@ -236,15 +237,16 @@ void GpuCasterCulling::uploadCasters()
     }
 }
 
-// One dispatch per group of tiles whose instance ranges fit one storage binding (all tiles in one, unless the device's
-// range is short of them); each group reads its own block of the volumes buffer: its CullingCounts, then its volumes.
+// One dispatch per group of tiles whose instance ranges fit one storage binding and whose volumes fit one
+// CullingTiles (all tiles in one, unless there are more than 64 or the device's storage range is short of them); each
+// group reads its own CullingTiles in the tiles buffer.
 void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
 {
     const rhi::Capabilities& caps = device_.capabilities();
     const std::uint64_t tileBytes = std::uint64_t(tileSlots_) * sizeof(InstanceTransform);
-    groupTiles_ = static_cast<std::uint32_t>(
-        std::min<std::uint64_t>({tileCount_, maxTilesPerDispatch_, caps.maxStorageBufferRange / tileBytes}));
-    blockBytes_ = roundUp(kVolumesOffset + groupTiles_ * sizeof(CasterVolume), caps.storageBufferOffsetAlignment);
+    groupTiles_ = static_cast<std::uint32_t>(std::min<std::uint64_t>(
+        {tileCount_, maxTilesPerDispatch_, kCullingTilesPerDispatch, caps.maxStorageBufferRange / tileBytes}));
+    blockBytes_ = roundUp(sizeof(CullingTiles), caps.uniformBufferOffsetAlignment);
     groups_ = (tileCount_ + groupTiles_ - 1) / groupTiles_;
     const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
     const rhi::Buffer* residentCasters = casters_.get();
@@ -259,8 +261,14 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
     counts_->write(0, bytesOf(std::vector<std::uint32_t>(draws.size(), 0)));
     for (std::uint32_t g = 0; g < groups_; ++g) {
         const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
-        volumes_->writeObject(CullingCounts{casterCount_, count, batchCount, first, tileSlots_}, g * blockBytes_);
-        volumes_->write(g * blockBytes_ + kVolumesOffset, std::as_bytes(volumes.subspan(first, count)));
+        CullingTiles& block = scratch_.tiles;
+        block.casterCount = casterCount_;
+        block.tileCount = count;
+        block.batchCount = batchCount;
+        block.firstTile = first;
+        block.tileSlots = tileSlots_;
+        std::copy_n(volumes.begin() + first, count, block.volumes.begin());
+        volumes_->writeObject(block, g * blockBytes_);
     }
 }
 
@@ -274,7 +282,7 @@ void GpuCasterCulling::dispatch(rhi::CommandList& commands)
     for (std::uint32_t g = 0; g < groups_; ++g) {
         const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
         const std::uint64_t slots = std::uint64_t(first) * tileSlots_, groupSlots = std::uint64_t(count) * tileSlots_;
-        commands.bindStorageBuffer(0, *volumes_, g * blockBytes_, kVolumesOffset + count * sizeof(CasterVolume));
+        commands.bindUniformBuffer(kTilesBinding, *volumes_, g * blockBytes_, sizeof(CullingTiles));
         commands.bindStorageBuffer(1, *casters_, 0, scratch_.casters.size() * sizeof(CullingCaster));
         commands.bindStorageBuffer(2, *transforms_, 0, scratch_.transforms.size() * sizeof(InstanceTransform));
         commands.bindStorageBuffer(3, *instances_, slots * sizeof(InstanceTransform),

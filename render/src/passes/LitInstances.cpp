@@ -8,7 +8,9 @@
 namespace penumbra::render {
 namespace {
 
-// Chunks [first, end) of one group, in view.
+static_assert(LitInstances::kChunk % LitInstances::kPart == 0);
+
+// Parts [first, end) of one group, in view.
 struct LitChunkRun {
     std::uint32_t first = 0;
     std::uint32_t end = 0;
@@ -71,6 +73,7 @@ void LitInstances::rebuild(const GpuScene& gpuScene)
         objects_.resize((objects_.size() + kChunk - 1) / kChunk * kChunk, kNoSlot);
     }
     chunkBounds_.assign(objects_.size() / kChunk, scene::Bounds{});
+    partBounds_.assign(objects_.size() / kPart, scene::Bounds{});
     const std::uint64_t bytes = std::max<std::uint64_t>(objects_.size(), 1) * sizeof(shadows::InstanceTransform);
     if (!buffer_ || buffer_->desc().size < bytes)
         buffer_ = device_.createBuffer(
@@ -88,11 +91,17 @@ void LitInstances::write(const scene::Scene& scene, std::uint32_t first, std::ui
     }
     if (!scratch_.empty())
         buffer_->write(first * sizeof(shadows::InstanceTransform), std::as_bytes(std::span(scratch_)));
+    constexpr std::uint32_t kParts = kChunk / kPart;
     for (std::uint32_t chunk = first / kChunk; chunk < (end + kChunk - 1) / kChunk; ++chunk) {
         scene::Bounds box;
-        for (std::uint32_t slot = chunk * kChunk; slot < (chunk + 1) * kChunk; ++slot)
-            if (objects_[slot] != kNoSlot)
-                box.extend(scene.objects[objects_[slot]].worldBounds);
+        for (std::uint32_t part = chunk * kParts; part < (chunk + 1) * kParts; ++part) {
+            scene::Bounds partBox;
+            for (std::uint32_t slot = part * kPart; slot < (part + 1) * kPart; ++slot)
+                if (objects_[slot] != kNoSlot)
+                    partBox.extend(scene.objects[objects_[slot]].worldBounds);
+            partBounds_[part] = partBox;
+            box.extend(partBox);
+        }
         chunkBounds_[chunk] = box;
     }
 }
@@ -135,19 +144,26 @@ void LitInstances::appendDraws(const GpuScene& gpuScene, const scene::ViewFrustu
     for (std::size_t g = 0; g < groups_.size(); ++g) {
         const Group& group = groups_[g];
         std::vector<LitChunkRun> runs;
-        const std::uint32_t endChunk = (group.first + group.count + kChunk - 1) / kChunk;
+        const std::uint32_t end = group.first + group.count;
+        const std::uint32_t endChunk = (end + kChunk - 1) / kChunk;
         for (std::uint32_t chunk = group.first / kChunk; chunk < endChunk; ++chunk) {
             if (!frustum.mayShow(chunkBounds_[chunk]))
                 continue;
-            if (!runs.empty() && runs.back().end == chunk)
-                runs.back().end = chunk + 1;
-            else
-                runs.push_back({chunk, chunk + 1});
+            // The chunk's parts that hold objects of the group, those in view.
+            const std::uint32_t endPart = std::min((chunk + 1) * kChunk, end + kPart - 1) / kPart;
+            for (std::uint32_t part = chunk * kChunk / kPart; part < endPart; ++part) {
+                if (!frustum.mayShow(partBounds_[part]))
+                    continue;
+                if (!runs.empty() && runs.back().end == part)
+                    runs.back().end = part + 1;
+                else
+                    runs.push_back({part, part + 1});
+            }
         }
         // The group's place among the draws: its first object that litDraws keeps; none, and it draws nothing.
         std::optional<std::uint32_t> firstObject;
         for (std::size_t r = 0; r < runs.size() && !firstObject; ++r)
-            for (std::uint32_t slot = runs[r].first * kChunk; slot < runs[r].end * kChunk && !firstObject; ++slot)
+            for (std::uint32_t slot = runs[r].first * kPart; slot < runs[r].end * kPart && !firstObject; ++slot)
                 if (objects_[slot] != kNoSlot && frustum.mayShow(scene.objects[objects_[slot]].worldBounds))
                     firstObject = objects_[slot];
         if (!firstObject)
@@ -161,8 +177,8 @@ void LitInstances::appendDraws(const GpuScene& gpuScene, const scene::ViewFrustu
         const std::uint32_t object = objects_[group.first];
         const rhi::UniformSlice block = uniforms.push(litObjectUniforms(scene, scene.objects[object]));
         for (const LitChunkRun& run : s.runs) {
-            const std::uint32_t first = run.first * kChunk;
-            const std::uint32_t end = std::min(run.end * kChunk, group.first + group.count);
+            const std::uint32_t first = run.first * kPart;
+            const std::uint32_t end = std::min(run.end * kPart, group.first + group.count);
             constexpr std::uint64_t kBytes = sizeof(shadows::InstanceTransform);
             draws.push_back({object, end - first, block, {buffer_.get(), first * kBytes, (end - first) * kBytes}});
         }

@@ -26,9 +26,13 @@ class LitInstances {
 public:
     // Instances per chunk: 10^6 objects are 15 625 box tests a frame.
     static constexpr std::uint32_t kChunk = 64;
+    // Instances per part of a chunk: the parts of the chunks in view are tested too, and drawn where in view, which
+    // costs in proportion to the chunks in view only. At 10^4 cubes, 5 441 instances drawn instead of 6 592 (the
+    // per-object list: 4 326), each one vertex work through the depth prepass and the lit pass.
+    static constexpr std::uint32_t kPart = 16;
     // At most this many draws per group: the shortest gaps between runs are drawn where there would be more, so that
     // the recording does not grow with the instances either.
-    static constexpr std::size_t kMaxRuns = 16;
+    static constexpr std::size_t kMaxRuns = 64;
 
     explicit LitInstances(rhi::Device& device) : device_(device) {}
 
@@ -43,7 +47,7 @@ public:
 private:
     // Builds everything anew.
     void rebuild(const GpuScene& scene);
-    // Slots [first, end): their transforms into the buffer, their chunks' boxes anew.
+    // Slots [first, end): their transforms into the buffer, their chunks' and parts' boxes anew.
     void write(const scene::Scene& scene, std::uint32_t first, std::uint32_t end);
 
     struct Group {
@@ -56,6 +60,7 @@ private:
     std::vector<std::uint32_t> objects_; // per slot: its object, kNoSlot for the padding after a group
     std::vector<std::uint32_t> slotOf_; // per object: its slot, or kNoSlot
     std::vector<scene::Bounds> chunkBounds_; // per chunk of kChunk slots
+    std::vector<scene::Bounds> partBounds_; // per part of kPart slots
     std::vector<std::uint32_t> blended_;
     std::unique_ptr<rhi::Buffer> buffer_;
     std::optional<std::uint64_t> generation_; // of GpuScene::objectChanges at the last update

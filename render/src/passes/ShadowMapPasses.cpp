@@ -89,7 +89,9 @@ void LocalAtlasPass::execute(const FramePassContext& context)
 {
     FrameStats& stats = *state_.stats;
     const std::uint32_t tiles = static_cast<std::uint32_t>(plan_.tiles.size());
-    if (state_.culling) {
+    // Without tiles there are no GPU lists to draw: the cache below clears the atlas once, as on the CPU path, where
+    // a pass drawing none would clear it every frame.
+    if (state_.culling && tiles > 0) {
         // The GPU's lists are not the cache's keys: every tile is drawn anew, as the cache's first frame draws it.
         cache_.invalidate();
         stats.localCasterDraws =

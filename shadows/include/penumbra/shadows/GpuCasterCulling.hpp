@@ -63,22 +63,30 @@ inline constexpr shaders::ShaderStruct kCulledDrawStruct{"CulledDraw", sizeof(Cu
 static_assert(shaders::matchesLayout(kCulledDrawStruct, shaders::BlockLayout::Std430, true));
 static_assert(sizeof(CulledDraw) == rhi::kDrawIndexedIndirectCommandBytes);
 
-// The fixed part of the storage block CasterVolumes, before its volumes: one dispatch's share of the tiles.
-struct CullingCounts {
+// The most tiles one dispatch culls: its CullingTiles fill 15 392 bytes of the 16 384 that every device's uniform
+// blocks hold at least (Vulkan 1.3's required limits, maxUniformBufferRange; GL 4.5's, MAX_UNIFORM_BLOCK_SIZE).
+inline constexpr std::uint32_t kCullingTilesPerDispatch = 64;
+
+// The uniform block CullingTiles: one dispatch's share of the tiles. Every invocation reads the same volumes, which
+// a uniform block gives it as uniform values; llvmpipe and lavapipe (Mesa 22.3) read a storage block lane by lane
+// (gallivm's emit_load_mem), which cost the 10^4-caster dispatch most of its 25 ms.
+struct alignas(16) CullingTiles {
     std::uint32_t casterCount = 0;
     std::uint32_t tileCount = 0; // the dispatch's tiles, firstTile onwards
     std::uint32_t batchCount = 0;
     std::uint32_t firstTile = 0;
     std::uint32_t tileSlots = 0; // instance slots per tile: the caster count, rounded up for the binding offsets
+    std::array<CasterVolume, kCullingTilesPerDispatch> volumes;
 };
+static_assert(sizeof(CullingTiles) <= 16384);
 
 // Shadow casters culled per tile on the GPU (shaders/caster_culling.comp): every caster's world box is tested against
 // every tile's CasterVolume with casterInVolume's rules; a caster that passes is appended to its batch's instances in
 // the tile's range of the instance lists (its InstanceTransform, and its index), and counted in the tile's draw of its
 // batch, an indexed indirect command. Tile t's range holds a slot for every caster (tileSlots() of them); the draw of
 // batch b in tile t is command t * batches + b, and its count (0 or 1, for drawIndexedIndirectCount) says whether it
-// has instances. The tiles are culled in as few dispatches as the device's storage range allows, each binding the
-// instance ranges of its tiles only, so that 10^6 casters fit where all tiles' ranges together would not.
+// has instances. The tiles are culled in as few dispatches as the device's storage range and CullingTiles allow, each
+// binding the instance ranges of its tiles only, so that 10^6 casters fit where all tiles' ranges together would not.
 class GpuCasterCulling {
 public:
     // `maxTilesPerDispatch`: the most tiles one dispatch culls, fewer where their instances exceed the device's
@@ -148,6 +156,7 @@ private:
         std::vector<CullingCaster> casters;
         std::vector<InstanceTransform> transforms;
         std::vector<CulledDraw> draws;
+        CullingTiles tiles;
     } scratch_;
     // What the casters and transforms buffers hold: the generation of the changes they were uploaded at, the count
     // and whether the transforms carry normal matrices; nullopt before the first upload or after a record that
