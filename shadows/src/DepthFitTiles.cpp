@@ -44,12 +44,12 @@ void addRect(std::vector<std::int64_t>& diff, int nx, int x0, int y0, int x1, in
 
 // Spreads an occupancy cell's count evenly over the raster cells it covers inside the raster (the raster's cell where
 // it is no larger, the nearest edge cell where it lies outside), into the difference table.
-void spread(const OccupancyRaster& r, std::vector<std::int64_t>& diff, glm::vec2 lower, float size,
-            std::int64_t count)
+void spread(const OccupancyRaster& r, std::vector<std::int64_t>& diff, glm::vec2 lower, float size, std::int64_t count)
 {
     if (size <= r.cell) {
         const glm::vec2 centre = lower + 0.5f * size;
-        const int x = clampedIndex(centre.x, r.origin.x, r.cell, r.nx), y = clampedIndex(centre.y, r.origin.y, r.cell, r.ny);
+        const int x = clampedIndex(centre.x, r.origin.x, r.cell, r.nx),
+                  y = clampedIndex(centre.y, r.origin.y, r.cell, r.ny);
         addRect(diff, r.nx, x, y, x + 1, y + 1, count * kRasterMassUnit);
         return;
     }
@@ -108,28 +108,27 @@ double samplesOf(std::int64_t mass) { return static_cast<double>(mass) / static_
 // neighbouring windows hold nearly as much (a plateau), which one is heaviest turns on a few samples, and the
 // configurations' depth buffers, which differ in their last bits, move a few samples into a neighbouring cell; the
 // mean moves only as much as those samples weigh, so every configuration places the tile alike (the parity tests).
-RasterWindow centred(const RasterWindowSums& sums, std::span<const RasterWindow> cleared, RasterWindow w)
+RasterWindow centred(const RasterWindowSums::Without& sums, RasterWindow w)
 {
     for (int step = 0; step < kShiftSteps; ++step) {
-        const glm::ivec2 corner = sums.centredCorner(w.x, w.y, w.k, cleared);
+        const glm::ivec2 corner = sums.centredCorner(w.x, w.y, w.k);
         if (corner.x == w.x && corner.y == w.y)
             break;
-        w = {corner.x, corner.y, w.k, sums.sum(corner.x, corner.y, w.k, cleared)};
+        w = {corner.x, corner.y, w.k, sums.sum(corner.x, corner.y, w.k)};
     }
     return w;
 }
 
 // From the mean-shift window, one cell at a time towards more samples while a move gains more than `decisive`: the
 // mean of samples that end at an edge (the near ground at the view's bottom edge) leaves empty cells in the window.
-RasterWindow climbed(const RasterWindowSums& sums, std::span<const RasterWindow> cleared, RasterWindow w,
-                     double decisive)
+RasterWindow climbed(const RasterWindowSums::Without& sums, RasterWindow w, double decisive)
 {
     constexpr std::array<glm::ivec2, 4> kMoves{glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1),
                                                glm::ivec2(0, 1)};
     for (int step = 0; step < 4 * kShiftSteps; ++step) {
         RasterWindow best = w;
         for (const glm::ivec2 move : kMoves) {
-            const std::int64_t m = sums.sum(w.x + move.x, w.y + move.y, w.k, cleared);
+            const std::int64_t m = sums.sum(w.x + move.x, w.y + move.y, w.k);
             if (samplesOf(m) > samplesOf(best.mass) + decisive)
                 best = {w.x + move.x, w.y + move.y, w.k, m};
         }
@@ -194,7 +193,7 @@ public:
                 if (at) {
                     const glm::vec2 corner = ((*at)[c][s] - slot.origin) / slot.cell - 0.5f * static_cast<float>(k);
                     w = {static_cast<int>(std::lround(corner.x)), static_cast<int>(std::lround(corner.y)), k, 0};
-                    w.mass = slot.sums.sum(w.x, w.y, k, cleared);
+                    w.mass = slot.sums.without(cleared).sum(w.x, w.y, k);
                 } else {
                     w = placed(s, k, cleared);
                 }
@@ -204,8 +203,9 @@ public:
                 left -= w.mass;
                 cleared.push_back(w);
                 if (centres)
-                    (*centres)[c][s] = at ? (*at)[c][s]
-                                          : slot.origin + (glm::vec2(w.x, w.y) + 0.5f * static_cast<float>(k)) * slot.cell;
+                    (*centres)[c][s] =
+                        at ? (*at)[c][s]
+                           : slot.origin + (glm::vec2(w.x, w.y) + 0.5f * static_cast<float>(k)) * slot.cell;
             }
             served.emplace_back(lastLog2, samplesOf(std::max<std::int64_t>(left, 0)));
             total += served.back().second * lastLog2;
@@ -248,9 +248,9 @@ private:
             key.insert(key.end(), {w.x, w.y, w.k});
         if (const auto found = placedBefore_.find(key); found != placedBefore_.end())
             return found->second;
-        const RasterWindowSums& sums = slots_[s].sums;
-        const double decisive = kDecisiveGain * samplesOf(sums.total());
-        const RasterWindow w = climbed(sums, cleared, centred(sums, cleared, sums.heaviest(k, cleared)), decisive);
+        const RasterWindowSums::Without sums = slots_[s].sums.without(cleared);
+        const double decisive = kDecisiveGain * samplesOf(slots_[s].sums.total());
+        const RasterWindow w = climbed(sums, centred(sums, sums.heaviest(k)), decisive);
         placedBefore_.emplace(std::move(key), w);
         return w;
     }

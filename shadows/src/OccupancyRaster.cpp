@@ -17,6 +17,11 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b)
     return q * b > a ? q - 1 : q;
 }
 
+RasterWindowSums::Rect intersection(const RasterWindowSums::Rect& a, const RasterWindowSums::Rect& b)
+{
+    return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
 } // namespace
 
 RasterWindowSums::RasterWindowSums(const OccupancyRaster& raster) : nx_(raster.nx), ny_(raster.ny)
@@ -47,71 +52,53 @@ RasterWindowSums::Rect RasterWindowSums::clipped(int x, int y, int w, int h) con
     return {std::clamp(x, 0, nx_), std::clamp(y, 0, ny_), std::clamp(x + w, 0, nx_), std::clamp(y + h, 0, ny_)};
 }
 
-RasterWindowSums::Rect RasterWindowSums::intersection(const Rect& a, const Rect& b)
+RasterWindowSums::Without::Without(const RasterWindowSums& sums, std::span<const RasterWindow> cleared) : sums_(sums)
 {
-    return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
-}
-
-// The union of the cleared windows as signed intersections (inclusion-exclusion): a rectangle's mass outside them is
-// its own plus each term's sign times the mass of its intersection with the term.
-std::vector<RasterWindowSums::Term> RasterWindowSums::terms(std::span<const RasterWindow> cleared) const
-{
-    std::vector<Term> out;
     for (const RasterWindow& w : cleared) {
-        const Rect r = clipped(w.x, w.y, w.k, w.k);
+        const Rect r = sums.clipped(w.x, w.y, w.k, w.k);
         if (r.empty())
             continue;
-        const std::size_t before = out.size();
-        out.push_back({r, -1});
+        const std::size_t before = terms_.size();
+        terms_.push_back({r, -1});
         for (std::size_t i = 0; i < before; ++i)
-            if (const Rect both = intersection(out[i].rect, r); !both.empty())
-                out.push_back({both, -out[i].sign});
+            if (const Rect both = intersection(terms_[i].rect, r); !both.empty())
+                terms_.push_back({both, -terms_[i].sign});
     }
-    return out;
 }
 
-std::int64_t RasterWindowSums::rectSum(const std::vector<std::int64_t>& t, const Rect& r) const
+std::int64_t RasterWindowSums::Without::masked(const std::vector<std::int64_t>& table, const Rect& r,
+                                               std::span<const Term> terms) const
 {
-    if (r.empty())
-        return 0;
-    return table(t, r.x1, r.y1) - table(t, r.x0, r.y1) - table(t, r.x1, r.y0) + table(t, r.x0, r.y0);
-}
-
-std::int64_t RasterWindowSums::maskedSum(const std::vector<std::int64_t>& t, const Rect& r,
-                                         std::span<const Term> terms) const
-{
-    std::int64_t s = rectSum(t, r);
+    std::int64_t s = sums_.rectSum(table, r);
     for (const Term& term : terms)
-        s += term.sign * rectSum(t, intersection(r, term.rect));
+        s += term.sign * sums_.rectSum(table, intersection(r, term.rect));
     return s;
 }
 
-std::int64_t RasterWindowSums::sum(int x, int y, int k, std::span<const RasterWindow> cleared) const
+std::int64_t RasterWindowSums::Without::sum(int x, int y, int k) const
 {
-    return maskedSum(mass_, clipped(x, y, k, k), terms(cleared));
+    return masked(sums_.mass_, sums_.clipped(x, y, k, k), terms_);
 }
 
-glm::ivec2 RasterWindowSums::centredCorner(int x, int y, int k, std::span<const RasterWindow> cleared) const
+glm::ivec2 RasterWindowSums::Without::centredCorner(int x, int y, int k) const
 {
-    const std::vector<Term> t = terms(cleared);
-    const Rect r = clipped(x, y, k, k);
-    const std::int64_t m = maskedSum(mass_, r, t);
+    const Rect r = sums_.clipped(x, y, k, k);
+    const std::int64_t m = masked(sums_.mass_, r, terms_);
     if (m <= 0)
         return {x, y};
     // The mean cell centre is (sum of m (i + 1/2)) / m; the corner is floor(mean - k / 2 + 1/2), exactly.
     const auto corner = [&](const std::vector<std::int64_t>& moment) {
-        return static_cast<int>(floorDiv(2 * maskedSum(moment, r, t) + m - (k - 1) * m, 2 * m));
+        return static_cast<int>(floorDiv(2 * masked(moment, r, terms_) + m - (k - 1) * m, 2 * m));
     };
-    return {corner(massX_), corner(massY_)};
+    return {corner(sums_.massX_), corner(sums_.massY_)};
 }
 
-RasterWindow RasterWindowSums::heaviest(int k, std::span<const RasterWindow> cleared) const
+RasterWindow RasterWindowSums::Without::heaviest(int k) const
 {
-    const std::vector<Term> t = terms(cleared);
-    const int columns = std::max(nx_, k) - k + 1, rows = std::max(ny_, k) - k + 1;
+    const int columns = std::max(sums_.nx_, k) - k + 1, rows = std::max(sums_.ny_, k) - k + 1;
     struct Block {
-        int x = 0;
-        int y = 0;
+        Rect positions; // window corners
+        Rect reach; // the cells its windows cover
         std::int64_t bound = 0;
     };
     // Every window of a block lies in the block's reach, and masses are not negative, so the reach's mass outside the
@@ -119,25 +106,44 @@ RasterWindow RasterWindowSums::heaviest(int k, std::span<const RasterWindow> cle
     std::vector<Block> blocks;
     for (int by = 0; by < rows; by += kBlock)
         for (int bx = 0; bx < columns; bx += kBlock) {
-            const int w = std::min(kBlock, columns - bx) - 1 + k, h = std::min(kBlock, rows - by) - 1 + k;
-            blocks.push_back({bx, by, maskedSum(mass_, clipped(bx, by, w, h), t)});
+            const Rect positions{bx, by, std::min(bx + kBlock, columns), std::min(by + kBlock, rows)};
+            const Rect reach = sums_.clipped(bx, by, positions.x1 - bx - 1 + k, positions.y1 - by - 1 + k);
+            blocks.push_back({positions, reach, masked(sums_.mass_, reach, terms_)});
         }
-    std::stable_sort(blocks.begin(), blocks.end(), [](const Block& a, const Block& b) { return a.bound > b.bound; });
     RasterWindow best{0, 0, k, -1};
     long long bestIndex = std::numeric_limits<long long>::max();
-    for (const Block& b : blocks) {
-        if (b.bound < best.mass)
-            break;
-        for (int y = b.y; y < std::min(b.y + kBlock, rows); ++y)
-            for (int x = b.x; x < std::min(b.x + kBlock, columns); ++x) {
-                const std::int64_t s = maskedSum(mass_, clipped(x, y, k, k), t);
+    std::vector<Term> near;
+    const auto evaluate = [&](const Block& b) {
+        near.clear();
+        for (const Term& t : terms_)
+            if (!intersection(t.rect, b.reach).empty())
+                near.push_back(t);
+        // Windows inside the raster with no cleared window near: four table entries each, no clamping.
+        const bool plain = near.empty() && b.positions.x1 - 1 + k <= sums_.nx_ && b.positions.y1 - 1 + k <= sums_.ny_;
+        const auto stride = static_cast<std::size_t>(sums_.nx_ + 1);
+        for (int y = b.positions.y0; y < b.positions.y1; ++y) {
+            const std::int64_t* top = sums_.mass_.data() + static_cast<std::size_t>(y) * stride;
+            const std::int64_t* bottom = top + static_cast<std::size_t>(k) * stride;
+            for (int x = b.positions.x0; x < b.positions.x1; ++x) {
+                const std::int64_t s = plain ? bottom[x + k] - bottom[x] - top[x + k] + top[x]
+                                             : masked(sums_.mass_, sums_.clipped(x, y, k, k), near);
                 const long long index = static_cast<long long>(y) * columns + x;
                 if (s > best.mass || (s == best.mass && index < bestIndex)) {
                     best = {x, y, k, s};
                     bestIndex = index;
                 }
             }
-    }
+        }
+    };
+    // The block with the highest bound first, for a high best; then every other block that may hold as much (the
+    // best only grows, so none that could win is skipped, and ties go to the first window in row order whatever the
+    // blocks' order).
+    const auto first = std::max_element(blocks.begin(), blocks.end(),
+                                        [](const Block& a, const Block& b) { return a.bound < b.bound; });
+    evaluate(*first);
+    for (auto b = blocks.begin(); b != blocks.end(); ++b)
+        if (b != first && b->bound >= best.mass)
+            evaluate(*b);
     return best;
 }
 

@@ -29,24 +29,12 @@ struct RasterWindow {
     std::int64_t mass = 0;
 };
 
-// Window sums over a raster whose `cleared` windows' cells are taken out (the samples earlier tiles serve): summed-area
-// tables of the mass and its first moments (Crow, "Summed-Area Tables for Texture Mapping", SIGGRAPH 1984), built once,
-// and inclusion-exclusion over the cleared windows, so that no query copies or rebuilds the raster.
+// Window sums over a raster: summed-area tables of the mass and its first moments (Crow, "Summed-Area Tables for
+// Texture Mapping", SIGGRAPH 1984), built once, so that no query copies, clears or rebuilds the raster.
 class RasterWindowSums {
 public:
     explicit RasterWindowSums(const OccupancyRaster& raster);
 
-    // The window's mass outside the cleared windows.
-    std::int64_t sum(int x, int y, int k, std::span<const RasterWindow> cleared) const;
-    // The corner of the k x k window centred on the mean cell centre of what the window at x, y holds outside the
-    // cleared windows (floor of the exact mean); x, y where it holds nothing. One mean-shift step.
-    glm::ivec2 centredCorner(int x, int y, int k, std::span<const RasterWindow> cleared) const;
-    // The k x k window that holds the most outside the cleared windows, the first in row order among equals.
-    RasterWindow heaviest(int k, std::span<const RasterWindow> cleared) const;
-
-    std::int64_t total() const { return table(mass_, nx_, ny_); }
-
-private:
     struct Rect {
         int x0 = 0;
         int y0 = 0;
@@ -54,20 +42,45 @@ private:
         int y1 = 0;
         bool empty() const { return x0 >= x1 || y0 >= y1; }
     };
-    struct Term {
-        Rect rect;
-        std::int64_t sign = 0;
+
+    // The raster with the `cleared` windows' cells taken out (the samples earlier tiles serve), as inclusion-exclusion
+    // over them: a rectangle's mass outside them is its own plus each term's sign times its intersection's.
+    class Without {
+    public:
+        Without(const RasterWindowSums& sums, std::span<const RasterWindow> cleared);
+
+        // The k x k window's mass at x, y.
+        std::int64_t sum(int x, int y, int k) const;
+        // The corner of the k x k window centred on the mean cell centre of what the window at x, y holds (floor of
+        // the exact mean); x, y where it holds nothing. One mean-shift step.
+        glm::ivec2 centredCorner(int x, int y, int k) const;
+        // The k x k window that holds the most, the first in row order among equals.
+        RasterWindow heaviest(int k) const;
+
+    private:
+        struct Term {
+            Rect rect;
+            std::int64_t sign = 0;
+        };
+        std::int64_t masked(const std::vector<std::int64_t>& table, const Rect& r, std::span<const Term> terms) const;
+
+        const RasterWindowSums& sums_;
+        std::vector<Term> terms_;
     };
 
+    Without without(std::span<const RasterWindow> cleared) const { return Without(*this, cleared); }
+    std::int64_t total() const { return at(mass_, nx_, ny_); }
+
+private:
     Rect clipped(int x, int y, int w, int h) const;
-    static Rect intersection(const Rect& a, const Rect& b);
-    std::vector<Term> terms(std::span<const RasterWindow> cleared) const;
-    std::int64_t table(const std::vector<std::int64_t>& t, int x, int y) const
+    std::int64_t at(const std::vector<std::int64_t>& t, int x, int y) const
     {
         return t[static_cast<std::size_t>(y * (nx_ + 1) + x)];
     }
-    std::int64_t rectSum(const std::vector<std::int64_t>& t, const Rect& r) const;
-    std::int64_t maskedSum(const std::vector<std::int64_t>& t, const Rect& r, std::span<const Term> terms) const;
+    std::int64_t rectSum(const std::vector<std::int64_t>& t, const Rect& r) const
+    {
+        return r.empty() ? 0 : at(t, r.x1, r.y1) - at(t, r.x0, r.y1) - at(t, r.x1, r.y0) + at(t, r.x0, r.y0);
+    }
 
     int nx_ = 0;
     int ny_ = 0;
