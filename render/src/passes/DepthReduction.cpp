@@ -44,8 +44,8 @@ static_assert(shaders::matchesLayout(kGpuHistogramBlock, shaders::BlockLayout::S
 
 constexpr std::uint32_t kGroupSize = 16; // the shader's local_size_x and _y
 // Each invocation reduces a square of pixels and merges runs of samples in one bin or occupancy cell before any atomic:
-// 2 x 2 (docs/notes/2026-12-07-depth-fit-cost.md).
-constexpr std::uint32_t kPixelsPerInvocation = 2;
+// 4 x 4 (docs/notes/2026-12-07-depth-fit-occupancy.md, "Cost after the fit and the reduction were made cheaper").
+constexpr std::uint32_t kPixelsPerInvocation = 4;
 constexpr std::uint32_t kGroupPixels = kGroupSize * kPixelsPerInvocation;
 
 rhi::ShaderSource depthReductionShader(const rhi::Device& device)
