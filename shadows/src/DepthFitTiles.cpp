@@ -1,10 +1,14 @@
 #include "penumbra/shadows/DepthFitTiles.hpp"
 
+#include "penumbra/shadows/OccupancyRaster.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
+#include <span>
 #include <glm/common.hpp>
 
 namespace penumbra::shadows {
@@ -23,28 +27,30 @@ constexpr int kShiftSteps = 16;
 // would choose differently (the parity tests).
 constexpr double kDecisiveGain = 1.0 / 256.0;
 
-// One light slot's samples on a raster anchored to a multiple of its cell: mass per cell, rows of nx.
-struct Raster {
-    glm::vec2 origin{0.0f};
-    float cell = 0.0f;
-    int nx = 0;
-    int ny = 0;
-    std::vector<double> mass;
-};
-
 int clampedIndex(float at, float origin, float cell, int n)
 {
     return std::clamp(static_cast<int>(std::floor((at - origin) / cell)), 0, n - 1);
 }
 
+// Adds `each` to the raster cells [x0, x1) x [y0, y1) in a difference table (rows of nx + 1), which rasterOf sums.
+void addRect(std::vector<std::int64_t>& diff, int nx, int x0, int y0, int x1, int y1, std::int64_t each)
+{
+    const auto at = [nx](int x, int y) { return static_cast<std::size_t>(y * (nx + 1) + x); };
+    diff[at(x0, y0)] += each;
+    diff[at(x1, y0)] -= each;
+    diff[at(x0, y1)] -= each;
+    diff[at(x1, y1)] += each;
+}
+
 // Spreads an occupancy cell's count evenly over the raster cells it covers inside the raster (the raster's cell where
-// it is no larger, the nearest edge cell where it lies outside).
-void spread(Raster& r, glm::vec2 lower, float size, double count)
+// it is no larger, the nearest edge cell where it lies outside), into the difference table.
+void spread(const OccupancyRaster& r, std::vector<std::int64_t>& diff, glm::vec2 lower, float size, std::int64_t count)
 {
     if (size <= r.cell) {
         const glm::vec2 centre = lower + 0.5f * size;
-        r.mass[static_cast<std::size_t>(clampedIndex(centre.y, r.origin.y, r.cell, r.ny) * r.nx +
-                                        clampedIndex(centre.x, r.origin.x, r.cell, r.nx))] += count;
+        const int x = clampedIndex(centre.x, r.origin.x, r.cell, r.nx),
+                  y = clampedIndex(centre.y, r.origin.y, r.cell, r.ny);
+        addRect(diff, r.nx, x, y, x + 1, y + 1, count * kRasterMassUnit);
         return;
     }
     const int per = static_cast<int>(std::lround(size / r.cell));
@@ -53,16 +59,14 @@ void spread(Raster& r, glm::vec2 lower, float size, double count)
     const int x0 = std::max(first.x, 0), x1 = std::min(first.x + per, r.nx);
     const int y0 = std::max(first.y, 0), y1 = std::min(first.y + per, r.ny);
     if (x0 >= x1 || y0 >= y1) {
-        spread(r, lower + 0.5f * size - 0.5f * r.cell, r.cell, count);
+        spread(r, diff, lower + 0.5f * size - 0.5f * r.cell, r.cell, count);
         return;
     }
-    const double each = count / static_cast<double>((x1 - x0) * (y1 - y0));
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x)
-            r.mass[static_cast<std::size_t>(y * r.nx + x)] += each;
+    const std::int64_t area = static_cast<std::int64_t>(x1 - x0) * (y1 - y0);
+    addRect(diff, r.nx, x0, y0, x1, y1, (count * kRasterMassUnit + area / 2) / area);
 }
 
-std::optional<Raster> rasterOf(const DepthHistogram& histogram, std::uint32_t slot)
+std::optional<OccupancyRaster> rasterOf(const DepthHistogram& histogram, std::uint32_t slot)
 {
     if (slot >= histogram.occupancy.size() || histogram.occupancy[slot].empty())
         return std::nullopt;
@@ -71,116 +75,62 @@ std::optional<Raster> rasterOf(const DepthHistogram& histogram, std::uint32_t sl
     if (!f)
         return std::nullopt;
     const float extent = std::max({f->max.x - f->min.x, f->max.y - f->min.y, 1e-6f});
-    Raster r;
+    OccupancyRaster r;
     r.cell = std::exp2(std::ceil(std::log2(extent / static_cast<float>(kRasterCells))));
     r.origin = glm::floor(glm::vec2(f->min) / r.cell) * r.cell;
     r.nx = static_cast<int>(std::floor((f->max.x - r.origin.x) / r.cell)) + 1;
     r.ny = static_cast<int>(std::floor((f->max.y - r.origin.y) / r.cell)) + 1;
-    r.mass.assign(static_cast<std::size_t>(r.nx * r.ny), 0.0);
+    // Each occupancy cell adds to a rectangle of raster cells: four entries of a difference table, summed once, rather
+    // than every cell of the rectangle (a far octave's cell covers thousands).
+    std::vector<std::int64_t> diff(static_cast<std::size_t>((r.nx + 1) * (r.ny + 1)), 0);
     for (const OccupancyGrid& grid : histogram.occupancy[slot])
         for (std::uint32_t y = 0; y < kOccupancyCells; ++y)
             for (std::uint32_t x = 0; x < kOccupancyCells; ++x)
                 if (const std::uint32_t n = grid.counts.at(y * kOccupancyCells + x))
-                    spread(r, grid.origin + glm::vec2(x, y) * grid.cellSize, grid.cellSize, n);
+                    spread(r, diff, grid.origin + glm::vec2(x, y) * grid.cellSize, grid.cellSize, n);
+    r.mass.assign(static_cast<std::size_t>(r.nx * r.ny), 0);
+    std::vector<std::int64_t> column(static_cast<std::size_t>(r.nx), 0);
+    for (int y = 0; y < r.ny; ++y) {
+        std::int64_t row = 0;
+        for (int x = 0; x < r.nx; ++x) {
+            row += diff[static_cast<std::size_t>(y * (r.nx + 1) + x)];
+            column[static_cast<std::size_t>(x)] += row;
+            r.mass[static_cast<std::size_t>(y * r.nx + x)] = column[static_cast<std::size_t>(x)];
+        }
+    }
     return r;
 }
 
-// The k x k window of `mass` (cells from x, y; it may reach past the raster, which holds nothing there).
-struct Window {
-    int x = 0;
-    int y = 0;
-    double mass = 0.0;
-};
-
-class WindowSums {
-public:
-    explicit WindowSums(const Raster& r, const std::vector<double>& mass) : nx_(r.nx), ny_(r.ny)
-    {
-        sums_.assign(static_cast<std::size_t>((nx_ + 1) * (ny_ + 1)), 0.0);
-        for (int y = 0; y < ny_; ++y)
-            for (int x = 0; x < nx_; ++x)
-                at(x + 1, y + 1) = mass[static_cast<std::size_t>(y * nx_ + x)] + at(x, y + 1) + at(x + 1, y) - at(x, y);
-    }
-
-    // The mean of the cells' x, y (cell centres, in cells) in the window, weighted by `mass`; the window's centre where
-    // it holds nothing.
-    static glm::dvec2 centroid(const Raster& r, const std::vector<double>& mass, int x, int y, int k)
-    {
-        glm::dvec2 weighted(0.0);
-        double total = 0.0;
-        for (int j = std::max(y, 0); j < std::min(y + k, r.ny); ++j)
-            for (int i = std::max(x, 0); i < std::min(x + k, r.nx); ++i) {
-                const double m = mass[static_cast<std::size_t>(j * r.nx + i)];
-                weighted += m * glm::dvec2(i + 0.5, j + 0.5);
-                total += m;
-            }
-        return total > 0.0 ? weighted / total : glm::dvec2(x, y) + 0.5 * k;
-    }
-
-    double sum(int x, int y, int k) const
-    {
-        const int x0 = std::clamp(x, 0, nx_), x1 = std::clamp(x + k, 0, nx_);
-        const int y0 = std::clamp(y, 0, ny_), y1 = std::clamp(y + k, 0, ny_);
-        return at(x1, y1) - at(x0, y1) - at(x1, y0) + at(x0, y0);
-    }
-
-    // The window that holds the most, the first in row order among equals.
-    Window heaviest(int k) const
-    {
-        Window best{0, 0, -1.0};
-        for (int y = 0; y + k <= std::max(ny_, k); ++y)
-            for (int x = 0; x + k <= std::max(nx_, k); ++x)
-                if (const double s = sum(x, y, k); s > best.mass)
-                    best = {x, y, s};
-        return best;
-    }
-
-private:
-    double& at(int x, int y) { return sums_[static_cast<std::size_t>(y * (nx_ + 1) + x)]; }
-    double at(int x, int y) const { return sums_[static_cast<std::size_t>(y * (nx_ + 1) + x)]; }
-
-    int nx_;
-    int ny_;
-    std::vector<double> sums_;
-};
-
-void clear(const Raster& r, std::vector<double>& mass, const Window& w, int k)
-{
-    for (int y = std::max(w.y, 0); y < std::min(w.y + k, r.ny); ++y)
-        for (int x = std::max(w.x, 0); x < std::min(w.x + k, r.nx); ++x)
-            mass[static_cast<std::size_t>(y * r.nx + x)] = 0.0;
-}
+double samplesOf(std::int64_t mass) { return static_cast<double>(mass) / static_cast<double>(kRasterMassUnit); }
 
 // From the heaviest window, mean shift (Comaniciu and Meer, "Mean Shift: A Robust Approach Toward Feature Space
 // Analysis", PAMI 2002): the window moves to be centred on the mean of the samples it holds until it is. Where
 // neighbouring windows hold nearly as much (a plateau), which one is heaviest turns on a few samples, and the
 // configurations' depth buffers, which differ in their last bits, move a few samples into a neighbouring cell; the
 // mean moves only as much as those samples weigh, so every configuration places the tile alike (the parity tests).
-Window centred(const Raster& r, const std::vector<double>& mass, const WindowSums& sums, Window w, int k)
+RasterWindow centred(const RasterWindowSums::Without& sums, RasterWindow w)
 {
     for (int step = 0; step < kShiftSteps; ++step) {
-        const glm::dvec2 mean = WindowSums::centroid(r, mass, w.x, w.y, k);
-        const glm::ivec2 corner(static_cast<int>(std::floor(mean.x - 0.5 * k + 0.5)),
-                                static_cast<int>(std::floor(mean.y - 0.5 * k + 0.5)));
+        const glm::ivec2 corner = sums.centredCorner(w.x, w.y, w.k);
         if (corner.x == w.x && corner.y == w.y)
             break;
-        w = {corner.x, corner.y, sums.sum(corner.x, corner.y, k)};
+        w = {corner.x, corner.y, w.k, sums.sum(corner.x, corner.y, w.k)};
     }
     return w;
 }
 
 // From the mean-shift window, one cell at a time towards more samples while a move gains more than `decisive`: the
 // mean of samples that end at an edge (the near ground at the view's bottom edge) leaves empty cells in the window.
-Window climbed(const WindowSums& sums, Window w, int k, double decisive)
+RasterWindow climbed(const RasterWindowSums::Without& sums, RasterWindow w, double decisive)
 {
     constexpr std::array<glm::ivec2, 4> kMoves{glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1),
                                                glm::ivec2(0, 1)};
     for (int step = 0; step < 4 * kShiftSteps; ++step) {
-        Window best = w;
+        RasterWindow best = w;
         for (const glm::ivec2 move : kMoves) {
-            const double m = sums.sum(w.x + move.x, w.y + move.y, k);
-            if (m > best.mass + decisive)
-                best = {w.x + move.x, w.y + move.y, m};
+            const std::int64_t m = sums.sum(w.x + move.x, w.y + move.y, w.k);
+            if (samplesOf(m) > samplesOf(best.mass) + decisive)
+                best = {w.x + move.x, w.y + move.y, w.k, m};
         }
         if (best.x == w.x && best.y == w.y)
             break;
@@ -206,64 +156,66 @@ struct Cost {
 
 class Placement {
 public:
-    Placement(std::vector<Raster> rasters, const DepthFitTilesInput& input) : rasters_(std::move(rasters)), in_(input)
+    Placement(std::vector<OccupancyRaster> rasters, const DepthFitTilesInput& input) : in_(input)
     {
-        for (const Raster& r : rasters_)
-            for (const double m : r.mass)
-                samples_ += m;
-        samples_ /= static_cast<double>(rasters_.size());
+        for (OccupancyRaster& r : rasters) {
+            slots_.push_back({r.origin, r.cell, RasterWindowSums(r)});
+            samples_ += samplesOf(slots_.back().sums.total());
+        }
+        samples_ /= static_cast<double>(slots_.size());
     }
 
     // The raster cells a tile of half size `half` serves along a side.
-    int side(const Raster& r, float half) const
+    int side(float cell, float half) const
     {
-        return static_cast<int>(std::floor(2.0f * half * in_.servedShare / r.cell));
+        return static_cast<int>(std::floor(2.0f * half * in_.servedShare / cell));
     }
 
     // Each tile put where it holds the most of what the nearer ones left (at `at`'s centres where given); the sum is
     // the mean over slots.
     Cost cost(const std::vector<float>& halves, const std::vector<std::vector<glm::vec2>>* at,
-              std::vector<std::vector<glm::vec2>>* centres) const
+              std::vector<std::vector<glm::vec2>>* centres)
     {
         if (centres)
-            centres->assign(halves.size(), std::vector<glm::vec2>(rasters_.size()));
+            centres->assign(halves.size(), std::vector<glm::vec2>(slots_.size()));
         double total = 0.0;
         std::vector<std::pair<double, double>> served; // log2 half size, samples
         const double lastLog2 = std::log2(static_cast<double>(in_.lastHalfSize));
-        for (std::size_t s = 0; s < rasters_.size(); ++s) {
-            const Raster& r = rasters_[s];
-            std::vector<double> mass = r.mass;
-            double left = samples(r);
+        for (std::size_t s = 0; s < slots_.size(); ++s) {
+            const Slot& slot = slots_[s];
+            std::vector<RasterWindow> cleared;
+            std::int64_t left = slot.sums.total();
             for (std::size_t c = 0; c < halves.size(); ++c) {
-                const int k = side(r, halves[c]);
+                const int k = side(slot.cell, halves[c]);
                 if (k < 1)
                     continue;
-                const WindowSums sums(r, mass);
-                Window w;
+                RasterWindow w;
                 if (at) {
-                    const glm::vec2 corner = ((*at)[c][s] - r.origin) / r.cell - 0.5f * static_cast<float>(k);
-                    w = {static_cast<int>(std::lround(corner.x)), static_cast<int>(std::lround(corner.y)), 0.0};
-                    w.mass = sums.sum(w.x, w.y, k);
+                    const glm::vec2 corner = ((*at)[c][s] - slot.origin) / slot.cell - 0.5f * static_cast<float>(k);
+                    w = {static_cast<int>(std::lround(corner.x)), static_cast<int>(std::lround(corner.y)), k, 0};
+                    w.mass = slot.sums.without(cleared).sum(w.x, w.y, k);
                 } else {
-                    w = climbed(sums, centred(r, mass, sums, sums.heaviest(k), k), k, kDecisiveGain * samples(r));
+                    w = placed(s, k, cleared);
                 }
-                served.emplace_back(std::log2(static_cast<double>(halves[c])), w.mass);
-                total += w.mass * served.back().first;
+                const double mass = samplesOf(w.mass);
+                served.emplace_back(std::log2(static_cast<double>(halves[c])), mass);
+                total += mass * served.back().first;
                 left -= w.mass;
-                clear(r, mass, w, k);
+                cleared.push_back(w);
                 if (centres)
                     (*centres)[c][s] =
-                        at ? (*at)[c][s] : r.origin + (glm::vec2(w.x, w.y) + 0.5f * static_cast<float>(k)) * r.cell;
+                        at ? (*at)[c][s]
+                           : slot.origin + (glm::vec2(w.x, w.y) + 0.5f * static_cast<float>(k)) * slot.cell;
             }
-            served.emplace_back(lastLog2, std::max(left, 0.0));
+            served.emplace_back(lastLog2, samplesOf(std::max<std::int64_t>(left, 0)));
             total += served.back().second * lastLog2;
         }
         std::sort(served.begin(), served.end());
         double below = 0.0;
-        Cost cost{lastLog2, total / static_cast<double>(rasters_.size())};
+        Cost cost{lastLog2, total / static_cast<double>(slots_.size())};
         for (const auto& [log2Half, samples] : served) {
             below += samples;
-            if (below >= 0.5 * samples_ * static_cast<double>(rasters_.size())) {
+            if (below >= 0.5 * samples_ * static_cast<double>(slots_.size())) {
                 cost.median = log2Half;
                 break;
             }
@@ -275,23 +227,38 @@ public:
     float smallestHalf() const
     {
         float cell = 0.0f;
-        for (const Raster& r : rasters_)
-            cell = std::max(cell, r.cell);
+        for (const Slot& s : slots_)
+            cell = std::max(cell, s.cell);
         return cell / in_.servedShare;
     }
 
 private:
-    static double samples(const Raster& r)
+    struct Slot {
+        glm::vec2 origin;
+        float cell;
+        RasterWindowSums sums;
+    };
+
+    // Where slot s's tile of k cells goes, the earlier tiles' windows cleared; a tile's window depends on nothing
+    // else, so the searches, which try many sizes sharing their first tiles, place each such tile once.
+    RasterWindow placed(std::size_t s, int k, const std::vector<RasterWindow>& cleared)
     {
-        double sum = 0.0;
-        for (const double m : r.mass)
-            sum += m;
-        return sum;
+        std::vector<int> key{static_cast<int>(s), k};
+        for (const RasterWindow& w : cleared)
+            key.insert(key.end(), {w.x, w.y, w.k});
+        if (const auto found = placedBefore_.find(key); found != placedBefore_.end())
+            return found->second;
+        const RasterWindowSums::Without sums = slots_[s].sums.without(cleared);
+        const double decisive = kDecisiveGain * samplesOf(slots_[s].sums.total());
+        const RasterWindow w = climbed(sums, centred(sums, sums.heaviest(k)), decisive);
+        placedBefore_.emplace(std::move(key), w);
+        return w;
     }
 
-    std::vector<Raster> rasters_;
+    std::vector<Slot> slots_;
     DepthFitTilesInput in_;
     double samples_ = 0.0;
+    std::map<std::vector<int>, RasterWindow> placedBefore_;
 };
 
 std::uint32_t gridSteps(const DepthFitTilesInput& input) { return input.stepsPerOctave > 0 ? input.stepsPerOctave : 8; }
@@ -308,7 +275,7 @@ float gridNeighbour(float half, std::uint32_t steps, bool up)
 // Powers of two below the last tile's half size down to the smallest a raster can place, sizes not decreasing from
 // tile to tile: every combination, each tile's placement shared by the combinations that start alike.
 struct CoarseSearch {
-    const Placement& placement;
+    Placement& placement;
     std::vector<float> candidates;
     std::vector<float> halves;
     std::vector<float> best;
@@ -336,16 +303,16 @@ struct CoarseSearch {
 
 DepthFitTiles depthFitTiles(const DepthHistogram& histogram, const DepthFitTilesInput& input)
 {
-    std::vector<Raster> rasters;
+    std::vector<OccupancyRaster> rasters;
     for (std::uint32_t s = 0; s < histogram.occupancy.size(); ++s) {
-        std::optional<Raster> r = rasterOf(histogram, s);
+        std::optional<OccupancyRaster> r = rasterOf(histogram, s);
         if (!r)
             return {};
         rasters.push_back(std::move(*r));
     }
     if (rasters.empty() || input.placed == 0 || !(input.lastHalfSize > 0.0f))
         return {};
-    const Placement placement(std::move(rasters), input);
+    Placement placement(std::move(rasters), input);
     const std::uint32_t steps = gridSteps(input);
     const float smallest = std::min(placement.smallestHalf(), input.lastHalfSize);
     const bool keptFits = input.kept && input.kept->halfSizes.size() == input.placed &&

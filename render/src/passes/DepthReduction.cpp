@@ -42,6 +42,12 @@ constexpr std::array kGpuHistogramFields{PENUMBRA_SHADER_STRUCT_FIELD(GpuHistogr
 constexpr shaders::ShaderStruct kGpuHistogramBlock{"DepthHistogram", sizeof(GpuHistogram), kGpuHistogramFields};
 static_assert(shaders::matchesLayout(kGpuHistogramBlock, shaders::BlockLayout::Std430));
 
+constexpr std::uint32_t kGroupSize = 16; // the shader's local_size_x and _y
+// Each invocation reduces a square of pixels and merges runs of samples in one bin or occupancy cell before any atomic:
+// 4 x 4 (docs/notes/2026-12-07-depth-fit-occupancy.md, "Cost after the fit and the reduction were made cheaper").
+constexpr std::uint32_t kPixelsPerInvocation = 4;
+constexpr std::uint32_t kGroupPixels = kGroupSize * kPixelsPerInvocation;
+
 rhi::ShaderSource depthReductionShader(const rhi::Device& device)
 {
     const auto clear = static_cast<std::int64_t>(device.conventions().clearDepth());
@@ -49,7 +55,8 @@ rhi::ShaderSource depthReductionShader(const rhi::Device& device)
         shaders::load("depth_reduction.comp", {{"CLEAR_DEPTH", clear},
                                                {"STEPS_PER_OCTAVE", shadows::kDepthHistogramStepsPerOctave},
                                                {"OCCUPANCY_CELLS", shadows::kOccupancyCells},
-                                               {"OCCUPANCY_OCTAVES", shadows::kOccupancyOctaves}});
+                                               {"OCCUPANCY_OCTAVES", shadows::kOccupancyOctaves},
+                                               {"PIXELS_PER_INVOCATION", kPixelsPerInvocation}});
     source.includes.push_back(
         {"depth_reduction_blocks.glsl",
          shaders::storageBlockGlsl(kGpuHistogramBlock, kDepthHistogramBinding, "histogram",
@@ -57,8 +64,6 @@ rhi::ShaderSource depthReductionShader(const rhi::Device& device)
              shaders::uniformBlockGlsl(kDepthHistogramFrameBlock, kDepthHistogramFrameBinding, "frame")});
     return source;
 }
-
-constexpr std::uint32_t kGroupSize = 16; // the shader's local_size_x and _y
 
 // What the buffer holds before the dispatch: no samples, every footprint empty (min above max). On the heap: the
 // occupancy grids make it half a megabyte.
@@ -144,7 +149,7 @@ void DepthReduction::record(rhi::CommandList& commands, const rhi::Texture& dept
     commands.bindTexture(0, depth, *sampler_);
     commands.bindStorageBuffer(kDepthHistogramBinding, *bins_, 0, bins_->desc().size);
     commands.bindUniformBuffer(kDepthHistogramFrameBinding, *frame_, 0, sizeof(DepthHistogramFrame));
-    commands.dispatch((size.width + kGroupSize - 1) / kGroupSize, (size.height + kGroupSize - 1) / kGroupSize);
+    commands.dispatch((size.width + kGroupPixels - 1) / kGroupPixels, (size.height + kGroupPixels - 1) / kGroupPixels);
     recorded_ = true;
 }
 
