@@ -347,7 +347,6 @@ std::vector<std::vector<std::uint32_t>> GpuCasterCulling::readLists() const
             lists[t].insert(lists[t].end(), indices.begin() + draw.firstInstance,
                             indices.begin() + draw.firstInstance + draw.instanceCount);
         }
-        std::sort(lists[t].begin(), lists[t].end());
     }
     return lists;
 }

@@ -124,7 +124,8 @@ public:
     std::uint64_t drawOffset(std::uint32_t tile, std::uint32_t batch) const;
     std::uint64_t countOffset(std::uint32_t tile, std::uint32_t batch) const;
 
-    // After the submission: each tile's casters, ascending (for tests; reads the GPU's lists back).
+    // After the submission: each tile's casters as its draws hold them, in the batches' order and caster order within a
+    // batch (for tests; reads the GPU's lists back).
     std::vector<std::vector<std::uint32_t>> readLists() const;
 
 private:
