@@ -59,10 +59,7 @@ TEST(CascadeFit, TranslatingTheCameraMovesShadowTexelsByWholeTexelsOnly)
     std::mt19937 rng(3);
     const ShadowAtlasLayout layout(2048, 4);
     for (const rhi::Conventions& conventions : testing::allConventions()) {
-        ShadowCamera camera;
-        camera.position = {10.0f, 3.0f, -7.0f};
-        camera.forward = glm::normalize(glm::vec3(0.4f, -0.2f, -1.0f));
-        camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+        ShadowCamera camera = testing::uprightCamera(glm::vec3(10.0f, 3.0f, -7.0f), glm::vec3(0.4f, -0.2f, -1.0f));
         const glm::vec3 light = glm::normalize(glm::vec3(-0.5f, -1.0f, 0.3f));
         const glm::vec3 point = camera.position + camera.forward * 6.0f + glm::vec3(0.3f, 0.1f, -0.2f);
         auto atlasTexel = [&](const ShadowCamera& c) {

@@ -14,10 +14,7 @@ namespace {
 // The built-in test scene's camera (scenes::makeShadowTestScene): from (0, 8, -20) at (0, 0, 5), 60 degrees, 16:9.
 ShadowCamera sceneCamera()
 {
-    ShadowCamera camera;
-    camera.position = {0.0f, 8.0f, -20.0f};
-    camera.forward = glm::normalize(glm::vec3(0.0f, -8.0f, 25.0f));
-    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    ShadowCamera camera = testing::uprightCamera(glm::vec3(0.0f, 8.0f, -20.0f), glm::vec3(0.0f, -8.0f, 25.0f));
     camera.fovY = 1.0471976f;
     camera.aspect = 16.0f / 9.0f;
     camera.nearPlane = 0.1f;

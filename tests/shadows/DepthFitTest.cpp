@@ -139,10 +139,7 @@ TEST(DepthFit, HalfSizeIsOnTheGridWithHysteresis)
 // half sizes.
 TEST(DepthFit, PlannerFitsTheTilesToTheSamples)
 {
-    ShadowCamera camera;
-    camera.position = {0.0f, 2.0f, 0.0f};
-    camera.forward = glm::normalize(glm::vec3(0.0f, -0.2f, 1.0f));
-    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    ShadowCamera camera = testing::uprightCamera(glm::vec3(0.0f, 2.0f, 0.0f), glm::vec3(0.0f, -0.2f, 1.0f));
     camera.aspect = 16.0f / 9.0f;
     camera.farPlane = 150.0f;
     ShadowSettings settings;
@@ -188,10 +185,7 @@ TEST(DepthFit, PlannerFitsTheTilesToTheSamples)
 // light's lookups outside its tiles.
 TEST(DepthFit, EachLightSelectsInItsOwnTiles)
 {
-    ShadowCamera camera;
-    camera.position = {0.0f, 2.0f, 0.0f};
-    camera.forward = glm::normalize(glm::vec3(0.0f, -0.3f, 1.0f));
-    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    ShadowCamera camera = testing::uprightCamera(glm::vec3(0.0f, 2.0f, 0.0f), glm::vec3(0.0f, -0.3f, 1.0f));
     camera.aspect = 16.0f / 9.0f;
     camera.farPlane = 150.0f;
     ShadowSettings settings;

@@ -103,10 +103,7 @@ TEST(DepthFitTiles, KeptTilesStayWhileTheyCostLittleMore)
 // holds them all), so map-based selection finds a cascade for each.
 TEST(DepthFitTiles, PlannerPlacesTheTilesAndTheLastHoldsEverySample)
 {
-    ShadowCamera camera;
-    camera.position = {0.0f, 2.0f, 0.0f};
-    camera.forward = glm::normalize(glm::vec3(0.0f, -0.3f, 1.0f));
-    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    ShadowCamera camera = testing::uprightCamera(glm::vec3(0.0f, 2.0f, 0.0f), glm::vec3(0.0f, -0.3f, 1.0f));
     camera.aspect = 16.0f / 9.0f;
     camera.farPlane = 150.0f;
     ShadowSettings settings;

@@ -10,10 +10,7 @@ namespace {
 
 ShadowCamera streetCamera()
 {
-    ShadowCamera camera;
-    camera.position = {2.0f, 1.7f, 5.0f};
-    camera.forward = glm::normalize(glm::vec3(0.2f, -0.1f, -1.0f));
-    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    ShadowCamera camera = testing::uprightCamera(glm::vec3(2.0f, 1.7f, 5.0f), glm::vec3(0.2f, -0.1f, -1.0f));
     camera.fovY = 1.0f;
     camera.aspect = 16.0f / 9.0f;
     camera.nearPlane = 0.1f;

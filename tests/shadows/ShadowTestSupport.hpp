@@ -49,6 +49,17 @@ inline void randomOrientation(std::mt19937& rng, glm::vec3& forward, glm::vec3& 
     up = glm::normalize(other - forward * glm::dot(other, forward));
 }
 
+// A camera at `position` looking along `forward` (normalized here), its up the world's +y made square to it; the other
+// fields as ShadowCamera's defaults.
+inline ShadowCamera uprightCamera(glm::vec3 position, glm::vec3 forward)
+{
+    ShadowCamera camera;
+    camera.position = position;
+    camera.forward = glm::normalize(forward);
+    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    return camera;
+}
+
 inline ShadowCamera randomCamera(std::mt19937& rng)
 {
     std::uniform_real_distribution<float> position(-200.0f, 200.0f);

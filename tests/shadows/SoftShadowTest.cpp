@@ -350,10 +350,7 @@ TEST(SoftSettingsTest, CascadeDataCarriesTheTexelSize)
 
 ShadowCamera cameraAt(glm::vec3 position)
 {
-    ShadowCamera camera;
-    camera.position = position;
-    camera.forward = glm::normalize(glm::vec3(0.2f, -0.3f, -1.0f));
-    camera.up = glm::normalize(glm::cross(glm::cross(camera.forward, glm::vec3(0, 1, 0)), camera.forward));
+    ShadowCamera camera = testing::uprightCamera(position, glm::vec3(0.2f, -0.3f, -1.0f));
     camera.fovY = 1.0f;
     camera.aspect = 16.0f / 9.0f;
     camera.nearPlane = 0.1f;
