@@ -78,7 +78,7 @@ ShadowSettings unusualSettings()
               .maxPenumbraTexels = 30.0f,
               .poissonRadiusTexels = 3.25f,
               .diskRotation = Toggle::Off};
-    s.contact = {.shadows = Toggle::On, .length = 0.75f, .steps = 24, .thickness = 0.05f, .localLights = 3};
+    s.contact = {.shadows = Toggle::On, .length = 0.75f, .steps = 24, .thickness = 0.1f, .localLights = 3};
     return s;
 }
 

@@ -49,6 +49,16 @@ render::FrameDesc contactFrame(bool contact, float thickness = shadows::ContactS
     return frame;
 }
 
+// contactFrame at 320 x 180, where the slats seen past the fence (ContactShadowsTest::lookPastTheFence) cover a few
+// pixels each.
+render::FrameDesc pastTheFenceFrame(bool contact, float thickness = shadows::ContactShadowSettings{}.thickness)
+{
+    render::FrameDesc frame = contactFrame(contact, thickness);
+    frame.width = 2 * kContactWidth;
+    frame.height = 2 * kContactHeight;
+    return frame;
+}
+
 // contactFrame for the spot and point lights (contactLocalLights: both, the nearest first), seen through `light`'s
 // visibility view: tiles of at most 64 texels in a 512-texel local atlas, which leave gaps at the pole's foot and under
 // the slats.
@@ -89,6 +99,13 @@ public:
     // same camera.
     void useLocalLights() { scene_ = scenes::makeContactLocalLightsScene(); }
 
+    // From the lit side of the fence, looking down past the slats at the ground beyond them: a march from that ground
+    // towards the sun passes behind the 6 cm slats in view without meeting them.
+    void lookPastTheFence()
+    {
+        scene_.camera = scene::lookAt({-0.2f, 2.0f, 3.6f}, {0.3f, 0.0f, 2.2f}, glm::radians(55.0f), {0.0f, 1.0f, 0.0f});
+    }
+
     // The visibility view of `frame`'s light (FrameDesc::visibilityOf) against the ray cast.
     Figures measure(const render::FrameDesc& frame, const char* name)
     {
@@ -99,7 +116,7 @@ public:
             truth::renderedVisibility(rhi::readTexture(*device, renderer.visibilityImage()));
         if (!shadowRays_) {
             const truth::RayCaster cameraRays(scene_, truth::RayKind::Camera);
-            gbuffer_ = truth::traceGBuffer(scene_, cameraRays, scene_.camera, kContactWidth, kContactHeight);
+            gbuffer_ = truth::traceGBuffer(scene_, cameraRays, scene_.camera, frame.width, frame.height);
             shadowRays_ = std::make_unique<truth::RayCaster>(scene_);
         }
         const truth::RayCaster& shadowRays = *shadowRays_;
@@ -168,6 +185,24 @@ TEST_F(ContactShadowsTest, ThicknessIgnoredCatchesFault)
     const Figures off = measure(contactFrame(false), "off");
     const Figures ignored = measure(contactFrame(true, 10.0f), "thickness 10 m");
     EXPECT_GT(ignored.acne, off.acne) << "a march that ignores the thickness must darken truly lit pixels";
+}
+
+// Ground seen past thin casters: the march's ray passes behind the slats in view, within a thickness band deeper than
+// they are, and must not count them.
+TEST_F(ContactShadowsTest, ThinCastersInFrontDarkenNothing)
+{
+    lookPastTheFence();
+    const Figures off = measure(pastTheFenceFrame(false), "off, past the fence");
+    EXPECT_LE(measure(pastTheFenceFrame(true), "on, past the fence").acne, off.acne);
+}
+
+// The former default thickness, 0.2 m, more than three times the slats' depth: its halos beyond them are caught.
+TEST_F(ContactShadowsTest, ThickerThanTheCastersCatchesFault)
+{
+    lookPastTheFence();
+    const Figures off = measure(pastTheFenceFrame(false), "off, past the fence");
+    EXPECT_GT(measure(pastTheFenceFrame(true, 0.2f), "thickness 0.2 m, past the fence").acne, off.acne)
+        << "a thickness beyond the slats' must darken the ground seen past them";
 }
 
 // A march of 2 cm reaches no caster: the gap count (truth::contactGapPixels, casters within the default length)

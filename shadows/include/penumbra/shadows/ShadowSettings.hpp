@@ -189,7 +189,10 @@ struct ContactShadowSettings {
     Toggle shadows = Toggle::Off;
     float length = 0.3f; // metres of the march towards the light
     std::uint32_t steps = 12; // depth samples along it
-    float thickness = 0.2f; // metres behind a depth sample that still count as inside its surface
+    // Metres behind a depth sample that still count as inside its surface. Thin: a march that passes behind a caster
+    // thinner than the band in view (a leaf, a slat) counts it without meeting it (Unity HDRP's Contact Shadows
+    // "Thickness" likewise defaults low); docs/shadows-contact.md gives the ray cast's figures.
+    float thickness = 0.05f;
     std::uint32_t localLights = 1; // spot and point lights marched towards, 0 to kMaxContactLocalLights
 };
 
