@@ -94,25 +94,29 @@ void main()
     outContact.xy = vec2(inverse, stepPerPixel(inverse, inverseViewDepth(left), inverseViewDepth(right),
                                                inverseViewDepth(up), inverseViewDepth(down)));
     const float jitter = 0.5 + 0.5 * interleavedGradientNoise(centre);
-    int occluded = 0;
-    for (int i = 0; i < contact.lightCount; ++i)
-        occluded |= contactOccluded(position, pixel, contact.towardsLight[i].xyz, contact.marchLength, bias, jitter)
-                        ? 1 << i
-                        : 0;
-    outContact.z = float(occluded);
-    // A spot or point light: towards its position, no farther than the light itself, and only where it shines (within
-    // its range and cone), since the lit pass adds nothing of it elsewhere.
-    int localOccluded = 0;
-    for (int k = 0; k < contact.localLightCount; ++k) {
+    // One loop over the directional lights and then the chosen spot and point lights, so that the march is one
+    // piece of code: llvmpipe and lavapipe run a loop's body at least once, masked, even when it has no iteration
+    // to run (gallivm's loops test their mask at the end, lp_exec_endloop), so a second loop cost a whole masked
+    // march on every pixel where the frame has no local light (docs/notes/2026-12-07-contact-cost.md).
+    ivec2 occluded = ivec2(0);
+    for (int light = 0; light < contact.lightCount + contact.localLightCount; ++light) {
+        const bool directional = light < contact.lightCount;
+        // A spot or point light: towards its position, no farther than the light itself, and only where it shines
+        // (within its range and cone), since the lit pass adds nothing of it elsewhere.
+        const int k = max(light - contact.lightCount, 0);
         const vec3 toLight = contact.localPosition[k].xyz - position;
         const float distance = length(toLight);
-        const vec3 towardsLight = toLight / max(distance, 1e-6);
-        if (distance * distance * contact.localPosition[k].w < 1.0 &&
-            dot(contact.localCone[k].xyz, -towardsLight) > contact.localCone[k].w)
-            localOccluded |=
-                contactOccluded(position, pixel, towardsLight, min(contact.marchLength, distance), bias, jitter)
-                    ? 1 << k
-                    : 0;
+        const vec3 towardsLocal = toLight / max(distance, 1e-6);
+        const bool shines = directional || (distance * distance * contact.localPosition[k].w < 1.0 &&
+                                            dot(contact.localCone[k].xyz, -towardsLocal) > contact.localCone[k].w);
+        const vec3 towardsLight = directional ? contact.towardsLight[min(light, contact.towardsLight.length() - 1)].xyz : towardsLocal;
+        const float marchLength = directional ? contact.marchLength : min(contact.marchLength, distance);
+        if (shines && contactOccluded(position, pixel, towardsLight, marchLength, bias, jitter)) {
+            if (directional)
+                occluded.x |= 1 << light;
+            else
+                occluded.y |= 1 << k;
+        }
     }
-    outContact.w = float(localOccluded);
+    outContact.zw = vec2(occluded);
 }
