@@ -45,7 +45,10 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
     const vec4 endTexture = contact.worldToTexture * vec4(end, 1.0);
     const float startDepth = dot(position - contact.cameraPosition.xyz, contact.cameraForward.xyz);
     const float endDepth = dot(end - contact.cameraPosition.xyz, contact.cameraForward.xyz);
-    for (int i = 0; i < contact.steps; ++i) {
+    // do-while, as the lights' loop in main(): steps >= 1, and a loop that tests its condition first runs one
+    // more body, masked, on llvmpipe and lavapipe (see there).
+    int i = 0;
+    do {
         const float t = (float(i) + jitter) / float(contact.steps);
         const vec4 projected = mix(startTexture, endTexture, t);
         const float rayDepth = mix(startDepth, endDepth, t);
@@ -62,7 +65,7 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
         const float behind = rayDepth - depth;
         if (behind > bias && behind < bias + contact.thickness)
             return true;
-    }
+    } while (++i < contact.steps);
     return false;
 }
 
@@ -99,7 +102,8 @@ void main()
     // to run (gallivm's loops test their mask at the end, lp_exec_endloop), so a second loop cost a whole masked
     // march on every pixel where the frame has no local light (docs/notes/2026-12-07-contact-cost.md).
     ivec2 occluded = ivec2(0);
-    for (int light = 0; light < contact.lightCount + contact.localLightCount; ++light) {
+    int light = 0;
+    do {
         const bool directional = light < contact.lightCount;
         // A spot or point light: towards its position, no farther than the light itself, and only where it shines
         // (within its range and cone), since the lit pass adds nothing of it elsewhere.
@@ -117,6 +121,6 @@ void main()
             else
                 occluded.y |= 1 << k;
         }
-    }
+    } while (++light < contact.lightCount + contact.localLightCount);
     outContact.zw = vec2(occluded);
 }
