@@ -36,35 +36,34 @@ float stepPerPixel(float here, float left, float right, float up, float down)
     return max(min(abs(here - left), abs(here - right)), min(abs(here - up), abs(here - down)));
 }
 
-// Whether the march of `marchLength` metres from `position` towards the light meets an occluder. Projection and
-// view depth are linear in clip space along the ray, so each step interpolates its ends instead of projecting anew.
+// Whether the march of `marchLength` metres from `position` towards the light meets an occluder. The march runs in
+// the frame's pixels times clip w: x / w and y / w are the pixel, w itself is the view depth (clipToTexture keeps w,
+// and every convention's perspective puts the view depth there). All three are linear along the ray, so each step
+// adds a fixed increment instead of projecting anew, and one reciprocal of w gives the pixel.
 bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchLength, float bias, float jitter)
 {
-    const vec3 end = position + towardsLight * marchLength;
-    const vec4 startTexture = contact.worldToTexture * vec4(position, 1.0);
-    const vec4 endTexture = contact.worldToTexture * vec4(end, 1.0);
-    const float startDepth = dot(position - contact.cameraPosition.xyz, contact.cameraForward.xyz);
-    const float endDepth = dot(end - contact.cameraPosition.xyz, contact.cameraForward.xyz);
+    const vec3 toPixels = vec3(contact.targetSize.xy, 1.0);
+    const vec3 first = (contact.worldToTexture * vec4(position, 1.0)).xyw * toPixels;
+    const vec3 last = (contact.worldToTexture * vec4(position + towardsLight * marchLength, 1.0)).xyw * toPixels;
+    const vec3 increment = (last - first) / float(contact.steps);
+    vec3 projected = first + jitter * increment;
     // do-while, as the lights' loop in main(): steps >= 1, and a loop that tests its condition first runs one
     // more body, masked, on llvmpipe and lavapipe (see there).
     int i = 0;
     do {
-        const float t = (float(i) + jitter) / float(contact.steps);
-        const vec4 projected = mix(startTexture, endTexture, t);
-        const float rayDepth = mix(startDepth, endDepth, t);
         // Behind the near plane or off the picture: the depth buffer knows nothing further along.
-        if (rayDepth <= contact.nearPlane || projected.w <= 0.0)
+        if (projected.z <= contact.nearPlane)
             break;
-        const vec2 uv = projected.xy / projected.w;
-        if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0))))
+        const vec2 point = projected.xy * (1.0 / projected.z);
+        if (any(lessThan(point, vec2(0.0))) || any(greaterThanEqual(point, contact.targetSize.xy)))
             break;
-        const ivec2 pixel = ivec2(uv * contact.targetSize.xy);
-        const float depth = texelFetch(sceneViewDepth, pixel, 0).r;
-        if (pixel == start || depth <= 0.0)
-            continue;
-        const float behind = rayDepth - depth;
-        if (behind > bias && behind < bias + contact.thickness)
+        const ivec2 pixel = ivec2(point);
+        const float behind = projected.z - texelFetch(sceneViewDepth, pixel, 0).r;
+        // The starting pixel's own depth and no surface (view depth 0, so behind is the whole ray's depth) are no
+        // occluders.
+        if (behind > bias && behind < bias + contact.thickness && behind < projected.z && pixel != start)
             return true;
+        projected += increment;
     } while (++i < contact.steps);
     return false;
 }
