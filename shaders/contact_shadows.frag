@@ -47,8 +47,7 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
     const vec3 last = (contact.worldToTexture * vec4(position + towardsLight * marchLength, 1.0)).xyw * toPixels;
     const vec3 increment = (last - first) / float(contact.steps);
     vec3 projected = first + jitter * increment;
-    // do-while, as the lights' loop in main(): steps >= 1, and a loop that tests its condition first runs one
-    // more body, masked, on llvmpipe and lavapipe (see there).
+    // A do-while, as the lights' loop in main() (see there): steps >= 1 (ContactShadowSettings).
     int i = 0;
     do {
         // Behind the near plane or off the picture: the depth buffer knows nothing further along.
@@ -97,22 +96,26 @@ void main()
                                                inverseViewDepth(up), inverseViewDepth(down)));
     const float jitter = 0.5 + 0.5 * interleavedGradientNoise(centre);
     // One loop over the directional lights and then the chosen spot and point lights, so that the march is one
-    // piece of code: llvmpipe and lavapipe run a loop's body at least once, masked, even when it has no iteration
-    // to run (gallivm's loops test their mask at the end, lp_exec_endloop), so a second loop cost a whole masked
-    // march on every pixel where the frame has no local light (docs/notes/2026-12-07-contact-cost.md).
+    // piece of code, and a do-while (the pass runs only for a frame with a light to march towards). llvmpipe and
+    // lavapipe run control flow under lane masks: an `if` runs both sides, and a loop tests at its end whether any
+    // lane is left (lp_exec_endloop, Mesa's src/gallium/auxiliary/gallivm/lp_bld_ir_common.c), so a loop whose
+    // condition fails at the top runs its body once more, masked, and a loop of no iteration runs it once: a loop
+    // per kind of light cost every pixel two more march set-ups and steps (docs/notes/2026-12-07-contact-cost.md).
     ivec2 occluded = ivec2(0);
     int light = 0;
     do {
         const bool directional = light < contact.lightCount;
         // A spot or point light: towards its position, no farther than the light itself, and only where it shines
-        // (within its range and cone), since the lit pass adds nothing of it elsewhere.
+        // (within its range and cone), since the lit pass adds nothing of it elsewhere. Its index is clamped so that
+        // the directional lights' passes, which compute it too (both sides of a select), read inside the block.
         const int k = max(light - contact.lightCount, 0);
         const vec3 toLight = contact.localPosition[k].xyz - position;
         const float distance = length(toLight);
         const vec3 towardsLocal = toLight / max(distance, 1e-6);
         const bool shines = directional || (distance * distance * contact.localPosition[k].w < 1.0 &&
                                             dot(contact.localCone[k].xyz, -towardsLocal) > contact.localCone[k].w);
-        const vec3 towardsLight = directional ? contact.towardsLight[min(light, contact.towardsLight.length() - 1)].xyz : towardsLocal;
+        const int d = min(light, contact.towardsLight.length() - 1); // inside the array in a masked pass
+        const vec3 towardsLight = directional ? contact.towardsLight[d].xyz : towardsLocal;
         const float marchLength = directional ? contact.marchLength : min(contact.marchLength, distance);
         if (shines && contactOccluded(position, pixel, towardsLight, marchLength, bias, jitter)) {
             if (directional)
