@@ -36,33 +36,34 @@ float stepPerPixel(float here, float left, float right, float up, float down)
     return max(min(abs(here - left), abs(here - right)), min(abs(here - up), abs(here - down)));
 }
 
-// Whether the march of `marchLength` metres from `position` towards the light meets an occluder. Projection and
-// view depth are linear in clip space along the ray, so each step interpolates its ends instead of projecting anew.
+// Whether the march of `marchLength` metres from `position` towards the light meets an occluder. The march runs in
+// the frame's pixels times clip w: x / w and y / w are the pixel, w itself is the view depth (clipToTexture keeps w,
+// and every convention's perspective puts the view depth there). All three are linear along the ray, so each step
+// adds a fixed increment instead of projecting anew, and one reciprocal of w gives the pixel.
 bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchLength, float bias, float jitter)
 {
-    const vec3 end = position + towardsLight * marchLength;
-    const vec4 startTexture = contact.worldToTexture * vec4(position, 1.0);
-    const vec4 endTexture = contact.worldToTexture * vec4(end, 1.0);
-    const float startDepth = dot(position - contact.cameraPosition.xyz, contact.cameraForward.xyz);
-    const float endDepth = dot(end - contact.cameraPosition.xyz, contact.cameraForward.xyz);
-    for (int i = 0; i < contact.steps; ++i) {
-        const float t = (float(i) + jitter) / float(contact.steps);
-        const vec4 projected = mix(startTexture, endTexture, t);
-        const float rayDepth = mix(startDepth, endDepth, t);
+    const vec3 toPixels = vec3(contact.targetSize.xy, 1.0);
+    const vec3 first = (contact.worldToTexture * vec4(position, 1.0)).xyw * toPixels;
+    const vec3 last = (contact.worldToTexture * vec4(position + towardsLight * marchLength, 1.0)).xyw * toPixels;
+    const vec3 increment = (last - first) / float(contact.steps);
+    vec3 projected = first + jitter * increment;
+    // A do-while, as the lights' loop in main() (see there): steps >= 1 (ContactShadowSettings).
+    int i = 0;
+    do {
         // Behind the near plane or off the picture: the depth buffer knows nothing further along.
-        if (rayDepth <= contact.nearPlane || projected.w <= 0.0)
+        if (projected.z <= contact.nearPlane)
             break;
-        const vec2 uv = projected.xy / projected.w;
-        if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0))))
+        const vec2 point = projected.xy * (1.0 / projected.z);
+        if (any(lessThan(point, vec2(0.0))) || any(greaterThanEqual(point, contact.targetSize.xy)))
             break;
-        const ivec2 pixel = ivec2(uv * contact.targetSize.xy);
-        const float depth = texelFetch(sceneViewDepth, pixel, 0).r;
-        if (pixel == start || depth <= 0.0)
-            continue;
-        const float behind = rayDepth - depth;
-        if (behind > bias && behind < bias + contact.thickness)
+        const ivec2 pixel = ivec2(point);
+        const float behind = projected.z - texelFetch(sceneViewDepth, pixel, 0).r;
+        // The starting pixel's own depth and no surface (view depth 0, so behind is the whole ray's depth) are no
+        // occluders.
+        if (behind > bias && behind < bias + contact.thickness && behind < projected.z && pixel != start)
             return true;
-    }
+        projected += increment;
+    } while (++i < contact.steps);
     return false;
 }
 
@@ -94,25 +95,34 @@ void main()
     outContact.xy = vec2(inverse, stepPerPixel(inverse, inverseViewDepth(left), inverseViewDepth(right),
                                                inverseViewDepth(up), inverseViewDepth(down)));
     const float jitter = 0.5 + 0.5 * interleavedGradientNoise(centre);
-    int occluded = 0;
-    for (int i = 0; i < contact.lightCount; ++i)
-        occluded |= contactOccluded(position, pixel, contact.towardsLight[i].xyz, contact.marchLength, bias, jitter)
-                        ? 1 << i
-                        : 0;
-    outContact.z = float(occluded);
-    // A spot or point light: towards its position, no farther than the light itself, and only where it shines (within
-    // its range and cone), since the lit pass adds nothing of it elsewhere.
-    int localOccluded = 0;
-    for (int k = 0; k < contact.localLightCount; ++k) {
+    // One loop over the directional lights and then the chosen spot and point lights, so that the march is one
+    // piece of code, and a do-while (the pass runs only for a frame with a light to march towards). llvmpipe and
+    // lavapipe run control flow under lane masks: an `if` runs both sides, and a loop tests at its end whether any
+    // lane is left (lp_exec_endloop, Mesa's src/gallium/auxiliary/gallivm/lp_bld_ir_common.c), so a loop whose
+    // condition fails at the top runs its body once more, masked, and a loop of no iteration runs it once: a loop
+    // per kind of light cost every pixel two more march set-ups and steps (docs/notes/2026-12-07-contact-cost.md).
+    ivec2 occluded = ivec2(0);
+    int light = 0;
+    do {
+        const bool directional = light < contact.lightCount;
+        // A spot or point light: towards its position, no farther than the light itself, and only where it shines
+        // (within its range and cone), since the lit pass adds nothing of it elsewhere. Its index is clamped so that
+        // the directional lights' passes, which compute it too (both sides of a select), read inside the block.
+        const int k = max(light - contact.lightCount, 0);
         const vec3 toLight = contact.localPosition[k].xyz - position;
         const float distance = length(toLight);
-        const vec3 towardsLight = toLight / max(distance, 1e-6);
-        if (distance * distance * contact.localPosition[k].w < 1.0 &&
-            dot(contact.localCone[k].xyz, -towardsLight) > contact.localCone[k].w)
-            localOccluded |=
-                contactOccluded(position, pixel, towardsLight, min(contact.marchLength, distance), bias, jitter)
-                    ? 1 << k
-                    : 0;
-    }
-    outContact.w = float(localOccluded);
+        const vec3 towardsLocal = toLight / max(distance, 1e-6);
+        const bool shines = directional || (distance * distance * contact.localPosition[k].w < 1.0 &&
+                                            dot(contact.localCone[k].xyz, -towardsLocal) > contact.localCone[k].w);
+        const int d = min(light, contact.towardsLight.length() - 1); // inside the array in a masked pass
+        const vec3 towardsLight = directional ? contact.towardsLight[d].xyz : towardsLocal;
+        const float marchLength = directional ? contact.marchLength : min(contact.marchLength, distance);
+        if (shines && contactOccluded(position, pixel, towardsLight, marchLength, bias, jitter)) {
+            if (directional)
+                occluded.x |= 1 << light;
+            else
+                occluded.y |= 1 << k;
+        }
+    } while (++light < contact.lightCount + contact.localLightCount);
+    outContact.zw = vec2(occluded);
 }
