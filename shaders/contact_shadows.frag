@@ -16,14 +16,16 @@
 #include "contact_constants.glsl" // the block Contact (penumbra::render::ContactShadowUniforms) and the bindings
 #include "material.glsl"
 
-// The prepass's view depth (view_depth.glsl), metres along the camera's forward; 0 where no surface was drawn.
+// The prepass's view depth (view_depth.glsl), metres along the camera's forward, negated on alpha-tested surfaces;
+// 0 where no surface was drawn.
 layout(binding = PENUMBRA_BINDING_CONTACT_DEPTH) uniform sampler2D sceneViewDepth;
 
 layout(location = 0) out vec4 outContact;
 
+// The surface's view depth, alpha-tested or not (view_depth.glsl: those are negated).
 float viewDepthAt(ivec2 pixel)
 {
-    return texelFetch(sceneViewDepth, clamp(pixel, ivec2(0), ivec2(contact.targetSize.xy) - 1), 0).r;
+    return abs(texelFetch(sceneViewDepth, clamp(pixel, ivec2(0), ivec2(contact.targetSize.xy) - 1), 0).r);
 }
 
 // 1 / view depth, 0 where no surface was drawn (infinitely far, as the depth buffer's far value).
@@ -57,10 +59,13 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
         if (any(lessThan(point, vec2(0.0))) || any(greaterThanEqual(point, contact.targetSize.xy)))
             break;
         const ivec2 pixel = ivec2(point);
-        const float behind = projected.z - texelFetch(sceneViewDepth, pixel, 0).r;
-        // The starting pixel's own depth and no surface (view depth 0, so behind is the whole ray's depth) are no
-        // occluders.
-        if (behind > bias && behind < bias + contact.thickness && behind < projected.z && pixel != start)
+        const float sampled = texelFetch(sceneViewDepth, pixel, 0).r;
+        const float behind = projected.z - abs(sampled);
+        // An alpha-tested surface (negated, view_depth.glsl) is a card without thickness: it occludes where the ray
+        // crosses its depth within this step, not in the whole band behind it.
+        const float band = sampled < 0.0 ? min(contact.thickness, abs(increment.z)) : contact.thickness;
+        // The starting pixel's own depth and no surface (view depth 0) are no occluders.
+        if (behind > bias && behind < bias + band && sampled != 0.0 && pixel != start)
             return true;
         projected += increment;
     } while (++i < contact.steps);

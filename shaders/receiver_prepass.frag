@@ -27,7 +27,7 @@ void main()
     outPositionDx = vec4(dFdxFine(vPosition), 0.0);
     outPositionDy = vec4(dFdyFine(vPosition), 0.0);
 #if PENUMBRA_RECEIVER_VIEW_DEPTH
-    outViewDepth = fragmentViewDepth();
+    outViewDepth = prepassViewDepth(PENUMBRA_RECEIVER_CLIP != 0);
 #endif
 #if PENUMBRA_RECEIVER_CLIP
     discardClipHoles();

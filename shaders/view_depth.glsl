@@ -5,3 +5,9 @@
 // the same triangles give the same view depth bit for bit where a depth read back from the depth buffer would not
 // (docs/notes/2026-12-07-contact-parity-cost.md).
 float fragmentViewDepth() { return 1.0 / gl_FragCoord.w; }
+
+// What the prepass writes for contact shadows: the view depth, negated on alpha-tested surfaces. Those are mostly
+// cards without thickness (leaves, grilles), and a depth buffer cannot tell what lies behind a card: a march passing
+// behind one in view, within the thickness band, would count it without meeting it. So the march counts a card only
+// where its ray crosses the card's depth within one step. 0 stays "no surface".
+float prepassViewDepth(bool alphaTested) { return alphaTested ? -fragmentViewDepth() : fragmentViewDepth(); }

@@ -1,6 +1,6 @@
 #version 450
 // The depth prepass that also writes the view depth for contact shadows (view_depth.glsl), opaque or with the clip
-// materials' alpha test (prepass_coverage.glsl). Cleared to 0: no surface.
+// materials' alpha test (prepass_coverage.glsl), negated for those. Cleared to 0: no surface.
 
 #include "lit.glsl"
 #include "material.glsl"
@@ -14,7 +14,7 @@ layout(location = 0) out float outViewDepth;
 
 void main()
 {
-    outViewDepth = fragmentViewDepth();
+    outViewDepth = prepassViewDepth(PENUMBRA_VIEW_DEPTH_CLIP != 0);
 #if PENUMBRA_VIEW_DEPTH_CLIP
     discardClipHoles();
 #endif

@@ -101,6 +101,14 @@ public:
 
     // From the lit side of the fence, looking down past the slats at the ground beyond them: a march from that ground
     // towards the sun passes behind the 6 cm slats in view without meeting them.
+    // The pole, the slab and the slats drawn through the alpha test, with nothing cut away (alpha 1).
+    void alphaTestCasters()
+    {
+        for (scene::Material& material : scene_.materials)
+            if (material.name == "caster")
+                material.caster = scene::CasterMode::Clip;
+    }
+
     void lookPastTheFence()
     {
         scene_.camera = scene::lookAt({-0.2f, 2.0f, 3.6f}, {0.3f, 0.0f, 2.2f}, glm::radians(55.0f), {0.0f, 1.0f, 0.0f});
@@ -203,6 +211,16 @@ TEST_F(ContactShadowsTest, ThickerThanTheCastersCatchesFault)
     const Figures off = measure(pastTheFenceFrame(false), "off, past the fence");
     EXPECT_GT(measure(pastTheFenceFrame(true, 0.2f), "thickness 0.2 m, past the fence").acne, off.acne)
         << "a thickness beyond the slats' must darken the ground seen past them";
+}
+
+// The same slats alpha-tested (no holes): cards to the march, which count only where its ray crosses their depth
+// within a step (view_depth.glsl), so even the 0.2 m band leaves the ground seen past them lit.
+TEST_F(ContactShadowsTest, AlphaTestedCastersAreCards)
+{
+    lookPastTheFence();
+    alphaTestCasters();
+    const Figures off = measure(pastTheFenceFrame(false), "off, past alpha-tested slats");
+    EXPECT_LE(measure(pastTheFenceFrame(true, 0.2f), "thickness 0.2 m, past alpha-tested slats").acne, off.acne);
 }
 
 // A march of 2 cm reaches no caster: the gap count (truth::contactGapPixels, casters within the default length)
