@@ -49,6 +49,8 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
     const vec3 last = (contact.worldToTexture * vec4(position + towardsLight * marchLength, 1.0)).xyw * toPixels;
     const vec3 increment = (last - first) / float(contact.steps);
     vec3 projected = first + jitter * increment;
+    // Whether the last sample lay on a card and in front of it.
+    bool beforeCard = false;
     // A do-while, as the lights' loop in main() (see there): steps >= 1 (ContactShadowSettings).
     int i = 0;
     do {
@@ -62,11 +64,14 @@ bool contactOccluded(vec3 position, ivec2 start, vec3 towardsLight, float marchL
         const float sampled = texelFetch(sceneViewDepth, pixel, 0).r;
         const float behind = projected.z - abs(sampled);
         // An alpha-tested surface (negated, view_depth.glsl) is a card without thickness: it occludes where the ray
-        // crosses its depth within this step, not in the whole band behind it.
-        const float band = sampled < 0.0 ? min(contact.thickness, abs(increment.z)) : contact.thickness;
+        // crosses it, from in front of a card at the last sample to behind one within this step, not in the whole
+        // band behind it.
+        const bool card = sampled < 0.0;
+        const float band = card ? (beforeCard ? min(contact.thickness, abs(increment.z)) : 0.0) : contact.thickness;
         // The starting pixel's own depth and no surface (view depth 0) are no occluders.
         if (behind > bias && behind < bias + band && sampled != 0.0 && pixel != start)
             return true;
+        beforeCard = card && behind <= bias;
         projected += increment;
     } while (++i < contact.steps);
     return false;

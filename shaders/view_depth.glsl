@@ -9,5 +9,5 @@ float fragmentViewDepth() { return 1.0 / gl_FragCoord.w; }
 // What the prepass writes for contact shadows: the view depth, negated on alpha-tested surfaces. Those are mostly
 // cards without thickness (leaves, grilles), and a depth buffer cannot tell what lies behind a card: a march passing
 // behind one in view, within the thickness band, would count it without meeting it. So the march counts a card only
-// where its ray crosses the card's depth within one step. 0 stays "no surface".
+// where its ray crosses one between two samples (contact_shadows.frag). 0 stays "no surface".
 float prepassViewDepth(bool alphaTested) { return alphaTested ? -fragmentViewDepth() : fragmentViewDepth(); }
