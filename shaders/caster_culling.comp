@@ -1,6 +1,7 @@
 #version 450
-// Shadow casters culled per tile on the GPU (penumbra::shadows::GpuCasterCulling): each invocation tests one
-// caster's world box against every tile's volume and appends it to the tile's draw of its batch. The tests mirror
+// Shadow casters culled per tile on the GPU (penumbra::shadows::GpuCasterCulling), first of two dispatches: each
+// invocation tests one caster's world box against every tile's volume and marks it in the tile's bits;
+// caster_culling_lists.comp then lays each tile's marked casters out in order. The tests mirror
 // shadows/src/CasterVolume.cpp (casterInVolume, the planner's rules) operation for operation, so the lists are the
 // CPU's; the box's light-space bounds are Arvo's ("Transforming Axis-Aligned Bounding Boxes", Graphics Gems, 1990).
 
@@ -76,24 +77,15 @@ bool casterInVolume(vec3 lo, vec3 hi, CasterVolume v)
     return overlapsCascade(lo, hi, v) && !heldByPrevious(lo, hi, v);
 }
 
+// Invocation i tests the caster at place i of the batches' order and sets bit i of each tile that holds it.
 void main()
 {
-    const uint caster = gl_GlobalInvocationID.x;
-    if (caster >= tiles.casterCount)
+    const uint place = gl_GlobalInvocationID.x;
+    if (place >= tiles.casterCount)
         return;
-    const CullingCaster c = casterList.casters[caster];
-    // Read once for all tiles: a storage access costs llvmpipe a loop over the lanes per component.
-    const InstanceTransform transform = source.transforms[caster];
-    for (uint tile = 0u; tile < tiles.tileCount; ++tile) {
-        if (!casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
-            continue;
-        const uint command = (tiles.firstTile + tile) * tiles.batchCount + c.batch;
-        const uint slot = atomicAdd(draws.commands[command].instanceCount, 1u);
-        if (slot == 0u)
-            drawCounts.counts[command] = 1u;
-        // The dispatch binds its own tiles' ranges of the instance lists.
-        const uint at = tile * tiles.tileSlots + c.first + slot;
-        culled.instances[at] = transform;
-        culledIndices.indices[at] = caster;
-    }
+    const CullingCaster c = casterList.casters[casterOrder.order[place]];
+    const uint words = (tiles.tileSlots + 31u) / 32u;
+    for (uint tile = 0u; tile < tiles.tileCount; ++tile)
+        if (casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
+            atomicOr(marks.bits[(tiles.firstTile + tile) * words + place / 32u], 1u << (place % 32u));
 }

@@ -9,7 +9,7 @@
 namespace penumbra::shadows {
 namespace {
 
-// The uniform block at binding 0; the storage blocks follow it, at bindings 1 to 6.
+// The uniform block at binding 0; the storage blocks follow it, at bindings 1 to 8.
 constexpr std::uint32_t kTilesBinding = 0;
 constexpr std::array kCullingTilesFields{PENUMBRA_SHADER_FIELD(CullingTiles, casterCount),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, tileCount),
@@ -20,7 +20,7 @@ constexpr std::array kCullingTilesFields{PENUMBRA_SHADER_FIELD(CullingTiles, cas
 constexpr shaders::ShaderStruct kCullingTilesBlock{"CullingTiles", sizeof(CullingTiles), kCullingTilesFields};
 static_assert(shaders::matchesLayout(kCullingTilesBlock, shaders::BlockLayout::Std140));
 
-// The pass's storage blocks, at bindings 1 to 6 in this order. Every member name is distinct across the blocks:
+// The pass's storage blocks, at bindings 1 to 8 in this order. Every member name is distinct across the blocks:
 // Mesa's GLSL compiler (22.3) takes an unsized array for another block's member of the same name and refuses to
 // index it.
 constexpr std::array kCullingCastersFields{
@@ -32,6 +32,8 @@ constexpr std::array kCulledInstancesFields{
 constexpr std::array kCulledIndicesFields{shaders::runtimeArrayField<std::uint32_t>("indices", 0)};
 constexpr std::array kCulledDrawsFields{shaders::runtimeStructArrayField<CulledDraw>("commands", 0, kCulledDrawStruct)};
 constexpr std::array kCulledDrawCountsFields{shaders::runtimeArrayField<std::uint32_t>("counts", 0)};
+constexpr std::array kCullingOrderFields{shaders::runtimeArrayField<std::uint32_t>("order", 0)};
+constexpr std::array kCullingMarksFields{shaders::runtimeArrayField<std::uint32_t>("bits", 0)};
 
 // A block, its instance name and access, in binding order.
 struct CullingBlock {
@@ -46,7 +48,13 @@ constexpr std::array kCullingBlocks{
     CullingBlock{{"CulledIndices", 0, kCulledIndicesFields}, "culledIndices", shaders::BlockAccess::WriteOnly},
     CullingBlock{{"CulledDraws", 0, kCulledDrawsFields}, "draws", shaders::BlockAccess::ReadWrite},
     CullingBlock{{"CulledDrawCounts", 0, kCulledDrawCountsFields}, "drawCounts", shaders::BlockAccess::ReadWrite},
+    CullingBlock{{"CullingOrder", 0, kCullingOrderFields}, "casterOrder", shaders::BlockAccess::ReadOnly},
+    CullingBlock{{"CullingMarks", 0, kCullingMarksFields}, "marks", shaders::BlockAccess::ReadWrite},
 };
+constexpr std::uint32_t kOrderBinding = kTilesBinding + 7, kMarksBinding = kTilesBinding + 8;
+
+// Tile t's bits of the marks: one per slot, in 32-bit words.
+std::uint64_t markWords(std::uint32_t tileSlots) { return (std::uint64_t(tileSlots) + 31) / 32; }
 static_assert(std::all_of(kCullingBlocks.begin(), kCullingBlocks.end(), [](const CullingBlock& b) {
     return shaders::matchesLayout(b.block, shaders::BlockLayout::Std430);
 }));
@@ -75,9 +83,9 @@ std::vector<rhi::UniformLayout> cullingStorageLayouts()
     return layouts;
 }
 
-rhi::ShaderSource cullingShader()
+rhi::ShaderSource cullingShader(const char* name)
 {
-    rhi::ShaderSource source = shaders::load("caster_culling.comp");
+    rhi::ShaderSource source = shaders::load(name);
     source.includes.push_back({"culling_blocks.glsl", cullingBlocksGlsl()});
     return source;
 }
@@ -96,11 +104,16 @@ std::span<const std::byte> bytesOf(const std::vector<T>& values)
 } // namespace
 
 GpuCasterCulling::GpuCasterCulling(rhi::Device& device, std::uint32_t maxTilesPerDispatch)
-    : device_(device), shader_(device.createShader(cullingShader())),
+    : device_(device), shader_(device.createShader(cullingShader("caster_culling.comp"))),
       pipeline_(device.createComputePipeline({.compute = shader_.get(),
                                               .uniformLayouts = {shaders::uniformLayout(kCullingTilesBlock)},
                                               .storageLayouts = cullingStorageLayouts(),
                                               .debugName = "caster culling"})),
+      listsShader_(device.createShader(cullingShader("caster_culling_lists.comp"))),
+      listsPipeline_(device.createComputePipeline({.compute = listsShader_.get(),
+                                                   .uniformLayouts = {shaders::uniformLayout(kCullingTilesBlock)},
+                                                   .storageLayouts = cullingStorageLayouts(),
+                                                   .debugName = "caster culling lists"})),
       maxTilesPerDispatch_(std::max(maxTilesPerDispatch, 1u))
 {
     reserve(1, sizeof(CullingTiles), 1);
@@ -118,6 +131,9 @@ void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t volumeBytes,
     ensure(volumes_, volumeBytes, BufferUsage::Uniform, "culling tiles");
     ensure(casters_, casters * sizeof(CullingCaster), BufferUsage::Storage, "culling casters");
     ensure(transforms_, casters * sizeof(InstanceTransform), BufferUsage::Storage, "culling transforms");
+    ensure(order_, casters * sizeof(std::uint32_t), BufferUsage::Storage, "culling order");
+    ensure(marks_, std::max<std::uint64_t>(tileCount_ * markWords(tileSlots_), 1) * sizeof(std::uint32_t),
+           BufferUsage::Storage, "culling marks");
     const std::uint64_t slots = std::max<std::uint64_t>(std::uint64_t(tileCount_) * tileSlots_, 1);
     ensure(instances_, slots * sizeof(InstanceTransform), BufferUsage::Storage | BufferUsage::Vertex,
            "culled instances");
@@ -251,14 +267,20 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
     const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
     const rhi::Buffer* residentCasters = casters_.get();
     const rhi::Buffer* residentTransforms = transforms_.get();
+    const rhi::Buffer* residentOrder = order_.get();
     reserve(casterCount_, groups_ * blockBytes_, std::uint64_t(tileCount_) * batchCount);
     // Buffers made anew hold none of the casters.
-    if (casters_.get() != residentCasters || transforms_.get() != residentTransforms)
+    const bool fresh =
+        casters_.get() != residentCasters || transforms_.get() != residentTransforms || order_.get() != residentOrder;
+    if (fresh)
         uploaded_ = {{0, casterCount_}};
     uploadCasters();
+    // The batches' order changes only where everything is uploaded (a new batching, or fresh buffers).
+    if (uploaded_.size() == 1 && uploaded_.front().first == 0 && uploaded_.front().count == casterCount_)
+        order_->write(0, bytesOf(batches_.items));
     const std::vector<CulledDraw>& draws = scratch_.draws;
     draws_->write(0, bytesOf(draws));
-    counts_->write(0, bytesOf(std::vector<std::uint32_t>(draws.size(), 0)));
+    marks_->write(0, bytesOf(std::vector<std::uint32_t>(tileCount_ * markWords(tileSlots_), 0)));
     for (std::uint32_t g = 0; g < groups_; ++g) {
         const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
         CullingTiles& block = scratch_.tiles;
@@ -277,20 +299,26 @@ void GpuCasterCulling::dispatch(rhi::CommandList& commands)
     if (groups_ == 0)
         return;
     const std::vector<CulledDraw>& draws = scratch_.draws;
-    commands.bindComputePipeline(*pipeline_);
     const std::uint32_t groupSize = pipeline_->workgroupSize()[0];
     for (std::uint32_t g = 0; g < groups_; ++g) {
         const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
         const std::uint64_t slots = std::uint64_t(first) * tileSlots_, groupSlots = std::uint64_t(count) * tileSlots_;
-        commands.bindUniformBuffer(kTilesBinding, *volumes_, g * blockBytes_, sizeof(CullingTiles));
-        commands.bindStorageBuffer(1, *casters_, 0, scratch_.casters.size() * sizeof(CullingCaster));
-        commands.bindStorageBuffer(2, *transforms_, 0, scratch_.transforms.size() * sizeof(InstanceTransform));
-        commands.bindStorageBuffer(3, *instances_, slots * sizeof(InstanceTransform),
-                                   groupSlots * sizeof(InstanceTransform));
-        commands.bindStorageBuffer(4, *indices_, slots * sizeof(std::uint32_t), groupSlots * sizeof(std::uint32_t));
-        commands.bindStorageBuffer(5, *draws_, 0, draws.size() * sizeof(CulledDraw));
-        commands.bindStorageBuffer(6, *counts_, 0, draws.size() * sizeof(std::uint32_t));
-        commands.dispatch((casterCount_ + groupSize - 1) / groupSize);
+        // The tests mark each tile's casters, then one workgroup per tile lays its list out.
+        for (const rhi::ComputePipeline* pipeline : {pipeline_.get(), listsPipeline_.get()}) {
+            commands.bindComputePipeline(*pipeline);
+            commands.bindUniformBuffer(kTilesBinding, *volumes_, g * blockBytes_, sizeof(CullingTiles));
+            commands.bindStorageBuffer(1, *casters_, 0, scratch_.casters.size() * sizeof(CullingCaster));
+            commands.bindStorageBuffer(2, *transforms_, 0, scratch_.transforms.size() * sizeof(InstanceTransform));
+            commands.bindStorageBuffer(3, *instances_, slots * sizeof(InstanceTransform),
+                                       groupSlots * sizeof(InstanceTransform));
+            commands.bindStorageBuffer(4, *indices_, slots * sizeof(std::uint32_t), groupSlots * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(5, *draws_, 0, draws.size() * sizeof(CulledDraw));
+            commands.bindStorageBuffer(6, *counts_, 0, draws.size() * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(kOrderBinding, *order_, 0, casterCount_ * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(kMarksBinding, *marks_, 0,
+                                       tileCount_ * markWords(tileSlots_) * sizeof(std::uint32_t));
+            commands.dispatch(pipeline == pipeline_.get() ? (casterCount_ + groupSize - 1) / groupSize : count);
+        }
     }
 }
 
@@ -319,7 +347,6 @@ std::vector<std::vector<std::uint32_t>> GpuCasterCulling::readLists() const
             lists[t].insert(lists[t].end(), indices.begin() + draw.firstInstance,
                             indices.begin() + draw.firstInstance + draw.instanceCount);
         }
-        std::sort(lists[t].begin(), lists[t].end());
     }
     return lists;
 }
