@@ -7,6 +7,7 @@
 
 layout(local_size_x = 64) in;
 
+#include "constants.glsl"
 #include "culling_blocks.glsl"
 
 vec3 boxCorner(vec3 lo, vec3 hi, int i)
@@ -57,6 +58,7 @@ bool heldByPrevious(vec3 lo, vec3 hi, CasterVolume v)
         const vec3 farthest = max(abs(lo - v.sphere.xyz), abs(hi - v.sphere.xyz));
         return dot(farthest, farthest) <= v.sphere.w * v.sphere.w;
     }
+#if PENUMBRA_CULL_SLICES
     if (v.kind != PENUMBRA_VOLUME_BEYOND_SLICE)
         return false;
     for (int i = 0; i < 8; ++i) {
@@ -68,24 +70,47 @@ bool heldByPrevious(vec3 lo, vec3 hi, CasterVolume v)
             return false;
     }
     return true;
+#else
+    return false;
+#endif
 }
 
+// The kinds the dispatch's tiles hold (PENUMBRA_CULL_*, GpuCasterCulling::testPipeline) are tested; the code of the
+// others is left out, since llvmpipe runs every branch for every lane.
 bool casterInVolume(vec3 lo, vec3 hi, CasterVolume v)
 {
+#if PENUMBRA_CULL_FRUSTUMS
     if (v.kind == PENUMBRA_VOLUME_FRUSTUM)
         return meetsFrustum(lo, hi, v);
+#endif
+#if PENUMBRA_CULL_CASCADES
     return overlapsCascade(lo, hi, v) && !heldByPrevious(lo, hi, v);
+#else
+    return false;
+#endif
 }
+
+// Each workgroup's 64 places' bits of every tile, gathered here so that each word is stored once, whole: llvmpipe
+// runs a storage atomic lane by lane, and a host clear of every tile's bits each frame is not needed.
+shared uint tileBits[2 * PENUMBRA_CULLING_TILES];
 
 // Invocation i tests the caster at place i of the batches' order and sets bit i of each tile that holds it.
 void main()
 {
+    const uint lane = gl_LocalInvocationID.x;
+    for (uint w = lane; w < 2u * tiles.tileCount; w += 64u)
+        tileBits[w] = 0u;
+    memoryBarrierShared();
+    barrier();
     const uint place = gl_GlobalInvocationID.x;
-    if (place >= tiles.casterCount)
-        return;
-    const CullingCaster c = casterList.casters[casterOrder.order[place]];
-    const uint words = (tiles.tileSlots + 31u) / 32u;
-    for (uint tile = 0u; tile < tiles.tileCount; ++tile)
-        if (casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
-            atomicOr(marks.bits[(tiles.firstTile + tile) * words + place / 32u], 1u << (place % 32u));
+    if (place < tiles.casterCount) {
+        const CullingCaster c = casterList.casters[casterOrder.order[place]];
+        for (uint tile = 0u; tile < tiles.tileCount; ++tile)
+            if (casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
+                atomicOr(tileBits[tile * 2u + lane / 32u], 1u << (lane % 32u));
+    }
+    memoryBarrierShared();
+    barrier();
+    for (uint w = lane; w < 2u * tiles.tileCount; w += 64u)
+        marks.bits[(tiles.firstTile + w / 2u) * tiles.markWords + gl_WorkGroupID.x * 2u + w % 2u] = tileBits[w];
 }

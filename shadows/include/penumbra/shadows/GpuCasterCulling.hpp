@@ -24,14 +24,10 @@ namespace penumbra::shadows {
 struct alignas(16) CullingCaster {
     glm::vec4 boundsMin{0.0f}; // the world box, xyz
     glm::vec4 boundsMax{0.0f};
-    std::uint32_t batch = 0; // its batch (draw group): tile t's draw of it is command t * batches + batch
-    std::uint32_t first = 0; // its batch's first place in the batches' order (InstanceBatches::items)
 };
 inline constexpr std::array kCullingCasterFields{
     PENUMBRA_SHADER_FIELD(CullingCaster, boundsMin),
     PENUMBRA_SHADER_FIELD(CullingCaster, boundsMax),
-    PENUMBRA_SHADER_FIELD(CullingCaster, batch),
-    PENUMBRA_SHADER_FIELD(CullingCaster, first),
 };
 inline constexpr shaders::ShaderStruct kCullingCasterStruct{"CullingCaster", sizeof(CullingCaster),
                                                             kCullingCasterFields};
@@ -52,7 +48,8 @@ struct CulledDraw {
     std::uint32_t instanceCount = 0; // set by the pass
     std::uint32_t firstIndex = 0;
     std::int32_t vertexOffset = 0;
-    std::uint32_t firstInstance = 0; // the batch's first slot in the tile's range, set by the pass
+    // The host gives the tile's range's start plus the batch's first place; the pass sets the batch's first slot.
+    std::uint32_t firstInstance = 0;
 };
 inline constexpr std::array kCulledDrawFields{
     PENUMBRA_SHADER_FIELD(CulledDraw, indexCount),    PENUMBRA_SHADER_FIELD(CulledDraw, instanceCount),
@@ -76,6 +73,8 @@ struct alignas(16) CullingTiles {
     std::uint32_t batchCount = 0;
     std::uint32_t firstTile = 0;
     std::uint32_t tileSlots = 0; // instance slots per tile: the caster count, rounded up for the binding offsets
+    std::uint32_t markWords = 0; // words of each tile's bits: two per 64 slots, one pair per first dispatch's workgroup
+    std::uint32_t normalMatrices = 0; // 1: the instances carry their normal matrices
     std::array<CasterVolume, kCullingTilesPerDispatch> volumes;
 };
 static_assert(sizeof(CullingTiles) <= 16384);
@@ -139,11 +138,19 @@ private:
     void fillDraws(std::span<const ShadowCaster> casters);
     // The uploaded_ ranges of the casters and transforms.
     void uploadCasters();
-    void uploadTiles(std::span<const CasterVolume> volumes);
+    void uploadTiles(std::span<const CasterVolume> volumes, bool normalMatrices);
 
     rhi::Device& device_;
-    std::unique_ptr<rhi::Shader> shader_;
-    std::unique_ptr<rhi::ComputePipeline> pipeline_;
+    // The tests' pipelines, one for each set of volume kinds (VolumeKinds bits) a dispatch's tiles hold, made when
+    // first needed: llvmpipe and lavapipe run every branch of a shader for every lane, taken or not, so each leaves out
+    // the tests of the kinds its tiles do not hold.
+    struct TestPipeline {
+        std::unique_ptr<rhi::Shader> shader;
+        std::unique_ptr<rhi::ComputePipeline> pipeline;
+    };
+    const rhi::ComputePipeline& testPipeline(std::uint32_t kinds);
+    std::array<TestPipeline, 8> testPipelines_;
+    std::vector<const rhi::ComputePipeline*> groupTests_; // each dispatch's tests
     std::unique_ptr<rhi::Shader> listsShader_;
     std::unique_ptr<rhi::ComputePipeline> listsPipeline_;
     std::unique_ptr<rhi::Buffer> volumes_;
