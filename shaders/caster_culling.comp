@@ -1,11 +1,13 @@
 #version 450
-// Shadow casters culled per tile on the GPU (penumbra::shadows::GpuCasterCulling): each invocation tests one
-// caster's world box against every tile's volume and appends it to the tile's draw of its batch. The tests mirror
+// Shadow casters culled per tile on the GPU (penumbra::shadows::GpuCasterCulling), first of two dispatches: each
+// invocation tests one caster's world box against every tile's volume and marks it in the tile's bits;
+// caster_culling_lists.comp then lays each tile's marked casters out in order. The tests mirror
 // shadows/src/CasterVolume.cpp (casterInVolume, the planner's rules) operation for operation, so the lists are the
 // CPU's; the box's light-space bounds are Arvo's ("Transforming Axis-Aligned Bounding Boxes", Graphics Gems, 1990).
 
 layout(local_size_x = 64) in;
 
+#include "constants.glsl"
 #include "culling_blocks.glsl"
 
 vec3 boxCorner(vec3 lo, vec3 hi, int i)
@@ -56,6 +58,7 @@ bool heldByPrevious(vec3 lo, vec3 hi, CasterVolume v)
         const vec3 farthest = max(abs(lo - v.sphere.xyz), abs(hi - v.sphere.xyz));
         return dot(farthest, farthest) <= v.sphere.w * v.sphere.w;
     }
+#if PENUMBRA_CULL_SLICES
     if (v.kind != PENUMBRA_VOLUME_BEYOND_SLICE)
         return false;
     for (int i = 0; i < 8; ++i) {
@@ -67,33 +70,47 @@ bool heldByPrevious(vec3 lo, vec3 hi, CasterVolume v)
             return false;
     }
     return true;
+#else
+    return false;
+#endif
 }
 
+// The kinds the dispatch's tiles hold (PENUMBRA_CULL_*, GpuCasterCulling::testPipeline) are tested; the code of the
+// others is left out, since llvmpipe runs every branch for every lane.
 bool casterInVolume(vec3 lo, vec3 hi, CasterVolume v)
 {
+#if PENUMBRA_CULL_FRUSTUMS
     if (v.kind == PENUMBRA_VOLUME_FRUSTUM)
         return meetsFrustum(lo, hi, v);
+#endif
+#if PENUMBRA_CULL_CASCADES
     return overlapsCascade(lo, hi, v) && !heldByPrevious(lo, hi, v);
+#else
+    return false;
+#endif
 }
 
+// Each workgroup's 64 places' bits of every tile, gathered here so that each word is stored once, whole: llvmpipe
+// runs a storage atomic lane by lane, and a host clear of every tile's bits each frame is not needed.
+shared uint tileBits[2 * PENUMBRA_CULLING_TILES];
+
+// Invocation i tests the caster at place i of the batches' order and sets bit i of each tile that holds it.
 void main()
 {
-    const uint caster = gl_GlobalInvocationID.x;
-    if (caster >= tiles.casterCount)
-        return;
-    const CullingCaster c = casterList.casters[caster];
-    // Read once for all tiles: a storage access costs llvmpipe a loop over the lanes per component.
-    const InstanceTransform transform = source.transforms[caster];
-    for (uint tile = 0u; tile < tiles.tileCount; ++tile) {
-        if (!casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
-            continue;
-        const uint command = (tiles.firstTile + tile) * tiles.batchCount + c.batch;
-        const uint slot = atomicAdd(draws.commands[command].instanceCount, 1u);
-        if (slot == 0u)
-            drawCounts.counts[command] = 1u;
-        // The dispatch binds its own tiles' ranges of the instance lists.
-        const uint at = tile * tiles.tileSlots + c.first + slot;
-        culled.instances[at] = transform;
-        culledIndices.indices[at] = caster;
+    const uint lane = gl_LocalInvocationID.x;
+    for (uint w = lane; w < 2u * tiles.tileCount; w += 64u)
+        tileBits[w] = 0u;
+    memoryBarrierShared();
+    barrier();
+    const uint place = gl_GlobalInvocationID.x;
+    if (place < tiles.casterCount) {
+        const CullingCaster c = casterList.casters[casterOrder.order[place]];
+        for (uint tile = 0u; tile < tiles.tileCount; ++tile)
+            if (casterInVolume(c.boundsMin.xyz, c.boundsMax.xyz, tiles.volumes[tile]))
+                atomicOr(tileBits[tile * 2u + lane / 32u], 1u << (lane % 32u));
     }
+    memoryBarrierShared();
+    barrier();
+    for (uint w = lane; w < 2u * tiles.tileCount; w += 64u)
+        marks.bits[(tiles.firstTile + w / 2u) * tiles.markWords + gl_WorkGroupID.x * 2u + w % 2u] = tileBits[w];
 }

@@ -9,18 +9,20 @@
 namespace penumbra::shadows {
 namespace {
 
-// The uniform block at binding 0; the storage blocks follow it, at bindings 1 to 6.
+// The uniform block at binding 0; the storage blocks follow it, at bindings 1 to 8.
 constexpr std::uint32_t kTilesBinding = 0;
 constexpr std::array kCullingTilesFields{PENUMBRA_SHADER_FIELD(CullingTiles, casterCount),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, tileCount),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, batchCount),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, firstTile),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, tileSlots),
+                                         PENUMBRA_SHADER_FIELD(CullingTiles, markWords),
+                                         PENUMBRA_SHADER_FIELD(CullingTiles, normalMatrices),
                                          PENUMBRA_SHADER_STRUCT_FIELD(CullingTiles, volumes, kCasterVolumeStruct)};
 constexpr shaders::ShaderStruct kCullingTilesBlock{"CullingTiles", sizeof(CullingTiles), kCullingTilesFields};
 static_assert(shaders::matchesLayout(kCullingTilesBlock, shaders::BlockLayout::Std140));
 
-// The pass's storage blocks, at bindings 1 to 6 in this order. Every member name is distinct across the blocks:
+// The pass's storage blocks, at bindings 1 to 8 in this order. Every member name is distinct across the blocks:
 // Mesa's GLSL compiler (22.3) takes an unsized array for another block's member of the same name and refuses to
 // index it.
 constexpr std::array kCullingCastersFields{
@@ -32,6 +34,8 @@ constexpr std::array kCulledInstancesFields{
 constexpr std::array kCulledIndicesFields{shaders::runtimeArrayField<std::uint32_t>("indices", 0)};
 constexpr std::array kCulledDrawsFields{shaders::runtimeStructArrayField<CulledDraw>("commands", 0, kCulledDrawStruct)};
 constexpr std::array kCulledDrawCountsFields{shaders::runtimeArrayField<std::uint32_t>("counts", 0)};
+constexpr std::array kCullingOrderFields{shaders::runtimeArrayField<std::uint32_t>("order", 0)};
+constexpr std::array kCullingMarksFields{shaders::runtimeArrayField<std::uint32_t>("bits", 0)};
 
 // A block, its instance name and access, in binding order.
 struct CullingBlock {
@@ -46,7 +50,13 @@ constexpr std::array kCullingBlocks{
     CullingBlock{{"CulledIndices", 0, kCulledIndicesFields}, "culledIndices", shaders::BlockAccess::WriteOnly},
     CullingBlock{{"CulledDraws", 0, kCulledDrawsFields}, "draws", shaders::BlockAccess::ReadWrite},
     CullingBlock{{"CulledDrawCounts", 0, kCulledDrawCountsFields}, "drawCounts", shaders::BlockAccess::ReadWrite},
+    CullingBlock{{"CullingOrder", 0, kCullingOrderFields}, "casterOrder", shaders::BlockAccess::ReadOnly},
+    CullingBlock{{"CullingMarks", 0, kCullingMarksFields}, "marks", shaders::BlockAccess::ReadWrite},
 };
+constexpr std::uint32_t kOrderBinding = kTilesBinding + 7, kMarksBinding = kTilesBinding + 8;
+
+// Tile t's bits of the marks: one per slot, in 32-bit words, two for each workgroup of 64 of the first dispatch.
+std::uint32_t markWords(std::uint32_t tileSlots) { return (tileSlots + 63) / 64 * 2; }
 static_assert(std::all_of(kCullingBlocks.begin(), kCullingBlocks.end(), [](const CullingBlock& b) {
     return shaders::matchesLayout(b.block, shaders::BlockLayout::Std430);
 }));
@@ -55,10 +65,10 @@ static_assert(std::all_of(kCullingBlocks.begin(), kCullingBlocks.end(), [](const
 std::string cullingBlocksGlsl()
 {
     std::string text = fmt::format("#define PENUMBRA_VOLUME_FRUSTUM {}\n#define PENUMBRA_VOLUME_BEYOND_SPHERE {}\n"
-                                   "#define PENUMBRA_VOLUME_BEYOND_SLICE {}\n",
+                                   "#define PENUMBRA_VOLUME_BEYOND_SLICE {}\n#define PENUMBRA_CULLING_TILES {}\n",
                                    static_cast<int>(CasterVolumeKind::Frustum),
                                    static_cast<int>(CasterVolumeKind::CascadeBeyondSphere),
-                                   static_cast<int>(CasterVolumeKind::CascadeBeyondSlice));
+                                   static_cast<int>(CasterVolumeKind::CascadeBeyondSlice), kCullingTilesPerDispatch);
     text += shaders::uniformBlockGlsl(kCullingTilesBlock, kTilesBinding, "tiles");
     for (std::uint32_t i = 0; i < kCullingBlocks.size(); ++i) {
         const CullingBlock& b = kCullingBlocks[i];
@@ -75,9 +85,21 @@ std::vector<rhi::UniformLayout> cullingStorageLayouts()
     return layouts;
 }
 
-rhi::ShaderSource cullingShader()
+// The volume kinds a dispatch's tiles hold, as the test shader's variants tell them apart.
+enum VolumeKinds : std::uint32_t { kFrustums = 1, kCascades = 2, kSlices = 4 };
+
+std::uint32_t volumeKinds(std::span<const CasterVolume> volumes)
 {
-    rhi::ShaderSource source = shaders::load("caster_culling.comp");
+    std::uint32_t kinds = 0;
+    for (const CasterVolume& volume : volumes)
+        kinds |= volume.kind == CasterVolumeKind::Frustum
+                     ? kFrustums
+                     : (volume.kind == CasterVolumeKind::CascadeBeyondSlice ? kCascades | kSlices : kCascades);
+    return kinds;
+}
+
+rhi::ShaderSource cullingShader(rhi::ShaderSource source)
+{
     source.includes.push_back({"culling_blocks.glsl", cullingBlocksGlsl()});
     return source;
 }
@@ -96,14 +118,30 @@ std::span<const std::byte> bytesOf(const std::vector<T>& values)
 } // namespace
 
 GpuCasterCulling::GpuCasterCulling(rhi::Device& device, std::uint32_t maxTilesPerDispatch)
-    : device_(device), shader_(device.createShader(cullingShader())),
-      pipeline_(device.createComputePipeline({.compute = shader_.get(),
-                                              .uniformLayouts = {shaders::uniformLayout(kCullingTilesBlock)},
-                                              .storageLayouts = cullingStorageLayouts(),
-                                              .debugName = "caster culling"})),
+    : device_(device), listsShader_(device.createShader(cullingShader(shaders::load("caster_culling_lists.comp")))),
+      listsPipeline_(device.createComputePipeline({.compute = listsShader_.get(),
+                                                   .uniformLayouts = {shaders::uniformLayout(kCullingTilesBlock)},
+                                                   .storageLayouts = cullingStorageLayouts(),
+                                                   .debugName = "caster culling lists"})),
       maxTilesPerDispatch_(std::max(maxTilesPerDispatch, 1u))
 {
     reserve(1, sizeof(CullingTiles), 1);
+}
+
+const rhi::ComputePipeline& GpuCasterCulling::testPipeline(std::uint32_t kinds)
+{
+    TestPipeline& test = testPipelines_.at(kinds);
+    if (!test.pipeline) {
+        test.shader = device_.createShader(
+            cullingShader(shaders::load("caster_culling.comp", {{"CULL_FRUSTUMS", (kinds & kFrustums) != 0},
+                                                                {"CULL_CASCADES", (kinds & kCascades) != 0},
+                                                                {"CULL_SLICES", (kinds & kSlices) != 0}})));
+        test.pipeline = device_.createComputePipeline({.compute = test.shader.get(),
+                                                       .uniformLayouts = {shaders::uniformLayout(kCullingTilesBlock)},
+                                                       .storageLayouts = cullingStorageLayouts(),
+                                                       .debugName = "caster culling"});
+    }
+    return *test.pipeline;
 }
 
 // The instance lists hold tileSlots_ per tile; `volumeBytes` is the dispatches' blocks of the tiles buffer.
@@ -118,6 +156,10 @@ void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t volumeBytes,
     ensure(volumes_, volumeBytes, BufferUsage::Uniform, "culling tiles");
     ensure(casters_, casters * sizeof(CullingCaster), BufferUsage::Storage, "culling casters");
     ensure(transforms_, casters * sizeof(InstanceTransform), BufferUsage::Storage, "culling transforms");
+    ensure(order_, casters * sizeof(std::uint32_t), BufferUsage::Storage, "culling order");
+    ensure(marks_,
+           std::max<std::uint64_t>(std::uint64_t(tileCount_) * markWords(tileSlots_), 1) * sizeof(std::uint32_t),
+           BufferUsage::Storage, "culling marks");
     const std::uint64_t slots = std::max<std::uint64_t>(std::uint64_t(tileCount_) * tileSlots_, 1);
     ensure(instances_, slots * sizeof(InstanceTransform), BufferUsage::Storage | BufferUsage::Vertex,
            "culled instances");
@@ -177,7 +219,7 @@ void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<
         uploaded_ = {{0, casterCount_}};
     }
     fillDraws(casters);
-    uploadTiles(volumes);
+    uploadTiles(volumes, normalMatrices);
     resident_ = Resident{changes ? std::optional(changes->generation()) : std::nullopt, casterCount_, normalMatrices};
 }
 
@@ -199,7 +241,7 @@ void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::s
                 throw rhi::Error(fmt::format("shadow casters {} and {} share draw group {}, but draw differently "
                                              "(mesh, material or sides)",
                                              batches_.items[batch.first], i, first.drawGroup));
-            culling[i] = {glm::vec4(bounds[i].min, 0.0f), glm::vec4(bounds[i].max, 0.0f), b, batch.first};
+            culling[i] = {glm::vec4(bounds[i].min, 0.0f), glm::vec4(bounds[i].max, 0.0f)};
             transforms[i] = normalMatrices ? instanceTransform(casters[i].model) : InstanceTransform{casters[i].model};
         }
     }
@@ -240,7 +282,7 @@ void GpuCasterCulling::uploadCasters()
 // One dispatch per group of tiles whose instance ranges fit one storage binding and whose volumes fit one
 // CullingTiles (all tiles in one, unless there are more than 64 or the device's storage range is short of them); each
 // group reads its own CullingTiles in the tiles buffer.
-void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
+void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes, bool normalMatrices)
 {
     const rhi::Capabilities& caps = device_.capabilities();
     const std::uint64_t tileBytes = std::uint64_t(tileSlots_) * sizeof(InstanceTransform);
@@ -248,17 +290,23 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
         {tileCount_, maxTilesPerDispatch_, kCullingTilesPerDispatch, caps.maxStorageBufferRange / tileBytes}));
     blockBytes_ = roundUp(sizeof(CullingTiles), caps.uniformBufferOffsetAlignment);
     groups_ = (tileCount_ + groupTiles_ - 1) / groupTiles_;
+    groupTests_.clear();
     const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
     const rhi::Buffer* residentCasters = casters_.get();
     const rhi::Buffer* residentTransforms = transforms_.get();
+    const rhi::Buffer* residentOrder = order_.get();
     reserve(casterCount_, groups_ * blockBytes_, std::uint64_t(tileCount_) * batchCount);
     // Buffers made anew hold none of the casters.
-    if (casters_.get() != residentCasters || transforms_.get() != residentTransforms)
+    const bool fresh =
+        casters_.get() != residentCasters || transforms_.get() != residentTransforms || order_.get() != residentOrder;
+    if (fresh)
         uploaded_ = {{0, casterCount_}};
     uploadCasters();
+    // The batches' order changes only where everything is uploaded (a new batching, or fresh buffers).
+    if (uploaded_.size() == 1 && uploaded_.front().first == 0 && uploaded_.front().count == casterCount_)
+        order_->write(0, bytesOf(batches_.items));
     const std::vector<CulledDraw>& draws = scratch_.draws;
     draws_->write(0, bytesOf(draws));
-    counts_->write(0, bytesOf(std::vector<std::uint32_t>(draws.size(), 0)));
     for (std::uint32_t g = 0; g < groups_; ++g) {
         const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
         CullingTiles& block = scratch_.tiles;
@@ -267,30 +315,39 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
         block.batchCount = batchCount;
         block.firstTile = first;
         block.tileSlots = tileSlots_;
+        block.markWords = markWords(tileSlots_);
+        block.normalMatrices = normalMatrices ? 1 : 0;
         std::copy_n(volumes.begin() + first, count, block.volumes.begin());
+        groupTests_.push_back(&testPipeline(volumeKinds(volumes.subspan(first, count))));
         volumes_->writeObject(block, g * blockBytes_);
     }
 }
 
 void GpuCasterCulling::dispatch(rhi::CommandList& commands)
 {
-    if (groups_ == 0)
-        return;
     const std::vector<CulledDraw>& draws = scratch_.draws;
-    commands.bindComputePipeline(*pipeline_);
-    const std::uint32_t groupSize = pipeline_->workgroupSize()[0];
     for (std::uint32_t g = 0; g < groups_; ++g) {
         const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
         const std::uint64_t slots = std::uint64_t(first) * tileSlots_, groupSlots = std::uint64_t(count) * tileSlots_;
-        commands.bindUniformBuffer(kTilesBinding, *volumes_, g * blockBytes_, sizeof(CullingTiles));
-        commands.bindStorageBuffer(1, *casters_, 0, scratch_.casters.size() * sizeof(CullingCaster));
-        commands.bindStorageBuffer(2, *transforms_, 0, scratch_.transforms.size() * sizeof(InstanceTransform));
-        commands.bindStorageBuffer(3, *instances_, slots * sizeof(InstanceTransform),
-                                   groupSlots * sizeof(InstanceTransform));
-        commands.bindStorageBuffer(4, *indices_, slots * sizeof(std::uint32_t), groupSlots * sizeof(std::uint32_t));
-        commands.bindStorageBuffer(5, *draws_, 0, draws.size() * sizeof(CulledDraw));
-        commands.bindStorageBuffer(6, *counts_, 0, draws.size() * sizeof(std::uint32_t));
-        commands.dispatch((casterCount_ + groupSize - 1) / groupSize);
+        const rhi::ComputePipeline& test = *groupTests_[g];
+        // The tests mark each tile's casters, then one workgroup per tile lays its list out.
+        for (const rhi::ComputePipeline* pipeline :
+             {&test, static_cast<const rhi::ComputePipeline*>(listsPipeline_.get())}) {
+            commands.bindComputePipeline(*pipeline);
+            commands.bindUniformBuffer(kTilesBinding, *volumes_, g * blockBytes_, sizeof(CullingTiles));
+            commands.bindStorageBuffer(1, *casters_, 0, scratch_.casters.size() * sizeof(CullingCaster));
+            commands.bindStorageBuffer(2, *transforms_, 0, scratch_.transforms.size() * sizeof(InstanceTransform));
+            commands.bindStorageBuffer(3, *instances_, slots * sizeof(InstanceTransform),
+                                       groupSlots * sizeof(InstanceTransform));
+            commands.bindStorageBuffer(4, *indices_, slots * sizeof(std::uint32_t), groupSlots * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(5, *draws_, 0, draws.size() * sizeof(CulledDraw));
+            commands.bindStorageBuffer(6, *counts_, 0, draws.size() * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(kOrderBinding, *order_, 0, casterCount_ * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(kMarksBinding, *marks_, 0,
+                                       std::uint64_t(tileCount_) * markWords(tileSlots_) * sizeof(std::uint32_t));
+            const std::uint32_t groupSize = test.workgroupSize()[0];
+            commands.dispatch(pipeline == &test ? (casterCount_ + groupSize - 1) / groupSize : count);
+        }
     }
 }
 
@@ -319,7 +376,6 @@ std::vector<std::vector<std::uint32_t>> GpuCasterCulling::readLists() const
             lists[t].insert(lists[t].end(), indices.begin() + draw.firstInstance,
                             indices.begin() + draw.firstInstance + draw.instanceCount);
         }
-        std::sort(lists[t].begin(), lists[t].end());
     }
     return lists;
 }

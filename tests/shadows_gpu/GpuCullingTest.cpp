@@ -157,6 +157,8 @@ TEST_F(GpuCullingTest, ListsMatchThePlanner)
     std::vector<std::vector<std::uint32_t>> planned, culled;
     cullBoth([](auto&, auto&) {}, planned, culled);
     ASSERT_EQ(planned.size(), 5u) << "four cascades and the spot light's tile";
+    // In the planner's order too: the ground is caster 0 and the cubes share one batch, so the batches' order is
+    // ascending, as the planner's lists are.
     EXPECT_EQ(culled, planned);
     // Some cubes lie out of every tile's reach, and the culling bias leaves some out of the later cascades.
     EXPECT_LT(planned.back().size(), kCulledCubes);

@@ -24,14 +24,10 @@ namespace penumbra::shadows {
 struct alignas(16) CullingCaster {
     glm::vec4 boundsMin{0.0f}; // the world box, xyz
     glm::vec4 boundsMax{0.0f};
-    std::uint32_t batch = 0; // its batch (draw group): tile t's draw of it is command t * batches + batch
-    std::uint32_t first = 0; // its batch's first slot in each tile's range of the instance lists
 };
 inline constexpr std::array kCullingCasterFields{
     PENUMBRA_SHADER_FIELD(CullingCaster, boundsMin),
     PENUMBRA_SHADER_FIELD(CullingCaster, boundsMax),
-    PENUMBRA_SHADER_FIELD(CullingCaster, batch),
-    PENUMBRA_SHADER_FIELD(CullingCaster, first),
 };
 inline constexpr shaders::ShaderStruct kCullingCasterStruct{"CullingCaster", sizeof(CullingCaster),
                                                             kCullingCasterFields};
@@ -49,10 +45,11 @@ static_assert(shaders::matchesLayout(kInstanceTransformStruct, shaders::BlockLay
 // VkDrawIndexedIndirectCommand (GL's DrawElementsIndirectCommand), one per batch per tile.
 struct CulledDraw {
     std::uint32_t indexCount = 0;
-    std::uint32_t instanceCount = 0; // counted up by the pass, from 0
+    std::uint32_t instanceCount = 0; // set by the pass
     std::uint32_t firstIndex = 0;
     std::int32_t vertexOffset = 0;
-    std::uint32_t firstInstance = 0; // the batch's first slot in the tile's range
+    // The host gives the tile's range's start plus the batch's first place; the pass sets the batch's first slot.
+    std::uint32_t firstInstance = 0;
 };
 inline constexpr std::array kCulledDrawFields{
     PENUMBRA_SHADER_FIELD(CulledDraw, indexCount),    PENUMBRA_SHADER_FIELD(CulledDraw, instanceCount),
@@ -76,17 +73,21 @@ struct alignas(16) CullingTiles {
     std::uint32_t batchCount = 0;
     std::uint32_t firstTile = 0;
     std::uint32_t tileSlots = 0; // instance slots per tile: the caster count, rounded up for the binding offsets
+    std::uint32_t markWords = 0; // words of each tile's bits: two per 64 slots, one pair per first dispatch's workgroup
+    std::uint32_t normalMatrices = 0; // 1: the instances carry their normal matrices
     std::array<CasterVolume, kCullingTilesPerDispatch> volumes;
 };
 static_assert(sizeof(CullingTiles) <= 16384);
 
 // Shadow casters culled per tile on the GPU (shaders/caster_culling.comp): every caster's world box is tested against
-// every tile's CasterVolume with casterInVolume's rules; a caster that passes is appended to its batch's instances in
-// the tile's range of the instance lists (its InstanceTransform, and its index), and counted in the tile's draw of its
-// batch, an indexed indirect command. Tile t's range holds a slot for every caster (tileSlots() of them); the draw of
-// batch b in tile t is command t * batches + b, and its count (0 or 1, for drawIndexedIndirectCount) says whether it
-// has instances. The tiles are culled in as few dispatches as the device's storage range and CullingTiles allow, each
-// binding the instance ranges of its tiles only, so that 10^6 casters fit where all tiles' ranges together would not.
+// every tile's CasterVolume with casterInVolume's rules and marked in the tile's bits; then one workgroup per tile
+// (shaders/caster_culling_lists.comp) lays the marked casters out in the tile's range of the instance lists (their
+// InstanceTransforms, and their indices) in the batches' order, caster order within a batch, the same every run, and
+// sets the tile's draw of each batch, an indexed indirect command. Tile t's range holds a slot for every caster
+// (tileSlots() of them); the draw of batch b in tile t is command t * batches + b, and its count (0 or 1, for
+// drawIndexedIndirectCount) says whether it has instances. The tiles are culled in as few dispatches as the device's
+// storage range and CullingTiles allow, each binding the instance ranges of its tiles only, so that 10^6 casters fit
+// where all tiles' ranges together would not.
 class GpuCasterCulling {
 public:
     // `maxTilesPerDispatch`: the most tiles one dispatch culls, fewer where their instances exceed the device's
@@ -122,7 +123,8 @@ public:
     std::uint64_t drawOffset(std::uint32_t tile, std::uint32_t batch) const;
     std::uint64_t countOffset(std::uint32_t tile, std::uint32_t batch) const;
 
-    // After the submission: each tile's casters, ascending (for tests; reads the GPU's lists back).
+    // After the submission: each tile's casters as its draws hold them, in the batches' order and caster order within a
+    // batch (for tests; reads the GPU's lists back).
     std::vector<std::vector<std::uint32_t>> readLists() const;
 
 private:
@@ -136,11 +138,21 @@ private:
     void fillDraws(std::span<const ShadowCaster> casters);
     // The uploaded_ ranges of the casters and transforms.
     void uploadCasters();
-    void uploadTiles(std::span<const CasterVolume> volumes);
+    void uploadTiles(std::span<const CasterVolume> volumes, bool normalMatrices);
 
     rhi::Device& device_;
-    std::unique_ptr<rhi::Shader> shader_;
-    std::unique_ptr<rhi::ComputePipeline> pipeline_;
+    // The tests' pipelines, one for each set of volume kinds (VolumeKinds bits) a dispatch's tiles hold, made when
+    // first needed: llvmpipe and lavapipe run every branch of a shader for every lane, taken or not, so each leaves out
+    // the tests of the kinds its tiles do not hold.
+    struct TestPipeline {
+        std::unique_ptr<rhi::Shader> shader;
+        std::unique_ptr<rhi::ComputePipeline> pipeline;
+    };
+    const rhi::ComputePipeline& testPipeline(std::uint32_t kinds);
+    std::array<TestPipeline, 8> testPipelines_;
+    std::vector<const rhi::ComputePipeline*> groupTests_; // each dispatch's tests
+    std::unique_ptr<rhi::Shader> listsShader_;
+    std::unique_ptr<rhi::ComputePipeline> listsPipeline_;
     std::unique_ptr<rhi::Buffer> volumes_;
     std::unique_ptr<rhi::Buffer> casters_;
     std::unique_ptr<rhi::Buffer> transforms_;
@@ -148,6 +160,8 @@ private:
     std::unique_ptr<rhi::Buffer> indices_;
     std::unique_ptr<rhi::Buffer> draws_;
     std::unique_ptr<rhi::Buffer> counts_;
+    std::unique_ptr<rhi::Buffer> order_; // batches_.items: the casters in their batches' order
+    std::unique_ptr<rhi::Buffer> marks_; // per tile, a bit per place in that order: the caster is in the tile
     InstanceBatches batches_;
     // What record() uploads, kept from frame to frame: fresh vectors of 10^5 elements cost more in page faults than
     // filling them.
