@@ -36,7 +36,8 @@ parity::Options parityOptions()
     options.thresholds["lit"] = {.maxDifference = parity::kAnyDifference, .minPsnr = 50.0};
     // render::lightDepthFraction units: fractions of a tile's depth range. Perspective tiles clip casters at
     // near and far planes whose clip-space equations differ per convention, so a few texels there may be
-    // drawn in one atlas only; the orthographic directional cascades pancake instead and keep coverage exact.
+    // drawn in one atlas only; the orthographic directional cascades pancake instead and keep coverage exact
+    // (at their far plane, depths within its rounding read as the far plane in every convention).
     options.thresholds["atlas"] = {.maxDifference = 2e-4, .bitExactWhereConventionsAgree = false};
     for (const char* perspective : {"other-atlas", "cube-atlas"})
         options.thresholds[perspective] = {.maxDifference = 2e-4,

@@ -23,14 +23,25 @@ std::vector<PerspectiveTile> perspectiveTiles(const shadows::StaticShadowPlan& p
     return tiles;
 }
 
+namespace {
+
+// A depth nearer the far plane than half the float spacing below 1.0 (2^-24 there, IEEE 754 binary32) is stored as
+// the far plane's 1.0 in a buffer that keeps far at 1, where it reads as the clear: it is the far plane in every
+// convention, or a caster crossing a tile's far plane would leave texels drawn in a reversed-Z atlas only.
+constexpr float kFarPlaneRounding = 0x1p-25f;
+
+} // namespace
+
 std::vector<float> lightDepthFraction(const rhi::DepthImage& atlas, const rhi::Conventions& conventions,
                                       std::span<const PerspectiveTile> perspectiveTiles)
 {
     const float near = conventions.nearDepth();
     const float far = conventions.farDepth();
     std::vector<float> fraction(atlas.depth.size());
-    for (std::size_t i = 0; i < atlas.depth.size(); ++i)
-        fraction[i] = std::clamp((atlas.depth[i] - far) / (near - far), 0.0f, 1.0f);
+    for (std::size_t i = 0; i < atlas.depth.size(); ++i) {
+        const float f = std::clamp((atlas.depth[i] - far) / (near - far), 0.0f, 1.0f);
+        fraction[i] = f < kFarPlaneRounding ? 0.0f : f;
+    }
     for (const PerspectiveTile& tile : perspectiveTiles) {
         const float nearView = conventions.viewDepth(tile.projection, near);
         const float farView = conventions.viewDepth(tile.projection, far);

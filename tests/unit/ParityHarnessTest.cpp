@@ -4,6 +4,7 @@
 #include "penumbra/parity/Harness.hpp"
 #include "penumbra/parity/HeatMap.hpp"
 #include "penumbra/parity/Report.hpp"
+#include "penumbra/render/AtlasPicture.hpp"
 #include "penumbra/rhi/Error.hpp"
 
 #include <cmath>
@@ -195,6 +196,18 @@ TEST(ParityHarnessTest, DepthFromTheFarPlaneAgreesAcrossConventionsAndIsBitExact
                                                         {rhi::DepthRange::ZeroToOne, false}, {.maxDifference = 1});
     EXPECT_EQ(uncovered.figures.coverageMismatches, 1u);
     EXPECT_FALSE(uncovered.pass());
+}
+
+// A caster crossing an orthographic tile's far plane: a depth within the far plane's rounding in [0, 1] (under 2^-25
+// from it) is the clear in a standard-Z atlas, so it is the far plane in the reversed-Z one too; a little farther from
+// it, it stays drawn.
+TEST(ParityHarnessTest, AtlasDepthWithinTheFarPlanesRoundingIsTheFarPlane)
+{
+    const rhi::Conventions standard(rhi::DepthRange::ZeroToOne, false);
+    const rhi::Conventions reversed(rhi::DepthRange::ZeroToOne, true);
+    const std::vector<float> background = render::lightDepthFraction(rhi::DepthImage{1, 1, {1.0f}}, standard);
+    EXPECT_EQ(render::lightDepthFraction(rhi::DepthImage{1, 1, {1.6e-9f}}, reversed), background);
+    EXPECT_GT(render::lightDepthFraction(rhi::DepthImage{1, 1, {1e-6f}}, reversed).at(0), 0.0f);
 }
 
 TEST(ParityHarnessTest, LinearViewDepthAgreesAcrossDepthRanges)
