@@ -99,8 +99,6 @@ public:
     // same camera.
     void useLocalLights() { scene_ = scenes::makeContactLocalLightsScene(); }
 
-    // From the lit side of the fence, looking down past the slats at the ground beyond them: a march from that ground
-    // towards the sun passes behind the 6 cm slats in view without meeting them.
     // The pole, the slab and the slats drawn through the alpha test, with nothing cut away (alpha 1).
     void alphaTestCasters()
     {
@@ -109,6 +107,8 @@ public:
                 material.caster = scene::CasterMode::Clip;
     }
 
+    // From the lit side of the fence, looking down past the slats at the ground beyond them: a march from that ground
+    // towards the sun passes behind the 6 cm slats in view without meeting them.
     void lookPastTheFence()
     {
         scene_.camera = scene::lookAt({-0.2f, 2.0f, 3.6f}, {0.3f, 0.0f, 2.2f}, glm::radians(55.0f), {0.0f, 1.0f, 0.0f});
@@ -213,8 +213,8 @@ TEST_F(ContactShadowsTest, ThickerThanTheCastersCatchesFault)
         << "a thickness beyond the slats' must darken the ground seen past them";
 }
 
-// The same slats alpha-tested (no holes): cards to the march, which count only where its ray crosses their depth
-// within a step (view_depth.glsl), so even the 0.2 m band leaves the ground seen past them lit.
+// The same slats alpha-tested (no holes): cards to the march, which count only where its ray crosses one between two
+// samples (view_depth.glsl), so even the 0.2 m band leaves the ground seen past them lit.
 TEST_F(ContactShadowsTest, AlphaTestedCastersAreCards)
 {
     lookPastTheFence();
