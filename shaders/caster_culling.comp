@@ -18,17 +18,17 @@ vec3 boxCorner(vec3 lo, vec3 hi, int i)
 // meetsFrustum: culled where all 8 corners lie outside one of the six planes (view space, looking down -z).
 bool meetsFrustum(vec3 lo, vec3 hi, CasterVolume v)
 {
-    const float t = v.frustum.x;
+    const float tx = v.frustum.x, ty = v.frustum.w;
     int outside[6] = int[6](0, 0, 0, 0, 0, 0);
     for (int i = 0; i < 8; ++i) {
         const vec3 p = (v.view * vec4(boxCorner(lo, hi, i), 1.0)).xyz;
         const float depth = -p.z;
         outside[0] += depth < v.frustum.y ? 1 : 0;
         outside[1] += depth > v.frustum.z ? 1 : 0;
-        outside[2] += p.x > depth * t ? 1 : 0;
-        outside[3] += -p.x > depth * t ? 1 : 0;
-        outside[4] += p.y > depth * t ? 1 : 0;
-        outside[5] += -p.y > depth * t ? 1 : 0;
+        outside[2] += p.x > depth * tx ? 1 : 0;
+        outside[3] += -p.x > depth * tx ? 1 : 0;
+        outside[4] += p.y > depth * ty ? 1 : 0;
+        outside[5] += -p.y > depth * ty ? 1 : 0;
     }
     for (int k = 0; k < 6; ++k)
         if (outside[k] == 8)

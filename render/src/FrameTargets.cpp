@@ -154,6 +154,10 @@ void SceneRenderer::importResources(const FrameDesc& frame)
         graph.importBuffer(frame::kCulledInstances, state.culling->instances());
         graph.importBuffers(frame::kCulledDraws, {&state.culling->draws(), &state.culling->drawCounts()});
     }
+    if (state.viewCulling) {
+        graph.importBuffer(frame::kViewCulledInstances, state.viewCulling->instances());
+        graph.importBuffers(frame::kViewCulledDraws, {&state.viewCulling->draws(), &state.viewCulling->drawCounts()});
+    }
     if (state.depthFit)
         graph.importBuffer(frame::kDepthHistogram, depthReduction_->histogram(), true);
 }

@@ -366,9 +366,8 @@ rhi::VertexLayout GpuScene::vertexLayout()
     return layout;
 }
 
-void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
-                            std::uint32_t coverageBinding, const rhi::BufferSlice& instances,
-                            std::uint32_t instanceCount) const
+void GpuScene::bindWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
+                            std::uint32_t coverageBinding, const rhi::BufferSlice& instances) const
 {
     const scene::Material& material = scene_.materialOf(object);
     for (std::uint32_t slot = 0; slot < scene::kTextureSlots; ++slot) {
@@ -379,6 +378,13 @@ void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& obj
     commands.bindVertexBuffer(0, vertices(object.mesh));
     commands.bindVertexBuffer(shadows::kInstanceSlot, *instances.buffer, instances.offset);
     commands.bindIndexBuffer(indices(object.mesh), rhi::IndexType::UInt32);
+}
+
+void GpuScene::drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
+                            std::uint32_t coverageBinding, const rhi::BufferSlice& instances,
+                            std::uint32_t instanceCount) const
+{
+    bindWithMaps(commands, object, firstMapBinding, coverageBinding, instances);
     commands.drawIndexed(static_cast<std::uint32_t>(scene_.meshOf(object).indices.size()), instanceCount);
 }
 

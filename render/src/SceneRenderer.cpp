@@ -13,12 +13,13 @@
 #include "passes/ContactShadowPass.hpp"
 #include "passes/FrameState.hpp"
 #include "passes/CasterCullingPass.hpp"
+#include "passes/ViewCullingPass.hpp"
 #include "passes/LightClusterPass.hpp"
 #include "passes/DepthFitPasses.hpp"
 #include "passes/DepthPrepass.hpp"
 #include "passes/DepthReduction.hpp"
 #include "passes/LitDraws.hpp"
-#include "passes/LitInstances.hpp"
+#include "passes/GpuViewCulling.hpp"
 #include "passes/LitPasses.hpp"
 #include "passes/LitPipelines.hpp"
 #include "passes/PrepassPasses.hpp"
@@ -288,18 +289,19 @@ FrameStats SceneRenderer::prepareFrame(const scene::Camera& camera, const FrameD
     return stats;
 }
 
-// With GPU culling (and instancing) the opaque lit instances stay resident: nothing per object in a frame where nothing
-// moved.
+// With GPU culling (and instancing) the opaque lit objects are culled against the view on the GPU too: nothing per
+// object in a frame where nothing moved.
 std::vector<LitDraw> SceneRenderer::frameLitDraws(const scene::Camera& camera, const FrameDesc& frame, bool culledOnGpu)
 {
-    const bool resident = culledOnGpu && frame.instancedDraws;
-    if (resident) {
-        if (!litInstances_)
-            litInstances_ = std::make_unique<LitInstances>(device_);
-        litInstances_->update(gpuScene_);
+    const bool viewCulled = culledOnGpu && frame.instancedDraws;
+    if (viewCulled) {
+        if (!viewCulling_)
+            viewCulling_ = std::make_unique<GpuViewCulling>(device_);
+        viewCulling_->prepare(gpuScene_, camera, aspectOf(frame));
+        state_->viewCulling = &viewCulling_->culling();
     }
     return litDraws(gpuScene_, camera.position, scene::ViewFrustum(camera, aspectOf(frame)), frame.instancedDraws,
-                    uniforms_, instances_, resident ? litInstances_.get() : nullptr);
+                    uniforms_, instances_, viewCulled ? viewCulling_.get() : nullptr);
 }
 
 // The blocks the frame's passes bind (FrameState): the shadow maps', the lit view's and the debug views'.
@@ -381,6 +383,7 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     add(std::make_unique<SkinningPass>(*skinning_));
     add(std::make_unique<StaticMapsPass>(state, *staticShadows_));
     add(std::make_unique<CasterCullingPass>(state));
+    add(std::make_unique<ViewCullingPass>(state));
     add(std::make_unique<LightClusterPass>(state));
     add(std::make_unique<StaticTilesPass>(state, *directionalStaticTiles_, StaticTilesPass::Atlas::Directional));
     add(std::make_unique<DirectionalAtlasPass>(state, shadowPass_, plan_));

@@ -25,22 +25,22 @@ struct BvhPlane {
 };
 
 // meetsFrustum's six tests as world-space planes: with p = view * c and depth = -p.z, outside where depth < near,
-// depth > far, p.x > depth * t, -p.x > depth * t, p.y > depth * t, -p.y > depth * t.
+// depth > far, p.x > depth * tx, -p.x > depth * tx, p.y > depth * ty, -p.y > depth * ty.
 std::array<BvhPlane, 6> frustumPlanes(const CasterVolume& volume)
 {
     const glm::mat4& v = volume.view;
     const auto row = [&](int i) { return BvhPlane{{v[0][i], v[1][i], v[2][i]}, v[3][i]}; };
     const BvhPlane x = row(0), y = row(1), z = row(2);
-    const float t = volume.frustum.x, nearPlane = volume.frustum.y, farPlane = volume.frustum.z;
+    const float tx = volume.frustum.x, ty = volume.frustum.w, nearPlane = volume.frustum.y, farPlane = volume.frustum.z;
     const auto add = [](BvhPlane a, float s, BvhPlane b) {
         return BvhPlane{a.normal + s * b.normal, a.offset + s * b.offset};
     };
     return {{{z.normal, z.offset + nearPlane},
              {-z.normal, -z.offset - farPlane},
-             add(x, t, z),
-             add({-x.normal, -x.offset}, t, z),
-             add(y, t, z),
-             add({-y.normal, -y.offset}, t, z)}};
+             add(x, tx, z),
+             add({-x.normal, -x.offset}, tx, z),
+             add(y, ty, z),
+             add({-y.normal, -y.offset}, ty, z)}};
 }
 
 // The node's reach: its half size, plus the margin times its coordinates' magnitude, which outsideAPlane takes as the

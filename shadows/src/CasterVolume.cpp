@@ -46,10 +46,16 @@ bool insideSlice(const Bounds& box, const CasterVolume& v)
 
 CasterVolume frustumVolume(const glm::mat4& view, float fov, float nearPlane, float farPlane)
 {
+    return frustumVolume(view, fov, 1.0f, nearPlane, farPlane);
+}
+
+CasterVolume frustumVolume(const glm::mat4& view, float fovY, float aspect, float nearPlane, float farPlane)
+{
     CasterVolume volume;
     volume.kind = CasterVolumeKind::Frustum;
     volume.view = view;
-    volume.frustum = {std::tan(0.5f * fov), nearPlane, farPlane, 0.0f};
+    const float tanY = std::tan(0.5f * fovY);
+    volume.frustum = {tanY * aspect, nearPlane, farPlane, tanY};
     return volume;
 }
 
@@ -110,17 +116,17 @@ bool heldByPrevious(const Bounds& world, const CasterVolume& volume)
 
 bool meetsFrustum(const Bounds& world, const CasterVolume& volume)
 {
-    const float t = volume.frustum.x;
+    const float tx = volume.frustum.x, ty = volume.frustum.w;
     std::array<int, 6> outside{};
     for (const glm::vec3& corner : world.corners()) {
         const glm::vec3 p = glm::vec3(volume.view * glm::vec4(corner, 1.0f));
         const float depth = -p.z;
         outside[0] += depth < volume.frustum.y;
         outside[1] += depth > volume.frustum.z;
-        outside[2] += p.x > depth * t;
-        outside[3] += -p.x > depth * t;
-        outside[4] += p.y > depth * t;
-        outside[5] += -p.y > depth * t;
+        outside[2] += p.x > depth * tx;
+        outside[3] += -p.x > depth * tx;
+        outside[4] += p.y > depth * ty;
+        outside[5] += -p.y > depth * ty;
     }
     return std::none_of(outside.begin(), outside.end(), [](int n) { return n == 8; });
 }

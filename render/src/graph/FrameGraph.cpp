@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <unordered_set>
 
 namespace penumbra::render {
 namespace {
@@ -350,7 +351,7 @@ void FrameGraph::execute(rhi::CommandList& commands)
     for (std::size_t i = 0; i < timed_.size(); ++i) {
         const FramePassContext context(*this, timed_[i], commands);
         commands.pushLabel(passes_[timed_[i]].name);
-        recordBarriers(commands, passes_[timed_[i]], states);
+        recordBarriers(commands, i, states);
         passes_[timed_[i]].pass->execute(context);
         commands.popLabel();
         if (timestamps_)
@@ -358,7 +359,7 @@ void FrameGraph::execute(rhi::CommandList& commands)
     }
 }
 
-void FrameGraph::recordBarriers(rhi::CommandList& commands, const Pass& pass,
+void FrameGraph::recordBarriers(rhi::CommandList& commands, std::size_t timed,
                                 std::unordered_map<const void*, rhi::ResourceState>& states) const
 {
     const auto key = [](const rhi::ResourceBarrier& b) {
@@ -373,13 +374,39 @@ void FrameGraph::recordBarriers(rhi::CommandList& commands, const Pass& pass,
         else
             same->after |= barrier.after;
     };
-    for (const Use& use : pass.uses) {
+    const auto addUse = [&](const Use& use, const auto& wanted) {
         const Resource& resource = resources_[use.resource];
         const rhi::ResourceState after = graphUseState(use.use);
-        if (resource.texture)
+        if (resource.texture && wanted(resource.texture))
             add(rhi::ResourceBarrier::of(*resource.texture, states[resource.texture], after));
         for (const rhi::Buffer* buffer : resource.buffers)
-            add(rhi::ResourceBarrier::of(*buffer, states[buffer], after));
+            if (wanted(buffer))
+                add(rhi::ResourceBarrier::of(*buffer, states[buffer], after));
+    };
+    for (const Use& use : passes_[timed_[timed]].uses)
+        addUse(use, [](const void*) { return true; });
+    // Where this pass waits on a shader write anyway, the later passes' waits on other shader writes join it, each
+    // texture's and buffer's at its next use (nothing uses it in between; transient textures may share one): one
+    // barrier instead of one per reading pass, which matters where a driver makes each a whole finish (llvmpipe's
+    // glMemoryBarrier). Batching the barriers a graph derives: O'Donnell, "FrameGraph: Extensible Rendering
+    // Architecture in Frostbite", GDC 2017.
+    const bool waitsOnShaderWrites = std::any_of(barriers.begin(), barriers.end(), [](const rhi::ResourceBarrier& b) {
+        return rhi::hasFlag(b.before, rhi::ResourceState::ShaderWrite);
+    });
+    std::unordered_set<const void*> used; // by this pass and those after it so far
+    for (std::size_t later = timed; waitsOnShaderWrites && later < timed_.size(); ++later) {
+        const std::vector<Use>& uses = passes_[timed_[later]].uses;
+        if (later > timed)
+            for (const Use& use : uses)
+                addUse(use, [&](const void* object) {
+                    return !used.contains(object) && rhi::hasFlag(states[object], rhi::ResourceState::ShaderWrite);
+                });
+        for (const Use& use : uses) {
+            const Resource& resource = resources_[use.resource];
+            if (resource.texture)
+                used.insert(resource.texture);
+            used.insert(resource.buffers.begin(), resource.buffers.end());
+        }
     }
     for (const rhi::ResourceBarrier& b : barriers)
         states[key(b)] = b.after;

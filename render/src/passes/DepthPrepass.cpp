@@ -105,8 +105,7 @@ std::uint32_t DepthPrepass::record(rhi::CommandList& commands, const rhi::Frameb
         }
         rhi::bindUniform(commands, kLitObjectBinding, draw.uniforms);
         // lit.glsl declares every material map; the RHI asks for all of them bound.
-        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding, draw.instances,
-                              draw.instanceCount);
+        recordLitDraw(commands, gpuScene, draw);
         ++issued;
     }
     commands.endPass();

@@ -105,4 +105,13 @@ void readCulledCasters(FramePassBuilder& builder, const FrameState& state)
     builder.read(frame::kCulledDraws, ResourceUse::IndirectRead);
 }
 
+void readLitDraws(FramePassBuilder& builder, const FrameState& state)
+{
+    readPosedVertices(builder, state);
+    if (!state.viewCulling)
+        return;
+    builder.read(frame::kViewCulledInstances, ResourceUse::VertexRead);
+    builder.read(frame::kViewCulledDraws, ResourceUse::IndirectRead);
+}
+
 } // namespace penumbra::render

@@ -48,6 +48,9 @@ struct FrameState;
 void readPosedVertices(FramePassBuilder& builder, const FrameState& state);
 // For an atlas pass: declares the caster culling pass's results' reads where the frame culls on the GPU.
 void readCulledCasters(FramePassBuilder& builder, const FrameState& state);
+// For a pass that draws the lit draws (FrameState::litDraws): readPosedVertices, and the view culling pass's results'
+// reads where the frame culls the view on the GPU.
+void readLitDraws(FramePassBuilder& builder, const FrameState& state);
 
 // RealtimeCasters::Dynamic: the tiles' static casters, which the realtime atlases take from StaticTileCache, and
 // the tiles without them, which the passes draw over it.
@@ -76,6 +79,8 @@ struct FrameState {
     // atlas's tiles follow the directional ones, from culledLocalTile.
     shadows::GpuCasterCulling* culling = nullptr;
     std::uint32_t culledLocalTile = 0;
+    // ShadowSettings::culling gpu with instancing: the view culling pass's results, which the opaque lit draws draw.
+    shadows::GpuCasterCulling* viewCulling = nullptr;
     bool posedVertices = false; // the scene has deformed meshes, which the skinning pass poses (kPosedVertices)
     bool screenSpace = false; // directional shadows collected in screen space
     bool multisampled = false;

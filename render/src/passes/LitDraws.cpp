@@ -1,6 +1,6 @@
 #include "LitDraws.hpp"
 
-#include "LitInstances.hpp"
+#include "GpuViewCulling.hpp"
 
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/shadows/InstanceBatches.hpp"
@@ -15,6 +15,8 @@ namespace {
 // The lit shaders compare the material's caster mode against the caster pass's PENUMBRA_CASTER_* (material.glsl).
 static_assert(static_cast<int>(scene::CasterMode::Clip) == static_cast<int>(shadows::ShadowCasterMode::Clip) &&
               static_cast<int>(scene::CasterMode::Dither) == static_cast<int>(shadows::ShadowCasterMode::Dither));
+
+constexpr std::uint32_t kNoObject = 0xffffffffu;
 
 } // namespace
 
@@ -45,21 +47,33 @@ LitObjectUniforms litObjectUniforms(const scene::Scene& scene, const scene::Obje
 
 std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera, const scene::ViewFrustum& frustum,
                               bool instanced, rhi::UniformArena& uniforms, rhi::VertexArena& instances,
-                              const LitInstances* resident)
+                              const GpuViewCulling* culled)
 {
     const scene::Scene& scene = gpuScene.scene();
+    const auto group = [&](std::uint32_t object) {
+        return instanced ? gpuScene.litDrawGroup(object) : shadows::kNoDrawGroup;
+    };
     std::vector<std::uint32_t> opaque, blended;
+    // Per lit draw group, its first opaque object in the scene: the groups' order.
+    std::vector<std::uint32_t> firstOfGroup;
     std::vector<LitDraw> draws;
-    if (resident) {
-        resident->appendDraws(gpuScene, frustum, uniforms, draws);
-        for (const std::uint32_t i : resident->blended())
+    if (culled) {
+        culled->appendDraws(gpuScene, uniforms, draws);
+        for (const std::uint32_t i : culled->blended())
             if (frustum.mayShow(scene.objects[i].worldBounds))
                 blended.push_back(i);
     } else {
         for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
             const scene::Object& object = scene.objects[i];
-            if (object.castShadows != scene::ShadowCasting::ShadowsOnly && frustum.mayShow(object.worldBounds))
-                (scene.materialOf(object).blend ? blended : opaque).push_back(i);
+            if (object.castShadows == scene::ShadowCasting::ShadowsOnly)
+                continue;
+            const bool blend = scene.materialOf(object).blend;
+            if (!blend && group(i) != shadows::kNoDrawGroup) {
+                firstOfGroup.resize(std::max<std::size_t>(firstOfGroup.size(), group(i) + 1), kNoObject);
+                firstOfGroup[group(i)] = std::min(firstOfGroup[group(i)], i);
+            }
+            if (frustum.mayShow(object.worldBounds))
+                (blend ? blended : opaque).push_back(i);
         }
     }
     const auto distance2 = [&](std::uint32_t i) {
@@ -68,13 +82,17 @@ std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera,
     };
     std::stable_sort(blended.begin(), blended.end(),
                      [&](std::uint32_t a, std::uint32_t b) { return distance2(a) > distance2(b); });
-    const auto group = [&](std::uint32_t object) {
-        return instanced ? gpuScene.litDrawGroup(object) : shadows::kNoDrawGroup;
-    };
     std::vector<shadows::InstanceTransform> transforms;
     for (const bool blending : {false, true}) {
-        const shadows::InstanceBatches batches =
+        shadows::InstanceBatches batches =
             blending ? shadows::batchRuns(std::span(blended), group) : shadows::batchByGroup(std::span(opaque), group);
+        if (!blending)
+            std::stable_sort(batches.batches.begin(), batches.batches.end(), [&](const auto& a, const auto& b) {
+                const auto rank = [&](std::uint32_t object) {
+                    return group(object) == shadows::kNoDrawGroup ? object : firstOfGroup[group(object)];
+                };
+                return rank(batches.items[a.first]) < rank(batches.items[b.first]);
+            });
         for (const shadows::InstanceBatches::Batch& batch : batches.batches) {
             transforms.clear();
             for (std::uint32_t i = batch.first; i < batch.first + batch.count; ++i)
@@ -85,6 +103,19 @@ std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera,
         }
     }
     return draws;
+}
+
+void recordLitDraw(rhi::CommandList& commands, const GpuScene& gpuScene, const LitDraw& draw)
+{
+    const scene::Object& object = gpuScene.scene().objects[draw.object];
+    if (!draw.culling) {
+        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding, draw.instances,
+                              draw.instanceCount);
+        return;
+    }
+    // The draw's firstInstance places its instances in the view's range; a group without any in view draws none.
+    gpuScene.bindWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding, draw.instances);
+    commands.drawIndexedIndirect(draw.culling->draws(), draw.culling->drawOffset(0, draw.batch));
 }
 
 } // namespace penumbra::render

@@ -60,8 +60,7 @@ std::uint32_t recordLitDraws(rhi::CommandList& commands, const rhi::Framebuffer&
             bound = pipeline;
         }
         rhi::bindUniform(commands, kLitObjectBinding, draw.uniforms);
-        gpuScene.drawWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding, draw.instances,
-                              draw.instanceCount);
+        recordLitDraw(commands, gpuScene, draw);
     }
     commands.endPass();
     return static_cast<std::uint32_t>(state.litDraws.size());
@@ -107,7 +106,7 @@ bool LitPass::setup(FramePassBuilder& builder)
     else
         builder.write(depth);
     builder.write(state_.multisampled ? frame::kMultisampledColor : frame::kLitImage);
-    readPosedVertices(builder, state_);
+    readLitDraws(builder, state_);
     return true;
 }
 
@@ -151,7 +150,7 @@ bool LitViewPass::setup(FramePassBuilder& builder)
         builder.read(frame::kContactShadows);
     builder.write(frame::kLitDepth);
     builder.write(view_ == LitView::Cascades ? frame::kCascadeView : frame::kVisibilityView);
-    readPosedVertices(builder, state_);
+    readLitDraws(builder, state_);
     return true;
 }
 

@@ -18,7 +18,7 @@ bool DepthPrepassPass::setup(FramePassBuilder& builder)
     builder.write(state_.multisampled ? frame::kMultisampledDepth : frame::kLitDepth);
     if (writesViewDepth())
         builder.write(frame::kContactViewDepth);
-    readPosedVertices(builder, state_);
+    readLitDraws(builder, state_);
     return true;
 }
 
@@ -47,7 +47,7 @@ bool SingleSampledDepthPass::setup(FramePassBuilder& builder)
     builder.write(frame::kLitDepth);
     if (state_.contact)
         builder.write(frame::kContactViewDepth);
-    readPosedVertices(builder, state_);
+    readLitDraws(builder, state_);
     return true;
 }
 
@@ -72,7 +72,7 @@ bool ReceiverPrepassPass::setup(FramePassBuilder& builder)
     builder.write(frame::kReceiverPositionDy);
     if (state_.contact)
         builder.write(frame::kContactViewDepth);
-    readPosedVertices(builder, state_);
+    readLitDraws(builder, state_);
     return true;
 }
 

@@ -12,6 +12,8 @@ inline constexpr std::string_view kSkinningPass = "skinning"; // a scene with sk
 inline constexpr std::string_view kStaticMapsPass = "static maps";
 // Shadow casters culled per tile on the GPU (ShadowSettings::culling gpu).
 inline constexpr std::string_view kCasterCullingPass = "caster culling";
+// The opaque lit objects culled against the camera's view on the GPU (ShadowSettings::culling gpu, with instancing).
+inline constexpr std::string_view kViewCullingPass = "view culling";
 // The clustered light lists built on the GPU (ShadowSettings local.clusterBuild gpu).
 inline constexpr std::string_view kLightClusterPass = "light cluster build";
 inline constexpr std::string_view kDirectionalStaticTilesPass = "directional static tiles";
@@ -29,7 +31,7 @@ inline constexpr std::string_view kResolvePass = "msaa resolve";
 inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
 inline constexpr std::array kPasses{
-    kSkinningPass,         kStaticMapsPass,         kCasterCullingPass,  kLightClusterPass, kDirectionalStaticTilesPass,
+    kSkinningPass,         kStaticMapsPass,         kCasterCullingPass,  kViewCullingPass, kLightClusterPass, kDirectionalStaticTilesPass,
     kDirectionalAtlasPass, kLocalStaticTilesPass,   kLocalAtlasPass,     kDepthPrepass,     kSingleSampledDepthPrepass,
     kReceiverPrepass,      kScreenSpaceShadowsPass, kContactShadowsPass, kLitPass,          kDepthReductionPass,
     kResolvePass,          kCascadeViewPass,        kVisibilityViewPass};
@@ -68,6 +70,9 @@ inline constexpr std::string_view kPosedVertices = "posed vertices";
 // indirect draws with their counts, which the atlas passes draw.
 inline constexpr std::string_view kCulledInstances = "culled instances";
 inline constexpr std::string_view kCulledDraws = "culled draws";
+// The same of the view culling pass, which the depth prepasses and the lit passes draw.
+inline constexpr std::string_view kViewCulledInstances = "view-culled instances";
+inline constexpr std::string_view kViewCulledDraws = "view-culled draws";
 // directional.projection depthFit: the depth reduction's histogram, an output the renderer reads after the frame.
 inline constexpr std::string_view kDepthHistogram = "depth histogram";
 

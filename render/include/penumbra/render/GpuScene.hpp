@@ -96,7 +96,7 @@ public:
     const shadows::CasterChanges& casterChanges() const { return casterChanges_; }
     // Which objects each refresh() found moved (indices into Scene::objects; all where the lists were built anew, as
     // after a change of an object's shadow casting or receiving or of a material): what keeps the lit instances
-    // resident (LitInstances) rewrites only those.
+    // resident (GpuViewCulling) rewrites only those.
     const shadows::CasterChanges& objectChanges() const { return objectChanges_; }
 
     // The vertex layout the caster passes read from the scene's vertex buffers.
@@ -112,7 +112,10 @@ public:
 
     // Binds the material's maps (material textures, or the white texel) at firstMapBinding + scene::TextureSlot and
     // the base colour map with coverageSampler() at coverageBinding, then the object's mesh and `instances`
-    // (shadows::InstanceTransform each), and draws instanceCount instances of the mesh.
+    // (shadows::InstanceTransform each).
+    void bindWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
+                      std::uint32_t coverageBinding, const rhi::BufferSlice& instances) const;
+    // bindWithMaps, then draws instanceCount instances of the mesh.
     void drawWithMaps(rhi::CommandList& commands, const scene::Object& object, std::uint32_t firstMapBinding,
                       std::uint32_t coverageBinding, const rhi::BufferSlice& instances,
                       std::uint32_t instanceCount) const;

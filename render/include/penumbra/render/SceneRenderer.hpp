@@ -34,7 +34,7 @@ class DepthReduction;
 class EnvironmentMaps;
 class FrameGraph;
 class GpuSkinning;
-class LitInstances;
+class GpuViewCulling;
 class LitPipelines;
 class LocalLightTextures;
 class LocalTileCache;
@@ -290,7 +290,7 @@ private:
     bool staticUpdateRequested_ = false;
     // This frame's draws (passes/LitDraws.hpp), shared by the prepass and every lit view.
     std::vector<LitDraw> litDraws_;
-    std::unique_ptr<LitInstances> litInstances_; // made on the first frame that culls on the GPU, with instancing
+    std::unique_ptr<GpuViewCulling> viewCulling_; // made on the first frame that culls on the GPU, with instancing
     std::unique_ptr<rhi::CommandList> commands_;
     std::unique_ptr<FrameGraph> graph_;
     std::unique_ptr<FrameState> state_; // what this frame's passes draw

@@ -14,8 +14,8 @@
 
 namespace penumbra::shadows {
 
-// What one shadow view's casters are tested against: a perspective frustum (a spot light, a point light's face) or a
-// cascade's light box, with the culling bias of the previous cascade (a sphere for the stable fit, a frustum slice for
+// What one shadow view's casters are tested against: a perspective frustum (a spot light, a point light's face; the
+// camera's view, where the lit objects are culled on the GPU) or a cascade's light box, with the culling bias of the previous cascade (a sphere for the stable fit, a frustum slice for
 // the close fit). The planner culls with casterInVolume; the GPU culling pass (shaders/caster_culling.comp) reads the
 // same struct and mirrors it, line for line, so both give the same lists.
 enum class CasterVolumeKind : std::int32_t {
@@ -28,7 +28,7 @@ enum class CasterVolumeKind : std::int32_t {
 // One view's volume, an element of the culling pass's storage block CasterVolumes (std430).
 struct alignas(16) CasterVolume {
     glm::mat4 view{1.0f}; // Frustum: world to view space (looking down -z)
-    glm::vec4 frustum{0.0f}; // Frustum: tan(fov / 2), near, far
+    glm::vec4 frustum{0.0f}; // Frustum: tan(fovX / 2), near, far, tan(fovY / 2)
     // Cascades: the light basis (LightBasis: right, up, direction) and the tile's square: snapped centre x, y, half
     // size, far depth.
     glm::vec4 right{0.0f};
@@ -58,6 +58,8 @@ static_assert(shaders::matchesLayout(kCasterVolumeStruct, shaders::BlockLayout::
 
 // A perspective view's frustum: square field of view `fov` radians, near..far.
 CasterVolume frustumVolume(const glm::mat4& view, float fov, float nearPlane, float farPlane);
+// A perspective view's frustum: vertical field of view `fovY` radians, `aspect` (width / height), near..far.
+CasterVolume frustumVolume(const glm::mat4& view, float fovY, float aspect, float nearPlane, float farPlane);
 
 // A close-fit cascade's region: the camera frustum between two view depths.
 struct FrustumSlice {
