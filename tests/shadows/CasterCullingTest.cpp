@@ -103,6 +103,24 @@ TEST_F(CasterCullingTest, VolumesGiveThePlannersLists)
     EXPECT_LT(frustum.size(), casters.size());
 }
 
+// A camera's frustum is as wide as its aspect makes it and as high as its vertical field of view: a box just right of
+// the square frustum is in the view of a wide camera, one just above it in neither.
+TEST(CasterVolumeTest, CameraFrustumIsWiderThanHigh)
+{
+    const glm::mat4 view(1.0f); // the eye at the origin, looking down -z
+    const float fovY = 1.0f, tanY = std::tan(0.5f * fovY);
+    const Bounds right{{1.1f * tanY * 10.0f, -0.1f, -10.1f}, {1.2f * tanY * 10.0f, 0.1f, -9.9f}};
+    const Bounds above{{-0.1f, 1.1f * tanY * 10.0f, -10.1f}, {0.1f, 1.2f * tanY * 10.0f, -9.9f}};
+    const CasterVolume square = frustumVolume(view, fovY, 0.1f, 100.0f);
+    const CasterVolume wide = frustumVolume(view, fovY, 16.0f / 9.0f, 0.1f, 100.0f);
+    EXPECT_FALSE(casterInVolume(right, square));
+    EXPECT_TRUE(casterInVolume(right, wide));
+    EXPECT_FALSE(casterInVolume(above, square));
+    EXPECT_FALSE(casterInVolume(above, wide));
+    const std::vector<Bounds> boxes{right, above};
+    EXPECT_EQ(CasterBvh(boxes).inFrustum(wide), std::vector<std::uint32_t>{0});
+}
+
 // The hierarchy gives each frustum and range the brute-force answer, box for box: 600 boxes of mixed sizes (some
 // straddling many views), 200 views from random places in random directions.
 TEST(CasterBvhTest, ListsAreTheBruteForceOnes)
@@ -129,6 +147,13 @@ TEST(CasterBvhTest, ListsAreTheBruteForceOnes)
         const CasterVolume volume = frustumVolume(view, fov, nearPlane, range);
         EXPECT_EQ(bvh.inFrustum(volume), expected) << "view " << v;
         EXPECT_EQ(bvh.anyInFrustum(volume), !expected.empty()) << "view " << v;
+        // A camera's view, wider or narrower than high, against casterInVolume box by box.
+        const CasterVolume camera = frustumVolume(view, fov, 0.5f + 1.5f * size(random), nearPlane, range);
+        std::vector<std::uint32_t> inCamera;
+        for (std::uint32_t i = 0; i < boxes.size(); ++i)
+            if (casterInVolume(boxes[i], camera))
+                inCamera.push_back(i);
+        EXPECT_EQ(bvh.inFrustum(camera), inCamera) << "view " << v;
         listed += expected.size();
         const bool inRange = std::any_of(boxes.begin(), boxes.end(), [&](const Bounds& b) {
             const glm::vec3 nearest = glm::clamp(eye, b.min, b.max);

@@ -11,6 +11,7 @@
 #include "penumbra/shaders/ShaderBlock.hpp"
 
 #include "graph/FrameGraph.hpp"
+#include "graph/PassBarriers.hpp"
 #include "graph/TransientSlots.hpp"
 
 #include <array>
@@ -530,7 +531,8 @@ TEST_F(FrameGraphTest, BufferWriterIsCulledUnlessItsBufferIsRead)
 }
 
 // The frame's own buffers are resources of its graph: the caster culling pass writes the instance lists and indirect
-// draws that the atlas passes read, the depth reduction writes the histogram the renderer reads after the frame.
+// draws that the atlas passes read, the view culling pass those that the prepass and the lit pass read, the depth
+// reduction writes the histogram the renderer reads after the frame.
 TEST_F(FrameGraphTest, CulledCastersAndTheDepthHistogramAreFrameBuffers)
 {
     const scene::Scene scene = scenes::makeShadowTestScene();
@@ -539,13 +541,72 @@ TEST_F(FrameGraphTest, CulledCastersAndTheDepthHistogramAreFrameBuffers)
     desc.shadows.culling = shadows::CasterCullingMode::Gpu;
     desc.shadows.directional.projection = shadows::CascadeProjection::DepthFit;
     const render::FrameStats stats = renderer.render(scene.camera, desc);
-    EXPECT_EQ(passNames(stats), (std::vector<std::string>{"caster culling", "directional atlas", "local atlas",
-                                                          "depth prepass", "lit", "depth reduction"}));
+    EXPECT_EQ(passNames(stats), (std::vector<std::string>{"caster culling", "view culling", "directional atlas",
+                                                          "local atlas", "depth prepass", "lit", "depth reduction"}));
     const std::string dot = renderer.frameGraphDot();
-    for (const std::string_view buffer : {frame::kCulledInstances, frame::kCulledDraws})
+    for (const std::string_view buffer :
+         {frame::kCulledInstances, frame::kCulledDraws, frame::kViewCulledInstances, frame::kViewCulledDraws})
         EXPECT_NE(dot.find(fmt::format("[shape=cylinder, label=\"{}\"]", buffer)), std::string::npos) << dot;
     EXPECT_NE(dot.find("[shape=cylinder, label=\"depth histogram\", peripheries=2]"), std::string::npos) << dot;
     EXPECT_NE(dot.find("label=\"indirect read\""), std::string::npos) << dot;
+}
+
+// Objects that stand for a frame's textures and buffers in PassBarriers' tests.
+struct BarrierObjects {
+    int a = 0, b = 0, c = 0;
+};
+using rhi::ResourceState;
+
+// A compute pass writes two buffers that two later passes read: the first reader's barrier makes both visible (one
+// glMemoryBarrier, where llvmpipe finishes every one); the second reader declares its buffer again, unchanged.
+TEST(PassBarriers, ReadsOfShaderWritesJoinTheFirstWait)
+{
+    const BarrierObjects o;
+    const std::vector<std::vector<render::StateChange>> barriers = render::passBarriers({
+        {{&o.a, ResourceState::ShaderWrite}, {&o.b, ResourceState::ShaderWrite}},
+        {{&o.a, ResourceState::IndirectArgument}, {&o.a, ResourceState::VertexBuffer}},
+        {{&o.c, ResourceState::RenderTarget}},
+        {{&o.b, ResourceState::VertexBuffer}},
+    });
+    using Changes = std::vector<render::StateChange>;
+    ASSERT_EQ(barriers.size(), 4u);
+    EXPECT_EQ(barriers[1], (Changes{{&o.a, ResourceState::ShaderWrite,
+                                     ResourceState::IndirectArgument | ResourceState::VertexBuffer},
+                                    {&o.b, ResourceState::ShaderWrite, ResourceState::VertexBuffer}}));
+    EXPECT_EQ(barriers[2], (Changes{{&o.c, ResourceState::Undefined, ResourceState::RenderTarget}}));
+    EXPECT_EQ(barriers[3], (Changes{{&o.b, ResourceState::VertexBuffer, ResourceState::VertexBuffer}}));
+}
+
+// A barrier moves no further forward than its object's next use: a buffer written again in between is read after the
+// second write's own barrier.
+TEST(PassBarriers, AnObjectUsedInBetweenWaitsForItsNextUse)
+{
+    const BarrierObjects o;
+    const std::vector<std::vector<render::StateChange>> barriers = render::passBarriers({
+        {{&o.a, ResourceState::ShaderWrite}, {&o.b, ResourceState::ShaderWrite}},
+        {{&o.a, ResourceState::ShaderRead}},
+        {{&o.b, ResourceState::ShaderWrite}},
+        {{&o.b, ResourceState::VertexBuffer}},
+    });
+    using Changes = std::vector<render::StateChange>;
+    EXPECT_EQ(barriers[1], (Changes{{&o.a, ResourceState::ShaderWrite, ResourceState::ShaderRead},
+                                    {&o.b, ResourceState::ShaderWrite, ResourceState::ShaderWrite}}));
+    EXPECT_EQ(barriers[2], (Changes{{&o.b, ResourceState::ShaderWrite, ResourceState::ShaderWrite}}));
+    EXPECT_EQ(barriers[3], (Changes{{&o.b, ResourceState::ShaderWrite, ResourceState::VertexBuffer}}));
+}
+
+// A pass that waits on no shader write takes no later pass's barrier: each reader waits where it reads.
+TEST(PassBarriers, PassWithoutAWaitTakesNone)
+{
+    const BarrierObjects o;
+    const std::vector<std::vector<render::StateChange>> barriers = render::passBarriers({
+        {{&o.a, ResourceState::ShaderWrite}},
+        {{&o.c, ResourceState::RenderTarget}},
+        {{&o.a, ResourceState::VertexBuffer}},
+    });
+    using Changes = std::vector<render::StateChange>;
+    EXPECT_EQ(barriers[1], (Changes{{&o.c, ResourceState::Undefined, ResourceState::RenderTarget}}));
+    EXPECT_EQ(barriers[2], (Changes{{&o.a, ResourceState::ShaderWrite, ResourceState::VertexBuffer}}));
 }
 
 // Transient textures of one kind share a slot where their passes do not overlap, and keep their slots from frame to

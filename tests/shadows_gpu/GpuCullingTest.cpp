@@ -7,6 +7,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Image.hpp"
+#include "penumbra/scene/ViewFrustum.hpp"
 #include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/shadows/GpuCasterCulling.hpp"
 #include "penumbra/shadows/DirectionalShadowPass.hpp"
@@ -168,6 +169,42 @@ TEST_F(GpuCullingTest, ListsMatchThePlanner)
     std::vector<std::vector<std::uint32_t>> replanned, split;
     cullBoth([](auto&, auto&) {}, replanned, split, 2);
     EXPECT_EQ(split, planned);
+}
+
+// The camera's view as a volume (the lit objects' culling, GpuViewCulling): the GPU keeps the boxes the CPU's
+// casterInVolume and the lit draws' scene::ViewFrustum keep, and the 16:9 view keeps cubes at its sides that a square
+// one of the same height does not.
+TEST_F(GpuCullingTest, CameraViewListsMatchTheCpu)
+{
+    const scene::Scene scene = culledScene();
+    render::SceneRenderer renderer(*device, scene);
+    const scene::Camera& camera = scene.camera;
+    const float aspect = 16.0f / 9.0f;
+    const std::vector<shadows::CasterVolume> volumes{shadows::frustumVolume(camera.view(), camera.fovY, aspect,
+                                                                            camera.nearPlane, camera.farPlane),
+                                                     shadows::frustumVolume(camera.view(), camera.fovY, 1.0f,
+                                                                            camera.nearPlane, camera.farPlane)};
+    const std::vector<shadows::ShadowCaster>& casters = renderer.gpuScene().casters();
+    const std::vector<shadows::Bounds>& bounds = renderer.gpuScene().casterBounds();
+    shadows::GpuCasterCulling culling(*device);
+    auto commands = device->createCommandList();
+    culling.record(*commands, casters, bounds, volumes, true);
+    device->submit(*commands);
+    const std::vector<std::vector<std::uint32_t>> culled = culling.readLists();
+    const scene::ViewFrustum frustum(camera, aspect);
+    std::vector<std::vector<std::uint32_t>> expected(2);
+    std::vector<std::uint32_t> shown;
+    for (std::uint32_t i = 0; i < bounds.size(); ++i) {
+        for (std::size_t v = 0; v < volumes.size(); ++v)
+            if (shadows::casterInVolume(bounds[i], volumes[v]))
+                expected[v].push_back(i);
+        if (frustum.mayShow({bounds[i].min, bounds[i].max}))
+            shown.push_back(i);
+    }
+    EXPECT_EQ(culled, expected);
+    EXPECT_EQ(culled[0], shown);
+    EXPECT_GT(culled[0].size(), culled[1].size());
+    EXPECT_LT(culled[0].size(), bounds.size()) << "some cubes lie out of view";
 }
 
 // The comparison sees a caster dropped (its box moved far away) and a wrong bounds test (a cascade's square shrunk).

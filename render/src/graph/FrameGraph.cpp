@@ -1,12 +1,12 @@
 #include "FrameGraph.hpp"
 
+#include "PassBarriers.hpp"
 #include "TransientSlots.hpp"
 
 #include "penumbra/rhi/Error.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
-#include <unordered_set>
 
 namespace penumbra::render {
 namespace {
@@ -347,11 +347,11 @@ void FrameGraph::execute(rhi::CommandList& commands)
         timestamps_ = device_.createTimestampQueries(queries);
     if (timestamps_)
         commands.writeTimestamp(*timestamps_, 0);
-    std::unordered_map<const void*, rhi::ResourceState> states; // what the frame's passes left them in
+    const std::vector<std::vector<rhi::ResourceBarrier>> barriers = timedBarriers();
     for (std::size_t i = 0; i < timed_.size(); ++i) {
         const FramePassContext context(*this, timed_[i], commands);
         commands.pushLabel(passes_[timed_[i]].name);
-        recordBarriers(commands, i, states);
+        commands.resourceBarriers(barriers[i]);
         passes_[timed_[i]].pass->execute(context);
         commands.popLabel();
         if (timestamps_)
@@ -359,58 +359,36 @@ void FrameGraph::execute(rhi::CommandList& commands)
     }
 }
 
-void FrameGraph::recordBarriers(rhi::CommandList& commands, std::size_t timed,
-                                std::unordered_map<const void*, rhi::ResourceState>& states) const
+std::vector<std::vector<rhi::ResourceBarrier>> FrameGraph::timedBarriers() const
 {
-    const auto key = [](const rhi::ResourceBarrier& b) {
-        return b.texture ? static_cast<const void*>(b.texture) : static_cast<const void*>(b.buffer);
-    };
-    std::vector<rhi::ResourceBarrier> barriers;
-    const auto add = [&](rhi::ResourceBarrier barrier) {
-        const auto same = std::find_if(barriers.begin(), barriers.end(),
-                                       [&](const rhi::ResourceBarrier& b) { return key(b) == key(barrier); });
-        if (same == barriers.end())
-            barriers.push_back(barrier);
-        else
-            same->after |= barrier.after;
-    };
-    const auto addUse = [&](const Use& use, const auto& wanted) {
-        const Resource& resource = resources_[use.resource];
-        const rhi::ResourceState after = graphUseState(use.use);
-        if (resource.texture && wanted(resource.texture))
-            add(rhi::ResourceBarrier::of(*resource.texture, states[resource.texture], after));
-        for (const rhi::Buffer* buffer : resource.buffers)
-            if (wanted(buffer))
-                add(rhi::ResourceBarrier::of(*buffer, states[buffer], after));
-    };
-    for (const Use& use : passes_[timed_[timed]].uses)
-        addUse(use, [](const void*) { return true; });
-    // Where this pass waits on a shader write anyway, the later passes' waits on other shader writes join it, each
-    // texture's and buffer's at its next use (nothing uses it in between; transient textures may share one): one
-    // barrier instead of one per reading pass, which matters where a driver makes each a whole finish (llvmpipe's
-    // glMemoryBarrier). Batching the barriers a graph derives: O'Donnell, "FrameGraph: Extensible Rendering
-    // Architecture in Frostbite", GDC 2017.
-    const bool waitsOnShaderWrites = std::any_of(barriers.begin(), barriers.end(), [](const rhi::ResourceBarrier& b) {
-        return rhi::hasFlag(b.before, rhi::ResourceState::ShaderWrite);
-    });
-    std::unordered_set<const void*> used; // by this pass and those after it so far
-    for (std::size_t later = timed; waitsOnShaderWrites && later < timed_.size(); ++later) {
-        const std::vector<Use>& uses = passes_[timed_[later]].uses;
-        if (later > timed)
-            for (const Use& use : uses)
-                addUse(use, [&](const void* object) {
-                    return !used.contains(object) && rhi::hasFlag(states[object], rhi::ResourceState::ShaderWrite);
-                });
-        for (const Use& use : uses) {
+    std::vector<std::vector<ObjectUse>> uses;
+    std::unordered_map<const void*, rhi::ResourceBarrier> objects; // each texture and buffer, as a barrier names it
+    for (const std::size_t pass : timed_) {
+        std::vector<ObjectUse>& passUses = uses.emplace_back();
+        for (const Use& use : passes_[pass].uses) {
             const Resource& resource = resources_[use.resource];
-            if (resource.texture)
-                used.insert(resource.texture);
-            used.insert(resource.buffers.begin(), resource.buffers.end());
+            const rhi::ResourceState state = graphUseState(use.use);
+            if (resource.texture) {
+                passUses.push_back({resource.texture, state});
+                objects.try_emplace(resource.texture, rhi::ResourceBarrier{.texture = resource.texture});
+            }
+            for (const rhi::Buffer* buffer : resource.buffers) {
+                passUses.push_back({buffer, state});
+                objects.try_emplace(buffer, rhi::ResourceBarrier{.buffer = buffer});
+            }
         }
     }
-    for (const rhi::ResourceBarrier& b : barriers)
-        states[key(b)] = b.after;
-    commands.resourceBarriers(barriers);
+    std::vector<std::vector<rhi::ResourceBarrier>> barriers;
+    for (const std::vector<StateChange>& changes : passBarriers(uses)) {
+        std::vector<rhi::ResourceBarrier>& batch = barriers.emplace_back();
+        for (const StateChange& change : changes) {
+            rhi::ResourceBarrier barrier = objects.at(change.object);
+            barrier.before = change.before;
+            barrier.after = change.after;
+            batch.push_back(barrier);
+        }
+    }
+    return barriers;
 }
 
 std::vector<PassTiming> FrameGraph::timings()

@@ -95,10 +95,9 @@ private:
     // The declared resource of that name; throws rhi::Error where the pass did not declare it or it is not a buffer
     // (a texture).
     const Resource& declared(std::size_t pass, std::string_view resource, bool buffer) const;
-    // The uses of pass timed_[timed] as RHI states, merged per texture and buffer (transient textures may share one),
-    // moving each from the state the frame's earlier passes left it in (`states`, updated).
-    void recordBarriers(rhi::CommandList& commands, std::size_t timed,
-                        std::unordered_map<const void*, rhi::ResourceState>& states) const;
+    // The barriers before each pass of timed_ (passBarriers): its uses as RHI states, merged per texture and buffer
+    // (transient textures may share one), each moving from the state the frame's earlier passes left it in.
+    std::vector<std::vector<rhi::ResourceBarrier>> timedBarriers() const;
     const rhi::Framebuffer& framebuffer(std::size_t pass, std::initializer_list<std::string_view> colors,
                                         std::string_view depth);
 

@@ -30,11 +30,25 @@ inline constexpr std::string_view kDepthReductionPass = "depth reduction";
 inline constexpr std::string_view kResolvePass = "msaa resolve";
 inline constexpr std::string_view kCascadeViewPass = "cascade view";
 inline constexpr std::string_view kVisibilityViewPass = "visibility view";
-inline constexpr std::array kPasses{
-    kSkinningPass,         kStaticMapsPass,         kCasterCullingPass,  kViewCullingPass, kLightClusterPass, kDirectionalStaticTilesPass,
-    kDirectionalAtlasPass, kLocalStaticTilesPass,   kLocalAtlasPass,     kDepthPrepass,     kSingleSampledDepthPrepass,
-    kReceiverPrepass,      kScreenSpaceShadowsPass, kContactShadowsPass, kLitPass,          kDepthReductionPass,
-    kResolvePass,          kCascadeViewPass,        kVisibilityViewPass};
+inline constexpr std::array kPasses{kSkinningPass,
+                                    kStaticMapsPass,
+                                    kCasterCullingPass,
+                                    kViewCullingPass,
+                                    kLightClusterPass,
+                                    kDirectionalStaticTilesPass,
+                                    kDirectionalAtlasPass,
+                                    kLocalStaticTilesPass,
+                                    kLocalAtlasPass,
+                                    kDepthPrepass,
+                                    kSingleSampledDepthPrepass,
+                                    kReceiverPrepass,
+                                    kScreenSpaceShadowsPass,
+                                    kContactShadowsPass,
+                                    kLitPass,
+                                    kDepthReductionPass,
+                                    kResolvePass,
+                                    kCascadeViewPass,
+                                    kVisibilityViewPass};
 
 // Textures. The lit image, the atlases and the views are the frame's outputs (SceneRenderer's accessors read them).
 inline constexpr std::string_view kLitImage = "lit image"; // RGBA8 sRGB-encoded, single-sampled

@@ -15,9 +15,10 @@
 namespace penumbra::shadows {
 
 // What one shadow view's casters are tested against: a perspective frustum (a spot light, a point light's face; the
-// camera's view, where the lit objects are culled on the GPU) or a cascade's light box, with the culling bias of the previous cascade (a sphere for the stable fit, a frustum slice for
-// the close fit). The planner culls with casterInVolume; the GPU culling pass (shaders/caster_culling.comp) reads the
-// same struct and mirrors it, line for line, so both give the same lists.
+// camera's view, where the lit objects are culled on the GPU) or a cascade's light box, with the culling bias of the
+// previous cascade (a sphere for the stable fit, a frustum slice for the close fit). The planner culls with
+// casterInVolume; the GPU culling pass (shaders/caster_culling.comp) reads the same struct and mirrors it, line for
+// line, so both give the same lists.
 enum class CasterVolumeKind : std::int32_t {
     Frustum = 0, // a box meets the frustum unless all its corners lie outside one plane
     Cascade = 1, // the light box of a cascade without culling bias (the first cascade)
