@@ -21,8 +21,8 @@ std::vector<std::vector<StateChange>> passBarriers(const std::vector<std::vector
     for (std::size_t pass = 0; pass < passes.size(); ++pass) {
         std::vector<StateChange>& batch = barriers[pass];
         const auto add = [&](const ObjectUse& use) {
-            const auto same = std::find_if(batch.begin(), batch.end(),
-                                           [&](const StateChange& c) { return c.object == use.object; });
+            const auto same =
+                std::find_if(batch.begin(), batch.end(), [&](const StateChange& c) { return c.object == use.object; });
             if (same == batch.end())
                 batch.push_back({use.object, states[use.object], use.state});
             else

@@ -113,9 +113,13 @@ void recordLitDraw(rhi::CommandList& commands, const GpuScene& gpuScene, const L
                               draw.instanceCount);
         return;
     }
-    // The draw's firstInstance places its instances in the view's range; a group without any in view draws none.
+    // The draw's firstInstance places its instances in the view's range; a group without any in view draws none. In
+    // the counted form, as the atlas passes draw: Mesa 22.3's llvmpipe and lavapipe drew nothing for the uncounted
+    // form of the same arguments in some views (cli.render-gltf-materials-gpu-culling;
+    // docs/notes/2026-12-07-view-culling.md).
     gpuScene.bindWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding, draw.instances);
-    commands.drawIndexedIndirect(draw.culling->draws(), draw.culling->drawOffset(0, draw.batch));
+    commands.drawIndexedIndirectCount(draw.culling->draws(), draw.culling->drawOffset(0, draw.batch),
+                                      draw.culling->drawCounts(), draw.culling->countOffset(0, draw.batch), 1);
 }
 
 } // namespace penumbra::render
