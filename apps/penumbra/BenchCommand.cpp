@@ -126,7 +126,7 @@ void addBenchCommand(CLI::App& app)
         "otherAtlasPassMs, litPassMs, frameMs, casterDraws, ...}]}; with --scene {\"scene\": "
         "[{configuration, frames, frameMs, frameMsMin, frameMsMax, passes: {depth, directionalAtlas, "
         "otherAtlas, screenSpaceShadows, lit, resolve, reference, staticAtlas, contactShadows, depthFit, "
-        "casterCulling, lightClusters}, culling, clusterBuild, cpuFrameMs, litOverReference, ...}]}");
+        "casterCulling, lightClusters, viewCulling}, culling, clusterBuild, cpuFrameMs, litOverReference, ...}]}");
 
     // Any scene's frames: the options of `render`, each meaningful only with --scene.
     addSceneOptions(*bench, scene->scene);

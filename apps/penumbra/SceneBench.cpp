@@ -125,7 +125,8 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             ms(frame::kContactShadowsPass),
             ms(frame::kDepthReductionPass),
             ms(frame::kCasterCullingPass),
-            ms(frame::kLightClusterPass)};
+            ms(frame::kLightClusterPass),
+            ms(frame::kViewCullingPass)};
 }
 
 // "bench vulkan: frame 12/20", redrawn on one line of stderr.

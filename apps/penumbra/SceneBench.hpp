@@ -26,10 +26,11 @@ struct SceneBenchOptions {
 // that depth fit and contact shadows read under MSAA), the directional and the local atlas, the screen-space shadows,
 // the lit pass, the resolve, and the minimal reference lit pass (timed in a frame of its own, which the frame times
 // leave out); then the static shadow maps drawn in the frame (drawn first, listed last to keep the older names'
-// order), the contact shadows' march, the depth fit's reduction and the GPU caster culling pass (--culling gpu).
+// order), the contact shadows' march, the depth fit's reduction, the GPU caster culling pass (--culling gpu), the
+// light cluster build and the GPU view culling pass (--culling gpu with instancing).
 inline constexpr const char* kBenchPassNames[] = {
-    "depth",     "directionalAtlas", "otherAtlas",     "screenSpaceShadows", "lit",           "resolve",
-    "reference", "staticAtlas",      "contactShadows", "depthFit",           "casterCulling", "lightClusters"};
+    "depth",       "directionalAtlas", "otherAtlas", "screenSpaceShadows", "lit",           "resolve",    "reference",
+    "staticAtlas", "contactShadows",   "depthFit",   "casterCulling",      "lightClusters", "viewCulling"};
 
 // Prints a table per light count and returns {"scene": [one object per light count and configuration: configuration,
 // scene, lights (the --lights count or null), width, height,

@@ -238,8 +238,8 @@ TEST_F(GpuCullingTest, PicturesMatchCpuCulling)
     EXPECT_GT(gpu.stats.casterDraws, 0u);
 }
 
-// The lit pass's instances stay resident with GPU culling (render/src/passes/LitInstances.hpp): after a cube moved the
-// next frame is still CPU culling's, byte for byte.
+// The lit objects stay resident with GPU culling, culled against the view on the GPU
+// (render/src/passes/GpuViewCulling): after a cube moved the next frame is still CPU culling's, byte for byte.
 TEST_F(GpuCullingTest, MovedObjectMatchesCpuCulling)
 {
     scene::Scene scene = culledScene();
