@@ -12,8 +12,7 @@
 #include "graph/FrameGraph.hpp"
 #include "passes/ContactShadowPass.hpp"
 #include "passes/FrameState.hpp"
-#include "passes/CasterCullingPass.hpp"
-#include "passes/ViewCullingPass.hpp"
+#include "passes/CullingPasses.hpp"
 #include "passes/LightClusterPass.hpp"
 #include "passes/DepthFitPasses.hpp"
 #include "passes/DepthPrepass.hpp"
@@ -382,8 +381,8 @@ void SceneRenderer::buildGraph(const FrameDesc& frame)
     const auto add = [&](std::unique_ptr<FramePass> pass) { framePasses_.push_back(std::move(pass)); };
     add(std::make_unique<SkinningPass>(*skinning_));
     add(std::make_unique<StaticMapsPass>(state, *staticShadows_));
-    add(std::make_unique<CasterCullingPass>(state));
-    add(std::make_unique<ViewCullingPass>(state));
+    add(std::make_unique<CullingPass>(state, CullingPass::Kind::Casters));
+    add(std::make_unique<CullingPass>(state, CullingPass::Kind::View));
     add(std::make_unique<LightClusterPass>(state));
     add(std::make_unique<StaticTilesPass>(state, *directionalStaticTiles_, StaticTilesPass::Atlas::Directional));
     add(std::make_unique<DirectionalAtlasPass>(state, shadowPass_, plan_));

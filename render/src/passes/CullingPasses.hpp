@@ -16,18 +16,24 @@ void prepareCasterCulling(shadows::GpuCasterCulling& culling, std::span<const sh
                           const GpuScene& scene, const shadows::DirectionalShadowPlan& plan,
                           const shadows::LocalShadowPlan& localPlan);
 
-// ShadowSettings::culling gpu: every caster tested against every tile's volume in one dispatch, whose instance lists
-// and indirect draws (frame::kCulledInstances, kCulledDraws) the atlas passes draw (FrameState::culling). The planner
-// leaves those tiles' lists empty; cube-map faces stay culled by the planner.
-class CasterCullingPass final : public FramePass {
+// ShadowSettings::culling gpu: a culling's dispatches (FrameState::culling or viewCulling), whose instance lists and
+// indirect draws later passes draw. Casters: every caster tested against every tile's volume, whose lists
+// (frame::kCulledInstances, kCulledDraws) the atlas passes draw; the planner leaves those tiles' lists empty, and
+// cube-map faces stay culled by the planner. View (with instancing): the opaque lit objects against the camera's view
+// (GpuViewCulling), whose lists (frame::kViewCulledInstances, kViewCulledDraws) the prepasses and the lit passes draw.
+class CullingPass final : public FramePass {
 public:
-    explicit CasterCullingPass(const FrameState& state) : state_(state) {}
+    enum class Kind { Casters, View };
+    CullingPass(const FrameState& state, Kind kind) : state_(state), kind_(kind) {}
     std::string name() const override;
     bool setup(FramePassBuilder& builder) override;
     void execute(const FramePassContext& context) override;
 
 private:
+    shadows::GpuCasterCulling* culling() const;
+
     const FrameState& state_;
+    Kind kind_;
 };
 
 } // namespace penumbra::render

@@ -1,4 +1,4 @@
-#include "CasterCullingPass.hpp"
+#include "CullingPasses.hpp"
 
 #include "penumbra/render/FrameResources.hpp"
 #include "penumbra/shadows/DirectionalShadowPass.hpp"
@@ -21,17 +21,26 @@ void prepareCasterCulling(shadows::GpuCasterCulling& culling, std::span<const sh
     culling.prepare(casters, scene.casterBounds(), volumes, normalMatrices, &scene.casterChanges());
 }
 
-std::string CasterCullingPass::name() const { return std::string(frame::kCasterCullingPass); }
-
-bool CasterCullingPass::setup(FramePassBuilder& builder)
+shadows::GpuCasterCulling* CullingPass::culling() const
 {
-    if (!state_.culling)
+    return kind_ == Kind::Casters ? state_.culling : state_.viewCulling;
+}
+
+std::string CullingPass::name() const
+{
+    return std::string(kind_ == Kind::Casters ? frame::kCasterCullingPass : frame::kViewCullingPass);
+}
+
+bool CullingPass::setup(FramePassBuilder& builder)
+{
+    if (!culling())
         return false;
-    builder.write(frame::kCulledInstances, ResourceUse::StorageWrite);
-    builder.write(frame::kCulledDraws, ResourceUse::StorageWrite);
+    const bool casters = kind_ == Kind::Casters;
+    builder.write(casters ? frame::kCulledInstances : frame::kViewCulledInstances, ResourceUse::StorageWrite);
+    builder.write(casters ? frame::kCulledDraws : frame::kViewCulledDraws, ResourceUse::StorageWrite);
     return true;
 }
 
-void CasterCullingPass::execute(const FramePassContext& context) { state_.culling->dispatch(context.commands()); }
+void CullingPass::execute(const FramePassContext& context) { culling()->dispatch(context.commands()); }
 
 } // namespace penumbra::render
