@@ -9,7 +9,7 @@
 namespace penumbra::shadows {
 namespace {
 
-// The uniform block at binding 0; the storage blocks follow it, at bindings 1 to 8.
+// The uniform block at binding 0; the storage blocks follow it (bindingOf).
 constexpr std::uint32_t kTilesBinding = 0;
 constexpr std::array kCullingTilesFields{PENUMBRA_SHADER_FIELD(CullingTiles, casterCount),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, tileCount),
@@ -22,7 +22,7 @@ constexpr std::array kCullingTilesFields{PENUMBRA_SHADER_FIELD(CullingTiles, cas
 constexpr shaders::ShaderStruct kCullingTilesBlock{"CullingTiles", sizeof(CullingTiles), kCullingTilesFields};
 static_assert(shaders::matchesLayout(kCullingTilesBlock, shaders::BlockLayout::Std140));
 
-// The pass's storage blocks, at bindings 1 to 8 in this order. Every member name is distinct across the blocks:
+// The pass's storage blocks' members. Every member name is distinct across the blocks:
 // Mesa's GLSL compiler (22.3) takes an unsized array for another block's member of the same name and refuses to
 // index it.
 constexpr std::array kCullingCastersFields{
@@ -37,23 +37,36 @@ constexpr std::array kCulledDrawCountsFields{shaders::runtimeArrayField<std::uin
 constexpr std::array kCullingOrderFields{shaders::runtimeArrayField<std::uint32_t>("order", 0)};
 constexpr std::array kCullingMarksFields{shaders::runtimeArrayField<std::uint32_t>("bits", 0)};
 
-// A block, its instance name and access, in binding order.
+// The storage blocks, in binding order: block b at binding kTilesBinding + 1 + b.
+enum CullingBlockIndex : std::uint32_t { kCasters, kTransforms, kInstances, kIndices, kDraws, kCounts, kOrder, kMarks };
+constexpr std::uint32_t bindingOf(CullingBlockIndex block) { return kTilesBinding + 1 + block; }
+
+// A block, its place, instance name and access.
 struct CullingBlock {
+    CullingBlockIndex index;
     shaders::ShaderStruct block;
     std::string_view instance;
     shaders::BlockAccess access;
 };
 constexpr std::array kCullingBlocks{
-    CullingBlock{{"CullingCasters", 0, kCullingCastersFields}, "casterList", shaders::BlockAccess::ReadOnly},
-    CullingBlock{{"InstanceTransforms", 0, kInstanceTransformsFields}, "source", shaders::BlockAccess::ReadOnly},
-    CullingBlock{{"CulledInstances", 0, kCulledInstancesFields}, "culled", shaders::BlockAccess::WriteOnly},
-    CullingBlock{{"CulledIndices", 0, kCulledIndicesFields}, "culledIndices", shaders::BlockAccess::WriteOnly},
-    CullingBlock{{"CulledDraws", 0, kCulledDrawsFields}, "draws", shaders::BlockAccess::ReadWrite},
-    CullingBlock{{"CulledDrawCounts", 0, kCulledDrawCountsFields}, "drawCounts", shaders::BlockAccess::ReadWrite},
-    CullingBlock{{"CullingOrder", 0, kCullingOrderFields}, "casterOrder", shaders::BlockAccess::ReadOnly},
-    CullingBlock{{"CullingMarks", 0, kCullingMarksFields}, "marks", shaders::BlockAccess::ReadWrite},
+    CullingBlock{kCasters, {"CullingCasters", 0, kCullingCastersFields}, "casterList", shaders::BlockAccess::ReadOnly},
+    CullingBlock{
+        kTransforms, {"InstanceTransforms", 0, kInstanceTransformsFields}, "source", shaders::BlockAccess::ReadOnly},
+    CullingBlock{kInstances, {"CulledInstances", 0, kCulledInstancesFields}, "culled", shaders::BlockAccess::WriteOnly},
+    CullingBlock{
+        kIndices, {"CulledIndices", 0, kCulledIndicesFields}, "culledIndices", shaders::BlockAccess::WriteOnly},
+    CullingBlock{kDraws, {"CulledDraws", 0, kCulledDrawsFields}, "draws", shaders::BlockAccess::ReadWrite},
+    CullingBlock{
+        kCounts, {"CulledDrawCounts", 0, kCulledDrawCountsFields}, "drawCounts", shaders::BlockAccess::ReadWrite},
+    CullingBlock{kOrder, {"CullingOrder", 0, kCullingOrderFields}, "casterOrder", shaders::BlockAccess::ReadOnly},
+    CullingBlock{kMarks, {"CullingMarks", 0, kCullingMarksFields}, "marks", shaders::BlockAccess::ReadWrite},
 };
-constexpr std::uint32_t kOrderBinding = kTilesBinding + 7, kMarksBinding = kTilesBinding + 8;
+static_assert([] {
+    for (std::uint32_t i = 0; i < kCullingBlocks.size(); ++i)
+        if (kCullingBlocks[i].index != i)
+            return false;
+    return kCullingBlocks.size() == kMarks + 1;
+}());
 
 // Tile t's bits of the marks: one per slot, in 32-bit words, two for each workgroup of 64 of the first dispatch.
 std::uint32_t markWords(std::uint32_t tileSlots) { return (tileSlots + 63) / 64 * 2; }
@@ -70,10 +83,8 @@ std::string cullingBlocksGlsl()
                                    static_cast<int>(CasterVolumeKind::CascadeBeyondSphere),
                                    static_cast<int>(CasterVolumeKind::CascadeBeyondSlice), kCullingTilesPerDispatch);
     text += shaders::uniformBlockGlsl(kCullingTilesBlock, kTilesBinding, "tiles");
-    for (std::uint32_t i = 0; i < kCullingBlocks.size(); ++i) {
-        const CullingBlock& b = kCullingBlocks[i];
-        text += shaders::storageBlockGlsl(b.block, kTilesBinding + 1 + i, b.instance, b.access);
-    }
+    for (const CullingBlock& b : kCullingBlocks)
+        text += shaders::storageBlockGlsl(b.block, bindingOf(b.index), b.instance, b.access);
     return text;
 }
 
@@ -335,15 +346,18 @@ void GpuCasterCulling::dispatch(rhi::CommandList& commands)
              {&test, static_cast<const rhi::ComputePipeline*>(listsPipeline_.get())}) {
             commands.bindComputePipeline(*pipeline);
             commands.bindUniformBuffer(kTilesBinding, *volumes_, g * blockBytes_, sizeof(CullingTiles));
-            commands.bindStorageBuffer(1, *casters_, 0, scratch_.casters.size() * sizeof(CullingCaster));
-            commands.bindStorageBuffer(2, *transforms_, 0, scratch_.transforms.size() * sizeof(InstanceTransform));
-            commands.bindStorageBuffer(3, *instances_, slots * sizeof(InstanceTransform),
+            commands.bindStorageBuffer(bindingOf(kCasters), *casters_, 0,
+                                       scratch_.casters.size() * sizeof(CullingCaster));
+            commands.bindStorageBuffer(bindingOf(kTransforms), *transforms_, 0,
+                                       scratch_.transforms.size() * sizeof(InstanceTransform));
+            commands.bindStorageBuffer(bindingOf(kInstances), *instances_, slots * sizeof(InstanceTransform),
                                        groupSlots * sizeof(InstanceTransform));
-            commands.bindStorageBuffer(4, *indices_, slots * sizeof(std::uint32_t), groupSlots * sizeof(std::uint32_t));
-            commands.bindStorageBuffer(5, *draws_, 0, draws.size() * sizeof(CulledDraw));
-            commands.bindStorageBuffer(6, *counts_, 0, draws.size() * sizeof(std::uint32_t));
-            commands.bindStorageBuffer(kOrderBinding, *order_, 0, casterCount_ * sizeof(std::uint32_t));
-            commands.bindStorageBuffer(kMarksBinding, *marks_, 0,
+            commands.bindStorageBuffer(bindingOf(kIndices), *indices_, slots * sizeof(std::uint32_t),
+                                       groupSlots * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(bindingOf(kDraws), *draws_, 0, draws.size() * sizeof(CulledDraw));
+            commands.bindStorageBuffer(bindingOf(kCounts), *counts_, 0, draws.size() * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(bindingOf(kOrder), *order_, 0, casterCount_ * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(bindingOf(kMarks), *marks_, 0,
                                        std::uint64_t(tileCount_) * markWords(tileSlots_) * sizeof(std::uint32_t));
             const std::uint32_t groupSize = test.workgroupSize()[0];
             commands.dispatch(pipeline == &test ? (casterCount_ + groupSize - 1) / groupSize : count);
