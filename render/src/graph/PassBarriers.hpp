@@ -24,7 +24,8 @@ struct StateChange {
 // Undefined): a change per object a pass uses, its uses' states merged. Where a pass waits on a shader write anyway
 // (a change out of ShaderWrite), the later passes' waits on other shader writes join it, each object's at its next use
 // (nothing uses it in between): one barrier instead of one per reading pass, which matters where a driver makes each a
-// whole finish (llvmpipe's glMemoryBarrier). The pass that then uses the object still declares it, with no change.
+// whole finish (Mesa's llvmpipe: llvmpipe_memory_barrier calls llvmpipe_finish, src/gallium/drivers/llvmpipe/
+// lp_texture.c). The pass that then uses the object still declares it, with no change.
 // Batching the barriers a graph derives: O'Donnell, "FrameGraph: Extensible Rendering Architecture in Frostbite", GDC
 // 2017.
 std::vector<std::vector<StateChange>> passBarriers(const std::vector<std::vector<ObjectUse>>& passes);

@@ -58,8 +58,6 @@ void GpuViewCulling::prepare(const GpuScene& gpuScene, const scene::Camera& came
 void GpuViewCulling::appendDraws(const GpuScene& gpuScene, rhi::UniformArena& uniforms,
                                  std::vector<LitDraw>& draws) const
 {
-    if (objects_.empty())
-        return;
     const scene::Scene& scene = gpuScene.scene();
     const shadows::InstanceBatches& batches = culling_.batches();
     for (std::uint32_t b = 0; b < batches.batches.size(); ++b) {

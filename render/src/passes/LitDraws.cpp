@@ -114,9 +114,9 @@ void recordLitDraw(rhi::CommandList& commands, const GpuScene& gpuScene, const L
         return;
     }
     // The draw's firstInstance places its instances in the view's range; a group without any in view draws none. In
-    // the counted form, as the atlas passes draw: Mesa 22.3's llvmpipe and lavapipe drew nothing for the uncounted
-    // form of the same arguments in some views (cli.render-gltf-materials-gpu-culling;
-    // docs/notes/2026-12-07-view-culling.md).
+    // the counted form, as the atlas passes draw: on Mesa 22.3 (llvmpipe and lavapipe) the uncounted form of the same
+    // arguments drew nothing in some views, while the RHI's tests of it pass; the cause is not traced
+    // (cli.render-gltf-materials-gpu-culling; docs/notes/2026-12-07-view-culling.md).
     gpuScene.bindWithMaps(commands, object, kLitMaterialMapBinding, kLitCoverageMapBinding, draw.instances);
     commands.drawIndexedIndirectCount(draw.culling->draws(), draw.culling->drawOffset(0, draw.batch),
                                       draw.culling->drawCounts(), draw.culling->countOffset(0, draw.batch), 1);

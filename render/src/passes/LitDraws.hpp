@@ -20,8 +20,8 @@ struct LitDraw {
     std::uint32_t object = 0; // the first instance's object, whose mesh and material every instance shares
     std::uint32_t instanceCount = 0;
     rhi::UniformSlice uniforms; // LitObjectUniforms (shaders/lit.glsl, Object)
-    rhi::BufferSlice instances; // a shadows::InstanceTransform per instance
-    const shadows::GpuCasterCulling* culling = nullptr;
+    rhi::BufferSlice instances; // a shadows::InstanceTransform per instance (with `culling`: its whole list)
+    const shadows::GpuCasterCulling* culling = nullptr; // the view's culling, whose draw of `batch` this is; or none
     std::uint32_t batch = 0;
 };
 

@@ -94,8 +94,11 @@ struct FrameStats {
     // commands (render()'s work up to the submission, which then runs them).
     double planningMs = 0.0;
     double recordingMs = 0.0;
-    std::uint32_t depthPrepassDraws = 0; // issued by the depth prepass (the receiver prepass of ScreenSpace too)
-    std::uint32_t litDraws = 0; // issued by the lit pass (without the cascade and visibility views)
+    // Draws issued by the depth prepass (the receiver prepass of ScreenSpace too) and by the lit pass (without the
+    // cascade and visibility views); with the view culled on the GPU, every lit draw group's indirect draw, in view
+    // or not.
+    std::uint32_t depthPrepassDraws = 0;
+    std::uint32_t litDraws = 0;
     std::uint32_t casterDraws = 0; // issued into the directional atlas
     std::uint32_t casterDrawsWithoutCullingBias = 0; // casters overlapping each cascade's light box
     std::uint32_t localCasterDraws = 0; // issued into the spot and point shadows
