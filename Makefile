@@ -85,8 +85,9 @@ bench-static: build
 			--frames 10 --warmup 2 --json out/bench-static-$$mode.json || exit 1; done
 
 # On a machine with a hardware Vulkan and EGL driver: the GPU tests of every configuration and the benchmarks (bench,
-# bench-forest) in under 8 minutes, out/device-check/report.{md,json} with the device, the driver, every failure and
-# each figure (scripts/device-check.sh; DEVICE_CHECK_BASELINE=report.json puts an earlier run's figures beside).
+# bench-forest, the culling bench) in under 8 minutes, out/device-check/report.{md,json} with the device, the driver,
+# every failure and each figure (scripts/device-check.sh; DEVICE_CHECK_BASELINE=report.json puts an earlier run's
+# figures beside), and issue 44's culling targets on stdout.
 # `make test` runs its quick mode on lavapipe and llvmpipe (ctest device-check.quick).
 device-check: build
 	@./scripts/device-check.sh --build $(BUILD) --out out/device-check \

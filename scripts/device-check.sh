@@ -82,17 +82,27 @@ fi
 stage tests $([ $quick = 1 ] && echo 60 || echo 300) \
     xargs -P "$(nproc)" -I{} sh -c "PENUMBRA_TEST_OUTPUT=$out/test-output {} >/dev/null 2>&1 || true" <"$runs"
 
-# The benchmarks: `make bench` and `make bench-forest` (quick: a few draws and one frame of the test scene).
+# The benchmarks: `make bench`, `make bench-forest` and the culling bench, 10 000 cubes culled on the GPU and on the
+# CPU, and 100 000 on the GPU for the CPU time per frame (quick: a few draws, one frame of the test scene, one
+# GPU-culled frame of the cubes).
 if [ $quick = 1 ]; then
     stage bench 30 "$penumbra" bench -s draws -n 100 --min-time 0.01 -c vulkan opengl --json "$out/bench.json"
     stage bench-scene 30 "$penumbra" bench --scene test --backend vulkan,opengl --frames 1 --warmup 0 \
         --json "$out/bench-scene.json"
+    stage bench-culling-gpu 30 "$penumbra" bench --scene cubes --size 160x90 --backend vulkan,opengl --frames 1 \
+        --warmup 0 --culling gpu --json "$out/bench-culling-gpu.json"
 else
     stage bench 120 "$penumbra" bench --json "$out/bench.json"
     for tiles in 2048 4096; do
         stage bench-forest-$tiles 90 "$penumbra" bench --scene forest --backend vulkan,opengl --frames 10 \
             --warmup 2 --settings "$root/scripts/bench/forest-$tiles-tiles.json" --json "$out/bench-forest-$tiles.json"
     done
+    for culling in gpu cpu; do
+        stage bench-culling-$culling 60 "$penumbra" bench --scene cubes --size 160x90 --backend vulkan,opengl \
+            --frames 9 --warmup 1 --culling $culling --json "$out/bench-culling-$culling.json"
+    done
+    stage bench-culling-100k 90 "$penumbra" bench --scene cubes-100k --size 160x90 --backend vulkan,opengl \
+        --frames 3 --warmup 1 --culling gpu --json "$out/bench-culling-100k.json"
 fi
 
 python3 - "$out" "$quick" "$(($(date +%s) - started))" "$baseline" <<'EOF'
@@ -204,6 +214,21 @@ with open(os.path.join(out, "report.md"), "w") as md:
 print(f"device-check ({report['mode']}): {', '.join(hardware) or 'no hardware device'}"
       f"{' (software: ' + ', '.join(software) + ')' if software else ''}")
 print(f"  tests: {tests} run, {len(failures)} failed; benchmarks: {len(benchmarks)} figures; {seconds} s")
+# Issue 44's targets: the GPU-culled frame no slower than the CPU path's at 10 000 cubes, and the CPU time per frame.
+def scene_runs(name):
+    path = os.path.join(out, f"bench-{name}.json")
+    try:
+        return {run["configuration"]: run for run in json.load(open(path)).get("scene", [])}
+    except (OSError, ValueError):
+        return {}
+gpu, cpu = ({}, {}) if quick else (scene_runs("culling-gpu"), scene_runs("culling-cpu"))
+for configuration, run in gpu.items():
+    line = f"  culling, 10 000 cubes, {configuration}: GPU-culled frame {run['frameMs']:.2f} ms"
+    if configuration in cpu:
+        line += f", over the CPU path's {run['frameMs'] / cpu[configuration]['frameMs']:.3f}"
+    print(line + f"; cpuFrameMs {run['cpuFrameMs']:.2f}")
+for configuration, run in scene_runs("culling-100k").items():
+    print(f"  culling, 100 000 cubes, {configuration}: cpuFrameMs {run['cpuFrameMs']:.2f}")
 for f in failures[:10]:
     print(f"  FAILED {f['test']}")
 print(f"  report: {os.path.join(out, 'report.md')}")
