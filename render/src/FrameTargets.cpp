@@ -150,14 +150,14 @@ void SceneRenderer::importResources(const FrameDesc& frame)
     applicationPasses_->importResources(graph);
     if (state.posedVertices)
         graph.importBuffers(frame::kPosedVertices, skinning_->posedVertices());
-    if (state.culling) {
-        graph.importBuffer(frame::kCulledInstances, state.culling->instances());
-        graph.importBuffers(frame::kCulledDraws, {&state.culling->draws(), &state.culling->drawCounts()});
-    }
-    if (state.viewCulling) {
-        graph.importBuffer(frame::kViewCulledInstances, state.viewCulling->instances());
-        graph.importBuffers(frame::kViewCulledDraws, {&state.viewCulling->draws(), &state.viewCulling->drawCounts()});
-    }
+    const auto importCulled = [&](const shadows::GpuCasterCulling* culling, const CulledBuffers& buffers) {
+        if (!culling)
+            return;
+        graph.importBuffer(buffers.instances, culling->instances());
+        graph.importBuffers(buffers.draws, {&culling->draws(), &culling->drawCounts()});
+    };
+    importCulled(state.culling, kCulledCasters);
+    importCulled(state.viewCulling, kViewCulled);
     if (state.depthFit)
         graph.importBuffer(frame::kDepthHistogram, depthReduction_->histogram(), true);
 }

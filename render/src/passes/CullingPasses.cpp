@@ -35,9 +35,9 @@ bool CullingPass::setup(FramePassBuilder& builder)
 {
     if (!culling())
         return false;
-    const bool casters = kind_ == Kind::Casters;
-    builder.write(casters ? frame::kCulledInstances : frame::kViewCulledInstances, ResourceUse::StorageWrite);
-    builder.write(casters ? frame::kCulledDraws : frame::kViewCulledDraws, ResourceUse::StorageWrite);
+    const CulledBuffers& written = kind_ == Kind::Casters ? kCulledCasters : kViewCulled;
+    builder.write(written.instances, ResourceUse::StorageWrite);
+    builder.write(written.draws, ResourceUse::StorageWrite);
     return true;
 }
 

@@ -18,9 +18,9 @@ void prepareCasterCulling(shadows::GpuCasterCulling& culling, std::span<const sh
 
 // ShadowSettings::culling gpu: a culling's dispatches (FrameState::culling or viewCulling), whose instance lists and
 // indirect draws later passes draw. Casters: every caster tested against every tile's volume, whose lists
-// (frame::kCulledInstances, kCulledDraws) the atlas passes draw; the planner leaves those tiles' lists empty, and
-// cube-map faces stay culled by the planner. View (with instancing): the opaque lit objects against the camera's view
-// (GpuViewCulling), whose lists (frame::kViewCulledInstances, kViewCulledDraws) the prepasses and the lit passes draw.
+// (kCulledCasters) the atlas passes draw; the planner leaves those tiles' lists empty, and cube-map faces stay culled
+// by the planner. View (with instancing): the opaque lit objects against the camera's view (GpuViewCulling), whose
+// lists (kViewCulled) the prepasses and the lit passes draw.
 class CullingPass final : public FramePass {
 public:
     enum class Kind { Casters, View };

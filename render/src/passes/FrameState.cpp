@@ -16,6 +16,12 @@ bool isStaticCaster(const std::vector<std::uint32_t>& staticCasters, std::uint32
     return std::binary_search(staticCasters.begin(), staticCasters.end(), caster);
 }
 
+void readCulled(FramePassBuilder& builder, const CulledBuffers& buffers)
+{
+    builder.read(buffers.instances, ResourceUse::VertexRead);
+    builder.read(buffers.draws, ResourceUse::IndirectRead);
+}
+
 } // namespace
 
 SplitTiles splitStaticCasters(ShadowPlans& plans, const std::vector<std::uint32_t>& staticCasters)
@@ -99,19 +105,15 @@ void readPosedVertices(FramePassBuilder& builder, const FrameState& state)
 
 void readCulledCasters(FramePassBuilder& builder, const FrameState& state)
 {
-    if (!state.culling)
-        return;
-    builder.read(frame::kCulledInstances, ResourceUse::VertexRead);
-    builder.read(frame::kCulledDraws, ResourceUse::IndirectRead);
+    if (state.culling)
+        readCulled(builder, kCulledCasters);
 }
 
 void readLitDraws(FramePassBuilder& builder, const FrameState& state)
 {
     readPosedVertices(builder, state);
-    if (!state.viewCulling)
-        return;
-    builder.read(frame::kViewCulledInstances, ResourceUse::VertexRead);
-    builder.read(frame::kViewCulledDraws, ResourceUse::IndirectRead);
+    if (state.viewCulling)
+        readCulled(builder, kViewCulled);
 }
 
 } // namespace penumbra::render

@@ -3,6 +3,7 @@
 #include "LitDraws.hpp"
 
 #include "penumbra/render/FramePass.hpp"
+#include "penumbra/render/FrameResources.hpp"
 #include "penumbra/render/LitUniforms.hpp"
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Device.hpp"
@@ -46,6 +47,15 @@ void readLocalLights(FramePassBuilder& builder);
 struct FrameState;
 // For a pass that draws the scene's meshes: declares the posed vertices' read where the frame has them.
 void readPosedVertices(FramePassBuilder& builder, const FrameState& state);
+// The buffers a GPU culling pass writes and later passes draw: per-instance vertices, and indexed indirect draws with
+// their counts.
+struct CulledBuffers {
+    std::string_view instances;
+    std::string_view draws;
+};
+inline constexpr CulledBuffers kCulledCasters{frame::kCulledInstances, frame::kCulledDraws};
+inline constexpr CulledBuffers kViewCulled{frame::kViewCulledInstances, frame::kViewCulledDraws};
+
 // For an atlas pass: declares the caster culling pass's results' reads where the frame culls on the GPU.
 void readCulledCasters(FramePassBuilder& builder, const FrameState& state);
 // For a pass that draws the lit draws (FrameState::litDraws): readPosedVertices, and the view culling pass's results'

@@ -14,12 +14,11 @@ void GpuViewCulling::rebuild(const GpuScene& gpuScene)
     listedAs_.assign(scene.objects.size(), kNotListed);
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         const scene::Object& object = scene.objects[i];
-        if (object.castShadows == scene::ShadowCasting::ShadowsOnly)
-            continue;
-        if (scene.materialOf(object).blend) {
+        const LitRole role = litRole(scene, object);
+        if (role == LitRole::Blended)
             blended_.push_back(i);
+        if (role != LitRole::Opaque)
             continue;
-        }
         listedAs_[i] = static_cast<std::uint32_t>(objects_.size());
         objects_.push_back(i);
         instances_.push_back({.vertices = &gpuScene.vertices(object.mesh),

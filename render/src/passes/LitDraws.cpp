@@ -20,6 +20,13 @@ constexpr std::uint32_t kNoObject = 0xffffffffu;
 
 } // namespace
 
+LitRole litRole(const scene::Scene& scene, const scene::Object& object)
+{
+    if (object.castShadows == scene::ShadowCasting::ShadowsOnly)
+        return LitRole::None;
+    return scene.materialOf(object).blend ? LitRole::Blended : LitRole::Opaque;
+}
+
 LitObjectUniforms litObjectUniforms(const scene::Scene& scene, const scene::Object& object)
 {
     const scene::Material& material = scene.materialOf(object);
@@ -65,15 +72,15 @@ std::vector<LitDraw> litDraws(const GpuScene& gpuScene, const glm::vec3& camera,
     } else {
         for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
             const scene::Object& object = scene.objects[i];
-            if (object.castShadows == scene::ShadowCasting::ShadowsOnly)
+            const LitRole role = litRole(scene, object);
+            if (role == LitRole::None)
                 continue;
-            const bool blend = scene.materialOf(object).blend;
-            if (!blend && group(i) != shadows::kNoDrawGroup) {
+            if (role == LitRole::Opaque && group(i) != shadows::kNoDrawGroup) {
                 firstOfGroup.resize(std::max<std::size_t>(firstOfGroup.size(), group(i) + 1), kNoObject);
                 firstOfGroup[group(i)] = std::min(firstOfGroup[group(i)], i);
             }
             if (frustum.mayShow(object.worldBounds))
-                (blend ? blended : opaque).push_back(i);
+                (role == LitRole::Blended ? blended : opaque).push_back(i);
         }
     }
     const auto distance2 = [&](std::uint32_t i) {

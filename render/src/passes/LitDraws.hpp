@@ -41,6 +41,11 @@ std::vector<LitDraw> litDraws(const GpuScene& scene, const glm::vec3& camera, co
 // Binds the draw's material maps (kLitMaterialMapBinding, kLitCoverageMapBinding), mesh and instances, and draws it.
 void recordLitDraw(rhi::CommandList& commands, const GpuScene& scene, const LitDraw& draw);
 
+// How the lit pass and the depth prepass draw an object: not at all (shadows only), as an opaque surface (also
+// alpha-tested: depth-tested, batched by lit draw group) or blended (back to front, not in the prepass).
+enum class LitRole { None, Opaque, Blended };
+LitRole litRole(const scene::Scene& scene, const scene::Object& object);
+
 // The block of an object's lit draw (the same for every object of its lit draw group).
 LitObjectUniforms litObjectUniforms(const scene::Scene& scene, const scene::Object& object);
 
