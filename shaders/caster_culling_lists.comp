@@ -77,11 +77,7 @@ void main()
         barrier();
         for (uint rank = lane; rank < runCount; rank += 64u) {
             const uint caster = casterOrder.order[runPlaces[rank]];
-            culled.instances[listBase + placed + rank].model = source.transforms[caster].model;
-            // Without normal matrices the caster shader selects the position that does not read them
-            // (shadow_caster.vert), so they are left as they were: a masked copy costs llvmpipe a third of one done.
-            if (tiles.normalMatrices != 0u)
-                culled.instances[listBase + placed + rank].normalColumns = source.transforms[caster].normalColumns;
+            culled.instances[listBase + placed + rank] = source.transforms[caster];
             culledIndices.indices[listBase + placed + rank] = caster;
         }
         placed += runCount;

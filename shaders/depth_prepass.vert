@@ -19,5 +19,5 @@ void main()
     vUv = inUv;
     vUv1 = inUv1;
     vColor = inColor;
-    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel, inPosition);
+    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel(), inPosition);
 }

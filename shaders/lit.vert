@@ -20,14 +20,14 @@ layout(location = 5) out vec4 vColor;
 
 void main()
 {
-    const vec3 world = transformPoint(instanceModel, inPosition).xyz;
+    const vec3 world = transformPoint(instanceModel(), inPosition).xyz;
     vPosition = world;
     vNormal = instanceNormalMatrix() * inNormal;
     vUv = inUv;
     vUv1 = inUv1;
     // Tangents follow the surface (the model matrix); a mirroring one reverses cross(normal, tangent), so the
     // handedness takes its sign.
-    vTangent = vec4(mat3(instanceModel) * inTangent.xyz, inTangent.w * instanceHandedness());
+    vTangent = vec4(mat3(instanceModel()) * inTangent.xyz, inTangent.w * instanceHandedness());
     vColor = inColor;
-    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel, inPosition);
+    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel(), inPosition);
 }

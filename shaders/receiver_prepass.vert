@@ -18,9 +18,9 @@ layout(location = 5) out vec4 vColor;
 
 void main()
 {
-    vPosition = transformPoint(instanceModel, inPosition).xyz;
+    vPosition = transformPoint(instanceModel(), inPosition).xyz;
     vUv = inUv;
     vUv1 = inUv1;
     vColor = inColor;
-    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel, inPosition);
+    gl_Position = cameraClipPosition(frame.viewProjection, instanceModel(), inPosition);
 }

@@ -15,7 +15,7 @@ layout(location = 2) out vec2 vUv;
 
 void main()
 {
-    const vec3 world = transformPoint(instanceModel, inPosition).xyz;
+    const vec3 world = transformPoint(instanceModel(), inPosition).xyz;
     vPosition = world;
     vNormal = instanceNormalMatrix() * inNormal;
     vUv = inUv;

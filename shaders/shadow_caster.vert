@@ -22,7 +22,7 @@ layout(location = 0) out vec2 vUv;
 // caster draw.
 vec4 casterClip()
 {
-    const vec3 world = transformPoint(instanceModel, inPosition).xyz;
+    const vec3 world = transformPoint(instanceModel(), inPosition).xyz;
     const vec4 plain = transformPoint(draw.viewProjection, world);
     const vec3 normal = normalize(instanceNormalMatrix() * inNormal);
     const bool positional = draw.light.w > 0.5;

@@ -80,6 +80,13 @@ void validateObject(const Scene& scene, const Object& object, std::size_t index)
     if (object.material >= scene.materials.size())
         throw SceneError(fmt::format("{}: material {} does not exist (the scene has {} materials)", what,
                                      object.material, scene.materials.size()));
+    // The renderer keeps an instance's first three rows only (shadows::InstanceTransform).
+    const glm::vec4 lastRow(object.transform[0][3], object.transform[1][3], object.transform[2][3],
+                            object.transform[3][3]);
+    if (lastRow != glm::vec4(0.0f, 0.0f, 0.0f, 1.0f))
+        throw SceneError(fmt::format("{}: the transform's last row is ({}, {}, {}, {}); object transforms are affine, "
+                                     "their last row (0, 0, 0, 1)",
+                                     what, lastRow.x, lastRow.y, lastRow.z, lastRow.w));
     if (!sameBounds(object.worldBounds, scene.meshes[object.mesh].bounds.transformed(object.transform)))
         throw SceneError(fmt::format("{}: worldBounds do not match mesh {} under the object's transform (stale bounds)",
                                      what, object.mesh));

@@ -17,7 +17,6 @@ constexpr std::array kCullingTilesFields{PENUMBRA_SHADER_FIELD(CullingTiles, cas
                                          PENUMBRA_SHADER_FIELD(CullingTiles, firstTile),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, tileSlots),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, markWords),
-                                         PENUMBRA_SHADER_FIELD(CullingTiles, normalMatrices),
                                          PENUMBRA_SHADER_STRUCT_FIELD(CullingTiles, volumes, kCasterVolumeStruct)};
 constexpr shaders::ShaderStruct kCullingTilesBlock{"CullingTiles", sizeof(CullingTiles), kCullingTilesFields};
 static_assert(shaders::matchesLayout(kCullingTilesBlock, shaders::BlockLayout::Std140));
@@ -181,14 +180,14 @@ void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t volumeBytes,
 
 void GpuCasterCulling::record(rhi::CommandList& commands, std::span<const ShadowCaster> casters,
                               std::span<const Bounds> bounds, std::span<const CasterVolume> volumes,
-                              bool normalMatrices, const CasterChanges* changes)
+                              const CasterChanges* changes)
 {
-    prepare(casters, bounds, volumes, normalMatrices, changes);
+    prepare(casters, bounds, volumes, changes);
     dispatch(commands);
 }
 
 void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
-                               std::span<const CasterVolume> volumes, bool normalMatrices, const CasterChanges* changes)
+                               std::span<const CasterVolume> volumes, const CasterChanges* changes)
 {
     if (casters.size() != bounds.size())
         throw rhi::Error(
@@ -199,8 +198,7 @@ void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<
     uploaded_.clear();
     // The casters changed since those in storage were uploaded, where storage holds this list's.
     std::optional<std::vector<CasterRange>> changed;
-    if (changes && resident_ && resident_->generation && resident_->casters == casterCount_ &&
-        resident_->normalMatrices == normalMatrices)
+    if (changes && resident_ && resident_->generation && resident_->casters == casterCount_)
         changed = changes->since(resident_->generation);
     if (!changed) {
         resident_.reset();
@@ -213,7 +211,7 @@ void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<
     }
     if (casterCount_ == 0 || tileCount_ == 0)
         return;
-    // A tile's slots start at a multiple of the binding offset alignment in both lists (4 and 112 bytes a slot).
+    // A tile's slots start at a multiple of the binding offset alignment in both lists (4 and 48 bytes a slot).
     const rhi::Capabilities& caps = device_.capabilities();
     tileSlots_ = static_cast<std::uint32_t>(roundUp(casterCount_, std::max(caps.storageBufferOffsetAlignment / 4, 1u)));
     const std::uint64_t tileBytes = std::uint64_t(tileSlots_) * sizeof(InstanceTransform);
@@ -223,20 +221,19 @@ void GpuCasterCulling::prepare(std::span<const ShadowCaster> casters, std::span<
                                      "(--culling cpu) or draw fewer casters",
                                      casterCount_, tileBytes >> 20, caps.maxStorageBufferRange >> 20));
     if (changed) {
-        fillChanged(casters, bounds, normalMatrices, *changed);
+        fillChanged(casters, bounds, *changed);
         uploaded_ = std::move(*changed);
     } else {
-        fillCasters(casters, bounds, normalMatrices);
+        fillCasters(casters, bounds);
         uploaded_ = {{0, casterCount_}};
     }
     fillDraws(casters);
-    uploadTiles(volumes, normalMatrices);
-    resident_ = Resident{changes ? std::optional(changes->generation()) : std::nullopt, casterCount_, normalMatrices};
+    uploadTiles(volumes);
+    resident_ = Resident{changes ? std::optional(changes->generation()) : std::nullopt, casterCount_};
 }
 
 // The casters' boxes, batches and transforms as the pass reads them.
-void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
-                                   bool normalMatrices)
+void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds)
 {
     std::vector<CullingCaster>& culling = scratch_.casters;
     std::vector<InstanceTransform>& transforms = scratch_.transforms;
@@ -253,20 +250,19 @@ void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::s
                                              "(mesh, material or sides)",
                                              batches_.items[batch.first], i, first.drawGroup));
             culling[i] = {glm::vec4(bounds[i].min, 0.0f), glm::vec4(bounds[i].max, 0.0f)};
-            transforms[i] = normalMatrices ? instanceTransform(casters[i].model) : InstanceTransform{casters[i].model};
+            transforms[i] = instanceTransform(casters[i].model);
         }
     }
 }
 
 void GpuCasterCulling::fillChanged(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
-                                   bool normalMatrices, std::span<const CasterRange> changed)
+                                   std::span<const CasterRange> changed)
 {
     for (const CasterRange& range : changed)
         for (std::uint32_t i = range.first; i < range.first + range.count; ++i) {
             scratch_.casters[i].boundsMin = glm::vec4(bounds[i].min, 0.0f);
             scratch_.casters[i].boundsMax = glm::vec4(bounds[i].max, 0.0f);
-            scratch_.transforms[i] =
-                normalMatrices ? instanceTransform(casters[i].model) : InstanceTransform{casters[i].model};
+            scratch_.transforms[i] = instanceTransform(casters[i].model);
         }
 }
 
@@ -293,7 +289,7 @@ void GpuCasterCulling::uploadCasters()
 // One dispatch per group of tiles whose instance ranges fit one storage binding and whose volumes fit one
 // CullingTiles (all tiles in one, unless there are more than 64 or the device's storage range is short of them); each
 // group reads its own CullingTiles in the tiles buffer.
-void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes, bool normalMatrices)
+void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
 {
     const rhi::Capabilities& caps = device_.capabilities();
     const std::uint64_t tileBytes = std::uint64_t(tileSlots_) * sizeof(InstanceTransform);
@@ -327,7 +323,6 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes, bool n
         block.firstTile = first;
         block.tileSlots = tileSlots_;
         block.markWords = markWords(tileSlots_);
-        block.normalMatrices = normalMatrices ? 1 : 0;
         std::copy_n(volumes.begin() + first, count, block.volumes.begin());
         groupTests_.push_back(&testPipeline(volumeKinds(volumes.subspan(first, count))));
         volumes_->writeObject(block, g * blockBytes_);

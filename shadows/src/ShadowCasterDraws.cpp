@@ -40,16 +40,14 @@ ShadowCasterUniforms casterUniforms(const ShadowViewDraw& view, const ShadowCast
     return u;
 }
 
-// The instances of one batch. Only the caster-side normal offset reads the normal matrix (the shader selects the
-// plain position otherwise), so it is inverted only then.
+// The instances of one batch.
 std::vector<InstanceTransform> batchInstances(std::span<const std::uint32_t> batch,
-                                              std::span<const ShadowCaster> casters, bool normalOffset)
+                                              std::span<const ShadowCaster> casters)
 {
     std::vector<InstanceTransform> instances;
     instances.reserve(batch.size());
     for (const std::uint32_t index : batch)
-        instances.push_back(normalOffset ? instanceTransform(casters[index].model)
-                                         : InstanceTransform{casters[index].model});
+        instances.push_back(instanceTransform(casters[index].model));
     return instances;
 }
 
@@ -163,7 +161,7 @@ std::uint32_t ShadowCasterDraws::draw(rhi::CommandList& commands, rhi::Format de
                                 "material or sides)",
                                 index, other, caster.drawGroup));
         bindBatch(commands, pipelines, view, caster, index, bound);
-        const std::vector<InstanceTransform> instances = batchInstances(batch, casters, view.normalOffset.reach > 0.0f);
+        const std::vector<InstanceTransform> instances = batchInstances(batch, casters);
         const rhi::BufferSlice instanceSlice = instances_.push(std::as_bytes(std::span(instances)));
         commands.bindVertexBuffer(kInstanceSlot, *instanceSlice.buffer, instanceSlice.offset);
         commands.drawIndexed(caster.indexCount, batchRange.count);

@@ -77,6 +77,15 @@ TEST(SceneTest, StaleWorldBoundsAreRejected)
     EXPECT_NE(message.find("stale"), std::string::npos) << message;
 }
 
+TEST(SceneTest, ProjectiveTransformsAreRejected)
+{
+    Scene scene = twoObjectScene();
+    scene.objects[1].transform[2][3] = -1.0f;
+    const std::string message = validationMessage(scene);
+    EXPECT_NE(message.find("object 1 ('raised box')"), std::string::npos) << message;
+    EXPECT_NE(message.find("last row is (0, 0, -1, 1)"), std::string::npos) << message;
+}
+
 TEST(SceneTest, BrokenMeshIndicesAndLightsAreRejected)
 {
     Scene scene = twoObjectScene();

@@ -53,19 +53,16 @@ TEST(InstanceBatchesTest, RunsKeepTheOrder)
     EXPECT_EQ(b.batches, (std::vector<Batch>{{0, 2}, {2, 1}, {3, 1}, {4, 1}, {5, 1}}));
 }
 
-TEST(InstanceTransformTest, NormalColumnsAreTheInverseTransposeWithTheHandedness)
+TEST(InstanceTransformTest, RowsAreTheModelsFirstThreeRows)
 {
     const glm::mat4 model =
         glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)), 0.7f, glm::vec3(0, 1, 0)),
                    glm::vec3(2.0f, -1.0f, 0.5f));
     const InstanceTransform t = instanceTransform(model);
-    EXPECT_EQ(t.model, model);
-    const glm::mat3 expected = glm::transpose(glm::inverse(glm::mat3(model)));
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r)
-            EXPECT_NEAR(t.normalColumns[c][r], expected[c][r], 1e-6f) << c << ", " << r;
-    EXPECT_EQ(t.normalColumns[0].w, -1.0f); // one negative scale mirrors
-    EXPECT_EQ(instanceTransform(glm::mat4(1.0f)).normalColumns[0].w, 1.0f);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c)
+            EXPECT_EQ(t.rows[r][c], model[c][r]) << r << ", " << c;
+    EXPECT_EQ(InstanceTransform{}.rows, instanceTransform(glm::mat4(1.0f)).rows);
 }
 
 } // namespace

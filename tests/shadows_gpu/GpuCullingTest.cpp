@@ -69,7 +69,7 @@ protected:
         fault(volumes, bounds);
         shadows::GpuCasterCulling culling(*device, tilesPerDispatch);
         auto commands = device->createCommandList();
-        culling.record(*commands, casters, bounds, volumes, false);
+        culling.record(*commands, casters, bounds, volumes);
         device->submit(*commands);
         culled = culling.readLists();
     }
@@ -104,7 +104,7 @@ protected:
             for (const shadows::ShadowTileDraw& tile : shadows::DirectionalShadowPass::tileDraws(plans.directional))
                 volumes.push_back(tile.volume);
             auto commands = device->createCommandList();
-            target.record(*commands, gpuScene.casters(), gpuScene.casterBounds(), volumes, false, changes);
+            target.record(*commands, gpuScene.casters(), gpuScene.casterBounds(), volumes, changes);
             device->submit(*commands);
         };
         MovedCaster result;
@@ -189,7 +189,7 @@ TEST_F(GpuCullingTest, CameraViewListsMatchTheCpu)
     const std::vector<shadows::Bounds>& bounds = renderer.gpuScene().casterBounds();
     shadows::GpuCasterCulling culling(*device);
     auto commands = device->createCommandList();
-    culling.record(*commands, casters, bounds, volumes, true);
+    culling.record(*commands, casters, bounds, volumes);
     device->submit(*commands);
     const std::vector<std::vector<std::uint32_t>> culled = culling.readLists();
     const scene::ViewFrustum frustum(camera, aspect);

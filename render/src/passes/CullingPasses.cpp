@@ -11,14 +11,11 @@ void prepareCasterCulling(shadows::GpuCasterCulling& culling, std::span<const sh
                           const shadows::LocalShadowPlan& localPlan)
 {
     std::vector<shadows::CasterVolume> volumes;
-    bool normalMatrices = false;
     for (const std::vector<shadows::ShadowTileDraw>& tiles :
          {shadows::DirectionalShadowPass::tileDraws(plan), shadows::LocalShadowPass::tileDraws(localPlan)})
-        for (const shadows::ShadowTileDraw& tile : tiles) {
+        for (const shadows::ShadowTileDraw& tile : tiles)
             volumes.push_back(tile.volume);
-            normalMatrices |= tile.view.normalOffset.reach > 0.0f;
-        }
-    culling.prepare(casters, scene.casterBounds(), volumes, normalMatrices, &scene.casterChanges());
+    culling.prepare(casters, scene.casterBounds(), volumes, &scene.casterChanges());
 }
 
 shadows::GpuCasterCulling* CullingPass::culling() const

@@ -51,7 +51,7 @@ void GpuViewCulling::prepare(const GpuScene& gpuScene, const scene::Camera& came
     changes_.advance();
     const shadows::CasterVolume view =
         shadows::frustumVolume(camera.view(), camera.fovY, aspect, camera.nearPlane, camera.farPlane);
-    culling_.prepare(instances_, bounds_, {&view, 1}, true, &changes_);
+    culling_.prepare(instances_, bounds_, {&view, 1}, &changes_);
 }
 
 void GpuViewCulling::appendDraws(const GpuScene& gpuScene, rhi::UniformArena& uniforms,

@@ -51,10 +51,10 @@ std::optional<Mobility> parseMobility(std::string_view name);
 // One drawn instance: meshes[mesh] with materials[material], placed by transform.
 // worldBounds = meshes[mesh].bounds.transformed(transform); Scene::addObject fills it and
 // validate() rejects a stale one, because shadow fitting and culling trust it.
-// The transform may be any invertible affine map: normals go through its inverse transpose (the
-// lit pass, the ground truth). A mirroring transform (negative determinant) turns counter-clockwise
-// triangles clockwise, so such an object needs a mesh with reversed winding (the glTF loader
-// makes one) to keep its outside front-facing.
+// The transform may be any invertible affine map (validate() rejects a last row other than
+// (0, 0, 0, 1)): normals go through its inverse transpose (the lit pass, the ground truth). A mirroring transform
+// (negative determinant) turns counter-clockwise triangles clockwise, so such an object needs a mesh with reversed
+// winding (the glTF loader makes one) to keep its outside front-facing.
 struct Object {
     std::string name;
     std::uint32_t mesh = 0;

@@ -35,8 +35,7 @@ static_assert(shaders::matchesLayout(kCullingCasterStruct, shaders::BlockLayout:
 
 // InstanceTransform as a storage element: what the pass copies into each tile's instances.
 inline constexpr std::array kInstanceTransformFields{
-    PENUMBRA_SHADER_FIELD(InstanceTransform, model),
-    PENUMBRA_SHADER_FIELD(InstanceTransform, normalColumns),
+    PENUMBRA_SHADER_FIELD(InstanceTransform, rows),
 };
 inline constexpr shaders::ShaderStruct kInstanceTransformStruct{"InstanceTransform", sizeof(InstanceTransform),
                                                                 kInstanceTransformFields};
@@ -74,7 +73,6 @@ struct alignas(16) CullingTiles {
     std::uint32_t firstTile = 0;
     std::uint32_t tileSlots = 0; // instance slots per tile: the caster count, rounded up for the binding offsets
     std::uint32_t markWords = 0; // words of each tile's bits: two per 64 slots, one pair per first dispatch's workgroup
-    std::uint32_t normalMatrices = 0; // 1: the instances carry their normal matrices
     std::array<CasterVolume, kCullingTilesPerDispatch> volumes;
 };
 static_assert(sizeof(CullingTiles) <= 16384);
@@ -97,19 +95,18 @@ public:
 
     // Uploads the casters, their world boxes (casters[i]'s is bounds[i]) and the tiles' volumes, and makes the
     // buffers the results go to (instances(), draws(), drawCounts() hold from here on, for a frame graph to declare).
-    // `normalMatrices`: the instances carry their normal matrices (the caster-side normal offset reads them). The
-    // casters stay in GPU storage from prepare to prepare: with `changes` (the log of the list the casters come from,
-    // GpuScene::casterChanges) only the casters changed since the last prepare are uploaded again, their models and
-    // boxes; everything is uploaded without it, where changes->since() says all, or where the count or normalMatrices
-    // differ. Throws rhi::Error where the counts differ, for casters of a draw group that do not draw alike, and where
-    // one tile's instances exceed the device's storage range (Capabilities::maxStorageBufferRange).
+    // The casters stay in GPU storage from prepare to prepare: with `changes` (the log of the list the casters come
+    // from, GpuScene::casterChanges) only the casters changed since the last prepare are uploaded again, their models
+    // and boxes; everything is uploaded without it, where changes->since() says all, or where the count differs. Throws
+    // rhi::Error where the counts differ, for casters of a draw group that do not draw alike, and where one tile's
+    // instances exceed the device's storage range (Capabilities::maxStorageBufferRange).
     void prepare(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
-                 std::span<const CasterVolume> volumes, bool normalMatrices, const CasterChanges* changes = nullptr);
+                 std::span<const CasterVolume> volumes, const CasterChanges* changes = nullptr);
     // Records the dispatches of the last prepare() (outside passes).
     void dispatch(rhi::CommandList& commands);
     // prepare(), then dispatch().
     void record(rhi::CommandList& commands, std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
-                std::span<const CasterVolume> volumes, bool normalMatrices, const CasterChanges* changes = nullptr);
+                std::span<const CasterVolume> volumes, const CasterChanges* changes = nullptr);
 
     // The casters the last prepare uploaded (for tests): ascending disjoint ranges.
     const std::vector<CasterRange>& uploaded() const { return uploaded_; }
@@ -130,15 +127,15 @@ public:
 private:
     void reserve(std::uint64_t casters, std::uint64_t volumeBytes, std::uint64_t draws);
     // Every caster's box, batch and transform into the scratch storage.
-    void fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds, bool normalMatrices);
+    void fillCasters(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds);
     // The changed casters' boxes and transforms only (their batches stay).
-    void fillChanged(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds, bool normalMatrices,
+    void fillChanged(std::span<const ShadowCaster> casters, std::span<const Bounds> bounds,
                      std::span<const CasterRange> changed);
     // Every tile's draws, with no instances yet.
     void fillDraws(std::span<const ShadowCaster> casters);
     // The uploaded_ ranges of the casters and transforms.
     void uploadCasters();
-    void uploadTiles(std::span<const CasterVolume> volumes, bool normalMatrices);
+    void uploadTiles(std::span<const CasterVolume> volumes);
 
     rhi::Device& device_;
     // The tests' pipelines, one for each set of volume kinds (VolumeKinds bits) a dispatch's tiles hold, made when
@@ -172,13 +169,11 @@ private:
         std::vector<CulledDraw> draws;
         CullingTiles tiles;
     } scratch_;
-    // What the casters and transforms buffers hold: the generation of the changes they were uploaded at, the count
-    // and whether the transforms carry normal matrices; nullopt before the first upload or after a record that
-    // uploaded nothing.
+    // What the casters and transforms buffers hold: the generation of the changes they were uploaded at and the
+    // count; nullopt before the first upload or after a record that uploaded nothing.
     struct Resident {
         std::optional<std::uint64_t> generation;
         std::uint32_t casters = 0;
-        bool normalMatrices = false;
     };
     std::optional<Resident> resident_;
     std::vector<CasterRange> uploaded_;

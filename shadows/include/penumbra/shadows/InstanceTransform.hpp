@@ -10,26 +10,27 @@
 namespace penumbra::shadows {
 
 // Where one drawn instance of a mesh is: the per-instance vertex data of every pass that draws scene meshes
-// (shaders/instance.glsl), so that one instanced draw places any number of copies of a mesh.
+// (shaders/instance.glsl), so that one instanced draw places any number of copies of a mesh. It holds the model
+// matrix's first three rows; the last is (0, 0, 0, 1), as every affine transform's. The shaders derive the normal
+// matrix from them, so an instance takes 48 bytes to copy, upload and fetch, where the matrix and its normal matrix
+// took 112.
 struct InstanceTransform {
-    glm::mat4 model{1.0f};
-    // The inverse transpose of model's upper 3 x 3, as columns; column 0's w is the sign of det(model) (a mirroring
-    // transform reverses the bitangent).
-    std::array<glm::vec4, 3> normalColumns{glm::vec4(1.0f, 0.0f, 0.0f, 1.0f), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f),
-                                           glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)};
+    std::array<glm::vec4, 3> rows{glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f),
+                                  glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)};
 };
-static_assert(sizeof(InstanceTransform) == 112);
+static_assert(sizeof(InstanceTransform) == 48);
 
+// `model`'s first three rows (its last row is dropped: scene transforms are affine).
 InstanceTransform instanceTransform(const glm::mat4& model);
 
-// The instance's first attribute location: the model matrix takes four from here, the normal columns the next three.
-// After every mesh attribute (scene vertices use locations 0 to 5).
+// The instance's first attribute location: the rows take three from here. After every mesh attribute (scene
+// vertices use locations 0 to 5).
 inline constexpr std::uint32_t kInstanceFirstLocation = 6;
 
 // The vertex buffer slot of the instance transforms in every such pass (the mesh's vertices take slot 0).
 inline constexpr std::uint32_t kInstanceSlot = 1;
 
-// Appends the per-instance buffer (InstanceTransform, advancing once per instance) at `slot` and its seven Float4
+// Appends the per-instance buffer (InstanceTransform, advancing once per instance) at `slot` and its three Float4
 // attributes from kInstanceFirstLocation to `layout`.
 void addInstanceAttributes(rhi::VertexLayout& layout, std::uint32_t slot);
 

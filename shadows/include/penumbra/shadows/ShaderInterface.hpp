@@ -23,8 +23,8 @@ std::string shadowInterfaceGlsl();
 // (ShadowCasterMode) and the caster pass's bindings PENUMBRA_BINDING_CASTER_DRAW, PENUMBRA_BINDING_CASTER_BASE_COLOR.
 std::string casterConstantsGlsl();
 
-// The GLSL include "instance_constants.glsl" of instance.glsl: PENUMBRA_LOCATION_INSTANCE_MODEL and
-// PENUMBRA_LOCATION_INSTANCE_NORMAL, the attribute locations of InstanceTransform (addInstanceAttributes).
+// The GLSL include "instance_constants.glsl" of instance.glsl: PENUMBRA_LOCATION_INSTANCE_ROWS, the first attribute
+// location of InstanceTransform (addInstanceAttributes).
 std::string instanceConstantsGlsl();
 
 } // namespace penumbra::shadows
