@@ -83,24 +83,22 @@ stage tests $([ $quick = 1 ] && echo 60 || echo 300) \
     xargs -P "$(nproc)" -I{} sh -c "PENUMBRA_TEST_OUTPUT=$out/test-output {} >/dev/null 2>&1 || true" <"$runs"
 
 # The benchmarks: `make bench`, `make bench-forest` and the culling bench, 10 000 cubes culled on the GPU and on the
-# CPU, and 100 000 on the GPU for the CPU time per frame (quick: a few draws, one frame of the test scene, one
-# GPU-culled frame of the cubes).
+# CPU in alternated frames of one process (bench --compare-culling), and 100 000 on the GPU for the CPU time per frame
+# (quick: a few draws, one frame of the test scene, one pair of the cubes' frames).
 if [ $quick = 1 ]; then
     stage bench 30 "$penumbra" bench -s draws -n 100 --min-time 0.01 -c vulkan opengl --json "$out/bench.json"
     stage bench-scene 30 "$penumbra" bench --scene test --backend vulkan,opengl --frames 1 --warmup 0 \
         --json "$out/bench-scene.json"
-    stage bench-culling-gpu 30 "$penumbra" bench --scene cubes --size 160x90 --backend vulkan,opengl --frames 1 \
-        --warmup 0 --culling gpu --json "$out/bench-culling-gpu.json"
+    stage bench-culling 30 "$penumbra" bench --scene cubes --size 160x90 --backend vulkan,opengl --frames 1 \
+        --warmup 0 --compare-culling --json "$out/bench-culling.json"
 else
     stage bench 120 "$penumbra" bench --json "$out/bench.json"
     for tiles in 2048 4096; do
         stage bench-forest-$tiles 90 "$penumbra" bench --scene forest --backend vulkan,opengl --frames 10 \
             --warmup 2 --settings "$root/scripts/bench/forest-$tiles-tiles.json" --json "$out/bench-forest-$tiles.json"
     done
-    for culling in gpu cpu; do
-        stage bench-culling-$culling 60 "$penumbra" bench --scene cubes --size 160x90 --backend vulkan,opengl \
-            --frames 9 --warmup 1 --culling $culling --json "$out/bench-culling-$culling.json"
-    done
+    stage bench-culling 90 "$penumbra" bench --scene cubes --size 160x90 --backend vulkan,opengl --frames 40 \
+        --warmup 2 --compare-culling --json "$out/bench-culling.json"
     stage bench-culling-100k 90 "$penumbra" bench --scene cubes-100k --size 160x90 --backend vulkan,opengl \
         --frames 3 --warmup 1 --culling gpu --json "$out/bench-culling-100k.json"
 fi
@@ -215,18 +213,15 @@ print(f"device-check ({report['mode']}): {', '.join(hardware) or 'no hardware de
       f"{' (software: ' + ', '.join(software) + ')' if software else ''}")
 print(f"  tests: {tests} run, {len(failures)} failed; benchmarks: {len(benchmarks)} figures; {seconds} s")
 # Issue 44's targets: the GPU-culled frame no slower than the CPU path's at 10 000 cubes, and the CPU time per frame.
-def scene_runs(name):
+def scene_runs(name, key="scene"):
     path = os.path.join(out, f"bench-{name}.json")
     try:
-        return {run["configuration"]: run for run in json.load(open(path)).get("scene", [])}
+        return {run["configuration"]: run for run in json.load(open(path)).get(key, [])}
     except (OSError, ValueError):
         return {}
-gpu, cpu = ({}, {}) if quick else (scene_runs("culling-gpu"), scene_runs("culling-cpu"))
-for configuration, run in gpu.items():
-    line = f"  culling, 10 000 cubes, {configuration}: GPU-culled frame {run['frameMs']:.2f} ms"
-    if configuration in cpu:
-        line += f", over the CPU path's {run['frameMs'] / cpu[configuration]['frameMs']:.3f}"
-    print(line + f"; cpuFrameMs {run['cpuFrameMs']:.2f}")
+for configuration, run in ({} if quick else scene_runs("culling", "cullingComparison")).items():
+    print(f"  culling, 10 000 cubes, {configuration}: GPU-culled frame {run['gpuFrameMs']:.2f} ms, over the CPU "
+          f"path's {run['gpuOverCpu']:.3f} (paired {run['pairedGpuOverCpu']:.3f}); cpuFrameMs {run['gpuCpuFrameMs']:.2f}")
 for configuration, run in scene_runs("culling-100k").items():
     print(f"  culling, 100 000 cubes, {configuration}: cpuFrameMs {run['cpuFrameMs']:.2f}")
 for f in failures[:10]:

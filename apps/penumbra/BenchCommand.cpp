@@ -1,6 +1,7 @@
 #include "BackendOptions.hpp"
 #include "CallBench.hpp"
 #include "Commands.hpp"
+#include "CullingComparison.hpp"
 #include "Interrupt.hpp"
 #include "SceneBench.hpp"
 #include "ShadowBench.hpp"
@@ -162,14 +163,24 @@ void addBenchCommand(CLI::App& app)
         ->check(CLI::Range(0u, 1000u))
         ->needs(sceneOption)
         ->capture_default_str();
+    auto compareCulling = std::make_shared<bool>(false);
+    bench
+        ->add_flag(
+            "--compare-culling", *compareCulling,
+            "With --scene: alternate GPU-culled and CPU-culled frames (--culling gpu and cpu) in one process per "
+            "configuration and print the GPU-culled frame over the CPU path's; --frames counts the pairs. "
+            "JSON: {\"cullingComparison\": [{configuration, gpuFrameMs, cpuPathFrameMs, gpuOverCpu, "
+            "pairedGpuOverCpu, gpuCpuFrameMs, cpuPathCpuFrameMs, ...}]}")
+        ->needs(sceneOption)
+        ->excludes(bench->get_option("--culling"));
     addValidateFlag(*bench, scene->validate);
-    bench->callback([options, scene, bench] {
+    bench->callback([options, scene, bench, compareCulling] {
         installInterruptHandler();
         if (bench->count("--scene") == 0) {
             runBenchmarks(*options);
             return;
         }
-        const nlohmann::json json = runSceneBench(*scene);
+        const nlohmann::json json = *compareCulling ? runCullingComparison(*scene) : runSceneBench(*scene);
         stopIfInterrupted();
         if (!options->json.empty()) {
             parity::writeTextFile(options->json, json.dump(2) + "\n");

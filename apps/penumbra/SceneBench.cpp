@@ -3,6 +3,7 @@
 #include "penumbra/render/FrameResources.hpp"
 
 #include "BackendOptions.hpp"
+#include "BenchSeries.hpp"
 #include "Interrupt.hpp"
 #include "RenderSettings.hpp"
 
@@ -58,23 +59,6 @@ std::optional<BenchAnimation> benchAnimation(const SceneOptions& options, const 
                           options.time.value_or(0.0f)};
 }
 
-// One series of per-frame figures: milliseconds, or counts.
-struct Series {
-    std::vector<double> values;
-
-    double median() const
-    {
-        if (values.empty())
-            return 0.0;
-        std::vector<double> sorted = values;
-        std::sort(sorted.begin(), sorted.end());
-        const std::size_t n = sorted.size();
-        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-    }
-    double min() const { return values.empty() ? 0.0 : *std::min_element(values.begin(), values.end()); }
-    double max() const { return values.empty() ? 0.0 : *std::max_element(values.begin(), values.end()); }
-};
-
 struct ConfigurationResult {
     std::string configuration;
     Series frame;
@@ -129,15 +113,6 @@ std::array<double, kPasses> passTimes(const render::FrameStats& s, double refere
             ms(frame::kViewCullingPass)};
 }
 
-// "bench vulkan: frame 12/20", redrawn on one line of stderr.
-void showProgress(const std::string& configuration, std::uint32_t done, std::uint32_t total)
-{
-    fmt::print(stderr, "\rbench {}: frame {}/{}", configuration, done, total);
-    if (done == total)
-        fmt::print(stderr, "\n");
-    std::fflush(stderr);
-}
-
 ConfigurationResult benchConfiguration(const std::string& configuration, const scene::Scene& loaded,
                                        const render::FrameDesc& frame, const SceneBenchOptions& options,
                                        const std::optional<shadows::StaticShadowBake>& bake)
@@ -176,7 +151,7 @@ ConfigurationResult benchConfiguration(const std::string& configuration, const s
         reference->setEnabled(true);
         const double referenceMs =
             renderer.render(scene.camera, frame).passMs(render::ReferenceLitPass::kName).value_or(0.0);
-        showProgress(configuration, i + 1, total);
+        showBenchProgress(configuration, i + 1, total);
         if (i < options.warmup)
             continue;
         result.frame.values.push_back(wallMs);
@@ -375,6 +350,14 @@ void benchLights(const SceneBenchOptions& options, nlohmann::json& rows)
 }
 
 } // namespace
+
+void showBenchProgress(const std::string& configuration, std::uint32_t done, std::uint32_t total)
+{
+    fmt::print(stderr, "\rbench {}: frame {}/{}", configuration, done, total);
+    if (done == total)
+        fmt::print(stderr, "\n");
+    std::fflush(stderr);
+}
 
 nlohmann::json runSceneBench(const SceneBenchOptions& options)
 {

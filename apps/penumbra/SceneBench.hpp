@@ -42,4 +42,7 @@ inline constexpr const char* kBenchPassNames[] = {
 // frame does not draw reports 0. Throws rhi::Error for a device that is missing or, with validate, reports a message.
 nlohmann::json runSceneBench(const SceneBenchOptions& options);
 
+// "bench vulkan: frame 12/20", redrawn on one line of stderr.
+void showBenchProgress(const std::string& configuration, std::uint32_t done, std::uint32_t total);
+
 } // namespace penumbra::apps
