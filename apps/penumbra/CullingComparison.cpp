@@ -87,8 +87,8 @@ nlohmann::json runCullingComparison(const SceneBenchOptions& options)
     fmt::print("\n{} at {}x{}: GPU-culled and CPU-culled frames alternated in one process, {} pairs after {} warm-up "
                "(medians of wall time per frame)\n",
                options.scene.scene, frame.width, frame.height, options.frames, options.warmup);
-    fmt::print("{:<24} {:>13} {:>14} {:>10} {:>13} {:>13} {:>14}\n", "configuration", "gpu-culled ms",
-               "cpu-culled ms", "gpu / cpu", "paired ratio", "gpu cpu ms", "cpu path cpu ms");
+    fmt::print("{:<24} {:>13} {:>14} {:>10} {:>13} {:>13} {:>14}\n", "configuration", "gpu-culled ms", "cpu-culled ms",
+               "gpu / cpu", "paired ratio", "gpu cpu ms", "cpu path cpu ms");
     nlohmann::json rows = nlohmann::json::array();
     for (const Comparison& c : comparisons) {
         const double gpu = c.gpu.wallMs.median(), cpu = c.cpu.wallMs.median();
