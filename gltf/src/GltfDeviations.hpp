@@ -31,4 +31,8 @@ inline constexpr std::string_view kNonUnit = "normals or tangents not unit lengt
 // ROTATION_NON_UNIT): |length - 1| above it is not unit length.
 inline constexpr double kUnitLengthTolerance = 5e-4;
 
+// How far a node matrix's last row may be from (0, 0, 0, 1), float rounding in a writer, before it is refused as not
+// a matrix of translation, rotation and scale; within it the row is read as (0, 0, 0, 1).
+inline constexpr double kAffineRowTolerance = 1e-6;
+
 } // namespace penumbra::gltf

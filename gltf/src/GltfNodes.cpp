@@ -192,9 +192,10 @@ std::vector<int> rootNodes(const Document& document, std::vector<std::string>& n
 glm::mat4 localTransform(const tinygltf::Node& node)
 {
     if (node.matrix.size() == 16) {
+        // The first three rows; the last is (0, 0, 0, 1), which the schema checks to within kAffineRowTolerance.
         glm::mat4 m(1.0f);
         for (int column = 0; column < 4; ++column)
-            for (int row = 0; row < 4; ++row)
+            for (int row = 0; row < 3; ++row)
                 m[column][row] = float(node.matrix[std::size_t(column * 4 + row)]);
         return m;
     }

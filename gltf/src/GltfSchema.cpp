@@ -250,7 +250,16 @@ void checkNodes(const JsonFile& file, const Fields& root, AccessorUsage& usage)
         const auto mesh = node.index("mesh", "meshes");
         if (node.index("skin", "skins") && !mesh)
             node.fail("skin", "a node with a skin needs a mesh");
-        node.numbers("matrix", 16);
+        if (const auto matrix = node.numbers("matrix", 16)) {
+            // glTF 2.0 section 3.5.3: a matrix MUST be decomposable to translation, rotation and scale, so its last
+            // row (elements 3, 7, 11 and 15, column-major) is 0, 0, 0, 1; the renderer keeps the first three rows.
+            const std::vector<double>& m = *matrix;
+            if (std::abs(m[3]) > kAffineRowTolerance || std::abs(m[7]) > kAffineRowTolerance ||
+                std::abs(m[11]) > kAffineRowTolerance || std::abs(m[15] - 1.0) > kAffineRowTolerance)
+                node.fail("matrix", fmt::format("expected a last row (elements 3, 7, 11, 15) of 0, 0, 0, 1, as a "
+                                                "matrix of translation, rotation and scale has, got {}, {}, {}, {}",
+                                                m[3], m[7], m[11], m[15]));
+        }
         node.numbers("translation", 3);
         node.numbers("scale", 3);
         if (const auto rotation = node.numbers("rotation", 4, -1.0, 1.0)) {

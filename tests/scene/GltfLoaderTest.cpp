@@ -48,6 +48,28 @@ TEST_F(GltfLoaderTest, HierarchyMultipliesTransformsInOrder)
     EXPECT_NEAR(object.worldBounds.min.y, 9.0f, 1e-5f);
 }
 
+// A node matrix's last row must be (0, 0, 0, 1) (glTF 2.0 section 3.5.3, decomposable to translation, rotation and
+// scale): a projective one is refused naming the field, a writer's rounding within 1e-6 is read as (0, 0, 0, 1).
+TEST_F(GltfLoaderTest, NodeMatricesOtherThanAffineAreRefused)
+{
+    const auto withMatrix = [](nlohmann::json matrix) {
+        GltfBuilder b;
+        b.addRoot(
+            b.add("nodes", {{"name", "cube"}, {"mesh", testing::addCubeMesh(b, "Cube", -1)}, {"matrix", matrix}}));
+        return b;
+    };
+    EXPECT_CONTAINS(errorOf(write(withMatrix({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, -1, 0, 0, 0, 1}))),
+                    "/nodes/0/matrix: expected a last row (elements 3, 7, 11, 15) of 0, 0, 0, 1, as a matrix of "
+                    "translation, rotation and scale has, got 0, 0, -1, 1");
+    const gltf::GltfScene loaded =
+        gltf::loadGltf(write(withMatrix({2, 0, 0, 1e-8, 0, 1, 0, 0, 0, 0, 1, 0, 0, 10, 0, 1.0000001})));
+    ASSERT_EQ(loaded.scene.objects.size(), 1u);
+    const glm::mat4& transform = loaded.scene.objects[0].transform;
+    EXPECT_EQ(glm::vec4(transform[0][3], transform[1][3], transform[2][3], transform[3][3]), glm::vec4(0, 0, 0, 1));
+    EXPECT_EQ(transform[0][0], 2.0f);
+    EXPECT_EQ(transform[3][1], 10.0f);
+}
+
 TEST_F(GltfLoaderTest, EveryIndexSizeAndNoIndicesGiveTheSameTriangles)
 {
     const gltf::GltfScene reference = gltf::loadGltf(write(cubeScene(Component::UnsignedInt), "u32.gltf"));
