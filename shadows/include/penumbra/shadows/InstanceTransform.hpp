@@ -12,8 +12,7 @@ namespace penumbra::shadows {
 // Where one drawn instance of a mesh is: the per-instance vertex data of every pass that draws scene meshes
 // (shaders/instance.glsl), so that one instanced draw places any number of copies of a mesh. It holds the model
 // matrix's first three rows; the last is (0, 0, 0, 1), as every affine transform's. The shaders derive the normal
-// matrix from them, so an instance takes 48 bytes to copy, upload and fetch, where the matrix and its normal matrix
-// took 112.
+// matrix from them, so that an instance is 48 bytes to copy, upload and fetch.
 struct InstanceTransform {
     std::array<glm::vec4, 3> rows{glm::vec4(1.0f, 0.0f, 0.0f, 0.0f), glm::vec4(0.0f, 1.0f, 0.0f, 0.0f),
                                   glm::vec4(0.0f, 0.0f, 1.0f, 0.0f)};
