@@ -17,6 +17,7 @@ constexpr std::array kCullingTilesFields{PENUMBRA_SHADER_FIELD(CullingTiles, cas
                                          PENUMBRA_SHADER_FIELD(CullingTiles, firstTile),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, tileSlots),
                                          PENUMBRA_SHADER_FIELD(CullingTiles, markWords),
+                                         PENUMBRA_SHADER_FIELD(CullingTiles, chunkRuns),
                                          PENUMBRA_SHADER_STRUCT_FIELD(CullingTiles, volumes, kCasterVolumeStruct)};
 constexpr shaders::ShaderStruct kCullingTilesBlock{"CullingTiles", sizeof(CullingTiles), kCullingTilesFields};
 static_assert(shaders::matchesLayout(kCullingTilesBlock, shaders::BlockLayout::Std140));
@@ -77,10 +78,12 @@ static_assert(std::all_of(kCullingBlocks.begin(), kCullingBlocks.end(), [](const
 std::string cullingBlocksGlsl()
 {
     std::string text = fmt::format("#define PENUMBRA_VOLUME_FRUSTUM {}\n#define PENUMBRA_VOLUME_BEYOND_SPHERE {}\n"
-                                   "#define PENUMBRA_VOLUME_BEYOND_SLICE {}\n#define PENUMBRA_CULLING_TILES {}\n",
+                                   "#define PENUMBRA_VOLUME_BEYOND_SLICE {}\n#define PENUMBRA_CULLING_TILES {}\n"
+                                   "#define PENUMBRA_CULLING_RUN_PLACES {}\n#define PENUMBRA_CULLING_CHUNK_RUNS {}\n",
                                    static_cast<int>(CasterVolumeKind::Frustum),
                                    static_cast<int>(CasterVolumeKind::CascadeBeyondSphere),
-                                   static_cast<int>(CasterVolumeKind::CascadeBeyondSlice), kCullingTilesPerDispatch);
+                                   static_cast<int>(CasterVolumeKind::CascadeBeyondSlice), kCullingTilesPerDispatch,
+                                   kCullingRunPlaces, kCullingChunkRuns);
     text += shaders::uniformBlockGlsl(kCullingTilesBlock, kTilesBinding, "tiles");
     for (const CullingBlock& b : kCullingBlocks)
         text += shaders::storageBlockGlsl(b.block, bindingOf(b.index), b.instance, b.access);
@@ -127,13 +130,13 @@ std::span<const std::byte> bytesOf(const std::vector<T>& values)
 
 } // namespace
 
-GpuCasterCulling::GpuCasterCulling(rhi::Device& device, std::uint32_t maxTilesPerDispatch)
+GpuCasterCulling::GpuCasterCulling(rhi::Device& device, std::uint32_t maxTilesPerDispatch, std::uint32_t chunkRuns)
     : device_(device), listsShader_(device.createShader(cullingShader(shaders::load("caster_culling_lists.comp")))),
       listsPipeline_(device.createComputePipeline({.compute = listsShader_.get(),
                                                    .uniformLayouts = {shaders::uniformLayout(kCullingTilesBlock)},
                                                    .storageLayouts = cullingStorageLayouts(),
                                                    .debugName = "caster culling lists"})),
-      maxTilesPerDispatch_(std::max(maxTilesPerDispatch, 1u))
+      maxTilesPerDispatch_(std::max(maxTilesPerDispatch, 1u)), chunkRuns_(std::clamp(chunkRuns, 1u, kCullingChunkRuns))
 {
     reserve(1, sizeof(CullingTiles), 1);
 }
@@ -166,7 +169,8 @@ void GpuCasterCulling::reserve(std::uint64_t casters, std::uint64_t volumeBytes,
     ensure(volumes_, volumeBytes, BufferUsage::Uniform, "culling tiles");
     ensure(casters_, casters * sizeof(CullingCaster), BufferUsage::Storage, "culling casters");
     ensure(transforms_, casters * sizeof(InstanceTransform), BufferUsage::Storage, "culling transforms");
-    ensure(order_, casters * sizeof(std::uint32_t), BufferUsage::Storage, "culling order");
+    ensure(order_, (casters + batches_.batches.size() + 1) * sizeof(std::uint32_t), BufferUsage::Storage,
+           "culling order");
     ensure(marks_,
            std::max<std::uint64_t>(std::uint64_t(tileCount_) * markWords(tileSlots_), 1) * sizeof(std::uint32_t),
            BufferUsage::Storage, "culling marks");
@@ -272,8 +276,7 @@ void GpuCasterCulling::fillDraws(std::span<const ShadowCaster> casters)
     draws.clear();
     for (std::uint32_t t = 0; t < tileCount_; ++t)
         for (const InstanceBatches::Batch& batch : batches_.batches)
-            draws.push_back({.indexCount = casters[batches_.items[batch.first]].indexCount,
-                             .firstInstance = t * tileSlots_ + batch.first});
+            draws.push_back({.indexCount = casters[batches_.items[batch.first]].indexCount});
 }
 
 void GpuCasterCulling::uploadCasters()
@@ -310,8 +313,14 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
         uploaded_ = {{0, casterCount_}};
     uploadCasters();
     // The batches' order changes only where everything is uploaded (a new batching, or fresh buffers).
-    if (uploaded_.size() == 1 && uploaded_.front().first == 0 && uploaded_.front().count == casterCount_)
-        order_->write(0, bytesOf(batches_.items));
+    if (uploaded_.size() == 1 && uploaded_.front().first == 0 && uploaded_.front().count == casterCount_) {
+        std::vector<std::uint32_t>& order = scratch_.order;
+        order.assign(batches_.items.begin(), batches_.items.end());
+        for (const InstanceBatches::Batch& batch : batches_.batches)
+            order.push_back(batch.first);
+        order.push_back(casterCount_);
+        order_->write(0, bytesOf(order));
+    }
     const std::vector<CulledDraw>& draws = scratch_.draws;
     draws_->write(0, bytesOf(draws));
     for (std::uint32_t g = 0; g < groups_; ++g) {
@@ -323,6 +332,7 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
         block.firstTile = first;
         block.tileSlots = tileSlots_;
         block.markWords = markWords(tileSlots_);
+        block.chunkRuns = chunkRuns_;
         std::copy_n(volumes.begin() + first, count, block.volumes.begin());
         groupTests_.push_back(&testPipeline(volumeKinds(volumes.subspan(first, count))));
         volumes_->writeObject(block, g * blockBytes_);
@@ -332,11 +342,13 @@ void GpuCasterCulling::uploadTiles(std::span<const CasterVolume> volumes)
 void GpuCasterCulling::dispatch(rhi::CommandList& commands)
 {
     const std::vector<CulledDraw>& draws = scratch_.draws;
+    const auto batchCount = static_cast<std::uint32_t>(batches_.batches.size());
+    const std::uint32_t chunkPlaces = chunkRuns_ * kCullingRunPlaces;
     for (std::uint32_t g = 0; g < groups_; ++g) {
         const std::uint32_t first = g * groupTiles_, count = std::min(groupTiles_, tileCount_ - first);
         const std::uint64_t slots = std::uint64_t(first) * tileSlots_, groupSlots = std::uint64_t(count) * tileSlots_;
         const rhi::ComputePipeline& test = *groupTests_[g];
-        // The tests mark each tile's casters, then one workgroup per tile lays its list out.
+        // The tests mark each tile's casters, then one workgroup per tile and chunk of places lays its list out.
         for (const rhi::ComputePipeline* pipeline :
              {&test, static_cast<const rhi::ComputePipeline*>(listsPipeline_.get())}) {
             commands.bindComputePipeline(*pipeline);
@@ -351,11 +363,15 @@ void GpuCasterCulling::dispatch(rhi::CommandList& commands)
                                        groupSlots * sizeof(std::uint32_t));
             commands.bindStorageBuffer(bindingOf(kDraws), *draws_, 0, draws.size() * sizeof(CulledDraw));
             commands.bindStorageBuffer(bindingOf(kCounts), *counts_, 0, draws.size() * sizeof(std::uint32_t));
-            commands.bindStorageBuffer(bindingOf(kOrder), *order_, 0, casterCount_ * sizeof(std::uint32_t));
+            commands.bindStorageBuffer(bindingOf(kOrder), *order_, 0,
+                                       (casterCount_ + batchCount + 1) * sizeof(std::uint32_t));
             commands.bindStorageBuffer(bindingOf(kMarks), *marks_, 0,
                                        std::uint64_t(tileCount_) * markWords(tileSlots_) * sizeof(std::uint32_t));
             const std::uint32_t groupSize = test.workgroupSize()[0];
-            commands.dispatch(pipeline == &test ? (casterCount_ + groupSize - 1) / groupSize : count);
+            if (pipeline == &test)
+                commands.dispatch((casterCount_ + groupSize - 1) / groupSize);
+            else
+                commands.dispatch(count, (casterCount_ + chunkPlaces - 1) / chunkPlaces);
         }
     }
 }

@@ -7,6 +7,7 @@
 #include "penumbra/render/SceneRenderer.hpp"
 #include "penumbra/rhi/Error.hpp"
 #include "penumbra/rhi/Image.hpp"
+#include "penumbra/scene/MeshGenerators.hpp"
 #include "penumbra/scene/ViewFrustum.hpp"
 #include "penumbra/scenes/TestScenes.hpp"
 #include "penumbra/shadows/GpuCasterCulling.hpp"
@@ -15,6 +16,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
 
 namespace penumbra::testing {
 namespace {
@@ -46,13 +50,14 @@ render::FrameDesc smallFrame(shadows::CasterCullingMode culling)
 class GpuCullingTest : public GpuTest {
 protected:
     // The planner's list of every realtime tile (cascades, then local tiles) and the GPU's for the same volumes;
-    // `fault` changes what the GPU is given before it culls; `tilesPerDispatch` splits the tiles over dispatches.
+    // `fault` changes what the GPU is given before it culls; `tilesPerDispatch` splits the tiles over dispatches and
+    // `chunkRuns` the lists over workgroups.
     template <typename Fault>
     void cullBoth(Fault fault, std::vector<std::vector<std::uint32_t>>& planned,
                   std::vector<std::vector<std::uint32_t>>& culled,
-                  std::uint32_t tilesPerDispatch = std::numeric_limits<std::uint32_t>::max())
+                  std::uint32_t tilesPerDispatch = std::numeric_limits<std::uint32_t>::max(),
+                  const scene::Scene& scene = culledScene(), std::uint32_t chunkRuns = shadows::kCullingChunkRuns)
     {
-        const scene::Scene scene = culledScene();
         render::SceneRenderer renderer(*device, scene);
         const render::ShadowPlans plans =
             renderer.planShadows(scene.camera, smallFrame(shadows::CasterCullingMode::Cpu));
@@ -67,7 +72,7 @@ protected:
         const std::vector<shadows::ShadowCaster>& casters = renderer.gpuScene().casters();
         std::vector<shadows::Bounds> bounds = renderer.gpuScene().casterBounds();
         fault(volumes, bounds);
-        shadows::GpuCasterCulling culling(*device, tilesPerDispatch);
+        shadows::GpuCasterCulling culling(*device, tilesPerDispatch, chunkRuns);
         auto commands = device->createCommandList();
         culling.record(*commands, casters, bounds, volumes);
         device->submit(*commands);
@@ -170,6 +175,32 @@ TEST_F(GpuCullingTest, ListsMatchThePlanner)
     std::vector<std::vector<std::uint32_t>> replanned, split;
     cullBoth([](auto&, auto&) {}, replanned, split, 2);
     EXPECT_EQ(split, planned);
+}
+
+// Lists longer than a workgroup's chunk of places are laid out by a workgroup per chunk, each counting the marks
+// before it: 5 000 cubes and then 300 spheres, a chunk of 2 048 places each, so that the cubes' batch runs through
+// three chunks and the spheres' begins inside the last.
+TEST_F(GpuCullingTest, ListsMatchThePlannerInChunks)
+{
+    constexpr std::uint32_t kCubes = 5000, kSpheres = 300;
+    scene::Scene scene = scenes::makeCubeGridScene(kCubes);
+    const std::uint32_t sphere = scene.addMesh(scene::makeSphere(0.4f, 8, 4));
+    // In rows before the camera, over the cubes.
+    const glm::vec3 eye = scene.camera.position;
+    for (std::uint32_t i = 0; i < kSpheres; ++i)
+        scene.addObject("sphere " + std::to_string(i), sphere, 0,
+                        glm::translate(glm::mat4(1.0f),
+                                       eye + glm::vec3(float(i % 20) - 10.0f, -1.5f, -6.0f - float(i / 20))));
+    scene.validate();
+    std::vector<std::vector<std::uint32_t>> planned, culled;
+    cullBoth([](auto&, auto&) {}, planned, culled, std::numeric_limits<std::uint32_t>::max(), scene, 1);
+    ASSERT_GT(scene.objects.size(), 2 * shadows::kCullingRunPlaces);
+    EXPECT_EQ(culled, planned);
+    // The spheres cast in the first cascade, and the cubes' list reaches past the first chunk.
+    EXPECT_GT(std::count_if(planned[0].begin(), planned[0].end(), [](std::uint32_t c) { return c > kCubes; }), 0);
+    EXPECT_GT(std::count_if(planned[0].begin(), planned[0].end(),
+                            [](std::uint32_t c) { return c > shadows::kCullingRunPlaces && c <= kCubes; }),
+              0);
 }
 
 // The camera's view as a volume (the lit objects' culling, GpuViewCulling): the GPU keeps the boxes the CPU's

@@ -47,8 +47,7 @@ struct CulledDraw {
     std::uint32_t instanceCount = 0; // set by the pass
     std::uint32_t firstIndex = 0;
     std::int32_t vertexOffset = 0;
-    // The host gives the tile's range's start plus the batch's first place; the pass sets the batch's first slot.
-    std::uint32_t firstInstance = 0;
+    std::uint32_t firstInstance = 0; // set by the pass: the batch's first slot in the tile's range
 };
 inline constexpr std::array kCulledDrawFields{
     PENUMBRA_SHADER_FIELD(CulledDraw, indexCount),    PENUMBRA_SHADER_FIELD(CulledDraw, instanceCount),
@@ -58,6 +57,12 @@ inline constexpr std::array kCulledDrawFields{
 inline constexpr shaders::ShaderStruct kCulledDrawStruct{"CulledDraw", sizeof(CulledDraw), kCulledDrawFields};
 static_assert(shaders::matchesLayout(kCulledDrawStruct, shaders::BlockLayout::Std430, true));
 static_assert(sizeof(CulledDraw) == rhi::kDrawIndexedIndirectCommandBytes);
+
+// The places the lists dispatch ranks at once (caster_culling_lists.comp: 64 lanes of 32-bit words), and the most runs
+// of them one of its workgroups lays out: a tile's list is laid out by as many workgroups as it has chunks of
+// kCullingChunkRuns runs (at most 32 768 places each), so that 10^6 casters keep a GPU's cores busy.
+inline constexpr std::uint32_t kCullingRunPlaces = 64 * 32;
+inline constexpr std::uint32_t kCullingChunkRuns = 16;
 
 // The most tiles one dispatch culls: its CullingTiles fill 15 392 bytes of the 16 384 that every device's uniform
 // blocks hold at least (Vulkan 1.3's required limits, maxUniformBufferRange; GL 4.5's, MAX_UNIFORM_BLOCK_SIZE).
@@ -73,25 +78,28 @@ struct alignas(16) CullingTiles {
     std::uint32_t firstTile = 0;
     std::uint32_t tileSlots = 0; // instance slots per tile: the caster count, rounded up for the binding offsets
     std::uint32_t markWords = 0; // words of each tile's bits: two per 64 slots, one pair per first dispatch's workgroup
+    std::uint32_t chunkRuns = 0; // runs of kCullingRunPlaces places per workgroup of the lists dispatch
     std::array<CasterVolume, kCullingTilesPerDispatch> volumes;
 };
 static_assert(sizeof(CullingTiles) <= 16384);
 
 // Shadow casters culled per tile on the GPU (shaders/caster_culling.comp): every caster's world box is tested against
-// every tile's CasterVolume with casterInVolume's rules and marked in the tile's bits; then one workgroup per tile
-// (shaders/caster_culling_lists.comp) lays the marked casters out in the tile's range of the instance lists (their
-// InstanceTransforms, and their indices) in the batches' order, caster order within a batch, the same every run, and
-// sets the tile's draw of each batch, an indexed indirect command. Tile t's range holds a slot for every caster
-// (tileSlots() of them); the draw of batch b in tile t is command t * batches + b, and its count (0 or 1, for
-// drawIndexedIndirectCount) says whether it has instances. The tiles are culled in as few dispatches as the device's
-// storage range and CullingTiles allow, each binding the instance ranges of its tiles only, so that 10^6 casters fit
-// where all tiles' ranges together would not.
+// every tile's CasterVolume with casterInVolume's rules and marked in the tile's bits; then one workgroup per tile and
+// chunk of kCullingChunkRuns runs of places (shaders/caster_culling_lists.comp) lays the marked casters out in the
+// tile's range of the instance lists (their InstanceTransforms, and their indices) in the batches' order, caster order
+// within a batch, the same every run, and sets the tile's draw of each batch, an indexed indirect command. Tile t's
+// range holds a slot for every caster (tileSlots() of them); the draw of batch b in tile t is command t * batches + b,
+// and its count (0 or 1, for drawIndexedIndirectCount) says whether it has instances. The tiles are culled in as few
+// dispatches as the device's storage range and CullingTiles allow, each binding the instance ranges of its tiles only,
+// so that 10^6 casters fit where all tiles' ranges together would not.
 class GpuCasterCulling {
 public:
     // `maxTilesPerDispatch`: the most tiles one dispatch culls, fewer where their instances exceed the device's
-    // storage range (a test gives a small number to see tiles culled over several dispatches).
+    // storage range; `chunkRuns`: the runs of places one workgroup lays out, 1 to kCullingChunkRuns (tests give small
+    // numbers to see tiles culled over several dispatches and lists laid out in several chunks).
     explicit GpuCasterCulling(rhi::Device& device,
-                              std::uint32_t maxTilesPerDispatch = std::numeric_limits<std::uint32_t>::max());
+                              std::uint32_t maxTilesPerDispatch = std::numeric_limits<std::uint32_t>::max(),
+                              std::uint32_t chunkRuns = kCullingChunkRuns);
 
     // Uploads the casters, their world boxes (casters[i]'s is bounds[i]) and the tiles' volumes, and makes the
     // buffers the results go to (instances(), draws(), drawCounts() hold from here on, for a frame graph to declare).
@@ -157,13 +165,15 @@ private:
     std::unique_ptr<rhi::Buffer> indices_;
     std::unique_ptr<rhi::Buffer> draws_;
     std::unique_ptr<rhi::Buffer> counts_;
-    std::unique_ptr<rhi::Buffer> order_; // batches_.items: the casters in their batches' order
+    // batches_.items (the casters in their batches' order), then each batch's first place and the caster count
+    std::unique_ptr<rhi::Buffer> order_;
     std::unique_ptr<rhi::Buffer> marks_; // per tile, a bit per place in that order: the caster is in the tile
     InstanceBatches batches_;
     // What record() uploads, kept from frame to frame: fresh vectors of 10^5 elements cost more in page faults than
     // filling them.
     struct Scratch {
         std::vector<std::uint32_t> all;
+        std::vector<std::uint32_t> order; // what order_ holds
         std::vector<CullingCaster> casters;
         std::vector<InstanceTransform> transforms;
         std::vector<CulledDraw> draws;
@@ -186,6 +196,7 @@ private:
     std::uint32_t groupTiles_ = 0;
     std::uint64_t blockBytes_ = 0;
     std::uint32_t maxTilesPerDispatch_;
+    std::uint32_t chunkRuns_;
 };
 
 } // namespace penumbra::shadows
