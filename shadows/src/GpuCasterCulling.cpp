@@ -122,6 +122,9 @@ std::uint64_t roundUp(std::uint64_t value, std::uint64_t multiple)
     return (value + multiple - 1) / multiple * multiple;
 }
 
+// A caster's world box as the tests read it.
+CullingCaster cullingCaster(const Bounds& box) { return {glm::vec4(box.min, 0.0f), glm::vec4(box.max, 0.0f)}; }
+
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& values)
 {
@@ -253,7 +256,7 @@ void GpuCasterCulling::fillCasters(std::span<const ShadowCaster> casters, std::s
                 throw rhi::Error(fmt::format("shadow casters {} and {} share draw group {}, but draw differently "
                                              "(mesh, material or sides)",
                                              batches_.items[batch.first], i, first.drawGroup));
-            culling[i] = {glm::vec4(bounds[i].min, 0.0f), glm::vec4(bounds[i].max, 0.0f)};
+            culling[i] = cullingCaster(bounds[i]);
             transforms[i] = instanceTransform(casters[i].model);
         }
     }
@@ -264,8 +267,7 @@ void GpuCasterCulling::fillChanged(std::span<const ShadowCaster> casters, std::s
 {
     for (const CasterRange& range : changed)
         for (std::uint32_t i = range.first; i < range.first + range.count; ++i) {
-            scratch_.casters[i].boundsMin = glm::vec4(bounds[i].min, 0.0f);
-            scratch_.casters[i].boundsMax = glm::vec4(bounds[i].max, 0.0f);
+            scratch_.casters[i] = cullingCaster(bounds[i]);
             scratch_.transforms[i] = instanceTransform(casters[i].model);
         }
 }
